@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// coscope-cli: the command line face of CoScope. Each verb is a file in this folder.
+#include "app/cli/CliVerb.h"
+#include "core/log/Logging.h"
+
+#include <QCoreApplication>
+#include <QTextStream>
+
+#include <algorithm>
+#include <cstdio>
+
+using namespace coscope;
+
+namespace {
+
+void printHelp() {
+    QTextStream out(stdout);
+    out << "Usage: coscope-cli [--log-level LEVEL] VERB [ARGS...]\n\n"
+           "CoScope " COSCOPE_VERSION " - CANopen bus analyzer and servo-drive commissioning tool.\n\n"
+           "Verbs:\n";
+    auto sorted = cli::verbs();
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+    for (const auto& v : sorted) out << "  " << v.name.leftJustified(12) << "  " << v.summary << "\n";
+    out << "\nGlobal options:\n"
+           "  --version          Print the version.\n"
+           "  --help             Print this help; VERB --help prints the verb's.\n"
+           "  --log-level LEVEL  trace, debug, info, warn (default), error, critical, off.\n"
+           "\nBus URLs: socketcan://can0, virtualcan://can0 (any Qt CAN plugin), socketcand://HOST:PORT/CHANNEL,\n"
+           "sim://?nodes=1:delta-asda-a2,2:aimotor, replay://PATH?speed=1.0; options bitrate=, fd=1, listen-only=1.\n"
+           "Exit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("CoScope"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(COSCOPE_VERSION));
+
+    QStringList args = app.arguments();
+    args.removeFirst();
+    auto level = logging::levelFromEnvironment(spdlog::level::warn);
+    while (!args.isEmpty() && args.front().startsWith(u'-')) {
+        const QString a = args.takeFirst();
+        if (a == u"--version" || a == u"-V") {
+            std::printf("coscope-cli %s\n", COSCOPE_VERSION);
+            return cli::Ok;
+        }
+        if (a == u"--help" || a == u"-h") {
+            printHelp();
+            return cli::Ok;
+        }
+        if (a == u"--log-level" || a.startsWith(QStringLiteral("--log-level="))) {
+            const QString value = a.contains(u'=') ? a.section(u'=', 1) : (args.isEmpty() ? QString() : args.takeFirst());
+            auto parsed = logging::parseLevel(value);
+            if (!parsed) {
+                std::fprintf(stderr, "coscope-cli: invalid --log-level '%s'; use trace, debug, info, warn, error, critical or off\n", qPrintable(value));
+                return cli::Usage;
+            }
+            level = *parsed;
+            continue;
+        }
+        std::fprintf(stderr, "coscope-cli: unknown option '%s' (see coscope-cli --help)\n", qPrintable(a));
+        return cli::Usage;
+    }
+    if (args.isEmpty()) {
+        printHelp();
+        return cli::Usage;
+    }
+    logging::init(QStringLiteral("coscope-cli"), level);
+
+    // Longest verb name first, so "eds check" wins over a hypothetical "eds".
+    const cli::Verb* match = nullptr;
+    int words = 0;
+    for (const auto& v : cli::verbs()) {
+        const QStringList parts = v.name.split(u' ');
+        if (parts.size() > args.size()) continue;
+        if (args.mid(0, parts.size()) == parts && parts.size() > words) {
+            match = &v;
+            words = static_cast<int>(parts.size());
+        }
+    }
+    if (!match) {
+        QStringList names;
+        for (const auto& v : cli::verbs()) names << v.name;
+        names.sort();
+        std::fprintf(stderr, "coscope-cli: unknown verb '%s'; verbs: %s\n", qPrintable(args.front()), qPrintable(names.join(QStringLiteral(", "))));
+        return cli::Usage;
+    }
+    QStringList verbArgs = args.mid(words);
+    verbArgs.prepend(QStringLiteral("coscope-cli ") + match->name);
+    return match->run(verbArgs);
+}

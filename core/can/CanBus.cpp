@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/can/CanBus.h"
+
+#include "core/can/QtCanBus.h"
+#include "core/can/ReplayBus.h"
+#include "core/can/SocketcandBus.h"
+#include "core/sim/SimBus.h"
+
+#include <QCoreApplication>
+#include <QDeadlineTimer>
+#include <QThread>
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+
+namespace coscope {
+
+CanBus::CanBus(const BusUrl& url, QObject* parent) : QObject(parent), url_(url) {}
+
+CanBus::~CanBus() = default;
+
+bool CanBus::waitForOpen(int timeoutMs) {
+    QDeadlineTimer deadline(timeoutMs);
+    for (;;) {
+        const State s = state();
+        if (s == State::Open) return true;
+        if (s == State::Error || s == State::Closed) {
+            // Closed right after open() means the backend has not started yet; give it the time.
+            if (s == State::Error) return false;
+        }
+        if (deadline.hasExpired()) return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        QThread::msleep(2);
+    }
+}
+
+bool CanBus::send(const CanFrame& frame, QString* error) {
+    if (isListenOnly()) {
+        const QString why = QStringLiteral("bus %1 is listen-only: sending is refused").arg(url_.toString());
+        if (error) *error = why;
+        spdlog::warn("{}", why.toStdString());
+        return false;
+    }
+    if (state() != State::Open) {
+        if (error) *error = QStringLiteral("bus %1 is not open (%2)").arg(url_.toString(), toString(state()));
+        return false;
+    }
+    QString why;
+    if (!sendFrame(frame, &why)) {
+        countError();
+        if (error) *error = why;
+        return false;
+    }
+    return true;
+}
+
+size_t CanBus::read(CanFrame* out, size_t max) { return ring_.pop(out, max); }
+
+bool CanBus::waitForFrames(int timeoutMs) {
+    QDeadlineTimer deadline(timeoutMs);
+    while (ring_.size() == 0) {
+        if (deadline.hasExpired()) return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 2);
+        if (ring_.size() == 0) QThread::usleep(500);
+    }
+    return true;
+}
+
+CanBus::State CanBus::state() const {
+    std::lock_guard lock(stateMutex_);
+    return state_;
+}
+
+QString CanBus::errorString() const {
+    std::lock_guard lock(stateMutex_);
+    return error_;
+}
+
+CanBus::Counters CanBus::counters() const {
+    Counters c;
+    c.rx = rx_.load(std::memory_order_relaxed);
+    c.tx = tx_.load(std::memory_order_relaxed);
+    c.dropped = ring_.dropped();
+    c.errors = errors_.load(std::memory_order_relaxed);
+    return c;
+}
+
+void CanBus::deliver(const CanFrame& frame) {
+    if (frame.isTx()) countTx();
+    if (frame.isError()) countError();
+    if (ring_.push(frame)) rx_.fetch_add(1, std::memory_order_relaxed);
+}
+
+void CanBus::setState(State state, const QString& error) {
+    bool changed = false;
+    {
+        std::lock_guard lock(stateMutex_);
+        changed = state_ != state;
+        state_ = state;
+        if (!error.isEmpty()) error_ = error;
+        else if (state == State::Open) error_.clear();
+    }
+    if (state == State::Error && !error.isEmpty()) {
+        spdlog::error("{}: {}", url_.toString().toStdString(), error.toStdString());
+        emit errorOccurred(error);
+    }
+    if (changed) emit stateChanged(state);
+}
+
+void CanBus::reportError(const QString& message) {
+    {
+        std::lock_guard lock(stateMutex_);
+        error_ = message;
+    }
+    spdlog::warn("{}: {}", url_.toString().toStdString(), message.toStdString());
+    emit errorOccurred(message);
+}
+
+std::unique_ptr<CanBus> createBus(const BusUrl& url, QString* error) {
+    if (url.scheme == u"socketcand") return std::make_unique<SocketcandBus>(url);
+    if (url.scheme == u"sim") return std::make_unique<SimBus>(url);
+    if (url.scheme == u"replay") return std::make_unique<ReplayBus>(url);
+    if (!qtCanPlugins().contains(url.scheme)) {
+        if (error)
+            *error = QStringLiteral("Qt CAN plugin '%1' is not installed here; available: %2")
+                         .arg(url.scheme, qtCanPlugins().join(QStringLiteral(", ")));
+        return nullptr;
+    }
+    return std::make_unique<QtCanBus>(url);
+}
+
+std::unique_ptr<CanBus> createBus(const QString& text, QString* error) {
+    auto url = BusUrl::parse(text, error);
+    if (!url) return nullptr;
+    return createBus(*url, error);
+}
+
+QString toString(CanBus::State state) {
+    switch (state) {
+    case CanBus::State::Closed: return QStringLiteral("closed");
+    case CanBus::State::Opening: return QStringLiteral("opening");
+    case CanBus::State::Open: return QStringLiteral("open");
+    case CanBus::State::Error: return QStringLiteral("error");
+    }
+    return {};
+}
+
+int64_t nowNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace coscope

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/BusUrl.h"
+#include "core/can/CanFrame.h"
+#include "core/can/FrameRing.h"
+
+#include <QObject>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+
+namespace coscope {
+
+// One interface for every way frames come in and go out (DESIGN.md "Data flow"):
+// a backend reads on its own thread and pushes into a lock-free ring; consumers drain the ring
+// with read(). Nothing per frame crosses a Qt signal: the signals below are for state and errors.
+//
+// Threading contract for backends:
+//  - open()/close() return at once; the outcome is reported through stateChanged/errorOccurred.
+//  - deliver() is called from exactly one thread (the backend's reader thread): the ring is SPSC.
+//  - sendFrame() may be called from any thread and must be thread-safe (typically it queues the
+//    frame to the reader thread). After a frame went out, the backend delivers a copy flagged
+//    CanFrame::Tx so traces show both directions.
+class CanBus : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Closed, Opening, Open, Error };
+    Q_ENUM(State)
+
+    struct Counters {
+        uint64_t rx = 0;       // frames received and queued
+        uint64_t tx = 0;       // frames sent
+        uint64_t dropped = 0;  // frames lost because the ring was full
+        uint64_t errors = 0;   // error frames and failed sends
+    };
+
+    explicit CanBus(const BusUrl& url, QObject* parent = nullptr);
+    ~CanBus() override;
+
+    const BusUrl& url() const { return url_; }
+    bool isListenOnly() const { return url_.listenOnly(); }
+
+    virtual void open() = 0;
+    virtual void close() = 0;
+
+    // Waits until the bus is Open (true) or failed/closed (false), processing events of the
+    // calling thread meanwhile. For the CLI and tests; the GUI listens to stateChanged instead.
+    bool waitForOpen(int timeoutMs);
+
+    // Sends one frame. Listen-only is enforced here, in one place for every backend: a bus opened
+    // listen-only refuses every send with an error and transmits nothing.
+    bool send(const CanFrame& frame, QString* error = nullptr);
+
+    // Consumer side: drains up to `max` frames. Safe from one consumer thread at a time.
+    size_t read(CanFrame* out, size_t max);
+    // Waits up to timeoutMs for frames to read (processing events of the calling thread).
+    bool waitForFrames(int timeoutMs);
+    size_t pending() const { return ring_.size(); }
+
+    State state() const;
+    QString errorString() const;
+    Counters counters() const;
+
+signals:
+    void stateChanged(coscope::CanBus::State state);
+    void errorOccurred(const QString& message);
+
+protected:
+    virtual bool sendFrame(const CanFrame& frame, QString* error) = 0;
+
+    // Reader thread: queue a received (or echoed Tx) frame; a full ring counts a drop.
+    void deliver(const CanFrame& frame);
+    void setState(State state, const QString& error = {});
+    void reportError(const QString& message);  // keeps the state, emits errorOccurred
+    void countTx() { tx_.fetch_add(1, std::memory_order_relaxed); }
+    void countError() { errors_.fetch_add(1, std::memory_order_relaxed); }
+
+private:
+    BusUrl url_;
+    FrameRing ring_;
+    mutable std::mutex stateMutex_;
+    State state_ = State::Closed;
+    QString error_;
+    std::atomic<uint64_t> rx_{0};
+    std::atomic<uint64_t> tx_{0};
+    std::atomic<uint64_t> errors_{0};
+};
+
+// Creates the backend for a URL (not yet opened). Returns nullptr with a one-line reason.
+std::unique_ptr<CanBus> createBus(const BusUrl& url, QString* error);
+std::unique_ptr<CanBus> createBus(const QString& url, QString* error);
+
+QString toString(CanBus::State state);
+
+// Nanoseconds since the Unix epoch, the timestamp of live frames.
+int64_t nowNs();
+
+}  // namespace coscope

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/SimBus.h"
+
+namespace coscope {
+
+SimBus::SimBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+
+SimBus::SimBus(const BusUrl& url, std::shared_ptr<sim::SimNetwork> network, QObject* parent)
+    : CanBus(url, parent), network_(std::move(network)) {}
+
+SimBus::~SimBus() { close(); }
+
+void SimBus::open() {
+    if (attached_) return;
+    setState(State::Opening);
+    if (!network_) {
+        QString error;
+        std::unique_ptr<sim::SimNetwork> net = sim::SimNetwork::fromSpec(url().option(QStringLiteral("nodes")), &error);
+        if (!net) {
+            setState(State::Error, error);
+            return;
+        }
+        network_ = std::move(net);
+    }
+    network_->attach(this);
+    attached_ = true;
+    if (!network_->isRunning()) network_->start();
+    setState(State::Open);
+}
+
+void SimBus::close() {
+    if (attached_) {
+        network_->detach(this);
+        attached_ = false;
+    }
+    // The last endpoint stops the network it created.
+    if (network_ && network_.use_count() == 1) network_->stop();
+    if (state() != State::Closed) setState(State::Closed);
+}
+
+void SimBus::simReceive(const CanFrame& frame, bool own) {
+    if (!own) {
+        deliver(frame);
+        return;
+    }
+    CanFrame echo = frame;
+    echo.flags |= CanFrame::Tx;
+    deliver(echo);
+}
+
+bool SimBus::sendFrame(const CanFrame& frame, QString* error) {
+    if (!attached_) {
+        if (error) *error = QStringLiteral("virtual bus is not open");
+        return false;
+    }
+    network_->inject(frame, this);
+    return true;
+}
+
+}  // namespace coscope

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/sim/SimNetwork.h"
+
+#include "core/can/CanBus.h"
+#include "core/sim/VirtualNode.h"
+
+#include <QThread>
+#include <QTimer>
+
+#include <algorithm>
+
+namespace coscope::sim {
+
+SimNetwork::SimNetwork() = default;
+
+SimNetwork::~SimNetwork() { stop(); }
+
+void SimNetwork::addNode(std::unique_ptr<SimNode> node) {
+    SimNode* raw = node.get();
+    raw->setTransmitter([this, raw](const CanFrame& f) { broadcast(f, raw, nullptr); });
+    nodes_.push_back(std::move(node));
+}
+
+void SimNetwork::start() {
+    if (thread_) return;
+    thread_ = new QThread;
+    thread_->setObjectName(QStringLiteral("sim-network"));
+    moveToThread(thread_);
+    thread_->start();
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            timer_ = new QTimer(this);
+            timer_->setTimerType(Qt::PreciseTimer);
+            timer_->setInterval(1);
+            connect(timer_, &QTimer::timeout, this, &SimNetwork::onTick);
+            timer_->start();
+        },
+        Qt::BlockingQueuedConnection);
+}
+
+void SimNetwork::stop() {
+    if (!thread_) return;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            delete timer_;
+            timer_ = nullptr;
+            moveToThread(nullptr);
+        },
+        Qt::BlockingQueuedConnection);
+    thread_->quit();
+    thread_->wait();
+    delete thread_;
+    thread_ = nullptr;
+}
+
+bool SimNetwork::isRunning() const { return thread_ != nullptr; }
+
+void SimNetwork::attach(SimTap* tap) {
+    std::lock_guard lock(mutex_);
+    taps_.push_back(tap);
+}
+
+void SimNetwork::detach(SimTap* tap) {
+    if (thread_ && QThread::currentThread() != thread_) {
+        // Make sure no delivery to this tap is running when we return.
+        runOnNetworkThread([this, tap] {
+            std::lock_guard lock(mutex_);
+            std::erase(taps_, tap);
+            std::erase_if(inbox_, [tap](const auto& p) { return p.second == tap; });
+        });
+        return;
+    }
+    std::lock_guard lock(mutex_);
+    std::erase(taps_, tap);
+    std::erase_if(inbox_, [tap](const auto& p) { return p.second == tap; });
+}
+
+void SimNetwork::inject(const CanFrame& frame, SimTap* from) {
+    std::lock_guard lock(mutex_);
+    inbox_.emplace_back(frame, from);
+}
+
+void SimNetwork::runOnNetworkThread(const std::function<void()>& fn) {
+    if (!thread_ || QThread::currentThread() == thread_) {
+        fn();
+        return;
+    }
+    QMetaObject::invokeMethod(this, fn, Qt::BlockingQueuedConnection);
+}
+
+void SimNetwork::onTick() {
+    const int64_t now = nowNs();
+    if (!powered_) {
+        powered_ = true;
+        for (auto& n : nodes_) n->powerOn(now);
+    }
+    std::vector<std::pair<CanFrame, SimTap*>> batch;
+    {
+        std::lock_guard lock(mutex_);
+        batch.swap(inbox_);
+    }
+    for (auto& [frame, from] : batch) {
+        CanFrame f = frame;
+        f.timestampNs = now;
+        f.flags &= ~CanFrame::Tx;
+        broadcast(f, nullptr, from);
+    }
+    for (auto& n : nodes_) n->tick(now);
+}
+
+void SimNetwork::broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap) {
+    CanFrame f = frame;
+    if (f.timestampNs == 0) f.timestampNs = nowNs();
+    std::vector<SimTap*> taps;
+    {
+        std::lock_guard lock(mutex_);
+        taps = taps_;
+    }
+    for (SimTap* t : taps) t->simReceive(f, t == fromTap);
+    for (auto& n : nodes_)
+        if (n.get() != fromNode) n->onFrame(f, f.timestampNs);
+}
+
+QString SimNetwork::defaultSpec() { return QStringLiteral("1:delta-asda-a2,2:aimotor,3:generic-cia402"); }
+
+std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString* error) {
+    const QString spec = specIn.trimmed().isEmpty() ? defaultSpec() : specIn;
+    auto net = std::make_unique<SimNetwork>();
+    std::vector<int> used;
+    for (const QString& part : spec.split(u',', Qt::SkipEmptyParts)) {
+        const qsizetype colon = part.indexOf(u':');
+        bool ok = false;
+        const int id = (colon < 0 ? part : part.left(colon)).trimmed().toInt(&ok);
+        if (!ok || id < 1 || id > 127) {
+            if (error) *error = QStringLiteral("sim node '%1': node-ID must be 1-127 (form ID:DICTIONARY, e.g. 1:delta-asda-a2)").arg(part);
+            return nullptr;
+        }
+        if (std::find(used.begin(), used.end(), id) != used.end()) {
+            if (error) *error = QStringLiteral("sim node-ID %1 is used twice").arg(id);
+            return nullptr;
+        }
+        used.push_back(id);
+        const QString dict = colon < 0 ? QStringLiteral("generic-cia402") : part.mid(colon + 1).trimmed();
+        auto node = VirtualNode::create(static_cast<uint8_t>(id), dict, error);
+        if (!node) return nullptr;
+        net->addNode(std::move(node));
+    }
+    return net;
+}
+
+}  // namespace coscope::sim

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+#include "core/sim/SimNode.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+class QThread;
+class QTimer;
+
+namespace coscope::sim {
+
+// Something outside the network that sees its traffic: a SimBus endpoint, the socketcand server.
+class SimTap {
+public:
+    virtual ~SimTap() = default;
+    // Called on the network thread for every frame on the bus. `own` is true for a frame this
+    // tap injected itself (its Tx echo).
+    virtual void simReceive(const CanFrame& frame, bool own) = 0;
+};
+
+// The in-process virtual CAN bus with its nodes. Runs on its own thread with a 1 ms tick; frames
+// injected from other threads are queued and handled on that thread in order.
+class SimNetwork : public QObject {
+    Q_OBJECT
+public:
+    SimNetwork();
+    ~SimNetwork() override;
+
+    // Before start(): the nodes living on this bus.
+    void addNode(std::unique_ptr<SimNode> node);
+    const std::vector<std::unique_ptr<SimNode>>& nodes() const { return nodes_; }
+
+    void start();
+    void stop();
+    bool isRunning() const;
+
+    void attach(SimTap* tap);
+    void detach(SimTap* tap);
+    // Any thread: put a frame on the bus as `from` (may be null).
+    void inject(const CanFrame& frame, SimTap* from);
+
+    // Runs `fn` on the network thread and waits for it (for tests and fault injection).
+    void runOnNetworkThread(const std::function<void()>& fn);
+
+    // Parses "1:delta-asda-a2,2:aimotor" (empty = the default network) and builds the nodes.
+    static std::unique_ptr<SimNetwork> fromSpec(const QString& spec, QString* error);
+    static QString defaultSpec();
+
+private:
+    void onTick();
+    void broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap);
+
+    std::vector<std::unique_ptr<SimNode>> nodes_;
+    QThread* thread_ = nullptr;
+    QTimer* timer_ = nullptr;
+    std::mutex mutex_;  // guards taps_ and inbox_
+    std::vector<SimTap*> taps_;
+    std::vector<std::pair<CanFrame, SimTap*>> inbox_;
+    bool powered_ = false;
+};
+
+}  // namespace coscope::sim
