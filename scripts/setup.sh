@@ -8,7 +8,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev libqt6serialbus6-plugins
+  qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev libqt6serialbus6
   libqcustomplot-dev libspdlog-dev libfmt-dev zlib1g-dev
   fonts-dejavu-core
 )
