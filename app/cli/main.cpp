@@ -4,6 +4,7 @@
 #include "core/log/Logging.h"
 
 #include <QCoreApplication>
+#include <QLoggingCategory>
 #include <QTextStream>
 
 #include <algorithm>
@@ -24,7 +25,8 @@ void printHelp() {
     out << "\nGlobal options:\n"
            "  --version          Print the version.\n"
            "  --help             Print this help; VERB --help prints the verb's.\n"
-           "  --log-level LEVEL  trace, debug, info, warn (default), error, critical, off.\n"
+           "  --log-level LEVEL  show log lines on stderr: trace, debug, info, warn, error, critical\n"
+           "                     (default: none; the log file keeps info and up).\n"
            "\nBus URLs: socketcan://can0, virtualcan://can0 (any Qt CAN plugin), socketcand://HOST:PORT/CHANNEL,\n"
            "sim://?nodes=1:delta-asda-a2,2:aimotor, replay://PATH?speed=1.0; options bitrate=, fd=1, listen-only=1.\n"
            "Exit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n";
@@ -33,13 +35,18 @@ void printHelp() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The Qt CAN plugin loader complains on stderr about vendor libraries that are not installed
+    // (PEAK, Vector, ...); the reason still reaches the user through the bus error.
+    QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("CoScope"));
     QCoreApplication::setApplicationVersion(QStringLiteral(COSCOPE_VERSION));
 
     QStringList args = app.arguments();
     args.removeFirst();
-    auto level = logging::levelFromEnvironment(spdlog::level::warn);
+    // The console shows log lines only when asked (--log-level or $COSCOPE_LOG_LEVEL): a failing
+    // verb prints exactly one line of its own; the log file keeps info and up either way.
+    auto level = logging::levelFromEnvironment(spdlog::level::off);
     while (!args.isEmpty() && args.front().startsWith(u'-')) {
         const QString a = args.takeFirst();
         if (a == u"--version" || a == u"-V") {

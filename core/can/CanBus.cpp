@@ -39,7 +39,7 @@ bool CanBus::send(const CanFrame& frame, QString* error) {
     if (isListenOnly()) {
         const QString why = QStringLiteral("bus %1 is listen-only: sending is refused").arg(url_.toString());
         if (error) *error = why;
-        spdlog::warn("{}", why.toStdString());
+        spdlog::info("{}", why.toStdString());
         return false;
     }
     if (state() != State::Open) {
@@ -102,7 +102,7 @@ void CanBus::setState(State state, const QString& error) {
         else if (state == State::Open) error_.clear();
     }
     if (state == State::Error && !error.isEmpty()) {
-        spdlog::error("{}: {}", url_.toString().toStdString(), error.toStdString());
+        spdlog::warn("{}: {}", url_.toString().toStdString(), error.toStdString());
         emit errorOccurred(error);
     }
     if (changed) emit stateChanged(state);

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// coscope-cli record BUS OUT.log [--count N] [--duration S]: streams the bus to a candump -L log.
+// Lines are flushed to the file at least every 100 ms, so a crash or an unplugged adapter loses
+// nothing that was received; Ctrl-C / SIGTERM close the file cleanly.
+#include "app/cli/CliVerb.h"
+#include "core/can/BusInterfaceName.h"
+#include "core/can/CanBus.h"
+
+#include <QDeadlineTimer>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLoggingCategory>
+
+#include <cstdio>
+#include <vector>
+
+namespace coscope::cli {
+
+namespace {
+const QString kVerb = QStringLiteral("record");
+constexpr int kOpenWaitMs = 8000;
+constexpr int kFlushMs = 100;
+}  // namespace
+
+static int runRecord(const QStringList& args) {
+    // Qt's CAN plugins log to stderr (e.g. peakcan "Cannot load library"); the backend reports
+    // the same failure through the bus error, in one line.
+    QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Record a bus to a candump -L log file until --count, --duration, Ctrl-C or SIGTERM."));
+    parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://"));
+    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write (candump -L format)"));
+    const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
+    parser.addOption(countOpt);
+    parser.addOption(durationOpt);
+    int code = 0;
+    if (!parseArgs(parser, kVerb, args, &code)) return code;
+    const QStringList pos = parser.positionalArguments();
+    if (pos.size() != 2) return usageError(kVerb, QStringLiteral("expected BUS and OUT (see --help)"));
+
+    qint64 count = -1;
+    if (parser.isSet(countOpt)) {
+        bool ok = false;
+        count = parser.value(countOpt).toLongLong(&ok);
+        if (!ok || count <= 0) return usageError(kVerb, QStringLiteral("--count must be a positive number, not '%1'").arg(parser.value(countOpt)));
+    }
+    double duration = -1;
+    if (parser.isSet(durationOpt)) {
+        bool ok = false;
+        duration = parser.value(durationOpt).toDouble(&ok);
+        if (!ok || duration <= 0) return usageError(kVerb, QStringLiteral("--duration must be a positive number of seconds, not '%1'").arg(parser.value(durationOpt)));
+    }
+
+    QString error;
+    const auto url = BusUrl::parse(pos[0], &error);
+    if (!url) return usageError(kVerb, error);
+    auto bus = createBus(*url, &error);
+    if (!bus) return failure(kVerb, error);
+
+    QFile out(pos[1]);
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+        return failure(kVerb, QStringLiteral("cannot write %1: %2").arg(pos[1], out.errorString()));
+
+    installInterruptHandler();
+    bus->open();
+    if (!bus->waitForOpen(kOpenWaitMs)) {
+        const QString why = bus->errorString().isEmpty() ? QStringLiteral("cannot open %1: no answer").arg(url->toString()) : bus->errorString();
+        bus->close();
+        out.close();
+        return failure(kVerb, why);
+    }
+
+    const QString iface = busInterfaceName(*url);
+    QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
+    std::vector<CanFrame> batch(512);
+    qint64 written = 0;
+    bool writeFailed = false;
+    QElapsedTimer sinceFlush;
+    sinceFlush.start();
+    QByteArray chunk;
+    auto drain = [&] {
+        for (;;) {
+            const size_t n = bus->read(batch.data(), batch.size());
+            if (n == 0) break;
+            for (size_t i = 0; i < n && (count < 0 || written < count); ++i, ++written) {
+                chunk += formatCandumpL(batch[i], iface).toUtf8();
+                chunk += '\n';
+            }
+            if (count >= 0 && written >= count) break;
+        }
+        if (!chunk.isEmpty() && !writeFailed) {
+            if (out.write(chunk) != chunk.size()) writeFailed = true;
+            chunk.clear();
+        }
+        if (sinceFlush.elapsed() >= kFlushMs / 2) {  // waits are 50 ms: at most ~100 ms unflushed
+            out.flush();
+            sinceFlush.restart();
+        }
+    };
+    auto finish = [&](int exitCode, const QString& why) {
+        drain();
+        out.flush();
+        out.close();
+        bus->close();
+        if (exitCode != Ok) return failure(kVerb, why);
+        std::fprintf(stderr, "coscope-cli record: %lld frames written to %s\n", static_cast<long long>(written), qPrintable(pos[1]));
+        return exitCode;
+    };
+
+    while (!interrupted() && !deadline.hasExpired() && (count < 0 || written < count)) {
+        bus->waitForFrames(50);
+        drain();
+        if (writeFailed)
+            return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out.errorString()).arg(written));
+        if (bus->state() == CanBus::State::Error) {
+            drain();
+            return finish(Failure, QStringLiteral("%1; %2 frames kept in %3").arg(bus->errorString()).arg(written).arg(pos[1]));
+        }
+    }
+    return finish(Ok, {});
+}
+
+COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a candump -L log file."), runRecord});
+
+}  // namespace coscope::cli

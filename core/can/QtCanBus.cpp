@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/can/QtCanBus.h"
+
+#include <QCanBus>
+#include <QCanBusDevice>
+#include <QThread>
+#include <QTimer>
+#include <QVariant>
+
+#include <spdlog/spdlog.h>
+
+namespace coscope {
+
+QtCanBus::QtCanBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+
+QtCanBus::~QtCanBus() { close(); }
+
+QString QtCanBus::name() const { return url().scheme + QStringLiteral("://") + url().target; }
+
+std::optional<CanFrame> QtCanBus::fromQt(const QCanBusFrame& q) {
+    CanFrame f;
+    const auto ts = q.timeStamp();
+    f.timestampNs = ts.seconds() * 1'000'000'000 + ts.microSeconds() * 1000;
+    const QByteArray payload = q.payload();
+    switch (q.frameType()) {
+    case QCanBusFrame::DataFrame:
+        break;
+    case QCanBusFrame::RemoteRequestFrame:
+        // Qt carries the requested DLC of a remote frame as the payload size.
+        f.flags |= CanFrame::Remote;
+        f.len = static_cast<uint8_t>(std::min<qsizetype>(payload.size(), 8));
+        f.id = q.frameId();
+        if (q.hasExtendedFrameFormat()) f.flags |= CanFrame::Extended;
+        return f;
+    case QCanBusFrame::ErrorFrame:
+        f.flags |= CanFrame::Error;
+        f.id = static_cast<uint32_t>(q.error()) & 0x1FFFFFFFU;
+        f.len = 8;
+        std::copy_n(payload.constData(), std::min<qsizetype>(payload.size(), 8), f.data.begin());
+        return f;
+    default:
+        return std::nullopt;  // invalid/unknown frames carry nothing usable
+    }
+    f.id = q.frameId();
+    if (q.hasExtendedFrameFormat()) f.flags |= CanFrame::Extended;
+    const int maxLen = q.hasFlexibleDataRateFormat() ? 64 : 8;
+    if (q.hasFlexibleDataRateFormat()) {
+        f.flags |= CanFrame::Fd;
+        if (q.hasBitrateSwitch()) f.flags |= CanFrame::BitRateSwitch;
+        if (q.hasErrorStateIndicator()) f.flags |= CanFrame::ErrorState;
+    }
+    f.len = static_cast<uint8_t>(std::min<qsizetype>(payload.size(), maxLen));
+    std::copy_n(payload.constData(), f.len, f.data.begin());
+    return f;
+}
+
+QCanBusFrame QtCanBus::toQt(const CanFrame& f) {
+    QCanBusFrame q;
+    q.setFrameId(f.id);
+    q.setExtendedFrameFormat(f.isExtended());
+    if (f.isRemote()) {
+        q.setFrameType(QCanBusFrame::RemoteRequestFrame);
+        q.setPayload(QByteArray(f.len, '\0'));
+        return q;
+    }
+    q.setFrameType(QCanBusFrame::DataFrame);
+    if (f.isFd()) {
+        q.setFlexibleDataRateFormat(true);
+        q.setBitrateSwitch(f.flags & CanFrame::BitRateSwitch);
+        q.setErrorStateIndicator(f.flags & CanFrame::ErrorState);
+    }
+    q.setPayload(QByteArray(reinterpret_cast<const char*>(f.data.data()), f.len));
+    return q;
+}
+
+void QtCanBus::open() {
+    if (thread_) return;
+    setState(State::Opening);
+    thread_ = new QThread;
+    thread_->setObjectName(QStringLiteral("can-") + url().scheme);
+    context_ = new QObject;
+    context_->moveToThread(thread_);
+    thread_->start();
+    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
+}
+
+void QtCanBus::close() {
+    if (!thread_) {
+        if (state() != State::Closed) setState(State::Closed);
+        return;
+    }
+    QMetaObject::invokeMethod(context_, [this] { stopOnThread(); }, Qt::BlockingQueuedConnection);
+    thread_->quit();
+    thread_->wait();
+    delete context_;
+    context_ = nullptr;
+    delete thread_;
+    thread_ = nullptr;
+    setState(State::Closed);  // errorString() keeps the last failure
+}
+
+void QtCanBus::startOnThread() {
+    opened_ = false;
+    stopping_ = false;
+    QString error;
+    device_ = QCanBus::instance()->createDevice(url().scheme, url().target, &error);
+    if (!device_) {
+        setState(State::Error, QStringLiteral("cannot open %1: %2").arg(name(), error.isEmpty() ? QStringLiteral("plugin refused the device") : error));
+        return;
+    }
+    device_->setParent(context_);
+    if (url().bitrate() > 0) device_->setConfigurationParameter(QCanBusDevice::BitRateKey, url().bitrate());
+    if (url().canFd() || url().dataBitrate() > 0) device_->setConfigurationParameter(QCanBusDevice::CanFdKey, true);
+    if (url().dataBitrate() > 0) device_->setConfigurationParameter(QCanBusDevice::DataBitRateKey, url().dataBitrate());
+    if (url().scheme == u"socketcan")
+        device_->setConfigurationParameter(QCanBusDevice::ErrorFilterKey,
+                                           QVariant::fromValue(QCanBusFrame::FrameErrors(QCanBusFrame::AnyError)));
+
+    QObject::connect(device_, &QCanBusDevice::framesReceived, context_, [this] { onFramesReceived(); });
+    QObject::connect(device_, &QCanBusDevice::errorOccurred, context_, [this](QCanBusDevice::CanBusError e) { onDeviceError(e); });
+    QObject::connect(device_, &QCanBusDevice::stateChanged, context_, [this](QCanBusDevice::CanBusDeviceState s) { onDeviceState(s); });
+
+    openTimer_ = new QTimer(context_);
+    openTimer_->setSingleShot(true);
+    QObject::connect(openTimer_, &QTimer::timeout, context_, [this] {
+        if (!opened_) fail(QStringLiteral("cannot open %1: no connection within %2 s").arg(name()).arg(kOpenTimeoutMs / 1000));
+    });
+    openTimer_->start(kOpenTimeoutMs);
+
+    if (!device_->connectDevice()) {
+        if (device_) fail(QStringLiteral("cannot open %1: %2").arg(name(), device_->errorString()));  // else already reported
+        return;
+    }
+    if (device_ && device_->state() == QCanBusDevice::ConnectedState) onDeviceState(QCanBusDevice::ConnectedState);
+}
+
+void QtCanBus::stopOnThread() {
+    stopping_ = true;
+    if (openTimer_) {
+        delete openTimer_;
+        openTimer_ = nullptr;
+    }
+    if (device_) {
+        QObject::disconnect(device_, nullptr, context_, nullptr);
+        if (device_->state() != QCanBusDevice::UnconnectedState) device_->disconnectDevice();
+        delete device_;
+        device_ = nullptr;
+    }
+    opened_ = false;
+}
+
+void QtCanBus::fail(const QString& message) {
+    if (stopping_) return;
+    if (openTimer_) openTimer_->stop();
+    if (device_) {
+        QObject::disconnect(device_, nullptr, context_, nullptr);
+        if (device_->state() != QCanBusDevice::UnconnectedState) device_->disconnectDevice();
+        device_->deleteLater();
+        device_ = nullptr;
+    }
+    opened_ = false;
+    setState(State::Error, message);
+}
+
+void QtCanBus::onFramesReceived() {
+    if (!device_) return;
+    while (device_->framesAvailable() > 0) {
+        const QList<QCanBusFrame> frames = device_->readAllFrames();
+        for (const QCanBusFrame& q : frames) {
+            if (q.hasLocalEcho()) continue;  // sendFrame() already delivered our own Tx copy
+            auto f = fromQt(q);
+            if (!f) continue;
+            if (f->timestampNs == 0) f->timestampNs = nowNs();
+            deliver(*f);
+        }
+    }
+}
+
+void QtCanBus::onDeviceError(int error) {
+    if (!device_ || stopping_) return;
+    const auto e = static_cast<QCanBusDevice::CanBusError>(error);
+    if (e == QCanBusDevice::NoError) return;
+    const QString text = device_->errorString();
+    if (e == QCanBusDevice::WriteError) {
+        if (writing_) return;  // sendFrame() reports it to its caller
+        countError();
+        reportError(QStringLiteral("%1: write failed: %2").arg(name(), text));
+        return;
+    }
+    if (!opened_) {
+        fail(QStringLiteral("cannot open %1: %2").arg(name(), text));
+        return;
+    }
+    if (e == QCanBusDevice::ReadError || e == QCanBusDevice::ConnectionError) {
+        fail(QStringLiteral("%1 failed: %2").arg(name(), text));
+        return;
+    }
+    reportError(QStringLiteral("%1: %2").arg(name(), text));
+}
+
+void QtCanBus::onDeviceState(int s) {
+    if (stopping_) return;
+    const auto st = static_cast<QCanBusDevice::CanBusDeviceState>(s);
+    if (st == QCanBusDevice::ConnectedState && !opened_) {
+        opened_ = true;
+        if (openTimer_) openTimer_->stop();
+        setState(State::Open);
+    } else if (st == QCanBusDevice::UnconnectedState && opened_) {
+        fail(QStringLiteral("%1 disconnected (device gone or its server closed)").arg(name()));
+    }
+}
+
+bool QtCanBus::sendFrame(const CanFrame& frame, QString* error) {
+    if (frame.isError()) {
+        if (error) *error = QStringLiteral("error frames cannot be sent");
+        return false;
+    }
+    if (!thread_ || !context_) {
+        if (error) *error = QStringLiteral("%1 is not open").arg(name());
+        return false;
+    }
+    bool ok = false;
+    QString why;
+    auto doSend = [&] {
+        if (!device_ || !opened_) {
+            why = QStringLiteral("%1 is not open").arg(name());
+            return;
+        }
+        writing_ = true;
+        ok = device_->writeFrame(toQt(frame));
+        writing_ = false;
+        if (!ok) {
+            why = QStringLiteral("%1: write failed: %2").arg(name(), device_->errorString());
+            return;
+        }
+        CanFrame echo = frame;
+        echo.flags |= CanFrame::Tx;
+        echo.timestampNs = nowNs();
+        deliver(echo);
+    };
+    if (QThread::currentThread() == thread_)
+        doSend();
+    else
+        QMetaObject::invokeMethod(context_, doSend, Qt::BlockingQueuedConnection);
+    if (!ok && error) *error = why;
+    return ok;
+}
+
+}  // namespace coscope

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/can/SocketcandBus.h"
+
+#include <QTcpSocket>
+#include <QThread>
+#include <QTimer>
+
+#include <spdlog/spdlog.h>
+
+namespace coscope {
+
+using socketcand::Message;
+
+SocketcandBus::SocketcandBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+
+SocketcandBus::~SocketcandBus() { close(); }
+
+QString SocketcandBus::where() const {
+    const QString host = url().host.contains(u':') ? u'[' + url().host + u']' : url().host;
+    return QStringLiteral("%1:%2").arg(host).arg(url().port);
+}
+
+void SocketcandBus::open() {
+    if (thread_) return;  // already opening or open
+    setState(State::Opening);
+    thread_ = new QThread;
+    thread_->setObjectName(QStringLiteral("socketcand"));
+    context_ = new QObject;
+    context_->moveToThread(thread_);
+    thread_->start();
+    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
+}
+
+void SocketcandBus::close() {
+    if (!thread_) {
+        if (state() != State::Closed) setState(State::Closed);
+        return;
+    }
+    QMetaObject::invokeMethod(context_, [this] { stopOnThread(); }, Qt::BlockingQueuedConnection);
+    thread_->quit();
+    thread_->wait();
+    delete context_;
+    context_ = nullptr;
+    delete thread_;
+    thread_ = nullptr;
+    setState(State::Closed);  // errorString() keeps the last failure
+}
+
+void SocketcandBus::startOnThread() {
+    splitter_ = {};
+    socket_ = new QTcpSocket(context_);
+    handshakeTimer_ = new QTimer(context_);
+    handshakeTimer_->setSingleShot(true);
+    QObject::connect(handshakeTimer_, &QTimer::timeout, context_, [this] { onHandshakeTimeout(); });
+    QObject::connect(socket_, &QTcpSocket::connected, context_, [this] { onConnected(); });
+    QObject::connect(socket_, &QTcpSocket::readyRead, context_, [this] { onReadyRead(); });
+    QObject::connect(socket_, &QTcpSocket::errorOccurred, context_, [this] { onSocketError(); });
+    QObject::connect(socket_, &QTcpSocket::disconnected, context_, [this] { onDisconnected(); });
+    phase_ = Phase::Connecting;
+    handshakeTimer_->start(kHandshakeTimeoutMs);
+    spdlog::debug("socketcand: connecting to {} channel {}", where().toStdString(), url().channel.toStdString());
+    socket_->connectToHost(url().host, url().port);
+}
+
+void SocketcandBus::stopOnThread() {
+    phase_ = Phase::Closing;
+    if (handshakeTimer_) handshakeTimer_->stop();
+    if (socket_) {
+        QObject::disconnect(socket_, nullptr, context_, nullptr);
+        // Let queued "< send >" commands leave before the connection goes.
+        if (socket_->state() == QAbstractSocket::ConnectedState && socket_->bytesToWrite() > 0)
+            socket_->waitForBytesWritten(500);
+        socket_->abort();
+        delete socket_;
+        socket_ = nullptr;
+    }
+    delete handshakeTimer_;
+    handshakeTimer_ = nullptr;
+    phase_ = Phase::Idle;
+}
+
+void SocketcandBus::fail(const QString& message) {
+    if (phase_ == Phase::Idle || phase_ == Phase::Closing) return;
+    phase_ = Phase::Idle;
+    if (handshakeTimer_) handshakeTimer_->stop();
+    if (socket_) {
+        QObject::disconnect(socket_, nullptr, context_, nullptr);
+        socket_->abort();
+        socket_->deleteLater();
+        socket_ = nullptr;
+    }
+    setState(State::Error, message);
+}
+
+void SocketcandBus::onConnected() {
+    phase_ = Phase::WaitHi;
+    spdlog::debug("socketcand: connected to {}", where().toStdString());
+}
+
+void SocketcandBus::onReadyRead() {
+    if (!socket_) return;
+    splitter_.feed(socket_->readAll());
+    for (;;) {
+        QString discarded;
+        auto raw = splitter_.next(&discarded);
+        if (!discarded.isEmpty()) {
+            countError();
+            spdlog::warn("socketcand {}: {}", where().toStdString(), discarded.toStdString());
+        }
+        if (!raw) break;
+        QString why;
+        auto message = socketcand::parseMessage(*raw, &why);
+        if (!message) {
+            countError();
+            spdlog::warn("socketcand {}: {}", where().toStdString(), why.toStdString());
+            continue;
+        }
+        handle(*message);
+        if (!socket_) break;  // failed while handling
+    }
+}
+
+void SocketcandBus::handle(const Message& m) {
+    const QString channel = url().channel;
+    switch (phase_) {
+    case Phase::Connecting:  // data before connected() cannot happen; treat as greeting phase
+    case Phase::WaitHi:
+        if (m.kind == Message::Kind::Hi) {
+            phase_ = Phase::WaitOpenOk;
+            socket_->write(socketcand::encodeOpen(channel));
+        } else if (m.kind == Message::Kind::Error) {
+            fail(QStringLiteral("socketcand at %1 refused the connection: %2").arg(where(), m.text));
+        } else {
+            fail(QStringLiteral("socketcand at %1 sent '%2' instead of the '< hi >' greeting").arg(where(), m.word));
+        }
+        return;
+    case Phase::WaitOpenOk:
+        if (m.kind == Message::Kind::Ok) {
+            phase_ = Phase::WaitRawOk;
+            socket_->write(socketcand::encodeRawMode());
+        } else if (m.kind == Message::Kind::Error) {
+            fail(QStringLiteral("socketcand at %1 cannot open channel '%2': %3").arg(where(), channel, m.text));
+        } else {
+            fail(QStringLiteral("socketcand at %1 answered '%2' to '< open %3 >'").arg(where(), m.word, channel));
+        }
+        return;
+    case Phase::WaitRawOk:
+        if (m.kind == Message::Kind::Ok) {
+            phase_ = Phase::Raw;
+            handshakeTimer_->stop();
+            setState(State::Open);
+        } else if (m.kind == Message::Kind::Error) {
+            fail(QStringLiteral("socketcand at %1 refused raw mode: %2").arg(where(), m.text));
+        } else {
+            fail(QStringLiteral("socketcand at %1 answered '%2' to '< rawmode >'").arg(where(), m.word));
+        }
+        return;
+    case Phase::Raw:
+        if (m.kind == Message::Kind::Frame) {
+            CanFrame f = m.frame;
+            if (f.timestampNs == 0) f.timestampNs = nowNs();
+            deliver(f);
+        } else if (m.kind == Message::Kind::Error) {
+            // e.g. "< error unknown command >" after a command the server does not support
+            countError();
+            reportError(QStringLiteral("socketcand at %1: %2").arg(where(), m.text));
+        }
+        return;  // ok/echo and the like need nothing
+    case Phase::Idle:
+    case Phase::Closing:
+        return;
+    }
+}
+
+void SocketcandBus::onSocketError() {
+    if (!socket_ || phase_ == Phase::Idle || phase_ == Phase::Closing) return;
+    const auto error = socket_->error();
+    if (error == QAbstractSocket::RemoteHostClosedError) {
+        onDisconnected();
+        return;
+    }
+    QString reason;
+    switch (error) {
+    case QAbstractSocket::ConnectionRefusedError: reason = QStringLiteral("connection refused"); break;
+    case QAbstractSocket::HostNotFoundError: reason = QStringLiteral("host not found"); break;
+    case QAbstractSocket::SocketTimeoutError: reason = QStringLiteral("timed out"); break;
+    case QAbstractSocket::NetworkError: reason = QStringLiteral("network error (%1)").arg(socket_->errorString()); break;
+    default: reason = socket_->errorString(); break;
+    }
+    if (phase_ == Phase::Connecting)
+        fail(QStringLiteral("cannot reach socketcand at %1: %2").arg(where(), reason));
+    else
+        fail(QStringLiteral("connection to socketcand at %1 lost: %2").arg(where(), reason));
+}
+
+void SocketcandBus::onDisconnected() {
+    switch (phase_) {
+    case Phase::Raw: fail(QStringLiteral("socketcand server closed the connection")); return;
+    case Phase::Connecting:
+    case Phase::WaitHi:
+    case Phase::WaitOpenOk:
+    case Phase::WaitRawOk:
+        fail(QStringLiteral("socketcand at %1 closed the connection during the handshake (channel '%2')").arg(where(), url().channel));
+        return;
+    case Phase::Idle:
+    case Phase::Closing: return;
+    }
+}
+
+void SocketcandBus::onHandshakeTimeout() {
+    const QString s = QString::number(kHandshakeTimeoutMs / 1000.0);
+    switch (phase_) {
+    case Phase::Connecting: fail(QStringLiteral("cannot reach socketcand at %1: no answer within %2 s").arg(where(), s)); return;
+    case Phase::WaitHi: fail(QStringLiteral("socketcand at %1 did not greet with '< hi >' within %2 s").arg(where(), s)); return;
+    case Phase::WaitOpenOk:
+        fail(QStringLiteral("socketcand at %1 did not answer '< open %2 >' within %3 s").arg(where(), url().channel, s));
+        return;
+    case Phase::WaitRawOk: fail(QStringLiteral("socketcand at %1 did not answer '< rawmode >' within %2 s").arg(where(), s)); return;
+    case Phase::Raw:
+    case Phase::Idle:
+    case Phase::Closing: return;
+    }
+}
+
+bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
+    if (frame.isError()) {
+        if (error) *error = QStringLiteral("error frames cannot be sent");
+        return false;
+    }
+    if (!thread_ || !context_) {
+        if (error) *error = QStringLiteral("socketcand bus is not open");
+        return false;
+    }
+    bool ok = false;
+    QString why;
+    auto doSend = [&] {
+        if (phase_ != Phase::Raw || !socket_) {
+            why = QStringLiteral("socketcand connection to %1 is not open").arg(where());
+            return;
+        }
+        if (socket_->write(socketcand::encodeSend(frame)) < 0) {
+            why = QStringLiteral("cannot write to socketcand at %1: %2").arg(where(), socket_->errorString());
+            return;
+        }
+        ok = true;
+        // socketcand's raw socket does not echo our own frames: record the Tx copy here.
+        CanFrame echo = frame;
+        echo.flags |= CanFrame::Tx;
+        echo.timestampNs = nowNs();
+        deliver(echo);
+    };
+    if (QThread::currentThread() == thread_)
+        doSend();
+    else
+        QMetaObject::invokeMethod(context_, doSend, Qt::BlockingQueuedConnection);
+    if (!ok && error) *error = why;
+    return ok;
+}
+
+}  // namespace coscope
