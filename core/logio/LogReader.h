@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+class QIODevice;
+
+namespace coscope::logio {
+
+// A problem in the input that did not stop reading: `where` is the 1-based line number of a
+// text log, or the record/object number of a binary one.
+struct LogDiagnostic {
+    int64_t where = 0;
+    QString message;
+};
+
+// Reads one log format incrementally (DESIGN.md "Reliability": a bad line is reported with its
+// line number and the rest is read; nothing here throws or aborts on bad input).
+// Typical use: open(), then read() batches until it returns 0; then check errorString().
+// cancel() may be called from any thread; progress() is safe to poll from any thread.
+class LogReader {
+public:
+    virtual ~LogReader();
+
+    virtual QString formatName() const = 0;
+
+    bool open(const QString& path);
+    // Reads from `device` (opened for reading; the caller keeps it alive until done).
+    bool open(QIODevice* device, const QString& sourceName = {});
+
+    // Reads up to `max` frames; 0 means the end (or a fatal error, or cancel()).
+    size_t read(CanFrame* out, size_t max);
+    // Reads everything that is left (small files, tests).
+    std::vector<CanFrame> readAll();
+
+    bool atEnd() const { return done_; }
+    double progress() const { return progress_.load(std::memory_order_relaxed); }  // 0..1 by bytes
+    void cancel() { cancelled_.store(true, std::memory_order_relaxed); }
+    bool isCancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+
+    // Fatal problem (unreadable file, not this format); empty when reading worked.
+    bool hasError() const { return !error_.isEmpty(); }
+    QString errorString() const { return error_; }
+
+    const std::vector<LogDiagnostic>& diagnostics() const { return diagnostics_; }
+    uint64_t diagnosticCount() const { return diagnosticCount_; }  // including unstored ones
+    uint64_t framesRead() const { return framesRead_; }
+    QString sourceName() const { return sourceName_; }
+    // Names of the buses seen (CanFrame::bus indexes this list): "can0", "1", ...
+    const QStringList& busNames() const { return busNames_; }
+
+    static constexpr size_t kMaxStoredDiagnostics = 1000;
+
+protected:
+    // Called once after open(): reads the header. Return false after fail() if unusable.
+    virtual bool readHeader() { return true; }
+    // Reads up to max frames; call finish() at the end of input.
+    virtual size_t readFrames(CanFrame* out, size_t max) = 0;
+
+    QIODevice* device() const { return device_; }
+    void warn(int64_t where, const QString& message);
+    void fail(const QString& message);
+    void finish() { done_ = true; }
+    void updateProgress();
+    // Index of a bus by name, added on first sight (at most 256 buses; later ones share 255).
+    uint8_t busIndex(std::string_view name);
+    // Index of a bus numbered from 1 (Vector, PEAK, BLF channels): channel N is bus N-1, named
+    // "canN-1" so a converted log replays on can0.. .
+    uint8_t busChannel(uint32_t channel);
+
+private:
+    std::unique_ptr<QIODevice> owned_;
+    QIODevice* device_ = nullptr;
+    QString sourceName_;
+    QString error_;
+    std::vector<LogDiagnostic> diagnostics_;
+    uint64_t diagnosticCount_ = 0;
+    uint64_t framesRead_ = 0;
+    QStringList busNames_;
+    std::vector<QByteArray> busKeys_;
+    int64_t size_ = 0;
+    bool done_ = false;
+    bool started_ = false;
+    std::atomic<bool> cancelled_{false};
+    std::atomic<double> progress_{0.0};
+};
+
+// Base of the line-oriented formats: buffered line splitting straight from the device
+// (never the whole file in memory), 1-based line numbers, CR LF tolerated.
+class LineLogReader : public LogReader {
+protected:
+    enum class LineResult { Frame, Skip, Bad };
+    // Parses one line (without the line end). Bad lines call warn(lineNumber(), ...) themselves.
+    virtual LineResult parseLine(std::string_view line, CanFrame& frame) = 0;
+
+    size_t readFrames(CanFrame* out, size_t max) override;
+    // For readHeader(): the next line, or false at the end.
+    bool nextLine(std::string_view& line);
+    // Puts the last line back so readFrames() sees it again.
+    void unreadLine() { unread_ = true; }
+    int64_t lineNumber() const { return lineNumber_; }
+
+private:
+    QByteArray buffer_;
+    qsizetype pos_ = 0;
+    qsizetype end_ = 0;
+    bool eof_ = false;
+    bool unread_ = false;
+    std::string_view last_;
+    int64_t lineNumber_ = 0;
+};
+
+}  // namespace coscope::logio

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/logio/LogWriter.h"
+
+#include <QFile>
+
+namespace coscope::logio {
+
+namespace {
+constexpr qsizetype kFlushAt = 256 * 1024;
+const char kHexDigits[] = "0123456789ABCDEF";
+}  // namespace
+
+void appendHex2(QByteArray& out, uint8_t byte) {
+    out.append(kHexDigits[byte >> 4]);
+    out.append(kHexDigits[byte & 0xF]);
+}
+
+void appendHex(QByteArray& out, uint32_t value, int width) {
+    char tmp[8];
+    int n = 0;
+    do {
+        tmp[n++] = kHexDigits[value & 0xF];
+        value >>= 4;
+    } while (value && n < 8);
+    for (int i = n; i < width; ++i) out.append('0');
+    while (n) out.append(tmp[--n]);
+}
+
+LogWriter::~LogWriter() {
+    if (device_ && !closed_) close();
+}
+
+bool LogWriter::open(const QString& path) {
+    auto file = std::make_unique<QFile>(path);
+    if (!file->open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        error_ = QStringLiteral("cannot write %1: %2").arg(path, file->errorString());
+        return false;
+    }
+    owned_ = std::move(file);
+    return open(owned_.get());
+}
+
+bool LogWriter::open(QIODevice* device) {
+    device_ = device;
+    if (!device_ || !device_->isWritable()) {
+        error_ = QStringLiteral("output is not writable");
+        device_ = nullptr;
+        return false;
+    }
+    buffer_.reserve(kFlushAt + 4096);
+    return true;
+}
+
+bool LogWriter::ensureHeader(const CanFrame* first) {
+    if (!headerDone_) {
+        headerDone_ = true;
+        writeHeader(first);
+    }
+    return true;
+}
+
+bool LogWriter::write(const CanFrame& frame, const QString& summary) {
+    if (!device_ || closed_ || hasError()) return false;
+    ensureHeader(&frame);
+    if (summary.isEmpty() && summary_ && wantsSummary()) writeFrame(frame, summary_(frame));
+    else writeFrame(frame, summary);
+    ++written_;
+    if (buffer_.size() >= kFlushAt) return flush();
+    return true;
+}
+
+bool LogWriter::flush() {
+    if (!device_) return false;
+    if (!buffer_.isEmpty()) {
+        if (device_->write(buffer_) != buffer_.size()) {
+            if (error_.isEmpty()) error_ = QStringLiteral("write failed: %1").arg(device_->errorString());
+            buffer_.clear();
+            return false;
+        }
+        buffer_.clear();
+    }
+    if (auto* file = qobject_cast<QFileDevice*>(device_)) file->flush();
+    return !hasError();
+}
+
+bool LogWriter::close() {
+    if (!device_ || closed_) return !hasError();
+    ensureHeader(nullptr);
+    writeFooter();
+    const bool ok = flush();
+    closed_ = true;
+    if (owned_) owned_->close();
+    return ok;
+}
+
+QString LogWriter::busName(uint8_t bus) const {
+    if (bus < busNames_.size() && !busNames_[bus].isEmpty()) return busNames_[bus];
+    return QStringLiteral("can%1").arg(bus);
+}
+
+}  // namespace coscope::logio

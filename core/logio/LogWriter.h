@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+
+#include <QByteArray>
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+class QIODevice;
+
+namespace coscope::logio {
+
+// Writes one log format. The header goes out with the first frame (formats put the start time
+// in it) or at close() for an empty log. Output is buffered and written in large blocks.
+class LogWriter {
+public:
+    virtual ~LogWriter();
+
+    virtual QString formatName() const = 0;
+
+    bool open(const QString& path);
+    bool open(QIODevice* device);  // caller keeps the device alive until close()
+
+    // Names of the buses (CanFrame::bus indexes it); missing ones are written as "can<N>".
+    void setBusNames(const QStringList& names) { busNames_ = names; }
+    // Formats with a summary column (CSV) call this when write() is given no summary.
+    void setSummaryProvider(std::function<QString(const CanFrame&)> provider) { summary_ = std::move(provider); }
+
+    bool write(const CanFrame& frame, const QString& summary = {});
+    bool flush();
+    bool close();  // writes the footer, flushes; closes a file opened by path
+
+    bool hasError() const { return !error_.isEmpty(); }
+    QString errorString() const { return error_; }
+    uint64_t framesWritten() const { return written_; }
+
+protected:
+    virtual void writeHeader(const CanFrame* first) = 0;  // first == nullptr: empty log
+    virtual void writeFrame(const CanFrame& frame, const QString& summary) = 0;
+    virtual void writeFooter() {}
+    virtual bool wantsSummary() const { return false; }
+
+    QByteArray& out() { return buffer_; }
+    QString busName(uint8_t bus) const;
+    uint64_t frameNumber() const { return written_ + 1; }  // of the frame being written
+
+private:
+    bool ensureHeader(const CanFrame* first);
+
+    std::unique_ptr<QIODevice> owned_;
+    QIODevice* device_ = nullptr;
+    QByteArray buffer_;
+    QStringList busNames_;
+    std::function<QString(const CanFrame&)> summary_;
+    QString error_;
+    uint64_t written_ = 0;
+    bool headerDone_ = false;
+    bool closed_ = false;
+};
+
+// Appends "AB" for a byte; uppercase like candump and Vector tools.
+void appendHex2(QByteArray& out, uint8_t byte);
+// Appends `value` as uppercase hex with at least `width` digits.
+void appendHex(QByteArray& out, uint32_t value, int width);
+
+}  // namespace coscope::logio

@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/logio/PcapLog.h"
+
+#include "core/logio/TextScan.h"
+
+#include <QIODevice>
+
+#include <cstring>
+
+namespace coscope::logio {
+
+namespace {
+constexpr uint32_t kLinkTypeSocketCan = 227;
+constexpr uint32_t kShb = 0x0A0D0D0A, kIdb = 1, kObsoletePacket = 2, kSpb = 3, kEpb = 6;
+constexpr uint32_t kByteOrderMagic = 0x1A2B3C4D;
+constexpr uint32_t kCanEff = 0x80000000U, kCanRtr = 0x40000000U, kCanErr = 0x20000000U;
+constexpr uint8_t kCanfdBrs = 0x01, kCanfdEsi = 0x02, kCanfdFdf = 0x04;
+constexpr uint32_t kMaxBlock = 16 * 1024 * 1024;
+}  // namespace
+
+uint32_t PcapReader::u32(const unsigned char* p) const { return swapped_ ? be32(p) : le32(p); }
+uint16_t PcapReader::u16(const unsigned char* p) const { return swapped_ ? be16(p) : le16(p); }
+
+int64_t PcapReader::toNs(uint64_t ticks, uint64_t ups) const {
+    if (ups == 1000000000ULL) return int64_t(ticks);
+    const uint64_t sec = ticks / ups, rem = ticks % ups;
+    return int64_t(sec * 1000000000ULL + (unsigned __int128)rem * 1000000000ULL / ups);
+}
+
+bool PcapReader::readExact(char* dst, qint64 n) {
+    qint64 got = 0;
+    while (got < n) {
+        const qint64 r = device()->read(dst + got, n - got);
+        if (r <= 0) return false;
+        got += r;
+    }
+    return true;
+}
+
+bool PcapReader::readHeader() {
+    unsigned char h[24];
+    if (!readExact(reinterpret_cast<char*>(h), 8)) {
+        fail(QStringLiteral("file too short for a pcap header"));
+        return false;
+    }
+    const uint32_t magicLe = le32(h);
+    if (magicLe == kShb) {
+        ng_ = true;
+        return parseSectionHeader(h);
+    }
+    if (!readExact(reinterpret_cast<char*>(h) + 8, 16)) {
+        fail(QStringLiteral("file too short for a pcap header"));
+        return false;
+    }
+    uint64_t ups = 0;
+    if (magicLe == 0xA1B2C3D4) ups = 1000000;
+    else if (magicLe == 0xA1B23C4D) ups = 1000000000;
+    else if (be32(h) == 0xA1B2C3D4) { ups = 1000000; swapped_ = true; }
+    else if (be32(h) == 0xA1B23C4D) { ups = 1000000000; swapped_ = true; }
+    else {
+        fail(QStringLiteral("not a pcap or pcapng file (magic %1)").arg(magicLe, 8, 16, QLatin1Char('0')));
+        return false;
+    }
+    pcapItf_.unitsPerSecond = ups;
+    pcapItf_.linkType = uint16_t(u32(h + 20) & 0xFFFF);
+    if (pcapItf_.linkType != kLinkTypeSocketCan) {
+        fail(QStringLiteral("pcap link type %1 is not SocketCAN (227)").arg(pcapItf_.linkType));
+        return false;
+    }
+    pcapItf_.bus = busIndex("can0");
+    return true;
+}
+
+bool PcapReader::parseSectionHeader(const unsigned char* first8) {
+    unsigned char bom[4];
+    if (!readExact(reinterpret_cast<char*>(bom), 4)) {
+        fail(QStringLiteral("truncated pcapng section header"));
+        return false;
+    }
+    if (le32(bom) == kByteOrderMagic) swapped_ = false;
+    else if (be32(bom) == kByteOrderMagic) swapped_ = true;
+    else {
+        fail(QStringLiteral("pcapng section header has a bad byte-order magic"));
+        return false;
+    }
+    const uint32_t total = u32(first8 + 4);
+    if (total < 28 || total > kMaxBlock || total % 4) {
+        fail(QStringLiteral("pcapng section header has a bad length %1").arg(total));
+        return false;
+    }
+    QByteArray rest(qsizetype(total - 12), '\0');
+    if (!readExact(rest.data(), rest.size())) {
+        fail(QStringLiteral("truncated pcapng section header"));
+        return false;
+    }
+    interfaces_.clear();  // interface ids restart in each section
+    return true;
+}
+
+void PcapReader::parseInterface(const QByteArray& body) {
+    Interface itf;
+    const auto* p = reinterpret_cast<const unsigned char*>(body.constData());
+    itf.linkType = u16(p);
+    QByteArray name;
+    // Options: code u16, length u16, value padded to 4.
+    for (qsizetype off = 8; off + 4 <= body.size();) {
+        const uint16_t code = u16(p + off), len = u16(p + off + 2);
+        off += 4;
+        if (code == 0 || off + len > body.size()) break;
+        if (code == 2) name = QByteArray(body.constData() + off, len);  // if_name
+        if (code == 9 && len >= 1) {                                    // if_tsresol
+            const uint8_t v = p[off];
+            const unsigned e = v & 0x7F;
+            uint64_t ups = 1;
+            for (unsigned i = 0; i < e && ups < (1ULL << 62) / 10; ++i) ups *= (v & 0x80) ? 2 : 10;
+            itf.unitsPerSecond = ups;
+        }
+        off += (len + 3) & ~3;
+    }
+    if (name.isEmpty()) name = "can" + QByteArray::number(qsizetype(interfaces_.size()));
+    while (name.endsWith('\0')) name.chop(1);
+    itf.bus = busIndex(std::string_view(name.constData(), size_t(name.size())));
+    interfaces_.push_back(itf);
+}
+
+bool PcapReader::decodePacket(const unsigned char* p, uint32_t capLen, const Interface& itf, CanFrame& f) {
+    if (itf.linkType != kLinkTypeSocketCan) {
+        warn(int64_t(packet_), QStringLiteral("packet with link type %1 is not SocketCAN; skipped").arg(itf.linkType));
+        return false;
+    }
+    if (capLen < 8) {
+        warn(int64_t(packet_), QStringLiteral("SocketCAN packet of %1 bytes is shorter than its 8-byte header").arg(capLen));
+        return false;
+    }
+    const uint32_t canId = be32(p);
+    const uint8_t len = p[4], fdFlags = p[5];
+    const bool fd = (fdFlags & kCanfdFdf) || capLen >= 72 || len > 8;
+    f.bus = itf.bus;
+    if (canId & kCanErr) {
+        f.flags |= CanFrame::Error;
+        f.id = canId & 0x1FFFFFFF;
+    } else {
+        f.id = canId & ((canId & kCanEff) ? 0x1FFFFFFFU : 0x7FFU);
+        if (canId & kCanEff) f.flags |= CanFrame::Extended;
+        if (canId & kCanRtr) f.flags |= CanFrame::Remote;
+    }
+    if (fd && !f.isError()) {
+        f.flags |= CanFrame::Fd;
+        if (fdFlags & kCanfdBrs) f.flags |= CanFrame::BitRateSwitch;
+        if (fdFlags & kCanfdEsi) f.flags |= CanFrame::ErrorState;
+    }
+    const uint32_t maxLen = f.isFd() ? 64 : 8;
+    if (len > maxLen) {
+        warn(int64_t(packet_), QStringLiteral("length %1 is too long for a %2 frame").arg(len).arg(f.isFd() ? "CAN FD" : "CAN"));
+        return false;
+    }
+    f.len = len;
+    if (f.isRemote()) return true;
+    const uint32_t avail = capLen - 8;
+    if (avail < len) {
+        warn(int64_t(packet_), QStringLiteral("packet truncated: %1 of %2 data bytes captured").arg(avail).arg(len));
+        f.len = uint8_t(avail);
+    }
+    std::memcpy(f.data.data(), p + 8, f.len);
+    return true;
+}
+
+int PcapReader::readPcapRecord(CanFrame& f) {
+    unsigned char h[16];
+    const qint64 got = device()->read(reinterpret_cast<char*>(h), 16);
+    if (got == 0) return -1;
+    ++packet_;
+    if (got < 16) {
+        warn(int64_t(packet_), QStringLiteral("truncated packet header at the end of the file"));
+        return -1;
+    }
+    const uint32_t capLen = u32(h + 8);
+    if (capLen > kMaxBlock) {
+        fail(QStringLiteral("packet %1: captured length %2 is implausible; file is damaged").arg(packet_).arg(capLen));
+        return -1;
+    }
+    block_.resize(capLen);
+    if (!readExact(block_.data(), capLen)) {
+        warn(int64_t(packet_), QStringLiteral("truncated packet at the end of the file"));
+        return -1;
+    }
+    f.timestampNs = int64_t(u32(h)) * 1000000000LL + toNs(u32(h + 4), pcapItf_.unitsPerSecond);
+    return decodePacket(reinterpret_cast<const unsigned char*>(block_.constData()), capLen, pcapItf_, f) ? 1 : 0;
+}
+
+int PcapReader::readPcapngBlock(CanFrame& f) {
+    unsigned char h[8];
+    const qint64 got = device()->read(reinterpret_cast<char*>(h), 8);
+    if (got == 0) return -1;
+    if (got < 8) {
+        warn(int64_t(packet_ + 1), QStringLiteral("truncated block at the end of the file"));
+        return -1;
+    }
+    if (le32(h) == kShb) return parseSectionHeader(h) ? 0 : -1;
+    const uint32_t type = u32(h), total = u32(h + 4);
+    if (total < 12 || total % 4 || total > kMaxBlock) {
+        fail(QStringLiteral("after packet %1: block of type %2 has a bad length %3; file is damaged").arg(packet_).arg(type).arg(total));
+        return -1;
+    }
+    block_.resize(total - 8);
+    if (!readExact(block_.data(), block_.size())) {
+        warn(int64_t(packet_ + 1), QStringLiteral("truncated block at the end of the file"));
+        return -1;
+    }
+    const auto* b = reinterpret_cast<const unsigned char*>(block_.constData());
+    const uint32_t bodyLen = total - 12;
+    if (type == kIdb) {
+        if (bodyLen < 8) return 0;
+        parseInterface(QByteArray(block_.constData(), bodyLen));
+        return 0;
+    }
+    if (type == kEpb || type == kObsoletePacket) {
+        ++packet_;
+        if (bodyLen < 20) {
+            warn(int64_t(packet_), QStringLiteral("packet block too short"));
+            return 0;
+        }
+        const uint32_t itfId = type == kEpb ? u32(b) : u16(b);
+        const uint64_t ticks = (uint64_t(u32(b + 4)) << 32) | u32(b + 8);
+        const uint32_t capLen = u32(b + 12);
+        if (itfId >= interfaces_.size()) {
+            warn(int64_t(packet_), QStringLiteral("packet refers to undefined interface %1").arg(itfId));
+            return 0;
+        }
+        if (capLen > bodyLen - 20) {
+            warn(int64_t(packet_), QStringLiteral("captured length exceeds the block"));
+            return 0;
+        }
+        const Interface& itf = interfaces_[itfId];
+        f.timestampNs = toNs(ticks, itf.unitsPerSecond);
+        return decodePacket(b + 20, capLen, itf, f) ? 1 : 0;
+    }
+    if (type == kSpb) {
+        ++packet_;
+        if (interfaces_.empty() || bodyLen < 4) {
+            warn(int64_t(packet_), QStringLiteral("simple packet without an interface"));
+            return 0;
+        }
+        const uint32_t capLen = std::min(u32(b), bodyLen - 4);
+        return decodePacket(b + 4, capLen, interfaces_[0], f) ? 1 : 0;
+    }
+    return 0;  // name resolution, statistics, custom blocks
+}
+
+size_t PcapReader::readFrames(CanFrame* out, size_t max) {
+    size_t n = 0;
+    while (n < max) {
+        if ((n & 0x3FF) == 0x3FF && isCancelled()) break;
+        CanFrame& f = out[n];
+        f = CanFrame{};
+        const int r = ng_ ? readPcapngBlock(f) : readPcapRecord(f);
+        if (r < 0) {
+            finish();
+            break;
+        }
+        if (r > 0) ++n;
+    }
+    return n;
+}
+
+// ---- writer
+
+namespace {
+void put32(QByteArray& o, uint32_t v) {
+    const char b[4] = {char(v), char(v >> 8), char(v >> 16), char(v >> 24)};
+    o.append(b, 4);
+}
+void put16(QByteArray& o, uint16_t v) {
+    const char b[2] = {char(v), char(v >> 8)};
+    o.append(b, 2);
+}
+void pad4(QByteArray& o) {
+    while (o.size() % 4) o.append('\0');
+}
+}  // namespace
+
+void PcapngWriter::writeHeader(const CanFrame*) {
+    QByteArray& o = out();
+    put32(o, kShb);
+    put32(o, 28);
+    put32(o, kByteOrderMagic);
+    put16(o, 1);
+    put16(o, 0);
+    put32(o, 0xFFFFFFFF);  // section length unknown
+    put32(o, 0xFFFFFFFF);
+    put32(o, 28);
+}
+
+void PcapngWriter::writeInterface(uint8_t bus) {
+    QByteArray body;
+    put16(body, kLinkTypeSocketCan);
+    put16(body, 0);
+    put32(body, 72);  // snap length: a whole canfd_frame
+    const QByteArray name = busName(bus).toUtf8();
+    put16(body, 2);  // if_name
+    put16(body, uint16_t(name.size()));
+    body += name;
+    pad4(body);
+    put16(body, 9);  // if_tsresol: 10^-9
+    put16(body, 1);
+    body.append(char(9));
+    pad4(body);
+    put16(body, 0);  // opt_endofopt
+    put16(body, 0);
+    QByteArray& o = out();
+    put32(o, kIdb);
+    put32(o, uint32_t(body.size() + 12));
+    o += body;
+    put32(o, uint32_t(body.size() + 12));
+    if (interfaceOfBus_.size() <= bus) interfaceOfBus_.resize(size_t(bus) + 1, -1);
+    interfaceOfBus_[bus] = int(interfaces_++);
+}
+
+void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
+    if (f.bus >= interfaceOfBus_.size() || interfaceOfBus_[f.bus] < 0) writeInterface(f.bus);
+    const uint32_t capLen = f.isFd() ? 72 : 16;
+    unsigned char pkt[72] = {};
+    uint32_t canId = f.id;
+    if (f.isError()) canId = (f.id & 0x1FFFFFFF) | kCanErr;
+    else {
+        if (f.isExtended()) canId |= kCanEff;
+        if (f.isRemote()) canId |= kCanRtr;
+    }
+    pkt[0] = uint8_t(canId >> 24);
+    pkt[1] = uint8_t(canId >> 16);
+    pkt[2] = uint8_t(canId >> 8);
+    pkt[3] = uint8_t(canId);
+    pkt[4] = f.len;
+    if (f.isFd()) {
+        pkt[5] = kCanfdFdf;
+        if (f.flags & CanFrame::BitRateSwitch) pkt[5] |= kCanfdBrs;
+        if (f.flags & CanFrame::ErrorState) pkt[5] |= kCanfdEsi;
+    }
+    if (!f.isRemote()) std::memcpy(pkt + 8, f.data.data(), std::min<size_t>(f.len, capLen - 8));
+    QByteArray& o = out();
+    const uint32_t total = 12 + 20 + capLen + 4;  // capLen is a multiple of 4
+    put32(o, kEpb);
+    put32(o, total);
+    put32(o, uint32_t(interfaceOfBus_[f.bus]));
+    const uint64_t ts = uint64_t(std::max<int64_t>(0, f.timestampNs));
+    put32(o, uint32_t(ts >> 32));
+    put32(o, uint32_t(ts));
+    put32(o, capLen);
+    put32(o, capLen);
+    o.append(reinterpret_cast<const char*>(pkt), capLen);
+    put16(o, 0);  // opt_endofopt
+    put16(o, 0);
+    put32(o, total);
+}
+
+}  // namespace coscope::logio

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/logio/LogReader.h"
+#include "core/logio/LogWriter.h"
+
+#include <vector>
+
+namespace coscope::logio {
+
+// libpcap and pcapng captures of SocketCAN (LINKTYPE_CAN_SOCKETCAN = 227, tcpdump.org
+// link-layer types): each packet is a struct can_frame / canfd_frame with the can_id in
+// big-endian order (flags EFF 0x80000000, RTR 0x40000000, ERR 0x20000000), then len, the FD
+// flags byte (BRS 0x01, ESI 0x02, FDF 0x04; linux/can.h), 2 reserved bytes and the data.
+// pcap: both byte orders, microsecond (a1b2c3d4) and nanosecond (a1b23c4d) magic.
+// pcapng (draft-ietf-opsawg-pcapng): SHB (either byte order), IDB with if_tsresol and
+// if_name, EPB, SPB and the obsolete packet block. Record numbers count packets from 1.
+class PcapReader : public LogReader {
+public:
+    QString formatName() const override { return QStringLiteral("pcap"); }
+
+protected:
+    bool readHeader() override;
+    size_t readFrames(CanFrame* out, size_t max) override;
+
+private:
+    struct Interface {
+        uint16_t linkType = 0;
+        uint64_t unitsPerSecond = 1000000;  // if_tsresol, default microseconds
+        uint8_t bus = 0;
+    };
+    bool readExact(char* dst, qint64 n);
+    int readPcapRecord(CanFrame& frame);    // 1 frame, 0 skipped, -1 end
+    int readPcapngBlock(CanFrame& frame);   // 1 frame, 0 skipped, -1 end
+    bool parseSectionHeader(const unsigned char* first8);
+    void parseInterface(const QByteArray& body);
+    bool decodePacket(const unsigned char* p, uint32_t capLen, const Interface& itf, CanFrame& frame);
+    uint32_t u32(const unsigned char* p) const;
+    uint16_t u16(const unsigned char* p) const;
+    int64_t toNs(uint64_t ticks, uint64_t unitsPerSecond) const;
+
+    bool ng_ = false;
+    bool swapped_ = false;  // file byte order is big-endian
+    Interface pcapItf_;     // classic pcap: the one link type
+    std::vector<Interface> interfaces_;
+    uint64_t packet_ = 0;
+    QByteArray block_;
+};
+
+// Writes pcapng (SHB, one IDB per bus with link type 227 and nanosecond resolution, EPBs),
+// which Wireshark and tshark open and dissect as SocketCAN.
+class PcapngWriter : public LogWriter {
+public:
+    QString formatName() const override { return QStringLiteral("pcapng"); }
+
+protected:
+    void writeHeader(const CanFrame* first) override;
+    void writeFrame(const CanFrame& frame, const QString& summary) override;
+
+private:
+    void writeInterface(uint8_t bus);
+    std::vector<int> interfaceOfBus_;  // bus -> interface id, -1 = none yet
+    uint32_t interfaces_ = 0;
+};
+
+}  // namespace coscope::logio

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/logio/PeakTrc.h"
+
+#include <QDateTime>
+
+#include <cstdio>
+
+namespace coscope::logio {
+
+namespace {
+constexpr int64_t kNsPerDay = 86400LL * 1000000000LL;
+constexpr int64_t kOleEpochDays = 25569;  // 1899-12-30 .. 1970-01-01
+
+// Offset of local time from UTC in ns at (roughly) the given local time.
+int64_t localOffsetNs(int64_t utcNs) {
+    const QDateTime dt = QDateTime::fromMSecsSinceEpoch(utcNs / 1000000);
+    return int64_t(dt.offsetFromUtc()) * 1000000000LL;
+}
+
+int fdDlcToLen(int dlc) {
+    static const int kLen[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
+    return dlc >= 0 && dlc < 16 ? kLen[dlc] : -1;
+}
+int lenToFdDlc(int len) {
+    for (int d = 0; d < 16; ++d)
+        if (fdDlcToLen(d) >= len) return d;
+    return 15;
+}
+}  // namespace
+
+std::optional<int64_t> oleDateToNs(std::string_view t) {
+    t = trimmed(t);
+    const size_t dot = t.find('.');
+    const auto days = parseDec(t.substr(0, dot));
+    if (!days || *days > 100000) return std::nullopt;  // beyond year 2173: not a trace start
+    __int128 localNs = __int128(*days) * kNsPerDay;
+    if (dot != std::string_view::npos) {
+        __int128 num = 0, den = 1;
+        for (size_t i = dot + 1; i < t.size() && den < __int128(1000000000000000000LL); ++i) {
+            if (t[i] < '0' || t[i] > '9') return std::nullopt;
+            num = num * 10 + (t[i] - '0');
+            den *= 10;
+        }
+        localNs += (num * kNsPerDay + den / 2) / den;
+    }
+    int64_t local = int64_t(localNs) - kOleEpochDays * kNsPerDay;
+    local = (local + 500) / 1000 * 1000;  // the decimal day fraction: microsecond resolution
+    return local - localOffsetNs(local);
+}
+
+QByteArray nsToOleDate(int64_t ns) {
+    const int64_t local = ns + localOffsetNs(ns) + kOleEpochDays * kNsPerDay;
+    const int64_t days = local / kNsPerDay;
+    const __int128 rem = local % kNsPerDay;
+    __int128 frac = rem * __int128(1000000000000000LL) / kNsPerDay;  // 15 decimals
+    char digits[16];
+    for (int i = 14; i >= 0; --i) {
+        digits[i] = char('0' + int(frac % 10));
+        frac /= 10;
+    }
+    digits[15] = 0;
+    return QByteArray::number(days) + '.' + digits;
+}
+
+TrcReader::LineResult TrcReader::bad(const QString& message) {
+    warn(lineNumber(), message);
+    return LineResult::Bad;
+}
+
+bool TrcReader::parseId(std::string_view t, CanFrame& f) {
+    const auto v = parseHex(t);
+    if (!v || *v > 0x1FFFFFFFU) return false;
+    f.id = *v;
+    if (t.size() > 4 || *v > 0x7FF) f.flags |= CanFrame::Extended;
+    return true;
+}
+
+TrcReader::LineResult TrcReader::readData(Tokens& tokens, CanFrame& f, uint32_t len) {
+    if (len > (f.isFd() ? 64u : 8u)) return bad(QStringLiteral("length %1 is too long").arg(len));
+    if (f.isFd() && !isValidFdLength(int(len))) return bad(QStringLiteral("%1 bytes is not a CAN FD length").arg(len));
+    f.len = uint8_t(len);
+    if (tokens.peek() == "RTR") {
+        f.flags |= CanFrame::Remote;
+        return LineResult::Frame;
+    }
+    if (f.isRemote() || f.isError()) return LineResult::Frame;
+    for (uint32_t i = 0; i < len; ++i) {
+        const std::string_view b = tokens.next();
+        const auto v = parseHexByte(b);
+        if (!v)
+            return bad(b.empty() ? QStringLiteral("length %1 but only %2 data bytes").arg(len).arg(i)
+                                 : QStringLiteral("data byte %1 is not hexadecimal").arg(i + 1));
+        f.data[i] = *v;
+    }
+    return LineResult::Frame;
+}
+
+TrcReader::LineResult TrcReader::parseLine(std::string_view line, CanFrame& f) {
+    line = trimmed(line);
+    if (line.empty()) return LineResult::Skip;
+    if (line.front() == ';') {
+        if (line.substr(0, 14) == ";$FILEVERSION=") {
+            const std::string_view v = trimmed(line.substr(14));
+            const size_t dot = v.find('.');
+            const auto ma = parseDec(v.substr(0, dot));
+            const auto mi = dot == std::string_view::npos ? std::optional<uint32_t>(0) : parseDec(v.substr(dot + 1));
+            if (!ma || !mi || *ma < 1 || *ma > 2) return bad(QStringLiteral("unknown file version"));
+            major_ = int(*ma);
+            minor_ = int(*mi);
+            versionSeen_ = true;
+        } else if (line.substr(0, 12) == ";$STARTTIME=") {
+            const auto ns = oleDateToNs(line.substr(12));
+            if (!ns) return bad(QStringLiteral("cannot read $STARTTIME; times are relative to the start"));
+            startNs_ = *ns;
+        } else if (line.substr(0, 10) == ";$COLUMNS=") {
+            columns_.clear();
+            for (char c : line.substr(10))
+                if (c != ',' && !isSpace(c)) columns_ += c;
+        }
+        return LineResult::Skip;
+    }
+    Tokens tokens(line);
+    return major_ >= 2 ? parseV2(tokens, f) : parseV1(tokens, f);
+}
+
+TrcReader::LineResult TrcReader::parseV1(Tokens& tokens, CanFrame& f) {
+    std::string_view num = tokens.next();
+    if (num.empty() || num.back() != ')') return bad(QStringLiteral("expected a message number 'N)'"));
+    const auto ts = parseDecimalNs(tokens.next(), 1000000);
+    if (!ts) return bad(QStringLiteral("bad time offset"));
+    f.timestampNs = addNs(startNs_, *ts);
+    f.bus = busChannel(1);
+    std::string_view t = tokens.next();
+    if (minor_ >= 2) {  // 1.2+: bus number column
+        const auto bus = parseDec(t);
+        if (!bus) return bad(QStringLiteral("expected a bus number"));
+        f.bus = busChannel(*bus);
+        t = tokens.next();
+    }
+    if (minor_ >= 1) {  // 1.1+: message type column
+        if (t == "Tx") f.flags |= CanFrame::Tx;
+        else if (t == "Error") f.flags |= CanFrame::Error;
+        else if (t != "Rx") return LineResult::Skip;  // Warng, Overrun, ... status lines
+        t = tokens.next();
+    }
+    if (t == "FFFFFFFF" && minor_ == 0) return LineResult::Skip;  // 1.0 bus information line
+    if (!parseId(t, f)) return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(t.data(), qsizetype(t.size()))));
+    if (tokens.peek() == "-") tokens.next();  // 1.3 reserved column
+    const auto len = parseDec(tokens.next());
+    if (!len) return bad(QStringLiteral("bad data length"));
+    return readData(tokens, f, *len);
+}
+
+TrcReader::LineResult TrcReader::parseV2(Tokens& tokens, CanFrame& f) {
+    const std::string_view cols = columns_.empty() ? (minor_ == 0 ? std::string_view("NOTIdlD") : std::string_view("NOTBIdRLD"))
+                                                   : std::string_view(columns_);
+    f.bus = busChannel(1);
+    std::string_view type;
+    int dlc = -1;
+    int len = -1;
+    for (char c : cols) {
+        if (c == 'D') break;  // the data is the rest of the line
+        const std::string_view t = tokens.next();
+        if (t.empty()) return bad(QStringLiteral("line ends before column '%1'").arg(QLatin1Char(c)));
+        switch (c) {
+        case 'O': {
+            const auto ts = parseDecimalNs(t, 1000000);
+            if (!ts) return bad(QStringLiteral("bad time offset"));
+            f.timestampNs = addNs(startNs_, *ts);
+            break;
+        }
+        case 'T':
+            type = t;
+            if (type == "ER") f.flags |= CanFrame::Error;
+            else if (type == "RR") f.flags |= CanFrame::Remote;
+            else if (type == "FD" || type == "FB" || type == "FE" || type == "BI") {
+                f.flags |= CanFrame::Fd;
+                if (type == "FB" || type == "BI") f.flags |= CanFrame::BitRateSwitch;
+                if (type == "FE" || type == "BI") f.flags |= CanFrame::ErrorState;
+            } else if (type != "DT") {
+                return LineResult::Skip;  // ST status, EC error counters, EV events
+            }
+            break;
+        case 'B': {
+            const auto bus = parseDec(t);
+            if (!bus) return bad(QStringLiteral("bad bus number"));
+            f.bus = busChannel(*bus);
+            break;
+        }
+        case 'I':
+            if (f.isError() && t == "-") break;
+            if (!parseId(t, f)) return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(t.data(), qsizetype(t.size()))));
+            break;
+        case 'd':
+            if (t == "Tx") f.flags |= CanFrame::Tx;
+            break;
+        case 'L': {
+            const auto v = parseDec(t);
+            if (!v || *v > 15) return bad(QStringLiteral("bad DLC"));
+            dlc = int(*v);
+            break;
+        }
+        case 'l': {
+            const auto v = parseDec(t);
+            if (!v || *v > 64) return bad(QStringLiteral("bad data length"));
+            len = int(*v);
+            break;
+        }
+        default: break;  // N number, R reserved, unknown columns
+        }
+    }
+    if (type.empty()) return bad(QStringLiteral("no message type column"));
+    if (f.isError()) {
+        f.id = 0;
+        f.len = 0;
+        return LineResult::Frame;
+    }
+    if (len < 0) len = f.isFd() ? fdDlcToLen(dlc) : std::min(dlc, 8);
+    if (len < 0) return bad(QStringLiteral("no data length"));
+    if (f.isRemote()) {
+        f.len = uint8_t(std::min(len, 8));
+        return LineResult::Frame;
+    }
+    return readData(tokens, f, uint32_t(len));
+}
+
+// ---- writer
+
+void TrcWriter::writeHeader(const CanFrame* first) {
+    const int64_t firstNs = first ? first->timestampNs : 0;
+    startNs_ = (firstNs >= 0 ? firstNs / 1000000 : -((-firstNs + 999999) / 1000000)) * 1000000;
+    QByteArray& o = out();
+    o += ";$FILEVERSION=2.1\r\n";
+    o += ";$STARTTIME=" + nsToOleDate(startNs_) + "\r\n";
+    o += ";$COLUMNS=N,O,T,B,I,d,R,L,D\r\n";
+    o += ";\r\n";
+    o += ";   Start time: " + QDateTime::fromMSecsSinceEpoch(startNs_ / 1000000).toString(QStringLiteral("dd.MM.yyyy hh:mm:ss.zzz")).toLatin1() + "\r\n";
+    o += ";   Generated by CoScope\r\n";
+    o += ";-------------------------------------------------------------------------------\r\n";
+    o += ";   Message   Time    Type    ID     Rx/Tx\r\n";
+    o += ";   Number    Offset  |  Bus  [hex]  |  Reserved\r\n";
+    o += ";   |         [ms]    |  |    |      |  |  Data Length Code\r\n";
+    o += ";   |         |       |  |    |      |  |  |    Data [hex] ...\r\n";
+    o += ";   |         |       |  |    |      |  |  |    |\r\n";
+    o += ";---+-- ------+------ +- +- --+----- +- +- +--- +- -- -- -- -- -- -- --\r\n";
+}
+
+void TrcWriter::writeFrame(const CanFrame& f, const QString&) {
+    const int64_t rel = f.timestampNs - startNs_;
+    char head[64];
+    const long long relUs = static_cast<long long>(rel / 1000);
+    std::snprintf(head, sizeof head, "%7llu %9lld.%03lld ", static_cast<unsigned long long>(frameNumber()),
+                  relUs / 1000, (relUs < 0 ? -relUs : relUs) % 1000);
+    QByteArray& o = out();
+    o += head;
+    const char* type = "DT";
+    if (f.isError()) type = "ER";
+    else if (f.isRemote()) type = "RR";
+    else if (f.isFd()) {
+        const bool brs = f.flags & CanFrame::BitRateSwitch, esi = f.flags & CanFrame::ErrorState;
+        type = brs && esi ? "BI" : brs ? "FB" : esi ? "FE" : "FD";
+    }
+    o += type;
+    o += ' ' + QByteArray::number(f.bus + 1).rightJustified(2) + ' ';
+    QByteArray id;
+    if (f.isError()) id = "-";
+    else appendHex(id, f.id, f.isExtended() ? 8 : 4);
+    o += id.rightJustified(8) + (f.isTx() ? " Tx" : " Rx") + " -  ";
+    const int dlc = f.isError() ? 0 : f.isFd() ? lenToFdDlc(f.len) : f.len;
+    o += QByteArray::number(dlc).leftJustified(4);
+    if (!f.isRemote() && !f.isError())
+        for (int i = 0; i < f.len; ++i) {
+            o += ' ';
+            appendHex2(o, f.data[size_t(i)]);
+        }
+    o += "\r\n";
+}
+
+}  // namespace coscope::logio
