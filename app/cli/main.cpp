@@ -2,6 +2,7 @@
 // coscope-cli: the command line face of CoScope. Each verb is a file in this folder.
 #include "app/cli/CliVerb.h"
 #include "core/log/Logging.h"
+#include "eds/SimulatorDictionaries.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
         return cli::Usage;
     }
     logging::init(QStringLiteral("coscope-cli"), level);
+    eds::installSimulatorDictionaries();  // before any sim:// bus is opened
 
     // Longest verb name first, so "eds check" wins over a hypothetical "eds".
     const cli::Verb* match = nullptr;

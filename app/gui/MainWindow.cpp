@@ -1,87 +1,278 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/connect/ConnectDialog.h"
+#include "app/gui/connect/RecentConnections.h"
+#include "app/gui/console/ConsoleDock.h"
+#include "app/gui/events/EventsDock.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/session/Workspace.h"
+#include "app/gui/status/BusStatusBar.h"
+#include "app/gui/trace/LogSaveJob.h"
+#include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "core/logio/LogFormats.h"
 
-#include <QHeaderView>
-#include <QLabel>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QMenuBar>
 #include <QMessageBox>
-#include <QScrollBar>
+#include <QMimeData>
+#include <QSettings>
 #include <QStatusBar>
-#include <QTableView>
+#include <QStyle>
 #include <QTimer>
 
 #include <spdlog/spdlog.h>
 
 namespace coscope::gui {
 
+namespace {
+QString readFilters() {
+    QStringList all, each;
+    for (const auto& f : logio::LogFormats::all()) {
+        if (!f.canRead) continue;
+        QStringList globs;
+        for (const QString& e : f.extensions) globs << QStringLiteral("*.") + e;
+        all << globs;
+        each << QStringLiteral("%1 (%2)").arg(f.description, globs.join(u' '));
+    }
+    return QStringLiteral("CAN logs (%1);;%2;;All files (*)").arg(all.join(u' '), each.join(QStringLiteral(";;")));
+}
+}  // namespace
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(QStringLiteral("CoScope"));
-    resize(1100, 700);
-    model_ = new TraceModel(this);
-    view_ = new QTableView(this);
-    view_->setModel(model_);
-    view_->verticalHeader()->hide();
-    view_->verticalHeader()->setDefaultSectionSize(20);
-    view_->horizontalHeader()->setStretchLastSection(true);
-    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view_->setColumnWidth(TraceModel::Number, 80);
-    view_->setColumnWidth(TraceModel::Time, 110);
-    view_->setColumnWidth(TraceModel::Bus, 40);
-    view_->setColumnWidth(TraceModel::CobId, 90);
-    view_->setColumnWidth(TraceModel::Direction, 40);
-    view_->setColumnWidth(TraceModel::Length, 40);
-    setCentralWidget(view_);
-    status_ = new QLabel(this);
-    statusBar()->addPermanentWidget(status_, 1);
+    setObjectName(QStringLiteral("MainWindow"));
+    setWindowIcon(QApplication::style()->standardIcon(QStyle::SP_ComputerIcon));
+    resize(1360, 860);
+    setAcceptDrops(true);
+    setDockNestingEnabled(true);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks | QMainWindow::AllowTabbedDocks);
+
+    workspace_ = new Workspace(this);
+    trace_ = new TraceDock(workspace_, this);
+    nodes_ = new NodesDock(workspace_, this);
+    events_ = new EventsDock(workspace_, this);
+    console_ = new ConsoleDock(this);
+    // No central widget: every part is a dock the user can arrange.
+    addDockWidget(Qt::LeftDockWidgetArea, trace_);
+    addDockWidget(Qt::RightDockWidgetArea, nodes_);
+    addDockWidget(Qt::BottomDockWidgetArea, events_);
+    addDockWidget(Qt::BottomDockWidgetArea, console_);
+    tabifyDockWidget(events_, console_);
+    events_->raise();
+    resizeDocks({trace_, nodes_}, {880, 480}, Qt::Horizontal);
+    resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
+
+    status_ = new BusStatusBar(statusBar(), workspace_);
+    buildMenus();
+    restoreLayout();
+
+    connect(workspace_, &Workspace::sourceChanged, this, &MainWindow::onSourceChanged);
+    connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
+    connect(trace_, &TraceDock::message, this, &MainWindow::showMessage);
+    connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
+    connect(events_, &EventsDock::frameActivated, this, [this](FrameNo n) {
+        trace_->raise();
+        trace_->showFrame(n);
+    });
+
     timer_ = new QTimer(this);
-    timer_->setInterval(33);  // the GUI pulls at most 30 times a second
+    timer_->setInterval(33);  // the GUI pulls at most 30 times a second (DESIGN.md "Data flow")
     connect(timer_, &QTimer::timeout, this, &MainWindow::refresh);
     timer_->start();
 }
 
-MainWindow::~MainWindow() { disconnectBus(); }
+MainWindow::~MainWindow() {
+    saveJob_.reset();
+    workspace_->disconnectBus();
+}
+
+void MainWindow::buildMenus() {
+    QStyle* st = style();
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(st->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open log…"), QKeySequence::Open, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open CAN log"), {}, readFilters());
+        if (!path.isEmpty()) openLog(path);
+    });
+    file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save trace as…"), QKeySequence::Save, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
+        if (!path.isEmpty()) saveLog(path);
+    });
+    file->addAction(tr("&Export filtered rows…"), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters());
+        if (!path.isEmpty()) saveLog(path, {}, true);
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* bus = menuBar()->addMenu(tr("&Bus"));
+    bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"), QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
+        ConnectDialog dialog(this);
+        if (dialog.exec() == QDialog::Accepted) connectBus(dialog.url());
+    });
+    bus->addAction(tr("Connect to &virtual drives (sim://)"), this, [this] { connectBus(QStringLiteral("sim://")); });
+    recentMenu_ = bus->addMenu(tr("&Recent connections"));
+    bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    rebuildRecentMenu();
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(events_),
+                           static_cast<QDockWidget*>(console_)})
+        view->addAction(d->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("Reset layout"), this, [this] {
+        QSettings().remove(QStringLiteral("window"));
+        showMessage(tr("The default layout applies at the next start"));
+    });
+}
+
+void MainWindow::rebuildRecentMenu() {
+    recentMenu_->clear();
+    const QStringList recent = RecentConnections::list();
+    for (const QString& url : recent) recentMenu_->addAction(url, this, [this, url] { connectBus(url); });
+    recentMenu_->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::restoreLayout() {
+    QSettings s;
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+}
+
+void MainWindow::saveLayout() {
+    QSettings s;
+    s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    s.setValue(QStringLiteral("window/state"), saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const auto urls = event->mimeData()->urls();
+    if (!urls.isEmpty() && urls.first().isLocalFile()) {
+        openLog(urls.first().toLocalFile());
+        event->acceptProposedAction();
+    }
+}
 
 bool MainWindow::connectBus(const QString& url) {
-    disconnectBus();
     QString error;
-    bus_ = createBus(url, &error);
-    if (!bus_) {
-        showError(error);
+    if (!workspace_->connectBus(url, &error)) {
+        showError(tr("Cannot connect to %1: %2").arg(url, error));
+        if (!quiet_) QMessageBox::warning(this, tr("Connect"), error);
         return false;
     }
-    connect(bus_.get(), &CanBus::errorOccurred, this, &MainWindow::showError);
-    session_ = std::make_unique<CaptureSession>();
-    model_->setStore(session_->store());
-    session_->start(bus_.get());
-    bus_->open();
-    setWindowTitle(QStringLiteral("CoScope — %1").arg(url));
+    RecentConnections::add(workspace_->bus()->url().toString());
+    rebuildRecentMenu();
     return true;
 }
 
-void MainWindow::disconnectBus() {
-    if (bus_) bus_->close();
-    if (session_) session_->stop();
-    bus_.reset();
+void MainWindow::disconnectBus() { workspace_->disconnectBus(); }
+
+bool MainWindow::openLog(const QString& path) {
+    QString error;
+    if (!workspace_->openLog(path, &error)) {
+        showError(error);
+        if (!quiet_) QMessageBox::warning(this, tr("Open log"), error);
+        return false;
+    }
+    loadReported_ = false;
+    return true;
+}
+
+bool MainWindow::saveLog(const QString& path, const QString& format, bool filteredOnly) {
+    if (saveJob_ && !saveJob_->isDone()) {
+        showError(tr("A save is already running"));
+        return false;
+    }
+    std::optional<std::vector<FrameNo>> frames;
+    if (filteredOnly) {
+        TraceModel* m = trace_->model();
+        frames.emplace();
+        frames->reserve(static_cast<size_t>(m->rowCount()));
+        for (int r = 0; r < m->rowCount(); ++r) frames->push_back(m->frameAt(r));
+    }
+    saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
+    saveJob_->start();
+    return true;
+}
+
+bool MainWindow::showView(const QString& name) {
+    QDockWidget* d = nullptr;
+    if (name == u"trace") d = trace_;
+    else if (name == u"nodes") d = nodes_;
+    else if (name == u"events") d = events_;
+    else if (name == u"console") d = console_;
+    if (!d) return false;
+    d->show();
+    d->raise();
+    return true;
+}
+
+void MainWindow::onSourceChanged() {
+    trace_->rebind();
+    nodes_->rebind();
+    events_->rebind();
+    const QString name = workspace_->sourceName();
+    setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
 }
 
 void MainWindow::refresh() {
-    model_->refresh();
-    if (follow_ && model_->rowCount() > 0) view_->scrollToBottom();
-    if (bus_) {
-        const auto c = bus_->counters();
-        status_->setText(QStringLiteral("%1   %2   rx %3   tx %4   dropped %5   errors %6")
-                             .arg(bus_->url().toString(), toString(bus_->state()))
-                             .arg(c.rx)
-                             .arg(c.tx)
-                             .arg(c.dropped)
-                             .arg(c.errors));
+    workspace_->poll();
+    trace_->refresh();
+    nodes_->refresh();
+    events_->refresh();
+    console_->refresh();
+
+    Job* shown = trace_->activeJob();
+    if (LogLoadJob* load = workspace_->loadJob()) {
+        if (!load->isDone()) shown = load;
+        else if (!loadReported_) {
+            loadReported_ = true;
+            if (load->hasError()) showError(load->errorString());
+            else if (load->diagnosticCount())
+                showError(tr("%1: %L2 frames, %L3 lines not understood — first: %4")
+                              .arg(workspace_->sourceName())
+                              .arg(workspace_->store()->size())
+                              .arg(load->diagnosticCount())
+                              .arg(load->diagnostics(1).value(0)));
+            else
+                showMessage(tr("%1: %L2 frames (%3)").arg(workspace_->sourceName()).arg(workspace_->store()->size()).arg(load->formatName()));
+        }
     }
+    if (saveJob_) {
+        if (!saveJob_->isDone()) shown = saveJob_.get();
+        else {
+            if (saveJob_->hasError()) showError(saveJob_->errorString());
+            else if (saveJob_->isCancelled()) showMessage(tr("Save cancelled"));
+            else showMessage(tr("Saved %L1 frames to %2").arg(saveJob_->framesWritten()).arg(saveJob_->path()));
+            saveJob_.reset();
+        }
+    }
+    status_->refresh(shown);
 }
 
 void MainWindow::showError(const QString& message) {
+    lastError_ = message;
     spdlog::error("{}", message.toStdString());
-    statusBar()->showMessage(message, 10000);
+    statusBar()->setStyleSheet(QStringLiteral("QStatusBar { color: #b00020; }"));
+    statusBar()->showMessage(message, 15000);
+}
+
+void MainWindow::showMessage(const QString& message) {
+    statusBar()->setStyleSheet({});
+    statusBar()->showMessage(message, 8000);
 }
 
 }  // namespace coscope::gui

@@ -1,47 +1,82 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/can/CanBus.h"
-#include "core/trace/CaptureSession.h"
-
 #include <QMainWindow>
 
 #include <memory>
 
-class QLabel;
-class QTableView;
+class QMenu;
 class QTimer;
 
 namespace coscope::gui {
 
-class TraceModel;
+class BusStatusBar;
+class ConsoleDock;
+class EventsDock;
+class LogSaveJob;
+class NodesDock;
+class TraceDock;
+class Workspace;
 
-// The main window only assembles the docks and the status bar.
+// The main window only assembles: the workspace (what is being looked at), the docks (each with
+// its own model and view), menus, the status bar and the one refresh timer (≤ 30 Hz) that lets
+// every view pull what changed. The dock layout is saved and restored (QSettings).
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Connects to a bus URL; errors are shown in the window, not only logged.
+    // Connects to a bus URL; an unusable URL is reported in the window (status bar + dialog
+    // unless quiet) and returns false.
     bool connectBus(const QString& url);
     void disconnectBus();
+    bool openLog(const QString& path);
+    // Saves the trace (or only the filtered rows) to `path`; the format comes from `format`
+    // or the extension. Runs in the background; see saveJob().
+    bool saveLog(const QString& path, const QString& format = {}, bool filteredOnly = false);
+    // Raises a dock: "trace", "nodes", "od", "events", "console".
+    bool showView(const QString& name);
+    // No modal dialogs (tests, --screenshot): errors go to the status bar only.
+    void setQuiet(bool quiet) { quiet_ = quiet; }
 
-    CanBus* bus() const { return bus_.get(); }
-    TraceModel* traceModel() const { return model_; }
-    QTableView* traceView() const { return view_; }
+    Workspace* workspace() const { return workspace_; }
+    TraceDock* traceDock() const { return trace_; }
+    NodesDock* nodesDock() const { return nodes_; }
+    EventsDock* eventsDock() const { return events_; }
+    ConsoleDock* consoleDock() const { return console_; }
+    BusStatusBar* busStatus() const { return status_; }
+    LogSaveJob* saveJob() const { return saveJob_.get(); }
+    QString lastError() const { return lastError_; }
+
+    void refresh();  // the timer's tick (public for tests)
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
-    void refresh();
+    void buildMenus();
+    void rebuildRecentMenu();
+    void restoreLayout();
+    void saveLayout();
     void showError(const QString& message);
+    void showMessage(const QString& message);
+    void onSourceChanged();
 
-    std::unique_ptr<CanBus> bus_;
-    std::unique_ptr<CaptureSession> session_;
-    TraceModel* model_ = nullptr;
-    QTableView* view_ = nullptr;
-    QLabel* status_ = nullptr;
+    Workspace* workspace_ = nullptr;
+    TraceDock* trace_ = nullptr;
+    NodesDock* nodes_ = nullptr;
+    EventsDock* events_ = nullptr;
+    ConsoleDock* console_ = nullptr;
+    BusStatusBar* status_ = nullptr;
+    QMenu* recentMenu_ = nullptr;
     QTimer* timer_ = nullptr;
-    bool follow_ = true;
+    std::unique_ptr<LogSaveJob> saveJob_;
+    bool loadReported_ = true;
+    bool quiet_ = false;
+    QString lastError_;
 };
 
 }  // namespace coscope::gui

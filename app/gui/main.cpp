@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope: the desktop app.
 #include "app/gui/MainWindow.h"
+#include "app/gui/Screenshot.h"
+#include "app/gui/session/SimulationDemo.h"
 #include "core/log/Logging.h"
+#include "eds/SimulatorDictionaries.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QScreen>
 #include <QTimer>
 
 #include <cstdio>
@@ -38,8 +40,10 @@ int main(int argc, char** argv) {
     const QCommandLineOption simulate(QStringLiteral("simulate"), QStringLiteral("Connect to the default virtual drive network (sim://)."));
     const QCommandLineOption connectTo(QStringLiteral("connect"), QStringLiteral("Connect to a bus URL."), QStringLiteral("URL"));
     const QCommandLineOption logLevel(QStringLiteral("log-level"), QStringLiteral("trace, debug, info, warn, error, critical, off."), QStringLiteral("LEVEL"));
-    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render the window to a PNG once it has content, then exit."), QStringLiteral("FILE"));
-    parser.addOptions({simulate, connectTo, logLevel, screenshot});
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render the window to a PNG once the view has content, then exit."), QStringLiteral("FILE"));
+    const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, events."), QStringLiteral("VIEW"));
+    parser.addOptions({simulate, connectTo, logLevel, screenshot, view});
+    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A CAN log to open (candump, ASC, BLF, TRC, pcap, CSV)."), QStringLiteral("[FILE]"));
     parser.process(app);
 
     auto level = logging::levelFromEnvironment(spdlog::level::info);
@@ -51,20 +55,27 @@ int main(int argc, char** argv) {
         }
         level = *parsed;
     }
+    const QString viewName = parser.value(view);
+    if (!viewName.isEmpty() && !QStringList{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("events")}.contains(viewName)) {
+        std::fprintf(stderr, "coscope: invalid --view '%s' (trace, nodes, od, events)\n", qPrintable(viewName));
+        return 2;
+    }
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1 || (!files.isEmpty() && (parser.isSet(simulate) || parser.isSet(connectTo)))) {
+        std::fprintf(stderr, "coscope: give one log FILE, or --simulate, or --connect URL\n");
+        return 2;
+    }
     logging::init(QStringLiteral("coscope"), level);
+    eds::installSimulatorDictionaries();  // before any sim:// bus is opened
 
     gui::MainWindow window;
+    window.setQuiet(parser.isSet(screenshot));
     window.show();
+    if (!viewName.isEmpty()) window.showView(viewName);
     if (parser.isSet(connectTo)) window.connectBus(parser.value(connectTo));
-    else if (parser.isSet(simulate)) window.connectBus(QStringLiteral("sim://"));
+    else if (parser.isSet(simulate) && window.connectBus(QStringLiteral("sim://"))) gui::startSimulationDemo(window.workspace());
+    else if (!files.isEmpty()) window.openLog(files.first());
 
-    if (parser.isSet(screenshot)) {
-        const QString file = parser.value(screenshot);
-        QTimer::singleShot(2500, &window, [&window, file] {
-            const bool ok = window.grab().save(file);
-            std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
-            QApplication::exit(ok ? 0 : 1);
-        });
-    }
+    if (parser.isSet(screenshot)) gui::takeScreenshotWhenReady(&window, parser.value(screenshot), viewName.isEmpty() ? QStringLiteral("trace") : viewName);
     return app.exec();
 }

@@ -2,7 +2,7 @@
 #include "core/sim/SimNetwork.h"
 
 #include "core/can/CanBus.h"
-#include "core/sim/VirtualNode.h"
+#include "core/sim/VirtualDevice.h"
 
 #include <QThread>
 #include <QTimer>
@@ -123,6 +123,12 @@ void SimNetwork::broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fro
         if (n.get() != fromNode) n->onFrame(f, f.timestampNs);
 }
 
+VirtualDevice* SimNetwork::device(uint8_t nodeId) const {
+    for (const auto& n : nodes_)
+        if (auto* d = dynamic_cast<VirtualDevice*>(n.get()); d && d->nodeId() == nodeId) return d;
+    return nullptr;
+}
+
 QString SimNetwork::defaultSpec() { return QStringLiteral("1:delta-asda-a2,2:aimotor,3:generic-cia402"); }
 
 std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString* error) {
@@ -143,7 +149,7 @@ std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString*
         }
         used.push_back(id);
         const QString dict = colon < 0 ? QStringLiteral("generic-cia402") : part.mid(colon + 1).trimmed();
-        auto node = VirtualNode::create(static_cast<uint8_t>(id), dict, error);
+        auto node = VirtualDevice::create(static_cast<uint8_t>(id), dict, error);
         if (!node) return nullptr;
         net->addNode(std::move(node));
     }

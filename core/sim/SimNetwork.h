@@ -16,6 +16,8 @@ class QTimer;
 
 namespace coscope::sim {
 
+class VirtualDevice;
+
 // Something outside the network that sees its traffic: a SimBus endpoint, the socketcand server.
 class SimTap {
 public:
@@ -36,6 +38,9 @@ public:
     // Before start(): the nodes living on this bus.
     void addNode(std::unique_ptr<SimNode> node);
     const std::vector<std::unique_ptr<SimNode>>& nodes() const { return nodes_; }
+    // The virtual device answering on `nodeId` now (node-IDs can change through LSS or vendor
+    // parameters), nullptr if none. Use on the network thread once the network runs.
+    VirtualDevice* device(uint8_t nodeId) const;
 
     void start();
     void stop();
@@ -49,7 +54,8 @@ public:
     // Runs `fn` on the network thread and waits for it (for tests and fault injection).
     void runOnNetworkThread(const std::function<void()>& fn);
 
-    // Parses "1:delta-asda-a2,2:aimotor" (empty = the default network) and builds the nodes.
+    // Parses "1:delta-asda-a2,2:aimotor" (empty = the default network) and builds VirtualDevices
+    // from the dictionaries sim::loadDictionary gives (eds::installSimulatorDictionaries()).
     static std::unique_ptr<SimNetwork> fromSpec(const QString& spec, QString* error);
     static QString defaultSpec();
 

@@ -149,9 +149,11 @@ FrameNo TraceStore::append(const CanFrame& f) {
     if (bytes > 8) r.fdRef = storeFdPayload(f.data.data(), bytes);
     else std::memcpy(r.data, f.data.data(), bytes);
 
+    // Publish the frame before indexing it: an index entry must never name a frame a reader
+    // cannot see yet (the index may lag size() by one frame, never lead it).
+    size_.store(n + 1, std::memory_order_release);
     const size_t added = indexForWrite(keyOf(r))->push(static_cast<FrameNo>(n));
     if (added) indexBytes_.fetch_add(added, std::memory_order_relaxed);
-    size_.store(n + 1, std::memory_order_release);
     return static_cast<FrameNo>(n);
 }
 

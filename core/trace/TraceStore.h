@@ -36,7 +36,8 @@ static_assert(sizeof(TraceRecord) == 24, "trace records must stay 24 bytes");
 // fixed-size records in chunked arenas (no reallocation, so readers never see memory move),
 // FD payloads out of line, and a per-COB-ID index of frame numbers. A frame number, once
 // given, always names the same frame. Readers see frames [0, size()) and may read them
-// while the writer appends; size() is published with release semantics after each append.
+// while the writer appends; size() is published with release semantics after each append,
+// before the frame enters its index, so index entries never point at or past size().
 // Memory per classic frame: 24 bytes of record + 4 bytes of index entry.
 class TraceStore {
 public:

@@ -4,6 +4,7 @@
 #include "core/can/CanBus.h"
 #include "core/sim/SimBus.h"
 #include "core/sim/SimNetwork.h"
+#include "eds/SimulatorDictionaries.h"
 #include "integration/FakeSocketcandServer.h"
 
 #include <QElapsedTimer>
@@ -40,6 +41,7 @@ class TestListenOnly : public QObject {
 private slots:
     void initTestCase() {
         QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
+        eds::installSimulatorDictionaries();
     }
 
     void simBus() {

@@ -1,26 +1,67 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "app/gui/trace/FrameDecoder.h"
+#include "app/gui/trace/TraceFilter.h"
 #include "core/trace/TraceStore.h"
 
 #include <QAbstractTableModel>
+#include <QStringList>
 
 #include <memory>
+#include <optional>
+#include <set>
+#include <unordered_map>
+#include <vector>
 
 namespace coscope::gui {
 
 // Table model straight over the trace store: rows are frame numbers, nothing is copied.
-// refresh() (called by a timer, ≤ 30 Hz) announces the rows appended since the last call.
+// Three row sources: every frame; the frames of a filter (a list computed off-thread, then
+// extended as frames arrive); or the latest frame of each COB-ID (from the store's index).
+// refresh() — called by a timer at most 30 times a second — announces what changed since the
+// last call. The summary column is decoded lazily for the rows the view asks about, and cached.
 class TraceModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Number, Time, Bus, CobId, Direction, Length, Data, ColumnCount };
+    enum Column { Number, Time, Bus, CobId, Node, Service, Direction, Length, Data, Summary, ColumnCount };
+    enum class TimeMode { Absolute, Relative, Delta };
+    enum Role { FrameRole = Qt::UserRole + 1, BookmarkRole };
 
     explicit TraceModel(QObject* parent = nullptr);
 
     void setStore(std::shared_ptr<const TraceStore> store);
     const std::shared_ptr<const TraceStore>& store() const { return store_; }
+    void setDecoder(std::shared_ptr<const FrameDecoder> decoder);
+    const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
+    void setBusNames(const QStringList& names) { busNames_ = names; }
+
+    void setTimeMode(TimeMode mode);
+    TimeMode timeMode() const { return timeMode_; }
+
+    // Shows the frames of `filter`: `rows` are the matches in [0, scannedUpTo); later frames are
+    // tested as they arrive.
+    void setFilter(const TraceFilter& filter, std::vector<FrameNo> rows, FrameNo scannedUpTo);
+    void clearFilter();
+    bool isFiltered() const { return filter_.has_value(); }
+    void setLatestPerCobId(bool on);
+    bool latestPerCobId() const { return latest_; }
+
+    // Pulls what was appended since the last call.
     void refresh();
+
+    FrameNo frameAt(int row) const;
+    // The row showing frame n, or the nearest row after it (-1 when none).
+    int rowAtOrAfter(FrameNo n) const;
+    int rowOf(FrameNo n) const;  // exact, -1 when the frame is not shown
+
+    void toggleBookmark(FrameNo n);
+    bool isBookmarked(FrameNo n) const { return bookmarks_.count(n) != 0; }
+    const std::set<FrameNo>& bookmarks() const { return bookmarks_; }
+
+    // Decoded one-line summary of frame n (cached).
+    QString summaryOf(FrameNo n) const;
+    QString timeText(FrameNo n, int row) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -28,9 +69,29 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
 private:
+    enum class Source { All, Filtered, Latest };
+    Source source() const;
+    void resetRows();
+    void refreshLatest();
+
     std::shared_ptr<const TraceStore> store_;
-    int rows_ = 0;
+    std::shared_ptr<const FrameDecoder> decoder_;
+    QStringList busNames_;
+    TimeMode timeMode_ = TimeMode::Relative;
+    int rows_ = 0;         // rows announced to views
     int64_t t0_ = 0;
+    bool haveT0_ = false;
+
+    std::optional<TraceFilter> filter_;
+    std::vector<FrameNo> filtered_;  // Filtered: the matches
+    FrameNo scanned_ = 0;            // Filtered: frames [0, scanned_) tested
+    bool latest_ = false;
+    std::vector<FrameNo> latestRows_;  // Latest: one frame per key, ordered by key
+    std::vector<uint32_t> latestKeys_;
+
+    std::set<FrameNo> bookmarks_;
+    mutable std::unordered_map<FrameNo, QString> summaries_;
+    mutable dissect::Dissection scratch_;
 };
 
 }  // namespace coscope::gui

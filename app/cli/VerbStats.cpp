@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// coscope-cli stats LOG [--dict NODE=NAME|FILE]... [--bitrate N]: frames per COB-ID and service,
+// nodes and their last NMT state, bus load per second, SDO transfers and aborts, EMCYs, warnings.
+#include "app/cli/CliVerb.h"
+#include "core/logio/LogFormats.h"
+#include "dissectors/TraceStats.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace coscope::cli {
+
+namespace {
+
+const QString kVerb = QStringLiteral("stats");
+
+int runStats(const QStringList& args) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Statistics of a CAN log decoded as CANopen."));
+    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv)."));
+    parser.addOption({QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."), QStringLiteral("NODE=NAME|FILE")});
+    parser.addOption({QStringLiteral("bitrate"), QStringLiteral("Bit rate for the bus load estimate (default 500000)."), QStringLiteral("BIT/S"), QStringLiteral("500000")});
+    int code = 0;
+    if (!parseArgs(parser, kVerb, args, &code)) return code;
+    const QStringList pos = parser.positionalArguments();
+    if (pos.size() != 1) return usageError(kVerb, QStringLiteral("expected one LOG file"));
+    bool ok = false;
+    const int bitRate = parser.value(QStringLiteral("bitrate")).toInt(&ok);
+    if (!ok || bitRate < 1000 || bitRate > 10000000) return usageError(kVerb, QStringLiteral("--bitrate must be 1000..10000000"));
+    dissect::TraceStats stats(bitRate);
+    for (const QString& spec : parser.values(QStringLiteral("dict"))) {
+        const qsizetype eq = spec.indexOf(u'=');
+        const int node = eq > 0 ? spec.left(eq).toInt(&ok, 0) : 0;
+        if (!ok || node < 1 || node > 127) return usageError(kVerb, QStringLiteral("--dict '%1': expected NODE=NAME|FILE with NODE 1..127").arg(spec));
+        QString error;
+        if (!stats.context().assignDictionary(node, spec.mid(eq + 1), &error)) return failure(kVerb, QStringLiteral("--dict %1: %2").arg(spec, error));
+    }
+    QString error;
+    auto reader = logio::LogFormats::openReader(pos[0], &error);
+    if (!reader) return failure(kVerb, error);
+    std::vector<CanFrame> batch(4096);
+    while (const size_t n = reader->read(batch.data(), batch.size()))
+        for (size_t i = 0; i < n; ++i) stats.add(batch[i]);
+    const QByteArray report = stats.report();
+    std::fwrite(report.constData(), 1, static_cast<size_t>(report.size()), stdout);
+    if (reader->diagnosticCount()) std::fprintf(stdout, "\nLog problems: %llu (first: line/record %lld: %s)\n", (unsigned long long)reader->diagnosticCount(),
+                                                 reader->diagnostics().empty() ? 0LL : static_cast<long long>(reader->diagnostics().front().where),
+                                                 reader->diagnostics().empty() ? "" : qPrintable(reader->diagnostics().front().message));
+    std::fflush(stdout);
+    if (reader->hasError()) return failure(kVerb, QStringLiteral("%1: %2").arg(pos[0], reader->errorString()));
+    return Ok;
+}
+
+}  // namespace
+
+COSCOPE_CLI_VERB({QStringLiteral("stats"), QStringLiteral("Statistics of a CAN log: services, nodes, bus load, SDO, EMCY."), runStats});
+
+}  // namespace coscope::cli

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/Screenshot.h"
+
+#include "app/gui/MainWindow.h"
+#include "app/gui/events/EventsDock.h"
+#include "app/gui/events/EventsModel.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
+#include "app/gui/session/Workspace.h"
+#include "app/gui/trace/TraceDock.h"
+#include "app/gui/trace/TraceModel.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QTableView>
+#include <QTimer>
+
+#include <cstdio>
+#include <memory>
+
+namespace coscope::gui {
+
+bool viewHasContent(MainWindow* w, const QString& view) {
+    Workspace* ws = w->workspace();
+    if (ws->loadJob() && !ws->loadJob()->isDone()) return false;
+    const bool offline = ws->loadJob() != nullptr;
+    const int rows = w->traceDock()->model()->rowCount();
+    if (view == u"nodes") return w->nodesDock()->model()->rowCount() > 0 && (offline || rows > 50);
+    if (view == u"events") return w->eventsDock()->model()->rowCount() > 0;
+    return rows > (offline ? 0 : 60);
+}
+
+void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QString& view) {
+    auto* timer = new QTimer(window);
+    auto clock = std::make_shared<QElapsedTimer>();
+    auto readySince = std::make_shared<qint64>(-1);
+    clock->start();
+    timer->setInterval(100);
+    QObject::connect(timer, &QTimer::timeout, window, [=] {
+        const bool ready = viewHasContent(window, view);
+        if (ready && *readySince < 0) *readySince = clock->elapsed();
+        // Settle 1.5 s after content appeared (more rows, nodes identified), or give up at 20 s.
+        if (!(ready && clock->elapsed() - *readySince > 1500) && clock->elapsed() < 20000) return;
+        timer->stop();
+        window->refresh();
+        if (view == u"trace") {  // show a decoded frame in the details pane
+            QTableView* tv = window->traceDock()->view();
+            const int rows = window->traceDock()->model()->rowCount();
+            if (rows > 0) {
+                window->traceDock()->setFollow(false);
+                tv->selectRow(std::max(0, rows - 8));
+                tv->scrollToBottom();
+            }
+        }
+        QApplication::processEvents();
+        const bool ok = window->grab().save(file, "PNG");
+        std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
+        QApplication::exit(ok ? 0 : 1);
+    });
+    timer->start();
+}
+
+}  // namespace coscope::gui

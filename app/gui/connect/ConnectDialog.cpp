@@ -1,0 +1,276 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/connect/ConnectDialog.h"
+
+#include "app/gui/connect/RecentConnections.h"
+#include "core/can/BusUrl.h"
+#include "core/sim/SimNetwork.h"
+#include "core/sim/Personality.h"
+
+#include <QCanBus>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace coscope::gui {
+
+namespace {
+enum Page { PluginPage, SocketcandPage, SimPage, ReplayPage };
+const int kBitrates[] = {10000, 20000, 50000, 100000, 125000, 250000, 500000, 800000, 1000000};  // CiA 301 §7.1 table
+}  // namespace
+
+ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Connect to a CAN bus"));
+    setObjectName(QStringLiteral("ConnectDialog"));
+    auto* layout = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    recent_ = new QComboBox(this);
+    recent_->setObjectName(QStringLiteral("recent"));
+    recent_->addItem(tr("(recent connections)"));
+    recent_->addItems(RecentConnections::list());
+    connect(recent_, &QComboBox::activated, this, [this](int i) {
+        if (i > 0) setUrl(recent_->itemText(i));
+    });
+    form->addRow(tr("Recent:"), recent_);
+    backend_ = new QComboBox(this);
+    backend_->setObjectName(QStringLiteral("backend"));
+    backend_->addItem(tr("Virtual drives (sim://)"), QStringLiteral("sim"));
+    backend_->addItem(tr("socketcand server (remote CAN)"), QStringLiteral("socketcand"));
+    for (const QString& p : qtCanPlugins()) backend_->addItem(tr("Qt CAN plugin: %1").arg(p), p);
+    backend_->addItem(tr("Replay a log file"), QStringLiteral("replay"));
+    form->addRow(tr("Backend:"), backend_);
+    layout->addLayout(form);
+
+    pages_ = new QStackedWidget(this);
+    {  // Qt plugin
+        auto* w = new QWidget;
+        auto* f = new QFormLayout(w);
+        device_ = new QComboBox(w);
+        device_->setObjectName(QStringLiteral("device"));
+        device_->setEditable(true);
+        f->addRow(tr("Device:"), device_);
+        pages_->addWidget(w);
+    }
+    {  // socketcand
+        auto* w = new QWidget;
+        auto* f = new QFormLayout(w);
+        host_ = new QLineEdit(QStringLiteral("127.0.0.1"), w);
+        port_ = new QSpinBox(w);
+        port_->setRange(1, 65535);
+        port_->setValue(kSocketcandDefaultPort);
+        channel_ = new QLineEdit(QStringLiteral("can0"), w);
+        f->addRow(tr("Host:"), host_);
+        f->addRow(tr("Port:"), port_);
+        f->addRow(tr("Channel:"), channel_);
+        pages_->addWidget(w);
+    }
+    {  // sim
+        auto* w = new QWidget;
+        auto* v = new QVBoxLayout(w);
+        v->setContentsMargins(0, 0, 0, 0);
+        v->addWidget(new QLabel(tr("Virtual drives on the in-process bus:"), w));
+        drives_ = new QTableWidget(w);
+        drives_->setObjectName(QStringLiteral("drives"));
+        drives_->setColumnCount(2);
+        drives_->setHorizontalHeaderLabels({tr("Drive (dictionary)"), tr("Node-ID")});
+        drives_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+        drives_->verticalHeader()->hide();
+        const QStringList defaults = sim::SimNetwork::defaultSpec().split(u',');
+        const QStringList dicts = sim::simulatableDictionaries();
+        drives_->setRowCount(static_cast<int>(dicts.size()));
+        for (int i = 0; i < dicts.size(); ++i) {
+            auto* item = new QTableWidgetItem(dicts[i]);
+            item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsUserCheckable);
+            int node = i + 1;
+            bool on = false;
+            for (const QString& d : defaults)
+                if (d.section(u':', 1) == dicts[i]) {
+                    on = true;
+                    node = d.section(u':', 0, 0).toInt();
+                }
+            item->setCheckState(on ? Qt::Checked : Qt::Unchecked);
+            drives_->setItem(i, 0, item);
+            auto* spin = new QSpinBox(drives_);
+            spin->setRange(1, 127);
+            spin->setValue(node);
+            connect(spin, &QSpinBox::valueChanged, this, &ConnectDialog::updatePreview);
+            drives_->setCellWidget(i, 1, spin);
+        }
+        connect(drives_, &QTableWidget::itemChanged, this, &ConnectDialog::updatePreview);
+        v->addWidget(drives_);
+        pages_->addWidget(w);
+    }
+    {  // replay
+        auto* w = new QWidget;
+        auto* h = new QHBoxLayout(w);
+        replayPath_ = new QLineEdit(w);
+        auto* browse = new QPushButton(tr("Browse…"), w);
+        connect(browse, &QPushButton::clicked, this, [this] {
+            const QString f = QFileDialog::getOpenFileName(this, tr("Log to replay"));
+            if (!f.isEmpty()) replayPath_->setText(f);
+        });
+        h->addWidget(new QLabel(tr("Log:"), w));
+        h->addWidget(replayPath_, 1);
+        h->addWidget(browse);
+        pages_->addWidget(w);
+    }
+    layout->addWidget(pages_);
+
+    auto* opts = new QFormLayout;
+    bitrate_ = new QComboBox(this);
+    bitrate_->setObjectName(QStringLiteral("bitrate"));
+    bitrate_->addItem(tr("(adapter setting)"), 0);
+    for (int b : kBitrates) bitrate_->addItem(tr("%L1 kbit/s").arg(b / 1000), b);
+    opts->addRow(tr("Bit rate:"), bitrate_);
+    auto* fdRow = new QHBoxLayout;
+    fd_ = new QCheckBox(tr("CAN FD"), this);
+    dataBitrate_ = new QComboBox(this);
+    for (int b : {1000000, 2000000, 4000000, 5000000, 8000000}) dataBitrate_->addItem(tr("data %L1 Mbit/s").arg(b / 1000000), b);
+    dataBitrate_->setCurrentIndex(1);
+    dataBitrate_->setEnabled(false);
+    fdRow->addWidget(fd_);
+    fdRow->addWidget(dataBitrate_, 1);
+    opts->addRow(QString(), fdRow);
+    listenOnly_ = new QCheckBox(tr("Listen-only (never transmit)"), this);
+    listenOnly_->setObjectName(QStringLiteral("listenOnly"));
+    opts->addRow(QString(), listenOnly_);
+    preview_ = new QLineEdit(this);
+    preview_->setObjectName(QStringLiteral("urlPreview"));
+    preview_->setReadOnly(true);
+    opts->addRow(tr("URL:"), preview_);
+    layout->addLayout(opts);
+    error_ = new QLabel(this);
+    error_->setStyleSheet(QStringLiteral("color: #b00020"));
+    error_->setWordWrap(true);
+    error_->hide();
+    layout->addWidget(error_);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Connect"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &ConnectDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &ConnectDialog::reject);
+    layout->addWidget(buttons);
+
+    connect(backend_, &QComboBox::currentIndexChanged, this, &ConnectDialog::onBackendChanged);
+    for (QComboBox* c : {device_, bitrate_, dataBitrate_}) connect(c, &QComboBox::currentTextChanged, this, &ConnectDialog::updatePreview);
+    for (QLineEdit* e : {host_, channel_, replayPath_}) connect(e, &QLineEdit::textChanged, this, &ConnectDialog::updatePreview);
+    connect(port_, &QSpinBox::valueChanged, this, &ConnectDialog::updatePreview);
+    connect(fd_, &QCheckBox::toggled, this, [this](bool on) {
+        dataBitrate_->setEnabled(on);
+        updatePreview();
+    });
+    connect(listenOnly_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
+    onBackendChanged();
+    resize(520, 480);
+}
+
+void ConnectDialog::onBackendChanged() {
+    const QString key = backend_->currentData().toString();
+    if (key == u"sim") pages_->setCurrentIndex(SimPage);
+    else if (key == u"socketcand") pages_->setCurrentIndex(SocketcandPage);
+    else if (key == u"replay") pages_->setCurrentIndex(ReplayPage);
+    else {
+        pages_->setCurrentIndex(PluginPage);
+        device_->clear();
+        QString error;
+        for (const auto& info : QCanBus::instance()->availableDevices(key, &error)) device_->addItem(info.name());
+        if (device_->count() == 0) device_->setEditText(key == u"virtualcan" ? QStringLiteral("can0") : QString());
+    }
+    updatePreview();
+}
+
+QString ConnectDialog::url() const {
+    const QString key = backend_->currentData().toString();
+    QString target;
+    QStringList options;
+    if (key == u"sim") {
+        QStringList nodes;
+        for (int i = 0; i < drives_->rowCount(); ++i)
+            if (drives_->item(i, 0)->checkState() == Qt::Checked)
+                nodes << QStringLiteral("%1:%2").arg(static_cast<QSpinBox*>(drives_->cellWidget(i, 1))->value()).arg(drives_->item(i, 0)->text());
+        if (nodes.join(u',') != sim::SimNetwork::defaultSpec()) options << QStringLiteral("nodes=") + nodes.join(u',');
+    } else if (key == u"socketcand") {
+        target = QStringLiteral("%1:%2/%3").arg(host_->text().trimmed()).arg(port_->value()).arg(channel_->text().trimmed());
+    } else if (key == u"replay") {
+        target = replayPath_->text().trimmed();
+    } else {
+        target = device_->currentText().trimmed();
+    }
+    if (const int b = bitrate_->currentData().toInt(); b > 0 && key != u"replay") options << QStringLiteral("bitrate=%1").arg(b);
+    if (fd_->isChecked()) options << QStringLiteral("fd=1") << QStringLiteral("data-bitrate=%1").arg(dataBitrate_->currentData().toInt());
+    if (listenOnly_->isChecked()) options << QStringLiteral("listen-only=1");
+    QString s = key + QStringLiteral("://") + target;
+    if (!options.isEmpty()) s += u'?' + options.join(u'&');
+    return s;
+}
+
+void ConnectDialog::setUrl(const QString& text) {
+    QString error;
+    const auto u = BusUrl::parse(text, &error);
+    if (!u) {
+        error_->setText(error);
+        error_->show();
+        return;
+    }
+    const int i = backend_->findData(u->scheme);
+    if (i >= 0) backend_->setCurrentIndex(i);
+    if (u->scheme == u"socketcand") {
+        host_->setText(u->host);
+        port_->setValue(u->port ? u->port : kSocketcandDefaultPort);
+        channel_->setText(u->channel);
+    } else if (u->scheme == u"replay") {
+        replayPath_->setText(u->target);
+    } else if (u->scheme == u"sim") {
+        const QString spec = u->option(QStringLiteral("nodes"), sim::SimNetwork::defaultSpec());
+        for (int r = 0; r < drives_->rowCount(); ++r) {
+            drives_->item(r, 0)->setCheckState(Qt::Unchecked);
+            for (const QString& d : spec.split(u','))
+                if (d.section(u':', 1) == drives_->item(r, 0)->text()) {
+                    drives_->item(r, 0)->setCheckState(Qt::Checked);
+                    static_cast<QSpinBox*>(drives_->cellWidget(r, 1))->setValue(d.section(u':', 0, 0).toInt());
+                }
+        }
+    } else {
+        device_->setEditText(u->target);
+    }
+    const int b = bitrate_->findData(u->bitrate());
+    bitrate_->setCurrentIndex(b >= 0 ? b : 0);
+    fd_->setChecked(u->canFd());
+    listenOnly_->setChecked(u->listenOnly());
+    updatePreview();
+}
+
+void ConnectDialog::updatePreview() {
+    preview_->setText(url());
+    error_->hide();
+}
+
+void ConnectDialog::accept() {
+    QString error;
+    if (!BusUrl::parse(url(), &error)) {
+        error_->setText(error);
+        error_->show();
+        return;
+    }
+    if (backend_->currentData().toString() == u"sim") {
+        bool any = false;
+        for (int i = 0; i < drives_->rowCount(); ++i) any = any || drives_->item(i, 0)->checkState() == Qt::Checked;
+        if (!any) {
+            error_->setText(tr("Choose at least one virtual drive"));
+            error_->show();
+            return;
+        }
+    }
+    QDialog::accept();
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDialog>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QStackedWidget;
+class QTableWidget;
+
+namespace coscope::gui {
+
+// Choose a bus: a Qt CAN plugin and its device, a socketcand server, the virtual drives (sim://)
+// or a log replay, with bit rate, CAN FD and listen-only. Builds the same URL string the CLI
+// takes (DESIGN.md "Bus URLs"); recent connections are one click away.
+class ConnectDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit ConnectDialog(QWidget* parent = nullptr);
+
+    QString url() const;         // the URL the choices make
+    void setUrl(const QString& url);  // fills the choices from a URL (recent connections)
+
+    // Backend keys in the combo: "sim", "socketcand", "replay", or a Qt plugin name.
+    QComboBox* backend() const { return backend_; }
+    QCheckBox* listenOnly() const { return listenOnly_; }
+    QTableWidget* drives() const { return drives_; }
+
+    void accept() override;  // validates the URL first
+
+private:
+    void onBackendChanged();
+    void updatePreview();
+
+    QComboBox* recent_ = nullptr;
+    QComboBox* backend_ = nullptr;
+    QStackedWidget* pages_ = nullptr;
+    QComboBox* device_ = nullptr;
+    QLineEdit* host_ = nullptr;
+    QSpinBox* port_ = nullptr;
+    QLineEdit* channel_ = nullptr;
+    QTableWidget* drives_ = nullptr;
+    QLineEdit* replayPath_ = nullptr;
+    QComboBox* bitrate_ = nullptr;
+    QCheckBox* fd_ = nullptr;
+    QComboBox* dataBitrate_ = nullptr;
+    QCheckBox* listenOnly_ = nullptr;
+    QLineEdit* preview_ = nullptr;
+    QLabel* error_ = nullptr;
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/events/EventLog.h"
+
+#include "core/canopen/CobId.h"
+#include "core/canopen/Emcy.h"
+#include "core/canopen/Nmt.h"
+
+#include <algorithm>
+
+namespace coscope::gui {
+
+using canopen::Service;
+
+QString eventKindName(TraceEvent::Kind kind) {
+    switch (kind) {
+    case TraceEvent::Kind::Emcy: return QStringLiteral("EMCY");
+    case TraceEvent::Kind::EmcyReset: return QStringLiteral("EMCY reset");
+    case TraceEvent::Kind::SdoAbort: return QStringLiteral("SDO abort");
+    case TraceEvent::Kind::NmtState: return QStringLiteral("NMT state");
+    case TraceEvent::Kind::BootUp: return QStringLiteral("Boot-up");
+    case TraceEvent::Kind::NmtCommand: return QStringLiteral("NMT command");
+    case TraceEvent::Kind::HeartbeatTimeout: return QStringLiteral("Heartbeat timeout");
+    case TraceEvent::Kind::BusError: return QStringLiteral("Bus error");
+    case TraceEvent::Kind::Dropped: return QStringLiteral("Dropped frames");
+    case TraceEvent::Kind::Info: return QStringLiteral("Info");
+    }
+    return {};
+}
+
+EventLog::EventLog(std::shared_ptr<const FrameDecoder> decoder) : decoder_(std::move(decoder)) {}
+
+void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
+    if (count == 0) return;
+    dissect::Dissection d;
+    std::lock_guard lock(mutex_);
+    auto push = [&](TraceEvent::Kind k, const TraceRecord& r, FrameNo n, int node, QString text) {
+        events_.push_back({k, r.timestampNs, n, node, std::move(text)});
+    };
+    for (size_t i = 0; i < count; ++i) {
+        const FrameNo n = first + static_cast<FrameNo>(i);
+        const TraceRecord& r = store.record(n);
+        if (r.flags & CanFrame::Error) {
+            push(TraceEvent::Kind::BusError, r, n, -1, QStringLiteral("Error frame (class 0x%1)").arg(r.id, 8, 16, QLatin1Char('0')));
+            continue;
+        }
+        if (r.flags & CanFrame::Extended) continue;
+        const auto info = canopen::classifyCobId(r.id);
+        switch (info.service) {
+        case Service::Nmt:
+            if (r.len >= 2) {
+                const QString target = r.data[1] == 0 ? QStringLiteral("all nodes") : QStringLiteral("node %1").arg(r.data[1]);
+                push(TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1,
+                     QStringLiteral("%1 → %2").arg(canopen::nmtCommandName(r.data[0]), target));
+            }
+            break;
+        case Service::NmtErrorControl: {
+            if ((r.flags & CanFrame::Remote) || r.len < 1) break;
+            NodeWatch& w = watch_[static_cast<size_t>(info.node)];
+            const int state = r.data[0] & 0x7F;
+            if (w.timedOut) {
+                push(TraceEvent::Kind::NmtState, r, n, info.node, QStringLiteral("Heartbeat back after timeout"));
+                w.timedOut = false;
+            }
+            if (state == 0) {
+                push(TraceEvent::Kind::BootUp, r, n, info.node, QStringLiteral("Boot-up"));
+                w.state = 0x7F;  // pre-operational after boot-up (CiA 301 §7.3.2.2.1)
+                w.lastNs = 0;
+                w.periodNs = 0;
+                break;
+            }
+            if (w.state != state) {
+                push(TraceEvent::Kind::NmtState, r, n, info.node,
+                     w.state < 0 ? QStringLiteral("State %1").arg(canopen::nmtStateName(static_cast<uint8_t>(state)))
+                                 : QStringLiteral("%1 → %2").arg(canopen::nmtStateName(static_cast<uint8_t>(w.state)),
+                                                                 canopen::nmtStateName(static_cast<uint8_t>(state))));
+                w.state = state;
+            }
+            if (w.lastNs && r.timestampNs > w.lastNs) w.periodNs = r.timestampNs - w.lastNs;
+            w.lastNs = r.timestampNs;
+            break;
+        }
+        case Service::Emcy:
+        case Service::SdoResponse:
+        case Service::SdoRequest: {
+            const bool emcy = info.service == Service::Emcy;
+            if (!emcy && !(r.len >= 1 && (r.data[0] >> 5) == 4)) break;  // only aborts: cs 4 (CiA 301 §7.2.4.3.17)
+            // Our own "SDO protocol timed out" aborts (05040000h) are reported where the user
+            // acted (and are expected during a scan); they are not bus events.
+            if (!emcy && (r.flags & CanFrame::Tx) && r.len >= 8 && r.data[4] == 0x00 && r.data[5] == 0x00 && r.data[6] == 0x04 && r.data[7] == 0x05) break;
+            const CanFrame f = store.frame(n);
+            d.reset(dissect::Dissection::Level::Flat);
+            decoder_->decode(f, d);
+            QString text = d.summary;
+            if (emcy) {
+                const auto m = canopen::parseEmcy(f.data.data(), f.len);
+                if (const auto* v = d.find("emcy.vendor")) text += QStringLiteral(" — %1").arg(v->text);
+                const QStringList bits = canopen::errorRegisterBits(m.errorRegister);
+                if (!bits.isEmpty()) text += QStringLiteral(" [%1]").arg(bits.join(QStringLiteral(", ")));
+                push(m.code == 0 ? TraceEvent::Kind::EmcyReset : TraceEvent::Kind::Emcy, r, n, info.node, text);
+            } else {
+                push(TraceEvent::Kind::SdoAbort, r, n, info.node, text);
+            }
+            break;
+        }
+        default: break;
+        }
+    }
+    // Offline, the log's own clock tells when a heartbeat went missing.
+    checkHeartbeatsLocked(store.record(first + static_cast<FrameNo>(count - 1)).timestampNs);
+}
+
+void EventLog::checkHeartbeats(int64_t nowNs) {
+    std::lock_guard lock(mutex_);
+    checkHeartbeatsLocked(nowNs);
+}
+
+void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
+    for (size_t id = 1; id < watch_.size(); ++id) {
+        NodeWatch& w = watch_[id];
+        if (!w.lastNs || !w.periodNs || w.timedOut) continue;
+        const int64_t limit = std::max<int64_t>(3 * w.periodNs, 1'500'000'000);
+        if (nowNs - w.lastNs > limit) {
+            w.timedOut = true;
+            events_.push_back({TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id),
+                               QStringLiteral("No heartbeat for %1 ms (period %2 ms)")
+                                   .arg((nowNs - w.lastNs) / 1'000'000)
+                                   .arg(w.periodNs / 1'000'000)});
+        }
+    }
+}
+
+void EventLog::add(TraceEvent event) {
+    std::lock_guard lock(mutex_);
+    events_.push_back(std::move(event));
+}
+
+void EventLog::clear() {
+    std::lock_guard lock(mutex_);
+    events_.clear();
+    watch_ = {};
+    generation_.fetch_add(1, std::memory_order_release);
+}
+
+size_t EventLog::size() const {
+    std::lock_guard lock(mutex_);
+    return events_.size();
+}
+
+std::vector<TraceEvent> EventLog::since(size_t from) const {
+    std::lock_guard lock(mutex_);
+    if (from >= events_.size()) return {};
+    return {events_.begin() + static_cast<std::ptrdiff_t>(from), events_.end()};
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/trace/FrameDecoder.h"
+#include "core/trace/TraceStore.h"
+
+#include <QString>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace coscope::gui {
+
+inline constexpr FrameNo kNoFrame = 0xFFFFFFFFu;
+
+// One thing worth a technician's attention, with the frame it came from (kNoFrame when none).
+struct TraceEvent {
+    enum class Kind : uint8_t { Emcy, EmcyReset, SdoAbort, NmtState, BootUp, NmtCommand, HeartbeatTimeout, BusError, Dropped, Info };
+    Kind kind = Kind::Info;
+    int64_t timeNs = 0;
+    FrameNo frame = kNoFrame;
+    int node = -1;
+    QString text;
+};
+QString eventKindName(TraceEvent::Kind kind);
+
+// The event list of a trace: EMCY (code text, error register bits, vendor alarm text from the
+// decoder), SDO aborts, NMT commands and state changes, boot-ups, heartbeat timeouts, error
+// frames, plus what the app adds (bus errors, dropped-frame counts). Fed like the node table;
+// views read the events appended since their last look. Thread-safe.
+class EventLog {
+public:
+    explicit EventLog(std::shared_ptr<const FrameDecoder> decoder = defaultFrameDecoder());
+
+    void consume(const TraceStore& store, FrameNo first, size_t count);
+    // A heartbeat is overdue when nothing came for 3 periods (at least 1.5 s) — live traces only.
+    void checkHeartbeats(int64_t nowNs);
+    void add(TraceEvent event);
+    void clear();
+
+    uint64_t generation() const { return generation_.load(std::memory_order_acquire); }  // bumps on clear()
+    size_t size() const;
+    // Events [from, size()); the caller keeps `from`.
+    std::vector<TraceEvent> since(size_t from) const;
+
+private:
+    void checkHeartbeatsLocked(int64_t nowNs);
+
+    std::shared_ptr<const FrameDecoder> decoder_;
+    mutable std::mutex mutex_;
+    std::vector<TraceEvent> events_;
+    struct NodeWatch {
+        int state = -1;
+        int64_t lastNs = 0;
+        int64_t periodNs = 0;
+        bool timedOut = false;
+    };
+    std::array<NodeWatch, 128> watch_{};
+    std::atomic<uint64_t> generation_{0};
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/trace/TraceStore.h"
+
+#include <QDockWidget>
+
+class QTableView;
+
+namespace coscope::gui {
+
+class EventsModel;
+class Workspace;
+
+// The Events dock: EMCY, SDO aborts, NMT, boot-ups, heartbeat timeouts, bus errors and drops.
+// Double-clicking an event jumps to its frame in the trace.
+class EventsDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit EventsDock(Workspace* workspace, QWidget* parent = nullptr);
+
+    void rebind();
+    void refresh();
+
+    EventsModel* model() const { return model_; }
+    QTableView* view() const { return view_; }
+
+signals:
+    void frameActivated(coscope::FrameNo frame);
+
+private:
+    Workspace* workspace_;
+    EventsModel* model_ = nullptr;
+    QTableView* view_ = nullptr;
+    bool follow_ = true;
+};
+
+}  // namespace coscope::gui

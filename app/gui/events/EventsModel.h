@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/events/EventLog.h"
+
+#include <QAbstractTableModel>
+
+#include <vector>
+
+namespace coscope::gui {
+
+// Rows of the event log; refresh() appends the events logged since the last call.
+class EventsModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum Column { Time, Node, Kind, Text, Frame, ColumnCount };
+
+    explicit EventsModel(QObject* parent = nullptr);
+
+    void setLog(EventLog* log);
+    void refresh();
+    // The trace's first timestamp, so event times read like the trace's relative time.
+    void setOrigin(int64_t originNs) { origin_ = originNs; }
+
+    const TraceEvent& eventAt(int row) const { return events_[static_cast<size_t>(row)]; }
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+private:
+    EventLog* log_ = nullptr;
+    uint64_t generation_ = 0;
+    std::vector<TraceEvent> events_;
+    int64_t origin_ = 0;
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/nodes/NodeTable.h"
+
+#include "core/canopen/CobId.h"
+
+namespace coscope::gui {
+
+using canopen::Service;
+
+NodeInfo& NodeTable::entryLocked(int id) {
+    auto& slot = nodes_[static_cast<size_t>(id & 0x7F)];
+    if (!slot) {
+        slot.emplace();
+        slot->node = id;
+    }
+    return *slot;
+}
+
+void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
+    bool changed = false;
+    std::lock_guard lock(mutex_);
+    for (size_t i = 0; i < count; ++i) {
+        const FrameNo n = first + static_cast<FrameNo>(i);
+        const TraceRecord& r = store.record(n);
+        if (r.flags & (CanFrame::Extended | CanFrame::Error)) continue;
+        const auto info = canopen::classifyCobId(r.id);
+        if (info.node < 1) continue;
+        // Only what a node itself sends proves it exists: error control, EMCY, SDO responses, TPDOs.
+        // Requests to a node (600h, RPDOs, guarding RTR) say nothing about it being there.
+        switch (info.service) {
+        case Service::NmtErrorControl: {
+            if (r.flags & CanFrame::Remote || r.len < 1) continue;
+            NodeInfo& e = entryLocked(info.node);
+            const int state = r.data[0] & 0x7F;  // CiA 301 §7.2.8.3.2: bit 7 = toggle
+            if (state == 0) {
+                e.seenBootUp = true;
+                ++e.bootUps;
+                e.nmtState = 0x7F;  // after boot-up a node is pre-operational (CiA 301 §7.3.2.2.1)
+            } else {
+                if (e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs) e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
+                e.seenHeartbeat = true;
+                e.lastHeartbeatNs = r.timestampNs;
+                e.nmtState = state;
+            }
+            e.lastSeenNs = r.timestampNs;
+            e.lastFrame = n;
+            changed = true;
+            break;
+        }
+        case Service::Emcy: {
+            NodeInfo& e = entryLocked(info.node);
+            e.seenEmcy = true;
+            const uint16_t code = r.len >= 2 ? static_cast<uint16_t>(r.data[0] | (r.data[1] << 8)) : 0;
+            if (code != 0) ++e.emcyCount;  // 0000h = error reset (CiA 301 §7.2.7.3.1)
+            e.lastEmcyCode = code;
+            e.lastSeenNs = r.timestampNs;
+            e.lastFrame = n;
+            changed = true;
+            break;
+        }
+        case Service::SdoResponse: {
+            NodeInfo& e = entryLocked(info.node);
+            e.seenSdo = true;
+            ++e.sdoFrames;
+            e.lastSeenNs = r.timestampNs;
+            e.lastFrame = n;
+            changed = true;
+            break;
+        }
+        case Service::Tpdo1:
+        case Service::Tpdo2:
+        case Service::Tpdo3:
+        case Service::Tpdo4: {
+            auto& slot = nodes_[static_cast<size_t>(info.node)];
+            if (slot) {  // PDO ids may be remapped: a TPDO alone does not create a node
+                slot->lastSeenNs = r.timestampNs;
+                slot->lastFrame = n;
+            }
+            break;
+        }
+        default: break;
+        }
+    }
+    if (changed) bump();
+}
+
+void NodeTable::clear() {
+    std::lock_guard lock(mutex_);
+    for (auto& n : nodes_) n.reset();
+    bump();
+}
+
+std::vector<NodeInfo> NodeTable::snapshot() const {
+    std::lock_guard lock(mutex_);
+    std::vector<NodeInfo> out;
+    for (const auto& n : nodes_)
+        if (n) out.push_back(*n);
+    return out;
+}
+
+std::optional<NodeInfo> NodeTable::node(int id) const {
+    std::lock_guard lock(mutex_);
+    if (id < 0 || id > 127) return std::nullopt;
+    return nodes_[static_cast<size_t>(id)];
+}
+
+void NodeTable::markScanned(int id) {
+    std::lock_guard lock(mutex_);
+    entryLocked(id).scanned = true;
+    bump();
+}
+
+void NodeTable::setDictionary(int id, const QString& name) {
+    std::lock_guard lock(mutex_);
+    entryLocked(id).dictionary = name;
+    bump();
+}
+
+void NodeTable::setDeviceName(int id, const QString& name) {
+    std::lock_guard lock(mutex_);
+    entryLocked(id).deviceName = name;
+    bump();
+}
+
+void NodeTable::setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
+                            std::optional<uint32_t> revision, std::optional<uint32_t> serial) {
+    std::lock_guard lock(mutex_);
+    NodeInfo& e = entryLocked(id);
+    if (vendor) e.vendorId = vendor;
+    if (product) e.productCode = product;
+    if (revision) e.revision = revision;
+    if (serial) e.serial = serial;
+    bump();
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/nodes/NodesDock.h"
+
+#include "app/gui/nodes/NodeScanner.h"
+#include "app/gui/nodes/NodesModel.h"
+#include "app/gui/session/Workspace.h"
+#include "core/canopen/MasterContext.h"
+#include "core/canopen/Nmt.h"
+#include "eds/DictionaryLibrary.h"
+
+#include <QAction>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QTableView>
+
+namespace coscope::gui {
+
+using canopen::NmtCommand;
+
+NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Nodes"), parent), workspace_(workspace) {
+    setObjectName(QStringLiteral("NodesDock"));
+    model_ = new NodesModel(this);
+    view_ = new QTableView(this);
+    view_->setObjectName(QStringLiteral("nodesView"));
+    view_->setModel(model_);
+    view_->verticalHeader()->hide();
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->setSelectionMode(QAbstractItemView::SingleSelection);
+    view_->setAlternatingRowColors(true);
+    view_->horizontalHeader()->setStretchLastSection(true);
+    view_->setContextMenuPolicy(Qt::CustomContextMenu);
+    view_->setShowGrid(false);
+    view_->setWordWrap(false);
+    view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    setWidget(view_);
+
+    struct Cmd {
+        NmtCommand cs;
+        const char* text;
+    };
+    for (const Cmd& c : {Cmd{NmtCommand::Start, "Start (Operational)"}, Cmd{NmtCommand::Stop, "Stop"},
+                         Cmd{NmtCommand::EnterPreOperational, "Enter Pre-operational"}, Cmd{NmtCommand::ResetNode, "Reset node"},
+                         Cmd{NmtCommand::ResetCommunication, "Reset communication"}}) {
+        auto* a = new QAction(tr(c.text), this);
+        a->setData(static_cast<int>(c.cs));
+        a->setObjectName(QStringLiteral("nmt_%1").arg(static_cast<int>(c.cs)));
+        connect(a, &QAction::triggered, this, [this, a] { sendNmt(static_cast<uint8_t>(a->data().toInt()), std::max(0, selectedNode())); });
+        commands_ << a;
+    }
+    scan_ = new QAction(tr("Scan network (SDO 1000h on nodes 1–127)"), this);
+    scan_->setObjectName(QStringLiteral("scanAction"));
+    connect(scan_, &QAction::triggered, this, &NodesDock::scan);
+    identify_ = new QAction(tr("Read identity"), this);
+    connect(identify_, &QAction::triggered, this, [this] {
+        if (selectedNode() > 0 && scanner_) scanner_->identify(selectedNode());
+    });
+    commands_ << scan_ << identify_;
+    assign_ = new QAction(tr("Assign dictionary…"), this);
+    connect(assign_, &QAction::triggered, this, [this] {
+        const int node = selectedNode();
+        if (node <= 0) return;
+        const eds::DictionaryLibrary library;
+        bool ok = false;
+        const QString name = QInputDialog::getItem(this, tr("Assign dictionary"), tr("Dictionary for node %1:").arg(node), library.names(), 0, false, &ok);
+        if (ok) assignDictionary(node, name);
+    });
+
+    connect(view_, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
+        updateEnabled();
+        QMenu menu(this);
+        const int node = selectedNode();
+        menu.addSection(node > 0 ? tr("Node %1").arg(node) : tr("All nodes"));
+        for (QAction* a : commands_)
+            if (a != scan_ && a != identify_) menu.addAction(a);
+        menu.addSeparator();
+        menu.addAction(identify_);
+        menu.addAction(assign_);
+        menu.addSeparator();
+        menu.addAction(scan_);
+        if (!workspace_->canTransmit())
+            menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: commands disabled") : tr("Not connected"));
+        menu.exec(view_->viewport()->mapToGlobal(pos));
+    });
+    connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this] {
+        if (selectedNode() > 0) emit nodeSelected(selectedNode());
+    });
+    rebind();
+}
+
+void NodesDock::rebind() {
+    model_->setTable(&workspace_->nodes());
+    model_->setClock([this]() -> int64_t {
+        if (workspace_->isLive()) return nowNs();
+        const auto& s = workspace_->store();
+        return s && !s->empty() ? s->record(static_cast<FrameNo>(s->size() - 1)).timestampNs : 0;
+    });
+    delete scanner_;
+    scanner_ = workspace_->sdo() ? new NodeScanner(workspace_->sdo(), &workspace_->nodes(), this) : nullptr;
+    if (scanner_)
+        connect(scanner_, &NodeScanner::finished, this, [this](int n) { emit message(tr("Scan finished: %1 node(s) answered").arg(n)); });
+    updateEnabled();
+}
+
+void NodesDock::refresh() {
+    const int node = selectedNode();
+    model_->refresh();
+    if (node > 0 && selectedNode() != node) {
+        const int row = model_->rowOfNode(node);
+        if (row >= 0) view_->selectRow(row);
+    }
+    updateEnabled();
+}
+
+void NodesDock::updateEnabled() {
+    const bool can = workspace_->canTransmit();
+    for (QAction* a : commands_) a->setEnabled(can && (a != identify_ || selectedNode() > 0));
+    scan_->setEnabled(can && scanner_ && !scanner_->isRunning());
+    assign_->setEnabled(selectedNode() > 0);
+}
+
+int NodesDock::selectedNode() const {
+    const QModelIndex idx = view_->currentIndex();
+    return idx.isValid() ? model_->nodeAt(idx.row()) : -1;
+}
+
+bool NodesDock::confirm(const QString& title, const QString& what) {
+    if (autoConfirm_) return true;
+    return QMessageBox::question(this, title, what, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Yes;
+}
+
+bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
+    if (!workspace_->canTransmit() || !workspace_->master()) {
+        emit message(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: NMT commands are disabled")
+                                                                            : tr("Not connected to a bus"));
+        return false;
+    }
+    const auto frame = canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node));
+    const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
+    if (ask && !confirm(tr("Send NMT command"), tr("Send NMT “%1” to %2?\n\nFrame: %3")
+                                                   .arg(canopen::nmtCommandName(command), target, formatCansend(frame))))
+        return false;
+    QString error;
+    if (!workspace_->master()->send(frame, &error)) {
+        emit message(tr("NMT %1 to %2 failed: %3").arg(canopen::nmtCommandName(command), target, error));
+        QMessageBox::warning(this, tr("NMT command failed"), error);
+        return false;
+    }
+    emit message(tr("Sent NMT %1 to %2").arg(canopen::nmtCommandName(command), target));
+    return true;
+}
+
+void NodesDock::scan() {
+    if (!workspace_->canTransmit() || !scanner_) {
+        emit message(tr("Scan needs a connected bus that is not listen-only"));
+        return;
+    }
+    if (!confirm(tr("Scan network"), tr("Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?")))
+        return;
+    emit message(tr("Scanning nodes 1–127…"));
+    scanner_->scan();
+}
+
+void NodesDock::assignDictionary(int node, const QString& name) {
+    workspace_->nodes().setDictionary(node, name);
+    if (workspace_->master()) workspace_->master()->setNodeDictionary(static_cast<uint8_t>(node), name);
+    emit message(tr("Node %1 uses dictionary %2").arg(node).arg(name));
+}
+
+}  // namespace coscope::gui

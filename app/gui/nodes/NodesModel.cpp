@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/nodes/NodesModel.h"
+
+#include "core/canopen/Nmt.h"
+
+#include <QBrush>
+#include <QColor>
+
+namespace coscope::gui {
+
+NodesModel::NodesModel(QObject* parent) : QAbstractTableModel(parent) {}
+
+void NodesModel::setTable(NodeTable* table) {
+    beginResetModel();
+    table_ = table;
+    nodes_.clear();
+    revision_ = ~uint64_t(0);
+    endResetModel();
+    refresh();
+}
+
+void NodesModel::refresh() {
+    if (!table_) return;
+    if (table_->revision() != revision_) {
+        revision_ = table_->revision();
+        auto fresh = table_->snapshot();
+        if (fresh.size() != nodes_.size()) {
+            beginResetModel();  // nodes appear rarely; a reset keeps this simple
+            nodes_ = std::move(fresh);
+            endResetModel();
+            return;
+        }
+        nodes_ = std::move(fresh);
+    }
+    if (!nodes_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1));
+}
+
+int NodesModel::rowOfNode(int node) const {
+    for (size_t i = 0; i < nodes_.size(); ++i)
+        if (nodes_[i].node == node) return static_cast<int>(i);
+    return -1;
+}
+
+int NodesModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(nodes_.size()); }
+int NodesModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+
+QVariant NodesModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() >= rowCount()) return {};
+    const NodeInfo& n = nodes_[static_cast<size_t>(index.row())];
+    const int64_t now = now_ ? now_() : n.lastSeenNs;
+    const bool late = n.seenHeartbeat && n.heartbeatPeriodNs > 0 && now - n.lastHeartbeatNs > std::max<int64_t>(3 * n.heartbeatPeriodNs, 1'500'000'000);
+    if (role == NodeIdRole) return n.node;
+    if (role == Qt::BackgroundRole && index.column() == State) {
+        if (late) return QBrush(QColor(255, 205, 205));
+        switch (n.nmtState) {
+        case 0x05: return QBrush(QColor(200, 240, 200));
+        case 0x7F: return QBrush(QColor(255, 243, 196));
+        case 0x04: return QBrush(QColor(225, 225, 225));
+        default: return {};
+        }
+    }
+    if (role == Qt::ForegroundRole && index.column() == Emcy && n.emcyCount) return QBrush(QColor(176, 0, 32));
+    if (role == Qt::TextAlignmentRole && (index.column() == Node || index.column() == HeartbeatAge || index.column() == Emcy))
+        return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+    if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
+    switch (index.column()) {
+    case Node: return n.node;
+    case State:
+        if (late) return tr("No heartbeat");
+        return n.nmtState < 0 ? tr("Unknown") : canopen::nmtStateName(static_cast<uint8_t>(n.nmtState));
+    case HeartbeatAge:
+        if (!n.seenHeartbeat) return tr("—");
+        return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);
+    case DeviceName: return n.deviceName;
+    case Identity: {
+        if (!n.vendorId) return QString();
+        auto hex8 = [](uint32_t v) { return QString::number(v, 16).toUpper().rightJustified(8, u'0'); };
+        QString s = QStringLiteral("vendor %1").arg(hex8(*n.vendorId));
+        if (n.productCode) s += QStringLiteral(", product %1").arg(hex8(*n.productCode));
+        if (n.revision) s += QStringLiteral(", rev %1").arg(hex8(*n.revision));
+        if (n.serial) s += QStringLiteral(", s/n %1").arg(*n.serial);
+        return s;
+    }
+    case Dictionary: return n.dictionary.isEmpty() ? tr("(none)") : n.dictionary;
+    case Emcy: return n.emcyCount;
+    case SeenBy: {
+        QStringList by;
+        if (n.seenBootUp) by << tr("boot-up");
+        if (n.seenHeartbeat) by << tr("heartbeat");
+        if (n.seenEmcy) by << QStringLiteral("EMCY");
+        if (n.seenSdo) by << QStringLiteral("SDO");
+        if (n.scanned) by << tr("scan");
+        return by.join(QStringLiteral(", "));
+    }
+    default: return {};
+    }
+}
+
+QVariant NodesModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    switch (section) {
+    case Node: return tr("Node");
+    case State: return tr("NMT state");
+    case HeartbeatAge: return tr("Heartbeat age");
+    case DeviceName: return tr("Device name");
+    case Identity: return tr("Identity (1018h)");
+    case Dictionary: return tr("Dictionary");
+    case Emcy: return tr("EMCY");
+    case SeenBy: return tr("Seen by");
+    default: return {};
+    }
+}
+
+}  // namespace coscope::gui

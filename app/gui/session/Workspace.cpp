@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/session/Workspace.h"
+
+#include "core/canopen/MasterContext.h"
+#include "core/canopen/SdoClient.h"
+
+#include <QFileInfo>
+
+#include <spdlog/spdlog.h>
+
+namespace coscope::gui {
+
+Workspace::Workspace(QObject* parent)
+    : QObject(parent), decoder_(defaultFrameDecoder()), store_(std::make_shared<TraceStore>()), events_(decoder_) {}
+
+Workspace::~Workspace() { reset(); }
+
+void Workspace::reset() {
+    if (loadJob_) {
+        loadJob_->cancel();
+        loadJob_->wait();
+    }
+    loadJob_.reset();
+    sdo_.reset();
+    if (bus_) bus_->close();
+    if (session_) session_->stop();
+    session_.reset();
+    master_.reset();
+    if (bus_) bus_->disconnect(this);
+    bus_.reset();
+    nodes_.clear();
+    events_.clear();
+    store_ = std::make_shared<TraceStore>();
+    reportedDropped_ = reportedErrors_ = 0;
+    sourceName_.clear();
+}
+
+std::vector<CaptureSession::Consumer> Workspace::analysisConsumers() {
+    return {[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
+            [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); }};
+}
+
+bool Workspace::connectBus(const QString& url, QString* error) {
+    QString why;
+    auto bus = createBus(url, &why);
+    if (!bus) {
+        if (error) *error = why;
+        return false;
+    }
+    reset();
+    bus_ = std::move(bus);
+    sourceName_ = bus_->url().toString();
+    connect(bus_.get(), &CanBus::stateChanged, this, [this](CanBus::State s) {
+        if (s == CanBus::State::Error && bus_) events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, bus_->errorString()});
+        emit busStateChanged(s);
+    });
+    connect(bus_.get(), &CanBus::errorOccurred, this, &Workspace::errorOccurred);
+    session_ = std::make_unique<CaptureSession>(store_);
+    master_ = std::make_unique<canopen::MasterContext>(bus_.get());
+    for (auto& c : analysisConsumers()) session_->addConsumer(std::move(c));
+    session_->addConsumer(master_->dispatcher().consumer());
+    sdo_ = std::make_unique<canopen::SdoClient>(*master_);
+    session_->start(bus_.get());
+    spdlog::info("connecting to {}", sourceName_.toStdString());
+    bus_->open();
+    emit sourceChanged();
+    return true;
+}
+
+void Workspace::disconnectBus() {
+    if (!bus_) return;
+    // Keep the trace: stop the bus and the ingest thread, leave the store for review.
+    sdo_.reset();
+    bus_->close();
+    if (session_) session_->stop();
+    session_.reset();
+    master_.reset();
+    bus_->disconnect(this);
+    bus_.reset();
+    sourceName_ += QStringLiteral(" (disconnected)");
+    emit busStateChanged(CanBus::State::Closed);
+    emit sourceChanged();
+}
+
+bool Workspace::openLog(const QString& path, QString* error) {
+    if (!QFileInfo(path).isReadable()) {
+        if (error) *error = QStringLiteral("%1: cannot read the file").arg(path);
+        return false;
+    }
+    reset();
+    sourceName_ = QFileInfo(path).fileName();
+    loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers());
+    loadJob_->start();
+    emit sourceChanged();
+    return true;
+}
+
+void Workspace::clear() {
+    reset();
+    emit sourceChanged();
+}
+
+bool Workspace::canTransmit() const { return bus_ && bus_->state() == CanBus::State::Open && !bus_->isListenOnly(); }
+
+QStringList Workspace::busNames() const {
+    if (loadJob_) return loadJob_->busNames();
+    if (bus_) return {bus_->url().target.isEmpty() ? bus_->url().scheme : bus_->url().target};
+    return {};
+}
+
+void Workspace::poll() {
+    if (!bus_) return;
+    events_.checkHeartbeats(nowNs());
+    const auto c = bus_->counters();
+    if (c.dropped > reportedDropped_) {
+        events_.add({TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1,
+                     QStringLiteral("%1 frames dropped (receive queue full), %2 in total").arg(c.dropped - reportedDropped_).arg(c.dropped)});
+        reportedDropped_ = c.dropped;
+    }
+    reportedErrors_ = c.errors;
+}
+
+}  // namespace coscope::gui

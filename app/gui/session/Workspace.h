@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/events/EventLog.h"
+#include "app/gui/nodes/NodeTable.h"
+#include "app/gui/trace/FrameDecoder.h"
+#include "app/gui/trace/LogLoadJob.h"
+#include "core/can/CanBus.h"
+#include "core/trace/CaptureSession.h"
+
+#include <QObject>
+#include <QStringList>
+
+#include <memory>
+
+namespace coscope::canopen {
+class MasterContext;
+class SdoClient;
+}  // namespace coscope::canopen
+
+namespace coscope::gui {
+
+// What the window is looking at: one trace store, filled either live from a bus (through a
+// CaptureSession whose ingest thread also feeds the node table, the event log and the master
+// services' dispatcher) or from a log file (through a LogLoadJob). No widgets: the docks read
+// it. It signals only when the source changes (views rebind) and for bus state and errors.
+class Workspace : public QObject {
+    Q_OBJECT
+public:
+    explicit Workspace(QObject* parent = nullptr);
+    ~Workspace() override;
+
+    // Creates and opens the bus; false with a one-line reason when the URL is unusable.
+    // Opening itself is asynchronous: see busStateChanged / errorOccurred.
+    bool connectBus(const QString& url, QString* error);
+    void disconnectBus();
+    // Starts loading a log file; progress via loadJob().
+    bool openLog(const QString& path, QString* error);
+    // Empty trace, no source.
+    void clear();
+
+    const std::shared_ptr<TraceStore>& store() const { return store_; }
+    NodeTable& nodes() { return nodes_; }
+    EventLog& events() { return events_; }
+    const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
+
+    CanBus* bus() const { return bus_.get(); }
+    bool isLive() const { return bus_ != nullptr; }
+    bool canTransmit() const;  // a bus is open and not listen-only
+    canopen::MasterContext* master() const { return master_.get(); }
+    canopen::SdoClient* sdo() const { return sdo_.get(); }
+    LogLoadJob* loadJob() const { return loadJob_.get(); }
+
+    QString sourceName() const { return sourceName_; }
+    QStringList busNames() const;
+
+    // Called by the window's refresh timer: heartbeat timeouts, dropped-frame and error counts.
+    void poll();
+
+signals:
+    void sourceChanged();
+    void busStateChanged(coscope::CanBus::State state);
+    void errorOccurred(const QString& message);
+
+private:
+    void reset();
+    std::vector<CaptureSession::Consumer> analysisConsumers();
+
+    std::shared_ptr<const FrameDecoder> decoder_;
+    std::shared_ptr<TraceStore> store_;
+    NodeTable nodes_;
+    EventLog events_;
+    std::unique_ptr<CanBus> bus_;
+    std::unique_ptr<CaptureSession> session_;
+    std::unique_ptr<canopen::MasterContext> master_;
+    std::unique_ptr<canopen::SdoClient> sdo_;
+    std::unique_ptr<LogLoadJob> loadJob_;
+    QString sourceName_;
+    uint64_t reportedDropped_ = 0;
+    uint64_t reportedErrors_ = 0;
+};
+
+}  // namespace coscope::gui

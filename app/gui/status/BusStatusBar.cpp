@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/status/BusStatusBar.h"
+
+#include "app/gui/session/Workspace.h"
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStatusBar>
+
+namespace coscope::gui {
+
+double frameBits(int len, bool extended) {
+    const double framing = 47 + 8.0 * len + (extended ? 20 : 0);
+    const double stuffable = 34 + 8.0 * len + (extended ? 20 : 0);
+    return framing + (stuffable - 1) / 4.0;
+}
+
+BusStatusBar::BusStatusBar(QStatusBar* bar, Workspace* workspace) : QObject(bar), workspace_(workspace) {
+    auto label = [bar](const QString& name, int minWidth) {
+        auto* l = new QLabel(bar);
+        l->setObjectName(name);
+        l->setMinimumWidth(minWidth);
+        l->setFrameShape(QFrame::StyledPanel);
+        bar->addPermanentWidget(l);
+        return l;
+    };
+    progress_ = new QProgressBar(bar);
+    progress_->setRange(0, 1000);
+    progress_->setMaximumWidth(180);
+    progress_->setTextVisible(true);
+    progress_->hide();
+    bar->addPermanentWidget(progress_);
+    cancel_ = new QPushButton(tr("Cancel"), bar);
+    cancel_->setObjectName(QStringLiteral("jobCancel"));
+    cancel_->hide();
+    bar->addPermanentWidget(cancel_);
+    connect(cancel_, &QPushButton::clicked, this, [this] {
+        if (job_) job_->cancel();
+    });
+    source_ = label(QStringLiteral("statusSource"), 160);
+    state_ = label(QStringLiteral("statusState"), 80);
+    rate_ = label(QStringLiteral("statusRate"), 90);
+    load_ = label(QStringLiteral("statusLoad"), 90);
+    dropped_ = label(QStringLiteral("statusDropped"), 90);
+    errors_ = label(QStringLiteral("statusErrors"), 80);
+    refresh(nullptr);
+}
+
+void BusStatusBar::refresh(Job* job) {
+    job_ = job && !job->isDone() ? job : nullptr;
+    progress_->setVisible(job_ != nullptr);
+    cancel_->setVisible(job_ != nullptr);
+    if (job_) {
+        progress_->setValue(static_cast<int>(job_->progress() * 1000));
+        progress_->setFormat(QStringLiteral("%1 %p%").arg(job_->title()));
+    }
+
+    const auto& store = workspace_->store();
+    const uint64_t frames = store ? store->size() : 0;
+    source_->setText(workspace_->sourceName().isEmpty() ? tr("No source") : workspace_->sourceName());
+    CanBus* bus = workspace_->bus();
+    if (!bus) {
+        state_->setText(workspace_->loadJob() ? tr("Offline") : tr("Not connected"));
+        rate_->setText(tr("%L1 frames").arg(frames));
+        load_->clear();
+        dropped_->clear();
+        errors_->clear();
+        lastFrames_ = frames;
+        return;
+    }
+    // Rate and load over the frames appended since the last tick (≥ 0.5 s windows).
+    const int64_t now = nowNs();
+    if (lastNs_ == 0 || frames < lastFrames_) {
+        lastNs_ = now;
+        lastFrames_ = frames;
+    } else if (now - lastNs_ >= 500'000'000) {
+        double bits = 0;
+        for (uint64_t n = lastFrames_; n < frames; ++n) {
+            const TraceRecord& r = store->record(static_cast<FrameNo>(n));
+            bits += frameBits((r.flags & CanFrame::Remote) ? 0 : std::min<int>(r.len, 8), r.flags & CanFrame::Extended);
+        }
+        const double secs = double(now - lastNs_) / 1e9;
+        rate_fps_ = double(frames - lastFrames_) / secs;
+        const int bitrate = bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000;
+        load_pct_ = 100.0 * bits / secs / bitrate;
+        lastNs_ = now;
+        lastFrames_ = frames;
+    }
+    const auto c = bus->counters();
+    QString state = toString(bus->state());
+    if (bus->isListenOnly()) state += tr(" · listen-only");
+    state_->setText(state);
+    rate_->setText(tr("%L1 frames/s").arg(rate_fps_, 0, 'f', 0));
+    load_->setText(tr("load %1 %").arg(load_pct_, 0, 'f', 1));
+    load_->setToolTip(tr("Estimated from frame lengths with worst-case bit stuffing at %1 bit/s").arg(bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000));
+    dropped_->setText(tr("dropped %L1").arg(c.dropped));
+    dropped_->setStyleSheet(c.dropped ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
+    errors_->setText(tr("errors %L1").arg(c.errors));
+    errors_->setStyleSheet(c.errors ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
+}
+
+QString BusStatusBar::stateText() const { return state_->text(); }
+QString BusStatusBar::rateText() const { return rate_->text(); }
+QString BusStatusBar::loadText() const { return load_->text(); }
+
+}  // namespace coscope::gui

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/trace/FrameDetailsView.h"
+
+#include "core/canopen/CobId.h"
+
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QSplitter>
+#include <QTextEdit>
+#include <QTreeWidget>
+
+namespace coscope::gui {
+
+namespace {
+constexpr int kOffsetRole = Qt::UserRole + 1;
+constexpr int kLengthRole = Qt::UserRole + 2;
+}  // namespace
+
+FrameDetailsView::FrameDetailsView(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    tree_ = new QTreeWidget(split);
+    tree_->setObjectName(QStringLiteral("frameFields"));
+    tree_->setColumnCount(3);
+    tree_->setHeaderLabels({tr("Field"), tr("Value"), tr("Bytes")});
+    tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    tree_->header()->setSectionResizeMode(1, QHeaderView::Stretch);
+    tree_->header()->setStretchLastSection(false);
+    tree_->setAlternatingRowColors(true);
+    hex_ = new QTextEdit(split);
+    hex_->setObjectName(QStringLiteral("frameHex"));
+    hex_->setReadOnly(true);
+    hex_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    split->addWidget(tree_);
+    split->addWidget(hex_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    layout->addWidget(split);
+    connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        highlight_ = item ? std::pair{item->data(0, kOffsetRole).toInt(), item->data(0, kLengthRole).toInt()} : std::pair{0, 0};
+        renderHex();
+    });
+}
+
+void FrameDetailsView::clear() {
+    frame_.reset();
+    tree_->clear();
+    hex_->clear();
+    highlight_ = {0, 0};
+}
+
+void FrameDetailsView::showFrame(const CanFrame& f, uint64_t number) {
+    frame_ = f;
+    highlight_ = {0, 0};
+    tree_->clear();
+    dissect::Dissection d;
+    d.reset(dissect::Dissection::Level::Tree);
+    decoder_->decode(f, d);
+
+    auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), d.summary});
+    const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()
+                                      : QStringLiteral("%1").arg(f.id, 3, 16, QLatin1Char('0')).toUpper();
+    new QTreeWidgetItem(top, {tr("Identifier"), QStringLiteral("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
+    new QTreeWidgetItem(top, {tr("Service"), canopen::serviceName(d.service) + (d.node >= 0 ? tr(", node %1").arg(d.node) : QString())});
+    new QTreeWidgetItem(top, {tr("Length"), QString::number(f.len) + (f.isRemote() ? tr(" (remote request)") : QString())});
+    QStringList flags;
+    if (f.isTx()) flags << tr("transmitted");
+    if (f.isFd()) flags << QStringLiteral("CAN FD");
+    if (f.flags & CanFrame::BitRateSwitch) flags << QStringLiteral("BRS");
+    if (f.flags & CanFrame::ErrorState) flags << QStringLiteral("ESI");
+    if (f.isError()) flags << tr("error frame");
+    if (!flags.isEmpty()) new QTreeWidgetItem(top, {tr("Flags"), flags.join(QStringLiteral(", "))});
+    for (const QString& w : d.warnings) {
+        auto* item = new QTreeWidgetItem(top, {tr("Warning"), w});
+        item->setForeground(1, QColor(176, 0, 32));
+    }
+    top->setExpanded(true);
+
+    // The field tree: pre-order list with depths.
+    std::vector<QTreeWidgetItem*> parents;
+    for (const auto& t : d.tree) {
+        parents.resize(static_cast<size_t>(t.depth));
+        QTreeWidgetItem* item = parents.empty() ? new QTreeWidgetItem(tree_) : new QTreeWidgetItem(parents.back());
+        item->setText(0, t.label);
+        item->setText(1, t.value);
+        if (t.byteLength > 0) {
+            QString where = t.byteLength == 1 ? tr("byte %1").arg(t.byteOffset) : tr("bytes %1–%2").arg(t.byteOffset).arg(t.byteOffset + t.byteLength - 1);
+            if (t.bitOffset >= 0) where += t.bitLength == 1 ? tr(", bit %1").arg(t.bitOffset) : tr(", bits %1–%2").arg(t.bitOffset).arg(t.bitOffset + t.bitLength - 1);
+            item->setText(2, where);
+        }
+        item->setData(0, kOffsetRole, t.byteOffset);
+        item->setData(0, kLengthRole, t.byteLength);
+        item->setExpanded(true);
+        parents.push_back(item);
+    }
+    renderHex();
+}
+
+void FrameDetailsView::renderHex() {
+    if (!frame_) {
+        hex_->clear();
+        return;
+    }
+    const int len = frame_->payloadSize();
+    QString html = QStringLiteral("<pre style='margin:0'>");
+    for (int i = 0; i < len; ++i) {
+        if (i % 8 == 0) html += QStringLiteral("%1  ").arg(i, 2, 16, QLatin1Char('0'));
+        const bool hot = i >= highlight_.first && i < highlight_.first + highlight_.second;
+        const QString byte = QStringLiteral("%1").arg(frame_->data[static_cast<size_t>(i)], 2, 16, QLatin1Char('0')).toUpper();
+        html += hot ? QStringLiteral("<span style='background:#ffd54f'>%1</span> ").arg(byte) : byte + QLatin1Char(' ');
+        if (i % 8 == 7) html += QLatin1Char('\n');
+    }
+    if (len == 0) html += tr("(no payload)");
+    html += QStringLiteral("</pre>");
+    hex_->setHtml(html);
+}
+
+}  // namespace coscope::gui

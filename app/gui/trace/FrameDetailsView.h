@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/trace/FrameDecoder.h"
+#include "core/can/CanFrame.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QTextEdit;
+class QTreeWidget;
+
+namespace coscope::gui {
+
+// Details of the selected frame: the decoder's field tree (with byte/bit positions) and a hex
+// dump of the payload; selecting a field highlights its bytes in the dump.
+class FrameDetailsView : public QWidget {
+    Q_OBJECT
+public:
+    explicit FrameDetailsView(QWidget* parent = nullptr);
+
+    void setDecoder(std::shared_ptr<const FrameDecoder> decoder) { decoder_ = std::move(decoder); }
+    void showFrame(const CanFrame& frame, uint64_t number);
+    void clear();
+
+    QTreeWidget* tree() const { return tree_; }
+    // The bytes highlighted now: [first, first + count).
+    std::pair<int, int> highlighted() const { return highlight_; }
+
+private:
+    void renderHex();
+
+    std::shared_ptr<const FrameDecoder> decoder_ = defaultFrameDecoder();
+    QTreeWidget* tree_ = nullptr;
+    QTextEdit* hex_ = nullptr;
+    std::optional<CanFrame> frame_;
+    std::pair<int, int> highlight_{0, 0};
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/trace/LogLoadJob.h"
+
+#include "core/logio/LogFormats.h"
+
+#include <QFileInfo>
+
+#include <spdlog/spdlog.h>
+
+namespace coscope::gui {
+
+LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers)
+    : Job(QStringLiteral("Opening %1").arg(QFileInfo(path).fileName())),
+      path_(std::move(path)),
+      store_(std::move(store)),
+      consumers_(std::move(consumers)) {}
+
+LogLoadJob::~LogLoadJob() { stopAndJoin(); }
+
+QString LogLoadJob::formatName() const {
+    std::lock_guard lock(mutex_);
+    return format_;
+}
+
+QStringList LogLoadJob::busNames() const {
+    std::lock_guard lock(mutex_);
+    return busNames_;
+}
+
+uint64_t LogLoadJob::diagnosticCount() const {
+    std::lock_guard lock(mutex_);
+    return diagnosticCount_;
+}
+
+QStringList LogLoadJob::diagnostics(int max) const {
+    std::lock_guard lock(mutex_);
+    return diagnostics_.mid(0, max);
+}
+
+void LogLoadJob::run() {
+    QString error;
+    auto reader = logio::LogFormats::openReader(path_, &error);
+    if (!reader) {
+        fail(error.isEmpty() ? QStringLiteral("%1: cannot open").arg(path_) : error);
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        format_ = reader->formatName();
+    }
+    std::vector<CanFrame> batch(4096);
+    size_t seenDiagnostics = 0;
+    for (;;) {
+        if (isCancelled()) reader->cancel();
+        const size_t n = reader->read(batch.data(), batch.size());
+        if (n == 0) break;
+        const FrameNo first = static_cast<FrameNo>(store_->size());
+        store_->append(std::span<const CanFrame>(batch.data(), n));
+        for (const auto& c : consumers_) c(*store_, first, n);
+        setProgress(reader->progress());
+        std::lock_guard lock(mutex_);
+        busNames_ = reader->busNames();
+        diagnosticCount_ = reader->diagnosticCount();
+        const auto& d = reader->diagnostics();
+        for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics)
+            diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+    }
+    std::lock_guard lock(mutex_);
+    busNames_ = reader->busNames();
+    diagnosticCount_ = reader->diagnosticCount();
+    const auto& d = reader->diagnostics();
+    for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics)
+        diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+    if (reader->hasError()) fail(reader->errorString());
+    spdlog::info("opened {}: {} frames ({}), {} problems", path_.toStdString(), store_->size(), format_.toStdString(), diagnosticCount_);
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/session/Job.h"
+#include "core/logio/LogReader.h"
+#include "core/trace/CaptureSession.h"
+#include "core/trace/TraceStore.h"
+
+#include <QStringList>
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace coscope::gui {
+
+// Reads a log file of any format the log layer knows into a trace store on a worker thread.
+// Frames become visible batch by batch while the rest loads (the store is readable while it is
+// appended to), and each batch goes to the consumers (node table, event log) like live traffic.
+// A malformed line is a diagnostic (line number + message); the rest still loads.
+class LogLoadJob : public Job {
+public:
+    LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers);
+    ~LogLoadJob() override;
+
+    const QString& path() const { return path_; }
+    QString formatName() const;
+    QStringList busNames() const;
+    uint64_t diagnosticCount() const;
+    // The first diagnostics as "line N: message".
+    QStringList diagnostics(int max = 20) const;
+
+protected:
+    void run() override;
+
+private:
+    QString path_;
+    std::shared_ptr<TraceStore> store_;
+    std::vector<CaptureSession::Consumer> consumers_;
+    mutable std::mutex mutex_;
+    std::unique_ptr<logio::LogReader> reader_;  // guarded for the accessors
+    QString format_;
+    QStringList busNames_;
+    uint64_t diagnosticCount_ = 0;
+    QStringList diagnostics_;
+};
+
+}  // namespace coscope::gui

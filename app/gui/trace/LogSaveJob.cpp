@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/trace/LogSaveJob.h"
+
+#include "core/logio/LogFormats.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <spdlog/spdlog.h>
+
+namespace coscope::gui {
+
+LogSaveJob::LogSaveJob(QString path, QString format, std::shared_ptr<const TraceStore> store,
+                       std::optional<std::vector<FrameNo>> frames, QStringList busNames,
+                       std::shared_ptr<const FrameDecoder> decoder)
+    : Job(QStringLiteral("Saving %1").arg(QFileInfo(path).fileName())),
+      path_(std::move(path)),
+      format_(std::move(format)),
+      store_(std::move(store)),
+      frames_(std::move(frames)),
+      busNames_(std::move(busNames)),
+      decoder_(std::move(decoder)) {}
+
+LogSaveJob::~LogSaveJob() { stopAndJoin(); }
+
+void LogSaveJob::run() {
+    QString error;
+    const QString format = logio::LogFormats::writerFormatFor(path_, format_, &error);
+    if (format.isEmpty()) {
+        fail(error.isEmpty() ? QStringLiteral("%1: unknown log format").arg(path_) : error);
+        return;
+    }
+    auto writer = logio::LogFormats::createWriter(format);
+    if (!writer) {
+        fail(QStringLiteral("%1: cannot write format '%2'").arg(path_, format));
+        return;
+    }
+    writer->setBusNames(busNames_);
+    auto decoder = decoder_;
+    writer->setSummaryProvider([decoder](const CanFrame& f) {
+        dissect::Dissection d;
+        d.reset(dissect::Dissection::Level::Flat);
+        decoder->decode(f, d);
+        return d.summary;
+    });
+    if (!writer->open(path_)) {
+        fail(writer->errorString());
+        return;
+    }
+    const size_t total = frames_ ? frames_->size() : store_->size();
+    for (size_t i = 0; i < total; ++i) {
+        if ((i & 0xFFFF) == 0) {
+            setProgress(total ? double(i) / double(total) : 1.0);
+            if (isCancelled()) break;
+        }
+        const FrameNo n = frames_ ? (*frames_)[i] : static_cast<FrameNo>(i);
+        if (!writer->write(store_->frame(n))) break;
+        written_.store(i + 1, std::memory_order_relaxed);
+    }
+    writer->close();
+    if (writer->hasError()) {
+        fail(QStringLiteral("%1: %2").arg(path_, writer->errorString()));
+        return;
+    }
+    if (isCancelled()) {
+        QFile::remove(path_);
+        return;
+    }
+    spdlog::info("saved {} frames to {} ({})", written_.load(), path_.toStdString(), format.toStdString());
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/trace/TraceDock.h"
+
+#include "app/gui/session/Workspace.h"
+#include "app/gui/trace/FrameDetailsView.h"
+#include "app/gui/trace/TraceFilter.h"
+#include "app/gui/trace/TraceModel.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QStyle>
+#include <QTableView>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace coscope::gui {
+
+namespace {
+constexpr int kFindBudgetRows = 500000;  // rows searched per find step: keeps the GUI responsive
+}
+
+TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Trace"), parent), workspace_(workspace) {
+    setObjectName(QStringLiteral("TraceDock"));
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->setSpacing(2);
+
+    model_ = new TraceModel(this);
+    auto* bar = new QWidget(content);
+    buildToolbar(bar);
+    layout->addWidget(bar);
+
+    auto* split = new QSplitter(Qt::Vertical, content);
+    split->setObjectName(QStringLiteral("traceSplit"));
+    view_ = new QTableView(split);
+    view_->setObjectName(QStringLiteral("traceView"));
+    view_->setModel(model_);
+    view_->verticalHeader()->hide();
+    view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 4);
+    view_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);  // uniform rows: cheap for 10 M rows
+    view_->horizontalHeader()->setStretchLastSection(true);
+    view_->horizontalHeader()->setHighlightSections(false);
+    view_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    view_->setSelectionMode(QAbstractItemView::SingleSelection);
+    view_->setAlternatingRowColors(true);
+    view_->setWordWrap(false);
+    view_->setShowGrid(false);
+    const int w = view_->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+    view_->setColumnWidth(TraceModel::Number, w * 8);
+    view_->setColumnWidth(TraceModel::Time, w * 13);
+    view_->setColumnWidth(TraceModel::Bus, w * 5);
+    view_->setColumnWidth(TraceModel::CobId, w * 8);
+    view_->setColumnWidth(TraceModel::Node, w * 5);
+    view_->setColumnWidth(TraceModel::Service, w * 10);
+    view_->setColumnWidth(TraceModel::Direction, w * 5);
+    view_->setColumnWidth(TraceModel::Length, w * 4);
+    view_->setColumnWidth(TraceModel::Data, w * 24);
+    details_ = new FrameDetailsView(split);
+    split->addWidget(view_);
+    split->addWidget(details_);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    layout->addWidget(split, 1);
+    setWidget(content);
+
+    connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &TraceDock::onCurrentChanged);
+    // Scrolling up by hand pauses following; the Follow button resumes it.
+    connect(view_->verticalScrollBar(), &QScrollBar::actionTriggered, this, [this](int action) {
+        if (action != QAbstractSlider::SliderNoAction && follow_->isChecked()) {
+            QScrollBar* sb = view_->verticalScrollBar();
+            if (sb->sliderPosition() < sb->maximum()) follow_->setChecked(false);
+        }
+    });
+    rebind();
+}
+
+TraceDock::~TraceDock() = default;
+
+void TraceDock::buildToolbar(QWidget* host) {
+    auto* row = new QHBoxLayout(host);
+    row->setContentsMargins(0, 0, 0, 0);
+    auto* tb = new QToolBar(host);
+    tb->setObjectName(QStringLiteral("traceToolbar"));
+    tb->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    tb->setIconSize(QSize(16, 16));
+    QStyle* st = QApplication::style();
+    follow_ = tb->addAction(st->standardIcon(QStyle::SP_MediaPlay), tr("Follow"));
+    follow_->setObjectName(QStringLiteral("followAction"));
+    follow_->setCheckable(true);
+    follow_->setChecked(true);
+    follow_->setToolTip(tr("Follow new frames (scrolling up pauses)"));
+    connect(follow_, &QAction::toggled, this, [this, st](bool on) {
+        follow_->setIcon(st->standardIcon(on ? QStyle::SP_MediaPlay : QStyle::SP_MediaPause));
+        if (on) view_->scrollToBottom();
+    });
+    timeMode_ = new QComboBox(tb);
+    timeMode_->setObjectName(QStringLiteral("timeMode"));
+    timeMode_->addItems({tr("Absolute time"), tr("Relative time"), tr("Delta time")});
+    timeMode_->setCurrentIndex(1);
+    connect(timeMode_, &QComboBox::currentIndexChanged, this, [this](int i) { model_->setTimeMode(static_cast<TraceModel::TimeMode>(i)); });
+    tb->addWidget(timeMode_);
+    latest_ = tb->addAction(st->standardIcon(QStyle::SP_FileDialogListView), tr("Latest per ID"));
+    latest_->setObjectName(QStringLiteral("latestAction"));
+    latest_->setCheckable(true);
+    latest_->setToolTip(tr("One row per COB-ID showing its latest frame"));
+    connect(latest_, &QAction::toggled, this, [this](bool on) { model_->setLatestPerCobId(on); });
+    tb->addSeparator();
+
+    filterEdit_ = new QLineEdit(tb);
+    filterEdit_->setObjectName(QStringLiteral("filterEdit"));
+    filterEdit_->setPlaceholderText(tr("Filter: node:5 svc:sdo,emcy id:580-5FF text"));
+    filterEdit_->setClearButtonEnabled(true);
+    filterEdit_->setMinimumWidth(260);
+    connect(filterEdit_, &QLineEdit::returnPressed, this, [this] {
+        QString error;
+        if (!applyFilter(filterEdit_->text(), &error)) emit message(error);
+    });
+    tb->addWidget(filterEdit_);
+    tb->addSeparator();
+    findEdit_ = new QLineEdit(tb);
+    findEdit_->setObjectName(QStringLiteral("findEdit"));
+    findEdit_->setPlaceholderText(tr("Find"));
+    findEdit_->setMaximumWidth(160);
+    connect(findEdit_, &QLineEdit::returnPressed, this, [this] { find(findEdit_->text(), true); });
+    tb->addWidget(findEdit_);
+    tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this, [this] { find(findEdit_->text(), false); })->setToolTip(tr("Find previous"));
+    tb->addAction(st->standardIcon(QStyle::SP_ArrowDown), tr("Next"), this, [this] { find(findEdit_->text(), true); })->setToolTip(tr("Find next"));
+    tb->addSeparator();
+    auto* mark = tb->addAction(st->standardIcon(QStyle::SP_DialogApplyButton), tr("Bookmark"), this, &TraceDock::toggleBookmark);
+    mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    mark->setToolTip(tr("Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump"));
+    auto* nextMark = new QAction(this);
+    nextMark->setShortcut(QKeySequence(Qt::Key_F2));
+    connect(nextMark, &QAction::triggered, this, [this] { gotoBookmark(true); });
+    auto* prevMark = new QAction(this);
+    prevMark->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F2));
+    connect(prevMark, &QAction::triggered, this, [this] { gotoBookmark(false); });
+    addAction(nextMark);
+    addAction(prevMark);
+    row->addWidget(tb, 1);
+    countLabel_ = new QLabel(host);
+    countLabel_->setObjectName(QStringLiteral("traceCount"));
+    row->addWidget(countLabel_);
+}
+
+void TraceDock::rebind() {
+    filterJob_.reset();
+    model_->setStore(workspace_->store());
+    model_->setDecoder(workspace_->decoder());
+    model_->setBusNames(workspace_->busNames());
+    details_->setDecoder(workspace_->decoder());
+    details_->clear();
+    shownDetailsFor_ = -1;
+    if (!filterEdit_->text().trimmed().isEmpty()) applyFilter(filterEdit_->text());
+}
+
+void TraceDock::refresh() {
+    if (filterJob_ && filterJob_->isDone()) {
+        if (!filterJob_->isCancelled()) {
+            const FrameNo upTo = filterJob_->scannedUpTo();
+            model_->setFilter(filterJob_->filter(), filterJob_->takeResult(), upTo);
+        }
+        filterJob_.reset();
+    }
+    if (!filterJob_) model_->refresh();
+    model_->setBusNames(workspace_->busNames());
+    if (follow_->isChecked() && model_->rowCount() > 0) view_->scrollToBottom();
+    const size_t total = workspace_->store() ? workspace_->store()->size() : 0;
+    countLabel_->setText(model_->isFiltered() || model_->latestPerCobId()
+                             ? tr("%L1 of %L2 frames").arg(model_->rowCount()).arg(total)
+                             : tr("%L1 frames").arg(total));
+}
+
+void TraceDock::setFollow(bool on) { follow_->setChecked(on); }
+bool TraceDock::follows() const { return follow_->isChecked(); }
+
+bool TraceDock::applyFilter(const QString& query, QString* error) {
+    QString why;
+    const auto filter = TraceFilter::parse(query, &why);
+    if (!filter) {
+        filterEdit_->setStyleSheet(QStringLiteral("background: #ffd7d7"));
+        filterEdit_->setToolTip(why);
+        if (error) *error = why;
+        return false;
+    }
+    filterEdit_->setStyleSheet({});
+    filterEdit_->setToolTip({});
+    if (filterEdit_->text() != query) filterEdit_->setText(query);
+    filterJob_.reset();
+    if (filter->isEmpty()) {
+        model_->clearFilter();
+        return true;
+    }
+    filterJob_ = std::make_unique<FilterJob>(workspace_->store(), *filter, workspace_->decoder());
+    filterJob_->start();
+    return true;
+}
+
+void TraceDock::clearFilter() { applyFilter(QString()); }
+
+Job* TraceDock::activeJob() const { return filterJob_.get(); }
+
+void TraceDock::showFrame(FrameNo n) {
+    model_->refresh();
+    int row = model_->rowOf(n);
+    if (row < 0 && (model_->isFiltered() || model_->latestPerCobId())) {
+        latest_->setChecked(false);
+        clearFilter();
+        model_->refresh();
+        row = model_->rowOf(n);
+    }
+    if (row < 0) return;
+    setFollow(false);
+    const QModelIndex idx = model_->index(row, 0);
+    view_->setCurrentIndex(idx);
+    view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
+}
+
+bool TraceDock::find(const QString& text, bool forward) {
+    if (text.isEmpty() || model_->rowCount() == 0) return false;
+    setFollow(false);
+    const int rows = model_->rowCount();
+    const int start = view_->currentIndex().isValid() ? view_->currentIndex().row() : (forward ? -1 : rows);
+    int searched = 0;
+    for (int row = start + (forward ? 1 : -1); row >= 0 && row < rows && searched < kFindBudgetRows; row += forward ? 1 : -1, ++searched) {
+        for (int col : {int(TraceModel::Summary), int(TraceModel::CobId), int(TraceModel::Data)}) {
+            if (model_->data(model_->index(row, col), Qt::DisplayRole).toString().contains(text, Qt::CaseInsensitive)) {
+                const QModelIndex idx = model_->index(row, 0);
+                view_->setCurrentIndex(idx);
+                view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
+                return true;
+            }
+        }
+    }
+    emit message(searched >= kFindBudgetRows ? tr("'%1' not found in the next %L2 rows; search again to continue").arg(text).arg(kFindBudgetRows)
+                                             : tr("'%1' not found").arg(text));
+    if (searched >= kFindBudgetRows) {
+        const int row = start + (forward ? searched : -searched);
+        view_->setCurrentIndex(model_->index(std::clamp(row, 0, rows - 1), 0));
+    }
+    return false;
+}
+
+void TraceDock::toggleBookmark() {
+    const QModelIndex idx = view_->currentIndex();
+    if (!idx.isValid()) {
+        emit message(tr("Select a frame to bookmark"));
+        return;
+    }
+    model_->toggleBookmark(model_->frameAt(idx.row()));
+}
+
+void TraceDock::gotoBookmark(bool forward) {
+    const auto& marks = model_->bookmarks();
+    if (marks.empty()) {
+        emit message(tr("No bookmarks (Ctrl+B sets one)"));
+        return;
+    }
+    const QModelIndex idx = view_->currentIndex();
+    const FrameNo cur = idx.isValid() ? model_->frameAt(idx.row()) : (forward ? 0 : ~FrameNo(0));
+    FrameNo target;
+    if (forward) {
+        auto it = marks.upper_bound(cur);
+        target = it == marks.end() ? *marks.begin() : *it;
+    } else {
+        auto it = marks.lower_bound(cur);
+        target = it == marks.begin() ? *marks.rbegin() : *std::prev(it);
+    }
+    showFrame(target);
+}
+
+void TraceDock::onCurrentChanged() {
+    const QModelIndex idx = view_->currentIndex();
+    if (!idx.isValid() || !model_->store()) {
+        details_->clear();
+        shownDetailsFor_ = -1;
+        return;
+    }
+    const FrameNo n = model_->frameAt(idx.row());
+    if (static_cast<int64_t>(n) == shownDetailsFor_) return;
+    shownDetailsFor_ = n;
+    details_->showFrame(model_->store()->frame(n), static_cast<uint64_t>(n) + 1);
+}
+
+}  // namespace coscope::gui

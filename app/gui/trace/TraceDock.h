@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/trace/TraceStore.h"
+
+#include <QDockWidget>
+
+#include <memory>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QTableView;
+
+namespace coscope::gui {
+
+class FilterJob;
+class FrameDetailsView;
+class Job;
+class TraceModel;
+class Workspace;
+
+// The Trace dock: the frame table (live or offline, same view), its toolbar (follow/pause,
+// time mode, latest per COB-ID, filter, find, bookmarks) and the details pane.
+class TraceDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit TraceDock(Workspace* workspace, QWidget* parent = nullptr);
+    ~TraceDock() override;
+
+    void rebind();   // the workspace's source changed
+    void refresh();  // timer tick
+
+    TraceModel* model() const { return model_; }
+    QTableView* view() const { return view_; }
+    FrameDetailsView* details() const { return details_; }
+
+    void setFollow(bool on);
+    bool follows() const;
+    // Starts filtering with a query (see TraceFilter); false + message on a bad query.
+    bool applyFilter(const QString& query, QString* error = nullptr);
+    void clearFilter();
+    bool isFiltering() const { return filterJob_ != nullptr; }
+    Job* activeJob() const;
+
+    void showFrame(FrameNo n);  // selects it (clears the filter if it hides the frame)
+    // Finds text (summary, COB-ID, data) from the current row on; false when not found.
+    bool find(const QString& text, bool forward);
+    void toggleBookmark();
+    void gotoBookmark(bool forward);
+
+signals:
+    void message(const QString& text);  // for the status bar (user actions only)
+
+private:
+    void buildToolbar(QWidget* bar);
+    void onCurrentChanged();
+
+    Workspace* workspace_;
+    TraceModel* model_ = nullptr;
+    QTableView* view_ = nullptr;
+    FrameDetailsView* details_ = nullptr;
+    QAction* follow_ = nullptr;
+    QComboBox* timeMode_ = nullptr;
+    QAction* latest_ = nullptr;
+    QLineEdit* filterEdit_ = nullptr;
+    QLineEdit* findEdit_ = nullptr;
+    QLabel* countLabel_ = nullptr;
+    std::unique_ptr<FilterJob> filterJob_;
+    int64_t shownDetailsFor_ = -1;
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,289 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/canopen/LssMaster.h"
+
+#include "core/canopen/Lss.h"
+
+#include <QPointer>
+#include <QTimer>
+
+namespace coscope::canopen {
+
+namespace {
+uint32_t u32At(const CanFrame& f, int at) {
+    return uint32_t(f.data[at]) | (uint32_t(f.data[at + 1]) << 8) | (uint32_t(f.data[at + 2]) << 16) | (uint32_t(f.data[at + 3]) << 24);
+}
+void put32(CanFrame& f, int at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
+}
+QString configureError(const QString& what, uint8_t code) {
+    // CiA 305 §6.4: 0 success, 1 not supported / out of range, FFh manufacturer specific.
+    const QString why = code == 1 ? QStringLiteral("not supported or out of range") : code == 0xFF ? QStringLiteral("manufacturer-specific error") : QStringLiteral("error %1").arg(code);
+    return QStringLiteral("LSS %1 refused by the slave: %2 (error code %3)").arg(what, why).arg(code);
+}
+}  // namespace
+
+struct FastscanState {
+    uint32_t id[4] = {};
+    int sub = 0;     // LSSSub 0..3: vendor, product, revision, serial
+    int bit = 31;    // bit being determined; 0 = confirm the field (bit 0 tried as 0, then as 1)
+    bool triedOne = false;
+};
+
+LssMaster::LssMaster(MasterContext& context, QObject* parent) : QObject(parent), context_(context), timer_(new QTimer(this)) {
+    timer_->setSingleShot(true);
+    timer_->setTimerType(Qt::PreciseTimer);
+    connect(timer_, &QTimer::timeout, this, &LssMaster::onTimeout);
+    subscription_ = context_.dispatcher().subscribe(this, {lss::kSlaveToMaster}, [this](const std::vector<CanFrame>& f) { onFrames(f); });
+}
+
+LssMaster::~LssMaster() { context_.dispatcher().unsubscribe(subscription_); }
+
+CanFrame LssMaster::request(uint8_t cs, std::initializer_list<uint8_t> rest) {
+    CanFrame f;
+    f.id = lss::kMasterToSlave;
+    f.len = 8;
+    f.data[0] = cs;
+    int i = 1;
+    for (uint8_t b : rest) f.data[i++] = b;
+    return f;
+}
+
+bool LssMaster::switchStateGlobal(bool configuration, QString* error) {
+    return context_.send(request(lss::SwitchStateGlobal, {uint8_t(configuration ? 1 : 0)}), error);
+}
+
+bool LssMaster::activateBitTiming(uint16_t delayMs, QString* error) {
+    return context_.send(request(lss::ActivateBitTiming, {uint8_t(delayMs), uint8_t(delayMs >> 8)}), error);
+}
+
+void LssMaster::enqueue(Request r) {
+    queue_.push_back(std::move(r));
+    QMetaObject::invokeMethod(this, &LssMaster::pump, Qt::QueuedConnection);
+}
+
+void LssMaster::pump() {
+    while (!active_ && !queue_.empty()) {
+        Request r = std::move(queue_.front());
+        queue_.pop_front();
+        QString error;
+        if (!context_.send(r.frame, &error)) {
+            // Reported through the same path as a missing answer, with the bus's reason.
+            sendError_ = error;
+            active_ = std::move(r);
+            complete(false, CanFrame{});
+            sendError_.clear();
+            continue;
+        }
+        if (!r.expectCs) {
+            auto then = r.then;
+            if (then) then(true, CanFrame{});
+            continue;
+        }
+        active_ = std::move(r);
+        timer_->start(active_->timeoutMs > 0 ? active_->timeoutMs : timeoutMs_);
+    }
+}
+
+void LssMaster::onFrames(const std::vector<CanFrame>& frames) {
+    for (const CanFrame& f : frames) {
+        if (!active_ || f.len < 1 || f.data[0] != active_->expectCs) continue;
+        complete(true, f);
+    }
+}
+
+void LssMaster::onTimeout() {
+    if (active_) complete(false, CanFrame{});
+}
+
+void LssMaster::complete(bool answered, const CanFrame& answer) {
+    timer_->stop();
+    auto then = std::move(active_->then);
+    active_.reset();
+    if (then) then(answered, answer);
+    pump();
+}
+
+void LssMaster::switchStateSelective(const LssIdentity& id, LssCallback done) {
+    const uint32_t v[4] = {id.vendorId, id.productCode, id.revision, id.serial};
+    for (int i = 0; i < 4; ++i) {
+        Request r;
+        r.frame = request(static_cast<uint8_t>(lss::SwitchSelectiveVendor + i));
+        put32(r.frame, 1, v[i]);
+        if (i == 3) {
+            r.expectCs = lss::SwitchSelectiveResponse;
+            r.then = [this, done](bool answered, const CanFrame&) {
+                LssResult out;
+                out.ok = answered;
+                if (!answered) out.error = noAnswer(QStringLiteral("no slave with that identity answered switch state selective"));
+                done(out);
+            };
+        }
+        enqueue(std::move(r));
+    }
+}
+
+void LssMaster::configureNodeId(uint8_t nodeId, LssCallback done) {
+    if (!(nodeId >= 1 && nodeId <= 127) && nodeId != 0xFF) {
+        LssResult out;
+        out.error = QStringLiteral("node-ID %1 is outside 1-127").arg(nodeId);
+        QMetaObject::invokeMethod(this, [done, out] { done(out); }, Qt::QueuedConnection);
+        return;
+    }
+    Request r;
+    r.frame = request(lss::ConfigureNodeId, {nodeId});
+    r.expectCs = lss::ConfigureNodeId;
+    r.then = [this, done](bool answered, const CanFrame& a) {
+        LssResult out;
+        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS configure node-ID (is a slave in configuration state?)"));
+        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure node-ID"), a.data[1]);
+        else out.ok = true;
+        done(out);
+    };
+    enqueue(std::move(r));
+}
+
+void LssMaster::configureBitRate(int bitRate, LssCallback done) {
+    const int index = lssTableIndexForBitRate(bitRate);
+    if (index < 0) {
+        LssResult out;
+        out.error = QStringLiteral("%1 bit/s is not in the CiA 305 bit timing table").arg(bitRate);
+        QMetaObject::invokeMethod(this, [done, out] { done(out); }, Qt::QueuedConnection);
+        return;
+    }
+    Request r;
+    r.frame = request(lss::ConfigureBitTiming, {0, uint8_t(index)});
+    r.expectCs = lss::ConfigureBitTiming;
+    r.then = [this, done](bool answered, const CanFrame& a) {
+        LssResult out;
+        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS configure bit timing (is a slave in configuration state?)"));
+        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure bit timing"), a.data[1]);
+        else out.ok = true;
+        done(out);
+    };
+    enqueue(std::move(r));
+}
+
+void LssMaster::storeConfiguration(LssCallback done) {
+    Request r;
+    r.frame = request(lss::StoreConfiguration);
+    r.expectCs = lss::StoreConfiguration;
+    r.then = [this, done](bool answered, const CanFrame& a) {
+        LssResult out;
+        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS store configuration (is a slave in configuration state?)"));
+        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("store configuration"), a.data[1]);
+        else out.ok = true;
+        done(out);
+    };
+    enqueue(std::move(r));
+}
+
+void LssMaster::inquire(uint8_t cs, LssCallback done) {
+    Request r;
+    r.frame = request(cs);
+    r.expectCs = cs;
+    r.then = [this, done, cs](bool answered, const CanFrame& a) {
+        LssResult out;
+        if (!answered) {
+            out.error = noAnswer(QStringLiteral("no answer to LSS %1 (is a slave in configuration state?)").arg(lssCommandName(cs, true)));
+        } else {
+            out.ok = true;
+            out.value = cs == lss::InquireNodeId ? a.data[1] : u32At(a, 1);
+        }
+        done(out);
+    };
+    enqueue(std::move(r));
+}
+
+void LssMaster::inquireNodeId(LssCallback done) { inquire(lss::InquireNodeId, std::move(done)); }
+
+void LssMaster::inquireIdentity(LssCallback done) {
+    auto acc = std::make_shared<LssResult>();
+    QPointer<LssMaster> self(this);
+    inquire(lss::InquireVendor, [self, acc, done](const LssResult& v) {
+        if (!v.ok || !self) return done(v);
+        acc->identity.vendorId = v.value;
+        self->inquire(lss::InquireProduct, [self, acc, done](const LssResult& p) {
+            if (!p.ok || !self) return done(p);
+            acc->identity.productCode = p.value;
+            self->inquire(lss::InquireRevision, [self, acc, done](const LssResult& r) {
+                if (!r.ok || !self) return done(r);
+                acc->identity.revision = r.value;
+                self->inquire(lss::InquireSerial, [acc, done](const LssResult& s) {
+                    if (!s.ok) return done(s);
+                    acc->identity.serial = s.value;
+                    acc->ok = true;
+                    done(*acc);
+                });
+            });
+        });
+    });
+}
+
+void LssMaster::fastscan(LssCallback done) {
+    auto st = std::make_shared<FastscanState>();
+    // First request: BitChecked = 80h resets the slaves' fastscan; any unconfigured one answers.
+    Request r;
+    r.frame = request(lss::Fastscan, {0, 0, 0, 0, 0x80, 0, 0});
+    r.expectCs = lss::IdentifySlaveResponse;
+    r.timeoutMs = fastscanMs_;
+    QPointer<LssMaster> self(this);
+    r.then = [self, st, done](bool answered, const CanFrame&) {
+        if (!self) return;
+        if (!answered) {
+            LssResult out;
+            out.noSlave = self->sendError_.isEmpty();
+            out.error = self->noAnswer(QStringLiteral("no unconfigured LSS slave answered fastscan"));
+            return done(out);
+        }
+        self->fastscanStep(st, done);
+    };
+    enqueue(std::move(r));
+}
+
+void LssMaster::fastscanStep(std::shared_ptr<FastscanState> st, LssCallback done) {
+    // Bits 31..1 of each field: guess 0; a slave answering means its bits down to `bit` match,
+    // silence means the bit is 1. Bit 0 is found by the confirmation itself (BitChecked 0,
+    // LSSNext = next field): a slave answers only on a full match, first trying 0, then 1
+    // (CiA 305 §6.7.4).
+    Request r;
+    r.frame = request(lss::Fastscan);
+    const bool confirm = st->bit == 0;
+    put32(r.frame, 1, st->id[st->sub]);
+    r.frame.data[5] = static_cast<uint8_t>(st->bit);
+    r.frame.data[6] = static_cast<uint8_t>(st->sub);
+    r.frame.data[7] = static_cast<uint8_t>(confirm ? (st->sub + 1) % 4 : st->sub);
+    r.expectCs = lss::IdentifySlaveResponse;
+    r.timeoutMs = fastscanMs_;
+    QPointer<LssMaster> self(this);
+    r.then = [self, st, done, confirm](bool answered, const CanFrame&) {
+        if (!self) return;
+        if (confirm) {
+            if (!answered) {
+                if (!st->triedOne) {
+                    st->triedOne = true;
+                    st->id[st->sub] |= 1u;
+                    return self->fastscanStep(st, done);
+                }
+                LssResult out;
+                out.error = self->noAnswer(QStringLiteral("fastscan: no slave confirmed field %1 = 0x%2").arg(st->sub).arg(st->id[st->sub], 8, 16, QChar(u'0')));
+                return done(out);
+            }
+            if (st->sub == 3) {
+                LssResult out;
+                out.ok = true;
+                out.identity = {st->id[0], st->id[1], st->id[2], st->id[3]};
+                return done(out);
+            }
+            ++st->sub;
+            st->bit = 31;
+            st->triedOne = false;
+            return self->fastscanStep(st, done);
+        }
+        if (!answered) st->id[st->sub] |= (1u << st->bit);
+        --st->bit;
+        self->fastscanStep(st, done);
+    };
+    enqueue(std::move(r));
+}
+
+}  // namespace coscope::canopen

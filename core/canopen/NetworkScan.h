@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/canopen/NodeTable.h"
+#include "core/canopen/SdoClient.h"
+
+#include <QObject>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+class QTimer;
+
+namespace coscope::canopen {
+
+// One node found by a scan: 1000h and 1018h:01..04 and the dictionary matched by identity.
+struct ScannedNode {
+    uint8_t node = 0;
+    uint32_t deviceType = 0;
+    std::optional<uint32_t> vendorId, productCode, revision, serial;
+    QString dictionary;  // empty when nothing matched
+    QString error;       // 1018h could not be read (the node answered 1000h)
+};
+
+// Finds the nodes on a bus by reading 1000h (device type, mandatory, CiA 301 §7.5.2.1) of
+// nodes first..last over SDO, then 1018h sub 1..4 of each that answered. Rate-limited: at most
+// `maxOutstanding` requests in flight and at least `intervalMs` between two new requests, so a
+// scan never floods a production bus. No request is retried. The dictionary is matched by a
+// function the caller gives (the eds layer's library; core cannot see it).
+class NetworkScan : public QObject {
+    Q_OBJECT
+public:
+    using Matcher = std::function<QString(uint32_t vendorId, uint32_t productCode, std::optional<uint32_t> revision)>;
+    using Done = std::function<void(const std::vector<ScannedNode>&)>;
+
+    explicit NetworkScan(SdoClient& sdo, QObject* parent = nullptr);
+
+    void setRange(uint8_t first, uint8_t last) { first_ = first; last_ = last; }
+    void setTimeout(int ms) { timeoutMs_ = ms; }           // per node; default 200 ms
+    void setMaxOutstanding(int n) { maxOutstanding_ = std::max(1, n); }
+    void setInterval(int ms) { intervalMs_ = std::max(0, ms); }
+    void setMatcher(Matcher m) { matcher_ = std::move(m); }
+    // Optional: found nodes are written into this table (identity, dictionary, present).
+    void setNodeTable(NodeTable* table) { table_ = table; }
+
+    void start(Done done);
+    bool isRunning() const { return running_; }
+    int progress() const { return probed_; }  // nodes probed so far
+
+private:
+    void launchMore();
+    void probe(uint8_t node);
+    void readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub);
+    void nodeDone();
+
+    SdoClient& sdo_;
+    QTimer* pacer_;
+    uint8_t first_ = 1, last_ = 127;
+    int timeoutMs_ = 200;
+    int maxOutstanding_ = 8;
+    int intervalMs_ = 2;
+    Matcher matcher_;
+    NodeTable* table_ = nullptr;
+    Done done_;
+    bool running_ = false;
+    int next_ = 0;
+    int outstanding_ = 0;
+    int probed_ = 0;
+    std::vector<ScannedNode> found_;
+};
+
+}  // namespace coscope::canopen

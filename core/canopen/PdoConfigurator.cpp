@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/canopen/PdoConfigurator.h"
+
+#include "core/canopen/SdoAbort.h"
+
+#include <QPointer>
+
+namespace coscope::canopen {
+
+namespace {
+QByteArray le(uint32_t v, int n) {
+    QByteArray b(n, 0);
+    for (int i = 0; i < n; ++i) b[i] = static_cast<char>(v >> (8 * i));
+    return b;
+}
+uint32_t fromLe(const QByteArray& b) {
+    uint32_t v = 0;
+    for (int i = 0; i < std::min<int>(4, static_cast<int>(b.size())); ++i) v |= uint32_t(uint8_t(b[i])) << (8 * i);
+    return v;
+}
+QString hex(uint32_t v, int digits) { return QStringLiteral("0x%1").arg(QStringLiteral("%1").arg(v, digits, 16, QChar(u'0')).toUpper()); }
+
+// Sequential reads of one PDO; optional sub-indices that abort are left unset.
+struct PdoReader : std::enable_shared_from_this<PdoReader> {
+    SdoClient* sdo;
+    uint8_t node;
+    PdoReadResult result;
+    std::function<void(const PdoReadResult&)> done;
+    int mapCount = 0;
+
+    void fail(const SdoResult& r) {
+        result.ok = false;
+        result.error = r.error;
+        done(result);
+    }
+    void start() {
+        auto self = shared_from_this();
+        const uint16_t comm = result.pdo.communicationIndex();
+        sdo->upload(node, comm, 1, [self, comm](const SdoResult& r) {
+            if (!r.ok) return self->fail(r);
+            self->result.config.cobId = fromLe(r.data);
+            self->sdo->upload(self->node, comm, 2, [self, comm](const SdoResult& r2) {
+                if (!r2.ok) return self->fail(r2);
+                self->result.config.transmissionType = r2.data.isEmpty() ? 0 : uint8_t(r2.data[0]);
+                auto afterInhibit = [self, comm] {
+                    self->sdo->upload(self->node, comm, 5, [self](const SdoResult& r5) {
+                        if (r5.ok) self->result.config.eventTimer = static_cast<uint16_t>(fromLe(r5.data));
+                        else if (!r5.serverAborted) return self->fail(r5);
+                        self->readMapping();
+                    });
+                };
+                if (!self->result.pdo.transmit) return afterInhibit();
+                self->sdo->upload(self->node, comm, 3, [self, afterInhibit](const SdoResult& r3) {
+                    if (r3.ok) self->result.config.inhibitTime = static_cast<uint16_t>(fromLe(r3.data));
+                    else if (!r3.serverAborted) return self->fail(r3);
+                    afterInhibit();
+                });
+            });
+        });
+    }
+    void readMapping() {
+        auto self = shared_from_this();
+        sdo->upload(node, result.pdo.mappingIndex(), 0, [self](const SdoResult& r) {
+            if (!r.ok) return self->fail(r);
+            self->mapCount = r.data.isEmpty() ? 0 : uint8_t(r.data[0]);
+            self->readEntry(1);
+        });
+    }
+    void readEntry(int sub) {
+        if (sub > mapCount) {
+            result.ok = true;
+            return done(result);
+        }
+        auto self = shared_from_this();
+        sdo->upload(node, result.pdo.mappingIndex(), static_cast<uint8_t>(sub), [self, sub](const SdoResult& r) {
+            if (!r.ok) return self->fail(r);
+            self->result.config.entries.push_back(PdoMapEntry::decode(fromLe(r.data)));
+            self->readEntry(sub + 1);
+        });
+    }
+};
+}  // namespace
+
+PdoConfigurator::PdoConfigurator(SdoClient& sdo, NmtMaster* nmt, QObject* parent) : QObject(parent), sdo_(sdo), nmt_(nmt) {}
+
+void PdoConfigurator::read(uint8_t node, PdoId pdo, std::function<void(const PdoReadResult&)> done) {
+    auto reader = std::make_shared<PdoReader>();
+    reader->sdo = &sdo_;
+    reader->node = node;
+    reader->result.pdo = pdo;
+    reader->done = std::move(done);
+    reader->start();
+}
+
+void PdoConfigurator::readSet(uint8_t node, std::function<void(const std::vector<PdoReadResult>&)> done) {
+    auto results = std::make_shared<std::vector<PdoReadResult>>();
+    auto next = std::make_shared<std::function<void(int)>>();
+    QPointer<PdoConfigurator> self(this);
+    *next = [self, node, results, next, done](int i) {
+        if (!self) return;
+        if (i >= 8) {
+            // Break the self-reference last: clearing *next destroys this lambda's captures.
+            const auto out = *results;
+            const auto finish = done;
+            *next = nullptr;
+            return finish(out);
+        }
+        const PdoId pdo{i < 4, (i % 4) + 1};
+        self->read(node, pdo, [results, next, i](const PdoReadResult& r) {
+            // A PDO the node does not implement aborts with "object does not exist": left out.
+            if (r.ok || r.error.contains(QStringLiteral("0x06020000")) == false) results->push_back(r);
+            if (*next) (*next)(i + 1);
+        });
+    };
+    (*next)(0);
+}
+
+std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node) {
+    std::vector<Op> ops;
+    const uint16_t comm = pdo.communicationIndex();
+    const uint16_t map = pdo.mappingIndex();
+    const uint32_t cob = c.cobId & 0x7FFFFFFFu;
+    ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid")});
+    ops.push_back({map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0")});
+    for (size_t i = 0; i < c.entries.size(); ++i)
+        ops.push_back({map, static_cast<uint8_t>(i + 1), le(c.entries[i].encode(), 4), QStringLiteral("mapping entry %1").arg(i + 1)});
+    ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1), QStringLiteral("mapping sub0 = %1").arg(c.entries.size())});
+    if (c.valid()) ops.push_back({comm, 1, le(cob, 4), QStringLiteral("COB-ID valid")});
+    ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type")});
+    if (c.inhibitTime) ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time")});
+    if (c.eventTimer) ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer")});
+    Q_UNUSED(node);
+    return ops;
+}
+
+void PdoConfigurator::runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log, OpsDone done) {
+    if (i >= ops->size()) return done(true, -1, {});
+    const Op& op = (*ops)[i];
+    uint32_t v = fromLe(op.data);
+    if (log) log->append(QStringLiteral("%1 = %2 (%3)").arg(objectRef(op.index, op.sub), hex(v, static_cast<int>(op.data.size()) * 2), op.what));
+    QPointer<PdoConfigurator> self(this);
+    sdo_.download(node, op.index, op.sub, op.data, [self, node, ops, i, log, done](const SdoResult& r) {
+        if (!self) return;
+        if (!r.ok) return done(false, static_cast<int>(i), r.error);
+        self->runOps(node, ops, i + 1, log, done);
+    });
+}
+
+void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, std::function<void(const PdoWriteResult&)> done) {
+    auto result = std::make_shared<PdoWriteResult>();
+    QString error;
+    if (!validatePdoMapping(wanted.entries, pdo, dictionary, &error)) {
+        // Refused before anything is sent.
+        result->error = QStringLiteral("node %1 %2: %3; nothing was sent").arg(node).arg(pdo.name(), error);
+        QMetaObject::invokeMethod(this, [result, done] { done(*result); }, Qt::QueuedConnection);
+        return;
+    }
+    QPointer<PdoConfigurator> self(this);
+    read(node, pdo, [self, node, pdo, wanted, result, done](const PdoReadResult& before) mutable {
+        if (!self) return;
+        if (!before.ok) {
+            result->error = QStringLiteral("reading the current %1: %2").arg(pdo.name(), before.error);
+            return done(*result);
+        }
+        result->previous = before.config;
+        if (wanted.cobId == 0) wanted.cobId = before.config.cobId & 0x7FFFFFFFu;
+        result->written = wanted;
+        if (self->nmt_) {
+            // PDO parameters are changed in pre-operational (CiA 301 §7.3.2).
+            QString nmtError;
+            if (!self->nmt_->enterPreOperational(node, &nmtError)) {
+                result->error = nmtError;
+                return done(*result);
+            }
+        }
+        auto ops = std::make_shared<std::vector<Op>>(writeOps(pdo, wanted, node));
+        auto restore = [self, node, pdo, result, done](const QString& why) {
+            if (!self) return;
+            result->error = why;
+            auto back = std::make_shared<std::vector<Op>>(writeOps(pdo, result->previous, node));
+            self->runOps(node, back, 0, nullptr, [result, done](bool ok, int, const QString& err) {
+                result->restored = ok;
+                result->error += ok ? QStringLiteral("; previous mapping restored") : QStringLiteral("; restoring the previous mapping failed too: ") + err;
+                done(*result);
+            });
+        };
+        self->runOps(node, ops, 0, &result->steps, [self, node, pdo, ops, result, restore, done](bool ok, int failedAt, const QString& err) {
+            if (!self) return;
+            if (!ok) {
+                const Op& op = (*ops)[static_cast<size_t>(failedAt)];
+                result->failedStep = QStringLiteral("%1 (%2)").arg(op.what, objectRef(op.index, op.sub));
+                return restore(QStringLiteral("%1 failed: %2").arg(result->failedStep, err));
+            }
+            // Verify by reading back.
+            self->read(node, pdo, [result, restore, done](const PdoReadResult& after) {
+                const PdoConfig& w = result->written;
+                QString diff;
+                if (!after.ok) diff = QStringLiteral("read-back failed: ") + after.error;
+                else if ((after.config.cobId & 0x7FFFFFFFu) != (w.cobId & 0x7FFFFFFFu) || after.config.valid() != w.valid()) diff = QStringLiteral("COB-ID reads back as %1").arg(hex(after.config.cobId, 8));
+                else if (after.config.transmissionType != w.transmissionType) diff = QStringLiteral("transmission type reads back as %1").arg(after.config.transmissionType);
+                else if (after.config.entries != w.entries) diff = QStringLiteral("the mapping reads back differently (%1 entries)").arg(after.config.entries.size());
+                else if (w.inhibitTime && after.config.inhibitTime != w.inhibitTime) diff = QStringLiteral("inhibit time reads back differently");
+                else if (w.eventTimer && after.config.eventTimer != w.eventTimer) diff = QStringLiteral("event timer reads back differently");
+                if (!diff.isEmpty()) {
+                    result->failedStep = QStringLiteral("verify");
+                    return restore(QStringLiteral("verify: %1").arg(diff));
+                }
+                result->ok = true;
+                done(*result);
+            });
+        });
+    });
+}
+
+}  // namespace coscope::canopen

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/canopen/Ds402.h"
+
+#include <cstdint>
+
+namespace coscope::sim {
+
+class VirtualDevice;
+
+// One CiA 402 axis of a virtual drive: the power drive state machine (CiA 402-2 §6.2) driven by
+// the controlword 6040h, the statusword 6041h with the state bits, target reached and following
+// error, the modes of operation 6060h/6061h the vendor supports (6502h), and a motion model
+// (1 ms steps) so that position 6064h, velocity 606Ch and torque 6077h move plausibly.
+// Objects of axis n are at index + n * 800h (CiA 402 multi-axis offset).
+class Ds402Drive {
+public:
+    Ds402Drive(VirtualDevice& device, int axis);
+
+    canopen::ds402::State state() const { return state_; }
+    uint16_t statusword() const { return statusword_; }
+    int8_t modeDisplay() const { return modeDisplay_; }
+    double position() const { return position_; }  // in position units (6064h)
+    double velocity() const { return velocity_; }  // in velocity units per second (606Ch)
+
+    // A fault happened: fault reaction active, then FAULT (the caller sends the EMCY).
+    void raiseFault(uint16_t errorCode);
+    bool faulted() const { return state_ == canopen::ds402::State::Fault || state_ == canopen::ds402::State::FaultReactionActive; }
+    bool enabled() const { return state_ == canopen::ds402::State::OperationEnabled; }
+    // NMT reset / power cycle: back to SWITCH ON DISABLED (fault kept if latched).
+    void reset();
+
+    // Called after 6040h/6060h/607Ah/... were written (SDO or RPDO).
+    void onWrite(uint16_t index, uint8_t sub);
+    // 1 ms step of the motion model; `dtNs` since the last step.
+    void step(int64_t dtNs);
+    // Whether the control-mode parameter allows CANopen control (vendor pre-condition).
+    bool canopenControlActive() const;
+
+private:
+    uint16_t idx(uint16_t base) const { return static_cast<uint16_t>(base + axis_ * 0x800); }
+    int64_t readInt(uint16_t base, uint8_t sub = 0, int64_t fallback = 0) const;
+    void writeInt(uint16_t base, uint8_t sub, int64_t v);
+    void handleControlword(uint16_t cw);
+    void setState(canopen::ds402::State s);
+    void publish();
+    void stepProfilePosition(double dt);
+    void stepVelocity(double dt, double target);
+    void stepHoming(double dt);
+
+    VirtualDevice& dev_;
+    int axis_;
+    canopen::ds402::State state_ = canopen::ds402::State::SwitchOnDisabled;
+    uint16_t statusword_ = 0;
+    uint16_t lastControlword_ = 0;
+    int8_t modeDisplay_ = 0;
+    double position_ = 0;      // actual
+    double velocity_ = 0;      // actual, units/s
+    double torque_ = 0;        // per mille of rated torque
+    double demand_ = 0;        // position demand (6062h)
+    double ppTarget_ = 0;      // active profile-position target
+    bool ppMoving_ = false;
+    bool targetReached_ = true;
+    bool followingError_ = false;
+    bool homingDone_ = false;
+    bool homingActive_ = false;
+    double homingStart_ = 0;
+    int faultReactionMs_ = 0;
+    uint16_t pendingFault_ = 0;
+};
+
+}  // namespace coscope::sim

@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dissectors/DecodeOutput.h"
+
+#include <cstdio>
+
+namespace coscope::dissect {
+
+namespace {
+
+const char kHex[] = "0123456789abcdef";
+
+void appendNumber(QByteArray& out, int64_t v) {
+    char buf[24];
+    const int n = std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
+    out.append(buf, n);
+}
+void appendUNumber(QByteArray& out, uint64_t v) {
+    char buf[24];
+    const int n = std::snprintf(buf, sizeof buf, "%llu", static_cast<unsigned long long>(v));
+    out.append(buf, n);
+}
+void appendSeconds(QByteArray& out, int64_t ns) {
+    char buf[40];
+    const int64_t us = ns / 1000;
+    const int n = std::snprintf(buf, sizeof buf, "%lld.%06lld", static_cast<long long>(us / 1000000), static_cast<long long>(us < 0 ? -(us % 1000000) : us % 1000000));
+    out.append(buf, n);
+}
+void appendDataHex(QByteArray& out, const CanFrame& f, bool spaced, bool upper) {
+    const char* digits = upper ? "0123456789ABCDEF" : kHex;
+    for (int i = 0; i < f.payloadSize(); ++i) {
+        if (spaced && i) out.append(' ');
+        out.append(digits[f.data[static_cast<size_t>(i)] >> 4]);
+        out.append(digits[f.data[static_cast<size_t>(i)] & 15]);
+    }
+}
+// UTF-8 of a QString without a temporary for the ASCII common case.
+void appendUtf8(QByteArray& out, const QString& s) {
+    for (QChar c : s) {
+        if (c.unicode() >= 0x80) {
+            out.append(s.toUtf8());
+            return;
+        }
+    }
+    const qsizetype at = out.size();
+    out.resize(at + s.size());
+    char* p = out.data() + at;
+    for (QChar c : s) *p++ = static_cast<char>(c.unicode());
+}
+void appendBytesHex(QByteArray& out, const QByteArray& b) {
+    for (char c : b) {
+        out.append(kHex[uint8_t(c) >> 4]);
+        out.append(kHex[uint8_t(c) & 15]);
+    }
+}
+void appendValue(QByteArray& out, const FlatField& v) {
+    switch (v.kind) {
+    case FlatField::Kind::Int: appendNumber(out, v.i); break;
+    case FlatField::Kind::UInt: appendUNumber(out, v.u); break;
+    case FlatField::Kind::Real: {
+        if (v.d != v.d || v.d == 1.0 / 0.0 || v.d == -1.0 / 0.0) out.append("null");
+        else out.append(QByteArray::number(v.d, 'g', 12));
+        break;
+    }
+    case FlatField::Kind::Bool: out.append(v.i ? "true" : "false"); break;
+    case FlatField::Kind::Text: appendJsonString(out, v.text); break;
+    }
+}
+QString mode(const SdoTransferRecord& t) {
+    return t.block ? QStringLiteral("block") : t.segmented ? QStringLiteral("segmented") : QStringLiteral("expedited");
+}
+QString object(const SdoTransferRecord& t) {
+    return QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper();
+}
+void csvField(QByteArray& out, const QString& s) {
+    QByteArray u = s.toUtf8();
+    if (u.contains(',') || u.contains('"') || u.contains('\n')) {
+        u.replace("\"", "\"\"");
+        out.append('"').append(u).append('"');
+    } else {
+        out.append(u);
+    }
+}
+
+}  // namespace
+
+void appendJsonString(QByteArray& out, const QString& s) {
+    const QByteArray u = s.toUtf8();
+    out.append('"');
+    for (char ch : u) {
+        const auto c = static_cast<unsigned char>(ch);
+        switch (c) {
+        case '"': out.append("\\\""); break;
+        case '\\': out.append("\\\\"); break;
+        case '\n': out.append("\\n"); break;
+        case '\r': out.append("\\r"); break;
+        case '\t': out.append("\\t"); break;
+        default:
+            if (c < 0x20) {
+                out.append("\\u00");
+                out.append(kHex[c >> 4]);
+                out.append(kHex[c & 15]);
+            } else {
+                out.append(ch);
+            }
+        }
+    }
+    out.append('"');
+}
+
+void appendJson(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
+    out.append("{\"t\":");
+    appendSeconds(out, f.timestampNs);
+    out.append(",\"bus\":");
+    appendJsonString(out, bus);
+    out.append(",\"id\":");
+    appendUNumber(out, f.id);
+    out.append(f.isExtended() ? ",\"ext\":true" : ",\"ext\":false");
+    out.append(f.isRemote() ? ",\"rtr\":true" : ",\"rtr\":false");
+    out.append(f.isFd() ? ",\"fd\":true" : ",\"fd\":false");
+    out.append(",\"len\":");
+    appendNumber(out, f.len);
+    out.append(",\"data\":\"");
+    appendDataHex(out, f, false, false);
+    out.append("\",\"service\":\"");
+    out.append(canopen::serviceName(d.service).toLatin1());
+    out.append("\",\"node\":");
+    if (d.node >= 0) appendNumber(out, d.node);
+    else out.append("null");
+    out.append(",\"summary\":");
+    appendJsonString(out, d.summary);
+    out.append(",\"fields\":{");
+    bool first = true;
+    for (int i = 0; i < d.fieldCount(); ++i) {
+        const FlatField& fl = d.field(i);
+        if (!first) out.append(',');
+        first = false;
+        out.append('"').append(fl.key).append("\":");
+        appendValue(out, fl);
+    }
+    if (d.signalCount) {
+        if (!first) out.append(',');
+        out.append("\"pdo.signals\":[");
+        for (int i = 0; i < d.signalCount; ++i) {
+            const PdoSignal& s = d.pdoSignals[static_cast<size_t>(i)];
+            if (i) out.append(',');
+            char obj[16];
+            std::snprintf(obj, sizeof obj, "%04X:%02X", s.index, s.sub);
+            out.append("{\"obj\":\"").append(obj).append("\",\"name\":");
+            appendJsonString(out, s.name);
+            out.append(",\"value\":");
+            appendValue(out, s.value);
+            out.append(",\"unit\":");
+            if (s.unit.isEmpty()) out.append("null");
+            else appendJsonString(out, s.unit);
+            out.append('}');
+        }
+        out.append(']');
+    }
+    out.append('}');
+    if (!d.warnings.isEmpty()) {
+        out.append(",\"warnings\":[");
+        for (int i = 0; i < d.warnings.size(); ++i) {
+            if (i) out.append(',');
+            appendJsonString(out, d.warnings[i]);
+        }
+        out.append(']');
+    }
+    out.append("}\n");
+}
+
+void appendTransferJson(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
+    const SdoTransferRecord& t = d.transfer;
+    out.append("{\"record\":\"sdo_transfer\",\"t\":");
+    appendSeconds(out, f.timestampNs);
+    out.append(",\"bus\":");
+    appendJsonString(out, bus);
+    out.append(",\"node\":");
+    appendNumber(out, t.node);
+    out.append(",\"object\":");
+    appendJsonString(out, object(t));
+    out.append(",\"index\":");
+    appendNumber(out, t.index);
+    out.append(",\"sub\":");
+    appendNumber(out, t.sub);
+    out.append(",\"name\":");
+    appendJsonString(out, t.name);
+    out.append(t.upload ? ",\"direction\":\"upload\"" : ",\"direction\":\"download\"");
+    out.append(",\"mode\":");
+    appendJsonString(out, mode(t));
+    out.append(",\"size\":");
+    appendNumber(out, t.size);
+    out.append(",\"data\":\"");
+    appendBytesHex(out, t.data);
+    out.append("\",\"value\":");
+    appendJsonString(out, t.valueText);
+    out.append(",\"status\":");
+    appendJsonString(out, t.status);
+    if (t.status == QLatin1String("aborted")) {
+        out.append(",\"abort\":");
+        appendUNumber(out, t.abortCode);
+        out.append(",\"abort_text\":");
+        appendJsonString(out, t.abortText);
+    }
+    out.append("}\n");
+}
+
+void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
+    char head[64];
+    const int64_t us = f.timestampNs / 1000;
+    // Hand-formatted: this runs for every line of a million-frame decode.
+    {
+        char* p = head + 40;
+        int64_t frac = us < 0 ? -(us % 1000000) : us % 1000000;
+        int64_t sec = us / 1000000;
+        const bool neg = us < 0;
+        if (neg) sec = -sec;
+        char* e = p;
+        for (int i = 0; i < 6; ++i, frac /= 10) *--p = char('0' + frac % 10);
+        *--p = '.';
+        do { *--p = char('0' + sec % 10); sec /= 10; } while (sec);
+        if (neg) *--p = '-';
+        while (e - p < 18) *--p = ' ';
+        out.append(p, e - p);
+        out.append("  ", 2);
+    }
+    appendUtf8(out, bus);
+    {
+        char* p = head;
+        *p++ = ' ';
+        *p++ = ' ';
+        const int digits = f.isExtended() ? 8 : 3;
+        for (int i = digits - 1; i >= 0; --i) *p++ = "0123456789ABCDEF"[(f.id >> (4 * i)) & 15];
+        *p++ = ' ';
+        *p++ = ' ';
+        *p++ = '[';
+        if (f.len >= 10) *p++ = char('0' + f.len / 10);
+        *p++ = char('0' + f.len % 10);
+        *p++ = ']';
+        *p++ = ' ';
+        *p++ = ' ';
+        out.append(head, p - head);
+    }
+    if (f.isRemote()) out.append("remote request");
+    else appendDataHex(out, f, true, true);
+    const int pad = 26 - 3 * f.payloadSize();
+    if (pad > 0) out.append(QByteArray(pad, ' '));
+    out.append("  ");
+    appendUtf8(out, d.summary);
+    for (const QString& w : d.warnings) out.append("  ! ").append(w.toUtf8());
+    out.append('\n');
+}
+
+void appendTransferText(QByteArray& out, const Dissection& d) {
+    const SdoTransferRecord& t = d.transfer;
+    out.append("    = SDO ");
+    out.append(t.upload ? "upload" : "download");
+    out.append(' ').append(mode(t).toLatin1()).append(" node ");
+    appendNumber(out, t.node);
+    out.append(' ').append(object(t).toLatin1());
+    if (!t.name.isEmpty()) out.append(' ').append(t.name.toUtf8());
+    out.append(": ").append(t.status.toUtf8());
+    if (t.status == QLatin1String("aborted")) out.append(QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText).toUtf8());
+    else {
+        out.append(", ");
+        appendNumber(out, t.size);
+        out.append(" bytes");
+        if (!t.valueText.isEmpty()) out.append(" = ").append(t.valueText.toUtf8());
+    }
+    out.append('\n');
+}
+
+QByteArray csvHeader() { return "t,bus,id,ext,rtr,fd,len,data,service,node,summary,warnings\n"; }
+
+void appendCsv(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
+    appendSeconds(out, f.timestampNs);
+    out.append(',');
+    csvField(out, bus);
+    out.append(',');
+    appendUNumber(out, f.id);
+    out.append(f.isExtended() ? ",1" : ",0");
+    out.append(f.isRemote() ? ",1" : ",0");
+    out.append(f.isFd() ? ",1," : ",0,");
+    appendNumber(out, f.len);
+    out.append(',');
+    appendDataHex(out, f, false, false);
+    out.append(',').append(canopen::serviceName(d.service).toLatin1()).append(',');
+    if (d.node >= 0) appendNumber(out, d.node);
+    out.append(',');
+    csvField(out, d.summary);
+    out.append(',');
+    csvField(out, d.warnings.join(QStringLiteral("; ")));
+    out.append('\n');
+}
+
+}  // namespace coscope::dissect

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dissectors/Dissection.h"
+
+#include <cstring>
+
+namespace coscope::dissect {
+
+void Dissection::reset(Level level) {
+    level_ = level;
+    service = canopen::Service::Unknown;
+    node = -1;
+    pdoNumber = 0;
+    summary.resize(0);
+    if (!warnings.isEmpty()) warnings.clear();
+    signalCount = 0;
+    hasTransfer = false;
+    fieldCount_ = 0;
+    tree.clear();
+}
+
+const FlatField* Dissection::find(const char* key) const {
+    for (int i = 0; i < fieldCount_; ++i)
+        if (std::strcmp(fields_[static_cast<size_t>(i)].key, key) == 0) return &fields_[static_cast<size_t>(i)];
+    return nullptr;
+}
+
+FlatField& Dissection::next(const char* key, FlatField::Kind kind) {
+    if (static_cast<size_t>(fieldCount_) == fields_.size()) fields_.emplace_back();
+    FlatField& f = fields_[static_cast<size_t>(fieldCount_++)];
+    f.key = key;
+    f.kind = kind;
+    return f;
+}
+
+void Dissection::addInt(const char* key, int64_t v) { next(key, FlatField::Kind::Int).i = v; }
+void Dissection::addUInt(const char* key, uint64_t v) { next(key, FlatField::Kind::UInt).u = v; }
+void Dissection::addReal(const char* key, double v) { next(key, FlatField::Kind::Real).d = v; }
+void Dissection::addBool(const char* key, bool v) { next(key, FlatField::Kind::Bool).i = v ? 1 : 0; }
+void Dissection::addText(const char* key, const QString& v) { next(key, FlatField::Kind::Text).text = v; }
+
+PdoSignal& Dissection::addSignal() {
+    if (static_cast<size_t>(signalCount) == pdoSignals.size()) pdoSignals.emplace_back();
+    PdoSignal& s = pdoSignals[static_cast<size_t>(signalCount++)];
+    s.unit.resize(0);
+    return s;
+}
+
+void Dissection::item(int depth, const QString& label, const QString& value, int byteOffset, int byteLength,
+                      int bitOffset, int bitLength) {
+    tree.push_back({depth, label, value, byteOffset, byteLength, bitOffset, bitLength});
+}
+
+QString hex(uint32_t v, int width) {
+    return QStringLiteral("0x") + QString::number(v, 16).toUpper().rightJustified(width, u'0');
+}
+
+QString hexBytes(const uint8_t* data, int len, bool spaced) {
+    static const char digits[] = "0123456789ABCDEF";
+    QString s;
+    s.reserve(len * 3);
+    for (int i = 0; i < len; ++i) {
+        if (spaced && i) s += u' ';
+        s += QLatin1Char(digits[data[i] >> 4]);
+        s += QLatin1Char(digits[data[i] & 15]);
+    }
+    return s;
+}
+
+}  // namespace coscope::dissect

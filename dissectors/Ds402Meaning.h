@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "dissectors/Dissection.h"
+
+#include <cstdint>
+
+namespace coscope::dissect {
+
+// CiA 402 meaning on top of a value of 6040h (controlword: command), 6041h (statusword: state
+// and bits) or 6060h/6061h (modes of operation), for any axis (+ n x 800h, CiA 402-1 §5).
+// Adds the ds402.* flat fields (and tree items at `depth` when asked) and returns a short text
+// for the summary; empty when the object is none of these.
+QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth = 1, int byteOffset = 0,
+                     int byteLength = 0);
+
+}  // namespace coscope::dissect

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+#include "dissectors/DictionaryCatalog.h"
+#include "dissectors/Dissection.h"
+#include "dissectors/PdoMapping.h"
+#include "dissectors/SdoReassembly.h"
+
+#include <QString>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace coscope::dissect {
+
+struct VendorTable;
+
+// What the context knows about one node, as of the frame being decoded.
+struct NodeState {
+    DictionaryPtr dictionary;     // null = unknown device
+    QString dictionaryName;
+    bool userAssigned = false;    // set by the user (never replaced by identity matching)
+    const VendorTable* vendor = nullptr;
+    int nmtState = -1;            // last NMT state: 0, 4, 5, 127; -1 = not seen
+    int64_t lastNmtNs = 0;
+    int guardToggle = -1;         // last node-guarding toggle bit, -1 = none
+    bool guardRequested = false;
+    std::optional<uint32_t> vendorId, productCode;  // 1018h:01/02 seen in the trace
+    std::vector<PdoConfig> rpdo, tpdo;  // index = PDO number - 1 (grown on demand)
+    SdoChannel sdo;
+    bool seen = false;
+
+    PdoConfig& pdo(bool tpdoDir, int number);  // creates
+    const PdoConfig* findPdo(bool tpdoDir, int number) const;
+};
+
+// The network context (DESIGN.md "dissectors/"): per node the dictionary, NMT state, PDO
+// mappings in force and SDO transfer state, updated frame by frame. dissect() must see the
+// frames in trace order: its result for frame N depends on frames < N.
+//
+// Random access ("decode frame N", the GUI): the context is a value type. Copying it is a
+// snapshot (dictionaries are shared, immutable). The GUI keeps a snapshot every K frames (the
+// ingest worker passes over the trace once anyway) and decodes frame N by copying the nearest
+// snapshot at or before N and dissecting forward to N; see checkpointInterval().
+class NetworkContext {
+public:
+    NetworkContext();
+
+    // Assigns a dictionary to a node (1..127): a bundled name or an EDS/DCF/XDD file.
+    bool assignDictionary(int node, const QString& nameOrFile, QString* error);
+    void assignDictionary(int node, DictionaryPtr dictionary, const QString& name, bool byUser = true);
+    // Match nodes without a user dictionary by the identity read in the trace (default on).
+    void setIdentityMatching(bool on) { identityMatching_ = on; }
+
+    // Decodes one frame and advances the context.
+    void dissect(const CanFrame& frame, Dissection& out, Dissection::Level level = Dissection::Level::Flat);
+
+    const NodeState& node(int id) const { return nodes_[static_cast<size_t>(id & 0x7F)]; }
+    NodeState& nodeForEdit(int id) { return nodes_[static_cast<size_t>(id & 0x7F)]; }
+    uint64_t framesSeen() const { return frames_; }
+
+    // The snapshot interval the GUI should use for random access.
+    static constexpr uint64_t checkpointInterval() { return 4096; }
+
+    // Internal, for the per-service dissectors.
+    const od::ObjectDictionary* namesFor(int node) const;  // node's dictionary, else generic CiA 402 names
+    void applySdoTransfer(int node, const SdoTransferRecord& t);
+    void pdoCobIdChanged(int node, bool tpdoDir, int number);
+
+private:
+    struct Route {
+        int node = -1;
+        int number = 0;  // PDO number, 1-based
+        bool tpdo = false;
+    };
+    void loadDefaults(int node);
+    void rebuildRoutes();
+
+    std::array<NodeState, 128> nodes_;
+    std::vector<int32_t> routes_;  // 2048 standard ids -> node << 12 | tpdo << 11 | (number - 1); -1 = default
+    DictionaryPtr generic_;
+    bool identityMatching_ = true;
+    uint64_t frames_ = 0;
+};
+
+}  // namespace coscope::dissect

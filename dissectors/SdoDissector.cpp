@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// SDO (CiA 301 §7.2.4): client -> server on 600h + node, server -> client on 580h + node.
+// Each frame is taken apart by canopen::parseSdo and fed to the node's SDO channel, which
+// reassembles transfers (SdoReassembly.cpp).
+#include "core/canopen/Sdo.h"
+#include "core/canopen/SdoAbort.h"
+#include "dissectors/Ds402Meaning.h"
+#include "dissectors/NetworkContext.h"
+#include "dissectors/Services.h"
+#include "dissectors/ValueText.h"
+#include "dissectors/VendorTable.h"
+
+namespace coscope::dissect {
+
+using canopen::SdoCommand;
+
+namespace {
+
+QString abortText(const NodeState& n, uint32_t code) {
+    if (n.vendor) {
+        auto it = n.vendor->aborts.constFind(code);
+        if (it != n.vendor->aborts.constEnd()) return *it;
+    }
+    const QString t = canopen::sdoAbortText(code);
+    return t.isEmpty() ? QStringLiteral("unknown abort code") : t;
+}
+
+QString objectLabel(uint16_t index, uint8_t sub, const QString& name) {
+    QString s = QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
+    if (!name.isEmpty()) s += QStringLiteral(" ") + name;
+    return s;
+}
+
+// Types the value of an object with the dictionary, when the entry is known.
+QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub, const uint8_t* data, int len, FlatField& v) {
+    const od::SubObject* e = dict ? dict->entry(index, sub) : nullptr;
+    if (e) {
+        const auto unit = dict->unit(index, sub);
+        return decodeValue(e->dataType, od::isKnownBasicType(e->dataType), data, len, v, unit ? unit->text : QString(),
+                           unit ? unit->factor : 1.0);
+    }
+    return decodeValue(od::DataType::Unsigned32, false, data, len, v);
+}
+
+}  // namespace
+
+void dissectSdo(DissectCall& c) {
+    Dissection& out = c.out;
+    const bool fromClient = out.service == canopen::Service::SdoRequest;
+    NodeState& n = c.ctx.nodeForEdit(c.node);
+    SdoChannel& ch = n.sdo;
+    if (c.frame.isRemote()) {
+        out.warn(QStringLiteral("remote frame on an SDO COB-ID"));
+        if (out.wantText()) out.summary = QStringLiteral("SDO remote frame, node %1").arg(c.node);
+        return;
+    }
+    // An abort (80h) may interrupt a sub-block; a block segment never has sequence number 0.
+    const bool inSub = ch.inSubBlock(fromClient) && !(c.len >= 1 && c.data[0] == 0x80);
+    const canopen::SdoFrame f = canopen::parseSdo(c.data, c.len, fromClient, inSub);
+    if (!f.error.isEmpty()) out.warn(f.error);
+    // The object a segment belongs to, before the channel moves on.
+    const uint16_t chIndex = ch.index;
+    const uint8_t chSub = ch.sub;
+    const bool chActive = ch.phase != SdoChannel::Phase::Idle;
+    sdoTrack(ch, f, fromClient, c.node, c.frame.timestampNs, out);
+
+    const od::ObjectDictionary* dict = c.ctx.namesFor(c.node);
+    if (out.hasTransfer) {
+        SdoTransferRecord& t = out.transfer;
+        if (t.status == QLatin1String("aborted")) t.abortText = abortText(n, t.abortCode);
+        if (dict && dict->entry(t.index, t.sub)) t.name = dict->displayName(t.index, t.sub);
+        if (!t.data.isEmpty()) {
+            FlatField v;
+            t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);
+        }
+        c.ctx.applySdoTransfer(c.node, t);
+    }
+    if (!out.wantText()) return;
+
+    const QString cs = canopen::sdoCommandName(f.command);
+    out.addText("sdo.cs", cs);
+    const QString name = f.hasMux && dict && dict->entry(f.index, f.sub) ? dict->displayName(f.index, f.sub) : QString();
+    if (f.hasMux) {
+        out.addInt("sdo.index", f.index);
+        out.addInt("sdo.sub", f.sub);
+    }
+    const QString who = QStringLiteral("node %1").arg(c.node);
+    QString& s = out.summary;
+    QString valueTextOut;
+    QString meaning;
+    const bool carriesValue = f.expedited && (f.command == SdoCommand::InitiateDownloadRequest || f.command == SdoCommand::InitiateUploadResponse);
+    if (carriesValue && !f.data.isEmpty()) {
+        FlatField v;
+        valueTextOut = typedValue(dict, f.index, f.sub, reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), v);
+        switch (v.kind) {
+        case FlatField::Kind::Int: out.addInt("sdo.value", v.i); break;
+        case FlatField::Kind::UInt: out.addUInt("sdo.value", v.u); break;
+        case FlatField::Kind::Real: out.addReal("sdo.value", v.d); break;
+        case FlatField::Kind::Bool: out.addBool("sdo.value", v.i != 0); break;
+        case FlatField::Kind::Text: out.addText("sdo.value", v.text); break;
+        }
+    }
+    if (f.sizeIndicated && !f.expedited) out.addInt("sdo.size", f.size);
+    switch (f.command) {
+    case SdoCommand::DownloadSegmentRequest:
+    case SdoCommand::DownloadSegmentResponse:
+    case SdoCommand::UploadSegmentRequest:
+    case SdoCommand::UploadSegmentResponse: out.addInt("sdo.toggle", f.toggle ? 1 : 0); break;
+    case SdoCommand::BlockSegment: out.addInt("sdo.seqno", f.seqno); break;
+    case SdoCommand::Abort:
+        out.addUInt("sdo.abort", f.abortCode);
+        out.addText("sdo.abort_text", abortText(n, f.abortCode));
+        break;
+    default: break;
+    }
+
+    switch (f.command) {
+    case SdoCommand::InitiateDownloadRequest:
+        s = QStringLiteral("SDO write %1 %2").arg(who, objectLabel(f.index, f.sub, name));
+        if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
+        else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        break;
+    case SdoCommand::InitiateDownloadResponse: s = QStringLiteral("SDO write ok %1 %2").arg(who, objectLabel(f.index, f.sub, name)); break;
+    case SdoCommand::InitiateUploadRequest: s = QStringLiteral("SDO read %1 %2").arg(who, objectLabel(f.index, f.sub, name)); break;
+    case SdoCommand::InitiateUploadResponse:
+        s = QStringLiteral("SDO read %1 %2").arg(who, objectLabel(f.index, f.sub, name));
+        if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
+        else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        break;
+    case SdoCommand::Abort:
+        s = QStringLiteral("SDO abort %1 %2: %3 %4").arg(who, objectLabel(f.index, f.sub, name), hex(f.abortCode, 8), abortText(n, f.abortCode));
+        break;
+    case SdoCommand::DownloadSegmentRequest:
+    case SdoCommand::UploadSegmentResponse:
+        s = QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
+        break;
+    case SdoCommand::BlockSegment:
+        s = QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
+        break;
+    case SdoCommand::BlockDownloadInitiate:
+    case SdoCommand::BlockUploadInitiate:
+    case SdoCommand::BlockDownloadInitiateResponse:
+    case SdoCommand::BlockUploadInitiateResponse:
+        s = QStringLiteral("SDO %1 %2 %3").arg(cs, who, objectLabel(f.index, f.sub, name));
+        if (f.blockSize) s += QStringLiteral(", block size %1").arg(f.blockSize);
+        if (f.sizeIndicated) s += QStringLiteral(", %1 bytes").arg(f.size);
+        break;
+    case SdoCommand::BlockDownloadAck:
+    case SdoCommand::BlockUploadAck:
+        s = QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who).arg(f.ackSeq).arg(f.blockSize);
+        break;
+    case SdoCommand::BlockDownloadEnd:
+    case SdoCommand::BlockUploadEnd:
+        s = QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0'));
+        break;
+    case SdoCommand::Invalid: s = QStringLiteral("SDO %1 (invalid)").arg(who); break;
+    default: s = QStringLiteral("SDO %1 %2").arg(cs, who); break;
+    }
+    if (!f.hasMux && chActive && f.command != SdoCommand::Invalid) s += QStringLiteral(" [%1]").arg(objectLabel(chIndex, chSub, QString()));
+    if (out.hasTransfer) {
+        const SdoTransferRecord& t = out.transfer;
+        if (t.status == QLatin1String("ok") && (t.segmented || t.block))
+            s += QStringLiteral(" -> %1 %2 bytes%3").arg(t.upload ? QStringLiteral("read") : QStringLiteral("wrote")).arg(t.size).arg(t.valueText.isEmpty() ? QString() : QStringLiteral(" = ") + t.valueText.left(60));
+    }
+
+    if (out.wantTree()) {
+        out.item(0, QStringLiteral("Command"), QStringLiteral("%1 (0x%2)").arg(cs).arg(c.len ? c.data[0] : 0, 2, 16, QLatin1Char('0')), 0, 1);
+        if (f.hasMux) {
+            out.item(0, QStringLiteral("Index"), hex(f.index, 4) + (name.isEmpty() ? QString() : QStringLiteral(" ") + name), 1, 2);
+            out.item(0, QStringLiteral("Sub-index"), hex(f.sub, 2), 3, 1);
+        }
+        if (f.command == SdoCommand::Abort) out.item(0, QStringLiteral("Abort code"), hex(f.abortCode, 8) + u' ' + abortText(n, f.abortCode), 4, 4);
+        else if (carriesValue) out.item(0, QStringLiteral("Value"), valueTextOut, 4, static_cast<int>(f.data.size()));
+        else if (!f.data.isEmpty()) out.item(0, QStringLiteral("Data"), hexBytes(reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), true), 1, static_cast<int>(f.data.size()));
+    }
+    if (carriesValue && !f.data.isEmpty()) {
+        uint64_t raw = 0;
+        for (int i = 0; i < f.data.size() && i < 8; ++i) raw |= uint64_t(uint8_t(f.data[i])) << (8 * i);
+        meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()));
+        if (!meaning.isEmpty()) s += QStringLiteral(" (") + meaning + u')';
+    }
+}
+
+}  // namespace coscope::dissect

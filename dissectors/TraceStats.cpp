@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dissectors/TraceStats.h"
+
+#include "core/canopen/Nmt.h"
+#include "core/canopen/SdoAbort.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace coscope::dissect {
+
+double TraceStats::frameBits(const CanFrame& f) {
+    // Classic base frame: SOF..CRC delimiter = 34 + 8n stuffable bits (+ 20 for a 29-bit id),
+    // then ACK, EOF and intermission (13 bits). FD frames are counted at the nominal rate
+    // (an overestimate when BRS is used).
+    const int n = f.payloadSize();
+    const double stuffable = (f.isExtended() ? 54.0 : 34.0) + 8.0 * n + (f.isFd() ? 21.0 : 0.0);
+    return stuffable * 1.1 + 13.0;
+}
+
+void TraceStats::add(const CanFrame& f) {
+    ++frames_;
+    if (!haveT0_) {
+        t0_ = f.timestampNs;
+        haveT0_ = true;
+    }
+    const int64_t sec = (f.timestampNs - t0_) / 1000000000;
+    if (sec >= 0 && sec < 1000000) {
+        if (static_cast<size_t>(sec) >= bitsPerSecond_.size()) bitsPerSecond_.resize(static_cast<size_t>(sec) + 1, 0.0);
+        bitsPerSecond_[static_cast<size_t>(sec)] += frameBits(f);
+    }
+    if (f.isError()) {
+        ++errorFrames_;
+        return;
+    }
+    if (f.isExtended()) ++perExtId_[f.id];
+    else ++perStdId_[f.id & 0x7FF];
+    ctx_.dissect(f, d_, Dissection::Level::Stats);
+    ++perService_[static_cast<size_t>(d_.service)];
+    if (d_.node >= 1 && d_.node < 128) ++nodeFrames_[d_.node];
+    if (d_.service == canopen::Service::Emcy) {
+        ++emcys_;
+        ++emcyPerNode_[d_.node];
+    }
+    if (!d_.warnings.isEmpty()) {
+        warnings_ += static_cast<uint64_t>(d_.warnings.size());
+        if (warningSamples_.size() < 10)
+            warningSamples_.push_back(QStringLiteral("frame %1 (COB-ID 0x%2): %3").arg(frames_).arg(f.id, 3, 16, QLatin1Char('0')).arg(d_.warnings.first()));
+    }
+    if (d_.hasTransfer) {
+        const QString& s = d_.transfer.status;
+        if (s == QLatin1String("ok")) ++sdoOk_;
+        else if (s == QLatin1String("aborted")) {
+            ++sdoAborted_;
+            ++abortCodes_[d_.transfer.abortCode];
+        } else ++sdoFailed_;
+    }
+}
+
+QByteArray TraceStats::report() const {
+    QByteArray o;
+    char line[256];
+    auto put = [&](const char* fmt, auto... args) {
+        const int n = std::snprintf(line, sizeof line, fmt, args...);
+        o.append(line, std::min<int>(n, sizeof line - 1));
+    };
+    double seconds = 0;
+    put("Frames: %llu (%llu error frames)\n", (unsigned long long)frames_, (unsigned long long)errorFrames_);
+    o.append("\nFrames per service:\n");
+    for (int s = 0; s < 32; ++s)
+        if (perService_[s]) put("  %-10s %12llu\n", qPrintable(canopen::serviceName(static_cast<canopen::Service>(s))), (unsigned long long)perService_[s]);
+    o.append("\nFrames per COB-ID:\n");
+    for (int id = 0; id < 2048; ++id) {
+        if (!perStdId_[static_cast<size_t>(id)]) continue;
+        const canopen::CobIdInfo info = canopen::classifyCobId(static_cast<uint32_t>(id));
+        put("  0x%03X  %-10s %12llu\n", id, qPrintable(canopen::serviceName(info.service)), (unsigned long long)perStdId_[static_cast<size_t>(id)]);
+    }
+    for (const auto& [id, n] : perExtId_) put("  0x%08X (29-bit) %12llu\n", id, (unsigned long long)n);
+    o.append("\nNodes:\n");
+    bool anyNode = false;
+    for (int n = 1; n < 128; ++n) {
+        const NodeState& s = ctx_.node(n);
+        if (!nodeFrames_[n]) continue;
+        anyNode = true;
+        const QString state = s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");
+        put("  node %3d  %-16s frames %10llu  dictionary %s\n", n, qPrintable(state), (unsigned long long)nodeFrames_[n],
+            s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
+    }
+    if (!anyNode) o.append("  (none)\n");
+    o.append("\nBus load (estimated, ");
+    put("%d bit/s):\n", bitRate_);
+    double peak = 0, total = 0;
+    for (double b : bitsPerSecond_) {
+        peak = std::max(peak, b);
+        total += b;
+    }
+    seconds = static_cast<double>(bitsPerSecond_.size());
+    if (seconds > 0) put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_, 100.0 * peak / bitRate_, seconds);
+    const size_t shown = std::min<size_t>(bitsPerSecond_.size(), 3600);
+    for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond_[i] / bitRate_);
+    if (shown < bitsPerSecond_.size()) put("  ... %zu more seconds\n", bitsPerSecond_.size() - shown);
+    put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n", (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_),
+        (unsigned long long)sdoOk_, (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
+    for (const auto& [code, n] : abortCodes_)
+        put("  abort 0x%08X x%llu  %s\n", code, (unsigned long long)n, qPrintable(canopen::sdoAbortText(code)));
+    put("\nEMCY: %llu\n", (unsigned long long)emcys_);
+    for (const auto& [node, n] : emcyPerNode_) put("  node %d: %llu\n", node, (unsigned long long)n);
+    put("\nWarnings: %llu\n", (unsigned long long)warnings_);
+    for (const QString& w : warningSamples_) o.append("  ").append(w.toUtf8()).append('\n');
+    return o;
+}
+
+}  // namespace coscope::dissect

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+#include "dissectors/Dissection.h"
+#include "dissectors/NetworkContext.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace coscope::dissect {
+
+// What `coscope-cli stats` reports about a trace: frames per COB-ID and service, nodes with
+// their last NMT state, an estimated bus load per second, SDO transfers and aborts, EMCYs and
+// warnings. Feed frames in order with add(); the context is run at the Stats level (no text).
+class TraceStats {
+public:
+    explicit TraceStats(int bitRate = 500000) : bitRate_(bitRate) {}
+    NetworkContext& context() { return ctx_; }
+
+    void add(const CanFrame& f);
+    // The report as text (UTF-8).
+    QByteArray report() const;
+
+    uint64_t frames() const { return frames_; }
+    uint64_t warnings() const { return warnings_; }
+    uint64_t sdoTransfers() const { return sdoOk_ + sdoAborted_ + sdoFailed_; }
+    uint64_t sdoAborts() const { return sdoAborted_; }
+    uint64_t emcys() const { return emcys_; }
+    uint64_t framesOfService(canopen::Service s) const { return perService_[static_cast<size_t>(s)]; }
+
+    // Estimated bits on the wire of one frame: CiA/ISO 11898-1 frame fields plus an average
+    // stuffing of 1 bit in 10 of the stuffable part (nominal, not worst case).
+    static double frameBits(const CanFrame& f);
+
+private:
+    NetworkContext ctx_;
+    Dissection d_;
+    int bitRate_;
+    uint64_t frames_ = 0, warnings_ = 0, emcys_ = 0, errorFrames_ = 0;
+    uint64_t sdoOk_ = 0, sdoAborted_ = 0, sdoFailed_ = 0;
+    std::vector<uint64_t> perStdId_ = std::vector<uint64_t>(2048, 0);
+    std::map<uint32_t, uint64_t> perExtId_;
+    uint64_t perService_[32] = {};
+    std::map<uint32_t, uint64_t> abortCodes_;
+    std::map<int, uint64_t> emcyPerNode_;
+    uint64_t nodeFrames_[128] = {};
+    std::vector<double> bitsPerSecond_;
+    int64_t t0_ = 0;
+    bool haveT0_ = false;
+    std::vector<QString> warningSamples_;
+};
+
+}  // namespace coscope::dissect

@@ -1,0 +1,264 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The real main window against the virtual drives (sim://): connect, nodes appear, events,
+// NMT from the Nodes dock, listen-only refuses to send, filter the trace, open and save logs,
+// layout saved, --screenshot.
+#include "app/gui/MainWindow.h"
+#include "app/gui/events/EventsDock.h"
+#include "app/gui/events/EventsModel.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
+#include "app/gui/session/SimulationDemo.h"
+#include "app/gui/session/Workspace.h"
+#include "app/gui/status/BusStatusBar.h"
+#include "app/gui/trace/LogSaveJob.h"
+#include "app/gui/trace/TraceDock.h"
+#include "app/gui/trace/TraceModel.h"
+#include "core/logio/LogFormats.h"
+
+#include <QAction>
+#include <QSettings>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QtTest>
+
+#include "eds/SimulatorDictionaries.h"
+
+using namespace coscope;
+using namespace coscope::gui;
+
+namespace {
+// Waits (running the event loop, so the window's timer ticks) until `pred` holds.
+template <typename Pred>
+bool waitFor(Pred pred, int timeoutMs = 8000) {
+    QElapsedTimer t;
+    t.start();
+    while (!pred()) {
+        if (t.elapsed() > timeoutMs) return false;
+        QTest::qWait(20);
+    }
+    return true;
+}
+QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName(QStringLiteral("CoScopeTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("gui_main_window"));
+        QSettings().clear();
+        eds::installSimulatorDictionaries();
+        QVERIFY(dir_.isValid());
+    }
+
+    void simulateShowsTrafficNodesAndEvents() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        QVERIFY2(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }), qPrintable(w.lastError()));
+        TraceModel* m = w.traceDock()->model();
+        QVERIFY(waitFor([&] { return m->rowCount() >= 3; }));  // the boot-ups
+        // Nodes appear from boot-ups/heartbeats of the default virtual drives (1, 2, 3).
+        QVERIFY(waitFor([&] { return w.nodesDock()->model()->rowCount() >= 3; }));
+        QCOMPARE(w.nodesDock()->model()->nodeAt(0), 1);
+        QVERIFY(w.eventsDock()->model()->rowCount() >= 3);  // three boot-ups
+        QCOMPARE(w.eventsDock()->model()->data(w.eventsDock()->model()->index(0, EventsModel::Kind), Qt::DisplayRole).toString(), QStringLiteral("Boot-up"));
+        // The status bar shows the bus state and a rate.
+        QVERIFY(waitFor([&] { return w.busStatus()->stateText().contains(QStringLiteral("open"), Qt::CaseInsensitive); }));
+        QVERIFY(w.busStatus()->rateText().contains(QStringLiteral("frames/s")));
+        // Selecting a row fills the details pane.
+        w.traceDock()->view()->selectRow(0);
+        QVERIFY(w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"))->topLevelItemCount() >= 2);
+
+        // Scan from the Nodes dock: SDO reads identify the nodes (identity 1018h).
+        w.nodesDock()->setAutoConfirm(true);
+        QVERIFY(w.nodesDock()->scanAction()->isEnabled());
+        w.nodesDock()->scan();
+        QVERIFY(waitFor([&] {
+            auto* nm = w.nodesDock()->model();
+            return nm->rowCount() >= 3 && nm->infoAt(0).scanned && nm->infoAt(0).vendorId.has_value();
+        }));
+        QCOMPARE(w.nodesDock()->model()->rowCount(), 3);  // nobody else answered
+
+        // NMT from the Nodes dock goes out (and shows as a Tx frame in the trace).
+        for (QAction* a : w.nodesDock()->commandActions()) QVERIFY(a->objectName() == u"scanAction" || a->text().isEmpty() || a->isEnabled() || a->text().contains(QStringLiteral("identity")));
+        const size_t before = w.workspace()->store()->size();
+        QVERIFY(w.nodesDock()->sendNmt(0x01, 2));  // start node 2
+        QVERIFY(waitFor([&] {
+            const auto& s = *w.workspace()->store();
+            for (size_t n = before; n < s.size(); ++n) {
+                const auto& r = s.record(static_cast<FrameNo>(n));
+                if (r.id == 0 && (r.flags & CanFrame::Tx) && r.len == 2 && r.data[0] == 1 && r.data[1] == 2) return true;
+            }
+            return false;
+        }));
+        // The event log shows the command.
+        QVERIFY(waitFor([&] {
+            auto* em = w.eventsDock()->model();
+            for (int r = 0; r < em->rowCount(); ++r)
+                if (em->eventAt(r).kind == TraceEvent::Kind::NmtCommand) return true;
+            return false;
+        }));
+    }
+
+    void listenOnlyRefusesToSend() {
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.connectBus(QStringLiteral("sim://?listen-only=1")));
+        QVERIFY(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }));
+        QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() >= 3; }));
+        w.refresh();
+        QVERIFY(!w.workspace()->canTransmit());
+        for (QAction* a : w.nodesDock()->commandActions()) QVERIFY2(!a->isEnabled(), qPrintable(a->text()));
+        QVERIFY(!w.nodesDock()->scanAction()->isEnabled());
+        w.nodesDock()->setAutoConfirm(true);
+        QVERIFY(!w.nodesDock()->sendNmt(0x01, 0));
+        QString error;
+        QVERIFY(!w.workspace()->bus()->send(CanFrame::classic(0x000, {0x01, 0x00}), &error));
+        QVERIFY(!error.isEmpty());
+        QTest::qWait(200);
+        const auto& s = *w.workspace()->store();
+        for (size_t n = 0; n < s.size(); ++n) QVERIFY(!(s.record(static_cast<FrameNo>(n)).flags & CanFrame::Tx));
+        QVERIFY(w.busStatus()->stateText().contains(QStringLiteral("listen-only")));
+    }
+
+    void filterTheLiveTrace() {
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        startSimulationDemo(w.workspace());  // heartbeats on, network started
+        QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() > 20; }));
+        QString error;
+        QVERIFY(!w.traceDock()->applyFilter(QStringLiteral("svc:nonsense"), &error));
+        QVERIFY(error.contains(QStringLiteral("nonsense")));
+        QVERIFY(w.traceDock()->applyFilter(QStringLiteral("svc:nmt_ec node:1"), &error));
+        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && w.traceDock()->model()->isFiltered(); }));
+        TraceModel* m = w.traceDock()->model();
+        QVERIFY(waitFor([&] { return m->rowCount() >= 2; }));
+        for (int r = 0; r < m->rowCount(); ++r) {
+            QCOMPARE(cell(m, r, TraceModel::Service), QStringLiteral("NMT_EC"));
+            QCOMPARE(cell(m, r, TraceModel::Node), QStringLiteral("1"));
+        }
+        QVERIFY(m->rowCount() < int(w.workspace()->store()->size()));
+        w.traceDock()->clearFilter();
+        QVERIFY(!m->isFiltered());
+    }
+
+    void openAndSaveLogs() {
+        // A candump log with one bad line: the rest loads, the problem is reported with its line.
+        const QString path = dir_.filePath(QStringLiteral("in.log"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("(1700000000.000000) can0 701#00\n"
+                "(1700000000.100000) can0 701#7F\n"
+                "this is not a candump line\n"
+                "(1700000000.200000) can0 081#1023050000000000\n"
+                "(1700000000.300000) can0 601#4000100000000000\n");
+        f.close();
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.openLog(path));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
+        w.refresh();
+        QCOMPARE(w.traceDock()->model()->rowCount(), 4);
+        QVERIFY2(w.lastError().contains(QStringLiteral(":3")), qPrintable(w.lastError()));
+        QCOMPARE(w.nodesDock()->model()->rowCount(), 1);
+        QVERIFY(w.eventsDock()->model()->rowCount() >= 2);  // boot-up, EMCY
+
+        // Save in two formats; read back with the log layer.
+        for (const QString& name : {QStringLiteral("out.log"), QStringLiteral("out.asc")}) {
+            const QString out = dir_.filePath(name);
+            QVERIFY(w.saveLog(out));
+            QVERIFY(waitFor([&] { return w.saveJob() == nullptr; }));
+            QVERIFY2(!w.lastError().contains(out), qPrintable(w.lastError()));
+            QString error;
+            auto reader = logio::LogFormats::openReader(out, &error);
+            QVERIFY2(reader, qPrintable(error));
+            QCOMPARE(reader->readAll().size(), size_t(4));
+        }
+        // Export only the filtered rows.
+        QVERIFY(w.traceDock()->applyFilter(QStringLiteral("svc:emcy")));
+        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering(); }));
+        w.refresh();
+        QCOMPARE(w.traceDock()->model()->rowCount(), 1);
+        const QString filtered = dir_.filePath(QStringLiteral("filtered.log"));
+        QVERIFY(w.saveLog(filtered, {}, true));
+        QVERIFY(waitFor([&] { return w.saveJob() == nullptr; }));
+        auto reader = logio::LogFormats::openReader(filtered, nullptr);
+        QVERIFY(reader);
+        const auto frames = reader->readAll();
+        QCOMPARE(frames.size(), size_t(1));
+        QCOMPARE(frames[0].id, 0x81u);
+
+        // An unreadable file is an error in the window, not a crash.
+        QVERIFY(!w.openLog(dir_.filePath(QStringLiteral("missing.log"))));
+        QVERIFY(w.lastError().contains(QStringLiteral("missing.log")));
+    }
+
+    void eventJumpsToFrame() {
+        const QString path = dir_.filePath(QStringLiteral("jump.log"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        for (int i = 0; i < 200; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#0102\n").arg(i * 1000, 6, 10, QLatin1Char('0')).toLatin1());
+        f.write("(1700000001.000000) can0 081#1023050000000000\n");
+        f.close();
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.openLog(path));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
+        w.refresh();
+        QCOMPARE(w.eventsDock()->model()->rowCount(), 1);
+        emit w.eventsDock()->frameActivated(w.eventsDock()->model()->eventAt(0).frame);
+        const QModelIndex cur = w.traceDock()->view()->currentIndex();
+        QVERIFY(cur.isValid());
+        QCOMPARE(w.traceDock()->model()->frameAt(cur.row()), FrameNo(200));
+        // find and bookmarks
+        w.traceDock()->view()->selectRow(0);
+        QVERIFY(w.traceDock()->find(QStringLiteral("EMCY"), true));
+        QCOMPARE(w.traceDock()->view()->currentIndex().row(), 200);
+        w.traceDock()->toggleBookmark();
+        w.traceDock()->view()->selectRow(0);
+        w.traceDock()->gotoBookmark(true);
+        QCOMPARE(w.traceDock()->view()->currentIndex().row(), 200);
+    }
+
+    void layoutIsSaved() {
+        {
+            MainWindow w;
+            w.show();
+            w.nodesDock()->hide();
+            w.close();
+        }
+        QVERIFY(QSettings().contains(QStringLiteral("window/state")));
+        MainWindow again;
+        again.show();
+        QVERIFY(again.nodesDock()->isHidden());
+        again.nodesDock()->show();
+        again.close();
+    }
+
+    void screenshotOption() {
+        const QString png = dir_.filePath(QStringLiteral("shot.png"));
+        QProcess p;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(COSCOPE_GUI_PATH), {QStringLiteral("--simulate"), QStringLiteral("--screenshot"), png, QStringLiteral("--view"), QStringLiteral("nodes")});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QImage img(png);
+        QVERIFY(!img.isNull());
+        QVERIFY(img.width() > 600);
+        p.start(QStringLiteral(COSCOPE_GUI_PATH), {QStringLiteral("--view"), QStringLiteral("bogus")});
+        QVERIFY(p.waitForFinished(20000));
+        QCOMPARE(p.exitCode(), 2);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// DictionaryLibrary: user folder, replacing bundled names, identity matching, unit sidecars.
+#include "eds/DictionaryLibrary.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace coscope;
+
+namespace {
+
+void writeEds(const QString& path, const char* vendor, const char* product, const char* revision, const char* name) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray("[DeviceInfo]\nVendorName=T\nVendorNumber=") + vendor + "\nProductNumber=" + product + "\nRevisionNumber=" + revision +
+            "\nProductName=" + name + "\n[MandatoryObjects]\nSupportedObjects=1\n1=0x1000\n[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\n"
+            "DefaultValue=0x00020192\n[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\nPDOMapping=1\n");
+}
+
+}  // namespace
+
+class TestEdsLibrary : public QObject {
+    Q_OBJECT
+private slots:
+    void userFolderAndIdentity();
+    void unitsSidecar();
+    void unknownName();
+    void bundledNamesLoad();
+};
+
+void TestEdsLibrary::userFolderAndIdentity() {
+    QTemporaryDir dir;
+    writeEds(dir.filePath("a-rev1.eds"), "0x100", "0x20", "0x00010001", "A1");
+    writeEds(dir.filePath("a-rev3.eds"), "0x100", "0x20", "0x00010003", "A3");
+    writeEds(dir.filePath("a-rev2-0.eds"), "0x100", "0x20", "0x00020000", "A20");
+    writeEds(dir.filePath("b.dcf"), "0x100", "0x21", "0x1", "B");
+    const eds::DictionaryLibrary lib(dir.path());
+    QVERIFY(lib.names().contains("a-rev1"));
+    QVERIFY(lib.names().contains("b"));
+    // Exact revision.
+    QCOMPARE(lib.findByIdentity(0x100, 0x20, 0x00010001u)->name, QString("a-rev1"));
+    // Same major revision, highest minor.
+    QCOMPARE(lib.findByIdentity(0x100, 0x20, 0x00010007u)->name, QString("a-rev3"));
+    // Unknown major: the highest revision.
+    QCOMPARE(lib.findByIdentity(0x100, 0x20, 0x00090000u)->name, QString("a-rev2-0"));
+    QCOMPARE(lib.findByIdentity(0x100, 0x21)->name, QString("b"));
+    QVERIFY(!lib.findByIdentity(0x100, 0x22));
+    QVERIFY(!lib.findByIdentity(0x101, 0x20));
+}
+
+void TestEdsLibrary::unitsSidecar() {
+    QTemporaryDir dir;
+    writeEds(dir.filePath("drive.eds"), "0x1", "0x2", "0x3", "D");
+    QFile j(dir.filePath("drive.json"));
+    QVERIFY(j.open(QIODevice::WriteOnly));
+    j.write(R"({"units": {"6064:00": {"unit": "counts", "factor": 0.5}, "7000:00": {"unit": "x"}}})");
+    j.close();
+    const eds::DictionaryLibrary lib(dir.path());
+    const auto r = lib.load("drive");
+    QVERIFY(r.usable);
+    const auto u = r.dictionary.unit(0x6064, 0);
+    QVERIFY(u);
+    QCOMPARE(u->text, QString("counts"));
+    QCOMPARE(u->factor, 0.5);
+    QVERIFY(!r.dictionary.unit(0x1000, 0));
+    bool warned = false;
+    for (const auto& d : r.diagnostics) warned |= d.message.contains("'7000:00' is not an entry");
+    QVERIFY(warned);
+}
+
+void TestEdsLibrary::unknownName() {
+    QTemporaryDir dir;
+    const auto r = eds::DictionaryLibrary(dir.path()).load("no-such-drive");
+    QVERIFY(!r.usable);
+    QCOMPARE(r.errorCount(), 1);
+    QVERIFY(!eds::loadDictionaryByPathOrName("no-such-drive-either").usable);
+}
+
+void TestEdsLibrary::bundledNamesLoad() {
+    QTemporaryDir dir;
+    const eds::DictionaryLibrary lib(dir.path());
+    if (lib.entries().empty()) QSKIP("no bundled dictionaries in this build");
+    for (const auto& e : lib.entries()) {
+        QVERIFY(e.bundled);
+        const auto r = lib.load(e.name);
+        QVERIFY2(r.usable, qPrintable(e.name));
+        QVERIFY2(r.errorCount() == 0, qPrintable(e.name));
+    }
+}
+
+QTEST_GUILESS_MAIN(TestEdsLibrary)
+#include "test_eds_library.moc"
