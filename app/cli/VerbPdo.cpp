@@ -129,14 +129,15 @@ int runMap(const QStringList& args) {
         wanted.transmissionType = static_cast<uint8_t>(*t);
     }
     QTextStream out(stdout);
-    out << "node " << *node << " to pre-operational, then:\n";
     std::optional<canopen::PdoWriteResult> res;
     pdo.write(*node, *pdoId, wanted, dict ? &*dict : nullptr, [&](const auto& r) { res = r; });
     canopen::waitUntil([&] { return res.has_value(); }, 120000);
     if (!res) return failure(verb, QStringLiteral("no result"));
+    if (!res->steps.isEmpty()) out << "node " << *node << " to pre-operational, then:\n";
     for (const QString& step : res->steps) out << "  " << step << "\n";
     out.flush();
-    if (!res->ok) return failure(verb, QStringLiteral("node %1 %2: %3").arg(*node).arg(pdoId->name(), res->error));
+    if (!res->ok)
+        return failure(verb, res->error.startsWith(QStringLiteral("node ")) ? res->error : QStringLiteral("node %1 %2: %3").arg(*node).arg(pdoId->name(), res->error));
     out << pdoId->name() << " of node " << *node << " mapped and verified (" << res->written.totalBits() << " bits); node left pre-operational\n";
     return Ok;
 }

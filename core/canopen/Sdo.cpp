@@ -14,6 +14,21 @@ void readMux(SdoFrame& f, const uint8_t* d) {
     f.hasMux = true;
 }
 
+// Initiate download request / initiate upload response: x n e s in bits 3..0, then the
+// multiplexer, then up to 4 data bytes (expedited) or the size (CiA 301 §7.2.4.3.3/6).
+void readInitiate(SdoFrame& f, const uint8_t* b) {
+    readMux(f, b);
+    f.expedited = b[0] & 0x02;
+    f.sizeIndicated = b[0] & 0x01;
+    if (f.expedited) {
+        const int n = f.sizeIndicated ? 4 - ((b[0] >> 2) & 0x3) : 4;
+        f.size = static_cast<uint32_t>(n);
+        f.data = QByteArray(reinterpret_cast<const char*>(b + 4), n);
+    } else if (f.sizeIndicated) {
+        f.size = le32(b + 4);
+    }
+}
+
 CanFrame frame8(uint32_t id, std::initializer_list<uint8_t> head) {
     CanFrame f;
     f.id = id;
@@ -64,16 +79,7 @@ SdoFrame parseSdo(const uint8_t* d, int len, bool fromClient, bool inSubBlock) {
         switch (cs) {
         case 1:  // initiate download: ccs=1 x n e s
             f.command = SdoCommand::InitiateDownloadRequest;
-            readMux(f, b);
-            f.expedited = c0 & 0x02;
-            f.sizeIndicated = c0 & 0x01;
-            if (f.expedited) {
-                const int n = f.sizeIndicated ? 4 - ((c0 >> 2) & 0x3) : 4;
-                f.size = static_cast<uint32_t>(n);
-                f.data = QByteArray(reinterpret_cast<const char*>(b + 4), n);
-            } else if (f.sizeIndicated) {
-                f.size = le32(b + 4);
-            }
+            readInitiate(f, b);
             break;
         case 0:  // download segment: ccs=0 t n c
             f.command = SdoCommand::DownloadSegmentRequest;
@@ -137,16 +143,7 @@ SdoFrame parseSdo(const uint8_t* d, int len, bool fromClient, bool inSubBlock) {
             break;
         case 2:  // initiate upload response: scs=2 x n e s
             f.command = SdoCommand::InitiateUploadResponse;
-            readMux(f, b);
-            f.expedited = c0 & 0x02;
-            f.sizeIndicated = c0 & 0x01;
-            if (f.expedited) {
-                const int n = f.sizeIndicated ? 4 - ((c0 >> 2) & 0x3) : 4;
-                f.size = static_cast<uint32_t>(n);
-                f.data = QByteArray(reinterpret_cast<const char*>(b + 4), n);
-            } else if (f.sizeIndicated) {
-                f.size = le32(b + 4);
-            }
+            readInitiate(f, b);
             break;
         case 0:
             f.command = SdoCommand::UploadSegmentResponse;

@@ -6,6 +6,8 @@
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/Nmt.h"
 #include "core/canopen/SdoClient.h"
+#include "core/od/Value.h"
+#include "eds/DictionaryLibrary.h"
 
 #include <QTimer>
 
@@ -31,14 +33,23 @@ void startSimulationDemo(Workspace* ws) {
             if (!ws->canTransmit()) return;
             for (const NodeInfo& n : ws->nodes().snapshot()) {
                 if (!n.scanned) continue;
-                // 1017h is UNSIGNED16 (CiA 301 §7.5.2.31); some dictionaries declare it wider.
+                // Producer heartbeat time 1017h = 500 ms, encoded as the node's dictionary
+                // declares it (CiA 301 says UNSIGNED16; AIMOTOR declares UNSIGNED32). One write,
+                // never retried.
                 const auto node = static_cast<uint8_t>(n.node);
-                ws->sdo()->download(node, 0x1017, 0, QByteArray("\xF4\x01", 2), [ws, node](const canopen::SdoResult& r) {
-                    if (r.ok || !ws->sdo()) return;
-                    if ((r.abortCode & 0xFFFFFFF0u) == 0x06070010u)
-                        ws->sdo()->download(node, 0x1017, 0, QByteArray("\xF4\x01\x00\x00", 4), [](const canopen::SdoResult&) {});
-                    else
-                        spdlog::warn("simulation: {}", r.error.toStdString());
+                od::DataType type = od::DataType::Unsigned16;
+                if (!n.dictionary.isEmpty()) {
+                    const eds::ReadResult dict = eds::loadDictionaryByPathOrName(n.dictionary);
+                    if (const od::SubObject* e = dict.dictionary.entry(0x1017, 0)) type = e->dataType;
+                }
+                QString encodeError;
+                const QByteArray value = od::Value::unsignedInt(500).encode(type, &encodeError);
+                if (value.isEmpty()) {
+                    spdlog::warn("simulation: node {} 1017h: {}", node, encodeError.toStdString());
+                    continue;
+                }
+                ws->sdo()->download(node, 0x1017, 0, value, [](const canopen::SdoResult& r) {
+                    if (!r.ok) spdlog::warn("simulation: {}", r.error.toStdString());
                 });
             }
             QString error;
