@@ -2,6 +2,11 @@
 #include "dissectors/DecodeOutput.h"
 
 #include <cstdio>
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace coscope::dissect {
 
@@ -27,24 +32,16 @@ void appendSeconds(QByteArray& out, int64_t ns) {
 }
 void appendDataHex(QByteArray& out, const CanFrame& f, bool spaced, bool upper) {
     const char* digits = upper ? "0123456789ABCDEF" : kHex;
-    for (int i = 0; i < f.payloadSize(); ++i) {
-        if (spaced && i) out.append(' ');
-        out.append(digits[f.data[static_cast<size_t>(i)] >> 4]);
-        out.append(digits[f.data[static_cast<size_t>(i)] & 15]);
+    char buf[64 * 3];
+    char* p = buf;
+    const int n = f.payloadSize();
+    for (int i = 0; i < n; ++i) {
+        if (spaced && i) *p++ = ' ';
+        const uint8_t b = f.data[static_cast<size_t>(i)];
+        *p++ = digits[b >> 4];
+        *p++ = digits[b & 15];
     }
-}
-// UTF-8 of a QString without a temporary for the ASCII common case.
-void appendUtf8(QByteArray& out, const QString& s) {
-    for (QChar c : s) {
-        if (c.unicode() >= 0x80) {
-            out.append(s.toUtf8());
-            return;
-        }
-    }
-    const qsizetype at = out.size();
-    out.resize(at + s.size());
-    char* p = out.data() + at;
-    for (QChar c : s) *p++ = static_cast<char>(c.unicode());
+    out.append(buf, p - buf);
 }
 void appendBytesHex(QByteArray& out, const QByteArray& b) {
     for (char c : b) {
@@ -204,50 +201,113 @@ void appendTransferJson(QByteArray& out, const CanFrame& f, const Dissection& d,
     out.append("}\n");
 }
 
+namespace {
+// Writes the UTF-8 of `s` at `p` (room for 3 bytes per UTF-16 unit); returns the end.
+char* putUtf8(char* p, const QString& s) {
+    const qsizetype n = s.size();
+    const char16_t* src = reinterpret_cast<const char16_t*>(s.constData());
+    qsizetype i = 0;
+#if defined(__SSE2__)
+    // 8 ASCII code units at a time; anything else goes to the loop below.
+    const __m128i high = _mm_set1_epi16(static_cast<short>(0xFF80));
+    for (; i + 8 <= n; i += 8) {
+        const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_and_si128(v, high), _mm_setzero_si128())) != 0xFFFF) break;
+        _mm_storel_epi64(reinterpret_cast<__m128i*>(p + i), _mm_packus_epi16(v, v));
+    }
+#endif
+    for (; i < n; ++i) {
+        const char16_t c = src[i];
+        if (c >= 0x80) {
+            // Rare: let Qt encode it (surrogates, replacement of broken pairs).
+            const QByteArray u = s.toUtf8();
+            std::memcpy(p, u.constData(), static_cast<size_t>(u.size()));
+            return p + u.size();
+        }
+        p[i] = static_cast<char>(c);
+    }
+    return p + n;
+}
+}  // namespace
+
 void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
-    char head[64];
-    const int64_t us = f.timestampNs / 1000;
-    // Hand-formatted: this runs for every line of a million-frame decode.
+    // Hand-formatted straight into the output buffer: this runs for every line of a
+    // million-frame decode. The space reserved is an upper bound; the rest is cut after.
+    qsizetype bound = 18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * d.summary.size() + 1;
+    for (const QString& w : d.warnings) bound += 4 + 3 * w.size();
+    const qsizetype at = out.size();
+    out.resize(at + bound);
+    char* const start = out.data() + at;
+    char* o = start;
     {
-        char* p = head + 40;
+        // The seconds (and sign) change rarely: their text is kept from the previous line.
+        thread_local int64_t lastSec = -1;
+        thread_local bool lastNeg = false;
+        thread_local char secText[32];
+        thread_local int secLen = 0;
+        const int64_t us = f.timestampNs / 1000;
         int64_t frac = us < 0 ? -(us % 1000000) : us % 1000000;
         int64_t sec = us / 1000000;
         const bool neg = us < 0;
         if (neg) sec = -sec;
-        char* e = p;
-        for (int i = 0; i < 6; ++i, frac /= 10) *--p = char('0' + frac % 10);
-        *--p = '.';
-        do { *--p = char('0' + sec % 10); sec /= 10; } while (sec);
-        if (neg) *--p = '-';
-        while (e - p < 18) *--p = ' ';
-        out.append(p, e - p);
-        out.append("  ", 2);
+        if (sec != lastSec || neg != lastNeg || secLen == 0) {
+            char* e = secText + sizeof secText;
+            char* p = e;
+            int64_t v = sec;
+            do { *--p = char('0' + v % 10); v /= 10; } while (v);
+            if (neg) *--p = '-';
+            while (e - p < 11) *--p = ' ';  // 18 columns with the 7 of ".ffffff"
+            secLen = static_cast<int>(e - p);
+            std::memmove(secText, p, static_cast<size_t>(secLen));
+            lastSec = sec;
+            lastNeg = neg;
+        }
+        std::memcpy(o, secText, static_cast<size_t>(secLen));
+        o += secLen;
+        *o++ = '.';
+        for (int i = 5; i >= 0; --i, frac /= 10) o[i] = char('0' + frac % 10);
+        o += 6;
+        *o++ = ' ';
+        *o++ = ' ';
     }
-    appendUtf8(out, bus);
-    {
-        char* p = head;
-        *p++ = ' ';
-        *p++ = ' ';
-        const int digits = f.isExtended() ? 8 : 3;
-        for (int i = digits - 1; i >= 0; --i) *p++ = "0123456789ABCDEF"[(f.id >> (4 * i)) & 15];
-        *p++ = ' ';
-        *p++ = ' ';
-        *p++ = '[';
-        if (f.len >= 10) *p++ = char('0' + f.len / 10);
-        *p++ = char('0' + f.len % 10);
-        *p++ = ']';
-        *p++ = ' ';
-        *p++ = ' ';
-        out.append(head, p - head);
+    o = putUtf8(o, bus);
+    *o++ = ' ';
+    *o++ = ' ';
+    const int digits = f.isExtended() ? 8 : 3;
+    for (int i = digits - 1; i >= 0; --i) *o++ = "0123456789ABCDEF"[(f.id >> (4 * i)) & 15];
+    *o++ = ' ';
+    *o++ = ' ';
+    *o++ = '[';
+    if (f.len >= 10) *o++ = char('0' + f.len / 10);
+    *o++ = char('0' + f.len % 10);
+    *o++ = ']';
+    *o++ = ' ';
+    *o++ = ' ';
+    if (f.isRemote()) {
+        std::memcpy(o, "remote request", 14);
+        o += 14;
+    } else {
+        const int n = f.payloadSize();
+        for (int i = 0; i < n; ++i) {
+            if (i) *o++ = ' ';
+            const uint8_t b = f.data[static_cast<size_t>(i)];
+            *o++ = "0123456789ABCDEF"[b >> 4];
+            *o++ = "0123456789ABCDEF"[b & 15];
+        }
     }
-    if (f.isRemote()) out.append("remote request");
-    else appendDataHex(out, f, true, true);
-    const int pad = 26 - 3 * f.payloadSize();
-    if (pad > 0) out.append(QByteArray(pad, ' '));
-    out.append("  ");
-    appendUtf8(out, d.summary);
-    for (const QString& w : d.warnings) out.append("  ! ").append(w.toUtf8());
-    out.append('\n');
+    int pad = 26 - 3 * f.payloadSize();
+    if (pad < 0) pad = 0;
+    pad += 2;
+    std::memset(o, ' ', static_cast<size_t>(pad));
+    o += pad;
+    o = putUtf8(o, d.summary);
+    for (const QString& w : d.warnings) {
+        std::memcpy(o, "  ! ", 4);
+        o += 4;
+        o = putUtf8(o, w);
+    }
+    *o++ = '\n';
+    out.resize(at + (o - start));
 }
 
 void appendTransferText(QByteArray& out, const Dissection& d) {

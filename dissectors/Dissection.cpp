@@ -10,12 +10,12 @@ void Dissection::reset(Level level) {
     service = canopen::Service::Unknown;
     node = -1;
     pdoNumber = 0;
-    summary.resize(0);
+    if (!summary.isEmpty()) summary.resize(0);  // keeps the capacity; skips the call when already empty
     if (!warnings.isEmpty()) warnings.clear();
     signalCount = 0;
     hasTransfer = false;
     fieldCount_ = 0;
-    tree.clear();
+    if (!tree.empty()) tree.clear();
 }
 
 const FlatField* Dissection::find(const char* key) const {

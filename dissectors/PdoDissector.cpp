@@ -7,12 +7,78 @@
 #include "dissectors/Services.h"
 #include "dissectors/ValueText.h"
 
+#include <algorithm>
+#include <cstring>
+#include <string>
+
 namespace coscope::dissect {
+
+namespace {
+// "TPDO1".."RPDO4" are built once; other numbers (custom COB-IDs) on demand.
+QString pdoKindText(bool tpdo, int number) {
+    static const QString kinds[2][4] = {
+        {QStringLiteral("RPDO1"), QStringLiteral("RPDO2"), QStringLiteral("RPDO3"), QStringLiteral("RPDO4")},
+        {QStringLiteral("TPDO1"), QStringLiteral("TPDO2"), QStringLiteral("TPDO3"), QStringLiteral("TPDO4")}};
+    if (number >= 1 && number <= 4) return kinds[tpdo ? 1 : 0][number - 1];
+    return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number);
+}
+// A growable UTF-16 buffer for building a summary with few allocations.
+class SummaryText {
+public:
+    void clear() { n_ = 0; }
+    SummaryText& operator+=(const QString& t) {
+        const auto k = static_cast<size_t>(t.size());
+        char16_t* p = room(k);
+        if (k) std::memcpy(p, t.constData(), k * sizeof(char16_t));
+        n_ += k;
+        return *this;
+    }
+    SummaryText& operator+=(const char* latin1) {
+        const size_t k = std::strlen(latin1);
+        char16_t* p = room(k);
+        for (size_t i = 0; i < k; ++i) p[i] = static_cast<char16_t>(static_cast<unsigned char>(latin1[i]));
+        n_ += k;
+        return *this;
+    }
+    SummaryText& operator+=(char16_t c) {
+        *room(1) = c;
+        ++n_;
+        return *this;
+    }
+    void appendDecimal(int64_t v) {
+        appendDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0);
+    }
+    void appendDecimal(uint64_t u, bool negative) {
+        char16_t tmp[24];
+        char16_t* e = tmp + 24;
+        char16_t* p = e;
+        do { *--p = static_cast<char16_t>(u'0' + u % 10); u /= 10; } while (u);
+        if (negative) *--p = u'-';
+        const auto k = static_cast<size_t>(e - p);
+        std::memcpy(room(k), p, k * sizeof(char16_t));
+        n_ += k;
+    }
+    // Replaces `out` with the text, reusing its capacity.
+    void storeIn(QString& out) const {
+        out.resize(static_cast<qsizetype>(n_));
+        if (n_) std::memcpy(static_cast<void*>(out.data()), buf_.data(), n_ * sizeof(char16_t));
+    }
+
+private:
+    // Space for k more code units at the end.
+    char16_t* room(size_t k) {
+        if (n_ + k > buf_.size()) buf_.resize(std::max<size_t>(2 * buf_.size(), n_ + k + 256));
+        return buf_.data() + n_;
+    }
+    std::u16string buf_;
+    size_t n_ = 0;
+};
+}  // namespace
 
 void dissectPdo(DissectCall& c) {
     Dissection& out = c.out;
     const bool tpdo = canopen::isTpdo(out.service);
-    auto kindText = [&] { return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(out.pdoNumber); };
+    auto kindText = [&] { return pdoKindText(tpdo, out.pdoNumber); };
     if (c.frame.isRemote()) {
         const QString kind = kindText();
         if (out.wantText()) out.summary = QStringLiteral("%1 node %2: remote request").arg(kind).arg(c.node);
@@ -28,15 +94,17 @@ void dissectPdo(DissectCall& c) {
             out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3").arg(kindText()).arg(c.len).arg((bits + 7) / 8));
     }
     if (!out.wantText()) return;
-    QString& s = out.summary;
-    s.resize(0);
+    // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once.
+    thread_local SummaryText s;
+    s.clear();
     s += kindText();
-    s += QStringLiteral(" node ");
-    s += QString::number(c.node);
+    s += " node ";
+    s.appendDecimal(c.node);
     s += u':';
     if (!mapped) {
         s += u' ';
         s += hexBytes(c.data, c.len, true);
+        s.storeIn(out.summary);
         if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
         return;
     }
@@ -55,13 +123,47 @@ void dissectPdo(DissectCall& c) {
         sig.bitLength = e.bits;
         sig.name = e.name;
         sig.unit = e.unit;
-        const QString text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
         if (first) s += u' ';
-        else s += QLatin1String(", ");
+        else s += ", ";
         first = false;
         s += e.name;
-        s += QLatin1String(" = ");
-        s += text;
+        s += " = ";
+        const od::TypeClass cls = e.typeKnown ? od::typeClass(e.type) : od::TypeClass::Unsigned;
+        QString text;
+        if (!out.wantTree() && e.factor == 1.0 && e.bits <= 64 && (cls == od::TypeClass::Signed || cls == od::TypeClass::Unsigned)) {
+            // Integers without a scale factor (nearly every PDO signal): the value and its
+            // text exactly as decodeBits() gives them, written straight into the summary.
+            uint64_t raw = 0;
+            if (at % 8 == 0 && e.bits % 8 == 0) {
+                for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
+            } else {
+                for (int k = 0; k < e.bits; ++k) {
+                    const int b = at + k;
+                    if (c.data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << k;
+                }
+            }
+            if (e.typeKnown && cls == od::TypeClass::Signed) {
+                sig.value.kind = FlatField::Kind::Int;
+                if (e.bits < 64) {
+                    const uint64_t sign = uint64_t(1) << (e.bits - 1);
+                    sig.value.i = static_cast<int64_t>((raw ^ sign) - sign);
+                } else {
+                    sig.value.i = static_cast<int64_t>(raw);
+                }
+                s.appendDecimal(sig.value.i);
+            } else {
+                sig.value.kind = FlatField::Kind::UInt;
+                sig.value.u = raw;
+                s.appendDecimal(raw, false);
+            }
+            if (!e.unit.isEmpty()) {
+                s += u' ';
+                s += e.unit;
+            }
+        } else {
+            text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
+            s += text;
+        }
         const int byteOff = at / 8;
         const int byteLen = (at + e.bits + 7) / 8 - byteOff;
         if (out.wantTree())
@@ -71,12 +173,13 @@ void dissectPdo(DissectCall& c) {
             uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
             if (!m.isEmpty()) {
-                s += QLatin1String(" (");
+                s += " (";
                 s += m;
                 s += u')';
             }
         }
     }
+    s.storeIn(out.summary);
 }
 
 }  // namespace coscope::dissect

@@ -25,9 +25,18 @@ QString abortText(const NodeState& n, uint32_t code) {
     return t.isEmpty() ? QStringLiteral("unknown abort code") : t;
 }
 
+// "6041:00 Statusword": index and sub-index in upper-case hex, then the name if any.
 QString objectLabel(uint16_t index, uint8_t sub, const QString& name) {
-    QString s = QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
-    if (!name.isEmpty()) s += QStringLiteral(" ") + name;
+    static const char16_t digits[] = u"0123456789ABCDEF";
+    const char16_t label[7] = {digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15],
+                               u':', digits[sub >> 4], digits[sub & 15]};
+    QString s;
+    s.reserve(7 + (name.isEmpty() ? 0 : 1 + name.size()));
+    s.append(reinterpret_cast<const QChar*>(label), 7);
+    if (!name.isEmpty()) {
+        s += u' ';
+        s += name;
+    }
     return s;
 }
 
@@ -84,7 +93,7 @@ void dissectSdo(DissectCall& c) {
         out.addInt("sdo.index", f.index);
         out.addInt("sdo.sub", f.sub);
     }
-    const QString who = QStringLiteral("node %1").arg(c.node);
+    const QString who = QLatin1StringView("node ") + QString::number(c.node);
     QString& s = out.summary;
     QString valueTextOut;
     QString meaning;
@@ -116,14 +125,14 @@ void dissectSdo(DissectCall& c) {
 
     switch (f.command) {
     case SdoCommand::InitiateDownloadRequest:
-        s = QStringLiteral("SDO write %1 %2").arg(who, objectLabel(f.index, f.sub, name));
+        s = QLatin1StringView("SDO write ") + who + u' ' + objectLabel(f.index, f.sub, name);
         if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
         else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
         break;
-    case SdoCommand::InitiateDownloadResponse: s = QStringLiteral("SDO write ok %1 %2").arg(who, objectLabel(f.index, f.sub, name)); break;
-    case SdoCommand::InitiateUploadRequest: s = QStringLiteral("SDO read %1 %2").arg(who, objectLabel(f.index, f.sub, name)); break;
+    case SdoCommand::InitiateDownloadResponse: s = QLatin1StringView("SDO write ok ") + who + u' ' + objectLabel(f.index, f.sub, name); break;
+    case SdoCommand::InitiateUploadRequest: s = QLatin1StringView("SDO read ") + who + u' ' + objectLabel(f.index, f.sub, name); break;
     case SdoCommand::InitiateUploadResponse:
-        s = QStringLiteral("SDO read %1 %2").arg(who, objectLabel(f.index, f.sub, name));
+        s = QLatin1StringView("SDO read ") + who + u' ' + objectLabel(f.index, f.sub, name);
         if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
         else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
         break;

@@ -24,7 +24,18 @@ void TraceStats::add(const CanFrame& f) {
         t0_ = f.timestampNs;
         haveT0_ = true;
     }
-    const int64_t sec = (f.timestampNs - t0_) / 1000000000;
+    const int64_t delta = f.timestampNs - t0_;
+    int64_t sec;
+    if (sec_ >= 0 && delta >= secLo_ && delta < secHi_) {
+        sec = sec_;
+    } else {
+        sec = delta / 1000000000;  // truncates toward zero: (-1 s, 1 s) is second 0
+        if (sec >= 0 && sec < 1000000) {
+            sec_ = sec;
+            secLo_ = sec == 0 ? -999999999 : sec * 1000000000;
+            secHi_ = (sec + 1) * 1000000000;
+        }
+    }
     if (sec >= 0 && sec < 1000000) {
         if (static_cast<size_t>(sec) >= bitsPerSecond_.size()) bitsPerSecond_.resize(static_cast<size_t>(sec) + 1, 0.0);
         bitsPerSecond_[static_cast<size_t>(sec)] += frameBits(f);

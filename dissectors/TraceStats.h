@@ -52,6 +52,9 @@ private:
     std::vector<double> bitsPerSecond_;
     int64_t t0_ = 0;
     bool haveT0_ = false;
+    // The second the last frame fell in and its range of (timestamp - t0_), [secLo_, secHi_):
+    // frames of the same second skip the division.
+    int64_t sec_ = -1, secLo_ = 0, secHi_ = 0;
     std::vector<QString> warningSamples_;
 };
 

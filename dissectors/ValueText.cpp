@@ -23,7 +23,11 @@ QString withUnit(const FlatField& v, const QString& unit, double factor, FlatFie
         out.d = raw * factor;
     }
     QString t = valueText(out);
-    if (!unit.isEmpty()) t += u' ' + unit;
+    if (!unit.isEmpty()) {
+        t.reserve(t.size() + 1 + unit.size());
+        t += u' ';
+        t += unit;
+    }
     return t;
 }
 
@@ -59,12 +63,22 @@ void fromInteger(od::DataType type, bool typeKnown, uint64_t raw, int bits, Flat
     value.u = raw;
 }
 
+// Decimal text of an integer, as QString::number gives it, without its general machinery.
+QString decimalText(uint64_t u, bool negative) {
+    char16_t buf[24];
+    char16_t* e = buf + 24;
+    char16_t* p = e;
+    do { *--p = char16_t(u'0' + u % 10); u /= 10; } while (u);
+    if (negative) *--p = u'-';
+    return QString(reinterpret_cast<const QChar*>(p), e - p);
+}
+
 }  // namespace
 
 QString valueText(const FlatField& v) {
     switch (v.kind) {
-    case FlatField::Kind::Int: return QString::number(v.i);
-    case FlatField::Kind::UInt: return QString::number(v.u);
+    case FlatField::Kind::Int: return v.i < 0 ? decimalText(0 - static_cast<uint64_t>(v.i), true) : decimalText(static_cast<uint64_t>(v.i), false);
+    case FlatField::Kind::UInt: return decimalText(v.u, false);
     case FlatField::Kind::Real: return QString::number(v.d, 'g', 9);
     case FlatField::Kind::Bool: return v.i ? QStringLiteral("true") : QStringLiteral("false");
     case FlatField::Kind::Text: return v.text;

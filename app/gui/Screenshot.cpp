@@ -48,7 +48,15 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
             const int rows = window->traceDock()->model()->rowCount();
             if (rows > 0) {
                 window->traceDock()->setFollow(false);
-                tv->selectRow(std::max(0, rows - 8));
+                // A TPDO near the end if there is one (named signals), else a row near the end.
+                const TraceModel* m = window->traceDock()->model();
+                int pick = std::max(0, rows - 8);
+                for (int r = rows - 4; r >= 0 && r > rows - 200; --r)
+                    if (m->data(m->index(r, TraceModel::Service), Qt::DisplayRole).toString().startsWith(QLatin1String("TPDO"))) {
+                        pick = r;
+                        break;
+                    }
+                tv->selectRow(pick);
                 tv->scrollToBottom();
             }
         }

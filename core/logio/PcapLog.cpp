@@ -3,7 +3,16 @@
 
 #include "core/logio/TextScan.h"
 
+#include <QFile>
 #include <QIODevice>
+
+#include <algorithm>
+#include <limits>
+
+#if defined(Q_OS_UNIX)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 #include <cstring>
 
@@ -27,14 +36,63 @@ int64_t PcapReader::toNs(uint64_t ticks, uint64_t ups) const {
     return int64_t(sec * 1000000000ULL + (unsigned __int128)rem * 1000000000ULL / ups);
 }
 
+namespace {
+constexpr qsizetype kReadChunk = 1 << 20;  // read ahead 1 MiB at a time
+}  // namespace
+
+// A regular file is mapped and parsed in place (no copy, no per-packet reads); anything else
+// (pipes, sockets, buffers, files that cannot be mapped) is read in 1 MiB chunks.
+void PcapReader::mapInput() {
+    mapTried_ = true;
+    auto* file = qobject_cast<QFile*>(device());
+    if (!file || file->isSequential()) return;
+    const qint64 at = file->pos(), size = file->size();
+    if (size <= at || size - at > qint64(std::numeric_limits<qsizetype>::max())) return;
+    uchar* m = file->map(at, size - at);
+    if (!m) return;
+#if defined(Q_OS_UNIX) && defined(MADV_SEQUENTIAL)
+    // The map is walked once from start to end: let the kernel read ahead.
+    const auto page = uintptr_t(sysconf(_SC_PAGESIZE));
+    const uintptr_t base = uintptr_t(m) & ~(page - 1);
+    madvise(reinterpret_cast<void*>(base), size_t(uintptr_t(m) + uintptr_t(size - at) - base), MADV_SEQUENTIAL);
+#endif
+    data_ = m;
+    pos_ = 0;
+    end_ = qsizetype(size - at);
+    eof_ = true;
+    mapStart_ = at;
+}
+
+const unsigned char* PcapReader::take(qint64 n, qint64* got) {
+    if (!mapTried_) mapInput();
+    if (end_ - pos_ < n && !eof_) {
+        // Move what is left to the front and read more behind it, until n bytes or the end.
+        const qsizetype keep = end_ - pos_;
+        const qsizetype want = std::max<qsizetype>(qsizetype(n), kReadChunk);
+        if (buf_.size() < want) buf_.resize(want);
+        if (keep && pos_) std::memmove(buf_.data(), buf_.constData() + pos_, size_t(keep));
+        pos_ = 0;
+        end_ = keep;
+        while (end_ < buf_.size() && !eof_) {
+            const qint64 r = device()->read(buf_.data() + end_, buf_.size() - end_);
+            if (r <= 0) eof_ = true;
+            else end_ += qsizetype(r);
+            if (end_ - pos_ >= n) break;
+        }
+        data_ = reinterpret_cast<const unsigned char*>(buf_.constData());
+    }
+    const qint64 avail = std::min<qint64>(n, end_ - pos_);
+    const unsigned char* p = data_ + pos_;
+    pos_ += qsizetype(avail);
+    *got = avail;
+    return p;
+}
+
 bool PcapReader::readExact(char* dst, qint64 n) {
     qint64 got = 0;
-    while (got < n) {
-        const qint64 r = device()->read(dst + got, n - got);
-        if (r <= 0) return false;
-        got += r;
-    }
-    return true;
+    const unsigned char* p = take(n, &got);
+    if (got) std::memcpy(dst, p, size_t(got));
+    return got == n;
 }
 
 bool PcapReader::readHeader() {
@@ -88,8 +146,9 @@ bool PcapReader::parseSectionHeader(const unsigned char* first8) {
         fail(QStringLiteral("pcapng section header has a bad length %1").arg(total));
         return false;
     }
-    QByteArray rest(qsizetype(total - 12), '\0');
-    if (!readExact(rest.data(), rest.size())) {
+    qint64 got = 0;
+    take(qint64(total) - 12, &got);
+    if (got != qint64(total) - 12) {
         fail(QStringLiteral("truncated pcapng section header"));
         return false;
     }
@@ -166,8 +225,8 @@ bool PcapReader::decodePacket(const unsigned char* p, uint32_t capLen, const Int
 }
 
 int PcapReader::readPcapRecord(CanFrame& f) {
-    unsigned char h[16];
-    const qint64 got = device()->read(reinterpret_cast<char*>(h), 16);
+    qint64 got = 0;
+    const unsigned char* h = take(16, &got);
     if (got == 0) return -1;
     ++packet_;
     if (got < 16) {
@@ -179,39 +238,41 @@ int PcapReader::readPcapRecord(CanFrame& f) {
         fail(QStringLiteral("packet %1: captured length %2 is implausible; file is damaged").arg(packet_).arg(capLen));
         return -1;
     }
-    block_.resize(capLen);
-    if (!readExact(block_.data(), capLen)) {
+    const int64_t ts = int64_t(u32(h)) * 1000000000LL + toNs(u32(h + 4), pcapItf_.unitsPerSecond);
+    const unsigned char* pkt = take(capLen, &got);
+    if (got != qint64(capLen)) {
         warn(int64_t(packet_), QStringLiteral("truncated packet at the end of the file"));
         return -1;
     }
-    f.timestampNs = int64_t(u32(h)) * 1000000000LL + toNs(u32(h + 4), pcapItf_.unitsPerSecond);
-    return decodePacket(reinterpret_cast<const unsigned char*>(block_.constData()), capLen, pcapItf_, f) ? 1 : 0;
+    f.timestampNs = ts;
+    return decodePacket(pkt, capLen, pcapItf_, f) ? 1 : 0;
 }
 
 int PcapReader::readPcapngBlock(CanFrame& f) {
     unsigned char h[8];
-    const qint64 got = device()->read(reinterpret_cast<char*>(h), 8);
+    qint64 got = 0;
+    const unsigned char* hp = take(8, &got);
     if (got == 0) return -1;
     if (got < 8) {
         warn(int64_t(packet_ + 1), QStringLiteral("truncated block at the end of the file"));
         return -1;
     }
+    std::memcpy(h, hp, 8);
     if (le32(h) == kShb) return parseSectionHeader(h) ? 0 : -1;
     const uint32_t type = u32(h), total = u32(h + 4);
     if (total < 12 || total % 4 || total > kMaxBlock) {
         fail(QStringLiteral("after packet %1: block of type %2 has a bad length %3; file is damaged").arg(packet_).arg(type).arg(total));
         return -1;
     }
-    block_.resize(total - 8);
-    if (!readExact(block_.data(), block_.size())) {
+    const unsigned char* b = take(qint64(total) - 8, &got);
+    if (got != qint64(total) - 8) {
         warn(int64_t(packet_ + 1), QStringLiteral("truncated block at the end of the file"));
         return -1;
     }
-    const auto* b = reinterpret_cast<const unsigned char*>(block_.constData());
     const uint32_t bodyLen = total - 12;
     if (type == kIdb) {
         if (bodyLen < 8) return 0;
-        parseInterface(QByteArray(block_.constData(), bodyLen));
+        parseInterface(QByteArray(reinterpret_cast<const char*>(b), bodyLen));
         return 0;
     }
     if (type == kEpb || type == kObsoletePacket) {
@@ -253,13 +314,53 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
         if ((n & 0x3FF) == 0x3FF && isCancelled()) break;
         CanFrame& f = out[n];
         f = CanFrame{};
-        const int r = ng_ ? readPcapngBlock(f) : readPcapRecord(f);
+        int r = -2;
+        if (ng_ && end_ - pos_ >= 32) {
+            // Fast path: a well-formed EPB of a known interface lying whole in the read-ahead
+            // buffer is decoded in place; anything else takes the general path below.
+            const unsigned char* h = data_ + pos_;
+            const auto rd = [this](const unsigned char* q) { return swapped_ ? be32(q) : le32(q); };
+            const uint32_t type = rd(h), total = rd(h + 4);
+            if (type == kEpb && total >= 32 && total % 4 == 0 && total <= kMaxBlock && qint64(total) <= end_ - pos_) {
+                const unsigned char* b = h + 8;
+                const uint32_t itfId = rd(b), capLen = rd(b + 12);
+                if (itfId < interfaces_.size() && capLen <= total - 32) {
+                    pos_ += qsizetype(total);
+                    ++packet_;
+                    const Interface& itf = interfaces_[itfId];
+                    const uint64_t ticks = (uint64_t(rd(b + 4)) << 32) | rd(b + 8);
+                    f.timestampNs = toNs(ticks, itf.unitsPerSecond);
+                    const unsigned char* p = b + 20;
+                    if (itf.linkType == kLinkTypeSocketCan && capLen >= 8 && capLen < 72 && !(p[5] & kCanfdFdf) && p[4] <= 8 &&
+                        capLen - 8 >= p[4]) {
+                        // A classic frame captured whole: what decodePacket() does for it.
+                        const uint32_t canId = be32(p);
+                        f.bus = itf.bus;
+                        if (canId & kCanErr) {
+                            f.flags |= CanFrame::Error;
+                            f.id = canId & 0x1FFFFFFF;
+                        } else {
+                            f.id = canId & ((canId & kCanEff) ? 0x1FFFFFFFU : 0x7FFU);
+                            if (canId & kCanEff) f.flags |= CanFrame::Extended;
+                            if (canId & kCanRtr) f.flags |= CanFrame::Remote;
+                        }
+                        f.len = p[4];
+                        if (!f.isRemote()) std::memcpy(f.data.data(), p + 8, f.len);
+                        r = 1;
+                    } else {
+                        r = decodePacket(p, capLen, itf, f) ? 1 : 0;
+                    }
+                }
+            }
+        }
+        if (r == -2) r = ng_ ? readPcapngBlock(f) : readPcapRecord(f);
         if (r < 0) {
             finish();
             break;
         }
         if (r > 0) ++n;
     }
+    if (mapStart_ >= 0) device()->seek(mapStart_ + pos_);  // progress() follows the parse position
     return n;
 }
 

@@ -30,6 +30,9 @@ private:
         uint8_t bus = 0;
     };
     bool readExact(char* dst, qint64 n);
+    // Up to n bytes from the input, buffered in large chunks (no per-packet device reads);
+    // the pointer stays valid until the next call. *got < n only at the end of the input.
+    const unsigned char* take(qint64 n, qint64* got);
     int readPcapRecord(CanFrame& frame);    // 1 frame, 0 skipped, -1 end
     int readPcapngBlock(CanFrame& frame);   // 1 frame, 0 skipped, -1 end
     bool parseSectionHeader(const unsigned char* first8);
@@ -44,7 +47,14 @@ private:
     Interface pcapItf_;     // classic pcap: the one link type
     std::vector<Interface> interfaces_;
     uint64_t packet_ = 0;
-    QByteArray block_;
+    void mapInput();
+    QByteArray buf_;  // read-ahead: [pos_, end_) of data_ not consumed yet
+    const unsigned char* data_ = nullptr;  // buf_ or the mapped file
+    qsizetype pos_ = 0;
+    qsizetype end_ = 0;
+    bool eof_ = false;
+    bool mapTried_ = false;
+    qint64 mapStart_ = -1;  // file offset of data_[0] when the file is mapped, else -1
 };
 
 // Writes pcapng (SHB, one IDB per bus with link type 227 and nanosecond resolution, EPBs),

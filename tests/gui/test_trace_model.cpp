@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The trace model and filters over a trace store: columns, time modes, latest-per-COB-ID,
-// bookmarks, filter parsing and the off-thread filter job.
+// bookmarks, filter parsing and the off-thread filter job; the trace decoder (dissectors with
+// their network context, snapshots every 4096 frames) behind the summary column.
+#include "app/gui/trace/TraceDecoder.h"
 #include "app/gui/trace/TraceFilter.h"
 #include "app/gui/trace/TraceModel.h"
 
@@ -15,6 +17,13 @@ CanFrame at(int64_t ms, CanFrame f) {
     return f;
 }
 QString cell(const TraceModel& m, int row, int col) { return m.data(m.index(row, col), Qt::DisplayRole).toString(); }
+// SDO expedited download request (client -> node) and its confirmation.
+void sdoWrite(TraceStore& s, int64_t ms, int node, uint16_t index, uint8_t sub, uint32_t v, int size) {
+    const uint8_t cs = static_cast<uint8_t>(0x23 | ((4 - size) << 2));
+    s.append(at(ms, CanFrame::classic(0x600 + node, {cs, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(v), uint8_t(v >> 8),
+                                                     uint8_t(v >> 16), uint8_t(v >> 24)})));
+    s.append(at(ms + 1, CanFrame::classic(0x580 + node, {0x60, uint8_t(index), uint8_t(index >> 8), sub, 0, 0, 0, 0})));
+}
 }  // namespace
 
 class TestTraceModel : public QObject {
@@ -173,6 +182,92 @@ private slots:
         QVERIFY(job.isDone());
         QVERIFY(job.isCancelled());
         QVERIFY(job.takeResult().size() < 2'000'000);  // stopped early
+    }
+
+
+    // The virtual drives' traffic through the real dissectors: node 2 an AIMOTOR drive (TPDO1 =
+    // 6041h statusword, 6061h mode display, 6064h position), node 1 without a dictionary.
+    void traceDecoding() {
+        auto store = std::make_shared<TraceStore>();
+        store->append(at(0, CanFrame::classic(0x182, {0x37, 0x02, 0x08, 0x10, 0x27, 0x00, 0x00})));  // 0 TPDO1 node 2
+        store->append(at(1, CanFrame::classic(0x602, {0x40, 0x64, 0x60, 0x00, 0, 0, 0, 0})));           // 1 SDO upload 6064h
+        store->append(at(2, CanFrame::classic(0x582, {0x43, 0x64, 0x60, 0x00, 0x10, 0x27, 0, 0})));     // 2 = 10000
+        store->append(at(3, CanFrame::classic(0x601, {0x40, 0x41, 0x60, 0x00, 0, 0, 0, 0})));           // 3 node 1 6041h
+        // Filler past the first snapshot, then node 2 remaps TPDO1 to 6064h only (CiA 301 §7.5.2.36).
+        std::vector<CanFrame> sync(5000, at(4, CanFrame::classic(0x080, {})));
+        store->append(sync);
+        const FrameNo remapAt = static_cast<FrameNo>(store->size());
+        sdoWrite(*store, 10, 2, 0x1800, 1, 0x80000182, 4);
+        sdoWrite(*store, 12, 2, 0x1A00, 0, 0, 1);
+        sdoWrite(*store, 14, 2, 0x1A00, 1, 0x60640020, 4);
+        sdoWrite(*store, 16, 2, 0x1A00, 0, 1, 1);
+        sdoWrite(*store, 18, 2, 0x1800, 1, 0x182, 4);
+        const FrameNo remapped = store->append(at(20, CanFrame::classic(0x182, {0x20, 0x4E, 0x00, 0x00})));  // 20000
+
+        auto decoder = std::make_shared<TraceDecoder>(false);
+        decoder->setStore(store);
+        decoder->setDictionaries({{2, QStringLiteral("aimotor")}});
+        QVERIFY2(decoder->lastError().isEmpty(), qPrintable(decoder->lastError()));
+
+        TraceModel m;
+        m.setStore(store);
+        m.setDecoder(decoder);
+        // Far frame first (builds the snapshot at 4096), then the early ones from snapshot 0.
+        const QString late = m.summaryOf(remapped);
+        QVERIFY2(late.contains(QStringLiteral("Position actual value")), qPrintable(late));
+        QVERIFY2(!late.contains(QStringLiteral("Statusword")), qPrintable(late));
+        QCOMPARE(decoder->checkpointCount(), size_t{2});
+        const QString pdo = m.summaryOf(0);
+        QVERIFY2(pdo.contains(QStringLiteral("Statusword")), qPrintable(pdo));
+        QVERIFY2(pdo.contains(QStringLiteral("Position actual value")), qPrintable(pdo));
+        const QString sdo = m.summaryOf(2);
+        QVERIFY2(sdo.contains(QStringLiteral("Position actual value")), qPrintable(sdo));
+        const QString generic = m.summaryOf(3);  // no dictionary: generic CiA 402 names
+        QVERIFY2(generic.contains(QStringLiteral("Statusword")), qPrintable(generic));
+        QVERIFY(!m.summaryOf(remapAt).isEmpty());
+
+        // The details pane's field tree: the named signal with its bit positions.
+        dissect::Dissection d;
+        d.reset(dissect::Dissection::Level::Tree);
+        decoder->decodeAt(*store, 0, d);
+        QStringList tree;
+        bool statuswordBits = false;
+        for (const auto& t : d.tree) {
+            tree << t.label + QLatin1Char('=') + t.value;
+            if (t.label.contains(QStringLiteral("Statusword")) && t.byteOffset == 0 && t.byteLength == 2) statuswordBits = true;
+        }
+        QVERIFY2(statuswordBits, qPrintable(tree.join(QLatin1Char('\n'))));
+
+        // A filter on decoded text sees the dissectors' summaries.
+        const auto rows = runFilter(*store, *TraceFilter::parse(QStringLiteral("position actual"), nullptr), *decoder, 0,
+                                    static_cast<FrameNo>(store->size()), {});
+        QVERIFY(rows && rows->size() >= 3);
+
+        // Reassigning dictionaries is a new revision: the model decodes again.
+        const uint64_t rev = decoder->revision();
+        decoder->setDictionaries({});
+        QVERIFY(decoder->revision() != rev);
+        m.refresh();
+        const QString unnamed = m.summaryOf(0);  // no mapping known for node 2 any more
+        QVERIFY2(!unnamed.contains(QStringLiteral("Position actual value")), qPrintable(unnamed));
+    }
+
+    // The worker builds the snapshots as the store grows, one per 4096 frames.
+    void traceDecoderWorker() {
+        auto store = std::make_shared<TraceStore>();
+        TraceDecoder decoder;
+        decoder.setStore(store);
+        std::vector<CanFrame> frames(3 * 4096 + 10, CanFrame::classic(0x181, {0x37, 0x02}));
+        store->append(frames);
+        QTRY_COMPARE_WITH_TIMEOUT(decoder.checkpointCount(), size_t{4}, 5000);
+        store->append(frames);
+        QTRY_COMPARE_WITH_TIMEOUT(decoder.checkpointCount(), size_t{7}, 5000);
+        dissect::Dissection d;
+        d.reset(dissect::Dissection::Level::Flat);
+        decoder.decodeAt(*store, static_cast<FrameNo>(store->size() - 1), d);
+        QCOMPARE(d.service, canopen::Service::Tpdo1);
+        decoder.setStore(std::make_shared<TraceStore>());  // another source: snapshots forgotten
+        QCOMPARE(decoder.checkpointCount(), size_t{1});
     }
 };
 

@@ -6,12 +6,20 @@
 
 #include <QFileInfo>
 
+#include <map>
+
 #include <spdlog/spdlog.h>
 
 namespace coscope::gui {
 
 Workspace::Workspace(QObject* parent)
-    : QObject(parent), decoder_(defaultFrameDecoder()), store_(std::make_shared<TraceStore>()), events_(decoder_) {}
+    : QObject(parent),
+      traceDecoder_(std::make_shared<TraceDecoder>()),
+      decoder_(traceDecoder_),
+      store_(std::make_shared<TraceStore>()),
+      events_(decoder_) {
+    traceDecoder_->setStore(store_);
+}
 
 Workspace::~Workspace() { reset(); }
 
@@ -31,6 +39,8 @@ void Workspace::reset() {
     nodes_.clear();
     events_.clear();
     store_ = std::make_shared<TraceStore>();
+    traceDecoder_->setStore(store_);
+    syncedNodesRevision_ = ~uint64_t{0};
     reportedDropped_ = reportedErrors_ = 0;
     sourceName_.clear();
 }
@@ -108,7 +118,18 @@ QStringList Workspace::busNames() const {
     return {};
 }
 
+void Workspace::syncDictionaries() {
+    const uint64_t rev = nodes_.revision();
+    if (rev == syncedNodesRevision_) return;
+    syncedNodesRevision_ = rev;
+    std::map<int, QString> names;
+    for (const NodeInfo& n : nodes_.snapshot())
+        if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
+    traceDecoder_->setDictionaries(names);
+}
+
 void Workspace::poll() {
+    syncDictionaries();
     if (!bus_) return;
     events_.checkHeartbeats(nowNs());
     const auto c = bus_->counters();

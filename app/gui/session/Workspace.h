@@ -5,6 +5,7 @@
 #include "app/gui/nodes/NodeTable.h"
 #include "app/gui/trace/FrameDecoder.h"
 #include "app/gui/trace/LogLoadJob.h"
+#include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanBus.h"
 #include "core/trace/CaptureSession.h"
 
@@ -43,6 +44,7 @@ public:
     NodeTable& nodes() { return nodes_; }
     EventLog& events() { return events_; }
     const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
+    TraceDecoder& traceDecoder() { return *traceDecoder_; }
 
     CanBus* bus() const { return bus_.get(); }
     bool isLive() const { return bus_ != nullptr; }
@@ -54,7 +56,10 @@ public:
     QString sourceName() const { return sourceName_; }
     QStringList busNames() const;
 
-    // Called by the window's refresh timer: heartbeat timeouts, dropped-frame and error counts.
+    // Hands the node table's dictionaries (matched or assigned) to the trace decoder.
+    void syncDictionaries();
+    // Called by the window's refresh timer: heartbeat timeouts, dropped-frame and error counts,
+    // dictionaries for the decoder.
     void poll();
 
 signals:
@@ -66,6 +71,7 @@ private:
     void reset();
     std::vector<CaptureSession::Consumer> analysisConsumers();
 
+    std::shared_ptr<TraceDecoder> traceDecoder_;
     std::shared_ptr<const FrameDecoder> decoder_;
     std::shared_ptr<TraceStore> store_;
     NodeTable nodes_;
@@ -78,6 +84,7 @@ private:
     QString sourceName_;
     uint64_t reportedDropped_ = 0;
     uint64_t reportedErrors_ = 0;
+    uint64_t syncedNodesRevision_ = 0;
 };
 
 }  // namespace coscope::gui

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "core/trace/TraceStore.h"
 #include "dissectors/Dissection.h"
 
 #include <memory>
@@ -16,12 +17,18 @@ namespace coscope::gui {
 class FrameDecoder {
 public:
     virtual ~FrameDecoder() = default;
+    // One frame on its own (no trace context). `out` has been reset to the wanted level.
     virtual void decode(const CanFrame& frame, dissect::Dissection& out) const = 0;
+    // Frame n of `store`, in the context of the frames before it (PDO mappings, SDO transfers).
+    // The default decodes the frame on its own.
+    virtual void decodeAt(const TraceStore& store, FrameNo n, dissect::Dissection& out) const { decode(store.frame(n), out); }
+    // Changes whenever results given before may be stale (dictionaries reassigned, store replaced).
+    virtual uint64_t revision() const { return 0; }
 };
 
 // The decoder the app uses: stateless CANopen decoding of single frames from the codecs in
 // core/canopen (CiA 301 pre-defined connection set). The dissector registry with its network
-// context (dictionary names, PDO mappings, SDO reassembly) replaces it when present.
+// context (dictionary names, PDO mappings, SDO reassembly) is TraceDecoder (TraceDecoder.h).
 std::shared_ptr<const FrameDecoder> defaultFrameDecoder();
 
 }  // namespace coscope::gui

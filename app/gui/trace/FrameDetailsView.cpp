@@ -52,12 +52,23 @@ void FrameDetailsView::clear() {
 }
 
 void FrameDetailsView::showFrame(const CanFrame& f, uint64_t number) {
-    frame_ = f;
-    highlight_ = {0, 0};
-    tree_->clear();
     dissect::Dissection d;
     d.reset(dissect::Dissection::Level::Tree);
     decoder_->decode(f, d);
+    showDecoded(f, number, d);
+}
+
+void FrameDetailsView::showFrame(const TraceStore& store, FrameNo n) {
+    dissect::Dissection d;
+    d.reset(dissect::Dissection::Level::Tree);
+    decoder_->decodeAt(store, n, d);
+    showDecoded(store.frame(n), static_cast<uint64_t>(n) + 1, d);
+}
+
+void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dissect::Dissection& d) {
+    frame_ = f;
+    highlight_ = {0, 0};
+    tree_->clear();
 
     auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), d.summary});
     const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()

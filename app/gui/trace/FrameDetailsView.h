@@ -22,7 +22,9 @@ public:
     explicit FrameDetailsView(QWidget* parent = nullptr);
 
     void setDecoder(std::shared_ptr<const FrameDecoder> decoder) { decoder_ = std::move(decoder); }
-    void showFrame(const CanFrame& frame, uint64_t number);
+    void showFrame(const CanFrame& frame, uint64_t number);  // decoded on its own
+    // Frame n of the store, decoded in the context of the frames before it; shown as n + 1.
+    void showFrame(const TraceStore& store, FrameNo n);
     void clear();
 
     QTreeWidget* tree() const { return tree_; }
@@ -31,6 +33,7 @@ public:
 
 private:
     void renderHex();
+    void showDecoded(const CanFrame& frame, uint64_t number, const dissect::Dissection& d);
 
     std::shared_ptr<const FrameDecoder> decoder_ = defaultFrameDecoder();
     QTreeWidget* tree_ = nullptr;

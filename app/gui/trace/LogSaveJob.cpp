@@ -36,11 +36,15 @@ void LogSaveJob::run() {
         return;
     }
     writer->setBusNames(busNames_);
+    // The writer asks for the summary of the frame being written, from inside write(): decode
+    // it as frame `current` of the store, in the context of the frames before it.
     auto decoder = decoder_;
-    writer->setSummaryProvider([decoder](const CanFrame& f) {
+    auto store = store_;
+    auto current = std::make_shared<FrameNo>(0);
+    writer->setSummaryProvider([decoder, store, current](const CanFrame&) {
         dissect::Dissection d;
         d.reset(dissect::Dissection::Level::Flat);
-        decoder->decode(f, d);
+        decoder->decodeAt(*store, *current, d);
         return d.summary;
     });
     if (!writer->open(path_)) {
@@ -54,6 +58,7 @@ void LogSaveJob::run() {
             if (isCancelled()) break;
         }
         const FrameNo n = frames_ ? (*frames_)[i] : static_cast<FrameNo>(i);
+        *current = n;
         if (!writer->write(store_->frame(n))) break;
         written_.store(i + 1, std::memory_order_relaxed);
     }

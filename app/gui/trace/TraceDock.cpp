@@ -170,6 +170,10 @@ void TraceDock::refresh() {
         filterJob_.reset();
     }
     if (!filterJob_) model_->refresh();
+    if (shownDetailsFor_ >= 0 && workspace_->decoder()->revision() != detailsRevision_) {  // dictionaries changed
+        shownDetailsFor_ = -1;
+        onCurrentChanged();
+    }
     model_->setBusNames(workspace_->busNames());
     if (follow_->isChecked() && model_->rowCount() > 0) view_->scrollToBottom();
     const size_t total = workspace_->store() ? workspace_->store()->size() : 0;
@@ -286,7 +290,8 @@ void TraceDock::onCurrentChanged() {
     const FrameNo n = model_->frameAt(idx.row());
     if (static_cast<int64_t>(n) == shownDetailsFor_) return;
     shownDetailsFor_ = n;
-    details_->showFrame(model_->store()->frame(n), static_cast<uint64_t>(n) + 1);
+    detailsRevision_ = workspace_->decoder()->revision();
+    details_->showFrame(*model_->store(), n);
 }
 
 }  // namespace coscope::gui

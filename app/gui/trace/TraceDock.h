@@ -69,6 +69,7 @@ private:
     QLabel* countLabel_ = nullptr;
     std::unique_ptr<FilterJob> filterJob_;
     int64_t shownDetailsFor_ = -1;
+    uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
 };
 
 }  // namespace coscope::gui

@@ -115,7 +115,7 @@ bool TraceFilter::matches(const TraceStore& store, FrameNo n, const FrameDecoder
     }
     if (!text.isEmpty()) {
         scratch.reset(dissect::Dissection::Level::Flat);
-        decoder.decode(store.frame(n), scratch);
+        decoder.decodeAt(store, n, scratch);
         if (!scratch.summary.contains(text, Qt::CaseInsensitive)) return false;
     }
     return true;

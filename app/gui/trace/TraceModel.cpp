@@ -39,6 +39,7 @@ void TraceModel::setStore(std::shared_ptr<const TraceStore> store) {
 void TraceModel::setDecoder(std::shared_ptr<const FrameDecoder> decoder) {
     decoder_ = decoder ? std::move(decoder) : defaultFrameDecoder();
     summaries_.clear();
+    decoderRevision_ = decoder_->revision();
     if (rows_ > 0) emit dataChanged(index(0, Summary), index(rows_ - 1, Summary));
 }
 
@@ -86,6 +87,11 @@ void TraceModel::setLatestPerCobId(bool on) {
 
 void TraceModel::refresh() {
     if (!store_) return;
+    if (decoder_->revision() != decoderRevision_) {  // dictionaries changed: decode again
+        decoderRevision_ = decoder_->revision();
+        summaries_.clear();
+        if (rows_ > 0) emit dataChanged(index(0, Summary), index(rows_ - 1, Summary));
+    }
     const size_t size = store_->size();
     if (size > 0 && !haveT0_) {
         t0_ = store_->record(0).timestampNs;
@@ -184,7 +190,7 @@ QString TraceModel::summaryOf(FrameNo n) const {
     if (it != summaries_.end()) return it->second;
     if (summaries_.size() >= kSummaryCacheLimit) summaries_.clear();
     scratch_.reset(dissect::Dissection::Level::Flat);
-    decoder_->decode(store_->frame(n), scratch_);
+    decoder_->decodeAt(*store_, n, scratch_);
     QString text = scratch_.summary;
     if (!scratch_.warnings.isEmpty()) text += QStringLiteral("  ⚠ ") + scratch_.warnings.join(QStringLiteral("; "));
     return summaries_.emplace(n, text).first->second;

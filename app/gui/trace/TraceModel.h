@@ -92,6 +92,7 @@ private:
     std::set<FrameNo> bookmarks_;
     mutable std::unordered_map<FrameNo, QString> summaries_;
     mutable dissect::Dissection scratch_;
+    uint64_t decoderRevision_ = 0;  // of the cached summaries
 };
 
 }  // namespace coscope::gui
