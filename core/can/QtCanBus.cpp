@@ -11,7 +11,7 @@
 
 namespace coscope {
 
-QtCanBus::QtCanBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+QtCanBus::QtCanBus(const BusUrl& url, QObject* parent) : ThreadedCanBus(url, parent) {}
 
 QtCanBus::~QtCanBus() { close(); }
 
@@ -73,31 +73,7 @@ QCanBusFrame QtCanBus::toQt(const CanFrame& f) {
     return q;
 }
 
-void QtCanBus::open() {
-    if (thread_) return;
-    setState(State::Opening);
-    thread_ = new QThread;
-    thread_->setObjectName(QStringLiteral("can-") + url().scheme);
-    context_ = new QObject;
-    context_->moveToThread(thread_);
-    thread_->start();
-    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
-}
-
-void QtCanBus::close() {
-    if (!thread_) {
-        if (state() != State::Closed) setState(State::Closed);
-        return;
-    }
-    QMetaObject::invokeMethod(context_, [this] { stopOnThread(); }, Qt::BlockingQueuedConnection);
-    thread_->quit();
-    thread_->wait();
-    delete context_;
-    context_ = nullptr;
-    delete thread_;
-    thread_ = nullptr;
-    setState(State::Closed);  // errorString() keeps the last failure
-}
+QString QtCanBus::threadName() const { return QStringLiteral("can-") + url().scheme; }
 
 void QtCanBus::startOnThread() {
     opened_ = false;

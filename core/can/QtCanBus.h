@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/can/CanBus.h"
+#include "core/can/ThreadedCanBus.h"
 
 #include <QCanBusFrame>
 
@@ -26,16 +26,13 @@ namespace coscope {
 //                   not switched to listen-only mode; CanBus::send() refuses every frame instead
 //                   (the one place that enforces it), so nothing is ever written to the device.
 // socketcan also gets ErrorFilterKey = all error classes, so bus errors show as error frames.
-class QtCanBus : public CanBus {
+class QtCanBus : public ThreadedCanBus {
     Q_OBJECT
 public:
     static constexpr int kOpenTimeoutMs = 5000;
 
     explicit QtCanBus(const BusUrl& url, QObject* parent = nullptr);
     ~QtCanBus() override;
-
-    void open() override;
-    void close() override;
 
     // Conversions (pure, public for tests). An error frame's `id` holds the SocketCAN error
     // class bits, which QCanBusFrame::FrameError mirrors bit for bit (linux/can/error.h).
@@ -47,16 +44,15 @@ protected:
 
 private:
     // These run on the device thread.
-    void startOnThread();
-    void stopOnThread();
+    QString threadName() const override;
+    void startOnThread() override;
+    void stopOnThread() override;
     void onFramesReceived();
     void onDeviceError(int error);
     void onDeviceState(int state);
     void fail(const QString& message);
     QString name() const;
 
-    QThread* thread_ = nullptr;
-    QObject* context_ = nullptr;  // lives on thread_
     QCanBusDevice* device_ = nullptr;
     QTimer* openTimer_ = nullptr;
     bool opened_ = false;

@@ -11,7 +11,7 @@ namespace coscope {
 
 using socketcand::Message;
 
-SocketcandBus::SocketcandBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+SocketcandBus::SocketcandBus(const BusUrl& url, QObject* parent) : ThreadedCanBus(url, parent) {}
 
 SocketcandBus::~SocketcandBus() { close(); }
 
@@ -20,31 +20,7 @@ QString SocketcandBus::where() const {
     return QStringLiteral("%1:%2").arg(host).arg(url().port);
 }
 
-void SocketcandBus::open() {
-    if (thread_) return;  // already opening or open
-    setState(State::Opening);
-    thread_ = new QThread;
-    thread_->setObjectName(QStringLiteral("socketcand"));
-    context_ = new QObject;
-    context_->moveToThread(thread_);
-    thread_->start();
-    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
-}
-
-void SocketcandBus::close() {
-    if (!thread_) {
-        if (state() != State::Closed) setState(State::Closed);
-        return;
-    }
-    QMetaObject::invokeMethod(context_, [this] { stopOnThread(); }, Qt::BlockingQueuedConnection);
-    thread_->quit();
-    thread_->wait();
-    delete context_;
-    context_ = nullptr;
-    delete thread_;
-    thread_ = nullptr;
-    setState(State::Closed);  // errorString() keeps the last failure
-}
+QString SocketcandBus::threadName() const { return QStringLiteral("socketcand"); }
 
 void SocketcandBus::startOnThread() {
     splitter_ = {};

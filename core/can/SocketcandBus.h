@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/can/CanBus.h"
+#include "core/can/ThreadedCanBus.h"
 #include "core/can/SocketcandProtocol.h"
 
 class QThread;
@@ -16,16 +16,13 @@ namespace coscope {
 // open(): connect, wait for "< hi >", "< open CHANNEL >" -> "< ok >", "< rawmode >" -> "< ok >".
 // Any failure before that (refused, unreachable, no greeting, refusal) puts the bus in Error
 // within kHandshakeTimeoutMs with a message naming HOST:PORT.
-class SocketcandBus : public CanBus {
+class SocketcandBus : public ThreadedCanBus {
     Q_OBJECT
 public:
     static constexpr int kHandshakeTimeoutMs = 3000;
 
     explicit SocketcandBus(const BusUrl& url, QObject* parent = nullptr);
     ~SocketcandBus() override;
-
-    void open() override;
-    void close() override;
 
 protected:
     bool sendFrame(const CanFrame& frame, QString* error) override;
@@ -34,8 +31,9 @@ private:
     enum class Phase { Idle, Connecting, WaitHi, WaitOpenOk, WaitRawOk, Raw, Closing };
 
     // All of these run on the socket thread.
-    void startOnThread();
-    void stopOnThread();
+    QString threadName() const override;
+    void startOnThread() override;
+    void stopOnThread() override;
     void onConnected();
     void onReadyRead();
     void onSocketError();
@@ -45,8 +43,6 @@ private:
     void fail(const QString& message);
     QString where() const;
 
-    QThread* thread_ = nullptr;
-    QObject* context_ = nullptr;  // lives on thread_, owns the socket and the timer
     QTcpSocket* socket_ = nullptr;
     QTimer* handshakeTimer_ = nullptr;
     socketcand::MessageSplitter splitter_;

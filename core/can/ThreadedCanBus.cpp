@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/can/ThreadedCanBus.h"
+
+#include <QThread>
+
+namespace coscope {
+
+void ThreadedCanBus::open() {
+    if (thread_) return;  // already opening or open
+    setState(State::Opening);
+    thread_ = new QThread;
+    thread_->setObjectName(threadName());
+    context_ = new QObject;
+    context_->moveToThread(thread_);
+    thread_->start();
+    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
+}
+
+void ThreadedCanBus::close() {
+    if (!thread_) {
+        if (state() != State::Closed) setState(State::Closed);
+        return;
+    }
+    QMetaObject::invokeMethod(context_, [this] { stopOnThread(); }, Qt::BlockingQueuedConnection);
+    thread_->quit();
+    thread_->wait();
+    delete context_;
+    context_ = nullptr;
+    delete thread_;
+    thread_ = nullptr;
+    setState(State::Closed);  // errorString() keeps the last failure
+}
+
+}  // namespace coscope
