@@ -209,15 +209,9 @@ bool QtCanBus::sendFrame(const CanFrame& frame, QString* error) {
             why = QStringLiteral("%1: write failed: %2").arg(name(), device_->errorString());
             return;
         }
-        CanFrame echo = frame;
-        echo.flags |= CanFrame::Tx;
-        echo.timestampNs = nowNs();
-        deliver(echo);
+        deliverTxEcho(frame);
     };
-    if (QThread::currentThread() == thread_)
-        doSend();
-    else
-        QMetaObject::invokeMethod(context_, doSend, Qt::BlockingQueuedConnection);
+    runOnBusThread(doSend);
     if (!ok && error) *error = why;
     return ok;
 }

@@ -220,15 +220,9 @@ bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
         }
         ok = true;
         // socketcand's raw socket does not echo our own frames: record the Tx copy here.
-        CanFrame echo = frame;
-        echo.flags |= CanFrame::Tx;
-        echo.timestampNs = nowNs();
-        deliver(echo);
+        deliverTxEcho(frame);
     };
-    if (QThread::currentThread() == thread_)
-        doSend();
-    else
-        QMetaObject::invokeMethod(context_, doSend, Qt::BlockingQueuedConnection);
+    runOnBusThread(doSend);
     if (!ok && error) *error = why;
     return ok;
 }

@@ -31,4 +31,16 @@ void ThreadedCanBus::close() {
     setState(State::Closed);  // errorString() keeps the last failure
 }
 
+void ThreadedCanBus::runOnBusThread(const std::function<void()>& fn) {
+    if (QThread::currentThread() == thread_) fn();
+    else QMetaObject::invokeMethod(context_, fn, Qt::BlockingQueuedConnection);
+}
+
+void ThreadedCanBus::deliverTxEcho(const CanFrame& frame) {
+    CanFrame echo = frame;
+    echo.flags |= CanFrame::Tx;
+    echo.timestampNs = nowNs();
+    deliver(echo);
+}
+
 }  // namespace coscope

@@ -3,6 +3,8 @@
 
 #include "core/can/CanBus.h"
 
+#include <functional>
+
 class QThread;
 
 namespace coscope {
@@ -22,6 +24,11 @@ protected:
     virtual QString threadName() const = 0;
     virtual void startOnThread() = 0;  // on the bus thread; owns its objects through context_
     virtual void stopOnThread() = 0;   // on the bus thread
+
+    // Runs fn on the bus thread and waits for it (directly when already there).
+    void runOnBusThread(const std::function<void()>& fn);
+    // After a frame went out: queue its copy flagged Tx, stamped now (bus thread only).
+    void deliverTxEcho(const CanFrame& frame);
 
     QThread* thread_ = nullptr;
     QObject* context_ = nullptr;  // lives on thread_; parent of the thread's objects
