@@ -6,11 +6,14 @@
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/od/ObjectDictionaryDock.h"
+#include "app/gui/plot/PlotDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/status/BusStatusBar.h"
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/wizards/WizardMenu.h"
 #include "core/logio/LogFormats.h"
 
 #include <QApplication>
@@ -55,17 +58,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     workspace_ = new Workspace(this);
     trace_ = new TraceDock(workspace_, this);
     nodes_ = new NodesDock(workspace_, this);
+    od_ = new ObjectDictionaryDock(workspace_, this);
+    plot_ = new PlotDock(workspace_, this);
     events_ = new EventsDock(workspace_, this);
     console_ = new ConsoleDock(this);
     // No central widget: every part is a dock the user can arrange.
     addDockWidget(Qt::LeftDockWidgetArea, trace_);
     addDockWidget(Qt::RightDockWidgetArea, nodes_);
+    addDockWidget(Qt::RightDockWidgetArea, od_);
+    tabifyDockWidget(trace_, plot_);
+    trace_->raise();
     addDockWidget(Qt::BottomDockWidgetArea, events_);
     addDockWidget(Qt::BottomDockWidgetArea, console_);
     tabifyDockWidget(events_, console_);
     events_->raise();
     resizeDocks({trace_, nodes_}, {880, 480}, Qt::Horizontal);
     resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
+    resizeDocks({nodes_, od_}, {260, 420}, Qt::Vertical);
 
     status_ = new BusStatusBar(statusBar(), workspace_);
     buildMenus();
@@ -75,6 +84,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
     connect(trace_, &TraceDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
+    connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);
+    connect(plot_, &PlotDock::message, this, &MainWindow::showMessage);
+    connect(nodes_, &NodesDock::nodeSelected, od_, &ObjectDictionaryDock::setNode);
+    connect(plot_, &PlotDock::frameActivated, this, [this](uint32_t n) {
+        trace_->raise();
+        trace_->showFrame(n);
+    });
     connect(events_, &EventsDock::frameActivated, this, [this](FrameNo n) {
         trace_->raise();
         trace_->showFrame(n);
@@ -119,9 +135,12 @@ void MainWindow::buildMenus() {
     bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
     rebuildRecentMenu();
 
+    QMenu* commission = menuBar()->addMenu(tr("&Commission"));
+    fillCommissionMenu(commission, workspace_, this, [this] { return nodes_->selectedNode(); });
+
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(events_),
-                           static_cast<QDockWidget*>(console_)})
+    for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
+                           static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(console_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
     view->addAction(tr("Reset layout"), this, [this] {
@@ -209,9 +228,15 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
 }
 
 bool MainWindow::showView(const QString& name) {
+    if (name.startsWith(QLatin1String("wizard-"))) {
+        wizard_ = openWizard(name.mid(7), workspace_, nodes_->selectedNode(), this);
+        return wizard_ != nullptr;
+    }
     QDockWidget* d = nullptr;
     if (name == u"trace") d = trace_;
     else if (name == u"nodes") d = nodes_;
+    else if (name == u"od") d = od_;
+    else if (name == u"plot") d = plot_;
     else if (name == u"events") d = events_;
     else if (name == u"console") d = console_;
     if (!d) return false;
@@ -223,6 +248,8 @@ bool MainWindow::showView(const QString& name) {
 void MainWindow::onSourceChanged() {
     trace_->rebind();
     nodes_->rebind();
+    od_->rebind();
+    plot_->rebind();
     events_->rebind();
     const QString name = workspace_->sourceName();
     setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
@@ -232,6 +259,8 @@ void MainWindow::refresh() {
     workspace_->poll();
     trace_->refresh();
     nodes_->refresh();
+    od_->refresh();
+    plot_->refresh();
     events_->refresh();
     console_->refresh();
 

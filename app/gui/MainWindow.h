@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include <memory>
 
@@ -15,6 +16,8 @@ class ConsoleDock;
 class EventsDock;
 class LogSaveJob;
 class NodesDock;
+class ObjectDictionaryDock;
+class PlotDock;
 class TraceDock;
 class Workspace;
 
@@ -35,7 +38,8 @@ public:
     // Saves the trace (or only the filtered rows) to `path`; the format comes from `format`
     // or the extension. Runs in the background; see saveJob().
     bool saveLog(const QString& path, const QString& format = {}, bool filteredOnly = false);
-    // Raises a dock: "trace", "nodes", "od", "events", "console".
+    // Raises a dock: "trace", "nodes", "od", "plot", "events", "console"; "wizard-ID" opens a
+    // commissioning wizard (see wizards/WizardMenu.h).
     bool showView(const QString& name);
     // No modal dialogs (tests, --screenshot): errors go to the status bar only.
     void setQuiet(bool quiet) { quiet_ = quiet; }
@@ -43,7 +47,10 @@ public:
     Workspace* workspace() const { return workspace_; }
     TraceDock* traceDock() const { return trace_; }
     NodesDock* nodesDock() const { return nodes_; }
+    ObjectDictionaryDock* odDock() const { return od_; }
+    PlotDock* plotDock() const { return plot_; }
     EventsDock* eventsDock() const { return events_; }
+    QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
     LogSaveJob* saveJob() const { return saveJob_.get(); }
@@ -68,6 +75,9 @@ private:
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
     NodesDock* nodes_ = nullptr;
+    ObjectDictionaryDock* od_ = nullptr;
+    PlotDock* plot_ = nullptr;
+    QPointer<QWidget> wizard_;
     EventsDock* events_ = nullptr;
     ConsoleDock* console_ = nullptr;
     BusStatusBar* status_ = nullptr;

@@ -6,6 +6,8 @@
 #include "app/gui/events/EventsModel.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
+#include "app/gui/od/ObjectDictionaryDock.h"
+#include "app/gui/plot/PlotDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
@@ -27,6 +29,18 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     const int rows = w->traceDock()->model()->rowCount();
     if (view == u"nodes") return w->nodesDock()->model()->rowCount() > 0 && (offline || rows > 50);
     if (view == u"events") return w->eventsDock()->model()->rowCount() > 0;
+    if (view == u"od") return w->odDock()->hasContent();
+    if (view == u"plot") return w->plotDock()->hasContent();
+    if (view.startsWith(QLatin1String("wizard-"))) {
+        // Opened once nodes are known; ready when the wizard says so (property "screenshotReady").
+        if (!w->openedWizard()) {
+            if (w->nodesDock()->model()->rowCount() == 0 || rows < 50) return false;
+            w->showView(view);
+            return false;
+        }
+        const QVariant ready = w->openedWizard()->property("screenshotReady");
+        return !ready.isValid() || ready.toBool();
+    }
     return rows > (offline ? 0 : 60);
 }
 
@@ -61,7 +75,8 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
             }
         }
         QApplication::processEvents();
-        const bool ok = window->grab().save(file, "PNG");
+        QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard() : window;
+        const bool ok = shown->grab().save(file, "PNG");
         std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
         QApplication::exit(ok ? 0 : 1);
     });

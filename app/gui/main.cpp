@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope: the desktop app.
 #include "app/gui/MainWindow.h"
+#include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/Screenshot.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "core/log/Logging.h"
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption connectTo(QStringLiteral("connect"), QStringLiteral("Connect to a bus URL."), QStringLiteral("URL"));
     const QCommandLineOption logLevel(QStringLiteral("log-level"), QStringLiteral("trace, debug, info, warn, error, critical, off."), QStringLiteral("LEVEL"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render the window to a PNG once the view has content, then exit."), QStringLiteral("FILE"));
-    const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, events."), QStringLiteral("VIEW"));
+    const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, plot, events, console, or wizard-ID (a commissioning wizard: pdo, nodeid, ds402)."), QStringLiteral("VIEW"));
     parser.addOptions({simulate, connectTo, logLevel, screenshot, view});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A CAN log to open (candump, ASC, BLF, TRC, pcap, CSV)."), QStringLiteral("[FILE]"));
     parser.process(app);
@@ -56,8 +57,10 @@ int main(int argc, char** argv) {
         level = *parsed;
     }
     const QString viewName = parser.value(view);
-    if (!viewName.isEmpty() && !QStringList{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("events")}.contains(viewName)) {
-        std::fprintf(stderr, "coscope: invalid --view '%s' (trace, nodes, od, events)\n", qPrintable(viewName));
+    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("console")};
+    for (const gui::WizardEntry& w : gui::wizardEntries()) views << QStringLiteral("wizard-") + w.id;
+    if (!viewName.isEmpty() && !views.contains(viewName)) {
+        std::fprintf(stderr, "coscope: invalid --view '%s' (%s)\n", qPrintable(viewName), qPrintable(views.join(QStringLiteral(", "))));
         return 2;
     }
     const QStringList files = parser.positionalArguments();
@@ -71,7 +74,8 @@ int main(int argc, char** argv) {
     gui::MainWindow window;
     window.setQuiet(parser.isSet(screenshot));
     window.show();
-    if (!viewName.isEmpty()) window.showView(viewName);
+    // A wizard opens once the nodes are known (takeScreenshotWhenReady opens it for --screenshot).
+    if (!viewName.isEmpty() && !viewName.startsWith(QLatin1String("wizard-"))) window.showView(viewName);
     if (parser.isSet(connectTo)) window.connectBus(parser.value(connectTo));
     else if (parser.isSet(simulate) && window.connectBus(QStringLiteral("sim://"))) gui::startSimulationDemo(window.workspace());
     else if (!files.isEmpty()) window.openLog(files.first());

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+
+#include <functional>
+#include <vector>
+
+class QMenu;
+class QWidget;
+
+namespace coscope::gui {
+
+class Workspace;
+
+// The commissioning wizards, listed once: the Commission menu and `--view wizard-ID`
+// (screenshots) both come from this table.
+struct WizardEntry {
+    QString id;     // "pdo", "nodeid", "ds402": `--view wizard-pdo`
+    QString title;  // menu text
+    // Creates the wizard window (top-level, not shown); `node` preselects a node (-1 = none).
+    std::function<QWidget*(Workspace* workspace, int node, QWidget* parent)> create;
+};
+
+const std::vector<WizardEntry>& wizardEntries();
+
+// Fills `menu` with one action per wizard; each opens its wizard (non-modal) for the node
+// `currentNode()` returns.
+void fillCommissionMenu(QMenu* menu, Workspace* workspace, QWidget* parent, std::function<int()> currentNode);
+
+// Creates and shows the wizard `id`; nullptr when there is no such wizard.
+QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent);
+
+}  // namespace coscope::gui

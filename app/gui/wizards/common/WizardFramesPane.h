@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+#include <cstdint>
+
+namespace coscope::gui {
+
+class Workspace;
+
+// The frames pane every wizard shows: each request and response on the bus since markStart(),
+// for the wizard's node (plus NMT, LSS and SYNC), decoded by the workspace's decoder (time,
+// direction, COB-ID, data, summary). Pulls from the trace store on its own ≤ 30 Hz timer.
+class WizardFramesPane : public QWidget {
+    Q_OBJECT
+public:
+    explicit WizardFramesPane(Workspace* workspace, QWidget* parent = nullptr);
+
+    void setNode(int node);  // -1 = every node
+    void markStart();        // show only frames from now on
+    int rowCount() const;
+    QString rowText(int row) const;  // "Tx 605 2B 40 60 00 06 00 00 00  SDO write 6040h:00 …"
+};
+
+}  // namespace coscope::gui
