@@ -20,7 +20,18 @@ const PdoConfig* NodeState::findPdo(bool tpdoDir, int number) const {
     return number >= 1 && number <= static_cast<int>(v.size()) ? &v[static_cast<size_t>(number - 1)] : nullptr;
 }
 
-NetworkContext::NetworkContext() : routes_(2048, -1) {}
+NetworkContext::NetworkContext() : buses_(1) {}
+
+const NodeState& NetworkContext::node(int bus, int id) const {
+    const Bus& b = bus >= 0 && bus < static_cast<int>(buses_.size()) ? buses_[static_cast<size_t>(bus)] : template_;
+    return b.nodes[static_cast<size_t>(id & 0x7F)];
+}
+
+// A bus seen for the first time starts from the assigned dictionaries.
+void NetworkContext::selectBus(int bus) {
+    if (bus >= static_cast<int>(buses_.size())) buses_.resize(static_cast<size_t>(bus) + 1, template_);
+    current_ = static_cast<size_t>(bus);
+}
 
 bool NetworkContext::assignDictionary(int node, const QString& nameOrFile, QString* error) {
     if (node < 1 || node > 127) {
@@ -35,18 +46,26 @@ bool NetworkContext::assignDictionary(int node, const QString& nameOrFile, QStri
 }
 
 void NetworkContext::assignDictionary(int node, DictionaryPtr dictionary, const QString& name, bool byUser) {
-    NodeState& n = nodes_[static_cast<size_t>(node & 0x7F)];
-    n.dictionary = std::move(dictionary);
-    n.dictionaryName = name;
-    n.userAssigned = byUser;
-    n.vendor = vendorTable(catalog::alarmTableFor(name));
-    loadDefaults(node & 0x7F);
+    auto assign = [&](Bus& bus) {
+        NodeState& n = bus.nodes[static_cast<size_t>(node & 0x7F)];
+        n.dictionary = dictionary;
+        n.dictionaryName = name;
+        n.userAssigned = byUser;
+        n.vendor = vendorTable(catalog::alarmTableFor(name));
+        loadDefaults(bus, node & 0x7F);
+    };
+    if (byUser) {  // the user's choice holds for the node-ID on every bus, seen or not
+        assign(template_);
+        for (Bus& b : buses_) assign(b);
+    } else {  // matched by the identity read on the current bus
+        assign(buses_[current_]);
+    }
 }
 
 // PDO parameters from the dictionary: DCF ParameterValue if present, else the default, with
 // $NODEID resolved (CiA 306 §4.5.1).
-void NetworkContext::loadDefaults(int node) {
-    NodeState& n = nodes_[static_cast<size_t>(node)];
+void NetworkContext::loadDefaults(Bus& bus, int node) {
+    NodeState& n = bus.nodes[static_cast<size_t>(node)];
     n.rpdo.clear();
     n.tpdo.clear();
     if (n.dictionary) {
@@ -77,19 +96,19 @@ void NetworkContext::loadDefaults(int node) {
             }
         }
     }
-    rebuildRoutes();
+    rebuildRoutes(bus);
 }
 
-void NetworkContext::rebuildRoutes() {
-    std::fill(routes_.begin(), routes_.end(), -1);
+void NetworkContext::rebuildRoutes(Bus& bus) {
+    std::fill(bus.routes.begin(), bus.routes.end(), -1);
     for (int node = 1; node < 128; ++node) {
-        const NodeState& n = nodes_[static_cast<size_t>(node)];
+        const NodeState& n = bus.nodes[static_cast<size_t>(node)];
         for (int dir = 0; dir < 2; ++dir) {
             const auto& v = dir ? n.tpdo : n.rpdo;
             for (size_t i = 0; i < v.size(); ++i) {
                 const PdoConfig& c = v[i];
                 if (!c.valid() || (c.cobId & 0x20000000u)) continue;
-                routes_[c.canId()] = (node << 12) | (dir << 11) | static_cast<int>(i);
+                bus.routes[c.canId()] = (node << 12) | (dir << 11) | static_cast<int>(i);
             }
         }
     }
@@ -98,7 +117,8 @@ void NetworkContext::rebuildRoutes() {
 void NetworkContext::pdoCobIdChanged(int, bool, int) { rebuildRoutes(); }
 
 const od::ObjectDictionary* NetworkContext::namesFor(int node) const {
-    if (node >= 1 && node < 128 && nodes_[static_cast<size_t>(node)].dictionary) return nodes_[static_cast<size_t>(node)].dictionary.get();
+    const auto& nodes = buses_[current_].nodes;
+    if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary) return nodes[static_cast<size_t>(node)].dictionary.get();
     if (!generic_) const_cast<NetworkContext*>(this)->generic_ = catalog::bundled(QStringLiteral("generic-cia402"));
     return generic_.get();
 }
@@ -115,7 +135,7 @@ uint32_t littleEndian(const QByteArray& b) {
 // and the identity (1018h, 1008h, 100Ah) used to pick the node's dictionary.
 void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
     if (t.status != QLatin1String("ok") || node < 1 || node > 127) return;
-    NodeState& n = nodes_[static_cast<size_t>(node)];
+    NodeState& n = buses_[current_].nodes[static_cast<size_t>(node)];
     const uint32_t v = littleEndian(t.data);
     const PdoObject po = classifyPdoObject(t.index);
     if (po.isPdo) {
@@ -155,11 +175,13 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
 
 void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection::Level level) {
     ++frames_;
+    if (frame.bus != current_) selectBus(frame.bus);
     out.reset(level);
+    Bus& bus = buses_[current_];
     int node = -1;
     Service service = Service::Unknown;
     if (!frame.isError()) {
-        const int32_t r = frame.isExtended() ? -1 : routes_[frame.id & 0x7FF];
+        const int32_t r = frame.isExtended() ? -1 : bus.routes[frame.id & 0x7FF];
         if (r >= 0) {
             node = r >> 12;
             const bool tp = (r >> 11) & 1;
@@ -170,7 +192,7 @@ void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection:
             if (service == Service::Unknown) {
                 // PDO 5..512: no service name in the contract; decode it as a PDO all the same.
                 out.node = node;
-                nodes_[static_cast<size_t>(node)].seen = true;
+                bus.nodes[static_cast<size_t>(node)].seen = true;
                 DissectCall c{frame, *this, out, node, frame.data.data(), frame.payloadSize()};
                 out.service = tp ? Service::Tpdo4 : Service::Rpdo4;  // for the dissector's direction
                 dissectPdo(c);
@@ -186,7 +208,7 @@ void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection:
     }
     out.service = service;
     out.node = node;
-    if (node >= 1 && node < 128) nodes_[static_cast<size_t>(node)].seen = true;
+    if (node >= 1 && node < 128) bus.nodes[static_cast<size_t>(node)].seen = true;
     DissectCall c{frame, *this, out, node, frame.data.data(), frame.payloadSize()};
     dissectorFor(service)(c);
 }

@@ -41,6 +41,12 @@ struct NodeState {
 // mappings in force and SDO transfer state, updated frame by frame. dissect() must see the
 // frames in trace order: its result for frame N depends on frames < N.
 //
+// One context per bus (CanFrame::bus): node 5 on can0 and node 5 on can1 are different devices,
+// with their own NMT state, PDO mappings, SDO channels and identity. A dictionary assigned with
+// assignDictionary() applies to that node-ID on every bus (a bus seen later starts from them).
+// node()/nodeForEdit()/namesFor() answer for the bus of the frame being (or last) dissected;
+// node(bus, id) for any bus.
+//
 // Random access ("decode frame N", the GUI): the context is a value type. Copying it is a
 // snapshot (dictionaries are shared, immutable). The GUI keeps a snapshot every K frames (the
 // ingest worker passes over the trace once anyway) and decodes frame N by copying the nearest
@@ -58,8 +64,12 @@ public:
     // Decodes one frame and advances the context.
     void dissect(const CanFrame& frame, Dissection& out, Dissection::Level level = Dissection::Level::Flat);
 
-    const NodeState& node(int id) const { return nodes_[static_cast<size_t>(id & 0x7F)]; }
-    NodeState& nodeForEdit(int id) { return nodes_[static_cast<size_t>(id & 0x7F)]; }
+    const NodeState& node(int id) const { return buses_[current_].nodes[static_cast<size_t>(id & 0x7F)]; }
+    NodeState& nodeForEdit(int id) { return buses_[current_].nodes[static_cast<size_t>(id & 0x7F)]; }
+    // Node `id` on bus `bus` (the assigned defaults when that bus has not been seen).
+    const NodeState& node(int bus, int id) const;
+    // Buses seen so far (index = CanFrame::bus); at least 1.
+    int busCount() const { return static_cast<int>(buses_.size()); }
     uint64_t framesSeen() const { return frames_; }
 
     // The snapshot interval the GUI should use for random access.
@@ -76,11 +86,19 @@ private:
         int number = 0;  // PDO number, 1-based
         bool tpdo = false;
     };
-    void loadDefaults(int node);
-    void rebuildRoutes();
+    // What the context knows about one bus.
+    struct Bus {
+        std::array<NodeState, 128> nodes;
+        std::vector<int32_t> routes = std::vector<int32_t>(2048, -1);  // standard id -> node << 12 | tpdo << 11 | (number - 1); -1 = default
+    };
+    void loadDefaults(Bus& bus, int node);
+    static void rebuildRoutes(Bus& bus);
+    void rebuildRoutes() { rebuildRoutes(buses_[current_]); }
+    void selectBus(int bus);
 
-    std::array<NodeState, 128> nodes_;
-    std::vector<int32_t> routes_;  // 2048 standard ids -> node << 12 | tpdo << 11 | (number - 1); -1 = default
+    Bus template_;             // the assigned dictionaries, no frames seen: a new bus starts here
+    std::vector<Bus> buses_;   // index = CanFrame::bus
+    size_t current_ = 0;       // the bus of the frame being dissected
     DictionaryPtr generic_;
     bool identityMatching_ = true;
     uint64_t frames_ = 0;

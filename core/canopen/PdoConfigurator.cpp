@@ -116,32 +116,97 @@ void PdoConfigurator::readSet(uint8_t node, std::function<void(const std::vector
 }
 
 std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node) {
+    // CiA 301 §7.5.2.35/36: a mapping may only change while the PDO is not valid (COB-ID bit 31)
+    // and while sub0 is 0; sub0 = n then activates the n entries.
     std::vector<Op> ops;
     const uint16_t comm = pdo.communicationIndex();
     const uint16_t map = pdo.mappingIndex();
     const uint32_t cob = c.cobId & 0x7FFFFFFFu;
-    ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid")});
-    ops.push_back({map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0")});
-    for (size_t i = 0; i < c.entries.size(); ++i)
-        ops.push_back({map, static_cast<uint8_t>(i + 1), le(c.entries[i].encode(), 4), QStringLiteral("mapping entry %1").arg(i + 1)});
-    ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1), QStringLiteral("mapping sub0 = %1").arg(c.entries.size())});
-    if (c.valid()) ops.push_back({comm, 1, le(cob, 4), QStringLiteral("COB-ID valid")});
-    ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type")});
-    if (c.inhibitTime) ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time")});
-    if (c.eventTimer) ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer")});
+    const QString name = pdo.name();
+    ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
+                   QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
+    ops.push_back({map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0"),
+                   QStringLiteral("Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)")});
+    for (size_t i = 0; i < c.entries.size(); ++i) {
+        const PdoMapEntry& e = c.entries[i];
+        ops.push_back({map, static_cast<uint8_t>(i + 1), le(e.encode(), 4), QStringLiteral("mapping entry %1").arg(i + 1),
+                       QStringLiteral("Object %1 of the message: %2, %3 bits (mapping entry %4)").arg(i + 1).arg(objectRef(e.index, e.sub)).arg(e.bits).arg(i + 1)});
+    }
+    ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1), QStringLiteral("mapping sub0 = %1").arg(c.entries.size()),
+                   QStringLiteral("Activate the %1 mapped objects (mapping sub-index 0 = number of entries)").arg(c.entries.size())});
+    if (c.valid())
+        ops.push_back({comm, 1, le(cob, 4), QStringLiteral("COB-ID valid"),
+                       QStringLiteral("Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)").arg(name, QString::number(cob & 0x1FFFFFFFu, 16).toUpper())});
+    ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type"),
+                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(c.transmissionType)});
+    if (c.inhibitTime)
+        ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time"),
+                       QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)").arg(*c.inhibitTime / 10.0)});
+    if (c.eventTimer)
+        ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer"),
+                       QStringLiteral("Send at least every %1 ms (event timer)").arg(*c.eventTimer)});
     Q_UNUSED(node);
     return ops;
 }
 
+CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, QString* error) const {
+    CommandScript script;
+    script.title = QStringLiteral("Map %1 of node %2").arg(pdo.name()).arg(node);
+    QString why;
+    if (!validatePdoMapping(wanted.entries, pdo, dictionary, &why)) {
+        if (error) *error = QStringLiteral("node %1 %2: %3; nothing would be sent").arg(node).arg(pdo.name(), why);
+        return script;
+    }
+    if (wanted.cobId == 0) wanted.cobId = pdo.defaultCobId(node);
+    if (nmt_) {
+        ScriptStep s;
+        s.kind = ScriptStep::Kind::Nmt;
+        s.nmt = NmtCommand::EnterPreOperational;
+        s.node = node;
+        s.why = QStringLiteral("Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)");
+        script.steps.push_back(s);
+    }
+    for (const Op& op : writeOps(pdo, wanted, node)) {
+        ScriptStep s;
+        s.kind = ScriptStep::Kind::SdoWrite;
+        s.node = node;
+        s.index = op.index;
+        s.sub = op.sub;
+        s.data = op.data;
+        s.why = op.why;
+        script.steps.push_back(s);
+    }
+    // The read-back write() does, as checks.
+    auto expect = [&](uint16_t index, uint8_t sub, uint32_t value, int size, const QString& text) {
+        ScriptStep s;
+        s.kind = ScriptStep::Kind::SdoExpect;
+        s.node = node;
+        s.index = index;
+        s.sub = sub;
+        s.data = le(value, size);
+        s.why = text;
+        script.steps.push_back(s);
+    };
+    const uint16_t comm = pdo.communicationIndex(), map = pdo.mappingIndex();
+    expect(comm, 1, wanted.valid() ? (wanted.cobId & 0x7FFFFFFFu) : (wanted.cobId | 0x80000000u), 4, QStringLiteral("Check: the COB-ID reads back as written"));
+    expect(comm, 2, wanted.transmissionType, 1, QStringLiteral("Check: the transmission type reads back as written"));
+    if (wanted.inhibitTime) expect(comm, 3, *wanted.inhibitTime, 2, QStringLiteral("Check: the inhibit time reads back as written"));
+    if (wanted.eventTimer) expect(comm, 5, *wanted.eventTimer, 2, QStringLiteral("Check: the event timer reads back as written"));
+    expect(map, 0, static_cast<uint32_t>(wanted.entries.size()), 1, QStringLiteral("Check: the number of mapped objects reads back as written"));
+    for (size_t i = 0; i < wanted.entries.size(); ++i)
+        expect(map, static_cast<uint8_t>(i + 1), wanted.entries[i].encode(), 4, QStringLiteral("Check: mapping entry %1 reads back as written").arg(i + 1));
+    return script;
+}
+
 void PdoConfigurator::runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log, OpsDone done) {
-    if (i >= ops->size()) return done(true, -1, {});
+    if (i >= ops->size()) return done(true, -1, SdoResult{});
     const Op& op = (*ops)[i];
     uint32_t v = fromLe(op.data);
     if (log) log->append(QStringLiteral("%1 = %2 (%3)").arg(objectRef(op.index, op.sub), hex(v, static_cast<int>(op.data.size()) * 2), op.what));
     QPointer<PdoConfigurator> self(this);
     sdo_.download(node, op.index, op.sub, op.data, [self, node, ops, i, log, done](const SdoResult& r) {
         if (!self) return;
-        if (!r.ok) return done(false, static_cast<int>(i), r.error);
+        if (!r.ok) return done(false, static_cast<int>(i), r);
         self->runOps(node, ops, i + 1, log, done);
     });
 }
@@ -178,18 +243,20 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
             if (!self) return;
             result->error = why;
             auto back = std::make_shared<std::vector<Op>>(writeOps(pdo, result->previous, node));
-            self->runOps(node, back, 0, nullptr, [result, done](bool ok, int, const QString& err) {
+            self->runOps(node, back, 0, nullptr, [result, done](bool ok, int, const SdoResult& err) {
                 result->restored = ok;
-                result->error += ok ? QStringLiteral("; previous mapping restored") : QStringLiteral("; restoring the previous mapping failed too: ") + err;
+                result->error += ok ? QStringLiteral("; previous mapping restored") : QStringLiteral("; restoring the previous mapping failed too: ") + err.error;
                 done(*result);
             });
         };
-        self->runOps(node, ops, 0, &result->steps, [self, node, pdo, ops, result, restore, done](bool ok, int failedAt, const QString& err) {
+        self->runOps(node, ops, 0, &result->steps, [self, node, pdo, ops, result, restore, done](bool ok, int failedAt, const SdoResult& err) {
             if (!self) return;
             if (!ok) {
                 const Op& op = (*ops)[static_cast<size_t>(failedAt)];
                 result->failedStep = QStringLiteral("%1 (%2)").arg(op.what, objectRef(op.index, op.sub));
-                return restore(QStringLiteral("%1 failed: %2").arg(result->failedStep, err));
+                result->failedStepNumber = failedAt;
+                result->abortCode = err.serverAborted ? err.abortCode : 0;
+                return restore(QStringLiteral("%1 failed: %2").arg(result->failedStep, err.error));
             }
             // Verify by reading back.
             self->read(node, pdo, [result, restore, done](const PdoReadResult& after) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/canopen/CommandScript.h"
 #include "core/canopen/NmtMaster.h"
 #include "core/canopen/PdoMapping.h"
 #include "core/canopen/SdoClient.h"
@@ -25,6 +26,8 @@ struct PdoWriteResult {
     PdoConfig previous;      // what was there before
     PdoConfig written;       // what was asked (lengths filled in)
     QString failedStep;      // e.g. "mapping entry 2 (1A00:02)"
+    int failedStepNumber = -1;  // 0-based index of the failed write in plan()'s SDO writes; -1 = none/verify
+    uint32_t abortCode = 0;  // what the device answered to the failed step (0 = no abort: timeout, verify)
     bool restored = false;   // the previous mapping was written back after a failure
     QStringList steps;       // each SDO write, in order, as "1800:01 = 0x800001A5 (COB-ID invalid)"
     QString error;
@@ -46,15 +49,21 @@ public:
     void readSet(uint8_t node, std::function<void(const std::vector<PdoReadResult>&)> done);
     // `wanted.cobId` 0 keeps the current COB-ID (made valid); unset inhibit/event timer are not written.
     void write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, std::function<void(const PdoWriteResult&)> done);
+    // The dry run of write(): the same NMT command and SDO writes in the same order (both come
+    // from writeOps()), followed by the read-back checks as "expect" steps. Nothing is sent.
+    // `wanted.cobId` 0 stands for the PDO's default COB-ID here (write() keeps the device's).
+    // A mapping write() would refuse gives a script without steps and *error.
+    CommandScript plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, QString* error = nullptr) const;
 
 private:
     struct Op {
         uint16_t index;
         uint8_t sub;
         QByteArray data;
-        QString what;
+        QString what;  // short, for the step log: "COB-ID invalid"
+        QString why;   // plain words for the dry run
     };
-    using OpsDone = std::function<void(bool ok, int failedAt, const QString& error)>;
+    using OpsDone = std::function<void(bool ok, int failedAt, const SdoResult& failure)>;
     void runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log, OpsDone done);
     static std::vector<Op> writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node);
 

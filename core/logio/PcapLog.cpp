@@ -9,11 +9,6 @@
 #include <algorithm>
 #include <limits>
 
-#if defined(Q_OS_UNIX)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
-
 #include <cstring>
 
 namespace coscope::logio {
@@ -40,31 +35,10 @@ namespace {
 constexpr qsizetype kReadChunk = 1 << 20;  // read ahead 1 MiB at a time
 }  // namespace
 
-// A regular file is mapped and parsed in place (no copy, no per-packet reads); anything else
-// (pipes, sockets, buffers, files that cannot be mapped) is read in 1 MiB chunks.
-void PcapReader::mapInput() {
-    mapTried_ = true;
-    auto* file = qobject_cast<QFile*>(device());
-    if (!file || file->isSequential()) return;
-    const qint64 at = file->pos(), size = file->size();
-    if (size <= at || size - at > qint64(std::numeric_limits<qsizetype>::max())) return;
-    uchar* m = file->map(at, size - at);
-    if (!m) return;
-#if defined(Q_OS_UNIX) && defined(MADV_SEQUENTIAL)
-    // The map is walked once from start to end: let the kernel read ahead.
-    const auto page = uintptr_t(sysconf(_SC_PAGESIZE));
-    const uintptr_t base = uintptr_t(m) & ~(page - 1);
-    madvise(reinterpret_cast<void*>(base), size_t(uintptr_t(m) + uintptr_t(size - at) - base), MADV_SEQUENTIAL);
-#endif
-    data_ = m;
-    pos_ = 0;
-    end_ = qsizetype(size - at);
-    eof_ = true;
-    mapStart_ = at;
-}
-
+// The input is read in 1 MiB chunks and parsed in place from the buffer. (Mapping the file
+// was no faster and dies with SIGBUS when another program truncates the file while it is read;
+// a short read instead ends the file with a "truncated" diagnostic.)
 const unsigned char* PcapReader::take(qint64 n, qint64* got) {
-    if (!mapTried_) mapInput();
     if (end_ - pos_ < n && !eof_) {
         // Move what is left to the front and read more behind it, until n bytes or the end.
         const qsizetype keep = end_ - pos_;
@@ -360,7 +334,6 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
         }
         if (r > 0) ++n;
     }
-    if (mapStart_ >= 0) device()->seek(mapStart_ + pos_);  // progress() follows the parse position
     return n;
 }
 

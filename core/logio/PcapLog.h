@@ -47,14 +47,11 @@ private:
     Interface pcapItf_;     // classic pcap: the one link type
     std::vector<Interface> interfaces_;
     uint64_t packet_ = 0;
-    void mapInput();
     QByteArray buf_;  // read-ahead: [pos_, end_) of data_ not consumed yet
-    const unsigned char* data_ = nullptr;  // buf_ or the mapped file
+    const unsigned char* data_ = nullptr;
     qsizetype pos_ = 0;
     qsizetype end_ = 0;
     bool eof_ = false;
-    bool mapTried_ = false;
-    qint64 mapStart_ = -1;  // file offset of data_[0] when the file is mapped, else -1
 };
 
 // Writes pcapng (SHB, one IDB per bus with link type 227 and nanosecond resolution, EPBs),

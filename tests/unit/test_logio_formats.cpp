@@ -464,6 +464,32 @@ private slots:
         QVERIFY(r.hasError());
     }
 
+    // "Never crash on a file": a pcapng that another program truncates while it is being read
+    // (a capture being rotated) ends with what was read and a clear diagnostic, no SIGBUS.
+    void pcapngTruncatedWhileReading() {
+        std::vector<CanFrame> frames;
+        for (int i = 0; i < 200000; ++i) frames.push_back(frame(1000000LL * i, 0x181 + (i % 4), {uint8_t(i), uint8_t(i >> 8), 3, 4, 5, 6, 7, 8}));
+        PcapngWriter w;
+        const QByteArray bytes = writeAll(w, frames);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("growing.pcapng"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QCOMPARE(f.write(bytes), bytes.size());
+        }
+        QString error;
+        auto r = LogFormats::openReader(path, &error);
+        QVERIFY2(r, qPrintable(error));
+        std::vector<CanFrame> batch(1000);
+        QCOMPARE(r->read(batch.data(), batch.size()), batch.size());
+        QVERIFY(QFile::resize(path, bytes.size() / 2 + 13));  // cut mid-block
+        size_t total = batch.size();
+        while (const size_t n = r->read(batch.data(), batch.size())) total += n;
+        QVERIFY2(total >= 1000 && total < frames.size(), qPrintable(QString::number(total)));
+        QVERIFY(r->hasError() || r->diagnosticCount() > 0);
+    }
+
     void cancelStopsReading() {
         QByteArray text;
         for (int i = 0; i < 100000; ++i) text += "(1.000000) can0 123#11\n";
