@@ -73,12 +73,13 @@ void dissectSdo(DissectCall& c) {
     const bool chActive = ch.phase != SdoChannel::Phase::Idle;
     sdoTrack(ch, f, fromClient, c.node, c.frame.timestampNs, out);
 
-    const od::ObjectDictionary* dict = c.ctx.namesFor(c.node);
+    // Names and typed values only when text is wanted: statistics need no dictionary.
+    const od::ObjectDictionary* dict = out.wantText() ? c.ctx.namesFor(c.node) : nullptr;
     if (out.hasTransfer) {
         SdoTransferRecord& t = out.transfer;
         if (t.status == QLatin1String("aborted")) t.abortText = abortText(n, t.abortCode);
         if (dict && dict->entry(t.index, t.sub)) t.name = dict->displayName(t.index, t.sub);
-        if (!t.data.isEmpty()) {
+        if (!t.data.isEmpty() && out.wantText()) {
             FlatField v;
             t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);
         }

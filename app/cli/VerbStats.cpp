@@ -3,6 +3,7 @@
 // nodes and their last NMT state, bus load per second, SDO transfers and aborts, EMCYs, warnings.
 #include "app/cli/CliVerb.h"
 #include "core/logio/LogFormats.h"
+#include "core/logio/ReadAhead.h"
 #include "dissectors/TraceStats.h"
 
 #include <cstdio>
@@ -38,9 +39,12 @@ int runStats(const QStringList& args) {
     QString error;
     auto reader = logio::LogFormats::openReader(pos[0], &error);
     if (!reader) return failure(kVerb, error);
-    std::vector<CanFrame> batch(4096);
-    while (const size_t n = reader->read(batch.data(), batch.size()))
-        for (size_t i = 0; i < n; ++i) stats.add(batch[i]);
+    {
+        // Parsing the file and counting run on two cores.
+        logio::ReadAhead ahead(*reader);
+        for (auto batch = ahead.next(); !batch.empty(); batch = ahead.next())
+            for (const CanFrame& f : batch) stats.add(f);
+    }
     const QByteArray report = stats.report();
     std::fwrite(report.constData(), 1, static_cast<size_t>(report.size()), stdout);
     if (reader->diagnosticCount()) std::fprintf(stdout, "\nLog problems: %llu (first: line/record %lld: %s)\n", (unsigned long long)reader->diagnosticCount(),

@@ -27,6 +27,7 @@ uint16_t PcapReader::u16(const unsigned char* p) const { return swapped_ ? be16(
 
 int64_t PcapReader::toNs(uint64_t ticks, uint64_t ups) const {
     if (ups == 1000000000ULL) return int64_t(ticks);
+    if (ups == 1000000ULL) return int64_t(ticks * 1000ULL);  // the default resolution (µs)
     const uint64_t sec = ticks / ups, rem = ticks % ups;
     return int64_t(sec * 1000000000ULL + (unsigned __int128)rem * 1000000000ULL / ups);
 }

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/logio/ReadAhead.h"
+
+#include "core/logio/LogReader.h"
+
+namespace coscope::logio {
+
+ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth) : reader_(reader), slots_(depth < 2 ? 2 : depth) {
+    for (Slot& s : slots_) s.frames.resize(batchFrames ? batchFrames : 1);
+    thread_ = std::thread([this] { produce(); });
+}
+
+ReadAhead::~ReadAhead() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    reader_.cancel();
+    changed_.notify_all();
+    thread_.join();
+}
+
+void ReadAhead::produce() {
+    for (;;) {
+        Slot* slot;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] { return stop_ || filled_ - consumed_ < slots_.size(); });
+            if (stop_) break;
+            slot = &slots_[filled_ % slots_.size()];
+        }
+        // The slot is free (the consumer moved past it): fill it without the lock.
+        slot->count = reader_.read(slot->frames.data(), slot->frames.size());
+        std::lock_guard lock(mutex_);
+        if (slot->count == 0) {
+            finished_ = true;
+            changed_.notify_all();
+            break;
+        }
+        ++filled_;
+        changed_.notify_all();
+    }
+}
+
+std::span<const CanFrame> ReadAhead::next() {
+    std::unique_lock lock(mutex_);
+    if (holding_) {
+        ++consumed_;
+        holding_ = false;
+        changed_.notify_all();
+    }
+    changed_.wait(lock, [&] { return filled_ > consumed_ || finished_; });
+    if (filled_ == consumed_) return {};
+    holding_ = true;
+    const Slot& s = slots_[consumed_ % slots_.size()];
+    return {s.frames.data(), s.count};
+}
+
+}  // namespace coscope::logio

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+
+#include <condition_variable>
+#include <cstddef>
+#include <mutex>
+#include <span>
+#include <thread>
+#include <vector>
+
+namespace coscope::logio {
+
+class LogReader;
+
+// Reads a log on a thread of its own, a few batches ahead of the consumer, so parsing the file
+// and using its frames (dissecting, counting) run on two cores. The reader belongs to this
+// object until it is destroyed: do not touch it (diagnostics, bus names) before next() has
+// returned an empty batch, which means the end, a fatal error or cancel().
+class ReadAhead {
+public:
+    explicit ReadAhead(LogReader& reader, size_t batchFrames = 4096, size_t depth = 4);
+    ~ReadAhead();  // cancels the reader if it is still running and waits for the thread
+    ReadAhead(const ReadAhead&) = delete;
+    ReadAhead& operator=(const ReadAhead&) = delete;
+
+    // The next batch of frames; valid until the next call. Empty at the end.
+    std::span<const CanFrame> next();
+
+private:
+    void produce();
+
+    struct Slot {
+        std::vector<CanFrame> frames;
+        size_t count = 0;
+    };
+    LogReader& reader_;
+    std::vector<Slot> slots_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    size_t filled_ = 0;    // slots produced (monotonic)
+    size_t consumed_ = 0;  // slots handed back by the consumer (monotonic)
+    bool finished_ = false;
+    bool stop_ = false;
+    bool holding_ = false;  // the consumer holds slot consumed_ % size
+    std::thread thread_;
+};
+
+}  // namespace coscope::logio
