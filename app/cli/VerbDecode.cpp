@@ -3,11 +3,13 @@
 // Decodes every frame of a log with the CANopen dissectors (formats in dissectors/DecodeOutput.h).
 #include "app/cli/CliVerb.h"
 #include "core/logio/LogFormats.h"
+#include "core/logio/ReadAhead.h"
 #include "dissectors/DecodeFilter.h"
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
 
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 namespace coscope::cli {
@@ -68,14 +70,14 @@ int runDecode(const QStringList& args) {
     QByteArray out;
     out.reserve(1 << 20);
     if (csv) out.append(dissect::csvHeader());
-    std::vector<CanFrame> batch(4096);
     dissect::Dissection d;
     QStringList busNames;
     QString bus0 = QStringLiteral("can0");
-    while (const size_t n = reader->read(batch.data(), batch.size())) {
-        if (busNames.size() != reader->busNames().size()) busNames = reader->busNames();
-        for (size_t i = 0; i < n; ++i) {
-            const CanFrame& f = batch[i];
+    // Parsing the file runs on a second core, a few batches ahead of the decoding.
+    auto ahead = std::make_unique<logio::ReadAhead>(*reader);
+    for (auto batch = ahead->next(); !batch.empty(); batch = ahead->next()) {
+        if (busNames.size() != ahead->busNames().size()) busNames = ahead->busNames();
+        for (const CanFrame& f : batch) {
             ctx.dissect(f, d, dissect::Dissection::Level::Flat);
             if (!filter.isEmpty() && !filter.matches(f, d)) continue;
             const QString& bus = f.bus < busNames.size() ? busNames[f.bus] : bus0;
@@ -96,6 +98,7 @@ int runDecode(const QStringList& args) {
     }
     std::fwrite(out.constData(), 1, static_cast<size_t>(out.size()), stdout);
     std::fflush(stdout);
+    ahead.reset();  // the reader is ours again
     int shown = 0;
     for (const auto& diag : reader->diagnostics()) {
         if (++shown > 20) break;

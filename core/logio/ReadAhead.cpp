@@ -11,11 +11,13 @@ ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth) : read
 }
 
 ReadAhead::~ReadAhead() {
+    bool running;
     {
         std::lock_guard lock(mutex_);
         stop_ = true;
+        running = !finished_;
     }
-    reader_.cancel();
+    if (running) reader_.cancel();  // a read in progress returns soon
     changed_.notify_all();
     thread_.join();
 }
@@ -31,6 +33,7 @@ void ReadAhead::produce() {
         }
         // The slot is free (the consumer moved past it): fill it without the lock.
         slot->count = reader_.read(slot->frames.data(), slot->frames.size());
+        slot->busNames = reader_.busNames();  // a shared copy, made on this thread
         std::lock_guard lock(mutex_);
         if (slot->count == 0) {
             finished_ = true;
@@ -53,6 +56,7 @@ std::span<const CanFrame> ReadAhead::next() {
     if (filled_ == consumed_) return {};
     holding_ = true;
     const Slot& s = slots_[consumed_ % slots_.size()];
+    busNames_ = s.busNames;
     return {s.frames.data(), s.count};
 }
 

@@ -3,6 +3,8 @@
 
 #include "core/can/CanFrame.h"
 
+#include <QStringList>
+
 #include <condition_variable>
 #include <cstddef>
 #include <mutex>
@@ -27,6 +29,8 @@ public:
 
     // The next batch of frames; valid until the next call. Empty at the end.
     std::span<const CanFrame> next();
+    // The reader's bus names as they were after the current batch (CanFrame::bus indexes them).
+    const QStringList& busNames() const { return busNames_; }
 
 private:
     void produce();
@@ -34,6 +38,7 @@ private:
     struct Slot {
         std::vector<CanFrame> frames;
         size_t count = 0;
+        QStringList busNames;
     };
     LogReader& reader_;
     std::vector<Slot> slots_;
@@ -44,6 +49,7 @@ private:
     bool finished_ = false;
     bool stop_ = false;
     bool holding_ = false;  // the consumer holds slot consumed_ % size
+    QStringList busNames_;
     std::thread thread_;
 };
 

@@ -5,6 +5,7 @@
 #include "core/logio/LogFormats.h"
 #include "core/logio/PcapLog.h"
 #include "core/logio/PeakTrc.h"
+#include "core/logio/ReadAhead.h"
 #include "core/logio/VectorAsc.h"
 #include "core/logio/VectorBlf.h"
 
@@ -488,6 +489,37 @@ private slots:
         while (const size_t n = r->read(batch.data(), batch.size())) total += n;
         QVERIFY2(total >= 1000 && total < frames.size(), qPrintable(QString::number(total)));
         QVERIFY(r->hasError() || r->diagnosticCount() > 0);
+    }
+
+    // ReadAhead hands out every frame in order, and can be dropped half-way without hanging.
+    void readAheadKeepsOrderAndStops() {
+        QByteArray text;
+        for (int i = 0; i < 50000; ++i) text += QByteArray("(1.000000) can0 ") + QByteArray::number(0x100 + i % 0x600, 16) + "#" + QByteArray::number(i % 256 + 256, 16).right(2) + "\n";
+        std::vector<CanFrame> want;
+        {
+            CandumpReader r;
+            want = readBytes(r, text);
+        }
+        QCOMPARE(want.size(), size_t(50000));
+        QBuffer buf(&text);
+        buf.open(QIODevice::ReadOnly);
+        CandumpReader r;
+        QVERIFY(r.open(&buf));
+        std::vector<CanFrame> got;
+        {
+            ReadAhead ahead(r, 1000, 3);
+            for (auto b = ahead.next(); !b.empty(); b = ahead.next()) got.insert(got.end(), b.begin(), b.end());
+        }
+        compareFrames(got, want, false, false);
+        QBuffer buf2(&text);
+        buf2.open(QIODevice::ReadOnly);
+        CandumpReader r2;
+        QVERIFY(r2.open(&buf2));
+        {
+            ReadAhead ahead(r2, 100, 2);
+            QCOMPARE(ahead.next().size(), size_t(100));
+        }  // destroyed with the producer still going: cancels and joins
+        QVERIFY(r2.framesRead() < 50000);
     }
 
     void cancelStopsReading() {
