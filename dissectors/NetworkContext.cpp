@@ -20,16 +20,16 @@ const PdoConfig* NodeState::findPdo(bool tpdoDir, int number) const {
     return number >= 1 && number <= static_cast<int>(v.size()) ? &v[static_cast<size_t>(number - 1)] : nullptr;
 }
 
-NetworkContext::NetworkContext() : buses_(1) {}
+NetworkContext::NetworkContext() : template_(std::make_shared<const Bus>()), buses_(1) {}
 
 const NodeState& NetworkContext::node(int bus, int id) const {
-    const Bus& b = bus >= 0 && bus < static_cast<int>(buses_.size()) ? buses_[static_cast<size_t>(bus)] : template_;
+    const Bus& b = bus >= 0 && bus < static_cast<int>(buses_.size()) ? buses_[static_cast<size_t>(bus)] : *template_;
     return b.nodes[static_cast<size_t>(id & 0x7F)];
 }
 
 // A bus seen for the first time starts from the assigned dictionaries.
 void NetworkContext::selectBus(int bus) {
-    if (bus >= static_cast<int>(buses_.size())) buses_.resize(static_cast<size_t>(bus) + 1, template_);
+    if (bus >= static_cast<int>(buses_.size())) buses_.resize(static_cast<size_t>(bus) + 1, *template_);
     current_ = static_cast<size_t>(bus);
 }
 
@@ -55,7 +55,9 @@ void NetworkContext::assignDictionary(int node, DictionaryPtr dictionary, const 
         loadDefaults(bus, node & 0x7F);
     };
     if (byUser) {  // the user's choice holds for the node-ID on every bus, seen or not
-        assign(template_);
+        auto t = std::make_shared<Bus>(*template_);
+        assign(*t);
+        template_ = std::move(t);
         for (Bus& b : buses_) assign(b);
     } else {  // matched by the identity read on the current bus
         assign(buses_[current_]);

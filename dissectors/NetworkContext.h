@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -96,7 +97,7 @@ private:
     void rebuildRoutes() { rebuildRoutes(buses_[current_]); }
     void selectBus(int bus);
 
-    Bus template_;             // the assigned dictionaries, no frames seen: a new bus starts here
+    std::shared_ptr<const Bus> template_;  // the assigned dictionaries, no frames seen: a new bus starts here (shared by snapshots)
     std::vector<Bus> buses_;   // index = CanFrame::bus
     size_t current_ = 0;       // the bus of the frame being dissected
     DictionaryPtr generic_;

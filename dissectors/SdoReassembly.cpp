@@ -85,6 +85,11 @@ void finishBlock(SdoChannel& ch, bool upload, int node, int64_t tNs, Dissection&
 
 }  // namespace
 
+canopen::SdoFrame parseSdoFor(const SdoChannel& ch, const uint8_t* data, int len, bool fromClient) {
+    const bool inSub = ch.inSubBlock(fromClient) && !(len >= 1 && data[0] == 0x80);
+    return canopen::parseSdo(data, len, fromClient, inSub);
+}
+
 void sdoTrack(SdoChannel& ch, const canopen::SdoFrame& f, bool fromClient, int node, int64_t tNs, Dissection& out) {
     auto unexpected = [&] {
         out.warn(QStringLiteral("unexpected SDO %1 (%2)")

@@ -51,6 +51,10 @@ struct SdoChannel {
 
 class NetworkContext;
 
+// Parses one SDO frame as the channel expects it: inside a block sub-block the first byte is a
+// sequence number, except for an abort (80h), which may interrupt it.
+canopen::SdoFrame parseSdoFor(const SdoChannel& ch, const uint8_t* data, int len, bool fromClient);
+
 // Feeds one parsed SDO frame to the channel of `node`; adds warnings to `out` and fills
 // out.transfer when a transfer completes or is aborted.
 void sdoTrack(SdoChannel& ch, const canopen::SdoFrame& f, bool fromClient, int node, int64_t tNs, Dissection& out);

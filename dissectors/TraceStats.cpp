@@ -56,7 +56,10 @@ void TraceStats::add(const CanFrame& f) {
     else ++perStdId_[f.id & 0x7FF];
     ctx_.dissect(f, d_, Dissection::Level::Stats);
     ++perService_[static_cast<size_t>(d_.service)];
-    if (d_.node >= 1 && d_.node < 128) ++nodeFrames_[d_.node];
+    if (d_.node >= 1 && d_.node < 128) {
+        if (f.bus >= nodeFrames_.size()) nodeFrames_.resize(size_t(f.bus) + 1, std::array<uint64_t, 128>{});
+        ++nodeFrames_[f.bus][static_cast<size_t>(d_.node)];
+    }
     if (d_.service == canopen::Service::Emcy) {
         ++emcys_;
         ++emcyPerNode_[d_.node];
@@ -97,14 +100,19 @@ QByteArray TraceStats::report() const {
     for (const auto& [id, n] : perExtId_) put("  0x%08X (29-bit) %12llu\n", id, (unsigned long long)n);
     o.append("\nNodes:\n");
     bool anyNode = false;
-    for (int n = 1; n < 128; ++n) {
-        const NodeState& s = ctx_.node(n);
-        if (!nodeFrames_[n]) continue;
-        anyNode = true;
-        const QString state = s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");
-        put("  node %3d  %-16s frames %10llu  dictionary %s\n", n, qPrintable(state), (unsigned long long)nodeFrames_[n],
-            s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
-    }
+    // Each bus has its own nodes (the network context keeps one state per bus).
+    const bool severalBuses = nodeFrames_.size() > 1;
+    for (size_t bus = 0; bus < nodeFrames_.size(); ++bus)
+        for (int n = 1; n < 128; ++n) {
+            const uint64_t count = nodeFrames_[bus][static_cast<size_t>(n)];
+            if (!count) continue;
+            const NodeState& s = ctx_.node(static_cast<int>(bus), n);
+            anyNode = true;
+            const QString state = s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");
+            const QString where = !severalBuses ? QString() : (bus < size_t(busNames_.size()) ? busNames_[int(bus)] : QStringLiteral("bus %1").arg(bus)) + u' ';
+            put("  %snode %3d  %-16s frames %10llu  dictionary %s\n", qPrintable(where), n, qPrintable(state), (unsigned long long)count,
+                s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
+        }
     if (!anyNode) o.append("  (none)\n");
     o.append("\nBus load (estimated, ");
     put("%d bit/s):\n", bitRate_);

@@ -7,7 +7,9 @@
 
 #include <QByteArray>
 #include <QString>
+#include <QStringList>
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -23,6 +25,8 @@ public:
     NetworkContext& context() { return ctx_; }
 
     void add(const CanFrame& f);
+    // Names of the buses (CanFrame::bus indexes them), for the per-bus node list.
+    void setBusNames(const QStringList& names) { busNames_ = names; }
     // The report as text (UTF-8).
     QByteArray report() const;
 
@@ -48,7 +52,8 @@ private:
     uint64_t perService_[32] = {};
     std::map<uint32_t, uint64_t> abortCodes_;
     std::map<int, uint64_t> emcyPerNode_;
-    uint64_t nodeFrames_[128] = {};
+    std::vector<std::array<uint64_t, 128>> nodeFrames_;  // per bus, per node-ID
+    QStringList busNames_;
     std::vector<double> bitsPerSecond_;
     int64_t t0_ = 0;
     bool haveT0_ = false;

@@ -68,8 +68,8 @@ int runMap(const QStringList& args) {
     const QString verb = QStringLiteral("pdo map");
     QCommandLineParser p;
     p.setApplicationDescription(QStringLiteral(
-        "Write a PDO mapping in the CiA 301 order (pre-operational, COB-ID invalid, sub0 = 0, entries, sub0 = n, COB-ID valid, "
-        "transmission type, inhibit time, event timer), verify it by reading back, and restore the previous mapping if a step fails."));
+        "Write a PDO mapping in the CiA 301 order (pre-operational, COB-ID invalid, transmission type, inhibit time, event timer, "
+        "sub0 = 0, entries, sub0 = n, COB-ID valid), verify it by reading back, and restore the previous mapping if a step fails."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("PDO"), QStringLiteral("tpdo1..tpdo512 or rpdo1..rpdo512"));

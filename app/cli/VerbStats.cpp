@@ -45,6 +45,7 @@ int runStats(const QStringList& args) {
         for (auto batch = ahead.next(); !batch.empty(); batch = ahead.next())
             for (const CanFrame& f : batch) stats.add(f);
     }
+    stats.setBusNames(reader->busNames());
     const QByteArray report = stats.report();
     std::fwrite(report.constData(), 1, static_cast<size_t>(report.size()), stdout);
     if (reader->diagnosticCount()) std::fprintf(stdout, "\nLog problems: %llu (first: line/record %lld: %s)\n", (unsigned long long)reader->diagnosticCount(),

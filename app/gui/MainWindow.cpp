@@ -216,12 +216,8 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
         return false;
     }
     std::optional<std::vector<FrameNo>> frames;
-    if (filteredOnly) {
-        TraceModel* m = trace_->model();
-        frames.emplace();
-        frames->reserve(static_cast<size_t>(m->rowCount()));
-        for (int r = 0; r < m->rowCount(); ++r) frames->push_back(m->frameAt(r));
-    }
+    // Each shown frame once, in order (a collapsed SDO transfer row stands for its frames).
+    if (filteredOnly) frames = trace_->model()->shownFrames();
     saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;

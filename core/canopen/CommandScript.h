@@ -49,10 +49,22 @@ struct ScriptStep {
     static ScriptStep nmtCommand(NmtCommand command, uint8_t node, const QString& why);
     static ScriptStep wait(uint32_t ms, const QString& why);
     static ScriptStep waitForNode(uint8_t node, uint32_t timeoutMs, const QString& why);
+    // LSS builders (CiA 305; added with the implementation, same meaning as the Kind comments).
+    static ScriptStep lssSwitchGlobal(bool configuration, const QString& why);
+    static ScriptStep lssSwitchSelective(const LssIdentity& identity, const QString& why);
+    static ScriptStep lssConfigureNodeId(uint8_t nodeId, const QString& why);
+    static ScriptStep lssConfigureBitRate(uint32_t bitRate, const QString& why);
+    static ScriptStep lssStore(const QString& why);
+    static ScriptStep lssActivateBitTiming(uint16_t switchDelayMs, const QString& why);
+
+    // Same effect on the bus and same reason: compares only the fields the kind uses.
+    bool sameAs(const ScriptStep& other) const;
+    // SdoExpect: does `value` (as read) match `data` under `mask`? Shorter side zero-extended.
+    bool matches(const QByteArray& value) const;
 
     // The step as one script line (without the comment), e.g. "sdo write 5 0x1600:00 0x00",
     // "sdo expect 5 0x6041:00 0x0027 mask 0x006f", "nmt preop 5", "lss node-id 7", "wait 100",
-    // "wait-node 7 3000".
+    // "wait-node 7 3000". See CommandScript for the grammar.
     QString toLine() const;
     // Human summary for the dry-run table: "Write 1600h:00 = 00h on node 5".
     QString describe() const;
@@ -60,6 +72,27 @@ struct ScriptStep {
 
 // A named sequence of steps; text form: one step per line, `# why` comments before each step,
 // header comments for title and target. Parsing reports "line N: message" and never throws.
+//
+// Text form (UTF-8, one step per line, words separated by blanks, case-insensitive keywords):
+//   # title: Map RPDO1 of node 5          in the first block of comments (the header)
+//   # Stop process data (NMT)             comment lines right before a step are its reason (why);
+//   nmt preop 5                           a blank line drops comments not yet attached to a step
+//   sdo write 5 0x1600:00 0x00            NODE INDEX:SUB DATA   (index and sub-index in hex)
+//   sdo write 5 0x1008:00 bytes 41 42 43
+//   sdo read 5 0x1018:01
+//   sdo expect 5 0x6041:00 0x0027 mask 0x006f
+//   nmt start|stop|preop|reset|reset-comm NODE         (NODE 0 = all nodes)
+//   lss switch-global config|wait
+//   lss switch-selective VENDOR PRODUCT REVISION SERIAL
+//   lss node-id N | lss bitrate BITS | lss store | lss activate DELAY_MS
+//   wait MS | wait-node NODE TIMEOUT_MS
+// DATA keeps its length on the bus:
+//   0xHH / 0xHHHH / 0xHHHHHHHH   1, 2 or 4 bytes: the number of hex digits (2, 4, 8) is the size,
+//                                the value is sent little-endian (0x0006 -> 06 00)
+//   u8|u16|u32|i8|i16|i32 N      typed number, decimal or 0x-hex (i = two's complement)
+//   bytes B0 B1 ...              raw bytes in bus order (any other length)
+// toText() writes the 0x form for 1, 2 and 4 bytes and the bytes form otherwise; a mask uses the
+// same form and must have the data's length. Numbers elsewhere are decimal or 0x-hex.
 struct CommandScript {
     QString title;
     std::vector<ScriptStep> steps;

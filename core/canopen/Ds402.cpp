@@ -142,4 +142,33 @@ bool modeSupported(uint32_t supported, int8_t mode) {
     return supported & (1u << (mode - 1));
 }
 
+QString statuswordBitMeaning(int bit, bool set) {
+    // Plain words for the bits a technician has to act on (CiA 402-2 Table 30 and the usual
+    // causes named in the drive manuals' commissioning chapters).
+    switch (bit) {
+    case 0: return set ? QString() : QStringLiteral("the drive is not ready: it ignored Shutdown (is it still starting up, or not under CANopen control?)");
+    case 1: return set ? QString() : QStringLiteral("the drive did not switch on: main power, the enable input or safe torque off (STO) may be blocking it");
+    case 2: return set ? QString() : QStringLiteral("the motor is not energised (servo off): check the enable/STO inputs and that the drive accepts CANopen commands");
+    case 3: return set ? QStringLiteral("the drive is in fault: read the error code and the vendor alarm, remove the cause, then fault reset") : QString();
+    case 4: return set ? QString() : QStringLiteral("main power is not on (the power stage has no DC bus voltage)");
+    case 5: return set ? QString() : QStringLiteral("quick stop is active: the quick stop command or input is holding the drive");
+    case 6: return set ? QStringLiteral("the drive is locked out (switch on disabled): it needs Shutdown first") : QString();
+    case 7: return set ? QStringLiteral("the drive reports a warning (not a fault): look at the drive's panel") : QString();
+    case 9: return set ? QString() : QStringLiteral("the drive is not under CANopen control (remote off): check its control-mode parameter");
+    case 11: return set ? QStringLiteral("an internal limit is active (torque, speed or position limit)") : QString();
+    default: return {};
+    }
+}
+
+std::optional<Command> nextEnableCommand(State s) {
+    switch (s) {
+    case State::Fault: return Command::FaultReset;
+    case State::SwitchOnDisabled: return Command::Shutdown;
+    case State::ReadyToSwitchOn: return Command::SwitchOn;
+    case State::SwitchedOn: return Command::EnableOperation;
+    case State::QuickStopActive: return Command::DisableVoltage;
+    default: return std::nullopt;
+    }
+}
+
 }  // namespace coscope::canopen::ds402

@@ -42,6 +42,9 @@ inline constexpr uint16_t InternalLimitActive = 1u << 11;
 // Names of the statusword bits that are set (e.g. "ready to switch on", "voltage enabled").
 QStringList statuswordBits(uint16_t sw);
 QString statuswordBitName(int bit);
+// What a statusword bit being on (`set`) or off means for a technician, in plain words, e.g.
+// bit 4 off: "main power is not on". Empty when there is nothing useful to say.
+QString statuswordBitMeaning(int bit, bool set);
 
 // Controlword commands (CiA 402-2 Table 27: bits 0-3 and 7).
 enum class Command : uint8_t {
@@ -65,5 +68,10 @@ QString modeShortName(int8_t mode);      // "pp", "pv", "pt", "hm", "ip", "csp",
 std::optional<int8_t> modeFromShortName(const QString& name);
 // 6502h supported drive modes: bit n-1 for mode n (pp bit 0, vl 1, pv 2, pt 3, hm 5, ip 6, csp 7, csv 8, cst 9).
 bool modeSupported(uint32_t supportedModes6502, int8_t mode);
+
+// The next command on the way to Operation enabled from `s` (Fault: Fault reset; Switch on
+// disabled: Shutdown; Ready to switch on: Switch on; Switched on: Enable operation; Quick stop
+// active: Disable voltage); nullopt in Operation enabled and the transient states.
+std::optional<Command> nextEnableCommand(State s);
 
 }  // namespace coscope::canopen::ds402

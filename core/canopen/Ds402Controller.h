@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/canopen/CommandScript.h"
 #include "core/canopen/Ds402.h"
 #include "core/canopen/SdoClient.h"
 
@@ -22,8 +23,42 @@ struct Ds402Result {
     ds402::State state = ds402::State::Unknown;
     int8_t mode = 0;         // setMode: 6061h read back
     QString error;           // one line: what failed and, for a transition, the missing bits
+    ds402::State target = ds402::State::Unknown;  // transition: the state that was waited for
+    QString advice;          // failed transition: what the wrong bits mean, in plain words
+    QString stopReason;      // test move: why it stopped ("button released", "time limit", ...)
 };
 using Ds402Callback = std::function<void(const Ds402Result&)>;
+
+// A short test move with small limits, for checking wiring and direction on a hold-to-run
+// control. Jog: profile velocity (6060h = 3, target velocity 60FFh, CiA 402-2 §14). Relative:
+// profile position (6060h = 1, 607Ah relative to the current target, bit 6 of 6040h, §12).
+// Acceleration 6083h and deceleration 6084h are written first. The move stops by itself when
+// the watchdog is not fed, after maxDurationMs, or when the drive stops answering.
+struct Ds402TestMove {
+    enum class Kind : uint8_t { Jog, Relative };
+    Kind kind = Kind::Jog;
+    int32_t velocity = 1000;        // jog: 60FFh (signed); relative: 6081h profile velocity (magnitude)
+    int32_t distance = 0;           // relative: 607Ah, position units (signed)
+    uint32_t acceleration = 10000;  // 6083h
+    uint32_t deceleration = 10000;  // 6084h
+    int maxDurationMs = 3000;
+    int watchdogMs = 400;           // stop when feedWatchdog() was not called for this long
+
+    // Limits of a test move (velocity/position units of the drive; conservative for commissioning).
+    static constexpr int32_t kMaxVelocity = 200000;
+    static constexpr int32_t kMaxDistance = 1000000;
+    static constexpr int kMaxDurationMs = 30000;
+    // Empty when the move is within the limits, else why not.
+    QString check() const;
+};
+
+// One sample of a running test move (statusword, 6064h position actual, 606Ch velocity actual).
+struct Ds402MotionSample {
+    qint64 ms = 0;  // since the move started
+    uint16_t statusword = 0;
+    int32_t position = 0;
+    int32_t velocity = 0;
+};
 
 // CiA 402 controller over SDO (CiA 402-2 §6.2): reads the state from 6041h, performs the
 // state-machine transitions by writing 6040h and waits for the statusword they lead to, sets
@@ -54,12 +89,40 @@ public:
     // To Switch on disabled: Shutdown (when operating) then Disable voltage.
     void disable(Ds402Callback done);
     void setMode(int8_t mode, Ds402Callback done);
+    // Quick stop (6040h = 0002h): the drive brakes on its quick stop ramp and ends in Quick stop
+    // active or Switch on disabled (605Ah).
+    void quickStop(Ds402Callback done);
+    // Disable voltage (6040h = 0000h) at once, whatever the state (no read first), then reads
+    // the state back. The safe way out after a failure.
+    void disableVoltage(Ds402Callback done);
+
+    // Test move (see Ds402TestMove). False + *why when refused before anything is sent (limits,
+    // one already running). The drive must be in Operation enabled, else `done` reports it.
+    // `sample` gets each monitoring read (about every 50 ms); `done` runs once, after the drive
+    // was stopped (ok, stopReason) or, on a fault or a silent drive, disabled (not ok).
+    bool startTestMove(const Ds402TestMove& move, std::function<void(const Ds402MotionSample&)> sample, Ds402Callback done,
+                       QString* why = nullptr);
+    // The hold-to-run control is still held.
+    void feedWatchdog();
+    // Stops a running test move (halt, target velocity 0) and waits until it stands still.
+    void stopTestMove(const QString& reason);
+    bool testMoveActive() const { return move_ != nullptr; }
+
+    // The steps enable() sends from state `from` (and the mode set first when given), for the
+    // dry run: 6040h writes, each followed by the statusword 6041h it must lead to.
+    static CommandScript enableScript(uint8_t node, int axis, ds402::State from, std::optional<int8_t> mode = std::nullopt);
+    // The steps of one transition (for the dry run of a single button).
+    static std::vector<ScriptStep> transitionSteps(uint8_t node, int axis, ds402::Command command);
 
     // The statusword mask/value a state shows (CiA 402-2 Table 30).
     static bool expectedStatusword(ds402::State s, uint16_t* mask, uint16_t* value);
     // "missing bit 2 (operation enabled)" / "unexpected bit 6 (switch on disabled)" for the bits
     // where `sw` differs from what `s` needs.
     static QString describeMismatch(ds402::State s, uint16_t sw);
+    // The same in plain words for a technician, one sentence per bit, e.g. "Voltage enabled
+    // (bit 4) is off: main power is not on". Also names voltage enabled (for Switched on and
+    // beyond) and remote, which Table 30 does not use for the state.
+    static QString explainMismatch(ds402::State s, uint16_t sw);
 
 private:
     struct Step {
@@ -71,6 +134,10 @@ private:
     void waitForState(ds402::State target, ds402::State alternative, QElapsedTimer started, Ds402Callback done);
     void failSafe(Ds402Result r, Ds402Callback done);
     QString prefix() const;
+    struct Move;
+    void moveMonitor();
+    void moveStopped(Ds402Result r);
+    void moveFail(const QString& error);
 
     SdoClient& sdo_;
     uint8_t node_;
@@ -78,6 +145,7 @@ private:
     int timeoutMs_ = 1000;
     int pollMs_ = 10;
     std::function<void(const QString&)> onSend_;
+    std::shared_ptr<Move> move_;
 };
 
 }  // namespace coscope::canopen

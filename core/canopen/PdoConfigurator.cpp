@@ -18,6 +18,12 @@ uint32_t fromLe(const QByteArray& b) {
     for (int i = 0; i < std::min<int>(4, static_cast<int>(b.size())); ++i) v |= uint32_t(uint8_t(b[i])) << (8 * i);
     return v;
 }
+// False when the dictionary marks the PDO's COB-ID (comm sub 1) read-only.
+bool cobIdWritable(const PdoId& pdo, const od::ObjectDictionary* dictionary) {
+    if (!dictionary) return true;
+    const od::SubObject* s = dictionary->entry(pdo.communicationIndex(), 1);
+    return !s || od::isWritable(s->access);
+}
 QString hex(uint32_t v, int digits) { return QStringLiteral("0x%1").arg(QStringLiteral("%1").arg(v, digits, 16, QChar(u'0')).toUpper()); }
 
 // Sequential reads of one PDO; optional sub-indices that abort are left unset.
@@ -115,16 +121,29 @@ void PdoConfigurator::readSet(uint8_t node, std::function<void(const std::vector
     (*next)(0);
 }
 
-std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node) {
-    // CiA 301 §7.5.2.35/36: a mapping may only change while the PDO is not valid (COB-ID bit 31)
-    // and while sub0 is 0; sub0 = n then activates the n entries.
+std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node, bool cobIdWritable) {
+    // CiA 301 §7.5.2.35/36: the inhibit time (and on many devices the other communication
+    // parameters) may only change while the PDO is not valid (COB-ID bit 31), the mapping only
+    // while it is not valid and sub0 is 0; sub0 = n then activates the n entries. The same
+    // order as AIMOTOR's documented procedure (extract-aimotor §5.4): invalid, type, mapping, valid.
     std::vector<Op> ops;
     const uint16_t comm = pdo.communicationIndex();
     const uint16_t map = pdo.mappingIndex();
     const uint32_t cob = c.cobId & 0x7FFFFFFFu;
     const QString name = pdo.name();
-    ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
-                   QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
+    if (cobIdWritable)
+        ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
+                       QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
+    ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type"),
+                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(c.transmissionType)});
+    if (c.inhibitTime)
+        ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time"),
+                       *c.inhibitTime ? QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)").arg(*c.inhibitTime / 10.0)
+                                      : QStringLiteral("No minimum gap between two messages (inhibit time = 0)")});
+    if (c.eventTimer)
+        ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer"),
+                       *c.eventTimer ? QStringLiteral("Send at least every %1 ms (event timer)").arg(*c.eventTimer)
+                                     : QStringLiteral("No timer: sent only on its trigger (event timer = 0)")});
     ops.push_back({map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0"),
                    QStringLiteral("Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)")});
     for (size_t i = 0; i < c.entries.size(); ++i) {
@@ -134,17 +153,9 @@ std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, con
     }
     ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1), QStringLiteral("mapping sub0 = %1").arg(c.entries.size()),
                    QStringLiteral("Activate the %1 mapped objects (mapping sub-index 0 = number of entries)").arg(c.entries.size())});
-    if (c.valid())
+    if (cobIdWritable && c.valid())
         ops.push_back({comm, 1, le(cob, 4), QStringLiteral("COB-ID valid"),
                        QStringLiteral("Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)").arg(name, QString::number(cob & 0x1FFFFFFFu, 16).toUpper())});
-    ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type"),
-                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(c.transmissionType)});
-    if (c.inhibitTime)
-        ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time"),
-                       QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)").arg(*c.inhibitTime / 10.0)});
-    if (c.eventTimer)
-        ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer"),
-                       QStringLiteral("Send at least every %1 ms (event timer)").arg(*c.eventTimer)});
     Q_UNUSED(node);
     return ops;
 }
@@ -166,7 +177,7 @@ CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, c
         s.why = QStringLiteral("Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)");
         script.steps.push_back(s);
     }
-    for (const Op& op : writeOps(pdo, wanted, node)) {
+    for (const Op& op : writeOps(pdo, wanted, node, cobIdWritable(pdo, dictionary))) {
         ScriptStep s;
         s.kind = ScriptStep::Kind::SdoWrite;
         s.node = node;
@@ -221,7 +232,8 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
         return;
     }
     QPointer<PdoConfigurator> self(this);
-    read(node, pdo, [self, node, pdo, wanted, result, done](const PdoReadResult& before) mutable {
+    const bool cobWritable = cobIdWritable(pdo, dictionary);
+    read(node, pdo, [self, node, pdo, wanted, result, done, cobWritable](const PdoReadResult& before) mutable {
         if (!self) return;
         if (!before.ok) {
             result->error = QStringLiteral("reading the current %1: %2").arg(pdo.name(), before.error);
@@ -229,6 +241,7 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
         }
         result->previous = before.config;
         if (wanted.cobId == 0) wanted.cobId = before.config.cobId & 0x7FFFFFFFu;
+        if (!cobWritable) wanted.cobId = before.config.cobId;  // fixed on this drive
         result->written = wanted;
         if (self->nmt_) {
             // PDO parameters are changed in pre-operational (CiA 301 §7.3.2).
@@ -238,11 +251,11 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
                 return done(*result);
             }
         }
-        auto ops = std::make_shared<std::vector<Op>>(writeOps(pdo, wanted, node));
-        auto restore = [self, node, pdo, result, done](const QString& why) {
+        auto ops = std::make_shared<std::vector<Op>>(writeOps(pdo, wanted, node, cobWritable));
+        auto restore = [self, node, pdo, result, done, cobWritable](const QString& why) {
             if (!self) return;
             result->error = why;
-            auto back = std::make_shared<std::vector<Op>>(writeOps(pdo, result->previous, node));
+            auto back = std::make_shared<std::vector<Op>>(writeOps(pdo, result->previous, node, cobWritable));
             self->runOps(node, back, 0, nullptr, [result, done](bool ok, int, const SdoResult& err) {
                 result->restored = ok;
                 result->error += ok ? QStringLiteral("; previous mapping restored") : QStringLiteral("; restoring the previous mapping failed too: ") + err.error;

@@ -35,9 +35,10 @@ struct PdoWriteResult {
 
 // Reads and writes PDO communication and mapping parameters over SDO (CiA 301 §7.5.2.35-38).
 // A mapping is written in the CiA 301 order: node to pre-operational, COB-ID invalid
-// (bit 31), mapping sub0 = 0, the entries, sub0 = n, COB-ID valid, transmission type, inhibit
-// time, event timer; then every value is read back. If any step fails, the previous
-// parameters are written back the same way. A mapping over 64 bits or with an object that is not
+// (bit 31), transmission type, inhibit time, event timer, mapping sub0 = 0, the entries,
+// sub0 = n, COB-ID valid; then every value is read back. If any step fails, the previous
+// parameters are written back the same way. A drive whose dictionary marks the COB-ID read-only
+// (DEXMART DEV, extract-dexmart §4.6) keeps its COB-ID: those two steps are left out. A mapping over 64 bits or with an object that is not
 // mappable is refused before anything is sent.
 class PdoConfigurator : public QObject {
     Q_OBJECT
@@ -65,7 +66,10 @@ private:
     };
     using OpsDone = std::function<void(bool ok, int failedAt, const SdoResult& failure)>;
     void runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log, OpsDone done);
-    static std::vector<Op> writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node);
+    // `cobIdWritable` false (the dictionary marks comm sub 1 read-only, e.g. DEXMART DEV): the
+    // PDO cannot be switched off; the COB-ID steps are left out and the mapping is rewritten
+    // while it is in use (sub0 = 0 still stops it from being sent with half a mapping).
+    static std::vector<Op> writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node, bool cobIdWritable = true);
 
     SdoClient& sdo_;
     NmtMaster* nmt_;

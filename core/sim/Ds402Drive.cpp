@@ -105,6 +105,15 @@ void Ds402Drive::handleControlword(uint16_t cw) {
     const bool shutdown = (cw & 0x87) == 0x06;
     const bool switchOn = (cw & 0x8F) == 0x07;
     const bool enableOp = (cw & 0x8F) == 0x0F;
+    if ((state_ == State::ReadyToSwitchOn || state_ == State::SwitchedOn) && (switchOn || enableOp)) {
+        if (!enableFaults_.alarmOnSwitchOn.isEmpty()) {
+            // Injected: the drive trips while switching on (e.g. Delta AL013, AIMOTOR Er.620).
+            if (enableFaults_.alarmOnSwitchOn == u"typical" || !dev_.injectDriveFault(enableFaults_.alarmOnSwitchOn, axis_))
+                dev_.injectDriveFault(DriveFault{0, 0, axis_});
+            return;
+        }
+        if (enableFaults_.mainPowerOff && state_ == State::ReadyToSwitchOn) return;  // no DC bus: transition 3 not possible
+    }
     switch (state_) {
     case State::SwitchOnDisabled:
         if (shutdown) setState(State::ReadyToSwitchOn);  // 2
@@ -301,7 +310,7 @@ void Ds402Drive::publish() {
     default: break;
     }
     // Voltage enabled while mains are on (the model always has them); remote: CANopen control.
-    if (state_ != State::NotReadyToSwitchOn) s |= sw::VoltageEnabled;
+    if (state_ != State::NotReadyToSwitchOn && !enableFaults_.mainPowerOff) s |= sw::VoltageEnabled;
     if (canopenControlActive()) s |= sw::Remote;
     if (state_ == State::OperationEnabled) {
         if (targetReached_) s |= sw::TargetReached;

@@ -3,6 +3,8 @@
 
 #include "core/canopen/Ds402.h"
 
+#include <QString>
+
 #include <cstdint>
 
 namespace coscope::sim {
@@ -38,6 +40,17 @@ public:
     // Whether the control-mode parameter allows CANopen control (vendor pre-condition).
     bool canopenControlActive() const;
 
+    // Fault injection for enable tests (network thread). mainPowerOff: voltage enabled (bit 4)
+    // stays off and Switch on is not accepted (the drive stays in Ready to switch on), as a drive
+    // without mains does. alarmOnSwitchOn: the vendor alarm (Personality::alarm name, or
+    // "typical" for the personality's typical fault) raised when Switch on or Enable operation
+    // is commanded; it comes again on every attempt until cleared.
+    struct EnableFaults {
+        bool mainPowerOff = false;
+        QString alarmOnSwitchOn;
+    };
+    EnableFaults& enableFaults() { return enableFaults_; }
+
 private:
     uint16_t idx(uint16_t base) const { return static_cast<uint16_t>(base + axis_ * 0x800); }
     int64_t readInt(uint16_t base, uint8_t sub = 0, int64_t fallback = 0) const;
@@ -68,6 +81,7 @@ private:
     double homingStart_ = 0;
     int faultReactionMs_ = 0;
     uint16_t pendingFault_ = 0;
+    EnableFaults enableFaults_;
 };
 
 }  // namespace coscope::sim

@@ -36,10 +36,16 @@ void LssSlave::onFrame(const CanFrame& f) {
     const uint8_t cs = d[0];
     const uint32_t v = le32(d + 1);
     switch (cs) {
-    case lss::SwitchStateGlobal:
+    case lss::SwitchStateGlobal: {
+        const bool wasConfiguration = configuration_;
         configuration_ = d[1] == 1;
         selectiveStep_ = 0;
+        // An unconfigured node given a node-ID starts with it when switched to waiting state
+        // (CiA 305 §6.3.2: LSS-unconfigured -> NMT reset communication with the new node-ID).
+        if (wasConfiguration && !configuration_ && dev_.nodeId_ == 0xFF && dev_.pendingNodeId_ != 0xFF)
+            dev_.resetCommunication(dev_.now());
         return;
+    }
     case lss::SwitchSelectiveVendor:
     case lss::SwitchSelectiveProduct:
     case lss::SwitchSelectiveRevision:
@@ -59,7 +65,9 @@ void LssSlave::onFrame(const CanFrame& f) {
     case lss::ConfigureNodeId: {
         if (!configuration_) return;
         const uint8_t id = d[1];
-        if ((id >= 1 && id <= 127) || id == 0xFF) {
+        if (dev_.lssFaults_.configureNodeIdError) {
+            reply(lss::ConfigureNodeId, dev_.lssFaults_.configureNodeIdError);
+        } else if ((id >= 1 && id <= 127) || id == 0xFF) {
             dev_.pendingNodeId_ = id;  // active after NMT Reset Communication (§6.4.2)
             dev_.pendingFromLss_ = true;
             reply(lss::ConfigureNodeId, 0);
@@ -85,6 +93,10 @@ void LssSlave::onFrame(const CanFrame& f) {
         return;
     case lss::StoreConfiguration:
         if (!configuration_) return;
+        if (dev_.lssFaults_.storeError) {
+            reply(lss::StoreConfiguration, dev_.lssFaults_.storeError);
+            return;
+        }
         dev_.storedNodeId_ = dev_.pendingNodeId_;
         dev_.storedBitRate_ = dev_.pendingBitRate_;
         reply(lss::StoreConfiguration, 0);

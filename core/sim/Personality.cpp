@@ -54,8 +54,6 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
     if (name == u"delta-asda-a2") {
         p.vendor = Vendor::Delta;
         p.supportedModes = PP | PV | PT | HM | IP;  // extract-delta §4.4
-        p.nodeIdIndex = 0x2300;                     // P3-00
-        p.bitRateIndex = 0x2301;                    // P3-01, digit Z
         p.controlModeIndex = 0x2101;                // P1-01 = 0Ch standard CANopen
         p.controlModeValue = 0x0C;
         p.alarmOnResetWhileEnabled = true;
@@ -64,8 +62,6 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
     } else if (name == u"aimotor") {
         p.vendor = Vendor::Aimotor;
         p.supportedModes = PP | PV | PT | HM | CSP | CSV | CST;  // extract-aimotor §4
-        p.nodeIdIndex = 0x200C;  // H0C-00 [inferred]
-        p.nodeIdSub = 0x01;
         p.controlModeIndex = 0x2002;  // H02-00 = 8 CANopen control
         p.controlModeSub = 0x01;
         p.controlModeValue = 8;
@@ -86,6 +82,15 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
     } else {
         if (error) *error = QStringLiteral("unknown virtual drive '%1'; known: %2").arg(name, simulatableDictionaries().join(QStringLiteral(", ")));
         return std::nullopt;
+    }
+    p.nodeSettings = canopen::vendorNodeSettings(name);
+    if (p.nodeSettings && p.nodeSettings->nodeId) {
+        p.nodeIdIndex = p.nodeSettings->nodeId->index;
+        p.nodeIdSub = p.nodeSettings->nodeId->sub;
+    }
+    if (p.nodeSettings && p.nodeSettings->bitRate) {
+        p.bitRateIndex = p.nodeSettings->bitRate->index;
+        p.bitRateSub = p.nodeSettings->bitRate->sub;
     }
     return p;
 }

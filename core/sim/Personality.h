@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/canopen/NodeSettingsObjects.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -29,8 +31,10 @@ struct Personality {
     uint32_t supportedModes = 0;   // 6502h bit mask when the dictionary has no default
     uint32_t defaultBitRate = 500000;
 
-    // Delta: P3-00 (2300h) node-ID and P3-01 (2301h) bit rate digit Z (extract-delta §2.4);
-    // AIMOTOR: H0C-00 (200Ch:01) node-ID [inferred in the extract]. Zero index = none.
+    // Where the node-ID and bit rate live besides LSS (canopen::vendorNodeSettings, the one
+    // source: Delta P3-00/P3-01, AIMOTOR H0C-00, DEXMART 09-19); the fields below repeat its
+    // indexes. Zero index = none.
+    std::optional<canopen::VendorNodeSettings> nodeSettings;
     uint16_t nodeIdIndex = 0;
     uint8_t nodeIdSub = 0;
     uint16_t bitRateIndex = 0;

@@ -3,16 +3,22 @@
 
 namespace coscope {
 
-SimBus::SimBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {}
+SimBus::SimBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {
+    if (url.bitrate() > 0) bitRate_ = static_cast<uint32_t>(url.bitrate());
+}
 
 SimBus::SimBus(const BusUrl& url, std::shared_ptr<sim::SimNetwork> network, QObject* parent)
-    : CanBus(url, parent), network_(std::move(network)) {}
+    : CanBus(url, parent), network_(std::move(network)) {
+    if (url.bitrate() > 0) bitRate_ = static_cast<uint32_t>(url.bitrate());
+}
 
 SimBus::~SimBus() { close(); }
 
 void SimBus::open() {
     if (attached_) return;
     setState(State::Opening);
+    const QString name = url().target.trimmed();
+    if (!network_ && !name.isEmpty()) network_ = sim::SimNetwork::published(name);
     if (!network_) {
         QString error;
         std::unique_ptr<sim::SimNetwork> net = sim::SimNetwork::fromSpec(url().option(QStringLiteral("nodes")), &error);
@@ -21,6 +27,7 @@ void SimBus::open() {
             return;
         }
         network_ = std::move(net);
+        if (!name.isEmpty()) sim::SimNetwork::publish(name, network_);
     }
     network_->attach(this);
     attached_ = true;

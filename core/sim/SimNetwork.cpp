@@ -8,6 +8,7 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <map>
 
 namespace coscope::sim {
 
@@ -118,9 +119,37 @@ void SimNetwork::broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fro
         std::lock_guard lock(mutex_);
         taps = taps_;
     }
-    for (SimTap* t : taps) t->simReceive(f, t == fromTap);
+    // A controller at another bit rate cannot decode the frame: it neither receives it nor
+    // acknowledges it (on a real bus it would also see error frames; not modelled).
+    const uint32_t rate = fromNode ? fromNode->bitRate() : fromTap ? fromTap->simBitRate() : 0;
+    for (SimTap* t : taps)
+        if (t == fromTap || sameBitRate(rate, t->simBitRate())) t->simReceive(f, t == fromTap);
     for (auto& n : nodes_)
-        if (n.get() != fromNode) n->onFrame(f, f.timestampNs);
+        if (n.get() != fromNode && sameBitRate(rate, n->bitRate())) n->onFrame(f, f.timestampNs);
+}
+
+namespace {
+std::mutex& registryMutex() {
+    static std::mutex m;
+    return m;
+}
+std::map<QString, std::weak_ptr<SimNetwork>>& registry() {
+    static std::map<QString, std::weak_ptr<SimNetwork>> r;
+    return r;
+}
+}  // namespace
+
+void SimNetwork::publish(const QString& name, const std::shared_ptr<SimNetwork>& network) {
+    std::lock_guard lock(registryMutex());
+    auto& r = registry();
+    std::erase_if(r, [](const auto& kv) { return kv.second.expired(); });
+    r[name] = network;
+}
+
+std::shared_ptr<SimNetwork> SimNetwork::published(const QString& name) {
+    std::lock_guard lock(registryMutex());
+    auto it = registry().find(name);
+    return it == registry().end() ? nullptr : it->second.lock();
 }
 
 VirtualDevice* SimNetwork::device(uint8_t nodeId) const {

@@ -25,6 +25,9 @@ public:
     // Called on the network thread for every frame on the bus. `own` is true for a frame this
     // tap injected itself (its Tx echo).
     virtual void simReceive(const CanFrame& frame, bool own) = 0;
+    // The tap's bit rate (bit/s): it sees only frames sent at this rate and its frames reach
+    // only nodes at this rate. 0 = any rate (the socketcand server).
+    virtual uint32_t simBitRate() const { return 0; }
 };
 
 // The in-process virtual CAN bus with its nodes. Runs on its own thread with a 1 ms tick; frames
@@ -59,9 +62,21 @@ public:
     static std::unique_ptr<SimNetwork> fromSpec(const QString& spec, QString* error);
     static QString defaultSpec();
 
+    // The bit rate a virtual device starts at (its personality's default).
+    static constexpr uint32_t kDefaultBitRate = 500000;
+
+    // Named networks (sim://NAME?...): endpoints opening the same name share one network,
+    // so a bus can be closed and reopened (e.g. at a new bit rate) without losing the devices'
+    // state. The registry holds weak references: a network lives while an endpoint or another
+    // owner holds it. Any thread.
+    static void publish(const QString& name, const std::shared_ptr<SimNetwork>& network);
+    static std::shared_ptr<SimNetwork> published(const QString& name);
+
 private:
     void onTick();
     void broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap);
+    // Frames pass between participants at the same bit rate (0 = any).
+    static bool sameBitRate(uint32_t a, uint32_t b) { return a == 0 || b == 0 || a == b; }
 
     std::vector<std::unique_ptr<SimNode>> nodes_;
     QThread* thread_ = nullptr;

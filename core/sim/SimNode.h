@@ -18,6 +18,9 @@ public:
     virtual void powerOn(int64_t nowNs) = 0;  // the node sends its boot-up here
     virtual void onFrame(const CanFrame& frame, int64_t nowNs) = 0;
     virtual void tick(int64_t nowNs) = 0;
+    // The bit rate the node's CAN controller runs at (bit/s); it only hears and is heard by
+    // participants at the same rate. 0 = any rate (a node that does not model bit timing).
+    virtual uint32_t bitRate() const { return 0; }
 
     // Set by the network: puts a frame on the bus.
     void setTransmitter(std::function<void(const CanFrame&)> tx) { transmit_ = std::move(tx); }

@@ -274,6 +274,11 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
             }
             stored_[k] = val;
         }
+        // A node-ID / bit rate set through a vendor parameter is saved with the parameters.
+        if (!pendingFromLss_ && inStoreGroup(sub, personality_.nodeIdIndex ? personality_.nodeIdIndex : 0x2000)) {
+            storedNodeId_ = pendingNodeId_;
+            storedBitRate_ = pendingBitRate_;
+        }
         return 0;
     }
     if (index == 0x1011 && sub > 0) {
@@ -294,8 +299,12 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
         const bool tpdo = index >= 0x1A00;
         const uint16_t comm = static_cast<uint16_t>(index - 0x200);
         const uint64_t cob = value(comm, 1).value_or(od::Value{}).toUInt64().value_or(0x80000000u);
-        // The mapping can only change while the PDO is invalid (CiA 301 §7.5.2.36, procedure).
-        if (!(cob & 0x80000000u)) return abortcode::UnsupportedAccess;
+        // The mapping can only change while the PDO is invalid (CiA 301 §7.5.2.36, procedure),
+        // except on a device whose COB-ID is read-only (DEXMART DEV: "after power-on the PDO
+        // mapping can be changed via SDO", extract-dexmart §4.6): there sub0 = 0 is enough.
+        const od::SubObject* cobEntry = dictionary_.entry(comm, 1);
+        const bool cobFixed = cobEntry && !od::isWritable(cobEntry->access);
+        if (!(cob & 0x80000000u) && !cobFixed) return abortcode::UnsupportedAccess;
         if (sub == 0) return pdo_->checkMappingCount(index, static_cast<uint8_t>(u));
         if (value(index, 0).value_or(od::Value{}).toUInt64().value_or(0) != 0) return abortcode::UnsupportedAccess;
         if (u != 0) return pdo_->checkMappingEntry(tpdo, static_cast<uint32_t>(u));
@@ -329,16 +338,20 @@ void VirtualDevice::afterWrite(uint16_t index, uint8_t sub) {
         }
     if (personality_.parametersStoredOnWrite && index >= 0x2000 && index <= 0x2FFF)
         stored_[key(index, sub)] = values_[key(index, sub)];  // Delta: P-parameters go to EEPROM at once
-    if (personality_.nodeIdIndex == index && personality_.nodeIdSub == sub) {
+    const auto& ns = personality_.nodeSettings;
+    if (ns && ns->nodeId && ns->nodeId->index == index && ns->nodeId->sub == sub) {
         // The node-ID parameter takes effect at the next power cycle / reset node (Delta P3-00 "●").
         pendingNodeId_ = static_cast<uint8_t>(value(index, sub).value_or(od::Value{}).toUInt64().value_or(nodeId_));
         pendingFromLss_ = false;
-        if (personality_.parametersStoredOnWrite) storedNodeId_ = pendingNodeId_;
+        if (ns->nodeId->storedOnWrite) storedNodeId_ = pendingNodeId_;
     }
-    if (personality_.vendor == Vendor::Delta && index == 0x2301) {
-        static constexpr uint32_t kRates[] = {125000, 250000, 500000, 750000, 1000000};  // digit Z
-        const auto z = (value(index, 0).value_or(od::Value{}).toUInt64().value_or(0) >> 8) & 0xF;
-        if (z < 5) pendingBitRate_ = storedBitRate_ = kRates[z];
+    if (ns && ns->bitRate && ns->bitRate->index == index && ns->bitRate->sub == sub) {
+        // Delta P3-01 digit Z (extract-delta §2.4); active after power cycle / reset node.
+        const auto raw = static_cast<uint32_t>(value(index, sub).value_or(od::Value{}).toUInt64().value_or(0));
+        if (const int rate = canopen::decodeVendorBitRate(*ns->bitRate, raw); rate > 0) {
+            pendingBitRate_ = static_cast<uint32_t>(rate);
+            if (ns->bitRate->storedOnWrite) storedBitRate_ = pendingBitRate_;
+        }
     }
     if (index >= 0x6000 && index <= 0x9FFF) {
         const auto axis = static_cast<size_t>((index - 0x6000) / 0x800);

@@ -5,6 +5,7 @@
 #include "core/od/ObjectDictionary.h"
 #include "core/od/Value.h"
 #include "core/sim/Personality.h"
+#include "core/sim/LssFaults.h"
 #include "core/sim/SdoFaults.h"
 #include "core/sim/SimNode.h"
 
@@ -45,10 +46,15 @@ struct DriveFault {
 //  - kTestDomainIndex (5FFFh:00) is a read-write DOMAIN of kTestDomainSize (64 KiB) bytes,
 //    added to every device whose dictionary has no such object, for SDO transfer tests and
 //    benchmarks. Its content is byte i = i & 0xFF until written.
-//  - The sim bus has no bit rate: a bit rate configured through LSS or a vendor parameter is
-//    kept in bitRate() (bit/s) and takes effect on activate bit timing / reset as on a device.
-//  - Node-ID changes (LSS configure + store, Delta P3-00) are pending until NMT Reset Node or
-//    Reset Communication (LSS) / Reset Node or power cycle (Delta P3-00, a "●" parameter).
+//  - The device's CAN controller runs at bitRate() (bit/s): the network passes frames only
+//    between participants at the same rate. A rate configured through LSS or a vendor parameter
+//    (canopen::vendorNodeSettings) takes effect on activate bit timing / reset / power cycle.
+//  - Node-ID changes (LSS configure + store, Delta P3-00, AIMOTOR H0C-00, DEXMART 09-19) are
+//    pending until NMT Reset Node or Reset Communication (LSS) / Reset Node or power cycle
+//    (vendor parameter; the manuals ask for a power cycle, the sim also accepts Reset Node).
+//    A vendor parameter survives a power cycle when the vendor saves it on write or after a
+//    1010h "save". A node that was LSS-unconfigured boots with its new node-ID when switched
+//    back to LSS waiting state (CiA 305 §6.3.2).
 //  - 1018h:04 serial number is 0 in the bundled dictionaries; a virtual device uses
 //    0x51000000 + its first node-ID so LSS can tell devices apart.
 class VirtualDevice : public SimNode {
@@ -75,7 +81,7 @@ public:
     // Node-ID that becomes active at the next reset (== nodeId() when nothing is pending).
     uint8_t pendingNodeId() const { return pendingNodeId_; }
     // Configured bit rate in bit/s (see class comment).
-    uint32_t bitRate() const { return bitRate_; }
+    uint32_t bitRate() const override { return bitRate_; }
     uint32_t pendingBitRate() const { return pendingBitRate_; }
     // Power cycle: stored values and stored node-ID/bit rate come back, boot-up is sent.
     void powerCycle();
@@ -99,6 +105,7 @@ public:
 
     // --- fault injection (tests)
     SdoFaults& sdoFaults() { return sdoFaults_; }
+    LssFaults& lssFaults() { return lssFaults_; }
     // Raises a vendor alarm: EMCY with the vendor's layout, 603Fh, 1001h, 1003h history and the
     // statusword fault bit (the drive goes through fault reaction to FAULT). A default DriveFault
     // raises the personality's typical fault.
@@ -166,6 +173,7 @@ private:
     bool guardToggle_ = false;
     bool guardingStarted_ = false;
     SdoFaults sdoFaults_;
+    LssFaults lssFaults_;
     uint64_t sdoRequests_ = 0;
     std::unique_ptr<SdoServer> sdo_;
     std::unique_ptr<PdoEngine> pdo_;

@@ -72,15 +72,17 @@ private slots:
         QCOMPARE(r.written.totalBits(), 48);
         // CiA 301 order.
         QCOMPARE(r.steps.size(), 9);
+        // Communication parameters while the PDO is not valid (the inhibit time may not change
+        // while it is, CiA 301 §7.5.2.35), then the mapping, then valid again.
         QVERIFY(r.steps[0].startsWith(QStringLiteral("1800:01 = 0x80000183")));
-        QVERIFY(r.steps[1].startsWith(QStringLiteral("1A00:00 = 0x00")));
-        QVERIFY(r.steps[2].startsWith(QStringLiteral("1A00:01 = 0x60410010")));
-        QVERIFY(r.steps[3].startsWith(QStringLiteral("1A00:02 = 0x60640020")));
-        QVERIFY(r.steps[4].startsWith(QStringLiteral("1A00:00 = 0x02")));
-        QVERIFY(r.steps[5].startsWith(QStringLiteral("1800:01 = 0x00000183")));
-        QVERIFY(r.steps[6].startsWith(QStringLiteral("1800:02 = 0x01")));
-        QVERIFY(r.steps[7].startsWith(QStringLiteral("1800:03 = 0x0064")));
-        QVERIFY(r.steps[8].startsWith(QStringLiteral("1800:05 = 0x0032")));
+        QVERIFY(r.steps[1].startsWith(QStringLiteral("1800:02 = 0x01")));
+        QVERIFY(r.steps[2].startsWith(QStringLiteral("1800:03 = 0x0064")));
+        QVERIFY(r.steps[3].startsWith(QStringLiteral("1800:05 = 0x0032")));
+        QVERIFY(r.steps[4].startsWith(QStringLiteral("1A00:00 = 0x00")));
+        QVERIFY(r.steps[5].startsWith(QStringLiteral("1A00:01 = 0x60410010")));
+        QVERIFY(r.steps[6].startsWith(QStringLiteral("1A00:02 = 0x60640020")));
+        QVERIFY(r.steps[7].startsWith(QStringLiteral("1A00:00 = 0x02")));
+        QVERIFY(r.steps[8].startsWith(QStringLiteral("1800:01 = 0x00000183")));
         const auto back = wait<PdoReadResult>([&](auto cb) { pdo.read(3, t1, cb); });
         QVERIFY(back.ok);
         QCOMPARE(back.config.entries, r.written.entries);

@@ -33,15 +33,23 @@ void NodeScanner::scan(int firstNode, int lastNode, int timeoutMs) {
             if (r.ok || r.serverAborted) {
                 found_.insert(node);
                 table_->markScanned(node);
-                identify(node);
+                // The scan is finished only once the identities are in: whoever acts on
+                // finished() may use the matched dictionaries, and may delete the scanner.
+                ++outstanding_;
+                identifyThen(node, [this] { done(); });
             }
             done();
         }, options);
     }
 }
 
-void NodeScanner::identify(int node) {
-    if (!sdo_) return;
+void NodeScanner::identify(int node) { identifyThen(node, {}); }
+
+void NodeScanner::identifyThen(int node, std::function<void()> then) {
+    if (!sdo_) {
+        if (then) then();
+        return;
+    }
     const auto id = static_cast<uint8_t>(node);
     sdo_->upload(id, 0x1008, 0, [this, node](const canopen::SdoResult& r) {
         if (r.ok) table_->setDeviceName(node, QString::fromLatin1(r.data).trimmed().remove(QChar(0)));
@@ -49,7 +57,7 @@ void NodeScanner::identify(int node) {
     // 1018h identity object: 1 vendor-ID, 2 product code, 3 revision, 4 serial (CiA 301 §7.5.2.21).
     auto parts = std::make_shared<std::array<std::optional<uint32_t>, 4>>();
     for (uint8_t sub = 1; sub <= 4; ++sub) {
-        sdo_->upload(id, 0x1018, sub, [this, node, sub, parts](const canopen::SdoResult& r) {
+        sdo_->upload(id, 0x1018, sub, [this, node, sub, parts, then](const canopen::SdoResult& r) {
             if (r.ok) (*parts)[sub - 1] = u32le(r.data);
             if (sub != 4) return;  // per-node transfers run in order: sub 4 is the last
             const auto& p = *parts;
@@ -61,6 +69,7 @@ void NodeScanner::identify(int node) {
                     sdo_->context().setNodeDictionary(static_cast<uint8_t>(node), e->name);
                 }
             }
+            if (then) then();
         });
     }
 }

@@ -32,6 +32,7 @@ signals:
     void finished(int nodesFound);
 
 private:
+    void identifyThen(int node, std::function<void()> then);
     void done();
     canopen::SdoClient* sdo_;
     NodeTable* table_;

@@ -17,6 +17,7 @@ Workspace::Workspace(QObject* parent)
       traceDecoder_(std::make_shared<TraceDecoder>()),
       decoder_(traceDecoder_),
       store_(std::make_shared<TraceStore>()),
+      signals_(std::make_shared<dissect::SignalRecorder>()),
       events_(decoder_) {
     traceDecoder_->setStore(store_);
 }
@@ -39,15 +40,19 @@ void Workspace::reset() {
     nodes_.clear();
     events_.clear();
     store_ = std::make_shared<TraceStore>();
+    signals_ = std::make_shared<dissect::SignalRecorder>();
     traceDecoder_->setStore(store_);
     syncedNodesRevision_ = ~uint64_t{0};
     reportedDropped_ = reportedErrors_ = 0;
     sourceName_.clear();
 }
 
+// The plot feed holds its own reference to the recorder of this source: a consumer never
+// outlives its session or load job, and reset() replaces the recorder only after stopping them.
 std::vector<CaptureSession::Consumer> Workspace::analysisConsumers() {
     return {[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
-            [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); }};
+            [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
+            [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
 }
 
 bool Workspace::connectBus(const QString& url, QString* error) {
@@ -126,6 +131,7 @@ void Workspace::syncDictionaries() {
     for (const NodeInfo& n : nodes_.snapshot())
         if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
     traceDecoder_->setDictionaries(names);
+    signals_->setDictionaries(names);
 }
 
 void Workspace::poll() {

@@ -8,6 +8,7 @@
 #include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanBus.h"
 #include "core/trace/CaptureSession.h"
+#include "dissectors/SignalRecorder.h"
 
 #include <QObject>
 #include <QStringList>
@@ -45,6 +46,9 @@ public:
     EventLog& events() { return events_; }
     const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
     TraceDecoder& traceDecoder() { return *traceDecoder_; }
+    // The plot's signal buffers, fed on the ingest thread (live or log loading); replaced with
+    // the store when the source changes.
+    const std::shared_ptr<dissect::SignalRecorder>& signalRecorder() const { return signals_; }
 
     CanBus* bus() const { return bus_.get(); }
     bool isLive() const { return bus_ != nullptr; }
@@ -74,6 +78,7 @@ private:
     std::shared_ptr<TraceDecoder> traceDecoder_;
     std::shared_ptr<const FrameDecoder> decoder_;
     std::shared_ptr<TraceStore> store_;
+    std::shared_ptr<dissect::SignalRecorder> signals_;
     NodeTable nodes_;
     EventLog events_;
     std::unique_ptr<CanBus> bus_;

@@ -4,6 +4,8 @@
 #include "core/canopen/CobId.h"
 
 #include <QFontDatabase>
+
+#include <algorithm>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QSplitter>
@@ -46,6 +48,7 @@ FrameDetailsView::FrameDetailsView(QWidget* parent) : QWidget(parent) {
 
 void FrameDetailsView::clear() {
     frame_.reset();
+    transferData_.clear();
     tree_->clear();
     hex_->clear();
     highlight_ = {0, 0};
@@ -65,8 +68,41 @@ void FrameDetailsView::showFrame(const TraceStore& store, FrameNo n) {
     showDecoded(store.frame(n), static_cast<uint64_t>(n) + 1, d);
 }
 
+void FrameDetailsView::showTransfer(const dissect::SdoTransferRecord& t, const std::vector<FrameNo>& frames) {
+    frame_.reset();
+    transferData_ = t.data;
+    highlight_ = {0, 0};
+    tree_->clear();
+    const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper();
+    auto* top = new QTreeWidgetItem(tree_, {tr("SDO transfer"), QStringLiteral("%1 %2").arg(object, t.name)});
+    auto add = [top](const QString& label, const QString& value) { return new QTreeWidgetItem(top, {label, value}); };
+    add(tr("Node"), QString::number(t.node));
+    add(tr("Object"), t.name.isEmpty() ? object : QStringLiteral("%1 %2").arg(object, t.name));
+    add(tr("Direction"), t.upload ? tr("upload (read from the server)") : tr("download (write to the server)"));
+    add(tr("Mode"), t.block ? tr("block") : t.segmented ? tr("segmented") : tr("expedited"));
+    add(tr("Size"), tr("%n byte(s)", nullptr, static_cast<int>(t.size)));
+    if (!t.data.isEmpty()) {
+        add(tr("Data"), QString::fromLatin1(t.data.left(64).toHex(' ').toUpper()) + (t.data.size() > 64 ? QStringLiteral(" …") : QString()))
+            ->setData(0, kLengthRole, static_cast<int>(t.data.size()));
+    }
+    if (!t.valueText.isEmpty()) add(tr("Value"), t.valueText);
+    auto* status = add(tr("Status"), t.status);
+    if (t.status != QLatin1String("ok")) status->setForeground(1, QColor(176, 0, 32));
+    if (t.status == QLatin1String("aborted")) {
+        add(tr("Abort code"), QStringLiteral("0x%1").arg(t.abortCode, 8, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x")));
+        add(tr("Abort reason"), t.abortText);
+    }
+    if (!frames.empty())
+        add(tr("Frames"), frames.size() == 1 ? tr("1 (frame %1)").arg(frames.front() + 1)
+                                             : tr("%1 (frames %2–%3)").arg(frames.size()).arg(frames.front() + 1).arg(frames.back() + 1));
+    add(tr("Duration"), QStringLiteral("%1 ms").arg(static_cast<double>(t.endNs - t.startNs) / 1e6, 0, 'f', 3));
+    top->setExpanded(true);
+    renderHex();
+}
+
 void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dissect::Dissection& d) {
     frame_ = f;
+    transferData_.clear();
     highlight_ = {0, 0};
     tree_->clear();
 
@@ -110,16 +146,17 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
 }
 
 void FrameDetailsView::renderHex() {
-    if (!frame_) {
+    if (!frame_ && transferData_.isEmpty()) {
         hex_->clear();
         return;
     }
-    const int len = frame_->payloadSize();
+    const auto* bytes = frame_ ? frame_->data.data() : reinterpret_cast<const uint8_t*>(transferData_.constData());
+    const int len = frame_ ? frame_->payloadSize() : static_cast<int>(std::min<qsizetype>(transferData_.size(), 4096));
     QString html = QStringLiteral("<pre style='margin:0'>");
     for (int i = 0; i < len; ++i) {
-        if (i % 8 == 0) html += QStringLiteral("%1  ").arg(i, 2, 16, QLatin1Char('0'));
+        if (i % 8 == 0) html += QStringLiteral("%1  ").arg(i, frame_ ? 2 : 4, 16, QLatin1Char('0'));
         const bool hot = i >= highlight_.first && i < highlight_.first + highlight_.second;
-        const QString byte = QStringLiteral("%1").arg(frame_->data[static_cast<size_t>(i)], 2, 16, QLatin1Char('0')).toUpper();
+        const QString byte = QStringLiteral("%1").arg(bytes[i], 2, 16, QLatin1Char('0')).toUpper();
         html += hot ? QStringLiteral("<span style='background:#ffd54f'>%1</span> ").arg(byte) : byte + QLatin1Char(' ');
         if (i % 8 == 7) html += QLatin1Char('\n');
     }

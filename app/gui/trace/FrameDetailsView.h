@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QTextEdit;
 class QTreeWidget;
@@ -25,6 +26,9 @@ public:
     void showFrame(const CanFrame& frame, uint64_t number);  // decoded on its own
     // Frame n of the store, decoded in the context of the frames before it; shown as n + 1.
     void showFrame(const TraceStore& store, FrameNo n);
+    // A reassembled SDO transfer (a grouped row): the record's fields; the dump shows its data.
+    // `frames` are its frame numbers (0-based).
+    void showTransfer(const dissect::SdoTransferRecord& t, const std::vector<FrameNo>& frames);
     void clear();
 
     QTreeWidget* tree() const { return tree_; }
@@ -39,6 +43,7 @@ private:
     QTreeWidget* tree_ = nullptr;
     QTextEdit* hex_ = nullptr;
     std::optional<CanFrame> frame_;
+    QByteArray transferData_;  // shown in the dump when no frame is
     std::pair<int, int> highlight_{0, 0};
 };
 

@@ -71,6 +71,13 @@ TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Tr
     setWidget(content);
 
     connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &TraceDock::onCurrentChanged);
+    // A transfer row opens and closes by a click on its arrow (the No. column) or a double click.
+    connect(view_, &QAbstractItemView::clicked, this, [this](const QModelIndex& i) {
+        if (i.column() == TraceModel::Number) toggleRow(i);
+    });
+    connect(view_, &QAbstractItemView::doubleClicked, this, [this](const QModelIndex& i) {
+        if (i.column() != TraceModel::Number) toggleRow(i);
+    });
     // Scrolling up by hand pauses following; the Follow button resumes it.
     connect(view_->verticalScrollBar(), &QScrollBar::actionTriggered, this, [this](int action) {
         if (action != QAbstractSlider::SliderNoAction && follow_->isChecked()) {
@@ -111,13 +118,21 @@ void TraceDock::buildToolbar(QWidget* host) {
     latest_->setCheckable(true);
     latest_->setToolTip(tr("One row per COB-ID showing its latest frame"));
     connect(latest_, &QAction::toggled, this, [this](bool on) { model_->setLatestPerCobId(on); });
+    groupSdo_ = tb->addAction(st->standardIcon(QStyle::SP_FileDialogDetailedView), tr("Group SDO"));
+    groupSdo_->setObjectName(QStringLiteral("groupSdoAction"));
+    groupSdo_->setCheckable(true);
+    groupSdo_->setToolTip(tr("Group SDO transfers: each transfer as one row; click its ▸ to show its frames"));
+    connect(groupSdo_, &QAction::toggled, this, [this] {
+        QString error;
+        if (!applyFilter(filterEdit_->text(), &error)) emit message(error);
+    });
     tb->addSeparator();
 
     filterEdit_ = new QLineEdit(tb);
     filterEdit_->setObjectName(QStringLiteral("filterEdit"));
     filterEdit_->setPlaceholderText(tr("Filter: node:5 svc:sdo,emcy id:580-5FF text"));
     filterEdit_->setClearButtonEnabled(true);
-    filterEdit_->setMinimumWidth(260);
+    filterEdit_->setMinimumWidth(220);
     connect(filterEdit_, &QLineEdit::returnPressed, this, [this] {
         QString error;
         if (!applyFilter(filterEdit_->text(), &error)) emit message(error);
@@ -127,7 +142,7 @@ void TraceDock::buildToolbar(QWidget* host) {
     findEdit_ = new QLineEdit(tb);
     findEdit_->setObjectName(QStringLiteral("findEdit"));
     findEdit_->setPlaceholderText(tr("Find"));
-    findEdit_->setMaximumWidth(160);
+    findEdit_->setMaximumWidth(130);
     connect(findEdit_, &QLineEdit::returnPressed, this, [this] { find(findEdit_->text(), true); });
     tb->addWidget(findEdit_);
     tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this, [this] { find(findEdit_->text(), false); })->setToolTip(tr("Find previous"));
@@ -165,21 +180,33 @@ void TraceDock::refresh() {
     if (filterJob_ && filterJob_->isDone()) {
         if (!filterJob_->isCancelled()) {
             const FrameNo upTo = filterJob_->scannedUpTo();
-            model_->setFilter(filterJob_->filter(), filterJob_->takeResult(), upTo);
+            if (filterJob_->groupsSdo()) {
+                auto filter = filterJob_->filter().isEmpty() ? std::nullopt : std::optional<TraceFilter>(filterJob_->filter());
+                model_->setView(std::move(filter), filterJob_->takeResult(), upTo, filterJob_->takeGroups(), filterJob_->takeGroupedRows());
+            } else {
+                model_->setFilter(filterJob_->filter(), filterJob_->takeResult(), upTo);
+            }
+            shownDetailsFor_ = -1;
+            onCurrentChanged();
         }
         filterJob_.reset();
     }
     if (!filterJob_) model_->refresh();
-    if (shownDetailsFor_ >= 0 && workspace_->decoder()->revision() != detailsRevision_) {  // dictionaries changed
+    if (shownDetailsFor_ != -1 && workspace_->decoder()->revision() != detailsRevision_) {  // dictionaries changed
         shownDetailsFor_ = -1;
         onCurrentChanged();
     }
     model_->setBusNames(workspace_->busNames());
     if (follow_->isChecked() && model_->rowCount() > 0) view_->scrollToBottom();
     const size_t total = workspace_->store() ? workspace_->store()->size() : 0;
-    countLabel_->setText(model_->isFiltered() || model_->latestPerCobId()
-                             ? tr("%L1 of %L2 frames").arg(model_->rowCount()).arg(total)
-                             : tr("%L1 frames").arg(total));
+    if (model_->isGrouped()) {
+        countLabel_->setText(tr("%L1 rows, %L2 frames").arg(model_->rowCount()).arg(total));
+        countLabel_->setToolTip(tr("%L1 SDO transfers grouped").arg(model_->groups()->size()));
+    } else {
+        countLabel_->setText(model_->isFiltered() || model_->latestPerCobId() ? tr("%L1 of %L2 frames").arg(model_->rowCount()).arg(total)
+                                                                              : tr("%L1 frames").arg(total));
+        countLabel_->setToolTip({});
+    }
 }
 
 void TraceDock::setFollow(bool on) { follow_->setChecked(on); }
@@ -198,16 +225,26 @@ bool TraceDock::applyFilter(const QString& query, QString* error) {
     filterEdit_->setToolTip({});
     if (filterEdit_->text() != query) filterEdit_->setText(query);
     filterJob_.reset();
-    if (filter->isEmpty()) {
+    const bool group = groupSdo_->isChecked();
+    if ((filter->isEmpty() && !group) || !workspace_->store()) {
         model_->clearFilter();
         return true;
     }
-    filterJob_ = std::make_unique<FilterJob>(workspace_->store(), *filter, workspace_->decoder());
+    filterJob_ = std::make_unique<FilterJob>(workspace_->store(), *filter, workspace_->decoder(), group);
     filterJob_->start();
     return true;
 }
 
 void TraceDock::clearFilter() { applyFilter(QString()); }
+
+void TraceDock::setGroupSdo(bool on) { groupSdo_->setChecked(on); }
+bool TraceDock::groupsSdo() const { return groupSdo_->isChecked(); }
+
+void TraceDock::toggleRow(const QModelIndex& index) {
+    if (!index.isValid() || model_->rowKind(index.row()) != TraceModel::RowKind::Transfer) return;
+    setFollow(false);
+    model_->toggleExpanded(index.row());
+}
 
 Job* TraceDock::activeJob() const { return filterJob_.get(); }
 
@@ -285,6 +322,15 @@ void TraceDock::onCurrentChanged() {
     if (!idx.isValid() || !model_->store()) {
         details_->clear();
         shownDetailsFor_ = -1;
+        return;
+    }
+    if (model_->rowKind(idx.row()) == TraceModel::RowKind::Transfer) {  // keyed -2 - group
+        const int64_t g = model_->groupAt(idx.row());
+        if (-2 - g == shownDetailsFor_) return;
+        shownDetailsFor_ = -2 - g;
+        detailsRevision_ = workspace_->decoder()->revision();
+        const auto frames = model_->groups()->frames(static_cast<size_t>(g));
+        details_->showTransfer(model_->transferRecord(g), std::vector<FrameNo>(frames.begin(), frames.end()));
         return;
     }
     const FrameNo n = model_->frameAt(idx.row());

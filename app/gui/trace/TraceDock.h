@@ -42,6 +42,10 @@ public:
     bool applyFilter(const QString& query, QString* error = nullptr);
     void clearFilter();
     bool isFiltering() const { return filterJob_ != nullptr; }
+    // "Group SDO transfers": each reassembled transfer as one expandable row (computed off-thread).
+    void setGroupSdo(bool on);
+    bool groupsSdo() const;
+    QAction* groupSdoAction() const { return groupSdo_; }
     Job* activeJob() const;
 
     void showFrame(FrameNo n);  // selects it (clears the filter if it hides the frame)
@@ -56,6 +60,7 @@ signals:
 private:
     void buildToolbar(QWidget* bar);
     void onCurrentChanged();
+    void toggleRow(const QModelIndex& index);
 
     Workspace* workspace_;
     TraceModel* model_ = nullptr;
@@ -64,6 +69,7 @@ private:
     QAction* follow_ = nullptr;
     QComboBox* timeMode_ = nullptr;
     QAction* latest_ = nullptr;
+    QAction* groupSdo_ = nullptr;
     QLineEdit* filterEdit_ = nullptr;
     QLineEdit* findEdit_ = nullptr;
     QLabel* countLabel_ = nullptr;

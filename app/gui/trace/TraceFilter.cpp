@@ -133,18 +133,36 @@ std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const Tra
     return out;
 }
 
-FilterJob::FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder)
-    : Job(QStringLiteral("Filtering")), store_(std::move(store)), filter_(std::move(filter)), decoder_(std::move(decoder)) {}
+FilterJob::FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder, bool groupSdo)
+    : Job(filter.isEmpty() ? QStringLiteral("Grouping SDO transfers") : QStringLiteral("Filtering")),
+      store_(std::move(store)),
+      filter_(std::move(filter)),
+      decoder_(std::move(decoder)),
+      groupSdo_(groupSdo) {}
 
 FilterJob::~FilterJob() { stopAndJoin(); }
 
 void FilterJob::run() {
     upTo_ = static_cast<FrameNo>(store_->size());
-    auto r = runFilter(*store_, filter_, *decoder_, 0, upTo_, [this](double p) {
-        setProgress(p);
+    const bool filtering = !filter_.isEmpty();
+    const double share = filtering && groupSdo_ ? 0.5 : 1.0;  // of the progress bar
+    if (filtering) {
+        auto r = runFilter(*store_, filter_, *decoder_, 0, upTo_, [this, share](double p) {
+            setProgress(p * share);
+            return !isCancelled();
+        });
+        if (!r) return;
+        result_ = std::move(*r);
+    }
+    if (!groupSdo_) return;
+    auto groups = std::make_shared<SdoGroupIndex>();
+    const bool done = groups->scan(*store_, upTo_, [this, share](double p) {
+        setProgress(1.0 - share + p * share);
         return !isCancelled();
     });
-    if (r) result_ = std::move(*r);
+    if (!done) return;
+    grouped_.append(*groups, filtering ? &result_ : nullptr, 0, upTo_);
+    groups_ = std::move(groups);
 }
 
 }  // namespace coscope::gui

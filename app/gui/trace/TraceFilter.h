@@ -3,6 +3,7 @@
 
 #include "app/gui/session/Job.h"
 #include "app/gui/trace/FrameDecoder.h"
+#include "app/gui/trace/SdoGroups.h"
 #include "core/canopen/CobId.h"
 #include "core/trace/TraceStore.h"
 
@@ -40,15 +41,19 @@ std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const Tra
                                               FrameNo from, FrameNo to, const std::function<bool(double)>& progress = {});
 
 // A filter over a whole trace on a worker thread; result() once isDone() and not cancelled.
+// With `groupSdo`, it also finds the SDO transfers and builds the grouped rows (TraceModel::setView).
 class FilterJob : public Job {
 public:
-    FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder);
+    FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder, bool groupSdo = false);
     ~FilterJob() override;
 
     const TraceFilter& filter() const { return filter_; }
     // Frames scanned: [0, scannedUpTo()).
     FrameNo scannedUpTo() const { return upTo_; }
     std::vector<FrameNo> takeResult() { return std::move(result_); }
+    bool groupsSdo() const { return groupSdo_; }
+    std::shared_ptr<SdoGroupIndex> takeGroups() { return std::move(groups_); }
+    GroupedRows takeGroupedRows() { return std::move(grouped_); }
 
 protected:
     void run() override;
@@ -57,8 +62,11 @@ private:
     std::shared_ptr<const TraceStore> store_;
     TraceFilter filter_;
     std::shared_ptr<const FrameDecoder> decoder_;
+    bool groupSdo_ = false;
     FrameNo upTo_ = 0;
     std::vector<FrameNo> result_;
+    std::shared_ptr<SdoGroupIndex> groups_;
+    GroupedRows grouped_;
 };
 
 }  // namespace coscope::gui

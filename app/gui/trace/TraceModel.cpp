@@ -32,6 +32,12 @@ void TraceModel::setStore(std::shared_ptr<const TraceStore> store) {
     latestKeys_.clear();
     bookmarks_.clear();
     summaries_.clear();
+    groups_.reset();
+    grouped_ = {};
+    expanded_.clear();
+    expandedRows_ = 0;
+    expandedDirty_ = true;
+    groupTexts_.clear();
     endResetModel();
     refresh();
 }
@@ -39,6 +45,7 @@ void TraceModel::setStore(std::shared_ptr<const TraceStore> store) {
 void TraceModel::setDecoder(std::shared_ptr<const FrameDecoder> decoder) {
     decoder_ = decoder ? std::move(decoder) : defaultFrameDecoder();
     summaries_.clear();
+    groupTexts_.clear();
     decoderRevision_ = decoder_->revision();
     if (rows_ > 0) emit dataChanged(index(0, Summary), index(rows_ - 1, Summary));
 }
@@ -57,24 +64,191 @@ TraceModel::Source TraceModel::source() const {
 
 void TraceModel::resetRows() {
     beginResetModel();
-    rows_ = 0;
+    rows_ = isGrouped() ? static_cast<int>(std::min<size_t>(grouped_.top.size() + expandedRows_, INT_MAX)) : 0;
+    expandedDirty_ = true;
     endResetModel();
     refresh();
 }
 
 void TraceModel::setFilter(const TraceFilter& filter, std::vector<FrameNo> rows, FrameNo scannedUpTo) {
-    filter_ = filter;
+    setView(filter, std::move(rows), scannedUpTo, nullptr, {});
+}
+
+void TraceModel::clearFilter() { setView(std::nullopt, {}, 0, nullptr, {}); }
+
+void TraceModel::setView(std::optional<TraceFilter> filter, std::vector<FrameNo> rows, FrameNo scannedUpTo,
+                         std::shared_ptr<SdoGroupIndex> groups, GroupedRows grouped) {
+    filter_ = std::move(filter);
     filtered_ = std::move(rows);
-    scanned_ = scannedUpTo;
+    if (!filter_) filtered_.shrink_to_fit();
+    scanned_ = filter_ || groups ? scannedUpTo : 0;
+    groups_ = std::move(groups);
+    grouped_ = std::move(grouped);
+    expanded_.clear();
+    expandedRows_ = 0;
+    expandedDirty_ = true;
+    groupTexts_.clear();
     resetRows();
 }
 
-void TraceModel::clearFilter() {
-    filter_.reset();
-    filtered_.clear();
-    filtered_.shrink_to_fit();
-    scanned_ = 0;
-    resetRows();
+void TraceModel::setGrouped(bool on) {
+    if (!on) {
+        if (filter_) setView(filter_, std::move(filtered_), scanned_, nullptr, {});
+        else clearFilter();
+        return;
+    }
+    if (!store_) return;
+    const auto upTo = static_cast<FrameNo>(store_->size());
+    std::vector<FrameNo> rows = std::move(filtered_);
+    if (filter_ && scanned_ < upTo) {
+        const auto more = runFilter(*store_, *filter_, *decoder_, scanned_, upTo);
+        if (more) rows.insert(rows.end(), more->begin(), more->end());
+    }
+    auto index = std::make_shared<SdoGroupIndex>();
+    index->scan(*store_, upTo);
+    GroupedRows grouped;
+    grouped.append(*index, filter_ ? &rows : nullptr, 0, upTo);
+    setView(filter_, std::move(rows), upTo, std::move(index), std::move(grouped));
+}
+
+bool TraceModel::inSource(FrameNo n) const {
+    return !filter_ || std::binary_search(filtered_.begin(), filtered_.end(), n);
+}
+
+size_t TraceModel::topIndexOfGroup(uint32_t group) const {
+    const FrameNo key = grouped_.headerKey[group];
+    const auto it = std::lower_bound(grouped_.top.begin(), grouped_.top.end(), key,
+                                     [](uint64_t row, FrameNo k) { return GroupedRows::keyOf(row) < k; });
+    return static_cast<size_t>(it - grouped_.top.begin());
+}
+
+void TraceModel::ensureExpandedAt() const {
+    if (!expandedDirty_) return;
+    expandedAt_.clear();
+    for (const auto& [g, members] : expanded_) expandedAt_.push_back({topIndexOfGroup(g), g, members.size()});
+    std::sort(expandedAt_.begin(), expandedAt_.end(), [](const ExpandedAt& a, const ExpandedAt& b) { return a.top < b.top; });
+    expandedDirty_ = false;
+}
+
+// Visible row -> top row (+ member). Expanded groups are few (the user opens them one by one).
+TraceModel::RowRef TraceModel::resolve(int row) const {
+    ensureExpandedAt();
+    size_t extra = 0;
+    const auto r = static_cast<size_t>(row);
+    for (const ExpandedAt& e : expandedAt_) {
+        const size_t headerRow = e.top + extra;
+        if (r <= headerRow) break;
+        if (r <= headerRow + e.count) return {e.top, static_cast<int>(r - headerRow - 1)};
+        extra += e.count;
+    }
+    return {r - extra, -1};
+}
+
+int TraceModel::visibleRow(size_t top) const {
+    ensureExpandedAt();
+    size_t extra = 0;
+    for (const ExpandedAt& e : expandedAt_) {
+        if (e.top >= top) break;
+        extra += e.count;
+    }
+    return static_cast<int>(top + extra);
+}
+
+TraceModel::RowKind TraceModel::rowKind(int row) const {
+    if (!isGrouped() || row < 0 || row >= rows_) return RowKind::Frame;
+    const RowRef r = resolve(row);
+    if (r.member >= 0) return RowKind::TransferFrame;
+    return GroupedRows::groupOf(grouped_.top[r.top]) >= 0 ? RowKind::Transfer : RowKind::Frame;
+}
+
+int64_t TraceModel::groupAt(int row) const {
+    if (!isGrouped() || row < 0 || row >= rows_) return -1;
+    return GroupedRows::groupOf(grouped_.top[resolve(row).top]);
+}
+
+bool TraceModel::toggleExpanded(int row) {
+    if (rowKind(row) != RowKind::Transfer) return false;
+    const auto g = static_cast<uint32_t>(groupAt(row));
+    const auto it = expanded_.find(g);
+    if (it != expanded_.end()) {
+        const int count = static_cast<int>(it->second.size());
+        if (count > 0) beginRemoveRows({}, row + 1, row + count);
+        expanded_.erase(it);
+        expandedDirty_ = true;
+        expandedRows_ -= static_cast<size_t>(count);
+        rows_ -= count;
+        if (count > 0) endRemoveRows();
+    } else {
+        std::vector<FrameNo> members;
+        for (FrameNo n : groups_->frames(g))
+            if (inSource(n)) members.push_back(n);
+        const int count = static_cast<int>(members.size());
+        if (count > 0) beginInsertRows({}, row + 1, row + count);
+        expanded_.emplace(g, std::move(members));
+        expandedDirty_ = true;
+        expandedRows_ += static_cast<size_t>(count);
+        rows_ += count;
+        if (count > 0) endInsertRows();
+    }
+    emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    return true;
+}
+
+dissect::SdoTransferRecord TraceModel::transferRecord(int64_t group) const {
+    if (!groups_ || !store_ || group < 0 || static_cast<size_t>(group) >= groups_->size()) return {};
+    return SdoGroupIndex::record(*store_, *groups_, static_cast<size_t>(group), *decoder_);
+}
+
+const TraceModel::GroupText& TraceModel::groupText(uint32_t group) const {
+    const auto it = groupTexts_.find(group);
+    if (it != groupTexts_.end()) return it->second;
+    if (groupTexts_.size() >= kSummaryCacheLimit) groupTexts_.clear();
+    const dissect::SdoTransferRecord t = transferRecord(group);
+    GroupText text;
+    text.summary = SdoGroupIndex::summary(t, groups_->group(group).count);
+    text.size = t.size;
+    text.data = QString::fromLatin1(t.data.left(8).toHex(' ').toUpper()) + (t.data.size() > 8 ? QStringLiteral(" …") : QString());
+    return groupTexts_.emplace(group, std::move(text)).first->second;
+}
+
+// Live: frames [oldScanned, size) arrived (`newSource` = those the filter lets through).
+void TraceModel::refreshGrouped(std::vector<FrameNo> newSource, FrameNo oldScanned) {
+    const size_t oldGroups = groups_->size();
+    groups_->scan(*store_, scanned_);
+    if (grouped_.headerKey.size() < groups_->size()) grouped_.headerKey.resize(groups_->size(), SdoGroupIndex::kNone);
+    auto keyLess = [](uint64_t row, FrameNo k) { return GroupedRows::keyOf(row) < k; };
+    // Transfers completed now whose first frames were shown as plain rows: the first becomes
+    // the header, the others go.
+    for (size_t g = oldGroups; g < groups_->size(); ++g) {
+        std::vector<FrameNo> shown;
+        for (FrameNo n : groups_->frames(g))
+            if (n < oldScanned && inSource(n)) shown.push_back(n);
+        if (shown.empty()) continue;
+        for (size_t i = shown.size(); i-- > 1;) {
+            const auto it = std::lower_bound(grouped_.top.begin(), grouped_.top.end(), shown[i], keyLess);
+            if (it == grouped_.top.end() || *it != GroupedRows::plain(shown[i])) continue;
+            const size_t t = static_cast<size_t>(it - grouped_.top.begin());
+            const int row = visibleRow(t);
+            beginRemoveRows({}, row, row);
+            grouped_.top.erase(it);
+            expandedDirty_ = true;
+            --rows_;
+            endRemoveRows();
+        }
+        const auto it = std::lower_bound(grouped_.top.begin(), grouped_.top.end(), shown[0], keyLess);
+        if (it == grouped_.top.end() || *it != GroupedRows::plain(shown[0])) continue;
+        *it = GroupedRows::header(g, shown[0]);
+        grouped_.headerKey[g] = shown[0];
+        const int row = visibleRow(static_cast<size_t>(it - grouped_.top.begin()));
+        emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+    }
+    const size_t before = grouped_.top.size();
+    grouped_.append(*groups_, filter_ ? &newSource : nullptr, oldScanned, scanned_);
+    const size_t added = grouped_.top.size() - before;
+    if (added == 0) return;
+    beginInsertRows({}, rows_, rows_ + static_cast<int>(added) - 1);
+    rows_ += static_cast<int>(added);
+    endInsertRows();
 }
 
 void TraceModel::setLatestPerCobId(bool on) {
@@ -90,6 +264,7 @@ void TraceModel::refresh() {
     if (decoder_->revision() != decoderRevision_) {  // dictionaries changed: decode again
         decoderRevision_ = decoder_->revision();
         summaries_.clear();
+        groupTexts_.clear();
         if (rows_ > 0) emit dataChanged(index(0, Summary), index(rows_ - 1, Summary));
     }
     const size_t size = store_->size();
@@ -99,6 +274,12 @@ void TraceModel::refresh() {
     }
     switch (source()) {
     case Source::All: {
+        if (groups_) {
+            const FrameNo old = scanned_;
+            scanned_ = static_cast<FrameNo>(size);
+            if (old < scanned_) refreshGrouped({}, old);
+            return;
+        }
         const int n = static_cast<int>(std::min<size_t>(size, INT_MAX));
         if (n <= rows_) return;
         beginInsertRows({}, rows_, n - 1);
@@ -111,8 +292,14 @@ void TraceModel::refresh() {
             // New frames since the filter ran: few per tick on a live bus, tested here.
             const auto more = runFilter(*store_, *filter_, *decoder_, scanned_, static_cast<FrameNo>(size));
             if (more) filtered_.insert(filtered_.end(), more->begin(), more->end());
+            const FrameNo old = scanned_;
             scanned_ = static_cast<FrameNo>(size);
+            if (groups_) {
+                refreshGrouped(more ? std::move(*more) : std::vector<FrameNo>{}, old);
+                return;
+            }
         }
+        if (groups_) return;
         const int n = static_cast<int>(std::min<size_t>(filtered_.size(), INT_MAX));
         if (n <= rows_) return;
         beginInsertRows({}, rows_, n - 1);
@@ -149,6 +336,11 @@ void TraceModel::refreshLatest() {
 }
 
 FrameNo TraceModel::frameAt(int row) const {
+    if (isGrouped()) {
+        const RowRef r = resolve(row);
+        if (r.member >= 0) return expanded_.at(static_cast<uint32_t>(GroupedRows::groupOf(grouped_.top[r.top])))[static_cast<size_t>(r.member)];
+        return GroupedRows::keyOf(grouped_.top[r.top]);
+    }
     switch (source()) {
     case Source::All: return static_cast<FrameNo>(row);
     case Source::Filtered: return filtered_[static_cast<size_t>(row)];
@@ -157,7 +349,26 @@ FrameNo TraceModel::frameAt(int row) const {
     return 0;
 }
 
+std::vector<FrameNo> TraceModel::shownFrames() const {
+    std::vector<FrameNo> out;
+    if (isGrouped()) {  // grouping hides no frame: the source's frames
+        if (filter_) return filtered_;
+        out.resize(scanned_);
+        for (FrameNo n = 0; n < scanned_; ++n) out[n] = n;
+        return out;
+    }
+    out.reserve(static_cast<size_t>(rows_));
+    for (int r = 0; r < rows_; ++r) out.push_back(frameAt(r));
+    if (source() == Source::Latest) std::sort(out.begin(), out.end());
+    return out;
+}
+
 int TraceModel::rowAtOrAfter(FrameNo n) const {
+    if (isGrouped()) {
+        const auto end = grouped_.top.begin() + static_cast<std::ptrdiff_t>(grouped_.top.size());
+        const auto it = std::lower_bound(grouped_.top.begin(), end, n, [](uint64_t row, FrameNo k) { return GroupedRows::keyOf(row) < k; });
+        return it == end ? -1 : visibleRow(static_cast<size_t>(it - grouped_.top.begin()));
+    }
     switch (source()) {
     case Source::All: return static_cast<int>(n) < rows_ ? static_cast<int>(n) : -1;
     case Source::Filtered: {
@@ -174,6 +385,16 @@ int TraceModel::rowAtOrAfter(FrameNo n) const {
 }
 
 int TraceModel::rowOf(FrameNo n) const {
+    if (isGrouped()) {  // a frame of a transfer: its row under the expanded header, else the header
+        const int64_t g = groups_->groupOf(n);
+        if (g >= 0 && static_cast<size_t>(g) < grouped_.headerKey.size() && grouped_.headerKey[static_cast<size_t>(g)] != SdoGroupIndex::kNone) {
+            const int header = visibleRow(topIndexOfGroup(static_cast<uint32_t>(g)));
+            const auto it = expanded_.find(static_cast<uint32_t>(g));
+            if (it == expanded_.end()) return header;
+            const auto m = std::find(it->second.begin(), it->second.end(), n);
+            return m == it->second.end() ? header : header + 1 + static_cast<int>(m - it->second.begin());
+        }
+    }
     const int row = rowAtOrAfter(n);
     return row >= 0 && frameAt(row) == n ? row : -1;
 }
@@ -222,7 +443,37 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     if (!store_ || !index.isValid() || index.row() >= rows_) return {};
     const FrameNo n = frameAt(index.row());
     const int col = index.column();
+    const RowKind kind = rowKind(index.row());
+    if (kind != RowKind::Frame) {
+        switch (role) {
+        case RowKindRole: return static_cast<int>(kind);
+        case GroupRole: return static_cast<qlonglong>(groupAt(index.row()));
+        case Qt::BackgroundRole:
+            if (isBookmarked(n)) return QBrush(QColor(255, 236, 150));
+            return QBrush(kind == RowKind::Transfer ? QColor(222, 234, 250) : QColor(240, 245, 252));
+        default: break;
+        }
+    }
+    if (kind == RowKind::Transfer) {
+        const auto g = static_cast<uint32_t>(groupAt(index.row()));
+        const TraceRecord& r = store_->record(n);
+        if (role == Qt::ToolTipRole) return col == Number ? QStringLiteral("Click to expand or collapse the transfer's frames") : groupText(g).summary;
+        if (role == Qt::DisplayRole) {
+            switch (col) {
+            case Number: return (isExpanded(g) ? QStringLiteral("▾ ") : QStringLiteral("▸ ")) + QString::number(qulonglong(n) + 1);
+            case Service: return QStringLiteral("SDO");
+            case Length: return groupText(g).size;
+            case Data: return groupText(g).data;
+            case Summary: return groupText(g).summary;
+            case CobId: return QStringLiteral("%1").arg(r.id, 3, 16, QLatin1Char('0')).toUpper();
+            default: break;  // time, bus, node, direction: of its first frame
+            }
+        }
+    }
+    if (kind == RowKind::TransferFrame && role == Qt::DisplayRole && col == Summary) return QStringLiteral("      ↳ ") + summaryOf(n);
     switch (role) {
+    case RowKindRole: return static_cast<int>(RowKind::Frame);
+    case GroupRole: return -1;
     case FrameRole: return static_cast<qulonglong>(n);
     case BookmarkRole: return isBookmarked(n);
     case Qt::FontRole:

@@ -2,12 +2,14 @@
 #pragma once
 
 #include "app/gui/trace/FrameDecoder.h"
+#include "app/gui/trace/SdoGroups.h"
 #include "app/gui/trace/TraceFilter.h"
 #include "core/trace/TraceStore.h"
 
 #include <QAbstractTableModel>
 #include <QStringList>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -21,12 +23,20 @@ namespace coscope::gui {
 // extended as frames arrive); or the latest frame of each COB-ID (from the store's index).
 // refresh() — called by a timer at most 30 times a second — announces what changed since the
 // last call. The summary column is decoded lazily for the rows the view asks about, and cached.
+//
+// Grouped view (All or Filtered frames, setView() with an SdoGroupIndex): each reassembled SDO
+// transfer is one row (its header: first frame's time, node, service SDO, summary = the transfer
+// record) standing where its first shown frame would be; expanding it inserts its frames (those
+// the filter lets through) as rows under it. Rows = GroupedRows::top plus the members of the
+// expanded groups. refresh() continues the index with the frames that arrived: a transfer
+// completed meanwhile turns its frames already shown into its header row (row updates, no reset).
 class TraceModel : public QAbstractTableModel {
     Q_OBJECT
 public:
     enum Column { Number, Time, Bus, CobId, Node, Service, Direction, Length, Data, Summary, ColumnCount };
     enum class TimeMode { Absolute, Relative, Delta };
-    enum Role { FrameRole = Qt::UserRole + 1, BookmarkRole };
+    enum Role { FrameRole = Qt::UserRole + 1, BookmarkRole, RowKindRole, GroupRole };
+    enum class RowKind { Frame, Transfer, TransferFrame };  // a frame, a transfer's header, a frame under it
 
     explicit TraceModel(QObject* parent = nullptr);
 
@@ -44,6 +54,21 @@ public:
     void setFilter(const TraceFilter& filter, std::vector<FrameNo> rows, FrameNo scannedUpTo);
     void clearFilter();
     bool isFiltered() const { return filter_.has_value(); }
+    // Frames of `filter` (none: all frames) with SDO transfers grouped: `rows` as above, `groups`
+    // scanned up to `scannedUpTo`, `grouped` built from both (see FilterJob, which computes them).
+    void setView(std::optional<TraceFilter> filter, std::vector<FrameNo> rows, FrameNo scannedUpTo, std::shared_ptr<SdoGroupIndex> groups,
+                 GroupedRows grouped);
+    // Same, computed on the calling thread (small traces, tests).
+    void setGrouped(bool on);
+    bool isGrouped() const { return groups_ != nullptr && !latest_; }
+    const SdoGroupIndex* groups() const { return groups_.get(); }
+    RowKind rowKind(int row) const;
+    int64_t groupAt(int row) const;  // the transfer of a header or member row, else -1
+    bool isExpanded(int64_t group) const { return expanded_.count(static_cast<uint32_t>(group)) != 0; }
+    // Expands or collapses the transfer of header row `row`; false if it is not one.
+    bool toggleExpanded(int row);
+    // The transfer record of a group (decoded in the trace's context) and its frames.
+    dissect::SdoTransferRecord transferRecord(int64_t group) const;
     void setLatestPerCobId(bool on);
     bool latestPerCobId() const { return latest_; }
 
@@ -51,6 +76,9 @@ public:
     void refresh();
 
     FrameNo frameAt(int row) const;
+    // The frames the view stands for, in trace order, each once (a collapsed transfer row
+    // stands for all its frames the filter lets through): what "save shown frames" writes.
+    std::vector<FrameNo> shownFrames() const;
     // The row showing frame n, or the nearest row after it (-1 when none).
     int rowAtOrAfter(FrameNo n) const;
     int rowOf(FrameNo n) const;  // exact, -1 when the frame is not shown
@@ -73,6 +101,21 @@ private:
     Source source() const;
     void resetRows();
     void refreshLatest();
+    void refreshGrouped(std::vector<FrameNo> newSource, FrameNo oldScanned);
+    bool inSource(FrameNo n) const;
+    struct RowRef {
+        size_t top = 0;   // index in grouped_.top
+        int member = -1;  // -1: the top row itself; else the member of its expanded group
+    };
+    RowRef resolve(int row) const;
+    int visibleRow(size_t top) const;
+    size_t topIndexOfGroup(uint32_t group) const;
+    void ensureExpandedAt() const;
+    struct GroupText {
+        QString summary, data;
+        uint32_t size = 0;
+    };
+    const GroupText& groupText(uint32_t group) const;
 
     std::shared_ptr<const TraceStore> store_;
     std::shared_ptr<const FrameDecoder> decoder_;
@@ -88,6 +131,19 @@ private:
     bool latest_ = false;
     std::vector<FrameNo> latestRows_;  // Latest: one frame per key, ordered by key
     std::vector<uint32_t> latestKeys_;
+
+    std::shared_ptr<SdoGroupIndex> groups_;  // grouped view when set
+    GroupedRows grouped_;
+    std::map<uint32_t, std::vector<FrameNo>> expanded_;  // group -> its frames shown under it
+    struct ExpandedAt {
+        size_t top;
+        uint32_t group;
+        size_t count;
+    };
+    mutable std::vector<ExpandedAt> expandedAt_;  // by top index; rebuilt when rows move
+    mutable bool expandedDirty_ = true;
+    size_t expandedRows_ = 0;
+    mutable std::unordered_map<uint32_t, GroupText> groupTexts_;
 
     std::set<FrameNo> bookmarks_;
     mutable std::unordered_map<FrameNo, QString> summaries_;

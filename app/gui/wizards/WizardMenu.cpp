@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/WizardMenu.h"
 
+#include "app/gui/wizards/ds402/Ds402Wizard.h"
+#include "app/gui/wizards/nodeid/NodeIdWizard.h"
+#include "app/gui/wizards/pdo/PdoWizard.h"
+
 #include <QAction>
 #include <QMenu>
 #include <QWidget>
@@ -10,6 +14,9 @@ namespace coscope::gui {
 const std::vector<WizardEntry>& wizardEntries() {
     // One line per wizard.
     static const std::vector<WizardEntry> entries = {
+        {QStringLiteral("nodeid"), QStringLiteral("Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); }},
+        {QStringLiteral("ds402"), QObject::tr("CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); }},
+        {QStringLiteral("pdo"), QStringLiteral("PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); }},
     };
     return entries;
 }

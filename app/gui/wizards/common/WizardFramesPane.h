@@ -4,6 +4,7 @@
 #include <QWidget>
 
 #include <cstdint>
+#include <memory>
 
 namespace coscope::gui {
 
@@ -16,11 +17,20 @@ class WizardFramesPane : public QWidget {
     Q_OBJECT
 public:
     explicit WizardFramesPane(Workspace* workspace, QWidget* parent = nullptr);
+    ~WizardFramesPane() override;
 
     void setNode(int node);  // -1 = every node
     void markStart();        // show only frames from now on
     int rowCount() const;
     QString rowText(int row) const;  // "Tx 605 2B 40 60 00 06 00 00 00  SDO write 6040h:00 …"
+
+    // Pulls the frames that arrived since the last pull (the pane's timer calls this at 25 Hz;
+    // tests may call it directly). Rows are appended, never reset, and the view follows the end.
+    void poll();
+
+private:
+    struct Private;
+    std::unique_ptr<Private> d_;
 };
 
 }  // namespace coscope::gui

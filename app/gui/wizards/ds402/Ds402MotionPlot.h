@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+#include <vector>
+
+namespace coscope::gui {
+
+// The test move's live plot: position actual (6064h) and velocity actual (606Ch) over time,
+// each scaled to its own range, from the samples the controller reads while the move runs.
+class Ds402MotionPlot : public QWidget {
+    Q_OBJECT
+public:
+    explicit Ds402MotionPlot(QWidget* parent = nullptr);
+
+    void addSample(double ms, double position, double velocity);
+    void clear();
+    int sampleCount() const { return static_cast<int>(t_.size()); }
+    QSize sizeHint() const override { return {320, 120}; }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+
+private:
+    std::vector<double> t_, pos_, vel_;
+};
+
+}  // namespace coscope::gui

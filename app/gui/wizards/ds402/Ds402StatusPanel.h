@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+#include <array>
+#include <cstdint>
+
+class QLabel;
+
+namespace coscope::gui {
+
+// The statusword 6041h bit by bit (CiA 402-2 Table 30): a lamp, the bit number and its name
+// for each bit, the mode of operation shown (6061h) and, in fault, the error code 603Fh with
+// the vendor alarm text.
+class Ds402StatusPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit Ds402StatusPanel(QWidget* parent = nullptr);
+
+    void setStatusword(uint16_t sw);
+    void clear();
+    void setModeText(const QString& text);
+    void setFaultText(const QString& text);  // empty hides it
+
+    uint16_t statusword() const { return sw_; }
+    bool known() const { return known_; }
+    QString bitText(int bit) const;  // "4 voltage enabled: on"
+    QString faultText() const;
+
+private:
+    void update(int bit);
+    uint16_t sw_ = 0;
+    bool known_ = false;
+    QLabel* word_ = nullptr;
+    QLabel* mode_ = nullptr;
+    QLabel* fault_ = nullptr;
+    std::array<QLabel*, 16> lamps_{};
+    std::array<QLabel*, 16> names_{};
+};
+
+}  // namespace coscope::gui

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/canopen/CommandScript.h"
+#include "core/canopen/Ds402.h"
+#include "core/canopen/Ds402Controller.h"
+
+#include <QDialog>
+#include <QList>
+
+#include <map>
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+class QTimer;
+
+namespace coscope::gui {
+
+class Workspace;
+class WizardFramesPane;
+class ScriptPreview;
+class Ds402StateDiagram;
+class Ds402StatusPanel;
+class Ds402MotionPlot;
+
+// The CiA 402 enable step-through (Commission ▸ CiA 402 enable step-through…): shows the
+// drive's state from 6041h as the state machine picture with the statusword bits, one button per
+// next step (fault reset → shutdown → switch on → enable operation) that writes 6040h and waits
+// for the statusword it must lead to, explaining a missing bit in plain words; chooses and
+// verifies the mode of operation (6060h/6061h) among those 6502h lists; an optional test move
+// on a hold-to-run button with a live plot. Quick stop and Disable are always there.
+//
+// Safety (DESIGN.md): asks before Enable operation and before arming a test move; a failed step
+// sends Disable voltage; closing the wizard, losing the bus or quitting the app disables a drive
+// the wizard left switched on. Sends nothing in listen-only mode. Never blocks the GUI thread:
+// everything goes through Ds402Controller (core), whose CLI face is `coscope-cli ds402`.
+class Ds402Wizard : public QDialog {
+    Q_OBJECT
+public:
+    // `node` -1: the first node whose device type (1000h) says CiA 402, once nodes are known.
+    Ds402Wizard(Workspace* workspace, int node, QWidget* parent = nullptr);
+    ~Ds402Wizard() override;
+
+    // Tests: answer every confirmation with yes (or no).
+    void setAutoConfirm(bool yes) { autoConfirm_ = yes; }
+
+    int node() const { return node_; }
+    void selectNode(int node);
+    // Why the wizard may not send now ("" = it may): no bus, listen-only, no drive chosen.
+    QString sendRefusal() const;
+    // Reads 6041h (and 6061h, 6502h once, 603Fh + 1003h:01 in fault). stateRead() when done.
+    void refresh();
+    bool isBusy() const { return busy_; }
+
+    // What the buttons do. False + *why when refused before anything is sent.
+    bool runStep(canopen::ds402::Command command, QString* why = nullptr);
+    bool chooseMode(int8_t mode, QString* why = nullptr);
+    bool armTestMove(QString* why = nullptr);
+    bool pressHoldToRun(QString* why = nullptr);  // the hold-to-run button goes down
+    void releaseHoldToRun();                      // ... and comes up
+    void setTestMove(const canopen::Ds402TestMove& move);
+    canopen::Ds402TestMove testMove() const;
+    void quickStop();
+    void disableDrive();
+    // The dry run: the exact enable sequence from the current state (with the chosen mode),
+    // shown in the preview; nothing is sent.
+    canopen::CommandScript dryRun();
+
+    // What the wizard shows.
+    canopen::ds402::State shownState() const { return state_; }
+    uint16_t statusword() const { return statusword_; }
+    std::optional<uint32_t> supportedModes() const { return supported_; }
+    int8_t modeDisplay() const { return modeDisplay_; }
+    QString message() const;
+    QString faultText() const { return faultText_; }
+    bool isCia402() const { return cia402_; }
+    bool testMoveArmed() const { return armed_; }
+    bool testMoveRunning() const;
+    QList<canopen::ds402::State> visitedStates() const { return visited_; }
+
+    Ds402StateDiagram* diagram() const { return diagram_; }
+    Ds402StatusPanel* statusPanel() const { return status_; }
+    Ds402MotionPlot* motionPlot() const { return plot_; }
+    WizardFramesPane* framesPane() const { return frames_; }
+    ScriptPreview* preview() const { return preview_; }
+    QPushButton* stepButton(canopen::ds402::Command command) const;
+    QPushButton* holdToRunButton() const { return hold_; }
+    QPushButton* quickStopButton() const { return quickStop_; }
+    QPushButton* disableButton() const { return disable_; }
+    QComboBox* modeCombo() const { return mode_; }
+
+signals:
+    void stateRead(bool ok);
+    void stepFinished(bool ok);
+    void modeFinished(bool ok);
+    void testMoveFinished(bool ok);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void reject() override;
+
+private:
+    void buildUi();
+    void findFirstDrive(int attempt);
+    void makeController();
+    void dropController(const QString& why);
+    void readObject(uint16_t index, uint8_t sub, std::function<void(const canopen::SdoResult&)> done);
+    void afterState(const canopen::Ds402Result& r, std::function<void()> then);
+    void showState(canopen::ds402::State s, uint16_t sw);
+    void setMessage(const QString& text, bool bad = false);
+    void updateButtons();
+    void fillModes();
+    bool confirm(const QString& title, const QString& text);
+    // Disables a drive the wizard may have left switched on, without waiting (close, quit,
+    // bus lost). Returns whether something was sent.
+    bool safeDisable(const QString& why);
+    QString checkAdvice() const;  // what to check for this vendor
+
+    Workspace* workspace_;
+    int node_ = -1;
+    QString dictionary_;
+    bool autoConfirm_ = false;
+    bool busy_ = false;
+    bool reading_ = false;
+    bool cia402_ = true;
+    bool armed_ = false;
+    bool holding_ = false;
+    bool sentCommands_ = false;  // the wizard wrote 6040h since the node was chosen
+    bool closing_ = false;
+    canopen::ds402::State state_ = canopen::ds402::State::Unknown;
+    uint16_t statusword_ = 0;
+    int8_t modeDisplay_ = 0;
+    std::optional<uint32_t> supported_;
+    QString faultText_;
+    QString controlWarning_;
+    QList<canopen::ds402::State> visited_;
+    std::unique_ptr<canopen::Ds402Controller> ctl_;
+    canopen::SdoClient* ctlSdo_ = nullptr;
+
+    Ds402StateDiagram* diagram_ = nullptr;
+    Ds402StatusPanel* status_ = nullptr;
+    Ds402MotionPlot* plot_ = nullptr;
+    WizardFramesPane* frames_ = nullptr;
+    ScriptPreview* preview_ = nullptr;
+    QTabWidget* tabs_ = nullptr;
+    QComboBox* nodeCombo_ = nullptr;
+    QLabel* banner_ = nullptr;
+    QLabel* vendor_ = nullptr;
+    QLabel* next_ = nullptr;
+    QLabel* message_ = nullptr;
+    QLabel* modeShown_ = nullptr;
+    std::map<canopen::ds402::Command, QPushButton*> steps_;
+    QComboBox* mode_ = nullptr;
+    QPushButton* setMode_ = nullptr;
+    QComboBox* moveKind_ = nullptr;
+    QSpinBox* velocity_ = nullptr;
+    QSpinBox* distance_ = nullptr;
+    QSpinBox* duration_ = nullptr;
+    QPushButton* arm_ = nullptr;
+    QPushButton* hold_ = nullptr;
+    QPushButton* quickStop_ = nullptr;
+    QPushButton* disable_ = nullptr;
+    QPushButton* dryRun_ = nullptr;
+    QPushButton* save_ = nullptr;
+    QTimer* poll_ = nullptr;
+    QTimer* feed_ = nullptr;
+};
+
+}  // namespace coscope::gui

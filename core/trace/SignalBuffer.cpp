@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/trace/SignalBuffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace coscope {
+
+namespace {
+constexpr size_t kBlock1 = 64;     // samples per level-1 summary
+constexpr size_t kBlock2 = 4096;   // samples per level-2 summary
+static_assert(SignalBuffer::kChunkSize % kBlock2 == 0);
+
+uint64_t bitsOf(double v) {
+    if (!std::isfinite(v)) return 0;
+    if (v >= 0 && v >= 9.2e18) return static_cast<uint64_t>(v);
+    return static_cast<uint64_t>(static_cast<int64_t>(v));
+}
+}  // namespace
+
+struct SignalBuffer::Chunk {
+    std::vector<int64_t> t;
+    std::vector<double> v;
+    std::vector<FrameNo> f;
+    std::vector<Summary> l1, l2;
+    std::vector<int64_t> blockTime;  // time of each 64-block's first sample: searches touch few cache lines
+
+    size_t size() const { return t.size(); }
+    size_t lowerBound(int64_t time) const {
+        const auto b = static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
+        const size_t from = b > 0 ? (b - 1) * kBlock1 : 0;
+        const size_t to = std::min(t.size(), b * kBlock1);
+        return static_cast<size_t>(std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(from), t.begin() + static_cast<std::ptrdiff_t>(to), time) - t.begin());
+    }
+    bool full() const { return t.size() >= kChunkSize; }
+    void push(const SignalSample& s) {
+        const size_t i = t.size();
+        t.push_back(s.timeNs);
+        v.push_back(s.value);
+        f.push_back(s.frame);
+        if (i % kBlock1 == 0) blockTime.push_back(s.timeNs);
+        const uint64_t b = bitsOf(s.value);
+        auto fold = [&](std::vector<Summary>& level, size_t block) {
+            if (i % block == 0) {
+                level.push_back({s.value, s.value, b, b});
+                return;
+            }
+            Summary& m = level.back();
+            m.min = std::min(m.min, s.value);
+            m.max = std::max(m.max, s.value);
+            m.andBits &= b;
+            m.orBits |= b;
+        };
+        fold(l1, kBlock1);
+        fold(l2, kBlock2);
+    }
+};
+
+SignalBuffer::SignalBuffer(size_t capacity) : capacityChunks_(std::max<size_t>(1, (capacity + kChunkSize - 1) / kChunkSize)) {}
+SignalBuffer::~SignalBuffer() = default;
+
+void SignalBuffer::append(std::span<const SignalSample> samples) {
+    if (samples.empty()) return;
+    std::lock_guard lock(mutex_);
+    for (const SignalSample& s : samples) {
+        if (chunks_.empty() || chunks_.back()->full()) {
+            if (chunks_.size() >= capacityChunks_ + 1) {  // keep `capacity` whole chunks behind the one filling
+                base_ += chunks_.front()->size();
+                chunks_.pop_front();
+                chunkStart_.erase(chunkStart_.begin());
+            }
+            auto c = std::make_unique<Chunk>();
+            c->t.reserve(256);
+            c->v.reserve(256);
+            c->f.reserve(256);
+            chunks_.push_back(std::move(c));
+            chunkStart_.push_back(s.timeNs);
+        }
+        chunks_.back()->push(s);
+    }
+    appended_.fetch_add(samples.size(), std::memory_order_release);
+}
+
+void SignalBuffer::clear() {
+    std::lock_guard lock(mutex_);
+    chunks_.clear();
+    chunkStart_.clear();
+    base_ = appended_.load();
+}
+
+size_t SignalBuffer::countLocked() const {
+    if (chunks_.empty()) return 0;
+    return (chunks_.size() - 1) * kChunkSize + chunks_.back()->size();
+}
+
+size_t SignalBuffer::size() const {
+    std::lock_guard lock(mutex_);
+    return countLocked();
+}
+
+uint64_t SignalBuffer::dropped() const {
+    std::lock_guard lock(mutex_);
+    return base_;
+}
+
+const SignalSample SignalBuffer::sampleLocked(size_t r) const {
+    const Chunk& c = *chunks_[r / kChunkSize];
+    const size_t i = r % kChunkSize;
+    return {c.t[i], c.v[i], c.f[i]};
+}
+
+size_t SignalBuffer::lowerBoundLocked(int64_t timeNs) const {
+    // The last chunk starting before t holds the answer (or it is the next chunk's first).
+    const auto k = static_cast<size_t>(std::lower_bound(chunkStart_.begin(), chunkStart_.end(), timeNs) - chunkStart_.begin());
+    if (k == 0) return 0;
+    return (k - 1) * kChunkSize + chunks_[k - 1]->lowerBound(timeNs);
+}
+
+SignalBuffer::Summary SignalBuffer::reduceLocked(size_t from, size_t to) const {
+    Summary m{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), ~uint64_t(0), 0};
+    auto merge = [&m](const Summary& s) {
+        m.min = std::min(m.min, s.min);
+        m.max = std::max(m.max, s.max);
+        m.andBits &= s.andBits;
+        m.orBits |= s.orBits;
+    };
+    while (from < to) {
+        const Chunk& c = *chunks_[from / kChunkSize];
+        size_t lo = from % kChunkSize;
+        const size_t hi = std::min(kChunkSize, lo + (to - from));
+        from += hi - lo;
+        auto raw = [&](size_t i) {
+            const uint64_t b = bitsOf(c.v[i]);
+            merge({c.v[i], c.v[i], b, b});
+        };
+        while (lo < hi && lo % kBlock1) raw(lo++);
+        while (lo + kBlock1 <= hi && lo % kBlock2) {
+            merge(c.l1[lo / kBlock1]);
+            lo += kBlock1;
+        }
+        while (lo + kBlock2 <= hi) {
+            merge(c.l2[lo / kBlock2]);
+            lo += kBlock2;
+        }
+        while (lo + kBlock1 <= hi) {
+            merge(c.l1[lo / kBlock1]);
+            lo += kBlock1;
+        }
+        while (lo < hi) raw(lo++);
+    }
+    return m;
+}
+
+std::vector<SignalSample> SignalBuffer::samplesLocked(size_t from, size_t to) const {
+    std::vector<SignalSample> out;
+    out.reserve(to - from);
+    for (size_t r = from; r < to; ++r) out.push_back(sampleLocked(r));
+    return out;
+}
+
+std::optional<SignalSample> SignalBuffer::first() const {
+    std::lock_guard lock(mutex_);
+    if (!countLocked()) return std::nullopt;
+    return sampleLocked(0);
+}
+
+std::optional<SignalSample> SignalBuffer::last() const {
+    std::lock_guard lock(mutex_);
+    const size_t n = countLocked();
+    if (!n) return std::nullopt;
+    return sampleLocked(n - 1);
+}
+
+std::optional<SignalSample> SignalBuffer::at(int64_t timeNs) const {
+    std::lock_guard lock(mutex_);
+    const size_t n = countLocked();
+    if (!n) return std::nullopt;
+    const size_t i = lowerBoundLocked(timeNs + 1);  // first sample after t
+    return sampleLocked(i == 0 ? 0 : i - 1);
+}
+
+std::optional<SignalSample> SignalBuffer::nearest(int64_t timeNs) const {
+    std::lock_guard lock(mutex_);
+    const size_t n = countLocked();
+    if (!n) return std::nullopt;
+    const size_t i = lowerBoundLocked(timeNs);
+    if (i == 0) return sampleLocked(0);
+    if (i >= n) return sampleLocked(n - 1);
+    const SignalSample a = sampleLocked(i - 1), b = sampleLocked(i);
+    return (timeNs - a.timeNs) <= (b.timeNs - timeNs) ? a : b;
+}
+
+std::vector<SignalSample> SignalBuffer::samples(int64_t t0, int64_t t1) const {
+    std::lock_guard lock(mutex_);
+    if (t1 < t0) return {};
+    return samplesLocked(lowerBoundLocked(t0), lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1));
+}
+
+SignalRange SignalBuffer::range(int64_t t0, int64_t t1, int bit) const {
+    std::lock_guard lock(mutex_);
+    const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
+    if (from >= to) return {};
+    const Summary s = reduceLocked(from, to);
+    if (bit >= 0 && bit < 64) return {double((s.andBits >> bit) & 1), double((s.orBits >> bit) & 1), true};
+    return {s.min, s.max, true};
+}
+
+std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buckets, int bit) const {
+    std::vector<SignalPoint> out;
+    std::lock_guard lock(mutex_);
+    const size_t n = countLocked();
+    if (!n || t1 < t0) return out;
+    buckets = std::max(1, buckets);
+    const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
+    auto valueOf = [bit](double v) { return bit >= 0 && bit < 64 ? double((bitsOf(v) >> bit) & 1) : v; };
+    auto push = [&](size_t r) {
+        const SignalSample s = sampleLocked(r);
+        out.push_back({s.timeNs, valueOf(s.value)});
+    };
+    const size_t lo = from > 0 ? from - 1 : from;     // one before the window
+    const size_t hi = to < n ? to + 1 : to;           // one after it
+    if (to - from <= size_t(2) * size_t(buckets)) {
+        out.reserve(hi - lo);
+        for (size_t r = lo; r < hi; ++r) push(r);
+        return out;
+    }
+    out.reserve(size_t(2) * size_t(buckets) + 2);
+    if (lo < from) push(lo);
+    const double span = double(t1) - double(t0);
+    size_t start = from;
+    for (int b = 0; b < buckets && start < to; ++b) {
+        size_t end = to;
+        if (b + 1 < buckets) {
+            const auto edge = static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
+            end = std::clamp(lowerBoundLocked(edge), start, to);
+        }
+        if (end == start) continue;
+        const SignalSample a = sampleLocked(start), z = sampleLocked(end - 1);
+        if (end - start <= 2) {
+            out.push_back({a.timeNs, valueOf(a.value)});
+            if (end - start == 2) out.push_back({z.timeNs, valueOf(z.value)});
+        } else {
+            const Summary s = reduceLocked(start, end);
+            double mn = s.min, mx = s.max;
+            if (bit >= 0 && bit < 64) {
+                mn = double((s.andBits >> bit) & 1);
+                mx = double((s.orBits >> bit) & 1);
+            }
+            // Rising stretch: min first; falling: max first.
+            const bool rising = valueOf(z.value) >= valueOf(a.value);
+            out.push_back({a.timeNs, rising ? mn : mx});
+            out.push_back({z.timeNs, rising ? mx : mn});
+        }
+        start = end;
+    }
+    if (hi > to) push(to);
+    return out;
+}
+
+}  // namespace coscope

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/trace/TraceStore.h"
+
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace coscope {
+
+// One value of a signal: when, what (the raw value as decoded, before any engineering scale)
+// and which trace frame carried it.
+struct SignalSample {
+    int64_t timeNs = 0;
+    double value = 0;
+    FrameNo frame = 0;
+};
+
+// One vertex of a decimated trace (raw value, or 0/1 for a bit).
+struct SignalPoint {
+    int64_t timeNs = 0;
+    double value = 0;
+};
+
+// Smallest and largest value of a stretch of samples.
+struct SignalRange {
+    double min = 0;
+    double max = 0;
+    bool valid = false;
+};
+
+// The sample history of one signal (DESIGN.md "Data flow": plot buffers fed by the ingest
+// worker). One writer (the ingest thread) appends; any thread reads; a mutex guards both and
+// is held for a batch (writer) or one query (reader), never across a frame loop of the other
+// side. Bounded: when `capacity` samples are exceeded the oldest chunk (65536 samples) goes.
+//
+// Min/max decimation (the plot's redraw cost follows pixels, not samples): each chunk keeps a
+// summary (min, max, AND and OR of the integer value) per block of 64 samples and per block
+// of 4096, so the extremes of any stretch cost O(log) block reads. AND/OR give the extremes
+// of one bit of the value (digital traces of 6041h/6040h bits) the same way.
+class SignalBuffer {
+public:
+    static constexpr size_t kChunkSize = 65536;
+    static constexpr size_t kDefaultCapacity = size_t(1) << 22;  // ~4 M samples (70 min at 1 kHz)
+
+    explicit SignalBuffer(size_t capacity = kDefaultCapacity);
+    ~SignalBuffer();
+    SignalBuffer(const SignalBuffer&) = delete;
+    SignalBuffer& operator=(const SignalBuffer&) = delete;
+
+    // Writer side.
+    void append(const SignalSample& s) { append(std::span<const SignalSample>(&s, 1)); }
+    void append(std::span<const SignalSample> samples);
+    void clear();
+
+    // Reader side (any thread).
+    size_t size() const;
+    // Samples appended since construction (dropped ones included): changes when data arrives.
+    uint64_t appended() const { return appended_.load(std::memory_order_acquire); }
+    uint64_t dropped() const;
+    std::optional<SignalSample> first() const;
+    std::optional<SignalSample> last() const;
+    // The last sample at or before t (the value a cursor at t reads), else the first after it.
+    std::optional<SignalSample> at(int64_t timeNs) const;
+    // The sample closest in time to t.
+    std::optional<SignalSample> nearest(int64_t timeNs) const;
+    // Every sample with t0 <= time <= t1 (exports).
+    std::vector<SignalSample> samples(int64_t t0, int64_t t1) const;
+    // Extremes over t0 <= time <= t1 (bit >= 0: of that bit of the integer value, 0 or 1).
+    SignalRange range(int64_t t0, int64_t t1, int bit = -1) const;
+    // A polyline of the samples in [t0, t1] for a plot `buckets` pixels wide: the samples
+    // themselves when there are at most 2 per bucket, else per bucket its min and max (in the
+    // order they occurred). The samples just outside the window are included so lines reach
+    // the edges. bit >= 0: that bit of the integer value.
+    std::vector<SignalPoint> decimate(int64_t t0, int64_t t1, int buckets, int bit = -1) const;
+
+private:
+    struct Summary {
+        double min, max;
+        uint64_t andBits, orBits;
+    };
+    struct Chunk;
+    // Global sample indexes: first() is base_, the newest base_ + size - 1.
+    size_t countLocked() const;
+    size_t lowerBoundLocked(int64_t timeNs) const;  // first index with time >= t
+    const SignalSample sampleLocked(size_t global) const;
+    Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty
+    std::vector<SignalSample> samplesLocked(size_t from, size_t to) const;
+
+    size_t capacityChunks_;
+    mutable std::mutex mutex_;
+    std::deque<std::unique_ptr<Chunk>> chunks_;
+    std::vector<int64_t> chunkStart_;  // first time of each chunk (searched without touching them)
+    uint64_t base_ = 0;  // global index of chunks_.front()'s first sample
+    std::atomic<uint64_t> appended_{0};
+};
+
+}  // namespace coscope

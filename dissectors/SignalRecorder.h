@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/trace/SignalBuffer.h"
+#include "core/trace/TraceStore.h"
+#include "dissectors/NetworkContext.h"
+#include "dissectors/SignalCatalog.h"
+
+#include <QString>
+
+#include <atomic>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+namespace coscope::dissect {
+
+// The plot's data side (DESIGN.md "Data flow": the ingest worker feeds plot buffers). Runs as a
+// consumer on the ingest thread (live capture or log loading): follows the trace with its own
+// network context (PDO mappings from the dictionaries and from SDO writes in the trace),
+// keeps the catalogue of the signals each node's PDOs carry, and appends every mapped value
+// of every PDO frame to that signal's SignalBuffer. Readers on any thread take the catalogue
+// (a copy, with a revision) and the buffers; nothing per frame crosses a thread by signal.
+class SignalRecorder {
+public:
+    explicit SignalRecorder(size_t capacityPerSignal = SignalBuffer::kDefaultCapacity);
+    ~SignalRecorder();
+    SignalRecorder(const SignalRecorder&) = delete;
+    SignalRecorder& operator=(const SignalRecorder&) = delete;
+
+    // Ingest thread: frames [first, first + count) of `store`, in trace order.
+    void consume(const TraceStore& store, FrameNo first, size_t count);
+
+    // Any thread: node-ID -> dictionary (bundled name or file) as the node table matched or
+    // the user assigned; applied before the next batch. Nodes not listed are matched by the
+    // identity read in the trace.
+    void setDictionaries(const std::map<int, QString>& names);
+
+    // Any thread.
+    uint64_t catalogRevision() const { return revision_.load(std::memory_order_acquire); }
+    std::vector<SignalInfo> catalog() const;  // sorted by key; bits of 6040h/6041h included
+    std::optional<SignalInfo> info(const SignalKey& key) const;
+    // The samples of a signal (of its word for a bit key); null when unknown.
+    std::shared_ptr<const SignalBuffer> buffer(const SignalKey& key) const;
+    // Time of the first frame consumed (the plot's t = 0); nullopt before any.
+    std::optional<int64_t> originNs() const;
+    int64_t latestNs() const { return latestNs_.load(std::memory_order_acquire); }
+    uint64_t framesConsumed() const { return frames_.load(std::memory_order_acquire); }
+
+private:
+    struct Slot {
+        SignalInfo info;
+        std::shared_ptr<SignalBuffer> buffer;
+        std::vector<SignalSample> pending;  // ingest thread only
+    };
+    Slot& slotFor(int bus, int node, const PdoMapEntry& e, const QString& pdo);
+    void ensureCatalogue();
+    void applyDictionaries();
+    void learnParameter(int bus, int node, const SdoTransferRecord& t);
+    SignalScale scaleFor(int bus, int node, const QString& dictionary, const QString& unit, double factor) const;
+
+    const size_t capacity_;
+    NetworkContext context_;
+    Dissection scratch_;
+
+    mutable std::mutex mutex_;  // guards slots_ inserts/info and the pending dictionaries
+    std::unordered_map<uint64_t, std::unique_ptr<Slot>> slots_;  // by SignalKey::packed() of the word
+    std::vector<Slot*> dirty_;
+    std::map<int, QString> pendingNames_, appliedNames_;
+    bool namesChanged_ = false;
+    std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value
+    std::atomic<uint64_t> revision_{1};
+    std::atomic<int64_t> originNs_{0};
+    std::atomic<bool> haveOrigin_{false};
+    std::atomic<int64_t> latestNs_{0};
+    std::atomic<uint64_t> frames_{0};
+};
+
+}  // namespace coscope::dissect
