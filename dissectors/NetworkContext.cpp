@@ -121,6 +121,7 @@ void NetworkContext::pdoCobIdChanged(int, bool, int) { rebuildRoutes(); }
 const od::ObjectDictionary* NetworkContext::namesFor(int node) const {
     const auto& nodes = buses_[current_].nodes;
     if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary) return nodes[static_cast<size_t>(node)].dictionary.get();
+    if (!genericNames_) return nullptr;
     if (!generic_) const_cast<NetworkContext*>(this)->generic_ = catalog::bundled(QStringLiteral("generic-cia402"));
     return generic_.get();
 }

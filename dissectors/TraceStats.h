@@ -21,7 +21,7 @@ namespace coscope::dissect {
 // warnings. Feed frames in order with add(); the context is run at the Stats level (no text).
 class TraceStats {
 public:
-    explicit TraceStats(int bitRate = 500000) : bitRate_(bitRate) {}
+    explicit TraceStats(int bitRate = 500000) : bitRate_(bitRate) { ctx_.setGenericNames(false); }
     NetworkContext& context() { return ctx_; }
 
     void add(const CanFrame& f);

@@ -2,6 +2,7 @@
 // The CiA 402 enable step-through wizard end to end against the virtual drives (sim://) of every
 // personality: stepping to Operation enabled, mode, hold-to-run test move, disable; faults
 // injected during the enable; disable on close; dry run and listen-only send nothing.
+#include "app/gui/nodes/NodesDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/ds402/Ds402MotionPlot.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
@@ -47,13 +48,32 @@ struct Rig {
 
 bool waitSignal(QSignalSpy& spy, int ms = 5000) { return spy.count() > 0 || spy.wait(ms); }
 
+// Waits for the wizard's first successful state read of a drive that finished initialising
+// (a drive may answer Not ready to switch on just after power-on; the wizard re-reads then).
+bool waitReady(Ds402Wizard& w, QSignalSpy& read, int ms = 6000) {
+    const bool ok = QTest::qWaitFor([&] {
+        for (const auto& args : read)
+            if (args.first().toBool() && w.shownState() != State::NotReadyToSwitchOn && w.shownState() != State::Unknown) return true;
+        return false;
+    }, ms);
+    if (!ok) qWarning("no settled state read: shown %s: %s", qPrintable(canopen::ds402::stateName(w.shownState())), qPrintable(w.message()));
+    return ok;
+}
+
 // Clicks the step button (it must be the enabled next step) and waits for its outcome.
 bool step(Ds402Wizard& w, Command c, bool* ok) {
     QPushButton* b = w.stepButton(c);
-    if (!b || !b->isEnabled()) return false;
+    if (!b || !b->isEnabled()) {
+        qWarning("step %s: button not enabled (busy %d, shown state %s): %s", qPrintable(canopen::ds402::commandName(c)), int(w.isBusy()),
+                 qPrintable(canopen::ds402::stateName(w.shownState())), qPrintable(w.message()));
+        return false;
+    }
     QSignalSpy done(&w, &Ds402Wizard::stepFinished);
     b->click();
-    if (!waitSignal(done, 6000)) return false;
+    if (!waitSignal(done, 6000)) {
+        qWarning("step %s: no outcome within 6 s: %s", qPrintable(canopen::ds402::commandName(c)), qPrintable(w.message()));
+        return false;
+    }
     *ok = done.first().first().toBool();
     return true;
 }
@@ -78,8 +98,7 @@ private slots:
         Ds402Wizard w(&rig.ws, node);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
-        QVERIFY(read.first().first().toBool());
+        QVERIFY(waitReady(w, read));
         QCOMPARE(w.shownState(), State::SwitchOnDisabled);
         QCOMPARE(w.diagram()->state(), State::SwitchOnDisabled);
         QCOMPARE(w.diagram()->nextTransition(), std::optional<int>(2));
@@ -151,7 +170,7 @@ private slots:
         Ds402Wizard w(&rig.ws, 4);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(w, read));
         bool ok = false;
         for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
         canopen::Ds402TestMove m;
@@ -188,6 +207,8 @@ private slots:
         QTest::addColumn<int>("node");
         QTest::addColumn<QString>("alarm");
         QTest::addColumn<QString>("expect");
+        // The node table is empty (no scan): the wizard must find the dictionary by identity
+        // (1018h) to name the vendor alarm.
         QTest::newRow("delta-asda-a2") << 1 << QStringLiteral("AL013") << QStringLiteral("AL013 Emergency stop");
         QTest::newRow("aimotor") << 2 << QStringLiteral("Er.620") << QStringLiteral("Er.620 Motor overload");
         QTest::newRow("generic-cia402") << 4 << QStringLiteral("overcurrent") << QStringLiteral("2310h");
@@ -202,7 +223,7 @@ private slots:
         Ds402Wizard w(&rig.ws, node);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(w, read));
         bool ok = false;
         QVERIFY(step(w, Command::Shutdown, &ok) && ok);
         QVERIFY(step(w, Command::SwitchOn, &ok));
@@ -212,8 +233,16 @@ private slots:
         QVERIFY2(w.message().contains(expect), qPrintable(w.message()));
         QVERIFY(w.statusPanel()->faultText().contains(expect));
         QCOMPARE(w.diagram()->state(), State::Fault);
+        QVERIFY(rig.ws.nodes().snapshot().empty() || !rig.ws.nodes().node(node) || rig.ws.nodes().node(node)->dictionary.isEmpty());
         const State s = rig.driveState(node);
         QVERIFY(s == State::Fault || s == State::SwitchOnDisabled);
+        // The statusword read back over the bus says disabled (or fault), never enabled.
+        QSignalSpy again(&w, &Ds402Wizard::stateRead);
+        w.refresh();
+        QVERIFY(waitSignal(again));
+        QVERIFY(again.first().first().toBool());
+        QVERIFY2(w.shownState() == State::Fault || w.shownState() == State::SwitchOnDisabled, qPrintable(canopen::ds402::stateName(w.shownState())));
+        QVERIFY(!(w.statusword() & canopen::ds402::sw::OperationEnabled));
         // The next step offered is the fault reset.
         QVERIFY(w.stepButton(Command::FaultReset)->isEnabled());
     }
@@ -225,7 +254,7 @@ private slots:
         Ds402Wizard w(&rig.ws, 1);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(w, read));
         QVERIFY(w.statusPanel()->bitText(4).endsWith(QStringLiteral("off")));
         bool ok = false;
         QVERIFY(step(w, Command::Shutdown, &ok) && ok);
@@ -242,7 +271,7 @@ private slots:
         auto* w = new Ds402Wizard(&rig.ws, 2);
         w->setAutoConfirm(true);
         QSignalSpy read(w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(*w, read));
         bool ok = false;
         for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(*w, c, &ok) && ok);
         QCOMPARE(rig.driveState(2), State::OperationEnabled);
@@ -257,7 +286,7 @@ private slots:
         Ds402Wizard w(&rig.ws, 4);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(w, read));
         bool ok = false;
         QVERIFY(step(w, Command::Shutdown, &ok) && ok);
         QVERIFY(step(w, Command::SwitchOn, &ok) && ok);
@@ -277,7 +306,7 @@ private slots:
         QVERIFY(rig.open(kAll));
         Ds402Wizard w(&rig.ws, 1);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitSignal(read));
+        QVERIFY(waitReady(w, read));
         const uint64_t tx = rig.ws.bus()->counters().tx;
         canopen::CommandScript s = w.dryRun();
         // The chosen mode (6060h write + 6061h check) comes first when it differs from the drive's.
@@ -309,6 +338,44 @@ private slots:
         QVERIFY(!w.quickStopButton()->isEnabled());
         QVERIFY(!w.stepButton(Command::Shutdown)->isEnabled());
         QCOMPARE(rig.ws.bus()->counters().tx, uint64_t(0));
+    }
+
+    void nmtResetWarnsAboutAnEnabledDrive() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        NodesDock dock(&rig.ws);
+        dock.setAutoConfirm(true);
+        // Not enabled: no warning, the plain question only.
+        QVERIFY(dock.sendNmt(0x81, 1));  // reset node 1
+        QVERIFY2(dock.lastConfirmation().startsWith(QStringLiteral("Send NMT")), qPrintable(dock.lastConfirmation()));
+        QVERIFY(!dock.lastConfirmation().contains(QStringLiteral("enabled")));
+        Ds402Wizard w(&rig.ws, 1);
+        w.setAutoConfirm(true);
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        bool ok = false;
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
+        QCOMPARE(rig.driveState(1), State::OperationEnabled);
+        // Reset communication of node 1, then of all nodes: both name the enabled drive.
+        for (int target : {1, 0}) {
+            dock.setAutoConfirm(false);
+            QTimer::singleShot(100, [] {
+                if (QWidget* box = QApplication::activeModalWidget()) QTest::keyClick(box, Qt::Key_Escape);
+            });
+            QVERIFY(!dock.sendNmt(0x82, target));  // answered "no": nothing sent
+            const QString text = dock.lastConfirmation();
+            QVERIFY2(text.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(text));
+            QVERIFY2(text.contains(QStringLiteral("a reset stops it abruptly")), qPrintable(text));
+            QVERIFY2(text.contains(QStringLiteral("AL401")), qPrintable(text));
+            QVERIFY(!text.contains(QStringLiteral("Drive 2")));  // node 2 is not enabled
+            QCOMPARE(rig.driveState(1), State::OperationEnabled);
+        }
+        // Start (01h) does not stop anything: no warning.
+        dock.setAutoConfirm(true);
+        QVERIFY(dock.sendNmt(0x01, 1));
+        QVERIFY(!dock.lastConfirmation().contains(QStringLiteral("is enabled")));
+        w.disableDrive();
+        QVERIFY(QTest::qWaitFor([&] { return rig.driveState(1) == State::SwitchOnDisabled; }, 3000));
     }
 
     void firstCia402DriveIsPreselected() {

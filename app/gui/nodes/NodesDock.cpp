@@ -8,7 +8,12 @@
 #include "core/canopen/Nmt.h"
 #include "eds/DictionaryLibrary.h"
 
+#include "core/canopen/SdoClient.h"
+
 #include <QAction>
+#include <QEventLoop>
+#include <QPointer>
+#include <QTimer>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QMenu>
@@ -126,6 +131,7 @@ int NodesDock::selectedNode() const {
 }
 
 bool NodesDock::confirm(const QString& title, const QString& what) {
+    lastConfirmation_ = what;
     if (autoConfirm_) return true;
     return QMessageBox::question(this, title, what, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Yes;
 }
@@ -138,8 +144,9 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
     }
     const auto frame = canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node));
     const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-    if (ask && !confirm(tr("Send NMT command"), tr("Send NMT “%1” to %2?\n\nFrame: %3")
-                                                   .arg(canopen::nmtCommandName(command), target, formatCansend(frame))))
+    const QString warning = ask ? enabledDriveWarning(command, node) : QString();
+    if (ask && !confirm(tr("Send NMT command"), warning + tr("Send NMT “%1” to %2?\n\nFrame: %3")
+                                                             .arg(canopen::nmtCommandName(command), target, formatCansend(frame))))
         return false;
     QString error;
     if (!workspace_->master()->send(frame, &error)) {
@@ -149,6 +156,53 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
     }
     emit message(tr("Sent NMT %1 to %2").arg(canopen::nmtCommandName(command), target));
     return true;
+}
+
+QString NodesDock::enabledDriveWarning(uint8_t command, int node) {
+    // Stop (02h), enter pre-operational (80h), reset node (81h) and reset communication (82h)
+    // end PDO/SDO control of the drive (CiA 301 §7.2.8.3.1); a drive in Operation enabled then
+    // stops abruptly or trips its communication-loss reaction (6007h, CiA 402-2).
+    if (command != 0x02 && command != 0x80 && command != 0x81 && command != 0x82) return {};
+    canopen::SdoClient* sdo = workspace_->sdo();
+    if (!sdo || !workspace_->canTransmit()) return {};
+    std::vector<int> ids;
+    if (node > 0) ids.push_back(node);
+    else
+        for (const NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
+    if (ids.empty()) return {};
+    // Read the statusword 6041h of each node (short timeout; transfers to different nodes run
+    // side by side). A node without 6041h simply aborts: not a drive.
+    struct Reads {
+        int pending = 0;
+        std::map<int, uint16_t> statusword;
+    };
+    auto reads = std::make_shared<Reads>();
+    reads->pending = int(ids.size());
+    QEventLoop loop;
+    QPointer<QEventLoop> guard(&loop);
+    canopen::SdoOptions options;
+    options.timeoutMs = 300;
+    for (int id : ids)
+        sdo->upload(static_cast<uint8_t>(id), 0x6041, 0, [reads, guard, id](const canopen::SdoResult& r) {
+            if (r.ok && r.data.size() >= 2) reads->statusword[id] = static_cast<uint16_t>(uint8_t(r.data[0]) | (uint8_t(r.data[1]) << 8));
+            if (--reads->pending == 0 && guard) guard->quit();
+        }, options);
+    QTimer::singleShot(1000, &loop, &QEventLoop::quit);  // never wait long, whatever happens
+    if (reads->pending > 0) loop.exec(QEventLoop::ExcludeUserInputEvents);
+    QString out;
+    for (const auto& [id, sw] : reads->statusword) {
+        // Operation enabled: bits 0-3, 5, 6 = x01x 0111 (CiA 402-2 Table 30).
+        if ((sw & 0x6F) != 0x27) continue;
+        const auto info = workspace_->nodes().node(id);
+        const bool delta = info && info->dictionary.contains(QStringLiteral("delta"), Qt::CaseInsensitive);
+        out += tr("Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its "
+                  "communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).\n\n")
+                   .arg(id)
+                   .arg(sw, 4, 16, QChar(u'0'))
+                   .arg(command == 0x81 || command == 0x82 ? tr("a reset") : tr("this command"))
+                   .arg(delta || !info || info->dictionary.isEmpty() ? tr("Delta drives raise AL401 (CANopen communication lost). ") : QString());
+    }
+    return out;
 }
 
 void NodesDock::scan() {

@@ -37,6 +37,8 @@ public:
     void assignDictionary(int node, const QString& name);
     // Test hook: answer confirmations without showing a dialog.
     void setAutoConfirm(bool on) { autoConfirm_ = on; }
+    // Test hook: the text of the last confirmation asked (or auto-answered).
+    QString lastConfirmation() const { return lastConfirmation_; }
 
 signals:
     void nodeSelected(int node);
@@ -45,6 +47,9 @@ signals:
 private:
     bool confirm(const QString& title, const QString& what);
     void updateEnabled();
+    // Before an NMT command that stops a node's application (stop, pre-operational, resets):
+    // one warning line per CiA 402 drive that reads back Operation enabled, else "".
+    QString enabledDriveWarning(uint8_t command, int node);
 
     Workspace* workspace_;
     NodesModel* model_ = nullptr;
@@ -55,6 +60,7 @@ private:
     QAction* identify_ = nullptr;
     QAction* assign_ = nullptr;
     bool autoConfirm_ = false;
+    QString lastConfirmation_;
 };
 
 }  // namespace coscope::gui

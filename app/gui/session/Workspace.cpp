@@ -30,6 +30,7 @@ void Workspace::reset() {
         loadJob_->wait();
     }
     loadJob_.reset();
+    if (bus_) emit aboutToDisconnect();
     sdo_.reset();
     if (bus_) bus_->close();
     if (session_) session_->stop();
@@ -84,6 +85,9 @@ bool Workspace::connectBus(const QString& url, QString* error) {
 
 void Workspace::disconnectBus() {
     if (!bus_) return;
+    // Last chance for whoever drives a device (the CiA 402 wizard disables its drive): the
+    // bus and the SDO client are still there.
+    emit aboutToDisconnect();
     // Keep the trace: stop the bus and the ingest thread, leave the store for review.
     sdo_.reset();
     bus_->close();

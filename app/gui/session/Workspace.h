@@ -67,6 +67,9 @@ public:
     void poll();
 
 signals:
+    // Emitted while the bus and the SDO client still work, just before they are closed
+    // (disconnect, another connection, opening a log).
+    void aboutToDisconnect();
     void sourceChanged();
     void busStateChanged(coscope::CanBus::State state);
     void errorOccurred(const QString& message);

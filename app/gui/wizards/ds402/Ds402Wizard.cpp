@@ -10,6 +10,7 @@
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402VendorNotes.h"
 #include "core/canopen/SdoClient.h"
+#include "eds/DictionaryLibrary.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -40,6 +41,8 @@ namespace sw = canopen::ds402::sw;
 
 namespace {
 constexpr int kPollMs = 1000;      // idle refresh of the statusword
+constexpr int kSettleMs = 100;     // re-read while the drive initialises or reacts to a fault
+constexpr int kSettleTries = 30;   // ... for at most 3 s
 constexpr int kFeedMs = 100;       // hold-to-run watchdog feed while the button is down
 constexpr uint16_t kCia402 = 402;  // 1000h low word: device profile number (CiA 301 §7.5.2.1)
 
@@ -362,20 +365,49 @@ void Ds402Wizard::selectNode(int node) {
     status_->clear();
     const auto info = workspace_->nodes().node(node);
     dictionary_ = info ? info->dictionary : QString();
+    ++selection_;
+    reading_ = false;  // answers to reads for the earlier choice are dropped
+    settleTries_ = 0;
     // The node list of the combo: every node seen, this one selected.
     nodeCombo_->clear();
     for (const NodeInfo& n : workspace_->nodes().snapshot())
         nodeCombo_->addItem(n.dictionary.isEmpty() ? tr("Node %1").arg(n.node) : tr("Node %1 — %2").arg(n.node).arg(n.dictionary), n.node);
     if (nodeCombo_->findData(node) < 0) nodeCombo_->addItem(tr("Node %1").arg(node), node);
     nodeCombo_->setCurrentIndex(nodeCombo_->findData(node));
-    const auto notes = ds402VendorNotes(dictionary_);
-    vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped()) : QString());
     frames_->setNode(node);
     frames_->markStart();
     makeController();
+    if (dictionary_.isEmpty() && ctl_) {
+        // The node table has no dictionary yet (the network was not scanned): match one by the
+        // identity object 1018h sub 1 vendor-ID, sub 2 product code (CiA 301 §7.5.2.21), as the
+        // node scan does, so the vendor notes and alarm texts are known.
+        setMessage(tr("Reading the identity of node %1 (1018h)…").arg(node));
+        auto vendor = std::make_shared<std::optional<uint32_t>>();
+        QPointer<Ds402Wizard> self(this);
+        const int selection = selection_;
+        readObject(0x1018, 1, [vendor](const SdoResult& r) {
+            if (r.ok) *vendor = le32(r.data);
+        });
+        readObject(0x1018, 2, [self, vendor, selection](const SdoResult& r) {
+            if (!self || selection != self->selection_) return;
+            if (r.ok && *vendor) {
+                const eds::DictionaryLibrary library;
+                if (const auto* e = library.findByIdentity(**vendor, le32(r.data))) self->dictionary_ = e->name;
+            }
+            self->setMessage({});
+            self->startReading();
+        });
+        return;
+    }
+    startReading();
+}
+
+void Ds402Wizard::startReading() {
+    const auto notes = ds402VendorNotes(dictionary_);
+    vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped()) : QString());
     if (notes && notes->notCia402) {
         cia402_ = false;
-        setMessage(tr("Node %1 is a %2: %3").arg(node).arg(notes->vendor, notes->before), true);
+        setMessage(tr("Node %1 is a %2: %3").arg(node_).arg(notes->vendor, notes->before), true);
         setProperty("screenshotReady", true);
         updateButtons();
         emit stateRead(false);
@@ -421,13 +453,29 @@ void Ds402Wizard::readObject(uint16_t index, uint8_t sub, std::function<void(con
 // --- reading the state
 
 void Ds402Wizard::refresh() {
-    if (!ctl_ || reading_ || !cia402_) return;
+    // Never while a step runs: the step reads 6041h itself and its result is the state shown.
+    if (!ctl_ || reading_ || busy_ || !cia402_) return;
     reading_ = true;
     QPointer<Ds402Wizard> self(this);
-    ctl_->readState([self](const Ds402Result& r) {
-        if (!self) return;
-        self->afterState(r, [self, ok = r.ok] {
-            if (!self) return;
+    const int selection = selection_;
+    ctl_->readState([self, selection](const Ds402Result& r) {
+        if (!self || selection != self->selection_) return;
+        if (r.ok && r.state == State::NotReadyToSwitchOn && self->settleTries_ < kSettleTries) {
+            // Still initialising: it goes to Switch on disabled by itself (CiA 402-2 §6.2,
+            // transition 1). Read again soon instead of showing a state without a next step.
+            ++self->settleTries_;
+            self->showState(r.state, r.statusword);
+            self->setMessage(tr("The drive is initialising (Not ready to switch on); waiting for Switch on disabled…"));
+            QTimer::singleShot(kSettleMs, self, [self] {
+                if (!self) return;
+                self->reading_ = false;
+                self->refresh();
+            });
+            return;
+        }
+        self->settleTries_ = 0;
+        self->afterState(r, [self, ok = r.ok, selection] {
+            if (!self || selection != self->selection_) return;
             self->reading_ = false;
             self->updateButtons();
             emit self->stateRead(ok);
@@ -565,7 +613,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
             self->busy_ = false;
             self->showState(r.state, r.statusword);
             self->setMessage(tr("%1 done: the drive is now in %2 (statusword 0x%3).").arg(name, canopen::ds402::stateName(r.state), hex4(r.statusword)));
-            self->refresh();
+            self->poll_->start();  // the next idle read one full interval from now
             emit self->stepFinished(true);
             return;
         }
@@ -575,7 +623,9 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         if (!r.advice.isEmpty()) text += QStringLiteral("\n") + r.advice + QStringLiteral(".");
         self->setMessage(text, true);
         if (!self->ctl_) return;
-        self->ctl_->disableVoltage([self, text, command](const Ds402Result& d) {
+        self->ctl_->disableVoltage([self, text, command](const Ds402Result& d0) {
+            if (!self) return;
+            self->settleFaultReaction(d0, 0, [self, text, command](const Ds402Result& d) {
             if (!self) return;
             self->busy_ = false;
             QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(canopen::ds402::stateName(d.state))
@@ -593,9 +643,23 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
                 emit self->stepFinished(false);
             });
             (void)command;
+            });
         });
     });
     return true;
+}
+
+void Ds402Wizard::settleFaultReaction(const Ds402Result& r, int tries, std::function<void(const Ds402Result&)> done) {
+    // Fault reaction active ends in Fault by itself once the drive has braked (CiA 402-2 §6.2,
+    // transition 14): show where it ends, not the passing state.
+    if (!r.ok || r.state != State::FaultReactionActive || tries >= kSettleTries || !ctl_) return done(r);
+    QPointer<Ds402Wizard> self(this);
+    QTimer::singleShot(kSettleMs, this, [self, tries, done] {
+        if (!self || !self->ctl_) return;
+        self->ctl_->readState([self, tries, done](const Ds402Result& again) {
+            if (self) self->settleFaultReaction(again, tries + 1, done);
+        });
+    });
 }
 
 bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {

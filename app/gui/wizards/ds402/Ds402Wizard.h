@@ -108,6 +108,8 @@ private:
     void buildUi();
     void findFirstDrive(int attempt);
     void makeController();
+    void startReading();  // after the drive (and its dictionary) is known
+    void settleFaultReaction(const canopen::Ds402Result& r, int tries, std::function<void(const canopen::Ds402Result&)> done);
     void dropController(const QString& why);
     void readObject(uint16_t index, uint8_t sub, std::function<void(const canopen::SdoResult&)> done);
     void afterState(const canopen::Ds402Result& r, std::function<void()> then);
@@ -132,6 +134,8 @@ private:
     bool holding_ = false;
     bool sentCommands_ = false;  // the wizard wrote 6040h since the node was chosen
     bool closing_ = false;
+    int selection_ = 0;    // counts selectNode() calls: answers for an earlier choice are dropped
+    int settleTries_ = 0;  // re-reads while the drive is Not ready to switch on
     canopen::ds402::State state_ = canopen::ds402::State::Unknown;
     uint16_t statusword_ = 0;
     int8_t modeDisplay_ = 0;
