@@ -359,9 +359,16 @@ private slots:
         // Reset communication of node 1, then of all nodes: both name the enabled drive.
         for (int target : {1, 0}) {
             dock.setAutoConfirm(false);
-            QTimer::singleShot(100, [] {
-                if (QWidget* box = QApplication::activeModalWidget()) QTest::keyClick(box, Qt::Key_Escape);
+            // Answer "no" (Escape) once the question shows (the statusword is read first).
+            QTimer escape;
+            escape.setInterval(50);
+            QObject::connect(&escape, &QTimer::timeout, [&escape] {
+                if (QWidget* box = QApplication::activeModalWidget()) {
+                    escape.stop();
+                    QTest::keyClick(box, Qt::Key_Escape);
+                }
             });
+            escape.start();
             QVERIFY(!dock.sendNmt(0x82, target));  // answered "no": nothing sent
             const QString text = dock.lastConfirmation();
             QVERIFY2(text.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(text));

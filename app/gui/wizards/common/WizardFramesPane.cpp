@@ -131,14 +131,17 @@ struct WizardFramesPane::Private {
     bool wanted(const TraceRecord& r) const {
         if (r.flags & (CanFrame::Extended | CanFrame::Error)) return false;
         const auto info = canopen::classifyCobId(r.id, false);
+        // Requests and answers: SDO, NMT, LSS, boot-up/heartbeat and EMCY. SYNC, TIME and the
+        // PDOs are cyclic traffic that would bury them (the trace shows everything).
         switch (info.service) {
         case canopen::Service::Nmt:
-        case canopen::Service::Sync:
         case canopen::Service::LssRequest:
         case canopen::Service::LssResponse: return true;
-        case canopen::Service::Unknown:
-        case canopen::Service::Time: return node < 0;
-        default: return node < 0 || info.node == node;
+        case canopen::Service::SdoRequest:
+        case canopen::Service::SdoResponse:
+        case canopen::Service::NmtErrorControl:
+        case canopen::Service::Emcy: return node < 0 || info.node == node;
+        default: return false;
         }
     }
 

@@ -11,7 +11,8 @@ namespace coscope::gui {
 class Workspace;
 
 // The frames pane every wizard shows: each request and response on the bus since markStart(),
-// for the wizard's node (plus NMT, LSS and SYNC), decoded by the workspace's decoder (time,
+// for the wizard's node: SDO, boot-up/heartbeat, EMCY (plus NMT and LSS; no SYNC or PDOs,
+// whose cyclic traffic would bury the answers), decoded by the workspace's decoder (time,
 // direction, COB-ID, data, summary). Pulls from the trace store on its own ≤ 30 Hz timer.
 class WizardFramesPane : public QWidget {
     Q_OBJECT

@@ -413,6 +413,7 @@ void Ds402Wizard::startReading() {
         emit stateRead(false);
         return;
     }
+    setMessage({});  // e.g. "Looking for a CiA 402 drive…" is over
     refresh();
     poll_->start();
 }
@@ -473,6 +474,7 @@ void Ds402Wizard::refresh() {
             });
             return;
         }
+        if (self->settleTries_ > 0 && r.ok) self->setMessage(tr("The drive finished initialising."));
         self->settleTries_ = 0;
         self->afterState(r, [self, ok = r.ok, selection] {
             if (!self || selection != self->selection_) return;
@@ -626,23 +628,23 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         self->ctl_->disableVoltage([self, text, command](const Ds402Result& d0) {
             if (!self) return;
             self->settleFaultReaction(d0, 0, [self, text, command](const Ds402Result& d) {
-            if (!self) return;
-            self->busy_ = false;
-            QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(canopen::ds402::stateName(d.state))
-                                     : tr("\nDISABLING FAILED: %1").arg(d.error));
-            if (d.ok) self->showState(d.state, d.statusword);
-            self->reading_ = true;
-            self->afterState(d, [self, t] {
                 if (!self) return;
-                self->reading_ = false;
-                QString full = t;
-                if (!self->faultText_.isEmpty()) full += QStringLiteral("\n") + self->faultText_;
-                full += QStringLiteral("\n") + tr("What to check: ") + self->checkAdvice();
-                self->setMessage(full, true);
-                self->updateButtons();
-                emit self->stepFinished(false);
-            });
-            (void)command;
+                self->busy_ = false;
+                QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(canopen::ds402::stateName(d.state))
+                                         : tr("\nDISABLING FAILED: %1").arg(d.error));
+                if (d.ok) self->showState(d.state, d.statusword);
+                self->reading_ = true;
+                self->afterState(d, [self, t] {
+                    if (!self) return;
+                    self->reading_ = false;
+                    QString full = t;
+                    if (!self->faultText_.isEmpty()) full += QStringLiteral("\n") + self->faultText_;
+                    full += QStringLiteral("\n") + tr("What to check: ") + self->checkAdvice();
+                    self->setMessage(full, true);
+                    self->updateButtons();
+                    emit self->stepFinished(false);
+                });
+                (void)command;
             });
         });
     });

@@ -54,6 +54,7 @@ public:
     // Why the wizard may not send now ("" = it may): no bus, listen-only, no drive chosen.
     QString sendRefusal() const;
     // Reads 6041h (and 6061h, 6502h once, 603Fh + 1003h:01 in fault). stateRead() when done.
+    // Does nothing while a step runs: the step's own 6041h result is the state shown.
     void refresh();
     bool isBusy() const { return busy_; }
 
