@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/DictionaryCatalog.h"
 
+#include "eds/DictionaryLibrary.h"
+
 #include "eds/BundledDictionaries.h"
 #include "eds/EdsReader.h"
 
@@ -78,7 +80,7 @@ DictionaryPtr bundled(const QString& name, QString* error) {
         if (error) *error = QStringLiteral("unknown dictionary '%1' (bundled: %2)").arg(name, eds::bundledDictionaryNames().join(QStringLiteral(", ")));
         return nullptr;
     }
-    eds::ReadResult r = eds::readDictionaryFile(path);
+    eds::ReadResult r = eds::DictionaryLibrary::loadFile(path);  // with its units sidecar
     if (!r.usable) {
         if (error) *error = QStringLiteral("bundled dictionary '%1' is not readable").arg(name);
         return nullptr;
@@ -93,7 +95,7 @@ DictionaryPtr fromFile(const QString& path, QString* error) {
         if (error) *error = QStringLiteral("%1: no such file").arg(path);
         return nullptr;
     }
-    eds::ReadResult r = eds::readDictionaryFile(path);
+    eds::ReadResult r = eds::DictionaryLibrary::loadFile(path);  // with its units sidecar
     for (const auto& d : r.diagnostics)
         if (d.severity == eds::Diagnostic::Severity::Error) spdlog::warn("{}", d.toString().toStdString());
     if (!r.usable) {

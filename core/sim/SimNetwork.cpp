@@ -63,19 +63,26 @@ void SimNetwork::attach(SimTap* tap) {
     taps_.push_back(tap);
 }
 
+// Frames a tap sent before it detached still go out (an adapter that is closed after a send
+// has put the frame on the wire): they lose only their sender, which is gone.
+void SimNetwork::forgetSender(SimTap* tap) {
+    for (auto& p : inbox_)
+        if (p.second == tap) p.second = nullptr;
+}
+
 void SimNetwork::detach(SimTap* tap) {
     if (thread_ && QThread::currentThread() != thread_) {
         // Make sure no delivery to this tap is running when we return.
         runOnNetworkThread([this, tap] {
             std::lock_guard lock(mutex_);
             std::erase(taps_, tap);
-            std::erase_if(inbox_, [tap](const auto& p) { return p.second == tap; });
+            forgetSender(tap);
         });
         return;
     }
     std::lock_guard lock(mutex_);
     std::erase(taps_, tap);
-    std::erase_if(inbox_, [tap](const auto& p) { return p.second == tap; });
+    forgetSender(tap);
 }
 
 void SimNetwork::inject(const CanFrame& frame, SimTap* from) {

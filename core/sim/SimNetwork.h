@@ -73,6 +73,7 @@ public:
     static std::shared_ptr<SimNetwork> published(const QString& name);
 
 private:
+    void forgetSender(SimTap* tap);  // with mutex_ held
     void onTick();
     void broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap);
     // Frames pass between participants at the same bit rate (0 = any).

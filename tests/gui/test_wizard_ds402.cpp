@@ -280,6 +280,28 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return rig.driveState(2) == State::SwitchOnDisabled; }, 3000));
     }
 
+    // "Losing the connection … disables the drive": the wizard gets its last word in while the
+    // workspace closes the bus (Workspace::aboutToDisconnect).
+    void disconnectingDisablesAnEnabledDrive() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        Ds402Wizard w(&rig.ws, 4);
+        w.setAutoConfirm(true);
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        bool ok = false;
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
+        QCOMPARE(rig.driveState(4), State::OperationEnabled);
+        const std::shared_ptr<sim::SimNetwork> net = static_cast<SimBus*>(rig.ws.bus())->sharedNetwork();  // outlives the bus
+        rig.ws.disconnectBus();
+        auto state = [&] {
+            State st = State::Unknown;
+            net->runOnNetworkThread([&] { st = net->device(4)->drive(0)->state(); });
+            return st;
+        };
+        QVERIFY(QTest::qWaitFor([&] { return state() == State::SwitchOnDisabled; }, 3000));
+    }
+
     void refusesEnableWhenNotConfirmed() {
         Rig rig;
         QVERIFY(rig.open(kAll));
