@@ -218,15 +218,8 @@ private slots:
         QVERIFY2(wiz.apply(&why), qPrintable(why));
         QVERIFY(wiz.isApplying());
         QVERIFY(waitApplied(wiz));
-        if (cobFixed && wiz.outcome() == PdoWizard::Outcome::Failed && wiz.lastWrite().abortCode == 0x06010000u) {
-            // The virtual DEXMART DEV still demands an invalid COB-ID before remapping, which its
-            // read-only COB-ID makes impossible (the manual says the mapping can be changed by
-            // SDO). The wizard must say so and leave the mapping as it was.
-            QVERIFY2(wiz.outcomeText().contains(QStringLiteral("1A00:00")), qPrintable(wiz.outcomeText()));
-            const auto unchanged = live.readBack(tpdo1);
-            QCOMPARE(unchanged.config.entries, before.config.entries);
-            QSKIP("virtual DEXMART DEV refuses remapping while its read-only COB-ID is valid (needs the core/sim change)");
-        }
+        // DEXMART DEV remaps with its read-only COB-ID left valid (manual: the mapping can be
+        // changed by SDO); the virtual drive allows it.
         QVERIFY2(wiz.outcome() == PdoWizard::Outcome::Succeeded, qPrintable(wiz.outcomeText()));
         QVERIFY(wiz.outcomeText().contains(QStringLiteral("checked by reading back")));
         // The frames pane showed the requests and the drive's answers.
