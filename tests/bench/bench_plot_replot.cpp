@@ -2,7 +2,7 @@
 // Plot budget (DESIGN.md "Performance budgets"): 8 signals x 1 kHz over a 10-minute window
 // replot in <= 16 ms. Each iteration re-decimates every signal for the visible window (min/max
 // per pixel column from the buffers' block summaries) and replots the QCustomPlot widget.
-// Reported: ms per replot and its ratio to the 16 ms budget (<= 1 passes), next to a peer on
+// Reported: ms per replot and budget_ratio = 16 ms budget / measured (>= 1 passes), next to a peer on
 // the same input: a plain min/max pass over every sample (what the redraw would cost if it
 // depended on samples, not pixels).
 #include "app/gui/plot/PlotView.h"
@@ -86,9 +86,9 @@ void report(benchmark::State& state, double totalMs, double cpuMs) {
     const double ms = totalMs / double(state.iterations());
     const double cpu = cpuMs / double(state.iterations());
     state.counters["ms_per_replot"] = ms;
-    state.counters["budget_ratio"] = ms / kBudgetMs;
+    state.counters["budget_ratio"] = kBudgetMs / ms;  // >= 1 meets the budget, as in the other benchmarks
     state.counters["cpu_ms_per_replot"] = cpu;
-    state.counters["cpu_budget_ratio"] = cpu / kBudgetMs;
+    state.counters["cpu_budget_ratio"] = kBudgetMs / cpu;
 }
 
 void BM_ReplotTenMinutes(benchmark::State& state, PlotView::Layout layout) {
