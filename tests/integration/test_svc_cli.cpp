@@ -2,28 +2,11 @@
 // The service verbs of coscope-cli against sim://: output with dictionary names, the one-line
 // error contract (exit 1) and usage errors (exit 2).
 #include <QProcess>
+#include "tests/CliRun.h"
+
 #include <QtTest>
 
 namespace {
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 const QString kBus = QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:generic-cia402");
 }  // namespace
 

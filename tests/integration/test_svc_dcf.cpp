@@ -15,6 +15,8 @@
 
 #include <QProcess>
 #include <QTemporaryDir>
+#include "tests/CliRun.h"
+
 #include <QtTest>
 
 using namespace coscope;
@@ -45,25 +47,6 @@ std::optional<od::Value> deviceValue(Rig& rig, uint8_t node, uint16_t index, uin
     return v;
 }
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 
 // Sets ParameterValue of [IIII] (sub 0 VAR) or [IIIIsubS] in DCF text.
 void setParameterValue(QByteArray& dcf, const QString& section, const QString& value) {

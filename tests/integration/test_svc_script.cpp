@@ -12,6 +12,8 @@
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include "tests/CliRun.h"
+
 #include <QtTest>
 
 using namespace coscope;
@@ -19,25 +21,6 @@ using namespace coscope::canopen;
 
 namespace {
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
 
 std::optional<ScriptRunResult> runScript(ScriptRunner& runner, const CommandScript& script, int timeoutMs = 10000) {
     std::optional<ScriptRunResult> out;
