@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli: the command line face of CoScope. Each verb is a file in this folder.
+#include "app/BuildInfo.h"
 #include "app/cli/CliVerb.h"
 #include "core/log/Logging.h"
 #include "eds/SimulatorDictionaries.h"
@@ -24,7 +25,7 @@ void printHelp() {
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     for (const auto& v : sorted) out << "  " << v.name.leftJustified(12) << "  " << v.summary << "\n";
     out << "\nGlobal options:\n"
-           "  --version          Print the version.\n"
+           "  --version          Print the version and the source revision.\n"
            "  --help             Print this help; VERB --help prints the verb's.\n"
            "  --log-level LEVEL  show log lines on stderr: trace, debug, info, warn, error, critical\n"
            "                     (default: none; the log file keeps info and up).\n"
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
     while (!args.isEmpty() && args.front().startsWith(u'-')) {
         const QString a = args.takeFirst();
         if (a == u"--version" || a == u"-V") {
-            std::printf("coscope-cli %s\n", COSCOPE_VERSION);
+            std::printf("%s\n", qPrintable(buildinfo::versionLine(QStringLiteral("coscope-cli"))));
             return cli::Ok;
         }
         if (a == u"--help" || a == u"-h") {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope: the desktop app.
+#include "app/BuildInfo.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/Screenshot.h"
@@ -33,11 +34,13 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName(QStringLiteral("CoScope"));
     QApplication::setOrganizationName(QStringLiteral("CoScope"));
     QApplication::setApplicationVersion(QStringLiteral(COSCOPE_VERSION));
+    QGuiApplication::setDesktopFileName(buildinfo::applicationId());  // Wayland: icon and name from the .desktop entry
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("CoScope - CANopen bus analyzer and servo-drive commissioning tool"));
     parser.addHelpOption();
-    parser.addVersionOption();
+    const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")}, QStringLiteral("Print the version and the source revision."));
+    parser.addOption(version);
     const QCommandLineOption simulate(QStringLiteral("simulate"), QStringLiteral("Connect to the default virtual drive network (sim://)."));
     const QCommandLineOption connectTo(QStringLiteral("connect"), QStringLiteral("Connect to a bus URL."), QStringLiteral("URL"));
     const QCommandLineOption logLevel(QStringLiteral("log-level"), QStringLiteral("trace, debug, info, warn, error, critical, off."), QStringLiteral("LEVEL"));
@@ -46,6 +49,10 @@ int main(int argc, char** argv) {
     parser.addOptions({simulate, connectTo, logLevel, screenshot, view});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A CAN log to open (candump, ASC, BLF, TRC, pcap, CSV)."), QStringLiteral("[FILE]"));
     parser.process(app);
+    if (parser.isSet(version)) {
+        std::printf("%s\n", qPrintable(buildinfo::versionLine(QStringLiteral("coscope"))));
+        return 0;
+    }
 
     auto level = logging::levelFromEnvironment(spdlog::level::info);
     if (parser.isSet(logLevel)) {
