@@ -44,7 +44,11 @@ bool parseArgs(QCommandLineParser& parser, const QString& verb, const QStringLis
         return false;
     }
     if (parser.isSet(help)) {
-        QTextStream(stdout) << parser.helpText().replace(QStringLiteral("Usage: coscope-cli"), QStringLiteral("Usage: coscope-cli"));
+        // QCommandLineParser names the program by argv[0]; the usage line names the verb too.
+        QString text = parser.helpText();
+        const QString usage = QStringLiteral("Usage: ");
+        if (text.startsWith(usage)) text.replace(0, text.indexOf(u' ', usage.size()), usage + args.value(0));
+        QTextStream(stdout) << text;
         *exitCode = Ok;
         return false;
     }
