@@ -6,7 +6,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 cmake --preset release >/dev/null
-cmake --build --preset release -j"$(nproc)"
+# Only the two programs (not the tests). In a terminal ninja keeps its progress on one line;
+# elsewhere it prints only what goes wrong.
+echo "run: building coscope and coscope-cli in build/release (the first build takes a few minutes)..."
+quiet=(); [ -t 1 ] || quiet=(-- --quiet)
+cmake --build --preset release --target coscope coscope-cli -j"$(nproc)" "${quiet[@]}"
 if [ -z "${DISPLAY:-}" ] && [ -z "${WAYLAND_DISPLAY:-}" ]; then
   echo "No display to show the window on; the command line works without one: build/release/app/coscope-cli --help"
   exit 1

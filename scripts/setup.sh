@@ -3,6 +3,7 @@
 # Installs the Debian 12 packages CoScope needs that are missing. Safe to run again: it installs
 # only what is not there. Uses sudo when not run as root.
 #   scripts/setup.sh          build + run dependencies
+#   scripts/setup.sh package  also what the Debian package needs (scripts/package.sh)
 #   scripts/setup.sh test     also what the test suite and benchmarks use
 set -euo pipefail
 
@@ -12,9 +13,15 @@ packages=(
   libqcustomplot-dev libspdlog-dev libfmt-dev zlib1g-dev
   fonts-dejavu-core
 )
+if [ "${1:-}" = "package" ] || [ "${1:-}" = "test" ]; then
+  # help2man writes the man pages; dpkg-shlibdeps (dpkg-dev) computes the .deb's dependencies.
+  packages+=(help2man dpkg-dev file)
+fi
 if [ "${1:-}" = "test" ]; then
   # python3-can and tshark are the peers of the interop tests and benchmarks; xvfb for screenshots.
   packages+=(libbenchmark-dev python3-can tshark xvfb xauth clang libclang-rt-14-dev)
+  # The install tests' validators: .desktop, AppStream, MIME, man pages, bash completion.
+  packages+=(desktop-file-utils appstream shared-mime-info man-db bash-completion)
 fi
 
 # Some names exist only on some releases; keep those that apt knows.
