@@ -14,10 +14,11 @@ for program in coscope coscope-cli; do
   [[ $out =~ ^$program\ ${version//./\\.}\ \(revision\ ([^ ]+)\)$ ]] || fail "$program --version says '$out'"
   revision=${BASH_REMATCH[1]}
   if [ -n "$expected_commit" ]; then
-    # git describe: [TAG-N-g]HASH[-dirty]
-    hash=${revision%-dirty}
-    hash=${hash##*-g}
-    [[ $hash =~ ^[0-9a-f]{7,}$ && $expected_commit == "$hash"* ]] ||
+    # git describe: TAG, TAG-N-gHASH or HASH, each maybe with -dirty.
+    described=${revision%-dirty}
+    commit=$(git -C "$COSCOPE_SOURCE_DIR" rev-parse --verify -q "${described##*-g}^{commit}" ||
+             git -C "$COSCOPE_SOURCE_DIR" rev-parse --verify -q "$described^{commit}" || true)
+    [ "$commit" = "$expected_commit" ] ||
       fail "$program --version names revision '$revision', the checkout is at $expected_commit (rebuild?)"
   fi
   echo "ok: $out"
