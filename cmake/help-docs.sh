@@ -45,7 +45,7 @@ options_of() {
   IFS='|' read -r names valued < <(options_of "$work/main.txt")
   echo "${fn}_global_options='$names'"
   echo "${fn}_global_valued='$valued'"
-  printf '%s_verbs=(' "$fn"; printf " '%s'" "${verbs[@]+"${verbs[@]}"}"; echo ' )'
+  printf '%s_verbs=(' "$fn"; for v in "${verbs[@]+"${verbs[@]}"}"; do printf " '%s'" "$v"; done; echo ' )'
   heads=$(for v in "${verbs[@]+"${verbs[@]}"}"; do echo "${v%% *}"; done | sort -u | tr '\n' ' ')
   echo "${fn}_verb_heads='${heads% }'"
   echo "${fn}_verb_options() {  # sets options and valued of the caller for verb \$1"

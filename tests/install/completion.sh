@@ -47,6 +47,7 @@ expect "--help --log-level --version" coscope-cli --
 expect "" coscope-cli decode --dict ""
 expect "--simulate" coscope --sim
 expect "--screenshot" coscope --simulate --scr
+expect "--connect" coscope capture.trc --con
 
 # Every verb the CLI lists completes from its first word, and its options from "--".
 while IFS= read -r verb; do
