@@ -26,6 +26,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QThread>
 #include <QTimer>
 
 #include <spdlog/spdlog.h>
@@ -135,8 +136,8 @@ void MainWindow::buildMenus() {
     bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
     rebuildRecentMenu();
 
-    QMenu* commission = menuBar()->addMenu(tr("&Commission"));
-    fillCommissionMenu(commission, workspace_, this, [this] { return nodes_->selectedNode(); });
+    commission_ = menuBar()->addMenu(tr("&Commission"));
+    fillCommissionMenu(commission_, workspace_, this, [this] { return nodes_->selectedNode(); });
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
@@ -169,6 +170,10 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSaveCapture()) {
+        event->ignore();
+        return;
+    }
     saveLayout();
     QMainWindow::closeEvent(event);
 }
@@ -186,12 +191,14 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 bool MainWindow::connectBus(const QString& url) {
+    if (!maybeSaveCapture()) return false;
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         showError(tr("Cannot connect to %1: %2").arg(url, error));
         if (!quiet_) QMessageBox::warning(this, tr("Connect"), error);
         return false;
     }
+    captureStore_ = workspace_->store().get();
     RecentConnections::add(workspace_->bus()->url().toString());
     rebuildRecentMenu();
     return true;
@@ -200,6 +207,7 @@ bool MainWindow::connectBus(const QString& url) {
 void MainWindow::disconnectBus() { workspace_->disconnectBus(); }
 
 bool MainWindow::openLog(const QString& path) {
+    if (!maybeSaveCapture()) return false;
     QString error;
     if (!workspace_->openLog(path, &error)) {
         showError(error);
@@ -218,6 +226,8 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
     std::optional<std::vector<FrameNo>> frames;
     // Each shown frame once, in order (a collapsed SDO transfer row stands for its frames).
     if (filteredOnly) frames = trace_->model()->shownFrames();
+    savingFull_ = !filteredOnly;
+    savingSize_ = workspace_->store() ? workspace_->store()->size() : 0;
     saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;
@@ -251,8 +261,48 @@ void MainWindow::onSourceChanged() {
     setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
 }
 
+void MainWindow::updateCommissionMenu() {
+    const bool listenOnly = workspace_->bus() && workspace_->bus()->isListenOnly();
+    for (QAction* a : commission_->actions()) a->setEnabled(!listenOnly);
+    commission_->setToolTip(listenOnly ? tr("Listen-only bus: commissioning would transmit") : QString());
+}
+
+size_t MainWindow::unsavedFrames() const {
+    const auto& store = workspace_->store();
+    if (!store || store.get() != captureStore_ || store->size() == 0) return 0;
+    if (savedStore_ == store.get() && savedSize_ >= store->size()) return 0;
+    return store->size();
+}
+
+bool MainWindow::maybeSaveCapture() {
+    const size_t frames = unsavedFrames();
+    if (quiet_ || frames == 0) return true;
+    QMessageBox box(QMessageBox::Question, tr("Unsaved capture"),
+                    tr("The trace holds %L1 frames that are not saved. Save the capture first?").arg(frames),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save: return saveCaptureAs();
+    case QMessageBox::Discard: return true;
+    default: return false;
+    }
+}
+
+bool MainWindow::saveCaptureAs() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
+    if (path.isEmpty() || !saveLog(path)) return false;
+    const size_t size = savingSize_;
+    while (saveJob_ && !saveJob_->isDone()) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        QThread::msleep(5);
+    }
+    if (saveJob_) refresh();  // reports the result and marks the capture saved
+    return savedStore_ == workspace_->store().get() && savedSize_ >= size;
+}
+
 void MainWindow::refresh() {
     workspace_->poll();
+    updateCommissionMenu();
     trace_->refresh();
     nodes_->refresh();
     od_->refresh();
@@ -281,7 +331,13 @@ void MainWindow::refresh() {
         else {
             if (saveJob_->hasError()) showError(saveJob_->errorString());
             else if (saveJob_->isCancelled()) showMessage(tr("Save cancelled"));
-            else showMessage(tr("Saved %L1 frames to %2").arg(saveJob_->framesWritten()).arg(saveJob_->path()));
+            else {
+                showMessage(tr("Saved %L1 frames to %2").arg(saveJob_->framesWritten()).arg(saveJob_->path()));
+                if (savingFull_) {
+                    savedStore_ = workspace_->store().get();
+                    savedSize_ = savingSize_;
+                }
+            }
             saveJob_.reset();
         }
     }

@@ -71,6 +71,14 @@ private:
     void showError(const QString& message);
     void showMessage(const QString& message);
     void onSourceChanged();
+    // Commission items transmit: disabled while the bus is listen-only (README "Listen-only").
+    void updateCommissionMenu();
+    // Frames captured from a bus and not yet saved in full.
+    size_t unsavedFrames() const;
+    // Before the capture is replaced or the window closes: "save first?" (Save runs Save As and
+    // proceeds only once the file is written; Discard proceeds; Cancel stops). True = proceed.
+    bool maybeSaveCapture();
+    bool saveCaptureAs();
 
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
@@ -82,9 +90,15 @@ private:
     ConsoleDock* console_ = nullptr;
     BusStatusBar* status_ = nullptr;
     QMenu* recentMenu_ = nullptr;
+    QMenu* commission_ = nullptr;
     QTimer* timer_ = nullptr;
     std::unique_ptr<LogSaveJob> saveJob_;
     bool loadReported_ = true;
+    const void* captureStore_ = nullptr;  // the store a bus connection fills
+    const void* savedStore_ = nullptr;    // the store last saved in full, and its size then
+    size_t savedSize_ = 0;
+    size_t savingSize_ = 0;  // the size of the store when the running full save started
+    bool savingFull_ = false;
     bool quiet_ = false;
     QString lastError_;
 };

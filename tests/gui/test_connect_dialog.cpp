@@ -4,14 +4,29 @@
 #include "app/gui/connect/RecentConnections.h"
 #include "core/can/BusUrl.h"
 
+#include <QCanBus>
 #include <QCheckBox>
+#include <QClipboard>
 #include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QtTest>
 
 using namespace coscope;
 using namespace coscope::gui;
+
+namespace {
+// Picks the backend `key` in the combo from the keyboard, as a user would.
+bool chooseBackend(ConnectDialog& d, const QString& key) {
+    QComboBox* c = d.backend();
+    c->setFocus();
+    QTest::keyClick(c, Qt::Key_Home);
+    for (int i = 0; i < c->count() && c->currentData().toString() != key; ++i) QTest::keyClick(c, Qt::Key_Down);
+    return c->currentData().toString() == key;
+}
+}  // namespace
 
 class TestConnectDialog : public QObject {
     Q_OBJECT
@@ -66,6 +81,70 @@ private slots:
         for (int r = 0; r < d.drives()->rowCount(); ++r) d.drives()->item(r, 0)->setCheckState(Qt::Unchecked);
         d.accept();
         QCOMPARE(d.result(), int(QDialog::Rejected));  // stays open with an inline error
+    }
+
+    void pastedUrlFillsTheChoices() {
+        ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        auto* field = d.findChild<QLineEdit*>(QStringLiteral("urlPreview"));
+        QApplication::clipboard()->setText(QStringLiteral("socketcand://10.0.0.5:29536/can1?bitrate=250000"));
+        QTest::mouseClick(field, Qt::LeftButton);
+        QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClick(field, Qt::Key_V, Qt::ControlModifier);
+        QCOMPARE(d.backend()->currentData().toString(), QStringLiteral("socketcand"));
+        QCOMPARE(d.findChild<QLineEdit*>(QStringLiteral("host"))->text(), QStringLiteral("10.0.0.5"));
+        QCOMPARE(field->text(), QStringLiteral("socketcand://10.0.0.5:29536/can1?bitrate=250000"));
+        QCOMPARE(d.url(), QStringLiteral("socketcand://10.0.0.5:29536/can1?bitrate=250000"));
+        // Typed by hand too.
+        QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(field, QStringLiteral("sim://?listen-only=1"));
+        QCOMPARE(d.backend()->currentData().toString(), QStringLiteral("sim"));
+        QVERIFY(d.listenOnly()->isChecked());
+        QCOMPARE(field->text(), QStringLiteral("sim://?listen-only=1"));
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(d.result(), int(QDialog::Accepted));
+        QCOMPARE(d.url(), QStringLiteral("sim://?listen-only=1"));
+    }
+
+    void replayOffersSpeedAndLoop() {
+        ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(chooseBackend(d, QStringLiteral("replay")));
+        auto* path = d.findChild<QLineEdit*>(QStringLiteral("replayPath"));
+        QTest::keyClicks(path, QStringLiteral("/tmp/x.log"));
+        auto* speed = d.findChild<QComboBox*>(QStringLiteral("replaySpeed"));
+        QVERIFY(speed && speed->isVisible());
+        QCOMPARE(speed->currentText(), QStringLiteral("1×"));
+        speed->setFocus();
+        QTest::keyClick(speed, Qt::Key_End);  // as fast as possible
+        auto* loop = d.findChild<QCheckBox*>(QStringLiteral("replayLoop"));
+        QVERIFY(loop && loop->isVisible());
+        QTest::mouseClick(loop, Qt::LeftButton, {}, QPoint(4, loop->height() / 2));
+        const QString url = d.findChild<QLineEdit*>(QStringLiteral("urlPreview"))->text();
+        QCOMPARE(url, QStringLiteral("replay:///tmp/x.log?speed=0&loop=1"));
+        const auto u = BusUrl::parse(url, nullptr);
+        QVERIFY(u);
+        QCOMPARE(u->speed(), 0.0);
+        QVERIFY(u->loop());
+        QTest::keyClick(speed, Qt::Key_Home);
+        QTest::keyClick(speed, Qt::Key_Down);  // 10×
+        QVERIFY(d.url().contains(QStringLiteral("speed=10")));
+    }
+
+    void noSocketcanInterfaceSaysWhatToDo() {
+        if (!QCanBus::instance()->plugins().contains(QStringLiteral("socketcan"))) QSKIP("no socketcan plugin");
+        if (!QCanBus::instance()->availableDevices(QStringLiteral("socketcan")).isEmpty()) QSKIP("this machine has CAN interfaces");
+        ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(chooseBackend(d, QStringLiteral("socketcan")));
+        auto* hint = d.findChild<QLabel*>(QStringLiteral("noDevices"));
+        QVERIFY(hint && hint->isVisible());
+        QVERIFY2(hint->text().contains(QStringLiteral("No CAN interfaces")) && hint->text().contains(QStringLiteral("vcan")), qPrintable(hint->text()));
+        QVERIFY(chooseBackend(d, QStringLiteral("sim")));
+        QVERIFY(!hint->isVisible());
     }
 
     void recentConnections() {

@@ -13,14 +13,30 @@
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/console/ConsoleDock.h"
+#include "core/log/Logging.h"
 #include "core/logio/LogFormats.h"
 
 #include <QAction>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QScrollBar>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QSettings>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
+
+#include <spdlog/spdlog.h>
 
 #include "eds/SimulatorDictionaries.h"
 
@@ -40,6 +56,61 @@ bool waitFor(Pred pred, int timeoutMs = 8000) {
     return true;
 }
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
+
+// Answers the next modal message box by clicking `button` (started before the call that shows
+// it); `asked` receives the box's text, or stays empty when no box came.
+void answerBox(QMessageBox::StandardButton button, QString* asked, std::function<void()> then = {}) {
+    auto* poll = new QTimer;
+    auto* elapsed = new QElapsedTimer;
+    elapsed->start();
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+            poll->stop();
+            *asked = box->text();
+            if (then) QTimer::singleShot(0, then);
+            QTest::mouseClick(box->button(button), Qt::LeftButton);
+        } else if (elapsed->elapsed() > 3000) {
+            poll->stop();
+        } else {
+            return;
+        }
+        poll->deleteLater();
+        delete elapsed;
+    });
+    poll->start(30);
+}
+
+// Types `path` into the next modal file dialog and presses Enter.
+void answerFileDialog(const QString& path) {
+    auto* poll = new QTimer;
+    QObject::connect(poll, &QTimer::timeout, [=] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) return;
+        poll->stop();
+        poll->deleteLater();
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        QTest::keyClicks(name, path);
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    poll->start(30);
+}
+
+QToolBar* traceBar(MainWindow& w) { return w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar")); }
+QAction* barAction(MainWindow& w, const QString& text) {
+    for (QAction* a : traceBar(w)->actions())
+        if (a->text() == text) return a;
+    return nullptr;
+}
+QString countText(MainWindow& w) { return w.traceDock()->findChild<QLabel*>(QStringLiteral("traceCount"))->text(); }
+
+// A log of 200 PDOs and one EMCY.
+QString writeJumpLog(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) return {};
+    for (int i = 0; i < 200; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#0102\n").arg(i * 1000, 6, 10, QLatin1Char('0')).toLatin1());
+    f.write("(1700000001.000000) can0 081#1023050000000000\n");
+    return path;
+}
 }  // namespace
 
 class TestMainWindow : public QObject {
@@ -225,6 +296,200 @@ private slots:
         w.traceDock()->view()->selectRow(0);
         w.traceDock()->gotoBookmark(true);
         QCOMPARE(w.traceDock()->view()->currentIndex().row(), 200);
+    }
+
+    void clearingTheFilterWithItsButtonShowsAllFrames() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(w.openLog(writeJumpLog(dir_.filePath(QStringLiteral("clear.log")))));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
+        w.refresh();
+        auto* edit = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit"));
+        QTest::keyClicks(edit, QStringLiteral("svc:emcy"));
+        QTest::keyClick(edit, Qt::Key_Return);
+        QVERIFY(waitFor([&] { return countText(w) == QStringLiteral("1 of 201 frames"); }));
+        // The ✕ inside the field: the line edit's clear action's button.
+        QToolButton* clear = nullptr;
+        for (auto* b : edit->findChildren<QToolButton*>())
+            if (b->isVisible()) clear = b;
+        QVERIFY(clear);
+        QTest::mouseClick(clear, Qt::LeftButton);
+        QVERIFY(edit->text().isEmpty());
+        QVERIFY2(waitFor([&] { return countText(w) == QStringLiteral("201 frames"); }, 2000), qPrintable(countText(w)));
+        QCOMPARE(w.traceDock()->model()->rowCount(), 201);
+    }
+
+    void findThatFindsNothingSaysSo() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(w.openLog(writeJumpLog(dir_.filePath(QStringLiteral("find.log")))));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
+        w.refresh();
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        // What the eye sees: does the field's background turn red?
+        auto looksRed = [find] {
+            const QImage img = find->grab().toImage();
+            int red = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x) {
+                    const QColor c = img.pixelColor(x, y);
+                    if (c.red() > 200 && c.red() - c.green() > 25 && c.red() - c.blue() > 25) ++red;
+                }
+            return red > img.width() * img.height() / 3;
+        };
+        QVERIFY(!looksRed());
+        QTest::keyClicks(find, QStringLiteral("no such thing"));
+        QTest::keyClick(find, Qt::Key_Return);
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("not found")), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(looksRed());
+        // Typing again clears the cue; a hit keeps it clear.
+        QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(find, QStringLiteral("EMCY"));
+        QVERIFY(!looksRed());
+        QTest::keyClick(find, Qt::Key_Return);
+        QCOMPARE(w.traceDock()->model()->frameAt(w.traceDock()->view()->currentIndex().row()), FrameNo(200));
+        QVERIFY(!looksRed());
+    }
+
+    void toolbarShowsNextAndBookmarkAtDefaultSize() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.size(), QSize(1360, 860));
+        for (const QString& text : {QStringLiteral("Previous"), QStringLiteral("Next"), QStringLiteral("Bookmark")}) {
+            QAction* a = barAction(w, text);
+            QVERIFY2(a, qPrintable(text));
+            QWidget* b = traceBar(w)->widgetForAction(a);
+            QVERIFY2(b && b->isVisible(), qPrintable(text + QStringLiteral(" is behind the toolbar's »")));
+        }
+    }
+
+    void consoleFollowsNewLines() {
+        QStandardPaths::setTestModeEnabled(true);
+        logging::init(QStringLiteral("gui_main_window"), spdlog::level::info);
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QPlainTextEdit* text = w.consoleDock()->text();
+        QScrollBar* bar = text->verticalScrollBar();
+        // Lines arrive while the Console is a tab behind Events; then the user clicks its tab.
+        auto clickTab = [&](const QString& title) {
+            for (QTabBar* t : w.findChildren<QTabBar*>())
+                for (int i = 0; i < t->count(); ++i)
+                    if (t->tabText(i) == title) return QTest::mouseClick(t, Qt::LeftButton, {}, t->tabRect(i).center()), true;
+            return false;
+        };
+        QVERIFY(clickTab(w.eventsDock()->windowTitle()));
+        QVERIFY(waitFor([&] { return text->visibleRegion().isEmpty(); }));
+        for (int i = 0; i < 300; ++i) spdlog::info("console line {}", i);
+        QVERIFY(waitFor([&] { return text->toPlainText().contains(QStringLiteral("console line 299")); }));
+        QVERIFY(clickTab(w.consoleDock()->windowTitle()));
+        QVERIFY(waitFor([&] { return !text->visibleRegion().isEmpty(); }));
+        QTest::qWait(100);
+        QVERIFY(bar->maximum() > 0);
+        QCOMPARE(bar->value(), bar->maximum());  // at the bottom: the newest line shows
+        for (int i = 300; i < 320; ++i) spdlog::info("console line {}", i);
+        QVERIFY(waitFor([&] { return text->toPlainText().contains(QStringLiteral("console line 319")); }));
+        QTest::qWait(100);
+        QCOMPARE(bar->value(), bar->maximum());
+        // The user scrolls up: new lines leave the view where it is.
+        QTest::keyClick(text->viewport(), Qt::Key_PageUp);
+        QTest::keyClick(text, Qt::Key_PageUp);
+        const int where = bar->value();
+        QVERIFY(where < bar->maximum());
+        for (int i = 320; i < 330; ++i) spdlog::info("console line {}", i);
+        QVERIFY(waitFor([&] { return text->toPlainText().contains(QStringLiteral("console line 329")); }));
+        QTest::qWait(100);
+        QCOMPARE(bar->value(), where);
+    }
+
+    void listenOnlyDisablesTheCommissionMenu() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        auto commissionItems = [&] {
+            QTest::keyClick(&w, Qt::Key_C, Qt::AltModifier);  // opens Commission from the keyboard
+            auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+            if (!menu) return std::vector<bool>{};
+            std::vector<bool> enabled;
+            for (QAction* a : menu->actions())
+                if (!a->isSeparator()) enabled.push_back(a->isEnabled());
+            QTest::keyClick(menu, Qt::Key_Escape);
+            QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : static_cast<QWidget*>(&w), Qt::Key_Escape);
+            return enabled;
+        };
+        QVERIFY(w.connectBus(QStringLiteral("sim://?listen-only=1")));
+        QVERIFY(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }));
+        QTest::qWait(100);
+        auto items = commissionItems();
+        QVERIFY(!items.empty());
+        for (bool on : items) QVERIFY2(!on, "a Commission item is enabled on a listen-only bus");
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        QVERIFY(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }));
+        QTest::qWait(100);
+        items = commissionItems();
+        QVERIFY(!items.empty());
+        for (bool on : items) QVERIFY(on);
+    }
+
+    void unsavedCaptureIsNotThrownAway() {
+        MainWindow w;  // not quiet: the question is a modal box
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        QVERIFY(waitFor([&] { return w.workspace()->store()->size() >= 3; }));
+        // Quit (Ctrl+Q), Cancel: the window stays with its frames.
+        QString asked;
+        answerBox(QMessageBox::Cancel, &asked);
+        QTest::keyClick(&w, Qt::Key_Q, Qt::ControlModifier);
+        QVERIFY2(asked.contains(QStringLiteral("Save")), qPrintable(asked));
+        QVERIFY(w.isVisible());
+        QVERIFY(w.workspace()->isLive());
+        // Bus ▸ Connect to virtual drives (clicked in the menu), Discard: connects anew.
+        asked.clear();
+        QMenu* bus = nullptr;
+        for (QAction* a : w.menuBar()->actions())
+            if (a->menu() && a->text().contains(QStringLiteral("Bus"))) bus = a->menu();
+        QVERIFY(bus);
+        QAction* sim = nullptr;
+        for (QAction* a : bus->actions())
+            if (a->text().contains(QStringLiteral("virtual drives"))) sim = a;
+        QVERIFY(sim);
+        const auto before = w.workspace()->store();
+        answerBox(QMessageBox::Discard, &asked);
+        QTest::keyClick(&w, Qt::Key_B, Qt::AltModifier);
+        QVERIFY(waitFor([&] { return bus->isVisible(); }));
+        QTest::mouseClick(bus, Qt::LeftButton, {}, bus->actionGeometry(sim).center());
+        QVERIFY(waitFor([&] { return !asked.isEmpty() && w.workspace()->store() != before; }));
+        QVERIFY(waitFor([&] { return w.workspace()->store()->size() >= 3; }));
+        // Window close, Save: the normal Save As runs; the window closes once the file is written.
+        const QString out = dir_.filePath(QStringLiteral("kept.log"));
+        asked.clear();
+        answerBox(QMessageBox::Save, &asked, [out] { answerFileDialog(out); });
+        w.close();
+        QVERIFY(!asked.isEmpty());
+        QVERIFY(!w.isVisible());
+        auto reader = logio::LogFormats::openReader(out, nullptr);
+        QVERIFY(reader);
+        QVERIFY(reader->readAll().size() >= 3);
+
+        // A log just opened and unchanged: nothing to ask.
+        MainWindow again;
+        again.show();
+        QVERIFY(again.openLog(out));
+        QVERIFY(waitFor([&] { return again.workspace()->loadJob()->isDone(); }));
+        again.refresh();
+        asked.clear();
+        answerBox(QMessageBox::Cancel, &asked);
+        again.close();
+        QVERIFY2(asked.isEmpty(), qPrintable(asked));
+        QVERIFY(!again.isVisible());
+        QTest::qWait(3100);  // the unused answerer gives up
     }
 
     void layoutIsSaved() {

@@ -59,12 +59,22 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         device_->setObjectName(QStringLiteral("device"));
         device_->setEditable(true);
         f->addRow(tr("Device:"), device_);
+        noDevices_ = new QLabel(w);
+        noDevices_->setObjectName(QStringLiteral("noDevices"));
+        noDevices_->setWordWrap(true);
+        noDevices_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        noDevices_->setText(tr("No CAN interfaces found. A virtual one for trying: <tt>sudo modprobe vcan; sudo ip link add dev vcan0 "
+                               "type vcan; sudo ip link set vcan0 up</tt>. A real adapter: <tt>sudo ip link set can0 up type can "
+                               "bitrate 500000</tt>. Then choose the backend again."));
+        noDevices_->hide();
+        f->addRow(noDevices_);
         pages_->addWidget(w);
     }
     {  // socketcand
         auto* w = new QWidget;
         auto* f = new QFormLayout(w);
         host_ = new QLineEdit(QStringLiteral("127.0.0.1"), w);
+        host_->setObjectName(QStringLiteral("host"));
         port_ = new QSpinBox(w);
         port_->setRange(1, 65535);
         port_->setValue(kSocketcandDefaultPort);
@@ -112,16 +122,32 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     }
     {  // replay
         auto* w = new QWidget;
-        auto* h = new QHBoxLayout(w);
+        auto* f = new QFormLayout(w);
+        auto* h = new QHBoxLayout;
         replayPath_ = new QLineEdit(w);
+        replayPath_->setObjectName(QStringLiteral("replayPath"));
         auto* browse = new QPushButton(tr("Browse…"), w);
         connect(browse, &QPushButton::clicked, this, [this] {
             const QString f = QFileDialog::getOpenFileName(this, tr("Log to replay"));
             if (!f.isEmpty()) replayPath_->setText(f);
         });
-        h->addWidget(new QLabel(tr("Log:"), w));
         h->addWidget(replayPath_, 1);
         h->addWidget(browse);
+        f->addRow(tr("Log:"), h);
+        // replay://PATH?speed=S&loop=1 (DESIGN.md "Bus URLs"; core/can/ReplayBus.h): 0 = as fast as possible.
+        auto* opts = new QHBoxLayout;
+        replaySpeed_ = new QComboBox(w);
+        replaySpeed_->setObjectName(QStringLiteral("replaySpeed"));
+        replaySpeed_->addItem(tr("1×"), 1.0);
+        replaySpeed_->addItem(tr("10×"), 10.0);
+        replaySpeed_->addItem(tr("100×"), 100.0);
+        replaySpeed_->addItem(tr("As fast as possible"), 0.0);
+        replayLoop_ = new QCheckBox(tr("Loop"), w);
+        replayLoop_->setObjectName(QStringLiteral("replayLoop"));
+        opts->addWidget(replaySpeed_);
+        opts->addWidget(replayLoop_);
+        opts->addStretch(1);
+        f->addRow(tr("Speed:"), opts);
         pages_->addWidget(w);
     }
     layout->addWidget(pages_);
@@ -146,7 +172,9 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     opts->addRow(QString(), listenOnly_);
     preview_ = new QLineEdit(this);
     preview_->setObjectName(QStringLiteral("urlPreview"));
-    preview_->setReadOnly(true);
+    preview_->setToolTip(tr("Type or paste a bus URL, e.g. socketcan://can0?bitrate=500000"));
+    connect(preview_, &QLineEdit::textEdited, this, &ConnectDialog::onUrlTyped);
+    connect(preview_, &QLineEdit::returnPressed, this, &ConnectDialog::accept);
     opts->addRow(tr("URL:"), preview_);
     layout->addLayout(opts);
     error_ = new QLabel(this);
@@ -161,7 +189,7 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     layout->addWidget(buttons);
 
     connect(backend_, &QComboBox::currentIndexChanged, this, &ConnectDialog::onBackendChanged);
-    for (QComboBox* c : {device_, bitrate_, dataBitrate_}) connect(c, &QComboBox::currentTextChanged, this, &ConnectDialog::updatePreview);
+    for (QComboBox* c : {device_, bitrate_, dataBitrate_, replaySpeed_}) connect(c, &QComboBox::currentTextChanged, this, &ConnectDialog::updatePreview);
     for (QLineEdit* e : {host_, channel_, replayPath_}) connect(e, &QLineEdit::textChanged, this, &ConnectDialog::updatePreview);
     connect(port_, &QSpinBox::valueChanged, this, &ConnectDialog::updatePreview);
     connect(fd_, &QCheckBox::toggled, this, [this](bool on) {
@@ -169,6 +197,7 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         updatePreview();
     });
     connect(listenOnly_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
+    connect(replayLoop_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
     onBackendChanged();
     resize(520, 480);
 }
@@ -184,11 +213,13 @@ void ConnectDialog::onBackendChanged() {
         QString error;
         for (const auto& info : QCanBus::instance()->availableDevices(key, &error)) device_->addItem(info.name());
         if (device_->count() == 0) device_->setEditText(key == u"virtualcan" ? QStringLiteral("can0") : QString());
+        noDevices_->setVisible(key == u"socketcan" && device_->count() == 0);
     }
     updatePreview();
 }
 
 QString ConnectDialog::url() const {
+    if (!typed_.isEmpty()) return typed_.trimmed();
     const QString key = backend_->currentData().toString();
     QString target;
     QStringList options;
@@ -208,6 +239,10 @@ QString ConnectDialog::url() const {
     if (const int b = bitrate_->currentData().toInt(); b > 0 && key != u"replay") options << QStringLiteral("bitrate=%1").arg(b);
     if (fd_->isChecked()) options << QStringLiteral("fd=1") << QStringLiteral("data-bitrate=%1").arg(dataBitrate_->currentData().toInt());
     if (listenOnly_->isChecked()) options << QStringLiteral("listen-only=1");
+    if (key == u"replay") {
+        if (const double speed = replaySpeed_->currentData().toDouble(); speed != 1.0) options << QStringLiteral("speed=%1").arg(speed);
+        if (replayLoop_->isChecked()) options << QStringLiteral("loop=1");
+    }
     QString s = key + QStringLiteral("://") + target;
     if (!options.isEmpty()) s += u'?' + options.join(u'&');
     return s;
@@ -229,6 +264,9 @@ void ConnectDialog::setUrl(const QString& text) {
         channel_->setText(u->channel);
     } else if (u->scheme == u"replay") {
         replayPath_->setText(u->target);
+        const int sp = replaySpeed_->findData(u->speed());
+        if (sp >= 0) replaySpeed_->setCurrentIndex(sp);
+        replayLoop_->setChecked(u->loop());
     } else if (u->scheme == u"sim") {
         const QString spec = u->option(QStringLiteral("nodes"), sim::SimNetwork::defaultSpec());
         for (int r = 0; r < drives_->rowCount(); ++r) {
@@ -250,7 +288,19 @@ void ConnectDialog::setUrl(const QString& text) {
 }
 
 void ConnectDialog::updatePreview() {
+    if (applyingTyped_) return;
+    typed_.clear();
     preview_->setText(url());
+    error_->hide();
+}
+
+void ConnectDialog::onUrlTyped(const QString& text) {
+    typed_ = text.trimmed();
+    if (typed_.isEmpty()) return updatePreview();
+    if (!BusUrl::parse(typed_, nullptr)) return;  // still being typed; accept() names what is wrong
+    applyingTyped_ = true;
+    setUrl(typed_);
+    applyingTyped_ = false;
     error_->hide();
 }
 

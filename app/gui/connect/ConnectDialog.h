@@ -34,6 +34,7 @@ public:
 private:
     void onBackendChanged();
     void updatePreview();
+    void onUrlTyped(const QString& text);  // a pasted or typed URL fills the choices
 
     QComboBox* recent_ = nullptr;
     QComboBox* backend_ = nullptr;
@@ -43,13 +44,18 @@ private:
     QSpinBox* port_ = nullptr;
     QLineEdit* channel_ = nullptr;
     QTableWidget* drives_ = nullptr;
+    QLabel* noDevices_ = nullptr;
     QLineEdit* replayPath_ = nullptr;
+    QComboBox* replaySpeed_ = nullptr;
+    QCheckBox* replayLoop_ = nullptr;
     QComboBox* bitrate_ = nullptr;
     QCheckBox* fd_ = nullptr;
     QComboBox* dataBitrate_ = nullptr;
     QCheckBox* listenOnly_ = nullptr;
     QLineEdit* preview_ = nullptr;
     QLabel* error_ = nullptr;
+    QString typed_;         // the URL as typed/pasted, used as-is until a choice changes
+    bool applyingTyped_ = false;
 };
 
 }  // namespace coscope::gui

@@ -6,6 +6,7 @@
 #include <QFontDatabase>
 #include <QPlainTextEdit>
 #include <QScrollBar>
+#include <QTimer>
 
 namespace coscope::gui {
 
@@ -17,6 +18,16 @@ ConsoleDock::ConsoleDock(QWidget* parent) : QDockWidget(tr("Console"), parent) {
     text_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     text_->setLineWrapMode(QPlainTextEdit::NoWrap);
     setWidget(text_);
+    // Follows new lines while the view is at the bottom; scrolling up by hand stops following,
+    // scrolling back down resumes. The range also grows while the dock is a hidden tab (laid out
+    // later), so following is applied whenever the range changes, not only when lines arrive.
+    QScrollBar* bar = text_->verticalScrollBar();
+    connect(bar, &QScrollBar::actionTriggered, this, [this, bar] {
+        QTimer::singleShot(0, this, [this, bar] { follow_ = bar->value() >= bar->maximum(); });
+    });
+    connect(bar, &QScrollBar::rangeChanged, this, [this, bar](int, int max) {
+        if (follow_) bar->setValue(max);
+    });
 }
 
 void ConsoleDock::refresh() {
@@ -26,9 +37,9 @@ void ConsoleDock::refresh() {
     seen_ = count;
     const QStringList lines = logging::recentLines(fresh);
     auto* bar = text_->verticalScrollBar();
-    const bool atEnd = bar->value() == bar->maximum();
+    const int kept = bar->value();
     for (const QString& line : lines) text_->appendPlainText(line);
-    if (atEnd) bar->setValue(bar->maximum());
+    bar->setValue(follow_ ? bar->maximum() : kept);
 }
 
 }  // namespace coscope::gui

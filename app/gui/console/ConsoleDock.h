@@ -18,6 +18,7 @@ public:
 
 private:
     QPlainTextEdit* text_ = nullptr;
+    bool follow_ = true;  // the view is at the bottom (the user has not scrolled up)
     uint64_t seen_ = 0;
 };
 

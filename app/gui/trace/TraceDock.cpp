@@ -17,6 +17,7 @@
 #include <QStyle>
 #include <QTableView>
 #include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace coscope::gui {
@@ -132,10 +133,16 @@ void TraceDock::buildToolbar(QWidget* host) {
     filterEdit_->setObjectName(QStringLiteral("filterEdit"));
     filterEdit_->setPlaceholderText(tr("Filter: node:5 svc:sdo,emcy id:580-5FF text"));
     filterEdit_->setClearButtonEnabled(true);
-    filterEdit_->setMinimumWidth(220);
+    // Shrinks before the buttons after it do, so Find, Next and Bookmark stay on the bar.
+    filterEdit_->setMinimumWidth(120);
+    filterEdit_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     connect(filterEdit_, &QLineEdit::returnPressed, this, [this] {
         QString error;
         if (!applyFilter(filterEdit_->text(), &error)) emit message(error);
+    });
+    // Emptying the box (its ✕ button, or deleting the text) removes the filter at once.
+    connect(filterEdit_, &QLineEdit::textChanged, this, [this](const QString& text) {
+        if (text.isEmpty() && (model_->isFiltered() || filterJob_)) applyFilter(QString());
     });
     tb->addWidget(filterEdit_);
     tb->addSeparator();
@@ -144,11 +151,21 @@ void TraceDock::buildToolbar(QWidget* host) {
     findEdit_->setPlaceholderText(tr("Find"));
     findEdit_->setMaximumWidth(130);
     connect(findEdit_, &QLineEdit::returnPressed, this, [this] { find(findEdit_->text(), true); });
+    connect(findEdit_, &QLineEdit::textChanged, this, [this] { setFindMissed(false); });
     tb->addWidget(findEdit_);
-    tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this, [this] { find(findEdit_->text(), false); })->setToolTip(tr("Find previous"));
-    tb->addAction(st->standardIcon(QStyle::SP_ArrowDown), tr("Next"), this, [this] { find(findEdit_->text(), true); })->setToolTip(tr("Find next"));
+    // Find's arrows and Bookmark are icons only (text in the tooltip) so they fit at the default width.
+    auto iconOnly = [tb](QAction* a, const QString& name) {
+        a->setObjectName(name);
+        if (auto* b = qobject_cast<QToolButton*>(tb->widgetForAction(a))) b->setToolButtonStyle(Qt::ToolButtonIconOnly);
+        return a;
+    };
+    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this, [this] { find(findEdit_->text(), false); }), QStringLiteral("findPrevAction"))
+        ->setToolTip(tr("Find previous"));
+    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowDown), tr("Next"), this, [this] { find(findEdit_->text(), true); }), QStringLiteral("findNextAction"))
+        ->setToolTip(tr("Find next"));
     tb->addSeparator();
-    auto* mark = tb->addAction(st->standardIcon(QStyle::SP_DialogApplyButton), tr("Bookmark"), this, &TraceDock::toggleBookmark);
+    auto* mark = iconOnly(tb->addAction(st->standardIcon(QStyle::SP_DialogApplyButton), tr("Bookmark"), this, &TraceDock::toggleBookmark),
+                          QStringLiteral("bookmarkAction"));
     mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     mark->setToolTip(tr("Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump"));
     auto* nextMark = new QAction(this);
@@ -264,8 +281,18 @@ void TraceDock::showFrame(FrameNo n) {
     view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
 }
 
+void TraceDock::setFindMissed(bool missed) {
+    findEdit_->setStyleSheet(missed ? QStringLiteral("QLineEdit { background: #ffd7d7; }") : QString());
+    findEdit_->setProperty("missed", missed);
+}
+
 bool TraceDock::find(const QString& text, bool forward) {
-    if (text.isEmpty() || model_->rowCount() == 0) return false;
+    if (text.isEmpty()) return false;
+    if (model_->rowCount() == 0) {
+        setFindMissed(true);
+        emit message(tr("'%1' not found: the trace is empty").arg(text));
+        return false;
+    }
     setFollow(false);
     const int rows = model_->rowCount();
     const int start = view_->currentIndex().isValid() ? view_->currentIndex().row() : (forward ? -1 : rows);
@@ -276,12 +303,14 @@ bool TraceDock::find(const QString& text, bool forward) {
                 const QModelIndex idx = model_->index(row, 0);
                 view_->setCurrentIndex(idx);
                 view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
+                setFindMissed(false);
                 return true;
             }
         }
     }
     emit message(searched >= kFindBudgetRows ? tr("'%1' not found in the next %L2 rows; search again to continue").arg(text).arg(kFindBudgetRows)
                                              : tr("'%1' not found").arg(text));
+    setFindMissed(true);
     if (searched >= kFindBudgetRows) {
         const int row = start + (forward ? searched : -searched);
         view_->setCurrentIndex(model_->index(std::clamp(row, 0, rows - 1), 0));

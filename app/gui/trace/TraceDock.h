@@ -61,6 +61,7 @@ private:
     void buildToolbar(QWidget* bar);
     void onCurrentChanged();
     void toggleRow(const QModelIndex& index);
+    void setFindMissed(bool missed);  // the find field turns red while its text is not found
 
     Workspace* workspace_;
     TraceModel* model_ = nullptr;
