@@ -124,7 +124,8 @@ void MainWindow::buildMenus() {
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
     file->addSeparator();
-    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    // Ctrl+Q spelled out: QKeySequence::Quit is empty where the platform theme has no binding for it.
+    file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
 
     QMenu* bus = menuBar()->addMenu(tr("&Bus"));
     bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"), QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
