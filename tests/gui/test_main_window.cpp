@@ -3,6 +3,7 @@
 // NMT from the Nodes dock, listen-only refuses to send, filter the trace, open and save logs,
 // layout saved, --screenshot.
 #include "app/gui/MainWindow.h"
+#include "app/gui/MenuTitle.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/events/EventsModel.h"
 #include "app/gui/nodes/NodesDock.h"
@@ -494,6 +495,23 @@ private slots:
         QVERIFY2(asked.isEmpty(), qPrintable(asked));
         QVERIFY(!again.isVisible());
         QTest::qWait(3100);  // the unused answerer gives up
+    }
+
+    void contextMenuTitleIsNotClipped() {
+        // The OD dock's context menu title for a long object name, as the user sees it.
+        QMenu menu;
+        const QString text = QStringLiteral("1017:00 Producer heartbeat time");
+        QAction* title = addMenuTitle(menu, text);
+        menu.addAction(QStringLiteral("Read"));
+        menu.addAction(QStringLiteral("Write…"));
+        menu.popup(QPoint(10, 10));
+        QVERIFY(QTest::qWaitForWindowExposed(&menu));
+        QFont bold = menu.font();
+        bold.setBold(true);
+        QVERIFY2(menu.actionGeometry(title).width() > QFontMetrics(bold).horizontalAdvance(text),
+                 qPrintable(QString::number(menu.actionGeometry(title).width())));
+        QTest::keyClick(&menu, Qt::Key_Escape);
+        QVERIFY(!menu.isVisible());
     }
 
     void layoutIsSaved() {

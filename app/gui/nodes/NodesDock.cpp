@@ -3,6 +3,7 @@
 
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/nodes/NodesModel.h"
+#include "app/gui/MenuTitle.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/Nmt.h"
@@ -76,7 +77,7 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         updateEnabled();
         QMenu menu(this);
         const int node = selectedNode();
-        menu.addSection(node > 0 ? tr("Node %1").arg(node) : tr("All nodes"));
+        addMenuTitle(menu, node > 0 ? tr("Node %1").arg(node) : tr("All nodes"));
         for (QAction* a : commands_)
             if (a != scan_ && a != identify_) menu.addAction(a);
         menu.addSeparator();

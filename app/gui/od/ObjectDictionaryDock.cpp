@@ -5,6 +5,7 @@
 #include "app/gui/od/OdFilterModel.h"
 #include "app/gui/od/OdTreeModel.h"
 #include "app/gui/od/OdValueDelegate.h"
+#include "app/gui/MenuTitle.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/canopen/MasterContext.h"
@@ -185,7 +186,7 @@ void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
         const auto index = static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt());
         const auto sub = static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt());
         const od::SubObject* e = model_->dictionary().entry(index, sub);
-        menu.addSection(QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub), model_->dictionary().displayName(index, sub)));
+        addMenuTitle(menu, QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub), model_->dictionary().displayName(index, sub)));
         readSelected_->setEnabled(canTransmit() && e && od::isReadable(e->access));
         writeSelected_->setEnabled(canTransmit() && e && od::isWritable(e->access));
         menu.addAction(readSelected_);
