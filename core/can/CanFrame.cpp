@@ -40,10 +40,23 @@ bool isValidFdLength(int len) {
     return len == 12 || len == 16 || len == 20 || len == 24 || len == 32 || len == 48 || len == 64;
 }
 
+namespace {
+// ISO 11898-1 data length codes 0..15.
+constexpr int kFdLengths[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
+}  // namespace
+
 int roundUpFdLength(int len) {
-    for (int l : {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64})
+    for (int l : kFdLengths)
         if (l >= len) return l;
     return -1;
+}
+
+int fdDlcToLength(int dlc) { return dlc >= 0 && dlc < 16 ? kFdLengths[dlc] : -1; }
+
+int fdLengthToDlc(int len) {
+    for (int d = 0; d < 16; ++d)
+        if (kFdLengths[d] >= len) return d;
+    return 15;
 }
 
 std::optional<CanFrame> parseCansend(QStringView text, QString* error) {

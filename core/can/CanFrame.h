@@ -49,6 +49,10 @@ struct CanFrame {
 bool isValidFdLength(int len);
 // Smallest valid FD length >= len (payloads are padded up to it).
 int roundUpFdLength(int len);
+// Payload length of a data length code (ISO 11898-1: 0..8, then 12..64 for FD); -1 outside 0..15.
+int fdDlcToLength(int dlc);
+// Data length code of a payload length, rounded up to the next FD length (15 for > 64).
+int fdLengthToDlc(int len);
 
 // cansend syntax (can-utils lib.c): "123#DEADBEEF", "1F334455#11.22", "123#R", "123#R4",
 // "123##1AABBCC" (FD, first hex digit = flags: 1 BRS, 2 ESI), "20000080#..." is not accepted.

@@ -17,15 +17,6 @@ int64_t localOffsetNs(int64_t utcNs) {
     return int64_t(dt.offsetFromUtc()) * 1000000000LL;
 }
 
-int fdDlcToLen(int dlc) {
-    static const int kLen[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
-    return dlc >= 0 && dlc < 16 ? kLen[dlc] : -1;
-}
-int lenToFdDlc(int len) {
-    for (int d = 0; d < 16; ++d)
-        if (fdDlcToLen(d) >= len) return d;
-    return 15;
-}
 }  // namespace
 
 std::optional<int64_t> oleDateToNs(std::string_view t) {
@@ -215,7 +206,7 @@ TrcReader::LineResult TrcReader::parseV2(Tokens& tokens, CanFrame& f) {
         f.len = 0;
         return LineResult::Frame;
     }
-    if (len < 0) len = f.isFd() ? fdDlcToLen(dlc) : std::min(dlc, 8);
+    if (len < 0) len = f.isFd() ? fdDlcToLength(dlc) : std::min(dlc, 8);
     if (len < 0) return bad(QStringLiteral("no data length"));
     if (f.isRemote()) {
         f.len = uint8_t(std::min(len, 8));
@@ -266,7 +257,7 @@ void TrcWriter::writeFrame(const CanFrame& f, const QString&) {
     if (f.isError()) id = "-";
     else appendHex(id, f.id, f.isExtended() ? 8 : 4);
     o += id.rightJustified(8) + (f.isTx() ? " Tx" : " Rx") + " -  ";
-    const int dlc = f.isError() ? 0 : f.isFd() ? lenToFdDlc(f.len) : f.len;
+    const int dlc = f.isError() ? 0 : f.isFd() ? fdLengthToDlc(f.len) : f.len;
     o += QByteArray::number(dlc).leftJustified(4);
     if (!f.isRemote() && !f.isError())
         for (int i = 0; i < f.len; ++i) {

@@ -22,10 +22,6 @@ constexpr uint32_t kMaxObject = 64 * 1024 * 1024;
 
 bool isLobj(const unsigned char* p) { return std::memcmp(p, "LOBJ", 4) == 0; }
 
-int fdDlcToLen(int dlc) {
-    static const int kLen[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 12, 16, 20, 24, 32, 48, 64};
-    return kLen[dlc & 15];
-}
 }  // namespace
 
 bool BlfReader::readExact(char* dst, qint64 n) {
@@ -179,7 +175,7 @@ bool BlfReader::decodeObject(const unsigned char* o, size_t size, CanFrame& f) {
         if (fdFlags & 0x1) f.flags |= CanFrame::Fd;
         if (fdFlags & 0x2) f.flags |= CanFrame::BitRateSwitch;
         if (fdFlags & 0x4) f.flags |= CanFrame::ErrorState;
-        const int len = f.isFd() ? fdDlcToLen(d[3]) : std::min<int>(d[3], 8);
+        const int len = f.isFd() ? fdDlcToLength(d[3] & 15) : std::min<int>(d[3], 8);
         f.len = uint8_t(f.isRemote() ? len : std::min<int>(len, std::min<int>(d[14], 64)));
         std::memcpy(f.data.data(), d + 20, f.len);
         return true;
