@@ -26,10 +26,11 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
-#include <QThread>
 #include <QTimer>
 
 #include <spdlog/spdlog.h>
+
+#include <utility>
 
 namespace coscope::gui {
 
@@ -171,7 +172,7 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSaveCapture()) {
+    if (!maybeSaveCapture([this] { close(); })) {
         event->ignore();
         return;
     }
@@ -192,7 +193,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 }
 
 bool MainWindow::connectBus(const QString& url) {
-    if (!maybeSaveCapture()) return false;
+    if (!maybeSaveCapture([this, url] { connectBus(url); })) return false;
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         showError(tr("Cannot connect to %1: %2").arg(url, error));
@@ -208,7 +209,7 @@ bool MainWindow::connectBus(const QString& url) {
 void MainWindow::disconnectBus() { workspace_->disconnectBus(); }
 
 bool MainWindow::openLog(const QString& path) {
-    if (!maybeSaveCapture()) return false;
+    if (!maybeSaveCapture([this, path] { openLog(path); })) return false;
     QString error;
     if (!workspace_->openLog(path, &error)) {
         showError(error);
@@ -275,30 +276,26 @@ size_t MainWindow::unsavedFrames() const {
     return store->size();
 }
 
-bool MainWindow::maybeSaveCapture() {
+bool MainWindow::maybeSaveCapture(std::function<void()> then) {
     const size_t frames = unsavedFrames();
-    if (quiet_ || frames == 0) return true;
+    if (quiet_ || frames == 0 || saveAsked_) return true;
+    if (saveJob_ && !saveJob_->isDone()) {
+        showError(tr("A save is still running; wait for it or cancel it first"));
+        return false;
+    }
     QMessageBox box(QMessageBox::Question, tr("Unsaved capture"),
                     tr("The trace holds %L1 frames that are not saved. Save the capture first?").arg(frames),
                     QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
-    case QMessageBox::Save: return saveCaptureAs();
+    case QMessageBox::Save: {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
+        if (!path.isEmpty() && saveLog(path)) afterSave_ = std::move(then);
+        return false;
+    }
     case QMessageBox::Discard: return true;
     default: return false;
     }
-}
-
-bool MainWindow::saveCaptureAs() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
-    if (path.isEmpty() || !saveLog(path)) return false;
-    const size_t size = savingSize_;
-    while (saveJob_ && !saveJob_->isDone()) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        QThread::msleep(5);
-    }
-    if (saveJob_) refresh();  // reports the result and marks the capture saved
-    return savedStore_ == workspace_->store().get() && savedSize_ >= size;
 }
 
 void MainWindow::refresh() {
@@ -339,7 +336,16 @@ void MainWindow::refresh() {
                     savedSize_ = savingSize_;
                 }
             }
+            const bool written = !saveJob_->hasError() && !saveJob_->isCancelled();
             saveJob_.reset();
+            // The action that asked "save first?" goes on once the file is written (frames that
+            // arrived meanwhile were offered in the question's count and are not asked about again).
+            if (auto then = std::exchange(afterSave_, {}); then && written) {
+                saveAsked_ = true;
+                then();
+                saveAsked_ = false;
+                return;  // the action refreshed or closed the window itself
+            }
         }
     }
     status_->refresh(shown);

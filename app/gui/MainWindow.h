@@ -4,6 +4,7 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include <functional>
 #include <memory>
 
 class QMenu;
@@ -75,10 +76,10 @@ private:
     void updateCommissionMenu();
     // Frames captured from a bus and not yet saved in full.
     size_t unsavedFrames() const;
-    // Before the capture is replaced or the window closes: "save first?" (Save runs Save As and
-    // proceeds only once the file is written; Discard proceeds; Cancel stops). True = proceed.
-    bool maybeSaveCapture();
-    bool saveCaptureAs();
+    // Before the capture is replaced or the window closes: "save first?". True = proceed now
+    // (nothing unsaved, or Discard). Save starts Save As and returns false; `then` runs once the
+    // file is written in full (from refresh(), no nested event loop). Cancel returns false.
+    bool maybeSaveCapture(std::function<void()> then);
 
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
@@ -99,6 +100,8 @@ private:
     size_t savedSize_ = 0;
     size_t savingSize_ = 0;  // the size of the store when the running full save started
     bool savingFull_ = false;
+    std::function<void()> afterSave_;  // what the "save first?" question held back
+    bool saveAsked_ = false;           // the user answered it for the action now running
     bool quiet_ = false;
     QString lastError_;
 };

@@ -40,9 +40,12 @@
 #include <spdlog/spdlog.h>
 
 #include "eds/SimulatorDictionaries.h"
+#include "tests/gui/ModalAnswer.h"
 
 using namespace coscope;
 using namespace coscope::gui;
+using coscope::testing::answerBox;
+using coscope::testing::answerFileDialog;
 
 namespace {
 // Waits (running the event loop, so the window's timer ticks) until `pred` holds.
@@ -58,44 +61,6 @@ bool waitFor(Pred pred, int timeoutMs = 8000) {
 }
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
 
-// Answers the next modal message box by clicking `button` (started before the call that shows
-// it); `asked` receives the box's text, or stays empty when no box came.
-void answerBox(QMessageBox::StandardButton button, QString* asked, std::function<void()> then = {}) {
-    auto* poll = new QTimer;
-    auto* elapsed = new QElapsedTimer;
-    elapsed->start();
-    QObject::connect(poll, &QTimer::timeout, [=] {
-        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
-            poll->stop();
-            *asked = box->text();
-            if (then) QTimer::singleShot(0, then);
-            QTest::mouseClick(box->button(button), Qt::LeftButton);
-        } else if (elapsed->elapsed() > 3000) {
-            poll->stop();
-        } else {
-            return;
-        }
-        poll->deleteLater();
-        delete elapsed;
-    });
-    poll->start(30);
-}
-
-// Types `path` into the next modal file dialog and presses Enter.
-void answerFileDialog(const QString& path) {
-    auto* poll = new QTimer;
-    QObject::connect(poll, &QTimer::timeout, [=] {
-        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-        if (!dialog) return;
-        poll->stop();
-        poll->deleteLater();
-        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
-        QTest::keyClicks(name, path);
-        QTest::keyClick(name, Qt::Key_Return);
-    });
-    poll->start(30);
-}
-
 QToolBar* traceBar(MainWindow& w) { return w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar")); }
 QAction* barAction(MainWindow& w, const QString& text) {
     for (QAction* a : traceBar(w)->actions())
@@ -103,6 +68,12 @@ QAction* barAction(MainWindow& w, const QString& text) {
     return nullptr;
 }
 QString countText(MainWindow& w) { return w.traceDock()->findChild<QLabel*>(QStringLiteral("traceCount"))->text(); }
+// Opens a log in the window and waits until it is read and shown.
+bool openLoaded(MainWindow& w, const QString& path) {
+    if (!w.openLog(path) || !waitFor([&] { return w.workspace()->loadJob()->isDone(); })) return false;
+    w.refresh();
+    return true;
+}
 
 // A log of 200 PDOs and one EMCY.
 QString writeJumpLog(const QString& path) {
@@ -234,9 +205,7 @@ private slots:
         f.close();
         MainWindow w;
         w.setQuiet(true);
-        QVERIFY(w.openLog(path));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
-        w.refresh();
+        QVERIFY(openLoaded(w, path));
         QCOMPARE(w.traceDock()->model()->rowCount(), 4);
         QVERIFY2(w.lastError().contains(QStringLiteral(":3")), qPrintable(w.lastError()));
         QCOMPARE(w.nodesDock()->model()->rowCount(), 1);
@@ -281,9 +250,7 @@ private slots:
         f.close();
         MainWindow w;
         w.setQuiet(true);
-        QVERIFY(w.openLog(path));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
-        w.refresh();
+        QVERIFY(openLoaded(w, path));
         QCOMPARE(w.eventsDock()->model()->rowCount(), 1);
         emit w.eventsDock()->frameActivated(w.eventsDock()->model()->eventAt(0).frame);
         const QModelIndex cur = w.traceDock()->view()->currentIndex();
@@ -303,9 +270,7 @@ private slots:
         MainWindow w;
         w.setQuiet(true);
         w.show();
-        QVERIFY(w.openLog(writeJumpLog(dir_.filePath(QStringLiteral("clear.log")))));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
-        w.refresh();
+        QVERIFY(openLoaded(w, writeJumpLog(dir_.filePath(QStringLiteral("clear.log")))));
         auto* edit = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit"));
         QTest::keyClicks(edit, QStringLiteral("svc:emcy"));
         QTest::keyClick(edit, Qt::Key_Return);
@@ -325,9 +290,7 @@ private slots:
         MainWindow w;
         w.setQuiet(true);
         w.show();
-        QVERIFY(w.openLog(writeJumpLog(dir_.filePath(QStringLiteral("find.log")))));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob()->isDone(); }));
-        w.refresh();
+        QVERIFY(openLoaded(w, writeJumpLog(dir_.filePath(QStringLiteral("find.log")))));
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         // What the eye sees: does the field's background turn red?
         auto looksRed = [find] {
@@ -449,7 +412,7 @@ private slots:
         QVERIFY(waitFor([&] { return w.workspace()->store()->size() >= 3; }));
         // Quit (Ctrl+Q), Cancel: the window stays with its frames.
         QString asked;
-        answerBox(QMessageBox::Cancel, &asked);
+        auto cancel = answerBox(QMessageBox::Cancel, &asked);
         QTest::keyClick(&w, Qt::Key_Q, Qt::ControlModifier);
         QVERIFY2(asked.contains(QStringLiteral("Save")), qPrintable(asked));
         QVERIFY(w.isVisible());
@@ -466,7 +429,7 @@ private slots:
             if (a->text().contains(QStringLiteral("virtual drives"))) sim = a;
         QVERIFY(sim);
         const auto before = w.workspace()->store();
-        answerBox(QMessageBox::Discard, &asked);
+        auto discard = answerBox(QMessageBox::Discard, &asked);
         QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(busTitle).center());
         QVERIFY(waitFor([&] { return bus->isVisible(); }));
         QTest::mouseClick(bus, Qt::LeftButton, {}, bus->actionGeometry(sim).center());
@@ -475,10 +438,12 @@ private slots:
         // Window close, Save: the normal Save As runs; the window closes once the file is written.
         const QString out = dir_.filePath(QStringLiteral("kept.log"));
         asked.clear();
-        answerBox(QMessageBox::Save, &asked, [out] { answerFileDialog(out); });
+        auto save = answerBox(QMessageBox::Save, &asked);
+        auto name = answerFileDialog(out);
         w.close();
         QVERIFY(!asked.isEmpty());
-        QVERIFY(!w.isVisible());
+        QVERIFY(waitFor([&] { return name->answered(); }));
+        QVERIFY(waitFor([&] { return !w.isVisible(); }));
         auto reader = logio::LogFormats::openReader(out, nullptr);
         QVERIFY(reader);
         QVERIFY(reader->readAll().size() >= 3);
@@ -486,15 +451,12 @@ private slots:
         // A log just opened and unchanged: nothing to ask.
         MainWindow again;
         again.show();
-        QVERIFY(again.openLog(out));
-        QVERIFY(waitFor([&] { return again.workspace()->loadJob()->isDone(); }));
-        again.refresh();
+        QVERIFY(openLoaded(again, out));
         asked.clear();
-        answerBox(QMessageBox::Cancel, &asked);
+        auto unused = answerBox(QMessageBox::Cancel, &asked);
         again.close();
         QVERIFY2(asked.isEmpty(), qPrintable(asked));
         QVERIFY(!again.isVisible());
-        QTest::qWait(3100);  // the unused answerer gives up
     }
 
     void contextMenuTitleIsNotClipped() {

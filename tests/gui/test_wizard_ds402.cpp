@@ -19,6 +19,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "tests/gui/ModalAnswer.h"
+
 using namespace coscope;
 using namespace coscope::gui;
 using canopen::ds402::Command;
@@ -314,9 +316,7 @@ private slots:
         QVERIFY(step(w, Command::SwitchOn, &ok) && ok);
         w.setAutoConfirm(false);
         // A "no" answer: the test answers the dialog with Escape.
-        QTimer::singleShot(200, [] {
-            if (QWidget* box = QApplication::activeModalWidget()) QTest::keyClick(box, Qt::Key_Escape);
-        });
+        auto no = coscope::testing::answerEscape();
         QString why;
         QVERIFY(!w.runStep(Command::EnableOperation, &why));
         QVERIFY(why.contains(QStringLiteral("not confirmed")));
@@ -382,15 +382,7 @@ private slots:
         for (int target : {1, 0}) {
             dock.setAutoConfirm(false);
             // Answer "no" (Escape) once the question shows (the statusword is read first).
-            QTimer escape;
-            escape.setInterval(50);
-            QObject::connect(&escape, &QTimer::timeout, [&escape] {
-                if (QWidget* box = QApplication::activeModalWidget()) {
-                    escape.stop();
-                    QTest::keyClick(box, Qt::Key_Escape);
-                }
-            });
-            escape.start();
+            auto no = coscope::testing::answerEscape();
             QVERIFY(!dock.sendNmt(0x82, target));  // answered "no": nothing sent
             const QString text = dock.lastConfirmation();
             QVERIFY2(text.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(text));
