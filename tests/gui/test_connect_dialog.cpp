@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QtTest>
@@ -25,6 +26,12 @@ bool chooseBackend(ConnectDialog& d, const QString& key) {
     QTest::keyClick(c, Qt::Key_Home);
     for (int i = 0; i < c->count() && c->currentData().toString() != key; ++i) QTest::keyClick(c, Qt::Key_Down);
     return c->currentData().toString() == key;
+}
+// Ticks or unticks the drive in `row` as a user does: click the row, Space toggles its box.
+void toggleDrive(ConnectDialog& d, int row) {
+    QTableWidget* t = d.drives();
+    QTest::mouseClick(t->viewport(), Qt::LeftButton, {}, t->visualItemRect(t->item(row, 0)).center());
+    QTest::keyClick(t->viewport(), Qt::Key_Space);
 }
 }  // namespace
 
@@ -46,14 +53,25 @@ private slots:
 
     void choicesMakeTheUrl() {
         ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
         // Keep only the first virtual drive, as node 9.
-        for (int r = 1; r < d.drives()->rowCount(); ++r) d.drives()->item(r, 0)->setCheckState(Qt::Unchecked);
-        d.drives()->item(0, 0)->setCheckState(Qt::Checked);
-        static_cast<QSpinBox*>(d.drives()->cellWidget(0, 1))->setValue(9);
-        d.listenOnly()->setChecked(true);
-        const QString url = d.url();
+        for (int r = 1; r < d.drives()->rowCount(); ++r)
+            if (d.drives()->item(r, 0)->checkState() == Qt::Checked) toggleDrive(d, r);
+        if (d.drives()->item(0, 0)->checkState() != Qt::Checked) toggleDrive(d, 0);
+        for (int r = 1; r < d.drives()->rowCount(); ++r) QCOMPARE(d.drives()->item(r, 0)->checkState(), Qt::Unchecked);
+        auto* spin = static_cast<QSpinBox*>(d.drives()->cellWidget(0, 1));
+        QLineEdit* number = spin->findChild<QLineEdit*>();
+        QTest::mouseClick(number, Qt::LeftButton);
+        QTest::keyClick(number, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(number, QStringLiteral("9"));
+        // On its box, at the left (the widget may be wider than its label).
+        QTest::mouseClick(d.listenOnly(), Qt::LeftButton, {}, QPoint(8, d.listenOnly()->height() / 2));
+        // What the URL field shows is what connects.
+        const QString url = d.findChild<QLineEdit*>(QStringLiteral("urlPreview"))->text();
         QVERIFY2(url.startsWith(QStringLiteral("sim://?nodes=9:") + d.drives()->item(0, 0)->text()), qPrintable(url));
         QVERIFY(url.contains(QStringLiteral("listen-only=1")));
+        QCOMPARE(d.url(), url);
         const auto parsed = BusUrl::parse(url, nullptr);
         QVERIFY(parsed);
         QVERIFY(parsed->listenOnly());
@@ -78,9 +96,21 @@ private slots:
 
     void noDriveIsRefused() {
         ConnectDialog d;
-        for (int r = 0; r < d.drives()->rowCount(); ++r) d.drives()->item(r, 0)->setCheckState(Qt::Unchecked);
-        d.accept();
-        QCOMPARE(d.result(), int(QDialog::Rejected));  // stays open with an inline error
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        for (int r = 0; r < d.drives()->rowCount(); ++r)
+            if (d.drives()->item(r, 0)->checkState() == Qt::Checked) toggleDrive(d, r);
+        QPushButton* connectButton = nullptr;
+        for (auto* b : d.findChildren<QPushButton*>())
+            if (b->text() == QStringLiteral("Connect")) connectButton = b;
+        QVERIFY(connectButton);
+        QTest::mouseClick(connectButton, Qt::LeftButton);
+        QVERIFY(d.isVisible());  // stays open with an inline error
+        QCOMPARE(d.result(), int(QDialog::Rejected));
+        bool said = false;
+        for (auto* l : d.findChildren<QLabel*>())
+            if (l->isVisible() && l->text().contains(QStringLiteral("drive"), Qt::CaseInsensitive)) said = true;
+        QVERIFY(said);
     }
 
     void pastedUrlFillsTheChoices() {

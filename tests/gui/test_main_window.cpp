@@ -20,6 +20,7 @@
 
 #include <QAction>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -73,6 +74,59 @@ bool openLoaded(MainWindow& w, const QString& path) {
     if (!w.openLog(path) || !waitFor([&] { return w.workspace()->loadJob()->isDone(); })) return false;
     w.refresh();
     return true;
+}
+
+// Opens the menu `title` on the menu bar by a click and clicks its item `item` (texts without '&').
+bool clickMenuItem(MainWindow& w, const QString& title, const QString& item) {
+    auto plain = [](QString t) { return t.remove(QLatin1Char('&')); };
+    QAction* head = nullptr;
+    for (QAction* a : w.menuBar()->actions())
+        if (plain(a->text()) == title) head = a;
+    if (!head || !head->menu()) return false;
+    QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(head).center());
+    QMenu* menu = head->menu();
+    if (!waitFor([&] { return menu->isVisible(); })) return false;
+    for (QAction* a : menu->actions())
+        if (plain(a->text()).startsWith(item)) {
+            QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
+            return true;
+        }
+    QTest::keyClick(menu, Qt::Key_Escape);
+    return false;
+}
+// Types into a line edit as a user does: select what is there, type, Enter.
+void typeAndEnter(QLineEdit* edit, const QString& text) {
+    QTest::mouseClick(edit, Qt::LeftButton);
+    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+}
+// Clicks a trace row as a user does (the row must be scrolled into view first).
+void clickRow(QTableView* view, int row) {
+    view->scrollTo(view->model()->index(row, 0));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(row, 1)).center());
+}
+// Brings a tabbed dock to the front by a click on its tab, as a user does.
+void clickDockTab(MainWindow& w, const QString& title) {
+    for (QTabBar* bar : w.findChildren<QTabBar*>())
+        for (int i = 0; i < bar->count(); ++i)
+            if (bar->tabText(i) == title && bar->isVisible()) QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
+}
+// Opens a log by File ▸ Open log… and its file dialog; waits until it is read.
+bool openByMenu(MainWindow& w, const QString& path) {
+    auto name = answerFileDialog(path);
+    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) || !waitFor([&] { return name->answered(); })) return false;
+    // The window manager gives the focus back to the window when the dialog closes; offscreen
+    // there is none, so do its part.
+    w.activateWindow();
+    if (!QTest::qWaitForWindowActive(&w)) return false;
+    return waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0; });
+}
+// Saves by File ▸ `item` and its file dialog; waits until the file is written.
+bool saveByMenu(MainWindow& w, const QString& item, const QString& path) {
+    auto name = answerFileDialog(path);
+    if (!clickMenuItem(w, QStringLiteral("File"), item) || !waitFor([&] { return name->answered(); })) return false;
+    return waitFor([&] { return w.saveJob() == nullptr && QFileInfo::exists(path); });
 }
 
 // A log of 200 PDOs and one EMCY.
@@ -173,23 +227,33 @@ private slots:
     void filterTheLiveTrace() {
         MainWindow w;
         w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(w.connectBus(QStringLiteral("sim://")));
         startSimulationDemo(w.workspace());  // heartbeats on, network started
         QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() > 20; }));
-        QString error;
-        QVERIFY(!w.traceDock()->applyFilter(QStringLiteral("svc:nonsense"), &error));
-        QVERIFY(error.contains(QStringLiteral("nonsense")));
-        QVERIFY(w.traceDock()->applyFilter(QStringLiteral("svc:nmt_ec node:1"), &error));
-        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && w.traceDock()->model()->isFiltered(); }));
+        auto* edit = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit"));
+        // A filter that means nothing: said in the status bar, the field turns red, nothing hidden.
+        typeAndEnter(edit, QStringLiteral("svc:nonsense"));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("nonsense")), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(!edit->toolTip().isEmpty());
         TraceModel* m = w.traceDock()->model();
-        QVERIFY(waitFor([&] { return m->rowCount() >= 2; }));
+        QVERIFY(!m->isFiltered());
+        typeAndEnter(edit, QStringLiteral("svc:nmt_ec node:1"));
+        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && m->isFiltered() && m->rowCount() >= 2; }));
         for (int r = 0; r < m->rowCount(); ++r) {
             QCOMPARE(cell(m, r, TraceModel::Service), QStringLiteral("NMT_EC"));
             QCOMPARE(cell(m, r, TraceModel::Node), QStringLiteral("1"));
         }
         QVERIFY(m->rowCount() < int(w.workspace()->store()->size()));
-        w.traceDock()->clearFilter();
-        QVERIFY(!m->isFiltered());
+        QVERIFY2(countText(w).contains(QStringLiteral(" of ")), qPrintable(countText(w)));
+        // The live trace goes on under the filter: new heartbeats of node 1 keep coming.
+        const int rows = m->rowCount();
+        QVERIFY(waitFor([&] { return m->rowCount() > rows; }, 5000));
+        // Emptying the field by keys removes the filter.
+        QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClick(edit, Qt::Key_Delete);
+        QVERIFY(waitFor([&] { return !m->isFiltered(); }));
     }
 
     void openAndSaveLogs() {
@@ -205,65 +269,79 @@ private slots:
         f.close();
         MainWindow w;
         w.setQuiet(true);
-        QVERIFY(openLoaded(w, path));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openByMenu(w, path));
+        QVERIFY(waitFor([&] { return w.statusBar()->currentMessage().contains(QStringLiteral(":3")); }));
         QCOMPARE(w.traceDock()->model()->rowCount(), 4);
-        QVERIFY2(w.lastError().contains(QStringLiteral(":3")), qPrintable(w.lastError()));
-        QCOMPARE(w.nodesDock()->model()->rowCount(), 1);
+        QVERIFY(waitFor([&] { return w.nodesDock()->model()->rowCount() == 1; }));
         QVERIFY(w.eventsDock()->model()->rowCount() >= 2);  // boot-up, EMCY
 
-        // Save in two formats; read back with the log layer.
+        // Save in two formats (named by the extension); read back with the log layer.
         for (const QString& name : {QStringLiteral("out.log"), QStringLiteral("out.asc")}) {
             const QString out = dir_.filePath(name);
-            QVERIFY(w.saveLog(out));
-            QVERIFY(waitFor([&] { return w.saveJob() == nullptr; }));
-            QVERIFY2(!w.lastError().contains(out), qPrintable(w.lastError()));
+            QVERIFY(saveByMenu(w, QStringLiteral("Save trace as"), out));
+            QVERIFY(waitFor([&] { return w.statusBar()->currentMessage().contains(out); }));
             QString error;
             auto reader = logio::LogFormats::openReader(out, &error);
             QVERIFY2(reader, qPrintable(error));
             QCOMPARE(reader->readAll().size(), size_t(4));
         }
         // Export only the filtered rows.
-        QVERIFY(w.traceDock()->applyFilter(QStringLiteral("svc:emcy")));
-        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering(); }));
-        w.refresh();
-        QCOMPARE(w.traceDock()->model()->rowCount(), 1);
+        typeAndEnter(w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit")), QStringLiteral("svc:emcy"));
+        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && w.traceDock()->model()->rowCount() == 1; }));
         const QString filtered = dir_.filePath(QStringLiteral("filtered.log"));
-        QVERIFY(w.saveLog(filtered, {}, true));
-        QVERIFY(waitFor([&] { return w.saveJob() == nullptr; }));
+        QVERIFY(saveByMenu(w, QStringLiteral("Export filtered rows"), filtered));
         auto reader = logio::LogFormats::openReader(filtered, nullptr);
         QVERIFY(reader);
         const auto frames = reader->readAll();
         QCOMPARE(frames.size(), size_t(1));
         QCOMPARE(frames[0].id, 0x81u);
 
-        // An unreadable file is an error in the window, not a crash.
-        QVERIFY(!w.openLog(dir_.filePath(QStringLiteral("missing.log"))));
-        QVERIFY(w.lastError().contains(QStringLiteral("missing.log")));
+        // A file that is no log is an error in the window that names it, not a crash.
+        const QString junk = dir_.filePath(QStringLiteral("junk.bin"));
+        QFile j(junk);
+        QVERIFY(j.open(QIODevice::WriteOnly));
+        j.write(QByteArray(64, '\xff'));
+        j.close();
+        auto name = answerFileDialog(junk);
+        QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")));
+        QVERIFY(waitFor([&] { return name->answered(); }));
+        QVERIFY2(waitFor([&] { return w.statusBar()->currentMessage().contains(QStringLiteral("junk.bin")); }),
+                 qPrintable(w.statusBar()->currentMessage()));
     }
 
     void eventJumpsToFrame() {
-        const QString path = dir_.filePath(QStringLiteral("jump.log"));
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        for (int i = 0; i < 200; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#0102\n").arg(i * 1000, 6, 10, QLatin1Char('0')).toLatin1());
-        f.write("(1700000001.000000) can0 081#1023050000000000\n");
-        f.close();
         MainWindow w;
         w.setQuiet(true);
-        QVERIFY(openLoaded(w, path));
-        QCOMPARE(w.eventsDock()->model()->rowCount(), 1);
-        emit w.eventsDock()->frameActivated(w.eventsDock()->model()->eventAt(0).frame);
-        const QModelIndex cur = w.traceDock()->view()->currentIndex();
-        QVERIFY(cur.isValid());
-        QCOMPARE(w.traceDock()->model()->frameAt(cur.row()), FrameNo(200));
-        // find and bookmarks
-        w.traceDock()->view()->selectRow(0);
-        QVERIFY(w.traceDock()->find(QStringLiteral("EMCY"), true));
-        QCOMPARE(w.traceDock()->view()->currentIndex().row(), 200);
-        w.traceDock()->toggleBookmark();
-        w.traceDock()->view()->selectRow(0);
-        w.traceDock()->gotoBookmark(true);
-        QCOMPARE(w.traceDock()->view()->currentIndex().row(), 200);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openByMenu(w, writeJumpLog(dir_.filePath(QStringLiteral("jump.log")))));
+        QVERIFY(waitFor([&] { return w.eventsDock()->model()->rowCount() == 1; }));
+        // Enter on the event (chosen by a click) selects its frame in the trace.
+        clickDockTab(w, QStringLiteral("Events"));
+        auto* events = w.eventsDock()->findChild<QTableView*>();
+        QVERIFY(events);
+        QVERIFY(waitFor([&] { return events->isVisible(); }));
+        QTest::mouseClick(events->viewport(), Qt::LeftButton, {}, events->visualRect(events->model()->index(0, 1)).center());
+        QTest::keyClick(events, Qt::Key_Return);
+        QTableView* view = w.traceDock()->view();
+        QVERIFY(waitFor([&] { return view->currentIndex().isValid(); }));
+        QCOMPARE(w.traceDock()->model()->frameAt(view->currentIndex().row()), FrameNo(200));
+        // Find by typing in the Find field and Enter.
+        clickRow(view, 0);
+        QCOMPARE(view->currentIndex().row(), 0);
+        typeAndEnter(w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit")), QStringLiteral("EMCY"));
+        QCOMPARE(view->currentIndex().row(), 200);
+        // Bookmark by its button, then from the top F2 jumps back to it.
+        QWidget* mark = traceBar(w)->widgetForAction(barAction(w, QStringLiteral("Bookmark")));
+        QVERIFY(mark && mark->isVisible());
+        QTest::mouseClick(mark, Qt::LeftButton);
+        QCOMPARE(w.traceDock()->model()->bookmarks().size(), size_t(1));
+        clickRow(view, 0);
+        QCOMPARE(view->currentIndex().row(), 0);
+        QTest::keyClick(view, Qt::Key_F2);
+        QCOMPARE(view->currentIndex().row(), 200);
     }
 
     void clearingTheFilterWithItsButtonShowsAllFrames() {
