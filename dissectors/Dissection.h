@@ -47,6 +47,10 @@ namespace coscope::dissect {
 //   ds402.controlword integer, ds402.command string, ds402.statusword integer, ds402.state string,
 //   ds402.mode integer, ds402.mode_text string   (CiA 402 meaning of 6040h/6041h/6060h/6061h,
 //                            from an SDO or a PDO)
+//   can.err.class  integer   CAN error frame: SocketCAN error class bits (linux/can/error.h)
+//   can.err.state  string    "error active", "error warning", "error passive", "bus-off" (when reported)
+//   can.err.tx_errors, can.err.rx_errors integer  the controller's error counters (when reported)
+//   can.err.text   string    what the error frame reports, in words
 struct FlatField {
     enum class Kind : uint8_t { Int, UInt, Real, Bool, Text };
     const char* key = nullptr;  // a string literal: the stable field name

@@ -31,11 +31,8 @@ Dissector dissectorFor(Service s) {
 }
 
 void dissectUnknown(DissectCall& c) {
+    if (c.frame.isError()) return dissectCanError(c);
     if (!c.out.wantText()) return;
-    if (c.frame.isError()) {
-        c.out.summary = QStringLiteral("CAN error frame");
-        return;
-    }
     c.out.summary = c.frame.isExtended() ? QStringLiteral("not CANopen (29-bit identifier)") : QStringLiteral("unknown COB-ID");
     if (c.out.wantTree()) c.out.item(0, QStringLiteral("Data"), hexBytes(c.data, c.len, true), 0, c.len);
 }

@@ -34,6 +34,7 @@ void dissectErrorControl(DissectCall& c);  // ErrorControlDissector.cpp
 void dissectSdo(DissectCall& c);           // SdoDissector.cpp
 void dissectPdo(DissectCall& c);           // PdoDissector.cpp
 void dissectLss(DissectCall& c);           // LssDissector.cpp
+void dissectCanError(DissectCall& c);      // CanErrorDissector.cpp (error frames, any COB-ID)
 void dissectUnknown(DissectCall& c);       // DissectorRegistry.cpp
 
 }  // namespace coscope::dissect

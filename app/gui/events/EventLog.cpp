@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/events/EventLog.h"
+#include "core/can/CanErrorFrame.h"
 
 #include "core/canopen/CobId.h"
 #include "core/canopen/Emcy.h"
@@ -40,7 +41,7 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
         const FrameNo n = first + static_cast<FrameNo>(i);
         const TraceRecord& r = store.record(n);
         if (r.flags & CanFrame::Error) {
-            push(TraceEvent::Kind::BusError, r, n, -1, QStringLiteral("Error frame (class 0x%1)").arg(r.id, 8, 16, QLatin1Char('0')));
+            push(TraceEvent::Kind::BusError, r, n, -1, decodeCanError(store.frame(n)).summary());
             continue;
         }
         if (r.flags & CanFrame::Extended) continue;
