@@ -2,7 +2,11 @@
 // The "Baud rate and node-ID" wizard end to end against the virtual drives (sim://): node-ID by
 // LSS and by the drive's own parameter for every personality, bit rate with reconnect, a device
 // without node-ID found by LSS Fastscan, failures (SDO abort, LSS store error) stop and explain,
-// the dry run sends nothing, listen-only refuses.
+// the dry run sends nothing, listen-only refuses. The technician's tests at the end act only
+// through input events (clicks, keys, the wheel), in the wizard and in the main window.
+#include "app/gui/MainWindow.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
@@ -13,10 +17,21 @@
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
+#include <QApplication>
+#include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
 #include <QPushButton>
+#include <QRadioButton>
+#include <QSpinBox>
+#include <QTableWidget>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 #include <QtTest>
+
+#include "tests/gui/ModalAnswer.h"
 
 using namespace coscope;
 using namespace coscope::gui;
@@ -32,6 +47,60 @@ bool waitFor(Pred pred, int timeoutMs = 10000) {
     }
     return true;
 }
+
+// --- input events, as a hand on the mouse and keyboard gives them
+void click(QAbstractButton* b) { QTest::mouseClick(b, Qt::LeftButton, {}, b->rect().center()); }
+void clickNext(QWizard* w) { click(w->button(QWizard::NextButton)); }
+// Selects what is in the field and types `text` over it.
+void typeInto(QWidget* w, const QString& text) {
+    QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center());
+    QTest::keyClick(w, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(w, text);
+}
+// One notch of the mouse wheel (120 = one step) up (+) or down (-) over `w`.
+void wheel(QWidget* w, int notches) {
+    const QPointF pos = QRectF(w->rect()).center();
+    QWheelEvent e(pos, w->mapToGlobal(pos), QPoint(), QPoint(0, 120 * notches), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(w, &e);
+}
+// Clicks the row of `node` in a table whose first column holds the node-ID.
+bool clickNodeRow(QTableWidget* table, int node) {
+    for (int r = 0; r < table->rowCount(); ++r)
+        if (table->item(r, 0) && table->item(r, 0)->text() == QString::number(node)) {
+            const QRect cell = table->visualItemRect(table->item(r, 0));
+            QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, cell.center());
+            return true;
+        }
+    return false;
+}
+// Opens `menuText` in the window's menu bar and clicks the entry whose text contains `entry`.
+bool clickMenu(QMainWindow& w, const QString& menuText, const QString& entry) {
+    QMenuBar* bar = w.menuBar();
+    for (QAction* top : bar->actions()) {
+        if (QString(top->text()).remove(u'&') != menuText || !top->menu()) continue;
+        QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(top).center());
+        QMenu* menu = top->menu();
+        if (!waitFor([&] { return menu->isVisible(); }, 3000)) return false;
+        for (QAction* a : menu->actions())
+            if (QString(a->text()).remove(u'&').contains(entry)) {
+                QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
+                return true;
+            }
+        menu->hide();
+    }
+    return false;
+}
+template <typename W>
+W* findTopLevel() {
+    for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* t = qobject_cast<W*>(w); t && t->isVisible()) return t;
+    return nullptr;
+}
+void grabPage(QWidget* w, const QString& name) {
+    if (const QString dir = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !dir.isEmpty()) w->grab().save(dir + QStringLiteral("/%1.png").arg(name));
+}
+// More than two periods of the find page's refresh (400 ms): whatever a refresh would put back is back.
+constexpr int kRefreshesMs = 1000;
 
 const QString kAll = QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:dexmart-dev,4:generic-cia402");
 
@@ -254,6 +323,155 @@ private slots:
         QVERIFY2(script, qPrintable(error));
         QCOMPARE(script->steps.size(), b.wizard->plan()->whole().steps.size());
         QCOMPARE(b.nodeIdOfSerial(2), 2);
+    }
+
+    // Issue 12 item 2: the new node-ID takes typing, the arrow keys and the wheel; the drive's own
+    // parameter stays chosen however long the page is open; the run sends what the user set.
+    void typedNodeIdAndVendorParameterAreApplied() {
+        Bench b;
+        QVERIFY(b.open());
+        NodeIdWizard* w = b.wizard.get();
+        QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 1));  // Delta ASDA-A2: P3-00 is its node-ID
+        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 1")));
+        grabPage(w, QStringLiteral("nodeid-1-find"));
+        clickNext(w);
+        QCOMPARE(w->currentId(), int(NodeIdWizard::ChangePageId));
+        auto* page = w->changePage();
+        auto* vendor = page->findChild<QRadioButton*>(QStringLiteral("viaVendor"));
+        auto* lss = page->findChild<QRadioButton*>(QStringLiteral("viaLss"));
+        auto* spin = page->findChild<QSpinBox*>(QStringLiteral("newNodeId"));
+        auto* edit = spin->findChild<QLineEdit*>();
+        QVERIFY(vendor->isEnabled() && edit);
+        click(vendor);
+        QVERIFY(vendor->isChecked());
+        typeInto(edit, QStringLiteral("42"));
+        QCOMPARE(edit->text(), QStringLiteral("42"));
+        QTest::keyClick(spin, Qt::Key_Up);
+        QCOMPARE(edit->text(), QStringLiteral("43"));
+        wheel(spin, 1);
+        QCOMPARE(edit->text(), QStringLiteral("44"));
+        QTest::qWait(kRefreshesMs);
+        QCOMPARE(edit->text(), QStringLiteral("44"));
+        QVERIFY(vendor->isChecked() && !lss->isChecked());
+        QVERIFY2(page->explanationLabel()->text().contains(QStringLiteral("P3-00")), qPrintable(page->explanationLabel()->text()));
+        grabPage(w, QStringLiteral("nodeid-2-change"));
+        // The dry run writes 44 (2Ch) to P3-00 (2300h).
+        QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
+        clickNext(w);
+        QVERIFY(ready.count() > 0 || ready.wait(8000));
+        const QString line = w->preview()->script().steps.front().toLine();
+        QVERIFY2(line.startsWith(QStringLiteral("sdo write 1 0x2300:00 ")), qPrintable(line));
+        QCOMPARE(line.section(u' ', -1).toUInt(nullptr, 0), 44u);
+        grabPage(w, QStringLiteral("nodeid-3-dry-run"));
+        QSignalSpy done(w, &NodeIdWizard::finished);
+        click(w->runPage()->runButton());
+        QVERIFY(done.wait(30000));
+        QVERIFY2(done.last().at(0).toBool(), qPrintable(w->runPage()->statusLabel()->text()));
+        QVERIFY(w->runPage()->statusLabel()->text().contains(QStringLiteral("node-ID 44")));
+        QCOMPARE(b.nodeIdOfSerial(1), 44);
+        grabPage(w, QStringLiteral("nodeid-4-done"));
+    }
+
+    // The device type the user chooses on the first page stays chosen, even "(unknown)" for a
+    // node the scan matched: the page's periodic refresh does not put the scan's match back.
+    void deviceTypeChosenByHandStays() {
+        Bench b;
+        QVERIFY(b.open());
+        NodeIdWizard* w = b.wizard.get();
+        QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 1));
+        auto* type = w->findPage()->findChild<QComboBox*>(QStringLiteral("dictionary"));
+        QTRY_COMPARE(type->currentText(), QStringLiteral("delta-asda-a2"));
+        QTest::keyClick(type, Qt::Key_Home);  // "(unknown — LSS only)"
+        QCOMPARE(type->currentIndex(), 0);
+        QTest::qWait(kRefreshesMs);
+        QCOMPARE(type->currentIndex(), 0);
+        auto* target = w->findPage()->findChild<QLabel*>(QStringLiteral("target"));
+        QVERIFY2(!target->text().contains(QStringLiteral("delta")), qPrintable(target->text()));
+        clickNext(w);
+        QVERIFY(!w->changePage()->findChild<QRadioButton*>(QStringLiteral("viaVendor"))->isEnabled());
+        QVERIFY(w->changePage()->findChild<QRadioButton*>(QStringLiteral("viaLss"))->isChecked());
+    }
+
+    // Issue 12 item 2: the new bit rate list takes typing, the arrow keys and the wheel.
+    void chosenBitRateStaysAndIsPlanned() {
+        Bench b;
+        QVERIFY(b.open());
+        NodeIdWizard* w = b.wizard.get();
+        QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 2));
+        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 2")));
+        clickNext(w);
+        auto* page = w->changePage();
+        click(page->findChild<QRadioButton*>(QStringLiteral("changeBitRate")));
+        auto* rate = page->findChild<QComboBox*>(QStringLiteral("newBitRate"));
+        QTRY_VERIFY(rate->isEnabled());
+        QTest::keyClicks(rate, QStringLiteral("8"));  // 800 kbit/s
+        QCOMPARE(rate->currentText(), canopen::bitRateText(800000));
+        QTest::keyClick(rate, Qt::Key_Down);  // 750 kbit/s
+        QCOMPARE(rate->currentText(), canopen::bitRateText(750000));
+        for (int i = 0; i < 3; ++i) wheel(rate, -1);  // 500, 250, 125 kbit/s
+        QCOMPARE(rate->currentText(), canopen::bitRateText(125000));
+        QTest::qWait(kRefreshesMs);
+        QCOMPARE(rate->currentText(), canopen::bitRateText(125000));
+        QVERIFY2(page->explanationLabel()->text().contains(canopen::bitRateText(125000)), qPrintable(page->explanationLabel()->text()));
+        grabPage(w, QStringLiteral("nodeid-2-change-bitrate"));
+        QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
+        clickNext(w);
+        QVERIFY(ready.count() > 0 || ready.wait(8000));
+        QVERIFY2(ready.last().at(0).toBool(), qPrintable(w->runPage()->statusLabel()->text()));
+        QVERIFY2(w->runPage()->statusLabel()->text().contains(QStringLiteral("reconnect at %1").arg(canopen::bitRateText(125000))),
+                 qPrintable(w->runPage()->statusLabel()->text()));
+    }
+
+    // Issue 12 item 4, as a technician does it in the main window: connect to the virtual drives,
+    // Commission ▸ Baud rate and node-ID…, scan, node 3 to node 7. The Nodes dock then lists
+    // node 7 with its dictionary and no node 3; the header no longer says nothing was sent.
+    void nodeIdChangeShowsInTheNodesDock() {
+        MainWindow mw;
+        mw.setQuiet(true);
+        mw.resize(1200, 800);
+        mw.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&mw));
+        QVERIFY(clickMenu(mw, QStringLiteral("Bus"), QStringLiteral("virtual drives")));
+        QVERIFY(waitFor([&] { return mw.workspace()->canTransmit(); }));
+        NodesModel* nodes = mw.nodesDock()->model();
+        QVERIFY(waitFor([&] { return nodes->rowOfNode(3) >= 0; }));
+        QVERIFY(clickMenu(mw, QStringLiteral("Commission"), QStringLiteral("node-ID")));
+        NodeIdWizard* w = nullptr;
+        QVERIFY(waitFor([&] { return (w = findTopLevel<NodeIdWizard>()) != nullptr; }));
+        QSignalSpy scanned(w, &NodeIdWizard::scanFinished);
+        click(w->findPage()->scanButton());
+        QVERIFY(scanned.wait(15000));
+        auto dictionaryOf = [&](int node) {
+            const int row = nodes->rowOfNode(node);
+            return row < 0 ? QString() : nodes->data(nodes->index(row, NodesModel::Dictionary), Qt::DisplayRole).toString();
+        };
+        QVERIFY(waitFor([&] { return dictionaryOf(3) == u"generic-cia402"; }));
+        QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 3));
+        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 3")));
+        clickNext(w);
+        typeInto(w->changePage()->findChild<QSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>(), QStringLiteral("7"));
+        QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
+        clickNext(w);
+        QVERIFY(ready.count() > 0 || ready.wait(8000));
+        auto headerSays = [&](const QString& text) {
+            for (QLabel* l : w->findChildren<QLabel*>())
+                if (l->isVisible() && l->text().contains(text)) return true;
+            return false;
+        };
+        QVERIFY(headerSays(QStringLiteral("nothing has been sent yet")));
+        QSignalSpy done(w, &NodeIdWizard::finished);
+        click(w->runPage()->runButton());
+        QVERIFY(done.wait(30000));
+        QVERIFY2(done.last().at(0).toBool(), qPrintable(w->runPage()->statusLabel()->text()));
+        QVERIFY(!headerSays(QStringLiteral("nothing has been sent yet")));
+        grabPage(w, QStringLiteral("nodeid-4-done-3-to-7"));
+        QVERIFY2(waitFor([&] { return dictionaryOf(7) == u"generic-cia402"; }), qPrintable(dictionaryOf(7)));
+        QVERIFY(waitFor([&] { return nodes->rowOfNode(3) < 0; }));
+        QTest::qWait(kRefreshesMs);  // and it stays so
+        QCOMPARE(nodes->rowOfNode(3), -1);
+        QCOMPARE(dictionaryOf(7), QStringLiteral("generic-cia402"));
+        // The main window goes (its bus with it) while the wizard is still open: the wizard lets
+        // go of its LSS services before the bus's dispatcher goes (this used to abort).
     }
 
     void listenOnlyRefuses() {
