@@ -135,6 +135,12 @@ void EventLog::add(TraceEvent event) {
     events_.push_back(std::move(event));
 }
 
+void EventLog::forgetNode(int node) {
+    if (node < 1 || node > 127) return;
+    std::lock_guard lock(mutex_);
+    watch_[static_cast<size_t>(node)] = {};
+}
+
 void EventLog::clear() {
     std::lock_guard lock(mutex_);
     events_.clear();

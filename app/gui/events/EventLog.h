@@ -41,6 +41,8 @@ public:
     void checkHeartbeats(int64_t nowNs);
     void add(TraceEvent event);
     void clear();
+    // Stops expecting heartbeats from `node` (its device moved to another node-ID).
+    void forgetNode(int node);
 
     uint64_t generation() const { return generation_.load(std::memory_order_acquire); }  // bumps on clear()
     size_t size() const;

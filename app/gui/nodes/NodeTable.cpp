@@ -133,4 +133,22 @@ void NodeTable::setIdentity(int id, std::optional<uint32_t> vendor, std::optiona
     bump();
 }
 
+void NodeTable::moveNode(int from, int to) {
+    if (from < 1 || from > 127 || to < 1 || to > 127 || from == to) return;
+    std::lock_guard lock(mutex_);
+    auto& old = nodes_[static_cast<size_t>(from)];
+    NodeInfo& e = entryLocked(to);  // usually there already: its boot-up at the new ID
+    if (old) {
+        e.scanned = e.scanned || old->scanned;
+        if (!old->dictionary.isEmpty()) e.dictionary = old->dictionary;
+        if (!old->deviceName.isEmpty()) e.deviceName = old->deviceName;
+        if (old->vendorId) e.vendorId = old->vendorId;
+        if (old->productCode) e.productCode = old->productCode;
+        if (old->revision) e.revision = old->revision;
+        if (old->serial) e.serial = old->serial;
+        old.reset();
+    }
+    bump();
+}
+
 }  // namespace coscope::gui

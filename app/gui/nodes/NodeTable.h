@@ -49,6 +49,9 @@ public:
     void setDeviceName(int id, const QString& name);
     void setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
                      std::optional<uint32_t> revision, std::optional<uint32_t> serial);
+    // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
+    // asking it (identity, name, dictionary) goes to `to`; `from` is dropped, nothing is there.
+    void moveNode(int from, int to);
 
 private:
     NodeInfo& entryLocked(int id);

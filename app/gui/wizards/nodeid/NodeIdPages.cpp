@@ -72,7 +72,9 @@ NodeIdFindPage::NodeIdFindPage(NodeIdWizard* wizard) : QWizardPage(wizard), wiza
         const auto rows = table_->selectionModel()->selectedRows();
         if (rows.isEmpty()) return;
         const int node = table_->item(rows.front().row(), 0)->data(Qt::UserRole).toInt();
-        if (node != wizard_->node()) wizard_->selectNode(node);
+        if (node == wizard_->node()) return;
+        dictionaryChosen_ = false;
+        wizard_->selectNode(node);
     });
     scan_ = new QPushButton(tr("Scan the bus"), this);
     scan_->setObjectName(QStringLiteral("scan"));
@@ -101,7 +103,10 @@ NodeIdFindPage::NodeIdFindPage(NodeIdWizard* wizard) : QWizardPage(wizard), wiza
     dictionary_->setObjectName(QStringLiteral("dictionary"));
     dictionary_->addItem(tr("(unknown — LSS only)"), QString());
     for (const QString& name : eds::DictionaryLibrary().names()) dictionary_->addItem(name, name);
-    connect(dictionary_, &QComboBox::activated, this, [this](int) { wizard_->setDictionary(dictionary_->currentData().toString()); });
+    connect(dictionary_, &QComboBox::activated, this, [this](int) {
+        dictionaryChosen_ = true;  // the user's choice, even "(unknown)": a scan does not override it
+        wizard_->setDictionary(dictionary_->currentData().toString());
+    });
     target_ = wrapped(this);
     target_->setObjectName(QStringLiteral("target"));
     connect(wizard_, &NodeIdWizard::targetChanged, this, &NodeIdFindPage::refresh);
@@ -124,7 +129,9 @@ NodeIdFindPage::NodeIdFindPage(NodeIdWizard* wizard) : QWizardPage(wizard), wiza
 
     auto* timer = new QTimer(this);
     timer->setInterval(400);
-    connect(timer, &QTimer::timeout, this, &NodeIdFindPage::refresh);
+    connect(timer, &QTimer::timeout, this, [this] {
+        if (wizard_->currentPage() == this) refresh();  // the later pages hold what the user chose
+    });
     timer->start();
 }
 
@@ -159,7 +166,7 @@ void NodeIdFindPage::refresh() {
         return;
     }
     // The device type became known (identified by a scan) after the node was chosen.
-    if (wizard_->node() != 0 && wizard_->node() != 0xFF && wizard_->dictionary().isEmpty() && !wizard_->isRunning())
+    if (wizard_->node() != 0 && wizard_->node() != 0xFF && wizard_->dictionary().isEmpty() && !dictionaryChosen_ && !wizard_->isRunning())
         if (const auto info = wizard_->workspace()->nodes().node(wizard_->node()); info && !info->dictionary.isEmpty()) {
             wizard_->selectNode(wizard_->node());
             return;
@@ -210,17 +217,26 @@ NodeIdChangePage::NodeIdChangePage(NodeIdWizard* wizard) : QWizardPage(wizard), 
     problem_->setObjectName(QStringLiteral("problem"));
     problem_->setStyleSheet(QStringLiteral("color:#a40000;font-weight:bold"));
 
-    auto apply = [this] {
-        if (updating_) return;
-        wizard_->setChange(bitRate_->isChecked() ? NodeIdWizard::Change::BitRate : NodeIdWizard::Change::NodeId);
-        wizard_->setNewNodeId(newId_->value());
-        wizard_->setNewBitRate(newRate_->currentData().toInt());
-        wizard_->setMethod(viaVendor_->isChecked() ? NodeIdWizard::Method::Vendor : NodeIdWizard::Method::Lss);
-    };
-    connect(nodeId_, &QRadioButton::toggled, this, apply);
-    connect(viaLss_, &QRadioButton::toggled, this, apply);
-    connect(newId_, &QSpinBox::valueChanged, this, apply);
-    connect(newRate_, &QComboBox::currentIndexChanged, this, apply);
+    // Each control sets only its own part of the request: a refresh caused by one of them
+    // (targetChanged) must not put back the others' old values before they are read.
+    connect(nodeId_, &QRadioButton::toggled, this, [this](bool on) {
+        if (!updating_ && on) wizard_->setChange(NodeIdWizard::Change::NodeId);
+    });
+    connect(bitRate_, &QRadioButton::toggled, this, [this](bool on) {
+        if (!updating_ && on) wizard_->setChange(NodeIdWizard::Change::BitRate);
+    });
+    connect(viaLss_, &QRadioButton::toggled, this, [this](bool on) {
+        if (!updating_ && on) wizard_->setMethod(NodeIdWizard::Method::Lss);
+    });
+    connect(viaVendor_, &QRadioButton::toggled, this, [this](bool on) {
+        if (!updating_ && on) wizard_->setMethod(NodeIdWizard::Method::Vendor);
+    });
+    connect(newId_, &QSpinBox::valueChanged, this, [this](int id) {
+        if (!updating_) wizard_->setNewNodeId(id);
+    });
+    connect(newRate_, &QComboBox::currentIndexChanged, this, [this](int) {
+        if (!updating_) wizard_->setNewBitRate(newRate_->currentData().toInt());
+    });
     connect(wizard_, &NodeIdWizard::targetChanged, this, &NodeIdChangePage::refresh);
 
     auto* form = new QFormLayout;
@@ -257,22 +273,25 @@ void NodeIdChangePage::initializePage() {
 }
 
 void NodeIdChangePage::refresh() {
+    // The controls show the request, which holds what the user chose: a control is set only
+    // when the request differs from it (the wizard changed it: another device, a method this
+    // device does not have), so what is being typed or scrolled is never put back.
     updating_ = true;
     const auto& r = wizard_->request();
     const bool unconfigured = wizard_->node() == 0xFF;
-    nodeId_->setChecked(r.change == NodeIdWizard::Change::NodeId);
-    bitRate_->setChecked(r.change == NodeIdWizard::Change::BitRate);
+    if (nodeId_->isChecked() != (r.change == NodeIdWizard::Change::NodeId)) nodeId_->setChecked(r.change == NodeIdWizard::Change::NodeId);
+    if (bitRate_->isChecked() != (r.change == NodeIdWizard::Change::BitRate)) bitRate_->setChecked(r.change == NodeIdWizard::Change::BitRate);
     bitRate_->setEnabled(!unconfigured);
     newId_->setEnabled(r.change == NodeIdWizard::Change::NodeId);
-    if (r.newNodeId >= 1) newId_->setValue(r.newNodeId);
+    if (r.newNodeId >= 1 && newId_->value() != r.newNodeId) newId_->setValue(r.newNodeId);
     newRate_->setEnabled(r.change == NodeIdWizard::Change::BitRate);
-    if (const int i = newRate_->findData(r.newBitRate); i >= 0) newRate_->setCurrentIndex(i);
+    if (const int i = newRate_->findData(r.newBitRate); i >= 0 && i != newRate_->currentIndex()) newRate_->setCurrentIndex(i);
     const bool vendor = wizard_->vendorMethodAvailable();
     viaVendor_->setEnabled(vendor);
     viaVendor_->setText(vendor ? tr("The drive's own parameter %1 over SDO — as its manual describes").arg(wizard_->vendorParameterName())
                                : tr("The drive's own parameter — none documented for this device"));
-    viaLss_->setChecked(r.method == NodeIdWizard::Method::Lss);
-    viaVendor_->setChecked(r.method == NodeIdWizard::Method::Vendor);
+    if (viaLss_->isChecked() != (r.method == NodeIdWizard::Method::Lss)) viaLss_->setChecked(r.method == NodeIdWizard::Method::Lss);
+    if (viaVendor_->isChecked() != (r.method == NodeIdWizard::Method::Vendor)) viaVendor_->setChecked(r.method == NodeIdWizard::Method::Vendor);
     explanation_->setText(wizard_->explanation());
     const QString problem = wizard_->blockingProblem();
     problem_->setText(problem);
@@ -285,9 +304,11 @@ bool NodeIdChangePage::isComplete() const { return wizard_->blockingProblem().is
 
 // --- page 3 -------------------------------------------------------------------------------
 
+QString NodeIdRunPage::dryRunSubTitle() { return tr("Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why."); }
+
 NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard_(wizard) {
     setTitle(tr("Check and change"));
-    setSubTitle(tr("Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why."));
+    setSubTitle(dryRunSubTitle());
     intro_ = wrapped(this);
     preview_ = new ScriptPreview(this);
     preview_->setObjectName(QStringLiteral("nodeIdScript"));
@@ -299,6 +320,7 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
     connect(run_, &QPushButton::clicked, this, [this] {
         QString why;
         if (!wizard_->start(&why)) status_->setText(why);
+        else setSubTitle(tr("Sending: CoScope runs the sequence below; each step turns green when the device has answered."));
         run_->setEnabled(false);
         emit completeChanged();
     });
@@ -316,6 +338,8 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
     connect(wizard_, &NodeIdWizard::finished, this, [this](bool ok) {
         status_->setStyleSheet(ok ? QStringLiteral("color:#1d6b1d;font-weight:bold") : QStringLiteral("color:#a40000;font-weight:bold"));
         status_->setText(wizard_->outcomeText());
+        setSubTitle(ok ? tr("Sent: the sequence below ran to the end. The device has its new setting.")
+                       : tr("Stopped: the green steps below were sent, the red one failed, the rest was not sent."));
         emit completeChanged();
     });
     auto* row = new QHBoxLayout;
@@ -329,6 +353,7 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
 }
 
 void NodeIdRunPage::initializePage() {
+    setSubTitle(dryRunSubTitle());
     status_->setStyleSheet(QString());
     status_->setText(tr("Preparing the sequence…"));
     run_->setEnabled(false);

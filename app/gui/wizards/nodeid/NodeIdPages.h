@@ -39,6 +39,7 @@ private:
     QComboBox* dictionary_;
     QLabel* target_;
     uint64_t shownRevision_ = ~uint64_t(0);
+    bool dictionaryChosen_ = false;  // the user picked the device type for the chosen node
 };
 
 // Page 2: node-ID or bit rate, the new value, LSS or the drive's parameter, and in plain words
@@ -78,6 +79,7 @@ public:
     QLabel* statusLabel() const { return status_; }
 
 private:
+    static QString dryRunSubTitle();
     NodeIdWizard* wizard_;
     QLabel* intro_;
     ScriptPreview* preview_;

@@ -7,6 +7,7 @@
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 #include "core/canopen/LssMaster.h"
+#include "core/canopen/MasterContext.h"
 #include "core/sim/BusAtBitRate.h"
 
 #include <QTimer>
@@ -36,6 +37,8 @@ NodeIdWizard::NodeIdWizard(Workspace* workspace, int node, QWidget* parent) : QW
     setPage(RunPageId, run_);
     resize(1000, 760);
     connect(this, &QWizard::currentIdChanged, this, &NodeIdWizard::movePaneTo);
+    // The services hang on the bus's dispatcher: let go of them while it still exists.
+    connect(workspace_, &Workspace::aboutToDisconnect, this, &NodeIdWizard::dropServices);
     connect(workspace_, &Workspace::sourceChanged, this, &NodeIdWizard::dropServices);
     frames_->markStart();
     movePaneTo(FindPageId);
@@ -243,7 +246,11 @@ QString NodeIdWizard::explanation() const {
                     "the device stores it itself.").arg(who);
     else
         parts << tr("<b>How:</b> CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).").arg(vendorParameterName());
-    if (p) parts << tr("<b>Takes effect:</b> %1.").arg(p->takesEffect.toHtmlEscaped());
+    if (p) {
+        QString when = p->takesEffect;
+        while (when.endsWith(u'.')) when.chop(1);  // the sentence gets its own full stop
+        parts << tr("<b>Takes effect:</b> %1.").arg(when.toHtmlEscaped());
+    }
     if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(v->note.toHtmlEscaped());
     if (request_.change == Change::BitRate) {
         QStringList others;
@@ -370,13 +377,41 @@ void NodeIdWizard::reconnect() {
     timer->start();
 }
 
+void NodeIdWizard::followChange(int from, int to) {
+    NodeTable& nodes = workspace_->nodes();
+    if (from >= 1 && from <= 127 && from != to) {
+        nodes.moveNode(from, to);
+        workspace_->events().forgetNode(from);  // its heartbeats come from `to` now
+        workspace_->events().add({TraceEvent::Kind::Info, nowNs(), kNoFrame, to,
+                                  tr("Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)").arg(from).arg(to)});
+        if (auto* m = workspace_->master()) {
+            m->setNodeDictionary(static_cast<uint8_t>(from), {});
+            if (const auto info = nodes.node(to); info && !info->dictionary.isEmpty()) m->setNodeDictionary(static_cast<uint8_t>(to), info->dictionary);
+        }
+        workspace_->syncDictionaries();
+    }
+    // Ask the device at its new ID (or rate) who it is (1018h): confirms the entry, and gives a
+    // device that had no node-ID its dictionary.
+    if (!workspace_->sdo() || !workspace_->canTransmit()) return;
+    auto* identify = new NodeScanner(workspace_->sdo(), &nodes, workspace_);
+    connect(workspace_, &Workspace::sourceChanged, identify, &QObject::deleteLater);
+    connect(identify, &NodeScanner::finished, workspace_, [ws = workspace_, identify] {
+        ws->syncDictionaries();
+        identify->deleteLater();
+    });
+    identify->scan(to, to, 1000);
+}
+
 void NodeIdWizard::finish(bool ok, const QString& text) {
     running_ = false;
     outcome_ = ok ? Outcome::Succeeded : Outcome::Failed;
     outcomeText_ = text;
-    if (ok && plan_ && plan_->request.change == Change::NodeId) {
-        request_.node = plan_->finalNodeId;
-        plan_->request.node = plan_->finalNodeId;
+    if (ok && plan_) {
+        followChange(plan_->request.change == Change::NodeId ? plan_->request.node : plan_->finalNodeId, plan_->finalNodeId);
+        if (plan_->request.change == Change::NodeId) {
+            request_.node = plan_->finalNodeId;
+            plan_->request.node = plan_->finalNodeId;
+        }
     }
     emit progress(text);
     emit finished(ok);

@@ -97,6 +97,9 @@ private:
     void runPart(int part);
     void reconnect();
     void finish(bool ok, const QString& text);
+    // After a successful change: the node table (Nodes dock, decoder, events) follows the
+    // device from node-ID `from` to `to`, and its identity is read at `to`.
+    void followChange(int from, int to);
     void movePaneTo(int pageId);
 
     Workspace* workspace_;
