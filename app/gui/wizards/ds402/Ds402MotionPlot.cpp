@@ -53,14 +53,15 @@ void Ds402MotionPlot::clear() {
 void Ds402MotionPlot::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const QRectF area = QRectF(rect()).adjusted(4, 18, -4, -4);
+    const double line = fontMetrics().lineSpacing();
+    const QRectF area = QRectF(rect()).adjusted(4, 2 * line + 6, -4, -4);  // the legend above, one line each
     p.fillRect(rect(), palette().base());
     p.setPen(QColor(200, 200, 200));
     p.drawRect(area);
     p.setPen(QColor(30, 90, 200));
-    p.drawText(QPointF(6, 13), positionText());
+    p.drawText(QPointF(6, line), positionText());
     p.setPen(QColor(220, 110, 20));
-    p.drawText(QPointF(width() / 2.0, 13), velocityText());
+    p.drawText(QPointF(6, 2 * line + 2), velocityText());
     if (t_.size() < 2) {
         p.setPen(palette().placeholderText().color());
         p.drawText(area, Qt::AlignCenter, tr("The test move's motion shows here"));
