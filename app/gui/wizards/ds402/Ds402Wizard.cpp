@@ -398,6 +398,8 @@ void Ds402Wizard::selectNode(int node) {
     armed_ = false;
     supported_.reset();
     modeRead_ = false;
+    mode_->setPlaceholderText(tr("not read"));  // not the previous drive's mode
+    mode_->setCurrentIndex(-1);
     state_ = State::Unknown;
     visited_.clear();
     faultText_.clear();
@@ -489,6 +491,8 @@ void Ds402Wizard::dropController(const QString& why) {
     status_->clear();
     modeRead_ = false;
     modeShown_->setText(tr("Shown by the drive (6061h): not read"));
+    mode_->setPlaceholderText(tr("not read"));
+    mode_->setCurrentIndex(-1);
     next_->setText(node_ > 0 ? tr("The state of node %1 is not known: not connected.").arg(node_) : QString());
     if (!why.isEmpty()) setMessage(why, true);
     updateButtons();
@@ -932,7 +936,7 @@ void Ds402Wizard::disableDrive() {
 
 canopen::CommandScript Ds402Wizard::dryRun() {
     std::optional<int8_t> mode;
-    if (mode_->count() > 0 && mode_->currentData().toInt() != modeDisplay_) mode = static_cast<int8_t>(mode_->currentData().toInt());
+    if (mode_->currentIndex() >= 0 && mode_->currentData().toInt() != modeDisplay_) mode = static_cast<int8_t>(mode_->currentData().toInt());
     canopen::CommandScript script = canopen::Ds402Controller::enableScript(static_cast<uint8_t>(std::max(node_, 1)), 0, state_, mode);
     preview_->setScript(script);
     tabs_->setCurrentIndex(1);
