@@ -280,7 +280,7 @@ void Ds402Wizard::buildUi() {
     message_->setWordWrap(true);
     message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     message_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
-    // A reserved area of five lines (it scrolls when a message is longer): the layout above
+    // A reserved area of four lines (it scrolls when a message is longer): the layout above
     // and below does not jump as messages come and go.
     auto* messageArea = new QScrollArea(this);
     messageArea->setObjectName(QStringLiteral("messageArea"));
@@ -288,7 +288,7 @@ void Ds402Wizard::buildUi() {
     messageArea->setWidgetResizable(true);
     messageArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     messageArea->setWidget(message_);
-    messageArea->setFixedHeight(message_->fontMetrics().lineSpacing() * 5 + 6);
+    messageArea->setFixedHeight(message_->fontMetrics().lineSpacing() * 4 + 6);
     root->addWidget(messageArea);
 
     tabs_ = new QTabWidget(this);
