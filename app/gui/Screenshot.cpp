@@ -32,12 +32,9 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"od") return w->odDock()->hasContent();
     if (view == u"plot") return w->plotDock()->hasContent();
     if (view.startsWith(QLatin1String("wizard-"))) {
-        // Opened once nodes are known; ready when the wizard says so (property "screenshotReady").
-        if (!w->openedWizard()) {
-            if (w->nodesDock()->model()->rowCount() == 0 || rows < 50) return false;
-            w->showView(view);
-            return false;
-        }
+        // Opened by showStartView once nodes are known; ready when the wizard says so (property
+        // "screenshotReady").
+        if (!w->openedWizard()) return false;
         const QVariant ready = w->openedWizard()->property("screenshotReady");
         return !ready.isValid() || ready.toBool();
     }

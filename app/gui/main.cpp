@@ -4,6 +4,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/Screenshot.h"
+#include "app/gui/StartView.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "core/log/Logging.h"
 #include "eds/SimulatorDictionaries.h"
@@ -81,8 +82,8 @@ int main(int argc, char** argv) {
     gui::MainWindow window;
     window.setQuiet(parser.isSet(screenshot));
     window.show();
-    // A wizard opens once the nodes are known (takeScreenshotWhenReady opens it for --screenshot).
-    if (!viewName.isEmpty() && !viewName.startsWith(QLatin1String("wizard-"))) window.showView(viewName);
+    // A dock at once; a wizard in its own window once the nodes are known (also for --screenshot).
+    if (!viewName.isEmpty()) gui::showStartView(&window, viewName);
     if (parser.isSet(connectTo)) window.connectBus(parser.value(connectTo));
     else if (parser.isSet(simulate) && window.connectBus(QStringLiteral("sim://"))) gui::startSimulationDemo(window.workspace());
     else if (!files.isEmpty()) window.openLog(files.first());

@@ -1,20 +1,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The CiA 402 enable step-through wizard end to end against the virtual drives (sim://) of every
 // personality: stepping to Operation enabled, mode, hold-to-run test move, disable; faults
-// injected during the enable; disable on close; dry run and listen-only send nothing.
+// injected during the enable; disable on close; dry run and listen-only send nothing. The newer
+// tests act through input events only (clicks, keys) and check what the user sees.
+#include "app/gui/MainWindow.h"
+#include "app/gui/StartView.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/ds402/Ds402MotionPlot.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
+#include "app/gui/wizards/WizardMenu.h"
 #include "core/sim/Ds402Drive.h"
 #include "core/sim/SimBus.h"
 #include "core/sim/SimNetwork.h"
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
+#include <QAbstractSpinBox>
 #include <QComboBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QtTest>
@@ -71,13 +80,51 @@ bool step(Ds402Wizard& w, Command c, bool* ok) {
         return false;
     }
     QSignalSpy done(&w, &Ds402Wizard::stepFinished);
-    b->click();
+    QTest::mouseClick(b, Qt::LeftButton);
     if (!waitSignal(done, 6000)) {
         qWarning("step %s: no outcome within 6 s: %s", qPrintable(canopen::ds402::commandName(c)), qPrintable(w.message()));
         return false;
     }
     *ok = done.first().first().toBool();
     return true;
+}
+// Enables the drive as a technician does: clicks Shutdown, Switch on and Enable operation…,
+// answering the confirmation with a click on Yes.
+bool enableByClicks(Ds402Wizard& w) {
+    bool ok = false;
+    if (!step(w, Command::Shutdown, &ok) || !ok || !step(w, Command::SwitchOn, &ok) || !ok) return false;
+    QString asked;
+    auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
+    if (!step(w, Command::EnableOperation, &ok) || !ok) return false;
+    return asked.contains(QStringLiteral("Enable operation energises"));
+}
+
+QPushButton* buttonNamed(QWidget* w, const QString& text) {
+    for (QPushButton* b : w->findChildren<QPushButton*>())
+        if (b->text() == text) return b;
+    return nullptr;
+}
+
+QLabel* statuswordLabel(QWidget* w) { return w->findChild<QLabel*>(QStringLiteral("statuswordValue")); }
+
+// Types `text` into a spin box as a user does: select what is there, type, Enter.
+void typeInto(QAbstractSpinBox* box, const QString& text) {
+    QLineEdit* edit = box->findChild<QLineEdit*>();
+    QTest::mouseDClick(edit, Qt::LeftButton);
+    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(edit, text);
+    QTest::keyClick(edit, Qt::Key_Return);
+}
+
+// What a combo box shows: its current item, or its placeholder when none is selected.
+QString shownText(QComboBox* box) { return box->currentIndex() < 0 ? box->placeholderText() : box->currentText(); }
+
+// Picks `text` in a combo box with the arrow keys.
+bool pickWithKeys(QComboBox* box, const QString& text) {
+    box->setFocus();
+    QTest::keyClick(box, Qt::Key_Home);
+    for (int i = 0; i < box->count() && !box->currentText().startsWith(text); ++i) QTest::keyClick(box, Qt::Key_Down);
+    return box->currentText().startsWith(text);
 }
 }  // namespace
 
@@ -406,6 +453,178 @@ private slots:
         Ds402Wizard w(&rig.ws, -1);
         QVERIFY(QTest::qWaitFor([&] { return w.node() == 5 && w.property("screenshotReady").toBool(); }, 10000));
         QCOMPARE(w.shownState(), State::SwitchOnDisabled);
+    }
+
+    // Issue 12 item 1: Esc and Close close the window (before, reject() -> close() -> closeEvent ->
+    // QDialog::closeEvent -> reject() was a nested close Qt ignores) and the drive is disabled.
+    void escAndCloseCloseTheWizard_data() {
+        QTest::addColumn<bool>("escape");
+        QTest::newRow("Esc") << true;
+        QTest::newRow("Close button") << false;
+    }
+    void escAndCloseCloseTheWizard() {
+        QFETCH(bool, escape);
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        // As Commission ▸ CiA 402 enable step-through… opens it (non-modal, deleted on close).
+        QPointer<QWidget> window = openWizard(QStringLiteral("ds402"), &rig.ws, 1, nullptr);
+        auto* w = qobject_cast<Ds402Wizard*>(window.data());
+        QVERIFY(w);
+        QVERIFY(QTest::qWaitForWindowExposed(w));
+        QSignalSpy read(w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(*w, read));
+        QVERIFY(enableByClicks(*w));
+        QCOMPARE(rig.driveState(1), State::OperationEnabled);
+        QVERIFY(statuswordLabel(w)->text().contains(QStringLiteral("Operation enabled")));
+        if (escape) QTest::keyClick(w, Qt::Key_Escape);
+        else QTest::mouseClick(buttonNamed(w, QStringLiteral("Close")), Qt::LeftButton);
+        QVERIFY2(QTest::qWaitFor([&] { return !window || !window->isVisible(); }, 2000), "the wizard window is still open");
+        QVERIFY(QTest::qWaitFor([&] { return rig.driveState(1) == State::SwitchOnDisabled; }, 3000));
+        QTRY_VERIFY(!window);  // deleted on close
+    }
+
+    // Issue 12 item 1: a window that still shows a drive after its connection went away shows no
+    // stale "Operation enabled"; once connected again it reads the drive and its buttons work.
+    void lostConnectionShowsNoStaleState() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        Ds402Wizard w(&rig.ws, 4);
+        w.show();
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        QVERIFY(enableByClicks(w));
+        QVERIFY(statuswordLabel(&w)->text().contains(QStringLiteral("Operation enabled")));
+        rig.ws.disconnectBus();
+        QVERIFY(w.isVisible());
+        QVERIFY2(!statuswordLabel(&w)->text().contains(QStringLiteral("Operation enabled")), qPrintable(statuswordLabel(&w)->text()));
+        QCOMPARE(w.diagram()->state(), State::Unknown);
+        QVERIFY(!w.quickStopButton()->isEnabled());  // nothing to send it on: said in the message
+        QVERIFY2(w.message().contains(QStringLiteral("Connection lost")), qPrintable(w.message()));
+        // Connected again (fresh virtual drives): the window reads node 4 again by itself.
+        read.clear();
+        QVERIFY(rig.open(kAll));
+        QVERIFY(waitReady(w, read));
+        QVERIFY2(statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")), qPrintable(statuswordLabel(&w)->text()));
+        QVERIFY(w.quickStopButton()->isEnabled() && w.disableButton()->isEnabled());
+        bool ok = false;
+        QVERIFY(step(w, Command::Shutdown, &ok) && ok);
+        QVERIFY2(!w.message().contains(QStringLiteral("No drive chosen")), qPrintable(w.message()));
+        QCOMPARE(rig.driveState(4), State::ReadyToSwitchOn);
+        QTest::mouseClick(w.disableButton(), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([&] { return rig.driveState(4) == State::SwitchOnDisabled; }, 3000));
+        QVERIFY(QTest::qWaitFor([&] { return statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")); }, 3000));
+    }
+
+    // Issue 12 item 9: the Mode box shows the drive's own mode (6061h) once read, also when the
+    // drive changed it meanwhile; a choice not yet applied is not overwritten by the next read.
+    void modeBoxShowsTheDrivesMode() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        Ds402Wizard w(&rig.ws, 1);
+        w.show();
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        QComboBox* box = w.modeCombo();
+        const QString first = canopen::ds402::modeName(rig.onDrive(1, [](sim::Ds402Drive* d) { return d->modeDisplay(); }));
+        QVERIFY2(shownText(box) == first, qPrintable(shownText(box) + QStringLiteral(" / ") + first));
+        // Another master (or the demo) switches the drive to profile velocity, then position.
+        for (int8_t mode : {int8_t(3), int8_t(1)}) {
+            bool written = false;
+            rig.ws.sdo()->download(1, 0x6060, 0, QByteArray(1, char(mode)), [&](const canopen::SdoResult& r) { written = r.ok; });
+            QVERIFY(QTest::qWaitFor([&] { return written; }, 3000));
+            read.clear();
+            QTest::mouseClick(buttonNamed(&w, QStringLiteral("Read state")), Qt::LeftButton);
+            QVERIFY(waitSignal(read));
+            QCOMPARE(shownText(box), canopen::ds402::modeName(mode));
+        }
+        // The user picks profile velocity; the next reads leave the choice until it is applied.
+        QVERIFY(pickWithKeys(box, QStringLiteral("Profile velocity")));
+        read.clear();
+        QTest::mouseClick(buttonNamed(&w, QStringLiteral("Read state")), Qt::LeftButton);
+        QVERIFY(waitSignal(read));
+        QVERIFY(box->currentText().startsWith(QStringLiteral("Profile velocity")));
+    }
+
+    // Issue 12 item 9: the test move speaks the drive's unit (Delta 60FFh is 0.1 rpm: the user
+    // types rpm, the confirmation and the plot say rpm, 60FFh gets ten times the number).
+    void testMoveInTheDrivesUnit() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        Ds402Wizard w(&rig.ws, 1);
+        w.show();
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        QVERIFY(enableByClicks(w));
+        QVERIFY(pickWithKeys(w.modeCombo(), QStringLiteral("Profile velocity")));
+        QSignalSpy mode(&w, &Ds402Wizard::modeFinished);
+        QTest::mouseClick(buttonNamed(&w, QStringLiteral("Set and verify")), Qt::LeftButton);
+        QVERIFY(waitSignal(mode) && mode.first().first().toBool());
+        auto* velocity = w.findChild<QAbstractSpinBox*>(QStringLiteral("testVelocity"));
+        QVERIFY(velocity);
+        QVERIFY2(velocity->text().endsWith(QStringLiteral(" rpm")), qPrintable(velocity->text()));
+        typeInto(velocity, QStringLiteral("150"));
+        QString asked;
+        {
+            auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
+            QTest::mouseClick(buttonNamed(&w, QStringLiteral("Arm test move…")), Qt::LeftButton);
+            QVERIFY(QTest::qWaitFor([&] { return yes->answered(); }, 3000));
+        }
+        QVERIFY2(asked.contains(QStringLiteral("150 rpm")), qPrintable(asked));
+        QVERIFY(w.holdToRunButton()->isEnabled());
+        QTest::mousePress(w.holdToRunButton(), Qt::LeftButton);
+        // 150 rpm = 1500 in 0.1 rpm: the drive turns at 1500 raw units.
+        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(1, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1450; }, 3000));
+        QTest::qWait(300);
+        QVERIFY(rig.onDrive(1, [](sim::Ds402Drive* d) { return d->velocity(); }) < 1550);
+        QVERIFY2(w.motionPlot()->velocityText().contains(QStringLiteral("150 rpm")), qPrintable(w.motionPlot()->velocityText()));
+        QSignalSpy moved(&w, &Ds402Wizard::testMoveFinished);
+        QTest::mouseRelease(w.holdToRunButton(), Qt::LeftButton);
+        QVERIFY(waitSignal(moved));
+        QTest::mouseClick(w.disableButton(), Qt::LeftButton);
+        QVERIFY(QTest::qWaitFor([&] { return rig.driveState(1) == State::SwitchOnDisabled; }, 3000));
+    }
+
+    // Issue 12 item 12: messages do not move the step buttons (the message area is reserved).
+    void messagesDoNotMoveTheSteps() {
+        Rig rig;
+        QVERIFY(rig.open(kAll));
+        rig.onDrive(1, [](sim::Ds402Drive* d) { d->enableFaults().alarmOnSwitchOn = QStringLiteral("AL013"); return 0; });
+        Ds402Wizard w(&rig.ws, 1);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QSignalSpy read(&w, &Ds402Wizard::stateRead);
+        QVERIFY(waitReady(w, read));
+        QPushButton* reset = w.stepButton(Command::FaultReset);
+        auto where = [&] {
+            QApplication::processEvents();
+            return QRect(reset->mapTo(&w, QPoint(0, 0)), reset->size());
+        };
+        const QRect before = where();
+        bool ok = false;
+        QVERIFY(step(w, Command::Shutdown, &ok) && ok);
+        QCOMPARE(where(), before);
+        QVERIFY(step(w, Command::SwitchOn, &ok) && !ok);  // the alarm: a long message with the fault
+        QVERIFY(w.message().count(u'\n') >= 2);
+        QCOMPARE(where(), before);
+        QTest::mouseClick(buttonNamed(&w, QStringLiteral("Dry run")), Qt::LeftButton);
+        QCOMPARE(where(), before);
+    }
+
+    // Issue 12 item 12: `coscope --view wizard-ds402` opens the wizard window (not only with
+    // --screenshot): the function main() calls opens it once the nodes are known.
+    void startViewOpensTheWizard() {
+        MainWindow window;
+        window.setQuiet(true);
+        window.show();
+        showStartView(&window, QStringLiteral("wizard-ds402"));
+        QVERIFY(window.connectBus(QStringLiteral("sim://")));
+        QVERIFY(QTest::qWaitFor([&] { return window.openedWizard() && window.openedWizard()->isVisible(); }, 15000));
+        auto* w = qobject_cast<Ds402Wizard*>(window.openedWizard());
+        QVERIFY(w);
+        QVERIFY(QTest::qWaitFor([&] { return w->property("screenshotReady").toBool(); }, 15000));
+        QVERIFY(w->node() > 0);
+        QTest::keyClick(w, Qt::Key_Escape);
+        QTRY_VERIFY(!window.openedWizard());
     }
 
 private:

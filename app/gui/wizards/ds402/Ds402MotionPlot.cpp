@@ -29,6 +29,20 @@ void Ds402MotionPlot::addSample(double ms, double position, double velocity) {
     update();
 }
 
+void Ds402MotionPlot::setUnits(const od::Unit& position, const od::Unit& velocity) {
+    posUnit_ = position;
+    velUnit_ = velocity;
+    update();
+}
+
+QString Ds402MotionPlot::positionText() const {
+    return pos_.empty() ? tr("position 6064h") : tr("position 6064h: %1").arg(inUnit(pos_.back(), posUnit_));
+}
+
+QString Ds402MotionPlot::velocityText() const {
+    return vel_.empty() ? tr("velocity 606Ch") : tr("velocity 606Ch: %1").arg(inUnit(vel_.back(), velUnit_));
+}
+
 void Ds402MotionPlot::clear() {
     t_.clear();
     pos_.clear();
@@ -39,14 +53,15 @@ void Ds402MotionPlot::clear() {
 void Ds402MotionPlot::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const QRectF area = QRectF(rect()).adjusted(4, 18, -4, -4);
+    const double line = fontMetrics().lineSpacing();
+    const QRectF area = QRectF(rect()).adjusted(4, 2 * line + 6, -4, -4);  // the legend above, one line each
     p.fillRect(rect(), palette().base());
     p.setPen(QColor(200, 200, 200));
     p.drawRect(area);
     p.setPen(QColor(30, 90, 200));
-    p.drawText(QPointF(6, 13), tr("position 6064h"));
+    p.drawText(QPointF(6, line), positionText());
     p.setPen(QColor(220, 110, 20));
-    p.drawText(QPointF(width() / 2.0, 13), tr("velocity 606Ch"));
+    p.drawText(QPointF(6, 2 * line + 2), velocityText());
     if (t_.size() < 2) {
         p.setPen(palette().placeholderText().color());
         p.drawText(area, Qt::AlignCenter, tr("The test move's motion shows here"));

@@ -17,6 +17,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -25,6 +26,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTimer>
@@ -72,6 +74,15 @@ QString stepExplanation(Command c) {
                            "Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.");
     default: return canopen::ds402::commandName(c);
     }
+}
+
+// A test-move spin box in the drive's unit `u`, showing `raw` drive units.
+void showInUnit(QDoubleSpinBox* box, const od::Unit& u, double maxRaw, double raw) {
+    box->setDecimals(unitDecimals(u));
+    box->setRange(-maxRaw * u.factor, maxRaw * u.factor);
+    box->setSingleStep(std::max(1.0, 100.0 * u.factor));
+    box->setSuffix(QStringLiteral(" ") + u.text);
+    box->setValue(raw * u.factor);
 }
 }  // namespace
 
@@ -189,6 +200,8 @@ void Ds402Wizard::buildUi() {
     next_ = new QLabel(stepsBox);
     next_->setObjectName(QStringLiteral("nextStep"));
     next_->setWordWrap(true);
+    next_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    next_->setFixedHeight(next_->fontMetrics().lineSpacing() * 3 + 4);  // the steps do not move as it changes
     stl->addWidget(next_);
     root->addWidget(stepsBox);
 
@@ -197,6 +210,8 @@ void Ds402Wizard::buildUi() {
     auto* ml = new QFormLayout(modeBox);
     mode_ = new QComboBox(modeBox);
     mode_->setObjectName(QStringLiteral("modeCombo"));
+    mode_->setPlaceholderText(tr("not read"));  // no item selected: the drive's mode is not among those offered
+    connect(mode_, &QComboBox::currentIndexChanged, this, [this] { updateButtons(); });
     setMode_ = new QPushButton(tr("Set and verify"), modeBox);
     connect(setMode_, &QPushButton::clicked, this, [this] {
         QString why;
@@ -217,17 +232,19 @@ void Ds402Wizard::buildUi() {
     moveKind_ = new QComboBox(moveBox);
     moveKind_->addItem(tr("Jog (profile velocity, 60FFh)"), 0);
     moveKind_->addItem(tr("Short move (profile position, 607Ah relative)"), 1);
+    connect(moveKind_, &QComboBox::currentIndexChanged, this, [this] { applyUnits(); });
     form->addRow(tr("Kind:"), moveKind_);
-    velocity_ = new QSpinBox(moveBox);
-    velocity_->setRange(-Ds402TestMove::kMaxVelocity, Ds402TestMove::kMaxVelocity);
-    velocity_->setValue(2000);
-    velocity_->setSuffix(tr(" units/s"));
+    // In the drive's units (applyUnits): 2000 and 5000 drive units to begin with.
+    velocity_ = new QDoubleSpinBox(moveBox);
+    velocity_->setObjectName(QStringLiteral("testVelocity"));
     form->addRow(tr("Velocity:"), velocity_);
-    distance_ = new QSpinBox(moveBox);
-    distance_->setRange(-Ds402TestMove::kMaxDistance, Ds402TestMove::kMaxDistance);
-    distance_->setValue(5000);
-    distance_->setSuffix(tr(" units"));
+    distance_ = new QDoubleSpinBox(moveBox);
+    distance_->setObjectName(QStringLiteral("testDistance"));
     form->addRow(tr("Distance:"), distance_);
+    velocityShownIn_ = units_.jogVelocity;
+    distanceShownIn_ = units_.distance;
+    showInUnit(velocity_, velocityShownIn_, Ds402TestMove::kMaxVelocity, 2000);
+    showInUnit(distance_, distanceShownIn_, Ds402TestMove::kMaxDistance, 5000);
     duration_ = new QSpinBox(moveBox);
     duration_->setRange(100, Ds402TestMove::kMaxDurationMs);
     duration_->setValue(3000);
@@ -262,8 +279,17 @@ void Ds402Wizard::buildUi() {
     message_->setObjectName(QStringLiteral("message"));
     message_->setWordWrap(true);
     message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    message_->setMinimumHeight(36);
-    root->addWidget(message_);
+    message_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    // A reserved area of four lines (it scrolls when a message is longer): the layout above
+    // and below does not jump as messages come and go.
+    auto* messageArea = new QScrollArea(this);
+    messageArea->setObjectName(QStringLiteral("messageArea"));
+    messageArea->setFrameShape(QFrame::NoFrame);
+    messageArea->setWidgetResizable(true);
+    messageArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    messageArea->setWidget(message_);
+    messageArea->setFixedHeight(message_->fontMetrics().lineSpacing() * 4 + 6);
+    root->addWidget(messageArea);
 
     tabs_ = new QTabWidget(this);
     frames_ = new WizardFramesPane(workspace_, tabs_);
@@ -301,6 +327,7 @@ void Ds402Wizard::buildUi() {
     dryRun_->setToolTip(tr("Show the exact SDO sequence of the enable, without sending anything."));
     connect(dryRun_, &QPushButton::clicked, this, [this] { dryRun(); });
     auto* close = new QPushButton(tr("Close"), this);
+    close->setObjectName(QStringLiteral("close"));
     connect(close, &QPushButton::clicked, this, &QDialog::close);
     bar->addWidget(quickStop_);
     bar->addWidget(disable_);
@@ -318,7 +345,7 @@ QString Ds402Wizard::sendRefusal() const {
     if (workspace_->bus()->isListenOnly()) return tr("Listen-only connection: the wizard does not send.");
     if (!workspace_->canTransmit() || !workspace_->sdo()) return tr("The bus is not open.");
     if (node_ <= 0) return tr("No drive chosen.");
-    if (!ctl_) return tr("No drive chosen.");
+    if (!ctl_) return tr("Node %1 is not being read: press “Read state” to read it again.").arg(node_);
     if (!cia402_) return tr("Node %1 is not a CiA 402 drive.").arg(node_);
     return {};
 }
@@ -370,6 +397,9 @@ void Ds402Wizard::selectNode(int node) {
     sentCommands_ = false;
     armed_ = false;
     supported_.reset();
+    modeRead_ = false;
+    mode_->setPlaceholderText(tr("not read"));  // not the previous drive's mode
+    mode_->setCurrentIndex(-1);
     state_ = State::Unknown;
     visited_.clear();
     faultText_.clear();
@@ -417,6 +447,8 @@ void Ds402Wizard::selectNode(int node) {
 }
 
 void Ds402Wizard::startReading() {
+    units_ = Ds402Units::forDictionary(dictionary_);
+    applyUnits();
     const auto notes = ds402VendorNotes(dictionary_);
     vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped()) : QString());
     if (notes && notes->notCia402) {
@@ -449,6 +481,19 @@ void Ds402Wizard::dropController(const QString& why) {
     busy_ = reading_ = false;
     ctl_.reset();
     ctlSdo_ = nullptr;
+    // Nothing read any more: show no state rather than the last one (it may be long gone).
+    ++selection_;  // answers still under way are dropped
+    state_ = State::Unknown;
+    statusword_ = 0;
+    armed_ = false;
+    diagram_->setState(State::Unknown);
+    diagram_->setNextTransition(std::nullopt);
+    status_->clear();
+    modeRead_ = false;
+    modeShown_->setText(tr("Shown by the drive (6061h): not read"));
+    mode_->setPlaceholderText(tr("not read"));
+    mode_->setCurrentIndex(-1);
+    next_->setText(node_ > 0 ? tr("The state of node %1 is not known: not connected.").arg(node_) : QString());
     if (!why.isEmpty()) setMessage(why, true);
     updateButtons();
 }
@@ -468,6 +513,9 @@ void Ds402Wizard::readObject(uint16_t index, uint8_t sub, std::function<void(con
 // --- reading the state
 
 void Ds402Wizard::refresh() {
+    // No controller (the connection changed or the window was closed and shown again): choose
+    // the same drive again, which reads it afresh.
+    if (!ctl_ && node_ > 0 && workspace_->canTransmit() && workspace_->sdo()) return selectNode(node_);
     // Never while a step runs: the step reads 6041h itself and its result is the state shown.
     if (!ctl_ || reading_ || busy_ || !cia402_) return;
     reading_ = true;
@@ -515,11 +563,7 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
     QPointer<Ds402Wizard> self(this);
     // 6061h: the mode the drive runs in; 6502h once: the modes it supports.
     readObject(0x6061, 0, [self, then](const SdoResult& m) {
-        if (m.ok && !m.data.isEmpty()) {
-            self->modeDisplay_ = static_cast<int8_t>(m.data[0]);
-            self->modeShown_->setText(tr("Shown by the drive (6061h): %1").arg(canopen::ds402::modeName(self->modeDisplay_)));
-            self->status_->setModeText(tr("Mode of operation (6061h): %1").arg(canopen::ds402::modeName(self->modeDisplay_)));
-        }
+        if (m.ok && !m.data.isEmpty()) self->showDriveMode(static_cast<int8_t>(m.data[0]));
         auto afterModes = [self, then] {
             if (!self) return;
             const bool fault = self->statusword_ & sw::Fault;
@@ -581,11 +625,29 @@ void Ds402Wizard::fillModes() {
     mode_->clear();
     for (int8_t m : {1, 3, 4, 6, 7, 8, 9, 10})
         if (supported_ && canopen::ds402::modeSupported(*supported_, m)) mode_->addItem(canopen::ds402::modeName(m), int(m));
-    const int cur = mode_->findData(int(modeDisplay_));
-    if (cur >= 0) mode_->setCurrentIndex(cur);
     // The jog needs profile velocity; otherwise the short profile-position move.
     const bool pv = supported_ && canopen::ds402::modeSupported(*supported_, 3);
     moveKind_->setCurrentIndex(pv ? 0 : 1);
+    if (modeRead_) {
+        modeRead_ = false;  // as read anew: the box shows the drive's mode
+        showDriveMode(modeDisplay_);
+    }
+}
+
+void Ds402Wizard::showDriveMode(int8_t mode) {
+    const bool changed = !modeRead_ || mode != modeDisplay_;
+    modeDisplay_ = mode;
+    modeRead_ = true;
+    const QString name = canopen::ds402::modeName(mode);
+    modeShown_->setText(tr("Shown by the drive (6061h): %1").arg(name));
+    status_->setModeText(tr("Mode of operation (6061h): %1").arg(name));
+    if (!changed) return;  // a choice not yet applied stays until the drive's mode changes
+    // The Mode box shows the drive's own mode (its name as placeholder when it is not offered),
+    // and the test move the kind that mode runs (PV: jog, PP: short move).
+    mode_->setPlaceholderText(name);
+    mode_->setCurrentIndex(mode_->findData(int(mode)));
+    if (mode == 3) moveKind_->setCurrentIndex(0);
+    if (mode == 1) moveKind_->setCurrentIndex(1);
 }
 
 // --- steps
@@ -699,9 +761,8 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         if (!self) return;
         self->busy_ = false;
         if (r.ok) {
-            self->modeDisplay_ = r.mode;
+            self->showDriveMode(r.mode);
             self->modeShown_->setText(tr("Shown by the drive (6061h): %1 ✓").arg(canopen::ds402::modeName(r.mode)));
-            self->status_->setModeText(tr("Mode of operation (6061h): %1").arg(canopen::ds402::modeName(r.mode)));
             self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.").arg(canopen::ds402::modeName(r.mode)));
         } else {
             self->setMessage(tr("Could not set %1: %2").arg(canopen::ds402::modeName(mode), r.error), true);
@@ -716,19 +777,31 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
 
 void Ds402Wizard::setTestMove(const Ds402TestMove& m) {
     moveKind_->setCurrentIndex(m.kind == Ds402TestMove::Kind::Jog ? 0 : 1);
-    velocity_->setValue(m.velocity);
-    distance_->setValue(m.distance);
+    velocity_->setValue(m.velocity * velocityShownIn_.factor);
+    distance_->setValue(m.distance * distanceShownIn_.factor);
     duration_->setValue(m.maxDurationMs);
 }
 
 Ds402TestMove Ds402Wizard::testMove() const {
+    // The spin boxes show the drive's units; the drive gets raw numbers (display = raw × factor).
+    const auto velocity = static_cast<int32_t>(std::llround(velocity_->value() / velocityShownIn_.factor));
     Ds402TestMove m;
     m.kind = moveKind_->currentIndex() == 0 ? Ds402TestMove::Kind::Jog : Ds402TestMove::Kind::Relative;
-    m.velocity = m.kind == Ds402TestMove::Kind::Jog ? velocity_->value() : std::abs(velocity_->value());
-    m.distance = distance_->value();
+    m.velocity = m.kind == Ds402TestMove::Kind::Jog ? velocity : std::abs(velocity);
+    m.distance = static_cast<int32_t>(std::llround(distance_->value() / distanceShownIn_.factor));
     m.maxDurationMs = duration_->value();
-    m.acceleration = m.deceleration = static_cast<uint32_t>(std::max(1000, std::abs(velocity_->value()) * 5));
+    m.acceleration = m.deceleration = static_cast<uint32_t>(std::max(1000, std::abs(velocity) * 5));
     return m;
+}
+
+void Ds402Wizard::applyUnits() {
+    // The same speed and distance, shown in the unit of the object the move kind writes.
+    const double velocity = velocity_->value() / velocityShownIn_.factor, distance = distance_->value() / distanceShownIn_.factor;
+    velocityShownIn_ = moveKind_->currentIndex() == 0 ? units_.jogVelocity : units_.profileVelocity;
+    distanceShownIn_ = units_.distance;
+    showInUnit(velocity_, velocityShownIn_, Ds402TestMove::kMaxVelocity, velocity);
+    showInUnit(distance_, distanceShownIn_, Ds402TestMove::kMaxDistance, distance);
+    plot_->setUnits(units_.position, units_.velocity);
 }
 
 bool Ds402Wizard::testMoveRunning() const { return ctl_ && ctl_->testMoveActive(); }
@@ -747,8 +820,12 @@ bool Ds402Wizard::armTestMove(QString* why) {
         if (why) *why = bad;
         return false;
     }
-    const QString what = m.kind == Ds402TestMove::Kind::Jog ? tr("turn at %1 units/s (profile velocity)").arg(m.velocity)
-                                                             : tr("move %1 units at up to %2 units/s (profile position, relative)").arg(m.distance).arg(m.velocity);
+    const QString what = m.kind == Ds402TestMove::Kind::Jog
+                             ? tr("turn at %1 (profile velocity, 60FFh = %2)").arg(inUnit(m.velocity, velocityShownIn_)).arg(m.velocity)
+                             : tr("move %1 at up to %2 (profile position, relative: 607Ah = %3, 6081h = %4)")
+                                   .arg(inUnit(m.distance, distanceShownIn_), inUnit(m.velocity, velocityShownIn_))
+                                   .arg(m.distance)
+                                   .arg(m.velocity);
     if (!confirm(tr("Test move"), tr("While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.\n"
                                      "Releasing the button stops it. Make sure the axis is free to move.\n\nArm the test move?")
                                       .arg(node_).arg(what).arg(m.maxDurationMs))) {
@@ -817,7 +894,8 @@ void Ds402Wizard::releaseHoldToRun() {
 // --- always there
 
 void Ds402Wizard::quickStop() {
-    if (!ctl_) return;
+    if (!ctl_ && !closing_) makeController();  // the window shows a drive: Quick stop works whatever came before
+    if (!ctl_) return setMessage(tr("Quick stop: %1").arg(sendRefusal()), true);
     holding_ = false;
     sentCommands_ = true;
     setMessage(tr("Quick stop: sending 6040h = 0002h…"));
@@ -835,7 +913,8 @@ void Ds402Wizard::quickStop() {
 }
 
 void Ds402Wizard::disableDrive() {
-    if (!ctl_) return;
+    if (!ctl_ && !closing_) makeController();
+    if (!ctl_) return setMessage(tr("Disable: %1").arg(sendRefusal()), true);
     holding_ = false;
     armed_ = false;
     setMessage(tr("Disabling: Shutdown, then Disable voltage…"));
@@ -857,7 +936,7 @@ void Ds402Wizard::disableDrive() {
 
 canopen::CommandScript Ds402Wizard::dryRun() {
     std::optional<int8_t> mode;
-    if (mode_->count() > 0 && mode_->currentData().toInt() != modeDisplay_) mode = static_cast<int8_t>(mode_->currentData().toInt());
+    if (mode_->currentIndex() >= 0 && mode_->currentData().toInt() != modeDisplay_) mode = static_cast<int8_t>(mode_->currentData().toInt());
     canopen::CommandScript script = canopen::Ds402Controller::enableScript(static_cast<uint8_t>(std::max(node_, 1)), 0, state_, mode);
     preview_->setScript(script);
     tabs_->setCurrentIndex(1);
@@ -881,16 +960,31 @@ bool Ds402Wizard::safeDisable(const QString& why) {
     return true;
 }
 
-void Ds402Wizard::closeEvent(QCloseEvent* event) {
+// Close and the window's ✕ come through closeEvent, Esc through reject(); QDialog::closeEvent
+// calls reject() again, and QDialog::reject() hides the window (and deletes it on close).
+void Ds402Wizard::finishClosing() {
+    if (closing_) return;
     closing_ = true;
-    poll_->stop();
-    feed_->stop();
     safeDisable(tr("wizard closed"));
-    ctl_.reset();  // nothing more goes out from this wizard
+    dropController({});  // nothing more goes out from this wizard
+}
+
+void Ds402Wizard::closeEvent(QCloseEvent* event) {
+    finishClosing();
     QDialog::closeEvent(event);
 }
 
-void Ds402Wizard::reject() { close(); }
+void Ds402Wizard::reject() {
+    finishClosing();
+    QDialog::reject();
+}
+
+void Ds402Wizard::showEvent(QShowEvent* event) {
+    QDialog::showEvent(event);
+    if (!closing_) return;
+    closing_ = false;  // shown again after a close: read the drive afresh
+    if (node_ > 0) selectNode(node_);
+}
 
 // --- view
 
@@ -917,11 +1011,11 @@ void Ds402Wizard::updateButtons() {
         b->setFont(f);
     }
     mode_->setEnabled(canSend && !busy_ && !moving);
-    setMode_->setEnabled(canSend && !busy_ && !moving && mode_->count() > 0);
+    setMode_->setEnabled(canSend && !busy_ && !moving && mode_->currentIndex() >= 0);
     arm_->setEnabled(canSend && !busy_ && !moving && state_ == State::OperationEnabled);
     hold_->setEnabled(canSend && (moving || (armed_ && !busy_ && state_ == State::OperationEnabled)));
     // Always there while connected (DESIGN.md "quick stop / disable always visible").
-    const bool connected = workspace_->canTransmit() && ctl_ && cia402_;
+    const bool connected = workspace_->canTransmit() && workspace_->sdo() && node_ > 0 && cia402_ && !closing_;
     quickStop_->setEnabled(connected);
     disable_->setEnabled(connected);
     dryRun_->setEnabled(node_ > 0 && cia402_);

@@ -5,6 +5,8 @@
 #include "core/canopen/Ds402.h"
 #include "core/canopen/Ds402Controller.h"
 
+#include "app/gui/wizards/ds402/Ds402Units.h"
+
 #include <QDialog>
 #include <QList>
 
@@ -13,6 +15,7 @@
 #include <optional>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -36,8 +39,10 @@ class Ds402MotionPlot;
 // on a hold-to-run button with a live plot. Quick stop and Disable are always there.
 //
 // Safety (DESIGN.md): asks before Enable operation and before arming a test move; a failed step
-// sends Disable voltage; closing the wizard, losing the bus or quitting the app disables a drive
-// the wizard left switched on. Sends nothing in listen-only mode. Never blocks the GUI thread:
+// sends Disable voltage; closing the wizard (Close, Esc, the window's ✕), losing the bus or
+// quitting the app disables a drive the wizard left switched on. What it shows is what it last
+// read from the drive: nothing once the connection is gone. The test move speaks the drive's
+// units (Ds402Units) and the Mode box shows the drive's own mode (6061h). Sends nothing in listen-only mode. Never blocks the GUI thread:
 // everything goes through Ds402Controller (core), whose CLI face is `coscope-cli ds402`.
 class Ds402Wizard : public QDialog {
     Q_OBJECT
@@ -103,6 +108,7 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
     void reject() override;
 
 private:
@@ -112,6 +118,9 @@ private:
     void startReading();  // after the drive (and its dictionary) is known
     void settleFaultReaction(const canopen::Ds402Result& r, int tries, std::function<void(const canopen::Ds402Result&)> done);
     void dropController(const QString& why);
+    void finishClosing();  // Close, Esc, ✕: disable, stop sending (once)
+    void showDriveMode(int8_t mode);  // 6061h as read
+    void applyUnits();
     void readObject(uint16_t index, uint8_t sub, std::function<void(const canopen::SdoResult&)> done);
     void afterState(const canopen::Ds402Result& r, std::function<void()> then);
     void showState(canopen::ds402::State s, uint16_t sw);
@@ -140,9 +149,12 @@ private:
     canopen::ds402::State state_ = canopen::ds402::State::Unknown;
     uint16_t statusword_ = 0;
     int8_t modeDisplay_ = 0;
+    bool modeRead_ = false;  // 6061h was read since the node was chosen
     std::optional<uint32_t> supported_;
     QString faultText_;
     QString controlWarning_;
+    Ds402Units units_ = Ds402Units::forDictionary({});
+    od::Unit velocityShownIn_, distanceShownIn_;  // what the test move's spin boxes show now
     QList<canopen::ds402::State> visited_;
     std::unique_ptr<canopen::Ds402Controller> ctl_;
     canopen::SdoClient* ctlSdo_ = nullptr;
@@ -163,8 +175,8 @@ private:
     QComboBox* mode_ = nullptr;
     QPushButton* setMode_ = nullptr;
     QComboBox* moveKind_ = nullptr;
-    QSpinBox* velocity_ = nullptr;
-    QSpinBox* distance_ = nullptr;
+    QDoubleSpinBox* velocity_ = nullptr;
+    QDoubleSpinBox* distance_ = nullptr;
     QSpinBox* duration_ = nullptr;
     QPushButton* arm_ = nullptr;
     QPushButton* hold_ = nullptr;

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/wizards/ds402/Ds402Units.h"
+
+#include "core/od/Value.h"
+#include "dissectors/DictionaryCatalog.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace coscope::gui {
+
+Ds402Units Ds402Units::forDictionary(const QString& dictionaryName) {
+    auto fallback = [](const char* text) { return od::Unit{QCoreApplication::translate("coscope::gui::Ds402Units", text), 1.0}; };
+    Ds402Units u{fallback("units/s"), fallback("units/s"), fallback("units"), fallback("units"), fallback("units/s")};
+    if (dictionaryName.isEmpty()) return u;
+    const dissect::DictionaryPtr od = dissect::catalog::load(dictionaryName, nullptr, nullptr);
+    if (!od) return u;
+    auto take = [&](uint16_t index, od::Unit& into) {
+        if (const od::SubObject* e = od->entry(index, 0); e && e->unit && !e->unit->text.isEmpty() && e->unit->factor > 0) into = *e->unit;
+    };
+    take(0x60FF, u.jogVelocity);
+    take(0x6081, u.profileVelocity);
+    take(0x607A, u.distance);
+    take(0x6064, u.position);
+    take(0x606C, u.velocity);
+    return u;
+}
+
+QString inUnit(double raw, const od::Unit& unit) {
+    od::FormatOptions o;
+    o.unit = unit.text;
+    o.factor = unit.factor;
+    return od::Value::format(od::DataType::Integer32, od::Value::signedInt(static_cast<int64_t>(std::llround(raw))), o);
+}
+
+int unitDecimals(const od::Unit& unit) {
+    if (unit.factor >= 1.0 || unit.factor <= 0) return 0;
+    return std::min(6, static_cast<int>(std::ceil(-std::log10(unit.factor) - 1e-9)));
+}
+
+}  // namespace coscope::gui
