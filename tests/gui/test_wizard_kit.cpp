@@ -103,7 +103,7 @@ private slots:
         QCOMPARE(preview.rowCount(), 4);
         auto* table = preview.findChild<QTableWidget*>(QStringLiteral("scriptSteps"));
         QVERIFY(table);
-        QCOMPARE(table->item(1, 1)->text(), QStringLiteral("Write 1017h:00 = 02EEh on node 3"));
+        QCOMPARE(table->item(1, 1)->text(), QStringLiteral("Write 1017h:00 = 750 on node 3"));
         QCOMPARE(table->item(1, 2)->text(), QStringLiteral("sdo write 3 0x1017:00 0x02ee"));
         QCOMPARE(table->item(1, 3)->text(), QStringLiteral("Heartbeat every 750 ms"));
 
