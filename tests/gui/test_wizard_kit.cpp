@@ -94,6 +94,32 @@ private slots:
         shot.save(QStringLiteral(COSCOPE_TEST_BINARY_DIR) + QStringLiteral("/wizard_frames_pane.png"));
     }
 
+    // Issue 12: step rows one text line high, so a 19-step plan shows at least 10 steps.
+    void previewRowsAreOneLineHigh() {
+        CommandScript s;
+        for (int i = 0; i < 19; ++i) {
+            ScriptStep st = ScriptStep::sdoWrite(3, 0x1A00, static_cast<uint8_t>(1 + i % 8), 0x60410010u, 4, {});
+            st.why = QStringLiteral("Mapping entry %1: the statusword (6041h, 16 bits) goes into the message at this place, "
+                                    "after the objects mapped before it, so the controller reads it there").arg(i + 1);
+            s.steps.push_back(st);
+        }
+        ScriptPreview preview;
+        preview.resize(1000, 420);
+        preview.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&preview));
+        preview.setScript(s);
+        auto* table = preview.findChild<QTableWidget*>(QStringLiteral("scriptSteps"));
+        QVERIFY(table);
+        QTest::qWait(50);
+        int visible = 0;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QRect rect = table->visualRect(table->model()->index(r, 1));
+            if (rect.isValid() && table->viewport()->rect().contains(rect)) ++visible;
+        }
+        QVERIFY2(visible >= 10, qPrintable(QStringLiteral("%1 of 19 steps visible").arg(visible)));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("Write 1A00h:01 = 60410010h on node 3"));
+    }
+
     void previewListsMarksAndSaves() {
         ScriptPreview preview;
         preview.resize(1100, 300);
