@@ -8,10 +8,13 @@
 #include "app/gui/wizards/common/ScriptRunPanel.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/common/WizardGuard.h"
+#include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "core/canopen/SdoClient.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QPushButton>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -118,6 +121,27 @@ private slots:
         }
         QVERIFY2(visible >= 10, qPrintable(QStringLiteral("%1 of 19 steps visible").arg(visible)));
         QCOMPARE(table->item(0, 1)->text(), QStringLiteral("Write 1A00h:01 = 60410010h on node 3"));
+    }
+
+    // Issue 12: one "Save as script…" on the CiA 402 wizard's dry-run tab, not two.
+    void oneSaveButtonPerTab() {
+        Workspace w;
+        QVERIFY(connectSim(w, QStringLiteral("sim://?nodes=3:generic-cia402")));
+        Ds402Wizard wiz(&w, 3);
+        wiz.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&wiz));
+        auto* tabs = wiz.findChild<QTabWidget*>();
+        QVERIFY(tabs);
+        int dry = -1;
+        for (int i = 0; i < tabs->count(); ++i)
+            if (tabs->tabText(i).startsWith(QStringLiteral("Dry run"))) dry = i;
+        QVERIFY(dry >= 0);
+        QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, {}, tabs->tabBar()->tabRect(dry).center());
+        QTRY_COMPARE(tabs->currentIndex(), dry);
+        int visible = 0;
+        for (QPushButton* b : wiz.findChildren<QPushButton*>())
+            if (b->isVisible() && b->text() == QStringLiteral("Save as script…")) ++visible;
+        QCOMPARE(visible, 1);
     }
 
     void previewListsMarksAndSaves() {
