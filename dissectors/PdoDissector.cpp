@@ -2,6 +2,7 @@
 // PDO (CiA 301 §7.2.2): the payload is the concatenation of the objects in the PDO's mapping
 // (1600h/1A00h + n), least significant bit first (§7.2.2.4), by the mapping in force in the
 // network context (dictionary defaults, then what SDO transfers of 14xxh..1Bxxh set).
+#include "core/od/NumberNotation.h"
 #include "dissectors/Ds402Meaning.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/Services.h"
@@ -142,7 +143,16 @@ void dissectPdo(DissectCall& c) {
                     if (c.data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << k;
                 }
             }
-            if (e.typeKnown && cls == od::TypeClass::Signed) {
+            if (e.hex) {  // controlword, statusword…: the bit pattern (od/NumberNotation.h)
+                sig.value.kind = FlatField::Kind::UInt;
+                sig.value.u = raw;
+                if (e.typeKnown && cls == od::TypeClass::Signed) {
+                    sig.value.kind = FlatField::Kind::Int;
+                    const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
+                    sig.value.i = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
+                }
+                s += od::hexValueText(e.index, e.sub, raw, e.bits);
+            } else if (e.typeKnown && cls == od::TypeClass::Signed) {
                 sig.value.kind = FlatField::Kind::Int;
                 if (e.bits < 64) {
                     const uint64_t sign = uint64_t(1) << (e.bits - 1);
@@ -162,6 +172,8 @@ void dissectPdo(DissectCall& c) {
             }
         } else {
             text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
+            if (e.hex && (sig.value.kind == FlatField::Kind::UInt || sig.value.kind == FlatField::Kind::Int))
+                text = od::hexValueText(e.index, e.sub, sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u, e.bits);
             s += text;
         }
         const int byteOff = at / 8;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/PdoMapping.h"
 
+#include "core/od/NumberNotation.h"
 #include "core/od/ObjectDictionary.h"
 
 namespace coscope::dissect {
@@ -34,6 +35,7 @@ PdoMapEntry makeMapEntry(uint32_t raw, const od::ObjectDictionary* dict) {
             }
         }
     }
+    e.hex = od::hexKindFor(e.index, e.sub) != od::HexKind::None;
     if (e.name.isEmpty())
         e.name = QStringLiteral("%1:%2").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).toUpper();
     return e;

@@ -23,6 +23,7 @@ struct PdoMapEntry {
     od::DataType type = od::DataType::Unsigned32;
     bool typeKnown = false;  // from the dictionary; otherwise unsigned of `bits`
     bool dummy = false;      // index 0001h..0007h: a gap (CiA 301 §7.4.7.1 dummy mapping)
+    bool hex = false;        // written in hex (controlword, statusword…: od/NumberNotation.h)
     QString name;
     QString unit;
     double factor = 1.0;

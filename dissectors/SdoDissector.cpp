@@ -4,6 +4,7 @@
 // reassembles transfers (SdoReassembly.cpp).
 #include "core/canopen/Sdo.h"
 #include "core/canopen/SdoAbort.h"
+#include "core/od/NumberNotation.h"
 #include "dissectors/Ds402Meaning.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/Services.h"
@@ -41,14 +42,22 @@ QString objectLabel(uint16_t index, uint8_t sub, const QString& name) {
 }
 
 // Types the value of an object with the dictionary, when the entry is known.
+// COB-IDs, mapping entries, control/statuswords… in hex (od/NumberNotation.h), the rest decimal.
 QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub, const uint8_t* data, int len, FlatField& v) {
     const od::SubObject* e = dict ? dict->entry(index, sub) : nullptr;
+    QString text;
     if (e) {
         const auto unit = dict->unit(index, sub);
-        return decodeValue(e->dataType, od::isKnownBasicType(e->dataType), data, len, v, unit ? unit->text : QString(),
+        text = decodeValue(e->dataType, od::isKnownBasicType(e->dataType), data, len, v, unit ? unit->text : QString(),
                            unit ? unit->factor : 1.0);
+    } else {
+        text = decodeValue(od::DataType::Unsigned32, false, data, len, v);
     }
-    return decodeValue(od::DataType::Unsigned32, false, data, len, v);
+    if ((v.kind == FlatField::Kind::UInt || v.kind == FlatField::Kind::Int) && len <= 8) {
+        const uint64_t raw = v.kind == FlatField::Kind::Int ? static_cast<uint64_t>(v.i) : v.u;
+        if (QString hex = od::hexValueText(index, sub, raw, len * 8); !hex.isEmpty()) return hex;
+    }
+    return text;
 }
 
 }  // namespace

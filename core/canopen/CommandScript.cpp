@@ -2,6 +2,7 @@
 #include "core/canopen/CommandScript.h"
 
 #include "core/canopen/Lss.h"
+#include "core/od/NumberNotation.h"
 
 #include <QFile>
 #include <QRegularExpression>
@@ -40,13 +41,21 @@ QString dataText(const QByteArray& data) {
     return parts.join(u' ');
 }
 
-// Data for people: "0006h" or "3 bytes 41 42 43".
+// A mask for people: "00FFh" or "3 bytes 41 42 43".
 QString dataHuman(const QByteArray& data) {
     const int n = static_cast<int>(data.size());
     if (n == 1 || n == 2 || n == 4) return hexDigits(fromLittleEndian(data), n * 2).toUpper() + u'h';
     QStringList parts;
     for (char c : data) parts << hexDigits(static_cast<uint8_t>(c), 2).toUpper();
     return QStringLiteral("%1 bytes %2").arg(n).arg(parts.join(u' ')).trimmed();
+}
+
+// The value of index:sub for people, by the app's one rule (od/NumberNotation.h): "60410010h",
+// "182h", "0006h" for COB-IDs, mappings, controlwords…, "1000" for quantities.
+QString valueHuman(uint16_t index, uint8_t sub, const QByteArray& data) {
+    const int n = static_cast<int>(data.size());
+    if (n == 1 || n == 2 || n == 4) return od::valueText(index, sub, fromLittleEndian(data), n * 8);
+    return dataHuman(data);
 }
 
 QString objectText(uint16_t index, uint8_t sub) { return QStringLiteral("0x%1:%2").arg(hexDigits(index, 4), hexDigits(sub, 2)); }
@@ -437,10 +446,11 @@ QString ScriptStep::toLine() const {
 
 QString ScriptStep::describe() const {
     switch (kind) {
-    case Kind::SdoWrite: return QStringLiteral("Write %1 = %2 on node %3").arg(objectHuman(index, sub), dataHuman(data)).arg(node);
+    case Kind::SdoWrite: return QStringLiteral("Write %1 = %2 on node %3").arg(objectHuman(index, sub), valueHuman(index, sub, data)).arg(node);
     case Kind::SdoRead: return QStringLiteral("Read %1 from node %2").arg(objectHuman(index, sub)).arg(node);
     case Kind::SdoExpect:
-        return mask.isEmpty() ? QStringLiteral("Check %1 = %2 on node %3").arg(objectHuman(index, sub), dataHuman(data)).arg(node)
+        // A masked check compares bits: value and mask in hex.
+        return mask.isEmpty() ? QStringLiteral("Check %1 = %2 on node %3").arg(objectHuman(index, sub), valueHuman(index, sub, data)).arg(node)
                               : QStringLiteral("Check %1 = %2 (mask %3) on node %4").arg(objectHuman(index, sub), dataHuman(data), dataHuman(mask)).arg(node);
     case Kind::Nmt:
         return node == 0 ? QStringLiteral("NMT %1 to all nodes").arg(nmtCommandName(static_cast<uint8_t>(nmt)))

@@ -93,7 +93,7 @@ private slots:
         QVERIFY(dock->readEntry(0x1018, 1));
         QVERIFY(waitFor([&] { return m->actualValue(0x1018, 1).has_value(); }));
         QCOMPARE(*m->actualValue(0x1018, 1)->toUInt64(), uint64_t(0x1DD));
-        QVERIFY(m->data(m->indexOf(0x1018, 1, OdTreeModel::Value), Qt::DisplayRole).toString().contains(QStringLiteral("0x000001DD")));
+        QVERIFY(m->data(m->indexOf(0x1018, 1, OdTreeModel::Value), Qt::DisplayRole).toString().contains(QStringLiteral("000001DDh")));
 
         // Read all: progress to completion, values in the rows.
         QVERIFY(dock->readAll());

@@ -8,10 +8,13 @@
 #include "app/gui/wizards/common/ScriptRunPanel.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/common/WizardGuard.h"
+#include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "core/canopen/SdoClient.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QPushButton>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -94,6 +97,53 @@ private slots:
         shot.save(QStringLiteral(COSCOPE_TEST_BINARY_DIR) + QStringLiteral("/wizard_frames_pane.png"));
     }
 
+    // Issue 12: step rows one text line high, so a 19-step plan shows at least 10 steps.
+    void previewRowsAreOneLineHigh() {
+        CommandScript s;
+        for (int i = 0; i < 19; ++i) {
+            ScriptStep st = ScriptStep::sdoWrite(3, 0x1A00, static_cast<uint8_t>(1 + i % 8), 0x60410010u, 4, {});
+            st.why = QStringLiteral("Mapping entry %1: the statusword (6041h, 16 bits) goes into the message at this place, "
+                                    "after the objects mapped before it, so the controller reads it there").arg(i + 1);
+            s.steps.push_back(st);
+        }
+        ScriptPreview preview;
+        preview.resize(1000, 420);
+        preview.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&preview));
+        preview.setScript(s);
+        auto* table = preview.findChild<QTableWidget*>(QStringLiteral("scriptSteps"));
+        QVERIFY(table);
+        QTest::qWait(50);
+        int visible = 0;
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QRect rect = table->visualRect(table->model()->index(r, 1));
+            if (rect.isValid() && table->viewport()->rect().contains(rect)) ++visible;
+        }
+        QVERIFY2(visible >= 10, qPrintable(QStringLiteral("%1 of 19 steps visible").arg(visible)));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("Write 1A00h:01 = 60410010h on node 3"));
+    }
+
+    // Issue 12: one "Save as script…" on the CiA 402 wizard's dry-run tab, not two.
+    void oneSaveButtonPerTab() {
+        Workspace w;
+        QVERIFY(connectSim(w, QStringLiteral("sim://?nodes=3:generic-cia402")));
+        Ds402Wizard wiz(&w, 3);
+        wiz.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&wiz));
+        auto* tabs = wiz.findChild<QTabWidget*>();
+        QVERIFY(tabs);
+        int dry = -1;
+        for (int i = 0; i < tabs->count(); ++i)
+            if (tabs->tabText(i).startsWith(QStringLiteral("Dry run"))) dry = i;
+        QVERIFY(dry >= 0);
+        QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, {}, tabs->tabBar()->tabRect(dry).center());
+        QTRY_COMPARE(tabs->currentIndex(), dry);
+        int visible = 0;
+        for (QPushButton* b : wiz.findChildren<QPushButton*>())
+            if (b->isVisible() && b->text() == QStringLiteral("Save as script…")) ++visible;
+        QCOMPARE(visible, 1);
+    }
+
     void previewListsMarksAndSaves() {
         ScriptPreview preview;
         preview.resize(1100, 300);
@@ -103,7 +153,7 @@ private slots:
         QCOMPARE(preview.rowCount(), 4);
         auto* table = preview.findChild<QTableWidget*>(QStringLiteral("scriptSteps"));
         QVERIFY(table);
-        QCOMPARE(table->item(1, 1)->text(), QStringLiteral("Write 1017h:00 = 02EEh on node 3"));
+        QCOMPARE(table->item(1, 1)->text(), QStringLiteral("Write 1017h:00 = 750 on node 3"));
         QCOMPARE(table->item(1, 2)->text(), QStringLiteral("sdo write 3 0x1017:00 0x02ee"));
         QCOMPARE(table->item(1, 3)->text(), QStringLiteral("Heartbeat every 750 ms"));
 

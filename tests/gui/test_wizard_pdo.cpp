@@ -6,6 +6,8 @@
 // the old mapping stays in force; the saved script parses and replays as a dry run in the CLI;
 // listen-only refuses.
 #include "app/gui/session/Workspace.h"
+#include <QAbstractButton>  // before ModalAnswer.h, which uses it
+#include "tests/gui/ModalAnswer.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
@@ -21,7 +23,10 @@
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
+#include <QLabel>
 #include <QProcess>
+#include <QPushButton>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -327,24 +332,79 @@ private slots:
         QVERIFY2(out.contains(QStringLiteral("1A00"), Qt::CaseInsensitive), qPrintable(out));
     }
 
-    void listenOnlyRefuses() {
+    // Issue 12 item 10: run the wizard by clicks on a virtual drive; the frames pane writes the
+    // mapping entries and COB-IDs as the rest of the app does (60410010h, 182h), not in decimal.
+    void framesPaneWritesHex() {
+        Live live;
+        QVERIFY(live.open(QStringLiteral("sim://?nodes=2:aimotor"), 2, QStringLiteral("aimotor")));
+        PdoWizard wiz(&live.ws, 2);
+        wiz.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&wiz));
+        QAbstractButton* next = wiz.button(QWizard::NextButton);
+        for (int i = 0; i < 3; ++i) {
+            QTRY_VERIFY_WITH_TIMEOUT(next->isEnabled() && next->isVisible(), 10000);
+            QTest::mouseClick(next, Qt::LeftButton);
+        }
+        QCOMPARE(wiz.currentId(), int(PdoWizard::ApplyPageId));
+        auto* apply = wiz.currentPage()->findChild<QPushButton*>(QStringLiteral("pdoApply"));
+        QVERIFY(apply && apply->isEnabled());
+        QTest::mouseClick(apply, Qt::LeftButton);
+        QVERIFY(waitApplied(wiz));
+        QCOMPARE(wiz.outcome(), PdoWizard::Outcome::Succeeded);
+        auto* pane = wiz.findChild<WizardFramesPane*>(QStringLiteral("pdoFrames"));
+        QVERIFY(pane);
+        auto paneText = [pane] {
+            QStringList rows;
+            for (int r = 0; r < pane->rowCount(); ++r) rows << pane->rowText(r);
+            return rows.join(u'\n');
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(paneText().contains(QStringLiteral("1A00:01")), 5000);
+        const QString all = paneText();
+        QVERIFY2(all.contains(QRegularExpression(QStringLiteral("1A00:01[^=\n]*= 60[0-9A-F]{6}h"))), qPrintable(all));
+        QVERIFY2(all.contains(QRegularExpression(QStringLiteral("1800:01[^=\n]*= 182h"))), qPrintable(all));
+        QVERIFY2(!all.contains(QRegularExpression(QStringLiteral("1A00:0[1-8][^=\n]*= \\d{6,}\\b"))), qPrintable(all));
+        wiz.grab().save(QStringLiteral(COSCOPE_TEST_BINARY_DIR) + QStringLiteral("/wizard_pdo_frames_hex.png"));
+    }
+
+    // Issue 12 item 8: on a listen-only bus the wizard is a dry run: Next works from the
+    // dictionary's defaults, the steps are prepared and saved as a script by clicks, Apply is
+    // disabled with the reason on the page, and nothing is transmitted.
+    void listenOnlyDryRun() {
         Live live;
         QVERIFY(live.open(QStringLiteral("sim://?nodes=2:aimotor&listen-only=1"), 2, QStringLiteral("aimotor")));
         PdoWizard wiz(&live.ws, 2);
         wiz.show();
-        QTest::qWait(200);
-        QVERIFY(!wiz.state().haveCurrent);
-        QVERIFY2(wiz.readError().contains(QStringLiteral("listen-only")), qPrintable(wiz.readError()));
-        QVERIFY(!wiz.choosePage()->isComplete());
-        // Even with a mapping to write, apply refuses before anything is sent.
-        wiz.state().haveCurrent = true;
-        wiz.state().wanted.entries = {{0x6041, 0, 16}};
-        wiz.state().wanted.cobId = 0x182;
-        QString why;
-        QVERIFY(!wiz.apply(&why));
-        QVERIFY2(why.contains(QStringLiteral("listen-only")), qPrintable(why));
+        QVERIFY(QTest::qWaitForWindowExposed(&wiz));
+        QAbstractButton* next = wiz.button(QWizard::NextButton);
+        for (int i = 0; i < 3; ++i) {
+            QTRY_VERIFY_WITH_TIMEOUT(next->isEnabled() && next->isVisible(), 5000);
+            QTest::mouseClick(next, Qt::LeftButton);
+        }
+        QCOMPARE(wiz.currentId(), int(PdoWizard::ApplyPageId));
+        QWizardPage* page = wiz.currentPage();
+        auto* apply = page->findChild<QPushButton*>(QStringLiteral("pdoApply"));
+        QVERIFY(apply && !apply->isEnabled());
+        bool reasonShown = false;
+        for (QLabel* l : page->findChildren<QLabel*>())
+            reasonShown = reasonShown || (l->isVisible() && l->text().contains(QStringLiteral("listen-only")));
+        QVERIFY(reasonShown);
+        QVERIFY(wiz.preview()->rowCount() > 2);
+        wiz.grab().save(QStringLiteral(COSCOPE_TEST_BINARY_DIR) + QStringLiteral("/wizard_pdo_listen_only.png"));
+
+        auto* save = page->findChild<QPushButton*>(QStringLiteral("saveScript"));
+        QVERIFY(save && save->isEnabled() && save->isVisible());
+        const QString path = dir_.filePath(QStringLiteral("listen-only-dry-run.txt"));
+        auto answer = coscope::testing::answerFileDialog(path);
+        QTest::mouseClick(save, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(path), 10000);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY2(text.contains(QStringLiteral("sdo write 2 0x1a00:01")), qPrintable(text));
+
+        QTest::mouseClick(apply, Qt::LeftButton);  // disabled: nothing happens
+        QTest::qWait(300);
         QVERIFY(!wiz.isApplying());
-        QTest::qWait(200);
         QCOMPARE(txFrames(*live.ws.store()), size_t(0));
     }
 };

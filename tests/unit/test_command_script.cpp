@@ -64,7 +64,7 @@ private slots:
         QCOMPARE(ScriptStep::sdoWrite(5, 0x6040, 0, 0x1234, 2, {}).data, QByteArray::fromHex("3412"));
         // A full mask is no mask.
         QVERIFY(ScriptStep::sdoExpect(5, 0x6041, 0, 0x27, 2, 0xFFFF, {}).mask.isEmpty());
-        QCOMPARE(ScriptStep::sdoWrite(5, 0x1600, 0, 0, 1, {}).describe(), QStringLiteral("Write 1600h:00 = 00h on node 5"));
+        QCOMPARE(ScriptStep::sdoWrite(5, 0x1600, 0, 0, 1, {}).describe(), QStringLiteral("Write 1600h:00 = 0 on node 5"));
     }
 
     void everyKindRoundTrips() {

@@ -3,6 +3,7 @@
 
 #include "core/canopen/Ds402.h"
 #include "core/canopen/DeviceConfiguration.h"
+#include "core/od/NumberNotation.h"
 
 #include <QBrush>
 #include <QColor>
@@ -106,11 +107,12 @@ QString OdTreeModel::valueText(const od::SubObject& e, const od::Value& v, bool 
         const QString mode = canopen::ds402::modeName(static_cast<int8_t>(v.toInt64().value_or(0)));
         return mode.isEmpty() ? v.format(e.dataType, o) : QStringLiteral("%1 (%2)").arg(v.format(e.dataType, o), mode);
     }
-    // Communication objects (COB-IDs, identity, device type) read best in hex.
-    if (e.index < 0x2000 && od::isInteger(e.dataType) && !od::isSigned(e.dataType) && od::bitSize(e.dataType) >= 32 && !dictionary_.unit(e.index, e.sub)) {
-        od::FormatOptions hex;
-        hex.hex = true;
-        return v.format(e.dataType, hex);
+    // COB-IDs, mapping entries, identity, control/statuswords…: hex by the app's one rule
+    // (od/NumberNotation.h); quantities decimal with their unit.
+    if (od::isInteger(e.dataType) && od::bitSize(e.dataType) <= 64) {
+        const auto raw = v.toInt64();
+        const uint64_t bits = raw ? static_cast<uint64_t>(*raw) : v.toUInt64().value_or(0);
+        if (QString hex = od::hexValueText(e.index, e.sub, bits, od::bitSize(e.dataType)); !hex.isEmpty()) return hex;
     }
     return v.format(e.dataType, o);
 }

@@ -27,7 +27,11 @@ ScriptPreview::ScriptPreview(QWidget* parent) : QWidget(parent) {
     table_->verticalHeader()->hide();
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setWordWrap(true);
+    // One text line per step, so a long plan shows ten and more steps at once; the full "why"
+    // is in the row's tooltip.
+    table_->setWordWrap(false);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     table_->horizontalHeader()->setSectionResizeMode(Why, QHeaderView::Stretch);
     const int digit = table_->fontMetrics().horizontalAdvance(QLatin1Char('0'));
@@ -74,7 +78,6 @@ void ScriptPreview::setScript(const canopen::CommandScript& script) {
         states_ << QString();
     }
     save_->setEnabled(!script.steps.empty());
-    table_->resizeRowsToContents();
 }
 
 const canopen::CommandScript& ScriptPreview::script() const { return script_; }

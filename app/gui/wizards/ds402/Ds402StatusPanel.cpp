@@ -2,6 +2,7 @@
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 
 #include "core/canopen/Ds402.h"
+#include "core/od/NumberNotation.h"
 
 #include <QGridLayout>
 #include <QLabel>
@@ -62,8 +63,7 @@ void Ds402StatusPanel::update(int bit) {
 void Ds402StatusPanel::setStatusword(uint16_t sw) {
     sw_ = sw;
     known_ = true;
-    word_->setText(tr("Statusword (6041h) = 0x%1 — %2").arg(QStringLiteral("%1").arg(sw, 4, 16, QChar(u'0')).toUpper(),
-                                                             canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw))));
+    word_->setText(tr("Statusword (6041h) = %1 — %2").arg(od::hexText(sw, 4), canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw))));
     for (int b = 0; b < 16; ++b) update(b);
 }
 

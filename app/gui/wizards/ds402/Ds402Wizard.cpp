@@ -298,15 +298,10 @@ void Ds402Wizard::buildUi() {
     auto* dryl = new QVBoxLayout(dry);
     preview_ = new ScriptPreview(dry);
     dryl->addWidget(preview_);
-    save_ = new QPushButton(tr("Save as script…"), dry);
-    connect(save_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save enable sequence"), QStringLiteral("ds402-enable-node%1.coscript").arg(node_));
-        if (path.isEmpty()) return;
-        QString error;
-        if (!preview_->saveTo(path, &error)) setMessage(tr("Could not save the script: %1").arg(error), true);
-        else setMessage(tr("Saved %1; replay it with: coscope-cli script run BUS %1").arg(path));
+    // The preview's own "Save as script…" is the tab's only one; say where the file went.
+    connect(preview_, &ScriptPreview::saved, this, [this](const QString& path) {
+        setMessage(tr("Saved %1; replay it with: coscope-cli script run BUS %1").arg(path));
     });
-    dryl->addWidget(save_, 0, Qt::AlignLeft);
     tabs_->addTab(dry, tr("Dry run (what will be sent)"));
     tabs_->setMinimumHeight(150);
     root->addWidget(tabs_, 2);

@@ -183,7 +183,6 @@ private:
     QPushButton* quickStop_ = nullptr;
     QPushButton* disable_ = nullptr;
     QPushButton* dryRun_ = nullptr;
-    QPushButton* save_ = nullptr;
     QTimer* poll_ = nullptr;
     QTimer* feed_ = nullptr;
 };

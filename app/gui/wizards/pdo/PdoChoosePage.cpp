@@ -137,7 +137,7 @@ void PdoChoosePage::showTarget() {
     current_->clear();
     std::vector<PdoFrameLayout::Field> fields;
     const QString refusal = wizard_->sendRefusal();
-    if (!refusal.isEmpty()) {
+    if (!refusal.isEmpty() && !s.haveCurrent) {
         status_->setText(refusal);
     } else if (s.node < 0) {
         status_->setText(tr("Waiting for a drive to appear on the bus…"));
@@ -148,10 +148,12 @@ void PdoChoosePage::showTarget() {
         status_->setText(tr("Could not read %1 of node %2: %3").arg(s.pdo.name()).arg(s.node).arg(wizard_->readError()));
     } else {
         const auto& c = s.current;
-        status_->setText(tr("Now in the drive: CAN-ID %1h%2. %3. %4 of 64 bits used.")
-                             .arg(QString::number(c.cobId & 0x1FFFFFFF, 16).toUpper(), c.valid() ? QString() : tr(" (switched off: COB-ID bit 31 set)"),
-                                  transmissionTypeText(c.transmissionType, s.pdo.transmit))
-                             .arg(c.totalBits()));
+        const QString what = tr("CAN-ID %1h%2. %3. %4 of 64 bits used.")
+                                 .arg(QString::number(c.cobId & 0x1FFFFFFF, 16).toUpper(), c.valid() ? QString() : tr(" (switched off: COB-ID bit 31 set)"),
+                                      transmissionTypeText(c.transmissionType, s.pdo.transmit))
+                                 .arg(c.totalBits());
+        status_->setText(s.fromDictionary ? tr("Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1").arg(what)
+                                          : tr("Now in the drive: %1").arg(what));
         int bit = 0;
         for (const auto& e : c.entries) {
             auto* item = new QTreeWidgetItem(current_);

@@ -100,6 +100,40 @@ QString PdoWizard::sendRefusal() const {
     return {};
 }
 
+bool PdoWizard::isDryRunOnly() const {
+    const CanBus* bus = workspace_->bus();
+    return bus && bus->isListenOnly() && workspace_->sdo() && workspace_->master();
+}
+
+// The PDO as the dictionary's defaults describe it (CiA 306 DefaultValue of 1400h-1BFFh), for a
+// dry run on a bus where the drive cannot be asked.
+bool PdoWizard::takeDictionaryDefaults() {
+    const od::ObjectDictionary* d = state_.dictionary.get();
+    if (!d) return false;
+    const auto node = static_cast<uint8_t>(state_.node);
+    auto value = [&](uint16_t index, uint8_t sub) -> std::optional<uint64_t> {
+        const od::SubObject* e = d->entry(index, sub);
+        if (!e) return std::nullopt;
+        const auto v = e->resolvedDefault(node);
+        return v ? v->toUInt64() : std::nullopt;
+    };
+    const auto count = value(state_.pdo.mappingIndex(), 0);
+    if (!count) return false;
+    canopen::PdoConfig c;
+    c.cobId = static_cast<uint32_t>(value(state_.pdo.communicationIndex(), 1).value_or(state_.pdo.defaultCobId(node)));
+    c.transmissionType = static_cast<uint8_t>(value(state_.pdo.communicationIndex(), 2).value_or(0xFF));
+    if (const auto t = value(state_.pdo.communicationIndex(), 3)) c.inhibitTime = static_cast<uint16_t>(*t);
+    if (const auto t = value(state_.pdo.communicationIndex(), 5)) c.eventTimer = static_cast<uint16_t>(*t);
+    for (uint64_t i = 1; i <= std::min<uint64_t>(*count, 64); ++i)
+        if (const auto raw = value(state_.pdo.mappingIndex(), static_cast<uint8_t>(i)); raw && *raw)
+            c.entries.push_back(canopen::PdoMapEntry::decode(static_cast<uint32_t>(*raw)));
+    state_.current = c;
+    state_.wanted = c;
+    state_.haveCurrent = true;
+    state_.fromDictionary = true;
+    return true;
+}
+
 canopen::PdoConfigurator* PdoWizard::configurator() {
     canopen::SdoClient* sdo = workspace_->sdo();
     if (!sdo || !workspace_->master()) return nullptr;
@@ -139,6 +173,7 @@ void PdoWizard::selectTarget(int node, canopen::PdoId pdo) {
     state_.node = node;
     state_.pdo = pdo;
     state_.haveCurrent = false;
+    state_.fromDictionary = false;
     state_.current = {};
     state_.wanted = {};
     readError_.clear();
@@ -150,6 +185,12 @@ void PdoWizard::selectTarget(int node, canopen::PdoId pdo) {
     if (!cfg) {
         reading_ = false;
         readError_ = refusal;
+        if (isDryRunOnly() && takeDictionaryDefaults()) {
+            setProperty("screenshotReady", true);
+            choose_->showTarget();
+            emit currentRead(true);
+            return;
+        }
         choose_->showTarget();
         emit currentRead(false);
         return;

@@ -54,6 +54,9 @@ public:
     QString readError() const { return readError_; }
     // Why the wizard may not send now ("" = it may): no bus, listen-only, closed.
     QString sendRefusal() const;
+    // Listen-only bus: the wizard prepares the steps from the dictionary's defaults and saves
+    // them as a script, but sends nothing (Apply disabled with the reason shown).
+    bool isDryRunOnly() const;
 
     // Options of the last page.
     void setStoreAfterApply(bool on);
@@ -86,6 +89,7 @@ private:
     canopen::PdoConfigurator* configurator();
     void dropServices();
     void loadDictionary(int node);
+    bool takeDictionaryDefaults();
     void finishApply(bool ok, const QString& text);
     void afterWrite(const canopen::PdoWriteResult& r);
     void runStoreAndStart(int row);

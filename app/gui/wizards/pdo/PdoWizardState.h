@@ -17,7 +17,8 @@ struct PdoWizardState {
     canopen::PdoId pdo{true, 1};
     QString dictionaryName;  // as matched or assigned in the node table ("" = none)
     std::shared_ptr<const od::ObjectDictionary> dictionary;
-    bool haveCurrent = false;    // `current` was read from the device
+    bool haveCurrent = false;    // `current` was read from the device (or taken from the dictionary)
+    bool fromDictionary = false; // listen-only dry run: `current` = the dictionary's defaults
     canopen::PdoConfig current;  // as read
     canopen::PdoConfig wanted;   // as edited (starts as a copy of `current`)
 
