@@ -5,6 +5,7 @@
 // it has answered or when it goes out of scope.
 #pragma once
 
+#include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QCompleter>
