@@ -195,6 +195,16 @@ private slots:
         QVERIFY2(r.out.contains(QStringLiteral("RPDO1  COB-ID 0x22A")) && r.out.contains(QStringLiteral("6040:00/16  Controlword (UNSIGNED16)")), qPrintable(r.out));
     }
 
+    // CiA 301 §7.5.2.9-11: 1008h, 1009h and 100Ah are optional. The peer has only 1008h: the
+    // scan shows the name, says the others are not present, and reports no error for the node.
+    void scanReadsOptionalObjectsQuietly() {
+        const Run r = cli({QStringLiteral("scan"), bus_, QStringLiteral("--nodes"), QStringLiteral("40-44")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("1 node(s) found")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("device name \"Peer drive 42\", hardware version not present, software version not present")), qPrintable(r.out));
+        QVERIFY2(!r.out.contains(u'['), qPrintable(r.out));  // no "[error]" on the node's line
+    }
+
     // A device's EDS wins over the standard: AIMOTOR's bundled EDS gives 1017h as UNSIGNED32,
     // the generic drive (as CiA 301) UNSIGNED16.
     void deviceDictionaryOverridesStandard() {
