@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli record BUS OUT [--count N] [--duration S]: streams the bus to a log in the format
-// OUT's extension names (.log candump -L, .asc, .trc, .pcapng, .csv; core/logio's writers); an
+// OUT's extension names (.log candump -L, .asc, .blf, .trc, .pcapng, .csv; core/logio's writers); an
 // extension without a writer is a usage error. The file is flushed at least every 100 ms, so a
 // crash or an unplugged adapter loses nothing that was received (text formats; binary ones get
 // their footer at the end); Ctrl-C / SIGTERM close the file cleanly.
@@ -30,12 +30,12 @@ static int runRecord(const QStringList& args) {
     QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Record a bus to a log file until --count, --duration, Ctrl-C or SIGTERM. The format is the one OUT's "
-                                                                 "extension names: .log (candump -L), .asc, .trc, .pcapng, .csv."));
+                                                                 "extension names: .log (candump -L), .asc, .blf, .trc, .pcapng, .csv."));
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://"));
-    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write: .log, .asc, .trc, .pcapng or .csv"));
+    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write: .log, .asc, .blf, .trc, .pcapng or .csv"));
     const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
-    const QCommandLineOption toOpt(QStringLiteral("to"), QStringLiteral("Output format: candump, asc, trc, pcapng, csv (default: from OUT's extension)."), QStringLiteral("FORMAT"));
+    const QCommandLineOption toOpt(QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv (default: from OUT's extension)."), QStringLiteral("FORMAT"));
     parser.addOption(countOpt);
     parser.addOption(durationOpt);
     parser.addOption(toOpt);
@@ -125,6 +125,6 @@ static int runRecord(const QStringList& args) {
     return finish(Ok, {});
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a log file (.log, .asc, .trc, .pcapng, .csv)."), runRecord});
+COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a log file (.log, .asc, .blf, .trc, .pcapng, .csv)."), runRecord});
 
 }  // namespace coscope::cli

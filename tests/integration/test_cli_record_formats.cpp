@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli record writes the format OUT's extension names: a known log replayed over
-// replay:// is recorded to .log, .asc, .trc, .pcapng and .csv and read back frame for frame
-// (the pcapng also by tshark); an extension without a writer is a usage error (exit 2).
+// replay:// is recorded to .log, .asc, .blf, .trc, .pcapng and .csv and read back frame for frame
+// (the pcapng also by tshark, the BLF also by python-can's BLFReader); an extension without a writer is a usage error (exit 2).
 #include "core/logio/LogFormats.h"
 #include "tests/CliRun.h"
 
@@ -69,6 +69,7 @@ private slots:
         QTest::addColumn<QString>("format");  // what the content says (LogFormats::detectContent)
         QTest::newRow("log") << QStringLiteral("log") << QStringLiteral("candump");
         QTest::newRow("asc") << QStringLiteral("asc") << QStringLiteral("asc");
+        QTest::newRow("blf") << QStringLiteral("blf") << QStringLiteral("blf");
         QTest::newRow("trc") << QStringLiteral("trc") << QStringLiteral("trc");
         QTest::newRow("pcapng") << QStringLiteral("pcapng") << QStringLiteral("pcap");
     }
@@ -118,6 +119,38 @@ private slots:
         const QStringList ids = QString::fromUtf8(ts.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
         QCOMPARE(ids.size(), kFrames);
         QCOMPARE(ids[2].toUInt(nullptr, 0), 0x12345678u);
+    }
+
+    // A third-party reader (python-can's can.BLFReader) sees the same frames.
+    void blfReadByPythonCan() {
+        QString py;
+        for (const QString& candidate : {QStringLiteral("/usr/bin/python3"), QStringLiteral("python3")}) {
+            QProcess p;
+            p.start(candidate, {QStringLiteral("-c"), QStringLiteral("import can")});
+            if (p.waitForFinished(20000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0) {
+                py = candidate;
+                break;
+            }
+        }
+        if (py.isEmpty()) QSKIP("python3-can is not installed");
+        const QString out = dir_.filePath(QStringLiteral("py.blf"));
+        const Run r = record(out);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QProcess p;
+        p.start(py, {QStringLiteral("-c"), QStringLiteral("import sys, can\n"
+                                                          "for m in can.BLFReader(sys.argv[1]):\n"
+                                                          "    print('%X%s%s#%s' % (m.arbitration_id, 'x' if m.is_extended_id else '', 'R' if m.is_remote_frame else '', bytes(m.data).hex()))"),
+                     out});
+        QVERIFY(p.waitForFinished(60000));
+        QVERIFY2(p.exitCode() == 0, qPrintable(QString::fromUtf8(p.readAllStandardError())));
+        const QStringList got = QString::fromUtf8(p.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
+        QStringList want;
+        for (QString e : expected_) {
+            const QString id = e.section(u'#', 0, 0).remove(u'x').remove(u'R');
+            want << QStringLiteral("%1%2%3#%4").arg(QString::number(id.toUInt(nullptr, 16), 16).toUpper(), e.section(u'#', 0, 0).contains(u'x') ? QStringLiteral("x") : QString(),
+                                                  e.section(u'#', 0, 0).contains(u'R') ? QStringLiteral("R") : QString(), e.section(u'#', 1));
+        }
+        QCOMPARE(got, want);
     }
 
     void unknownExtensionIsUsageError() {
