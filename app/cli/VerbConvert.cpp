@@ -19,7 +19,7 @@ static int runConvert(const QStringList& args) {
                        "pcapng (.pcapng) or CSV (.csv), chosen by OUT's extension or --to."));
     parser.addPositionalArgument(QStringLiteral("IN"), QStringLiteral("Input log file."));
     parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Output file."));
-    parser.addOption({QStringLiteral("to"), QStringLiteral("Output format: candump, asc, trc, pcapng, csv."), QStringLiteral("FORMAT")});
+    parser.addOption({QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv."), QStringLiteral("FORMAT")});
     int code = 0;
     if (!parseArgs(parser, verb, args, &code)) return code;
     const QStringList pos = parser.positionalArguments();

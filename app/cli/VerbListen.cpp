@@ -76,8 +76,13 @@ static int runListen(const QStringList& args) {
     while (!interrupted() && !deadline.hasExpired() && (count < 0 || printed < count)) {
         bus->waitForFrames(50);
         drain();
+        if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)
+            drain();
+            break;
+        }
         if (bus->state() == CanBus::State::Error) {
             drain();  // whatever arrived before the failure
+            if (count >= 0 && printed >= count) break;  // e.g. a replay that ended with its last frame
             const QString why = bus->errorString();
             bus->close();
             return failure(kVerb, why);

@@ -5,6 +5,7 @@
 #include "core/canopen/NmtMaster.h"
 #include "core/canopen/PdoConfigurator.h"
 #include "core/canopen/ServiceWait.h"
+#include "eds/StandardDictionary.h"
 
 #include <QTextStream>
 
@@ -20,7 +21,10 @@ void printPdo(QTextStream& out, const canopen::PdoReadResult& r, const od::Objec
     out << "  " << c.totalBits() << " bits\n";
     for (const auto& e : c.entries) {
         out << "    " << canopen::objectRef(e.index, e.sub) << "/" << e.bits;
-        if (dict && dict->entry(e.index, e.sub)) out << "  " << dict->displayName(e.index, e.sub) << " (" << od::dataTypeName(dict->entry(e.index, e.sub)->dataType) << ")";
+        // Names from the node's dictionary, else the CiA 301/402 standard objects.
+        const od::ObjectDictionary* names = nullptr;
+        if (const od::SubObject* entry = eds::entryWithStandard(dict, e.index, e.sub, &names))
+            out << "  " << names->displayName(e.index, e.sub) << " (" << od::dataTypeName(entry->dataType) << ")";
         out << "\n";
     }
 }

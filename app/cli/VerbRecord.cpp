@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// coscope-cli record BUS OUT.log [--count N] [--duration S]: streams the bus to a candump -L log.
-// Lines are flushed to the file at least every 100 ms, so a crash or an unplugged adapter loses
-// nothing that was received; Ctrl-C / SIGTERM close the file cleanly.
+// coscope-cli record BUS OUT [--count N] [--duration S]: streams the bus to a log in the format
+// OUT's extension names (.log candump -L, .asc, .blf, .trc, .pcapng, .csv; core/logio's writers); an
+// extension without a writer is a usage error. The file is flushed at least every 100 ms, so a
+// crash or an unplugged adapter loses nothing that was received (text formats; binary ones get
+// their footer at the end); Ctrl-C / SIGTERM close the file cleanly.
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
+#include "core/logio/LogFormats.h"
 
 #include <QDeadlineTimer>
 #include <QElapsedTimer>
-#include <QFile>
 #include <QLoggingCategory>
 
 #include <cstdio>
@@ -27,13 +29,16 @@ static int runRecord(const QStringList& args) {
     // the same failure through the bus error, in one line.
     QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Record a bus to a candump -L log file until --count, --duration, Ctrl-C or SIGTERM."));
+    parser.setApplicationDescription(QStringLiteral("Record a bus to a log file until --count, --duration, Ctrl-C or SIGTERM. The format is the one OUT's "
+                                                                 "extension names: .log (candump -L), .asc, .blf, .trc, .pcapng, .csv."));
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://"));
-    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write (candump -L format)"));
+    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write: .log, .asc, .blf, .trc, .pcapng or .csv"));
     const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
+    const QCommandLineOption toOpt(QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv (default: from OUT's extension)."), QStringLiteral("FORMAT"));
     parser.addOption(countOpt);
     parser.addOption(durationOpt);
+    parser.addOption(toOpt);
     int code = 0;
     if (!parseArgs(parser, kVerb, args, &code)) return code;
     const QStringList pos = parser.positionalArguments();
@@ -55,54 +60,48 @@ static int runRecord(const QStringList& args) {
     QString error;
     const auto url = BusUrl::parse(pos[0], &error);
     if (!url) return usageError(kVerb, error);
+    const QString format = logio::LogFormats::writerFormatFor(pos[1], parser.value(toOpt), &error);
+    if (format.isEmpty()) return usageError(kVerb, error);
     auto bus = createBus(*url, &error);
     if (!bus) return failure(kVerb, error);
 
-    QFile out(pos[1]);
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        return failure(kVerb, QStringLiteral("cannot write %1: %2").arg(pos[1], out.errorString()));
+    auto out = logio::LogFormats::createWriter(format);
+    if (!out->open(pos[1])) return failure(kVerb, out->errorString());
+    out->setBusNames({busInterfaceName(*url)});
 
     installInterruptHandler();
     bus->open();
     if (!bus->waitForOpen(kOpenWaitMs)) {
         const QString why = bus->errorString().isEmpty() ? QStringLiteral("cannot open %1: no answer").arg(url->toString()) : bus->errorString();
         bus->close();
-        out.close();
+        out->close();
         return failure(kVerb, why);
     }
 
-    const QString iface = busInterfaceName(*url);
     QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(512);
     qint64 written = 0;
     bool writeFailed = false;
     QElapsedTimer sinceFlush;
     sinceFlush.start();
-    QByteArray chunk;
     auto drain = [&] {
         for (;;) {
             const size_t n = bus->read(batch.data(), batch.size());
             if (n == 0) break;
-            for (size_t i = 0; i < n && (count < 0 || written < count); ++i, ++written) {
-                chunk += formatCandumpL(batch[i], iface).toUtf8();
-                chunk += '\n';
-            }
+            for (size_t i = 0; i < n && (count < 0 || written < count); ++i, ++written)
+                if (!out->write(batch[i])) writeFailed = true;
             if (count >= 0 && written >= count) break;
         }
-        if (!chunk.isEmpty() && !writeFailed) {
-            if (out.write(chunk) != chunk.size()) writeFailed = true;
-            chunk.clear();
-        }
         if (sinceFlush.elapsed() >= kFlushMs / 2) {  // waits are 50 ms: at most ~100 ms unflushed
-            out.flush();
+            if (!out->flush()) writeFailed = true;
             sinceFlush.restart();
         }
     };
     auto finish = [&](int exitCode, const QString& why) {
         drain();
-        out.flush();
-        out.close();
+        if (!out->close()) writeFailed = true;
         bus->close();
+        if (exitCode == Ok && writeFailed) return failure(kVerb, QStringLiteral("cannot write %1: %2").arg(pos[1], out->errorString()));
         if (exitCode != Ok) return failure(kVerb, why);
         std::fprintf(stderr, "coscope-cli record: %lld frames written to %s\n", static_cast<long long>(written), qPrintable(pos[1]));
         return exitCode;
@@ -112,15 +111,20 @@ static int runRecord(const QStringList& args) {
         bus->waitForFrames(50);
         drain();
         if (writeFailed)
-            return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out.errorString()).arg(written));
+            return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out->errorString()).arg(written));
+        if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)
+            drain();
+            break;
+        }
         if (bus->state() == CanBus::State::Error) {
             drain();
+            if (count >= 0 && written >= count) break;  // e.g. a replay that ended with its last frame
             return finish(Failure, QStringLiteral("%1; %2 frames kept in %3").arg(bus->errorString()).arg(written).arg(pos[1]));
         }
     }
     return finish(Ok, {});
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a candump -L log file."), runRecord});
+COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a log file (.log, .asc, .blf, .trc, .pcapng, .csv)."), runRecord});
 
 }  // namespace coscope::cli

@@ -53,6 +53,9 @@ static int runScan(const QStringList& args) {
             << hex32(n.serial) << "  " << (n.dictionary.isEmpty() ? QStringLiteral("(no match)") : n.dictionary);
         if (!n.error.isEmpty()) out << "  [" << n.error << "]";
         out << "\n";
+        // Optional objects (CiA 301 §7.5.2.9-11): a node without them is normal.
+        const auto text = [](const std::optional<QString>& v) { return v ? QStringLiteral("\"%1\"").arg(*v) : QStringLiteral("not present"); };
+        out << "      device name " << text(n.deviceName) << ", hardware version " << text(n.hardwareVersion) << ", software version " << text(n.softwareVersion) << "\n";
     }
     out << found->size() << " node(s) found\n";
     return Ok;

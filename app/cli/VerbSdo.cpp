@@ -5,6 +5,7 @@
 #include "app/cli/CliVerb.h"
 #include "core/canopen/ServiceWait.h"
 #include "core/od/Value.h"
+#include "eds/StandardDictionary.h"
 
 #include <QTextStream>
 
@@ -31,8 +32,9 @@ struct Target {
     od::Limits limits;
 };
 
-// Resolves type and name: --type wins for the type; names come from the dictionary when one
-// is known (given or matched).
+// Resolves type and name: --type wins for the type; names and types come from the node's
+// dictionary (given or matched by identity), else from the CiA 301/402 standard objects
+// (eds::standardDictionary), so a node without a dictionary still shows 1008h as text.
 bool resolve(BusSession& s, Target& t, const QCommandLineParser& p, const Common& c, QString* error) {
     if (p.isSet(c.type)) {
         t.type = od::dataTypeFromString(p.value(c.type));
@@ -40,22 +42,20 @@ bool resolve(BusSession& s, Target& t, const QCommandLineParser& p, const Common
             *error = QStringLiteral("unknown data type '%1'").arg(p.value(c.type));
             return false;
         }
-        if (!p.isSet(c.dict)) return true;
     }
     QString dictName, why;
-    auto dict = s.nodeDictionary(t.node, p.value(c.dict), &dictName, &why);
-    if (!dict) {
-        if (p.isSet(c.dict)) {
-            *error = why;
-            return false;
-        }
-        return true;  // shown as bytes
+    std::optional<od::ObjectDictionary> dict;
+    if (!t.type || p.isSet(c.dict)) dict = s.nodeDictionary(t.node, p.value(c.dict), &dictName, &why);
+    if (!dict && p.isSet(c.dict)) {
+        *error = why;
+        return false;
     }
-    const od::SubObject* e = dict->entry(t.index, t.sub);
-    if (!e) return true;
-    t.name = dict->displayName(t.index, t.sub);
+    const od::ObjectDictionary* names = nullptr;
+    const od::SubObject* e = eds::entryWithStandard(dict ? &*dict : nullptr, t.index, t.sub, &names);
+    if (!e) return true;  // shown as bytes
+    t.name = names->displayName(t.index, t.sub);
     if (!t.type) t.type = e->dataType;
-    if (auto u = dict->unit(t.index, t.sub)) {
+    if (auto u = names->unit(t.index, t.sub)) {
         t.unit = u->text;
         t.factor = u->factor;
     }

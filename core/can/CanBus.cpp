@@ -23,8 +23,16 @@ CanBus::~CanBus() = default;
 bool CanBus::waitForOpen(int timeoutMs) {
     QDeadlineTimer deadline(timeoutMs);
     for (;;) {
-        const State s = state();
+        State s;
+        bool reachedOpen = false;
+        {
+            std::lock_guard lock(stateMutex_);
+            s = state_;
+            reachedOpen = reachedOpen_;
+        }
         if (s == State::Open) return true;
+        // Opened and already closed again (a short replay): what it delivered is in the ring.
+        if (s == State::Closed && reachedOpen) return true;
         if (s == State::Error || s == State::Closed) {
             // Closed right after open() means the backend has not started yet; give it the time.
             if (s == State::Error) return false;
@@ -98,6 +106,8 @@ void CanBus::setState(State state, const QString& error) {
         std::lock_guard lock(stateMutex_);
         changed = state_ != state;
         state_ = state;
+        if (state == State::Opening) reachedOpen_ = false;
+        if (state == State::Open) reachedOpen_ = true;
         if (!error.isEmpty()) error_ = error;
         else if (state == State::Open) error_.clear();
     }

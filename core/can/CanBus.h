@@ -46,7 +46,8 @@ public:
     virtual void close() = 0;
 
     // Waits until the bus is Open (true) or failed/closed (false), processing events of the
-    // calling thread meanwhile. For the CLI and tests; the GUI listens to stateChanged instead.
+    // calling thread meanwhile; true also when it opened and already closed (a short replay whose
+    // frames wait in the ring). For the CLI and tests; the GUI listens to stateChanged instead.
     bool waitForOpen(int timeoutMs);
 
     // Sends one frame. Listen-only is enforced here, in one place for every backend: a bus opened
@@ -82,6 +83,7 @@ private:
     FrameRing ring_;
     mutable std::mutex stateMutex_;
     State state_ = State::Closed;
+    bool reachedOpen_ = false;  // since the last Opening: a replay may open and finish before anyone looks
     QString error_;
     std::atomic<uint64_t> rx_{0};
     std::atomic<uint64_t> tx_{0};

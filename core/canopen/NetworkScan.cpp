@@ -65,22 +65,7 @@ void NetworkScan::probe(uint8_t node) {
 }
 
 void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) {
-    if (sub > 4) {
-        if (matcher_ && found->vendorId && found->productCode) found->dictionary = matcher_(*found->vendorId, *found->productCode, found->revision);
-        if (table_) {
-            NodeInfo& info = (*table_)[found->node];
-            info.present = true;
-            info.deviceType = found->deviceType;
-            info.vendorId = found->vendorId;
-            info.productCode = found->productCode;
-            info.revision = found->revision;
-            info.serial = found->serial;
-            info.dictionary = found->dictionary;
-        }
-        if (!found->dictionary.isEmpty()) sdo_.context().setNodeDictionary(found->node, found->dictionary);
-        found_.push_back(*found);
-        return nodeDone();
-    }
+    if (sub > 4) return readStrings(found, 0);
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
@@ -99,6 +84,43 @@ void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) 
         }
         self->readIdentity(found, static_cast<uint8_t>(sub + 1));
     }, o);
+}
+
+// 1008h device name, 1009h hardware version, 100Ah software version: VISIBLE_STRING, optional.
+void NetworkScan::readStrings(std::shared_ptr<ScannedNode> found, int which) {
+    static constexpr uint16_t kIndex[] = {0x1008, 0x1009, 0x100A};
+    if (which >= 3) return finishNode(found);
+    SdoOptions o;
+    o.timeoutMs = timeoutMs_;
+    QPointer<NetworkScan> self(this);
+    sdo_.upload(found->node, kIndex[which], 0, [self, found, which](const SdoResult& r) {
+        if (!self) return;
+        if (r.ok) {
+            const QString text = QString::fromUtf8(r.data).section(QChar(0), 0, 0);  // some devices pad with NULs
+            (which == 0 ? found->deviceName : which == 1 ? found->hardwareVersion : found->softwareVersion) = text;
+        }
+        self->readStrings(found, which + 1);
+    }, o);
+}
+
+void NetworkScan::finishNode(std::shared_ptr<ScannedNode> found) {
+    if (matcher_ && found->vendorId && found->productCode) found->dictionary = matcher_(*found->vendorId, *found->productCode, found->revision);
+    if (table_) {
+        NodeInfo& info = (*table_)[found->node];
+        info.present = true;
+        info.deviceType = found->deviceType;
+        info.vendorId = found->vendorId;
+        info.productCode = found->productCode;
+        info.revision = found->revision;
+        info.serial = found->serial;
+        info.deviceName = found->deviceName;
+        info.hardwareVersion = found->hardwareVersion;
+        info.softwareVersion = found->softwareVersion;
+        info.dictionary = found->dictionary;
+    }
+    if (!found->dictionary.isEmpty()) sdo_.context().setNodeDictionary(found->node, found->dictionary);
+    found_.push_back(*found);
+    nodeDone();
 }
 
 void NetworkScan::nodeDone() {

@@ -19,12 +19,16 @@ struct ScannedNode {
     uint8_t node = 0;
     uint32_t deviceType = 0;
     std::optional<uint32_t> vendorId, productCode, revision, serial;
+    // Optional CiA 301 objects (§7.5.2.9-11), read quietly: nullopt = the node does not have it
+    // (aborted or no answer), which is normal and not an error.
+    std::optional<QString> deviceName, hardwareVersion, softwareVersion;  // 1008h, 1009h, 100Ah
     QString dictionary;  // empty when nothing matched
     QString error;       // 1018h could not be read (the node answered 1000h)
 };
 
 // Finds the nodes on a bus by reading 1000h (device type, mandatory, CiA 301 §7.5.2.1) of
-// nodes first..last over SDO, then 1018h sub 1..4 of each that answered. Rate-limited: at most
+// nodes first..last over SDO, then 1018h sub 1..4 of each that answered, then the optional
+// 1008h, 1009h and 100Ah (a node without them is "not present" there, not in error). Rate-limited: at most
 // `maxOutstanding` requests in flight and at least `intervalMs` between two new requests, so a
 // scan never floods a production bus. No request is retried. The dictionary is matched by a
 // function the caller gives (the eds layer's library; core cannot see it).
@@ -52,6 +56,8 @@ private:
     void launchMore();
     void probe(uint8_t node);
     void readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub);
+    void readStrings(std::shared_ptr<ScannedNode> found, int which);
+    void finishNode(std::shared_ptr<ScannedNode> found);
     void nodeDone();
 
     SdoClient& sdo_;

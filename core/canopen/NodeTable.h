@@ -23,6 +23,7 @@ struct NodeInfo {
     int guardingErrors = 0;               // missing or wrong-toggle guarding answers
     std::optional<uint32_t> deviceType;   // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
+    std::optional<QString> deviceName, hardwareVersion, softwareVersion;  // 1008h, 1009h, 100Ah; nullopt = not present
     QString dictionary;                   // matched dictionary name
 };
 

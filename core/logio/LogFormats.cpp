@@ -19,7 +19,7 @@ const std::vector<LogFormatInfo>& all() {
         {QStringLiteral("candump"), QStringLiteral("can-utils candump (-L log files and default text)"),
          {QStringLiteral("log"), QStringLiteral("candump"), QStringLiteral("txt")}, true, true},
         {QStringLiteral("asc"), QStringLiteral("Vector ASCII log"), {QStringLiteral("asc")}, true, true},
-        {QStringLiteral("blf"), QStringLiteral("Vector binary log"), {QStringLiteral("blf")}, true, false},
+        {QStringLiteral("blf"), QStringLiteral("Vector binary log"), {QStringLiteral("blf")}, true, true},
         {QStringLiteral("trc"), QStringLiteral("PEAK trace 1.0-2.1 (writes 2.1)"), {QStringLiteral("trc")}, true, true},
         {QStringLiteral("pcap"), QStringLiteral("pcap/pcapng, SocketCAN link type (writes pcapng)"),
          {QStringLiteral("pcapng"), QStringLiteral("pcap")}, true, true},
@@ -121,6 +121,7 @@ std::unique_ptr<LogWriter> createWriter(const QString& format) {
     const QString f = format.toLower();
     if (f == u"candump" || f == u"log") return std::make_unique<CandumpWriter>();
     if (f == u"asc") return std::make_unique<AscWriter>();
+    if (f == u"blf") return std::make_unique<BlfWriter>();
     if (f == u"trc") return std::make_unique<TrcWriter>();
     if (f == u"pcapng" || f == u"pcap") return std::make_unique<PcapngWriter>();
     if (f == u"csv") return std::make_unique<CsvWriter>();
@@ -132,17 +133,17 @@ QString writerFormatFor(const QString& outputPath, const QString& explicitFormat
     if (f.isEmpty()) {
         const QString ext = QFileInfo(outputPath).suffix().toLower();
         if (ext == u"log" || ext == u"candump") f = QStringLiteral("candump");
-        else if (ext == u"asc" || ext == u"trc" || ext == u"csv") f = ext;
+        else if (ext == u"asc" || ext == u"blf" || ext == u"trc" || ext == u"csv") f = ext;
         else if (ext == u"pcapng" || ext == u"pcap") f = QStringLiteral("pcapng");
         if (f.isEmpty()) {
             if (error)
-                *error = QStringLiteral("cannot tell the output format from '%1'; use .log, .asc, .trc, .pcapng or .csv, or --to FORMAT")
+                *error = QStringLiteral("cannot tell the output format from '%1'; use .log, .asc, .blf, .trc, .pcapng or .csv, or --to FORMAT")
                              .arg(outputPath);
             return {};
         }
     }
     if (!createWriter(f)) {
-        if (error) *error = QStringLiteral("unknown output format '%1'; use candump, asc, trc, pcapng or csv").arg(f);
+        if (error) *error = QStringLiteral("unknown output format '%1'; use candump, asc, blf, trc, pcapng or csv").arg(f);
         return {};
     }
     return f == u"log" ? QStringLiteral("candump") : f == u"pcap" ? QStringLiteral("pcapng") : f;

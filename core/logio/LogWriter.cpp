@@ -71,6 +71,7 @@ bool LogWriter::write(const CanFrame& frame, const QString& summary) {
 
 bool LogWriter::flush() {
     if (!device_) return false;
+    beforeFlush();
     if (!buffer_.isEmpty()) {
         if (device_->write(buffer_) != buffer_.size()) {
             if (error_.isEmpty()) error_ = QStringLiteral("write failed: %1").arg(device_->errorString());
@@ -87,7 +88,11 @@ bool LogWriter::close() {
     if (!device_ || closed_) return !hasError();
     ensureHeader(nullptr);
     writeFooter();
-    const bool ok = flush();
+    bool ok = flush();
+    if (ok && !device_->isSequential()) {
+        patchHeader(*device_);
+        if (auto* file = qobject_cast<QFileDevice*>(device_)) ok = file->flush();
+    }
     closed_ = true;
     if (owned_) owned_->close();
     return ok;

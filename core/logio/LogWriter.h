@@ -44,6 +44,11 @@ protected:
     virtual void writeFrame(const CanFrame& frame, const QString& summary) = 0;
     virtual void writeFooter() {}
     virtual bool wantsSummary() const { return false; }
+    // Formats that hold frames back (BLF containers) move them to out() here; called by flush().
+    virtual void beforeFlush() {}
+    // After the last flush on a seekable device: formats with totals in their header (BLF)
+    // write it again. The device is positioned at the end on return.
+    virtual void patchHeader(QIODevice& /*device*/) {}
 
     QByteArray& out() { return buffer_; }
     QString busName(uint8_t bus) const;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/logio/LogReader.h"
+#include "core/logio/LogWriter.h"
 
 namespace coscope::logio {
 
@@ -32,6 +33,32 @@ private:
     QByteArray pending_;  // uncompressed object bytes not parsed yet
     qsizetype pendingPos_ = 0;
     bool eof_ = false;
+};
+
+// Writes BLF as the reader above reads it: the 144-byte "LOGG" header (start time of the first
+// frame, local time, ms; file size, object count and stop time patched in at close when the
+// device is seekable), then zlib-compressed LOG_CONTAINERs of at most 128 KiB holding
+// CAN_MESSAGE (1) for classic frames, CAN_FD_MESSAGE (100) for FD frames and CAN_ERROR (2) for
+// error frames, object header v1 with 1 ns timestamps relative to the start. Channels from 1.
+class BlfWriter : public LogWriter {
+public:
+    QString formatName() const override { return QStringLiteral("blf"); }
+
+protected:
+    void writeHeader(const CanFrame* first) override;
+    void writeFrame(const CanFrame& frame, const QString& summary) override;
+    void beforeFlush() override;
+    void patchHeader(QIODevice& device) override;
+
+private:
+    QByteArray header() const;
+    void closeContainer();
+
+    int64_t startNs_ = 0;
+    int64_t lastNs_ = 0;
+    QByteArray container_;  // uncompressed objects of the open container
+    uint64_t fileSize_ = 0, uncompressed_ = 0;
+    uint32_t objects_ = 0;
 };
 
 }  // namespace coscope::logio

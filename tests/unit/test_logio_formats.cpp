@@ -10,6 +10,7 @@
 #include "core/logio/VectorBlf.h"
 
 #include <QBuffer>
+#include <QtEndian>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -349,6 +350,37 @@ private slots:
             QCOMPARE(f[0].len, uint8_t(2));
             QCOMPARE(f[0].data[1], uint8_t(0xFE));
         }
+    }
+
+    void blfRoundTrip() {
+        const auto frames = sampleFrames();
+        BlfWriter w;
+        const QByteArray bytes = writeAll(w, frames);
+        QVERIFY(bytes.startsWith("LOGG"));
+        QCOMPARE(qFromLittleEndian<quint64>(bytes.constData() + 16), quint64(bytes.size()));  // file size patched in at close
+        QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 32), quint32(frames.size()));   // object count
+        BlfReader r;
+        const auto back = readBytes(r, bytes);
+        QVERIFY2(r.diagnostics().empty(), r.diagnostics().empty() ? "" : qPrintable(r.diagnostics()[0].message));
+        QVERIFY(!r.hasError());
+        compareFrames(back, frames, true, true);
+    }
+
+    void blfManyContainersAndErrorFrames() {
+        std::vector<CanFrame> frames;
+        for (int i = 0; i < 20000; ++i) frames.push_back(frame(1700000000000000000LL + i * 100000LL, uint32_t(0x180 + (i % 127)), {uint8_t(i), uint8_t(i >> 8)}));
+        frames.push_back(errorFrame(frames.back().timestampNs + 1000));
+        BlfWriter w;
+        const QByteArray bytes = writeAll(w, frames);
+        QVERIFY(bytes.size() < int(frames.size()) * 48 / 2);  // compressed
+        BlfReader r;
+        const auto back = readBytes(r, bytes);
+        QVERIFY(r.diagnostics().empty());
+        QCOMPARE(back.size(), frames.size());
+        QCOMPARE(back[12345].id, frames[12345].id);
+        QCOMPARE(back[12345].data[0], frames[12345].data[0]);
+        QCOMPARE(back[12345].timestampNs, frames[12345].timestampNs);
+        QVERIFY(back.back().isError());
     }
 
     void blfHandMade() {
