@@ -59,7 +59,7 @@ QString valueHuman(uint16_t index, uint8_t sub, const QByteArray& data) {
 }
 
 QString objectText(uint16_t index, uint8_t sub) { return QStringLiteral("0x%1:%2").arg(hexDigits(index, 4), hexDigits(sub, 2)); }
-QString objectHuman(uint16_t index, uint8_t sub) { return QStringLiteral("%1h:%2").arg(hexDigits(index, 4).toUpper(), hexDigits(sub, 2).toUpper()); }
+QString objectHuman(uint16_t index, uint8_t sub) { return od::objectText(index, sub); }
 
 QString nmtWord(NmtCommand c) {
     switch (c) {

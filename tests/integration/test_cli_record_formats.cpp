@@ -4,6 +4,7 @@
 // (the pcapng also by tshark, the BLF also by python-can's BLFReader); an extension without a writer is a usage error (exit 2).
 #include "core/logio/LogFormats.h"
 #include "tests/CliRun.h"
+#include "tests/PythonCan.h"
 
 #include <QFile>
 #include <QStandardPaths>
@@ -123,15 +124,7 @@ private slots:
 
     // A third-party reader (python-can's can.BLFReader) sees the same frames.
     void blfReadByPythonCan() {
-        QString py;
-        for (const QString& candidate : {QStringLiteral("/usr/bin/python3"), QStringLiteral("python3")}) {
-            QProcess p;
-            p.start(candidate, {QStringLiteral("-c"), QStringLiteral("import can")});
-            if (p.waitForFinished(20000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0) {
-                py = candidate;
-                break;
-            }
-        }
+        const QString py = pythonWithCan(QStringLiteral("can"));
         if (py.isEmpty()) QSKIP("python3-can is not installed");
         const QString out = dir_.filePath(QStringLiteral("py.blf"));
         const Run r = record(out);

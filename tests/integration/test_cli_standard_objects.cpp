@@ -6,6 +6,7 @@
 // (expectations from CiA 301 7.5.2 and CiA 402-2, not from CoScope's output); a device's own
 // EDS still wins where it differs (AIMOTOR's 1017h is UNSIGNED32 in its bundled EDS).
 #include "tests/CliRun.h"
+#include "tests/PythonCan.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -13,15 +14,6 @@
 #include <QtTest>
 
 namespace {
-
-QString pythonWithCan() {
-    for (const QString& py : {QStringLiteral("/usr/bin/python3"), QStringLiteral("python3")}) {
-        QProcess p;
-        p.start(py, {QStringLiteral("-c"), QStringLiteral("import can.interfaces.socketcand")});
-        if (p.waitForFinished(20000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0) return py;
-    }
-    return {};
-}
 
 // A CiA 301 SDO server (expedited and segmented, 7.2.4.3) with raw bytes per object and no
 // notion of types, like a small slave stack; every download is printed as it arrived.

@@ -1,23 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // python-can (Debian python3-can) talks to `coscope-cli sim` through its socketcand interface:
 // it reads 1018h with raw SDO frames and receives TPDOs.
+#include "tests/PythonCan.h"
+
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
 namespace {
-
-// A python that has python-can: Debian's /usr/bin/python3 first (a pyenv/venv python3 on PATH
-// usually lacks the Debian module), then python3 from PATH.
-QString pythonWithCan() {
-    for (const QString& py : {QStringLiteral("/usr/bin/python3"), QStringLiteral("python3")}) {
-        QProcess p;
-        p.start(py, {QStringLiteral("-c"), QStringLiteral("import can.interfaces.socketcand")});
-        if (p.waitForFinished(20000) && p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0) return py;
-    }
-    return {};
-}
 
 const char* kScript = R"PY(
 import sys, time, can
