@@ -15,6 +15,7 @@
 #include "app/gui/od/OdTreeModel.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
@@ -153,6 +154,15 @@ QPushButton* buttonNamed(QWidget* w, const QString& text) {
         if (b->text() == text && b->isVisible()) return b;
     return nullptr;
 }
+// Whether the wizard's frames pane shows its newest row (the last request or answer) where
+// the user looks, at the bottom of the pane.
+bool paneShowsNewest(QWidget* wizard) {
+    auto* pane = wizard->findChild<WizardFramesPane*>();
+    auto* view = pane ? pane->findChild<QTableView*>(QStringLiteral("wizardFrames")) : nullptr;
+    if (!view || !view->isVisible() || view->model()->rowCount() == 0) return false;
+    const QRect last = view->visualRect(view->model()->index(view->model()->rowCount() - 1, 0));
+    return last.isValid() && view->viewport()->rect().contains(last);
+}
 // With COSCOPE_GRAB_DIR set, saves the window as NAME.png there (README pictures of each step).
 void shot(QWidget* w, const char* name) {
     const QString dir = qEnvironmentVariable("COSCOPE_GRAB_DIR");
@@ -285,6 +295,7 @@ private slots:
         QVERIFY2(waitFor([&] { return wiz->outcome() != PdoWizard::Outcome::None && !wiz->isApplying(); }, 30000), qPrintable(result->text()));
         QVERIFY2(wiz->outcome() == PdoWizard::Outcome::Succeeded, qPrintable(result->text()));
         QVERIFY2(result->isVisible() && !result->text().isEmpty(), qPrintable(result->text()));
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the apply's frames");
         shot(wiz, "wizard-pdo-4-applied");
 
         // The drive itself now maps 606Ch, 6041h into TPDO2.
@@ -343,6 +354,7 @@ private slots:
         QVERIFY2(waitFor([&] { return wiz->outcome() != NodeIdWizard::Outcome::None && !wiz->isRunning(); }, 30000), qPrintable(status->text()));
         QVERIFY2(wiz->outcome() == NodeIdWizard::Outcome::Succeeded, qPrintable(status->text()));
         QVERIFY2(status->text().contains(QStringLiteral("node-ID 7")), qPrintable(status->text()));
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the change's frames");
         shot(wiz, "wizard-nodeid-4-done");
         QAbstractButton* finish = wiz->button(QWizard::FinishButton);
         QVERIFY(finish->isVisible() && finish->isEnabled());
@@ -375,6 +387,10 @@ private slots:
         shot(wiz, "wizard-ds402-1-disabled");
         QVERIFY(enableByClicks(wiz, 1));
         QVERIFY2(statuswordShown(wiz).contains(QStringLiteral("Operation enabled")), qPrintable(statuswordShown(wiz)));
+        // The message under the steps writes the statusword as the rest of the app does (0637h).
+        const QString said = wiz->findChild<QLabel*>(QStringLiteral("message"))->text();
+        QVERIFY2(said.contains(QStringLiteral("statusword 0637h")) && !said.contains(QStringLiteral("0x")), qPrintable(said));
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the steps' frames");
         shot(wiz, "wizard-ds402-2-enabled");
         click(wiz->disableButton());
         QVERIFY(waitFor([&] { return driveState(1) == State::SwitchOnDisabled; }, 5000));

@@ -126,6 +126,10 @@ struct WizardFramesPane::Private {
     std::shared_ptr<TraceStore> store;  // the store being followed (replaced with the source)
     size_t next = 0;                    // next frame number to examine
     int node = -1;
+    // The view follows the newest row until the user scrolls away from the end, and again once
+    // they scroll back to it. Kept as a flag (not read off the scroll bar when rows come): a
+    // pane moved to a smaller page, or shown again, keeps following.
+    bool follow = true;
     dissect::Dissection scratch;
 
     bool wanted(const TraceRecord& r) const {
@@ -195,6 +199,12 @@ WizardFramesPane::WizardFramesPane(Workspace* workspace, QWidget* parent) : QWid
     layout->addWidget(title);
     layout->addWidget(d_->view);
 
+    QScrollBar* bar = d_->view->verticalScrollBar();
+    connect(bar, &QScrollBar::valueChanged, this, [this, bar](int value) { d_->follow = value >= bar->maximum() - 2; });
+    connect(bar, &QScrollBar::rangeChanged, this, [this] {
+        if (d_->follow) d_->view->scrollToBottom();
+    });
+
     d_->timer = new QTimer(this);
     d_->timer->setInterval(kPollMs);
     connect(d_->timer, &QTimer::timeout, this, &WizardFramesPane::poll);
@@ -233,10 +243,9 @@ void WizardFramesPane::poll() {
         if (d_->wanted(d_->store->record(static_cast<FrameNo>(n)))) rows.push_back(d_->makeRow(static_cast<FrameNo>(n)));
     d_->next = end;
     if (rows.empty()) return;
-    QScrollBar* bar = d_->view->verticalScrollBar();
-    const bool atBottom = bar->value() >= bar->maximum() - 2;
+    const bool follow = d_->follow;
     d_->model.append(std::move(rows));
-    if (atBottom) d_->view->scrollToBottom();
+    if (follow) d_->view->scrollToBottom();
 }
 
 int WizardFramesPane::rowCount() const { return d_->model.rowCount(); }

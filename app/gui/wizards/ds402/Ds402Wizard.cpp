@@ -685,7 +685,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         if (r.ok) {
             self->busy_ = false;
             self->showState(r.state, r.statusword);
-            self->setMessage(tr("%1 done: the drive is now in %2 (statusword 0x%3).").arg(name, canopen::ds402::stateName(r.state), hex4(r.statusword)));
+            self->setMessage(tr("%1 done: the drive is now in %2 (statusword %3h).").arg(name, canopen::ds402::stateName(r.state), hex4(r.statusword)));
             self->poll_->start();  // the next idle read one full interval from now
             emit self->stepFinished(true);
             return;
@@ -745,7 +745,7 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         return false;
     }
     if (supported_ && !canopen::ds402::modeSupported(*supported_, mode)) {
-        if (why) *why = tr("The drive does not list %1 as supported (6502h = 0x%2).").arg(canopen::ds402::modeName(mode)).arg(*supported_, 8, 16, QChar(u'0'));
+        if (why) *why = tr("The drive does not list %1 as supported (6502h = %2h).").arg(canopen::ds402::modeName(mode)).arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
         return false;
     }
     busy_ = true;
