@@ -150,6 +150,10 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
         const int pdoIndex = canopen::pdoNumber(scratch_.service);
         if (pdoIndex < 0 || f.isRemote() || scratch_.node < 1 || scratch_.node > 127) continue;
         const bool tpdo = canopen::isTpdo(scratch_.service);
+        if (pdoKeys_.insert(uint64_t(f.bus) << 32 | f.id).second) {
+            std::lock_guard lock(mutex_);
+            pdos_.push_back({f.bus, f.id, scratch_.node, pdoText(tpdo, scratch_.pdoNumber)});
+        }
         const PdoConfig* cfg = context_.node(scratch_.node).findPdo(tpdo, scratch_.pdoNumber);
         if (!cfg || !cfg->mappingKnown) continue;
         int bit = 0;
@@ -173,6 +177,16 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
     ensureCatalogue();
     latestNs_.store(store.record(static_cast<FrameNo>(first + count - 1)).timestampNs, std::memory_order_release);
     frames_.fetch_add(count, std::memory_order_acq_rel);
+}
+
+std::vector<SignalRecorder::PdoSeen> SignalRecorder::pdosSeen() const {
+    std::vector<PdoSeen> out;
+    {
+        std::lock_guard lock(mutex_);
+        out = pdos_;
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 std::vector<SignalInfo> SignalRecorder::catalog() const {

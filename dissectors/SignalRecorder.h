@@ -13,6 +13,8 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -50,6 +52,17 @@ public:
     int64_t latestNs() const { return latestNs_.load(std::memory_order_acquire); }
     uint64_t framesConsumed() const { return frames_.load(std::memory_order_acquire); }
 
+    // A PDO seen in the trace (by its COB-ID), whether or not its mapping is known: what the
+    // plot can say when it has no signal to offer ("TPDO1 185h of node 5: no dictionary").
+    struct PdoSeen {
+        int bus = 0;
+        uint32_t cobId = 0;
+        int node = -1;
+        QString pdo;  // "TPDO1"
+        bool operator<(const PdoSeen& o) const { return std::tie(bus, cobId) < std::tie(o.bus, o.cobId); }
+    };
+    std::vector<PdoSeen> pdosSeen() const;  // any thread; sorted by bus and COB-ID
+
 private:
     struct Slot {
         SignalInfo info;
@@ -71,6 +84,8 @@ private:
     std::vector<Slot*> dirty_;
     std::map<int, QString> pendingNames_, appliedNames_;
     bool namesChanged_ = false;
+    std::set<uint64_t> pdoKeys_;  // ingest thread: bus << 32 | COB-ID of the PDOs in pdos_
+    std::vector<PdoSeen> pdos_;   // guarded by mutex_
     std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value
     std::atomic<uint64_t> revision_{1};
     std::atomic<int64_t> originNs_{0};

@@ -27,6 +27,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QTimer>
+#include <QToolBar>
 
 #include <spdlog/spdlog.h>
 
@@ -129,17 +130,33 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
 
     QMenu* bus = menuBar()->addMenu(tr("&Bus"));
-    bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"), QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
+    QAction* connectAction = bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"), QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
         ConnectDialog dialog(this);
-        if (dialog.exec() == QDialog::Accepted) connectBus(dialog.url());
+        if (dialog.exec() == QDialog::Accepted) connectBus(dialog.url(), true);
     });
-    bus->addAction(tr("Connect to &virtual drives (sim://)"), this, [this] { connectBus(QStringLiteral("sim://")); });
+    connectAction->setIconText(tr("Connect"));
+    bus->addAction(tr("Connect to &virtual drives (sim://)"), this, [this] { connectBus(QStringLiteral("sim://"), true); });
     recentMenu_ = bus->addMenu(tr("&Recent connections"));
-    bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    QAction* disconnectAction = bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    bus->addSeparator();
+    // The Nodes dock's own action: the same scan as its context menu.
+    QAction* scan = nodes_->scanAction();
+    scan->setIcon(st->standardIcon(QStyle::SP_BrowserReload));
+    bus->addAction(scan);
     rebuildRecentMenu();
 
+    QToolBar* bar = addToolBar(tr("Bus"));
+    bar->setObjectName(QStringLiteral("busToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->addAction(connectAction);
+    bar->addAction(disconnectAction);
+    bar->addAction(scan);
+
     commission_ = menuBar()->addMenu(tr("&Commission"));
+    commission_->setToolTipsVisible(true);
     fillCommissionMenu(commission_, workspace_, this, [this] { return nodes_->selectedNode(); });
+    commissionNote_ = commission_->addSection(QString());
+    updateCommissionMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
@@ -155,7 +172,7 @@ void MainWindow::buildMenus() {
 void MainWindow::rebuildRecentMenu() {
     recentMenu_->clear();
     const QStringList recent = RecentConnections::list();
-    for (const QString& url : recent) recentMenu_->addAction(url, this, [this, url] { connectBus(url); });
+    for (const QString& url : recent) recentMenu_->addAction(url, this, [this, url] { connectBus(url, true); });
     recentMenu_->setEnabled(!recent.isEmpty());
 }
 
@@ -192,8 +209,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
     }
 }
 
-bool MainWindow::connectBus(const QString& url) {
-    if (!maybeSaveCapture([this, url] { connectBus(url); })) return false;
+bool MainWindow::connectBus(const QString& url, bool scanWhenOpen) {
+    if (!maybeSaveCapture([this, url, scanWhenOpen] { connectBus(url, scanWhenOpen); })) return false;
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         showError(tr("Cannot connect to %1: %2").arg(url, error));
@@ -201,6 +218,7 @@ bool MainWindow::connectBus(const QString& url) {
         return false;
     }
     captureStore_ = workspace_->store().get();
+    scanWhenOpen_ = scanWhenOpen;  // after sourceChanged, which clears it
     RecentConnections::add(workspace_->bus()->url().toString());
     rebuildRecentMenu();
     return true;
@@ -254,6 +272,7 @@ bool MainWindow::showView(const QString& name) {
 }
 
 void MainWindow::onSourceChanged() {
+    scanWhenOpen_ = false;
     trace_->rebind();
     nodes_->rebind();
     od_->rebind();
@@ -264,9 +283,22 @@ void MainWindow::onSourceChanged() {
 }
 
 void MainWindow::updateCommissionMenu() {
-    const bool listenOnly = workspace_->bus() && workspace_->bus()->isListenOnly();
-    for (QAction* a : commission_->actions()) a->setEnabled(!listenOnly);
-    commission_->setToolTip(listenOnly ? tr("Listen-only bus: commissioning would transmit") : QString());
+    const CanBus* bus = workspace_->bus();
+    const QString why = !bus || bus->state() != CanBus::State::Open ? tr("Connect to a bus first")
+                        : bus->isListenOnly()                        ? tr("Listen-only bus: commissioning would transmit")
+                                                                     : QString();
+    if (why == commissionWhy_) return;
+    commissionWhy_ = why;
+    for (QAction* a : commission_->actions()) {
+        if (a->isSeparator()) continue;
+        a->setEnabled(why.isEmpty());
+        a->setStatusTip(why);
+        a->setToolTip(why.isEmpty() ? a->text().remove(u'&') : why);
+    }
+    // A non-clickable line at the end of the menu says it where the tip is not seen.
+    commissionNote_->setText(!bus || bus->state() != CanBus::State::Open ? why : tr("Listen-only bus"));
+    commissionNote_->setVisible(!why.isEmpty());
+    commission_->setToolTip(why);
 }
 
 size_t MainWindow::unsavedFrames() const {
@@ -301,6 +333,10 @@ bool MainWindow::maybeSaveCapture(std::function<void()> then) {
 void MainWindow::refresh() {
     workspace_->poll();
     updateCommissionMenu();
+    if (scanWhenOpen_ && workspace_->canTransmit()) {
+        scanWhenOpen_ = false;
+        nodes_->scan(false);
+    }
     trace_->refresh();
     nodes_->refresh();
     od_->refresh();

@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 
+class QAction;
 class QMenu;
 class QTimer;
 
@@ -32,8 +33,10 @@ public:
     ~MainWindow() override;
 
     // Connects to a bus URL; an unusable URL is reported in the window (status bar + dialog
-    // unless quiet) and returns false.
-    bool connectBus(const QString& url);
+    // unless quiet) and returns false. With `scanWhenOpen` (every connection the user makes:
+    // the Bus menu, the Connect dialog, --connect) the network is scanned and identified, as
+    // Bus ▸ Scan network does, once the bus is open and may transmit (never when listen-only).
+    bool connectBus(const QString& url, bool scanWhenOpen = false);
     void disconnectBus();
     bool openLog(const QString& path);
     // Saves the trace (or only the filtered rows) to `path`; the format comes from `format`
@@ -72,7 +75,8 @@ private:
     void showError(const QString& message);
     void showMessage(const QString& message);
     void onSourceChanged();
-    // Commission items transmit: disabled while the bus is listen-only (README "Listen-only").
+    // Commission items transmit: disabled without an open bus and while the bus is listen-only
+    // (README "Listen-only"); a section at the menu's end says why.
     void updateCommissionMenu();
     // Frames captured from a bus and not yet saved in full.
     size_t unsavedFrames() const;
@@ -92,6 +96,9 @@ private:
     BusStatusBar* status_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* commission_ = nullptr;
+    QAction* commissionNote_ = nullptr;  // the section that says why the items are disabled
+    QString commissionWhy_ = QStringLiteral("-");  // the reason in force ("" = enabled)
+    bool scanWhenOpen_ = false;  // scan once the bus just connected can transmit
     QTimer* timer_ = nullptr;
     std::unique_ptr<LogSaveJob> saveJob_;
     bool loadReported_ = true;

@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     window.show();
     // A dock at once; a wizard in its own window once the nodes are known (also for --screenshot).
     if (!viewName.isEmpty()) gui::showStartView(&window, viewName);
-    if (parser.isSet(connectTo)) window.connectBus(parser.value(connectTo));
+    if (parser.isSet(connectTo)) window.connectBus(parser.value(connectTo), true);
     else if (parser.isSet(simulate) && window.connectBus(QStringLiteral("sim://"))) gui::startSimulationDemo(window.workspace());
     else if (!files.isEmpty()) window.openLog(files.first());
 

@@ -6,6 +6,7 @@
 // node's values exported as a DCF.
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/od/OdFilterModel.h"
 #include "app/gui/od/OdTreeModel.h"
@@ -23,7 +24,9 @@
 #include <QProgressBar>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTableView>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <QTreeView>
 #include <QtTest>
 
@@ -216,6 +219,49 @@ private slots:
         QTest::qWait(100);
         const auto& s = *w.workspace()->store();
         for (size_t n = 0; n < s.size(); ++n) QVERIFY(!(s.record(static_cast<FrameNo>(n)).flags & CanFrame::Tx));
+    }
+
+    void progressBarCountsTheNodeShown() {
+        // Read all of node 1 by its button, then a click on node 3 in the Nodes dock: the bar
+        // shows node 3's reads or nothing, never node 1's count.
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.showView(QStringLiteral("od"));
+        QVERIFY(w.connectBus(QStringLiteral("sim://"), true));  // identified by the scan on connect
+        QVERIFY(waitFor([&] {
+            const auto a = w.workspace()->nodes().node(1), b = w.workspace()->nodes().node(3);
+            return a && b && !a->dictionary.isEmpty() && !b->dictionary.isEmpty();
+        }));
+        auto clickNode = [&](int node) {
+            QTableView* view = w.nodesDock()->view();
+            const int row = w.nodesDock()->model()->rowOfNode(node);
+            QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(row, 0)).center());
+            return waitFor([&] { return w.odDock()->node() == node && w.odDock()->model()->hasDictionary(); });
+        };
+        QWidget* readAll = nullptr;
+        for (QToolBar* bar : w.odDock()->findChildren<QToolBar*>())
+            for (QAction* a : bar->actions())
+                if (a->objectName() == u"odReadAll") readAll = bar->widgetForAction(a);
+        QVERIFY(readAll);
+        QProgressBar* bar = w.odDock()->progressBar();
+        QVERIFY(clickNode(1));
+        QVERIFY(waitFor([&] { return readAll->isEnabled(); }));
+        QTest::mouseClick(readAll, Qt::LeftButton);
+        QVERIFY(waitFor([&] { return bar->value() > 5; }));
+        const int nodeOneTotal = bar->maximum();
+        QVERIFY(clickNode(3));
+        QVERIFY2(bar->text().isEmpty(), qPrintable(bar->text()));
+        QVERIFY2(!w.odDock()->messageText().contains(QStringLiteral("objects of node 1")), qPrintable(w.odDock()->messageText()));
+        // Node 3's own read: its own count.
+        QVERIFY(waitFor([&] { return readAll->isEnabled(); }));
+        QTest::mouseClick(readAll, Qt::LeftButton);
+        QVERIFY(waitFor([&] { return bar->value() > 0; }));
+        QVERIFY(bar->maximum() != nodeOneTotal);
+        QVERIFY2(bar->text().endsWith(QStringLiteral(" / %1").arg(bar->maximum())), qPrintable(bar->text()));
+        QVERIFY(waitFor([&] { return !w.odDock()->isBusy(); }, 30000));
+        QCOMPARE(bar->value(), bar->maximum());
     }
 
     void noDictionaryOffersAssign() {

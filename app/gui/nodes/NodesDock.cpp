@@ -55,9 +55,11 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         connect(a, &QAction::triggered, this, [this, a] { sendNmt(static_cast<uint8_t>(a->data().toInt()), std::max(0, selectedNode())); });
         commands_ << a;
     }
+    // One action for the Nodes dock's context menu, Bus ▸ Scan network and the toolbar.
     scan_ = new QAction(tr("Scan network (SDO 1000h on nodes 1–127)"), this);
     scan_->setObjectName(QStringLiteral("scanAction"));
-    connect(scan_, &QAction::triggered, this, &NodesDock::scan);
+    scan_->setIconText(tr("Scan network"));
+    connect(scan_, &QAction::triggered, this, [this] { scan(); });
     identify_ = new QAction(tr("Read identity"), this);
     connect(identify_, &QAction::triggered, this, [this] {
         if (selectedNode() > 0 && scanner_) scanner_->identify(selectedNode());
@@ -123,6 +125,14 @@ void NodesDock::updateEnabled() {
     const bool can = workspace_->canTransmit();
     for (QAction* a : commands_) a->setEnabled(can && (a != identify_ || selectedNode() > 0));
     scan_->setEnabled(can && scanner_ && !scanner_->isRunning());
+    const QString why = scanner_ && scanner_->isRunning() ? tr("A scan is running")
+                        : workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a scan would transmit")
+                        : !can ? tr("Connect to a bus first")
+                               : tr("Read the device type 1000h of every node-ID 1–127, then each answering node's identity");
+    if (scan_->statusTip() != why) {
+        scan_->setStatusTip(why);
+        scan_->setToolTip(why);
+    }
     assign_->setEnabled(selectedNode() > 0);
 }
 
@@ -206,15 +216,20 @@ QString NodesDock::enabledDriveWarning(uint8_t command, int node) {
     return out;
 }
 
-void NodesDock::scan() {
+void NodesDock::scan(bool ask) {
     if (!workspace_->canTransmit() || !scanner_) {
         emit message(tr("Scan needs a connected bus that is not listen-only"));
         return;
     }
-    if (!confirm(tr("Scan network"), tr("Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?")))
+    if (scanner_->isRunning()) {
+        emit message(tr("A scan is already running"));
+        return;
+    }
+    if (ask && !confirm(tr("Scan network"), tr("Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?")))
         return;
     emit message(tr("Scanning nodes 1–127…"));
     scanner_->scan();
+    updateEnabled();
 }
 
 void NodesDock::assignDictionary(int node, const QString& name) {

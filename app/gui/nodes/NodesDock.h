@@ -33,7 +33,9 @@ public:
 
     // Sends an NMT command (CiA 301 §7.2.8.3.1) after confirmation; `node` 0 = all nodes.
     bool sendNmt(uint8_t command, int node, bool confirm = true);
-    void scan();
+    // Scans node-IDs 1–127 and identifies who answers (NodeScanner); asks first unless `ask`
+    // is false (the scan the window starts on connect). The one path behind every Scan button.
+    void scan(bool ask = true);
     void assignDictionary(int node, const QString& name);
     // Test hook: answer confirmations without showing a dialog.
     void setAutoConfirm(bool on) { autoConfirm_ = on; }

@@ -213,25 +213,45 @@ void ObjectDictionaryDock::rebind() {
     pendingExport_.clear();
     readAllFinished_ = false;
     autoReadDone_ = false;
-    progress_->reset();
-    progress_->setRange(0, 1);
-    // The node stays selected; its values are from the previous source: start again.
-    if (model_->hasDictionary()) model_->setDictionary(model_->dictionary(), model_->node());
+    resetProgress();
+    if (store_.lock() != workspace_->store()) {
+        // Another bus or log: nothing of the previous one stays on screen.
+        store_ = workspace_->store();
+        node_ = -1;
+        autoPicked_ = false;
+        dictName_.clear();
+        model_->clear();
+        messageLine_->clear();
+        messageLine_->setToolTip({});
+    } else if (model_->hasDictionary()) {
+        // Disconnected: the node stays selected; its values were read over that bus: start again.
+        model_->setDictionary(model_->dictionary(), model_->node());
+    }
     lastCanTransmit_ = !canTransmit();  // force updateEnabled
     updateEnabled();
 }
 
 void ObjectDictionaryDock::setNode(int node) {
     if (node == node_) return;
+    const int previous = node_;
     node_ = node;
     autoPicked_ = false;
     autoReadDone_ = false;
     readAllFinished_ = false;
     ++generation_;
-    if (config_ && config_->isRunning()) config_->cancel();
+    if (config_ && config_->isRunning()) {
+        config_->cancel();
+        showMessage(tr("Reading node %1 stopped: another node was chosen").arg(previous));
+    }
+    resetProgress();  // the bar counts this node's reads only
     dictName_.clear();
     model_->clear();
     loadDictionary();
+}
+
+void ObjectDictionaryDock::resetProgress() {
+    progress_->setRange(0, 1);
+    progress_->reset();  // empty: no "n / m" text
 }
 
 void ObjectDictionaryDock::loadDictionary() {

@@ -20,6 +20,9 @@ class QPushButton;
 class QTreeView;
 class QWidget;
 
+namespace coscope {
+class TraceStore;
+}
 namespace coscope::canopen {
 class DeviceConfiguration;
 struct ConfigEntryResult;
@@ -47,7 +50,9 @@ public:
     explicit ObjectDictionaryDock(Workspace* workspace, QWidget* parent = nullptr);
     ~ObjectDictionaryDock() override;
 
-    void rebind();   // the workspace's source changed
+    // The workspace's source changed: another bus or log starts with no node shown, no message
+    // and no progress; after a disconnect the node stays (the same trace is reviewed).
+    void rebind();
     void refresh();  // the window's ≤ 30 Hz tick
     void setNode(int node);  // -1 = none
     int node() const { return node_; }
@@ -90,6 +95,7 @@ private:
     void loadDictionary();
     void updateEnabled();
     void updateHeader();
+    void resetProgress();
     void showMessage(const QString& text, bool error = false);
     bool confirm(const QString& title, const QString& question);
     bool refuseIfOffline(const QString& what);
@@ -122,6 +128,7 @@ private:
     std::vector<canopen::ConfigEntryResult> applyResults_;
     std::map<QString, od::ObjectDictionary> dictionaryCache_;
 
+    std::weak_ptr<const TraceStore> store_;  // the trace the shown node belongs to
     int node_ = -1;
     QString dictName_;      // the dictionary shown ("" = none)
     bool autoPicked_ = false;

@@ -4,6 +4,7 @@
 #include "app/gui/plot/PlotCsv.h"
 #include "app/gui/plot/SignalPicker.h"
 #include "app/gui/session/Workspace.h"
+#include "core/od/NumberNotation.h"
 #include "dissectors/SignalRecorder.h"
 
 #include <QAction>
@@ -18,6 +19,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <map>
 
 namespace coscope::gui {
 
@@ -138,7 +140,10 @@ void PlotDock::rebind() {
     // Offline: the whole file; live: the rolling window.
     setWholeTrace(!workspace_->isLive() && workspace_->loadJob());
     setPaused(false);
+    view_->setTimeRange(0.0, whole_ ? 1.0 : window_->value());  // no axes of the previous source
     updatePlotted();
+    picker_->setEmptyHint(emptyReason());
+    hintTicks_ = 0;
 }
 
 void PlotDock::pick(const SignalKey& key, bool on) { picker_->setPicked(key, on); }
@@ -212,6 +217,11 @@ void PlotDock::autoPick() {
 }
 
 void PlotDock::refresh() {
+    if (workspace_->signalRecorder() != recorder_ && recorder_) {
+        // The same trace recorded again (dictionaries assigned to a log): keep picks and view.
+        recorder_ = workspace_->signalRecorder();
+        catalogRevision_ = 0;
+    }
     if (!recorder_) return;
     if (const uint64_t rev = recorder_->catalogRevision(); rev != catalogRevision_) {
         catalogRevision_ = rev;
@@ -219,6 +229,8 @@ void PlotDock::refresh() {
         autoPick();
         updatePlotted();  // default scales may have changed (vendor parameters seen)
     }
+    // Nothing to offer: say why, a few times a second (frames and nodes keep coming).
+    if (picker_->catalog().empty() && ++hintTicks_ % 10 == 1) picker_->setEmptyHint(emptyReason());
     const std::optional<int64_t> origin = recorder_->originNs();
     if (!origin) return;
     view_->setOrigin(*origin);
@@ -248,6 +260,47 @@ bool PlotDock::hasContent() const {
         if (!s.digital && r.max > r.min) moving = true;
     }
     return moving;
+}
+
+QString PlotDock::emptyReason() const {
+    const uint64_t frames = recorder_ ? recorder_->framesConsumed() : 0;
+    if (frames == 0) {
+        if (workspace_->isLive()) return tr("No frames from the bus yet.");
+        if (workspace_->loadJob() && !workspace_->loadJob()->isDone()) return tr("Reading the log…");
+        if (workspace_->loadJob()) return tr("The log holds no frames.");
+        return tr("Nothing to plot: connect to a bus (Bus menu) or open a log (File ▸ Open log…).");
+    }
+    auto nodeName = [](int bus, int node) { return bus ? tr("bus %1 node %2").arg(bus).arg(node) : tr("node %1").arg(node); };
+    const auto pdos = recorder_->pdosSeen();
+    if (pdos.empty()) {
+        QStringList nodes;
+        for (const NodeInfo& n : workspace_->nodes().snapshot()) nodes << QString::number(n.node);
+        QString text = tr("No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.").arg(frames);
+        if (!nodes.isEmpty()) text += u' ' + tr("Nodes seen: %1.").arg(nodes.join(QStringLiteral(", ")));
+        if (workspace_->isLive()) text += u' ' + tr("Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).");
+        return text;
+    }
+    // The PDOs seen, by node; a node without a dictionary cannot have its PDOs decoded.
+    std::map<std::pair<int, int>, QStringList> byNode;
+    for (const auto& p : pdos) byNode[{p.bus, p.node}] << QStringLiteral("%1 %2").arg(p.pdo, od::hexText(p.cobId));
+    QStringList withoutDictionary, unknownMapping;
+    for (const auto& [key, list] : byNode) {
+        const auto info = key.first == 0 ? workspace_->nodes().node(key.second) : std::nullopt;
+        const QString line = QStringLiteral("%1 (%2)").arg(nodeName(key.first, key.second), list.join(QStringLiteral(", ")));
+        if (info && !info->dictionary.isEmpty()) unknownMapping << line;
+        else withoutDictionary << line;
+    }
+    QString text;
+    if (!withoutDictionary.isEmpty())
+        text = tr("No dictionary for these nodes, so their PDOs cannot be decoded: %1. Assign one in the Nodes dock "
+                  "(right-click the node ▸ Assign dictionary…)%2; its PDO signals are then listed here.")
+                   .arg(withoutDictionary.join(QStringLiteral("; ")),
+                        workspace_->isLive() ? tr(" or identify the nodes with Bus ▸ Scan network") : QString());
+    if (!unknownMapping.isEmpty()) {
+        if (!text.isEmpty()) text += u' ';
+        text += tr("PDOs whose mapping is not known (changed before the trace began): %1.").arg(unknownMapping.join(QStringLiteral("; ")));
+    }
+    return text;
 }
 
 void PlotDock::updateReadout() { readout_->setText(view_->readoutHtml()); }

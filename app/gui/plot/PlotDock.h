@@ -67,6 +67,9 @@ private:
     void autoPick();
     void exportDialog(const QString& kind);
     void updateReadout();
+    // Why the signal list is empty and what could be plotted (nodes, PDOs seen, the Nodes dock's
+    // Assign dictionary); shown by the picker while it has no signal.
+    QString emptyReason() const;
 
     Workspace* workspace_;
     std::shared_ptr<dissect::SignalRecorder> recorder_;
@@ -83,6 +86,7 @@ private:
     bool autoPicked_ = false;
     bool paused_ = false;
     bool whole_ = false;
+    int hintTicks_ = 0;
 };
 
 }  // namespace coscope::gui

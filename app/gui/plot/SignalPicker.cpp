@@ -2,6 +2,7 @@
 #include "app/gui/plot/SignalPicker.h"
 
 #include <QHeaderView>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -21,13 +22,21 @@ constexpr int kKeyRole = Qt::UserRole + 1;
 QVariant keyData(const SignalKey& k) { return QVariant::fromValue(static_cast<qulonglong>(k.packed())); }
 }  // namespace
 
-SignalPicker::SignalPicker(QWidget* parent) : QWidget(parent), search_(new QLineEdit(this)), tree_(new QTreeWidget(this)) {
+SignalPicker::SignalPicker(QWidget* parent)
+    : QWidget(parent), search_(new QLineEdit(this)), tree_(new QTreeWidget(this)), hint_(new QLabel(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     search_->setPlaceholderText(tr("Search signals (name, object, node)"));
     search_->setClearButtonEnabled(true);
+    hint_->setObjectName(QStringLiteral("signalHint"));
+    hint_->setWordWrap(true);
+    hint_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    hint_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    hint_->setMargin(4);
+    hint_->hide();
     layout->addWidget(search_);
-    layout->addWidget(tree_);
+    layout->addWidget(hint_);
+    layout->addWidget(tree_, 1);
     tree_->setColumnCount(ColumnCount);
     tree_->setHeaderLabels({tr("Signal"), tr("Object"), tr("Unit"), tr("Factor")});
     tree_->setRootIsDecorated(true);
@@ -44,6 +53,8 @@ void SignalPicker::clear() {
     catalog_.clear();
     picked_.clear();
     userScale_.clear();
+    emptyHint_.clear();
+    search_->clear();  // a search typed for the previous source would hide the new one's signals
     rebuildTree();
     emit pickedChanged();
 }
@@ -80,6 +91,26 @@ void SignalPicker::setPicked(const SignalKey& key, bool on) {
 }
 
 void SignalPicker::setFilter(const QString& text) { search_->setText(text); }
+
+void SignalPicker::setEmptyHint(const QString& text) {
+    if (text == emptyHint_) return;
+    emptyHint_ = text;
+    updateHint();
+}
+
+QString SignalPicker::hintText() const { return hint_->isVisibleTo(this) ? hint_->text() : QString(); }
+
+void SignalPicker::updateHint() {
+    QString text;
+    if (catalog_.empty()) text = emptyHint_;
+    else {
+        bool shown = false;
+        for (int i = 0; i < tree_->topLevelItemCount() && !shown; ++i) shown = !tree_->topLevelItem(i)->isHidden();
+        if (!shown) text = tr("No signal matches “%1”.").arg(search_->text().trimmed());
+    }
+    hint_->setText(text);
+    hint_->setVisible(!text.isEmpty());
+}
 
 void SignalPicker::rebuildTree() {
     updating_ = true;
@@ -160,6 +191,7 @@ void SignalPicker::applyFilter() {
         }
         node->setHidden(!any);
     }
+    updateHint();
 }
 
 void SignalPicker::onItemChanged(QTreeWidgetItem* item, int column) {

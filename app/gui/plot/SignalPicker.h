@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+class QLabel;
 class QLineEdit;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -35,6 +36,10 @@ public:
     dissect::SignalScale scale(const dissect::SignalKey& key) const;
     void setScale(const dissect::SignalKey& key, const dissect::SignalScale& scale);
     void setFilter(const QString& text);
+    // What the list says instead of signals while the catalogue is empty (why, and what could
+    // be plotted); the picker itself says when the search hides every signal.
+    void setEmptyHint(const QString& text);
+    QString hintText() const;  // what the user reads above the list ("" = none shown)
 
 signals:
     void pickedChanged();
@@ -43,10 +48,13 @@ signals:
 private:
     void rebuildTree();
     void applyFilter();
+    void updateHint();
     void onItemChanged(QTreeWidgetItem* item, int column);
 
     QLineEdit* search_;
     QTreeWidget* tree_;
+    QLabel* hint_;
+    QString emptyHint_;
     std::vector<dissect::SignalInfo> catalog_;
     std::vector<dissect::SignalKey> picked_;
     std::map<dissect::SignalKey, dissect::SignalScale> userScale_;

@@ -25,6 +25,9 @@ Workspace::Workspace(QObject* parent)
 Workspace::~Workspace() { reset(); }
 
 void Workspace::reset() {
+    replay_.reset();  // cancels and joins
+    recordedNames_.clear();
+    logRecorded_ = false;
     if (loadJob_) {
         loadJob_->cancel();
         loadJob_->wait();
@@ -96,6 +99,11 @@ void Workspace::disconnectBus() {
     master_.reset();
     bus_->disconnect(this);
     bus_.reset();
+    // The capture is complete: a dictionary assigned from now on records its signals again.
+    logRecorded_ = true;
+    recordedNames_.clear();
+    for (const NodeInfo& n : nodes_.snapshot())
+        if (!n.dictionary.isEmpty()) recordedNames_.emplace(n.node, n.dictionary);
     sourceName_ += QStringLiteral(" (disconnected)");
     emit busStateChanged(CanBus::State::Closed);
     emit sourceChanged();
@@ -136,9 +144,28 @@ void Workspace::syncDictionaries() {
         if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
     traceDecoder_->setDictionaries(names);
     signals_->setDictionaries(names);
+    // A log already read: its PDOs are decoded again with the dictionaries assigned since.
+    if (!bus_ && logRecorded_ && names != recordedNames_) {
+        recordedNames_ = names;
+        replay_ = std::make_unique<SignalReplayJob>(store_, names);
+        replay_->start();
+    }
 }
 
 void Workspace::poll() {
+    if (loadJob_ && loadJob_->isDone() && !logRecorded_) {
+        // The names the loader's recorder used (it applies them before each batch).
+        logRecorded_ = true;
+        syncDictionaries();
+        std::map<int, QString> names;
+        for (const NodeInfo& n : nodes_.snapshot())
+            if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
+        recordedNames_ = names;
+    }
+    if (replay_ && replay_->isDone()) {
+        if (!replay_->isCancelled()) signals_ = replay_->recorder();
+        replay_.reset();
+    }
     syncDictionaries();
     if (!bus_) return;
     events_.checkHeartbeats(nowNs());

@@ -3,6 +3,7 @@
 
 #include "app/gui/events/EventLog.h"
 #include "app/gui/nodes/NodeTable.h"
+#include "app/gui/plot/SignalReplayJob.h"
 #include "app/gui/trace/FrameDecoder.h"
 #include "app/gui/trace/LogLoadJob.h"
 #include "app/gui/trace/TraceDecoder.h"
@@ -47,7 +48,8 @@ public:
     const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
     TraceDecoder& traceDecoder() { return *traceDecoder_; }
     // The plot's signal buffers, fed on the ingest thread (live or log loading); replaced with
-    // the store when the source changes.
+    // the store when the source changes, and for a log once it was recorded again with the
+    // dictionaries assigned after it was read (SignalReplayJob).
     const std::shared_ptr<dissect::SignalRecorder>& signalRecorder() const { return signals_; }
 
     CanBus* bus() const { return bus_.get(); }
@@ -93,6 +95,9 @@ private:
     uint64_t reportedDropped_ = 0;
     uint64_t reportedErrors_ = 0;
     uint64_t syncedNodesRevision_ = 0;
+    std::map<int, QString> recordedNames_;  // the dictionaries a finished trace's signals were recorded with
+    bool logRecorded_ = false;              // a log read in full or a capture ended: recordedNames_ holds
+    std::unique_ptr<SignalReplayJob> replay_;
 };
 
 }  // namespace coscope::gui
