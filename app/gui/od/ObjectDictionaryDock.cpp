@@ -316,8 +316,8 @@ void ObjectDictionaryDock::refresh() {
             readAll();
         }
     }
-    if (lastCanTransmit_ != canTransmit()) updateEnabled();
-    if (config_ && config_->isRunning()) updateEnabled();
+    // Also once a read ends whose answers were dropped (another node chosen meanwhile).
+    if (lastCanTransmit_ != canTransmit() || isBusy() || lastBusy_) updateEnabled();
 }
 
 bool ObjectDictionaryDock::hasContent() const { return model_->hasDictionary() && readAllFinished_ && model_->valuesRead() > 0; }
@@ -354,6 +354,7 @@ void ObjectDictionaryDock::updateEnabled() {
     lastCanTransmit_ = can;
     const bool have = model_->hasDictionary();
     const bool busy = isBusy();
+    lastBusy_ = busy;
     model_->setWritable(can);
     readAll_->setEnabled(can && have && !busy);
     cancel_->setEnabled(busy);

@@ -138,6 +138,7 @@ private:
     quint64 generation_ = 0;  // bumped when node, dictionary or bus change: late answers are dropped
     bool autoConfirm_ = false;
     bool lastCanTransmit_ = false;
+    bool lastBusy_ = false;
 };
 
 }  // namespace coscope::gui
