@@ -72,7 +72,7 @@ private slots:
             return dock.model()->rowCount() >= 4;
         }, 5000));
         QSignalSpy finished(&dock, &NodesDock::nmtFinished);
-        // Reset communication of all nodes (no row chosen) and of node 1 while drive 1 is in
+        // Reset communication of all nodes and of node 1 (its row's menu) while drive 1 is in
         // Operation enabled: the question names it; "no" (Escape) sends nothing.
         canopen::Ds402Controller ctl(*rig.ws.sdo(), 1);
         bool on = false;
@@ -83,7 +83,8 @@ private slots:
             QString asked;
             auto no = coscope::testing::answerEscape(&asked);
             const int before = int(finished.count());
-            QVERIFY(nmtFromMenu(dock, row, QStringLiteral("Reset communication")));
+            // All nodes: the table has a current row once shown, so ask the dock as its menu would.
+            QVERIFY(row < 0 ? dock.sendNmt(0x82, 0) : nmtFromMenu(dock, row, QStringLiteral("Reset communication")));
             // Back from the click with nothing asked yet: the 6041h reads are under way.
             QVERIFY2(asked.isEmpty(), qPrintable(asked));
             QVERIFY(QTest::qWaitFor([&] { return finished.count() > before; }, 5000));
@@ -91,7 +92,7 @@ private slots:
             QVERIFY2(asked.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(asked));
             QVERIFY2(asked.contains(QStringLiteral("a reset stops it abruptly")), qPrintable(asked));
             QVERIFY2(asked.contains(QStringLiteral("AL401")), qPrintable(asked));
-            QVERIFY(asked.contains(row < 0 ? QStringLiteral("to all nodes") : QStringLiteral("to node 1")));
+            QVERIFY2(asked.contains(row < 0 ? QStringLiteral("to all nodes") : QStringLiteral("to node 1")), qPrintable(asked));
             QVERIFY(!asked.contains(QStringLiteral("Drive 2")));  // node 2 is not enabled
             QCOMPARE(rig.driveState(1), State::OperationEnabled);
         }
