@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/ owns the two programs over the libraries: the GUI `coscope` (gui/) and the command
+// line `coscope-cli` (cli/). The only place with widgets; a wizard is a thin face over a core
+// service that also has a CLI verb.
+//
 // What a build of CoScope is: version, source revision and desktop application ID, for --version
 // of both programs and for the desktop integration (cmake/CoScopeBuildInfo.cmake, CoScopeInstall.cmake).
 #pragma once

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder dissectors/ owns CANopen decoding of frames and transfers into named fields: one dissector
+// per service, the network context (per-node dictionaries, PDO mappings, SDO reassembly), filters,
+// output formats and statistics. QtCore only.
 #pragma once
 
 #include "core/canopen/CobId.h"

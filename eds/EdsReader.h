@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder eds/ owns device descriptions: EDS/DCF (CiA 306) and XDD (CiA 311) reading, DCF writing,
+// diagnostics, the standard dictionary and the library of bundled and user dictionaries. QtCore
+// only.
 #pragma once
 
 #include "core/od/ObjectDictionary.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs coscope-cli (COSCOPE_CLI_PATH) with arguments for tests: exit code (-1 when it crashed or
-// timed out), stdout and stderr.
+// did not end within `timeoutMs`, then killed), stdout and stderr.
 
 #include <QProcess>
 #include <QString>
@@ -12,11 +12,11 @@ struct Run {
     int code = -1;
     QString out, err;
 };
-[[maybe_unused]] Run cli(const QStringList& args) {
+[[maybe_unused]] Run cli(const QStringList& args, int timeoutMs = 120000) {
     QProcess p;
     p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
     Run r;
-    if (!p.waitForFinished(120000)) {
+    if (!p.waitForFinished(timeoutMs)) {
         p.kill();
         p.waitForFinished();
         r.err = QStringLiteral("timed out");

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/cli/ owns coscope-cli: one file per verb (VerbNmt.cpp, VerbSdo.cpp, …) registered with
+// COSCOPE_CLI_VERB, the shared exit codes and one-line error contract, and BusSession (open a bus
+// URL, run services, wait). English output only.
 #pragma once
 
 #include <QCommandLineParser>

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/ owns the coscope window: a thin main window, the start view and screenshots here;
+// one folder per dock (trace, nodes, od, plot, events, console), the bus status bar, the connect
+// dialog, the session (Workspace) and the wizards. Models separate from views.
 #pragma once
 
 #include <QMainWindow>

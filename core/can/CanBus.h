@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/can/ owns CAN frames and buses: the frame type, bus URLs, the backends (Qt CAN
+// plugins, socketcand, replay) reading on their own thread into a lock-free ring, error frames.
+// QtCore/QtNetwork/QtSerialBus only, like all of core/.
 #pragma once
 
 #include "core/can/BusUrl.h"

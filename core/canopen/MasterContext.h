@@ -1,4 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/canopen/ owns CiA 301/402 protocol: codecs (NMT, SDO, PDO, EMCY, LSS, CiA 402) and
+// the master services over a bus (SDO client, NMT master, SYNC, heartbeat monitor, LSS master,
+// network scan, PDO configurator, CiA 402 controller, node settings), the node table and command
+// scripts with their runner.
 #pragma once
 
 #include "core/can/CanBus.h"

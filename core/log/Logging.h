@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/log/ owns logging (spdlog) for both programs: stderr, the rotating file and the
+// in-memory lines the Console dock shows.
 #pragma once
 
 #include <QString>

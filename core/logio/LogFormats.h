@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/logio/ owns log files: one reader/writer per format (candump, CSV, pcap/pcapng, PEAK
+// trc, Vector asc/blf) and the registry that sniffs content.
 #pragma once
 
 #include "core/logio/LogReader.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/od/ owns the object dictionary model: data types, values and how numbers are written
+// and read.
 #pragma once
 
 #include "core/od/DataType.h"

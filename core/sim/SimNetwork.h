@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/sim/ owns the virtual device network behind sim://: virtual nodes with SDO/LSS/PDO
+// engines, the CiA 402 drive model, vendor personalities, injected faults and the socketcand
+// server.
 #pragma once
 
 #include "core/can/CanFrame.h"

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder core/trace/ owns the trace: the frame store (compact records, indexes), the capture
+// session (the ingest worker that drains a live bus into the store and its consumers) and the
+// signal buffers of the plots.
 #pragma once
 
 #include "core/can/CanFrame.h"

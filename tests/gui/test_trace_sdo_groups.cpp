@@ -12,6 +12,7 @@
 #include "core/canopen/Sdo.h"
 #include "core/canopen/SdoClient.h"
 #include "eds/SimulatorDictionaries.h"
+#include "tests/CliRun.h"
 
 #include <QAction>
 #include <QTableView>
@@ -438,11 +439,9 @@ private slots:
             for (const CanFrame& f : frames)
                 if (f.id != 0x080) file.write((formatCandumpL(f, f.bus ? u"can1" : u"can0") + u'\n').toUtf8());
         }
-        QProcess cli;
-        cli.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("decode"), QStringLiteral("--format"), QStringLiteral("jsonl"), path});
-        QVERIFY(cli.waitForFinished(30000));
-        QCOMPARE(cli.exitCode(), 0);
-        const QList<QByteArray> lines = cli.readAllStandardOutput().split('\n');
+        const Run r = cli({QStringLiteral("decode"), QStringLiteral("--format"), QStringLiteral("jsonl"), path}, 30000);
+        QCOMPARE(r.code, 0);
+        const QList<QByteArray> lines = r.out.toUtf8().split('\n');
         QStringList pdos;
         for (const QByteArray& line : lines) {
             const QJsonObject o = QJsonDocument::fromJson(line).object();

@@ -5,17 +5,12 @@
 // tests act through input events only (clicks, keys) and check what the user sees.
 #include "app/gui/MainWindow.h"
 #include "app/gui/StartView.h"
-#include "app/gui/nodes/NodesDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/ds402/Ds402MotionPlot.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "app/gui/wizards/WizardMenu.h"
-#include "core/sim/Ds402Drive.h"
-#include "core/sim/SimBus.h"
-#include "core/sim/SimNetwork.h"
-#include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QAbstractSpinBox>
@@ -29,6 +24,7 @@
 #include <QtTest>
 
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/SimDriveRig.h"
 
 using namespace coscope;
 using namespace coscope::gui;
@@ -36,26 +32,8 @@ using canopen::ds402::Command;
 using canopen::ds402::State;
 
 namespace {
+using Rig = coscope::testing::SimDriveRig;
 const QString kAll = QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:dexmart-dev,4:generic-cia402");
-
-struct Rig {
-    Workspace ws;
-    bool open(const QString& url) {
-        QString error;
-        if (!ws.connectBus(url, &error)) return false;
-        return QTest::qWaitFor([&] { return ws.bus() && ws.bus()->state() == CanBus::State::Open; }, 5000);
-    }
-    sim::SimNetwork* net() { return static_cast<SimBus*>(ws.bus())->network(); }
-    template <typename F>
-    auto onDrive(int node, F f) {
-        decltype(f(static_cast<sim::Ds402Drive*>(nullptr))) out{};
-        net()->runOnNetworkThread([&] { out = f(net()->device(static_cast<uint8_t>(node))->drive(0)); });
-        return out;
-    }
-    State driveState(int node) {
-        return onDrive(node, [](sim::Ds402Drive* d) { return d->state(); });
-    }
-};
 
 bool waitSignal(QSignalSpy& spy, int ms = 5000) { return spy.count() > 0 || spy.wait(ms); }
 
@@ -407,43 +385,6 @@ private slots:
         QVERIFY(!w.quickStopButton()->isEnabled());
         QVERIFY(!w.stepButton(Command::Shutdown)->isEnabled());
         QCOMPARE(rig.ws.bus()->counters().tx, uint64_t(0));
-    }
-
-    void nmtResetWarnsAboutAnEnabledDrive() {
-        Rig rig;
-        QVERIFY(rig.open(kAll));
-        NodesDock dock(&rig.ws);
-        dock.setAutoConfirm(true);
-        // Not enabled: no warning, the plain question only.
-        QVERIFY(dock.sendNmt(0x81, 1));  // reset node 1
-        QVERIFY2(dock.lastConfirmation().startsWith(QStringLiteral("Send NMT")), qPrintable(dock.lastConfirmation()));
-        QVERIFY(!dock.lastConfirmation().contains(QStringLiteral("enabled")));
-        Ds402Wizard w(&rig.ws, 1);
-        w.setAutoConfirm(true);
-        QSignalSpy read(&w, &Ds402Wizard::stateRead);
-        QVERIFY(waitReady(w, read));
-        bool ok = false;
-        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
-        QCOMPARE(rig.driveState(1), State::OperationEnabled);
-        // Reset communication of node 1, then of all nodes: both name the enabled drive.
-        for (int target : {1, 0}) {
-            dock.setAutoConfirm(false);
-            // Answer "no" (Escape) once the question shows (the statusword is read first).
-            auto no = coscope::testing::answerEscape();
-            QVERIFY(!dock.sendNmt(0x82, target));  // answered "no": nothing sent
-            const QString text = dock.lastConfirmation();
-            QVERIFY2(text.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(text));
-            QVERIFY2(text.contains(QStringLiteral("a reset stops it abruptly")), qPrintable(text));
-            QVERIFY2(text.contains(QStringLiteral("AL401")), qPrintable(text));
-            QVERIFY(!text.contains(QStringLiteral("Drive 2")));  // node 2 is not enabled
-            QCOMPARE(rig.driveState(1), State::OperationEnabled);
-        }
-        // Start (01h) does not stop anything: no warning.
-        dock.setAutoConfirm(true);
-        QVERIFY(dock.sendNmt(0x01, 1));
-        QVERIFY(!dock.lastConfirmation().contains(QStringLiteral("is enabled")));
-        w.disableDrive();
-        QVERIFY(QTest::qWaitFor([&] { return rig.driveState(1) == State::SwitchOnDisabled; }, 3000));
     }
 
     void firstCia402DriveIsPreselected() {

@@ -22,9 +22,9 @@
 #include "core/sim/SimBus.h"
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
+#include "tests/CliRun.h"
 
 #include <QLabel>
-#include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -324,12 +324,9 @@ private slots:
         QCOMPARE(loaded->steps.size(), dry.steps.size());
         for (size_t i = 0; i < dry.steps.size(); ++i) QVERIFY2(loaded->steps[i].sameAs(dry.steps[i]), qPrintable(dry.steps[i].toLine()));
         // The CLI prints it without sending.
-        QProcess cli;
-        cli.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("--dry-run"), QStringLiteral("sim://?nodes=2:aimotor"), path});
-        QVERIFY(cli.waitForFinished(30000));
-        const QString out = QString::fromUtf8(cli.readAllStandardOutput());
-        QVERIFY2(cli.exitCode() == 0, qPrintable(QString::fromUtf8(cli.readAllStandardError())));
-        QVERIFY2(out.contains(QStringLiteral("1A00"), Qt::CaseInsensitive), qPrintable(out));
+        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("--dry-run"), QStringLiteral("sim://?nodes=2:aimotor"), path}, 30000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("1A00"), Qt::CaseInsensitive), qPrintable(r.out));
     }
 
     // Issue 12 item 10: run the wizard by clicks on a virtual drive; the frames pane writes the

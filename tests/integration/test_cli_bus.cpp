@@ -2,6 +2,7 @@
 // coscope-cli listen / send / record, run as a user would (QProcess).
 #include "core/can/CanFrame.h"
 #include "integration/FakeSocketcandServer.h"
+#include "tests/CliRun.h"
 
 #include <QFile>
 #include <QProcess>
@@ -12,28 +13,6 @@
 using namespace coscope;
 
 namespace {
-struct Run {
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Run cli(const QStringList& args, int timeoutMs = 15000) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
-
 // "(1700000000.123456) sim 701#7F": the line's three fields, the frame parseable by cansend rules.
 bool isCandumpL(const QString& line, const QString& iface, QString* why) {
     static const QRegularExpression re(QStringLiteral(R"(^\((\d+)\.(\d{6})\) (\S+) (\S+)$)"));

@@ -3,22 +3,10 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
-namespace {
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    p.waitForFinished(60000);
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
-}  // namespace
+#include "tests/CliRun.h"
 
 class DecodeCli : public QObject {
     Q_OBJECT
@@ -44,7 +32,7 @@ private slots:
     void jsonlContract() {
         const Run r = cli({QStringLiteral("decode"), log_, QStringLiteral("--format"), QStringLiteral("jsonl"), QStringLiteral("--dict"), QStringLiteral("1=delta-asda-a2")});
         QCOMPARE(r.code, 0);
-        const QList<QByteArray> lines = r.out.trimmed().split('\n');
+        const QList<QByteArray> lines = r.out.toUtf8().trimmed().split('\n');
         QCOMPARE(lines.size(), 11);  // 9 frames + 2 SDO transfer records
         QJsonObject first = QJsonDocument::fromJson(lines[0]).object();
         for (const char* k : {"t", "bus", "id", "ext", "rtr", "fd", "len", "data", "service", "node", "summary", "fields"})
@@ -69,7 +57,7 @@ private slots:
     void filters() {
         Run r = cli({QStringLiteral("decode"), log_, QStringLiteral("--format"), QStringLiteral("jsonl"), QStringLiteral("--filter"), QStringLiteral("service=SDO")});
         QCOMPARE(r.code, 0);
-        for (const QByteArray& l : r.out.trimmed().split('\n')) {
+        for (const QByteArray& l : r.out.toUtf8().trimmed().split('\n')) {
             const QJsonObject o = QJsonDocument::fromJson(l).object();
             QVERIFY(o.contains("record") || o.value("service").toString().startsWith(QStringLiteral("SDO")));
         }
@@ -97,7 +85,7 @@ private slots:
     void stats() {
         const Run r = cli({QStringLiteral("stats"), log_});
         QCOMPARE(r.code, 0);
-        const QString s = QString::fromUtf8(r.out);
+        const QString& s = r.out;
         QVERIFY2(s.contains(QStringLiteral("Frames: 9")), qPrintable(s));
         QVERIFY(s.contains(QStringLiteral("SDO transfers: 2 (ok 1, aborted 1")));
         QVERIFY(s.contains(QStringLiteral("EMCY: 1")));

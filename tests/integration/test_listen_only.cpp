@@ -6,10 +6,10 @@
 #include "core/sim/SimNetwork.h"
 #include "eds/SimulatorDictionaries.h"
 #include "integration/FakeSocketcandServer.h"
+#include "tests/CliRun.h"
 
 #include <QElapsedTimer>
 #include <QLoggingCategory>
-#include <QProcess>
 #include <QtTest>
 
 using namespace coscope;
@@ -102,11 +102,9 @@ private slots:
     }
 
     void cliSendRefuses() {
-        QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("send"), QStringLiteral("sim://?listen-only=1"), QStringLiteral("123#11")});
-        QVERIFY(p.waitForFinished(10000));
-        QCOMPARE(p.exitCode(), 1);
-        const QString err = QString::fromUtf8(p.readAllStandardError());
+        const Run r = cli({QStringLiteral("send"), QStringLiteral("sim://?listen-only=1"), QStringLiteral("123#11")}, 10000);
+        QCOMPARE(r.code, 1);
+        const QString& err = r.err;
         QVERIFY2(err.contains(QStringLiteral("coscope-cli send: ")) && err.contains(QStringLiteral("listen-only")), qPrintable(err));
     }
 };

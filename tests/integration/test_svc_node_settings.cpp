@@ -11,8 +11,8 @@
 #include "core/sim/VirtualDevice.h"
 #include "core/trace/CaptureSession.h"
 #include "eds/SimulatorDictionaries.h"
+#include "tests/CliRun.h"
 
-#include <QProcess>
 #include <QtTest>
 
 using namespace coscope;
@@ -330,22 +330,17 @@ private slots:
     }
 
     void cliVerbs() {
-        QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("node-id"), QStringLiteral("sim://?nodes=1:delta-asda-a2"), QStringLiteral("1"), QStringLiteral("7"), QStringLiteral("--via"), QStringLiteral("vendor")});
-        QVERIFY(p.waitForFinished(30000));
-        QCOMPARE(p.exitCode(), 0);
-        QVERIFY(p.readAllStandardOutput().contains("node 1 is now node 7"));
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("bitrate"), QStringLiteral("sim://?nodes=2:aimotor"), QStringLiteral("2"), QStringLiteral("250000")});
-        QVERIFY(p.waitForFinished(30000));
-        QCOMPARE(p.exitCode(), 0);
-        QVERIFY(p.readAllStandardOutput().contains("node 2 runs at 250 kbit/s"));
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("node-id"), QStringLiteral("sim://?nodes=4:generic-cia402"), QStringLiteral("4"), QStringLiteral("8"), QStringLiteral("--via"), QStringLiteral("vendor"), QStringLiteral("--dict"), QStringLiteral("generic-cia402")});
-        QVERIFY(p.waitForFinished(30000));
-        QCOMPARE(p.exitCode(), 1);
-        QVERIFY(p.readAllStandardError().contains("use LSS"));
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("node-id"), QStringLiteral("sim://"), QStringLiteral("1"), QStringLiteral("300")});
-        QVERIFY(p.waitForFinished(30000));
-        QCOMPARE(p.exitCode(), 2);
+        Run r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=1:delta-asda-a2"), QStringLiteral("1"), QStringLiteral("7"), QStringLiteral("--via"), QStringLiteral("vendor")}, 30000);
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.contains(QStringLiteral("node 1 is now node 7")));
+        r = cli({QStringLiteral("bitrate"), QStringLiteral("sim://?nodes=2:aimotor"), QStringLiteral("2"), QStringLiteral("250000")}, 30000);
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.contains(QStringLiteral("node 2 runs at 250 kbit/s")));
+        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=4:generic-cia402"), QStringLiteral("4"), QStringLiteral("8"), QStringLiteral("--via"), QStringLiteral("vendor"), QStringLiteral("--dict"), QStringLiteral("generic-cia402")}, 30000);
+        QCOMPARE(r.code, 1);
+        QVERIFY(r.err.contains(QStringLiteral("use LSS")));
+        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://"), QStringLiteral("1"), QStringLiteral("300")}, 30000);
+        QCOMPARE(r.code, 2);
     }
 };
 

@@ -2,6 +2,7 @@
 // decode --format jsonl agrees with tshark's CANopen dissector on NMT, SYNC, EMCY, heartbeat,
 // LSS and single-frame SDO fields of the same pcapng (skipped when tshark is not installed).
 #include "core/logio/PcapLog.h"
+#include "tests/CliRun.h"
 
 #include <QIODevice>
 #include <QJsonDocument>
@@ -61,11 +62,9 @@ private slots:
         ts.start(tshark, args);
         QVERIFY(ts.waitForFinished(120000));
         const QList<QByteArray> tsLines = ts.readAllStandardOutput().trimmed().split('\n');
-        QProcess cli;
-        cli.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("decode"), path, QStringLiteral("--format"), QStringLiteral("jsonl")});
-        QVERIFY(cli.waitForFinished(60000));
+        const Run decoded = cli({QStringLiteral("decode"), path, QStringLiteral("--format"), QStringLiteral("jsonl")}, 60000);
         QList<QJsonObject> frames;
-        for (const QByteArray& l : cli.readAllStandardOutput().trimmed().split('\n')) {
+        for (const QByteArray& l : decoded.out.toUtf8().trimmed().split('\n')) {
             const QJsonObject o = QJsonDocument::fromJson(l).object();
             if (!o.contains(QStringLiteral("record"))) frames << o;
         }

@@ -3,27 +3,12 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "tests/CliRun.h"
+
 namespace {
-
-struct Run {
-    int code = -1;
-    QByteArray out, err;
-};
-
-Run cli(const QStringList& args) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(60000)) return r;
-    r.code = p.exitCode();
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
 
 const QString kQuirks = QStringLiteral(COSCOPE_SOURCE_DIR "/tests/data/eds/quirks.eds");
 
@@ -43,7 +28,7 @@ private slots:
 void TestEdsCli::checkUsableFile() {
     const Run r = cli({"eds", "check", kQuirks});
     QCOMPARE(r.code, 0);
-    QVERIFY2(r.out.contains("quirks.eds:70: warning: duplicate key DefaultValue"), r.out.constData());
+    QVERIFY2(r.out.contains("quirks.eds:70: warning: duplicate key DefaultValue"), qPrintable(r.out));
     QVERIFY(r.out.contains("12 objects"));
 }
 
@@ -67,7 +52,7 @@ void TestEdsCli::checkUsage() {
 void TestEdsCli::dumpJson() {
     const Run r = cli({"eds", "dump", kQuirks, "--node-id", "3", "--format", "json"});
     QCOMPARE(r.code, 0);
-    const QJsonArray list = QJsonDocument::fromJson(r.out).array();
+    const QJsonArray list = QJsonDocument::fromJson(r.out.toUtf8()).array();
     QVERIFY(list.size() > 20);
     bool found = false;
     for (const QJsonValue& v : list) {
@@ -90,7 +75,7 @@ void TestEdsCli::dumpJson() {
 void TestEdsCli::dumpText() {
     const Run r = cli({"eds", "dump", kQuirks});
     QCOMPARE(r.code, 0);
-    QVERIFY2(r.out.contains("2000:00"), r.out.left(400).constData());
+    QVERIFY2(r.out.contains("2000:00"), qPrintable(r.out.left(400)));
     QVERIFY(r.out.contains("Heartbeat of node 1"));
     QVERIFY(r.out.contains("0x00000185"));  // node-ID 5 from the file's commissioning section
 }

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/connect/ owns choosing a bus to open: the connect dialog (bus URL, bit rate,
+// listen-only) and the recent connections.
 #pragma once
 
 #include <QDialog>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/console/ owns the Console dock: this session's log lines (spdlog, core/log).
 #pragma once
 
 #include <QDockWidget>

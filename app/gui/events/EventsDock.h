@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/events/ owns the event log (NMT, boot-up, heartbeat, EMCY, SDO aborts, bus state)
+// as a model and its dock.
 #pragma once
 
 #include "core/trace/TraceStore.h"

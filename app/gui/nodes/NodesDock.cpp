@@ -12,7 +12,6 @@
 #include "core/canopen/SdoClient.h"
 
 #include <QAction>
-#include <QEventLoop>
 #include <QPointer>
 #include <QTimer>
 #include <QHeaderView>
@@ -153,14 +152,51 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
                                                                             : tr("Not connected to a bus"));
         return false;
     }
+    if (!ask) return transmitNmt(command, node);
+    if (asking_) {
+        emit message(tr("An NMT command is waiting for your answer"));
+        return false;
+    }
+    lastConfirmation_.clear();
+    asking_ = true;  // until the question (after the reads, if any) is answered
+    QPointer<NodesDock> self(this);
+    if (readEnabledDrives(command, node, [self, command, node](const QString& warning) {
+            if (self) self->askNmt(command, node, warning);
+        }))
+        return true;
+    return askNmt(command, node, {});
+}
+
+bool NodesDock::askNmt(uint8_t command, int node, const QString& warning) {
     const auto frame = canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node));
     const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-    const QString warning = ask ? enabledDriveWarning(command, node) : QString();
-    if (ask && !confirm(tr("Send NMT command"), warning + tr("Send NMT “%1” to %2?\n\nFrame: %3")
-                                                             .arg(canopen::nmtCommandName(command), target, formatCansend(frame))))
-        return false;
+    const QString text = warning + tr("Send NMT “%1” to %2?\n\nFrame: %3").arg(canopen::nmtCommandName(command), target, formatCansend(frame));
+    lastConfirmation_ = text;
+    if (autoConfirm_) {
+        asking_ = false;
+        const bool sent = transmitNmt(command, node);
+        emit nmtFinished(sent);
+        return sent;
+    }
+    // Window-modal and answered through finished(): no event loop of its own on the GUI thread.
+    asking_ = true;
+    auto* box = new QMessageBox(QMessageBox::Question, tr("Send NMT command"), text, QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(box, &QMessageBox::finished, this, [this, box, command, node] {
+        asking_ = false;
+        const bool sent = box->clickedButton() == box->button(QMessageBox::Yes) && transmitNmt(command, node);
+        emit nmtFinished(sent);
+    });
+    box->open();
+    return true;
+}
+
+bool NodesDock::transmitNmt(uint8_t command, int node) {
+    const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
     QString error;
-    if (!workspace_->master()->send(frame, &error)) {
+    if (!workspace_->master() || !workspace_->master()->send(canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node)), &error)) {
+        if (error.isEmpty()) error = tr("Not connected to a bus");
         emit message(tr("NMT %1 to %2 failed: %3").arg(canopen::nmtCommandName(command), target, error));
         QMessageBox::warning(this, tr("NMT command failed"), error);
         return false;
@@ -169,39 +205,48 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
     return true;
 }
 
-QString NodesDock::enabledDriveWarning(uint8_t command, int node) {
+bool NodesDock::readEnabledDrives(uint8_t command, int node, std::function<void(const QString&)> done) {
     // Stop (02h), enter pre-operational (80h), reset node (81h) and reset communication (82h)
     // end PDO/SDO control of the drive (CiA 301 §7.2.8.3.1); a drive in Operation enabled then
     // stops abruptly or trips its communication-loss reaction (6007h, CiA 402-2).
-    if (command != 0x02 && command != 0x80 && command != 0x81 && command != 0x82) return {};
+    if (command != 0x02 && command != 0x80 && command != 0x81 && command != 0x82) return false;
     canopen::SdoClient* sdo = workspace_->sdo();
-    if (!sdo || !workspace_->canTransmit()) return {};
+    if (!sdo || !workspace_->canTransmit()) return false;
     std::vector<int> ids;
     if (node > 0) ids.push_back(node);
     else
         for (const NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
-    if (ids.empty()) return {};
+    if (ids.empty()) return false;
     // Read the statusword 6041h of each node (short timeout; transfers to different nodes run
-    // side by side). A node without 6041h simply aborts: not a drive.
+    // side by side). A node without 6041h simply aborts: not a drive. The answers come back
+    // through the event loop; `done` runs once, when all are in or after a second at most.
     struct Reads {
         int pending = 0;
+        bool finished = false;
         std::map<int, uint16_t> statusword;
     };
     auto reads = std::make_shared<Reads>();
     reads->pending = int(ids.size());
-    QEventLoop loop;
-    QPointer<QEventLoop> guard(&loop);
+    QPointer<NodesDock> self(this);
+    auto finish = [self, reads, command, done] {
+        if (reads->finished) return;
+        reads->finished = true;
+        if (self) done(self->enabledDriveWarning(command, reads->statusword));
+    };
     canopen::SdoOptions options;
     options.timeoutMs = 300;
     for (int id : ids)
-        sdo->upload(static_cast<uint8_t>(id), 0x6041, 0, [reads, guard, id](const canopen::SdoResult& r) {
+        sdo->upload(static_cast<uint8_t>(id), 0x6041, 0, [reads, id, finish](const canopen::SdoResult& r) {
             if (r.ok && r.data.size() >= 2) reads->statusword[id] = static_cast<uint16_t>(uint8_t(r.data[0]) | (uint8_t(r.data[1]) << 8));
-            if (--reads->pending == 0 && guard) guard->quit();
+            if (--reads->pending == 0) finish();
         }, options);
-    QTimer::singleShot(1000, &loop, &QEventLoop::quit);  // never wait long, whatever happens
-    if (reads->pending > 0) loop.exec(QEventLoop::ExcludeUserInputEvents);
+    QTimer::singleShot(1000, this, finish);  // never wait long, whatever happens
+    return true;
+}
+
+QString NodesDock::enabledDriveWarning(uint8_t command, const std::map<int, uint16_t>& statusword) const {
     QString out;
-    for (const auto& [id, sw] : reads->statusword) {
+    for (const auto& [id, sw] : statusword) {
         // Operation enabled: bits 0-3, 5, 6 = x01x 0111 (CiA 402-2 Table 30).
         if ((sw & 0x6F) != 0x27) continue;
         const auto info = workspace_->nodes().node(id);

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/nodes/ owns the Nodes dock: its model over the node table, the network scan and
+// the NMT commands.
 #pragma once
 
 #include <QDockWidget>
+
+#include <functional>
+#include <map>
 
 class QAction;
 class QTableView;
@@ -31,7 +36,11 @@ public:
     QList<QAction*> commandActions() const { return commands_; }
     QAction* scanAction() const { return scan_; }
 
-    // Sends an NMT command (CiA 301 §7.2.8.3.1) after confirmation; `node` 0 = all nodes.
+    // Sends an NMT command (CiA 301 §7.2.8.3.1) after confirmation; `node` 0 = all nodes. A
+    // command that stops a node's application first reads the drives' statusword 6041h, without
+    // waiting on the GUI thread: the question shows when the answers (or their timeouts) are in.
+    // False when refused at once (not connected, listen-only, another question open); true when
+    // sent, or asked (nmtFinished() tells whether it went out).
     bool sendNmt(uint8_t command, int node, bool confirm = true);
     // Scans node-IDs 1–127 and identifies who answers (NodeScanner); asks first unless `ask`
     // is false (the scan the window starts on connect). The one path behind every Scan button.
@@ -39,19 +48,27 @@ public:
     void assignDictionary(int node, const QString& name);
     // Test hook: answer confirmations without showing a dialog.
     void setAutoConfirm(bool on) { autoConfirm_ = on; }
-    // Test hook: the text of the last confirmation asked (or auto-answered).
+    // Test hook: the text of the last confirmation asked (or auto-answered); "" while the
+    // statusword reads before it are under way.
     QString lastConfirmation() const { return lastConfirmation_; }
 
 signals:
     void nodeSelected(int node);
     void message(const QString& text);
+    void nmtFinished(bool sent);
 
 private:
     bool confirm(const QString& title, const QString& what);
     void updateEnabled();
+    // Asks (the question box opens without blocking) and sends when the answer is yes.
+    bool askNmt(uint8_t command, int node, const QString& warning);
+    bool transmitNmt(uint8_t command, int node);
     // Before an NMT command that stops a node's application (stop, pre-operational, resets):
-    // one warning line per CiA 402 drive that reads back Operation enabled, else "".
-    QString enabledDriveWarning(uint8_t command, int node);
+    // reads 6041h of the drives it reaches and calls `done` with one warning line per CiA 402
+    // drive in Operation enabled ("" for none). False when nothing needs reading (`done` is not
+    // called).
+    bool readEnabledDrives(uint8_t command, int node, std::function<void(const QString&)> done);
+    QString enabledDriveWarning(uint8_t command, const std::map<int, uint16_t>& statusword) const;
 
     Workspace* workspace_;
     NodesModel* model_ = nullptr;
@@ -62,6 +79,7 @@ private:
     QAction* identify_ = nullptr;
     QAction* assign_ = nullptr;
     bool autoConfirm_ = false;
+    bool asking_ = false;  // an NMT question is being prepared or shown
     QString lastConfirmation_;
 };
 

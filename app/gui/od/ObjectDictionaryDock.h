@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/od/ owns the object dictionary dock: the tree of a node's dictionary with filter,
+// SDO read/write of values and applying a DCF.
 #pragma once
 
 #include "core/od/ObjectDictionary.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/plot/ owns the plot dock: signals picked from PDO mappings and SDO values, the
+// plot view (cost follows pixels) and CSV export.
 #pragma once
 
 #include "app/gui/plot/PlotView.h"

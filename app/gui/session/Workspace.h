@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/session/ owns what the window works on: the Workspace (bus or log, trace store,
+// node table, master services), background jobs and the simulation demo. No widgets.
 #pragma once
 
 #include "app/gui/events/EventLog.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/status/ owns the status bar: source and bus state, frames/s, bus load, drops,
+// errors and the progress of a running job.
 #pragma once
 
 #include <QObject>

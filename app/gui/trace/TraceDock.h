@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/trace/ owns the trace dock: the table model over the trace store, decoding for
+// display, filters, frame details, SDO transfer groups and loading/saving logs off the GUI thread.
 #pragma once
 
 #include "core/trace/TraceStore.h"

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/wizards/ owns the Commission menu's wizards, one folder each (pdo/, ds402/,
+// nodeid/), and their shared parts (common/: frames pane, script preview and run panel, guard).
 #pragma once
 
 #include <QString>

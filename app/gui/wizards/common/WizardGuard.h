@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/wizards/common/ owns what every wizard shows and does alike: the frames pane, the
+// script preview (dry run, save), the script run panel and the guard that refuses to send when it
+// must not.
 #pragma once
 
 #include <QList>

@@ -1,25 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/wizards/ds402/ owns the CiA 402 enable step-through: the wizard and its parts
+// (state picture, statusword panel, step bar, mode box, test move with its plot, frames and dry-run
+// tabs), drive units, fault texts and vendor notes.
 #pragma once
 
 #include "core/canopen/CommandScript.h"
 #include "core/canopen/Ds402.h"
 #include "core/canopen/Ds402Controller.h"
 
-#include "app/gui/wizards/ds402/Ds402Units.h"
-
 #include <QDialog>
 #include <QList>
 
-#include <map>
 #include <memory>
 #include <optional>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
-class QSpinBox;
-class QTabWidget;
 class QTimer;
 
 namespace coscope::gui {
@@ -30,6 +27,10 @@ class ScriptPreview;
 class Ds402StateDiagram;
 class Ds402StatusPanel;
 class Ds402MotionPlot;
+class Ds402StepBar;
+class Ds402ModeBox;
+class Ds402TestMoveBox;
+class Ds402FramesTabs;
 
 // The CiA 402 enable step-through (Commission ▸ CiA 402 enable step-through…): shows the
 // drive's state from 6041h as the state machine picture with the statusword bits, one button per
@@ -37,6 +38,9 @@ class Ds402MotionPlot;
 // for the statusword it must lead to, explaining a missing bit in plain words; chooses and
 // verifies the mode of operation (6060h/6061h) among those 6502h lists; an optional test move
 // on a hold-to-run button with a live plot. Quick stop and Disable are always there.
+// Made of: the state picture (Ds402StateDiagram), the statusword panel (Ds402StatusPanel), the
+// step bar (Ds402StepBar), the mode box (Ds402ModeBox), the test move (Ds402TestMoveBox) and the
+// frames and dry-run tabs (Ds402FramesTabs); this class runs the drive through them.
 //
 // Safety (DESIGN.md): asks before Enable operation and before arming a test move; a failed step
 // sends Disable voltage; closing the wizard (Close, Esc, the window's ✕), losing the bus or
@@ -81,7 +85,7 @@ public:
     canopen::ds402::State shownState() const { return state_; }
     uint16_t statusword() const { return statusword_; }
     std::optional<uint32_t> supportedModes() const { return supported_; }
-    int8_t modeDisplay() const { return modeDisplay_; }
+    int8_t modeDisplay() const;
     QString message() const;
     QString faultText() const { return faultText_; }
     bool isCia402() const { return cia402_; }
@@ -91,14 +95,14 @@ public:
 
     Ds402StateDiagram* diagram() const { return diagram_; }
     Ds402StatusPanel* statusPanel() const { return status_; }
-    Ds402MotionPlot* motionPlot() const { return plot_; }
-    WizardFramesPane* framesPane() const { return frames_; }
-    ScriptPreview* preview() const { return preview_; }
+    Ds402MotionPlot* motionPlot() const;
+    WizardFramesPane* framesPane() const;
+    ScriptPreview* preview() const;
     QPushButton* stepButton(canopen::ds402::Command command) const;
-    QPushButton* holdToRunButton() const { return hold_; }
+    QPushButton* holdToRunButton() const;
     QPushButton* quickStopButton() const { return quickStop_; }
     QPushButton* disableButton() const { return disable_; }
-    QComboBox* modeCombo() const { return mode_; }
+    QComboBox* modeCombo() const;
 
 signals:
     void stateRead(bool ok);
@@ -112,6 +116,9 @@ protected:
     void reject() override;
 
 private:
+    static constexpr int kSettleMs = 100;    // re-read while the drive initialises or reacts to a fault
+    static constexpr int kSettleTries = 30;  // ... for at most 3 s
+
     void buildUi();
     void findFirstDrive(int attempt);
     void makeController();
@@ -120,10 +127,11 @@ private:
     void dropController(const QString& why);
     void finishClosing();  // Close, Esc, ✕: disable, stop sending (once)
     void showDriveMode(int8_t mode);  // 6061h as read
-    void applyUnits();
     void readObject(uint16_t index, uint8_t sub, std::function<void(const canopen::SdoResult&)> done);
     void afterState(const canopen::Ds402Result& r, std::function<void()> then);
     void showState(canopen::ds402::State s, uint16_t sw);
+    // After Quick stop or Disable: the state reached (`doneText` with %1 for its name) or why not.
+    void showStopped(const canopen::Ds402Result& r, const QString& doneText, const QString& what);
     void setMessage(const QString& text, bool bad = false);
     void updateButtons();
     void fillModes();
@@ -148,38 +156,23 @@ private:
     int settleTries_ = 0;  // re-reads while the drive is Not ready to switch on
     canopen::ds402::State state_ = canopen::ds402::State::Unknown;
     uint16_t statusword_ = 0;
-    int8_t modeDisplay_ = 0;
-    bool modeRead_ = false;  // 6061h was read since the node was chosen
     std::optional<uint32_t> supported_;
     QString faultText_;
     QString controlWarning_;
-    Ds402Units units_ = Ds402Units::forDictionary({});
-    od::Unit velocityShownIn_, distanceShownIn_;  // what the test move's spin boxes show now
     QList<canopen::ds402::State> visited_;
     std::unique_ptr<canopen::Ds402Controller> ctl_;
     canopen::SdoClient* ctlSdo_ = nullptr;
 
     Ds402StateDiagram* diagram_ = nullptr;
     Ds402StatusPanel* status_ = nullptr;
-    Ds402MotionPlot* plot_ = nullptr;
-    WizardFramesPane* frames_ = nullptr;
-    ScriptPreview* preview_ = nullptr;
-    QTabWidget* tabs_ = nullptr;
+    Ds402StepBar* steps_ = nullptr;
+    Ds402ModeBox* mode_ = nullptr;
+    Ds402TestMoveBox* move_ = nullptr;
+    Ds402FramesTabs* tabs_ = nullptr;
     QComboBox* nodeCombo_ = nullptr;
     QLabel* banner_ = nullptr;
     QLabel* vendor_ = nullptr;
-    QLabel* next_ = nullptr;
     QLabel* message_ = nullptr;
-    QLabel* modeShown_ = nullptr;
-    std::map<canopen::ds402::Command, QPushButton*> steps_;
-    QComboBox* mode_ = nullptr;
-    QPushButton* setMode_ = nullptr;
-    QComboBox* moveKind_ = nullptr;
-    QDoubleSpinBox* velocity_ = nullptr;
-    QDoubleSpinBox* distance_ = nullptr;
-    QSpinBox* duration_ = nullptr;
-    QPushButton* arm_ = nullptr;
-    QPushButton* hold_ = nullptr;
     QPushButton* quickStop_ = nullptr;
     QPushButton* disable_ = nullptr;
     QPushButton* dryRun_ = nullptr;

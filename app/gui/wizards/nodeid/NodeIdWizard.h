@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/wizards/nodeid/ owns the node-ID / bit rate wizard and its pages.
 #pragma once
 
 #include "core/canopen/NodeSettingsChanger.h"

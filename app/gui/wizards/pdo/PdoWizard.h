@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Folder app/gui/wizards/pdo/ owns the PDO mapping wizard: one file per page (choose, mapping,
+// timing, apply), its state, the frame layout picture and vendor notes.
 #pragma once
 
 #include "app/gui/wizards/pdo/PdoWizardState.h"

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Nodes dock's NMT commands as a technician sends them, from the context menu of a node (or
+// of all nodes) against the virtual drives: the confirmation, the warning about an enabled
+// CiA 402 drive before a command that stops it, and what goes out.
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
+#include "core/canopen/Ds402Controller.h"
+#include "eds/SimulatorDictionaries.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QtTest>
+
+#include "tests/gui/ModalAnswer.h"
+#include "tests/gui/SimDriveRig.h"
+
+using namespace coscope;
+using namespace coscope::gui;
+using canopen::ds402::State;
+
+namespace {
+// Right-clicks row `row` of the Nodes dock (-1: where no node is, for "All nodes") and clicks the
+// context menu item `text` once the menu shows.
+bool nmtFromMenu(NodesDock& dock, int row, const QString& text) {
+    QTableView* view = dock.view();
+    QPoint pos(4, view->viewport()->height() - 4);
+    if (row >= 0) {
+        pos = view->visualRect(view->model()->index(row, 0)).center();
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, pos);
+    }
+    bool clicked = false;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (!menu) return;
+        poll.stop();
+        for (QAction* a : menu->actions())
+            if (a->text() == text && a->isEnabled()) {
+                clicked = true;
+                QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
+                return;
+            }
+        QTest::keyClick(menu, Qt::Key_Escape);
+    });
+    poll.start(20);
+    QContextMenuEvent click(QContextMenuEvent::Mouse, pos, view->viewport()->mapToGlobal(pos));
+    QCoreApplication::sendEvent(view->viewport(), &click);
+    return clicked;
+}
+}  // namespace
+
+class TestNodesNmt : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { eds::installSimulatorDictionaries(); }
+
+    // Issue 13: the NMT question from the Nodes dock's context menu reads the drives' statusword
+    // 6041h first without an event loop of its own on the GUI thread: the menu click returns at
+    // once, the question shows when the answers are in and then names an enabled drive.
+    void nmtResetWarnsAboutAnEnabledDrive() {
+        coscope::testing::SimDriveRig rig;
+        QVERIFY(rig.open(QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:dexmart-dev,4:generic-cia402")));
+        NodesDock dock(&rig.ws);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        QVERIFY(QTest::qWaitFor([&] {
+            dock.refresh();  // as the main window's update timer does
+            return dock.model()->rowCount() >= 4;
+        }, 5000));
+        QSignalSpy finished(&dock, &NodesDock::nmtFinished);
+        // Reset communication of all nodes and of node 1 (its row's menu) while drive 1 is in
+        // Operation enabled: the question names it; "no" (Escape) sends nothing.
+        canopen::Ds402Controller ctl(*rig.ws.sdo(), 1);
+        bool on = false;
+        ctl.enable([&](const canopen::Ds402Result& r) { on = r.ok; });
+        QVERIFY(QTest::qWaitFor([&] { return on; }, 6000));
+        QCOMPARE(rig.driveState(1), State::OperationEnabled);
+        for (int row : {-1, dock.model()->rowOfNode(1)}) {
+            QString asked;
+            auto no = coscope::testing::answerEscape(&asked);
+            const int before = int(finished.count());
+            // All nodes: the table has a current row once shown, so ask the dock as its menu would.
+            QVERIFY(row < 0 ? dock.sendNmt(0x82, 0) : nmtFromMenu(dock, row, QStringLiteral("Reset communication")));
+            // Back from the click with nothing asked yet: the 6041h reads are under way.
+            QVERIFY2(asked.isEmpty(), qPrintable(asked));
+            QVERIFY(QTest::qWaitFor([&] { return finished.count() > before; }, 5000));
+            QCOMPARE(finished.last().first().toBool(), false);  // answered "no": nothing sent
+            QVERIFY2(asked.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(asked));
+            QVERIFY2(asked.contains(QStringLiteral("a reset stops it abruptly")), qPrintable(asked));
+            QVERIFY2(asked.contains(QStringLiteral("AL401")), qPrintable(asked));
+            QVERIFY2(asked.contains(row < 0 ? QStringLiteral("to all nodes") : QStringLiteral("to node 1")), qPrintable(asked));
+            QVERIFY(!asked.contains(QStringLiteral("Drive 2")));  // node 2 is not enabled
+            QCOMPARE(rig.driveState(1), State::OperationEnabled);
+        }
+        // Start (01h) does not stop anything: the plain question, no warning.
+        {
+            QString asked;
+            auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
+            QVERIFY(nmtFromMenu(dock, dock.model()->rowOfNode(1), QStringLiteral("Start (Operational)")));
+            QVERIFY(QTest::qWaitFor([&] { return !asked.isEmpty(); }, 5000));
+            QVERIFY2(asked.startsWith(QStringLiteral("Send NMT")), qPrintable(asked));
+        }
+        bool off = false;
+        ctl.disable([&](const canopen::Ds402Result& r) { off = r.ok; });
+        QVERIFY(QTest::qWaitFor([&] { return off; }, 6000));
+        // A reset of node 2, not enabled: its statusword is read, the plain question follows; yes sends it.
+        QString asked;
+        auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
+        const int before = int(finished.count());
+        QVERIFY(nmtFromMenu(dock, dock.model()->rowOfNode(2), QStringLiteral("Reset node")));
+        QVERIFY(QTest::qWaitFor([&] { return finished.count() > before; }, 5000));
+        QVERIFY2(asked.startsWith(QStringLiteral("Send NMT")), qPrintable(asked));
+        QCOMPARE(finished.last().first().toBool(), true);
+    }
+};
+
+QTEST_MAIN(TestNodesNmt)
+#include "test_nodes_nmt.moc"
