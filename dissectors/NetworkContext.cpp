@@ -39,7 +39,7 @@ bool NetworkContext::assignDictionary(int node, const QString& nameOrFile, QStri
         return false;
     }
     QString name;
-    DictionaryPtr d = catalog::load(nameOrFile, &name, error);
+    DictionaryPtr d = eds::DictionaryLibrary::shared().loadShared(nameOrFile, &name, error);
     if (!d) return false;
     assignDictionary(node, std::move(d), name, true);
     return true;
@@ -51,7 +51,7 @@ void NetworkContext::assignDictionary(int node, DictionaryPtr dictionary, const 
         n.dictionary = dictionary;
         n.dictionaryName = name;
         n.userAssigned = byUser;
-        n.vendor = vendorTable(catalog::alarmTableFor(name));
+        n.vendor = vendorTable(name);
         loadDefaults(bus, node & 0x7F);
     };
     if (byUser) {  // the user's choice holds for the node-ID on every bus, seen or not
@@ -122,7 +122,7 @@ const od::ObjectDictionary* NetworkContext::namesFor(int node) const {
     const auto& nodes = buses_[current_].nodes;
     if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary) return nodes[static_cast<size_t>(node)].dictionary.get();
     if (!genericNames_) return nullptr;
-    if (!generic_) const_cast<NetworkContext*>(this)->generic_ = catalog::bundled(QStringLiteral("generic-cia402"));
+    if (!generic_) const_cast<NetworkContext*>(this)->generic_ = eds::DictionaryLibrary::shared().loadShared(QStringLiteral("generic-cia402"));
     return generic_.get();
 }
 
@@ -158,16 +158,20 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
         return;
     }
     if (!identityMatching_ || n.userAssigned) return;
-    QString match;
-    if (t.index == 0x1018 && t.sub == 1) n.vendorId = v;
-    if (t.index == 0x1018 && t.sub == 2) n.productCode = v;
-    if (t.index == 0x1018 && n.vendorId && n.productCode) match = catalog::matchIdentity(*n.vendorId, *n.productCode);
-    if (t.index == 0x1008 || t.index == 0x100A) match = catalog::matchStringObject(t.index, QString::fromLatin1(t.data));
+    eds::DeviceIdentity& id = n.identity;
+    const QString text = QString::fromLatin1(t.data).section(QChar(0), 0, 0);
+    if (t.index == 0x1000 && t.sub == 0) id.deviceType = v;
+    else if (t.index == 0x1018 && t.sub >= 1 && t.sub <= 3) (t.sub == 1 ? id.vendorId : t.sub == 2 ? id.productCode : id.revision) = v;
+    else if (t.index == 0x1008 && t.sub == 0) id.deviceName = text;
+    else if (t.index == 0x100A && t.sub == 0) id.softwareVersion = text;
+    else return;
+    const auto* entry = eds::DictionaryLibrary::shared().match(id);
+    const QString match = entry ? entry->name : QString();
     if (!match.isEmpty() && match != n.dictionaryName) {
         // Keep PDO parameters learned so far: they describe the device better than defaults.
         auto rp = n.rpdo, tp = n.tpdo;
         const bool learned = !rp.empty() || !tp.empty();
-        if (DictionaryPtr d = catalog::bundled(match)) assignDictionary(node, d, match, false);
+        if (DictionaryPtr d = eds::DictionaryLibrary::shared().loadShared(match)) assignDictionary(node, d, match, false);
         if (learned) {
             n.rpdo = std::move(rp);
             n.tpdo = std::move(tp);

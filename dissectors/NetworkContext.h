@@ -29,7 +29,7 @@ struct NodeState {
     int64_t lastNmtNs = 0;
     int guardToggle = -1;         // last node-guarding toggle bit, -1 = none
     bool guardRequested = false;
-    std::optional<uint32_t> vendorId, productCode;  // 1018h:01/02 seen in the trace
+    eds::DeviceIdentity identity;  // 1000h, 1018h:01..03, 1008h, 100Ah seen in the trace
     std::vector<PdoConfig> rpdo, tpdo;  // index = PDO number - 1 (grown on demand)
     SdoChannel sdo;
     bool seen = false;

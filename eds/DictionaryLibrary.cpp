@@ -4,13 +4,47 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QHash>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QStandardPaths>
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <mutex>
+
 namespace coscope::eds {
+
+namespace {
+
+std::optional<std::uint32_t> hexNumber(const QJsonValue& v) {
+    if (!v.isString()) return std::nullopt;
+    bool ok = false;
+    const std::uint32_t n = v.toString().toUInt(&ok, 0);
+    return ok ? std::optional<std::uint32_t>(n) : std::nullopt;
+}
+
+std::optional<std::uint32_t> defaultNumber(const od::ObjectDictionary& d, std::uint16_t index) {
+    const od::SubObject* s = d.entry(index, 0);
+    if (!s || s->defaultValue.isEmpty()) return std::nullopt;
+    bool ok = false;
+    const std::uint32_t v = s->defaultValue.trimmed().toUInt(&ok, 0);
+    return ok ? std::optional<std::uint32_t>(v) : std::nullopt;
+}
+
+QString sidecarPath(const QString& dictionaryPath) {
+    const QFileInfo fi(dictionaryPath);
+    return fi.path() + u'/' + fi.completeBaseName() + QStringLiteral(".json");
+}
+
+}  // namespace
+
+const DictionaryLibrary& DictionaryLibrary::shared() {
+    static const DictionaryLibrary library;
+    return library;
+}
 
 DictionaryLibrary::DictionaryLibrary(const QString& userFolder) : userFolder_(userFolder.isEmpty() ? defaultUserFolder() : userFolder) {
     scan(QStringLiteral(":/dictionaries"), true);
@@ -40,9 +74,30 @@ void DictionaryLibrary::scan(const QString& folder, bool bundled) {
         e.vendorId = r.dictionary.vendorId();
         e.productCode = r.dictionary.productCode();
         e.revision = r.dictionary.revisionNumber();
+        e.deviceType = defaultNumber(r.dictionary, 0x1000);
+        if (const od::SubObject* s = r.dictionary.entry(0x1008, 0)) e.deviceName = s->defaultValue.trimmed();
+        readSidecarIdentity(e);
         auto same = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& x) { return x.name == e.name; });
         if (same != entries_.end()) *same = e;  // user folder replaces bundled
         else entries_.push_back(e);
+    }
+}
+
+// The sidecar's "identity": product variants, placeholder, and the string object (1008h or
+// 100Ah) that names the device when 1018h is not documented.
+void DictionaryLibrary::readSidecarIdentity(Entry& e) {
+    QFile f(sidecarPath(e.path));
+    if (!f.exists() || !f.open(QIODevice::ReadOnly)) return;
+    const QJsonObject id = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("identity")).toObject();
+    e.placeholder = id.value(QStringLiteral("placeholder")).toBool();
+    for (const QJsonValue& v : id.value(QStringLiteral("variants")).toArray())
+        if (auto p = hexNumber(v.toObject().value(QStringLiteral("productCode")))) e.variantProducts.push_back(*p);
+    if (auto t = hexNumber(id.value(QStringLiteral("deviceType")))) e.deviceType = t;
+    for (const char* key : {"softwareVersion", "deviceName"}) {
+        const QJsonObject s = id.value(QLatin1String(key)).toObject();
+        if (s.isEmpty()) continue;
+        e.stringIndex = static_cast<std::uint16_t>(s.value(QStringLiteral("object")).toString().left(4).toUInt(nullptr, 16));
+        e.stringValue = s.value(QStringLiteral("value")).toString();
     }
 }
 
@@ -67,11 +122,13 @@ ReadResult DictionaryLibrary::load(const QString& name) const {
 }
 
 const DictionaryLibrary::Entry* DictionaryLibrary::findByIdentity(std::uint32_t vendorId, std::uint32_t productCode, std::optional<std::uint32_t> revision) const {
+    if (vendorId == 0 && productCode == 0) return nullptr;  // no identity (see match())
     const Entry* best = nullptr;
     int bestRank = -1;
     std::uint32_t bestRev = 0;
     for (const Entry& e : entries_) {
-        if (e.vendorId != vendorId || e.productCode != productCode) continue;
+        const bool variant = e.vendorId == vendorId && std::find(e.variantProducts.begin(), e.variantProducts.end(), productCode) != e.variantProducts.end();
+        if (e.vendorId != vendorId || (e.productCode != productCode && !variant)) continue;
         const std::uint32_t rev = e.revision.value_or(0);
         int rank = 0;
         if (revision && e.revision == revision) rank = 2;
@@ -85,6 +142,59 @@ const DictionaryLibrary::Entry* DictionaryLibrary::findByIdentity(std::uint32_t 
         }
     }
     return best;
+}
+
+const DictionaryLibrary::Entry* DictionaryLibrary::match(const DeviceIdentity& device) const {
+    if (device.hasIdentity()) return findByIdentity(*device.vendorId, *device.productCode, device.revision);
+    // No usable 1018h (CiA 301 §7.5.2.21 makes it mandatory, but AIMOTOR and DEXMART answer 0 or
+    // abort): only what the device and the dictionary both document can tell them apart.
+    auto startsWith = [](const std::optional<QString>& read, const QString& documented) {
+        return read && !documented.isEmpty() && read->trimmed().remove(QChar(0)).startsWith(documented, Qt::CaseInsensitive);
+    };
+    // The device type alone (many drives say 0192h) is evidence only once 1018h was read as 0/0.
+    const int minimum = device.vendorId && device.productCode ? 2 : 4;
+    const Entry* best = nullptr;
+    int bestScore = 0;
+    bool tie = false;
+    for (const Entry& e : entries_) {
+        if (e.hasIdentity()) continue;  // a dictionary with an identity is matched by it only
+        const QString documentedName = e.stringIndex == 0x1008 ? e.stringValue : e.deviceName;
+        if (device.deviceName && !documentedName.isEmpty() && !startsWith(device.deviceName, documentedName)) continue;
+        int score = 0;
+        if (startsWith(device.deviceName, documentedName)) score += 4;
+        if (e.stringIndex == 0x100A && startsWith(device.softwareVersion, e.stringValue)) score += 4;
+        if (device.deviceType && e.deviceType && *device.deviceType == *e.deviceType) score += 2;
+        if (score < minimum || score < bestScore) continue;
+        tie = score == bestScore;
+        best = &e;
+        bestScore = score;
+    }
+    return tie ? nullptr : best;
+}
+
+DictionaryPtr DictionaryLibrary::loadShared(const QString& nameOrFile, QString* name, QString* error) const {
+    static std::mutex mutex;
+    static QHash<QString, DictionaryPtr> cache;  // by path: library dictionaries only
+    const Entry* e = QFileInfo::exists(nameOrFile) && !nameOrFile.startsWith(u':') ? nullptr : find(nameOrFile);
+    if (!e && !QFileInfo::exists(nameOrFile)) {
+        if (error) *error = QStringLiteral("'%1' is neither a known dictionary (%2) nor a file").arg(nameOrFile, names().join(QStringLiteral(", ")));
+        return nullptr;
+    }
+    const QString path = e ? e->path : nameOrFile;
+    if (name) *name = e ? e->name : QFileInfo(nameOrFile).completeBaseName();
+    std::lock_guard lock(mutex);
+    if (e)
+        if (auto it = cache.constFind(path); it != cache.constEnd()) return *it;
+    ReadResult r = loadFile(path);  // with its units sidecar
+    for (const auto& d : r.diagnostics)
+        if (d.severity == Diagnostic::Severity::Error) spdlog::warn("{}", d.toString().toStdString());
+    if (!r.usable) {
+        if (error) *error = QStringLiteral("%1: not a usable EDS/DCF/XDD file").arg(path);
+        return nullptr;
+    }
+    auto d = std::make_shared<const od::ObjectDictionary>(std::move(r.dictionary));
+    if (e) cache.insert(path, d);
+    return d;
 }
 
 void DictionaryLibrary::applyUnits(od::ObjectDictionary& od, const QByteArray& json, const QString& jsonName, Diagnostics& diagnostics) {
@@ -115,8 +225,7 @@ void DictionaryLibrary::applyUnits(od::ObjectDictionary& od, const QByteArray& j
 
 ReadResult DictionaryLibrary::loadFile(const QString& path) {
     ReadResult r = readDictionaryFile(path);
-    const QFileInfo fi(path);
-    const QString sidecar = fi.path() + u'/' + fi.completeBaseName() + QStringLiteral(".json");
+    const QString sidecar = sidecarPath(path);
     QFile f(sidecar);
     if (r.usable && f.exists() && f.open(QIODevice::ReadOnly)) applyUnits(r.dictionary, f.readAll(), sidecar, r.diagnostics);
     return r;

@@ -7,16 +7,32 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace coscope::eds {
 
-// The dictionaries CoScope knows: the bundled ones (resources/dictionaries, compiled in at
+using DictionaryPtr = std::shared_ptr<const od::ObjectDictionary>;
+
+// What a node tells about itself (CiA 301 §7.5.2), the objects a dictionary is matched by.
+// nullopt = not read (or the node does not have the object).
+struct DeviceIdentity {
+    std::optional<std::uint32_t> deviceType;                        // 1000h
+    std::optional<std::uint32_t> vendorId, productCode, revision;   // 1018h:01..03
+    std::optional<QString> deviceName, softwareVersion;             // 1008h, 100Ah
+    // Vendor-ID and product code both read and not both 0 (drives without 1018h answer 0/0).
+    bool hasIdentity() const { return vendorId && productCode && (*vendorId != 0 || *productCode != 0); }
+};
+
+// The dictionaries CoScope knows, the one place that finds, loads, caches and matches them
+// (DESIGN.md "eds/"): the bundled ones (resources/dictionaries, compiled in at
 // :/dictionaries/NAME.eds) and the user's folder (QStandardPaths::GenericDataLocation +
 // "/CoScope/dictionaries", files *.eds, *.dcf, *.xdd). A user file with the same base name as
-// a bundled one replaces it. A sidecar NAME.json next to a dictionary adds units:
-//   {"units": {"6064:00": {"unit": "counts", "factor": 1.0}}}
+// a bundled one replaces it. A sidecar NAME.json next to a dictionary adds units and identity:
+//   {"units": {"6064:00": {"unit": "counts", "factor": 1.0}},
+//    "identity": {"variants": [{"productCode": "0x6030"}], "placeholder": false,
+//                 "deviceName": {"object": "1008:00", "value": "DLV-N050CQE"}}}
 class DictionaryLibrary {
 public:
     struct Entry {
@@ -24,10 +40,20 @@ public:
         QString path;  // file or resource path
         bool bundled = false;
         std::optional<std::uint32_t> vendorId, productCode, revision;  // identity (1018h)
+        std::vector<std::uint32_t> variantProducts;  // sidecar: more product codes of the vendor
+        bool placeholder = false;                    // sidecar: a stand-in identity (generic-cia402)
+        std::optional<std::uint32_t> deviceType;     // 1000h default
+        QString deviceName;                          // 1008h default
+        std::uint16_t stringIndex = 0;               // sidecar: 1008h or 100Ah names the device
+        QString stringValue;                         //   by this text (prefix, case-insensitive)
+        // Vendor-ID and product code described and not both 0.
+        bool hasIdentity() const { return vendorId && productCode && (*vendorId != 0 || *productCode != 0); }
     };
 
     // Scans the bundled resources and userFolder() (or `userFolder` when given).
     explicit DictionaryLibrary(const QString& userFolder = QString());
+    // The library of the default user folder, scanned once (thread safe).
+    static const DictionaryLibrary& shared();
 
     static QString defaultUserFolder();
     const QString& userFolder() const { return userFolder_; }
@@ -42,8 +68,21 @@ public:
     // Rules: the vendor-ID and product code must both match; among those, an exact revision
     // wins, then the highest revision with the same major revision (bits 16..31; CiA 301
     // 7.5.2.21: same major = same CANopen behaviour), then the highest revision overall.
-    // On a tie a user dictionary beats a bundled one.
+    // On a tie a user dictionary beats a bundled one. 0/0 is no identity: nullptr.
     const Entry* findByIdentity(std::uint32_t vendorId, std::uint32_t productCode, std::optional<std::uint32_t> revision = std::nullopt) const;
+
+    // The dictionary for what a node answered, or nullptr. With a real identity (1018h, not
+    // 0/0): findByIdentity, the sidecar's product variants included. Identity 0/0 or unknown
+    // never matches by identity: among the dictionaries without one, the device name (1008h)
+    // or software version (100Ah) the dictionary documents, then its device type (1000h),
+    // decide (the device type alone only when 1018h was read as 0/0); a device name that
+    // differs rules a dictionary out; a tie matches nothing.
+    const Entry* match(const DeviceIdentity& device) const;
+
+    // A dictionary by library name or file path, loaded once and shared (thread safe; files
+    // are read again each time, they may have changed). *name gets the library name or the
+    // file's base name. nullptr with *error (one line) when unknown or unusable.
+    DictionaryPtr loadShared(const QString& nameOrFile, QString* name = nullptr, QString* error = nullptr) const;
 
     // Reads a file (EDS/DCF/XDD) and applies NAME.json next to it when present.
     static ReadResult loadFile(const QString& path);
@@ -52,6 +91,7 @@ public:
 
 private:
     void scan(const QString& folder, bool bundled);
+    static void readSidecarIdentity(Entry& e);
     QString userFolder_;
     std::vector<Entry> entries_;
 };

@@ -37,11 +37,17 @@ bool BusSession::open(const QString& url, QString* error, int timeoutMs) {
 std::optional<od::ObjectDictionary> BusSession::nodeDictionary(uint8_t node, const QString& dictOption, QString* name, QString* error) {
     QString dictName = dictOption;
     if (dictName.isEmpty()) {
-        // Match by identity: 1018h:01 vendor-ID, :02 product code, :03 revision.
-        uint32_t v[3] = {};
-        bool have[3] = {};
+        // Match by identity: 1018h:01 vendor-ID, :02 product code, :03 revision; without one
+        // (0/0), by 1000h device type, 1008h device name and 100Ah software version.
+        auto read = [&](uint16_t index, uint8_t sub) { return canopen::waitForResult<canopen::SdoResult>([&](auto cb) { sdo_->upload(node, index, sub, cb); }, 10000); };
+        auto u32 = [](const QByteArray& d) {
+            uint32_t v = 0;
+            for (int i = 0; i < std::min<int>(4, static_cast<int>(d.size())); ++i) v |= uint32_t(uint8_t(d[i])) << (8 * i);
+            return v;
+        };
+        eds::DeviceIdentity device;
         for (uint8_t sub = 1; sub <= 3; ++sub) {
-            auto r = canopen::waitForResult<canopen::SdoResult>([&](auto cb) { sdo_->upload(node, 0x1018, sub, cb); }, 10000);
+            auto r = read(0x1018, sub);
             if (!r || !r->ok) {
                 if (sub < 3) {
                     if (error) *error = r ? r->error : QStringLiteral("no answer reading 1018h");
@@ -49,13 +55,16 @@ std::optional<od::ObjectDictionary> BusSession::nodeDictionary(uint8_t node, con
                 }
                 continue;
             }
-            for (int i = 0; i < std::min<int>(4, static_cast<int>(r->data.size())); ++i) v[sub - 1] |= uint32_t(uint8_t(r->data[i])) << (8 * i);
-            have[sub - 1] = true;
+            (sub == 1 ? device.vendorId : sub == 2 ? device.productCode : device.revision) = u32(r->data);
         }
-        eds::DictionaryLibrary library;
-        const auto* entry = library.findByIdentity(v[0], v[1], have[2] ? std::optional<uint32_t>(v[2]) : std::nullopt);
+        if (!device.hasIdentity()) {
+            if (auto r = read(0x1000, 0); r && r->ok) device.deviceType = u32(r->data);
+            if (auto r = read(0x1008, 0); r && r->ok) device.deviceName = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
+            if (auto r = read(0x100A, 0); r && r->ok) device.softwareVersion = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
+        }
+        const auto* entry = eds::DictionaryLibrary::shared().match(device);
         if (!entry) {
-            if (error) *error = QStringLiteral("no dictionary matches node %1's identity (vendor 0x%2, product 0x%3)").arg(node).arg(v[0], 8, 16, QChar(u'0')).arg(v[1], 8, 16, QChar(u'0'));
+            if (error) *error = QStringLiteral("no dictionary matches node %1's identity (vendor 0x%2, product 0x%3)").arg(node).arg(device.vendorId.value_or(0), 8, 16, QChar(u'0')).arg(device.productCode.value_or(0), 8, 16, QChar(u'0'));
             return std::nullopt;
         }
         dictName = entry->name;
@@ -86,12 +95,6 @@ bool parseObjectRef(const QString& text, uint16_t* index, uint8_t* sub) {
     *index = static_cast<uint16_t>(m.captured(1).toUInt(nullptr, 16));
     *sub = static_cast<uint8_t>(m.captured(2).isEmpty() ? 0 : m.captured(2).toUInt(nullptr, 16));
     return true;
-}
-
-QString matchDictionary(uint32_t vendorId, uint32_t productCode, std::optional<uint32_t> revision) {
-    static const eds::DictionaryLibrary library;
-    const auto* e = library.findByIdentity(vendorId, productCode, revision);
-    return e ? e->name : QString();
 }
 
 }  // namespace coscope::cli

@@ -45,7 +45,5 @@ private:
 std::optional<uint8_t> parseNodeId(const QString& text, bool allowAll = false);
 // "6041:00", "0x6041:0", "6041sub0", "6041" (sub 0).
 bool parseObjectRef(const QString& text, uint16_t* index, uint8_t* sub);
-// Identity matcher backed by eds::DictionaryLibrary (for NetworkScan).
-QString matchDictionary(uint32_t vendorId, uint32_t productCode, std::optional<uint32_t> revision);
 
 }  // namespace coscope::cli

@@ -4,6 +4,7 @@
 #include "app/cli/CliVerb.h"
 #include "core/canopen/NetworkScan.h"
 #include "core/canopen/ServiceWait.h"
+#include "eds/ScanMatcher.h"
 
 #include <QTextStream>
 
@@ -41,7 +42,7 @@ static int runScan(const QStringList& args) {
     scan.setTimeout(t);
     scan.setMaxOutstanding(par);
     scan.setRange(*first, *last);
-    scan.setMatcher(matchDictionary);
+    scan.setMatcher(eds::scanMatcher());
     std::optional<std::vector<canopen::ScannedNode>> found;
     scan.start([&](const std::vector<canopen::ScannedNode>& f) { found = f; });
     canopen::waitUntil([&] { return found.has_value(); }, 600000);

@@ -7,6 +7,7 @@
 #include "core/canopen/CommandScript.h"
 #include "core/canopen/ScriptRunner.h"
 #include "core/canopen/ServiceWait.h"
+#include "core/sim/BusAtBitRate.h"
 
 #include <QTextStream>
 
@@ -80,10 +81,23 @@ int runRun(const QStringList& args) {
     }
 
     installInterruptHandler();
-    BusSession s;
-    if (!s.open(pos[0], &error)) return failure(verb, error);
-    s.sdo().setDefaultTimeout(timeoutMs);
-    canopen::ScriptRunner runner(s.context(), s.sdo());
+    auto s = std::make_unique<BusSession>();
+    if (!s->open(pos[0], &error)) return failure(verb, error);
+    s->sdo().setDefaultTimeout(timeoutMs);
+    canopen::ScriptRunner runner(s->context(), s->sdo());
+    // "reconnect BITS": close the adapter, open it again at the new rate (a virtual network
+    // keeps its devices meanwhile), go on with the new session.
+    std::shared_ptr<sim::SimNetwork> keepNetwork;
+    runner.setReconnector([&](int bitRate, const canopen::ScriptRunner::Opened& opened) {
+        const QString url = sim::urlAtBitRate(*s->bus(), bitRate, &keepNetwork);
+        canopen::waitUntil([] { return false; }, 100);  // let the last frames leave first
+        s.reset();
+        s = std::make_unique<BusSession>();
+        QString why;
+        if (!s->open(url, &why)) return opened(nullptr, nullptr, QStringLiteral("cannot reopen at %1 bit/s: %2").arg(bitRate).arg(why));
+        s->sdo().setDefaultTimeout(timeoutMs);
+        opened(&s->context(), &s->sdo(), {});
+    });
     const int total = static_cast<int>(script->steps.size());
     QObject::connect(&runner, &canopen::ScriptRunner::stepFinished, &runner, [&](int step, bool ok, const QString& detail) {
         out << QStringLiteral("%1/%2 %3 %4  %5").arg(step + 1).arg(total).arg(ok ? QStringLiteral("ok  ") : QStringLiteral("FAIL"),

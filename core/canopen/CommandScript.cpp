@@ -266,8 +266,12 @@ ScriptStep parseStep(const QString& line) {
     } else if (verb == u"wait-node") {
         const uint8_t node = in.node(false);
         s = ScriptStep::waitForNode(node, in.number(QStringLiteral("timeout (ms)"), 3600000), {});
+    } else if (verb == u"reconnect") {
+        const uint32_t b = in.number(QStringLiteral("bit rate"), 1000000);
+        if (b < 10000) throw ParseError{QStringLiteral("bit rate %1 is below 10000").arg(b)};
+        s = ScriptStep::reconnect(b, {});
     } else {
-        throw ParseError{QStringLiteral("unknown command '%1' (sdo|nmt|lss|wait|wait-node)").arg(verb)};
+        throw ParseError{QStringLiteral("unknown command '%1' (sdo|nmt|lss|wait|wait-node|reconnect)").arg(verb)};
     }
     in.expectEnd();
     return s;
@@ -339,6 +343,14 @@ ScriptStep ScriptStep::waitForNode(uint8_t node, uint32_t timeoutMs, const QStri
     return s;
 }
 
+ScriptStep ScriptStep::reconnect(uint32_t bitRate, const QString& why) {
+    ScriptStep s;
+    s.kind = Kind::Reconnect;
+    s.number = bitRate;
+    s.why = why;
+    return s;
+}
+
 ScriptStep ScriptStep::lssSwitchGlobal(bool configuration, const QString& why) {
     ScriptStep s;
     s.kind = Kind::LssSwitchGlobal;
@@ -402,6 +414,7 @@ bool ScriptStep::sameAs(const ScriptStep& o) const {
     case Kind::LssConfigureNodeId:
     case Kind::LssConfigureBitRate:
     case Kind::LssActivateBitTiming:
+    case Kind::Reconnect:
     case Kind::Wait: return number == o.number;
     }
     return false;
@@ -440,6 +453,7 @@ QString ScriptStep::toLine() const {
     case Kind::LssActivateBitTiming: return QStringLiteral("lss activate %1").arg(number);
     case Kind::Wait: return QStringLiteral("wait %1").arg(number);
     case Kind::WaitForNode: return QStringLiteral("wait-node %1 %2").arg(node).arg(number);
+    case Kind::Reconnect: return QStringLiteral("reconnect %1").arg(number);
     }
     return {};
 }
@@ -468,6 +482,7 @@ QString ScriptStep::describe() const {
     case Kind::LssActivateBitTiming: return QStringLiteral("LSS: switch to the new bit rate (switch delay %1 ms)").arg(number);
     case Kind::Wait: return QStringLiteral("Wait %1 ms").arg(number);
     case Kind::WaitForNode: return QStringLiteral("Wait up to %1 ms for node %2 (boot-up or heartbeat)").arg(number).arg(node);
+    case Kind::Reconnect: return QStringLiteral("Reconnect the adapter at %1").arg(bitRateHuman(number));
     }
     return {};
 }

@@ -29,6 +29,7 @@ struct ScriptStep {
         LssActivateBitTiming, // `number` = switch delay in ms (§6.4.4)
         Wait,                 // `number` ms
         WaitForNode,          // boot-up or heartbeat from `node` within `number` ms
+        Reconnect,            // close the adapter and open it again at `number` bit/s
     };
     Kind kind = Kind::Wait;
     uint8_t node = 0;
@@ -49,6 +50,7 @@ struct ScriptStep {
     static ScriptStep nmtCommand(NmtCommand command, uint8_t node, const QString& why);
     static ScriptStep wait(uint32_t ms, const QString& why);
     static ScriptStep waitForNode(uint8_t node, uint32_t timeoutMs, const QString& why);
+    static ScriptStep reconnect(uint32_t bitRate, const QString& why);
     // LSS builders (CiA 305; added with the implementation, same meaning as the Kind comments).
     static ScriptStep lssSwitchGlobal(bool configuration, const QString& why);
     static ScriptStep lssSwitchSelective(const LssIdentity& identity, const QString& why);
@@ -64,7 +66,7 @@ struct ScriptStep {
 
     // The step as one script line (without the comment), e.g. "sdo write 5 0x1600:00 0x00",
     // "sdo expect 5 0x6041:00 0x0027 mask 0x006f", "nmt preop 5", "lss node-id 7", "wait 100",
-    // "wait-node 7 3000". See CommandScript for the grammar.
+    // "wait-node 7 3000", "reconnect 250000". See CommandScript for the grammar.
     QString toLine() const;
     // Human summary for the dry-run table: "Write 1600h:00 = 00h on node 5".
     QString describe() const;
@@ -86,6 +88,7 @@ struct ScriptStep {
 //   lss switch-selective VENDOR PRODUCT REVISION SERIAL
 //   lss node-id N | lss bitrate BITS | lss store | lss activate DELAY_MS
 //   wait MS | wait-node NODE TIMEOUT_MS
+//   reconnect BITS                        reopen the adapter at BITS bit/s (after a bit-rate change)
 // DATA keeps its length on the bus:
 //   0xHH / 0xHHHH / 0xHHHHHHHH   1, 2 or 4 bytes: the number of hex digits (2, 4, 8) is the size,
 //                                the value is sent little-endian (0x0006 -> 06 00)

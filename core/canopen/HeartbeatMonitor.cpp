@@ -43,60 +43,68 @@ void HeartbeatMonitor::onFrames(const std::vector<CanFrame>& frames) {
     for (const CanFrame& f : frames) {
         const bool errorControl = f.id > 0x700 && f.id <= 0x77F;
         const uint8_t node = static_cast<uint8_t>(errorControl ? f.id - 0x700 : f.id - 0x80);
-        NodeInfo& info = table_[node];
-        const bool wasPresent = info.present;
-        info.present = true;
-        info.lastSeenNs = f.timestampNs ? f.timestampNs : nowNs();
-        bool changed = !wasPresent;
-        if (errorControl) {
-            if (f.isRemote() || f.len < 1) continue;
-            const uint8_t state = f.data[0] & 0x7F;
-            const bool toggle = f.data[0] & 0x80;
-            auto g = guards_.find(node);
-            if (g != guards_.end() && g->second.waiting) {
-                // Guarding answer: the toggle alternates, starting with 0 (CiA 301 §7.2.8.3.2.1).
-                if (!g->second.firstAnswer && toggle != g->second.expectToggle) ++info.guardingErrors;
-                g->second.firstAnswer = false;
-                g->second.expectToggle = !toggle;
-                g->second.waiting = false;
-                g->second.lastAnswerNs = nowNs();
-            }
-            lastHeartbeatNs_[node] = nowNs();
-            if (state == static_cast<uint8_t>(NmtState::BootUp)) {
-                ++info.bootUps;
-                emit bootUp(node);
+        if (errorControl && (f.isRemote() || f.len < 1)) continue;
+        if (!errorControl && f.len < 2) continue;
+        bool changed = !table().node(node).has_value();
+        bool booted = false;
+        const uint8_t state = f.data[0] & 0x7F;
+        const bool toggle = f.data[0] & 0x80;
+        const uint16_t code = errorControl ? 0 : static_cast<uint16_t>(f.data[0] | (f.data[1] << 8));
+        auto g = guards_.find(node);
+        const bool guardAnswer = errorControl && g != guards_.end() && g->second.waiting;
+        // Guarding answer: the toggle alternates, starting with 0 (CiA 301 §7.2.8.3.2.1).
+        const bool wrongToggle = guardAnswer && !g->second.firstAnswer && toggle != g->second.expectToggle;
+        if (guardAnswer) {
+            g->second.firstAnswer = false;
+            g->second.expectToggle = !toggle;
+            g->second.waiting = false;
+            g->second.lastAnswerNs = nowNs();
+        }
+        if (errorControl) lastHeartbeatNs_[node] = nowNs();
+        table().update(node, [&](NodeInfo& info) {
+            info.lastSeenNs = f.timestampNs ? f.timestampNs : nowNs();
+            if (errorControl) {
+                if (wrongToggle) ++info.guardingErrors;
+                if (state == static_cast<uint8_t>(NmtState::BootUp)) {
+                    ++info.bootUps;
+                    booted = changed = true;
+                }
+                if (info.nmtState != state || info.heartbeatLost) changed = true;
+                info.heartbeatLost = false;
+                info.nmtState = state;
+            } else {
+                ++info.emcyCount;
+                info.lastEmcyCode = code;
                 changed = true;
             }
-            if (!info.nmtState || *info.nmtState != state) changed = true;
-            if (info.heartbeatLost) changed = true;
-            info.heartbeatLost = false;
-            info.nmtState = state;
-        } else {
-            if (f.len < 2) continue;
-            const uint16_t code = static_cast<uint16_t>(f.data[0] | (f.data[1] << 8));
-            ++info.emcyCount;
-            info.lastEmcyCode = code;
-            emit emergency(node, code);
-            changed = true;
-        }
+        });
+        if (booted) emit bootUp(node);
+        if (!errorControl) emit emergency(node, code);
         if (changed) emit nodeChanged(node);
     }
 }
 
 void HeartbeatMonitor::onCheck() {
     const int64_t now = nowNs();
-    for (const auto& [node, ms] : consumerMs_) {
-        NodeInfo& info = table_[node];
-        if (!info.heartbeatLost && now - lastHeartbeatNs_[node] > int64_t(ms) * 1'000'000) {
+    // Marks the node lost once; true when it was not lost before.
+    auto lose = [this](uint8_t node) {
+        bool was = false;
+        table().update(node, [&](NodeInfo& info) {
+            was = info.heartbeatLost;
             info.heartbeatLost = true;
+        });
+        return !was;
+    };
+    for (const auto& [node, ms] : consumerMs_) {
+        const auto info = table().node(node);
+        if ((!info || !info->heartbeatLost) && now - lastHeartbeatNs_[node] > int64_t(ms) * 1'000'000 && lose(node)) {
             emit nodeLost(node);
             emit nodeChanged(node);
         }
     }
     for (auto& [node, g] : guards_) {
-        NodeInfo& info = table_[node];
         if (now >= g.nextRequestNs) {
-            if (g.waiting) ++info.guardingErrors;  // the previous request got no answer
+            if (g.waiting) table().update(node, [](NodeInfo& info) { ++info.guardingErrors; });  // the previous request got no answer
             CanFrame rtr;
             rtr.id = 0x700u + node;
             rtr.len = 1;
@@ -106,8 +114,8 @@ void HeartbeatMonitor::onCheck() {
             g.nextRequestNs = now + int64_t(g.guardTimeMs) * 1'000'000;
         }
         const int64_t life = int64_t(g.guardTimeMs) * g.lifeFactor * 1'000'000;
-        if (!info.heartbeatLost && now - g.lastAnswerNs > life) {
-            info.heartbeatLost = true;
+        const auto info = table().node(node);
+        if ((!info || !info->heartbeatLost) && now - g.lastAnswerNs > life && lose(node)) {
             emit nodeLost(node);
             emit nodeChanged(node);
         }

@@ -12,7 +12,7 @@ class QTimer;
 
 namespace coscope::canopen {
 
-// Heartbeat consumer and node-guarding master (CiA 301 §7.2.8.3.2) feeding a NodeTable.
+// Heartbeat consumer and node-guarding master (CiA 301 §7.2.8.3.2) feeding the context's NodeTable.
 // Receives 701h..77Fh (boot-up, heartbeat, guarding answers) and 81h..FFh (EMCY) through the
 // dispatcher. Signals fire on changes only (a node appears, changes state, boots, is lost,
 // sends an EMCY) - never per heartbeat frame.
@@ -22,8 +22,8 @@ public:
     explicit HeartbeatMonitor(MasterContext& context, QObject* parent = nullptr);
     ~HeartbeatMonitor() override;
 
-    const NodeTable& table() const { return table_; }
-    NodeTable& table() { return table_; }
+    const NodeTable& table() const { return context_.nodes(); }
+    NodeTable& table() { return context_.nodes(); }
 
     // Heartbeat consumer: the node is lost when no heartbeat came within `timeMs` (1016h). 0 = off.
     void setConsumerTime(uint8_t node, int timeMs);
@@ -52,7 +52,6 @@ private:
     };
 
     MasterContext& context_;
-    NodeTable table_;
     int subscription_ = 0;
     QTimer* timer_;
     std::map<uint8_t, int> consumerMs_;

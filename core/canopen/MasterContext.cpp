@@ -3,7 +3,8 @@
 
 namespace coscope::canopen {
 
-MasterContext::MasterContext(CanBus* bus) : bus_(bus) {}
+MasterContext::MasterContext(CanBus* bus, NodeTable* nodes)
+    : bus_(bus), ownNodes_(nodes ? nullptr : std::make_unique<NodeTable>()), nodes_(nodes ? nodes : ownNodes_.get()) {}
 
 bool MasterContext::send(const CanFrame& frame, QString* error) {
     if (!bus_) {
@@ -17,31 +18,25 @@ bool MasterContext::send(const CanFrame& frame, QString* error) {
 }
 
 void MasterContext::setNodeDictionary(uint8_t node, const QString& name) {
-    std::lock_guard lock(mutex_);
-    dictionaries_[node] = name;
-    if (name.isEmpty() || tables_.count(name)) return;
-    auto table = std::make_shared<VendorAbortTable>();
-    if (!table->loadDictionaryTable(name)) table.reset();  // no vendor table: CiA texts only
-    tables_[name] = table;
+    nodes_->setDictionary(node, name);
+    abortTable(name);  // read now, not on the first abort
 }
 
-QString MasterContext::nodeDictionary(uint8_t node) const {
+// The vendor abort table of a dictionary, read once; null when it has none (CiA texts only).
+std::shared_ptr<VendorAbortTable> MasterContext::abortTable(const QString& dictionary) const {
+    if (dictionary.isEmpty()) return nullptr;
     std::lock_guard lock(mutex_);
-    auto it = dictionaries_.find(node);
-    return it == dictionaries_.end() ? QString() : it->second;
+    auto it = tables_.find(dictionary);
+    if (it == tables_.end()) {
+        auto table = std::make_shared<VendorAbortTable>();
+        if (!table->loadDictionaryTable(dictionary)) table.reset();
+        it = tables_.emplace(dictionary, std::move(table)).first;
+    }
+    return it->second;
 }
 
 QString MasterContext::abortText(uint8_t node, uint32_t code) const {
-    std::shared_ptr<VendorAbortTable> table;
-    {
-        std::lock_guard lock(mutex_);
-        auto d = dictionaries_.find(node);
-        if (d != dictionaries_.end()) {
-            auto t = tables_.find(d->second);
-            if (t != tables_.end()) table = t->second;
-        }
-    }
-    return describeSdoAbort(code, table.get());
+    return describeSdoAbort(code, abortTable(nodes_->dictionary(node)).get());
 }
 
 }  // namespace coscope::canopen

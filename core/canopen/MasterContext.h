@@ -7,6 +7,7 @@
 
 #include "core/can/CanBus.h"
 #include "core/canopen/FrameDispatcher.h"
+#include "core/canopen/NodeTable.h"
 #include "core/canopen/SdoAbortTexts.h"
 
 #include <QString>
@@ -18,31 +19,38 @@
 namespace coscope::canopen {
 
 // What the master services share for one bus: the bus they send on, the dispatcher that brings
-// them the frames they wait for (fed by the bus's one CaptureSession), and per-node facts the
-// services need to word their results (the node's dictionary, hence its vendor abort texts).
-// The owner keeps the bus, session and context alive longer than the services.
+// them the frames they wait for (fed by the bus's one CaptureSession), and the bus's node table
+// (the services read each node's dictionary there, hence its vendor abort texts, and write what
+// they learn). The owner keeps the bus, session, table and context alive longer than the services.
 class MasterContext {
 public:
-    explicit MasterContext(CanBus* bus);
+    // `nodes`: the bus's node table (the application's); null = the context keeps its own.
+    explicit MasterContext(CanBus* bus, NodeTable* nodes = nullptr);
 
     CanBus* bus() const { return bus_; }
     FrameDispatcher& dispatcher() { return dispatcher_; }
+    NodeTable& nodes() { return *nodes_; }
+    const NodeTable& nodes() const { return *nodes_; }
 
     // Sends through CanBus::send (which enforces listen-only). On failure *error names the bus.
     bool send(const CanFrame& frame, QString* error);
 
-    // The dictionary a node matched (e.g. "delta-asda-a2"); loads its vendor abort table.
+    // The dictionary a node matched (e.g. "delta-asda-a2"), kept in the node table; loads its
+    // vendor abort table.
     void setNodeDictionary(uint8_t node, const QString& name);
-    QString nodeDictionary(uint8_t node) const;
+    QString nodeDictionary(uint8_t node) const { return nodes_->dictionary(node); }
     // describeSdoAbort() with the node's vendor table.
     QString abortText(uint8_t node, uint32_t code) const;
 
 private:
+    std::shared_ptr<VendorAbortTable> abortTable(const QString& dictionary) const;
+
     CanBus* bus_;
     FrameDispatcher dispatcher_;
+    std::unique_ptr<NodeTable> ownNodes_;
+    NodeTable* nodes_;
     mutable std::mutex mutex_;
-    std::map<uint8_t, QString> dictionaries_;
-    std::map<QString, std::shared_ptr<VendorAbortTable>> tables_;
+    mutable std::map<QString, std::shared_ptr<VendorAbortTable>> tables_;
 };
 
 }  // namespace coscope::canopen

@@ -104,20 +104,19 @@ void NetworkScan::readStrings(std::shared_ptr<ScannedNode> found, int which) {
 }
 
 void NetworkScan::finishNode(std::shared_ptr<ScannedNode> found) {
-    if (matcher_ && found->vendorId && found->productCode) found->dictionary = matcher_(*found->vendorId, *found->productCode, found->revision);
-    if (table_) {
-        NodeInfo& info = (*table_)[found->node];
-        info.present = true;
+    if (matcher_) found->dictionary = matcher_(*found);
+    sdo_.context().nodes().update(found->node, [&](NodeInfo& info) {
+        info.scanned = true;
         info.deviceType = found->deviceType;
         info.vendorId = found->vendorId;
         info.productCode = found->productCode;
         info.revision = found->revision;
         info.serial = found->serial;
-        info.deviceName = found->deviceName;
+        info.deviceName = found->deviceName.value_or(QString());
         info.hardwareVersion = found->hardwareVersion;
         info.softwareVersion = found->softwareVersion;
         info.dictionary = found->dictionary;
-    }
+    });
     if (!found->dictionary.isEmpty()) sdo_.context().setNodeDictionary(found->node, found->dictionary);
     found_.push_back(*found);
     nodeDone();

@@ -14,7 +14,7 @@ class QTimer;
 
 namespace coscope::canopen {
 
-// One node found by a scan: 1000h and 1018h:01..04 and the dictionary matched by identity.
+// One node found by a scan: 1000h, 1018h:01..04, 1008h/1009h/100Ah and the dictionary matched to them.
 struct ScannedNode {
     uint8_t node = 0;
     uint32_t deviceType = 0;
@@ -31,11 +31,13 @@ struct ScannedNode {
 // 1008h, 1009h and 100Ah (a node without them is "not present" there, not in error). Rate-limited: at most
 // `maxOutstanding` requests in flight and at least `intervalMs` between two new requests, so a
 // scan never floods a production bus. No request is retried. The dictionary is matched by a
-// function the caller gives (the eds layer's library; core cannot see it).
+// function the caller gives (the eds layer's library; core cannot see it). Found nodes are
+// written into the bus's node table (MasterContext::nodes()).
 class NetworkScan : public QObject {
     Q_OBJECT
 public:
-    using Matcher = std::function<QString(uint32_t vendorId, uint32_t productCode, std::optional<uint32_t> revision)>;
+    // Names the dictionary for what the node answered (empty: none), once all reads are in.
+    using Matcher = std::function<QString(const ScannedNode& node)>;
     using Done = std::function<void(const std::vector<ScannedNode>&)>;
 
     explicit NetworkScan(SdoClient& sdo, QObject* parent = nullptr);
@@ -45,8 +47,6 @@ public:
     void setMaxOutstanding(int n) { maxOutstanding_ = std::max(1, n); }
     void setInterval(int ms) { intervalMs_ = std::max(0, ms); }
     void setMatcher(Matcher m) { matcher_ = std::move(m); }
-    // Optional: found nodes are written into this table (identity, dictionary, present).
-    void setNodeTable(NodeTable* table) { table_ = table; }
 
     void start(Done done);
     bool isRunning() const { return running_; }
@@ -67,7 +67,6 @@ private:
     int maxOutstanding_ = 8;
     int intervalMs_ = 2;
     Matcher matcher_;
-    NodeTable* table_ = nullptr;
     Done done_;
     bool running_ = false;
     int next_ = 0;

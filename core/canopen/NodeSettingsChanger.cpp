@@ -26,11 +26,10 @@ uint32_t le(const QByteArray& b) {
 
 CommandScript NodeSettingsPlan::whole() const {
     CommandScript s = beforeReconnect;
-    if (!afterReconnect.steps.empty()) {
-        std::vector<ScriptStep> after = afterReconnect.steps;
-        after.front().why = QStringLiteral("[Reconnect the adapter at %1 before this step.] ").arg(bitRateText(reconnectBitRate)) + after.front().why;
-        s.steps.insert(s.steps.end(), after.begin(), after.end());
-    }
+    if (reconnect)
+        s.steps.push_back(ScriptStep::reconnect(static_cast<uint32_t>(reconnectBitRate),
+                                                QStringLiteral("Reopen the adapter at %1, the device's new bit rate").arg(bitRateText(reconnectBitRate))));
+    s.steps.insert(s.steps.end(), afterReconnect.steps.begin(), afterReconnect.steps.end());
     return s;
 }
 
@@ -130,15 +129,9 @@ std::optional<NodeSettingsPlan> planNodeSettings(const NodeSettingsRequest& r, Q
     return p;
 }
 
-NodeSettingsChanger::NodeSettingsChanger(MasterContext& context, SdoClient& sdo, QObject* parent)
-    : QObject(parent), context_(context), sdo_(sdo), lss_(std::make_unique<LssMaster>(context)), timer_(new QTimer(this)) {
-    timer_->setSingleShot(true);
-}
+NodeSettingsChanger::NodeSettingsChanger(MasterContext& context, SdoClient& sdo, QObject* parent) : QObject(parent), context_(context), sdo_(sdo) {}
 
-NodeSettingsChanger::~NodeSettingsChanger() {
-    ++generation_;
-    if (watchSub_) context_.dispatcher().unsubscribe(watchSub_);
-}
+NodeSettingsChanger::~NodeSettingsChanger() = default;
 
 void NodeSettingsChanger::prepare(NodeSettingsRequest request, std::function<void(std::optional<NodeSettingsPlan>, QString)> done) {
     auto plan = [done](const NodeSettingsRequest& r) {
@@ -193,126 +186,21 @@ void NodeSettingsChanger::prepare(NodeSettingsRequest request, std::function<voi
 
 void NodeSettingsChanger::runScript(const CommandScript& script, StartCallback started, StepCallback stepDone,
                                     std::function<void(bool, int, const QString&)> done) {
-    ++generation_;
-    script_ = script;
-    index_ = 0;
-    started_ = std::move(started);
-    stepDone_ = std::move(stepDone);
-    scriptDone_ = std::move(done);
-    running_ = true;
-    runStep();
-}
-
-void NodeSettingsChanger::armWatch(uint8_t node) {
-    if (watchSub_ && watchNode_ == node) return;
-    if (watchSub_) context_.dispatcher().unsubscribe(watchSub_);
-    watchNode_ = node;
-    watchSeen_ = false;
-    // Boot-up (one byte 00h) or heartbeat on 700h + node-ID (CiA 301 §7.2.8.3.2).
-    watchSub_ = context_.dispatcher().subscribe(this, {0x700u + node}, [this](const std::vector<CanFrame>& frames) {
-        for (const CanFrame& f : frames)
-            if (!f.isRemote() && f.len >= 1) watchSeen_ = true;
-        if (watchSeen_ && running_ && index_ < script_.steps.size() && script_.steps[index_].kind == ScriptStep::Kind::WaitForNode) {
-            timer_->stop();
-            finishStep(true, QStringLiteral("node %1 is there").arg(watchNode_));
-        }
+    // A new runner per script: this may be called from the previous one's callback.
+    if (runner_) runner_->deleteLater();
+    runner_ = new ScriptRunner(context_, sdo_, this);
+    if (started) connect(runner_, &ScriptRunner::stepStarted, this, [started](int step) { started(step); });
+    auto answer = std::make_shared<QString>();
+    connect(runner_, &ScriptRunner::stepFinished, this, [stepDone, answer](int step, bool ok, const QString& detail) {
+        if (!ok) *answer = detail;
+        if (stepDone) stepDone(step, ok, detail);
     });
-}
-
-void NodeSettingsChanger::runStep() {
-    if (index_ >= script_.steps.size()) {
-        running_ = false;
-        if (watchSub_) context_.dispatcher().unsubscribe(watchSub_);
-        watchSub_ = 0;
-        if (scriptDone_) scriptDone_(true, -1, {});
-        return;
-    }
-    const ScriptStep& s = script_.steps[index_];
-    if (started_) started_(static_cast<int>(index_));
-    // Listen for the node before the step that makes it appear.
-    if (index_ + 1 < script_.steps.size() && script_.steps[index_ + 1].kind == ScriptStep::Kind::WaitForNode) armWatch(script_.steps[index_ + 1].node);
-    const uint64_t gen = generation_;
+    running_ = true;
     QPointer<NodeSettingsChanger> self(this);
-    auto lssDone = [self, gen](const LssResult& r) {
-        if (!self || self->generation_ != gen) return;
-        self->finishStep(r.ok, r.ok ? QStringLiteral("confirmed") : r.error);
-    };
-    auto sdoDone = [self, gen](const SdoResult& r) {
-        if (!self || self->generation_ != gen) return;
-        if (r.ok) return self->finishStep(true, r.upload ? QStringLiteral("read %1").arg(QString::fromLatin1(r.data.toHex(' '))) : QStringLiteral("written"));
-        QString answer = r.error;
-        if (r.serverAborted) answer = QStringLiteral("the device refused: %1").arg(self->context_.abortText(r.node, r.abortCode));
-        else if (r.timedOut) answer = QStringLiteral("no answer from node %1 (SDO timeout)").arg(r.node);
-        self->finishStep(false, answer);
-    };
-    QString error;
-    switch (s.kind) {
-    case ScriptStep::Kind::SdoWrite: sdo_.download(s.node, s.index, s.sub, s.data, sdoDone); return;
-    case ScriptStep::Kind::SdoRead: sdo_.upload(s.node, s.index, s.sub, sdoDone); return;
-    case ScriptStep::Kind::SdoExpect:
-        sdo_.upload(s.node, s.index, s.sub, [self, gen, s](const SdoResult& r) {
-            if (!self || self->generation_ != gen) return;
-            if (!r.ok) return self->finishStep(false, r.error);
-            const uint32_t got = le(r.data), want = le(s.data), mask = s.mask.isEmpty() ? 0xFFFFFFFFu : le(s.mask);
-            self->finishStep((got & mask) == (want & mask), QStringLiteral("read %1h").arg(got, 0, 16));
-        });
-        return;
-    case ScriptStep::Kind::Nmt: {
-        NmtMaster nmt(context_);
-        const bool ok = nmt.send(s.nmt, s.node, &error);
-        return finishStep(ok, ok ? QStringLiteral("sent") : error);
-    }
-    case ScriptStep::Kind::LssSwitchGlobal: {
-        const bool ok = lss_->switchStateGlobal(s.number != 0, &error);
-        return finishStep(ok, ok ? QStringLiteral("sent") : error);
-    }
-    case ScriptStep::Kind::LssSwitchSelective: lss_->switchStateSelective(s.identity, lssDone); return;
-    case ScriptStep::Kind::LssConfigureNodeId: lss_->configureNodeId(static_cast<uint8_t>(s.number), lssDone); return;
-    case ScriptStep::Kind::LssConfigureBitRate: lss_->configureBitRate(static_cast<int>(s.number), lssDone); return;
-    case ScriptStep::Kind::LssStore: lss_->storeConfiguration(lssDone); return;
-    case ScriptStep::Kind::LssActivateBitTiming: {
-        if (!lss_->activateBitTiming(static_cast<uint16_t>(s.number), &error)) return finishStep(false, error);
-        // The devices switch after the delay and wait the delay again (CiA 305 §6.4.4).
-        QTimer::singleShot(int(2 * s.number + 20), this, [self, gen] {
-            if (self && self->generation_ == gen) self->finishStep(true, QStringLiteral("sent"));
-        });
-        return;
-    }
-    case ScriptStep::Kind::Wait:
-        QTimer::singleShot(int(s.number), this, [self, gen] {
-            if (self && self->generation_ == gen) self->finishStep(true, {});
-        });
-        return;
-    case ScriptStep::Kind::WaitForNode: {
-        armWatch(s.node);
-        if (watchSeen_) return finishStep(true, QStringLiteral("node %1 is there").arg(s.node));
-        timer_->disconnect();
-        connect(timer_, &QTimer::timeout, this, [this, gen] {
-            if (generation_ == gen) finishStep(false, QStringLiteral("node %1 did not report (no boot-up or heartbeat) within %2 ms").arg(watchNode_).arg(script_.steps[index_].number));
-        });
-        timer_->start(int(s.number));
-        return;
-    }
-    }
-}
-
-void NodeSettingsChanger::finishStep(bool ok, const QString& detail) {
-    if (!running_) return;
-    const int i = static_cast<int>(index_);
-    if (stepDone_) stepDone_(i, ok, detail);
-    if (!ok) {
-        running_ = false;
-        ++generation_;
-        if (watchSub_) context_.dispatcher().unsubscribe(watchSub_);
-        watchSub_ = 0;
-        if (scriptDone_) scriptDone_(false, i, detail);
-        return;
-    }
-    ++index_;
-    // Next step from the event loop: callbacks never nest.
-    const uint64_t gen = generation_;
-    QTimer::singleShot(0, this, [this, gen] {
-        if (generation_ == gen) runStep();
+    runner_->run(script, [self, done, answer](const ScriptRunResult& r) {
+        if (!self) return;
+        self->running_ = false;
+        if (done) done(r.ok, r.failedStep, *answer);
     });
 }
 

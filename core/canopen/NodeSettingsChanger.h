@@ -4,6 +4,7 @@
 #include "core/canopen/CommandScript.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/NodeSettingsObjects.h"
+#include "core/canopen/ScriptRunner.h"
 #include "core/canopen/SdoClient.h"
 
 #include <QObject>
@@ -13,11 +14,7 @@
 #include <memory>
 #include <optional>
 
-class QTimer;
-
 namespace coscope::canopen {
-
-class LssMaster;
 
 // What to change on one device: its node-ID or its CAN bit rate, through LSS (CiA 305) or the
 // vendor's own parameter over SDO (NodeSettingsObjects.h).
@@ -38,7 +35,8 @@ struct NodeSettingsRequest {
 };
 
 // The exact sequence. Changing the bit rate ends the first part with the device at the new
-// rate: the master reconnects at `reconnectBitRate`, then runs the second part.
+// rate: the master reconnects at `reconnectBitRate`, then runs the second part. whole() has a
+// Reconnect step between the parts, so a saved script reopens the adapter when replayed.
 struct NodeSettingsPlan {
     NodeSettingsRequest request;
     CommandScript beforeReconnect;
@@ -48,7 +46,7 @@ struct NodeSettingsPlan {
     uint8_t finalNodeId = 0;
     QString takesEffect;  // when the device uses the new value, in plain words
     QString recovery;     // what to do when the node does not come back
-    // Everything as one script (with the reconnect as a comment) for saving / `script run`.
+    // Everything as one script (the reconnect as a step) for saving / `script run`.
     CommandScript whole() const;
 };
 
@@ -66,7 +64,7 @@ struct NodeSettingsOutcome {
     QString restored;         // what was undone, empty when nothing needed or could be undone
 };
 
-// Runs a plan's parts through the SDO client, LSS master and NMT master of one bus. Never
+// Runs a plan's parts through a ScriptRunner (the one every wizard uses) on one bus. Never
 // blocks: run() returns at once, progress and the result come as callbacks on this thread.
 // Nothing is retried. On a failure it stops, undoes what it can (a pending node-ID or bit rate
 // configured by LSS is configured back; a vendor parameter is written back) and says so.
@@ -93,25 +91,12 @@ public:
                    std::function<void(bool ok, int failedStep, const QString& answer)> done);
 
 private:
-    void runStep();
-    void finishStep(bool ok, const QString& detail);
-    void armWatch(uint8_t node);
     CommandScript restoreFor(const NodeSettingsPlan& plan, int part, int failedStep) const;
 
     MasterContext& context_;
     SdoClient& sdo_;
-    std::unique_ptr<LssMaster> lss_;
-    QTimer* timer_;
+    ScriptRunner* runner_ = nullptr;
     bool running_ = false;
-    CommandScript script_;
-    size_t index_ = 0;
-    StartCallback started_;
-    StepCallback stepDone_;
-    std::function<void(bool, int, const QString&)> scriptDone_;
-    int watchSub_ = 0;
-    uint8_t watchNode_ = 0;
-    bool watchSeen_ = false;
-    uint64_t generation_ = 0;
 };
 
 }  // namespace coscope::canopen

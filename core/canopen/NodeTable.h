@@ -1,44 +1,79 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/trace/TraceStore.h"
+
 #include <QString>
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <functional>
+#include <mutex>
 #include <optional>
+#include <vector>
 
 namespace coscope::canopen {
 
-// What the master knows about each node 1..127: NMT state from boot-up/heartbeat/guarding
-// (CiA 301 §7.2.8.3.2), when it was last heard, boot-ups, EMCY count, identity (1018h) and the
-// dictionary matched to it. Owned and updated by one thread (the monitor's); others copy it.
+// What is known about one node 1..127: from the traffic seen (boot-up, heartbeat, EMCY, SDO
+// responses; CiA 301 §7.2.8.3.2), from the master's heartbeat consumer / node guarding, and
+// from what was asked (scan, identity reads), with the dictionary matched or assigned to it.
 struct NodeInfo {
-    bool present = false;
-    std::optional<uint8_t> nmtState;      // last reported state (0 boot-up, 4, 5, 7Fh)
-    int64_t lastSeenNs = 0;               // any frame from the node
-    int bootUps = 0;
-    int emcyCount = 0;
+    int node = 0;
+    int nmtState = -1;               // last state from boot-up/heartbeat/guarding (0, 4, 5, 7Fh), -1 unknown
+    int64_t lastHeartbeatNs = 0;     // 0 = none seen
+    int64_t heartbeatPeriodNs = 0;   // interval between the last two heartbeats
+    int64_t lastSeenNs = 0;          // any frame from the node
+    FrameNo lastFrame = 0;
+    uint32_t bootUps = 0;
+    uint32_t emcyCount = 0;
     uint16_t lastEmcyCode = 0;
-    bool heartbeatLost = false;           // consumer heartbeat time (1016h) or guarding life time ran out
-    int guardingErrors = 0;               // missing or wrong-toggle guarding answers
-    std::optional<uint32_t> deviceType;   // 1000h
+    uint32_t sdoFrames = 0;
+    bool seenHeartbeat = false, seenBootUp = false, seenEmcy = false, seenSdo = false, scanned = false;
+    bool heartbeatLost = false;      // consumer heartbeat time (1016h) or guarding life time ran out
+    int guardingErrors = 0;          // missing or wrong-toggle guarding answers
+    std::optional<uint32_t> deviceType;                               // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
-    std::optional<QString> deviceName, hardwareVersion, softwareVersion;  // 1008h, 1009h, 100Ah; nullopt = not present
-    QString dictionary;                   // matched dictionary name
+    QString deviceName;                                               // 1008h, empty = unknown
+    std::optional<QString> hardwareVersion, softwareVersion;          // 1009h, 100Ah; nullopt = not present
+    QString dictionary;              // matched (or assigned) dictionary name
 };
 
+// The one node table of a bus (DESIGN.md "core/"): the Nodes dock, the wizards, the master
+// services and the trace's network context read it. Fed by consume() on the ingest thread (or
+// the log loader), by the heartbeat monitor and by the scan / identity reads through the
+// setters. Thread-safe; views take a snapshot when revision() moved. A node is in the table
+// once something proved it exists (what it sent, or an answer to a scan).
 class NodeTable {
 public:
-    NodeInfo& operator[](uint8_t node) { return nodes_[node & 0x7F]; }
-    const NodeInfo& at(uint8_t node) const { return nodes_[node & 0x7F]; }
-    int presentCount() const {
-        int n = 0;
-        for (int i = 1; i < 128; ++i) n += nodes_[i].present;
-        return n;
-    }
+    void consume(const TraceStore& store, FrameNo first, size_t count);
+    void clear();
+
+    uint64_t revision() const { return revision_.load(std::memory_order_acquire); }
+    std::vector<NodeInfo> snapshot() const;
+    std::optional<NodeInfo> node(int id) const;
+    int presentCount() const;
+
+    // Changes (creates) node `id` under the lock; `fn` must not call back into the table.
+    void update(int id, const std::function<void(NodeInfo&)>& fn);
+    void markScanned(int id);
+    // An empty name clears the dictionary of a node in the table and creates none.
+    void setDictionary(int id, const QString& name);
+    QString dictionary(int id) const;
+    void setDeviceName(int id, const QString& name);
+    void setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
+                     std::optional<uint32_t> revision, std::optional<uint32_t> serial);
+    // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
+    // asking it (identity, name, dictionary) goes to `to`; `from` is dropped, nothing is there.
+    void moveNode(int from, int to);
 
 private:
-    std::array<NodeInfo, 128> nodes_{};
+    NodeInfo& entryLocked(int id);
+    void bump() { revision_.fetch_add(1, std::memory_order_release); }
+
+    mutable std::mutex mutex_;
+    std::array<std::optional<NodeInfo>, 128> nodes_;
+    std::atomic<uint64_t> revision_{0};
 };
 
 }  // namespace coscope::canopen

@@ -29,20 +29,61 @@ QString hexValue(const QByteArray& data) {
 ScriptRunner::ScriptRunner(MasterContext& context, SdoClient& sdo, QObject* parent) : ScriptRunner(context, sdo, nullptr, nullptr, parent) {}
 
 ScriptRunner::ScriptRunner(MasterContext& context, SdoClient& sdo, NmtMaster* nmt, LssMaster* lss, QObject* parent)
-    : QObject(parent), context_(context), sdo_(sdo), nmt_(nmt), lss_(lss), timer_(new QTimer(this)) {
+    : QObject(parent), context_(&context), sdo_(&sdo), nmt_(nmt), lss_(lss), timer_(new QTimer(this)) {
     if (!nmt_) {
-        ownNmt_ = std::make_unique<NmtMaster>(context_);
+        ownNmt_ = std::make_unique<NmtMaster>(*context_);
         nmt_ = ownNmt_.get();
     }
     if (!lss_) {
-        ownLss_ = std::make_unique<LssMaster>(context_);
+        ownLss_ = std::make_unique<LssMaster>(*context_);
         lss_ = ownLss_.get();
     }
     timer_->setSingleShot(true);
 }
 
 ScriptRunner::~ScriptRunner() {
-    if (subscription_) context_.dispatcher().unsubscribe(subscription_);
+    if (subscription_ && context_) context_->dispatcher().unsubscribe(subscription_);
+}
+
+// Listen for boot-up/heartbeat of every waited-for node from now on (CiA 301 §7.2.8.3.2).
+void ScriptRunner::listenForNodes() {
+    std::vector<uint32_t> ids;
+    for (const ScriptStep& s : script_.steps)
+        if (s.kind == ScriptStep::Kind::WaitForNode && s.node >= 1 && s.node <= 127) ids.push_back(0x700u + s.node);
+    if (subscription_) {
+        context_->dispatcher().unsubscribe(subscription_);
+        subscription_ = 0;
+    }
+    if (!ids.empty())
+        subscription_ = context_->dispatcher().subscribe(this, ids, [this](const std::vector<CanFrame>& frames) { onHeartbeats(frames); });
+}
+
+// The old bus's services are let go before the owner closes it; the run goes on with the new
+// bus's context and SDO client, and NMT / LSS masters of its own on them.
+void ScriptRunner::reconnect(int bitRate) {
+    if (!reconnector_) return stepDone(false, QStringLiteral("this run cannot reopen the adapter; reconnect at %1 bit/s by hand").arg(bitRate));
+    if (subscription_) context_->dispatcher().unsubscribe(subscription_);
+    subscription_ = 0;
+    ownNmt_.reset();
+    ownLss_.reset();
+    nmt_ = nullptr;
+    lss_ = nullptr;
+    context_ = nullptr;
+    sdo_ = nullptr;
+    const quint64 gen = generation_;
+    QPointer<ScriptRunner> self(this);
+    reconnector_(bitRate, [self, gen, bitRate](MasterContext* context, SdoClient* sdo, const QString& error) {
+        if (!self || !self->running_ || self->generation_ != gen) return;
+        if (!context || !sdo) return self->stepDone(false, error.isEmpty() ? QStringLiteral("could not reopen the adapter") : error);
+        self->context_ = context;
+        self->sdo_ = sdo;
+        self->ownNmt_ = std::make_unique<NmtMaster>(*context);
+        self->ownLss_ = std::make_unique<LssMaster>(*context);
+        self->nmt_ = self->ownNmt_.get();
+        self->lss_ = self->ownLss_.get();
+        self->listenForNodes();
+        self->stepDone(true, QStringLiteral("connected at %1 bit/s").arg(bitRate));
+    });
 }
 
 bool ScriptRunner::run(const CommandScript& script, ScriptRunCallback done) {
@@ -53,16 +94,11 @@ bool ScriptRunner::run(const CommandScript& script, ScriptRunCallback done) {
     running_ = true;
     step_ = 0;
     seen_.clear();
-    // Listen for boot-up/heartbeat of every waited-for node from now on (CiA 301 §7.2.8.3.2).
-    std::vector<uint32_t> ids;
-    for (const ScriptStep& s : script_.steps)
-        if (s.kind == ScriptStep::Kind::WaitForNode && s.node >= 1 && s.node <= 127) ids.push_back(0x700u + s.node);
-    if (subscription_) {
-        context_.dispatcher().unsubscribe(subscription_);
-        subscription_ = 0;
+    if (!context_) {  // a reconnect failed in an earlier run: no bus
+        running_ = false;
+        return false;
     }
-    if (!ids.empty())
-        subscription_ = context_.dispatcher().subscribe(this, ids, [this](const std::vector<CanFrame>& frames) { onHeartbeats(frames); });
+    listenForNodes();
     spdlog::info("script run: {} step(s){}", script_.steps.size(), script_.title.isEmpty() ? std::string() : ": " + script_.title.toStdString());
     // Start on the next turn of the event loop so `done` never runs inside run().
     const quint64 gen = ++generation_;
@@ -90,10 +126,8 @@ void ScriptRunner::cancel() {
 
 void ScriptRunner::finish(bool ok, bool cancelled) {
     running_ = false;
-    if (subscription_) {
-        context_.dispatcher().unsubscribe(subscription_);
-        subscription_ = 0;
-    }
+    if (subscription_ && context_) context_->dispatcher().unsubscribe(subscription_);
+    subscription_ = 0;
     result_.ok = ok;
     result_.cancelled = cancelled;
     if (!ok) spdlog::warn("script run stopped: {}", result_.error.toStdString());
@@ -145,17 +179,17 @@ void ScriptRunner::startStep() {
     QString error;
     switch (s.kind) {
     case ScriptStep::Kind::SdoWrite:
-        sdo_.download(s.node, s.index, s.sub, s.data, current([this](const SdoResult& r) {
+        sdo_->download(s.node, s.index, s.sub, s.data, current([this](const SdoResult& r) {
             stepDone(r.ok, r.ok ? QStringLiteral("written") : r.error);
         }));
         return;
     case ScriptStep::Kind::SdoRead:
-        sdo_.upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
+        sdo_->upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
             stepDone(r.ok, r.ok ? QStringLiteral("read %1").arg(hexValue(r.data)) : r.error);
         }));
         return;
     case ScriptStep::Kind::SdoExpect:
-        sdo_.upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
+        sdo_->upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
             if (!r.ok) return stepDone(false, r.error);
             const ScriptStep& st = script_.steps[static_cast<size_t>(step_)];
             if (st.matches(r.data)) return stepDone(true, QStringLiteral("read %1 as expected").arg(hexValue(r.data)));
@@ -173,7 +207,10 @@ void ScriptRunner::startStep() {
         return stepDone(true, QStringLiteral("sent"));
     case ScriptStep::Kind::LssActivateBitTiming:
         if (!lss_->activateBitTiming(static_cast<uint16_t>(s.number), &error)) return stepDone(false, error);
-        return stepDone(true, QStringLiteral("sent"));
+        // The devices switch after the delay and wait the delay again (CiA 305 §6.4.4).
+        connect(timer_, &QTimer::timeout, this, [this] { stepDone(true, QStringLiteral("sent")); });
+        timer_->start(static_cast<int>(2 * s.number + 20));
+        return;
     case ScriptStep::Kind::LssSwitchSelective:
         lss_->switchStateSelective(s.identity, current([this](const LssResult& r) {
             stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
@@ -206,6 +243,7 @@ void ScriptRunner::startStep() {
         timer_->start(static_cast<int>(std::min<uint32_t>(s.number, 3600000)));
         checkWaitForNode();
         return;
+    case ScriptStep::Kind::Reconnect: reconnect(static_cast<int>(s.number)); return;
     }
     stepDone(false, QStringLiteral("unknown step"));
 }

@@ -44,6 +44,10 @@ using ScriptRunCallback = std::function<void(const ScriptRunResult&)>;
 // 700h + node for every waited-for node from the start of the run, so a boot-up that comes
 // before the wait step begins is not missed.
 //
+// Reconnect closes the adapter and opens it again at the step's bit rate through the owner's
+// reconnector (the owner has the bus); the run goes on with the new bus's services. Without a
+// reconnector the step fails.
+//
 // cancel() stops at once: no further step is sent; an SDO transfer already on the bus runs to
 // its end in the SdoClient (which shares the node's queue with other users) and its result is
 // ignored.
@@ -55,6 +59,13 @@ public:
     // Uses the given masters (either may be null: then the runner creates its own).
     ScriptRunner(MasterContext& context, SdoClient& sdo, NmtMaster* nmt, LssMaster* lss, QObject* parent = nullptr);
     ~ScriptRunner() override;
+
+    // Reopens the bus at `bitRate` bit/s; calls `opened` once, on this thread, with the new bus's
+    // context and SDO client (both null and a one-line error when it could not). The old
+    // context is no longer used once the reconnector is called.
+    using Opened = std::function<void(MasterContext* context, SdoClient* sdo, const QString& error)>;
+    using Reconnector = std::function<void(int bitRate, Opened opened)>;
+    void setReconnector(Reconnector reconnector) { reconnector_ = std::move(reconnector); }
 
     // Starts the run; false (and `done` not called) when a run is in progress. `done` runs once,
     // later, on this thread (also for an empty script).
@@ -75,9 +86,12 @@ private:
     void onHeartbeats(const std::vector<CanFrame>& frames);
     void checkWaitForNode();
     bool previousStepResets(uint8_t node) const;
+    void listenForNodes();
+    void reconnect(int bitRate);
 
-    MasterContext& context_;
-    SdoClient& sdo_;
+    MasterContext* context_;
+    SdoClient* sdo_;
+    Reconnector reconnector_;
     NmtMaster* nmt_ = nullptr;
     LssMaster* lss_ = nullptr;
     std::unique_ptr<NmtMaster> ownNmt_;

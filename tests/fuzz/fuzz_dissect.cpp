@@ -15,7 +15,7 @@
 using namespace coscope;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    static dissect::DictionaryPtr delta = dissect::catalog::bundled(QStringLiteral("delta-asda-a2"));
+    static dissect::DictionaryPtr delta = eds::DictionaryLibrary::shared().loadShared(QStringLiteral("delta-asda-a2"));
     dissect::NetworkContext ctx;
     if (delta) ctx.assignDictionary(1, delta, QStringLiteral("delta-asda-a2"));
     dissect::Dissection d;

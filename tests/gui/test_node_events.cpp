@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The node table and the event log the Nodes and Events docks show, fed from trace frames.
 #include "app/gui/events/EventLog.h"
-#include "app/gui/nodes/NodeTable.h"
+#include "core/canopen/NodeTable.h"
 
 #include <QtTest>
 
@@ -28,7 +28,7 @@ private slots:
         store.append(at(1400, CanFrame::classic(0x604, {0x40, 0x00, 0x10, 0, 0, 0, 0, 0})));  // request only: no node
         store.append(at(1500, CanFrame::classic(0x586, {0x43, 0x00, 0x10, 0, 0x92, 0x01, 0x02, 0x00})));  // SDO response node 6
         store.append(at(1600, CanFrame::classic(0x187, {1, 2})));  // TPDO alone: no node
-        NodeTable t;
+        canopen::NodeTable t;
         const uint64_t r0 = t.revision();
         t.consume(store, 0, store.size());
         QVERIFY(t.revision() != r0);

@@ -31,6 +31,7 @@
 #include <QWheelEvent>
 #include <QtTest>
 
+#include "tests/CliRun.h"
 #include "tests/gui/ModalAnswer.h"
 
 using namespace coscope;
@@ -211,6 +212,19 @@ private slots:
         QVERIFY(waitFor([&] { return b.wizard->framesPane()->rowCount() > 10; }));
     }
 
+    // Issue 13: AIMOTOR and DEXMART DEV both answer 1018h with 0/0. The scan tells them apart by
+    // 1000h and 1008h: node 3 is shown as the DEXMART DEV, not as an AIMOTOR.
+    void scanTellsDexmartFromAimotor() {
+        Bench b;
+        QVERIFY(b.open());
+        auto* dictionary = b.child<QComboBox>("dictionary");
+        const std::pair<int, QString> cases[] = {{3, QStringLiteral("dexmart-dev")}, {2, QStringLiteral("aimotor")}, {1, QStringLiteral("delta-asda-a2")}};
+        for (const auto& [node, name] : cases) {
+            QVERIFY(b.pickNode(node));
+            QVERIFY2(waitFor([&] { return dictionary->currentData().toString() == name; }, 3000), qPrintable(dictionary->currentText()));
+        }
+    }
+
     void nodeIdByVendorParameter() {
         Bench b;
         QVERIFY(b.open());
@@ -363,6 +377,46 @@ private slots:
         QVERIFY2(script, qPrintable(error));
         QCOMPARE(script->steps.size(), b.wizard->plan()->whole().steps.size());
         QCOMPARE(b.nodeIdOfSerial(2), 2);
+    }
+
+    // Issue 13: the bit-rate change saved as a script (dry run, "Save as script…") has the
+    // reconnect as a step: `coscope-cli script run` replays it on a fresh virtual network,
+    // reopens the adapter at 250 kbit/s and finds the node there; it answers SDO at that rate.
+    void savedBitRateScriptReconnectsWhenReplayed() {
+        Bench b;
+        QVERIFY(b.open());
+        QVERIFY(b.pickNode(2));  // AIMOTOR, by LSS
+        clickNext(b.wizard.get());
+        b.pickChange(NodeIdWizard::Change::BitRate);
+        b.pickMethod(NodeIdWizard::Method::Lss);
+        QVERIFY(b.pickBitRate(250000));
+        QVERIFY(b.toRunPage());
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("bitrate.txt"));
+        QSignalSpy saved(b.wizard->preview(), &ScriptPreview::saved);
+        auto answer = coscope::testing::answerFileDialog(file);
+        QPushButton* save = nullptr;
+        for (auto* p : b.wizard->preview()->findChildren<QPushButton*>())
+            if (p->text().startsWith(QStringLiteral("Save as script"))) save = p;
+        QVERIFY(save);
+        click(save);
+        QVERIFY(saved.count() > 0 || saved.wait(5000));
+        QCOMPARE(b.ws.bus()->url().bitrate() > 0 ? b.ws.bus()->url().bitrate() : 500000, 500000);  // nothing was run here
+        // The node answers SDO at the new rate after the replay's reconnect.
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::Append));
+        f.write("sdo read 2 0x1000:00\n");
+        f.close();
+        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), kAll, file});
+        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        auto stepOk = [&](const QString& line) {
+            for (const QString& l : r.out.split(u'\n'))
+                if (l.contains(QStringLiteral(" ok ")) && l.contains(line)) return true;
+            return false;
+        };
+        QVERIFY2(stepOk(QStringLiteral("reconnect 250000")), qPrintable(r.out));
+        QVERIFY2(stepOk(QStringLiteral("wait-node 2")), qPrintable(r.out));
+        QVERIFY2(stepOk(QStringLiteral("sdo read 2 0x1000:00")), qPrintable(r.out));
     }
 
     // Issue 12 item 2: the new node-ID takes typing, the arrow keys and the wheel; the drive's own

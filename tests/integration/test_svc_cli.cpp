@@ -72,6 +72,21 @@ private slots:
         QVERIFY2(r.out.contains(QStringLiteral("delta-asda-a2")) && r.out.contains(QStringLiteral("aimotor")) && r.out.contains(QStringLiteral("3 node(s) found")), qPrintable(r.out));
     }
 
+    // Issue 13: AIMOTOR and DEXMART DEV both answer 1018h with 0/0; the scan matches them by
+    // 1000h and 1008h, not both as AIMOTOR.
+    void scanTellsDexmartFromAimotor() {
+        const Run r = cli({QStringLiteral("scan"), QStringLiteral("sim://?nodes=2:aimotor,3:dexmart-dev"), QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QStringList lines = r.out.split(u'\n');
+        auto lineOf = [&](const QString& start) {
+            for (const QString& l : lines)
+                if (l.trimmed().startsWith(start)) return l;
+            return QString();
+        };
+        QVERIFY2(lineOf(QStringLiteral("2 ")).contains(QStringLiteral("aimotor")), qPrintable(r.out));
+        QVERIFY2(lineOf(QStringLiteral("3 ")).contains(QStringLiteral("dexmart-dev")), qPrintable(r.out));
+    }
+
     void pdoShowAndMap() {
         Run r = cli({QStringLiteral("pdo"), QStringLiteral("show"), kBus, QStringLiteral("2")});
         QVERIFY2(r.code == 0, qPrintable(r.err));

@@ -9,7 +9,7 @@
 #include "core/canopen/ServiceWait.h"
 #include "core/canopen/SyncProducer.h"
 #include "core/sim/VirtualDevice.h"
-#include "eds/DictionaryLibrary.h"
+#include "eds/ScanMatcher.h"
 
 #include <QtTest>
 
@@ -42,7 +42,7 @@ private slots:
         SdoClient sdo(*rig.context);
         NmtMaster nmt(*rig.context);
         for (uint8_t n : {1, 2, 3}) QVERIFY(setHeartbeat(sdo, n, 50));  // heartbeat every 50 ms
-        const auto state = [&](uint8_t n) { return monitor.table().at(n).nmtState.value_or(0xFF); };
+        const auto state = [&](uint8_t n) { const auto info = monitor.table().node(n); return static_cast<uint8_t>(info ? info->nmtState : 0xFF); };
         QTRY_COMPARE_WITH_TIMEOUT(state(3), uint8_t(0x7F), 2000);
         QVERIFY(nmt.start(0));
         QTRY_VERIFY_WITH_TIMEOUT(state(1) == 5 && state(2) == 5 && state(3) == 5, 2000);
@@ -52,14 +52,14 @@ private slots:
         QVERIFY(nmt.enterPreOperational(2));
         QTRY_COMPARE_WITH_TIMEOUT(state(2), uint8_t(0x7F), 2000);
         // Reset node: boot-up, counted.
-        const int boots = monitor.table().at(3).bootUps;
+        const uint32_t boots = monitor.table().node(3).value_or(NodeInfo{}).bootUps;
         QSignalSpy bootSpy(&monitor, &HeartbeatMonitor::bootUp);
         QVERIFY(nmt.resetNode(3));
-        QTRY_COMPARE_WITH_TIMEOUT(monitor.table().at(3).bootUps, boots + 1, 3000);
+        QTRY_COMPARE_WITH_TIMEOUT(monitor.table().node(3).value_or(NodeInfo{}).bootUps, boots + 1u, 3000);
         QVERIFY(bootSpy.count() >= 1);
         QVERIFY(nmt.resetCommunication(1));
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().at(1).bootUps >= 1, 3000);
-        QVERIFY(monitor.table().at(1).lastSeenNs > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().node(1).value_or(NodeInfo{}).bootUps >= 1, 3000);
+        QVERIFY(monitor.table().node(1).value_or(NodeInfo{}).lastSeenNs > 0);
         QString error;
         QVERIFY(!nmt.send(NmtCommand::Start, 200, &error));
     }
@@ -73,17 +73,17 @@ private slots:
         QVERIFY(setHeartbeat(sdo, 2, 50));
         monitor.setConsumerTime(2, 300);
         QTest::qWait(400);
-        QVERIFY(!monitor.table().at(2).heartbeatLost);
+        QVERIFY(!monitor.table().node(2).value_or(NodeInfo{}).heartbeatLost);
         QSignalSpy lost(&monitor, &HeartbeatMonitor::nodeLost);
         QVERIFY(setHeartbeat(sdo, 2, 0));  // producer off
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().at(2).heartbeatLost, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().node(2).value_or(NodeInfo{}).heartbeatLost, 2000);
         QCOMPARE(lost.count(), 1);
         QVERIFY(setHeartbeat(sdo, 2, 50));
-        QTRY_VERIFY_WITH_TIMEOUT(!monitor.table().at(2).heartbeatLost, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(!monitor.table().node(2).value_or(NodeInfo{}).heartbeatLost, 2000);
         // EMCY from a drive fault.
         rig.onDevice(2, [](sim::VirtualDevice& d) { d.injectDriveFault(); });
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().at(2).emcyCount >= 1, 2000);
-        QVERIFY(monitor.table().at(2).lastEmcyCode != 0);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().node(2).value_or(NodeInfo{}).emcyCount >= 1, 2000);
+        QVERIFY(monitor.table().node(2).value_or(NodeInfo{}).lastEmcyCode != 0);
     }
 
     void nodeGuarding() {
@@ -95,12 +95,12 @@ private slots:
         QVERIFY(setHeartbeat(sdo, 3, 0));  // guarding replaces heartbeat
         monitor.setGuarding(3, 50, 3);
         QTest::qWait(600);
-        QVERIFY(!monitor.table().at(3).heartbeatLost);
-        QCOMPARE(monitor.table().at(3).guardingErrors, 0);
-        QCOMPARE(monitor.table().at(3).nmtState.value_or(0xFF), uint8_t(0x7F));
+        QVERIFY(!monitor.table().node(3).value_or(NodeInfo{}).heartbeatLost);
+        QCOMPARE(monitor.table().node(3).value_or(NodeInfo{}).guardingErrors, 0);
+        QCOMPARE(monitor.table().node(3).value_or(NodeInfo{}).nmtState, 0x7F);
         // A guarded node that is not there is lost after guard time x life time factor.
         monitor.setGuarding(9, 50, 2);
-        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().at(9).heartbeatLost, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor.table().node(9).value_or(NodeInfo{}).heartbeatLost, 2000);
     }
 
     void syncProducerCounterAnd1006() {
@@ -138,16 +138,10 @@ private slots:
         QVERIFY(rig.open());
         SdoClient sdo(*rig.context);
         NetworkScan scan(sdo);
-        NodeTable table;
         scan.setRange(1, 12);
         scan.setTimeout(100);
         scan.setMaxOutstanding(4);
-        scan.setNodeTable(&table);
-        eds::DictionaryLibrary library;
-        scan.setMatcher([&](uint32_t v, uint32_t p, std::optional<uint32_t> r) {
-            const auto* e = library.findByIdentity(v, p, r);
-            return e ? e->name : QString();
-        });
+        scan.setMatcher(eds::scanMatcher());
         std::optional<std::vector<ScannedNode>> found;
         scan.start([&](const auto& f) { found = f; });
         QVERIFY(waitUntil([&] { return found.has_value(); }, 20000));
@@ -158,8 +152,8 @@ private slots:
         QCOMPARE((*found)[1].dictionary, QStringLiteral("aimotor"));
         QCOMPARE((*found)[2].node, uint8_t(5));
         QVERIFY((*found)[2].serial.has_value());
-        QCOMPARE(table.presentCount(), 3);
-        QCOMPARE(table.at(2).dictionary, QStringLiteral("aimotor"));
+        QCOMPARE(rig.context->nodes().presentCount(), 3);
+        QCOMPARE(rig.context->nodes().node(2)->dictionary, QStringLiteral("aimotor"));
         QCOMPARE(rig.context->nodeDictionary(1), QStringLiteral("delta-asda-a2"));
         // Rate limit: never more than 4 requests in flight, so the scan of 12 nodes with
         // 9 silent ones takes at least ceil(9/4) timeouts.

@@ -38,6 +38,7 @@ CommandScript everyKind() {
     s.steps.push_back(ScriptStep::lssSwitchGlobal(false, QStringLiteral("Back to waiting")));
     s.steps.push_back(ScriptStep::wait(250, QStringLiteral("Let it settle")));
     s.steps.push_back(ScriptStep::waitForNode(7, 3000, QStringLiteral("Two-line reason\nsecond line")));
+    s.steps.push_back(ScriptStep::reconnect(250000, QStringLiteral("Reopen the adapter at the new bit rate")));
     return s;
 }
 
@@ -60,6 +61,7 @@ private slots:
         QCOMPARE(ScriptStep::lssActivateBitTiming(100, {}).toLine(), QStringLiteral("lss activate 100"));
         QCOMPARE(ScriptStep::wait(100, {}).toLine(), QStringLiteral("wait 100"));
         QCOMPARE(ScriptStep::waitForNode(7, 3000, {}).toLine(), QStringLiteral("wait-node 7 3000"));
+        QCOMPARE(ScriptStep::reconnect(250000, {}).toLine(), QStringLiteral("reconnect 250000"));
         // The builder's data is little-endian as on the bus.
         QCOMPARE(ScriptStep::sdoWrite(5, 0x6040, 0, 0x1234, 2, {}).data, QByteArray::fromHex("3412"));
         // A full mask is no mask.

@@ -11,12 +11,15 @@ using namespace coscope;
 
 namespace {
 
-void writeEds(const QString& path, const char* vendor, const char* product, const char* revision, const char* name) {
+void writeEds(const QString& path, const char* vendor, const char* product, const char* revision, const char* name,
+              const char* deviceType = "0x00020192", const char* deviceName = nullptr) {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(QByteArray("[DeviceInfo]\nVendorName=T\nVendorNumber=") + vendor + "\nProductNumber=" + product + "\nRevisionNumber=" + revision +
             "\nProductName=" + name + "\n[MandatoryObjects]\nSupportedObjects=1\n1=0x1000\n[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\n"
-            "DefaultValue=0x00020192\n[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\nPDOMapping=1\n");
+            "DefaultValue=" + deviceType + "\n" +
+            (deviceName ? QByteArray("[1008]\nParameterName=Manufacturer device name\nDataType=0x0009\nAccessType=const\nDefaultValue=") + deviceName + "\n" : QByteArray()) +
+            "[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\nPDOMapping=1\n");
 }
 
 }  // namespace
@@ -28,6 +31,8 @@ private slots:
     void unitsSidecar();
     void unknownName();
     void bundledNamesLoad();
+    void noIdentityMatchesByDeviceTypeAndName();
+    void noIdentityTieMatchesNothing();
 };
 
 void TestEdsLibrary::userFolderAndIdentity() {
@@ -48,6 +53,65 @@ void TestEdsLibrary::userFolderAndIdentity() {
     QCOMPARE(lib.findByIdentity(0x100, 0x21)->name, QString("b"));
     QVERIFY(!lib.findByIdentity(0x100, 0x22));
     QVERIFY(!lib.findByIdentity(0x101, 0x20));
+}
+
+// Issue 13: AIMOTOR and DEXMART have no 1018h (both answer 0/0). 0/0 never matches by
+// identity; the device type (1000h) and device name (1008h) tell them apart.
+void TestEdsLibrary::noIdentityMatchesByDeviceTypeAndName() {
+    const eds::DictionaryLibrary& lib = eds::DictionaryLibrary::shared();
+    QVERIFY(!lib.findByIdentity(0, 0));
+    auto nameOf = [&](const eds::DeviceIdentity& d) {
+        const auto* e = lib.match(d);
+        return e ? e->name : QString();
+    };
+    eds::DeviceIdentity dexmart;
+    dexmart.vendorId = 0;
+    dexmart.productCode = 0;
+    dexmart.deviceType = 0;
+    QCOMPARE(nameOf(dexmart), QString("dexmart-dev"));  // 1000h = 0
+    dexmart.deviceName = QString("DLV-N050CQE");
+    QCOMPARE(nameOf(dexmart), QString("dexmart-dev"));
+    eds::DeviceIdentity aimotor;
+    aimotor.vendorId = 0;
+    aimotor.productCode = 0;
+    aimotor.deviceType = 0x192;
+    QCOMPARE(nameOf(aimotor), QString("aimotor"));
+    // 0/0 alone says nothing.
+    eds::DeviceIdentity none;
+    none.vendorId = 0;
+    none.productCode = 0;
+    QCOMPARE(nameOf(none), QString());
+    // A device name the dictionary does not document rules it out.
+    none.deviceType = 0;
+    none.deviceName = QString("SOMETHING-ELSE");
+    QCOMPARE(nameOf(none), QString());
+    // 1018h not read: the device type alone (0192h is common) is not enough, a name is.
+    eds::DeviceIdentity unread;
+    unread.deviceType = 0x192;
+    QCOMPARE(nameOf(unread), QString());
+    unread.softwareVersion = QString("AIMOTOR_CIA402 V1.2");
+    QCOMPARE(nameOf(unread), QString("aimotor"));
+    // A real identity still matches by it.
+    eds::DeviceIdentity delta;
+    delta.vendorId = 0x1DD;
+    delta.productCode = 0x6030;  // ASDA-M, a variant in the sidecar
+    delta.deviceType = 0;
+    QCOMPARE(nameOf(delta), QString("delta-asda-a2"));
+}
+
+void TestEdsLibrary::noIdentityTieMatchesNothing() {
+    QTemporaryDir dir;
+    writeEds(dir.filePath("x1.eds"), "0", "0", "0", "X1", "0x00010191", "X-ONE");
+    writeEds(dir.filePath("x2.eds"), "0", "0", "0", "X2", "0x00010191", "X-TWO");
+    const eds::DictionaryLibrary lib(dir.path());
+    eds::DeviceIdentity d;
+    d.vendorId = 0;
+    d.productCode = 0;
+    d.deviceType = 0x10191;
+    QVERIFY(!lib.match(d));  // both say 1000h = 00010191h: a tie
+    d.deviceName = QString("X-TWO");
+    QVERIFY(lib.match(d));
+    QCOMPARE(lib.match(d)->name, QString("x2"));
 }
 
 void TestEdsLibrary::unitsSidecar() {

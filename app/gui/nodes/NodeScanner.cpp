@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/nodes/NodeScanner.h"
 
-#include "app/gui/nodes/NodeTable.h"
+#include "core/canopen/NodeTable.h"
 #include "core/canopen/SdoClient.h"
 #include "eds/DictionaryLibrary.h"
 
@@ -19,7 +19,7 @@ uint32_t u32le(const QByteArray& b) {
 }
 }  // namespace
 
-NodeScanner::NodeScanner(canopen::SdoClient* sdo, NodeTable* table, QObject* parent) : QObject(parent), sdo_(sdo), table_(table) {}
+NodeScanner::NodeScanner(canopen::SdoClient* sdo, canopen::NodeTable* table, QObject* parent) : QObject(parent), sdo_(sdo), table_(table) {}
 
 void NodeScanner::scan(int firstNode, int lastNode, int timeoutMs) {
     if (!sdo_ || isRunning()) return;
@@ -51,23 +51,26 @@ void NodeScanner::identifyThen(int node, std::function<void()> then) {
         return;
     }
     const auto id = static_cast<uint8_t>(node);
-    sdo_->upload(id, 0x1008, 0, [this, node](const canopen::SdoResult& r) {
-        if (r.ok) table_->setDeviceName(node, QString::fromLatin1(r.data).trimmed().remove(QChar(0)));
+    // Per-node transfers run in order: 1000h, 1008h, 1018h:01..04; sub 4 is the last.
+    auto device = std::make_shared<eds::DeviceIdentity>();
+    sdo_->upload(id, 0x1000, 0, [device](const canopen::SdoResult& r) {
+        if (r.ok) device->deviceType = u32le(r.data);
+    });
+    sdo_->upload(id, 0x1008, 0, [this, node, device](const canopen::SdoResult& r) {
+        if (!r.ok) return;
+        device->deviceName = QString::fromLatin1(r.data).trimmed().remove(QChar(0));
+        table_->setDeviceName(node, *device->deviceName);
     });
     // 1018h identity object: 1 vendor-ID, 2 product code, 3 revision, 4 serial (CiA 301 §7.5.2.21).
-    auto parts = std::make_shared<std::array<std::optional<uint32_t>, 4>>();
+    auto serial = std::make_shared<std::optional<uint32_t>>();
     for (uint8_t sub = 1; sub <= 4; ++sub) {
-        sdo_->upload(id, 0x1018, sub, [this, node, sub, parts, then](const canopen::SdoResult& r) {
-            if (r.ok) (*parts)[sub - 1] = u32le(r.data);
-            if (sub != 4) return;  // per-node transfers run in order: sub 4 is the last
-            const auto& p = *parts;
-            table_->setIdentity(node, p[0], p[1], p[2], p[3]);
-            if (p[0] && p[1]) {
-                const eds::DictionaryLibrary library;
-                if (const auto* e = library.findByIdentity(*p[0], *p[1], p[2])) {
-                    table_->setDictionary(node, e->name);
-                    sdo_->context().setNodeDictionary(static_cast<uint8_t>(node), e->name);
-                }
+        sdo_->upload(id, 0x1018, sub, [this, node, sub, device, serial, then](const canopen::SdoResult& r) {
+            if (r.ok) (sub == 1 ? device->vendorId : sub == 2 ? device->productCode : sub == 3 ? device->revision : *serial) = u32le(r.data);
+            if (sub != 4) return;
+            table_->setIdentity(node, device->vendorId, device->productCode, device->revision, *serial);
+            if (const auto* e = eds::DictionaryLibrary::shared().match(*device)) {
+                table_->setDictionary(node, e->name);
+                sdo_->context().setNodeDictionary(static_cast<uint8_t>(node), e->name);
             }
             if (then) then();
         });

@@ -9,19 +9,18 @@
 namespace coscope::canopen {
 class MasterContext;
 class SdoClient;
+class NodeTable;
 }  // namespace coscope::canopen
 
 namespace coscope::gui {
 
-class NodeTable;
-
 // Network scan and identification through the SDO client (never blocks): reads 1000h (device
 // type) from nodes 1..127 — a node that answers (even with an abort) exists — then its device
-// name 1008h and identity 1018h:01..04, and matches a dictionary from the library by identity.
+// type, name 1008h and identity 1018h:01..04, and matches a dictionary (DictionaryLibrary::match).
 class NodeScanner : public QObject {
     Q_OBJECT
 public:
-    NodeScanner(canopen::SdoClient* sdo, NodeTable* table, QObject* parent = nullptr);
+    NodeScanner(canopen::SdoClient* sdo, canopen::NodeTable* table, QObject* parent = nullptr);
 
     void scan(int firstNode = 1, int lastNode = 127, int timeoutMs = 300);
     void identify(int node);
@@ -35,7 +34,7 @@ private:
     void identifyThen(int node, std::function<void()> then);
     void done();
     canopen::SdoClient* sdo_;
-    NodeTable* table_;
+    canopen::NodeTable* table_;
     int outstanding_ = 0;
     std::set<int> found_;
 };

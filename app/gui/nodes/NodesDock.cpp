@@ -215,7 +215,7 @@ bool NodesDock::readEnabledDrives(uint8_t command, int node, std::function<void(
     std::vector<int> ids;
     if (node > 0) ids.push_back(node);
     else
-        for (const NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
+        for (const canopen::NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
     if (ids.empty()) return false;
     // Read the statusword 6041h of each node (short timeout; transfers to different nodes run
     // side by side). A node without 6041h simply aborts: not a drive. The answers come back

@@ -10,7 +10,7 @@ namespace coscope::gui {
 
 NodesModel::NodesModel(QObject* parent) : QAbstractTableModel(parent) {}
 
-void NodesModel::setTable(NodeTable* table) {
+void NodesModel::setTable(canopen::NodeTable* table) {
     beginResetModel();
     table_ = table;
     nodes_.clear();
@@ -46,7 +46,7 @@ int NodesModel::columnCount(const QModelIndex& parent) const { return parent.isV
 
 QVariant NodesModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= rowCount()) return {};
-    const NodeInfo& n = nodes_[static_cast<size_t>(index.row())];
+    const canopen::NodeInfo& n = nodes_[static_cast<size_t>(index.row())];
     const int64_t now = now_ ? now_() : n.lastSeenNs;
     const bool late = n.seenHeartbeat && n.heartbeatPeriodNs > 0 && now - n.lastHeartbeatNs > std::max<int64_t>(3 * n.heartbeatPeriodNs, 1'500'000'000);
     if (role == NodeIdRole) return n.node;

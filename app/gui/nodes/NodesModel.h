@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "app/gui/nodes/NodeTable.h"
+#include "core/canopen/NodeTable.h"
 
 #include <QAbstractTableModel>
 
@@ -20,13 +20,13 @@ public:
 
     explicit NodesModel(QObject* parent = nullptr);
 
-    void setTable(NodeTable* table);
+    void setTable(canopen::NodeTable* table);
     // The time heartbeat ages are measured against: now for live buses, the last frame offline.
     void setClock(std::function<int64_t()> now) { now_ = std::move(now); }
     void refresh();
 
     int nodeAt(int row) const { return nodes_[static_cast<size_t>(row)].node; }
-    const NodeInfo& infoAt(int row) const { return nodes_[static_cast<size_t>(row)]; }
+    const canopen::NodeInfo& infoAt(int row) const { return nodes_[static_cast<size_t>(row)]; }
     int rowOfNode(int node) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
@@ -35,9 +35,9 @@ public:
     QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
 
 private:
-    NodeTable* table_ = nullptr;
+    canopen::NodeTable* table_ = nullptr;
     std::function<int64_t()> now_;
-    std::vector<NodeInfo> nodes_;
+    std::vector<canopen::NodeInfo> nodes_;
     uint64_t revision_ = ~uint64_t(0);
 };
 

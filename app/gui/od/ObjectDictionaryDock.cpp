@@ -301,7 +301,7 @@ void ObjectDictionaryDock::refresh() {
     // With no node chosen, show the first identified node of the network (and on the simulated
     // network read its values: reading a real device is the user's decision).
     if (node_ < 0 && isVisible()) {
-        for (const NodeInfo& n : workspace_->nodes().snapshot())
+        for (const canopen::NodeInfo& n : workspace_->nodes().snapshot())
             if (!n.dictionary.isEmpty() && n.seenHeartbeat) {
                 setNode(n.node);
                 autoPicked_ = true;

@@ -274,7 +274,7 @@ QString PlotDock::emptyReason() const {
     const auto pdos = recorder_->pdosSeen();
     if (pdos.empty()) {
         QStringList nodes;
-        for (const NodeInfo& n : workspace_->nodes().snapshot()) nodes << QString::number(n.node);
+        for (const canopen::NodeInfo& n : workspace_->nodes().snapshot()) nodes << QString::number(n.node);
         QString text = tr("No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.").arg(frames);
         if (!nodes.isEmpty()) text += u' ' + tr("Nodes seen: %1.").arg(nodes.join(QStringLiteral(", ")));
         if (workspace_->isLive()) text += u' ' + tr("Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).");

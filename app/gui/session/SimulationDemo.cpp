@@ -113,7 +113,7 @@ void startSimulationDemo(Workspace* ws) {
         QObject::connect(ws, &Workspace::sourceChanged, scanner, &QObject::deleteLater);
         QObject::connect(scanner, &NodeScanner::finished, ws, [ws] {
             if (!ws->canTransmit()) return;
-            for (const NodeInfo& n : ws->nodes().snapshot()) {
+            for (const canopen::NodeInfo& n : ws->nodes().snapshot()) {
                 if (!n.scanned) continue;
                 // Producer heartbeat time 1017h = 500 ms, encoded as the node's dictionary
                 // declares it (CiA 301 says UNSIGNED16; AIMOTOR declares UNSIGNED32). One write,
@@ -142,7 +142,7 @@ void startSimulationDemo(Workspace* ws) {
             auto* wait = new QTimer(ws);
             wait->setInterval(250);
             QObject::connect(wait, &QTimer::timeout, ws, [ws, wait, tries] {
-                for (const NodeInfo& n : ws->nodes().snapshot())
+                for (const canopen::NodeInfo& n : ws->nodes().snapshot())
                     if (n.scanned && n.dictionary == u"aimotor" && ws->canTransmit()) {
                         wait->deleteLater();
                         startMotion(ws, static_cast<uint8_t>(n.node));

@@ -75,7 +75,7 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     });
     connect(bus_.get(), &CanBus::errorOccurred, this, &Workspace::errorOccurred);
     session_ = std::make_unique<CaptureSession>(store_);
-    master_ = std::make_unique<canopen::MasterContext>(bus_.get());
+    master_ = std::make_unique<canopen::MasterContext>(bus_.get(), &nodes_);
     for (auto& c : analysisConsumers()) session_->addConsumer(std::move(c));
     session_->addConsumer(master_->dispatcher().consumer());
     sdo_ = std::make_unique<canopen::SdoClient>(*master_);
@@ -102,7 +102,7 @@ void Workspace::disconnectBus() {
     // The capture is complete: a dictionary assigned from now on records its signals again.
     logRecorded_ = true;
     recordedNames_.clear();
-    for (const NodeInfo& n : nodes_.snapshot())
+    for (const canopen::NodeInfo& n : nodes_.snapshot())
         if (!n.dictionary.isEmpty()) recordedNames_.emplace(n.node, n.dictionary);
     sourceName_ += QStringLiteral(" (disconnected)");
     emit busStateChanged(CanBus::State::Closed);
@@ -140,7 +140,7 @@ void Workspace::syncDictionaries() {
     if (rev == syncedNodesRevision_) return;
     syncedNodesRevision_ = rev;
     std::map<int, QString> names;
-    for (const NodeInfo& n : nodes_.snapshot())
+    for (const canopen::NodeInfo& n : nodes_.snapshot())
         if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
     traceDecoder_->setDictionaries(names);
     signals_->setDictionaries(names);
@@ -158,7 +158,7 @@ void Workspace::poll() {
         logRecorded_ = true;
         syncDictionaries();
         std::map<int, QString> names;
-        for (const NodeInfo& n : nodes_.snapshot())
+        for (const canopen::NodeInfo& n : nodes_.snapshot())
             if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
         recordedNames_ = names;
     }

@@ -4,12 +4,12 @@
 #pragma once
 
 #include "app/gui/events/EventLog.h"
-#include "app/gui/nodes/NodeTable.h"
 #include "app/gui/plot/SignalReplayJob.h"
 #include "app/gui/trace/FrameDecoder.h"
 #include "app/gui/trace/LogLoadJob.h"
 #include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanBus.h"
+#include "core/canopen/NodeTable.h"
 #include "core/trace/CaptureSession.h"
 #include "dissectors/SignalRecorder.h"
 
@@ -45,7 +45,7 @@ public:
     void clear();
 
     const std::shared_ptr<TraceStore>& store() const { return store_; }
-    NodeTable& nodes() { return nodes_; }
+    canopen::NodeTable& nodes() { return nodes_; }
     EventLog& events() { return events_; }
     const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
     TraceDecoder& traceDecoder() { return *traceDecoder_; }
@@ -86,7 +86,7 @@ private:
     std::shared_ptr<const FrameDecoder> decoder_;
     std::shared_ptr<TraceStore> store_;
     std::shared_ptr<dissect::SignalRecorder> signals_;
-    NodeTable nodes_;
+    canopen::NodeTable nodes_;
     EventLog events_;
     std::unique_ptr<CanBus> bus_;
     std::unique_ptr<CaptureSession> session_;

@@ -72,7 +72,7 @@ void TraceDecoder::setDictionaries(const std::map<int, QString>& names) {
         auto it = loaded_.find(name);
         if (it == loaded_.end()) {
             QString dictName, error;
-            dissect::DictionaryPtr d = dissect::catalog::load(name, &dictName, &error);
+            dissect::DictionaryPtr d = eds::DictionaryLibrary::shared().loadShared(name, &dictName, &error);
             if (!d) {
                 lastError_ = error;
                 continue;

@@ -2,7 +2,6 @@
 #include "app/gui/wizards/ds402/Ds402FaultText.h"
 
 #include "core/canopen/Emcy.h"
-#include "dissectors/DictionaryCatalog.h"
 #include "dissectors/VendorTable.h"
 
 namespace coscope::gui {
@@ -18,7 +17,7 @@ Ds402Fault describeDs402Fault(const QString& dictionary, uint16_t errorCode, uin
     Ds402Fault f;
     f.errorCode = errorCode;
     f.ciaText = canopen::emcyCodeText(errorCode);
-    const dissect::VendorTable* table = dissect::vendorTable(dissect::catalog::alarmTableFor(dictionary));
+    const dissect::VendorTable* table = dissect::vendorTable(dictionary);
     if (!table) return f;
     // 1003h:01 = (vendor alarm number << 16) | error code (Delta and AIMOTOR manuals; see the
     // tables' historyLayout). Only trusted when its low word is the current error code.

@@ -14,7 +14,7 @@ Ds402Units Ds402Units::forDictionary(const QString& dictionaryName) {
     auto fallback = [](const char* text) { return od::Unit{QCoreApplication::translate("coscope::gui::Ds402Units", text), 1.0}; };
     Ds402Units u{fallback("units/s"), fallback("units/s"), fallback("units"), fallback("units"), fallback("units/s")};
     if (dictionaryName.isEmpty()) return u;
-    const dissect::DictionaryPtr od = dissect::catalog::load(dictionaryName, nullptr, nullptr);
+    const dissect::DictionaryPtr od = eds::DictionaryLibrary::shared().loadShared(dictionaryName);
     if (!od) return u;
     auto take = [&](uint16_t index, od::Unit& into) {
         if (const od::SubObject* e = od->entry(index, 0); e && e->unit && !e->unit->text.isEmpty() && e->unit->factor > 0) into = *e->unit;

@@ -51,7 +51,7 @@ void Ds402Wizard::findFirstDrive(int attempt) {
         return;
     }
     std::vector<int> ids;
-    for (const NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
+    for (const canopen::NodeInfo& n : workspace_->nodes().snapshot()) ids.push_back(n.node);
     std::sort(ids.begin(), ids.end());
     if (ids.empty()) {
         QTimer::singleShot(500, this, [this, attempt] { findFirstDrive(attempt + 1); });
@@ -105,7 +105,7 @@ void Ds402Wizard::selectNode(int node) {
     settleTries_ = 0;
     // The node list of the combo: every node seen, this one selected.
     nodeCombo_->clear();
-    for (const NodeInfo& n : workspace_->nodes().snapshot())
+    for (const canopen::NodeInfo& n : workspace_->nodes().snapshot())
         nodeCombo_->addItem(n.dictionary.isEmpty() ? tr("Node %1").arg(n.node) : tr("Node %1 — %2").arg(n.node).arg(n.dictionary), n.node);
     if (nodeCombo_->findData(node) < 0) nodeCombo_->addItem(tr("Node %1").arg(node), node);
     nodeCombo_->setCurrentIndex(nodeCombo_->findData(node));
@@ -113,22 +113,27 @@ void Ds402Wizard::selectNode(int node) {
     tabs_->frames()->markStart();
     makeController();
     if (dictionary_.isEmpty() && ctl_) {
-        // The node table has no dictionary yet (the network was not scanned): match one by the
-        // identity object 1018h sub 1 vendor-ID, sub 2 product code (CiA 301 §7.5.2.21), as the
-        // node scan does, so the vendor notes and alarm texts are known.
+        // The node table has no dictionary yet (the network was not scanned): match one as the
+        // node scan does, by the identity object 1018h sub 1 vendor-ID, sub 2 product code
+        // (CiA 301 §7.5.2.21), or without one by 1000h and 1008h, so the vendor notes and alarm
+        // texts are known.
         setMessage(tr("Reading the identity of node %1 (1018h)…").arg(node));
-        auto vendor = std::make_shared<std::optional<uint32_t>>();
+        auto device = std::make_shared<eds::DeviceIdentity>();
         QPointer<Ds402Wizard> self(this);
         const int selection = selection_;
-        readObject(0x1018, 1, [vendor](const SdoResult& r) {
-            if (r.ok) *vendor = le32(r.data);
+        readObject(0x1000, 0, [device](const SdoResult& r) {
+            if (r.ok) device->deviceType = le32(r.data);
         });
-        readObject(0x1018, 2, [self, vendor, selection](const SdoResult& r) {
+        readObject(0x1008, 0, [device](const SdoResult& r) {
+            if (r.ok) device->deviceName = QString::fromLatin1(r.data).section(QChar(0), 0, 0);
+        });
+        readObject(0x1018, 1, [device](const SdoResult& r) {
+            if (r.ok) device->vendorId = le32(r.data);
+        });
+        readObject(0x1018, 2, [self, device, selection](const SdoResult& r) {
             if (!self || selection != self->selection_) return;
-            if (r.ok && *vendor) {
-                const eds::DictionaryLibrary library;
-                if (const auto* e = library.findByIdentity(**vendor, le32(r.data))) self->dictionary_ = e->name;
-            }
+            if (r.ok) device->productCode = le32(r.data);
+            if (const auto* e = eds::DictionaryLibrary::shared().match(*device)) self->dictionary_ = e->name;
             self->setMessage({});
             self->startReading();
         });

@@ -111,7 +111,6 @@ void NodeIdWizard::selectNode(int node) {
             identityKnown_ = true;
         }
     }
-    if (dict.isEmpty() && workspace_->master()) dict = workspace_->master()->nodeDictionary(static_cast<uint8_t>(node));
     request_.dictionary = dict;
     if (!vendorMethodAvailable()) request_.method = Method::Lss;
     plan_.reset();
@@ -317,7 +316,8 @@ bool NodeIdWizard::start(QString* why) {
 void NodeIdWizard::runPart(int part) {
     auto* c = changer();
     if (!c) return finish(false, tr("The connection is gone: %1").arg(sendRefusal()));
-    const int offset = part == 0 ? 0 : static_cast<int>(plan_->beforeReconnect.steps.size());
+    // The preview shows plan_->whole(): the second part comes after the Reconnect step.
+    const int offset = part == 0 ? 0 : static_cast<int>(plan_->beforeReconnect.steps.size()) + 1;
     QPointer<NodeIdWizard> self(this);
     c->run(
         *plan_, part, [self, offset](int step) { if (self) self->preview()->markRunning(offset + step); },
@@ -350,6 +350,8 @@ void NodeIdWizard::reconnect() {
     if (!bus) return finish(false, tr("The connection is gone before reconnecting."));
     const QString url = sim::urlAtBitRate(*bus, plan_->reconnectBitRate, &keepNetwork_);
     emit progress(tr("Reconnecting at %1 (%2)…").arg(bitRateText(plan_->reconnectBitRate), url));
+    const int reconnectStep = static_cast<int>(plan_->beforeReconnect.steps.size());
+    preview()->markRunning(reconnectStep);
     reconnecting_ = true;
     changer_.reset();  // it belongs to the old connection's services
     changerFor_ = nullptr;
@@ -367,6 +369,7 @@ void NodeIdWizard::reconnect() {
         if (workspace_->canTransmit()) {
             timer->deleteLater();
             reconnecting_ = false;
+            preview()->markStep(static_cast<int>(plan_->beforeReconnect.steps.size()), true, tr("connected at %1").arg(bitRateText(plan_->reconnectBitRate)));
             runPart(1);
         } else if (*waited > 10000) {
             timer->deleteLater();
@@ -378,16 +381,12 @@ void NodeIdWizard::reconnect() {
 }
 
 void NodeIdWizard::followChange(int from, int to) {
-    NodeTable& nodes = workspace_->nodes();
+    canopen::NodeTable& nodes = workspace_->nodes();
     if (from >= 1 && from <= 127 && from != to) {
         nodes.moveNode(from, to);
         workspace_->events().forgetNode(from);  // its heartbeats come from `to` now
         workspace_->events().add({TraceEvent::Kind::Info, nowNs(), kNoFrame, to,
                                   tr("Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)").arg(from).arg(to)});
-        if (auto* m = workspace_->master()) {
-            m->setNodeDictionary(static_cast<uint8_t>(from), {});
-            if (const auto info = nodes.node(to); info && !info->dictionary.isEmpty()) m->setNodeDictionary(static_cast<uint8_t>(to), info->dictionary);
-        }
         workspace_->syncDictionaries();
     }
     // Ask the device at its new ID (or rate) who it is (1018h): confirms the entry, and gives a

@@ -81,7 +81,7 @@ void PdoChoosePage::refreshNodes() {
     const int selected = wizard_->state().node;
     QStringList labels;
     QList<int> ids;
-    for (const NodeInfo& n : nodes) {
+    for (const canopen::NodeInfo& n : nodes) {
         labels << (n.dictionary.isEmpty() ? tr("Node %1 (no dictionary)").arg(n.node)
                                           : tr("Node %1 — %2%3").arg(n.node).arg(n.deviceName.isEmpty() ? n.dictionary : n.deviceName,
                                                                                  n.deviceName.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.dictionary)));
@@ -101,14 +101,14 @@ void PdoChoosePage::refreshNodes() {
         filling_ = false;
     }
     // The node's dictionary became known (scan finished): take it.
-    for (const NodeInfo& n : nodes)
+    for (const canopen::NodeInfo& n : nodes)
         if (n.node == selected && !n.dictionary.isEmpty() && n.dictionary != wizard_->state().dictionaryName && !wizard_->isApplying() && !wizard_->isReading()) {
             wizard_->selectTarget(n.node, wizard_->state().pdo);
             return;
         }
     // Preselect the first node with a dictionary when none was asked for.
     if (selected < 0) {
-        for (const NodeInfo& n : nodes)
+        for (const canopen::NodeInfo& n : nodes)
             if (!n.dictionary.isEmpty()) {
                 wizard_->selectTarget(n.node, wizard_->state().pdo);
                 return;

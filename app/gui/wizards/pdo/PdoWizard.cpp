@@ -205,7 +205,7 @@ void PdoWizard::selectTarget(int node, canopen::PdoId pdo) {
         if (self->autoPick_ && r.ok && r.config.entries.empty()) {
             // Opened without a node: pass over a node whose PDO is empty if another may show more.
             self->autoTried_.push_back(self->state_.node);
-            for (const NodeInfo& n : self->workspace_->nodes().snapshot())
+            for (const canopen::NodeInfo& n : self->workspace_->nodes().snapshot())
                 if (!n.dictionary.isEmpty() && std::find(self->autoTried_.begin(), self->autoTried_.end(), n.node) == self->autoTried_.end()) {
                     self->selectTarget(n.node, self->state_.pdo);
                     return;

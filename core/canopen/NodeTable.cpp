@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "app/gui/nodes/NodeTable.h"
+#include "core/canopen/NodeTable.h"
 
 #include "core/canopen/CobId.h"
 
-namespace coscope::gui {
-
-using canopen::Service;
+namespace coscope::canopen {
 
 NodeInfo& NodeTable::entryLocked(int id) {
     auto& slot = nodes_[static_cast<size_t>(id & 0x7F)];
@@ -23,7 +21,7 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
         const FrameNo n = first + static_cast<FrameNo>(i);
         const TraceRecord& r = store.record(n);
         if (r.flags & (CanFrame::Extended | CanFrame::Error)) continue;
-        const auto info = canopen::classifyCobId(r.id);
+        const auto info = classifyCobId(r.id);
         if (info.node < 1) continue;
         // Only what a node itself sends proves it exists: error control, EMCY, SDO responses, TPDOs.
         // Requests to a node (600h, RPDOs, guarding RTR) say nothing about it being there.
@@ -104,6 +102,28 @@ std::optional<NodeInfo> NodeTable::node(int id) const {
     return nodes_[static_cast<size_t>(id)];
 }
 
+int NodeTable::presentCount() const {
+    std::lock_guard lock(mutex_);
+    int n = 0;
+    for (const auto& e : nodes_) n += e.has_value();
+    return n;
+}
+
+void NodeTable::update(int id, const std::function<void(NodeInfo&)>& fn) {
+    if (id < 1 || id > 127) return;
+    {
+        std::lock_guard lock(mutex_);
+        fn(entryLocked(id));
+    }
+    bump();
+}
+
+QString NodeTable::dictionary(int id) const {
+    std::lock_guard lock(mutex_);
+    if (id < 0 || id > 127 || !nodes_[static_cast<size_t>(id)]) return {};
+    return nodes_[static_cast<size_t>(id)]->dictionary;
+}
+
 void NodeTable::markScanned(int id) {
     std::lock_guard lock(mutex_);
     entryLocked(id).scanned = true;
@@ -112,6 +132,7 @@ void NodeTable::markScanned(int id) {
 
 void NodeTable::setDictionary(int id, const QString& name) {
     std::lock_guard lock(mutex_);
+    if (name.isEmpty() && (id < 0 || id > 127 || !nodes_[static_cast<size_t>(id)])) return;
     entryLocked(id).dictionary = name;
     bump();
 }
@@ -146,9 +167,12 @@ void NodeTable::moveNode(int from, int to) {
         if (old->productCode) e.productCode = old->productCode;
         if (old->revision) e.revision = old->revision;
         if (old->serial) e.serial = old->serial;
+        if (old->deviceType) e.deviceType = old->deviceType;
+        if (old->hardwareVersion) e.hardwareVersion = old->hardwareVersion;
+        if (old->softwareVersion) e.softwareVersion = old->softwareVersion;
         old.reset();
     }
     bump();
 }
 
-}  // namespace coscope::gui
+}  // namespace coscope::canopen
