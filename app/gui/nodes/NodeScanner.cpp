@@ -51,9 +51,14 @@ void NodeScanner::identifyThen(int node, std::function<void()> then) {
         return;
     }
     const auto id = static_cast<uint8_t>(node);
-    sdo_->upload(id, 0x1008, 0, [this, node](const canopen::SdoResult& r) {
-        if (r.ok) table_->setDeviceName(node, QString::fromLatin1(r.data).trimmed().remove(QChar(0)));
-    });
+    // 1008h device name, 1009h hardware and 100Ah software version are optional (CiA 301
+    // §7.5.2.9-11): a node without one aborts the read, which is normal (not present).
+    for (const uint16_t index : {uint16_t(0x1008), uint16_t(0x1009), uint16_t(0x100A)}) {
+        sdo_->upload(id, index, 0, [this, node, index](const canopen::SdoResult& r) {
+            if (r.ok) table_->setOptionalText(node, index, QString::fromLatin1(r.data).remove(QChar(0)).trimmed());
+            else if (r.serverAborted) table_->setOptionalText(node, index, std::nullopt);
+        });
+    }
     // 1018h identity object: 1 vendor-ID, 2 product code, 3 revision, 4 serial (CiA 301 §7.5.2.21).
     auto parts = std::make_shared<std::array<std::optional<uint32_t>, 4>>();
     for (uint8_t sub = 1; sub <= 4; ++sub) {

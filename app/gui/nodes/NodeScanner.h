@@ -17,7 +17,8 @@ class NodeTable;
 
 // Network scan and identification through the SDO client (never blocks): reads 1000h (device
 // type) from nodes 1..127 — a node that answers (even with an abort) exists — then its device
-// name 1008h and identity 1018h:01..04, and matches a dictionary from the library by identity.
+// name 1008h, hardware and software versions 1009h/100Ah and identity 1018h:01..04, and matches
+// a dictionary from the library by identity. The optional ones a node lacks are "not present".
 class NodeScanner : public QObject {
     Q_OBJECT
 public:

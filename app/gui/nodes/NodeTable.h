@@ -29,7 +29,13 @@ struct NodeInfo {
     bool seenHeartbeat = false, seenBootUp = false, seenEmcy = false, seenSdo = false, scanned = false;
     QString dictionary;   // matched (or assigned) dictionary name
     QString deviceName;   // 1008h
+    QString hardwareVersion, softwareVersion;  // 1009h, 100Ah
+    // Optional objects a scan asked for and the node does not have (it aborted the read):
+    // bits kNoDeviceName, kNoHardwareVersion, kNoSoftwareVersion (CiA 301 §7.5.2.9-11).
+    uint8_t notPresent = 0;
+    static constexpr uint8_t kNoDeviceName = 1, kNoHardwareVersion = 2, kNoSoftwareVersion = 4;
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h sub 1..4
+    bool identityRead = false;  // 1018h was asked for: an empty sub above is not present
 };
 
 // The nodes seen on a bus, fed on the ingest thread (or the log loader) by consume(); the views
@@ -47,6 +53,8 @@ public:
     void markScanned(int id);
     void setDictionary(int id, const QString& name);
     void setDeviceName(int id, const QString& name);
+    // 1008h, 1009h or 100Ah as read: its text, or nullopt when the node does not have it.
+    void setOptionalText(int id, uint16_t index, const std::optional<QString>& text);
     void setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
                      std::optional<uint32_t> revision, std::optional<uint32_t> serial);
     // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
