@@ -290,6 +290,9 @@ bool PdoEngine::onFrame(const CanFrame& f, int64_t nowNs, bool operational) {
     }
     for (Pdo& r : rpdos_) {
         if (!r.valid || (r.cobId & 0x7FF) != f.id) continue;
+        if (dev_.personality().tpdoFeAnswersRpdo)
+            for (Pdo& t : tpdos_)
+                if (t.type == 254 && t.commIndex - 0x1800 == r.commIndex - 0x1400) t.pending = true;
         if (r.type >= 254) {
             apply(r, f.data.data(), f.len);
         } else {
@@ -307,10 +310,11 @@ void PdoEngine::tick(int64_t nowNs, bool operational) {
     uint8_t buf[8];
     for (Pdo& p : tpdos_) {
         if (!p.valid || p.type < 254) continue;
-        // Event-driven: change of the mapped data, or the event timer (sub 5) expiring.
         const int n = encode(p, buf);
-        if (!p.haveLast || std::memcmp(buf, p.lastData.data(), 8) != 0) p.pending = true;
-        if (p.eventMs && nowNs >= p.nextEventNs && !p.pending) p.pending = p.timerDue = true;
+        const bool answersRpdo = p.type == 254 && dev_.personality().tpdoFeAnswersRpdo;
+        // Event-driven: change of the mapped data, or the event timer (sub 5) expiring.
+        if (!answersRpdo && (!p.haveLast || std::memcmp(buf, p.lastData.data(), 8) != 0)) p.pending = true;
+        if (!answersRpdo && p.eventMs && nowNs >= p.nextEventNs && !p.pending) p.pending = p.timerDue = true;
         if (p.pending && (p.lastTxNs < 0 || nowNs - p.lastTxNs >= int64_t(p.inhibitNs))) sendTpdo(p, buf, n, nowNs);
     }
 }

@@ -27,6 +27,7 @@ class VirtualDevice;
 // The SYNC counter (CiA 301 §7.2.5) is processed only when the device's 1019h is 2..240: then
 // the SYNC start value (1800h sub 6) picks the first SYNC of a cyclic TPDO; a SYNC whose length
 // does not match 1019h raises EMCY 8240h (unexpected SYNC data length, CiA 301 Table 21).
+// DEXMART's type FEh TPDO answers the RPDO of the same number instead (Personality).
 class PdoEngine {
 public:
     explicit PdoEngine(VirtualDevice& device);

@@ -208,6 +208,21 @@ private slots:
         r.frame(CanFrame::classic(0x080, {}));
         QCOMPARE(r.times(0x083).size(), size_t(1));
     }
+
+    // DEXMART DEV: TPDO1 of type FEh (its default, inhibit and event time 0Ah) is the answer to
+    // RPDO1 and its event timer has no function (extract-dexmart §4.2-4.3, §8.3).
+    void dexmartFeTpdoAnswersRpdo() {
+        Rig r(QStringLiteral("dexmart-dev"), 4);
+        r.nmt(0x01);
+        r.run(100 * kMs);
+        QCOMPARE(r.times(0x184).size(), size_t(0));
+        r.frame(CanFrame::classic(0x204, {0x00, 0x00, 0x00, 0x00, 0x00}));  // RPDO1: 3051h CMD 0, data 0
+        r.run(5 * kMs);
+        QCOMPARE(r.times(0x184).size(), size_t(1));
+        QCOMPARE(r.times(0x284).size(), size_t(0));  // TPDO2 answers RPDO2 only
+        r.run(100 * kMs);
+        QCOMPARE(r.times(0x184).size(), size_t(1));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSimPdoClock)
