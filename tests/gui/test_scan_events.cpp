@@ -99,7 +99,12 @@ private slots:
             return nodes->rowCount() >= 3;
         }));
 
-        // Right-click in the node table ▸ Scan network, then Yes in the confirmation.
+        // Connecting scans by itself; once that is done, right-click in the node table ▸ Scan
+        // network, then Yes in the confirmation.
+        QVERIFY(waitFor([&] {
+            w.refresh();
+            return w.nodesDock()->scanAction()->isEnabled();
+        }, 30000));
         auto* view = w.nodesDock()->findChild<QTableView*>();
         QVERIFY(view);
         QString asked;
