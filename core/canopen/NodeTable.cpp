@@ -143,10 +143,23 @@ void NodeTable::setDeviceName(int id, const QString& name) {
     bump();
 }
 
+void NodeTable::setOptionalText(int id, uint16_t index, const std::optional<QString>& text) {
+    const uint8_t bit = index == 0x1008 ? NodeInfo::kNoDeviceName : index == 0x1009 ? NodeInfo::kNoHardwareVersion : index == 0x100A ? NodeInfo::kNoSoftwareVersion : 0;
+    if (!bit) return;
+    std::lock_guard lock(mutex_);
+    NodeInfo& e = entryLocked(id);
+    if (index == 0x1008) e.deviceName = text.value_or(QString());
+    else if (index == 0x1009) e.hardwareVersion = text;
+    else e.softwareVersion = text;
+    e.notPresent = text ? (e.notPresent & ~bit) : (e.notPresent | bit);
+    bump();
+}
+
 void NodeTable::setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
                             std::optional<uint32_t> revision, std::optional<uint32_t> serial) {
     std::lock_guard lock(mutex_);
     NodeInfo& e = entryLocked(id);
+    e.identityRead = true;
     if (vendor) e.vendorId = vendor;
     if (product) e.productCode = product;
     if (revision) e.revision = revision;
@@ -163,6 +176,10 @@ void NodeTable::moveNode(int from, int to) {
         e.scanned = e.scanned || old->scanned;
         if (!old->dictionary.isEmpty()) e.dictionary = old->dictionary;
         if (!old->deviceName.isEmpty()) e.deviceName = old->deviceName;
+        if (old->hardwareVersion) e.hardwareVersion = old->hardwareVersion;
+        if (old->softwareVersion) e.softwareVersion = old->softwareVersion;
+        e.notPresent |= old->notPresent;
+        e.identityRead = e.identityRead || old->identityRead;
         if (old->vendorId) e.vendorId = old->vendorId;
         if (old->productCode) e.productCode = old->productCode;
         if (old->revision) e.revision = old->revision;

@@ -35,7 +35,12 @@ struct NodeInfo {
     std::optional<uint32_t> deviceType;                               // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
     QString deviceName;                                               // 1008h, empty = unknown
-    std::optional<QString> hardwareVersion, softwareVersion;          // 1009h, 100Ah; nullopt = not present
+    std::optional<QString> hardwareVersion, softwareVersion;          // 1009h, 100Ah; nullopt = unknown
+    // Optional objects a scan asked for and the node does not have (it aborted the read):
+    // bits kNoDeviceName, kNoHardwareVersion, kNoSoftwareVersion (CiA 301 §7.5.2.9-11).
+    uint8_t notPresent = 0;
+    static constexpr uint8_t kNoDeviceName = 1, kNoHardwareVersion = 2, kNoSoftwareVersion = 4;
+    bool identityRead = false;  // 1018h was asked for: an empty sub above is not present
     QString dictionary;              // matched (or assigned) dictionary name
 };
 
@@ -61,6 +66,8 @@ public:
     void setDictionary(int id, const QString& name);
     QString dictionary(int id) const;
     void setDeviceName(int id, const QString& name);
+    // 1008h, 1009h or 100Ah as read: its text, or nullopt when the node does not have it.
+    void setOptionalText(int id, uint16_t index, const std::optional<QString>& text);
     void setIdentity(int id, std::optional<uint32_t> vendor, std::optional<uint32_t> product,
                      std::optional<uint32_t> revision, std::optional<uint32_t> serial);
     // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by

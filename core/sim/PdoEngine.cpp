@@ -72,6 +72,7 @@ PdoEngine::PdoEngine(VirtualDevice& device) : dev_(device) {}
 
 void PdoEngine::reset() {
     dirty_ = true;
+    operational_ = false;
     tpdos_.clear();
     rpdos_.clear();
 }
@@ -113,13 +114,22 @@ void PdoEngine::reload() {
         if (!dev_.dictionary().object(comm)) continue;
         Pdo p;
         readPdo(p, comm, static_cast<uint16_t>(0x1A00 + n), true);
-        // Keep the running state of a PDO whose configuration did not move.
+        // Keep the running state of a PDO whose configuration did not move; a PDO that is
+        // valid again (or has a new mapping) starts afresh and, event-driven, is sent once.
         for (const Pdo& old : tpdos_)
-            if (old.commIndex == comm && old.cobId == p.cobId && old.type == p.type) {
+            if (old.commIndex == comm && old.cobId == p.cobId && old.type == p.type && old.valid == p.valid &&
+                old.map == p.map) {
                 p.syncCount = old.syncCount;
                 p.lastTxNs = old.lastTxNs;
                 p.nextEventNs = old.nextEventNs;
+                p.pending = old.pending;
+                p.timerDue = old.timerDue;
+                p.lastData = old.lastData;
+                p.haveLast = old.haveLast;
+                p.latched = old.latched;
+                p.latchedValid = old.latchedValid;
             }
+        if (p.eventMs && !p.haveLast) p.nextEventNs = dev_.now() + int64_t(p.eventMs) * 1'000'000;
         t.push_back(std::move(p));
     }
     for (int n = 0; n < 512; ++n) {
@@ -179,7 +189,14 @@ void PdoEngine::sendTpdo(Pdo& p, const uint8_t* data, int len, int64_t nowNs) {
     p.haveLast = true;
     p.lastTxNs = nowNs;
     p.pending = false;
-    if (p.eventMs) p.nextEventNs = nowNs + int64_t(p.eventMs) * 1'000'000;
+    if (p.eventMs) {
+        // The event timer restarts at every transmission (extract-aimotor §3.6). A send the
+        // timer triggered counts from the time the timer expired (within one tick of the
+        // simulated clock), so the period does not drift with the tick.
+        const int64_t base = p.timerDue && nowNs - p.nextEventNs < 1'000'000 ? p.nextEventNs : nowNs;
+        p.nextEventNs = base + int64_t(p.eventMs) * 1'000'000;
+    }
+    p.timerDue = false;
 }
 
 void PdoEngine::onSync(int64_t nowNs, int counter) {
@@ -215,10 +232,45 @@ void PdoEngine::onSync(int64_t nowNs, int counter) {
     }
 }
 
-bool PdoEngine::onFrame(const CanFrame& f, int64_t nowNs, bool operational) {
+int PdoEngine::syncOverflow() const {
+    const od::SubObject* e = dev_.entry(0x1019, 0);
+    return e ? static_cast<int>(u64(dev_, 0x1019, 0)) : 0;
+}
+
+void PdoEngine::enterOperational(int64_t nowNs) {
+    operational_ = true;
+    for (Pdo& p : tpdos_) {
+        // Event-driven TPDOs go out once on entering OPERATIONAL; cyclic ones count SYNCs anew.
+        p.haveLast = false;
+        p.syncCount = 0;
+        p.latchedValid = false;
+        p.timerDue = false;
+        if (p.eventMs) p.nextEventNs = nowNs + int64_t(p.eventMs) * 1'000'000;
+    }
+}
+
+void PdoEngine::nmtStateChanged(bool operational, int64_t nowNs) {
     if (dirty_) reload();
+    if (operational != operational_) operational ? enterOperational(nowNs) : leaveOperational();
+}
+
+void PdoEngine::leaveOperational() {
+    operational_ = false;
+    for (Pdo& r : rpdos_) r.rxLen = -1;  // synchronous RPDO data waiting for a SYNC is dropped
+    for (Pdo& p : tpdos_) p.pending = false;
+}
+
+bool PdoEngine::onFrame(const CanFrame& f, int64_t nowNs, bool operational) {
+    nmtStateChanged(operational, nowNs);
     if (f.id == syncCobId_ && !f.isRemote()) {
-        if (operational) onSync(nowNs, f.len >= 1 ? f.data[0] : -1);
+        // 1019h = 0: SYNC without data, counter not processed; 2..240: one byte, the counter
+        // (CiA 301 §7.5.2.22). Another length is an unexpected SYNC length (EMCY 8240h).
+        const int overflow = dev_.entry(0x1019, 0) ? syncOverflow() : -1;
+        if (overflow >= 0 && f.len != (overflow > 1 ? 1 : 0)) {
+            const uint8_t none[5] = {};
+            dev_.sendEmcy(0x8240, none);
+        }
+        if (operational) onSync(nowNs, overflow > 1 && f.len >= 1 ? f.data[0] : -1);
         return true;
     }
     if (!operational) return false;
@@ -238,6 +290,9 @@ bool PdoEngine::onFrame(const CanFrame& f, int64_t nowNs, bool operational) {
     }
     for (Pdo& r : rpdos_) {
         if (!r.valid || (r.cobId & 0x7FF) != f.id) continue;
+        if (dev_.personality().tpdoFeAnswersRpdo)
+            for (Pdo& t : tpdos_)
+                if (t.type == 254 && t.commIndex - 0x1800 == r.commIndex - 0x1400) t.pending = true;
         if (r.type >= 254) {
             apply(r, f.data.data(), f.len);
         } else {
@@ -250,18 +305,16 @@ bool PdoEngine::onFrame(const CanFrame& f, int64_t nowNs, bool operational) {
 }
 
 void PdoEngine::tick(int64_t nowNs, bool operational) {
-    if (!operational) {
-        for (Pdo& p : tpdos_) p.haveLast = false;  // the first event after (re)start is sent
-        return;
-    }
-    if (dirty_) reload();
+    nmtStateChanged(operational, nowNs);
+    if (!operational) return;
     uint8_t buf[8];
     for (Pdo& p : tpdos_) {
         if (!p.valid || p.type < 254) continue;
-        // Event-driven: change of the mapped data, or the event timer (sub 5) expiring.
         const int n = encode(p, buf);
-        if (!p.haveLast || std::memcmp(buf, p.lastData.data(), 8) != 0) p.pending = true;
-        if (p.eventMs && nowNs >= p.nextEventNs) p.pending = true;
+        const bool answersRpdo = p.type == 254 && dev_.personality().tpdoFeAnswersRpdo;
+        // Event-driven: change of the mapped data, or the event timer (sub 5) expiring.
+        if (!answersRpdo && (!p.haveLast || std::memcmp(buf, p.lastData.data(), 8) != 0)) p.pending = true;
+        if (!answersRpdo && p.eventMs && nowNs >= p.nextEventNs && !p.pending) p.pending = p.timerDue = true;
         if (p.pending && (p.lastTxNs < 0 || nowNs - p.lastTxNs >= int64_t(p.inhibitNs))) sendTpdo(p, buf, n, nowNs);
     }
 }

@@ -71,6 +71,7 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
         p.cia402 = false;
         p.axes = 2;
         p.alarmU8PerMotor = true;
+        p.tpdoFeAnswersRpdo = true;
         p.typicalFault = *p.alarm(QStringLiteral("overcurrent"));
     } else if (name == u"generic-cia402") {
         p.vendor = Vendor::GenericCia402;

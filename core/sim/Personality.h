@@ -54,6 +54,10 @@ struct Personality {
     // Delta: every SDO write of a P-parameter (2000h-2FFFh) goes to EEPROM at once.
     bool parametersStoredOnWrite = false;
 
+    // DEXMART: a TPDO of type FEh is sent when the RPDO of the same number arrives, and its
+    // event timer has no function (extract-dexmart §4.2-4.3, a deviation from CiA 301).
+    bool tpdoFeAnswersRpdo = false;
+
     // The alarm a plain injectDriveFault() raises.
     VendorAlarm typicalFault;
     // A few documented alarms of the vendor, looked up by name ("AL011", "Er.601").

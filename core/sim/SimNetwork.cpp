@@ -102,8 +102,18 @@ void SimNetwork::onTick() {
     const int64_t now = nowNs();
     if (!powered_) {
         powered_ = true;
+        clockNs_ = now;
         for (auto& n : nodes_) n->powerOn(now);
     }
+    // The simulated clock advances in steps of at most 1 ms even when this thread was late, so
+    // timers of the nodes (event timers, inhibit times, heartbeats) keep to within 1 ms of it;
+    // their frames carry the simulated time. A stall of more than kMaxCatchUpMs is skipped.
+    if (now - clockNs_ > kMaxCatchUpMs * kTickNs) clockNs_ = now - kMaxCatchUpMs * kTickNs;
+    for (int64_t t = clockNs_ + kTickNs; t < now; t += kTickNs) {
+        clockNs_ = t;
+        for (auto& n : nodes_) n->tick(t);
+    }
+    clockNs_ = now;
     std::vector<std::pair<CanFrame, SimTap*>> batch;
     {
         std::lock_guard lock(mutex_);
@@ -120,7 +130,7 @@ void SimNetwork::onTick() {
 
 void SimNetwork::broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap) {
     CanFrame f = frame;
-    if (f.timestampNs == 0) f.timestampNs = nowNs();
+    if (f.timestampNs == 0) f.timestampNs = thread_ && QThread::currentThread() == thread_ && clockNs_ ? clockNs_ : nowNs();
     std::vector<SimTap*> taps;
     {
         std::lock_guard lock(mutex_);

@@ -33,8 +33,9 @@ public:
     virtual uint32_t simBitRate() const { return 0; }
 };
 
-// The in-process virtual CAN bus with its nodes. Runs on its own thread with a 1 ms tick; frames
-// injected from other threads are queued and handled on that thread in order.
+// The in-process virtual CAN bus with its nodes. Runs on its own thread with a 1 ms tick (a late
+// tick is caught up in 1 ms steps of the simulated clock); frames injected from other threads
+// are queued and handled on that thread in order.
 class SimNetwork : public QObject {
     Q_OBJECT
 public:
@@ -89,6 +90,9 @@ private:
     std::vector<SimTap*> taps_;
     std::vector<std::pair<CanFrame, SimTap*>> inbox_;
     bool powered_ = false;
+    static constexpr int64_t kTickNs = 1'000'000;
+    static constexpr int64_t kMaxCatchUpMs = 100;
+    int64_t clockNs_ = 0;  // simulated clock: the time of the tick being run (network thread)
 };
 
 }  // namespace coscope::sim

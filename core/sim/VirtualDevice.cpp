@@ -287,6 +287,11 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
         return 0;  // takes effect at the next reset
     }
     if (index == 0x1003 && sub == 0 && u != 0) return abortcode::InvalidValue;  // only 0 clears the history
+    if (index == 0x1019 && sub == 0) {
+        // Synchronous counter overflow: 0 or 2..240, changed only while 1006h is 0 (CiA 301 §7.5.2.22).
+        if (u == 1 || u > 240) return abortcode::InvalidValue;
+        if (value(0x1006, 0).value_or(od::Value{}).toUInt64().value_or(0) != 0) return abortcode::DeviceState;
+    }
     const bool pdoComm = (index >= 0x1400 && index <= 0x15FF) || (index >= 0x1800 && index <= 0x19FF);
     const bool pdoMap = (index >= 0x1600 && index <= 0x17FF) || (index >= 0x1A00 && index <= 0x1BFF);
     if (pdoComm && sub == 1) {
@@ -399,7 +404,10 @@ void VirtualDevice::bootUp(int64_t nowNs) {
     guardingStarted_ = false;
 }
 
-void VirtualDevice::setNmtState(NmtState s) { nmtState_ = s; }
+void VirtualDevice::setNmtState(NmtState s) {
+    nmtState_ = s;
+    if (pdo_) pdo_->nmtStateChanged(s == NmtState::Operational, nowNs_);
+}
 
 void VirtualDevice::resetCommunication(int64_t nowNs) {
     if (pendingFromLss_) nodeId_ = pendingNodeId_;

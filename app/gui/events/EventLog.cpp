@@ -5,6 +5,7 @@
 #include "core/canopen/CobId.h"
 #include "core/canopen/Emcy.h"
 #include "core/canopen/Nmt.h"
+#include "core/canopen/SdoAbort.h"
 
 #include <algorithm>
 
@@ -27,6 +28,21 @@ QString eventKindName(TraceEvent::Kind kind) {
     }
     return {};
 }
+
+namespace {
+// A server's "object does not exist" / "sub-index does not exist" abort for an optional
+// identity object: 1008h device name, 1009h hardware version, 100Ah software version (CiA 301
+// §7.5.2.9-11) or 1018h sub 2-4 (§7.5.2.21). A device without them is normal (a scan asks every
+// node): the trace shows the abort, the node table says "not present", it is no event.
+bool optionalObjectAbsent(const TraceRecord& r) {
+    if (r.len < 8) return false;
+    const uint16_t index = static_cast<uint16_t>(r.data[1] | (r.data[2] << 8));
+    const uint8_t sub = r.data[3];
+    const uint32_t code = uint32_t(r.data[4]) | uint32_t(r.data[5]) << 8 | uint32_t(r.data[6]) << 16 | uint32_t(r.data[7]) << 24;
+    if (code != canopen::sdoabort::NoObject && code != canopen::sdoabort::NoSubIndex) return false;
+    return ((index == 0x1008 || index == 0x1009 || index == 0x100A) && sub == 0) || (index == 0x1018 && sub >= 2 && sub <= 4);
+}
+}  // namespace
 
 EventLog::EventLog(std::shared_ptr<const FrameDecoder> decoder) : decoder_(std::move(decoder)) {}
 
@@ -88,6 +104,7 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             // Our own "SDO protocol timed out" aborts (05040000h) are reported where the user
             // acted (and are expected during a scan); they are not bus events.
             if (!emcy && (r.flags & CanFrame::Tx) && r.len >= 8 && r.data[4] == 0x00 && r.data[5] == 0x00 && r.data[6] == 0x04 && r.data[7] == 0x05) break;
+            if (info.service == Service::SdoResponse && optionalObjectAbsent(r)) break;
             const CanFrame f = store.frame(n);
             d.reset(dissect::Dissection::Level::Flat);
             decoder_->decode(f, d);

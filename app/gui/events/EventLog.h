@@ -29,7 +29,7 @@ struct TraceEvent {
 QString eventKindName(TraceEvent::Kind kind);
 
 // The event list of a trace: EMCY (code text, error register bits, vendor alarm text from the
-// decoder), SDO aborts, NMT commands and state changes, boot-ups, heartbeat timeouts, error
+// decoder), SDO aborts (not a server's "not present" for an optional identity object), NMT commands and state changes, boot-ups, heartbeat timeouts, error
 // frames, plus what the app adds (bus errors, dropped-frame counts). Fed like the node table;
 // views read the events appended since their last look. Thread-safe.
 class EventLog {

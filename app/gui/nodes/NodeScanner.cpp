@@ -51,16 +51,25 @@ void NodeScanner::identifyThen(int node, std::function<void()> then) {
         return;
     }
     const auto id = static_cast<uint8_t>(node);
-    // Per-node transfers run in order: 1000h, 1008h, 1018h:01..04; sub 4 is the last.
+    // Per-node transfers run in order: 1000h, 1008h, 1009h, 100Ah, 1018h:01..04; sub 4 is the last.
     auto device = std::make_shared<eds::DeviceIdentity>();
     sdo_->upload(id, 0x1000, 0, [device](const canopen::SdoResult& r) {
         if (r.ok) device->deviceType = u32le(r.data);
     });
-    sdo_->upload(id, 0x1008, 0, [this, node, device](const canopen::SdoResult& r) {
-        if (!r.ok) return;
-        device->deviceName = QString::fromLatin1(r.data).trimmed().remove(QChar(0));
-        table_->setDeviceName(node, *device->deviceName);
-    });
+    // 1008h device name, 1009h hardware and 100Ah software version are optional (CiA 301
+    // §7.5.2.9-11): a node without one aborts the read, which is normal (not present).
+    for (const uint16_t index : {uint16_t(0x1008), uint16_t(0x1009), uint16_t(0x100A)}) {
+        sdo_->upload(id, index, 0, [this, node, index, device](const canopen::SdoResult& r) {
+            if (r.ok) {
+                const QString text = QString::fromLatin1(r.data).remove(QChar(0)).trimmed();
+                if (index == 0x1008) device->deviceName = text;
+                if (index == 0x100A) device->softwareVersion = text;
+                table_->setOptionalText(node, index, text);
+            } else if (r.serverAborted) {
+                table_->setOptionalText(node, index, std::nullopt);
+            }
+        });
+    }
     // 1018h identity object: 1 vendor-ID, 2 product code, 3 revision, 4 serial (CiA 301 §7.5.2.21).
     auto serial = std::make_shared<std::optional<uint32_t>>();
     for (uint8_t sub = 1; sub <= 4; ++sub) {

@@ -16,7 +16,8 @@ namespace coscope::gui {
 
 // Network scan and identification through the SDO client (never blocks): reads 1000h (device
 // type) from nodes 1..127 — a node that answers (even with an abort) exists — then its device
-// type, name 1008h and identity 1018h:01..04, and matches a dictionary (DictionaryLibrary::match).
+// type, name 1008h, versions 1009h/100Ah ("not present" when the node lacks one) and identity
+// 1018h:01..04, and matches a dictionary (DictionaryLibrary::match).
 class NodeScanner : public QObject {
     Q_OBJECT
 public:

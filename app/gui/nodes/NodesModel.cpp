@@ -71,14 +71,23 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     case HeartbeatAge:
         if (!n.seenHeartbeat) return tr("—");
         return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);
-    case DeviceName: return n.deviceName;
+    case DeviceName: {
+        const QString name = n.notPresent & NodeInfo::kNoDeviceName ? tr("not present") : n.deviceName;
+        if (role == Qt::DisplayRole) return name;
+        // Tooltip: the three optional texts of CiA 301 §7.5.2.9-11 as the scan found them.
+        auto text = [&](const QString& v, uint8_t bit) { return n.notPresent & bit ? tr("not present") : v.isEmpty() ? tr("—") : v; };
+        return tr("Device name (1008h): %1\nHardware version (1009h): %2\nSoftware version (100Ah): %3")
+            .arg(text(n.deviceName, NodeInfo::kNoDeviceName), text(n.hardwareVersion.value_or(QString()), NodeInfo::kNoHardwareVersion),
+                 text(n.softwareVersion.value_or(QString()), NodeInfo::kNoSoftwareVersion));
+    }
     case Identity: {
-        if (!n.vendorId) return QString();
+        if (!n.vendorId) return n.identityRead ? tr("not present") : QString();
         auto hex8 = [](uint32_t v) { return QString::number(v, 16).toUpper().rightJustified(8, u'0'); };
-        QString s = QStringLiteral("vendor %1").arg(hex8(*n.vendorId));
-        if (n.productCode) s += QStringLiteral(", product %1").arg(hex8(*n.productCode));
-        if (n.revision) s += QStringLiteral(", rev %1").arg(hex8(*n.revision));
-        if (n.serial) s += QStringLiteral(", s/n %1").arg(*n.serial);
+        QString s = tr("vendor %1").arg(hex8(*n.vendorId));
+        // 1018h sub 2-4 are optional (CiA 301 §7.5.2.21).
+        s += n.productCode ? tr(", product %1").arg(hex8(*n.productCode)) : tr(", product not present");
+        s += n.revision ? tr(", rev %1").arg(hex8(*n.revision)) : tr(", rev not present");
+        s += n.serial ? tr(", s/n %1").arg(*n.serial) : tr(", s/n not present");
         return s;
     }
     case Dictionary: return n.dictionary.isEmpty() ? tr("(none)") : n.dictionary;
