@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/can/SocketCanLinks.h"
+
 #include <QDialog>
 
 class QCheckBox;
@@ -35,6 +37,8 @@ private:
     void onBackendChanged();
     void updatePreview();
     void onUrlTyped(const QString& text);  // a pasted or typed URL fills the choices
+    void updateLinkState();                // the chosen interface's state and how to bring it up
+    QString linkText(const SocketCanLink& link) const;
 
     QComboBox* recent_ = nullptr;
     QComboBox* backend_ = nullptr;
@@ -45,6 +49,8 @@ private:
     QLineEdit* channel_ = nullptr;
     QTableWidget* drives_ = nullptr;
     QLabel* noDevices_ = nullptr;
+    QLabel* linkState_ = nullptr;
+    QList<SocketCanLink> links_;  // SocketCAN interfaces as `ip -details -json link` reports them
     QLineEdit* replayPath_ = nullptr;
     QComboBox* replaySpeed_ = nullptr;
     QCheckBox* replayLoop_ = nullptr;
