@@ -12,6 +12,9 @@ packages=(
   qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev libqt6serialbus6
   libqcustomplot-dev libspdlog-dev libfmt-dev zlib1g-dev
   fonts-dejavu-core
+  # libsocketcan2: Qt's socketcan plugin loads it to set the bit rate and restart after bus-off;
+  # iproute2: `ip -details -json link` lists the CAN interfaces with state and bit rate.
+  libsocketcan2 iproute2
 )
 if [ "${1:-}" = "package" ] || [ "${1:-}" = "test" ]; then
   # help2man writes the man pages; dpkg-shlibdeps (dpkg-dev) computes the .deb's dependencies.

@@ -2,6 +2,8 @@
 // coscope-cli buses: the bus schemes and the devices Qt's CAN plugins report.
 #include "app/cli/CliVerb.h"
 #include "core/can/BusUrl.h"
+#include "core/can/SocketCanLinks.h"
+#include "core/sim/SimNetwork.h"
 
 #include <QCanBus>
 #include <QTextStream>
@@ -27,16 +29,21 @@ static int runBuses(const QStringList& args) {
     for (const QString& p : plugins) {
         QString error;
         const auto devices = QCanBus::instance()->availableDevices(p, &error);
+        QList<SocketCanLink> links;
+        if (p == u"socketcan") links = listSocketCanLinks(&error);
         for (const auto& d : devices) {
             out << "  " << p << "://" << d.name();
+            for (const SocketCanLink& l : links)
+                if (l.name == d.name()) out << "  " << describeLink(l);
             if (!d.description().isEmpty()) out << "  (" << d.description() << ")";
             if (d.hasFlexibleDataRate()) out << "  [CAN FD]";
             if (d.isVirtual()) out << "  [virtual]";
+            if (!pluginProbesHardware(p)) out << "  [unverified: the plugin lists it without finding an adapter]";
             out << "\n";
             ++found;
         }
     }
-    out << "  sim://  (default virtual network: nodes 1:delta-asda-a2, 2:aimotor, 3:generic-cia402)\n";
+    out << "  sim://  (default virtual network: nodes " << sim::SimNetwork::defaultSpec() << ")\n";
     if (!found) out << "  (no CAN adapters found by the Qt plugins)\n";
     return Ok;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli listen BUS [--count N] [--duration S]: prints frames as candump -L lines.
+#include "app/cli/BusOffWatch.h"
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
@@ -26,8 +27,10 @@ static int runListen(const QStringList& args) {
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://, socketcand://HOST:PORT/can0"));
     const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
+    const QCommandLineOption restartOpt(QStringLiteral("restart-on-bus-off"), BusOffWatch::optionHelp());
     parser.addOption(countOpt);
     parser.addOption(durationOpt);
+    parser.addOption(restartOpt);
     int code = 0;
     if (!parseArgs(parser, kVerb, args, &code)) return code;
     if (parser.positionalArguments().size() != 1) return usageError(kVerb, QStringLiteral("expected one BUS argument (see --help)"));
@@ -62,6 +65,7 @@ static int runListen(const QStringList& args) {
     const QString iface = busInterfaceName(*url);
     QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(256);
+    BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     qint64 printed = 0;
     auto drain = [&] {
         for (;;) {
@@ -76,6 +80,7 @@ static int runListen(const QStringList& args) {
     while (!interrupted() && !deadline.hasExpired() && (count < 0 || printed < count)) {
         bus->waitForFrames(50);
         drain();
+        busOff.poll();
         if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)
             drain();
             break;

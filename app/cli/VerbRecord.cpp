@@ -4,6 +4,7 @@
 // extension without a writer is a usage error. The file is flushed at least every 100 ms, so a
 // crash or an unplugged adapter loses nothing that was received (text formats; binary ones get
 // their footer at the end); Ctrl-C / SIGTERM close the file cleanly.
+#include "app/cli/BusOffWatch.h"
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
@@ -36,9 +37,11 @@ static int runRecord(const QStringList& args) {
     const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
     const QCommandLineOption toOpt(QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv (default: from OUT's extension)."), QStringLiteral("FORMAT"));
+    const QCommandLineOption restartOpt(QStringLiteral("restart-on-bus-off"), BusOffWatch::optionHelp());
     parser.addOption(countOpt);
     parser.addOption(durationOpt);
     parser.addOption(toOpt);
+    parser.addOption(restartOpt);
     int code = 0;
     if (!parseArgs(parser, kVerb, args, &code)) return code;
     const QStringList pos = parser.positionalArguments();
@@ -80,6 +83,7 @@ static int runRecord(const QStringList& args) {
 
     QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(512);
+    BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     qint64 written = 0;
     bool writeFailed = false;
     QElapsedTimer sinceFlush;
@@ -110,6 +114,7 @@ static int runRecord(const QStringList& args) {
     while (!interrupted() && !deadline.hasExpired() && (count < 0 || written < count)) {
         bus->waitForFrames(50);
         drain();
+        busOff.poll();
         if (writeFailed)
             return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out->errorString()).arg(written));
         if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)

@@ -141,4 +141,9 @@ std::optional<BusUrl> BusUrl::parse(const QString& text, QString* error) {
     return url;
 }
 
+bool pluginProbesHardware(const QString& plugin) {
+    // qtserialbus tinycan backend: interfaces() returns a constant list without asking the driver.
+    return plugin != u"tinycan";
+}
+
 }  // namespace coscope

@@ -44,6 +44,9 @@ struct BusUrl {
 QStringList knownBusSchemes();
 // Names of the Qt CAN bus plugins available at run time.
 QStringList qtCanPlugins();
+// False for plugins whose device list is fixed rather than found (Qt's tinycan plugin names
+// can0.0 on a machine with no Tiny-CAN): their devices are shown as unverified.
+bool pluginProbesHardware(const QString& plugin);
 
 inline constexpr quint16 kSocketcandDefaultPort = 29536;
 

@@ -91,12 +91,23 @@ CanBus::Counters CanBus::counters() const {
     c.tx = tx_.load(std::memory_order_relaxed);
     c.dropped = ring_.dropped();
     c.errors = errors_.load(std::memory_order_relaxed);
+    c.controllerState = static_cast<CanErrorReport::BusState>(controllerState_.load(std::memory_order_relaxed));
+    c.txErrors = txErrors_.load(std::memory_order_relaxed);
+    c.rxErrors = rxErrors_.load(std::memory_order_relaxed);
+    c.busOffs = busOffs_.load(std::memory_order_relaxed);
     return c;
 }
 
 void CanBus::deliver(const CanFrame& frame) {
     if (frame.isTx()) countTx();
-    if (frame.isError()) countError();
+    if (frame.isError()) {
+        countError();
+        const CanErrorReport e = decodeCanError(frame);
+        if (e.state != CanErrorReport::BusState::Unknown) controllerState_.store(static_cast<uint8_t>(e.state), std::memory_order_relaxed);
+        if (e.state == CanErrorReport::BusState::BusOff) busOffs_.fetch_add(1, std::memory_order_relaxed);
+        if (e.txErrors) txErrors_.store(*e.txErrors, std::memory_order_relaxed);
+        if (e.rxErrors) rxErrors_.store(*e.rxErrors, std::memory_order_relaxed);
+    }
     if (ring_.push(frame)) rx_.fetch_add(1, std::memory_order_relaxed);
 }
 
@@ -116,6 +127,11 @@ void CanBus::setState(State state, const QString& error) {
         emit errorOccurred(error);
     }
     if (changed) emit stateChanged(state);
+}
+
+bool CanBus::restartController(QString* error) {
+    if (error) *error = QStringLiteral("%1 cannot restart its controller").arg(url_.toString());
+    return false;
 }
 
 void CanBus::reportError(const QString& message) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/can/BusUrl.h"
+#include "core/can/CanErrorFrame.h"
 #include "core/can/CanFrame.h"
 #include "core/can/FrameRing.h"
 
@@ -37,6 +38,12 @@ public:
         uint64_t tx = 0;       // frames sent
         uint64_t dropped = 0;  // frames lost because the ring was full
         uint64_t errors = 0;   // error frames and failed sends
+        // The controller's fault confinement state and error counters as the last error frame
+        // that reported them said (ISO 11898-1 §12.1.4); Unknown / -1 until one did.
+        CanErrorReport::BusState controllerState = CanErrorReport::BusState::Unknown;
+        int txErrors = -1;
+        int rxErrors = -1;
+        uint64_t busOffs = 0;  // bus-off reports since the bus opened
     };
 
     explicit CanBus(const BusUrl& url, QObject* parent = nullptr);
@@ -56,6 +63,11 @@ public:
     // Sends one frame. Listen-only is enforced here, in one place for every backend: a bus opened
     // listen-only refuses every send with an error and transmits nothing.
     bool send(const CanFrame& frame, QString* error = nullptr);
+
+    // Restarts a controller that went bus-off (CiA 301 leaves recovery to the application; Linux
+    // SocketCAN needs `ip link set canX type can restart` or restart-ms). False with a reason when
+    // the backend cannot (the default).
+    virtual bool restartController(QString* error);
 
     // Consumer side: drains up to `max` frames. Safe from one consumer thread at a time.
     size_t read(CanFrame* out, size_t max);
@@ -91,6 +103,10 @@ private:
     std::atomic<uint64_t> rx_{0};
     std::atomic<uint64_t> tx_{0};
     std::atomic<uint64_t> errors_{0};
+    std::atomic<uint8_t> controllerState_{0};
+    std::atomic<int> txErrors_{-1};
+    std::atomic<int> rxErrors_{-1};
+    std::atomic<uint64_t> busOffs_{0};
 };
 
 // Creates the backend for a URL (not yet opened). Returns nullptr with a one-line reason.

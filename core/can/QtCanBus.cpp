@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/can/QtCanBus.h"
 
+#include "core/can/SocketCanLinks.h"
+
 #include <QCanBus>
 #include <QCanBusDevice>
 #include <QThread>
@@ -81,7 +83,7 @@ void QtCanBus::startOnThread() {
     QString error;
     device_ = QCanBus::instance()->createDevice(url().scheme, url().target, &error);
     if (!device_) {
-        setState(State::Error, QStringLiteral("cannot open %1: %2").arg(name(), error.isEmpty() ? QStringLiteral("plugin refused the device") : error));
+        setState(State::Error, QStringLiteral("cannot open %1: %2").arg(name(), explain(error.isEmpty() ? QStringLiteral("plugin refused the device") : error)));
         return;
     }
     device_->setParent(context_);
@@ -104,7 +106,7 @@ void QtCanBus::startOnThread() {
     openTimer_->start(kOpenTimeoutMs);
 
     if (!device_->connectDevice()) {
-        if (device_) fail(QStringLiteral("cannot open %1: %2").arg(name(), device_->errorString()));  // else already reported
+        if (device_) fail(QStringLiteral("cannot open %1: %2").arg(name(), explain(device_->errorString())));  // else already reported
         return;
     }
     if (device_ && device_->state() == QCanBusDevice::ConnectedState) onDeviceState(QCanBusDevice::ConnectedState);
@@ -123,6 +125,10 @@ void QtCanBus::stopOnThread() {
         device_ = nullptr;
     }
     opened_ = false;
+}
+
+QString QtCanBus::explain(const QString& raw) const {
+    return url().scheme == u"socketcan" ? explainSocketCanError(url().target, raw, url().bitrate()) : raw;
 }
 
 void QtCanBus::fail(const QString& message) {
@@ -157,6 +163,10 @@ void QtCanBus::onDeviceError(int error) {
     const auto e = static_cast<QCanBusDevice::CanBusError>(error);
     if (e == QCanBusDevice::NoError) return;
     const QString text = device_->errorString();
+    if (restarting_) {
+        restartError_ = text.isEmpty() ? QStringLiteral("the plugin cannot restart the controller") : text;
+        return;
+    }
     if (e == QCanBusDevice::WriteError) {
         if (writing_) return;  // sendFrame() reports it to its caller
         countError();
@@ -164,11 +174,11 @@ void QtCanBus::onDeviceError(int error) {
         return;
     }
     if (!opened_) {
-        fail(QStringLiteral("cannot open %1: %2").arg(name(), text));
+        fail(QStringLiteral("cannot open %1: %2").arg(name(), explain(text)));
         return;
     }
     if (e == QCanBusDevice::ReadError || e == QCanBusDevice::ConnectionError) {
-        fail(QStringLiteral("%1 failed: %2").arg(name(), text));
+        fail(QStringLiteral("%1 failed: %2").arg(name(), explain(text)));
         return;
     }
     reportError(QStringLiteral("%1: %2").arg(name(), text));
@@ -184,6 +194,27 @@ void QtCanBus::onDeviceState(int s) {
     } else if (st == QCanBusDevice::UnconnectedState && opened_) {
         fail(QStringLiteral("%1 disconnected (device gone or its server closed)").arg(name()));
     }
+}
+
+bool QtCanBus::restartController(QString* error) {
+    bool ok = false;
+    QString why;
+    runOnBusThread([&] {
+        if (!device_) {
+            why = QStringLiteral("%1 is not open").arg(name());
+            return;
+        }
+        // Qt's socketcan plugin restarts through libsocketcan (can_do_restart); plugins without a
+        // restart leave a ConfigurationError and its text.
+        restartError_.clear();
+        restarting_ = true;
+        device_->resetController();  // errors arrive synchronously through onDeviceError
+        restarting_ = false;
+        ok = restartError_.isEmpty();
+        if (!ok) why = QStringLiteral("%1: %2").arg(name(), explain(restartError_));
+    });
+    if (!ok && error) *error = why;
+    return ok;
 }
 
 bool QtCanBus::sendFrame(const CanFrame& frame, QString* error) {

@@ -39,6 +39,8 @@ public:
     static std::optional<CanFrame> fromQt(const QCanBusFrame& frame);
     static QCanBusFrame toQt(const CanFrame& frame);
 
+    bool restartController(QString* error) override;  // QCanBusDevice::resetController()
+
 protected:
     bool sendFrame(const CanFrame& frame, QString* error) override;
 
@@ -51,10 +53,13 @@ private:
     void onDeviceError(int error);
     void onDeviceState(int state);
     void fail(const QString& message);
+    QString explain(const QString& raw) const;  // socketcan: what the system error means (SocketCanLinks.h)
     QString name() const;
 
     QCanBusDevice* device_ = nullptr;
     QTimer* openTimer_ = nullptr;
+    bool restarting_ = false;  // bus thread: resetController() running, its error goes to restartError_
+    QString restartError_;
     bool opened_ = false;
     bool stopping_ = false;
     bool writing_ = false;

@@ -255,7 +255,9 @@ void DeviceConfiguration::step(std::shared_ptr<Run> run) {
     QPointer<DeviceConfiguration> self(this);
     const size_t i = run->next++;
     if (run->isRead) {
-        const auto [index, sub] = run->entries[i];
+        // Plain names, not a structured binding: clang 14 cannot capture those in a lambda.
+        const auto index = std::get<0>(run->entries[i]);
+        const auto sub = std::get<1>(run->entries[i]);
         sdo_.upload(run->node, index, sub, [self, run, index, sub](const SdoResult& r) {
             if (!self) return;
             od::ObjectDictionary& dict = run->readResult.values;

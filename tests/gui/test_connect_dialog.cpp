@@ -13,6 +13,8 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace coscope;
@@ -75,6 +77,53 @@ private slots:
         const auto parsed = BusUrl::parse(url, nullptr);
         QVERIFY(parsed);
         QVERIFY(parsed->listenOnly());
+    }
+
+    // SocketCAN interfaces are listed with their state; one that is down shows the command that
+    // brings it up at the chosen bit rate (ip-link(8) "type can bitrate").
+    void socketcanInterfacesShowStateAndBringUpCommand() {
+        if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
+        QTemporaryDir dir;
+        const QString ip = dir.filePath(QStringLiteral("ip"));
+        QFile f(ip);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#!/bin/sh\ncat <<'EOF'\n"
+                R"([{"ifname":"lo","flags":["UP"],"link_type":"loopback"},)"
+                R"({"ifname":"can0","flags":["NOARP","ECHO"],"operstate":"DOWN","link_type":"can","linkinfo":{"info_kind":"can",)"
+                R"("info_data":{"state":"STOPPED","bittiming":{"bitrate":250000}}}},)"
+                R"({"ifname":"can1","flags":["NOARP","UP","LOWER_UP"],"operstate":"UP","link_type":"can","linkinfo":{"info_kind":"can",)"
+                R"("info_data":{"state":"BUS-OFF","berr_counter":{"tx":256,"rx":0},"bittiming":{"bitrate":500000}}}}])"
+                "\nEOF\n");
+        f.close();
+        f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
+        qputenv("COSCOPE_IP", ip.toLocal8Bit());
+        ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(chooseBackend(d, QStringLiteral("socketcan")));
+        qunsetenv("COSCOPE_IP");
+        auto* device = d.findChild<QComboBox*>(QStringLiteral("device"));
+        auto* state = d.findChild<QLabel*>(QStringLiteral("linkState"));
+        QVERIFY(device->findText(QStringLiteral("can0")) >= 0);
+        QVERIFY(device->findText(QStringLiteral("lo")) < 0);
+        // Pick can0 from the list with the keyboard.
+        device->setFocus();
+        QTest::keyClick(device, Qt::Key_Home);
+        while (device->currentText() != QStringLiteral("can0") && device->currentIndex() < device->count() - 1) QTest::keyClick(device, Qt::Key_Down);
+        QCOMPARE(device->currentText(), QStringLiteral("can0"));
+        QVERIFY(state->isVisible());
+        QVERIFY2(state->text().contains(QStringLiteral("can0 is down")), qPrintable(state->text()));
+        // Choose 125 kbit/s: the command follows the choice.
+        auto* bitrate = d.findChild<QComboBox*>(QStringLiteral("bitrate"));
+        bitrate->setFocus();
+        QTest::keyClick(bitrate, Qt::Key_Home);
+        while (bitrate->currentData().toInt() != 125000 && bitrate->currentIndex() < bitrate->count() - 1) QTest::keyClick(bitrate, Qt::Key_Down);
+        QVERIFY2(state->text().contains(QStringLiteral("sudo ip link set can0 up type can bitrate 125000")), qPrintable(state->text()));
+        // can1 is up but bus-off: say so.
+        device->setFocus();
+        QTest::keyClick(device, Qt::Key_Down);
+        QCOMPARE(device->currentText(), QStringLiteral("can1"));
+        QVERIFY2(state->text().contains(QStringLiteral("bus-off")), qPrintable(state->text()));
     }
 
     void socketcandRoundTrip() {

@@ -68,6 +68,12 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
                                "bitrate 500000</tt>. Then choose the backend again."));
         noDevices_->hide();
         f->addRow(noDevices_);
+        linkState_ = new QLabel(w);
+        linkState_->setObjectName(QStringLiteral("linkState"));
+        linkState_->setWordWrap(true);
+        linkState_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        linkState_->hide();
+        f->addRow(linkState_);
         pages_->addWidget(w);
     }
     {  // socketcand
@@ -210,8 +216,17 @@ void ConnectDialog::onBackendChanged() {
     else {
         pages_->setCurrentIndex(PluginPage);
         device_->clear();
+        links_.clear();
         QString error;
+        if (key == u"socketcan") links_ = listSocketCanLinks(&error);
         for (const auto& info : QCanBus::instance()->availableDevices(key, &error)) device_->addItem(info.name());
+        for (const SocketCanLink& l : links_)
+            if (device_->findText(l.name) < 0) device_->addItem(l.name);
+        for (int i = 0; i < device_->count(); ++i) {
+            for (const SocketCanLink& l : links_)
+                if (l.name == device_->itemText(i)) device_->setItemData(i, linkText(l), Qt::ToolTipRole);
+            if (!pluginProbesHardware(key)) device_->setItemData(i, tr("Listed by the plugin without finding an adapter"), Qt::ToolTipRole);
+        }
         if (device_->count() == 0) device_->setEditText(key == u"virtualcan" ? QStringLiteral("can0") : QString());
         noDevices_->setVisible(key == u"socketcan" && device_->count() == 0);
     }
@@ -288,10 +303,47 @@ void ConnectDialog::setUrl(const QString& text) {
 }
 
 void ConnectDialog::updatePreview() {
+    updateLinkState();
     if (applyingTyped_) return;
     typed_.clear();
     preview_->setText(url());
     error_->hide();
+}
+
+QString ConnectDialog::linkText(const SocketCanLink& l) const {
+    if (!l.up) return tr("%1 is down").arg(l.name);
+    if (l.isVirtual()) return tr("%1 is up (virtual CAN)").arg(l.name);
+    QString text = l.bitrate > 0 ? tr("%1 is up at %L2 kbit/s").arg(l.name).arg(l.bitrate / 1000.0) : tr("%1 is up").arg(l.name);
+    if (l.dataBitrate > 0) text += tr(", CAN FD data %L1 Mbit/s").arg(l.dataBitrate / 1e6);
+    // CiA 301 / ISO 11898-1 fault confinement: error active, warning, passive, bus-off.
+    if (l.controllerState == u"ERROR-WARNING") text += tr(", controller in error warning (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
+    else if (l.controllerState == u"ERROR-PASSIVE") text += tr(", controller error passive (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
+    else if (l.controllerState == u"BUS-OFF") text += tr(", controller is bus-off: check wiring, termination and bit rate");
+    else if (l.controllerState == u"STOPPED") text += tr(", controller stopped");
+    return text;
+}
+
+void ConnectDialog::updateLinkState() {
+    const QString key = backend_->currentData().toString();
+    const QString name = device_->currentText().trimmed();
+    QString text;
+    if (pages_->currentIndex() == PluginPage && !pluginProbesHardware(key) && device_->findText(name) >= 0) {
+        text = tr("Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.").arg(key, name);
+    } else if (key == u"socketcan") {
+        for (const SocketCanLink& l : links_) {
+            if (l.name != name) continue;
+            const int wanted = bitrate_->currentData().toInt();
+            const int wantedData = fd_->isChecked() ? dataBitrate_->currentData().toInt() : 0;
+            text = linkText(l);
+            const bool rateDiffers = !l.isVirtual() && wanted > 0 && wanted != l.bitrate;
+            if (!l.up || rateDiffers)
+                text += QStringLiteral("<br>") +
+                        (l.up ? tr("To change its bit rate, run:") : tr("Bring it up with:")) +
+                        QStringLiteral(" <tt>%1</tt>").arg(bringUpCommand(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), wantedData).toHtmlEscaped());
+        }
+    }
+    linkState_->setText(text);
+    linkState_->setVisible(!text.isEmpty());
 }
 
 void ConnectDialog::onUrlTyped(const QString& text) {

@@ -3,6 +3,8 @@
 // listen-only) and the recent connections.
 #pragma once
 
+#include "core/can/SocketCanLinks.h"
+
 #include <QDialog>
 
 class QCheckBox;
@@ -37,6 +39,8 @@ private:
     void onBackendChanged();
     void updatePreview();
     void onUrlTyped(const QString& text);  // a pasted or typed URL fills the choices
+    void updateLinkState();                // the chosen interface's state and how to bring it up
+    QString linkText(const SocketCanLink& link) const;
 
     QComboBox* recent_ = nullptr;
     QComboBox* backend_ = nullptr;
@@ -47,6 +51,8 @@ private:
     QLineEdit* channel_ = nullptr;
     QTableWidget* drives_ = nullptr;
     QLabel* noDevices_ = nullptr;
+    QLabel* linkState_ = nullptr;
+    QList<SocketCanLink> links_;  // SocketCAN interfaces as `ip -details -json link` reports them
     QLineEdit* replayPath_ = nullptr;
     QComboBox* replaySpeed_ = nullptr;
     QCheckBox* replayLoop_ = nullptr;

@@ -43,7 +43,7 @@ void EventsDock::rebind() { model_->setLog(&workspace_->events()); }
 
 void EventsDock::refresh() {
     const auto& s = workspace_->store();
-    if (s && !s->empty()) model_->setOrigin(s->record(0).timestampNs);
+    model_->setOrigin(s && !s->empty() ? s->record(0).timestampNs : 0);
     auto* sb = view_->verticalScrollBar();
     const bool atEnd = sb->value() >= sb->maximum() - 2;
     const int before = model_->rowCount();

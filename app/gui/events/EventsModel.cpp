@@ -34,6 +34,12 @@ void EventsModel::refresh() {
     endInsertRows();
 }
 
+void EventsModel::setOrigin(int64_t originNs) {
+    if (originNs == origin_) return;
+    origin_ = originNs;
+    if (!events_.empty()) emit dataChanged(index(0, Time), index(rowCount() - 1, Time));
+}
+
 int EventsModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(events_.size()); }
 int EventsModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
@@ -51,7 +57,10 @@ QVariant EventsModel::data(const QModelIndex& index, int role) const {
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
     switch (index.column()) {
-    case Time: return QString::number(double(e.timeNs - origin_) / 1e9, 'f', 6);
+    case Time: {
+        const int64_t origin = origin_ ? origin_ : events_.front().timeNs;
+        return QString::number(double(e.timeNs - origin) / 1e9, 'f', 6);
+    }
     case Node: return e.node >= 0 ? QVariant(e.node) : QVariant(QString());
     case Kind: return eventKindName(e.kind);
     case Text: return e.text;

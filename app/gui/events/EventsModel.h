@@ -19,8 +19,10 @@ public:
 
     void setLog(EventLog* log);
     void refresh();
-    // The trace's first timestamp, so event times read like the trace's relative time.
-    void setOrigin(int64_t originNs) { origin_ = originNs; }
+    // The trace's first timestamp, so event times read like the trace's relative time. Until the
+    // trace has a frame (0), times count from the first event: an event before the first frame
+    // (a bus that would not open) reads 0.000000, not seconds since 1970.
+    void setOrigin(int64_t originNs);
 
     const TraceEvent& eventAt(int row) const { return events_[static_cast<size_t>(row)]; }
 

@@ -44,6 +44,14 @@ BusStatusBar::BusStatusBar(QStatusBar* bar, Workspace* workspace) : QObject(bar)
     load_ = label(QStringLiteral("statusLoad"), 90);
     dropped_ = label(QStringLiteral("statusDropped"), 90);
     errors_ = label(QStringLiteral("statusErrors"), 80);
+    controller_ = label(QStringLiteral("statusController"), 0);
+    controller_->hide();
+    restart_ = new QPushButton(tr("Restart controller"), bar);
+    restart_->setObjectName(QStringLiteral("restartController"));
+    restart_->setToolTip(tr("The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)"));
+    restart_->hide();
+    bar->addPermanentWidget(restart_);
+    connect(restart_, &QPushButton::clicked, this, &BusStatusBar::restartController);
     refresh(nullptr);
 }
 
@@ -66,6 +74,8 @@ void BusStatusBar::refresh(Job* job) {
         load_->clear();
         dropped_->clear();
         errors_->clear();
+        controller_->hide();
+        restart_->hide();
         lastFrames_ = frames;
         return;
     }
@@ -98,7 +108,41 @@ void BusStatusBar::refresh(Job* job) {
     dropped_->setStyleSheet(c.dropped ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
     errors_->setText(tr("errors %L1").arg(c.errors));
     errors_->setStyleSheet(c.errors ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
+
+    // ISO 11898-1 §12.1.4 fault confinement, as the last error frame reported it.
+    using S = CanErrorReport::BusState;
+    QString ctl;
+    switch (c.controllerState) {
+    case S::Unknown: break;
+    case S::Active: ctl = tr("error active"); break;
+    case S::Warning: ctl = tr("error warning"); break;
+    case S::Passive: ctl = tr("error passive"); break;
+    case S::BusOff: ctl = tr("bus-off"); break;
+    }
+    if (!ctl.isEmpty() && c.txErrors >= 0) ctl += tr(" · TEC %1 REC %2").arg(c.txErrors).arg(c.rxErrors);
+    controller_->setText(ctl);
+    controller_->setVisible(!ctl.isEmpty());
+    controller_->setStyleSheet(c.controllerState >= S::Passive ? QStringLiteral("color: #b00020; font-weight: bold")
+                               : c.controllerState == S::Warning ? QStringLiteral("color: #a05a00") : QString());
+    controller_->setToolTip(tr("CAN controller state from the last error frame (transmit / receive error counters)"));
+    restart_->setVisible(c.controllerState == S::BusOff);
 }
+
+void BusStatusBar::restartController() {
+    CanBus* bus = workspace_->bus();
+    if (!bus) return;
+    QString why;
+    if (bus->restartController(&why)) {
+        workspace_->events().add({TraceEvent::Kind::Info, nowNs(), kNoFrame, -1, tr("Controller restarted after bus-off")});
+        return;
+    }
+    // Said where the user looks, and kept in the Events.
+    workspace_->events().add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, tr("Restart after bus-off failed: %1").arg(why)});
+    if (auto* bar = qobject_cast<QStatusBar*>(parent())) bar->showMessage(tr("Restart after bus-off failed: %1").arg(why), 10000);
+    restart_->setToolTip(tr("Last restart failed: %1").arg(why));
+}
+
+QString BusStatusBar::controllerText() const { return controller_->isVisible() ? controller_->text() : QString(); }
 
 QString BusStatusBar::stateText() const { return state_->text(); }
 QString BusStatusBar::rateText() const { return rate_->text(); }

@@ -17,7 +17,8 @@ namespace coscope::gui {
 class Job;
 class Workspace;
 
-// The permanent part of the status bar: source and bus state, frames/s, bus load, dropped
+// The permanent part of the status bar: source and bus state, the controller's fault confinement
+// state and error counters (with a Restart button after bus-off), frames/s, bus load, dropped
 // frames, errors, and the progress of a running job with its Cancel button.
 class BusStatusBar : public QObject {
     Q_OBJECT
@@ -30,6 +31,10 @@ public:
     QString stateText() const;
     QString rateText() const;
     QString loadText() const;
+    QString controllerText() const;
+
+private slots:
+    void restartController();
 
 private:
     Workspace* workspace_;
@@ -39,6 +44,8 @@ private:
     QLabel* load_ = nullptr;
     QLabel* dropped_ = nullptr;
     QLabel* errors_ = nullptr;
+    QLabel* controller_ = nullptr;
+    QPushButton* restart_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
     Job* job_ = nullptr;
