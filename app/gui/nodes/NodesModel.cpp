@@ -72,13 +72,13 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
         if (!n.seenHeartbeat) return tr("—");
         return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);
     case DeviceName: {
-        const QString name = n.notPresent & NodeInfo::kNoDeviceName ? tr("not present") : n.deviceName;
+        const QString name = n.notPresent & canopen::NodeInfo::kNoDeviceName ? tr("not present") : n.deviceName;
         if (role == Qt::DisplayRole) return name;
         // Tooltip: the three optional texts of CiA 301 §7.5.2.9-11 as the scan found them.
         auto text = [&](const QString& v, uint8_t bit) { return n.notPresent & bit ? tr("not present") : v.isEmpty() ? tr("—") : v; };
         return tr("Device name (1008h): %1\nHardware version (1009h): %2\nSoftware version (100Ah): %3")
-            .arg(text(n.deviceName, NodeInfo::kNoDeviceName), text(n.hardwareVersion.value_or(QString()), NodeInfo::kNoHardwareVersion),
-                 text(n.softwareVersion.value_or(QString()), NodeInfo::kNoSoftwareVersion));
+            .arg(text(n.deviceName, canopen::NodeInfo::kNoDeviceName), text(n.hardwareVersion.value_or(QString()), canopen::NodeInfo::kNoHardwareVersion),
+                 text(n.softwareVersion.value_or(QString()), canopen::NodeInfo::kNoSoftwareVersion));
     }
     case Identity: {
         if (!n.vendorId) return n.identityRead ? tr("not present") : QString();
