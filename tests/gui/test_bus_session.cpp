@@ -25,6 +25,8 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include "tests/gui/ModalAnswer.h"
 
 using namespace coscope;
@@ -33,16 +35,7 @@ using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 QString plain(QString t) { return t.remove(QLatin1Char('&')); }
 
 // Opens the menu `title` by a click on the menu bar; the menu, shown, or null.

@@ -38,6 +38,8 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include <spdlog/spdlog.h>
 
 #include "eds/SimulatorDictionaries.h"
@@ -50,16 +52,7 @@ using coscope::testing::answerFileDialog;
 
 namespace {
 // Waits (running the event loop, so the window's timer ticks) until `pred` holds.
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 8000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
 
 QToolBar* traceBar(MainWindow& w) { return w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar")); }

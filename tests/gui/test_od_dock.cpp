@@ -30,20 +30,13 @@
 #include <QTreeView>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 using namespace coscope;
 using namespace coscope::gui;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 
 sim::SimNetwork* network(MainWindow& w) { return static_cast<SimBus*>(w.workspace()->bus())->network(); }
 

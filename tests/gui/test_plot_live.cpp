@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include <qcustomplot.h>
 
 using namespace coscope;
@@ -22,16 +24,7 @@ using namespace coscope::gui;
 using dissect::SignalKey;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 15000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 const SignalKey kPosition{0, 2, 0x6064, 0, -1};
 const SignalKey kVelocity{0, 2, 0x606C, 0, -1};
 

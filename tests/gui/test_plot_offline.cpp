@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include <qcustomplot.h>
 
 using namespace coscope;
@@ -19,16 +21,7 @@ using namespace coscope::gui;
 using dissect::SignalKey;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 QString le32(int32_t v) {
     QString s;
     for (int i = 0; i < 4; ++i) s += QStringLiteral("%1").arg((uint32_t(v) >> (8 * i)) & 0xFF, 2, 16, QLatin1Char('0')).toUpper();

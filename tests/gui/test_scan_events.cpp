@@ -19,21 +19,14 @@
 #include <QTableView>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerBox;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 15000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 
 // Clicks the item starting with `item` in the next popup menu, however late it shows.
 class MenuClicker {

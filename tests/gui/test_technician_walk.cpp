@@ -45,6 +45,8 @@
 #include <QTreeView>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include <memory>
 
 #include "tests/gui/ModalAnswer.h"
@@ -56,16 +58,7 @@ using coscope::testing::answerBox;
 using coscope::testing::ModalAnswerer;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 QString plain(QString text) { return text.remove(u'&'); }
 
 void click(QWidget* w) { QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center()); }

@@ -31,6 +31,8 @@
 #include <QWheelEvent>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 #include "tests/CliRun.h"
 #include "tests/gui/ModalAnswer.h"
 
@@ -38,16 +40,7 @@ using namespace coscope;
 using namespace coscope::gui;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 
 // --- input events, as a hand on the mouse and keyboard gives them
 void click(QAbstractButton* b) { QTest::mouseClick(b, Qt::LeftButton, {}, b->rect().center()); }

@@ -30,21 +30,14 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/gui/WaitFor.h"
+
 using namespace coscope;
 using namespace coscope::gui;
 using canopen::PdoMapEntry;
 
 namespace {
-template <typename Pred>
-bool waitFor(Pred pred, int timeoutMs = 15000) {
-    QElapsedTimer t;
-    t.start();
-    while (!pred()) {
-        if (t.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using coscope::testing::waitFor;
 
 // "6041:00" -> index, sub
 std::pair<uint16_t, uint8_t> obj(const QString& text) {
