@@ -130,7 +130,9 @@ void BlfWriter::closeContainer() {
     put32(o, uint32_t(container_.size()));
     o.append(QByteArray(4, '\0'));
     o.append(packed);
-    o.append(QByteArray((4 - packed.size() % 4) % 4, '\0'));  // objects are 4-byte aligned
+    // Padding after a container is objectSize % 4 bytes (not up to the next multiple of 4): what
+    // Vector's files carry and python-can's BLF reader and writer expect; ours skips either.
+    o.append(QByteArray(packed.size() % 4, '\0'));
     fileSize_ += uint64_t(o.size() - at);
     uncompressed_ += uint64_t(container_.size());
     container_.clear();
