@@ -6,6 +6,8 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace coscope::canopen {
 
 namespace {
@@ -21,13 +23,6 @@ QString configureError(const QString& what, uint8_t code) {
     return QStringLiteral("LSS %1 refused by the slave: %2 (error code %3)").arg(what, why).arg(code);
 }
 }  // namespace
-
-struct FastscanState {
-    uint32_t id[4] = {};
-    int sub = 0;     // LSSSub 0..3: vendor, product, revision, serial
-    int bit = 31;    // bit being determined; 0 = confirm the field (bit 0 tried as 0, then as 1)
-    bool triedOne = false;
-};
 
 LssMaster::LssMaster(MasterContext& context, QObject* parent) : QObject(parent), context_(context), timer_(new QTimer(this)) {
     timer_->setSingleShot(true);
@@ -80,6 +75,7 @@ void LssMaster::pump() {
             continue;
         }
         active_ = std::move(r);
+        active_->sentAt.start();
         timer_->start(active_->timeoutMs > 0 ? active_->timeoutMs : timeoutMs_);
     }
 }
@@ -87,12 +83,21 @@ void LssMaster::pump() {
 void LssMaster::onFrames(const std::vector<CanFrame>& frames) {
     for (const CanFrame& f : frames) {
         if (!active_ || f.len < 1 || f.data[0] != active_->expectCs) continue;
-        complete(true, f);
+        if (active_->graceMs < 0) {
+            complete(true, f);
+            continue;
+        }
+        // Collecting (fastscan): the first answer starts a short grace window for the other
+        // slaves' answers to the same request, which must not count for the next one.
+        if (active_->seen) continue;
+        active_->seen = true;
+        lastRttMs_ = int(active_->sentAt.elapsed());
+        timer_->start(std::max(active_->graceMs, lastRttMs_ / 2));
     }
 }
 
 void LssMaster::onTimeout() {
-    if (active_) complete(false, CanFrame{});
+    if (active_) complete(active_->seen, CanFrame{});
 }
 
 void LssMaster::complete(bool answered, const CanFrame& answer) {
@@ -217,73 +222,6 @@ void LssMaster::inquireIdentity(LssCallback done) {
             });
         });
     });
-}
-
-void LssMaster::fastscan(LssCallback done) {
-    auto st = std::make_shared<FastscanState>();
-    // First request: BitChecked = 80h resets the slaves' fastscan; any unconfigured one answers.
-    Request r;
-    r.frame = request(lss::Fastscan, {0, 0, 0, 0, 0x80, 0, 0});
-    r.expectCs = lss::IdentifySlaveResponse;
-    r.timeoutMs = fastscanMs_;
-    QPointer<LssMaster> self(this);
-    r.then = [self, st, done](bool answered, const CanFrame&) {
-        if (!self) return;
-        if (!answered) {
-            LssResult out;
-            out.noSlave = self->sendError_.isEmpty();
-            out.error = self->noAnswer(QStringLiteral("no unconfigured LSS slave answered fastscan"));
-            return done(out);
-        }
-        self->fastscanStep(st, done);
-    };
-    enqueue(std::move(r));
-}
-
-void LssMaster::fastscanStep(std::shared_ptr<FastscanState> st, LssCallback done) {
-    // Bits 31..1 of each field: guess 0; a slave answering means its bits down to `bit` match,
-    // silence means the bit is 1. Bit 0 is found by the confirmation itself (BitChecked 0,
-    // LSSNext = next field): a slave answers only on a full match, first trying 0, then 1
-    // (CiA 305 §6.7.4).
-    Request r;
-    r.frame = request(lss::Fastscan);
-    const bool confirm = st->bit == 0;
-    put32(r.frame, 1, st->id[st->sub]);
-    r.frame.data[5] = static_cast<uint8_t>(st->bit);
-    r.frame.data[6] = static_cast<uint8_t>(st->sub);
-    r.frame.data[7] = static_cast<uint8_t>(confirm ? (st->sub + 1) % 4 : st->sub);
-    r.expectCs = lss::IdentifySlaveResponse;
-    r.timeoutMs = fastscanMs_;
-    QPointer<LssMaster> self(this);
-    r.then = [self, st, done, confirm](bool answered, const CanFrame&) {
-        if (!self) return;
-        if (confirm) {
-            if (!answered) {
-                if (!st->triedOne) {
-                    st->triedOne = true;
-                    st->id[st->sub] |= 1u;
-                    return self->fastscanStep(st, done);
-                }
-                LssResult out;
-                out.error = self->noAnswer(QStringLiteral("fastscan: no slave confirmed field %1 = 0x%2").arg(st->sub).arg(st->id[st->sub], 8, 16, QChar(u'0')));
-                return done(out);
-            }
-            if (st->sub == 3) {
-                LssResult out;
-                out.ok = true;
-                out.identity = {st->id[0], st->id[1], st->id[2], st->id[3]};
-                return done(out);
-            }
-            ++st->sub;
-            st->bit = 31;
-            st->triedOne = false;
-            return self->fastscanStep(st, done);
-        }
-        if (!answered) st->id[st->sub] |= (1u << st->bit);
-        --st->bit;
-        self->fastscanStep(st, done);
-    };
-    enqueue(std::move(r));
 }
 
 }  // namespace coscope::canopen

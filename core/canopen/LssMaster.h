@@ -3,6 +3,7 @@
 
 #include "core/canopen/MasterContext.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 
 #include <deque>
@@ -38,7 +39,9 @@ public:
     ~LssMaster() override;
 
     void setTimeout(int ms) { timeoutMs_ = ms > 0 ? ms : 1000; }
-    // Fastscan waits this long for "any slave matches" at each bit (CiA 305 suggests ~10 ms+).
+    // Fastscan waits at least this long for "any slave matches" at each bit (CiA 305 §6.7.4
+    // leaves it to the master); the window widens to twice the slaves' measured answer time,
+    // and a scan whose result does not confirm is repeated with a wider window.
     void setFastscanTimeout(int ms) { fastscanMs_ = ms > 0 ? ms : 25; }
 
     // CiA 305 §6.3.2: 0 = waiting, 1 = configuration.
@@ -61,6 +64,9 @@ private:
         CanFrame frame;
         uint8_t expectCs = 0;  // 0 = no answer expected
         int timeoutMs = 0;
+        int graceMs = -1;  // >= 0: collect answers; after the first, wait this long, then complete
+        bool seen = false;
+        QElapsedTimer sentAt;
         std::function<void(bool answered, const CanFrame& answer)> then;
     };
     void enqueue(Request r);
@@ -69,7 +75,9 @@ private:
     void onTimeout();
     void complete(bool answered, const CanFrame& answer);
     static CanFrame request(uint8_t cs, std::initializer_list<uint8_t> rest = {});
+    void fastscanReset(std::shared_ptr<struct FastscanState> st, LssCallback done);
     void fastscanStep(std::shared_ptr<struct FastscanState> st, LssCallback done);
+    void fastscanRetry(std::shared_ptr<struct FastscanState> st, LssCallback done, const QString& why);
 
     QString noAnswer(const QString& what) const { return sendError_.isEmpty() ? what : sendError_; }
 
@@ -79,6 +87,7 @@ private:
     QTimer* timer_;
     int timeoutMs_ = 1000;
     int fastscanMs_ = 25;
+    int lastRttMs_ = 0;  // time to the first answer of the last collecting request
     std::deque<Request> queue_;
     std::optional<Request> active_;
 };

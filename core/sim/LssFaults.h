@@ -14,6 +14,9 @@ struct LssFaults {
     // While non-zero, configure node-ID is answered with this error code (§6.4.2: 1 = node-ID
     // out of range) and the node-ID stays as it is.
     uint8_t configureNodeIdError = 0;
+    // While non-zero, every LSS answer leaves this many ms after the request: a busy slave or a
+    // gateway in between. CiA 305 §6.7.4 leaves the fastscan timeout to the master.
+    int replyDelayMs = 0;
 };
 
 }  // namespace coscope::sim

@@ -27,7 +27,18 @@ void LssSlave::reply(uint8_t cs, uint8_t b1, uint8_t b2, uint32_t value, bool wi
         f.data[3] = uint8_t(value >> 16);
         f.data[4] = uint8_t(value >> 24);
     }
+    if (dev_.lssFaults_.replyDelayMs > 0) {
+        delayed_.push_back({dev_.now() + int64_t(dev_.lssFaults_.replyDelayMs) * 1'000'000, f});
+        return;
+    }
     dev_.send(f);
+}
+
+void LssSlave::tick(int64_t nowNs) {
+    while (!delayed_.empty() && delayed_.front().dueNs <= nowNs) {
+        dev_.send(delayed_.front().frame);
+        delayed_.pop_front();
+    }
 }
 
 void LssSlave::onFrame(const CanFrame& f) {

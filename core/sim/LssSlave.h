@@ -4,6 +4,7 @@
 #include "core/can/CanFrame.h"
 
 #include <cstdint>
+#include <deque>
 
 namespace coscope::sim {
 
@@ -18,6 +19,8 @@ public:
 
     bool configurationState() const { return configuration_; }
     void onFrame(const CanFrame& frame);
+    // Sends the answers held back by LssFaults::replyDelayMs once due.
+    void tick(int64_t nowNs);
 
 private:
     uint32_t identity(int sub) const;  // 0 vendor, 1 product, 2 revision, 3 serial
@@ -29,6 +32,11 @@ private:
     int identifyStep_ = 0;    // identify remote slave: fields matched so far
     uint32_t revLow_ = 0, serialLow_ = 0;
     int fastscanSub_ = 0;     // LSSSub the slave expects next (0..3), -1 = dropped out
+    struct Delayed {
+        int64_t dueNs;
+        CanFrame frame;
+    };
+    std::deque<Delayed> delayed_;
 };
 
 }  // namespace coscope::sim

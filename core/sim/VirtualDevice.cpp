@@ -500,6 +500,7 @@ void VirtualDevice::tick(int64_t nowNs) {
     if (!powered_) return;
     const int64_t dt = nowNs_ ? nowNs - nowNs_ : 1'000'000;
     nowNs_ = nowNs;
+    lss_->tick(nowNs);
     if (nodeId_ == 0xFF) return;
     sdo_->tick(nowNs);
     const auto hbMs = int64_t(value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0));

@@ -121,6 +121,35 @@ private slots:
         bool present = false;
         QTRY_VERIFY_WITH_TIMEOUT((rig.network->runOnNetworkThread([&] { present = rig.network->device(20) != nullptr; }), present), 3000);
     }
+
+    // A slave (or a gateway) that answers later than the master's first guess: fastscan must
+    // still find the right identity, not read silence as 1-bits (CiA 305 §6.7.4 leaves the
+    // timeout to the master). Two unconfigured slaves answer the reset together.
+    void fastscanToleratesSlowAnswers() {
+        Rig rig;
+        QVERIFY(rig.useSpec(QStringLiteral("1:delta-asda-a2,4:generic-cia402,5:aimotor")));
+        QVERIFY(rig.open());
+        LssMaster lss(*rig.context);
+        lss.setTimeout(400);
+        lss.setFastscanTimeout(4);
+        uint32_t serial4 = 0, serial5 = 0;
+        rig.onDevice(4, [&](sim::VirtualDevice& d) {
+            serial4 = d.serialNumber();
+            d.lssFaults().replyDelayMs = 15;
+            d.makeUnconfigured();
+        });
+        rig.onDevice(5, [&](sim::VirtualDevice& d) {
+            serial5 = d.serialNumber();
+            d.lssFaults().replyDelayMs = 18;
+            d.makeUnconfigured();
+        });
+        LssResult r = wait([&](auto cb) { lss.fastscan(cb); });
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QVERIFY2(r.identity.serial == serial4 || r.identity.serial == serial5, qPrintable(QString::number(r.identity.serial, 16)));
+        r = wait([&](auto cb) { lss.inquireIdentity(cb); });
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QVERIFY(r.identity.serial == serial4 || r.identity.serial == serial5);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSvcLss)
