@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/can/SocketCanLinks.h"
+#include "core/can/SocketCanLinkJob.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -59,7 +60,7 @@ bool parseIpLinkJson(const QByteArray& json, QList<SocketCanLink>* links, QStrin
 }
 
 QList<SocketCanLink> listSocketCanLinks(QString* error) {
-    const QString program = QProcessEnvironment::systemEnvironment().value(QStringLiteral("COSCOPE_IP"), QStringLiteral("ip"));
+    const QString program = ipProgram();
     QProcess p;
     p.start(program, {QStringLiteral("-details"), QStringLiteral("-json"), QStringLiteral("link"), QStringLiteral("show")});
     if (!p.waitForStarted(2000)) {
@@ -77,13 +78,9 @@ QList<SocketCanLink> listSocketCanLinks(QString* error) {
 }
 
 QString bringUpCommand(const SocketCanLink& link, int bitrate, int dataBitrate) {
-    // ip-link(8) "type can": bitrate BITRATE [dbitrate BITRATE fd on]; a virtual link has no timing.
-    if (link.isVirtual() || bitrate <= 0) return QStringLiteral("sudo ip link set %1 up").arg(link.name);
-    QString cmd = QStringLiteral("sudo ip link set %1 down; sudo ip link set %1 up type can bitrate %2").arg(link.name).arg(bitrate);
-    if (!link.up) cmd = QStringLiteral("sudo ip link set %1 up type can bitrate %2").arg(link.name).arg(bitrate);
-    if (dataBitrate > 0) cmd += QStringLiteral(" dbitrate %1 fd on").arg(dataBitrate);
-    cmd += QStringLiteral(" restart-ms 100");
-    return cmd;
+    QStringList lines;
+    for (const QStringList& args : bringUpSteps(link, bitrate, dataBitrate)) lines << QStringLiteral("sudo ip ") + args.join(u' ');
+    return lines.join(QStringLiteral("; "));
 }
 
 QString describeLink(const SocketCanLink& link) {

@@ -3,6 +3,8 @@
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
 #include "core/can/BusUrl.h"
+#include "core/can/SocketCanLinkJob.h"
+#include "tests/gui/WaitFor.h"
 
 #include <QCanBus>
 #include <QCheckBox>
@@ -101,10 +103,11 @@ private slots:
         d.show();
         QVERIFY(QTest::qWaitForWindowExposed(&d));
         QVERIFY(chooseBackend(d, QStringLiteral("socketcan")));
-        qunsetenv("COSCOPE_IP");
         auto* device = d.findChild<QComboBox*>(QStringLiteral("device"));
         auto* state = d.findChild<QLabel*>(QStringLiteral("linkState"));
-        QVERIFY(device->findText(QStringLiteral("can0")) >= 0);
+        // `ip` runs off the GUI thread; the list fills when it answers.
+        QVERIFY(coscope::testing::waitFor([&] { return device->findText(QStringLiteral("can0")) >= 0; }, 5000));
+        qunsetenv("COSCOPE_IP");
         QVERIFY(device->findText(QStringLiteral("lo")) < 0);
         // Pick can0 from the list with the keyboard.
         device->setFocus();
@@ -124,6 +127,57 @@ private slots:
         QTest::keyClick(device, Qt::Key_Down);
         QCOMPARE(device->currentText(), QStringLiteral("can1"));
         QVERIFY2(state->text().contains(QStringLiteral("bus-off")), qPrintable(state->text()));
+    }
+
+    // An interface that is down is brought up from the dialog when CoScope may configure links
+    // (CAP_NET_ADMIN): one click runs the command shown, and the state shown follows the kernel.
+    void bringUpRunsTheCommandShown() {
+        if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
+        if (!mayConfigureLinks()) QSKIP("this test runs without CAP_NET_ADMIN: the button is only offered with it");
+        QTemporaryDir dir;
+        const QString ip = dir.filePath(QStringLiteral("ip"));
+        const QString calls = dir.filePath(QStringLiteral("calls"));
+        QFile f(ip);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        // A stand-in for ip(8): lists can0 down until "link set can0 up type can bitrate N" ran.
+        f.write(QStringLiteral("#!/bin/sh\nif [ \"$1\" = -details ]; then\n"
+                               "  if [ -f '%1.up' ]; then r=$(cat '%1.up'); flags='\"NOARP\",\"UP\",\"LOWER_UP\"'; st=ERROR-ACTIVE;\n"
+                               "  else r=250000; flags='\"NOARP\"'; st=STOPPED; fi\n"
+                               "  echo \"[{\\\"ifname\\\":\\\"can0\\\",\\\"flags\\\":[$flags],\\\"link_type\\\":\\\"can\\\",\\\"linkinfo\\\":{\\\"info_kind\\\":\\\"can\\\","
+                               "\\\"info_data\\\":{\\\"state\\\":\\\"$st\\\",\\\"bittiming\\\":{\\\"bitrate\\\":$r}}}}]\"\n  exit 0\nfi\n"
+                               "echo \"$*\" >> '%1'\n"
+                               "if [ \"$4\" = up ] && [ \"$7\" = bitrate ]; then echo \"$8\" > '%1.up'; fi\n")
+                    .arg(calls)
+                    .toUtf8());
+        f.close();
+        f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
+        qputenv("COSCOPE_IP", ip.toLocal8Bit());
+        ConnectDialog d;
+        d.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&d));
+        QVERIFY(chooseBackend(d, QStringLiteral("socketcan")));
+        auto* device = d.findChild<QComboBox*>(QStringLiteral("device"));
+        auto* state = d.findChild<QLabel*>(QStringLiteral("linkState"));
+        auto* bringUp = d.findChild<QPushButton*>(QStringLiteral("bringUp"));
+        QVERIFY(coscope::testing::waitFor([&] { return device->findText(QStringLiteral("can0")) >= 0; }, 5000));
+        device->setFocus();
+        QTest::keyClick(device, Qt::Key_Home);
+        while (device->currentText() != QStringLiteral("can0") && device->currentIndex() < device->count() - 1) QTest::keyClick(device, Qt::Key_Down);
+        QVERIFY2(state->text().contains(QStringLiteral("can0 is down")), qPrintable(state->text()));
+        auto* bitrate = d.findChild<QComboBox*>(QStringLiteral("bitrate"));
+        bitrate->setFocus();
+        QTest::keyClick(bitrate, Qt::Key_Home);
+        while (bitrate->currentData().toInt() != 125000 && bitrate->currentIndex() < bitrate->count() - 1) QTest::keyClick(bitrate, Qt::Key_Down);
+        QVERIFY(bringUp->isVisible());
+        QVERIFY(bringUp->isEnabled());
+        QTest::mouseClick(bringUp, Qt::LeftButton);
+        QVERIFY2(coscope::testing::waitFor([&] { return state->text().contains(QStringLiteral("can0 is up")); }, 5000), qPrintable(state->text()));
+        QVERIFY2(state->text().contains(QStringLiteral("125")), qPrintable(state->text()));
+        QVERIFY(!bringUp->isVisible());
+        qunsetenv("COSCOPE_IP");
+        QFile log(calls);
+        QVERIFY(log.open(QIODevice::ReadOnly));
+        QCOMPARE(QString::fromUtf8(log.readAll()).trimmed(), QStringLiteral("link set can0 up type can bitrate 125000 restart-ms 100"));
     }
 
     void socketcandRoundTrip() {
@@ -220,7 +274,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&d));
         QVERIFY(chooseBackend(d, QStringLiteral("socketcan")));
         auto* hint = d.findChild<QLabel*>(QStringLiteral("noDevices"));
-        QVERIFY(hint && hint->isVisible());
+        QVERIFY(hint);
+        QVERIFY(coscope::testing::waitFor([&] { return hint->isVisible(); }, 5000));
         QVERIFY2(hint->text().contains(QStringLiteral("No CAN interfaces")) && hint->text().contains(QStringLiteral("vcan")), qPrintable(hint->text()));
         QVERIFY(chooseBackend(d, QStringLiteral("sim")));
         QVERIFY(!hint->isVisible());

@@ -4,6 +4,7 @@
 // interface is missing (ENODEV). Either way the message names a remedy, never only strerror.
 #include "CliRun.h"
 #include "core/can/BusUrl.h"
+#include "core/can/SocketCanLinkJob.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -23,6 +24,35 @@ private slots:
         const bool noKernelCan = last.contains(QStringLiteral("modprobe can_raw"));
         const bool noInterface = last.contains(QStringLiteral("no CAN interface named 'nosuchcan9'"));
         QVERIFY2(noKernelCan || noInterface, qPrintable(r.err));
+    }
+
+    // `buses --bring-up` runs the command the Connect dialog shows (ip-link(8) "type can"),
+    // setting an interface that is up down first to change its rate.
+    void bringUpRunsIpLink() {
+        if (!coscope::mayConfigureLinks()) QSKIP("runs without CAP_NET_ADMIN");
+        QTemporaryDir dir;
+        const QString ip = dir.filePath(QStringLiteral("ip")), calls = dir.filePath(QStringLiteral("calls"));
+        QFile f(ip);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QStringLiteral("#!/bin/sh\nif [ \"$1\" = -details ]; then\n"
+                               "echo '[{\"ifname\":\"can1\",\"flags\":[\"UP\"],\"link_type\":\"can\",\"linkinfo\":{\"info_kind\":\"can\",\"info_data\":{\"bittiming\":{\"bitrate\":500000}}}}]'\n"
+                               "exit 0\nfi\necho \"$*\" >> '%1'\n")
+                    .arg(calls)
+                    .toUtf8());
+        f.close();
+        f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
+        qputenv("COSCOPE_IP", ip.toLocal8Bit());
+        const Run r = cli({QStringLiteral("buses"), QStringLiteral("--bring-up"), QStringLiteral("can1"), QStringLiteral("--bitrate"), QStringLiteral("250000"),
+                           QStringLiteral("--data-bitrate"), QStringLiteral("2000000")});
+        const Run missing = cli({QStringLiteral("buses"), QStringLiteral("--bring-up"), QStringLiteral("can7")});
+        qunsetenv("COSCOPE_IP");
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile log(calls);
+        QVERIFY(log.open(QIODevice::ReadOnly));
+        QCOMPARE(QString::fromUtf8(log.readAll()),
+                 QStringLiteral("link set can1 down\nlink set can1 up type can bitrate 250000 dbitrate 2000000 fd on restart-ms 100\n"));
+        QCOMPARE(missing.code, 1);
+        QVERIFY2(missing.err.contains(QStringLiteral("no CAN interface named 'can7'")), qPrintable(missing.err));
     }
 
     // A bus-off error frame (CAN_ERR_BUSOFF) is reported on stderr and capture goes on; with

@@ -22,6 +22,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <spdlog/spdlog.h>
+
 namespace coscope::gui {
 
 namespace {
@@ -42,6 +44,10 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         if (i > 0) setUrl(recent_->itemText(i));
     });
     form->addRow(tr("Recent:"), recent_);
+    linkJob_ = new SocketCanLinkJob(this);
+    connect(linkJob_, &SocketCanLinkJob::listed, this, &ConnectDialog::onLinksListed);
+    connect(linkJob_, &SocketCanLinkJob::broughtUp, this, &ConnectDialog::onBroughtUp);
+    mayConfigure_ = mayConfigureLinks();
     backend_ = new QComboBox(this);
     backend_->setObjectName(QStringLiteral("backend"));
     backend_->addItem(tr("Virtual drives (sim://)"), QStringLiteral("sim"));
@@ -74,6 +80,11 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         linkState_->setTextInteractionFlags(Qt::TextSelectableByMouse);
         linkState_->hide();
         f->addRow(linkState_);
+        bringUp_ = new QPushButton(tr("Bring up"), w);
+        bringUp_->setObjectName(QStringLiteral("bringUp"));
+        bringUp_->hide();
+        connect(bringUp_, &QPushButton::clicked, this, &ConnectDialog::onBringUp);
+        f->addRow(bringUp_);
         pages_->addWidget(w);
     }
     {  // socketcand
@@ -217,20 +228,51 @@ void ConnectDialog::onBackendChanged() {
         pages_->setCurrentIndex(PluginPage);
         device_->clear();
         links_.clear();
+        noDevices_->hide();
         QString error;
-        if (key == u"socketcan") links_ = listSocketCanLinks(&error);
         for (const auto& info : QCanBus::instance()->availableDevices(key, &error)) device_->addItem(info.name());
-        for (const SocketCanLink& l : links_)
-            if (device_->findText(l.name) < 0) device_->addItem(l.name);
-        for (int i = 0; i < device_->count(); ++i) {
-            for (const SocketCanLink& l : links_)
-                if (l.name == device_->itemText(i)) device_->setItemData(i, linkText(l), Qt::ToolTipRole);
+        for (int i = 0; i < device_->count(); ++i)
             if (!pluginProbesHardware(key)) device_->setItemData(i, tr("Listed by the plugin without finding an adapter"), Qt::ToolTipRole);
-        }
         if (device_->count() == 0) device_->setEditText(key == u"virtualcan" ? QStringLiteral("can0") : QString());
-        noDevices_->setVisible(key == u"socketcan" && device_->count() == 0);
+        // State and bit rate come from `ip`, off the GUI thread (onLinksListed).
+        if (key == u"socketcan") linkJob_->list();
     }
     updatePreview();
+}
+
+void ConnectDialog::onLinksListed(const QList<SocketCanLink>& links, const QString& error) {
+    if (backend_->currentData().toString() != u"socketcan") return;
+    if (!error.isEmpty()) spdlog::info("listing CAN interfaces: {}", error.toStdString());
+    links_ = links;
+    const QString typed = device_->currentText();
+    for (const SocketCanLink& l : links_)
+        if (device_->findText(l.name) < 0) device_->addItem(l.name);
+    for (int i = 0; i < device_->count(); ++i)
+        for (const SocketCanLink& l : links_)
+            if (l.name == device_->itemText(i)) device_->setItemData(i, linkText(l), Qt::ToolTipRole);
+    if (!typed.isEmpty() && device_->findText(typed) >= 0) device_->setCurrentIndex(device_->findText(typed));
+    noDevices_->setVisible(device_->count() == 0);
+    updatePreview();
+}
+
+void ConnectDialog::onBringUp() {
+    const QString name = device_->currentText().trimmed();
+    for (const SocketCanLink& l : links_) {
+        if (l.name != name) continue;
+        const int wanted = bitrate_->currentData().toInt();
+        bringUp_->setEnabled(false);
+        linkJob_->bringUp(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), fd_->isChecked() ? dataBitrate_->currentData().toInt() : 0);
+        return;
+    }
+}
+
+void ConnectDialog::onBroughtUp(bool ok, const QString& error) {
+    bringUp_->setEnabled(true);
+    if (!ok) {
+        error_->setText(tr("Could not bring the interface up: %1").arg(error));
+        error_->show();
+    }
+    linkJob_->list();  // show the state the kernel reports now
 }
 
 QString ConnectDialog::url() const {
@@ -327,6 +369,7 @@ void ConnectDialog::updateLinkState() {
     const QString key = backend_->currentData().toString();
     const QString name = device_->currentText().trimmed();
     QString text;
+    bool offerBringUp = false;
     if (pages_->currentIndex() == PluginPage && !pluginProbesHardware(key) && device_->findText(name) >= 0) {
         text = tr("Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.").arg(key, name);
     } else if (key == u"socketcan") {
@@ -336,12 +379,19 @@ void ConnectDialog::updateLinkState() {
             const int wantedData = fd_->isChecked() ? dataBitrate_->currentData().toInt() : 0;
             text = linkText(l);
             const bool rateDiffers = !l.isVirtual() && wanted > 0 && wanted != l.bitrate;
-            if (!l.up || rateDiffers)
+            if (!l.up || rateDiffers) {
                 text += QStringLiteral("<br>") +
                         (l.up ? tr("To change its bit rate, run:") : tr("Bring it up with:")) +
                         QStringLiteral(" <tt>%1</tt>").arg(bringUpCommand(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), wantedData).toHtmlEscaped());
+                offerBringUp = true;
+                bringUp_->setText(l.up ? tr("Change bit rate now") : tr("Bring up now"));
+            }
         }
     }
+    // Runs the same command, without sudo, when this process may (CAP_NET_ADMIN).
+    bringUp_->setVisible(offerBringUp);
+    bringUp_->setEnabled(offerBringUp && mayConfigure_ && !linkJob_->busy());
+    bringUp_->setToolTip(mayConfigure_ ? QString() : tr("CoScope runs without the right to configure network interfaces: run the command above in a terminal"));
     linkState_->setText(text);
     linkState_->setVisible(!text.isEmpty());
 }

@@ -3,6 +3,7 @@
 // listen-only) and the recent connections.
 #pragma once
 
+#include "core/can/SocketCanLinkJob.h"
 #include "core/can/SocketCanLinks.h"
 
 #include <QDialog>
@@ -11,6 +12,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 class QSpinBox;
 class QStackedWidget;
 class QTableWidget;
@@ -41,6 +43,9 @@ private:
     void onUrlTyped(const QString& text);  // a pasted or typed URL fills the choices
     void updateLinkState();                // the chosen interface's state and how to bring it up
     QString linkText(const SocketCanLink& link) const;
+    void onLinksListed(const QList<SocketCanLink>& links, const QString& error);
+    void onBringUp();
+    void onBroughtUp(bool ok, const QString& error);
 
     QComboBox* recent_ = nullptr;
     QComboBox* backend_ = nullptr;
@@ -53,6 +58,9 @@ private:
     QLabel* noDevices_ = nullptr;
     QLabel* linkState_ = nullptr;
     QList<SocketCanLink> links_;  // SocketCAN interfaces as `ip -details -json link` reports them
+    SocketCanLinkJob* linkJob_ = nullptr;
+    QPushButton* bringUp_ = nullptr;
+    bool mayConfigure_ = false;
     QLineEdit* replayPath_ = nullptr;
     QComboBox* replaySpeed_ = nullptr;
     QCheckBox* replayLoop_ = nullptr;
