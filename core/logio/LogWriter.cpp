@@ -80,7 +80,9 @@ bool LogWriter::flush() {
         }
         buffer_.clear();
     }
-    if (auto* file = qobject_cast<QFileDevice*>(device_)) file->flush();
+    // A buffered file hands its data to the kernel here: a full disk shows up now, not at close.
+    if (auto* file = qobject_cast<QFileDevice*>(device_); file && !file->flush() && error_.isEmpty())
+        error_ = QStringLiteral("write failed: %1").arg(file->errorString());
     return !hasError();
 }
 
