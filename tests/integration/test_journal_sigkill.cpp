@@ -108,6 +108,28 @@ private slots:
         checkJournal(out, sent);
     }
 
+    // A full disk ends the recording with a clear message and exit code 1 (it did not notice
+    // before: a buffered file's failed flush went unreported and the CLI "recorded" on).
+    void recordStopsWhenTheDiskIsFull() {
+        if (!QFileInfo::exists(QStringLiteral("/dev/full"))) QSKIP("no /dev/full");
+        QTemporaryDir dir;
+        const QString out = dir.filePath(QStringLiteral("full.log"));
+        QVERIFY(QFile::link(QStringLiteral("/dev/full"), out));
+        QProcess p;
+        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("record"), QStringLiteral("sim://"), out});
+        QVERIFY(p.waitForStarted());
+        if (!p.waitForFinished(10000)) {
+            p.kill();
+            p.waitForFinished();
+            QFAIL("record went on writing to a full disk");
+        }
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 1);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.contains(QStringLiteral("cannot write %1").arg(out)) && err.contains(QStringLiteral("No space left on device")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("frames kept")), qPrintable(err));
+    }
+
     void appKilledLeavesItsJournal() {
         FakeSocketcandServer server;
         QVERIFY(server.listen());
