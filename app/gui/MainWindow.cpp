@@ -88,6 +88,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     connect(workspace_, &Workspace::sourceChanged, this, &MainWindow::onSourceChanged);
     connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
+    connect(workspace_, &Workspace::captureStopped, this, [this](const QString& message) {
+        showError(message);
+        if (quiet_) return;
+        // Not exec(): the window goes on refreshing behind it.
+        auto* box = new QMessageBox(QMessageBox::Critical, tr("Capture stopped"), message, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
     connect(trace_, &TraceDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
     connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);

@@ -5,6 +5,7 @@
 // the file; old journals are removed at start by the age and size settings.
 #include "app/gui/JournalOffer.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/session/SimulationDemo.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/LogLoadJob.h"
 #include "core/logio/PcapLog.h"
@@ -20,6 +21,10 @@
 #include <QtTest>
 
 #include "tests/gui/WaitFor.h"
+
+#include <csignal>
+
+#include <sys/resource.h>
 
 using namespace coscope;
 using namespace coscope::gui;
@@ -91,6 +96,38 @@ private slots:
         QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
         QCOMPARE(read.size(), frames);
         QCOMPARE(read.back().id, w.workspace()->store()->frame(FrameNo(frames - 1)).id);
+    }
+
+    // The disk fills mid-capture (here: a file size limit for this process): the capture stops
+    // with a message saying so, the trace keeps every frame received, the journal stays
+    // readable up to where the disk was full.
+    void fullDiskStopsTheCapture() {
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        startSimulationDemo(w.workspace());  // steady traffic: heartbeats, PDOs
+        const QString path = w.workspace()->journalPath();
+        QVERIFY(waitFor([&] { return w.workspace()->journal()->framesWritten() >= 10; }));
+        std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead
+        rlimit old{};
+        QVERIFY(getrlimit(RLIMIT_FSIZE, &old) == 0);
+        rlimit small = old;
+        small.rlim_cur = rlim_t(QFileInfo(path).size() + 1000);
+        QVERIFY(setrlimit(RLIMIT_FSIZE, &small) == 0);
+        const bool stopped = waitFor([&] { return !w.workspace()->isLive(); }, 20000);
+        setrlimit(RLIMIT_FSIZE, &old);
+        QVERIFY(stopped);
+        QVERIFY2(w.lastError().startsWith(QStringLiteral("Capture stopped: cannot write the capture journal")), qPrintable(w.lastError()));
+        const size_t kept = w.workspace()->store()->size();
+        QVERIFY(kept > 20);
+        logio::PcapReader r;
+        QVERIFY(r.open(path));
+        const auto read = r.readAll();
+        QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
+        QVERIFY(read.size() >= 10 && read.size() < kept);
+        for (size_t i = 0; i < read.size(); ++i) QCOMPARE(read[i].timestampNs, w.workspace()->store()->frame(FrameNo(i)).timestampNs);
+        QTest::qWait(300);
+        QCOMPARE(w.workspace()->store()->size(), kept);  // stopped: nothing more arrives
     }
 
     void unclosedJournalIsOfferedAndReopened() {

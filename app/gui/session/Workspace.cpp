@@ -204,7 +204,7 @@ void Workspace::poll() {
                                     .arg(store_->size());
         events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, message});
         disconnectBus();
-        emit errorOccurred(message);
+        emit captureStopped(message);
         return;
     }
     events_.checkHeartbeats(nowNs());

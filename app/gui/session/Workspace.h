@@ -86,6 +86,8 @@ signals:
     void sourceChanged();
     void busStateChanged(coscope::CanBus::State state);
     void errorOccurred(const QString& message);
+    // The capture ended on its own (the journal could not be written); the trace is kept.
+    void captureStopped(const QString& message);
 
 private:
     void reset();
