@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli record BUS OUT [--count N] [--duration S]: streams the bus to a log in the format
 // OUT's extension names (.log candump -L, .asc, .blf, .trc, .pcapng, .csv; core/logio's writers); an
-// extension without a writer is a usage error. The file is flushed at least every 100 ms, so a
-// crash or an unplugged adapter loses nothing that was received (text formats; binary ones get
-// their footer at the end); Ctrl-C / SIGTERM close the file cleanly.
+// extension without a writer is a usage error. The file is flushed at least every 100 ms and
+// synced to the disk every second, so a crash, a SIGKILL or an unplugged adapter loses nothing
+// that was received (text formats and pcapng, whose blocks stand alone; BLF gets its footer at
+// the end); Ctrl-C / SIGTERM close the file cleanly. A write error (full disk) stops the
+// recording with the frames written so far kept.
 #include "app/cli/BusOffWatch.h"
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
@@ -23,6 +25,7 @@ namespace {
 const QString kVerb = QStringLiteral("record");
 constexpr int kOpenWaitMs = 8000;
 constexpr int kFlushMs = 100;
+constexpr int kSyncMs = 1000;
 }  // namespace
 
 static int runRecord(const QStringList& args) {
@@ -86,8 +89,9 @@ static int runRecord(const QStringList& args) {
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     qint64 written = 0;
     bool writeFailed = false;
-    QElapsedTimer sinceFlush;
+    QElapsedTimer sinceFlush, sinceSync;
     sinceFlush.start();
+    sinceSync.start();
     auto drain = [&] {
         for (;;) {
             const size_t n = bus->read(batch.data(), batch.size());
@@ -97,8 +101,10 @@ static int runRecord(const QStringList& args) {
             if (count >= 0 && written >= count) break;
         }
         if (sinceFlush.elapsed() >= kFlushMs / 2) {  // waits are 50 ms: at most ~100 ms unflushed
-            if (!out->flush()) writeFailed = true;
+            const bool toDisk = sinceSync.elapsed() >= kSyncMs - kFlushMs;
+            if (!(toDisk ? out->sync() : out->flush())) writeFailed = true;
             sinceFlush.restart();
+            if (toDisk) sinceSync.restart();
         }
     };
     auto finish = [&](int exitCode, const QString& why) {

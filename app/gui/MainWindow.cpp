@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/JournalOffer.h"
+
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
 #include "app/gui/console/ConsoleDock.h"
@@ -82,9 +84,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     status_ = new BusStatusBar(statusBar(), workspace_);
     buildMenus();
     restoreLayout();
+    offerAndCleanJournals();
 
     connect(workspace_, &Workspace::sourceChanged, this, &MainWindow::onSourceChanged);
     connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
+    connect(workspace_, &Workspace::captureStopped, this, [this](const QString& message) {
+        showError(message);
+        if (quiet_) return;
+        // Not exec(): the window goes on refreshing behind it.
+        auto* box = new QMessageBox(QMessageBox::Critical, tr("Capture stopped"), message, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
     connect(trace_, &TraceDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
     connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);
@@ -167,6 +178,19 @@ void MainWindow::buildMenus() {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));
     });
+}
+
+void MainWindow::offerAndCleanJournals() {
+    const QString folder = workspace_->journalFolder();
+    addToolBarBreak(Qt::TopToolBarArea);
+    journalOffer_ = new JournalOfferBar(this);
+    addToolBar(Qt::TopToolBarArea, journalOffer_);
+    connect(journalOffer_, &JournalOfferBar::reopenRequested, this, [this](const QString& path) {
+        if (openLog(path)) showMessage(tr("Reopened the capture journal %1").arg(path));
+    });
+    journalOffer_->offerFrom(folder);
+    // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
+    journals::cleanup(folder, journalCleanupPolicy());
 }
 
 void MainWindow::rebuildRecentMenu() {

@@ -19,6 +19,7 @@ namespace coscope::gui {
 class BusStatusBar;
 class ConsoleDock;
 class EventsDock;
+class JournalOfferBar;
 class LogSaveJob;
 class NodesDock;
 class ObjectDictionaryDock;
@@ -60,6 +61,7 @@ public:
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
+    JournalOfferBar* journalOffer() const { return journalOffer_; }
     LogSaveJob* saveJob() const { return saveJob_.get(); }
     QString lastError() const { return lastError_; }
 
@@ -76,6 +78,8 @@ private:
     void restoreLayout();
     void saveLayout();
     void showError(const QString& message);
+    // At start: offers a capture journal left unclosed, then removes old journals.
+    void offerAndCleanJournals();
     void showMessage(const QString& message);
     void onSourceChanged();
     // Commission items transmit: disabled without an open bus and while the bus is listen-only
@@ -97,6 +101,7 @@ private:
     EventsDock* events_ = nullptr;
     ConsoleDock* console_ = nullptr;
     BusStatusBar* status_ = nullptr;
+    JournalOfferBar* journalOffer_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QMenu* commission_ = nullptr;
     QAction* commissionNote_ = nullptr;  // the section that says why the items are disabled

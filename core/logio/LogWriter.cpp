@@ -3,6 +3,11 @@
 
 #include <QFile>
 
+#include <cerrno>
+#include <cstring>
+
+#include <unistd.h>
+
 namespace coscope::logio {
 
 namespace {
@@ -80,8 +85,22 @@ bool LogWriter::flush() {
         }
         buffer_.clear();
     }
-    if (auto* file = qobject_cast<QFileDevice*>(device_)) file->flush();
+    // A buffered file hands its data to the kernel here: a full disk shows up now, not at close.
+    if (auto* file = qobject_cast<QFileDevice*>(device_); file && !file->flush() && error_.isEmpty())
+        error_ = QStringLiteral("write failed: %1").arg(file->errorString());
     return !hasError();
+}
+
+bool LogWriter::sync() {
+    if (!flush()) return false;
+    auto* file = qobject_cast<QFileDevice*>(device_);
+    const int fd = file ? file->handle() : -1;
+    // A device without it (a pipe, /dev/null) is no failure.
+    if (fd >= 0 && ::fdatasync(fd) != 0 && errno != EINVAL && errno != EROFS && errno != ENOTSUP) {
+        error_ = QStringLiteral("write failed: %1").arg(QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    }
+    return true;
 }
 
 bool LogWriter::close() {

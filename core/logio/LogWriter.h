@@ -33,6 +33,8 @@ public:
 
     bool write(const CanFrame& frame, const QString& summary = {});
     bool flush();
+    // flush(), then to the disk (fdatasync) for a file: what a power loss keeps.
+    bool sync();
     bool close();  // writes the footer, flushes; closes a file opened by path
 
     bool hasError() const { return !error_.isEmpty(); }

@@ -3,6 +3,8 @@
 
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
+#include "core/can/BusInterfaceName.h"
+#include "core/trace/JournalFolder.h"
 
 #include <QFileInfo>
 
@@ -38,6 +40,8 @@ void Workspace::reset() {
     if (bus_) bus_->close();
     if (session_) session_->stop();
     session_.reset();
+    closeJournal();
+    journalPath_.clear();
     master_.reset();
     if (bus_) bus_->disconnect(this);
     bus_.reset();
@@ -75,6 +79,9 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     });
     connect(bus_.get(), &CanBus::errorOccurred, this, &Workspace::errorOccurred);
     session_ = std::make_unique<CaptureSession>(store_);
+    openJournal();
+    if (journal_)
+        session_->addConsumer([j = journal_.get()](const TraceStore& s, FrameNo first, size_t count) { j->appendFromStore(s, first, count); });
     master_ = std::make_unique<canopen::MasterContext>(bus_.get(), &nodes_);
     for (auto& c : analysisConsumers()) session_->addConsumer(std::move(c));
     session_->addConsumer(master_->dispatcher().consumer());
@@ -96,6 +103,7 @@ void Workspace::disconnectBus() {
     bus_->close();
     if (session_) session_->stop();
     session_.reset();
+    closeJournal();
     master_.reset();
     bus_->disconnect(this);
     bus_.reset();
@@ -107,6 +115,27 @@ void Workspace::disconnectBus() {
     sourceName_ += QStringLiteral(" (disconnected)");
     emit busStateChanged(CanBus::State::Closed);
     emit sourceChanged();
+}
+
+QString Workspace::journalFolder() const { return journals::defaultFolder(); }
+
+void Workspace::openJournal() {
+    journalPath_ = journals::newJournalPath(journalFolder(), sourceName_);
+    auto journal = std::make_unique<CaptureJournal>();
+    if (journalPath_.isEmpty() || !journal->open(journalPath_, {busInterfaceName(bus_->url())})) {
+        const QString why = journalPath_.isEmpty() ? tr("cannot create the folder %1").arg(journalFolder()) : journal->errorString();
+        spdlog::warn("no capture journal: {}", why.toStdString());
+        journalPath_.clear();
+        emit errorOccurred(tr("The capture is not journaled to disk (%1); it is kept in memory only").arg(why));
+        return;
+    }
+    journal_ = std::move(journal);
+}
+
+void Workspace::closeJournal() {
+    if (!journal_) return;
+    journal_->close();
+    journal_.reset();
 }
 
 bool Workspace::openLog(const QString& path, QString* error) {
@@ -168,6 +197,16 @@ void Workspace::poll() {
     }
     syncDictionaries();
     if (!bus_) return;
+    if (journal_ && journal_->hasError()) {
+        // The disk is full or gone: stop here rather than capture what could not be kept.
+        const QString message = tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
+                                    .arg(journal_->path(), journal_->errorString())
+                                    .arg(store_->size());
+        events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, message});
+        disconnectBus();
+        emit captureStopped(message);
+        return;
+    }
     events_.checkHeartbeats(nowNs());
     const auto c = bus_->counters();
     if (c.dropped > reportedDropped_) {

@@ -10,6 +10,7 @@
 #include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanBus.h"
 #include "core/canopen/NodeTable.h"
+#include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
 #include "dissectors/SignalRecorder.h"
 
@@ -61,6 +62,14 @@ public:
     canopen::SdoClient* sdo() const { return sdo_.get(); }
     LogLoadJob* loadJob() const { return loadJob_.get(); }
 
+    // The capture journal of the live capture (DESIGN.md "Reliability"): every frame of a bus
+    // connection is written to a pcapng file in journalFolder() as it arrives. Null when no bus
+    // is connected or the journal could not be made (then the capture runs without one, and
+    // errorOccurred said so). A write error stops the capture; the trace keeps its frames.
+    const CaptureJournal* journal() const { return journal_.get(); }
+    QString journalPath() const { return journalPath_; }  // the last capture's, kept after disconnect
+    QString journalFolder() const;
+
     QString sourceName() const { return sourceName_; }
     QStringList busNames() const;
 
@@ -77,9 +86,13 @@ signals:
     void sourceChanged();
     void busStateChanged(coscope::CanBus::State state);
     void errorOccurred(const QString& message);
+    // The capture ended on its own (the journal could not be written); the trace is kept.
+    void captureStopped(const QString& message);
 
 private:
     void reset();
+    void openJournal();
+    void closeJournal();
     std::vector<CaptureSession::Consumer> analysisConsumers();
 
     std::shared_ptr<TraceDecoder> traceDecoder_;
@@ -89,11 +102,13 @@ private:
     canopen::NodeTable nodes_;
     EventLog events_;
     std::unique_ptr<CanBus> bus_;
+    std::unique_ptr<CaptureJournal> journal_;  // outlives session_ (its consumer)
     std::unique_ptr<CaptureSession> session_;
     std::unique_ptr<canopen::MasterContext> master_;
     std::unique_ptr<canopen::SdoClient> sdo_;
     std::unique_ptr<LogLoadJob> loadJob_;
     QString sourceName_;
+    QString journalPath_;
     uint64_t reportedDropped_ = 0;
     uint64_t reportedErrors_ = 0;
     uint64_t syncedNodesRevision_ = 0;

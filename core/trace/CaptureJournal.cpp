@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/trace/CaptureJournal.h"
+
+#include "core/logio/PcapLog.h"
+
+#include <QCoreApplication>
+#include <QFile>
+
+#include <chrono>
+#include <cerrno>
+#include <cstring>
+
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+namespace coscope {
+
+struct CaptureJournal::Writer {
+    QFile file;
+    logio::PcapngWriter pcapng;
+};
+
+namespace {
+using Clock = std::chrono::steady_clock;
+// fdatasync where the file system has it; a device without it (a pipe, /dev/null) is no failure.
+bool syncToDisk(int fd, QString* why) {
+    if (fd < 0 || ::fdatasync(fd) == 0) return true;
+    const int e = errno;
+    if (e == EINVAL || e == EROFS || e == ENOTSUP) return true;
+    *why = QString::fromLocal8Bit(std::strerror(e));
+    return false;
+}
+}  // namespace
+
+QString CaptureJournal::sidecarOf(const QString& journalPath) {
+    QString s = journalPath;
+    if (s.endsWith(QLatin1String(".pcapng"))) s.chop(7);
+    return s + QStringLiteral(".open");
+}
+
+CaptureJournal::~CaptureJournal() { close(); }
+
+bool CaptureJournal::open(const QString& path, const QStringList& busNames) {
+    close();
+    path_ = path;
+    busNames_ = busNames;
+    error_.clear();
+    failed_.store(false);
+    written_.store(0);
+    stop_ = false;
+    flushRequests_ = flushesDone_ = 0;
+    QFile sidecar(sidecarOf(path));
+    if (!sidecar.open(QIODevice::WriteOnly | QIODevice::Truncate) || sidecar.write(QByteArray::number(QCoreApplication::applicationPid()) + '\n') < 0) {
+        error_ = QStringLiteral("cannot write %1: %2").arg(sidecar.fileName(), sidecar.errorString());
+        return false;
+    }
+    sidecar.close();
+    auto* w = new Writer;
+    w->file.setFileName(path);
+    // Unbuffered: every write reaches the kernel at once, so its failure is seen at once.
+    if (!w->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered) || !w->pcapng.open(&w->file)) {
+        error_ = QStringLiteral("cannot write %1: %2").arg(path, w->file.errorString());
+        delete w;
+        QFile::remove(sidecarOf(path));
+        return false;
+    }
+    w->pcapng.setBusNames(busNames);
+    writer_ = w;
+    running_.store(true);
+    thread_ = std::thread([this] { run(); });
+    spdlog::info("capture journal {}", path.toStdString());
+    return true;
+}
+
+void CaptureJournal::append(std::span<const CanFrame> frames) {
+    if (frames.empty() || failed_.load(std::memory_order_relaxed) || !running_.load(std::memory_order_relaxed)) return;
+    std::lock_guard lock(mutex_);
+    pending_.insert(pending_.end(), frames.begin(), frames.end());
+}
+
+void CaptureJournal::appendFromStore(const TraceStore& store, FrameNo first, size_t count) {
+    if (count == 0 || failed_.load(std::memory_order_relaxed) || !running_.load(std::memory_order_relaxed)) return;
+    std::lock_guard lock(mutex_);
+    pending_.reserve(pending_.size() + count);
+    for (size_t i = 0; i < count; ++i) pending_.push_back(store.frame(FrameNo(first + i)));
+}
+
+bool CaptureJournal::flush() {
+    if (!running_.load()) return !hasError();
+    std::unique_lock lock(mutex_);
+    const uint64_t ticket = ++flushRequests_;
+    wake_.notify_all();
+    flushed_.wait(lock, [&] { return flushesDone_ >= ticket || !running_.load(); });
+    return !failed_.load();
+}
+
+bool CaptureJournal::close() {
+    if (!thread_.joinable()) return !hasError();
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+    running_.store(false);
+    flushed_.notify_all();
+    writer_->pcapng.close();
+    writer_->file.close();
+    delete writer_;
+    writer_ = nullptr;
+    // Closed cleanly: the journal is complete (even after a write error, which was reported).
+    QFile::remove(sidecarOf(path_));
+    spdlog::info("capture journal closed: {} frames in {}", written_.load(), path_.toStdString());
+    return !hasError();
+}
+
+QString CaptureJournal::errorString() const {
+    std::lock_guard lock(mutex_);
+    return error_;
+}
+
+void CaptureJournal::run() {
+    std::vector<CanFrame> batch;
+    auto lastSync = Clock::now();
+    std::unique_lock lock(mutex_);
+    for (;;) {
+        wake_.wait_for(lock, std::chrono::milliseconds(kWriteIntervalMs), [&] { return stop_ || flushRequests_ > flushesDone_; });
+        const bool stopping = stop_;
+        const uint64_t ticket = flushRequests_;
+        batch.clear();
+        batch.swap(pending_);
+        lock.unlock();
+
+        QString why;
+        bool ok = !failed_.load();
+        if (ok) {
+            for (const CanFrame& f : batch)
+                if (!writer_->pcapng.write(f)) break;
+            ok = writer_->pcapng.flush();  // to the kernel: survives a killed process
+            if (!ok) why = writer_->pcapng.errorString();
+            else written_.store(writer_->pcapng.framesWritten());
+            const auto now = Clock::now();
+            // Synced to the disk at least once a second (a power loss keeps all but the last second).
+            if (ok && (stopping || ticket > flushesDone_ || now - lastSync >= std::chrono::milliseconds(kSyncIntervalMs - kWriteIntervalMs))) {
+                ok = syncToDisk(writer_->file.handle(), &why);
+                lastSync = now;
+            }
+        }
+
+        lock.lock();
+        if (!ok && !failed_.load()) {
+            error_ = why.isEmpty() ? QStringLiteral("write failed") : why;
+            failed_.store(true);
+            pending_.clear();
+            spdlog::error("capture journal {}: {}", path_.toStdString(), error_.toStdString());
+        }
+        flushesDone_ = ticket;
+        flushed_.notify_all();
+        if (stopping) break;
+    }
+}
+
+}  // namespace coscope

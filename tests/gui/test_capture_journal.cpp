@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The capture journal in the app (issue 16): a live capture is written to the data folder and
+// closed cleanly on disconnect; a journal left unclosed (the app was killed) is offered at the
+// next start in a banner, and "Reopen capture" loads its frames into the trace; "Dismiss" keeps
+// the file; old journals are removed at start by the age and size settings.
+#include "app/gui/JournalOffer.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/session/SimulationDemo.h"
+#include "app/gui/session/Workspace.h"
+#include "app/gui/trace/LogLoadJob.h"
+#include "core/logio/PcapLog.h"
+#include "core/trace/CaptureJournal.h"
+#include "eds/SimulatorDictionaries.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QPushButton>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "tests/gui/WaitFor.h"
+
+#include <csignal>
+
+#include <sys/resource.h>
+
+using namespace coscope;
+using namespace coscope::gui;
+using coscope::testing::waitFor;
+
+namespace {
+bool setModified(const QString& path, const QDateTime& when) {
+    QFile f(path);
+    return f.open(QIODevice::ReadWrite) && f.setFileTime(when, QFileDevice::FileModificationTime);
+}
+QString capturesFolder() { return qEnvironmentVariable("XDG_DATA_HOME") + QStringLiteral("/CoScope/captures"); }
+
+// A journal as a killed app leaves it: frames up to the last flush, its sidecar naming a
+// process that is gone.
+QString makeUnclosedJournal(const QString& name, int frames) {
+    QDir().mkpath(capturesFolder());
+    const QString path = capturesFolder() + u'/' + name;
+    CaptureJournal j;
+    if (!j.open(path, {QStringLiteral("can0")})) return {};
+    std::vector<CanFrame> v;
+    for (int i = 0; i < frames; ++i) {
+        CanFrame f;
+        f.timestampNs = 1'700'000'000'000'000'000LL + i * 1'000'000LL;
+        f.id = 0x181;
+        f.len = 2;
+        f.data[0] = uint8_t(i >> 8);
+        f.data[1] = uint8_t(i);
+        v.push_back(f);
+    }
+    j.append(v);
+    j.close();
+    QFile s(CaptureJournal::sidecarOf(path));
+    if (!s.open(QIODevice::WriteOnly)) return {};
+    s.write("2147483646\n");
+    return path;
+}
+}  // namespace
+
+class TestCaptureJournalGui : public QObject {
+    Q_OBJECT
+    QTemporaryDir data_;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(data_.isValid());
+        qputenv("XDG_DATA_HOME", data_.path().toUtf8());  // this test's own data folder
+        eds::installSimulatorDictionaries();
+    }
+    void init() {
+        QDir(capturesFolder()).removeRecursively();
+        QSettings().remove(QStringLiteral("captures"));
+    }
+
+    void liveCaptureIsJournaledAndClosed() {
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.journalOffer()->isHidden());
+        QVERIFY(w.connectBus(QStringLiteral("sim://"), true));  // the scan makes traffic
+        const QString path = w.workspace()->journalPath();
+        QVERIFY(path.startsWith(capturesFolder() + QStringLiteral("/capture-")));
+        QVERIFY(QFileInfo::exists(CaptureJournal::sidecarOf(path)));
+        QVERIFY(waitFor([&] { return w.workspace()->store()->size() >= 30; }));
+        w.disconnectBus();
+        const size_t frames = w.workspace()->store()->size();
+        QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(path)));  // closed cleanly: nothing to offer
+        logio::PcapReader r;
+        QVERIFY(r.open(path));
+        const auto read = r.readAll();
+        QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
+        QCOMPARE(read.size(), frames);
+        QCOMPARE(read.back().id, w.workspace()->store()->frame(FrameNo(frames - 1)).id);
+    }
+
+    // The disk fills mid-capture (here: a file size limit for this process): the capture stops
+    // with a message saying so, the trace keeps every frame received, the journal stays
+    // readable up to where the disk was full.
+    void fullDiskStopsTheCapture() {
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        startSimulationDemo(w.workspace());  // steady traffic: heartbeats, PDOs
+        const QString path = w.workspace()->journalPath();
+        QVERIFY(waitFor([&] { return w.workspace()->journal()->framesWritten() >= 10; }));
+        std::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead
+        rlimit old{};
+        QVERIFY(getrlimit(RLIMIT_FSIZE, &old) == 0);
+        rlimit small = old;
+        small.rlim_cur = rlim_t(QFileInfo(path).size() + 1000);
+        QVERIFY(setrlimit(RLIMIT_FSIZE, &small) == 0);
+        const bool stopped = waitFor([&] { return !w.workspace()->isLive(); }, 20000);
+        setrlimit(RLIMIT_FSIZE, &old);
+        QVERIFY(stopped);
+        QVERIFY2(w.lastError().startsWith(QStringLiteral("Capture stopped: cannot write the capture journal")), qPrintable(w.lastError()));
+        const size_t kept = w.workspace()->store()->size();
+        QVERIFY(kept > 20);
+        logio::PcapReader r;
+        QVERIFY(r.open(path));
+        const auto read = r.readAll();
+        QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
+        QVERIFY(read.size() >= 10 && read.size() < kept);
+        for (size_t i = 0; i < read.size(); ++i) QCOMPARE(read[i].timestampNs, w.workspace()->store()->frame(FrameNo(i)).timestampNs);
+        QTest::qWait(300);
+        QCOMPARE(w.workspace()->store()->size(), kept);  // stopped: nothing more arrives
+    }
+
+    void unclosedJournalIsOfferedAndReopened() {
+        const QString path = makeUnclosedJournal(QStringLiteral("capture-20261125-101010-sim.pcapng"), 300);
+        QVERIFY(!path.isEmpty());
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.journalOffer()->isVisible());
+        QCOMPARE(w.journalOffer()->offeredPath(), path);
+        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        QCOMPARE(w.workspace()->store()->size(), size_t(300));
+        QCOMPARE(w.workspace()->store()->frame(299).data[1], uint8_t(299 & 0xFF));
+        QVERIFY(!w.journalOffer()->isVisible());
+        QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(path)));  // offered once
+    }
+
+    void dismissKeepsTheJournalAndOffersTheNext() {
+        const QString older = makeUnclosedJournal(QStringLiteral("capture-a.pcapng"), 5);
+        QVERIFY(setModified(older, QDateTime::currentDateTime().addSecs(-60)));
+        QVERIFY(setModified(CaptureJournal::sidecarOf(older), QDateTime::currentDateTime().addSecs(-60)));
+        const QString newer = makeUnclosedJournal(QStringLiteral("capture-b.pcapng"), 5);
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.journalOffer()->offeredPath(), newer);
+        QTest::mouseClick(w.journalOffer()->dismissButton(), Qt::LeftButton);
+        QCOMPARE(w.journalOffer()->offeredPath(), older);
+        QVERIFY(w.journalOffer()->isVisible());
+        QTest::mouseClick(w.journalOffer()->dismissButton(), Qt::LeftButton);
+        QVERIFY(!w.journalOffer()->isVisible());
+        QVERIFY(QFileInfo::exists(newer) && QFileInfo::exists(older));
+        QCOMPARE(w.workspace()->store()->size(), size_t(0));
+    }
+
+    void oldJournalsAreRemovedAtStart() {
+        QSettings().setValue(QStringLiteral("captures/keepDays"), 3);
+        const QString unclosedOld = makeUnclosedJournal(QStringLiteral("capture-unclosed.pcapng"), 5);
+        const QString old = makeUnclosedJournal(QStringLiteral("capture-old.pcapng"), 5);
+        QFile::remove(CaptureJournal::sidecarOf(old));  // closed, 5 days old
+        const QString recent = makeUnclosedJournal(QStringLiteral("capture-recent.pcapng"), 5);
+        QFile::remove(CaptureJournal::sidecarOf(recent));
+        for (const QString& p : {unclosedOld, old})
+            QVERIFY(setModified(p, QDateTime::currentDateTime().addDays(-5)));
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(!QFileInfo::exists(old));
+        QVERIFY(QFileInfo::exists(recent));
+        QVERIFY(QFileInfo::exists(unclosedOld));  // not offered yet: kept
+        QCOMPARE(w.journalOffer()->offeredPath(), unclosedOld);
+    }
+};
+
+QTEST_MAIN(TestCaptureJournalGui)
+#include "test_capture_journal.moc"
