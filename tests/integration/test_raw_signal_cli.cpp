@@ -132,6 +132,34 @@ private slots:
         QCOMPARE(compared, 2 * 2 + 2 * 2 + 1);
     }
 
+    // A bus: the nodes' PDOs read over SDO as `pdo show` reads them (the virtual drive's TPDO1
+    // at 180h + node-ID carries the statusword first).
+    void dbcFromBus() {
+        const QString out = dir_.filePath(QStringLiteral("bus.dbc"));
+        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), QStringLiteral("sim://?nodes=3:generic-cia402"), out, QStringLiteral("--node"), QStringLiteral("3")});
+        QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
+        const Run show = cli({QStringLiteral("pdo"), QStringLiteral("show"), QStringLiteral("sim://?nodes=3:generic-cia402"), QStringLiteral("3")});
+        QFile f(out);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const dbc::File file = dbc::parse(f.readAll());
+        QVERIFY2(file.errors.isEmpty(), qPrintable(file.errors.join(u'\n')));
+        QVERIFY(file.nodes.contains(QStringLiteral("Node3")));
+        // Every mapped object `pdo show` lists is a signal of its PDO's message.
+        int objects = 0;
+        bool valid = false;
+        for (const QString& line : show.out.split(u'\n')) {
+            const QString t = line.trimmed();
+            if (!line.startsWith(u' ')) valid = !line.contains(QStringLiteral("not valid"));
+            if (!valid || !line.startsWith(QStringLiteral("    ")) || t.size() < 7 || t[4] != u':' || t.startsWith(QStringLiteral("000"))) continue;
+            bool found = false;
+            for (const auto& [id, m] : file.messages)
+                for (const dbc::Signal& s : m.sigs) found |= s.comment.startsWith(t.left(7));
+            QVERIFY2(found, qPrintable(t));
+            ++objects;
+        }
+        QVERIFY2(objects > 0, qPrintable(show.out));
+    }
+
     void dbcErrors() {
         Run r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), dir_.filePath(QStringLiteral("missing.log")), dir_.filePath(QStringLiteral("x.dbc"))});
         QCOMPARE(r.code, 1);
