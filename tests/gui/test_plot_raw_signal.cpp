@@ -9,6 +9,8 @@
 #include "app/gui/session/Workspace.h"
 
 #include <QComboBox>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QFile>
 #include <QLineEdit>
 #include <QMenu>
@@ -52,7 +54,7 @@ QString writeLog(const QString& path) {
     for (int i = 0; i < kFrames; ++i) {
         const auto u = static_cast<uint16_t>(speedRaw(i));
         l << QStringLiteral("(%1) can0 2A0#%2%3%4").arg(101.0 + 0.01 * i, 0, 'f', 6).arg(u >> 8, 2, 16, QLatin1Char('0')).arg(u & 0xFF, 2, 16, QLatin1Char('0')).arg(i, 2, 16, QLatin1Char('0'));
-        l << QStringLiteral("(%1) can0 190#3716%2000000").arg(101.005 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0'));
+        l << QStringLiteral("(%1) can0 190#3716%2").arg(101.005 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0')) + QStringLiteral("000000");
     }
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return {};
