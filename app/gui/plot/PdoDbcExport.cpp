@@ -14,7 +14,9 @@
 namespace coscope::gui {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("PdoDbcExport", text); }
+struct PdoDbcExport {
+    Q_DECLARE_TR_FUNCTIONS(PdoDbcExport)
+};
 }  // namespace
 
 bool writePdoLayoutDbc(Workspace& workspace, const QString& path, QString* summary) {
@@ -33,16 +35,16 @@ bool writePdoLayoutDbc(Workspace& workspace, const QString& path, QString* summa
     const QByteArray dbc = dissect::pdoLayoutDbc(ctx, workspace.rawSignals(), 0, &pdos);
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(dbc) != dbc.size() || !f.flush()) {
-        if (summary) *summary = tr("%1: cannot write the DBC file (%2)").arg(path, f.errorString());
+        if (summary) *summary = PdoDbcExport::tr("%1: cannot write the DBC file (%2)").arg(path, f.errorString());
         return false;
     }
     if (summary)
-        *summary = tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals").arg(path).arg(pdos).arg(workspace.rawSignals().size());
+        *summary = PdoDbcExport::tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals").arg(path).arg(pdos).arg(workspace.rawSignals().size());
     return true;
 }
 
 void exportPdoLayoutDbc(Workspace& workspace, QWidget* parent, const std::function<void(const QString&)>& report) {
-    QString path = QFileDialog::getSaveFileName(parent, tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), tr("DBC file (*.dbc)"));
+    QString path = QFileDialog::getSaveFileName(parent, PdoDbcExport::tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
     if (path.isEmpty()) return;
     if (!path.endsWith(QStringLiteral(".dbc"), Qt::CaseInsensitive)) path += QStringLiteral(".dbc");
     QString summary;
