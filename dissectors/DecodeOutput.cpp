@@ -142,7 +142,8 @@ void appendJson(QByteArray& out, const CanFrame& f, const Dissection& d, const Q
             if (i) out.append(',');
             char obj[16];
             std::snprintf(obj, sizeof obj, "%04X:%02X", s.index, s.sub);
-            out.append("{\"obj\":\"").append(obj).append("\",\"name\":");
+            if (s.raw) out.append("{\"obj\":null,\"name\":");
+            else out.append("{\"obj\":\"").append(obj).append("\",\"name\":");
             appendJsonString(out, s.name);
             out.append(",\"value\":");
             appendValue(out, s.value);

@@ -42,6 +42,7 @@ PdoSignal& Dissection::addSignal() {
     if (static_cast<size_t>(signalCount) == pdoSignals.size()) pdoSignals.emplace_back();
     PdoSignal& s = pdoSignals[static_cast<size_t>(signalCount++)];
     s.unit.resize(0);
+    s.raw = false;
     return s;
 }
 

@@ -73,6 +73,7 @@ struct PdoSignal {
     QString name;
     FlatField value;  // key unused; Int/UInt/Real/Text
     QString unit;     // empty = none
+    bool raw = false; // a raw signal (RawSignal.h): no object, index/sub unused
 };
 
 // One node of the field tree: pre-order list, `depth` 0 for top-level items. Byte/bit

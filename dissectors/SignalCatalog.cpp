@@ -9,6 +9,7 @@ namespace coscope::dissect {
 
 QString SignalKey::text() const {
     QString t = bus ? QStringLiteral("bus%1 ").arg(bus) : QString();
+    if (raw) return t + QStringLiteral("raw%1").arg(raw);
     t += QStringLiteral("n%1 %2:%3").arg(node).arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
     if (bit >= 0) t += QStringLiteral(".%1").arg(bit);
     return t;

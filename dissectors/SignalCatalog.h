@@ -12,19 +12,21 @@
 
 namespace coscope::dissect {
 
-// A plottable signal: one object mapped into a PDO of one node on one bus, or one bit of a
-// CiA 402 controlword/statusword (bit >= 0).
+// A plottable signal: one object mapped into a PDO of one node on one bus, one bit of a
+// CiA 402 controlword/statusword (bit >= 0), or a raw signal the user defined for a COB-ID
+// (RawSignal.h; raw = its number, 1-based, node/index/sub 0).
 struct SignalKey {
     uint8_t bus = 0;
     uint8_t node = 0;
     uint16_t index = 0;
     uint8_t sub = 0;
     int8_t bit = -1;
+    uint16_t raw = 0;
 
     auto operator<=>(const SignalKey&) const = default;
-    SignalKey word() const { return {bus, node, index, sub, -1}; }
+    SignalKey word() const { return {bus, node, index, sub, -1, raw}; }
     uint64_t packed() const {
-        return uint64_t(bus) << 40 | uint64_t(node) << 32 | uint64_t(index) << 16 | uint64_t(sub) << 8 | uint64_t(uint8_t(bit + 1));
+        return uint64_t(raw) << 48 | uint64_t(bus) << 40 | uint64_t(node) << 32 | uint64_t(index) << 16 | uint64_t(sub) << 8 | uint64_t(uint8_t(bit + 1));
     }
     // "n2 6064:00", "n2 6041:00.10" (with "bus1 " in front for buses other than the first).
     QString text() const;
@@ -41,6 +43,7 @@ struct SignalInfo {
     double rawFactor = 1.0;
     SignalScale scale;   // the default engineering scale
     bool digital = false;
+    uint32_t cobId = 0;  // raw signals: the COB-ID they are read from
 };
 
 // The CiA 402 words whose bits are offered as digital traces: controlword 6040h and

@@ -38,10 +38,59 @@ void SignalRecorder::setDictionaries(const std::map<int, QString>& names) {
     namesChanged_ = true;
 }
 
+void SignalRecorder::setRawSignals(const std::vector<RawSignal>& raw) {
+    std::lock_guard lock(mutex_);
+    pendingRaw_ = raw;
+    rawChanged_ = true;
+}
+
+SignalRecorder::Slot& SignalRecorder::rawSlot(int bus, size_t number) {
+    const RawSignal& r = raw_[number];
+    SignalKey key;
+    key.bus = static_cast<uint8_t>(bus);
+    key.raw = static_cast<uint16_t>(number + 1);
+    const auto it = slots_.find(key.packed());
+    if (it != slots_.end()) return *it->second;
+    auto slot = std::make_unique<Slot>();
+    SignalInfo& i = slot->info;
+    i.key = key;
+    i.name = r.name;
+    i.object = QStringLiteral("%1|%2@%3%4").arg(r.startBit).arg(r.length).arg(r.order == RawSignal::Order::Intel ? 1 : 0)
+                   .arg(r.type == RawSignal::Type::Unsigned ? QStringLiteral("u") : r.type == RawSignal::Type::Signed ? QStringLiteral("s") : QStringLiteral("f"));
+    i.pdo = QStringLiteral("COB-ID %1h").arg(QString::number(r.cobId, 16).toUpper());
+    i.rawUnit = r.unit;
+    i.rawFactor = r.factor;
+    i.scale = r.scale();
+    i.cobId = r.cobId;
+    slot->buffer = std::make_shared<SignalBuffer>(capacity_);
+    Slot& ref = *slot;
+    {
+        std::lock_guard lock(mutex_);
+        slots_.emplace(key.packed(), std::move(slot));
+    }
+    revision_.fetch_add(1, std::memory_order_acq_rel);
+    return ref;
+}
+
+void SignalRecorder::recordRaw(const CanFrame& f, FrameNo n) {
+    for (size_t k = 0; k < raw_.size(); ++k) {
+        if (!raw_[k].matches(f)) continue;
+        const std::optional<double> v = raw_[k].rawValue(f.data.data(), f.payloadSize());
+        if (!v) continue;
+        Slot& s = rawSlot(f.bus, k);
+        if (s.pending.empty()) dirty_.push_back(&s);
+        s.pending.push_back({f.timestampNs, *v, n});
+    }
+}
+
 void SignalRecorder::applyDictionaries() {
     std::map<int, QString> names;
     {
         std::lock_guard lock(mutex_);
+        if (rawChanged_) {
+            rawChanged_ = false;
+            raw_ = pendingRaw_;
+        }
         if (!namesChanged_) return;
         namesChanged_ = false;
         names = pendingNames_;
@@ -147,6 +196,7 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
         const CanFrame f = store.frame(n);
         context_.dissect(f, scratch_, Dissection::Level::Stats);
         if (scratch_.hasTransfer) learnParameter(f.bus, scratch_.transfer.node >= 0 ? scratch_.transfer.node : scratch_.node, scratch_.transfer);
+        if (!raw_.empty()) recordRaw(f, n);
         const int pdoIndex = canopen::pdoNumber(scratch_.service);
         if (pdoIndex < 0 || f.isRemote() || scratch_.node < 1 || scratch_.node > 127) continue;
         const bool tpdo = canopen::isTpdo(scratch_.service);

@@ -4,6 +4,7 @@
 #include "core/trace/SignalBuffer.h"
 #include "core/trace/TraceStore.h"
 #include "dissectors/NetworkContext.h"
+#include "dissectors/RawSignal.h"
 #include "dissectors/SignalCatalog.h"
 
 #include <QString>
@@ -40,6 +41,9 @@ public:
     // the user assigned; applied before the next batch. Nodes not listed are matched by the
     // identity read in the trace.
     void setDictionaries(const std::map<int, QString>& names);
+    // Any thread: the user's raw signals (signal n has SignalKey::raw n + 1), recorded from the
+    // next batch on; a signal is listed once a frame of its COB-ID was seen.
+    void setRawSignals(const std::vector<RawSignal>& raw);
 
     // Any thread.
     uint64_t catalogRevision() const { return revision_.load(std::memory_order_acquire); }
@@ -70,6 +74,8 @@ private:
         std::vector<SignalSample> pending;  // ingest thread only
     };
     Slot& slotFor(int bus, int node, const PdoMapEntry& e, const QString& pdo);
+    Slot& rawSlot(int bus, size_t number);
+    void recordRaw(const CanFrame& f, FrameNo n);
     void ensureCatalogue();
     void applyDictionaries();
     void learnParameter(int bus, int node, const SdoTransferRecord& t);
@@ -84,6 +90,8 @@ private:
     std::vector<Slot*> dirty_;
     std::map<int, QString> pendingNames_, appliedNames_;
     bool namesChanged_ = false;
+    std::vector<RawSignal> pendingRaw_, raw_;  // pendingRaw_ guarded by mutex_; raw_ ingest thread
+    bool rawChanged_ = false;
     std::set<uint64_t> pdoKeys_;  // ingest thread: bus << 32 | COB-ID of the PDOs in pdos_
     std::vector<PdoSeen> pdos_;   // guarded by mutex_
     std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value

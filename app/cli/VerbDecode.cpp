@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// coscope-cli decode LOG [--dict NODE=NAME|FILE]... [--format text|jsonl|csv] [--filter EXPR]
-// Decodes every frame of a log with the CANopen dissectors (formats in dissectors/DecodeOutput.h).
+// coscope-cli decode LOG [--dict NODE=NAME|FILE]... [--signal NAME=COBID:START:LEN:TYPE...]...
+//                       [--format text|jsonl|csv] [--filter EXPR]
+// Decodes every frame of a log with the CANopen dissectors (formats in dissectors/DecodeOutput.h);
+// raw signals (dissectors/RawSignal.h) join the PDO signals of their frames.
 #include "app/cli/CliVerb.h"
 #include "core/logio/LogFormats.h"
 #include "core/logio/ReadAhead.h"
 #include "dissectors/DecodeFilter.h"
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
+#include "dissectors/RawSignal.h"
 
 #include <cstdio>
 #include <memory>
@@ -44,6 +47,11 @@ int runDecode(const QStringList& args) {
     parser.addOption({QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."), QStringLiteral("NODE=NAME|FILE")});
     parser.addOption({QStringLiteral("format"), QStringLiteral("Output format: text (default), jsonl, csv."), QStringLiteral("FORMAT"), QStringLiteral("text")});
     parser.addOption({QStringLiteral("filter"), QStringLiteral("Only frames matching: node=N, service=NAME, id=0x181 or 0x180-0x1FF, warnings; terms ANDed (repeatable)."), QStringLiteral("EXPR")});
+    parser.addOption({QStringLiteral("signal"),
+                      QStringLiteral("Raw signal of any frame, for devices without a dictionary (repeatable): TYPE u (unsigned), s (signed) "
+                                     "or f (float 32/64) in Intel byte order, with @0 after it for Motorola (DBC start bit: the MSB), e.g. "
+                                     "speed=0x181:16:16:s:0.1:0:rpm or temp=0x281:7:16:u@0:0.5:-40. COBID over 7FFh is a 29-bit id."),
+                      QStringLiteral("NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]")});
     parser.addOption({QStringLiteral("no-identity"), QStringLiteral("Do not pick dictionaries by the identity read in the log.")});
     int code = 0;
     if (!parseArgs(parser, kVerb, args, &code)) return code;
@@ -56,6 +64,13 @@ int runDecode(const QStringList& args) {
     for (const QString& f : parser.values(QStringLiteral("filter"))) {
         QString error;
         if (!filter.parse(f, &error)) return usageError(kVerb, error);
+    }
+    std::vector<dissect::RawSignal> raw;
+    for (const QString& spec : parser.values(QStringLiteral("signal"))) {
+        QString error;
+        const auto r = dissect::RawSignal::parse(spec, &error);
+        if (!r) return usageError(kVerb, error);
+        raw.push_back(*r);
     }
     dissect::NetworkContext ctx;
     ctx.setIdentityMatching(!parser.isSet(QStringLiteral("no-identity")));
@@ -79,6 +94,7 @@ int runDecode(const QStringList& args) {
         if (busNames.size() != ahead->busNames().size()) busNames = ahead->busNames();
         for (const CanFrame& f : batch) {
             ctx.dissect(f, d, dissect::Dissection::Level::Flat);
+            if (!raw.empty()) dissect::applyRawSignals(raw, f, d);
             if (!filter.isEmpty() && !filter.matches(f, d)) continue;
             const QString& bus = f.bus < busNames.size() ? busNames[f.bus] : bus0;
             if (json) {

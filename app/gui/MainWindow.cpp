@@ -9,6 +9,7 @@
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
+#include "app/gui/plot/PdoDbcExport.h"
 #include "app/gui/plot/PlotDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/status/BusStatusBar.h"
@@ -136,6 +137,7 @@ void MainWindow::buildMenus() {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters());
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
+    file->addAction(tr("Export PDO layout as &DBC…"), this, [this] { exportPdoLayoutDbc(*workspace_, this, [this](const QString& m) { showMessage(m); }); });
     file->addSeparator();
     // Ctrl+Q spelled out: QKeySequence::Quit is empty where the platform theme has no binding for it.
     file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);

@@ -2,6 +2,7 @@
 #include "app/gui/plot/PlotDock.h"
 
 #include "app/gui/plot/PlotCsv.h"
+#include "app/gui/plot/RawSignalDialog.h"
 #include "app/gui/plot/SignalPicker.h"
 #include "app/gui/session/Workspace.h"
 #include "core/od/NumberNotation.h"
@@ -102,6 +103,9 @@ void PlotDock::buildToolbar(QWidget* host) {
     legend_->setChecked(true);
     QAction* clearCursors = bar->addAction(tr("Clear cursors"));
     bar->addSeparator();
+    QAction* raw = bar->addAction(tr("Add raw signal…"), this, &PlotDock::addRawSignal);
+    raw->setToolTip(tr("Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a dictionary"));
+    bar->widgetForAction(raw)->setObjectName(QStringLiteral("addRawSignal"));
     auto* exportButton = new QToolButton(bar);
     exportButton->setText(tr("Export"));
     exportButton->setPopupMode(QToolButton::InstantPopup);
@@ -184,7 +188,7 @@ void PlotDock::updatePlotted() {
         PlotSignal s;
         s.key = key;
         s.name = info->name;
-        s.label = QStringLiteral("n%1 %2").arg(key.node).arg(info->digital ? info->name.section(QStringLiteral(": "), 1) : info->name);
+        s.label = key.raw ? info->name : QStringLiteral("n%1 %2").arg(key.node).arg(info->digital ? info->name.section(QStringLiteral(": "), 1) : info->name);
         if (key.bus) s.label = QStringLiteral("bus%1 ").arg(key.bus) + s.label;
         s.scale = picker_->scale(key);
         s.digital = info->digital;
@@ -226,6 +230,10 @@ void PlotDock::refresh() {
     if (const uint64_t rev = recorder_->catalogRevision(); rev != catalogRevision_) {
         catalogRevision_ = rev;
         picker_->setCatalog(recorder_->catalog());
+        if (pendingPick_ && picker_->info(*pendingPick_)) {
+            picker_->setPicked(*pendingPick_, true);
+            pendingPick_.reset();
+        }
         autoPick();
         updatePlotted();  // default scales may have changed (vendor parameters seen)
     }
@@ -301,6 +309,30 @@ QString PlotDock::emptyReason() const {
         text += tr("PDOs whose mapping is not known (changed before the trace began): %1.").arg(unknownMapping.join(QStringLiteral("; ")));
     }
     return text;
+}
+
+// The COB-ID offered first: the first PDO seen whose objects are not listed (no dictionary).
+uint32_t PlotDock::rawSignalCobIdHint() const {
+    if (!recorder_) return 0;
+    const auto pdos = recorder_->pdosSeen();
+    for (const auto& p : pdos) {
+        const auto& cat = picker_->catalog();
+        const bool listed = std::any_of(cat.begin(), cat.end(), [&](const SignalInfo& s) {
+            return !s.key.raw && s.key.bus == p.bus && s.key.node == p.node && s.pdo == p.pdo;
+        });
+        if (!listed) return p.cobId;
+    }
+    return pdos.empty() ? 0 : pdos.front().cobId;
+}
+
+void PlotDock::addRawSignal() {
+    RawSignalDialog dialog(rawSignalCobIdHint(), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    pendingPick_ = workspace_->addRawSignal(dialog.signal());
+    autoPicked_ = true;  // the user chose what to plot
+    catalogRevision_ = 0;
+    refresh();
+    emit message(tr("Raw signal %1 added: it is listed under COB-ID %2h once its frames are read").arg(dialog.signal().name, QString::number(dialog.signal().cobId, 16).toUpper()));
 }
 
 void PlotDock::updateReadout() { readout_->setText(view_->readoutHtml()); }

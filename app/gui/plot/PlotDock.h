@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
@@ -68,6 +69,10 @@ private:
     void updatePlotted();
     void autoPick();
     void exportDialog(const QString& kind);
+    // "Add raw signal…": a signal of any frame defined by hand, kept by the workspace and
+    // picked once the trace shows it.
+    void addRawSignal();
+    uint32_t rawSignalCobIdHint() const;
     void updateReadout();
     // Why the signal list is empty and what could be plotted (nodes, PDOs seen, the Nodes dock's
     // Assign dictionary); shown by the picker while it has no signal.
@@ -85,6 +90,7 @@ private:
     QAction* autoY_ = nullptr;
     QAction* legend_ = nullptr;
     uint64_t catalogRevision_ = 0;
+    std::optional<dissect::SignalKey> pendingPick_;  // a raw signal just added
     bool autoPicked_ = false;
     bool paused_ = false;
     bool whole_ = false;

@@ -126,14 +126,21 @@ void SignalPicker::rebuildTree() {
     tree_->clear();
     QTreeWidgetItem* nodeItem = nullptr;
     QTreeWidgetItem* wordItem = nullptr;
-    int lastBus = -1, lastNode = -1;
+    std::map<QString, QTreeWidgetItem*> groups;  // by title: per node, and per COB-ID for raw signals
     for (const SignalInfo& s : catalog_) {
-        if (s.key.bus != lastBus || s.key.node != lastNode) {
-            lastBus = s.key.bus;
-            lastNode = s.key.node;
-            nodeItem = new QTreeWidgetItem(tree_);
-            QString title = s.key.bus ? tr("Bus %1, node %2").arg(s.key.bus).arg(s.key.node) : tr("Node %1").arg(s.key.node);
+        QString title;
+        if (s.key.raw) {
+            const QString cob = QString::number(s.cobId, 16).toUpper();
+            title = s.key.bus ? tr("Bus %1, COB-ID %2h (raw signals)").arg(s.key.bus).arg(cob) : tr("COB-ID %1h (raw signals)").arg(cob);
+        } else {
+            title = s.key.bus ? tr("Bus %1, node %2").arg(s.key.bus).arg(s.key.node) : tr("Node %1").arg(s.key.node);
             if (!s.dictionary.isEmpty()) title += QStringLiteral(" (%1)").arg(s.dictionary);
+        }
+        if (const auto g = groups.find(title); g != groups.end()) {
+            nodeItem = g->second;
+        } else {
+            nodeItem = new QTreeWidgetItem(tree_);
+            groups.emplace(title, nodeItem);
             nodeItem->setText(ColName, title);
             nodeItem->setFlags(Qt::ItemIsEnabled);
             nodeItem->setFirstColumnSpanned(true);
@@ -152,7 +159,8 @@ void SignalPicker::rebuildTree() {
             const SignalScale sc = scale(s.key);
             item->setText(ColUnit, sc.unit);
             item->setText(ColFactor, QString::number(sc.factor, 'g', 10));
-            item->setToolTip(ColFactor, tr("value = raw × factor (dictionary: %1 %2)").arg(s.rawFactor).arg(s.rawUnit));
+            item->setToolTip(ColFactor, s.key.raw ? tr("value = raw × factor + %1 (defined: × %2 %3)").arg(sc.offset).arg(s.rawFactor).arg(s.rawUnit)
+                                                  : tr("value = raw × factor (dictionary: %1 %2)").arg(s.rawFactor).arg(s.rawUnit));
             flags |= Qt::ItemIsEditable;
         }
         item->setFlags(flags);

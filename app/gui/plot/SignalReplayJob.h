@@ -13,11 +13,11 @@
 namespace coscope::gui {
 
 // Records a log's plot signals again with the dictionaries the user assigned after it was read
-// (a node's PDO mapping and names come from its dictionary): a fresh SignalRecorder consumes
+// (a node's PDO mapping and names come from its dictionary) and the raw signals defined since: a fresh SignalRecorder consumes
 // the whole trace on a worker thread; the workspace then hands it to the Plot dock.
 class SignalReplayJob : public Job {
 public:
-    SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries);
+    SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries, std::vector<dissect::RawSignal> raw = {});
     ~SignalReplayJob() override;
 
     const std::map<int, QString>& dictionaries() const { return names_; }
@@ -30,6 +30,7 @@ protected:
 private:
     std::shared_ptr<const TraceStore> store_;
     std::map<int, QString> names_;
+    std::vector<dissect::RawSignal> raw_;
     std::shared_ptr<dissect::SignalRecorder> recorder_;
 };
 

@@ -7,12 +7,17 @@
 #include "core/trace/JournalFolder.h"
 
 #include <QFileInfo>
+#include <QSettings>
 
 #include <map>
 
 #include <spdlog/spdlog.h>
 
 namespace coscope::gui {
+
+namespace {
+const QString kRawKey = QStringLiteral("plot/rawSignals");
+}  // namespace
 
 Workspace::Workspace(QObject* parent)
     : QObject(parent),
@@ -22,6 +27,9 @@ Workspace::Workspace(QObject* parent)
       signals_(std::make_shared<dissect::SignalRecorder>()),
       events_(decoder_) {
     traceDecoder_->setStore(store_);
+    for (const QString& spec : QSettings().value(kRawKey).toStringList())
+        if (const auto r = dissect::RawSignal::parse(spec)) raw_.push_back(*r);
+    signals_->setRawSignals(raw_);
 }
 
 Workspace::~Workspace() { reset(); }
@@ -30,6 +38,7 @@ void Workspace::reset() {
     replay_.reset();  // cancels and joins
     recordedNames_.clear();
     logRecorded_ = false;
+    rawAddedWhileLoading_ = false;
     if (loadJob_) {
         loadJob_->cancel();
         loadJob_->wait();
@@ -49,6 +58,7 @@ void Workspace::reset() {
     events_.clear();
     store_ = std::make_shared<TraceStore>();
     signals_ = std::make_shared<dissect::SignalRecorder>();
+    signals_->setRawSignals(raw_);
     traceDecoder_->setStore(store_);
     syncedNodesRevision_ = ~uint64_t{0};
     reportedDropped_ = reportedErrors_ = 0;
@@ -174,11 +184,27 @@ void Workspace::syncDictionaries() {
     traceDecoder_->setDictionaries(names);
     signals_->setDictionaries(names);
     // A log already read: its PDOs are decoded again with the dictionaries assigned since.
-    if (!bus_ && logRecorded_ && names != recordedNames_) {
-        recordedNames_ = names;
-        replay_ = std::make_unique<SignalReplayJob>(store_, names);
-        replay_->start();
-    }
+    if (!bus_ && logRecorded_ && names != recordedNames_) replaySignals(names);
+}
+
+void Workspace::replaySignals(const std::map<int, QString>& names) {
+    recordedNames_ = names;
+    replay_ = std::make_unique<SignalReplayJob>(store_, names, raw_);
+    replay_->start();
+}
+
+dissect::SignalKey Workspace::addRawSignal(const dissect::RawSignal& signal) {
+    raw_.push_back(signal);
+    QStringList specs;
+    for (const dissect::RawSignal& r : raw_) specs << r.spec();
+    QSettings().setValue(kRawKey, specs);
+    signals_->setRawSignals(raw_);
+    // A trace already recorded (a log read, a capture ended): record it again with the signal.
+    if (!bus_ && logRecorded_) replaySignals(recordedNames_);
+    else if (!bus_ && loadJob_) rawAddedWhileLoading_ = true;
+    dissect::SignalKey key;
+    key.raw = static_cast<uint16_t>(raw_.size());
+    return key;
 }
 
 void Workspace::poll() {
@@ -190,6 +216,8 @@ void Workspace::poll() {
         for (const canopen::NodeInfo& n : nodes_.snapshot())
             if (!n.dictionary.isEmpty()) names.emplace(n.node, n.dictionary);
         recordedNames_ = names;
+        if (rawAddedWhileLoading_) replaySignals(names);
+        rawAddedWhileLoading_ = false;
     }
     if (replay_ && replay_->isDone()) {
         if (!replay_->isCancelled()) signals_ = replay_->recorder();

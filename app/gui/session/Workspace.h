@@ -73,6 +73,12 @@ public:
     QString sourceName() const { return sourceName_; }
     QStringList busNames() const;
 
+    // The user's raw signals (RawSignal.h), kept with the workspace (settings "plot/rawSignals",
+    // their command-line specs) and recorded for every source; a log already read is recorded
+    // again. Signal n has SignalKey::raw n + 1.
+    const std::vector<dissect::RawSignal>& rawSignals() const { return raw_; }
+    dissect::SignalKey addRawSignal(const dissect::RawSignal& signal);
+
     // Hands the node table's dictionaries (matched or assigned) to the trace decoder.
     void syncDictionaries();
     // Called by the window's refresh timer: heartbeat timeouts, dropped-frame and error counts,
@@ -93,6 +99,7 @@ private:
     void reset();
     void openJournal();
     void closeJournal();
+    void replaySignals(const std::map<int, QString>& names);
     std::vector<CaptureSession::Consumer> analysisConsumers();
 
     std::shared_ptr<TraceDecoder> traceDecoder_;
@@ -115,6 +122,8 @@ private:
     std::map<int, QString> recordedNames_;  // the dictionaries a finished trace's signals were recorded with
     bool logRecorded_ = false;              // a log read in full or a capture ended: recordedNames_ holds
     std::unique_ptr<SignalReplayJob> replay_;
+    std::vector<dissect::RawSignal> raw_;
+    bool rawAddedWhileLoading_ = false;  // the frames read before it need recording again
 };
 
 }  // namespace coscope::gui
