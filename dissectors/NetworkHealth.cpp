@@ -38,8 +38,12 @@ void IntervalStats::add(int64_t ns) {
     sumMs += ms;
     sumSqMs += ms * ms;
     const int b = bucketOf(ns);
-    if (static_cast<size_t>(b) >= histogram.size()) histogram.resize(static_cast<size_t>(b) + 1, 0);
+    if (static_cast<size_t>(b) >= histogram.size()) {
+        histogram.resize(static_cast<size_t>(b) + 1, 0);
+        bucketSumMs.resize(static_cast<size_t>(b) + 1, 0.0);
+    }
     ++histogram[static_cast<size_t>(b)];
+    bucketSumMs[static_cast<size_t>(b)] += ms;
 }
 
 double IntervalStats::medianMs() const {
@@ -47,12 +51,7 @@ double IntervalStats::medianMs() const {
     uint64_t seen = 0;
     for (size_t b = 0; b < histogram.size(); ++b) {
         seen += histogram[b];
-        if (seen * 2 >= count) {
-            // A steady period puts most intervals in one bucket: then the mean is the better figure.
-            const double mean = sumMs / static_cast<double>(count);
-            if (bucketOf(static_cast<int64_t>(mean * 1e6)) == static_cast<int>(b)) return mean;
-            return bucketMidMs(static_cast<int>(b));
-        }
+        if (seen * 2 >= count) return bucketSumMs[b] / histogram[b];  // the mean of the median bucket
     }
     return 0;
 }
@@ -62,7 +61,7 @@ uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* miss
     if (periodMs <= 0) return 0;
     for (size_t b = 0; b < histogram.size(); ++b) {
         if (!histogram[b]) continue;
-        const double mid = bucketMidMs(static_cast<int>(b));
+        const double mid = bucketSumMs[b] / histogram[b];
         if (mid <= factor * periodMs) continue;
         n += histogram[b];
         missing += histogram[b] * static_cast<uint64_t>(std::max(0.0, std::round(mid / periodMs) - 1.0));

@@ -18,12 +18,14 @@ namespace coscope::dissect {
 struct VendorTable;
 
 // Periods of a repeating frame at little cost per frame: count, min, max, sum and sum of squares
-// (for the jitter), and a histogram in 1/32-octave buckets (for the median and the gaps).
+// (for the jitter), and a histogram in 1/32-octave buckets with their sums (for the median and
+// the gaps).
 struct IntervalStats {
     uint64_t count = 0;
     int64_t minNs = 0, maxNs = 0;
     double sumMs = 0, sumSqMs = 0;
     std::vector<uint32_t> histogram;  // by bucketOf(ns)
+    std::vector<double> bucketSumMs;  // the intervals of each bucket added up
 
     void add(int64_t ns);
     double medianMs() const;  // 0 when empty
