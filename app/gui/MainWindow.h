@@ -19,6 +19,7 @@ namespace coscope::gui {
 class BusStatusBar;
 class ConsoleDock;
 class EventsDock;
+class HealthDock;
 class LogSaveJob;
 class NodesDock;
 class ObjectDictionaryDock;
@@ -57,6 +58,7 @@ public:
     ObjectDictionaryDock* odDock() const { return od_; }
     PlotDock* plotDock() const { return plot_; }
     EventsDock* eventsDock() const { return events_; }
+    HealthDock* healthDock() const { return health_; }
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
@@ -95,6 +97,7 @@ private:
     PlotDock* plot_ = nullptr;
     QPointer<QWidget> wizard_;
     EventsDock* events_ = nullptr;
+    HealthDock* health_ = nullptr;
     ConsoleDock* console_ = nullptr;
     BusStatusBar* status_ = nullptr;
     QMenu* recentMenu_ = nullptr;
