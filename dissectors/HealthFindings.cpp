@@ -26,7 +26,10 @@ QString healthTime(int64_t ns, int64_t startNs) {
 }
 
 namespace {
-QString ms(double v) { return QString::number(v, 'f', v < 10 ? 1 : 0) + QStringLiteral(" ms"); }
+QString ms(double v) {
+    if (v >= 10000) return QString::number(v / 1000, 'f', 1) + QStringLiteral(" s");
+    return QString::number(v, 'f', v < 10 ? 1 : 0) + QStringLiteral(" ms");
+}
 QString hx(uint32_t v, int width) { return QStringLiteral("%1h").arg(v, width, 16, QLatin1Char('0')).toUpper().replace(u'H', u'h'); }
 QString times(uint64_t n) { return n == 1 ? QStringLiteral("once") : QStringLiteral("%1 times").arg(n); }
 // Thresholds for what is worth a line (not CiA figures: what commissioning engineers flag).
