@@ -68,7 +68,8 @@ int runStats(const QStringList& args) {
     else if (format == QLatin1String("html")) report = dissect::healthHtml(hr, QStringLiteral("CoScope network health: %1").arg(QFileInfo(pos[0]).fileName()));
     else report = dissect::healthText(hr, false) + "\nTrace:\n" + stats.report(perSecond);
     std::fwrite(report.constData(), 1, static_cast<size_t>(report.size()), stdout);
-    if (format == QLatin1String("text") && reader->diagnosticCount()) std::fprintf(stdout, "\nLog problems: %llu (first: line/record %lld: %s)\n", (unsigned long long)reader->diagnosticCount(),
+    // Text: a line at the end; json/html keep stdout to the document and say it on stderr.
+    if (reader->diagnosticCount()) std::fprintf(format == QLatin1String("text") ? stdout : stderr, "\nLog problems: %llu (first: line/record %lld: %s)\n", (unsigned long long)reader->diagnosticCount(),
                                                  reader->diagnostics().empty() ? 0LL : static_cast<long long>(reader->diagnostics().front().where),
                                                  reader->diagnostics().empty() ? "" : qPrintable(reader->diagnostics().front().message));
     std::fflush(stdout);
