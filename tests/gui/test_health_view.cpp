@@ -87,7 +87,7 @@ private slots:
                  qPrintable(column(nodes, HealthModel::Beats).join(u',')));
         const int r2 = rowOfNode(nodes, 2);
         QCOMPARE(nodes->data(nodes->index(r2, HealthModel::ErrorControl)).toString(), QStringLiteral("heartbeat"));
-        QVERIFY(!column(findings, HealthModel::Text).join(u'\n').contains(QStringLiteral("node 2 heartbeat")));
+        QVERIFY(!column(findings, HealthModel::Text).join(u'\n').contains(QStringLiteral("node 2 heartbeat stopped")));
 
         // Faults: node 2 falls silent, node 1's drive trips.
         setHeartbeat(2, 0);
