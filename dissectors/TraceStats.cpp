@@ -79,7 +79,7 @@ void TraceStats::add(const CanFrame& f) {
     }
 }
 
-QByteArray TraceStats::report() const {
+QByteArray TraceStats::report(bool perSecond) const {
     QByteArray o;
     char line[256];
     auto put = [&](const char* fmt, auto... args) {
@@ -114,18 +114,20 @@ QByteArray TraceStats::report() const {
                 s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
         }
     if (!anyNode) o.append("  (none)\n");
-    o.append("\nBus load (estimated, ");
-    put("%d bit/s):\n", bitRate_);
     double peak = 0, total = 0;
     for (double b : bitsPerSecond_) {
         peak = std::max(peak, b);
         total += b;
     }
     seconds = static_cast<double>(bitsPerSecond_.size());
-    if (seconds > 0) put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_, 100.0 * peak / bitRate_, seconds);
-    const size_t shown = std::min<size_t>(bitsPerSecond_.size(), 3600);
+    if (perSecond) {
+        o.append("\nBus load (estimated, ");
+        put("%d bit/s):\n", bitRate_);
+    }
+    if (perSecond && seconds > 0) put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_, 100.0 * peak / bitRate_, seconds);
+    const size_t shown = perSecond ? std::min<size_t>(bitsPerSecond_.size(), 3600) : 0;
     for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond_[i] / bitRate_);
-    if (shown < bitsPerSecond_.size()) put("  ... %zu more seconds\n", bitsPerSecond_.size() - shown);
+    if (perSecond && shown < bitsPerSecond_.size()) put("  ... %zu more seconds\n", bitsPerSecond_.size() - shown);
     put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n", (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_),
         (unsigned long long)sdoOk_, (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
     for (const auto& [code, n] : abortCodes_)

@@ -27,8 +27,12 @@ public:
     void add(const CanFrame& f);
     // Names of the buses (CanFrame::bus indexes them), for the per-bus node list.
     void setBusNames(const QStringList& names) { busNames_ = names; }
-    // The report as text (UTF-8).
-    QByteArray report() const;
+    // The report as text (UTF-8); the bus load of every second only with `perSecond`.
+    QByteArray report(bool perSecond = true) const;
+    // The dissection of the last frame add() took (stale after an error frame), for analyses
+    // that ride on the same decoding (NetworkHealth).
+    const Dissection& lastDissection() const { return d_; }
+    const NetworkContext& context() const { return ctx_; }
 
     uint64_t frames() const { return frames_; }
     uint64_t warnings() const { return warnings_; }

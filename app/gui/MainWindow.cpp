@@ -7,6 +7,7 @@
 #include "app/gui/connect/RecentConnections.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
+#include "app/gui/health/HealthDock.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PdoDbcExport.h"
@@ -67,6 +68,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     od_ = new ObjectDictionaryDock(workspace_, this);
     plot_ = new PlotDock(workspace_, this);
     events_ = new EventsDock(workspace_, this);
+    health_ = new HealthDock(workspace_, this);
     console_ = new ConsoleDock(this);
     // No central widget: every part is a dock the user can arrange.
     addDockWidget(Qt::LeftDockWidgetArea, trace_);
@@ -77,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     addDockWidget(Qt::BottomDockWidgetArea, events_);
     addDockWidget(Qt::BottomDockWidgetArea, console_);
     tabifyDockWidget(events_, console_);
+    tabifyDockWidget(events_, health_);
     events_->raise();
     resizeDocks({trace_, nodes_}, {880, 480}, Qt::Horizontal);
     resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
@@ -173,7 +176,8 @@ void MainWindow::buildMenus() {
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
-                           static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(console_)})
+                           static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(health_),
+                           static_cast<QDockWidget*>(console_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
     view->addAction(tr("Reset layout"), this, [this] {
@@ -290,6 +294,7 @@ bool MainWindow::showView(const QString& name) {
     else if (name == u"od") d = od_;
     else if (name == u"plot") d = plot_;
     else if (name == u"events") d = events_;
+    else if (name == u"health") d = health_;
     else if (name == u"console") d = console_;
     if (!d) return false;
     d->show();
@@ -304,6 +309,7 @@ void MainWindow::onSourceChanged() {
     od_->rebind();
     plot_->rebind();
     events_->rebind();
+    health_->rebind();
     const QString name = workspace_->sourceName();
     setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
 }
@@ -368,6 +374,7 @@ void MainWindow::refresh() {
     od_->refresh();
     plot_->refresh();
     events_->refresh();
+    health_->refresh();
     console_->refresh();
 
     Job* shown = trace_->activeJob();

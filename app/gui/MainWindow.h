@@ -19,6 +19,7 @@ namespace coscope::gui {
 class BusStatusBar;
 class ConsoleDock;
 class EventsDock;
+class HealthDock;
 class JournalOfferBar;
 class LogSaveJob;
 class NodesDock;
@@ -58,6 +59,7 @@ public:
     ObjectDictionaryDock* odDock() const { return od_; }
     PlotDock* plotDock() const { return plot_; }
     EventsDock* eventsDock() const { return events_; }
+    HealthDock* healthDock() const { return health_; }
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
@@ -99,6 +101,7 @@ private:
     PlotDock* plot_ = nullptr;
     QPointer<QWidget> wizard_;
     EventsDock* events_ = nullptr;
+    HealthDock* health_ = nullptr;
     ConsoleDock* console_ = nullptr;
     BusStatusBar* status_ = nullptr;
     JournalOfferBar* journalOffer_ = nullptr;

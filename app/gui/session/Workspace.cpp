@@ -56,6 +56,7 @@ void Workspace::reset() {
     bus_.reset();
     nodes_.clear();
     events_.clear();
+    health_.clear();
     store_ = std::make_shared<TraceStore>();
     signals_ = std::make_shared<dissect::SignalRecorder>();
     signals_->setRawSignals(raw_);
@@ -70,6 +71,7 @@ void Workspace::reset() {
 std::vector<CaptureSession::Consumer> Workspace::analysisConsumers() {
     return {[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
             [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
+            [this](const TraceStore& s, FrameNo first, size_t count) { health_.consume(s, first, count); },
             [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/gui/events/EventLog.h"
+#include "app/gui/health/HealthMonitor.h"
 #include "app/gui/plot/SignalReplayJob.h"
 #include "app/gui/trace/FrameDecoder.h"
 #include "app/gui/trace/LogLoadJob.h"
@@ -48,6 +49,7 @@ public:
     const std::shared_ptr<TraceStore>& store() const { return store_; }
     canopen::NodeTable& nodes() { return nodes_; }
     EventLog& events() { return events_; }
+    const HealthMonitor& health() const { return health_; }
     const std::shared_ptr<const FrameDecoder>& decoder() const { return decoder_; }
     TraceDecoder& traceDecoder() { return *traceDecoder_; }
     // The plot's signal buffers, fed on the ingest thread (live or log loading); replaced with
@@ -108,6 +110,7 @@ private:
     std::shared_ptr<dissect::SignalRecorder> signals_;
     canopen::NodeTable nodes_;
     EventLog events_;
+    HealthMonitor health_;
     std::unique_ptr<CanBus> bus_;
     std::unique_ptr<CaptureJournal> journal_;  // outlives session_ (its consumer)
     std::unique_ptr<CaptureSession> session_;

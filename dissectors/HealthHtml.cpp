@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The network health report as one self-contained HTML page: inline CSS, tables and an inline SVG
+// of the bus load over time; nothing fetched, so it can be attached to a ticket.
+#include "dissectors/HealthOutput.h"
+#include "dissectors/NetworkHealth.h"
+
+#include "core/canopen/Nmt.h"
+
+#include <algorithm>
+
+namespace coscope::dissect {
+
+namespace {
+QString esc(const QString& s) { return s.toHtmlEscaped(); }
+QString num(double v, int decimals = 1) { return QString::number(v, 'f', decimals); }
+QString st(int s) { return s < 0 ? QStringLiteral("-") : canopen::nmtStateName(static_cast<uint8_t>(s)); }
+QString hexId(uint32_t v, int w) { return QStringLiteral("%1h").arg(v, w, 16, QLatin1Char('0')).toUpper().replace(u'H', u'h'); }
+
+// The load over time: one bar per second (or per bucket when long), peak line per bucket.
+QString loadSvg(const BusHealth& b) {
+    const int w = 720, h = 180, left = 40, bottom = 24, top = 8;
+    const int plotW = w - left - 8, plotH = h - top - bottom;
+    QString s = QStringLiteral("<svg xmlns='http://www.w3.org/2000/svg' width='%1' height='%2' viewBox='0 0 %1 %2' role='img' aria-label='bus load over time'>").arg(w).arg(h);
+    s += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='#fafafa' stroke='#ccc'/>").arg(left).arg(top).arg(plotW).arg(plotH);
+    for (int pct : {25, 50, 75, 100}) {
+        const double y = top + plotH * (1.0 - pct / 100.0);
+        s += QStringLiteral("<line x1='%1' x2='%2' y1='%3' y2='%3' stroke='#e0e0e0'/><text x='%4' y='%5' font-size='10' text-anchor='end' fill='#666'>%6 %</text>")
+                 .arg(left).arg(left + plotW).arg(num(y)).arg(left - 4).arg(num(y + 3)).arg(pct);
+    }
+    const auto& buckets = b.loadOverTime;
+    if (!buckets.empty()) {
+        const double bw = static_cast<double>(plotW) / static_cast<double>(buckets.size());
+        QString peak;
+        for (size_t i = 0; i < buckets.size(); ++i) {
+            const double avg = std::min(100.0, buckets[i].avgPct), pk = std::min(100.0, buckets[i].peakPct);
+            const double x = left + bw * static_cast<double>(i);
+            const double y = top + plotH * (1.0 - avg / 100.0);
+            s += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='%5'><title>%6 s: %7 % (peak %8 %)</title></rect>")
+                     .arg(num(x + 0.5)).arg(num(y)).arg(num(std::max(1.0, bw - 1.0))).arg(num(top + plotH - y))
+                     .arg(avg > 70 ? QStringLiteral("#d9534f") : avg > 50 ? QStringLiteral("#f0ad4e") : QStringLiteral("#4a90d9"))
+                     .arg(num(buckets[i].startS, 0), num(avg), num(pk));
+            peak += QStringLiteral("%1%2,%3 %4,%3").arg(i ? QStringLiteral(" ") : QString()).arg(num(x)).arg(num(top + plotH * (1.0 - pk / 100.0))).arg(num(x + bw));
+        }
+        s += QStringLiteral("<polyline points='%1' fill='none' stroke='#333' stroke-width='1' stroke-dasharray='3,2'/>").arg(peak);
+        const double endS = buckets.back().startS + buckets.back().seconds;
+        s += QStringLiteral("<text x='%1' y='%2' font-size='10' fill='#666'>0 s</text><text x='%3' y='%2' font-size='10' text-anchor='end' fill='#666'>%4 s</text>")
+                 .arg(left).arg(h - 8).arg(left + plotW).arg(num(endS, 0));
+    }
+    s += QStringLiteral("</svg>");
+    return s;
+}
+
+QString row(std::initializer_list<QString> cells) {
+    QString s = QStringLiteral("<tr>");
+    for (const QString& c : cells) s += QStringLiteral("<td>%1</td>").arg(c);
+    return s + QStringLiteral("</tr>\n");
+}
+QString head(std::initializer_list<const char*> cells) {
+    QString s = QStringLiteral("<tr>");
+    for (const char* c : cells) s += QStringLiteral("<th>%1</th>").arg(QString::fromUtf8(c));
+    return s + QStringLiteral("</tr>\n");
+}
+}  // namespace
+
+QByteArray healthHtml(const HealthReport& r, const QString& title) {
+    QString h;
+    h += QStringLiteral("<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>%1</title>\n<style>\n").arg(esc(title));
+    h += QStringLiteral(
+        "body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1000px}h1{font-size:20px}h2{font-size:16px;margin-top:24px;border-bottom:1px solid #ddd}"
+        "table{border-collapse:collapse;font-size:13px;margin:8px 0}td,th{border:1px solid #ddd;padding:3px 8px;text-align:right}th{background:#f2f2f2}"
+        "td:first-child,th:first-child{text-align:left}.f li{margin:3px 0}.critical{color:#b00020;font-weight:bold}.error{color:#c0392b}.warning{color:#b8860b}.info{color:#555}"
+        ".sev{display:inline-block;width:70px;font-size:11px;text-transform:uppercase}.muted{color:#777;font-size:12px}\n</style></head><body>\n");
+    const BusHealth& b = r.bus;
+    h += QStringLiteral("<h1>%1</h1>\n<p class='muted'>%2 frames over %3 s at %4 bit/s</p>\n").arg(esc(title)).arg(b.frames).arg(num(b.durationS)).arg(b.bitRate);
+    h += QStringLiteral("<h2>Findings</h2>\n<ul class='f'>\n");
+    if (r.findings.empty()) h += QStringLiteral("<li class='info'>No problems found</li>\n");
+    for (const HealthFinding& f : r.findings)
+        h += QStringLiteral("<li class='%1'><span class='sev'>%1</span>%2</li>\n").arg(severityName(f.severity), esc(f.text));
+    h += QStringLiteral("</ul>\n<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
+             .arg(num(b.loadAvgPct), num(b.loadPeakPct), num(b.peakAtS, 0))
+             .arg(b.errorFrames)
+             .arg(b.nonCanopen);
+    h += loadSvg(b);
+    if (b.syncs) h += QStringLiteral("<p>SYNC: %1 frames, period %2 ms (%3), %4 cycles missing</p>\n").arg(b.syncs).arg(num(b.syncPeriodMs, 3), esc(b.syncPeriodSource)).arg(b.syncMissing);
+
+    h += QStringLiteral("<h2>Heartbeat and NMT</h2>\n<table>\n");
+    h += head({"node", "state", "kind", "beats", "period min / avg / max ms", "expected ms", "late", "timeouts", "boot-ups", "resets", "NMT commands"});
+    for (const NodeHealth& n : r.nodes)
+        h += row({QString::number(n.node), esc(st(n.state)), n.errorControl.isEmpty() ? QStringLiteral("-") : n.errorControl, QString::number(n.beats),
+                  n.beats > 1 ? QStringLiteral("%1 / %2 / %3").arg(num(n.periodMinMs), num(n.periodAvgMs), num(n.periodMaxMs)) : QStringLiteral("-"),
+                  n.expectedPeriodMs > 0 ? QStringLiteral("%1 (%2)").arg(num(n.expectedPeriodMs, 0), n.periodSource) : QStringLiteral("-"), QString::number(n.late),
+                  QString::number(n.timeouts), QString::number(n.bootUps), QString::number(n.resets), QString::number(n.nmtCommands)});
+    h += QStringLiteral("</table>\n<h2>SDO</h2>\n<table>\n");
+    h += head({"node", "transfers", "ok", "aborted", "timeouts", "response min / avg / p99 / max ms", "aborts"});
+    for (const NodeHealth& n : r.nodes) {
+        if (!n.sdoRequests && !n.sdoTransfers) continue;
+        QStringList aborts;
+        for (const AbortCount& a : n.sdoAborts) aborts << QStringLiteral("%1 ×%2 %3").arg(hexId(a.code, 8)).arg(a.count).arg(esc(a.text));
+        h += row({QString::number(n.node), QString::number(n.sdoTransfers), QString::number(n.sdoOk), QString::number(n.sdoAborted), QString::number(n.sdoTimeouts),
+                  n.sdoResponses ? QStringLiteral("%1 / %2 / %3 / %4").arg(num(n.sdoRtMinMs, 2), num(n.sdoRtAvgMs, 2), num(n.sdoRtP99Ms, 2), num(n.sdoRtMaxMs, 2)) : QStringLiteral("-"),
+                  aborts.isEmpty() ? QStringLiteral("-") : aborts.join(QStringLiteral("<br>"))});
+    }
+    h += QStringLiteral("</table>\n<h2>EMCY</h2>\n<table>\n");
+    h += head({"node", "time", "code", "register", "text", "vendor"});
+    for (const NodeHealth& n : r.nodes)
+        for (size_t i = 0; i < std::min<size_t>(n.emcyList.size(), 200); ++i) {
+            const EmcyEntry& e = n.emcyList[i];
+            h += row({QString::number(n.node), healthTime(e.timeNs, r.startNs), hexId(e.code, 4), hexId(e.reg, 2), esc(e.text), esc(e.vendor)});
+        }
+    h += QStringLiteral("</table>\n<h2>PDOs</h2>\n<table>\n");
+    h += head({"COB-ID", "PDO", "node", "frames", "rate Hz", "period min / avg / max ms", "jitter ms"});
+    for (const PdoHealth& p : r.pdos)
+        h += row({hexId(p.cobId, 3), p.service + (p.consumerSeen ? QString() : QStringLiteral(" (no consumer)")), QString::number(p.node), QString::number(p.frames), num(p.rateHz),
+                  p.frames > 1 ? QStringLiteral("%1 / %2 / %3").arg(num(p.periodMinMs, 2), num(p.periodAvgMs, 2), num(p.periodMaxMs, 2)) : QStringLiteral("-"), num(p.jitterMs, 3)});
+    h += QStringLiteral("</table>\n<p class='muted'>Generated by CoScope. Load is estimated from frame lengths (nominal bit stuffing).</p>\n</body></html>\n");
+    return h.toUtf8();
+}
+
+}  // namespace coscope::dissect

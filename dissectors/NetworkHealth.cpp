@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// NetworkHealth: frame dispatch, EMCY, bus load and the report's assembly. Heartbeat/NMT in
+// HeartbeatHealth.cpp, SDO in SdoHealth.cpp, PDO/SYNC in PdoHealth.cpp.
+#include "dissectors/NetworkHealth.h"
+
+#include "core/canopen/Emcy.h"
+#include "dissectors/TraceStats.h"
+#include "dissectors/VendorTable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace coscope::dissect {
+
+using canopen::Service;
+
+// ---- IntervalStats: a double's exponent and top 5 mantissa bits make a 1/32-octave bucket.
+int IntervalStats::bucketOf(int64_t ns) {
+    const double x = static_cast<double>(std::max<int64_t>(ns, 1));
+    uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    return static_cast<int>(bits >> 47) - (1023 << 5);  // >= 0 for x >= 1
+}
+
+double IntervalStats::bucketMidMs(int bucket) {
+    const uint64_t bits = (static_cast<uint64_t>(bucket + (1023 << 5)) << 47) | (uint64_t{1} << 46);
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    return x / 1e6;
+}
+
+void IntervalStats::add(int64_t ns) {
+    if (count == 0 || ns < minNs) minNs = ns;
+    if (count == 0 || ns > maxNs) maxNs = ns;
+    ++count;
+    const double ms = static_cast<double>(ns) / 1e6;
+    sumMs += ms;
+    sumSqMs += ms * ms;
+    const int b = bucketOf(ns);
+    if (static_cast<size_t>(b) >= histogram.size()) {
+        histogram.resize(static_cast<size_t>(b) + 1, 0);
+        bucketSumMs.resize(static_cast<size_t>(b) + 1, 0.0);
+    }
+    ++histogram[static_cast<size_t>(b)];
+    bucketSumMs[static_cast<size_t>(b)] += ms;
+}
+
+double IntervalStats::medianMs() const {
+    if (count == 0) return 0;
+    uint64_t seen = 0;
+    for (size_t b = 0; b < histogram.size(); ++b) {
+        seen += histogram[b];
+        if (seen * 2 >= count) return bucketSumMs[b] / histogram[b];  // the mean of the median bucket
+    }
+    return 0;
+}
+
+uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* missingPeriods) const {
+    uint64_t n = 0, missing = 0;
+    if (periodMs <= 0) return 0;
+    for (size_t b = 0; b < histogram.size(); ++b) {
+        if (!histogram[b]) continue;
+        const double mid = bucketSumMs[b] / histogram[b];
+        if (mid <= factor * periodMs) continue;
+        n += histogram[b];
+        missing += histogram[b] * static_cast<uint64_t>(std::max(0.0, std::round(mid / periodMs) - 1.0));
+    }
+    if (missingPeriods) *missingPeriods = missing;
+    return n;
+}
+
+// ---- NetworkHealth
+NetworkHealth::BusTrack& NetworkHealth::busTrack(int bus) {
+    if (static_cast<size_t>(bus) >= buses_.size()) buses_.resize(static_cast<size_t>(bus) + 1);
+    return buses_[static_cast<size_t>(bus)];
+}
+
+NetworkHealth::NodeTrack& NetworkHealth::node(int bus, int id) {
+    auto& slot = busTrack(bus).nodes[static_cast<size_t>(id & 0x7F)];
+    if (!slot) slot = std::make_unique<NodeTrack>();
+    return *slot;
+}
+
+void NetworkHealth::addLoad(const CanFrame& f) {
+    const int64_t delta = f.timestampNs - firstNs_;
+    int64_t sec = sec_;
+    if (!(sec_ >= 0 && delta >= secLo_ && delta < secHi_)) {
+        sec = delta / 1000000000;
+        if (sec < 0 || sec >= 10000000) return;  // out of order or absurd: no load slot
+        sec_ = sec;
+        secLo_ = sec == 0 ? -999999999 : sec * 1000000000;
+        secHi_ = (sec + 1) * 1000000000;
+        if (static_cast<size_t>(sec) >= bitsPerSecond_.size()) bitsPerSecond_.resize(static_cast<size_t>(sec) + 1, 0.0);
+    }
+    bitsPerSecond_[static_cast<size_t>(sec)] += TraceStats::frameBits(f);
+}
+
+void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx) {
+    if (!haveFirst_) {
+        firstNs_ = f.timestampNs;
+        haveFirst_ = true;
+    }
+    ++frames_;
+    lastNs_ = std::max(lastNs_, f.timestampNs);
+    addLoad(f);
+    if (f.isError()) {
+        ++errorFrames_;
+        return;
+    }
+    if (d.service == Service::Unknown || (f.isExtended() && d.pdoNumber == 0)) {
+        ++nonCanopen_;  // a 29-bit PDO the context routes is CANopen
+        return;
+    }
+    BusTrack& b = busTrack(f.bus);
+    switch (d.service) {
+    case Service::Nmt: addNmtCommand(f, b); break;
+    case Service::Sync: addSync(f, b); break;
+    case Service::Emcy:
+        if (d.node >= 1 && d.node < 128) addEmcy(f, d.node, ctx);
+        break;
+    case Service::NmtErrorControl:
+        if (d.node >= 1 && d.node < 128) addErrorControl(f, d.node, b);
+        break;
+    case Service::SdoRequest:
+    case Service::SdoResponse:
+        if (d.node >= 1 && d.node < 128) addSdo(f, d, ctx);
+        break;
+    case Service::Tpdo1: case Service::Tpdo2: case Service::Tpdo3: case Service::Tpdo4:
+    case Service::Rpdo1: case Service::Rpdo2: case Service::Rpdo3: case Service::Rpdo4:
+        addPdo(f, d, b);
+        break;
+    default: break;
+    }
+}
+
+void NetworkHealth::addEmcy(const CanFrame& f, int id, const NetworkContext& ctx) {
+    NodeTrack& t = node(f.bus, id);
+    t.present = true;
+    ++t.frames;
+    if (f.len < 2) return;
+    ++t.emcys;
+    EmcyEntry e;
+    e.timeNs = f.timestampNs;
+    e.code = static_cast<uint16_t>(f.data[0] | (f.data[1] << 8));
+    e.reg = f.len >= 3 ? f.data[2] : 0;
+    e.reset = e.code == 0;  // CiA 301 §7.2.7.1: error reset or no error
+    if (e.reset) ++t.emcyResets;
+    if (t.emcyList.size() >= 1000) return;
+    e.text = e.reset ? QStringLiteral("error reset") : canopen::emcyCodeText(e.code);
+    t.vendor = ctx.node(id).vendor;
+    if (t.vendor && !e.reset) e.vendor = t.vendor->decodeEmcy(f.data.data(), f.len, e.code);
+    t.emcyList.push_back(std::move(e));
+}
+
+HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) const {
+    HealthReport r;
+    r.startNs = firstNs_;
+    r.endNs = lastNs_;
+    const int64_t now = std::max(nowNs, lastNs_);
+    for (size_t bus = 0; bus < buses_.size(); ++bus)
+        for (int id = 1; id < 128; ++id) {
+            const NodeTrack* t = buses_[bus].nodes[static_cast<size_t>(id)].get();
+            if (!t || (!t->present && !t->sdoRequests && !t->nmtCommands)) continue;
+            NodeHealth h;
+            h.bus = static_cast<int>(bus);
+            h.node = id;
+            h.frames = t->frames;
+            fillHeartbeat(h, *t, ctx, static_cast<int>(bus), now);
+            fillSdo(h, *t, now);
+            h.emcys = t->emcys;
+            h.emcyResets = t->emcyResets;
+            h.emcyList = t->emcyList;
+            r.nodes.push_back(std::move(h));
+        }
+    fillPdos(r, ctx);
+    fillBus(r, ctx);
+    r.findings = healthFindings(r);
+    return r;
+}
+
+void NetworkHealth::fillBus(HealthReport& r, const NetworkContext* ctx) const {
+    BusHealth& b = r.bus;
+    b.bitRate = bitRate_;
+    b.frames = frames_;
+    b.errorFrames = errorFrames_;
+    b.nonCanopen = nonCanopen_;
+    b.durationS = static_cast<double>(lastNs_ - firstNs_) / 1e9;
+    const size_t n = bitsPerSecond_.size();
+    double total = 0;
+    b.perSecondPct.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double pct = 100.0 * bitsPerSecond_[i] / bitRate_;
+        b.perSecondPct[i] = pct;
+        total += pct;
+        if (pct > b.loadPeakPct) {
+            b.loadPeakPct = pct;
+            b.peakAtS = static_cast<double>(i);
+        }
+    }
+    // The average over the time the trace covers (a partial last second counts as a part).
+    const double covered = std::max(1.0, std::min(static_cast<double>(n), b.durationS + 1e-9));
+    b.loadAvgPct = n ? total / covered : 0;
+    // At most 60 buckets of whole seconds.
+    const size_t per = std::max<size_t>(1, (n + 59) / 60);
+    for (size_t i = 0; i < n; i += per) {
+        LoadBucket lb;
+        lb.startS = static_cast<double>(i);
+        const size_t end = std::min(n, i + per);
+        lb.seconds = static_cast<double>(end - i);
+        double sum = 0;
+        for (size_t k = i; k < end; ++k) {
+            sum += b.perSecondPct[k];
+            lb.peakPct = std::max(lb.peakPct, b.perSecondPct[k]);
+        }
+        lb.avgPct = sum / lb.seconds;
+        b.loadOverTime.push_back(lb);
+    }
+    b.syncs = syncs_;
+    // SYNC period: 1006h (communication cycle period, µs; CiA 301 §7.5.2.6), else observed.
+    int periodUs = syncPeriodUs_;
+    if (periodUs <= 0 && ctx)
+        for (int bus = 0; bus < ctx->busCount() && periodUs <= 0; ++bus)
+            for (int id = 1; id < 128 && periodUs <= 0; ++id) {
+                const NodeState& s = ctx->node(bus, id);
+                if (!s.dictionary || !s.seen) continue;
+                if (const auto* e = s.dictionary->entry(0x1006, 0)) {
+                    bool ok = false;
+                    const int v = e->defaultValue.toInt(&ok, 0);
+                    if (ok && v > 0) periodUs = v;
+                }
+            }
+    if (periodUs > 0) {
+        b.syncPeriodMs = periodUs / 1000.0;
+        b.syncPeriodSource = QStringLiteral("1006h");
+    } else if (syncPeriods_.count) {
+        b.syncPeriodMs = syncPeriods_.medianMs();
+        b.syncPeriodSource = QStringLiteral("observed");
+    }
+    if (b.syncPeriodMs > 0) syncPeriods_.countOver(b.syncPeriodMs, 1.5, &b.syncMissing);
+}
+
+}  // namespace coscope::dissect

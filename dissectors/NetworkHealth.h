@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/can/CanFrame.h"
+#include "dissectors/Dissection.h"
+#include "dissectors/HealthReport.h"
+#include "dissectors/NetworkContext.h"
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace coscope::dissect {
+
+struct VendorTable;
+
+// Periods of a repeating frame at little cost per frame: count, min, max, sum and sum of squares
+// (for the jitter), and a histogram in 1/32-octave buckets with their sums (for the median and
+// the gaps).
+struct IntervalStats {
+    uint64_t count = 0;
+    int64_t minNs = 0, maxNs = 0;
+    double sumMs = 0, sumSqMs = 0;
+    std::vector<uint32_t> histogram;  // by bucketOf(ns)
+    std::vector<double> bucketSumMs;  // the intervals of each bucket added up
+
+    void add(int64_t ns);
+    double medianMs() const;  // 0 when empty
+    // Gaps over `factor` x `periodMs`: how many, and how many whole periods they leave out.
+    uint64_t countOver(double periodMs, double factor, uint64_t* missingPeriods = nullptr) const;
+    static int bucketOf(int64_t ns);
+    static double bucketMidMs(int bucket);
+};
+
+// The network health analysis (issue 15): fed frame by frame with the frame and its dissection,
+// so it runs live (the app's ingest thread) and offline (`coscope-cli stats`) with the same code.
+// Per node: heartbeat/guarding, NMT states and who commanded them, SDO response times, aborts
+// and timeouts, EMCY; per PDO COB-ID rate and jitter; SYNC cycles; bus load and error frames.
+// add() is O(1) and allocates only when a new node, PDO or second appears (or for the rare
+// EMCY/SDO record); report() does the sorting and the findings. Not thread-safe.
+class NetworkHealth {
+public:
+    explicit NetworkHealth(int bitRate = 500000) : bitRate_(bitRate) {}
+    void setBitRate(int bitRate) { bitRate_ = bitRate; }
+    int bitRate() const { return bitRate_; }
+
+    // Feeds one frame after `ctx` dissected it into `d` (any level). Error frames are counted
+    // without looking at `d`.
+    void add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);
+
+    // The report as of `nowNs` (a silence up to then counts as a heartbeat or SDO timeout;
+    // default: the last frame). `ctx` (may be null) adds the RPDOs configured with no producer.
+    HealthReport report(const NetworkContext* ctx = nullptr, int64_t nowNs = std::numeric_limits<int64_t>::min()) const;
+
+    uint64_t frames() const { return frames_; }
+    int64_t lastNs() const { return lastNs_; }
+
+    // SDO timeout: a request with no answer within this time (CiA 301 leaves it to the client;
+    // 1 s is the usual default).
+    static constexpr int64_t kSdoTimeoutNs = 1'000'000'000;
+    static constexpr size_t kMaxSamples = 1'000'000;  // per node, for heartbeats and SDO times
+
+private:
+    struct NodeTrack {
+        bool present = false;   // the node sent something (heartbeat, TPDO, SDO response, EMCY)
+        uint64_t frames = 0;
+        const VendorTable* vendor = nullptr;
+        // heartbeat / guarding
+        bool guarding = false;
+        uint64_t beats = 0;
+        int64_t lastBeatNs = 0;
+        std::vector<int64_t> beatGapsNs;
+        int state = -1;
+        uint64_t bootUps = 0, resets = 0, nmtCommands = 0;
+        int64_t lastCommandNs = 0;
+        int lastCommand = -1;   // NMT command specifier addressed to the node or all
+        bool lastCommandAll = false;
+        std::vector<NmtChange> nmtChanges;
+        int heartbeatMs = -1;   // 1017h written or read in the trace, -1 = not seen
+        int64_t heartbeatSetNs = 0;
+        // SDO
+        bool sdoPending = false;
+        int64_t sdoRequestNs = 0;
+        uint64_t sdoRequests = 0, sdoResponses = 0, sdoTimeouts = 0;
+        uint64_t sdoOk = 0, sdoAborted = 0, sdoFailed = 0;
+        std::vector<float> sdoRtMs;
+        std::map<uint32_t, AbortCount> aborts;
+        // EMCY
+        uint64_t emcys = 0, emcyResets = 0;
+        std::vector<EmcyEntry> emcyList;
+    };
+    struct PdoTrack {
+        uint32_t cobId = 0;
+        int bus = 0;
+        int node = -1;
+        bool tpdo = true;
+        int number = 0;
+        uint64_t frames = 0;
+        int64_t firstNs = 0, lastNs = 0;
+        IntervalStats periods;
+    };
+    struct BusTrack {
+        std::array<std::unique_ptr<NodeTrack>, 128> nodes;
+        std::vector<int32_t> pdoIndex = std::vector<int32_t>(2048, -1);
+        std::map<uint32_t, int32_t> extPdoIndex;
+        int64_t lastSyncNs = 0;
+        bool syncSeen = false;
+        int syncPeriodUs = -1;  // 1006h written in the trace or from a dictionary
+    };
+
+    NodeTrack& node(int bus, int id);
+    BusTrack& busTrack(int bus);
+    void addLoad(const CanFrame& f);
+    void addErrorControl(const CanFrame& f, int node, BusTrack& b);   // HeartbeatHealth.cpp
+    void addNmtCommand(const CanFrame& f, BusTrack& b);                // HeartbeatHealth.cpp
+    void addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);  // SdoHealth.cpp
+    void addEmcy(const CanFrame& f, int node, const NetworkContext& ctx);
+    void addPdo(const CanFrame& f, const Dissection& d, BusTrack& b);  // PdoHealth.cpp
+    void addSync(const CanFrame& f, BusTrack& b);                      // PdoHealth.cpp
+    void fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus, int64_t nowNs) const;
+    void fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) const;
+    void fillPdos(HealthReport& r, const NetworkContext* ctx) const;
+    void fillBus(HealthReport& r, const NetworkContext* ctx) const;
+
+    int bitRate_;
+    uint64_t frames_ = 0, errorFrames_ = 0, nonCanopen_ = 0;
+    int64_t firstNs_ = 0, lastNs_ = 0;
+    bool haveFirst_ = false;
+    std::vector<BusTrack> buses_;
+    std::vector<PdoTrack> pdos_;
+    IntervalStats syncPeriods_;
+    uint64_t syncs_ = 0;
+    int syncPeriodUs_ = -1;
+    std::vector<double> bitsPerSecond_;
+    int64_t sec_ = -1, secLo_ = 0, secHi_ = 0;
+};
+
+// Findings in plain words, worst first (HealthFindings.cpp).
+std::vector<HealthFinding> healthFindings(const HealthReport& r);
+// "12:03:11" for wall-clock timestamps, else "12.345 s" from the start of the trace.
+QString healthTime(int64_t ns, int64_t startNs);
+
+}  // namespace coscope::dissect

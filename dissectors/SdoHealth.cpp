@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// NetworkHealth: SDO (CiA 301 §7.2.4) response times per request/response pair, transfers,
+// aborts by code and requests left without an answer.
+#include "dissectors/NetworkHealth.h"
+
+#include "core/canopen/SdoAbort.h"
+#include "dissectors/VendorTable.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coscope::dissect {
+
+void NetworkHealth::addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx) {
+    NodeTrack& t = node(f.bus, d.node);
+    const int64_t now = f.timestampNs;
+    if (d.service == canopen::Service::SdoRequest) {
+        ++t.sdoRequests;
+        // A new request while the last one waits longer than the timeout: that one got no answer.
+        if (t.sdoPending && now - t.sdoRequestNs > kSdoTimeoutNs) ++t.sdoTimeouts;
+        // Block download segments come back to back: the answer is timed from the last one.
+        // A client abort (ccs 4, CiA 301 §7.2.4.3.17) expects no answer.
+        const bool abort = f.len >= 1 && (f.data[0] >> 5) == 4;
+        t.sdoPending = !abort;
+        t.sdoRequestNs = now;
+    } else {
+        t.present = true;
+        ++t.frames;
+        if (t.sdoPending) {
+            ++t.sdoResponses;
+            if (t.sdoRtMs.size() < kMaxSamples) t.sdoRtMs.push_back(static_cast<float>(static_cast<double>(now - t.sdoRequestNs) / 1e6));
+            t.sdoPending = false;
+        }
+    }
+    if (!d.hasTransfer) return;
+    const SdoTransferRecord& x = d.transfer;
+    if (x.status == QLatin1String("ok")) {
+        ++t.sdoOk;
+        // The producer heartbeat time, written or read (CiA 301 §7.5.2.25).
+        if (x.index == 0x1017 && x.sub == 0 && x.data.size() >= 2) {
+            t.heartbeatMs = static_cast<uint8_t>(x.data[0]) | (static_cast<uint8_t>(x.data[1]) << 8);
+            t.heartbeatSetNs = now;
+        }
+        if (x.index == 0x1006 && x.sub == 0 && x.data.size() >= 4) {
+            const uint32_t us = uint32_t(uint8_t(x.data[0])) | uint32_t(uint8_t(x.data[1])) << 8 | uint32_t(uint8_t(x.data[2])) << 16 | uint32_t(uint8_t(x.data[3])) << 24;
+            if (us > 0 && us < 100000000) syncPeriodUs_ = static_cast<int>(us);
+        }
+    } else if (x.status == QLatin1String("aborted")) {
+        ++t.sdoAborted;
+        AbortCount& a = t.aborts[x.abortCode];
+        if (a.count++ == 0) {
+            a.code = x.abortCode;
+            const VendorTable* vt = ctx.node(d.node).vendor;
+            a.text = vt && vt->aborts.contains(x.abortCode) ? vt->aborts.value(x.abortCode) : canopen::sdoAbortText(x.abortCode);
+        }
+    } else {
+        ++t.sdoFailed;
+    }
+}
+
+void NetworkHealth::fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) const {
+    h.sdoOk = t.sdoOk;
+    h.sdoAborted = t.sdoAborted;
+    h.sdoFailed = t.sdoFailed;
+    h.sdoTransfers = t.sdoOk + t.sdoAborted + t.sdoFailed;
+    h.sdoRequests = t.sdoRequests;
+    h.sdoResponses = t.sdoResponses;
+    h.sdoTimeouts = t.sdoTimeouts + ((t.sdoPending && nowNs - t.sdoRequestNs > kSdoTimeoutNs) ? 1 : 0);
+    for (const auto& [code, a] : t.aborts) h.sdoAborts.push_back(a);
+    std::sort(h.sdoAborts.begin(), h.sdoAborts.end(), [](const AbortCount& a, const AbortCount& b) { return a.count > b.count; });
+    if (t.sdoRtMs.empty()) return;
+    std::vector<float> rt = t.sdoRtMs;
+    std::sort(rt.begin(), rt.end());
+    double sum = 0;
+    for (float v : rt) sum += v;
+    h.sdoRtMinMs = rt.front();
+    h.sdoRtMaxMs = rt.back();
+    h.sdoRtAvgMs = sum / static_cast<double>(rt.size());
+    // Nearest-rank 99th percentile.
+    const size_t rank = static_cast<size_t>(std::ceil(0.99 * static_cast<double>(rt.size())));
+    h.sdoRtP99Ms = rt[std::clamp<size_t>(rank, 1, rt.size()) - 1];
+}
+
+}  // namespace coscope::dissect

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// coscope-cli stats as the network health report (issue 15) on a crafted candump log: node 15
+// reboots twice, node 1 raises EMCY 2310h, node 42 answers SDO slowly and leaves one request
+// unanswered, node 2's heartbeat stops; --format text, json and html.
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "tests/CliRun.h"
+
+class StatsHealthCli : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString log_;
+
+    static QString line(double t, const char* id, const char* data) { return QStringLiteral("(%1) can0 %2#%3\n").arg(t, 0, 'f', 6).arg(QLatin1String(id), QLatin1String(data)); }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        log_ = dir_.filePath(QStringLiteral("machine.log"));
+        QString s;
+        s += line(0.0, "70F", "00") + line(0.0, "701", "00") + line(0.0, "702", "00") + line(0.0, "72A", "00");
+        s += line(0.01, "000", "0100");
+        // Heartbeats every 100 ms for 10 s; node 2 stops after 3 s; node 15 reboots at 4 s and 7 s.
+        for (int i = 1; i <= 100; ++i) {
+            const double t = i * 0.1;
+            s += line(t, "701", "05");
+            if (t <= 3.0) s += line(t, "702", "05");
+            s += line(t, "72A", "05");
+            s += line(t, "70F", (i == 40 || i == 70) ? "00" : "05");
+            s += line(t + 0.001, "080", "");
+            s += line(t + 0.002, "181", "0102030405060708");
+        }
+        // EMCY 2310h (continuous over-current) from node 1 at 5 s, reset at 6 s.
+        s += line(5.0, "081", "1023020000000000") + line(6.0, "081", "0000000000000000");
+        // SDO to node 42: answered in 2 ms, 5 ms and 180 ms, then one request left unanswered.
+        s += line(1.0, "62A", "4000100000000000") + line(1.002, "5AA", "4300100092010200");
+        s += line(2.0, "62A", "4000100000000000") + line(2.005, "5AA", "4300100092010200");
+        s += line(3.0, "62A", "4000100000000000") + line(3.180, "5AA", "4300100092010200");
+        s += line(8.0, "62A", "4018100100000000");
+        QStringList lines = s.split(u'\n', Qt::SkipEmptyParts);
+        std::stable_sort(lines.begin(), lines.end(), [](const QString& a, const QString& b) { return a.mid(1, 12).toDouble() < b.mid(1, 12).toDouble(); });
+        QFile f(log_);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(lines.join(u'\n').toUtf8() + '\n');
+    }
+
+    void text() {
+        const Run r = cli({QStringLiteral("stats"), log_});
+        QCOMPARE(r.code, 0);
+        const QString& o = r.out;
+        QVERIFY2(o.startsWith(QStringLiteral("Findings:\n  [critical]")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("node 15 rebooted 2 times")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("node 2 heartbeat stopped")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("EMCY 2310h")) && o.contains(QStringLiteral("from node 1 at 5.000 s")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("node 42 answered SDO in 180 ms p99")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("node 42 left 1 SDO request unanswered")), qPrintable(o));
+        // Findings come before the tables, the worst first.
+        QVERIFY(o.indexOf(QStringLiteral("rebooted")) < o.indexOf(QStringLiteral("answered SDO")));
+        QVERIFY(o.indexOf(QStringLiteral("answered SDO")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
+        QVERIFY(o.contains(QStringLiteral("load over time")));
+        QVERIFY(!o.contains(QStringLiteral("second      1")));
+    }
+
+    void json() {
+        const Run r = cli({QStringLiteral("stats"), log_, QStringLiteral("--format"), QStringLiteral("json")});
+        QCOMPARE(r.code, 0);
+        QJsonParseError e;
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8(), &e).object();
+        QCOMPARE(e.error, QJsonParseError::NoError);
+        for (const char* k : {"findings", "nodes", "pdos", "bus"}) QVERIFY2(o.contains(QLatin1String(k)), k);
+        QMap<int, QJsonObject> nodes;
+        for (const auto& v : o[QStringLiteral("nodes")].toArray()) nodes[v.toObject()[QStringLiteral("node")].toInt()] = v.toObject();
+        const QJsonObject n1 = nodes[1], n2 = nodes[2], n15 = nodes[15], n42 = nodes[42];
+        QCOMPARE(n15[QStringLiteral("nmt")].toObject()[QStringLiteral("resets")].toInt(), 2);
+        QCOMPARE(n15[QStringLiteral("nmt")].toObject()[QStringLiteral("boot_ups")].toInt(), 3);
+        QCOMPARE(n1[QStringLiteral("heartbeat")].toObject()[QStringLiteral("count")].toInt(), 101);
+        QCOMPARE(n1[QStringLiteral("heartbeat")].toObject()[QStringLiteral("period_ms")].toDouble(), 100.0);
+        QCOMPARE(n1[QStringLiteral("emcy")].toObject()[QStringLiteral("count")].toInt(), 2);
+        QCOMPARE(n1[QStringLiteral("emcy")].toObject()[QStringLiteral("resets")].toInt(), 1);
+        QCOMPARE(n2[QStringLiteral("heartbeat")].toObject()[QStringLiteral("silent_now")].toBool(), true);
+        const QJsonObject sdo = n42[QStringLiteral("sdo")].toObject();
+        QCOMPARE(sdo[QStringLiteral("response_max_ms")].toDouble(), 180.0);
+        QCOMPARE(sdo[QStringLiteral("response_min_ms")].toDouble(), 2.0);
+        QCOMPARE(sdo[QStringLiteral("timeouts")].toInt(), 1);
+        const QJsonArray pdos = o[QStringLiteral("pdos")].toArray();
+        QCOMPARE(pdos.size(), 1);
+        QCOMPARE(pdos[0].toObject()[QStringLiteral("cob_id")].toInt(), 0x181);
+        QVERIFY(qAbs(pdos[0].toObject()[QStringLiteral("rate_hz")].toDouble() - 10.0) < 0.01);
+        const QJsonObject bus = o[QStringLiteral("bus")].toObject();
+        QCOMPARE(bus[QStringLiteral("sync")].toObject()[QStringLiteral("count")].toInt(), 100);
+        QVERIFY(bus[QStringLiteral("load_over_time")].toArray().size() <= 60);
+        QVERIFY(bus[QStringLiteral("load_peak_pct")].toDouble() > 0);
+        QCOMPARE(o[QStringLiteral("findings")].toArray().at(0).toObject()[QStringLiteral("severity")].toString(), QStringLiteral("critical"));
+    }
+
+    void html() {
+        const Run r = cli({QStringLiteral("stats"), log_, QStringLiteral("--format"), QStringLiteral("html")});
+        QCOMPARE(r.code, 0);
+        const QString& h = r.out;
+        QVERIFY(h.startsWith(QStringLiteral("<!DOCTYPE html>")));
+        QVERIFY(h.contains(QStringLiteral("<svg")));
+        QVERIFY(h.contains(QStringLiteral("node 15 rebooted 2 times")));
+        QVERIFY(h.trimmed().endsWith(QStringLiteral("</html>")));
+        // Self-contained: nothing to fetch.
+        QVERIFY(!h.contains(QStringLiteral("src=")));
+        QVERIFY(!h.contains(QStringLiteral("href=")));
+        QVERIFY(!h.contains(QStringLiteral("<script")));
+    }
+
+    void usage() {
+        QCOMPARE(cli({QStringLiteral("stats"), log_, QStringLiteral("--format"), QStringLiteral("xml")}).code, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(StatsHealthCli)
+#include "test_stats_health_cli.moc"

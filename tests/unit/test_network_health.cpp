@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// NetworkHealth on frames built from CiA 301: heartbeat 700h+node (§7.2.8.3.2), boot-up 00h,
+// NMT 000h (§7.2.8.3.1), SDO 600h/580h (§7.2.4), EMCY 80h+node (§7.2.7), SYNC 080h, PDOs; each
+// with figures worked out by hand.
+#include "core/can/CanFrame.h"
+#include "dissectors/HealthOutput.h"
+#include "dissectors/NetworkContext.h"
+#include "dissectors/NetworkHealth.h"
+#include "dissectors/TraceStats.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QtTest>
+
+using namespace coscope;
+using namespace coscope::dissect;
+
+namespace {
+constexpr int64_t kMs = 1'000'000;
+
+struct Feed {
+    NetworkContext ctx;
+    Dissection d;
+    NetworkHealth h;
+    Feed() { ctx.setGenericNames(false); }
+    void at(double ms, uint32_t id, std::initializer_list<uint8_t> bytes, uint8_t flags = 0) {
+        CanFrame f = CanFrame::classic(id, bytes);
+        f.flags |= flags;
+        f.timestampNs = static_cast<int64_t>(ms * kMs);
+        if (!f.isError()) ctx.dissect(f, d, Dissection::Level::Stats);
+        h.add(f, d, ctx);
+    }
+    HealthReport report(double nowMs = -1) const {
+        return nowMs < 0 ? h.report(&ctx) : h.report(&ctx, static_cast<int64_t>(nowMs * kMs));
+    }
+};
+
+const NodeHealth* nodeOf(const HealthReport& r, int id) {
+    for (const NodeHealth& n : r.nodes)
+        if (n.node == id) return &n;
+    return nullptr;
+}
+bool hasFinding(const HealthReport& r, const QString& text) {
+    for (const HealthFinding& f : r.findings)
+        if (f.text.contains(text)) return true;
+    return false;
+}
+QString findings(const HealthReport& r) {
+    QStringList l;
+    for (const HealthFinding& f : r.findings) l << f.text;
+    return l.join(QStringLiteral(" | "));
+}
+}  // namespace
+
+class NetworkHealthTest : public QObject {
+    Q_OBJECT
+private slots:
+    void heartbeatPeriodLateAndTimeouts() {
+        Feed f;
+        // Node 5 at 100 ms (observed): gaps 100 x5, 170 (late), 100, 400 (lost), 100.
+        for (double t : {0.0, 100.0, 200.0, 300.0, 400.0, 500.0, 670.0, 770.0, 1170.0, 1270.0}) f.at(t, 0x705, {0x05});
+        HealthReport r = f.report();
+        const NodeHealth* n = nodeOf(r, 5);
+        QVERIFY(n);
+        QCOMPARE(n->errorControl, QStringLiteral("heartbeat"));
+        QCOMPARE(n->beats, 10u);
+        QCOMPARE(n->periodMinMs, 100.0);
+        QCOMPARE(n->periodMaxMs, 400.0);
+        QVERIFY(qAbs(n->periodAvgMs - 1270.0 / 9) < 1e-6);
+        QCOMPARE(n->expectedPeriodMs, 100.0);
+        QCOMPARE(n->periodSource, QStringLiteral("observed"));
+        QCOMPARE(n->late, 1u);
+        QCOMPARE(n->timeouts, 1u);
+        QVERIFY(!n->silentNow);
+        QCOMPARE(n->state, 5);
+        QVERIFY2(hasFinding(r, QStringLiteral("node 5 heartbeat lost once")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("node 5 heartbeat late once")), qPrintable(findings(r)));
+        // Half a second of silence later the heartbeat has stopped: a timeout that lasts.
+        r = f.report(1770);
+        n = nodeOf(r, 5);
+        QVERIFY(n->silentNow);
+        QCOMPARE(n->timeouts, 2u);
+        QCOMPARE(n->silentForMs, 500.0);
+        QCOMPARE(r.findings.front().kind, QStringLiteral("heartbeat_stopped"));
+    }
+
+    void heartbeatPeriodFrom1017h() {
+        Feed f;
+        // Expedited download of 1017h:00 = 200 ms (2Bh: 2 bytes), then the server's answer.
+        f.at(0, 0x603, {0x2B, 0x17, 0x10, 0x00, 0xC8, 0x00, 0x00, 0x00});
+        f.at(1, 0x583, {0x60, 0x17, 0x10, 0x00, 0x00, 0x00, 0x00, 0x00});
+        // Beats at 200 ms, one after 350 ms (> 1.5 x 200: late), none over 600 ms.
+        for (double t : {10.0, 210.0, 410.0, 760.0, 960.0}) f.at(t, 0x703, {0x7F});
+        const HealthReport r = f.report();
+        const NodeHealth* n = nodeOf(r, 3);
+        QVERIFY(n);
+        QCOMPARE(n->expectedPeriodMs, 200.0);
+        QCOMPARE(n->periodSource, QStringLiteral("1017h"));
+        QCOMPARE(n->late, 1u);
+        QCOMPARE(n->timeouts, 0u);
+        QCOMPARE(n->sdoOk, 1u);
+    }
+
+    void bootUpsResetsAndNmtCauses() {
+        Feed f;
+        f.at(0, 0x70F, {0x00});           // power-on boot-up: not a reset
+        f.at(10, 0x000, {0x01, 0x00});    // NMT start, all nodes
+        f.at(20, 0x70F, {0x05});
+        f.at(1000, 0x70F, {0x00});        // boot-up with no command: the node reset itself
+        f.at(1100, 0x70F, {0x7F});
+        f.at(2000, 0x000, {0x81, 0x0F});  // NMT reset node 15
+        f.at(2100, 0x70F, {0x00});        // expected boot-up
+        f.at(3000, 0x70F, {0x00});        // another reset
+        const HealthReport r = f.report();
+        const NodeHealth* n = nodeOf(r, 15);
+        QVERIFY(n);
+        QCOMPARE(n->bootUps, 4u);
+        QCOMPARE(n->resets, 2u);
+        QCOMPARE(n->nmtCommands, 2u);
+        QVERIFY(n->nmtChanges.size() >= 5);
+        QCOMPARE(n->nmtChanges[0].cause, QStringLiteral("power-on"));
+        QCOMPARE(n->nmtChanges[1].to, 5);
+        QVERIFY2(n->nmtChanges[1].cause.contains(QStringLiteral("Start")) && n->nmtChanges[1].cause.contains(QStringLiteral("all nodes")), qPrintable(n->nmtChanges[1].cause));
+        QVERIFY(n->nmtChanges[2].cause.contains(QStringLiteral("unexpected")));
+        QVERIFY2(n->nmtChanges[4].cause.contains(QStringLiteral("node 15")), qPrintable(n->nmtChanges[4].cause));
+        QVERIFY2(hasFinding(r, QStringLiteral("node 15 rebooted 2 times")), qPrintable(findings(r)));
+        QCOMPARE(r.findings.front().kind, QStringLiteral("reset"));
+    }
+
+    void sdoResponseTimesAbortsAndTimeouts() {
+        Feed f;
+        double t = 0;
+        // Upload 1000h:00 answered after 2, 5 and 180 ms (expedited, 4 bytes: 43h).
+        for (double rt : {2.0, 5.0, 180.0}) {
+            f.at(t, 0x62A, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0});
+            f.at(t + rt, 0x5AA, {0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00});
+            t += 1000;
+        }
+        // Upload 2000h:00 aborted after 3 ms with 06020000h (object does not exist).
+        f.at(t, 0x62A, {0x40, 0x00, 0x20, 0x00, 0, 0, 0, 0});
+        f.at(t + 3, 0x5AA, {0x80, 0x00, 0x20, 0x00, 0x00, 0x00, 0x02, 0x06});
+        t += 1000;
+        f.at(t, 0x62A, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0});  // never answered
+        const HealthReport r = f.report(t + 2000);
+        const NodeHealth* n = nodeOf(r, 42);
+        QVERIFY(n);
+        QCOMPARE(n->sdoRequests, 5u);
+        QCOMPARE(n->sdoResponses, 4u);
+        QCOMPARE(n->sdoTransfers, 4u);
+        QCOMPARE(n->sdoOk, 3u);
+        QCOMPARE(n->sdoAborted, 1u);
+        QCOMPARE(n->sdoTimeouts, 1u);
+        QCOMPARE(n->sdoRtMinMs, 2.0);
+        QCOMPARE(n->sdoRtMaxMs, 180.0);
+        QCOMPARE(n->sdoRtP99Ms, 180.0);
+        QVERIFY(qAbs(n->sdoRtAvgMs - 47.5) < 1e-3);
+        QCOMPARE(n->sdoAborts.size(), size_t(1));
+        QCOMPARE(n->sdoAborts[0].code, 0x06020000u);
+        QVERIFY2(n->sdoAborts[0].text.contains(QStringLiteral("not exist")), qPrintable(n->sdoAborts[0].text));
+        QVERIFY2(hasFinding(r, QStringLiteral("node 42 answered SDO in 180 ms p99")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("node 42 left 1 SDO request unanswered")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("06020000h")), qPrintable(findings(r)));
+    }
+
+    void emcyListAndResets() {
+        Feed f;
+        f.at(1500, 0x081, {0x10, 0x23, 0x02, 0, 0, 0, 0, 0});  // 2310h, current error (bit 1)
+        f.at(2500, 0x081, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0});  // error reset
+        const HealthReport r = f.report();
+        const NodeHealth* n = nodeOf(r, 1);
+        QVERIFY(n);
+        QCOMPARE(n->emcys, 2u);
+        QCOMPARE(n->emcyResets, 1u);
+        QCOMPARE(n->emcyList.size(), size_t(2));
+        QCOMPARE(n->emcyList[0].code, 0x2310);
+        QCOMPARE(n->emcyList[0].reg, 0x02);
+        QVERIFY(!n->emcyList[0].text.isEmpty());
+        QVERIFY(n->emcyList[1].reset);
+        // Relative timestamps: the time is given from the start of the trace.
+        QVERIFY2(hasFinding(r, QStringLiteral("EMCY 2310h")) && hasFinding(r, QStringLiteral("from node 1 at 0.000 s")), qPrintable(findings(r)));
+    }
+
+    void pdoRateJitterSyncAndConsumers() {
+        Feed f;
+        for (int i = 0; i < 100; ++i) {
+            if (i != 50 && i != 51) f.at(i * 10.0, 0x080, {});  // SYNC every 10 ms, 2 missing
+            f.at(i * 10.0 + 1, 0x181, {1, 2, 3, 4});            // TPDO1 of node 1
+            f.at(i * 10.0 + 2, 0x205, {0, 0});                  // RPDO1 to node 5, which never speaks
+        }
+        const HealthReport r = f.report();
+        QCOMPARE(r.bus.syncs, 98u);
+        QVERIFY(qAbs(r.bus.syncPeriodMs - 10.0) < 0.01);
+        QCOMPARE(r.bus.syncMissing, 2u);
+        QCOMPARE(r.pdos.size(), size_t(2));
+        const PdoHealth& t = r.pdos[0];
+        QCOMPARE(t.cobId, 0x181u);
+        QCOMPARE(t.service, QStringLiteral("TPDO1"));
+        QCOMPARE(t.frames, 100u);
+        QVERIFY(qAbs(t.rateHz - 100.0) < 1e-6);
+        QVERIFY(qAbs(t.periodAvgMs - 10.0) < 1e-6);
+        QVERIFY(t.jitterMs < 1e-3);
+        QVERIFY(t.consumerSeen);
+        QCOMPARE(r.pdos[1].service, QStringLiteral("RPDO1"));
+        QVERIFY(!r.pdos[1].consumerSeen);
+        QVERIFY2(hasFinding(r, QStringLiteral("2 SYNC cycles missing")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("sent to node 5, which never answers")), qPrintable(findings(r)));
+    }
+
+    void busLoadErrorsAndOtherFrames() {
+        Feed f;
+        // 100 classic 8-byte frames in the first second: (34 + 64) x 1.1 + 13 bits each.
+        for (int i = 0; i < 100; ++i) f.at(i * 10.0, 0x181, {1, 2, 3, 4, 5, 6, 7, 8});
+        f.at(1500, 0x181, {1, 2, 3, 4, 5, 6, 7, 8});
+        f.at(1600, 0x20000004, {0}, CanFrame::Error);
+        f.at(1700, 0x18FF0001, {1, 2}, CanFrame::Extended);  // J1939-style: not CANopen
+        f.at(1999, 0x181, {1, 2, 3, 4, 5, 6, 7, 8});
+        const HealthReport r = f.report();
+        const double bits = (34.0 + 64.0) * 1.1 + 13.0;
+        QCOMPARE(r.bus.perSecondPct.size(), size_t(2));
+        QVERIFY(qAbs(r.bus.perSecondPct[0] - 100 * bits * 100 / 500000) < 1e-9);
+        QVERIFY(qAbs(r.bus.loadPeakPct - r.bus.perSecondPct[0]) < 1e-12);
+        QCOMPARE(r.bus.errorFrames, 1u);
+        QCOMPARE(r.bus.nonCanopen, 1u);
+        QVERIFY2(hasFinding(r, QStringLiteral("1 CAN error frame")), qPrintable(findings(r)));
+    }
+
+    void loadOverTimeHasAtMost60Buckets() {
+        Feed f;
+        for (int s = 0; s < 200; ++s) f.at(s * 1000.0, 0x181, {1});
+        const HealthReport r = f.report();
+        QCOMPARE(r.bus.perSecondPct.size(), size_t(200));
+        QCOMPARE(r.bus.loadOverTime.size(), size_t(50));  // 4 s each
+        QCOMPARE(r.bus.loadOverTime[1].startS, 4.0);
+        QCOMPARE(loadSparkline(r).size(), 50);
+    }
+
+    void jsonCarriesEveryPart() {
+        Feed f;
+        for (double t : {0.0, 100.0, 200.0, 450.0}) f.at(t, 0x705, {0x05});
+        f.at(300, 0x085, {0x10, 0x23, 0x02, 0, 0, 0, 0, 0});
+        const QJsonObject o = healthJson(f.report());
+        QVERIFY(o[QStringLiteral("findings")].isArray());
+        const QJsonObject n = o[QStringLiteral("nodes")].toArray().at(0).toObject();
+        QCOMPARE(n[QStringLiteral("node")].toInt(), 5);
+        QCOMPARE(n[QStringLiteral("heartbeat")].toObject()[QStringLiteral("late")].toInt(), 1);
+        QCOMPARE(n[QStringLiteral("heartbeat")].toObject()[QStringLiteral("period_ms")].toDouble(), 100.0);
+        QCOMPARE(n[QStringLiteral("emcy")].toObject()[QStringLiteral("list")].toArray().at(0).toObject()[QStringLiteral("code")].toInt(), 0x2310);
+        QVERIFY(n[QStringLiteral("sdo")].toObject().contains(QStringLiteral("response_p99_ms")));
+        QVERIFY(n[QStringLiteral("nmt")].toObject().contains(QStringLiteral("resets")));
+        QVERIFY(o[QStringLiteral("pdos")].isArray());
+        const QJsonObject bus = o[QStringLiteral("bus")].toObject();
+        for (const char* k : {"load_avg_pct", "load_peak_pct", "load_over_time", "error_frames", "non_canopen_frames", "sync", "rpdos_no_producer"})
+            QVERIFY2(bus.contains(QLatin1String(k)), k);
+    }
+};
+
+QTEST_GUILESS_MAIN(NetworkHealthTest)
+#include "test_network_health.moc"
