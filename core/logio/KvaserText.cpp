@@ -29,7 +29,7 @@ KvaserReader::LineResult KvaserReader::parseLine(std::string_view line, CanFrame
     if (idText.size() > 4 && *id > 0x7FF) f.flags |= CanFrame::Extended;
     // Flags: letters before the DLC.
     std::string_view t = tok.next();
-    while (!t.empty() && !parseDec(t)) {
+    while (!t.empty() && !(t.front() >= '0' && t.front() <= '9')) {
         if (equalsNoCase(t, "x")) f.flags |= CanFrame::Extended;
         else if (equalsNoCase(t, "r")) f.flags |= CanFrame::Remote;
         else if (startsWithNoCase(t, "errorframe") || equalsNoCase(t, "err")) f.flags |= CanFrame::Error;
