@@ -99,7 +99,9 @@ void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& diction
 ApplyPlan DeviceConfiguration::plan(uint8_t node, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current, ApplyScope scope) {
     ApplyPlan p;
     p.node = node;
-    for (const auto& [index, obj] : dcf.objects()) {
+    for (const auto& entry : dcf.objects()) {
+        const auto index = entry.first;  // not a structured binding: clang 14 cannot capture those in the lambda below
+        const auto& obj = entry.second;
         for (const od::SubObject& s : obj.subs) {
             if (s.parameterValue.isEmpty()) continue;  // no value for this entry in the DCF
             const QString name = dcf.displayName(index, s.sub);
