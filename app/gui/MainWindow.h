@@ -19,6 +19,7 @@ namespace coscope::gui {
 class BusStatusBar;
 class ConsoleDock;
 class EventsDock;
+class LogLoadJob;
 class LogSaveJob;
 class NodesDock;
 class ObjectDictionaryDock;
@@ -76,6 +77,7 @@ private:
     void restoreLayout();
     void saveLayout();
     void showError(const QString& message);
+    void reportLoad(const LogLoadJob& load);
     void showMessage(const QString& message);
     void onSourceChanged();
     // Commission items transmit: disabled without an open bus and while the bus is listen-only

@@ -78,7 +78,7 @@ BusmasterReader::LineResult BusmasterReader::parseLine(std::string_view line, Ca
     Tokens tok(line);
     const std::string_view timeText = tok.next();
     uint32_t tm[4];
-    if (!splitColon(timeText, tm, 4) || tm[1] > 59 || tm[2] > 59 || tm[3] > 9999)
+    if (!splitColon(timeText, tm, 4) || tm[0] > 999999 || tm[1] > 59 || tm[2] > 59 || tm[3] > 9999)
         return bad(QStringLiteral("bad time %1, expected h:m:s:tttt").arg(quoted(timeText)));
     const int64_t timeNs = ((int64_t(tm[0]) * 60 + tm[1]) * 60 + tm[2]) * 1000 * kNsPerMs + int64_t(tm[3]) * 100000;
     const std::string_view dir = tok.next();

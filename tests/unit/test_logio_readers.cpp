@@ -100,11 +100,14 @@ private slots:
     void busmasterRelativeTimeAddsUp() {
         const QByteArray text =
             "***BUSMASTER Ver 3.2.2***\n***START DATE AND TIME 1:2:2018 10:0:0:0***\n***HEX***\n***RELATIVE MODE***\n"
-            "0:0:0:0100 Rx 1 0x100 s 0\n0:0:0:0100 Rx 1 0x100 s 0\n0:0:1:0000 Rx 1 0x100 s 0\n";
+            "0:0:0:0100 Rx 1 0x100 s 0\n0:0:0:0100 Rx 1 0x100 s 0\n0:0:1:0000 Rx 1 0x100 s 0\n"
+            "252000000:0:0:0000 Rx 1 0x100 s 0\n";  // hours beyond reason (found by fuzzing: overflowed)
         BusmasterReader r;
         const auto f = readBytes(r, text);
         QCOMPARE(f.size(), size_t(3));
         QCOMPARE(r.timeMode(), BusmasterReader::TimeMode::Relative);
+        QCOMPARE(r.diagnostics().size(), size_t(1));
+        QCOMPARE(r.diagnostics()[0].where, int64_t(8));
         const int64_t start = localNs(2018, 2, 1, 10, 0, 0, 0);
         QCOMPARE(f[0].timestampNs, start + 10000000);
         QCOMPARE(f[1].timestampNs, start + 20000000);
