@@ -4,6 +4,7 @@
 #include "core/can/BusUrl.h"
 #include "core/can/SocketCanLinkJob.h"
 #include "core/can/SocketCanLinks.h"
+#include "core/logio/LogFormats.h"
 #include "core/sim/SimNetwork.h"
 
 #include <QCanBus>
@@ -68,6 +69,14 @@ static int runBuses(const QStringList& args) {
     }
     out << "  sim://  (default virtual network: nodes " << sim::SimNetwork::defaultSpec() << ")\n";
     if (!found) out << "  (no CAN adapters found by the Qt plugins)\n";
+    // Logs for replay:// and convert, found by their content.
+    out << "\nLog formats (r = read, w = write):\n";
+    for (const auto& f : logio::LogFormats::all()) {
+        QStringList ext;
+        for (const QString& e : f.extensions) ext << QStringLiteral("*.") + e;
+        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  " << f.description << "  ("
+            << ext.join(QLatin1Char(' ')) << ")\n";
+    }
     return Ok;
 }
 

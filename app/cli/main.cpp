@@ -3,6 +3,7 @@
 #include "app/BuildInfo.h"
 #include "app/cli/CliVerb.h"
 #include "core/log/Logging.h"
+#include "core/logio/LogFormats.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QCoreApplication>
@@ -32,6 +33,9 @@ void printHelp() {
            "\nBus URLs: socketcan://can0, virtualcan://can0 (any Qt CAN plugin), socketcand://HOST:PORT/CHANNEL,\n"
            "sim://?nodes=1:delta-asda-a2,2:aimotor, replay://PATH?speed=1.0; options bitrate=, fd=1, listen-only=1.\n"
            "Exit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n";
+    out << "\nLog formats (detected from the content; r = read, w = write):\n";
+    for (const auto& f : logio::LogFormats::all())
+        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  " << f.description << "\n";
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include <QCloseEvent>
 #include <QDragEnterEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -40,10 +41,10 @@
 namespace coscope::gui {
 
 namespace {
-QString readFilters() {
+QString readFilters(bool forWriting = false) {
     QStringList all, each;
     for (const auto& f : logio::LogFormats::all()) {
-        if (!f.canRead) continue;
+        if (forWriting ? !f.canWrite : !f.canRead) continue;
         QStringList globs;
         for (const QString& e : f.extensions) globs << QStringLiteral("*.") + e;
         all << globs;
@@ -133,11 +134,11 @@ void MainWindow::buildMenus() {
         if (!path.isEmpty()) openLog(path);
     });
     file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save trace as…"), QKeySequence::Save, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path);
     });
     file->addAction(tr("&Export filtered rows…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters());
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
     file->addAction(tr("Export PDO layout as &DBC…"), this, [this] { exportPdoLayoutDbc(*workspace_, this, [this](const QString& m) { showMessage(m); }); });
@@ -353,7 +354,7 @@ bool MainWindow::maybeSaveCapture(std::function<void()> then) {
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save: {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters());
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters(true));
         if (!path.isEmpty() && saveLog(path)) afterSave_ = std::move(then);
         return false;
     }
@@ -382,6 +383,7 @@ void MainWindow::refresh() {
         if (!load->isDone()) shown = load;
         else if (!loadReported_) {
             loadReported_ = true;
+            reportLoad(*load);
             if (load->hasError()) showError(load->errorString());
             else if (load->diagnosticCount())
                 showError(tr("%1: %L2 frames, %L3 lines not understood — first: %4")
@@ -418,6 +420,29 @@ void MainWindow::refresh() {
         }
     }
     status_->refresh(shown);
+}
+
+// How the log was read, in the Trace dock: shown when something went wrong (no frames, skipped
+// lines, unreadable file) so an empty or partial trace never goes unexplained.
+void MainWindow::reportLoad(const LogLoadJob& load) {
+    const QString file = QFileInfo(load.path()).fileName();
+    const size_t frames = workspace_->store() ? workspace_->store()->size() : 0;
+    if (load.hasError()) {
+        trace_->showLoadReport(tr("Could not read %1: %2").arg(file, load.errorString()), true);
+        return;
+    }
+    const uint64_t skipped = load.diagnosticCount();
+    if (skipped == 0 && frames > 0) return;
+    QStringList lines;
+    if (load.linesRead() > 0)
+        lines << tr("%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.").arg(file, load.formatName()).arg(load.linesRead()).arg(frames).arg(skipped);
+    else
+        lines << tr("%1 read as %2: %L3 frames, %L4 records skipped.").arg(file, load.formatName()).arg(frames).arg(skipped);
+    if (frames == 0) lines << tr("No frames were found in this file.");
+    const auto problems = load.firstProblems(5);
+    for (const auto& d : problems) lines << tr("line %1: %2").arg(d.where).arg(d.message);
+    if (skipped > problems.size()) lines << tr("… and %L1 more").arg(skipped - problems.size());
+    trace_->showLoadReport(lines.join(QLatin1Char('\n')), true);
 }
 
 void MainWindow::showError(const QString& message) {

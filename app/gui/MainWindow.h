@@ -21,6 +21,7 @@ class ConsoleDock;
 class EventsDock;
 class HealthDock;
 class JournalOfferBar;
+class LogLoadJob;
 class LogSaveJob;
 class NodesDock;
 class ObjectDictionaryDock;
@@ -82,6 +83,7 @@ private:
     void showError(const QString& message);
     // At start: offers a capture journal left unclosed, then removes old journals.
     void offerAndCleanJournals();
+    void reportLoad(const LogLoadJob& load);
     void showMessage(const QString& message);
     void onSourceChanged();
     // Commission items transmit: disabled without an open bus and while the bus is listen-only

@@ -22,10 +22,11 @@ void CsvWriter::writeHeader(const CanFrame*) { out() += "number,time,bus,id,ext,
 void CsvWriter::writeFrame(const CanFrame& f, const QString& summary) {
     QByteArray& o = out();
     char head[64];
+    // Sign, whole seconds and microseconds apart, so -1.5 s reads "-1.500000" (not "-2.500000").
     const int64_t ns = f.timestampNs;
-    const long long sec = static_cast<long long>(ns >= 0 ? ns / 1000000000 : -((-ns + 999999999) / 1000000000));
-    const long long usec = static_cast<long long>((ns - sec * 1000000000LL) / 1000);
-    std::snprintf(head, sizeof head, "%llu,%lld.%06lld,", static_cast<unsigned long long>(frameNumber()), sec, usec);
+    const uint64_t mag = ns < 0 ? uint64_t(0) - uint64_t(ns) : uint64_t(ns);
+    std::snprintf(head, sizeof head, "%llu,%s%llu.%06llu,", static_cast<unsigned long long>(frameNumber()), ns < 0 ? "-" : "",
+                  static_cast<unsigned long long>(mag / 1000000000ULL), static_cast<unsigned long long>(mag % 1000000000ULL / 1000));
     o += head;
     appendField(o, busName(f.bus).toUtf8());
     o += ",0x";

@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/LogFormats.h"
 
+#include "core/logio/BusmasterLog.h"
 #include "core/logio/CandumpLog.h"
+#include "core/logio/CsvReader.h"
 #include "core/logio/CsvWriter.h"
+#include "core/logio/GvretCsv.h"
+#include "core/logio/IxxatTrace.h"
+#include "core/logio/KvaserText.h"
 #include "core/logio/PcapLog.h"
 #include "core/logio/PeakTrc.h"
 #include "core/logio/TextScan.h"
@@ -23,7 +28,13 @@ const std::vector<LogFormatInfo>& all() {
         {QStringLiteral("trc"), QStringLiteral("PEAK trace 1.0-2.1 (writes 2.1)"), {QStringLiteral("trc")}, true, true},
         {QStringLiteral("pcap"), QStringLiteral("pcap/pcapng, SocketCAN link type (writes pcapng)"),
          {QStringLiteral("pcapng"), QStringLiteral("pcap")}, true, true},
-        {QStringLiteral("csv"), QStringLiteral("decoded CSV with a summary column"), {QStringLiteral("csv")}, false, true},
+        {QStringLiteral("csv"), QStringLiteral("CoScope CSV with a decoded summary column"), {QStringLiteral("csv")}, true, true},
+        {QStringLiteral("gvret"), QStringLiteral("SavvyCAN GVRET CSV (read only)"), {QStringLiteral("csv")}, true, false},
+        {QStringLiteral("busmaster"), QStringLiteral("BUSMASTER log 1.x-3.x, hex/dec, system/absolute/relative time (read only)"),
+         {QStringLiteral("log")}, true, false},
+        {QStringLiteral("ixxat"), QStringLiteral("IXXAT MiniMon / canAnalyser text export (read only)"),
+         {QStringLiteral("csv"), QStringLiteral("trc")}, true, false},
+        {QStringLiteral("kvaser"), QStringLiteral("Kvaser CanKing / Memorator text export, hex (read only)"), {QStringLiteral("txt")}, true, false},
     };
     return formats;
 }
@@ -42,6 +53,21 @@ QString detectContent(const QByteArray& head) {
     }
     // Text: look at the first lines.
     const std::string_view text(head.constData(), size_t(head.size()));
+    {
+        // Formats that announce themselves in their first non-empty line (a .trc, .log or .csv
+        // name alone says nothing: PEAK vs IXXAT .trc, candump vs BUSMASTER .log).
+        size_t start = 0;
+        if (text.substr(0, 3) == "\xEF\xBB\xBF") start = 3;  // UTF-8 BOM
+        while (start < text.size() && isSpace(text[start])) ++start;
+        const size_t nl = text.find('\n', start);
+        const std::string_view first = trimmed(text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start));
+        if (isCoScopeCsvHeader(first)) return QStringLiteral("csv");
+        if (isGvretHeader(first)) return QStringLiteral("gvret");
+        if (isKvaserHeader(first)) return QStringLiteral("kvaser");
+        if (first.substr(0, 3) == "***" && (contains(text.substr(0, 4096), "BUSMASTER") || contains(text.substr(0, 4096), "***<Time><Tx/Rx>")))
+            return QStringLiteral("busmaster");
+        if (isIxxatFirstLine(first)) return QStringLiteral("ixxat");
+    }
     if (contains(text, ";$FILEVERSION") || contains(text, ";$STARTTIME")) return QStringLiteral("trc");
     size_t pos = 0;
     int lines = 0;
@@ -90,6 +116,11 @@ std::unique_ptr<LogReader> createReader(const QString& format) {
     if (f == u"blf") return std::make_unique<BlfReader>();
     if (f == u"trc") return std::make_unique<TrcReader>();
     if (f == u"pcap" || f == u"pcapng") return std::make_unique<PcapReader>();
+    if (f == u"csv") return std::make_unique<CsvReader>();
+    if (f == u"gvret" || f == u"savvycan") return std::make_unique<GvretCsvReader>();
+    if (f == u"busmaster") return std::make_unique<BusmasterReader>();
+    if (f == u"ixxat") return std::make_unique<IxxatReader>();
+    if (f == u"kvaser") return std::make_unique<KvaserReader>();
     return nullptr;
 }
 
@@ -102,7 +133,7 @@ std::unique_ptr<LogReader> openReader(const QString& path, QString* error) {
     const QString format = detect(&probe, path);
     probe.close();
     if (format.isEmpty()) {
-        if (error) *error = QStringLiteral("%1: unknown log format (not candump, ASC, BLF, TRC or pcap)").arg(path);
+        if (error) *error = QStringLiteral("%1: unknown log format (not candump, ASC, BLF, PEAK TRC, pcap, CSV, GVRET, BUSMASTER, IXXAT or Kvaser)").arg(path);
         return nullptr;
     }
     auto reader = createReader(format);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Folder core/logio/ owns log files: one reader/writer per format (candump, CSV, pcap/pcapng, PEAK
-// trc, Vector asc/blf) and the registry that sniffs content.
+// trc, Vector asc/blf; readers for SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser exports) and the
+// registry that sniffs content.
 #pragma once
 
 #include "core/logio/LogReader.h"
@@ -16,7 +17,8 @@ class QIODevice;
 
 namespace coscope::logio {
 
-// The log formats CoScope knows, by name: candump, asc, blf, trc, pcap (pcap and pcapng), csv.
+// The log formats CoScope knows, by name: candump, asc, blf, trc, pcap (pcap and pcapng), csv,
+// and read only: gvret (SavvyCAN), busmaster, ixxat, kvaser.
 struct LogFormatInfo {
     QString name;
     QString description;

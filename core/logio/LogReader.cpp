@@ -117,7 +117,7 @@ bool LineLogReader::nextLine(std::string_view& line) {
             if (len > 0 && base[pos_ + len - 1] == '\r') --len;
             line = std::string_view(base + pos_, size_t(len));
             pos_ = nl ? stop + 1 : stop;
-            ++lineNumber_;
+            if (++lineNumber_ == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
             last_ = line;
             return true;
         }

@@ -55,6 +55,8 @@ public:
     const std::vector<LogDiagnostic>& diagnostics() const { return diagnostics_; }
     uint64_t diagnosticCount() const { return diagnosticCount_; }  // including unstored ones
     uint64_t framesRead() const { return framesRead_; }
+    // Lines read so far for text formats; 0 for binary ones.
+    virtual int64_t linesRead() const { return 0; }
     QString sourceName() const { return sourceName_; }
     // Names of the buses seen (CanFrame::bus indexes this list): "can0", "1", ...
     const QStringList& busNames() const { return busNames_; }
@@ -109,6 +111,9 @@ protected:
     // Puts the last line back so readFrames() sees it again.
     void unreadLine() { unread_ = true; }
     int64_t lineNumber() const { return lineNumber_; }
+
+public:
+    int64_t linesRead() const override { return lineNumber_; }
 
 private:
     QByteArray buffer_;

@@ -86,6 +86,29 @@ private slots:
         if (spanUs >= 0) QCOMPARE((all.back().timestampNs - all.front().timestampNs) / 1000, spanUs);
     }
 
+    // Any file of the formats read from other tools (BUSMASTER, IXXAT, SavvyCAN, Kvaser, CoScope
+    // CSV) that is dropped into the folder reads to its end without a fatal error.
+    void otherToolsLogsRead() {
+        const QStringList formats = {QStringLiteral("busmaster"), QStringLiteral("ixxat"), QStringLiteral("gvret"),
+                                     QStringLiteral("kvaser"), QStringLiteral("csv")};
+        int seen = 0;
+        for (const QFileInfo& fi : QDir(logsDir()).entryInfoList(QDir::Files)) {
+            QFile probe(fi.filePath());
+            QVERIFY(probe.open(QIODevice::ReadOnly));
+            const QString format = LogFormats::detect(&probe, fi.filePath());
+            if (!formats.contains(format)) continue;
+            ++seen;
+            QString error;
+            auto reader = LogFormats::openReader(fi.filePath(), &error);
+            QVERIFY2(reader, qPrintable(error));
+            const auto all = reader->readAll();
+            QVERIFY2(!reader->hasError(), qPrintable(fi.fileName() + u' ' + reader->errorString()));
+            QVERIFY2(!all.empty(), qPrintable(fi.fileName()));
+            QCOMPARE(reader->progress(), 1.0);
+        }
+        if (!seen) QSKIP("no BUSMASTER, IXXAT, GVRET, Kvaser or CoScope CSV log in the shared folder");
+    }
+
     void moteusFdFrames() {
         auto reader = LogFormats::openReader(logsDir() + QStringLiteral("/candump_default_canfd_moteus.txt"), nullptr);
         QVERIFY(reader);

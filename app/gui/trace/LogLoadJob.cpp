@@ -37,6 +37,16 @@ QStringList LogLoadJob::diagnostics(int max) const {
     return diagnostics_.mid(0, max);
 }
 
+std::vector<logio::LogDiagnostic> LogLoadJob::firstProblems(int max) const {
+    std::lock_guard lock(mutex_);
+    return {problems_.begin(), problems_.begin() + std::min<ptrdiff_t>(max, ptrdiff_t(problems_.size()))};
+}
+
+int64_t LogLoadJob::linesRead() const {
+    std::lock_guard lock(mutex_);
+    return linesRead_;
+}
+
 void LogLoadJob::run() {
     QString error;
     auto reader = logio::LogFormats::openReader(path_, &error);
@@ -62,15 +72,21 @@ void LogLoadJob::run() {
         busNames_ = reader->busNames();
         diagnosticCount_ = reader->diagnosticCount();
         const auto& d = reader->diagnostics();
-        for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics)
+        for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
             diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+            problems_.push_back(d[seenDiagnostics]);
+        }
+        linesRead_ = reader->linesRead();
     }
     std::lock_guard lock(mutex_);
     busNames_ = reader->busNames();
     diagnosticCount_ = reader->diagnosticCount();
     const auto& d = reader->diagnostics();
-    for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics)
+    for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
         diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+        problems_.push_back(d[seenDiagnostics]);
+    }
+    linesRead_ = reader->linesRead();
     if (reader->hasError()) fail(reader->errorString());
     spdlog::info("opened {}: {} frames ({}), {} problems", path_.toStdString(), store_->size(), format_.toStdString(), diagnosticCount_);
 }

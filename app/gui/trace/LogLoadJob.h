@@ -29,6 +29,9 @@ public:
     uint64_t diagnosticCount() const;
     // The first diagnostics as "line N: message".
     QStringList diagnostics(int max = 20) const;
+    // The first skipped lines with their numbers and why (for the load report).
+    std::vector<logio::LogDiagnostic> firstProblems(int max = 5) const;
+    int64_t linesRead() const;  // text formats; 0 for binary ones
 
 protected:
     void run() override;
@@ -43,6 +46,8 @@ private:
     QStringList busNames_;
     uint64_t diagnosticCount_ = 0;
     QStringList diagnostics_;
+    std::vector<logio::LogDiagnostic> problems_;
+    int64_t linesRead_ = 0;
 };
 
 }  // namespace coscope::gui

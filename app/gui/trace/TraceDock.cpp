@@ -9,6 +9,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QFrame>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -37,6 +38,26 @@ TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Tr
     auto* bar = new QWidget(content);
     buildToolbar(bar);
     layout->addWidget(bar);
+
+    report_ = new QFrame(content);
+    report_->setObjectName(QStringLiteral("loadReport"));
+    static_cast<QFrame*>(report_)->setFrameShape(QFrame::StyledPanel);
+    auto* reportRow = new QHBoxLayout(report_);
+    reportRow->setContentsMargins(6, 4, 4, 4);
+    reportText_ = new QLabel(report_);
+    reportText_->setObjectName(QStringLiteral("loadReportText"));
+    reportText_->setWordWrap(true);
+    reportText_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    reportRow->addWidget(reportText_, 1);
+    auto* closeReport = new QToolButton(report_);
+    closeReport->setObjectName(QStringLiteral("loadReportClose"));
+    closeReport->setAutoRaise(true);
+    closeReport->setIcon(QApplication::style()->standardIcon(QStyle::SP_TitleBarCloseButton));
+    closeReport->setToolTip(tr("Close this report"));
+    connect(closeReport, &QToolButton::clicked, this, &TraceDock::hideLoadReport);
+    reportRow->addWidget(closeReport, 0, Qt::AlignTop);
+    report_->hide();
+    layout->addWidget(report_);
 
     auto* split = new QSplitter(Qt::Vertical, content);
     split->setObjectName(QStringLiteral("traceSplit"));
@@ -182,7 +203,17 @@ void TraceDock::buildToolbar(QWidget* host) {
     row->addWidget(countLabel_);
 }
 
+void TraceDock::showLoadReport(const QString& text, bool problem) {
+    report_->setStyleSheet(problem ? QStringLiteral("QFrame#loadReport { background: #fff4d6; }") : QString());
+    reportText_->setText(text);
+    report_->show();
+}
+
+void TraceDock::hideLoadReport() { report_->hide(); }
+bool TraceDock::loadReportShown() const { return report_->isVisible(); }
+
 void TraceDock::rebind() {
+    hideLoadReport();
     filterJob_.reset();
     model_->setStore(workspace_->store());
     model_->setDecoder(workspace_->decoder());

@@ -56,6 +56,12 @@ public:
     void toggleBookmark();
     void gotoBookmark(bool forward);
 
+    // A banner over the table that explains how a log was read (format, lines skipped and why);
+    // stays until closed or another source is shown.
+    void showLoadReport(const QString& text, bool problem);
+    void hideLoadReport();
+    bool loadReportShown() const;
+
 signals:
     void message(const QString& text);  // for the status bar (user actions only)
 
@@ -76,6 +82,8 @@ private:
     QLineEdit* filterEdit_ = nullptr;
     QLineEdit* findEdit_ = nullptr;
     QLabel* countLabel_ = nullptr;
+    QWidget* report_ = nullptr;
+    QLabel* reportText_ = nullptr;
     std::unique_ptr<FilterJob> filterJob_;
     int64_t shownDetailsFor_ = -1;
     uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
