@@ -57,8 +57,9 @@ QList<MimeType> readMimeTypes(QString* error) {
     return types;
 }
 
-// Extensions too generic to claim for CAN logs (any program writes *.log and *.txt).
-const QStringList genericExtensions{QStringLiteral("log"), QStringLiteral("txt")};
+// Extensions too generic to claim for CAN logs (any program writes *.log, *.txt and *.csv; the
+// readers tell CoScope, GVRET and IXXAT CSV apart by content, not by name).
+const QStringList genericExtensions{QStringLiteral("log"), QStringLiteral("txt"), QStringLiteral("csv")};
 
 }  // namespace
 
