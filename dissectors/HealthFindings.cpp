@@ -93,6 +93,10 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
     }
     for (const RpdoNoProducer& p : b.rpdosNoProducer)
         add(HealthFinding::Info, "rpdo_no_producer", p.node, QStringLiteral("RPDO%1 of node %2 (%3) is valid but nobody sends it").arg(p.number).arg(p.node).arg(hx(p.cobId, 3)));
+    if (!b.silentAddressed.empty())
+        add(HealthFinding::Info, "silent_addressed", -1,
+            QStringLiteral("%1 node-ID%2 (%3..%4) got an SDO request and never answered: a network scan, or devices missing")
+                .arg(b.silentAddressed.size()).arg(b.silentAddressed.size() == 1 ? "" : "s").arg(b.silentAddressed.front()).arg(b.silentAddressed.back()));
     if (b.nonCanopen) add(HealthFinding::Info, "non_canopen", -1, QStringLiteral("%1 frame%2 not CANopen").arg(b.nonCanopen).arg(b.nonCanopen == 1 ? " is" : "s are"));
     std::stable_sort(out.begin(), out.end(), [](const HealthFinding& a, const HealthFinding& c) { return a.severity > c.severity; });
     return out;

@@ -87,7 +87,10 @@ QJsonObject healthJson(const HealthReport& r) {
     for (double v : b.perSecondPct) perSecond.append(r3(v));
     for (const RpdoNoProducer& p : b.rpdosNoProducer)
         noProducer.append(QJsonObject{{QStringLiteral("bus"), p.bus}, {QStringLiteral("node"), p.node}, {QStringLiteral("rpdo"), p.number}, {QStringLiteral("cob_id"), double(p.cobId)}});
+    QJsonArray silent;
+    for (int id : b.silentAddressed) silent.append(id);
     QJsonObject bus{{QStringLiteral("bit_rate"), b.bitRate},
+                    {QStringLiteral("silent_addressed_nodes"), silent},
                     {QStringLiteral("frames"), double(b.frames)},
                     {QStringLiteral("duration_s"), r3(b.durationS)},
                     {QStringLiteral("error_frames"), double(b.errorFrames)},

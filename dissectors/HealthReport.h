@@ -116,6 +116,9 @@ struct BusHealth {
     QString syncPeriodSource;              // "1006h", "observed" or ""
     uint64_t syncMissing = 0;              // SYNC cycles missing (gaps over 1.5x the period)
     std::vector<RpdoNoProducer> rpdosNoProducer;
+    // Node-IDs that got an SDO request or two and never sent anything (a network scan probing
+    // 1-127, or a device missing): summarised here, not listed as nodes.
+    std::vector<int> silentAddressed;
 };
 
 struct HealthReport {

@@ -98,6 +98,8 @@ QByteArray healthText(const HealthReport& r, bool perSecond) {
     o.put("\nBus (%d bit/s, estimated):\n", b.bitRate);
     o.put("  frames %llu over %.1f s, error frames %llu, not CANopen %llu\n", u(b.frames), b.durationS, u(b.errorFrames), u(b.nonCanopen));
     o.put("  load average %.1f %%, peak %.1f %% at %.0f s\n", b.loadAvgPct, b.loadPeakPct, b.peakAtS);
+    if (!b.silentAddressed.empty())
+        o.put("  %zu node-IDs addressed by SDO never answered (%d..%d)\n", b.silentAddressed.size(), b.silentAddressed.front(), b.silentAddressed.back());
     if (b.syncs) o.put("  SYNC %llu, period %.3f ms (%s), missing cycles %llu\n", u(b.syncs), b.syncPeriodMs, c(b.syncPeriodSource).constData(), u(b.syncMissing));
     if (!b.loadOverTime.empty()) {
         o.put("  load over time (%zu buckets of %.0f s, 0..100 %%): %s\n", b.loadOverTime.size(), b.loadOverTime.front().seconds, loadSparkline(r).toUtf8().constData());

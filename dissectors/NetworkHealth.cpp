@@ -162,6 +162,11 @@ HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) con
         for (int id = 1; id < 128; ++id) {
             const NodeTrack* t = buses_[bus].nodes[static_cast<size_t>(id)].get();
             if (!t || (!t->present && !t->sdoRequests && !t->nmtCommands)) continue;
+            // A probe (request, then the client's abort) to a node that never answers.
+            if (!t->present && t->sdoRequests <= 2 && (!t->nmtCommands || t->lastCommandAll)) {
+                if (t->sdoRequests) r.bus.silentAddressed.push_back(id);
+                continue;
+            }
             NodeHealth h;
             h.bus = static_cast<int>(bus);
             h.node = id;

@@ -162,6 +162,31 @@ private slots:
         QVERIFY2(hasFinding(r, QStringLiteral("06020000h")), qPrintable(findings(r)));
     }
 
+    // A scan probes node-IDs with one upload of 1000h each and aborts (client abort 80h,
+    // 05040000h timeout, CiA 301 §7.2.4.3.17) where nothing answers: those IDs are one finding,
+    // not a table row each. A node asked again and again without an answer stays a node.
+    void scanProbesAreSummarisedNotListed() {
+        Feed f;
+        double t = 0;
+        f.at(t, 0x701, {0x05});  // node 1 is there
+        for (int id = 5; id <= 9; ++id) {
+            f.at(t, 0x600u + id, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0});
+            f.at(t + 100, 0x600u + id, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05});
+            t += 150;
+        }
+        for (int i = 0; i < 5; ++i, t += 1500) f.at(t, 0x60C, {0x40, 0x41, 0x60, 0x00, 0, 0, 0, 0});
+        const HealthReport r = f.report(t);
+        QVERIFY(nodeOf(r, 1));
+        for (int id = 5; id <= 9; ++id) QVERIFY2(!nodeOf(r, id), qPrintable(QString::number(id)));
+        QCOMPARE(r.bus.silentAddressed, (std::vector<int>{5, 6, 7, 8, 9}));
+        QVERIFY2(hasFinding(r, QStringLiteral("5 node-IDs (5..9) got an SDO request and never answered")), qPrintable(findings(r)));
+        const NodeHealth* missing = nodeOf(r, 12);
+        QVERIFY(missing);
+        QVERIFY(missing->sdoTimeouts >= 4);
+        const QJsonObject json = healthJson(r);
+        QCOMPARE(json.value(QStringLiteral("bus")).toObject().value(QStringLiteral("silent_addressed_nodes")).toArray().size(), 5);
+    }
+
     void emcyListAndResets() {
         Feed f;
         f.at(1500, 0x081, {0x10, 0x23, 0x02, 0, 0, 0, 0, 0});  // 2310h, current error (bit 1)
