@@ -56,6 +56,7 @@ void touch(const QString& path, qint64 bytes, const QDateTime& when) {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(QByteArray(bytes, 'x'));
+    f.flush();  // else closing writes the buffer and the time becomes now
     QVERIFY(f.setFileTime(when, QFileDevice::FileModificationTime));
 }
 }  // namespace
