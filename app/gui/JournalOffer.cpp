@@ -20,7 +20,6 @@ journals::CleanupPolicy journalCleanupPolicy() {
 
 JournalOfferBar::JournalOfferBar(QWidget* parent) : QToolBar(parent) {
     setObjectName(QStringLiteral("journalOffer"));
-    setWindowTitle(tr("Unclosed capture"));
     setMovable(false);
     setFloatable(false);
     auto* box = new QWidget(this);
@@ -28,15 +27,16 @@ JournalOfferBar::JournalOfferBar(QWidget* parent) : QToolBar(parent) {
     row->setContentsMargins(6, 2, 6, 2);
     text_ = new QLabel(box);
     text_->setWordWrap(true);
-    reopen_ = new QPushButton(tr("Reopen capture"), box);
+    reopen_ = new QPushButton(box);
     reopen_->setObjectName(QStringLiteral("reopenJournal"));
-    dismiss_ = new QPushButton(tr("Dismiss"), box);
+    dismiss_ = new QPushButton(box);
     dismiss_->setObjectName(QStringLiteral("dismissJournal"));
     row->addWidget(text_, 1);
     row->addWidget(reopen_);
     row->addWidget(dismiss_);
     addWidget(box);
     setStyleSheet(QStringLiteral("QToolBar#journalOffer { background: #fff4ce; }"));
+    retranslate();
     connect(reopen_, &QPushButton::clicked, this, [this] {
         const QString path = path_;
         journals::markOffered(path);
@@ -63,12 +63,20 @@ void JournalOfferBar::next() {
         hide();
         return;
     }
+    retranslate();
+    show();
+}
+
+void JournalOfferBar::retranslate() {
+    setWindowTitle(tr("Unclosed capture"));
+    reopen_->setText(tr("Reopen capture"));
+    dismiss_->setText(tr("Dismiss"));
+    if (path_.isEmpty()) return;
     const QFileInfo fi(path_);
     text_->setText(tr("A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). "
                       "Its journal %1 (%2, last written %3) holds everything received up to about a second before.")
                        .arg(fi.fileName(), QLocale().formattedDataSize(fi.size()), QLocale().toString(fi.lastModified(), QLocale::ShortFormat)));
     text_->setToolTip(path_);
-    show();
 }
 
 }  // namespace coscope::gui

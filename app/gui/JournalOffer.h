@@ -25,6 +25,8 @@ public:
 
     // Looks for unclosed journals in `folder` and shows the newest; false (and hidden) when none.
     bool offerFrom(const QString& folder);
+    // Sets the texts again in the UI language (View ▸ Language), for the journal offered now.
+    void retranslate();
     QString offeredPath() const { return path_; }
     QPushButton* reopenButton() const { return reopen_; }
     QPushButton* dismissButton() const { return dismiss_; }

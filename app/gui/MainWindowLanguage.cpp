@@ -4,6 +4,8 @@
 // retranslating itself) leaves no text of the old language anywhere, whoever wrote the widget.
 #include "app/gui/MainWindow.h"
 
+#include "app/gui/JournalOffer.h"
+
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
@@ -80,6 +82,7 @@ void MainWindow::rebuildInLanguage() {
     createDocks();
     status_ = new BusStatusBar(statusBar(), workspace_);
     buildMenus();
+    journalOffer_->retranslate();
     restoreState(layout);
     if (node >= 0) od_->setNode(node);
     refresh();

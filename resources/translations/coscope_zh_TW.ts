@@ -2,6 +2,739 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_TW">
 <context>
+    <name>CoreText</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>voltage enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal limit active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 12)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 13)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 14)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 15)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shutdown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on + enable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable voltage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on / disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile position (PP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity (VL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile velocity (PV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile torque (PT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing (HM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interpolated position (IP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous position (CSP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous velocity (CSV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous torque (CST)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vl</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cst</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset communication</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle bit not alternated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter does not match</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too high</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid value for parameter (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too high (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too low (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data available</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Ds402FaultText</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> — vendor alarm </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Ds402StateDiagram</name>
+    <message>
+        <source>13 any fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Ds402VendorNotes</name>
+    <message>
+        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>EventLog</name>
+    <message>
+        <source>EMCY reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dropped frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat back after timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No heartbeat for %1 ms (period %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <source>NMT (short frame)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT frame must carry 2 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT node control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 (all)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request to node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request (RTR)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT error control (empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error control frame without state byte</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY node %1: error reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, reg %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY frame shorter than 8 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error register (1001h)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO request (client → server)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO response (server → client)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segment data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame, class %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TIME stamp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LSS command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(29-bit identifier, not CANopen)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 node %2, %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogLoadJob</name>
+    <message>
+        <source>Opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot open</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogSaveJob</name>
+    <message>
+        <source>Saving %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unknown log format</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot write format &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>OdTreeModel</name>
+    <message>
+        <source>sub %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, PDO-mappable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Limits: %1 … %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Differs from the default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3 (bytes %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>PdoDbcExport</name>
     <message>
         <source>%1: cannot write the DBC file (%2)</source>
@@ -21,13 +754,140 @@
     </message>
 </context>
 <context>
-    <name>QObject</name>
+    <name>PdoVendorNotes</name>
     <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>CiA 402 enable step-through…</source>
+        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: this PDO number may not exist on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied as soon as it arrives (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reserved transmission type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -64,6 +924,75 @@
     </message>
     <message>
         <source>seen</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TraceFilter</name>
+    <message>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grouping SDO transfers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filtering</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardFramesPane</name>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardMenu</name>
+    <message>
+        <source>Baud rate and node-ID…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDO mapping…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1504,6 +2433,19 @@ Arm the test move?</source>
     </message>
     <message>
         <source>… and %L1 more</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System language (%1)</source>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close the other windows (wizards, dialogs) to change the language</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3434,6 +4376,63 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>No bookmarks (Ctrl+B sets one)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::TraceModel</name>
+    <message>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Δt (s)</source>
+        <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>COB-ID</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Service</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Len</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Summary</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/events/EventLog.h"
+
+#include "app/gui/language/CoreText.h"
 #include "core/can/CanErrorFrame.h"
 
 #include "core/canopen/CobId.h"
@@ -9,6 +11,8 @@
 
 #include <algorithm>
 
+#include <QCoreApplication>
+
 namespace coscope::gui {
 
 using canopen::Service;
@@ -16,15 +20,15 @@ using canopen::Service;
 QString eventKindName(TraceEvent::Kind kind) {
     switch (kind) {
     case TraceEvent::Kind::Emcy: return QStringLiteral("EMCY");
-    case TraceEvent::Kind::EmcyReset: return QStringLiteral("EMCY reset");
-    case TraceEvent::Kind::SdoAbort: return QStringLiteral("SDO abort");
-    case TraceEvent::Kind::NmtState: return QStringLiteral("NMT state");
-    case TraceEvent::Kind::BootUp: return QStringLiteral("Boot-up");
-    case TraceEvent::Kind::NmtCommand: return QStringLiteral("NMT command");
-    case TraceEvent::Kind::HeartbeatTimeout: return QStringLiteral("Heartbeat timeout");
-    case TraceEvent::Kind::BusError: return QStringLiteral("Bus error");
-    case TraceEvent::Kind::Dropped: return QStringLiteral("Dropped frames");
-    case TraceEvent::Kind::Info: return QStringLiteral("Info");
+    case TraceEvent::Kind::EmcyReset: return QCoreApplication::translate("EventLog", "EMCY reset");
+    case TraceEvent::Kind::SdoAbort: return QCoreApplication::translate("EventLog", "SDO abort");
+    case TraceEvent::Kind::NmtState: return QCoreApplication::translate("EventLog", "NMT state");
+    case TraceEvent::Kind::BootUp: return QCoreApplication::translate("EventLog", "Boot-up");
+    case TraceEvent::Kind::NmtCommand: return QCoreApplication::translate("EventLog", "NMT command");
+    case TraceEvent::Kind::HeartbeatTimeout: return QCoreApplication::translate("EventLog", "Heartbeat timeout");
+    case TraceEvent::Kind::BusError: return QCoreApplication::translate("EventLog", "Bus error");
+    case TraceEvent::Kind::Dropped: return QCoreApplication::translate("EventLog", "Dropped frames");
+    case TraceEvent::Kind::Info: return QCoreApplication::translate("EventLog", "Info");
     }
     return {};
 }
@@ -65,9 +69,9 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
         switch (info.service) {
         case Service::Nmt:
             if (r.len >= 2) {
-                const QString target = r.data[1] == 0 ? QStringLiteral("all nodes") : QStringLiteral("node %1").arg(r.data[1]);
+                const QString target = r.data[1] == 0 ? QCoreApplication::translate("EventLog", "all nodes") : QCoreApplication::translate("EventLog", "node %1").arg(r.data[1]);
                 push(TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1,
-                     QStringLiteral("%1 → %2").arg(canopen::nmtCommandName(r.data[0]), target));
+                     QStringLiteral("%1 → %2").arg(coreText(canopen::nmtCommandName(r.data[0])), target));
             }
             break;
         case Service::NmtErrorControl: {
@@ -75,11 +79,11 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             NodeWatch& w = watch_[static_cast<size_t>(info.node)];
             const int state = r.data[0] & 0x7F;
             if (w.timedOut) {
-                push(TraceEvent::Kind::NmtState, r, n, info.node, QStringLiteral("Heartbeat back after timeout"));
+                push(TraceEvent::Kind::NmtState, r, n, info.node, QCoreApplication::translate("EventLog", "Heartbeat back after timeout"));
                 w.timedOut = false;
             }
             if (state == 0) {
-                push(TraceEvent::Kind::BootUp, r, n, info.node, QStringLiteral("Boot-up"));
+                push(TraceEvent::Kind::BootUp, r, n, info.node, QCoreApplication::translate("EventLog", "Boot-up"));
                 w.state = 0x7F;  // pre-operational after boot-up (CiA 301 §7.3.2.2.1)
                 w.lastNs = 0;
                 w.periodNs = 0;
@@ -87,9 +91,9 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             }
             if (w.state != state) {
                 push(TraceEvent::Kind::NmtState, r, n, info.node,
-                     w.state < 0 ? QStringLiteral("State %1").arg(canopen::nmtStateName(static_cast<uint8_t>(state)))
-                                 : QStringLiteral("%1 → %2").arg(canopen::nmtStateName(static_cast<uint8_t>(w.state)),
-                                                                 canopen::nmtStateName(static_cast<uint8_t>(state))));
+                     w.state < 0 ? QCoreApplication::translate("EventLog", "State %1").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(state))))
+                                 : QStringLiteral("%1 → %2").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(w.state))),
+                                                                 coreText(canopen::nmtStateName(static_cast<uint8_t>(state)))));
                 w.state = state;
             }
             if (w.lastNs && r.timestampNs > w.lastNs) w.periodNs = r.timestampNs - w.lastNs;
@@ -140,7 +144,7 @@ void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
         if (nowNs - w.lastNs > limit) {
             w.timedOut = true;
             events_.push_back({TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id),
-                               QStringLiteral("No heartbeat for %1 ms (period %2 ms)")
+                               QCoreApplication::translate("EventLog", "No heartbeat for %1 ms (period %2 ms)")
                                    .arg((nowNs - w.lastNs) / 1'000'000)
                                    .arg(w.periodNs / 1'000'000)});
         }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/health/HealthModel.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Nmt.h"
 #include "dissectors/NetworkHealth.h"
 
@@ -114,7 +116,7 @@ QVariant HealthModel::nodeData(int row, int column, int role) const {
     auto ms = [](double v) { return QString::number(v, 'f', v < 10 ? 1 : 0); };
     switch (column) {
     case NodeId: return n.node;
-    case State: return n.state < 0 ? QString() : canopen::nmtStateName(static_cast<uint8_t>(n.state));
+    case State: return n.state < 0 ? QString() : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.state)));
     case ErrorControl:
         if (n.errorControl.isEmpty()) return tr("none");
         if (n.silentNow) return n.errorControl == QLatin1String("guarding") ? tr("guarding stopped") : tr("heartbeat stopped");

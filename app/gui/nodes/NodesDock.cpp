@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/nodes/NodesDock.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/MenuTitle.h"
@@ -170,7 +172,7 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
 bool NodesDock::askNmt(uint8_t command, int node, const QString& warning) {
     const auto frame = canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node));
     const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-    const QString text = warning + tr("Send NMT “%1” to %2?\n\nFrame: %3").arg(canopen::nmtCommandName(command), target, formatCansend(frame));
+    const QString text = warning + tr("Send NMT “%1” to %2?\n\nFrame: %3").arg(coreText(canopen::nmtCommandName(command)), target, formatCansend(frame));
     lastConfirmation_ = text;
     if (autoConfirm_) {
         asking_ = false;
@@ -197,11 +199,11 @@ bool NodesDock::transmitNmt(uint8_t command, int node) {
     QString error;
     if (!workspace_->master() || !workspace_->master()->send(canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node)), &error)) {
         if (error.isEmpty()) error = tr("Not connected to a bus");
-        emit message(tr("NMT %1 to %2 failed: %3").arg(canopen::nmtCommandName(command), target, error));
+        emit message(tr("NMT %1 to %2 failed: %3").arg(coreText(canopen::nmtCommandName(command)), target, error));
         QMessageBox::warning(this, tr("NMT command failed"), error);
         return false;
     }
-    emit message(tr("Sent NMT %1 to %2").arg(canopen::nmtCommandName(command), target));
+    emit message(tr("Sent NMT %1 to %2").arg(coreText(canopen::nmtCommandName(command)), target));
     return true;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/nodes/NodesModel.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Nmt.h"
 
 #include <QBrush>
@@ -67,7 +69,7 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     case Node: return n.node;
     case State:
         if (late) return tr("No heartbeat");
-        return n.nmtState < 0 ? tr("Unknown") : canopen::nmtStateName(static_cast<uint8_t>(n.nmtState));
+        return n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
     case HeartbeatAge:
         if (!n.seenHeartbeat) return tr("—");
         return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/od/OdTreeModel.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Ds402.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/od/NumberNotation.h"
@@ -8,6 +10,8 @@
 #include <QBrush>
 #include <QColor>
 #include <QFont>
+
+#include <QCoreApplication>
 
 namespace coscope::gui {
 
@@ -104,7 +108,7 @@ QString OdTreeModel::valueText(const od::SubObject& e, const od::Value& v, bool 
     }
     const uint16_t base = e.index >= 0x6000 && e.index < 0xA000 ? static_cast<uint16_t>(0x6000 + (e.index - 0x6000) % 0x800) : e.index;
     if ((base == 0x6060 || base == 0x6061) && e.sub == 0 && od::isInteger(e.dataType)) {
-        const QString mode = canopen::ds402::modeName(static_cast<int8_t>(v.toInt64().value_or(0)));
+        const QString mode = coreText(canopen::ds402::modeName(static_cast<int8_t>(v.toInt64().value_or(0))));
         return mode.isEmpty() ? v.format(e.dataType, o) : QStringLiteral("%1 (%2)").arg(v.format(e.dataType, o), mode);
     }
     // COB-IDs, mapping entries, identity, control/statuswords…: hex by the app's one rule
@@ -155,7 +159,7 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
             }
         }
         switch (col) {
-        case Object: return objectRow ? hexIndex(obj->index) : QStringLiteral("sub %1").arg(hexSub(e->sub));
+        case Object: return objectRow ? hexIndex(obj->index) : QCoreApplication::translate("OdTreeModel", "sub %1").arg(hexSub(e->sub));
         case Name: return objectRow ? obj->name : e->name;
         case Type: return od::dataTypeName(e->dataType);
         case Access: return od::accessName(e->access);
@@ -172,8 +176,8 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
                 return d ? d->format(e->dataType) : QString();
             }
             if (!st) return {};
-            if (st->state == State::Reading) return st->value ? valueText(*e, *st->value, false) + QStringLiteral("  …") : QStringLiteral("reading…");
-            if (st->state == State::Writing) return QStringLiteral("writing…");
+            if (st->state == State::Reading) return st->value ? valueText(*e, *st->value, false) + QStringLiteral("  …") : QCoreApplication::translate("OdTreeModel", "reading…");
+            if (st->state == State::Writing) return QCoreApplication::translate("OdTreeModel", "writing…");
             if (st->state == State::Error) {
                 const QString prefix = st->value ? valueText(*e, *st->value, false) + QStringLiteral("  ⚠ ") : QStringLiteral("⚠ ");
                 return prefix + st->error.section(QStringLiteral(": "), 1);
@@ -198,9 +202,9 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
         if (st && !st->error.isEmpty()) return st->error;
         QString tip = QStringLiteral("%1:%2 %3\n%4, %5%6").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0'))
                           .arg(dictionary_.displayName(e->index, e->sub), od::dataTypeName(e->dataType), od::accessName(e->access),
-                               e->pdoMappable ? QStringLiteral(", PDO-mappable") : QString());
-        if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty()) tip += QStringLiteral("\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
-        if (st && st->changed) tip += QStringLiteral("\nDiffers from the default");
+                               e->pdoMappable ? QCoreApplication::translate("OdTreeModel", ", PDO-mappable") : QString());
+        if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty()) tip += QCoreApplication::translate("OdTreeModel", "\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
+        if (st && st->changed) tip += QCoreApplication::translate("OdTreeModel", "\nDiffers from the default");
         return tip;
     }
     if (role == Qt::ForegroundRole) {
@@ -225,7 +229,7 @@ bool OdTreeModel::setData(const QModelIndex& index, const QVariant& value, int r
     // The editors hand over text, parsed here as the entry's type within its limits.
     const od::ValueResult r = od::Value::parse(e->dataType, value.toString(), e->limits());
     if (!r.ok()) {
-        setError(e->index, e->sub, QStringLiteral("node %1 %2: %3").arg(node_).arg(canopen::objectRef(e->index, e->sub), r.error));
+        setError(e->index, e->sub, QCoreApplication::translate("OdTreeModel", "node %1 %2: %3").arg(node_).arg(canopen::objectRef(e->index, e->sub), r.error));
         return false;
     }
     emit writeRequested(e->index, e->sub, r.value);
@@ -277,7 +281,7 @@ void OdTreeModel::setUploaded(uint16_t index, uint8_t sub, const QByteArray& dat
     const od::ValueResult v = canopen::DeviceConfiguration::decodeUpload(e->dataType, data);
     if (!v.ok()) {
         s.state = State::Error;
-        s.error = QStringLiteral("node %1 %2: %3 (bytes %4)").arg(node_).arg(canopen::objectRef(index, sub), v.error, QString::fromLatin1(data.toHex(' ')));
+        s.error = QCoreApplication::translate("OdTreeModel", "node %1 %2: %3 (bytes %4)").arg(node_).arg(canopen::objectRef(index, sub), v.error, QString::fromLatin1(data.toHex(' ')));
     } else {
         if (!s.value) ++valuesRead_;
         s.state = State::Read;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/status/BusStatusBar.h"
 
+#include "app/gui/language/CoreText.h"
 #include "app/gui/session/Workspace.h"
 
 #include <QLabel>
@@ -98,7 +99,7 @@ void BusStatusBar::refresh(Job* job) {
         lastFrames_ = frames;
     }
     const auto c = bus->counters();
-    QString state = toString(bus->state());
+    QString state = coreText(toString(bus->state()));
     if (bus->isListenOnly()) state += tr(" · listen-only");
     state_->setText(state);
     rate_->setText(tr("%L1 frames/s").arg(rate_fps_, 0, 'f', 0));

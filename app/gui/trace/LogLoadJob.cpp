@@ -7,10 +7,12 @@
 
 #include <spdlog/spdlog.h>
 
+#include <QCoreApplication>
+
 namespace coscope::gui {
 
 LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers)
-    : Job(QStringLiteral("Opening %1").arg(QFileInfo(path).fileName())),
+    : Job(QCoreApplication::translate("LogLoadJob", "Opening %1").arg(QFileInfo(path).fileName())),
       path_(std::move(path)),
       store_(std::move(store)),
       consumers_(std::move(consumers)) {}
@@ -51,7 +53,7 @@ void LogLoadJob::run() {
     QString error;
     auto reader = logio::LogFormats::openReader(path_, &error);
     if (!reader) {
-        fail(error.isEmpty() ? QStringLiteral("%1: cannot open").arg(path_) : error);
+        fail(error.isEmpty() ? QCoreApplication::translate("LogLoadJob", "%1: cannot open").arg(path_) : error);
         return;
     }
     {

@@ -8,12 +8,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include <QCoreApplication>
+
 namespace coscope::gui {
 
 LogSaveJob::LogSaveJob(QString path, QString format, std::shared_ptr<const TraceStore> store,
                        std::optional<std::vector<FrameNo>> frames, QStringList busNames,
                        std::shared_ptr<const FrameDecoder> decoder)
-    : Job(QStringLiteral("Saving %1").arg(QFileInfo(path).fileName())),
+    : Job(QCoreApplication::translate("LogSaveJob", "Saving %1").arg(QFileInfo(path).fileName())),
       path_(std::move(path)),
       format_(std::move(format)),
       store_(std::move(store)),
@@ -27,12 +29,12 @@ void LogSaveJob::run() {
     QString error;
     const QString format = logio::LogFormats::writerFormatFor(path_, format_, &error);
     if (format.isEmpty()) {
-        fail(error.isEmpty() ? QStringLiteral("%1: unknown log format").arg(path_) : error);
+        fail(error.isEmpty() ? QCoreApplication::translate("LogSaveJob", "%1: unknown log format").arg(path_) : error);
         return;
     }
     auto writer = logio::LogFormats::createWriter(format);
     if (!writer) {
-        fail(QStringLiteral("%1: cannot write format '%2'").arg(path_, format));
+        fail(QCoreApplication::translate("LogSaveJob", "%1: cannot write format '%2'").arg(path_, format));
         return;
     }
     writer->setBusNames(busNames_);

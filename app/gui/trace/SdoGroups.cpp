@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/trace/SdoGroups.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "app/gui/trace/FrameDecoder.h"
 #include "core/canopen/CobId.h"
 #include "core/canopen/SdoAbort.h"
@@ -98,7 +100,7 @@ dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const 
         dissect::sdoTrack(ch, f, fromClient, static_cast<int>(r.id & 0x7F), r.timestampNs, d);
     }
     dissect::SdoTransferRecord own = d.transfer;
-    if (own.status == QLatin1String("aborted") && own.abortText.isEmpty()) own.abortText = canopen::sdoAbortText(own.abortCode);
+    if (own.status == QLatin1String("aborted") && own.abortText.isEmpty()) own.abortText = coreText(canopen::sdoAbortText(own.abortCode));
     // The decoder's, in the context of the trace: object name and typed value.
     dissect::Dissection full;
     full.reset(dissect::Dissection::Level::Flat);

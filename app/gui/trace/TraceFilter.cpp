@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <QCoreApplication>
+
 namespace coscope::gui {
 
 using canopen::Service;
@@ -59,23 +61,23 @@ std::optional<TraceFilter> TraceFilter::parse(const QString& query, QString* err
                 bool ok = false;
                 const int id = v.toInt(&ok);
                 if (!ok || id < 0 || id > 127) {
-                    if (error) *error = QStringLiteral("filter: '%1' is not a node-ID (0-127)").arg(v);
+                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: '%1' is not a node-ID (0-127)").arg(v);
                     return std::nullopt;
                 }
                 f.nodes.push_back(id);
             }
             if (values.isEmpty()) {
-                if (error) *error = QStringLiteral("filter: 'node:' needs node-IDs, e.g. node:5,6");
+                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'node:' needs node-IDs, e.g. node:5,6");
                 return std::nullopt;
             }
         } else if (key == u"svc" || key == u"service") {
             for (const QString& v : values)
                 if (!addServices(v, f.services)) {
-                    if (error) *error = QStringLiteral("filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)").arg(v);
+                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)").arg(v);
                     return std::nullopt;
                 }
             if (values.isEmpty()) {
-                if (error) *error = QStringLiteral("filter: 'svc:' needs service names, e.g. svc:sdo,emcy");
+                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'svc:' needs service names, e.g. svc:sdo,emcy");
                 return std::nullopt;
             }
         } else if (key == u"id" || key == u"cobid") {
@@ -84,13 +86,13 @@ std::optional<TraceFilter> TraceFilter::parse(const QString& query, QString* err
                 uint32_t lo = 0, hi = 0;
                 const bool ok = dash < 0 ? parseId(v, &lo) && (hi = lo, true) : parseId(v.left(dash), &lo) && parseId(v.mid(dash + 1), &hi);
                 if (!ok || hi < lo) {
-                    if (error) *error = QStringLiteral("filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)").arg(v);
+                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)").arg(v);
                     return std::nullopt;
                 }
                 f.idRanges.emplace_back(lo, hi);
             }
             if (values.isEmpty()) {
-                if (error) *error = QStringLiteral("filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF");
+                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF");
                 return std::nullopt;
             }
         } else {
@@ -134,7 +136,7 @@ std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const Tra
 }
 
 FilterJob::FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder, bool groupSdo)
-    : Job(filter.isEmpty() ? QStringLiteral("Grouping SDO transfers") : QStringLiteral("Filtering")),
+    : Job(filter.isEmpty() ? QCoreApplication::translate("TraceFilter", "Grouping SDO transfers") : QCoreApplication::translate("TraceFilter", "Filtering")),
       store_(std::move(store)),
       filter_(std::move(filter)),
       decoder_(std::move(decoder)),

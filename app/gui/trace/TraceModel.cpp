@@ -457,7 +457,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     if (kind == RowKind::Transfer) {
         const auto g = static_cast<uint32_t>(groupAt(index.row()));
         const TraceRecord& r = store_->record(n);
-        if (role == Qt::ToolTipRole) return col == Number ? QStringLiteral("Click to expand or collapse the transfer's frames") : groupText(g).summary;
+        if (role == Qt::ToolTipRole) return col == Number ? tr("Click to expand or collapse the transfer's frames") : groupText(g).summary;
         if (role == Qt::DisplayRole) {
             switch (col) {
             case Number: return (isExpanded(g) ? QStringLiteral("▾ ") : QStringLiteral("▸ ")) + QString::number(qulonglong(n) + 1);
@@ -513,7 +513,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
         if (r.flags & CanFrame::Error) return QStringLiteral("ERROR");
         return canopen::serviceName(canopen::classifyCobId(r.id, r.flags & CanFrame::Extended).service);
     }
-    case Direction: return (r.flags & CanFrame::Tx) ? QStringLiteral("Tx") : QStringLiteral("Rx");
+    case Direction: return (r.flags & CanFrame::Tx) ? QStringLiteral("Tx") : QStringLiteral("Rx");  // as in the CAN tools and manuals
     case Length: return r.len;
     case Data: {
         if (r.flags & CanFrame::Remote) return QStringLiteral("RTR");
@@ -529,13 +529,16 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
     if (section == Time) {
         switch (timeMode_) {
-        case TimeMode::Absolute: return QStringLiteral("Time");
-        case TimeMode::Relative: return QStringLiteral("Time (s)");
-        case TimeMode::Delta: return QStringLiteral("Δt (s)");
+        case TimeMode::Absolute: return tr("Time");
+        case TimeMode::Relative: return tr("Time (s)");
+        //: Trace column: time since the previous frame, in seconds
+        case TimeMode::Delta: return tr("Δt (s)");
         }
     }
-    static const char* const names[] = {"No.", "Time", "Bus", "COB-ID", "Node", "Service", "Dir", "Len", "Data", "Summary"};
-    return section >= 0 && section < ColumnCount ? QString::fromLatin1(names[section]) : QVariant();
+    //: Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary
+    static const char* const names[] = {QT_TR_NOOP("No."),     QT_TR_NOOP("Time"), QT_TR_NOOP("Bus"), QT_TR_NOOP("COB-ID"), QT_TR_NOOP("Node"),
+                                        QT_TR_NOOP("Service"), QT_TR_NOOP("Dir"),  QT_TR_NOOP("Len"), QT_TR_NOOP("Data"),   QT_TR_NOOP("Summary")};
+    return section >= 0 && section < ColumnCount ? tr(names[section]) : QVariant();
 }
 
 }  // namespace coscope::gui

@@ -6,6 +6,7 @@
 #include "app/gui/wizards/pdo/PdoWizard.h"
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QMenu>
 #include <QWidget>
 
@@ -14,12 +15,14 @@ namespace coscope::gui {
 const std::vector<WizardEntry>& wizardEntries() {
     // One line per wizard.
     static const std::vector<WizardEntry> entries = {
-        {QStringLiteral("nodeid"), QStringLiteral("Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); }},
-        {QStringLiteral("ds402"), QObject::tr("CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); }},
-        {QStringLiteral("pdo"), QStringLiteral("PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); }},
+        {QStringLiteral("nodeid"), QT_TRANSLATE_NOOP("WizardMenu", "Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); }},
+        {QStringLiteral("ds402"), QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); }},
+        {QStringLiteral("pdo"), QT_TRANSLATE_NOOP("WizardMenu", "PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); }},
     };
     return entries;
 }
+
+QString WizardEntry::titleText() const { return QCoreApplication::translate("WizardMenu", title); }
 
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent) {
     for (const WizardEntry& e : wizardEntries()) {
@@ -37,7 +40,7 @@ QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* 
 void fillCommissionMenu(QMenu* menu, Workspace* workspace, QWidget* parent, std::function<int()> currentNode) {
     for (const WizardEntry& e : wizardEntries()) {
         const QString id = e.id;
-        menu->addAction(e.title, parent, [=] { openWizard(id, workspace, currentNode ? currentNode() : -1, parent); });
+        menu->addAction(e.titleText(), parent, [=] { openWizard(id, workspace, currentNode ? currentNode() : -1, parent); });
     }
 }
 

@@ -16,6 +16,7 @@
 #include <QVBoxLayout>
 
 #include <deque>
+#include <QCoreApplication>
 
 namespace coscope::gui {
 
@@ -72,11 +73,11 @@ public:
     QVariant headerData(int section, Qt::Orientation o, int role) const override {
         if (o != Qt::Horizontal || role != Qt::DisplayRole) return {};
         switch (section) {
-        case Time: return QStringLiteral("Time (s)");
-        case Direction: return QStringLiteral("Dir");
+        case Time: return QCoreApplication::translate("WizardFramesPane", "Time (s)");
+        case Direction: return QCoreApplication::translate("WizardFramesPane", "Dir");
         case CobId: return QStringLiteral("COB-ID");
-        case Data: return QStringLiteral("Data");
-        case Summary: return QStringLiteral("Meaning");
+        case Data: return QCoreApplication::translate("WizardFramesPane", "Data");
+        case Summary: return QCoreApplication::translate("WizardFramesPane", "Meaning");
         default: return {};
         }
     }

@@ -4,12 +4,14 @@
 #include "core/canopen/Emcy.h"
 #include "dissectors/VendorTable.h"
 
+#include <QCoreApplication>
+
 namespace coscope::gui {
 
 QString Ds402Fault::text() const {
-    QString out = QStringLiteral("Error code (603Fh) %1h").arg(QStringLiteral("%1").arg(errorCode, 4, 16, QChar(u'0')).toUpper());
+    QString out = QCoreApplication::translate("Ds402FaultText", "Error code (603Fh) %1h").arg(QStringLiteral("%1").arg(errorCode, 4, 16, QChar(u'0')).toUpper());
     if (!ciaText.isEmpty()) out += QStringLiteral(": ") + ciaText;
-    if (!vendorAlarm.isEmpty()) out += QStringLiteral(" — vendor alarm ") + vendorAlarm;
+    if (!vendorAlarm.isEmpty()) out += QCoreApplication::translate("Ds402FaultText", " — vendor alarm ") + vendorAlarm;
     return out;
 }
 
@@ -27,7 +29,7 @@ Ds402Fault describeDs402Fault(const QString& dictionary, uint16_t errorCode, uin
             f.vendorAlarm = it->code + QStringLiteral(" ") + it->text;
             return f;
         }
-        f.vendorAlarm = QStringLiteral("alarm number 0x%1 (not in the %2 table)").arg(history1003 >> 16, 4, 16, QChar(u'0')).arg(table->name);
+        f.vendorAlarm = QCoreApplication::translate("Ds402FaultText", "alarm number 0x%1 (not in the %2 table)").arg(history1003 >> 16, 4, 16, QChar(u'0')).arg(table->name);
         return f;
     }
     // Without the history: the alarm whose error code is this one, when only one has it.

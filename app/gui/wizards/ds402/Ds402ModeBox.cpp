@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/ds402/Ds402ModeBox.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Ds402.h"
 
 #include <QComboBox>
@@ -38,7 +40,7 @@ void Ds402ModeBox::forget(bool label) {
 bool Ds402ModeBox::setSupported(uint32_t supported) {
     combo_->clear();
     for (int8_t m : {1, 3, 4, 6, 7, 8, 9, 10})
-        if (canopen::ds402::modeSupported(supported, m)) combo_->addItem(canopen::ds402::modeName(m), int(m));
+        if (canopen::ds402::modeSupported(supported, m)) combo_->addItem(coreText(canopen::ds402::modeName(m)), int(m));
     const bool wasRead = read_;
     read_ = false;  // as read anew: the box shows the drive's mode
     return wasRead;
@@ -48,7 +50,7 @@ bool Ds402ModeBox::showDriveMode(int8_t mode) {
     const bool changed = !read_ || mode != driveMode_;
     driveMode_ = mode;
     read_ = true;
-    const QString name = canopen::ds402::modeName(mode);
+    const QString name = coreText(canopen::ds402::modeName(mode));
     shown_->setText(tr("Shown by the drive (6061h): %1").arg(name));
     if (!changed) return false;  // a choice not yet applied stays until the drive's mode changes
     // The drive's own mode, its name as placeholder when it is not offered.
@@ -57,7 +59,7 @@ bool Ds402ModeBox::showDriveMode(int8_t mode) {
     return true;
 }
 
-void Ds402ModeBox::showVerified(int8_t mode) { shown_->setText(tr("Shown by the drive (6061h): %1 ✓").arg(canopen::ds402::modeName(mode))); }
+void Ds402ModeBox::showVerified(int8_t mode) { shown_->setText(tr("Shown by the drive (6061h): %1 ✓").arg(coreText(canopen::ds402::modeName(mode)))); }
 
 std::optional<int8_t> Ds402ModeBox::chosen() const {
     if (combo_->currentIndex() < 0) return std::nullopt;

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include <QPainter>
 #include <QPainterPath>
 #include <QtMath>
+
+#include <QCoreApplication>
 
 namespace coscope::gui {
 
@@ -134,7 +138,7 @@ void Ds402StateDiagram::paintEvent(QPaintEvent*) {
         arrow(p, QPointF(xr, ymid), QPointF(sod.right(), sod.bottom() - 2), QStringLiteral("12"), on, {10, 12});
     }
     // Fault: 13 (from any state), 14, 15.
-    arrow(p, QPointF(fr.center().x(), 2), QPointF(fr.center().x(), fr.top()), QStringLiteral("13 any fault"), false);
+    arrow(p, QPointF(fr.center().x(), 2), QPointF(fr.center().x(), fr.top()), QCoreApplication::translate("Ds402StateDiagram", "13 any fault"), false);
     arrow(p, QPointF(fr.center().x(), fr.bottom()), QPointF(fa.center().x(), fa.top()), QStringLiteral("14"), lit(14));
     arrow(p, QPointF(fa.left(), fa.center().y()), QPointF(sod.right(), sod.center().y()), QStringLiteral("15"), lit(15), {-8, -8});
 
@@ -153,7 +157,7 @@ void Ds402StateDiagram::paintEvent(QPaintEvent*) {
         f.setBold(current);
         p.setFont(f);
         p.setPen(current && (fault || s == State::OperationEnabled) ? Qt::white : palette().text().color());
-        p.drawText(r, Qt::AlignCenter | Qt::TextWordWrap, canopen::ds402::stateName(s));
+        p.drawText(r, Qt::AlignCenter | Qt::TextWordWrap, coreText(canopen::ds402::stateName(s)));
     }
     if (state_ == State::Unknown) {
         p.setPen(palette().placeholderText().color());

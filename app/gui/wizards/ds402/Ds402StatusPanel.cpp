@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Ds402.h"
 #include "core/od/NumberNotation.h"
 
@@ -25,8 +27,8 @@ Ds402StatusPanel::Ds402StatusPanel(QWidget* parent) : QWidget(parent) {
     grid->setVerticalSpacing(1);
     for (int bit = 0; bit < 16; ++bit) {
         lamps_[bit] = new QLabel(QStringLiteral("●"), this);
-        names_[bit] = new QLabel(QStringLiteral("%1  %2").arg(bit, 2).arg(canopen::ds402::statuswordBitName(bit)), this);
-        const QString meaningOn = canopen::ds402::statuswordBitMeaning(bit, true), meaningOff = canopen::ds402::statuswordBitMeaning(bit, false);
+        names_[bit] = new QLabel(QStringLiteral("%1  %2").arg(bit, 2).arg(coreText(canopen::ds402::statuswordBitName(bit))), this);
+        const QString meaningOn = coreText(canopen::ds402::statuswordBitMeaning(bit, true)), meaningOff = coreText(canopen::ds402::statuswordBitMeaning(bit, false));
         names_[bit]->setToolTip(QStringLiteral("%1%2").arg(meaningOn.isEmpty() ? QString() : tr("On: ") + meaningOn + QStringLiteral("\n"),
                                                            meaningOff.isEmpty() ? QString() : tr("Off: ") + meaningOff));
         const int col = bit < 8 ? 0 : 2;
@@ -63,7 +65,7 @@ void Ds402StatusPanel::update(int bit) {
 void Ds402StatusPanel::setStatusword(uint16_t sw) {
     sw_ = sw;
     known_ = true;
-    word_->setText(tr("Statusword (6041h) = %1 — %2").arg(od::hexText(sw, 4), canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw))));
+    word_->setText(tr("Statusword (6041h) = %1 — %2").arg(od::hexText(sw, 4), coreText(canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw)))));
     for (int b = 0; b < 16; ++b) update(b);
 }
 
@@ -85,7 +87,7 @@ void Ds402StatusPanel::setFaultText(const QString& text) {
 
 QString Ds402StatusPanel::bitText(int bit) const {
     if (bit < 0 || bit > 15) return {};
-    return QStringLiteral("%1 %2: %3").arg(bit).arg(canopen::ds402::statuswordBitName(bit), !known_ ? QStringLiteral("?") : (sw_ & (1u << bit)) ? QStringLiteral("on") : QStringLiteral("off"));
+    return QStringLiteral("%1 %2: %3").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit)), !known_ ? QStringLiteral("?") : (sw_ & (1u << bit)) ? QStringLiteral("on") : QStringLiteral("off"));
 }
 
 QString Ds402StatusPanel::faultText() const { return fault_->text(); }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/ds402/Ds402StepBar.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -25,7 +27,7 @@ QString ds402StepExplanation(Command c) {
     case Command::EnableOperation:
         return QObject::tr("Enable operation (transition 4): energises the motor, which then holds its position and follows commands. "
                            "Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.");
-    default: return canopen::ds402::commandName(c);
+    default: return coreText(canopen::ds402::commandName(c));
     }
 }
 
@@ -73,7 +75,7 @@ void Ds402StepBar::explain(State s, bool cia402) {
     else if (s == State::OperationEnabled) next_->setText(tr("The drive is enabled (Operation enabled). Choose a mode and try a test move, or press Disable."));
     else if (s == State::QuickStopActive) next_->setText(tr("Quick stop is active: press Disable to leave it (Disable voltage, transition 12)."));
     else if (next) next_->setText(tr("Next: %1").arg(ds402StepExplanation(*next)));
-    else next_->setText(tr("The drive is in %1; wait for it to settle, then read the state again.").arg(canopen::ds402::stateName(s)));
+    else next_->setText(tr("The drive is in %1; wait for it to settle, then read the state again.").arg(coreText(canopen::ds402::stateName(s))));
 }
 
 void Ds402StepBar::setNote(const QString& text) { next_->setText(text); }

@@ -3,6 +3,8 @@
 // and the disable on close, quit or a lost connection.
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/SdoClient.h"
 
 #include "app/gui/session/Workspace.h"
@@ -63,7 +65,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
     }
     busy_ = true;
     sentCommands_ = true;
-    const QString name = canopen::ds402::commandName(command);
+    const QString name = coreText(canopen::ds402::commandName(command));
     setMessage(tr("%1: sending… (%2)").arg(name, ds402StepExplanation(command)));
     updateButtons();
     QPointer<Ds402Wizard> self(this);
@@ -72,7 +74,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         if (r.ok) {
             self->busy_ = false;
             self->showState(r.state, r.statusword);
-            self->setMessage(tr("%1 done: the drive is now in %2 (statusword %3h).").arg(name, canopen::ds402::stateName(r.state), hex4(r.statusword)));
+            self->setMessage(tr("%1 done: the drive is now in %2 (statusword %3h).").arg(name, coreText(canopen::ds402::stateName(r.state)), hex4(r.statusword)));
             self->poll_->start();  // the next idle read one full interval from now
             emit self->stepFinished(true);
             return;
@@ -88,7 +90,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
             self->settleFaultReaction(d0, 0, [self, text, command](const Ds402Result& d) {
                 if (!self) return;
                 self->busy_ = false;
-                QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(canopen::ds402::stateName(d.state))
+                QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(coreText(canopen::ds402::stateName(d.state)))
                                          : tr("\nDISABLING FAILED: %1").arg(d.error));
                 if (d.ok) self->showState(d.state, d.statusword);
                 self->reading_ = true;
@@ -132,12 +134,12 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         return false;
     }
     if (supported_ && !canopen::ds402::modeSupported(*supported_, mode)) {
-        if (why) *why = tr("The drive does not list %1 as supported (6502h = %2h).").arg(canopen::ds402::modeName(mode)).arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
+        if (why) *why = tr("The drive does not list %1 as supported (6502h = %2h).").arg(coreText(canopen::ds402::modeName(mode))).arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
         return false;
     }
     busy_ = true;
     updateButtons();
-    setMessage(tr("Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…").arg(mode).arg(canopen::ds402::modeName(mode)));
+    setMessage(tr("Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…").arg(mode).arg(coreText(canopen::ds402::modeName(mode))));
     QPointer<Ds402Wizard> self(this);
     ctl_->setMode(mode, [self, mode](const Ds402Result& r) {
         if (!self) return;
@@ -145,9 +147,9 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         if (r.ok) {
             self->showDriveMode(r.mode);
             self->mode_->showVerified(r.mode);
-            self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.").arg(canopen::ds402::modeName(r.mode)));
+            self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.").arg(coreText(canopen::ds402::modeName(r.mode))));
         } else {
-            self->setMessage(tr("Could not set %1: %2").arg(canopen::ds402::modeName(mode), r.error), true);
+            self->setMessage(tr("Could not set %1: %2").arg(coreText(canopen::ds402::modeName(mode)), r.error), true);
         }
         self->updateButtons();
         emit self->modeFinished(r.ok);
@@ -275,7 +277,7 @@ void Ds402Wizard::disableDrive() {
 void Ds402Wizard::showStopped(const Ds402Result& r, const QString& doneText, const QString& what) {
     if (r.ok) {
         showState(r.state, r.statusword);
-        setMessage(doneText.arg(canopen::ds402::stateName(r.state)));
+        setMessage(doneText.arg(coreText(canopen::ds402::stateName(r.state))));
     } else {
         setMessage(tr("%1: %2").arg(what, r.error), true);
     }
@@ -289,7 +291,7 @@ canopen::CommandScript Ds402Wizard::dryRun() {
     tabs_->showDryRun(script);
     setMessage(tr("Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them for coscope-cli script run.", nullptr,
                   int(script.steps.size()))
-                   .arg(canopen::ds402::stateName(state_)));
+                   .arg(coreText(canopen::ds402::stateName(state_))));
     return script;
 }
 

@@ -2,6 +2,8 @@
 // The CiA 402 wizard: choosing the drive and reading its state (6041h, 6061h, 6502h, 603Fh).
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/SdoClient.h"
 #include "eds/DictionaryLibrary.h"
 
@@ -318,7 +320,7 @@ void Ds402Wizard::fillModes() {
 }
 
 void Ds402Wizard::showDriveMode(int8_t mode) {
-    status_->setModeText(tr("Mode of operation (6061h): %1").arg(canopen::ds402::modeName(mode)));
+    status_->setModeText(tr("Mode of operation (6061h): %1").arg(coreText(canopen::ds402::modeName(mode))));
     if (!mode_->showDriveMode(mode)) return;
     // The test move follows the kind the drive's mode runs (PV: jog, PP: short move).
     if (mode == 3) move_->setKind(Ds402TestMove::Kind::Jog);

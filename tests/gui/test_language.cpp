@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The UI in Chinese (issue #17): the main window and the three commissioning wizards show no
+// label, button, menu entry, tab, dock title or column header whose text is still its English
+// source, in zh_TW and in zh_CN; View ▸ Language switches at once, by mouse clicks, and switching
+// back and forth leaves no text of the previous language.
+#include "app/gui/MainWindow.h"
+#include "app/gui/language/Language.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/WizardMenu.h"
+#include "eds/SimulatorDictionaries.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QDockWidget>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPointer>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTabBar>
+#include <QTextDocumentFragment>
+#include <QtTest>
+
+#include "tests/gui/WaitFor.h"
+
+using namespace coscope;
+using namespace coscope::gui;
+using coscope::testing::waitFor;
+
+namespace {
+
+const QString kNet = QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:dexmart-dev,4:generic-cia402");
+
+// Texts that are the same in every language: names, abbreviations the manuals keep in Latin
+// letters, units. Numbers and texts without two Latin letters in a row are never compared.
+const QStringList kSame = {
+    QStringLiteral("CoScope"),   QStringLiteral("English"), QStringLiteral("sim://"), QStringLiteral("Delta ASDA-A2"),
+    QStringLiteral("AIMOTOR"),   QStringLiteral("DEXMART"), QStringLiteral("COB-ID"), QStringLiteral("SDO"),
+    QStringLiteral("PDO"),       QStringLiteral("NMT"),     QStringLiteral("EMCY"),   QStringLiteral("SYNC"),
+    QStringLiteral("ms"),        QStringLiteral("rpm"),     QStringLiteral("Hz"),     QStringLiteral("Rx"),
+    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
+};
+
+struct Text {
+    QString text, where;
+};
+
+QString plain(QString s) {
+    if (Qt::mightBeRichText(s)) s = QTextDocumentFragment::fromHtml(s).toPlainText();
+    s.remove(u'&');
+    if (int tab = s.indexOf(u'\t'); tab >= 0) s.truncate(tab);  // a menu entry's shortcut
+    return s.trimmed();
+}
+
+QString name(const QObject* o) {
+    return QStringLiteral("%1 '%2'").arg(QString::fromLatin1(o->metaObject()->className()), o->objectName());
+}
+
+void menuTexts(const QMenu* menu, QList<Text>& out) {
+    out.append({plain(menu->title()), name(menu)});
+    for (const QAction* a : menu->actions()) {
+        if (a->isSeparator() && a->text().isEmpty()) continue;
+        if (a->isVisible()) out.append({plain(a->text()), QStringLiteral("menu %1 entry").arg(plain(menu->title()))});
+        if (a->menu()) menuTexts(a->menu(), out);
+    }
+}
+
+// What the user reads in `window`: visible labels, buttons, group titles, tabs, dock titles,
+// column headers, and every entry of its menus.
+QList<Text> visibleTexts(QWidget* window) {
+    QList<Text> out{{plain(window->windowTitle()), QStringLiteral("window title")}};
+    for (QLabel* l : window->findChildren<QLabel*>())
+        if (l->isVisible()) out.append({plain(l->text()), name(l)});
+    for (QAbstractButton* b : window->findChildren<QAbstractButton*>())
+        if (b->isVisible()) out.append({plain(b->text()), name(b)});
+    for (QGroupBox* g : window->findChildren<QGroupBox*>())
+        if (g->isVisible()) out.append({plain(g->title()), name(g)});
+    for (QTabBar* t : window->findChildren<QTabBar*>())
+        if (t->isVisible())
+            for (int i = 0; i < t->count(); ++i) out.append({plain(t->tabText(i)), name(t)});
+    for (QDockWidget* d : window->findChildren<QDockWidget*>())
+        if (d->isVisible()) out.append({plain(d->windowTitle()), name(d)});
+    for (QHeaderView* h : window->findChildren<QHeaderView*>())
+        if (h->isVisible() && h->model())
+            for (int i = 0; i < h->count(); ++i)
+                if (!h->isSectionHidden(i)) out.append({plain(h->model()->headerData(i, h->orientation()).toString()), name(h->parent())});
+    if (auto* mw = qobject_cast<QMainWindow*>(window))
+        for (const QMenu* m : mw->menuBar()->findChildren<QMenu*>(Qt::FindDirectChildrenOnly)) menuTexts(m, out);
+    return out;
+}
+
+bool compared(const QString& t) {
+    static const QRegularExpression word(QStringLiteral("[A-Za-z]{2,}"));
+    // A bus URL or file name is data, the same in every language.
+    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://"));
+}
+
+// Texts of `now` that are in `english` (what the same window showed in English).
+QStringList stillEnglish(const QList<Text>& now, const QList<Text>& english) {
+    QSet<QString> en;
+    for (const Text& t : english) en.insert(t.text);
+    QStringList out;
+    for (const Text& t : now)
+        if (compared(t.text) && en.contains(t.text)) out << QStringLiteral("%1: \"%2\"").arg(t.where, t.text);
+    out.removeDuplicates();
+    for (const QString& line : out) qInfo("still English: %s", qPrintable(line));
+    return out;
+}
+
+QStringList withChinese(const QList<Text>& now) {
+    static const QRegularExpression han(QStringLiteral("\\p{Han}"));
+    QStringList out;
+    for (const Text& t : now)
+        if (t.text.contains(han) && !t.where.startsWith(QLatin1String("menu ")) ) out << QStringLiteral("%1: \"%2\"").arg(t.where, t.text);
+    out.removeDuplicates();
+    return out;
+}
+
+QMenu* languageMenu(MainWindow& w) { return w.menuBar()->findChild<QMenu*>(QStringLiteral("languageMenu")); }
+
+// View ▸ Language ▸ `code` by mouse: the menu bar title, the submenu entry, the language.
+bool chooseLanguage(MainWindow& w, const QString& code) {
+    QMenu* lang = languageMenu(w);
+    if (!lang) return false;
+    auto* view = qobject_cast<QMenu*>(lang->parent());
+    QMenuBar* bar = w.menuBar();
+    QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(view->menuAction()).center());
+    if (!waitFor([&] { return view->isVisible(); }, 3000)) return false;
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->actionGeometry(lang->menuAction()).center());
+    if (!waitFor([&] { return lang->isVisible(); }, 3000)) return false;
+    QAction* target = lang->findChild<QAction*>(QStringLiteral("language-") + code);
+    if (!target || !target->isEnabled()) return false;
+    QTest::mouseClick(lang, Qt::LeftButton, {}, lang->actionGeometry(target).center());
+    return waitFor([&] { return language::current() == code && languageMenu(w) != lang; }, 5000);
+}
+
+QWidget* openAndSettle(MainWindow& w, const QString& id) {
+    QWidget* wiz = openWizard(id, w.workspace(), 1, &w);
+    if (!wiz || !QTest::qWaitForWindowExposed(wiz)) return nullptr;
+    QTest::qWait(800);  // the first reads of the drive are shown
+    return wiz;
+}
+
+void closeWizard(QWidget* wiz) {
+    QPointer<QWidget> p(wiz);
+    wiz->close();
+    waitFor([&] { return p.isNull() || !p->isVisible(); }, 5000);
+    QTest::qWait(100);
+}
+
+}  // namespace
+
+class TestLanguage : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        eds::installSimulatorDictionaries();
+        QSettings().clear();
+        language::apply(QStringLiteral("en"));
+    }
+
+    void chineseEverywhereAndSwitchingLeavesNoStaleText() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.connectBus(kNet));
+        QVERIFY(waitFor([&] { return w.workspace()->nodes().snapshot().size() >= 4; }, 15000));
+        QTest::qWait(500);
+
+        const QStringList ids{QStringLiteral("ds402"), QStringLiteral("pdo"), QStringLiteral("nodeid")};
+        const QList<Text> englishMain = visibleTexts(&w);
+        QMap<QString, QList<Text>> englishWizard;
+        for (const QString& id : ids) {
+            QWidget* wiz = openAndSettle(w, id);
+            QVERIFY2(wiz, qPrintable(id));
+            englishWizard[id] = visibleTexts(wiz);
+            closeWizard(wiz);
+        }
+
+        for (const QString& code : {QStringLiteral("zh_TW"), QStringLiteral("zh_CN")}) {
+            QVERIFY2(chooseLanguage(w, code), qPrintable(code));
+            QTest::qWait(300);
+            QCOMPARE(w.workspace()->bus() != nullptr, true);  // the connection stays
+            const QStringList main = stillEnglish(visibleTexts(&w), englishMain);
+            QVERIFY2(main.isEmpty(), qPrintable(code + QStringLiteral(" main window, still English:\n") + main.join(u'\n')));
+            for (const QString& id : ids) {
+                QWidget* wiz = openAndSettle(w, id);
+                QVERIFY2(wiz, qPrintable(id));
+                const QStringList left = stillEnglish(visibleTexts(wiz), englishWizard[id]);
+                closeWizard(wiz);
+                QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1 wizard %2, still English:\n%3").arg(code, id, left.join(u'\n'))));
+            }
+        }
+        // Back to English: no Chinese left (the Language menu names each language in its own script).
+        QVERIFY(chooseLanguage(w, QStringLiteral("en")));
+        QTest::qWait(300);
+        const QStringList stale = withChinese(visibleTexts(&w));
+        QVERIFY2(stale.isEmpty(), qPrintable(QStringLiteral("Chinese left after switching to English:\n") + stale.join(u'\n')));
+        QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("en"));
+    }
+};
+
+QTEST_MAIN(TestLanguage)
+#include "test_language.moc"
