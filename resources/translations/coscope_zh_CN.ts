@@ -56,12 +56,12 @@
     <message>
         <location line="+1" />
         <source>Estimated from frame lengths with worst-case bit stuffing at %1 bit/s</source>
-        <translation>依帧长度估算，以最坏情况的位填充、%1 bit/s 计算</translation>
+        <translation>按帧长度估算，以最坏情况的位填充、%1 bit/s 计算</translation>
     </message>
     <message>
         <location line="+1" />
         <source>dropped %L1</source>
-        <translation>遗失 %L1</translation>
+        <translation>丢失 %L1</translation>
     </message>
     <message>
         <location line="+2" />
@@ -180,12 +180,12 @@
     <message>
         <location line="+1" />
         <source>Port:</source>
-        <translation>连接端口：</translation>
+        <translation>端口：</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Channel:</source>
-        <translation>信道：</translation>
+        <translation>通道：</translation>
     </message>
     <message>
         <location line="+7" />
@@ -310,17 +310,17 @@
     <message>
         <location line="+1" />
         <source>%1 is up (virtual CAN)</source>
-        <translation>%1 已激活（虚拟 CAN）</translation>
+        <translation>%1 已启用（虚拟 CAN）</translation>
     </message>
     <message>
         <location line="+1" />
         <source>%1 is up at %L2 kbit/s</source>
-        <translation>%1 已激活，波特率 %L2 kbit/s</translation>
+        <translation>%1 已启用，波特率 %L2 kbit/s</translation>
     </message>
     <message>
         <location line="+0" />
         <source>%1 is up</source>
-        <translation>%1 已激活</translation>
+        <translation>%1 已启用</translation>
     </message>
     <message>
         <location line="+1" />
@@ -355,22 +355,22 @@
     <message>
         <location line="+10" />
         <source>To change its bit rate, run:</source>
-        <translation>要变更其波特率，请运行：</translation>
+        <translation>要更改其波特率，请运行：</translation>
     </message>
     <message>
         <location line="+0" />
         <source>Bring it up with:</source>
-        <translation>以下列指令激活：</translation>
+        <translation>以下列指令启用：</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Change bit rate now</source>
-        <translation>立即变更波特率</translation>
+        <translation>立即更改波特率</translation>
     </message>
     <message>
         <location line="+0" />
         <source>Bring up now</source>
-        <translation>立即激活</translation>
+        <translation>立即启用</translation>
     </message>
     <message>
         <location line="+7" />
@@ -406,7 +406,7 @@
     <message>
         <location line="+2" />
         <source>Write %1 object(s) from &lt;b&gt;%2&lt;/b&gt; to &lt;b&gt;node %3&lt;/b&gt; over SDO? Each write is sent once; a refused write is reported and the others continue. %4 entries are not written (greyed).</source>
-        <translation>要通过 SDO 将 &lt;b&gt;%2&lt;/b&gt; 的 %1 个对象写入 &lt;b&gt;节点 %3&lt;/b&gt; 吗？每笔写入只送出一次；被拒绝的写入会报告，其余照常进行。有 %4 个项目不会写入（灰色显示）。</translation>
+        <translation>要通过 SDO 将 &lt;b&gt;%2&lt;/b&gt; 的 %1 个对象写入 &lt;b&gt;节点 %3&lt;/b&gt; 吗？每次写入只发送一次；被拒绝的写入会报告，其余照常进行。有 %4 个项目不会写入（灰色显示）。</translation>
     </message>
     <message>
         <location line="+8" />
@@ -426,7 +426,7 @@
     <message>
         <location line="+0" />
         <source>Node now / result</source>
-        <translation>节点目前值／结果</translation>
+        <translation>节点当前值／结果</translation>
     </message>
     <message>
         <location line="+2" />
@@ -451,12 +451,12 @@
     <message>
         <location line="+7" />
         <source>Node %1: %2 of %3 write(s) done, %4 refused%5.</source>
-        <translation>节点 %1：完成 %2／%3 笔写入，%4 笔被拒绝%5。</translation>
+        <translation>节点 %1：完成 %2／%3 次写入，%4 次被拒绝%5。</translation>
     </message>
     <message>
         <location line="+2" />
         <source>, cancelled before the rest</source>
-        <translation>，其余在取消前未送出</translation>
+        <translation>，其余在取消前未发送</translation>
     </message>
     <message>
         <location line="+2" />
@@ -469,12 +469,12 @@
     <message>
         <location filename="../../app/gui/wizards/ds402/Ds402FramesTabs.cpp" line="+13" />
         <source>Frames (requests and responses)</source>
-        <translation>帧（请求与回应）</translation>
+        <translation>帧（请求与响应）</translation>
     </message>
     <message>
         <location line="+5" />
         <source>Dry run (what will be sent)</source>
-        <translation>仿真运行（将送出的内容）</translation>
+        <translation>模拟运行（将发送的内容）</translation>
     </message>
 </context>
 <context>
@@ -559,7 +559,7 @@
         <location filename="../../app/gui/wizards/ds402/Ds402StatusPanel.cpp" line="+17" />
         <location line="+56" />
         <source>Statusword (6041h): not read</source>
-        <translation>状态字符（6041h）：未读取</translation>
+        <translation>状态字（6041h）：未读取</translation>
     </message>
     <message>
         <location line="-43" />
@@ -574,7 +574,7 @@
     <message>
         <location line="+35" />
         <source>Statusword (6041h) = %1 — %2</source>
-        <translation>状态字符（6041h）= %1 — %2</translation>
+        <translation>状态字（6041h）= %1 — %2</translation>
     </message>
 </context>
 <context>
@@ -723,7 +723,7 @@
     <message>
         <location line="+3" />
         <source>The connection changed. Choose the drive again.</source>
-        <translation>连接已变更。请重新选择驱动器。</translation>
+        <translation>连接已更改。请重新选择驱动器。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -758,7 +758,7 @@
     <message>
         <location line="+5" />
         <source>Statusword bits</source>
-        <translation>状态字符位</translation>
+        <translation>状态字位</translation>
     </message>
     <message>
         <location line="+53" />
@@ -774,7 +774,7 @@
     <message>
         <location line="+4" />
         <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
-        <translation>依驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
+        <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -790,12 +790,12 @@
     <message>
         <location line="+2" />
         <source>Dry run</source>
-        <translation>仿真运行</translation>
+        <translation>模拟运行</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Show the exact SDO sequence of the enable, without sending anything.</source>
-        <translation>显示使能过程完整的 SDO 顺序，不送出任何内容。</translation>
+        <translation>显示使能过程完整的 SDO 顺序，不发送任何内容。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -825,7 +825,7 @@
     <message>
         <location line="+1" />
         <source>Node %1 is not being read: press “Read state” to read it again.</source>
-        <translation>节点 %1 目前未被读取：请按“读取状态”重新读取。</translation>
+        <translation>节点 %1 当前未被读取：请按“读取状态”重新读取。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -847,7 +847,7 @@
         <location line="+76" />
         <location line="+72" />
         <source>Wait for the current step to finish.</source>
-        <translation>请等目前步骤完成。</translation>
+        <translation>请等当前步骤完成。</translation>
     </message>
     <message>
         <location line="-144" />
@@ -861,16 +861,16 @@
 Make sure the machine is safe to move and people are clear.
 
 Send 6040h = 000Fh now?</source>
-        <translation>运行使能会让节点 %1 的电机通电：电机会保持位置并依命令动作。
+        <translation>运行使能会让节点 %1 的电机通电：电机会保持位置并按命令动作。
 
 请确认设备可以安全移动，且人员已离开。
 
-现在送出 6040h = 000Fh？</translation>
+现在发送 6040h = 000Fh？</translation>
     </message>
     <message>
         <location line="+2" />
         <source>Enable operation was not confirmed; nothing was sent.</source>
-        <translation>未确认运行使能；没有送出任何内容。</translation>
+        <translation>未确认运行使能；没有发送任何内容。</translation>
     </message>
     <message>
         <location line="+6" />
@@ -880,7 +880,7 @@ Send 6040h = 000Fh now?</source>
     <message>
         <location line="+8" />
         <source>%1 done: the drive is now in %2 (statusword %3h).</source>
-        <translation>%1 完成：驱动器目前处于 %2（状态字符 %3h）。</translation>
+        <translation>%1 完成：驱动器当前处于 %2（状态字 %3h）。</translation>
     </message>
     <message>
         <location line="+7" />
@@ -892,7 +892,7 @@ Send 6040h = 000Fh now?</source>
         <source>
 The drive was sent Disable voltage (6040h = 0000h) and is now in %1.</source>
         <translation>
-已对驱动器送出 Disable voltage（6040h = 0000h），目前处于 %1。</translation>
+已对驱动器发送 Disable voltage（6040h = 0000h），当前处于 %1。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -990,7 +990,7 @@ Arm the test move?</source>
     <message>
         <location line="+3" />
         <source>Quick stop: sending 6040h = 0002h…</source>
-        <translation>快速停止：送出 6040h = 0002h…</translation>
+        <translation>快速停止：发送 6040h = 0002h…</translation>
     </message>
     <message>
         <location line="+3" />
@@ -1020,17 +1020,17 @@ Arm the test move?</source>
     <message numerus="yes">
         <location line="+10" />
         <source>Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them for coscope-cli script run.</source>
-        <translation><numerusform>仿真运行：使能进程将从 %1 起送出 %n 个步骤——实际上没有送出任何内容。“另存为脚本…”可保留这些步骤供 coscope-cli script run 使用。</numerusform></translation>
+        <translation><numerusform>模拟运行：使能进程将从 %1 起发送 %n 个步骤——实际上没有发送任何内容。“另存为脚本…”可保留这些步骤供 coscope-cli script run 使用。</numerusform></translation>
     </message>
     <message>
         <location filename="../../app/gui/wizards/ds402/Ds402WizardReading.cpp" line="+60" />
         <source>Looking for a CiA 402 drive (device type 1000h = …0192h)…</source>
-        <translation>寻找 CiA 402 驱动器（设备类型 1000h = …0192h）…</translation>
+        <translation>查找 CiA 402 驱动器（设备类型 1000h = …0192h）…</translation>
     </message>
     <message>
         <location line="+8" />
         <source>No CiA 402 drive answered yet; trying again.</source>
-        <translation>尚无 CiA 402 驱动器回应；重试中。</translation>
+        <translation>尚无 CiA 402 驱动器响应；重试中。</translation>
     </message>
     <message>
         <location line="+19" />
@@ -1082,7 +1082,7 @@ Arm the test move?</source>
     <message>
         <location line="+16" />
         <source>Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).</source>
-        <translation>节点 %1 没有状态字符 6041h：它不是 CiA 402 驱动器（%2）。</translation>
+        <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
         <location line="+3" />
@@ -1097,7 +1097,7 @@ Arm the test move?</source>
     <message>
         <location line="+16" />
         <source>%1 is %2, not %3: the drive is not in CANopen control and will ignore the controlword. Set %1 = %3 first.</source>
-        <translation>%1 为 %2，而非 %3：驱动器不在 CANopen 控制模式，会忽略控制字符。请先将 %1 设为 %3。</translation>
+        <translation>%1 为 %2，而非 %3：驱动器不在 CANopen 控制模式，会忽略控制字。请先将 %1 设为 %3。</translation>
     </message>
     <message>
         <location line="+32" />
@@ -1138,7 +1138,7 @@ Arm the test move?</source>
     <message>
         <location line="+1" />
         <source>Details</source>
-        <translation>详细数据</translation>
+        <translation>详细信息</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1202,7 +1202,7 @@ Arm the test move?</source>
     <message>
         <location line="+0" />
         <source>block</source>
-        <translation>区块</translation>
+        <translation>块</translation>
     </message>
     <message>
         <location line="+0" />
@@ -1585,7 +1585,7 @@ Arm the test move?</source>
     <message>
         <location line="+2" />
         <source>Dismiss</source>
-        <translation>略过</translation>
+        <translation>跳过</translation>
     </message>
     <message>
         <location line="+34" />
@@ -1700,7 +1700,7 @@ Arm the test move?</source>
     <message>
         <location line="+2" />
         <source>The default layout applies at the next start</source>
-        <translation>缺省布局会在下次启动时应用</translation>
+        <translation>默认布局会在下次启动时应用</translation>
     </message>
     <message>
         <location line="+10" />
@@ -1780,12 +1780,12 @@ Arm the test move?</source>
     <message>
         <location line="+7" />
         <source>%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.</source>
-        <translation>%1 以 %2 格式读取：%L3 行，%L4 帧，略过 %L5 行。</translation>
+        <translation>%1 以 %2 格式读取：%L3 行，%L4 帧，跳过 %L5 行。</translation>
     </message>
     <message>
         <location line="+2" />
         <source>%1 read as %2: %L3 frames, %L4 records skipped.</source>
-        <translation>%1 以 %2 格式读取：%L3 帧，略过 %L4 笔记录。</translation>
+        <translation>%1 以 %2 格式读取：%L3 帧，跳过 %L4 条记录。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1808,7 +1808,7 @@ Arm the test move?</source>
     <message>
         <location filename="../../app/gui/wizards/nodeid/NodeIdPages.cpp" line="+191" />
         <source>What to change</source>
-        <translation>要变更的项目</translation>
+        <translation>要更改的项目</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1833,7 +1833,7 @@ Arm the test move?</source>
     <message>
         <location line="+41" />
         <source>Change:</source>
-        <translation>变更：</translation>
+        <translation>更改：</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1853,7 +1853,7 @@ Arm the test move?</source>
     <message>
         <location line="+38" />
         <source>The drive's own parameter %1 over SDO — as its manual describes</source>
-        <translation>通过 SDO 写入驱动器自己的参数 %1——依其手册所述</translation>
+        <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
         <location line="+1" />
@@ -1871,12 +1871,12 @@ Arm the test move?</source>
     <message>
         <location line="+1" />
         <source>Pick the drive whose node-ID or baud rate (bit rate) you want to change.</source>
-        <translation>选择要变更节点 ID 或波特率（比特率）的驱动器。</translation>
+        <translation>选择要更改节点 ID 或波特率（比特率）的驱动器。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>These are the devices CoScope has seen on the bus. &lt;b&gt;Scan&lt;/b&gt; asks every node-ID 1-127 for its device type and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: &lt;b&gt;Find device without node-ID&lt;/b&gt; finds it with LSS Fastscan (CiA 305).</source>
-        <translation>以下是 CoScope 在总线上看到的设备。&lt;b&gt;扫描&lt;/b&gt;会向节点 ID 1-127 逐一查找设备类型与识别信息（SDO 读取，不变更任何内容）。没有节点 ID 的新设备（尚未 LSS 设置）不会发出任何消息：&lt;b&gt;寻找没有节点 ID 的设备&lt;/b&gt;会以 LSS Fastscan（CiA 305）找出它。</translation>
+        <translation>以下是 CoScope 在总线上看到的设备。&lt;b&gt;扫描&lt;/b&gt;会向节点 ID 1-127 逐一查找设备类型与识别信息（SDO 读取，不更改任何内容）。没有节点 ID 的新设备（尚未 LSS 设置）不会发出任何消息：&lt;b&gt;查找没有节点 ID 的设备&lt;/b&gt;会以 LSS Fastscan（CiA 305）找出它。</translation>
     </message>
     <message>
         <location line="+8" />
@@ -1901,7 +1901,7 @@ Arm the test move?</source>
     <message>
         <location line="+2" />
         <source>Find device without node-ID (LSS Fastscan)</source>
-        <translation>寻找没有节点 ID 的设备（LSS Fastscan）</translation>
+        <translation>查找没有节点 ID 的设备（LSS Fastscan）</translation>
     </message>
     <message>
         <location line="+4" />
@@ -1911,7 +1911,7 @@ Arm the test move?</source>
     <message>
         <location line="+5" />
         <source>LSS Fastscan: looking for a device without node-ID…</source>
-        <translation>LSS Fastscan：正在寻找没有节点 ID 的设备…</translation>
+        <translation>LSS Fastscan：正在查找没有节点 ID 的设备…</translation>
     </message>
     <message numerus="yes">
         <location line="+4" />
@@ -1954,22 +1954,22 @@ Arm the test move?</source>
     <message>
         <location line="+123" />
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
-        <translation>仿真运行：尚未送出任何内容。以下正是 CoScope 将要送出的内容与原因。</translation>
+        <translation>模拟运行：尚未发送任何内容。以下正是 CoScope 将要发送的内容与原因。</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Check and change</source>
-        <translation>检查并变更</translation>
+        <translation>检查并更改</translation>
     </message>
     <message>
         <location line="+5" />
         <source>Change it now</source>
-        <translation>立即变更</translation>
+        <translation>立即更改</translation>
     </message>
     <message>
         <location line="+8" />
         <source>Sending: CoScope runs the sequence below; each step turns green when the device has answered.</source>
-        <translation>发送中：CoScope 正在运行下列顺序；设备回应后该步骤会变成绿色。</translation>
+        <translation>发送中：CoScope 正在运行下列顺序；设备响应后该步骤会变成绿色。</translation>
     </message>
     <message>
         <location line="+7" />
@@ -1984,17 +1984,17 @@ Arm the test move?</source>
     <message>
         <location line="+3" />
         <source>Cannot prepare the change: %1</source>
-        <translation>无法准备变更：%1</translation>
+        <translation>无法准备更改：%1</translation>
     </message>
     <message>
         <location line="+7" />
         <source>Sent: the sequence below ran to the end. The device has its new setting.</source>
-        <translation>已送出：下列顺序已全部运行完毕。设备已应用新设置。</translation>
+        <translation>已发送：下列顺序已全部运行完毕。设备已应用新设置。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Stopped: the green steps below were sent, the red one failed, the rest was not sent.</source>
-        <translation>已停止：下列绿色步骤已送出，红色步骤失败，其余未送出。</translation>
+        <translation>已停止：下列绿色步骤已发送，红色步骤失败，其余未发送。</translation>
     </message>
     <message>
         <location line="+16" />
@@ -2017,7 +2017,7 @@ Arm the test move?</source>
     <message>
         <location line="+2" />
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. Reconnect without listen-only to use it.</source>
-        <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法变更任何设置。请取消仅监听后重新连接再使用。</translation>
+        <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法更改任何设置。请取消仅监听后重新连接再使用。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2027,12 +2027,12 @@ Arm the test move?</source>
     <message>
         <location line="+19" />
         <source>The connection was closed while the change was running. Connect again and scan to see where the device is.</source>
-        <translation>变更进行中连接被关闭。请重新连接并扫描，确认设备目前的位置。</translation>
+        <translation>更改进行中连接被关闭。请重新连接并扫描，确认设备当前的位置。</translation>
     </message>
     <message>
         <location line="+64" />
         <source>No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.</source>
-        <translation>没有无节点 ID 的设备回应（LSS Fastscan）。总线上每台设备都有节点 ID。</translation>
+        <translation>没有无节点 ID 的设备响应（LSS Fastscan）。总线上每台设备都有节点 ID。</translation>
     </message>
     <message>
         <location line="+12" />
@@ -2062,7 +2062,7 @@ Arm the test move?</source>
     <message>
         <location line="+2" />
         <source>Choose a bit rate other than the one the bus runs at now (%1).</source>
-        <translation>请选择与总线目前波特率（%1）不同的比特率。</translation>
+        <translation>请选择与总线当前波特率（%1）不同的比特率。</translation>
     </message>
     <message>
         <location line="+15" />
@@ -2078,12 +2078,12 @@ Arm the test move?</source>
     <message>
         <location line="-94" />
         <source>&lt;b&gt;How:&lt;/b&gt; LSS (layer setting services, CiA 305) picks %1 by its identity (1018h) and gives it the new setting; the device stores it itself.</source>
-        <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）依识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
+        <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
         <location line="+3" />
         <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
-        <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（依其手册所述的方式）。</translation>
+        <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
         <location line="+4" />
@@ -2098,7 +2098,7 @@ Arm the test move?</source>
     <message>
         <location line="+5" />
         <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。变更后，%3 只会以 %4 通信：其他节点在变更之前都无法与它通信。请逐一变更所有节点，之后总线就会以 %4 运作。</translation>
+        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2128,7 +2128,7 @@ Arm the test move?</source>
     <message>
         <location line="+38" />
         <source>The change is already running.</source>
-        <translation>变更已在进行中。</translation>
+        <translation>更改已在进行中。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2151,13 +2151,13 @@ Arm the test move?</source>
 The device answered: %2
 What to check: %3</source>
         <translation>停止于 %1。
-设备回应：%2
+设备响应：%2
 检查事项：%3</translation>
     </message>
     <message>
         <location line="+7" />
         <source>Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).</source>
-        <translation>完成：原本为 %1 的设备现在以节点 ID %2 回应（已在总线上报告）。</translation>
+        <translation>完成：原本为 %1 的设备现在以节点 ID %2 响应（已在总线上报告）。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2167,7 +2167,7 @@ What to check: %3</source>
     <message>
         <location line="+3" />
         <source>Done: node %1 now runs at %2 and CoScope is connected at %2. Nodes still at %3 cannot be reached at this rate: change them too, or reconnect at %3.</source>
-        <translation>完成：节点 %1 现在以 %2 运作，CoScope 也已以 %2 连接。仍为 %3 的节点在此速率下无法通信：请一并变更，或以 %3 重新连接。</translation>
+        <translation>完成：节点 %1 现在以 %2 运作，CoScope 也已以 %2 连接。仍为 %3 的节点在此速率下无法通信：请一并更改，或以 %3 重新连接。</translation>
     </message>
     <message>
         <location line="+9" />
@@ -2201,7 +2201,7 @@ What to check: %3</source>
     <message>
         <location line="+12" />
         <source>Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)</source>
-        <translation>节点 %1 现在以节点 ID %2 回应（波特率与节点 ID 向导）</translation>
+        <translation>节点 %1 现在以节点 ID %2 响应（波特率与节点 ID 向导）</translation>
     </message>
 </context>
 <context>
@@ -2265,7 +2265,7 @@ What to check: %3</source>
     <message>
         <location line="+19" />
         <source>Scan finished: %1 node(s) answered</source>
-        <translation>扫描完成：%1 个节点回应</translation>
+        <translation>扫描完成：%1 个节点响应</translation>
     </message>
     <message>
         <location line="+18" />
@@ -2285,7 +2285,7 @@ What to check: %3</source>
     <message>
         <location line="+1" />
         <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
-        <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有回应节点的识别信息</translation>
+        <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
         <location line="+21" />
@@ -2320,19 +2320,19 @@ What to check: %3</source>
         <source>Send NMT “%1” to %2?
 
 Frame: %3</source>
-        <translation>要将 NMT“%1”送给 %2 吗？
+        <translation>要将 NMT“%1”发送给 %2 吗？
 
 帧：%3</translation>
     </message>
     <message>
         <location line="+10" />
         <source>Send NMT command</source>
-        <translation>送出 NMT 指令</translation>
+        <translation>发送 NMT 指令</translation>
     </message>
     <message>
         <location line="+17" />
         <source>NMT %1 to %2 failed: %3</source>
-        <translation>对 %2 送出 NMT %1 失败：%3</translation>
+        <translation>对 %2 发送 NMT %1 失败：%3</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2342,14 +2342,14 @@ Frame: %3</source>
     <message>
         <location line="+3" />
         <source>Sent NMT %1 to %2</source>
-        <translation>已对 %2 送出 NMT %1</translation>
+        <translation>已对 %2 发送 NMT %1</translation>
     </message>
     <message>
         <location line="+50" />
         <source>Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).
 
 </source>
-        <translation>驱动器 %1 已使能（Operation enabled，状态字符 0x%2）：%3会让它突然停止；电机会失去转矩或触发通信中断处理（6007h）。%4请先停用（CiA 402 向导：停用）。
+        <translation>驱动器 %1 已使能（Operation enabled，状态字 0x%2）：%3会让它突然停止；电机会失去转矩或触发通信中断处理（6007h）。%4请先停用（CiA 402 向导：停用）。
 
 </translation>
     </message>
@@ -2381,7 +2381,7 @@ Frame: %3</source>
     <message>
         <location line="+3" />
         <source>Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?</source>
-        <translation>要从节点 ID 1–127 逐一读取对象 1000h 吗（在 601h–67Fh 送出 SDO 上传请求）？</translation>
+        <translation>要从节点 ID 1–127 逐一读取对象 1000h 吗（在 601h–67Fh 发送 SDO 上传请求）？</translation>
     </message>
     <message>
         <location line="+2" />
@@ -2539,7 +2539,7 @@ Software version (100Ah): %3</source>
     <message>
         <location line="+2" />
         <source>Only changed</source>
-        <translation>仅显示已变更</translation>
+        <translation>仅显示已更改</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2555,7 +2555,7 @@ Software version (100Ah): %3</source>
     <message>
         <location line="-393" />
         <source>Read every readable object of the node over SDO (DOMAINs are skipped)</source>
-        <translation>通过 SDO 读取节点所有可读的对象（略过 DOMAIN）</translation>
+        <translation>通过 SDO 读取节点所有可读的对象（跳过 DOMAIN）</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2610,12 +2610,12 @@ Software version (100Ah): %3</source>
     <message>
         <location line="+36" />
         <source>Copy value</source>
-        <translation>拷贝值</translation>
+        <translation>复制值</translation>
     </message>
     <message>
         <location line="+2" />
         <source>Copy error</source>
-        <translation>拷贝错误</translation>
+        <translation>复制错误</translation>
     </message>
     <message>
         <location line="+4" />
@@ -2625,7 +2625,7 @@ Software version (100Ah): %3</source>
     <message>
         <location line="+1" />
         <source>Collapse all</source>
-        <translation>全部收合</translation>
+        <translation>全部折叠</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2810,7 +2810,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+4" />
         <source>Export: wait for the running read to finish</source>
-        <translation>导出：请等待目前的读取完成</translation>
+        <translation>导出：请等待当前的读取完成</translation>
     </message>
     <message>
         <location line="+5" />
@@ -2825,7 +2825,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+2" />
         <source>Apply DCF: wait for the running read to finish</source>
-        <translation>应用 DCF：请等待目前的读取完成</translation>
+        <translation>应用 DCF：请等待当前的读取完成</translation>
     </message>
     <message>
         <location line="+5" />
@@ -2840,7 +2840,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+12" />
         <source>Reading node %1's current values of the %2 candidates in %3…</source>
-        <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的目前值…</translation>
+        <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
         <location line="+12" />
@@ -2931,7 +2931,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>This is exactly what will be sent, step by step (dry run: nothing has been sent yet). If the drive refuses a step, the wizard stops, tells you why and writes the old settings back.</source>
-        <translation>以下正是将逐步送出的内容（仿真运行：尚未送出任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
+        <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
         <location line="+4" />
@@ -2952,7 +2952,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="-26" />
         <source>Without this the new mapping is lost when the drive is switched off or reset</source>
-        <translation>若不勾选，驱动器断电或重置后新的映射就会遗失</translation>
+        <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
         <location line="+1" />
@@ -2975,7 +2975,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, e.g. commands).</source>
-        <translation>PDO（过程数据对象）是一个 CAN 报文，最多携带 8 字节的即时数值。驱动器会发送它的 TPDO（发送 PDO，例如状态与位置），并接收它的 RPDO（接收 PDO，例如命令）。</translation>
+        <translation>PDO（过程数据对象）是一个 CAN 报文，最多携带 8 字节的实时数值。驱动器会发送它的 TPDO（发送 PDO，例如状态与位置），并接收它的 RPDO（接收 PDO，例如命令）。</translation>
     </message>
     <message>
         <location line="+9" />
@@ -3055,12 +3055,12 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+3" />
         <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
-        <translation>仿真运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
+        <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Now in the drive: %1</source>
-        <translation>驱动器目前：%1</translation>
+        <translation>驱动器当前：%1</translation>
     </message>
     <message>
         <location line="+14" />
@@ -3124,17 +3124,17 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes (64 bits).</source>
-        <translation>依帧中出现的顺序挑选要放进报文的值（即 PDO 映射）。双击对象或将其拖曳到右侧；以拖曳或“上移／下移”调整顺序。一帧最多 8 字节（64 位）。</translation>
+        <translation>按帧中出现的顺序挑选要放进报文的值（即 PDO 映射）。双击对象或将其拖动到右侧；以拖动或“上移／下移”调整顺序。一帧最多 8 字节（64 位）。</translation>
     </message>
     <message>
         <location line="+4" />
         <source>Search by name or index, e.g. velocity or 606C</source>
-        <translation>依名称或索引搜索，例如 velocity 或 606C</translation>
+        <translation>按名称或索引搜索，例如 velocity 或 606C</translation>
     </message>
     <message>
         <location line="+18" />
         <source>Add →</source>
-        <translation>加入 →</translation>
+        <translation>添加 →</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3174,7 +3174,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+4" />
         <source>In the message, in frame order:</source>
-        <translation>报文内容（依帧顺序）：</translation>
+        <translation>报文内容（按帧顺序）：</translation>
     </message>
     <message>
         <location line="+8" />
@@ -3199,7 +3199,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+21" />
         <source>Cannot add: %1</source>
-        <translation>无法加入：%1</translation>
+        <translation>无法添加：%1</translation>
     </message>
     <message>
         <location line="+50" />
@@ -3219,12 +3219,12 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>Same as in the drive now.</source>
-        <translation>与驱动器目前的设置相同。</translation>
+        <translation>与驱动器当前的设置相同。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Changed: %1 objects, %2 bits (was %3 objects, %4 bits).</source>
-        <translation>已变更：%1 个对象，%2 位（原为 %3 个对象，%4 位）。</translation>
+        <translation>已更改：%1 个对象，%2 位（原为 %3 个对象，%4 位）。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3237,7 +3237,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location filename="../../app/gui/wizards/pdo/PdoTimingPage.cpp" line="+28" />
         <source>When the message is sent</source>
-        <translation>报文何时送出</translation>
+        <translation>报文何时发送</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3247,22 +3247,22 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+3" />
         <source>On SYNC, every n-th SYNC (synchronous cyclic, type 1–240)</source>
-        <translation>依 SYNC，每第 n 个 SYNC（同步周期，类型 1–240）</translation>
+        <translation>按 SYNC，每第 n 个 SYNC（同步周期，类型 1–240）</translation>
     </message>
     <message>
         <location line="+1" />
         <source>On SYNC, only after a value changed (synchronous acyclic, type 0)</source>
-        <translation>依 SYNC，仅在值变化后（同步非周期，类型 0）</translation>
+        <translation>按 SYNC，仅在值变化后（同步非周期，类型 0）</translation>
     </message>
     <message>
         <location line="+1" />
         <source>On change and/or by timer (event-driven, type 255: device profile)</source>
-        <translation>值变化时和／或依计时器（事件触发，类型 255：设备子协议）</translation>
+        <translation>值变化时和／或按计时器（事件触发，类型 255：设备子协议）</translation>
     </message>
     <message>
         <location line="+1" />
         <source>On change and/or by timer (event-driven, type 254: manufacturer)</source>
-        <translation>值变化时和／或依计时器（事件触发，类型 254：制造商定义）</translation>
+        <translation>值变化时和／或按计时器（事件触发，类型 254：制造商定义）</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3323,12 +3323,12 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+3" />
         <source>CAN-ID (COB-ID, hex):</source>
-        <translation>CAN-ID（COB-ID，十六进位）：</translation>
+        <translation>CAN-ID（COB-ID，十六进制）：</translation>
     </message>
     <message>
         <location line="+42" />
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
-        <translation>此驱动器的 CAN-ID 固定（COB-ID 只读）：无法变更，报文也无法关闭</translation>
+        <translation>此驱动器的 CAN-ID 固定（COB-ID 只读）：无法更改，报文也无法关闭</translation>
     </message>
     <message>
         <location line="+4" />
@@ -3343,7 +3343,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout when no message came for this long</source>
-        <translation>事件触发 TPDO：至少以此频率送出；RPDO：超过此时间未收到报文时，驱动器会报告超时</translation>
+        <translation>事件触发 TPDO：至少以此频率发送；RPDO：超过此时间未收到报文时，驱动器会报告超时</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3353,32 +3353,32 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+63" />
         <source>Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.</source>
-        <translation>必须有设备送出 SYNC（SYNC 产生者，对象 1005h/1006h），否则此报文永远不会送出。</translation>
+        <translation>必须有设备发送 SYNC（SYNC 生产者，对象 1005h/1006h），否则此报文永远不会发送。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>The master must send SYNC after the message, every cycle.</source>
-        <translation>主站必须在每个周期于报文之后送出 SYNC。</translation>
+        <translation>主站必须在每个周期于报文之后发送 SYNC。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Event timer off: sent only when a mapped value changes.</source>
-        <translation>事件计时器关闭：只有在映射的值变化时才送出。</translation>
+        <translation>事件计时器关闭：只有在映射的值变化时才发送。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Sent when a value changes, and at least every %1 ms.</source>
-        <translation>值变化时送出，且至少每 %1 ms 送出一次。</translation>
+        <translation>值变化时发送，且至少每 %1 ms 发送一次。</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Never more often than every %1 ms (inhibit time).</source>
-        <translation>送出间隔不短于 %1 ms（禁止时间）。</translation>
+        <translation>发送间隔不短于 %1 ms（禁止时间）。</translation>
     </message>
     <message>
         <location line="+2" />
         <source>CAN-ID %1h is not the default %2h: make sure no other message uses it.</source>
-        <translation>CAN-ID %1h 不是缺省的 %2h：请确认没有其他报文使用它。</translation>
+        <translation>CAN-ID %1h 不是默认的 %2h：请确认没有其他报文使用它。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3388,7 +3388,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+1" />
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
-        <translation>AIMOTOR：同步 PDO 需要主站送出 SYNC。</translation>
+        <translation>AIMOTOR：同步 PDO 需要主站发送 SYNC。</translation>
     </message>
 </context>
 <context>
@@ -3406,7 +3406,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+2" />
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change the drive. Reconnect without listen-only to use it.</source>
-        <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法读取或变更驱动器。请取消仅监听后重新连接再使用。</translation>
+        <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法读取或更改驱动器。请取消仅监听后重新连接再使用。</translation>
     </message>
     <message>
         <location line="+2" />
@@ -3416,12 +3416,12 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+56" />
         <source>the connection changed while reading</source>
-        <translation>读取时连接已变更</translation>
+        <translation>读取时连接已更改</translation>
     </message>
     <message>
         <location line="+4" />
         <source>The connection was closed while the PDO was being changed. Connect again and read the PDO to see what is in force.</source>
-        <translation>变更 PDO 时连接被关闭。请重新连接并读取 PDO，确认目前生效的设置。</translation>
+        <translation>更改 PDO 时连接被关闭。请重新连接并读取 PDO，确认当前生效的设置。</translation>
     </message>
     <message>
         <location line="+87" />
@@ -3451,7 +3451,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+13" />
         <source>A change is already being applied.</source>
-        <translation>已有变更正在应用。</translation>
+        <translation>已有更改正在应用。</translation>
     </message>
     <message>
         <location line="+37" />
@@ -3461,7 +3461,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+8" />
         <source>What the drive answered: %1</source>
-        <translation>驱动器的回应：%1</translation>
+        <translation>驱动器的响应：%1</translation>
     </message>
     <message>
         <location line="+2" />
@@ -3481,7 +3481,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
     <message>
         <location line="+3" />
         <source>Nothing was changed on the drive.</source>
-        <translation>驱动器上没有任何变更。</translation>
+        <translation>驱动器上没有任何更改。</translation>
     </message>
     <message>
         <location line="+13" />
@@ -3508,7 +3508,7 @@ SDO 下载 %n 字节：%1</numerusform></translation>
         <source>
 But storing failed (%1): the new mapping works now and is lost at power-off. %2</source>
         <translation>
-但保存失败（%1）：新的映射目前有效，断电后会遗失。%2</translation>
+但保存失败（%1）：新的映射当前有效，断电后会丢失。%2</translation>
     </message>
     <message>
         <location line="+2" />
@@ -3562,17 +3562,17 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+3" />
         <source>Stacked</source>
-        <translation>堆栈</translation>
+        <translation>堆叠</translation>
     </message>
     <message>
         <location line="+0" />
         <source>Shared plot</source>
-        <translation>共用图表</translation>
+        <translation>共享图表</translation>
     </message>
     <message>
         <location line="+1" />
         <source>Stacked plots sharing the time axis, or one plot with a y-axis per signal</source>
-        <translation>共用时间轴的堆栈图表，或每个信号各有一条 Y 轴的单一图表</translation>
+        <translation>共享时间轴的堆叠图表，或每个信号各有一条 Y 轴的单一图表</translation>
     </message>
     <message>
         <location line="+2" />
@@ -3592,7 +3592,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+3" />
         <source>Keep the y-axes fitted; off: drag and wheel zoom the y-axes too</source>
-        <translation>持续自动调整 Y 轴；关闭时：拖曳与滚轮也会缩放 Y 轴</translation>
+        <translation>持续自动调整 Y 轴；关闭时：拖动与滚轮也会缩放 Y 轴</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3607,7 +3607,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+2" />
         <source>Add raw signal…</source>
-        <translation>加入原始信号…</translation>
+        <translation>添加原始信号…</translation>
     </message>
     <message>
         <location line="+1" />
@@ -3697,12 +3697,12 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+3" />
         <source>PDOs whose mapping is not known (changed before the trace began): %1.</source>
-        <translation>映射未知的 PDO（在跟踪开始前已变更）：%1。</translation>
+        <translation>映射未知的 PDO（在跟踪开始前已更改）：%1。</translation>
     </message>
     <message>
         <location line="+26" />
         <source>Raw signal %1 added: it is listed under COB-ID %2h once its frames are read</source>
-        <translation>已加入原始信号 %1：读到其帧后，会列在 COB-ID %2h 之下</translation>
+        <translation>已添加原始信号 %1：读到其帧后，会列在 COB-ID %2h 之下</translation>
     </message>
     <message>
         <location line="+7" />
@@ -3768,22 +3768,22 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location filename="../../app/gui/wizards/ds402/Ds402StepBar.cpp" line="-59" />
         <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障复位（转换 15）：在故障原因排除后清除故障。送出控制字符 6040h = 0000h，接着 0080h（位 7 上升缘）。预期进入 Switch on disabled：故障位 3 为 0，位 6 为 1。</translation>
+        <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入 Switch on disabled：故障位 3 为 0，位 6 为 1。</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation>Shutdown（转换 2）：让驱动器准备就绪，电机仍不通电。送出 6040h = 0006h。预期进入 Ready to switch on：位 0 与 5 为 1，位 6 为 0。</translation>
+        <translation>Shutdown（转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入 Ready to switch on：位 0 与 5 为 1，位 6 为 0。</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation>Switch on（转换 3）：打开功率级，电机尚未通电；需要主电源。送出 6040h = 0007h。预期进入 Switched on：位 0、1、4（电压已激活）与 5 为 1。</translation>
+        <translation>Switch on（转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入 Switched on：位 0、1、4（电压已启用）与 5 为 1。</translation>
     </message>
     <message>
         <location line="+3" />
         <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation>Enable operation（转换 4）：电机通电，保持位置并依命令动作。送出 6040h = 000Fh。预期进入 Operation enabled：位 0、1、2 与 5 为 1。</translation>
+        <translation>Enable operation（转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入 Operation enabled：位 0、1、2 与 5 为 1。</translation>
     </message>
     <message>
         <location filename="../../app/gui/wizards/nodeid/NodeIdPages.cpp" line="-329" />
@@ -3821,7 +3821,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location filename="../../app/gui/plot/RawSignalDialog.cpp" line="+30" />
         <source>Add raw signal</source>
-        <translation>加入原始信号</translation>
+        <translation>添加原始信号</translation>
     </message>
     <message>
         <location line="+12" />
@@ -3831,7 +3831,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+1" />
         <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
-        <translation>帧的标识符：十进位或 0x 十六进位；大于 7FFh 为 29 位标识符</translation>
+        <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
         <location line="+2" />
@@ -3989,12 +3989,12 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+2" />
         <source>Write these steps to a text file that `coscope-cli script run BUS FILE` replays</source>
-        <translation>将这些步骤写入文本档，可用 `coscope-cli script run BUS FILE` 回放</translation>
+        <translation>将这些步骤写入文本文件，可用 `coscope-cli script run BUS FILE` 回放</translation>
     </message>
     <message numerus="yes">
         <location line="+15" />
         <source>%n step(s) will be sent</source>
-        <translation><numerusform>将送出 %n 个步骤</numerusform></translation>
+        <translation><numerusform>将发送 %n 个步骤</numerusform></translation>
     </message>
     <message numerus="yes">
         <location line="+1" />
@@ -4048,12 +4048,12 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+20" />
         <source>Stopped: the connection changed.</source>
-        <translation>已停止：连接已变更。</translation>
+        <translation>已停止：连接已更改。</translation>
     </message>
     <message>
         <location line="+34" />
         <source>Send these commands?</source>
-        <translation>要送出这些指令吗？</translation>
+        <translation>要发送这些指令吗？</translation>
     </message>
     <message>
         <location line="+8" />
@@ -4064,7 +4064,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="-20" />
         <source>The bus cannot send now.</source>
-        <translation>总线目前无法发送。</translation>
+        <translation>总线当前无法发送。</translation>
     </message>
     <message>
         <location line="+7" />
@@ -4079,7 +4079,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+1" />
         <source>Stopped at step %1; nothing further was sent.</source>
-        <translation>停止于第 %1 步；之后没有再送出任何内容。</translation>
+        <translation>停止于第 %1 步；之后没有再发送任何内容。</translation>
     </message>
     <message>
         <location line="+1" />
@@ -4215,7 +4215,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+17" />
         <source>Find</source>
-        <translation>寻找</translation>
+        <translation>查找</translation>
     </message>
     <message>
         <location line="+11" />
@@ -4225,7 +4225,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+1" />
         <source>Find previous</source>
-        <translation>寻找上一个</translation>
+        <translation>查找上一个</translation>
     </message>
     <message>
         <location line="+1" />
@@ -4235,7 +4235,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+1" />
         <source>Find next</source>
-        <translation>寻找下一个</translation>
+        <translation>查找下一个</translation>
     </message>
     <message>
         <location line="+2" />
@@ -4245,7 +4245,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+3" />
         <source>Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump</source>
-        <translation>在选取的帧上切换书签（Ctrl+B）；F2 / Shift+F2 跳转</translation>
+        <translation>在选中的帧上切换书签（Ctrl+B）；F2 / Shift+F2 跳转</translation>
     </message>
     <message>
         <location line="+60" />
@@ -4311,7 +4311,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <location line="+2" />
         <source>The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; you can still prepare the steps and save them as a script.</source>
-        <translation>总线以仅监听模式打开：CoScope 不会在上面发送。请取消仅监听后重新连接才能送出这些指令；您仍可先准备步骤并另存为脚本。</translation>
+        <translation>总线以仅监听模式打开：CoScope 不会在上面发送。请取消仅监听后重新连接才能发送这些指令；您仍可先准备步骤并另存为脚本。</translation>
     </message>
     <message>
         <location line="+2" />

@@ -4,7 +4,8 @@ source -> zh_TW table (JSON: {"English source": "繁體譯文"}); zh_CN is deriv
 with OpenCC tw2sp (Debian package `opencc`) plus the mainland terms of
 cn_terms.py, unless the table gives {"English": {"tw": ..., "cn": ...}}.
 Only messages that are unfinished (or empty) are filled; finished ones stay.
-Usage: fill_ts.py TABLE.json TS_DIR"""
+Usage: fill_ts.py [--refill] TABLE.json TS_DIR   (--refill: overwrite the
+messages the table has even if finished)"""
 import json, subprocess, sys
 import xml.etree.ElementTree as ET
 from cn_terms import to_cn, CN_OVERRIDE
@@ -27,14 +28,15 @@ def save(tree, path):
     with open(path, "w", encoding="utf-8") as f:
         f.write('<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>\n' + body + "\n")
 
-def fill(tree, table, lang):
+def fill(tree, table, lang, refill=False):
     missing = []
     for msg in tree.getroot().iter("message"):
         src = msg.find("source").text or ""
         tr = msg.find("translation")
-        if tr.get("type") not in ("unfinished",) and (tr.text or list(tr)):
-            continue
+        done = tr.get("type") != "unfinished" and (tr.text or list(tr))
         entry = table.get(src)
+        if done and not (refill and entry is not None):
+            continue
         if entry is None:
             missing.append(src)
             continue
@@ -50,7 +52,9 @@ def fill(tree, table, lang):
     return missing
 
 def main():
-    table_path, ts_dir = sys.argv[1], sys.argv[2]
+    args = [a for a in sys.argv[1:] if a != "--refill"]
+    refill = "--refill" in sys.argv
+    table_path, ts_dir = args[0], args[1]
     raw = json.load(open(table_path, encoding="utf-8"))
     srcs = list(raw)
     tw = [raw[s]["tw"] if isinstance(raw[s], dict) else raw[s] for s in srcs]
@@ -62,7 +66,7 @@ def main():
     for lang in ("zh_TW", "zh_CN"):
         path = f"{ts_dir}/coscope_{lang}.ts"
         tree = load(path)
-        missing = fill(tree, table, lang)
+        missing = fill(tree, table, lang, refill)
         save(tree, path)
         print(lang, "missing:", len(missing))
         for m in missing[:20]:
