@@ -482,7 +482,7 @@
     <message>
         <location filename="../../app/gui/wizards/ds402/Ds402ModeBox.cpp" line="+14" />
         <source>Mode of operation (6060h / 6061h)</source>
-        <translation>操作模式（6060h / 6061h）</translation>
+        <translation>运行模式（6060h / 6061h）</translation>
     </message>
     <message>
         <location line="+4" />
@@ -914,7 +914,7 @@ DISABLING FAILED: %1</source>
     <message>
         <location line="+5" />
         <source>Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…</source>
-        <translation>设置操作模式：6060h = %1（%2），接着检查 6061h…</translation>
+        <translation>设置运行模式：6060h = %1（%2），接着检查 6061h…</translation>
     </message>
     <message>
         <location line="+8" />
@@ -1102,7 +1102,7 @@ Arm the test move?</source>
     <message>
         <location line="+32" />
         <source>Mode of operation (6061h): %1</source>
-        <translation>操作模式（6061h）：%1</translation>
+        <translation>运行模式（6061h）：%1</translation>
     </message>
 </context>
 <context>
