@@ -24,7 +24,7 @@ Ds402Fault describeDs402Fault(const QString& dictionary, uint16_t errorCode, uin
     if (history1003 && (history1003 & 0xFFFF) == errorCode && (history1003 >> 16)) {
         auto it = table->alarms.constFind(history1003 >> 16);
         if (it != table->alarms.constEnd()) {
-            f.vendorAlarm = it->code + QStringLiteral(" ") + it->text;
+            f.vendorAlarm = it->code + QStringLiteral(" ") + it->localText();
             return f;
         }
         f.vendorAlarm = QStringLiteral("alarm number 0x%1 (not in the %2 table)").arg(history1003 >> 16, 4, 16, QChar(u'0')).arg(table->name);
@@ -35,7 +35,7 @@ Ds402Fault describeDs402Fault(const QString& dictionary, uint16_t errorCode, uin
     int matches = 0;
     for (auto it = table->alarms.constBegin(); it != table->alarms.constEnd(); ++it)
         if (it->emcyCode == errorCode) {
-            const QString t = it->code + QStringLiteral(" ") + it->text;
+            const QString t = it->code + QStringLiteral(" ") + it->localText();
             if (t != only) ++matches, only = t;
         }
     if (matches == 1) f.vendorAlarm = only;
