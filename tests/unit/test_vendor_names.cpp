@@ -2,6 +2,7 @@
 // The bundled alarm tables carry the manuals' own Chinese alarm names next to the English
 // (issue 17): Delta from the Chinese CANopen manual's table 4.2 (驅動器異警一覽表), AIMOTOR from
 // its manual's 6.1 故障码表; the GUI shows them in its language, the CLI stays English.
+#include "dissectors/ParameterNames.h"
 #include "dissectors/VendorTable.h"
 
 #include <QTest>
@@ -61,6 +62,21 @@ private slots:
         QCOMPARE(t->decodeEmcy(emcy, 8, 0x7305), QStringLiteral(u"AL011 位置检出器异常"));
         setVendorTextLanguage(QStringLiteral("en"));
         QCOMPARE(t->decodeEmcy(emcy, 8, 0x7305), english);
+    }
+
+    // Delta parameter names from the Chinese manual's 1.3.2 (CANopen 相關參數), AIMOTOR's from
+    // its manual; the code and Delta's mnemonic stay, English stays for "en" and unnamed ones.
+    void parameterNamesFromTheManuals() {
+        using coscope::dissect::localParameterName;
+        const QString p300 = QStringLiteral("P3-00 ADR Node-ID (station number)");
+        QCOMPARE(localParameterName(p300, QStringLiteral("zh_TW")), QStringLiteral(u"P3-00 ADR 局號設定"));
+        QCOMPARE(localParameterName(p300, QStringLiteral("zh_CN")), QStringLiteral(u"P3-00 ADR 局号设置"));
+        QCOMPARE(localParameterName(p300, QStringLiteral("en")), p300);
+        const QString h0200 = QStringLiteral("H02-00 Control mode (8 = CANopen control)");
+        QCOMPARE(localParameterName(h0200, QStringLiteral("zh_CN")), QStringLiteral(u"H02-00 控制模式"));
+        const QString p147 = QStringLiteral("P1-47 Delta parameter (CANopen initial value 100)");
+        QCOMPARE(localParameterName(p147, QStringLiteral("zh_TW")), p147);
+        QCOMPARE(localParameterName(QStringLiteral("Controlword"), QStringLiteral("zh_TW")), QStringLiteral("Controlword"));
     }
 
     void englishWhenATableHasNoChineseName() {
