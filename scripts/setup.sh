@@ -12,6 +12,9 @@ packages=(
   qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev libqt6serialbus6
   libqcustomplot-dev libspdlog-dev libfmt-dev zlib1g-dev
   fonts-dejavu-core
+  # Chinese UI (resources/translations): lupdate/lrelease and the LinguistTools CMake package,
+  # Qt's own dialog texts in Chinese, and a CJK font so the texts never show as boxes.
+  qt6-l10n-tools qt6-tools-dev qt6-translations-l10n fonts-noto-cjk
   # libsocketcan2: Qt's socketcan plugin loads it to set the bit rate and restart after bus-off;
   # iproute2: `ip -details -json link` lists the CAN interfaces with state and bit rate.
   libsocketcan2 iproute2

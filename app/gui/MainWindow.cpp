@@ -64,6 +64,32 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks | QMainWindow::AllowTabbedDocks);
 
     workspace_ = new Workspace(this);
+    createDocks();
+    status_ = new BusStatusBar(statusBar(), workspace_);
+    buildMenus();
+    restoreLayout();
+    offerAndCleanJournals();
+
+    connect(workspace_, &Workspace::sourceChanged, this, &MainWindow::onSourceChanged);
+    connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
+    connect(workspace_, &Workspace::captureStopped, this, [this](const QString& message) {
+        showError(message);
+        if (quiet_) return;
+        // Not exec(): the window goes on refreshing behind it.
+        auto* box = new QMessageBox(QMessageBox::Critical, tr("Capture stopped"), message, QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+
+    timer_ = new QTimer(this);
+    timer_->setInterval(33);  // the GUI pulls at most 30 times a second (DESIGN.md "Data flow")
+    connect(timer_, &QTimer::timeout, this, &MainWindow::refresh);
+    timer_->start();
+}
+
+// The docks over the workspace's models: built at start and again when the language changes
+// (MainWindowLanguage.cpp), so no text of the old language stays.
+void MainWindow::createDocks() {
     trace_ = new TraceDock(workspace_, this);
     nodes_ = new NodesDock(workspace_, this);
     od_ = new ObjectDictionaryDock(workspace_, this);
@@ -86,21 +112,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
     resizeDocks({nodes_, od_}, {260, 420}, Qt::Vertical);
 
-    status_ = new BusStatusBar(statusBar(), workspace_);
-    buildMenus();
-    restoreLayout();
-    offerAndCleanJournals();
-
-    connect(workspace_, &Workspace::sourceChanged, this, &MainWindow::onSourceChanged);
-    connect(workspace_, &Workspace::errorOccurred, this, &MainWindow::showError);
-    connect(workspace_, &Workspace::captureStopped, this, [this](const QString& message) {
-        showError(message);
-        if (quiet_) return;
-        // Not exec(): the window goes on refreshing behind it.
-        auto* box = new QMessageBox(QMessageBox::Critical, tr("Capture stopped"), message, QMessageBox::Ok, this);
-        box->setAttribute(Qt::WA_DeleteOnClose);
-        box->open();
-    });
     connect(trace_, &TraceDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
     connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);
@@ -114,11 +125,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         trace_->raise();
         trace_->showFrame(n);
     });
-
-    timer_ = new QTimer(this);
-    timer_->setInterval(33);  // the GUI pulls at most 30 times a second (DESIGN.md "Data flow")
-    connect(timer_, &QTimer::timeout, this, &MainWindow::refresh);
-    timer_->start();
 }
 
 MainWindow::~MainWindow() {
@@ -162,9 +168,14 @@ void MainWindow::buildMenus() {
     bus->addAction(scan);
     rebuildRecentMenu();
 
-    QToolBar* bar = addToolBar(tr("Bus"));
-    bar->setObjectName(QStringLiteral("busToolBar"));
-    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    if (!busBar_) {
+        busBar_ = addToolBar(QString());
+        busBar_->setObjectName(QStringLiteral("busToolBar"));
+        busBar_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    }
+    QToolBar* bar = busBar_;
+    bar->clear();
+    bar->setWindowTitle(tr("Bus"));
     bar->addAction(connectAction);
     bar->addAction(disconnectAction);
     bar->addAction(scan);
@@ -173,6 +184,7 @@ void MainWindow::buildMenus() {
     commission_->setToolTipsVisible(true);
     fillCommissionMenu(commission_, workspace_, this, [this] { return nodes_->selectedNode(); });
     commissionNote_ = commission_->addSection(QString());
+    commissionWhy_ = QStringLiteral("-");
     updateCommissionMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -181,6 +193,7 @@ void MainWindow::buildMenus() {
                            static_cast<QDockWidget*>(console_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
+    addLanguageMenu(view);
     view->addAction(tr("Reset layout"), this, [this] {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));

@@ -13,6 +13,7 @@
 class QAction;
 class QMenu;
 class QTimer;
+class QToolBar;
 
 namespace coscope::gui {
 
@@ -70,13 +71,22 @@ public:
 
     void refresh();  // the timer's tick (public for tests)
 
+    // Switches the UI language ("en", "zh_TW", "zh_CN"; "" = the system's) at once, as
+    // View ▸ Language does: the menus, status bar and docks are built again in the new language
+    // over the unchanged workspace (bus, trace, nodes), in the same layout. `remember` stores the
+    // choice for the next start.
+    void setLanguage(const QString& code, bool remember);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
 private:
+    void createDocks();
     void buildMenus();
+    void addLanguageMenu(QMenu* view);  // MainWindowLanguage.cpp
+    void rebuildInLanguage();
     void rebuildRecentMenu();
     void restoreLayout();
     void saveLayout();
@@ -108,6 +118,7 @@ private:
     BusStatusBar* status_ = nullptr;
     JournalOfferBar* journalOffer_ = nullptr;
     QMenu* recentMenu_ = nullptr;
+    QToolBar* busBar_ = nullptr;
     QMenu* commission_ = nullptr;
     QAction* commissionNote_ = nullptr;  // the section that says why the items are disabled
     QString commissionWhy_ = QStringLiteral("-");  // the reason in force ("" = enabled)

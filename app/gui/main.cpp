@@ -5,6 +5,7 @@
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/Screenshot.h"
 #include "app/gui/StartView.h"
+#include "app/gui/language/Language.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "core/log/Logging.h"
 #include "eds/SimulatorDictionaries.h"
@@ -47,7 +48,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption logLevel(QStringLiteral("log-level"), QStringLiteral("trace, debug, info, warn, error, critical, off."), QStringLiteral("LEVEL"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render the window to a PNG once the view has content, then exit."), QStringLiteral("FILE"));
     const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, plot, events, console, or wizard-ID (a commissioning wizard: pdo, nodeid, ds402)."), QStringLiteral("VIEW"));
-    parser.addOptions({simulate, connectTo, logLevel, screenshot, view});
+    const QCommandLineOption lang(QStringLiteral("lang"), QStringLiteral("The UI language for this run: en, zh_TW or zh_CN (default: View > Language, else the system's)."), QStringLiteral("LANG"));
+    parser.addOptions({simulate, connectTo, logLevel, screenshot, view, lang});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A CAN log to open (candump, ASC, BLF, TRC, pcap, CSV)."), QStringLiteral("[FILE]"));
     parser.process(app);
     if (parser.isSet(version)) {
@@ -71,6 +73,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "coscope: invalid --view '%s' (%s)\n", qPrintable(viewName), qPrintable(views.join(QStringLiteral(", "))));
         return 2;
     }
+    const QString langCode = parser.value(lang);
+    if (!langCode.isEmpty() && !gui::language::available().contains(langCode)) {
+        std::fprintf(stderr, "coscope: invalid --lang '%s' (%s)\n", qPrintable(langCode), qPrintable(gui::language::available().join(QStringLiteral(", "))));
+        return 2;
+    }
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1 || (!files.isEmpty() && (parser.isSet(simulate) || parser.isSet(connectTo)))) {
         std::fprintf(stderr, "coscope: give one log FILE, or --simulate, or --connect URL\n");
@@ -79,6 +86,7 @@ int main(int argc, char** argv) {
     logging::init(QStringLiteral("coscope"), level);
     eds::installSimulatorDictionaries();  // before any sim:// bus is opened
 
+    gui::language::apply(langCode.isEmpty() ? gui::language::saved() : langCode);
     gui::MainWindow window;
     window.setQuiet(parser.isSet(screenshot));
     window.show();

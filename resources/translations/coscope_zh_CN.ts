@@ -4,113 +4,90 @@
 <context>
     <name>BusStatusBar</name>
     <message>
-        <location filename="../../app/gui/status/BusStatusBar.cpp" line="+34" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>Restart controller</source>
         <translation>重新启动控制器</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)</source>
         <translation>控制器已进入总线关闭（bus-off），不再发送任何帧；请重新启动它（请先检查配线、终端电阻与比特率）</translation>
     </message>
     <message>
-        <location line="+18" />
         <source>No source</source>
         <translation>无来源</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Offline</source>
         <translation>离线</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%L1 frames</source>
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <location line="+29" />
         <source> · listen-only</source>
         <translation> · 仅监听</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>%L1 frames/s</source>
         <translation>%L1 帧/秒</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>load %1 %</source>
         <translation>负载 %1 %</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Estimated from frame lengths with worst-case bit stuffing at %1 bit/s</source>
         <translation>按帧长度估算，以最坏情况的位填充、%1 bit/s 计算</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>dropped %L1</source>
         <translation>丢失 %L1</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>errors %L1</source>
         <translation>错误 %L1</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>error active</source>
         <translation>错误主动</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>error warning</source>
         <translation>错误警告</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>error passive</source>
         <translation>错误被动</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>bus-off</source>
         <translation>总线关闭</translation>
     </message>
     <message>
-        <location line="+2" />
         <source> · TEC %1 REC %2</source>
         <translation> · TEC %1 REC %2</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>CAN controller state from the last error frame (transmit / receive error counters)</source>
         <translation>取自最近一个错误帧的 CAN 控制器状态（发送／接收错误计数器）</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>Controller restarted after bus-off</source>
         <translation>控制器已在总线关闭后重新启动</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+1" />
         <source>Restart after bus-off failed: %1</source>
         <translation>总线关闭后重新启动失败：%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Last restart failed: %1</source>
         <translation>上次重新启动失败：%1</translation>
     </message>
@@ -118,267 +95,214 @@
 <context>
     <name>ConnectDialog</name>
     <message>
-        <location filename="../../app/gui/connect/ConnectDialog.cpp" line="+35" />
         <source>Connect to a CAN bus</source>
         <translation>连接到 CAN 总线</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>(recent connections)</source>
         <translation>（最近的连接）</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Recent:</source>
         <translation>最近：</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Virtual drives (sim://)</source>
         <translation>虚拟驱动器（sim://）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>socketcand server (remote CAN)</source>
         <translation>socketcand 服务器（远程 CAN）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Qt CAN plugin: %1</source>
         <translation>Qt CAN 插件：%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Replay a log file</source>
         <translation>回放日志文件</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Backend:</source>
         <translation>后端：</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Device:</source>
         <translation>设备：</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>No CAN interfaces found. A virtual one for trying: &lt;tt&gt;sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up&lt;/tt&gt;. A real adapter: &lt;tt&gt;sudo ip link set can0 up type can bitrate 500000&lt;/tt&gt;. Then choose the backend again.</source>
         <translation>找不到 CAN 接口。可先创建一个虚拟接口试用：&lt;tt&gt;sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up&lt;/tt&gt;。物理适配器：&lt;tt&gt;sudo ip link set can0 up type can bitrate 500000&lt;/tt&gt;。然后再选一次后端。</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Bring up</source>
         <translation>启用接口</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>Host:</source>
         <translation>主机：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Port:</source>
         <translation>端口：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Channel:</source>
         <translation>通道：</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Virtual drives on the in-process bus:</source>
         <translation>进程内总线上的虚拟驱动器：</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Drive (dictionary)</source>
         <translation>驱动器（字典）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Node-ID</source>
         <translation>节点 ID</translation>
     </message>
     <message>
-        <location line="+34" />
         <source>Browse…</source>
         <translation>浏览…</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Log to replay</source>
         <translation>要回放的日志文件</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Log:</source>
         <translation>日志文件：</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>1×</source>
         <translation>1×</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>10×</source>
         <translation>10×</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>100×</source>
         <translation>100×</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>As fast as possible</source>
         <translation>尽可能快</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Loop</source>
         <translation>循环播放</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>(adapter setting)</source>
         <translation>（适配器设置）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%L1 kbit/s</source>
         <translation>%L1 kbit/s</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Bit rate:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>CAN FD</source>
         <translation>CAN FD</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>data %L1 Mbit/s</source>
         <translation>数据段 %L1 Mbit/s</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Listen-only (never transmit)</source>
         <translation>仅监听（绝不发送）</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Type or paste a bus URL, e.g. socketcan://can0?bitrate=500000</source>
         <translation>输入或粘贴总线 URL，例如 socketcan://can0?bitrate=500000</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>URL:</source>
         <translation>URL：</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="+32" />
         <source>Listed by the plugin without finding an adapter</source>
         <translation>插件列出了此项，但未找到适配器</translation>
     </message>
     <message>
-        <location line="+37" />
         <source>Could not bring the interface up: %1</source>
         <translation>无法启用接口：%1</translation>
     </message>
     <message>
-        <location line="+84" />
         <source>%1 is down</source>
         <translation>%1 已停用</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1 is up (virtual CAN)</source>
         <translation>%1 已启用（虚拟 CAN）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1 is up at %L2 kbit/s</source>
         <translation>%1 已启用，波特率 %L2 kbit/s</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>%1 is up</source>
         <translation>%1 已启用</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, CAN FD data %L1 Mbit/s</source>
         <translation>，CAN FD 数据段 %L1 Mbit/s</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>, controller in error warning (TEC %1, REC %2)</source>
         <translation>，控制器处于错误警告（TEC %1，REC %2）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, controller error passive (TEC %1, REC %2)</source>
         <translation>，控制器处于错误被动（TEC %1，REC %2）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, controller is bus-off: check wiring, termination and bit rate</source>
         <translation>，控制器已总线关闭：请检查配线、终端电阻与波特率</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, controller stopped</source>
         <translation>，控制器已停止</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.</source>
         <translation>未确认：%1 插件列出了 %2，但未找到适配器；连接后即可知道适配器是否存在。</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>To change its bit rate, run:</source>
         <translation>要更改其波特率，请运行：</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Bring it up with:</source>
         <translation>以下列指令启用：</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Change bit rate now</source>
         <translation>立即更改波特率</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Bring up now</source>
         <translation>立即启用</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>CoScope runs without the right to configure network interfaces: run the command above in a terminal</source>
         <translation>CoScope 没有设置网络接口的权限：请在终端中运行上面的指令</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>Choose at least one virtual drive</source>
         <translation>请至少选择一台虚拟驱动器</translation>
     </message>
@@ -386,7 +310,6 @@
 <context>
     <name>ConsoleDock</name>
     <message>
-        <location filename="../../app/gui/console/ConsoleDock.cpp" line="+13" />
         <source>Console</source>
         <translation>控制台</translation>
     </message>
@@ -394,72 +317,58 @@
 <context>
     <name>DcfApplyDialog</name>
     <message>
-        <location filename="../../app/gui/od/DcfApplyDialog.cpp" line="+20" />
         <source>Apply DCF to node %1</source>
         <translation>将 DCF 应用到节点 %1</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Nothing to write: every value of %1 is already on node %2 or cannot be written (%3 entries, listed below).</source>
         <translation>没有需要写入的项目：%1 的每个值都已与节点 %2 相同，或无法写入（%3 个项目，列于下方）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Write %1 object(s) from &lt;b&gt;%2&lt;/b&gt; to &lt;b&gt;node %3&lt;/b&gt; over SDO? Each write is sent once; a refused write is reported and the others continue. %4 entries are not written (greyed).</source>
         <translation>要通过 SDO 将 &lt;b&gt;%2&lt;/b&gt; 的 %1 个对象写入 &lt;b&gt;节点 %3&lt;/b&gt; 吗？每次写入只发送一次；被拒绝的写入会报告，其余照常进行。有 %4 个项目不会写入（灰色显示）。</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Object</source>
         <translation>对象</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Write</source>
         <translation>写入</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Node now / result</source>
         <translation>节点当前值／结果</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>(not read)</source>
         <translation>（未读取）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>not written: %1</source>
         <translation>未写入：%1</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Write %1 object(s)</source>
         <translation>写入 %1 个对象</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>written</source>
         <translation>已写入</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Node %1: %2 of %3 write(s) done, %4 refused%5.</source>
         <translation>节点 %1：完成 %2／%3 次写入，%4 次被拒绝%5。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>, cancelled before the rest</source>
         <translation>，其余在取消前未发送</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Close</source>
         <translation>关闭</translation>
     </message>
@@ -467,12 +376,10 @@
 <context>
     <name>Ds402FramesTabs</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402FramesTabs.cpp" line="+13" />
         <source>Frames (requests and responses)</source>
         <translation>帧（请求与响应）</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Dry run (what will be sent)</source>
         <translation>模拟运行（将发送的内容）</translation>
     </message>
@@ -480,39 +387,30 @@
 <context>
     <name>Ds402ModeBox</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402ModeBox.cpp" line="+14" />
         <source>Mode of operation (6060h / 6061h)</source>
         <translation>运行模式（6060h / 6061h）</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+16" />
         <source>not read</source>
         <translation>未读取</translation>
     </message>
     <message>
-        <location line="-14" />
         <source>Set and verify</source>
         <translation>设置并验证</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Mode:</source>
         <translation>模式：</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+7" />
         <source>Shown by the drive (6061h): not read</source>
         <translation>驱动器显示（6061h）：未读取</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>Shown by the drive (6061h): %1</source>
         <translation>驱动器显示（6061h）：%1</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Shown by the drive (6061h): %1 ✓</source>
         <translation>驱动器显示（6061h）：%1 ✓</translation>
     </message>
@@ -520,27 +418,22 @@
 <context>
     <name>Ds402MotionPlot</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402MotionPlot.cpp" line="+39" />
         <source>position 6064h</source>
         <translation>位置 6064h</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>position 6064h: %1</source>
         <translation>位置 6064h：%1</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>velocity 606Ch</source>
         <translation>速度 606Ch</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>velocity 606Ch: %1</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <location line="+24" />
         <source>The test move's motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
     </message>
@@ -548,7 +441,6 @@
 <context>
     <name>Ds402StateDiagram</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402StateDiagram.cpp" line="+160" />
         <source>State not read yet</source>
         <translation>尚未读取状态</translation>
     </message>
@@ -556,23 +448,18 @@
 <context>
     <name>Ds402StatusPanel</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402StatusPanel.cpp" line="+17" />
-        <location line="+56" />
         <source>Statusword (6041h): not read</source>
         <translation>状态字（6041h）：未读取</translation>
     </message>
     <message>
-        <location line="-43" />
         <source>On: </source>
         <translation>开：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Off: </source>
         <translation>关：</translation>
     </message>
     <message>
-        <location line="+35" />
         <source>Statusword (6041h) = %1 — %2</source>
         <translation>状态字（6041h）= %1 — %2</translation>
     </message>
@@ -580,47 +467,38 @@
 <context>
     <name>Ds402StepBar</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402StepBar.cpp" line="+32" />
         <source>Step through — one button per transition</source>
         <translation>逐步运行 — 每个状态转换一个按钮</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>1  Fault reset</source>
         <translation>1  故障复位</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>2  Shutdown</source>
         <translation>2  Shutdown（关闭）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>3  Switch on</source>
         <translation>3  Switch on（启动）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>4  Enable operation…</source>
         <translation>4  Enable operation（运行使能）…</translation>
     </message>
     <message>
-        <location line="+35" />
         <source>The drive is enabled (Operation enabled). Choose a mode and try a test move, or press Disable.</source>
         <translation>驱动器已使能（Operation enabled）。请选择模式并试做测试运行，或按“停用”。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Quick stop is active: press Disable to leave it (Disable voltage, transition 12).</source>
         <translation>Quick Stop 已启动：请按“停用”离开（Disable voltage，转换 12）。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Next: %1</source>
         <translation>下一步：%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The drive is in %1; wait for it to settle, then read the state again.</source>
         <translation>驱动器处于 %1；请等它稳定后再读取一次状态。</translation>
     </message>
@@ -628,67 +506,54 @@
 <context>
     <name>Ds402TestMoveBox</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402TestMoveBox.cpp" line="+30" />
         <source>Test move (optional, small limits)</source>
         <translation>测试运行（选用，小范围限制）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Jog (profile velocity, 60FFh)</source>
         <translation>点动（profile velocity，60FFh）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Short move (profile position, 607Ah relative)</source>
         <translation>短距移动（profile position，607Ah 相对）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Kind:</source>
         <translation>类型：</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Velocity:</source>
         <translation>速度：</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Distance:</source>
         <translation>距离：</translation>
     </message>
     <message>
-        <location line="+8" />
         <source> ms max</source>
         <translation> ms 上限</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Time limit:</source>
         <translation>时间上限：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Arm test move…</source>
         <translation>准备测试运行…</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Hold to run</source>
         <translation>按住运行</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>The motor moves only while this button is held down; releasing it stops the motor.</source>
         <translation>只有按住此按钮时电机才会运行；放开即停止电机。</translation>
     </message>
     <message>
-        <location line="+33" />
         <source>turn at %1 (profile velocity, 60FFh = %2)</source>
         <translation>以 %1 转动（profile velocity，60FFh = %2）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>move %1 at up to %2 (profile position, relative: 607Ah = %3, 6081h = %4)</source>
         <translation>移动 %1，速度最高 %2（profile position，相对：607Ah = %3，6081h = %4）</translation>
     </message>
@@ -696,166 +561,130 @@
 <context>
     <name>Ds402Wizard</name>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402Wizard.cpp" line="+43" />
         <source>CiA 402 enable step-through</source>
         <translation>CiA 402 逐步使能</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>connection lost</source>
         <translation>连接中断</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Connection lost (bus %1). The drive was told to disable if the bus still accepted it; otherwise its own communication-loss reaction (6007h) applies. Check the drive.</source>
         <translation>连接中断（总线 %1）。若总线仍可发送，已通知驱动器停用；否则由驱动器自身的通信中断处理（6007h）决定。请检查驱动器。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>error</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>closed</source>
         <translation>已关闭</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>The connection changed. Choose the drive again.</source>
         <translation>连接已更改。请重新选择驱动器。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>application quits</source>
         <translation>应用程序结束</translation>
     </message>
     <message>
-        <location line="+14" />
         <source>Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h).</source>
         <translation>仅监听连接：此向导必须发送（对 6040h/6041h 的 SDO），因此已停用。</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>wizard destroyed</source>
         <translation>向导已销毁</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Drive (node):</source>
         <translation>驱动器（节点）：</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Read state</source>
         <translation>读取状态</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>Drive state (CiA 402 state machine)</source>
         <translation>驱动器状态（CiA 402 状态机）</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Statusword bits</source>
         <translation>状态字位</translation>
     </message>
     <message>
-        <location line="+53" />
         <source>Saved %1; replay it with: coscope-cli script run BUS %1</source>
         <translation>已保存 %1；回放指令：coscope-cli script run BUS %1</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location filename="../../app/gui/wizards/ds402/Ds402WizardCommands.cpp" line="+256" />
         <source>Quick stop</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
         <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location filename="../../app/gui/wizards/ds402/Ds402WizardCommands.cpp" line="+12" />
         <source>Disable</source>
         <translation>停用</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Removes power from the motor: Shutdown then Disable voltage (6040h = 0006h, 0000h).</source>
         <translation>切断电机电源：先 Shutdown 再 Disable voltage（6040h = 0006h、0000h）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Dry run</source>
         <translation>模拟运行</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Show the exact SDO sequence of the enable, without sending anything.</source>
         <translation>显示使能过程完整的 SDO 顺序，不发送任何内容。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Close</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="+13" />
         <source>Not connected to a bus.</source>
         <translation>未连接到总线。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Listen-only connection: the wizard does not send.</source>
         <translation>仅监听连接：向导不会发送。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The bus is not open.</source>
         <translation>总线未打开。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>No drive chosen.</source>
         <translation>尚未选择驱动器。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node %1 is not being read: press “Read state” to read it again.</source>
         <translation>节点 %1 当前未被读取：请按“读取状态”重新读取。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node %1 is not a CiA 402 drive.</source>
         <translation>节点 %1 不是 CiA 402 驱动器。</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>wizard closed</source>
         <translation>向导已关闭</translation>
     </message>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402WizardCommands.cpp" line="-223" />
         <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
         <translation>请检查主电源、使能与安全转矩关闭（STO）输入，以及驱动器本身的面板显示。</translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+76" />
-        <location line="+72" />
         <source>Wait for the current step to finish.</source>
         <translation>请等当前步骤完成。</translation>
     </message>
     <message>
-        <location line="-144" />
         <source>Enable operation</source>
         <translation>运行使能</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Enable operation energises the motor of node %1: it will hold its position and follow commands.
 
 Make sure the machine is safe to move and people are clear.
@@ -868,76 +697,62 @@ Send 6040h = 000Fh now?</source>
 现在发送 6040h = 000Fh？</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Enable operation was not confirmed; nothing was sent.</source>
         <translation>未确认运行使能；没有发送任何内容。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>%1: sending… (%2)</source>
         <translation>%1：发送中…（%2）</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>%1 done: the drive is now in %2 (statusword %3h).</source>
         <translation>%1 完成：驱动器当前处于 %2（状态字 %3h）。</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Step “%1” failed: %2.</source>
         <translation>步骤“%1”失败：%2。</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>
 The drive was sent Disable voltage (6040h = 0000h) and is now in %1.</source>
         <translation>
 已对驱动器发送 Disable voltage（6040h = 0000h），当前处于 %1。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>
 DISABLING FAILED: %1</source>
         <translation>
 停用失败：%1</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>What to check: </source>
         <translation>检查事项：</translation>
     </message>
     <message>
-        <location line="+35" />
         <source>The drive does not list %1 as supported (6502h = %2h).</source>
         <translation>驱动器未列出支持 %1（6502h = %2h）。</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…</source>
         <translation>设置运行模式：6060h = %1（%2），接着检查 6061h…</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Mode set and verified: the drive shows %1 in 6061h.</source>
         <translation>模式已设置并验证：驱动器在 6061h 显示 %1。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Could not set %1: %2</source>
         <translation>无法设置 %1：%2</translation>
     </message>
     <message>
-        <location line="+22" />
         <source>Enable the drive first (Operation enabled), then arm the test move.</source>
         <translation>请先让驱动器使能（Operation enabled），再准备测试运行。</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>Test move</source>
         <translation>测试运行</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.
 Releasing the button stops it. Make sure the axis is free to move.
 
@@ -948,159 +763,128 @@ Arm the test move?</source>
 要准备测试运行吗？</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Test move not armed.</source>
         <translation>未准备测试运行。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Test move armed: hold the “Hold to run” button to move, release it to stop.</source>
         <translation>测试运行已就绪：按住“按住运行”按钮即移动，放开即停止。</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Arm the test move first.</source>
         <translation>请先准备测试运行。</translation>
     </message>
     <message>
-        <location line="+23" />
         <source>Test move stopped: %1. The drive stays enabled; press Disable when done.</source>
         <translation>测试运行已停止：%1。驱动器保持使能；完成后请按“停用”。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Test move failed: %1</source>
         <translation>测试运行失败：%1</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Moving while the button is held…</source>
         <translation>按住按钮期间运行中…</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>hold-to-run button released</source>
         <translation>已放开“按住运行”按钮</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Quick stop: %1</source>
         <translation>快速停止：%1</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Quick stop: sending 6040h = 0002h…</source>
         <translation>快速停止：发送 6040h = 0002h…</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Quick stop done: the drive is in %1.</source>
         <translation>快速停止完成：驱动器处于 %1。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Disable: %1</source>
         <translation>停用：%1</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Disabling: Shutdown, then Disable voltage…</source>
         <translation>停用中：先 Shutdown，再 Disable voltage…</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>The drive is disabled (%1): the motor has no power.</source>
         <translation>驱动器已停用（%1）：电机无电源。</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
-        <location line="+10" />
         <source>Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them for coscope-cli script run.</source>
-        <translation><numerusform>模拟运行：使能进程将从 %1 起发送 %n 个步骤——实际上没有发送任何内容。“另存为脚本…”可保留这些步骤供 coscope-cli script run 使用。</numerusform></translation>
+        <translation>
+            <numerusform>模拟运行：使能进程将从 %1 起发送 %n 个步骤——实际上没有发送任何内容。“另存为脚本…”可保留这些步骤供 coscope-cli script run 使用。</numerusform>
+        </translation>
     </message>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402WizardReading.cpp" line="+60" />
         <source>Looking for a CiA 402 drive (device type 1000h = …0192h)…</source>
         <translation>查找 CiA 402 驱动器（设备类型 1000h = …0192h）…</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>No CiA 402 drive answered yet; trying again.</source>
         <translation>尚无 CiA 402 驱动器响应；重试中。</translation>
     </message>
     <message>
-        <location line="+19" />
-        <location line="+1" />
         <source>another drive was chosen</source>
         <translation>已选择另一台驱动器</translation>
     </message>
     <message>
-        <location line="+21" />
-        <location line="+1" />
         <source>Node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="-1" />
         <source>Node %1 — %2</source>
         <translation>节点 %1 — %2</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Reading the identity of node %1 (1018h)…</source>
         <translation>读取节点 %1 的识别信息（1018h）…</translation>
     </message>
     <message>
-        <location line="+31" />
         <source>Node %1 is a %2: %3</source>
         <translation>节点 %1 是 %2：%3</translation>
     </message>
     <message>
-        <location line="+37" />
         <source>The state of node %1 is not known: not connected.</source>
         <translation>节点 %1 的状态不明：未连接。</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+27" />
         <source>The drive is initialising (Not ready to switch on); waiting for Switch on disabled…</source>
         <translation>驱动器正在初始化（Not ready to switch on）；等待进入 Switch on disabled…</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>The drive finished initialising.</source>
         <translation>驱动器已完成初始化。</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).</source>
         <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>无法读取驱动器状态：%1。请确认驱动器已通电并已连接，以及其节点 ID 是否正确。</translation>
     </message>
     <message>
-        <location line="+23" />
         <source>Error code 603Fh could not be read: %1</source>
         <translation>无法读取错误码 603Fh：%1</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>%1 is %2, not %3: the drive is not in CANopen control and will ignore the controlword. Set %1 = %3 first.</source>
         <translation>%1 为 %2，而非 %3：驱动器不在 CANopen 控制模式，会忽略控制字。请先将 %1 设为 %3。</translation>
     </message>
     <message>
-        <location line="+32" />
         <source>Mode of operation (6061h): %1</source>
         <translation>运行模式（6061h）：%1</translation>
     </message>
@@ -1108,12 +892,10 @@ Arm the test move?</source>
 <context>
     <name>EventsDock</name>
     <message>
-        <location filename="../../app/gui/events/EventsDock.cpp" line="+13" />
         <source>Events</source>
         <translation>事件</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>Double-click an event to show its frame in the trace</source>
         <translation>双击事件可在跟踪中显示其帧</translation>
     </message>
@@ -1121,27 +903,22 @@ Arm the test move?</source>
 <context>
     <name>EventsModel</name>
     <message>
-        <location filename="../../app/gui/events/EventsModel.cpp" line="+75" />
         <source>Time (s)</source>
         <translation>时间（秒）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Event</source>
         <translation>事件</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Details</source>
         <translation>详细信息</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Frame</source>
         <translation>帧</translation>
     </message>
@@ -1149,193 +926,156 @@ Arm the test move?</source>
 <context>
     <name>FrameDetailsView</name>
     <message>
-        <location filename="../../app/gui/trace/FrameDetailsView.cpp" line="+29" />
         <source>Field</source>
         <translation>字段</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+59" />
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location line="-59" />
         <source>Bytes</source>
         <translation>字节</translation>
     </message>
     <message>
-        <location line="+48" />
         <source>SDO transfer</source>
         <translation>SDO 传输</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Node</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Object</source>
         <translation>对象</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Direction</source>
         <translation>方向</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>upload (read from the server)</source>
         <translation>上传（从 SDO 服务器读取）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>download (write to the server)</source>
         <translation>下载（写入 SDO 服务器）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Mode</source>
         <translation>模式</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>block</source>
         <translation>块</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>segmented</source>
         <translation>分段</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>expedited</source>
         <translation>快速</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Size</source>
         <translation>大小</translation>
     </message>
     <message numerus="yes">
-        <location line="+0" />
         <source>%n byte(s)</source>
-        <translation><numerusform>%n 字节</numerusform></translation>
+        <translation>
+            <numerusform>%n 字节</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Data</source>
         <translation>数据</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Status</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Abort code</source>
         <translation>中止码</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Abort reason</source>
         <translation>中止原因</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Frames</source>
         <translation>帧</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>1 (frame %1)</source>
         <translation>1（帧 %1）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1 (frames %2–%3)</source>
         <translation>%1（帧 %2–%3）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Duration</source>
         <translation>持续时间</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Frame %1</source>
         <translation>帧 %1</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Identifier</source>
         <translation>标识符</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Service</source>
         <translation>服务</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>, node %1</source>
         <translation>，节点 %1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Length</source>
         <translation>长度</translation>
     </message>
     <message>
-        <location line="+0" />
         <source> (remote request)</source>
         <translation> （远程请求）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>transmitted</source>
         <translation>已发送</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>error frame</source>
         <translation>错误帧</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Flags</source>
         <translation>标志</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location line="+13" />
         <source>byte %1</source>
         <translation>字节 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>bytes %1–%2</source>
         <translation>字节 %1–%2</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, bit %1</source>
         <translation>，位 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>, bits %1–%2</source>
         <translation>，位 %1–%2</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>(no payload)</source>
         <translation>（无数据内容）</translation>
     </message>
@@ -1343,229 +1083,183 @@ Arm the test move?</source>
 <context>
     <name>HealthDock</name>
     <message>
-        <location filename="../../app/gui/health/HealthDock.cpp" line="+24" />
         <source>Health</source>
         <translation>健康状态</translation>
     </message>
     <message>
-        <location line="+11" />
-        <location line="+78" />
         <source>No frames yet</source>
         <translation>尚无帧</translation>
     </message>
     <message>
-        <location line="-72" />
         <source>What to look at first, the worst at the top</source>
         <translation>应优先查看的项目，最严重的在最上方</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Nodes</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>PDOs</source>
         <translation>PDO</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Average load</source>
         <translation>平均负载</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Peak load</source>
         <translation>峰值负载</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Time (s)</source>
         <translation>时间（秒）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Bus load (%)</source>
         <translation>总线负载（%）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Bus load</source>
         <translation>总线负载</translation>
     </message>
     <message numerus="yes">
-        <location line="+50" />
         <source>%n frame(s) over %1 s; bus load average %2 %, peak %3 % at %4 bit/s; %5 error frame(s)</source>
-        <translation><numerusform>%1 秒内共 %n 帧；总线负载平均 %2 %，峰值 %3 %，波特率 %4 bit/s；%5 个错误帧</numerusform></translation>
+        <translation>
+            <numerusform>%1 秒内共 %n 帧；总线负载平均 %2 %，峰值 %3 %，波特率 %4 bit/s；%5 个错误帧</numerusform>
+        </translation>
     </message>
 </context>
 <context>
     <name>HealthModel</name>
     <message>
-        <location filename="../../app/gui/health/HealthModel.cpp" line="+55" />
         <source>Severity</source>
         <translation>严重程度</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+4" />
-        <location line="+6" />
         <source>Node</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="-10" />
         <source>Finding</source>
         <translation>发现</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Error control</source>
         <translation>错误控制</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Beats</source>
         <translation>心跳次数</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+6" />
         <source>Period min/avg/max ms</source>
         <translation>周期 最小/平均/最大 ms</translation>
     </message>
     <message>
-        <location line="-5" />
         <source>Late</source>
         <translation>延迟</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Timeouts</source>
         <translation>超时</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Boot-ups</source>
         <translation>启动报文</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Resets</source>
         <translation>重置</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>SDO transfers</source>
         <translation>SDO 传输</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>SDO p99 ms</source>
         <translation>SDO p99 ms</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>SDO aborts</source>
         <translation>SDO 中止</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>SDO timeouts</source>
         <translation>SDO 超时</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>EMCY</source>
         <translation>EMCY</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>COB-ID</source>
         <translation>COB-ID</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>PDO</source>
         <translation>PDO</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Frames</source>
         <translation>帧</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Rate Hz</source>
         <translation>频率 Hz</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Jitter ms</source>
         <translation>抖动 ms</translation>
     </message>
     <message>
-        <location line="+32" />
         <source>Critical</source>
         <translation>严重</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Error</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Warning</source>
         <translation>警告</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Info</source>
         <translation>信息</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>bus</source>
         <translation>总线</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>none</source>
         <translation>无</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>guarding stopped</source>
         <translation>节点保护已停止</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>heartbeat stopped</source>
         <translation>心跳已停止</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>guarding</source>
         <translation>节点保护</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>heartbeat</source>
         <translation>心跳</translation>
     </message>
     <message>
-        <location line="+22" />
         <source>%1 (no consumer)</source>
         <translation>%1（无消费者）</translation>
     </message>
@@ -1573,22 +1267,18 @@ Arm the test move?</source>
 <context>
     <name>JournalOfferBar</name>
     <message>
-        <location filename="../../app/gui/JournalOffer.cpp" line="+23" />
         <source>Unclosed capture</source>
         <translation>未关闭的捕获</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Reopen capture</source>
         <translation>重新打开捕获</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Dismiss</source>
         <translation>跳过</translation>
     </message>
     <message>
-        <location line="+34" />
         <source>A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). Its journal %1 (%2, last written %3) holds everything received up to about a second before.</source>
         <translation>有一个捕获未关闭：CoScope 结束时没有关闭它（被强制终止、崩溃或断电）。其日志 %1（%2，最后写入于 %3）保存了大约一秒前为止收到的所有内容。</translation>
     </message>
@@ -1596,267 +1286,226 @@ Arm the test move?</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/gui/MainWindow.cpp" line="+100" />
         <source>Capture stopped</source>
         <translation>捕获已停止</translation>
     </message>
     <message>
-        <location line="+31" />
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>&amp;Open log…</source>
         <translation>打开日志文件(&amp;O)…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Open CAN log</source>
         <translation>打开 CAN 日志文件</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>&amp;Save trace as…</source>
         <translation>另存跟踪(&amp;S)…</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+220" />
         <source>Save trace</source>
         <translation>保存跟踪</translation>
     </message>
     <message>
-        <location line="-217" />
         <source>&amp;Export filtered rows…</source>
         <translation>导出筛选后的行(&amp;E)…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Export filtered rows</source>
         <translation>导出筛选后的行</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Export PDO layout as &amp;DBC…</source>
         <translation>将 PDO 配置导出为 &amp;DBC…</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>&amp;Bus</source>
         <translation>总线(&amp;B)</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>&amp;Connect…</source>
         <translation>连接(&amp;C)…</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+94" />
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-93" />
         <source>Connect to &amp;virtual drives (sim://)</source>
         <translation>连接到虚拟驱动器（sim://）(&amp;V)</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>&amp;Recent connections</source>
         <translation>最近的连接(&amp;R)</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>&amp;Disconnect</source>
         <translation>中断连接(&amp;D)</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Bus</source>
         <translation>总线</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>&amp;Commission</source>
         <translation>调试(&amp;C)</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>&amp;View</source>
         <translation>查看(&amp;V)</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Reset layout</source>
         <translation>重设布局</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The default layout applies at the next start</source>
         <translation>默认布局会在下次启动时应用</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Reopened the capture journal %1</source>
         <translation>已重新打开捕获日志 %1</translation>
     </message>
     <message>
-        <location line="+51" />
         <source>Cannot connect to %1: %2</source>
         <translation>无法连接到 %1：%2</translation>
     </message>
     <message>
-        <location line="+18" />
         <source>Open log</source>
         <translation>打开日志文件</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>A save is already running</source>
         <translation>已有一个保存作业在运行</translation>
     </message>
     <message>
-        <location line="+46" />
         <source>Connect to a bus first</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Listen-only bus: commissioning would transmit</source>
         <translation>仅监听总线：调试需要发送</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Listen-only bus</source>
         <translation>仅监听总线</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>A save is still running; wait for it or cancel it first</source>
         <translation>仍有保存作业在运行；请等它完成或先取消</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Unsaved capture</source>
         <translation>未保存的捕获</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The trace holds %L1 frames that are not saved. Save the capture first?</source>
         <translation>跟踪中有 %L1 帧尚未保存。要先保存捕获内容吗？</translation>
     </message>
     <message>
-        <location line="+37" />
         <source>%1: %L2 frames, %L3 lines not understood — first: %4</source>
         <translation>%1：%L2 帧，%L3 行无法解析——第一行：%4</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>%1: %L2 frames (%3)</source>
         <translation>%1：%L2 帧（%3）</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Save cancelled</source>
         <translation>已取消保存</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Saved %L1 frames to %2</source>
         <translation>已将 %L1 帧保存至 %2</translation>
     </message>
     <message>
-        <location line="+27" />
         <source>Could not read %1: %2</source>
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.</source>
         <translation>%1 以 %2 格式读取：%L3 行，%L4 帧，跳过 %L5 行。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>%1 read as %2: %L3 frames, %L4 records skipped.</source>
         <translation>%1 以 %2 格式读取：%L3 帧，跳过 %L4 条记录。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>No frames were found in this file.</source>
         <translation>此文件中找不到任何帧。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>… and %L1 more</source>
         <translation>… 另有 %L1 项</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>System language (%1)</source>
+        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <translation>系统语言（%1）</translation>
+    </message>
+    <message>
+        <source>Close the other windows (wizards, dialogs) to change the language</source>
+        <translation>请先关闭其他窗口（向导、对话框）再切换语言</translation>
     </message>
 </context>
 <context>
     <name>NodeIdChangePage</name>
     <message>
-        <location filename="../../app/gui/wizards/nodeid/NodeIdPages.cpp" line="+191" />
         <source>What to change</source>
         <translation>要更改的项目</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>节点 ID（设备在总线上的地址，1-127）或波特率（CAN 比特率）。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node-ID</source>
         <translation>节点 ID</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Baud rate (bit rate)</source>
         <translation>波特率（比特率）</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>LSS (layer setting services, CiA 305) — works for any LSS-capable device</source>
         <translation>LSS（层设置服务，CiA 305）——适用于任何支持 LSS 的设备</translation>
     </message>
     <message>
-        <location line="+41" />
         <source>Change:</source>
         <translation>更改：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>New node-ID:</source>
         <translation>新节点 ID：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>New baud rate:</source>
         <translation>新波特率：</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>How:</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <location line="+38" />
         <source>The drive's own parameter %1 over SDO — as its manual describes</source>
         <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The drive's own parameter — none documented for this device</source>
         <translation>驱动器自己的参数——此设备没有相关文档</translation>
     </message>
@@ -1864,87 +1513,72 @@ Arm the test move?</source>
 <context>
     <name>NodeIdFindPage</name>
     <message>
-        <location line="-239" />
         <source>Find the device</source>
         <translation>找出设备</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Pick the drive whose node-ID or baud rate (bit rate) you want to change.</source>
         <translation>选择要更改节点 ID 或波特率（比特率）的驱动器。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>These are the devices CoScope has seen on the bus. &lt;b&gt;Scan&lt;/b&gt; asks every node-ID 1-127 for its device type and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: &lt;b&gt;Find device without node-ID&lt;/b&gt; finds it with LSS Fastscan (CiA 305).</source>
         <translation>以下是 CoScope 在总线上看到的设备。&lt;b&gt;扫描&lt;/b&gt;会向节点 ID 1-127 逐一查找设备类型与识别信息（SDO 读取，不更改任何内容）。没有节点 ID 的新设备（尚未 LSS 设置）不会发出任何消息：&lt;b&gt;查找没有节点 ID 的设备&lt;/b&gt;会以 LSS Fastscan（CiA 305）找出它。</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Node-ID</source>
         <translation>节点 ID</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Device (dictionary)</source>
         <translation>设备（字典）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>State (NMT)</source>
         <translation>状态（NMT）</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>Scan the bus</source>
         <translation>扫描总线</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Find device without node-ID (LSS Fastscan)</source>
         <translation>查找没有节点 ID 的设备（LSS Fastscan）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Scanning node-IDs 1-127…</source>
         <translation>正在扫描节点 ID 1-127…</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>LSS Fastscan: looking for a device without node-ID…</source>
         <translation>LSS Fastscan：正在查找没有节点 ID 的设备…</translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
         <source>Scan finished: %n device(s) known.</source>
-        <translation><numerusform>扫描完成：已知 %n 台设备。</numerusform></translation>
+        <translation>
+            <numerusform>扫描完成：已知 %n 台设备。</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+10" />
         <source>(unknown — LSS only)</source>
         <translation>（未知——仅 LSS）</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>Device type:</source>
         <translation>设备类型：</translation>
     </message>
     <message>
-        <location line="+41" />
         <source>(not identified — scan)</source>
         <translation>（未识别——请扫描）</translation>
     </message>
     <message>
-        <location line="+22" />
         <source>Target: the device without node-ID found by LSS Fastscan.</source>
         <translation>目标：以 LSS Fastscan 找到的无节点 ID 设备。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Target: node %1%2.</source>
         <translation>目标：节点 %1%2。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>No device chosen yet.</source>
         <translation>尚未选择设备。</translation>
     </message>
@@ -1952,52 +1586,42 @@ Arm the test move?</source>
 <context>
     <name>NodeIdRunPage</name>
     <message>
-        <location line="+123" />
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
         <translation>模拟运行：尚未发送任何内容。以下正是 CoScope 将要发送的内容与原因。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Check and change</source>
         <translation>检查并更改</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Change it now</source>
         <translation>立即更改</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Sending: CoScope runs the sequence below; each step turns green when the device has answered.</source>
         <translation>发送中：CoScope 正在运行下列顺序；设备响应后该步骤会变成绿色。</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Takes effect: %1</source>
         <translation>生效时机：%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>CoScope will reconnect at %1 after the first part.</source>
         <translation>第一部分完成后，CoScope 会以 %1 重新连接。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Cannot prepare the change: %1</source>
         <translation>无法准备更改：%1</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Sent: the sequence below ran to the end. The device has its new setting.</source>
         <translation>已发送：下列顺序已全部运行完毕。设备已应用新设置。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Stopped: the green steps below were sent, the red one failed, the rest was not sent.</source>
         <translation>已停止：下列绿色步骤已发送，红色步骤失败，其余未发送。</translation>
     </message>
     <message>
-        <location line="+16" />
         <source>Preparing the sequence…</source>
         <translation>正在准备顺序…</translation>
     </message>
@@ -2005,148 +1629,118 @@ Arm the test move?</source>
 <context>
     <name>NodeIdWizard</name>
     <message>
-        <location filename="../../app/gui/wizards/nodeid/NodeIdWizard.cpp" line="+21" />
         <source>Baud rate and node-ID — CoScope</source>
         <translation>波特率与节点 ID — CoScope</translation>
     </message>
     <message>
-        <location line="+47" />
         <source>Not connected to a bus: this wizard talks to the devices, so connect first (File ▸ Connect).</source>
         <translation>未连接到总线：此向导需要与设备通信，请先连接（文件 ▸ 连接）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. Reconnect without listen-only to use it.</source>
         <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法更改任何设置。请取消仅监听后重新连接再使用。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is not open (yet): wait for it to connect.</source>
         <translation>总线（尚）未打开：请等待连接完成。</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>The connection was closed while the change was running. Connect again and scan to see where the device is.</source>
         <translation>更改进行中连接被关闭。请重新连接并扫描，确认设备当前的位置。</translation>
     </message>
     <message>
-        <location line="+64" />
         <source>No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.</source>
         <translation>没有无节点 ID 的设备响应（LSS Fastscan）。总线上每台设备都有节点 ID。</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Found a device without node-ID: vendor %1h, product %2h, serial %3h. It waits in LSS configuration state for its node-ID.</source>
         <translation>找到一台没有节点 ID 的设备：厂商 %1h，产品 %2h，序列号 %3h。它正在 LSS 设置状态中等待节点 ID。</translation>
     </message>
     <message>
-        <location line="+52" />
         <source>Choose a device first.</source>
         <translation>请先选择设备。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Choose the new node-ID.</source>
         <translation>请选择新的节点 ID。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The device already has node-ID %1.</source>
         <translation>设备的节点 ID 已经是 %1。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Node-ID %1 is already used by another device on this bus: two devices with one node-ID break communication.</source>
         <translation>节点 ID %1 已被此总线上的另一台设备使用：两台设备使用同一个节点 ID 会导致通信中断。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Choose a bit rate other than the one the bus runs at now (%1).</source>
         <translation>请选择与总线当前波特率（%1）不同的比特率。</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>the device without node-ID</source>
         <translation>无节点 ID 的设备</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+96" />
         <source>node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="-94" />
         <source>&lt;b&gt;How:&lt;/b&gt; LSS (layer setting services, CiA 305) picks %1 by its identity (1018h) and gives it the new setting; the device stores it itself.</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>&lt;b&gt;Takes effect:&lt;/b&gt; %1.</source>
         <translation>&lt;b&gt;生效时机：&lt;/b&gt;%1。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>&lt;b&gt;About this drive:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;关于此驱动器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
         <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>none seen</source>
         <translation>未看到任何节点</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>nodes %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>CoScope reconnects at the new bit rate by itself and waits for %1 there.</source>
         <translation>CoScope 会自动以新的比特率重新连接，并在该速率下等待 %1。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>&lt;b&gt;If it does not come back:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;如果它没有重新出现：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
         <translation>&lt;b style='color:#a40000'&gt;无法运行：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <location line="+38" />
         <source>The change is already running.</source>
         <translation>更改已在进行中。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The sequence is not ready yet.</source>
         <translation>顺序尚未准备好。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Running…</source>
         <translation>运行中…</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>The connection is gone: %1</source>
         <translation>连接已中断：%1</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Stopped at %1.
 The device answered: %2
 What to check: %3</source>
@@ -2155,51 +1749,42 @@ What to check: %3</source>
 检查事项：%3</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).</source>
         <translation>完成：原本为 %1 的设备现在以节点 ID %2 响应（已在总线上报告）。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>without node-ID</source>
         <translation>无节点 ID</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Done: node %1 now runs at %2 and CoScope is connected at %2. Nodes still at %3 cannot be reached at this rate: change them too, or reconnect at %3.</source>
         <translation>完成：节点 %1 现在以 %2 运作，CoScope 也已以 %2 连接。仍为 %3 的节点在此速率下无法通信：请一并更改，或以 %3 重新连接。</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>The connection is gone before reconnecting.</source>
         <translation>重新连接前连接已中断。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Reconnecting at %1 (%2)…</source>
         <translation>正在以 %1 重新连接（%2）…</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Could not reconnect at %1: %2
 %3</source>
         <translation>无法以 %1 重新连接：%2
 %3</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>connected at %1</source>
         <translation>已以 %1 连接</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>The bus did not open at %1.
 %2</source>
         <translation>总线无法以 %1 打开。
 %2</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)</source>
         <translation>节点 %1 现在以节点 ID %2 响应（波特率与节点 ID 向导）</translation>
     </message>
@@ -2207,116 +1792,90 @@ What to check: %3</source>
 <context>
     <name>NodesDock</name>
     <message>
-        <location filename="../../app/gui/nodes/NodesDock.cpp" line="+27" />
         <source>Nodes</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="+31" />
         <source>Scan network (SDO 1000h on nodes 1–127)</source>
         <translation>扫描网络（对节点 1–127 读取 SDO 1000h）</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+213" />
         <source>Scan network</source>
         <translation>扫描网络</translation>
     </message>
     <message>
-        <location line="-211" />
         <source>Read identity</source>
         <translation>读取识别信息</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Assign dictionary…</source>
         <translation>指定字典…</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Assign dictionary</source>
         <translation>指定字典</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Dictionary for node %1:</source>
         <translation>节点 %1 的字典：</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>All nodes</source>
         <translation>所有节点</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>Listen-only: commands disabled</source>
         <translation>仅监听：指令已停用</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>Scan finished: %1 node(s) answered</source>
         <translation>扫描完成：%1 个节点响应</translation>
     </message>
     <message>
-        <location line="+18" />
         <source>A scan is running</source>
         <translation>扫描进行中</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Listen-only bus: a scan would transmit</source>
         <translation>仅监听总线：扫描需要发送</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Connect to a bus first</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
         <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
-        <location line="+21" />
         <source>Listen-only: NMT commands are disabled</source>
         <translation>仅监听：NMT 指令已停用</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+47" />
         <source>Not connected to a bus</source>
         <translation>未连接到总线</translation>
     </message>
     <message>
-        <location line="-42" />
         <source>An NMT command is waiting for your answer</source>
         <translation>有一个 NMT 指令正在等待您的回复</translation>
     </message>
     <message>
-        <location line="+15" />
-        <location line="+24" />
         <source>all nodes</source>
         <translation>所有节点</translation>
     </message>
     <message>
-        <location line="-24" />
-        <location line="+24" />
         <source>node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="-23" />
         <source>Send NMT “%1” to %2?
 
 Frame: %3</source>
@@ -2325,27 +1884,22 @@ Frame: %3</source>
 帧：%3</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Send NMT command</source>
         <translation>发送 NMT 指令</translation>
     </message>
     <message>
-        <location line="+17" />
         <source>NMT %1 to %2 failed: %3</source>
         <translation>对 %2 发送 NMT %1 失败：%3</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>NMT command failed</source>
         <translation>NMT 指令失败</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Sent NMT %1 to %2</source>
         <translation>已对 %2 发送 NMT %1</translation>
     </message>
     <message>
-        <location line="+50" />
         <source>Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).
 
 </source>
@@ -2354,42 +1908,34 @@ Frame: %3</source>
 </translation>
     </message>
     <message>
-        <location line="+4" />
         <source>a reset</source>
         <translation>重置</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>this command</source>
         <translation>此指令</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Delta drives raise AL401 (CANopen communication lost). </source>
         <translation>台达驱动器会发出 AL401（CANopen 通信中断）。</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Scan needs a connected bus that is not listen-only</source>
         <translation>扫描需要已连接且非仅监听的总线</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>A scan is already running</source>
         <translation>已有扫描在进行中</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?</source>
         <translation>要从节点 ID 1–127 逐一读取对象 1000h 吗（在 601h–67Fh 发送 SDO 上传请求）？</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Scanning nodes 1–127…</source>
         <translation>正在扫描节点 1–127…</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Node %1 uses dictionary %2</source>
         <translation>节点 %1 使用字典 %2</translation>
     </message>
@@ -2397,30 +1943,22 @@ Frame: %3</source>
 <context>
     <name>NodesModel</name>
     <message>
-        <location filename="../../app/gui/nodes/NodesModel.cpp" line="+69" />
         <source>No heartbeat</source>
         <translation>无心跳</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Unknown</source>
         <translation>未知</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+6" />
         <source>—</source>
         <translation>—</translation>
     </message>
     <message>
-        <location line="-3" />
-        <location line="+3" />
-        <location line="+6" />
         <source>not present</source>
         <translation>不存在</translation>
     </message>
     <message>
-        <location line="-5" />
         <source>Device name (1008h): %1
 Hardware version (1009h): %2
 Software version (100Ah): %3</source>
@@ -2429,97 +1967,78 @@ Software version (100Ah): %3</source>
 软件版本（100Ah）：%3</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>vendor %1</source>
         <translation>厂商 %1</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>, product %1</source>
         <translation>，产品 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>, product not present</source>
         <translation>，无产品信息</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, rev %1</source>
         <translation>，修订号 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>, rev not present</source>
         <translation>，无修订号信息</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>, s/n %1</source>
         <translation>，序列号 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>, s/n not present</source>
         <translation>，无序列号信息</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>(none)</source>
         <translation>（无）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>boot-up</source>
         <translation>启动报文</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>heartbeat</source>
         <translation>心跳</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>scan</source>
         <translation>扫描</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Node</source>
         <translation>节点</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>NMT state</source>
         <translation>NMT 状态</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Heartbeat age</source>
         <translation>心跳经过时间</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Device name</source>
         <translation>设备名称</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Identity (1018h)</source>
         <translation>识别信息（1018h）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Dictionary</source>
         <translation>字典</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>EMCY</source>
         <translation>EMCY</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Seen by</source>
         <translation>检测来源</translation>
     </message>
@@ -2527,353 +2046,284 @@ Software version (100Ah): %3</source>
 <context>
     <name>ObjectDictionaryDock</name>
     <message>
-        <location filename="../../app/gui/od/ObjectDictionaryDock.cpp" line="+38" />
         <source>Object Dictionary</source>
         <translation>对象字典</translation>
     </message>
     <message>
-        <location line="+22" />
         <source>Search index or name (6060, 0x1018, heartbeat)</source>
         <translation>搜索索引或名称（6060、0x1018、heartbeat）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Only changed</source>
         <translation>仅显示已更改</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Show only the values read from the node that differ from the dictionary's default</source>
         <translation>只显示从节点读取、且与字典默认值不同的值</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+395" />
         <source>Read all</source>
         <translation>全部读取</translation>
     </message>
     <message>
-        <location line="-393" />
         <source>Read every readable object of the node over SDO (DOMAINs are skipped)</source>
         <translation>通过 SDO 读取节点所有可读的对象（跳过 DOMAIN）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>Export DCF…</source>
         <translation>导出 DCF…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Export node %1 as DCF</source>
         <translation>将节点 %1 导出为 DCF</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Device configuration (*.dcf)</source>
         <translation>设备配置（*.dcf）</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Apply DCF…</source>
         <translation>应用 DCF…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Apply a DCF to node %1</source>
         <translation>将 DCF 应用到节点 %1</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Device configuration (*.dcf *.eds);;All files (*)</source>
         <translation>设备配置（*.dcf *.eds）;;所有文件（*）</translation>
     </message>
     <message>
-        <location line="+13" />
         <source>Assign dictionary</source>
         <translation>指定字典</translation>
     </message>
     <message>
-        <location line="+39" />
         <source>Read</source>
         <translation>读取</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Write value…</source>
         <translation>写入值…</translation>
     </message>
     <message>
-        <location line="+36" />
         <source>Copy value</source>
         <translation>复制值</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Copy error</source>
         <translation>复制错误</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Expand all</source>
         <translation>全部展开</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Collapse all</source>
         <translation>全部折叠</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Listen-only: SDO disabled</source>
         <translation>仅监听：SDO 已停用</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+41" />
         <source>Reading node %1 stopped: another node was chosen</source>
         <translation>已停止读取节点 %1：已选择另一个节点</translation>
     </message>
     <message>
-        <location line="+33" />
         <source>Dictionary %1 of node %2 cannot be loaded</source>
         <translation>无法加载节点 %2 的字典 %1</translation>
     </message>
     <message>
-        <location line="+20" />
         <source>Node %1 uses dictionary %2</source>
         <translation>节点 %1 使用字典 %2</translation>
     </message>
     <message>
-        <location line="+32" />
         <source>&lt;b&gt;No node selected&lt;/b&gt; — pick one in the Nodes dock</source>
         <translation>&lt;b&gt;未选择节点&lt;/b&gt;——请在“节点”面板中选择一个</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Select a node in the Nodes dock to see its object dictionary.</source>
         <translation>在“节点”面板中选择一个节点，即可查看其对象字典。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>&lt;b&gt;Node %1&lt;/b&gt;</source>
         <translation>&lt;b&gt;节点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <location line="+2" />
         <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
         <translation> · &lt;span style='color:#b00020'&gt;无字典&lt;/span&gt;</translation>
     </message>
     <message>
-        <location line="+2" />
         <source> · %1 entries, %2 read</source>
         <translation> · %1 个项目，已读取 %2 个</translation>
     </message>
     <message>
-        <location line="+2" />
         <source> · &lt;i&gt;listen-only: no SDO&lt;/i&gt;</source>
         <translation> · &lt;i&gt;仅监听：无 SDO&lt;/i&gt;</translation>
     </message>
     <message>
-        <location line="+0" />
         <source> · &lt;i&gt;offline: no SDO&lt;/i&gt;</source>
         <translation> · &lt;i&gt;离线：无 SDO&lt;/i&gt;</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>No dictionary is known for node %1: it was not identified (1018h) or matched none in the library. Assign one to see its objects.</source>
         <translation>节点 %1 没有已知的字典：它尚未识别（1018h），或与字典库中的任何一个都不相符。请指定字典以查看其对象。</translation>
     </message>
     <message>
-        <location line="+37" />
         <source>%1: no node selected</source>
         <translation>%1：未选择节点</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1: no dictionary for node %2 (assign one)</source>
         <translation>%1：节点 %2 没有字典（请指定一个）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1: the bus is listen-only, nothing is sent</source>
         <translation>%1：总线为仅监听，不会发送任何内容</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1: not connected to a bus</source>
         <translation>%1：未连接到总线</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Read %1</source>
         <translation>读取 %1</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>%1 %2 is write-only</source>
         <translation>%1 %2 为只写</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Node %1 %2 %3 = %4</source>
         <translation>节点 %1 %2 %3 = %4</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>Write %1 %2 = %3 to node %4?</source>
         <translation>要将 %1 %2 = %3 写入节点 %4 吗？</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+18" />
         <source>Node %1 %2: %3</source>
         <translation>节点 %1 %2：%3</translation>
     </message>
     <message>
-        <location line="-10" />
         <source>Write %1</source>
         <translation>写入 %1</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>%1 %2 is %3: not writable</source>
         <translation>%1 %2 为 %3：不可写入</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Write object</source>
         <translation>写入对象</translation>
     </message>
     <message numerus="yes">
-        <location line="+0" />
         <source>
 
 SDO download of %n byte(s): %1</source>
-        <translation><numerusform>
+        <translation>
+            <numerusform>
 
-SDO 下载 %n 字节：%1</numerusform></translation>
+SDO 下载 %n 字节：%1</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+13" />
         <source>Node %1 %2 written: %3</source>
         <translation>节点 %1 %2 已写入：%3</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>A read or DCF application is already running</source>
         <translation>已有读取或 DCF 应用作业在运行</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Reading %1 objects of node %2…</source>
         <translation>正在读取节点 %2 的 %1 个对象…</translation>
     </message>
     <message>
-        <location line="+27" />
         <source>Read of node %1 cancelled: %2 values read</source>
         <translation>已取消读取节点 %1：已读取 %2 个值</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node %1: %2 values read, %3 refused (red rows; the tool tip has the abort text)</source>
         <translation>节点 %1：已读取 %2 个值，%3 个被拒绝（红色行；工具提示中有中止说明）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node %1: %2 values read</source>
         <translation>节点 %1：已读取 %2 个值</translation>
     </message>
     <message>
-        <location filename="../../app/gui/od/ObjectDictionaryDockDcf.cpp" line="+38" />
         <source>Export of node %1 failed: %2</source>
         <translation>导出节点 %1 失败：%2</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Node %1: %2 values exported to %3</source>
         <translation>节点 %1：已将 %2 个值导出至 %3</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Export: no node with a dictionary selected</source>
         <translation>导出：未选择有字典的节点</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Export: wait for the running read to finish</source>
         <translation>导出：请等待当前的读取完成</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Export</source>
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Apply DCF</source>
         <translation>应用 DCF</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Apply DCF: wait for the running read to finish</source>
         <translation>应用 DCF：请等待当前的读取完成</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>%1 is not a usable DCF: %2</source>
         <translation>%1 不是可用的 DCF：%2</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>no object could be read</source>
         <translation>没有任何对象可以读取</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Reading node %1's current values of the %2 candidates in %3…</source>
         <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Apply DCF cancelled</source>
         <translation>已取消应用 DCF</translation>
     </message>
     <message>
-        <location line="+24" />
         <source>Node %1 already has every value of %2 (%3 entries not written)</source>
         <translation>节点 %1 已具有 %2 的所有值（%3 个项目未写入）</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Apply DCF: the bus can no longer transmit</source>
         <translation>应用 DCF：总线已无法发送</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Writing %1 objects to node %2…</source>
         <translation>正在将 %1 个对象写入节点 %2…</translation>
     </message>
     <message>
-        <location line="+19" />
         <source>DCF applied to node %1: %2 written, %3 refused — first: %4</source>
         <translation>已将 DCF 应用到节点 %1：写入 %2 个，%3 个被拒绝——第一个：%4</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>DCF applied to node %1: %2 objects written%3</source>
         <translation>已将 DCF 应用到节点 %1：写入 %2 个对象%3</translation>
     </message>
     <message>
-        <location line="+0" />
         <source> (cancelled)</source>
         <translation> （已取消）</translation>
     </message>
@@ -2881,42 +2331,34 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>OdTreeModel</name>
     <message>
-        <location filename="../../app/gui/od/OdTreeModel.cpp" line="+247" />
         <source>Index</source>
         <translation>索引</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Type</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Access</source>
         <translation>访问</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>PDO</source>
         <translation>PDO</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Default</source>
         <translation>默认值</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Value</source>
         <translation>值</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Unit</source>
         <translation>单位</translation>
     </message>
@@ -2924,43 +2366,34 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoApplyPage</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoApplyPage.cpp" line="+17" />
         <source>Check and apply</source>
         <translation>检查并应用</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>This is exactly what will be sent, step by step (dry run: nothing has been sent yet). If the drive refuses a step, the wizard stops, tells you why and writes the old settings back.</source>
         <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
         <translation>断电后保留：保存驱动器参数（1010h:01 = "save"）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Start the drive's process data afterwards (NMT start: operational)</source>
         <translation>完成后启动驱动器的过程数据（NMT 启动：操作状态）</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+69" />
         <source>Apply to the drive</source>
         <translation>应用到驱动器</translation>
     </message>
     <message>
-        <location line="-26" />
         <source>Without this the new mapping is lost when the drive is switched off or reset</source>
         <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>This drive's dictionary has no 1010h (store parameters)</source>
         <translation>此驱动器的字典没有 1010h（保存参数）</translation>
     </message>
     <message>
-        <location line="+25" />
         <source>Applying…</source>
         <translation>应用中…</translation>
     </message>
@@ -2968,107 +2401,86 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoChoosePage</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoChoosePage.cpp" line="+21" />
         <source>Which drive and which message</source>
         <translation>哪台驱动器、哪个报文</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, e.g. commands).</source>
         <translation>PDO（过程数据对象）是一个 CAN 报文，最多携带 8 字节的实时数值。驱动器会发送它的 TPDO（发送 PDO，例如状态与位置），并接收它的 RPDO（接收 PDO，例如命令）。</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>%1 — the drive sends (transmit PDO %2)</source>
         <translation>%1——驱动器发送（发送 PDO %2）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>%1 — the drive receives (receive PDO %2)</source>
         <translation>%1——驱动器接收（接收 PDO %2）</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Byte</source>
         <translation>字节</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Object</source>
         <translation>对象</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Bits</source>
         <translation>位</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>Drive (node):</source>
         <translation>驱动器（节点）：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Message (PDO):</source>
         <translation>报文（PDO）：</translation>
     </message>
     <message>
-        <location line="+35" />
         <source>Node %1 (no dictionary)</source>
         <translation>节点 %1（无字典）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Node %1 — %2%3</source>
         <translation>节点 %1 — %2%3</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="+52" />
         <source>Waiting for a drive to appear on the bus…</source>
         <translation>正在等待驱动器出现在总线上…</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Reading %1 of node %2 from the drive (SDO upload of %3h and %4h)…</source>
         <translation>正在从驱动器读取节点 %2 的 %1（SDO 上传 %3h 与 %4h）…</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Could not read %1 of node %2: %3</source>
         <translation>无法读取节点 %2 的 %1：%3</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>CAN-ID %1h%2. %3. %4 of 64 bits used.</source>
         <translation>CAN-ID %1h%2。%3。已使用 64 位中的 %4 位。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source> (switched off: COB-ID bit 31 set)</source>
         <translation> （已关闭：COB-ID 位 31 已设置）</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
         <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Now in the drive: %1</source>
         <translation>驱动器当前：%1</translation>
     </message>
     <message>
-        <location line="+14" />
         <source>(nothing mapped: the message is empty)</source>
         <translation>（没有映射：报文为空）</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Good to know about this drive:</source>
         <translation>关于此驱动器的注意事项：</translation>
     </message>
@@ -3076,22 +2488,18 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoDbcExport</name>
     <message>
-        <location filename="../../app/gui/plot/PdoDbcExport.cpp" line="+38" />
         <source>%1: cannot write the DBC file (%2)</source>
         <translation>%1：无法写入 DBC 文件（%2）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
         <translation>PDO 配置已导出至 %1：%2 个 PDO 报文，%3 个原始信号</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Export PDO layout as DBC</source>
         <translation>将 PDO 配置导出为 DBC</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>DBC file (*.dbc)</source>
         <translation>DBC 文件（*.dbc）</translation>
     </message>
@@ -3099,17 +2507,14 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoFrameLayout</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoFrameLayout.cpp" line="+60" />
         <source>byte %1</source>
         <translation>字节 %1</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>%1 of 64 bits — too long: a PDO carries at most 8 bytes</source>
         <translation>64 位中的 %1 位——太长：一个 PDO 最多携带 8 字节</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
         <translation>已使用 64 位中的 %1 位（帧中 %2 字节）</translation>
     </message>
@@ -3117,117 +2522,94 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoMappingPage</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoMappingPage.cpp" line="+23" />
         <source>What the message carries</source>
         <translation>报文携带的内容</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes (64 bits).</source>
         <translation>按帧中出现的顺序挑选要放进报文的值（即 PDO 映射）。双击对象或将其拖动到右侧；以拖动或“上移／下移”调整顺序。一帧最多 8 字节（64 位）。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Search by name or index, e.g. velocity or 606C</source>
         <translation>按名称或索引搜索，例如 velocity 或 606C</translation>
     </message>
     <message>
-        <location line="+18" />
         <source>Add →</source>
         <translation>添加 →</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>← Remove</source>
         <translation>← 移除</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Up</source>
         <translation>上移</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Down</source>
         <translation>下移</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Clear</source>
         <translation>清除</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>As in the drive</source>
         <translation>与驱动器相同</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Start again from the mapping read from the drive</source>
         <translation>从驱动器读到的映射重新开始</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Objects this drive allows in the message:</source>
         <translation>此驱动器允许放入报文的对象：</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>In the message, in frame order:</source>
         <translation>报文内容（按帧顺序）：</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>The frame, byte by byte:</source>
         <translation>帧逐字节内容：</translation>
     </message>
     <message>
-        <location line="+56" />
         <source>(no dictionary for this node: objects cannot be listed)</source>
         <translation>（此节点没有字典：无法列出对象）</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>%1  (%2, %3 bits)</source>
         <translation>%1  （%2，%3 位）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>%1h:%2 — %3, access %4</source>
         <translation>%1h:%2 — %3，访问 %4</translation>
     </message>
     <message>
-        <location line="+21" />
         <source>Cannot add: %1</source>
         <translation>无法添加：%1</translation>
     </message>
     <message>
-        <location line="+50" />
         <source>%1  (%2 bits)</source>
         <translation>%1  （%2 位）</translation>
     </message>
     <message>
-        <location line="+25" />
         <source>Too long: %1 bits. Remove objects until the total is 64 bits or less.</source>
         <translation>太长：%1 位。请移除对象直到总长度不超过 64 位。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Nothing mapped: the message would carry no data.</source>
         <translation>没有映射：报文将不携带任何数据。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Same as in the drive now.</source>
         <translation>与驱动器当前的设置相同。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Changed: %1 objects, %2 bits (was %3 objects, %4 bits).</source>
         <translation>已更改：%1 个对象，%2 位（原为 %3 个对象，%4 位）。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source> Many drives allow at most 8 objects per PDO.</source>
         <translation> 许多驱动器每个 PDO 最多只允许 8 个对象。</translation>
     </message>
@@ -3235,158 +2617,126 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoTimingPage</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoTimingPage.cpp" line="+28" />
         <source>When the message is sent</source>
         <translation>报文何时发送</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Choose what makes the drive send the message (TPDO) or act on it (RPDO), and the CAN-ID it uses.</source>
         <translation>选择让驱动器发送报文（TPDO）或处理报文（RPDO）的触发条件，以及所使用的 CAN-ID。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>On SYNC, every n-th SYNC (synchronous cyclic, type 1–240)</source>
         <translation>按 SYNC，每第 n 个 SYNC（同步周期，类型 1–240）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>On SYNC, only after a value changed (synchronous acyclic, type 0)</source>
         <translation>按 SYNC，仅在值变化后（同步非周期，类型 0）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>On change and/or by timer (event-driven, type 255: device profile)</source>
         <translation>值变化时和／或按计时器（事件触发，类型 255：设备子协议）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>On change and/or by timer (event-driven, type 254: manufacturer)</source>
         <translation>值变化时和／或按计时器（事件触发，类型 254：制造商定义）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Other transmission type (e.g. 252/253: only on request, RTR)</source>
         <translation>其他传输类型（例如 252/253：仅在请求时，RTR）</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>every </source>
         <translation>每 </translation>
     </message>
     <message>
-        <location line="+1" />
         <source> SYNC(s)</source>
         <translation> 个 SYNC</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+3" />
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>off</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Message switched on (COB-ID bit 31 = 0: PDO valid)</source>
         <translation>报文已打开（COB-ID 位 31 = 0：PDO 有效）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Default</source>
         <translation>默认值</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The pre-defined connection set (CiA 301 §7.3.5): TPDO1 180h + node … RPDO4 500h + node</source>
         <translation>预定义连接组（CiA 301 §7.3.5）：TPDO1 180h + 节点 … RPDO4 500h + 节点</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>Sent when:</source>
         <translation>发送时机：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Minimum gap (inhibit time):</source>
         <translation>最小间隔（禁止时间）：</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Timer (event timer):</source>
         <translation>计时器（事件计时器）：</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>CAN-ID (COB-ID, hex):</source>
         <translation>CAN-ID（COB-ID，十六进制）：</translation>
     </message>
     <message>
-        <location line="+42" />
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
         <translation>此驱动器的 CAN-ID 固定（COB-ID 只读）：无法更改，报文也无法关闭</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>The drive waits at least this long between two messages (100 µs units on the bus)</source>
         <translation>驱动器在两个报文之间至少等待这么久（总线上以 100 µs 为单位）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Not available on this drive or for an RPDO</source>
         <translation>此驱动器或 RPDO 不提供此功能</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout when no message came for this long</source>
         <translation>事件触发 TPDO：至少以此频率发送；RPDO：超过此时间未收到报文时，驱动器会报告超时</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Not available on this drive</source>
         <translation>此驱动器不提供此功能</translation>
     </message>
     <message>
-        <location line="+63" />
         <source>Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.</source>
         <translation>必须有设备发送 SYNC（SYNC 生产者，对象 1005h/1006h），否则此报文永远不会发送。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The master must send SYNC after the message, every cycle.</source>
         <translation>主站必须在每个周期于报文之后发送 SYNC。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Event timer off: sent only when a mapped value changes.</source>
         <translation>事件计时器关闭：只有在映射的值变化时才发送。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Sent when a value changes, and at least every %1 ms.</source>
         <translation>值变化时发送，且至少每 %1 ms 发送一次。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Never more often than every %1 ms (inhibit time).</source>
         <translation>发送间隔不短于 %1 ms（禁止时间）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>CAN-ID %1h is not the default %2h: make sure no other message uses it.</source>
         <translation>CAN-ID %1h 不是默认的 %2h：请确认没有其他报文使用它。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The message will be switched off: the drive will neither send nor accept it.</source>
         <translation>报文将被关闭：驱动器既不发送也不接收它。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
         <translation>AIMOTOR：同步 PDO 需要主站发送 SYNC。</translation>
     </message>
@@ -3394,124 +2744,100 @@ SDO 下载 %n 字节：%1</numerusform></translation>
 <context>
     <name>PdoWizard</name>
     <message>
-        <location filename="../../app/gui/wizards/pdo/PdoWizard.cpp" line="+49" />
         <source>PDO mapping — CoScope</source>
         <translation>PDO 映射 — CoScope</translation>
     </message>
     <message>
-        <location line="+46" />
         <source>Not connected to a bus: this wizard talks to the drive, so connect first (File ▸ Connect).</source>
         <translation>未连接到总线：此向导需要与驱动器通信，请先连接（文件 ▸ 连接）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change the drive. Reconnect without listen-only to use it.</source>
         <translation>总线以仅监听方式打开：CoScope 不会在上面发送，因此此向导无法读取或更改驱动器。请取消仅监听后重新连接再使用。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is not open (yet): wait for it to connect.</source>
         <translation>总线（尚）未打开：请等待连接完成。</translation>
     </message>
     <message>
-        <location line="+56" />
         <source>the connection changed while reading</source>
         <translation>读取时连接已更改</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>The connection was closed while the PDO was being changed. Connect again and read the PDO to see what is in force.</source>
         <translation>更改 PDO 时连接被关闭。请重新连接并读取 PDO，确认当前生效的设置。</translation>
     </message>
     <message>
-        <location line="+87" />
         <source>Choose a drive first.</source>
         <translation>请先选择驱动器。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The PDO has not been read from the drive yet.</source>
         <translation>尚未从驱动器读取 PDO。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>PDO mapping: %1 of node %2</source>
         <translation>PDO 映射：节点 %2 的 %1</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
         <translation>断电后保留设置：保存所有参数（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
         <translation>启动过程数据：驱动器进入操作状态并发送／使用其 PDO（NMT 启动）</translation>
     </message>
     <message>
-        <location line="+13" />
         <source>A change is already being applied.</source>
         <translation>已有更改正在应用。</translation>
     </message>
     <message>
-        <location line="+37" />
         <source>Stopped at step %1 of %2: %3%4.</source>
         <translation>停止于第 %1 步（共 %2 步）：%3%4。</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>What the drive answered: %1</source>
         <translation>驱动器的响应：%1</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>What to check: %1</source>
         <translation>检查事项：%1</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The previous settings were written back: %1 works as before (%2 objects, %3 bits). The drive was left pre-operational.</source>
         <translation>已写回先前的设置：%1 与之前相同（%2 个对象，%3 位）。驱动器维持在预操作状态。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Writing the previous settings back failed as well (%1): read the PDO again and check it before starting the drive.</source>
         <translation>写回先前的设置也失败了（%1）：启动驱动器前，请重新读取 PDO 并检查。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Nothing was changed on the drive.</source>
         <translation>驱动器上没有任何更改。</translation>
     </message>
     <message>
-        <location line="+13" />
         <source>Done: %1 of node %2 now carries %3 objects (%4 bits), checked by reading back. The trace and the plot decode it with the new layout from now on.</source>
         <translation>完成：节点 %2 的 %1 现在携带 %3 个对象（%4 位），已读回确认。跟踪与图表从现在起以新的配置解码。</translation>
     </message>
     <message>
-        <location line="+4" />
         <source> The drive is pre-operational: start it (NMT start) to make PDOs flow.</source>
         <translation> 驱动器处于预操作状态：启动它（NMT 启动）即可开始发送 PDO。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source> Starting the drive failed: %1</source>
         <translation> 启动驱动器失败：%1</translation>
     </message>
     <message>
-        <location line="+4" />
         <source> The drive was started (operational).</source>
         <translation> 驱动器已启动（操作状态）。</translation>
     </message>
     <message>
-        <location line="+8" />
         <source>
 But storing failed (%1): the new mapping works now and is lost at power-off. %2</source>
         <translation>
 但保存失败（%1）：新的映射当前有效，断电后会丢失。%2</translation>
     </message>
     <message>
-        <location line="+2" />
         <source> Stored in the drive (kept after power-off).</source>
         <translation> 已保存到驱动器（断电后保留）。</translation>
     </message>
@@ -3519,223 +2845,178 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>PlotDock</name>
     <message>
-        <location filename="../../app/gui/plot/PlotDock.cpp" line="+30" />
         <source>Plot</source>
         <translation>图表</translation>
     </message>
     <message>
-        <location line="+47" />
         <source>Rolling window</source>
         <translation>滚动窗口</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Whole trace</source>
         <translation>整个跟踪</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Follow the newest samples over a window of seconds, or show the whole trace</source>
         <translation>在数秒宽的窗口内跟随最新的采样，或显示整个跟踪</translation>
     </message>
     <message>
-        <location line="+6" />
         <source> s</source>
         <translation> 秒</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Width of the rolling window</source>
         <translation>滚动窗口的宽度</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+74" />
         <source>Pause</source>
         <translation>暂停</translation>
     </message>
     <message>
-        <location line="-72" />
         <source>Freeze the view (data keeps being recorded); zoom and pan pause too</source>
         <translation>冻结画面（数据仍持续记录）；缩放与平移也会暂停</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Stacked</source>
         <translation>堆叠</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Shared plot</source>
         <translation>共享图表</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Stacked plots sharing the time axis, or one plot with a y-axis per signal</source>
         <translation>共享时间轴的堆叠图表，或每个信号各有一条 Y 轴的单一图表</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Autoscale</source>
         <translation>自动缩放</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Fit the y-axes to the visible data</source>
         <translation>将 Y 轴调整为符合可见数据</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Auto Y</source>
         <translation>自动 Y</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Keep the y-axes fitted; off: drag and wheel zoom the y-axes too</source>
         <translation>持续自动调整 Y 轴；关闭时：拖动与滚轮也会缩放 Y 轴</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Legend</source>
         <translation>图例</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Clear cursors</source>
         <translation>清除光标</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Add raw signal…</source>
         <translation>添加原始信号…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a dictionary</source>
         <translation>绘制任何帧的位（起始位、长度、类型、字节顺序、系数、偏移、单位）：适用于没有字典的设备</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Export</source>
         <translation>导出</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>PNG image…</source>
         <translation>PNG 图片…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>PDF document…</source>
         <translation>PDF 文档…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>CSV of the visible window…</source>
         <translation>可见窗口的 CSV…</translation>
     </message>
     <message>
-        <location line="+46" />
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location line="+115" />
         <source>No frames from the bus yet.</source>
         <translation>尚未从总线收到帧。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Reading the log…</source>
         <translation>正在读取日志文件…</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The log holds no frames.</source>
         <translation>日志文件中没有帧。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Nothing to plot: connect to a bus (Bus menu) or open a log (File ▸ Open log…).</source>
         <translation>没有可绘制的内容：请连接到总线（总线菜单）或打开日志文件（文件 ▸ 打开日志文件…）。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>bus %1 node %2</source>
         <translation>总线 %1 节点 %2</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.</source>
         <translation>此跟踪中没有 PDO（%L1 帧）：图表显示的是 PDO 所携带的对象。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Nodes seen: %1.</source>
         <translation>已看到的节点：%1。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).</source>
         <translation>节点启动后才会发送 PDO（节点面板：右键单击 ▸ 启动）。</translation>
     </message>
     <message>
-        <location line="+15" />
         <source>No dictionary for these nodes, so their PDOs cannot be decoded: %1. Assign one in the Nodes dock (right-click the node ▸ Assign dictionary…)%2; its PDO signals are then listed here.</source>
         <translation>这些节点没有字典，因此无法解码其 PDO：%1。请在节点面板中指定字典（在节点上右键单击 ▸ 指定字典…）%2；之后其 PDO 信号就会列在这里。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source> or identify the nodes with Bus ▸ Scan network</source>
         <translation> 或以“总线 ▸ 扫描网络”识别节点</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>PDOs whose mapping is not known (changed before the trace began): %1.</source>
         <translation>映射未知的 PDO（在跟踪开始前已更改）：%1。</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>Raw signal %1 added: it is listed under COB-ID %2h once its frames are read</source>
         <translation>已添加原始信号 %1：读到其帧后，会列在 COB-ID %2h 之下</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>%1: cannot write the PNG image</source>
         <translation>%1：无法写入 PNG 图片</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>%1: cannot write the PDF document</source>
         <translation>%1：无法写入 PDF 文档</translation>
     </message>
     <message>
-        <location line="+10" />
         <source>PNG image (*.png)</source>
         <translation>PNG 图片（*.png）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>PDF document (*.pdf)</source>
         <translation>PDF 文档（*.pdf）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>CSV (*.csv)</source>
         <translation>CSV（*.csv）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Export plot</source>
         <translation>导出图表</translation>
     </message>
     <message>
-        <location line="+5" />
         <source>Plot exported to %1</source>
         <translation>图表已导出至 %1</translation>
     </message>
@@ -3743,17 +3024,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>PlotView</name>
     <message>
-        <location filename="../../app/gui/plot/PlotView.cpp" line="+123" />
         <source>Pick signals on the left</source>
         <translation>请在左侧选择信号</translation>
     </message>
     <message>
-        <location line="+17" />
         <source>Time [s]</source>
         <translation>时间 [s]</translation>
     </message>
     <message>
-        <location line="+213" />
         <source>Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.</source>
         <translation>单击图表可放置光标 A（并跳至该帧），Shift+单击放置光标 B。</translation>
     </message>
@@ -3761,57 +3039,46 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui/plot/SignalReplayJob.cpp" line="+11" />
         <source>Decoding the PDOs with the assigned dictionaries</source>
         <translation>正在以指定的字典解码 PDO</translation>
     </message>
     <message>
-        <location filename="../../app/gui/wizards/ds402/Ds402StepBar.cpp" line="-59" />
         <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
         <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入 Switch on disabled：故障位 3 为 0，位 6 为 1。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
         <translation>Shutdown（转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入 Ready to switch on：位 0 与 5 为 1，位 6 为 0。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
         <translation>Switch on（转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入 Switched on：位 0、1、4（电压已启用）与 5 为 1。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
         <translation>Enable operation（转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入 Operation enabled：位 0、1、2 与 5 为 1。</translation>
     </message>
     <message>
-        <location filename="../../app/gui/wizards/nodeid/NodeIdPages.cpp" line="-329" />
         <source>booting (boot-up)</source>
         <translation>启动中（boot-up）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>stopped</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>running (operational)</source>
         <translation>运行中（操作状态）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>ready (pre-operational)</source>
         <translation>就绪（预操作状态）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>seen</source>
         <translation>已检测</translation>
     </message>
     <message>
-        <location filename="../../app/gui/wizards/WizardMenu.cpp" line="+18" />
         <source>CiA 402 enable step-through…</source>
         <translation>CiA 402 逐步使能…</translation>
     </message>
@@ -3819,142 +3086,114 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>RawSignalDialog</name>
     <message>
-        <location filename="../../app/gui/plot/RawSignalDialog.cpp" line="+30" />
         <source>Add raw signal</source>
         <translation>添加原始信号</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>0x181</source>
         <translation>0x181</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Intel: the least significant bit; Motorola: the most significant bit (DBC numbering, bit 7 of byte 0 = 7)</source>
         <translation>Intel：最低有效位；Motorola：最高有效位（DBC 编号方式，字节 0 的位 7 = 7）</translation>
     </message>
     <message>
-        <location line="+3" />
         <source> bits</source>
         <translation> 位</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Unsigned</source>
         <translation>无符号</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Signed</source>
         <translation>有符号</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Float (IEEE 754, 32 or 64 bits)</source>
         <translation>浮点数（IEEE 754，32 或 64 位）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Intel (little-endian, as CANopen PDOs)</source>
         <translation>Intel（小端序，与 CANopen PDO 相同）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Motorola (big-endian)</source>
         <translation>Motorola（大端序）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>value = raw × factor + offset</source>
         <translation>值 = 原始值 × 系数 + 偏移</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Name</source>
         <translation>名称</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>COB-ID</source>
         <translation>COB-ID</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Start bit</source>
         <translation>起始位</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Length</source>
         <translation>长度</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Type</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Byte order</source>
         <translation>字节顺序</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Factor</source>
         <translation>系数</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Offset</source>
         <translation>偏移</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>Plot bits of any frame, for a device without a dictionary.</source>
         <translation>绘制任何帧的位，适用于没有字典的设备。</translation>
     </message>
     <message>
-        <location line="+14" />
         <source>Give the signal a name.</source>
         <translation>请为信号命名。</translation>
     </message>
     <message>
-        <location line="+6" />
         <source>The COB-ID must be a number up to 1FFFFFFFh (0x181, 385 or 181h).</source>
         <translation>COB-ID 必须是不超过 1FFFFFFFh 的数字（0x181、385 或 181h）。</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>The factor must be a number other than 0.</source>
         <translation>系数必须是不为 0 的数字。</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>The offset must be a number.</source>
         <translation>偏移必须是数字。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>A float is 32 or 64 bits long.</source>
         <translation>浮点数长度为 32 或 64 位。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The signal ends past byte 64 of the frame.</source>
         <translation>信号结束位置超出帧的第 64 字节。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>This signal cannot be read: %1.</source>
         <translation>无法读取此信号：%1。</translation>
     </message>
@@ -3962,73 +3201,62 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>ScriptPreview</name>
     <message>
-        <location filename="../../app/gui/wizards/common/ScriptPreview.cpp" line="+26" />
         <source>What it does</source>
         <translation>用途</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Script line</source>
         <translation>脚本行</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Why</source>
         <translation>原因</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Result</source>
         <translation>结果</translation>
     </message>
     <message>
-        <location line="+17" />
         <source>Save as script…</source>
         <translation>另存为脚本…</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Write these steps to a text file that `coscope-cli script run BUS FILE` replays</source>
         <translation>将这些步骤写入文本文件，可用 `coscope-cli script run BUS FILE` 回放</translation>
     </message>
     <message numerus="yes">
-        <location line="+15" />
         <source>%n step(s) will be sent</source>
-        <translation><numerusform>将发送 %n 个步骤</numerusform></translation>
+        <translation>
+            <numerusform>将发送 %n 个步骤</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
         <source>%1 — %n step(s)</source>
-        <translation><numerusform>%1 — %n 个步骤</numerusform></translation>
+        <translation>
+            <numerusform>%1 — %n 个步骤</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+33" />
         <source>done</source>
         <translation>完成</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>failed</source>
         <translation>失败</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>running…</source>
         <translation>运行中…</translation>
     </message>
     <message>
-        <location line="+22" />
-        <location line="+5" />
         <source>Save as script</source>
         <translation>另存为脚本</translation>
     </message>
     <message>
-        <location line="-4" />
         <source>Command scripts (*.txt);;All files (*)</source>
         <translation>指令脚本（*.txt）;;所有文件（*）</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Could not save the script: %1</source>
         <translation>无法保存脚本：%1</translation>
     </message>
@@ -4036,53 +3264,44 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>ScriptRunPanel</name>
     <message>
-        <location filename="../../app/gui/wizards/common/ScriptRunPanel.cpp" line="+20" />
         <source>Run</source>
         <translation>运行</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location line="+20" />
         <source>Stopped: the connection changed.</source>
         <translation>已停止：连接已更改。</translation>
     </message>
     <message>
-        <location line="+34" />
         <source>Send these commands?</source>
         <translation>要发送这些指令吗？</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location line="+24" />
         <source>A run is in progress.</source>
         <translation>正在运行中。</translation>
     </message>
     <message>
-        <location line="-20" />
         <source>The bus cannot send now.</source>
         <translation>总线当前无法发送。</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Step %1 of %2…</source>
         <translation>第 %1 步（共 %2 步）…</translation>
     </message>
     <message numerus="yes">
-        <location line="+6" />
         <source>Done: %n step(s) completed.</source>
-        <translation><numerusform>完成：已完成 %n 个步骤。</numerusform></translation>
+        <translation>
+            <numerusform>完成：已完成 %n 个步骤。</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Stopped at step %1; nothing further was sent.</source>
         <translation>停止于第 %1 步；之后没有再发送任何内容。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Failed at %1</source>
         <translation>失败于 %1</translation>
     </message>
@@ -4090,62 +3309,50 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>SignalPicker</name>
     <message>
-        <location filename="../../app/gui/plot/SignalPicker.cpp" line="+29" />
         <source>Search signals (name, object, node)</source>
         <translation>搜索信号（名称、对象、节点）</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Signal</source>
         <translation>信号</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Object</source>
         <translation>对象</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Unit</source>
         <translation>单位</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Factor</source>
         <translation>系数</translation>
     </message>
     <message>
-        <location line="+68" />
         <source>No signal matches “%1”.</source>
         <translation>没有符合“%1”的信号。</translation>
     </message>
     <message>
-        <location line="+25" />
         <source>Bus %1, COB-ID %2h (raw signals)</source>
         <translation>总线 %1，COB-ID %2h（原始信号）</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>COB-ID %1h (raw signals)</source>
         <translation>COB-ID %1h（原始信号）</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Bus %1, node %2</source>
         <translation>总线 %1，节点 %2</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Node %1</source>
         <translation>节点 %1</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>value = raw × factor + %1 (defined: × %2 %3)</source>
         <translation>值 = 原始值 × 系数 + %1（定义：× %2 %3）</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>value = raw × factor (dictionary: %1 %2)</source>
         <translation>值 = 原始值 × 系数（字典：%1 %2）</translation>
     </message>
@@ -4153,142 +3360,114 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>TraceDock</name>
     <message>
-        <location filename="../../app/gui/trace/TraceDock.cpp" line="+30" />
         <source>Trace</source>
         <translation>跟踪</translation>
     </message>
     <message>
-        <location line="+26" />
         <source>Close this report</source>
         <translation>关闭此报告</translation>
     </message>
     <message>
-        <location line="+67" />
         <source>Follow</source>
         <translation>跟随</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Follow new frames (scrolling up pauses)</source>
         <translation>跟随新帧（向上滚动时暂停）</translation>
     </message>
     <message>
-        <location line="+7" />
         <source>Absolute time</source>
         <translation>绝对时间</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Relative time</source>
         <translation>相对时间</translation>
     </message>
     <message>
-        <location line="+0" />
         <source>Delta time</source>
         <translation>时间差</translation>
     </message>
     <message>
-        <location line="+4" />
         <source>Latest per ID</source>
         <translation>每个 ID 最新帧</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>One row per COB-ID showing its latest frame</source>
         <translation>每个 COB-ID 一行，显示其最新帧</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Group SDO</source>
         <translation>SDO 分组</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Group SDO transfers: each transfer as one row; click its ▸ to show its frames</source>
         <translation>将 SDO 传输分组：每次传输显示为一行；单击 ▸ 显示其帧</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>Filter: node:5 svc:sdo,emcy id:580-5FF text</source>
         <translation>筛选：node:5 svc:sdo,emcy id:580-5FF 文本</translation>
     </message>
     <message>
-        <location line="+17" />
         <source>Find</source>
         <translation>查找</translation>
     </message>
     <message>
-        <location line="+11" />
         <source>Previous</source>
         <translation>上一个</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Find previous</source>
         <translation>查找上一个</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Next</source>
         <translation>下一个</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>Find next</source>
         <translation>查找下一个</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>Bookmark</source>
         <translation>书签</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump</source>
         <translation>在选中的帧上切换书签（Ctrl+B）；F2 / Shift+F2 跳转</translation>
     </message>
     <message>
-        <location line="+60" />
         <source>%L1 rows, %L2 frames</source>
         <translation>%L1 行，%L2 帧</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%L1 SDO transfers grouped</source>
         <translation>已将 %L1 个 SDO 传输分组</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>%L1 of %L2 frames</source>
         <translation>%L1／%L2 帧</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>%L1 frames</source>
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <location line="+69" />
         <source>'%1' not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
     </message>
     <message>
-        <location line="+18" />
         <source>'%1' not found in the next %L2 rows; search again to continue</source>
         <translation>在接下来的 %L2 行中找不到“%1”；再次搜索以继续</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>'%1' not found</source>
         <translation>找不到“%1”</translation>
     </message>
     <message>
-        <location line="+12" />
         <source>Select a frame to bookmark</source>
         <translation>请选择要加书签的帧</translation>
     </message>
     <message>
-        <location line="+9" />
         <source>No bookmarks (Ctrl+B sets one)</source>
         <translation>没有书签（按 Ctrl+B 设置）</translation>
     </message>
@@ -4296,7 +3475,6 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>WizardFramesPane</name>
     <message>
-        <location filename="../../app/gui/wizards/common/WizardFramesPane.cpp" line="+196" />
         <source>Frames on the bus for this wizard</source>
         <translation>此向导在总线上的帧</translation>
     </message>
@@ -4304,22 +3482,18 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>WizardGuard</name>
     <message>
-        <location filename="../../app/gui/wizards/common/WizardGuard.cpp" line="+32" />
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
         <translation>未连接到任何总线，因此无法发送。请先连接到总线；您仍可先准备步骤并另存为脚本。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; you can still prepare the steps and save them as a script.</source>
         <translation>总线以仅监听模式打开：CoScope 不会在上面发送。请取消仅监听后重新连接才能发送这些指令；您仍可先准备步骤并另存为脚本。</translation>
     </message>
     <message>
-        <location line="+2" />
         <source>The bus is still opening; sending is possible once it is open.</source>
         <translation>总线仍在打开中；打开后即可发送。</translation>
     </message>
     <message>
-        <location line="+1" />
         <source>The bus is not open (%1), so nothing can be sent.</source>
         <translation>总线未打开（%1），因此无法发送。</translation>
     </message>
@@ -4327,17 +3501,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>Workspace</name>
     <message>
-        <location filename="../../app/gui/session/Workspace.cpp" line="+138" />
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>
     </message>
     <message>
-        <location line="+3" />
         <source>The capture is not journaled to disk (%1); it is kept in memory only</source>
         <translation>捕获内容未写入磁盘日志（%1）；仅保存在内存中</translation>
     </message>
     <message>
-        <location line="+91" />
         <source>Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.</source>
         <translation>捕获已停止：无法写入捕获日志 %1（%2）。跟踪中保留已收到的 %L3 帧。</translation>
     </message>
