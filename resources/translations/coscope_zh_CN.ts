@@ -434,7 +434,7 @@
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
     </message>
 </context>
@@ -621,7 +621,7 @@
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -673,7 +673,7 @@
         <translation>向导已关闭</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>请检查主电源、使能与安全转矩关闭（STO）输入，以及驱动器本身的面板显示。</translation>
     </message>
     <message>
@@ -873,7 +873,7 @@ Arm the test move?</source>
         <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>无法读取驱动器状态：%1。请确认驱动器已通电并已连接，以及其节点 ID 是否正确。</translation>
     </message>
     <message>
@@ -975,7 +975,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>expedited</source>
-        <translation>快速</translation>
+        <translation>加速</translation>
     </message>
     <message>
         <source>Size</source>
@@ -1145,7 +1145,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Finding</source>
-        <translation>发现</translation>
+        <translation>发现项目</translation>
     </message>
     <message>
         <source>State</source>
@@ -1177,7 +1177,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Resets</source>
-        <translation>重置</translation>
+        <translation>复位次数</translation>
     </message>
     <message>
         <source>SDO transfers</source>
@@ -1276,7 +1276,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Dismiss</source>
-        <translation>跳过</translation>
+        <translation>忽略</translation>
     </message>
     <message>
         <source>A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). Its journal %1 (%2, last written %3) holds everything received up to about a second before.</source>
@@ -1455,7 +1455,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系统语言（%1）</translation>
     </message>
     <message>
@@ -1470,7 +1470,7 @@ Arm the test move?</source>
         <translation>要更改的项目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>节点 ID（设备在总线上的地址，1-127）或波特率（CAN 比特率）。</translation>
     </message>
     <message>
@@ -1502,11 +1502,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驱动器自己的参数——此设备没有相关文档</translation>
     </message>
 </context>
@@ -1689,7 +1689,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
@@ -1701,8 +1701,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;关于此驱动器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -1721,8 +1721,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它没有重新出现：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;无法运行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;无法运行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -1852,7 +1852,7 @@ What to check: %3</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
@@ -1909,7 +1909,7 @@ Frame: %3</source>
     </message>
     <message>
         <source>a reset</source>
-        <translation>重置</translation>
+        <translation>复位</translation>
     </message>
     <message>
         <source>this command</source>
@@ -2058,7 +2058,7 @@ Software version (100Ah): %3</source>
         <translation>仅显示已更改</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只显示从节点读取、且与字典默认值不同的值</translation>
     </message>
     <message>
@@ -2158,8 +2158,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;节点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;无字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;无字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -2296,7 +2296,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>没有任何对象可以读取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
@@ -2374,11 +2374,11 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>断电后保留：保存驱动器参数（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>断电后保留：保存驱动器参数（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成后启动驱动器的过程数据（NMT 启动：操作状态）</translation>
     </message>
     <message>
@@ -2390,7 +2390,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驱动器的字典没有 1010h（保存参数）</translation>
     </message>
     <message>
@@ -2469,7 +2469,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation> （已关闭：COB-ID 位 31 已设置）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
@@ -2780,8 +2780,8 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>PDO 映射：节点 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>断电后保留设置：保存所有参数（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>断电后保留设置：保存所有参数（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -3094,7 +3094,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
@@ -3452,15 +3452,15 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
     </message>
     <message>
-        <source>'%1' not found in the next %L2 rows; search again to continue</source>
+        <source>&apos;%1&apos; not found in the next %L2 rows; search again to continue</source>
         <translation>在接下来的 %L2 行中找不到“%1”；再次搜索以继续</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到“%1”</translation>
     </message>
     <message>

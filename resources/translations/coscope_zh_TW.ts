@@ -434,7 +434,7 @@
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
@@ -621,7 +621,7 @@
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -673,7 +673,7 @@
         <translation>精靈已關閉</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
@@ -873,7 +873,7 @@ Arm the test move?</source>
         <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
@@ -975,7 +975,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>expedited</source>
-        <translation>快速</translation>
+        <translation>加速</translation>
     </message>
     <message>
         <source>Size</source>
@@ -1145,7 +1145,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Finding</source>
-        <translation>發現</translation>
+        <translation>發現項目</translation>
     </message>
     <message>
         <source>State</source>
@@ -1177,7 +1177,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Resets</source>
-        <translation>重置</translation>
+        <translation>重置次數</translation>
     </message>
     <message>
         <source>SDO transfers</source>
@@ -1276,7 +1276,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Dismiss</source>
-        <translation>略過</translation>
+        <translation>忽略</translation>
     </message>
     <message>
         <source>A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). Its journal %1 (%2, last written %3) holds everything received up to about a second before.</source>
@@ -1455,7 +1455,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系統語言（%1）</translation>
     </message>
     <message>
@@ -1470,7 +1470,7 @@ Arm the test move?</source>
         <translation>要變更的項目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
@@ -1502,11 +1502,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
@@ -1689,7 +1689,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
@@ -1701,8 +1701,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -1721,8 +1721,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;無法執行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -1852,7 +1852,7 @@ What to check: %3</source>
         <translation>請先連線到總線</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
@@ -2058,7 +2058,7 @@ Software version (100Ah): %3</source>
         <translation>僅顯示已變更</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
@@ -2158,8 +2158,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;無字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -2296,7 +2296,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
@@ -2374,11 +2374,11 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>斷電後保留：儲存驅動器參數（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
@@ -2390,7 +2390,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
@@ -2469,7 +2469,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
@@ -2780,8 +2780,8 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>斷電後保留設定：儲存所有參數（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -3094,7 +3094,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
@@ -3452,15 +3452,15 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
-        <source>'%1' not found in the next %L2 rows; search again to continue</source>
+        <source>&apos;%1&apos; not found in the next %L2 rows; search again to continue</source>
         <translation>在接下來的 %L2 列中找不到「%1」；再搜尋一次以繼續</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>

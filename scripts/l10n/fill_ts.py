@@ -68,6 +68,8 @@ def main():
         tree = load(path)
         missing = fill(tree, table, lang, refill)
         save(tree, path)
+        # lconvert writes the file the way lupdate does (stable diffs)
+        subprocess.run(["/usr/lib/qt6/bin/lconvert", "-i", path, "-o", path], check=False)
         print(lang, "missing:", len(missing))
         for m in missing[:20]:
             print("  ", json.dumps(m, ensure_ascii=False))
