@@ -4,6 +4,8 @@ source -> zh_TW table (JSON: {"English source": "繁體譯文"}); zh_CN is deriv
 with OpenCC tw2sp (Debian package `opencc`) plus the mainland terms of
 cn_terms.py, unless the table gives {"English": {"tw": ..., "cn": ...}}.
 Only messages that are unfinished (or empty) are filled; finished ones stay.
+Run lupdate (the update_translations target) before and after, so the files keep
+lupdate's layout.
 Usage: fill_ts.py [--refill] TABLE.json TS_DIR   (--refill: overwrite the
 messages the table has even if finished)"""
 import json, subprocess, sys
@@ -68,8 +70,6 @@ def main():
         tree = load(path)
         missing = fill(tree, table, lang, refill)
         save(tree, path)
-        # lconvert writes the file the way lupdate does (stable diffs)
-        subprocess.run(["/usr/lib/qt6/bin/lconvert", "-i", path, "-o", path], check=False)
         print(lang, "missing:", len(missing))
         for m in missing[:20]:
             print("  ", json.dumps(m, ensure_ascii=False))
