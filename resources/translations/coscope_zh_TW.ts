@@ -374,6 +374,24 @@
     </message>
 </context>
 <context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>錯誤碼（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——廠商異警 %1</translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
+    </message>
+</context>
+<context>
     <name>Ds402FramesTabs</name>
     <message>
         <source>Frames (requests and responses)</source>

@@ -31,7 +31,8 @@ def main():
                 acc = re.findall(r"&([A-Za-z])", src.replace("&&", ""))
                 if acc and f"&{acc[0]}".lower() not in t.lower():
                     problems.append("accelerator")
-                if src[:1] in " \n" and t[:1] != src[:1]:
+                # a leading blank may give way to full-width punctuation ("，", "——", "（")
+                if src[:1] in " \n" and t[:1] != src[:1] and not (src[:1] == " " and t[:1] in "，—（。；"):
                     problems.append("leading blank")
                 if src.endswith("\n") != t.endswith("\n"):
                     problems.append("trailing newline")
