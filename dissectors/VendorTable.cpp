@@ -54,6 +54,8 @@ std::unique_ptr<VendorTable> readTable(const QString& name) {
         VendorTable::Alarm a;
         a.code = ao.value(QStringLiteral("code")).toString();
         a.text = ao.value(QStringLiteral("text")).toString();
+        a.textZhTW = ao.value(QStringLiteral("name_zh_TW")).toString();
+        a.textZhCN = ao.value(QStringLiteral("name_zh_CN")).toString();
         bool ok = false;
         const uint32_t ec = number(ao.value(QStringLiteral("emcyCode")), &ok);
         a.emcyCode = ok ? static_cast<int>(ec) : -1;
@@ -73,7 +75,33 @@ std::unique_ptr<VendorTable> readTable(const QString& name) {
     return t;
 }
 
+std::mutex& languageMutex() {
+    static std::mutex m;
+    return m;
+}
+
+QString& languageValue() {
+    static QString lang = QStringLiteral("en");
+    return lang;
+}
+
 }  // namespace
+
+void setVendorTextLanguage(const QString& lang) {
+    std::lock_guard lock(languageMutex());
+    languageValue() = lang.isEmpty() ? QStringLiteral("en") : lang;
+}
+
+QString vendorTextLanguage() {
+    std::lock_guard lock(languageMutex());
+    return languageValue();
+}
+
+QString VendorTable::Alarm::textIn(const QString& lang) const {
+    // Chinese names as printed in the manuals (Delta CANopen manual 4.2, AIMOTOR manual 6.1).
+    const QString& zh = lang == u"zh_TW" ? textZhTW : lang == u"zh_CN" ? textZhCN : text;
+    return zh.isEmpty() ? text : zh;
+}
 
 QString VendorTable::decodeEmcy(const uint8_t* data, int len, uint16_t emcyCode) const {
     QStringList parts;
@@ -85,7 +113,7 @@ QString VendorTable::decodeEmcy(const uint8_t* data, int len, uint16_t emcyCode)
         if (it != alarms.constEnd()) {
             // Unverified layouts: accept the value only when its alarm comes with this error code.
             if (!verified && it->emcyCode >= 0 && it->emcyCode != emcyCode) continue;
-            parts << prefix + it->code + QStringLiteral(" ") + it->text;
+            parts << prefix + it->code + QStringLiteral(" ") + it->localText();
         } else if (f.motor) {
             // Per-motor alarm bytes (DEXMART): show the code even when its meaning is not documented.
             if (v) parts << QStringLiteral("M%1 alarm %2").arg(f.motor).arg(v);

@@ -9,6 +9,12 @@
 
 namespace coscope::dissect {
 
+// The language of the vendor texts the dissectors write (alarm names in EMCY summaries, the
+// CiA 402 wizard's fault line): "en" unless the GUI sets its UI language. The CLI never sets it,
+// so its output stays English.
+void setVendorTextLanguage(const QString& lang);
+QString vendorTextLanguage();
+
 // A vendor alarm table (resources/alarms/NAME.json, schema in resources/README.md): where the
 // alarm values sit in the EMCY manufacturer bytes, what they mean, and the vendor's own SDO
 // abort codes.
@@ -21,8 +27,14 @@ struct VendorTable {
     };
     struct Alarm {
         QString code;        // display name, e.g. "AL011"
-        QString text;
+        QString text;        // English
+        QString textZhTW;    // the manual's own name in Traditional Chinese ("name_zh_TW"), may be empty
+        QString textZhCN;    // ... in Simplified Chinese ("name_zh_CN"), may be empty
         int emcyCode = -1;   // CiA code the alarm comes with, -1 = none given
+        // The name in `lang` ("zh_TW", "zh_CN"; anything else = English), English when the table has none.
+        QString textIn(const QString& lang) const;
+        // The name in vendorTextLanguage().
+        QString localText() const { return textIn(vendorTextLanguage()); }
     };
     QString name;
     bool verified = true;    // layout documented by the vendor

@@ -2,1682 +2,705 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_TW">
 <context>
-    <name>CoreText</name>
+    <name>BusStatusBar</name>
     <message>
-        <source>Not ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <source>Cancel</source>
+        <translation>取消</translation>
     </message>
     <message>
-        <source>Switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <source>Restart controller</source>
+        <translation>重新啟動控制器</translation>
     </message>
     <message>
-        <source>Ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <source>The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)</source>
+        <translation>控制器已進入總線關閉（bus-off），不再傳送任何封包；請重新啟動它（請先檢查配線、終端電阻與位元速率）</translation>
     </message>
     <message>
-        <source>Switched on</source>
-        <translation type="unfinished"></translation>
+        <source>No source</source>
+        <translation>無來源</translation>
     </message>
     <message>
-        <source>Operation enabled</source>
-        <translation type="unfinished"></translation>
+        <source>Offline</source>
+        <translation>離線</translation>
     </message>
     <message>
-        <source>Quick stop active</source>
-        <translation type="unfinished"></translation>
+        <source>Not connected</source>
+        <translation>未連線</translation>
     </message>
     <message>
-        <source>Fault reaction active</source>
-        <translation type="unfinished"></translation>
+        <source>%L1 frames</source>
+        <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>Fault</source>
-        <translation type="unfinished"></translation>
+        <source> · listen-only</source>
+        <translation> · 僅監聽</translation>
     </message>
     <message>
-        <source>Unknown state</source>
-        <translation type="unfinished"></translation>
+        <source>%L1 frames/s</source>
+        <translation>%L1 封包/秒</translation>
     </message>
     <message>
-        <source>ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <source>load %1 %</source>
+        <translation>負載 %1 %</translation>
     </message>
     <message>
-        <source>switched on</source>
-        <translation type="unfinished"></translation>
+        <source>Estimated from frame lengths with worst-case bit stuffing at %1 bit/s</source>
+        <translation>依封包長度估算，以最壞情況的位元填充、%1 bit/s 計算</translation>
     </message>
     <message>
-        <source>operation enabled</source>
-        <translation type="unfinished"></translation>
+        <source>dropped %L1</source>
+        <translation>遺失 %L1</translation>
     </message>
     <message>
-        <source>fault</source>
-        <translation type="unfinished"></translation>
+        <source>errors %L1</source>
+        <translation>錯誤 %L1</translation>
     </message>
     <message>
-        <source>voltage enabled</source>
-        <translation type="unfinished"></translation>
+        <source>error active</source>
+        <translation>錯誤主動</translation>
     </message>
     <message>
-        <source>quick stop</source>
-        <translation type="unfinished"></translation>
+        <source>error warning</source>
+        <translation>錯誤警告</translation>
     </message>
     <message>
-        <source>switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <source>error passive</source>
+        <translation>錯誤被動</translation>
     </message>
     <message>
-        <source>warning</source>
-        <translation type="unfinished"></translation>
+        <source>bus-off</source>
+        <translation>總線關閉</translation>
     </message>
     <message>
-        <source>manufacturer specific (bit 8)</source>
-        <translation type="unfinished"></translation>
+        <source> · TEC %1 REC %2</source>
+        <translation> · TEC %1 REC %2</translation>
     </message>
     <message>
-        <source>remote</source>
-        <translation type="unfinished"></translation>
+        <source>CAN controller state from the last error frame (transmit / receive error counters)</source>
+        <translation>取自最近一個錯誤封包的 CAN 控制器狀態（傳送／接收錯誤計數器）</translation>
     </message>
     <message>
-        <source>target reached</source>
-        <translation type="unfinished"></translation>
+        <source>Controller restarted after bus-off</source>
+        <translation>控制器已在總線關閉後重新啟動</translation>
     </message>
     <message>
-        <source>internal limit active</source>
-        <translation type="unfinished"></translation>
+        <source>Restart after bus-off failed: %1</source>
+        <translation>總線關閉後重新啟動失敗：%1</translation>
     </message>
     <message>
-        <source>operation mode specific (bit 12)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>operation mode specific (bit 13)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 14)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 15)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shutdown</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Switch on</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Switch on + enable operation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Disable voltage</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Quick stop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Disable operation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Enable operation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fault reset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Switch on / disable operation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Profile position (PP)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Velocity (VL)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Profile velocity (PV)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Profile torque (PT)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Homing (HM)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Interpolated position (IP)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous position (CSP)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous velocity (CSV)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous torque (CST)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>vl</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>cst</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Start</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Enter pre-operational</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reset node</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reset communication</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Operational</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pre-operational</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Toggle bit not alternated</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SDO protocol timed out</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Client/server command specifier not valid or unknown</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Invalid block size (block mode only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Invalid sequence number (block mode only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CRC error (block mode only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Out of memory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Unsupported access to an object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Attempt to read a write-only object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Attempt to write a read-only object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Object does not exist in the object dictionary</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Object cannot be mapped to the PDO</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>General parameter incompatibility reason</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>General internal incompatibility in the device</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Access failed due to a hardware error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter does not match</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too high</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too low</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sub-index does not exist</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Invalid value for parameter (download only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Value of parameter written too high (download only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Value of parameter written too low (download only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Maximum value is less than minimum value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Resource not available: SDO connection</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>General error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of local control</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of the present device state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No data available</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>opening</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>open</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation type="unfinished"></translation>
+        <source>Last restart failed: %1</source>
+        <translation>上次重新啟動失敗：%1</translation>
     </message>
 </context>
 <context>
-    <name>Ds402FaultText</name>
+    <name>ConnectDialog</name>
     <message>
-        <source>Error code (603Fh) %1h</source>
-        <translation type="unfinished"></translation>
+        <source>Connect to a CAN bus</source>
+        <translation>連線到 CAN 總線</translation>
     </message>
     <message>
-        <source> — vendor alarm </source>
-        <translation type="unfinished"></translation>
+        <source>(recent connections)</source>
+        <translation>（最近的連線）</translation>
+    </message>
+    <message>
+        <source>Recent:</source>
+        <translation>最近：</translation>
+    </message>
+    <message>
+        <source>Virtual drives (sim://)</source>
+        <translation>虛擬驅動器（sim://）</translation>
+    </message>
+    <message>
+        <source>socketcand server (remote CAN)</source>
+        <translation>socketcand 伺服器（遠端 CAN）</translation>
+    </message>
+    <message>
+        <source>Qt CAN plugin: %1</source>
+        <translation>Qt CAN 外掛：%1</translation>
+    </message>
+    <message>
+        <source>Replay a log file</source>
+        <translation>重播記錄檔</translation>
+    </message>
+    <message>
+        <source>Backend:</source>
+        <translation>後端：</translation>
+    </message>
+    <message>
+        <source>Device:</source>
+        <translation>裝置：</translation>
+    </message>
+    <message>
+        <source>No CAN interfaces found. A virtual one for trying: &lt;tt&gt;sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up&lt;/tt&gt;. A real adapter: &lt;tt&gt;sudo ip link set can0 up type can bitrate 500000&lt;/tt&gt;. Then choose the backend again.</source>
+        <translation>找不到 CAN 介面。可先建立一個虛擬介面試用：&lt;tt&gt;sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up&lt;/tt&gt;。實體轉接器：&lt;tt&gt;sudo ip link set can0 up type can bitrate 500000&lt;/tt&gt;。然後再選一次後端。</translation>
+    </message>
+    <message>
+        <source>Bring up</source>
+        <translation>啟用介面</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>主機：</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>連接埠：</translation>
+    </message>
+    <message>
+        <source>Channel:</source>
+        <translation>通道：</translation>
+    </message>
+    <message>
+        <source>Virtual drives on the in-process bus:</source>
+        <translation>程序內總線上的虛擬驅動器：</translation>
+    </message>
+    <message>
+        <source>Drive (dictionary)</source>
+        <translation>驅動器（字典）</translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation>節點 ID</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>瀏覽…</translation>
+    </message>
+    <message>
+        <source>Log to replay</source>
+        <translation>要重播的記錄檔</translation>
+    </message>
+    <message>
+        <source>Log:</source>
+        <translation>記錄檔：</translation>
+    </message>
+    <message>
+        <source>1×</source>
+        <translation>1×</translation>
+    </message>
+    <message>
+        <source>10×</source>
+        <translation>10×</translation>
+    </message>
+    <message>
+        <source>100×</source>
+        <translation>100×</translation>
+    </message>
+    <message>
+        <source>As fast as possible</source>
+        <translation>盡可能快</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>循環播放</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <source>(adapter setting)</source>
+        <translation>（轉接器設定）</translation>
+    </message>
+    <message>
+        <source>%L1 kbit/s</source>
+        <translation>%L1 kbit/s</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>鮑率：</translation>
+    </message>
+    <message>
+        <source>CAN FD</source>
+        <translation>CAN FD</translation>
+    </message>
+    <message>
+        <source>data %L1 Mbit/s</source>
+        <translation>資料段 %L1 Mbit/s</translation>
+    </message>
+    <message>
+        <source>Listen-only (never transmit)</source>
+        <translation>僅監聽（絕不傳送）</translation>
+    </message>
+    <message>
+        <source>Type or paste a bus URL, e.g. socketcan://can0?bitrate=500000</source>
+        <translation>輸入或貼上總線 URL，例如 socketcan://can0?bitrate=500000</translation>
+    </message>
+    <message>
+        <source>URL:</source>
+        <translation>URL：</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>連線</translation>
+    </message>
+    <message>
+        <source>Listed by the plugin without finding an adapter</source>
+        <translation>外掛列出了此項，但未找到轉接器</translation>
+    </message>
+    <message>
+        <source>Could not bring the interface up: %1</source>
+        <translation>無法啟用介面：%1</translation>
+    </message>
+    <message>
+        <source>%1 is down</source>
+        <translation>%1 已停用</translation>
+    </message>
+    <message>
+        <source>%1 is up (virtual CAN)</source>
+        <translation>%1 已啟用（虛擬 CAN）</translation>
+    </message>
+    <message>
+        <source>%1 is up at %L2 kbit/s</source>
+        <translation>%1 已啟用，鮑率 %L2 kbit/s</translation>
+    </message>
+    <message>
+        <source>%1 is up</source>
+        <translation>%1 已啟用</translation>
+    </message>
+    <message>
+        <source>, CAN FD data %L1 Mbit/s</source>
+        <translation>，CAN FD 資料段 %L1 Mbit/s</translation>
+    </message>
+    <message>
+        <source>, controller in error warning (TEC %1, REC %2)</source>
+        <translation>，控制器處於錯誤警告（TEC %1，REC %2）</translation>
+    </message>
+    <message>
+        <source>, controller error passive (TEC %1, REC %2)</source>
+        <translation>，控制器處於錯誤被動（TEC %1，REC %2）</translation>
+    </message>
+    <message>
+        <source>, controller is bus-off: check wiring, termination and bit rate</source>
+        <translation>，控制器已總線關閉：請檢查配線、終端電阻與鮑率</translation>
+    </message>
+    <message>
+        <source>, controller stopped</source>
+        <translation>，控制器已停止</translation>
+    </message>
+    <message>
+        <source>Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.</source>
+        <translation>未確認：%1 外掛列出了 %2，但未找到轉接器；連線後即可知道轉接器是否存在。</translation>
+    </message>
+    <message>
+        <source>To change its bit rate, run:</source>
+        <translation>要變更其鮑率，請執行：</translation>
+    </message>
+    <message>
+        <source>Bring it up with:</source>
+        <translation>以下列指令啟用：</translation>
+    </message>
+    <message>
+        <source>Change bit rate now</source>
+        <translation>立即變更鮑率</translation>
+    </message>
+    <message>
+        <source>Bring up now</source>
+        <translation>立即啟用</translation>
+    </message>
+    <message>
+        <source>CoScope runs without the right to configure network interfaces: run the command above in a terminal</source>
+        <translation>CoScope 沒有設定網路介面的權限：請在終端機中執行上面的指令</translation>
+    </message>
+    <message>
+        <source>Choose at least one virtual drive</source>
+        <translation>請至少選擇一台虛擬驅動器</translation>
+    </message>
+</context>
+<context>
+    <name>ConsoleDock</name>
+    <message>
+        <source>Console</source>
+        <translation>主控台</translation>
+    </message>
+</context>
+<context>
+    <name>DcfApplyDialog</name>
+    <message>
+        <source>Apply DCF to node %1</source>
+        <translation>將 DCF 套用到節點 %1</translation>
+    </message>
+    <message>
+        <source>Nothing to write: every value of %1 is already on node %2 or cannot be written (%3 entries, listed below).</source>
+        <translation>沒有需要寫入的項目：%1 的每個值都已與節點 %2 相同，或無法寫入（%3 個項目，列於下方）。</translation>
+    </message>
+    <message>
+        <source>Write %1 object(s) from &lt;b&gt;%2&lt;/b&gt; to &lt;b&gt;node %3&lt;/b&gt; over SDO? Each write is sent once; a refused write is reported and the others continue. %4 entries are not written (greyed).</source>
+        <translation>要透過 SDO 將 &lt;b&gt;%2&lt;/b&gt; 的 %1 個物件寫入 &lt;b&gt;節點 %3&lt;/b&gt; 嗎？每筆寫入只送出一次；被拒絕的寫入會回報，其餘照常進行。有 %4 個項目不會寫入（灰色顯示）。</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>物件</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>寫入</translation>
+    </message>
+    <message>
+        <source>Node now / result</source>
+        <translation>節點目前值／結果</translation>
+    </message>
+    <message>
+        <source>(not read)</source>
+        <translation>（未讀取）</translation>
+    </message>
+    <message>
+        <source>not written: %1</source>
+        <translation>未寫入：%1</translation>
+    </message>
+    <message>
+        <source>Write %1 object(s)</source>
+        <translation>寫入 %1 個物件</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已寫入</translation>
+    </message>
+    <message>
+        <source>Node %1: %2 of %3 write(s) done, %4 refused%5.</source>
+        <translation>節點 %1：完成 %2／%3 筆寫入，%4 筆被拒絕%5。</translation>
+    </message>
+    <message>
+        <source>, cancelled before the rest</source>
+        <translation>，其餘在取消前未送出</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>錯誤碼（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——廠商異警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <translation type="unfinished"></translation>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402FramesTabs</name>
+    <message>
+        <source>Frames (requests and responses)</source>
+        <translation>封包（請求與回應）</translation>
+    </message>
+    <message>
+        <source>Dry run (what will be sent)</source>
+        <translation>模擬執行（將送出的內容）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402ModeBox</name>
+    <message>
+        <source>Mode of operation (6060h / 6061h)</source>
+        <translation>操作模式（6060h / 6061h）</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>未讀取</translation>
+    </message>
+    <message>
+        <source>Set and verify</source>
+        <translation>設定並驗證</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>模式：</translation>
+    </message>
+    <message>
+        <source>Shown by the drive (6061h): not read</source>
+        <translation>驅動器顯示（6061h）：未讀取</translation>
+    </message>
+    <message>
+        <source>Shown by the drive (6061h): %1</source>
+        <translation>驅動器顯示（6061h）：%1</translation>
+    </message>
+    <message>
+        <source>Shown by the drive (6061h): %1 ✓</source>
+        <translation>驅動器顯示（6061h）：%1 ✓</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402MotionPlot</name>
+    <message>
+        <source>position 6064h</source>
+        <translation>位置 6064h</translation>
+    </message>
+    <message>
+        <source>position 6064h: %1</source>
+        <translation>位置 6064h：%1</translation>
+    </message>
+    <message>
+        <source>velocity 606Ch</source>
+        <translation>速度 606Ch</translation>
+    </message>
+    <message>
+        <source>velocity 606Ch: %1</source>
+        <translation>速度 606Ch：%1</translation>
+    </message>
+    <message>
+        <source>The test move&apos;s motion shows here</source>
+        <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
 <context>
     <name>Ds402StateDiagram</name>
     <message>
-        <source>13 any fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>Ds402VendorNotes</name>
-    <message>
-        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>EventLog</name>
-    <message>
-        <source>EMCY reset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SDO abort</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Heartbeat timeout</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bus error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Dropped frames</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Info</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Heartbeat back after timeout</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>State %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No heartbeat for %1 ms (period %2 ms)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>FrameDecoder</name>
-    <message>
-        <source>NMT (short frame)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT frame must carry 2 bytes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT node control</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command specifier</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node-ID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>0 (all)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node guarding request to node %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node guarding request (RTR)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT error control (empty)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error control frame without state byte</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boot-up node %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Heartbeat node %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Heartbeat / guarding</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Toggle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>EMCY node %1: error reset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>EMCY node %1: %2 %3, reg %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>EMCY frame shorter than 8 bytes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Emergency</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Error code</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Error register (1001h)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bit %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Manufacturer-specific</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SDO %1 node %2 %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, %1 bytes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SDO request (client → server)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SDO response (server → client)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Index</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sub-index</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Abort code</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Segment data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Error frame, class %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Error frame</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>SYNC counter %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>TIME stamp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(empty)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>LSS command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(29-bit identifier, not CANopen)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 node %2, %3 bytes</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>LogLoadJob</name>
-    <message>
-        <source>Opening %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: cannot open</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>LogSaveJob</name>
-    <message>
-        <source>Saving %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: unknown log format</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>OdTreeModel</name>
-    <message>
-        <source>sub %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reading…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>writing…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, PDO-mappable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
-Limits: %1 … %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
-Differs from the default</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3 (bytes %4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>PdoDbcExport</name>
-    <message>
-        <source>%1: cannot write the DBC file (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export PDO layout as DBC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>DBC file (*.dbc)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>PdoVendorNotes</name>
-    <message>
-        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive does not have this object: this PDO number may not exist on it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 0)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Applied as soon as it arrives (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reserved transmission type %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>QObject</name>
-    <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>booting (boot-up)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>running (operational)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ready (pre-operational)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>seen</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>TraceFilter</name>
-    <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grouping SDO transfers</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Filtering</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>WizardFramesPane</name>
-    <message>
-        <source>Time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Dir</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>WizardMenu</name>
-    <message>
-        <source>Baud rate and node-ID…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CiA 402 enable step-through…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PDO mapping…</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::BusStatusBar</name>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Restart controller</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No source</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Offline</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%L1 frames</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> · listen-only</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%L1 frames/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>load %1 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Estimated from frame lengths with worst-case bit stuffing at %1 bit/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>dropped %L1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>errors %L1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error active</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error warning</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error passive</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>bus-off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> · TEC %1 REC %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CAN controller state from the last error frame (transmit / receive error counters)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Controller restarted after bus-off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Restart after bus-off failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Last restart failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::ConnectDialog</name>
-    <message>
-        <source>Connect to a CAN bus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(recent connections)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Recent:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Virtual drives (sim://)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>socketcand server (remote CAN)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Qt CAN plugin: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Replay a log file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Backend:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Device:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No CAN interfaces found. A virtual one for trying: &lt;tt&gt;sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up&lt;/tt&gt;. A real adapter: &lt;tt&gt;sudo ip link set can0 up type can bitrate 500000&lt;/tt&gt;. Then choose the backend again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bring up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Host:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Port:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Channel:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Virtual drives on the in-process bus:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drive (dictionary)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node-ID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Browse…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Log to replay</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Log:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>1×</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>10×</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>100×</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>As fast as possible</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Speed:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(adapter setting)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%L1 kbit/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bit rate:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CAN FD</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>data %L1 Mbit/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Listen-only (never transmit)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Type or paste a bus URL, e.g. socketcan://can0?bitrate=500000</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>URL:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Connect</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Listed by the plugin without finding an adapter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not bring the interface up: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is down</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is up (virtual CAN)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is up at %L2 kbit/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 is up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, CAN FD data %L1 Mbit/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, controller in error warning (TEC %1, REC %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, controller error passive (TEC %1, REC %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, controller is bus-off: check wiring, termination and bit rate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, controller stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>To change its bit rate, run:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bring it up with:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change bit rate now</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bring up now</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CoScope runs without the right to configure network interfaces: run the command above in a terminal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Choose at least one virtual drive</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::ConsoleDock</name>
-    <message>
-        <source>Console</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::DcfApplyDialog</name>
-    <message>
-        <source>Apply DCF to node %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Nothing to write: every value of %1 is already on node %2 or cannot be written (%3 entries, listed below).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write %1 object(s) from &lt;b&gt;%2&lt;/b&gt; to &lt;b&gt;node %3&lt;/b&gt; over SDO? Each write is sent once; a refused write is reported and the others continue. %4 entries are not written (greyed).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Object</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Name</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node now / result</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(not read)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not written: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Write %1 object(s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>written</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node %1: %2 of %3 write(s) done, %4 refused%5.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, cancelled before the rest</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::Ds402FramesTabs</name>
-    <message>
-        <source>Frames (requests and responses)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Dry run (what will be sent)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::Ds402ModeBox</name>
-    <message>
-        <source>Mode of operation (6060h / 6061h)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not read</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set and verify</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mode:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shown by the drive (6061h): not read</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shown by the drive (6061h): %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shown by the drive (6061h): %1 ✓</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::Ds402MotionPlot</name>
-    <message>
-        <source>position 6064h</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>position 6064h: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>velocity 606Ch</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>velocity 606Ch: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The test move&apos;s motion shows here</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::Ds402StateDiagram</name>
-    <message>
         <source>State not read yet</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未讀取狀態</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::Ds402StatusPanel</name>
+    <name>Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態字元（6041h）：未讀取</translation>
     </message>
     <message>
         <source>On: </source>
-        <translation type="unfinished"></translation>
+        <translation>開：</translation>
     </message>
     <message>
         <source>Off: </source>
-        <translation type="unfinished"></translation>
+        <translation>關：</translation>
     </message>
     <message>
         <source>Statusword (6041h) = %1 — %2</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態字元（6041h）= %1 — %2</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::Ds402StepBar</name>
+    <name>Ds402StepBar</name>
     <message>
         <source>Step through — one button per transition</source>
-        <translation type="unfinished"></translation>
+        <translation>逐步執行 — 每個狀態轉換一個按鈕</translation>
     </message>
     <message>
         <source>1  Fault reset</source>
-        <translation type="unfinished"></translation>
+        <translation>1  故障重置</translation>
     </message>
     <message>
         <source>2  Shutdown</source>
-        <translation type="unfinished"></translation>
+        <translation>2  Shutdown（關閉）</translation>
     </message>
     <message>
         <source>3  Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>3  Switch on（啟動）</translation>
     </message>
     <message>
         <source>4  Enable operation…</source>
-        <translation type="unfinished"></translation>
+        <translation>4  Enable operation（運轉致能）…</translation>
     </message>
     <message>
         <source>The drive is enabled (Operation enabled). Choose a mode and try a test move, or press Disable.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器已致能（Operation enabled）。請選擇模式並試做測試運轉，或按「停用」。</translation>
     </message>
     <message>
         <source>Quick stop is active: press Disable to leave it (Disable voltage, transition 12).</source>
-        <translation type="unfinished"></translation>
+        <translation>Quick Stop 已啟動：請按「停用」離開（Disable voltage，轉換 12）。</translation>
     </message>
     <message>
         <source>Next: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>下一步：%1</translation>
     </message>
     <message>
         <source>The drive is in %1; wait for it to settle, then read the state again.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器處於 %1；請等它穩定後再讀取一次狀態。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::Ds402TestMoveBox</name>
+    <name>Ds402TestMoveBox</name>
     <message>
         <source>Test move (optional, small limits)</source>
-        <translation type="unfinished"></translation>
+        <translation>測試運轉（選用，小範圍限制）</translation>
     </message>
     <message>
         <source>Jog (profile velocity, 60FFh)</source>
-        <translation type="unfinished"></translation>
+        <translation>寸動（profile velocity，60FFh）</translation>
     </message>
     <message>
         <source>Short move (profile position, 607Ah relative)</source>
-        <translation type="unfinished"></translation>
+        <translation>短距移動（profile position，607Ah 相對）</translation>
     </message>
     <message>
         <source>Kind:</source>
-        <translation type="unfinished"></translation>
+        <translation>類型：</translation>
     </message>
     <message>
         <source>Velocity:</source>
-        <translation type="unfinished"></translation>
+        <translation>速度：</translation>
     </message>
     <message>
         <source>Distance:</source>
-        <translation type="unfinished"></translation>
+        <translation>距離：</translation>
     </message>
     <message>
         <source> ms max</source>
-        <translation type="unfinished"></translation>
+        <translation> ms 上限</translation>
     </message>
     <message>
         <source>Time limit:</source>
-        <translation type="unfinished"></translation>
+        <translation>時間上限：</translation>
     </message>
     <message>
         <source>Arm test move…</source>
-        <translation type="unfinished"></translation>
+        <translation>準備測試運轉…</translation>
     </message>
     <message>
         <source>Hold to run</source>
-        <translation type="unfinished"></translation>
+        <translation>按住運轉</translation>
     </message>
     <message>
         <source>The motor moves only while this button is held down; releasing it stops the motor.</source>
-        <translation type="unfinished"></translation>
+        <translation>只有按住此按鈕時馬達才會運轉；放開即停止馬達。</translation>
     </message>
     <message>
         <source>turn at %1 (profile velocity, 60FFh = %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>以 %1 轉動（profile velocity，60FFh = %2）</translation>
     </message>
     <message>
         <source>move %1 at up to %2 (profile position, relative: 607Ah = %3, 6081h = %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>移動 %1，速度最高 %2（profile position，相對：607Ah = %3，6081h = %4）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::Ds402Wizard</name>
+    <name>Ds402Wizard</name>
     <message>
         <source>CiA 402 enable step-through</source>
-        <translation type="unfinished"></translation>
+        <translation>CiA 402 逐步致能</translation>
     </message>
     <message>
         <source>connection lost</source>
-        <translation type="unfinished"></translation>
+        <translation>連線中斷</translation>
     </message>
     <message>
         <source>Connection lost (bus %1). The drive was told to disable if the bus still accepted it; otherwise its own communication-loss reaction (6007h) applies. Check the drive.</source>
-        <translation type="unfinished"></translation>
+        <translation>連線中斷（總線 %1）。若總線仍可傳送，已通知驅動器停用；否則由驅動器自身的通訊中斷處理（6007h）決定。請檢查驅動器。</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤</translation>
     </message>
     <message>
         <source>closed</source>
-        <translation type="unfinished"></translation>
+        <translation>已關閉</translation>
     </message>
     <message>
         <source>The connection changed. Choose the drive again.</source>
-        <translation type="unfinished"></translation>
+        <translation>連線已變更。請重新選擇驅動器。</translation>
     </message>
     <message>
         <source>application quits</source>
-        <translation type="unfinished"></translation>
+        <translation>應用程式結束</translation>
     </message>
     <message>
         <source>Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h).</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽連線：此精靈必須傳送（對 6040h/6041h 的 SDO），因此已停用。</translation>
     </message>
     <message>
         <source>wizard destroyed</source>
-        <translation type="unfinished"></translation>
+        <translation>精靈已銷毀</translation>
     </message>
     <message>
         <source>Drive (node):</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器（節點）：</translation>
     </message>
     <message>
         <source>Read state</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取狀態</translation>
     </message>
     <message>
         <source>Drive state (CiA 402 state machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器狀態（CiA 402 狀態機）</translation>
     </message>
     <message>
         <source>Statusword bits</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態字元位元</translation>
     </message>
     <message>
         <source>Saved %1; replay it with: coscope-cli script run BUS %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已儲存 %1；重播指令：coscope-cli script run BUS %1</translation>
     </message>
     <message>
         <source>Quick stop</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止</translation>
     </message>
     <message>
         <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
-        <translation type="unfinished"></translation>
+        <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
         <source>Disable</source>
-        <translation type="unfinished"></translation>
+        <translation>停用</translation>
     </message>
     <message>
         <source>Removes power from the motor: Shutdown then Disable voltage (6040h = 0006h, 0000h).</source>
-        <translation type="unfinished"></translation>
+        <translation>切斷馬達電源：先 Shutdown 再 Disable voltage（6040h = 0006h、0000h）。</translation>
     </message>
     <message>
         <source>Dry run</source>
-        <translation type="unfinished"></translation>
+        <translation>模擬執行</translation>
     </message>
     <message>
         <source>Show the exact SDO sequence of the enable, without sending anything.</source>
-        <translation type="unfinished"></translation>
+        <translation>顯示致能過程完整的 SDO 順序，不送出任何內容。</translation>
     </message>
     <message>
         <source>Close</source>
-        <translation type="unfinished"></translation>
+        <translation>關閉</translation>
     </message>
     <message>
         <source>Not connected to a bus.</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線到總線。</translation>
     </message>
     <message>
         <source>Listen-only connection: the wizard does not send.</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽連線：精靈不會傳送。</translation>
     </message>
     <message>
         <source>The bus is not open.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線未開啟。</translation>
     </message>
     <message>
         <source>No drive chosen.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未選擇驅動器。</translation>
     </message>
     <message>
         <source>Node %1 is not being read: press “Read state” to read it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 目前未被讀取：請按「讀取狀態」重新讀取。</translation>
     </message>
     <message>
         <source>Node %1 is not a CiA 402 drive.</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 不是 CiA 402 驅動器。</translation>
     </message>
     <message>
         <source>wizard closed</source>
-        <translation type="unfinished"></translation>
+        <translation>精靈已關閉</translation>
     </message>
     <message>
         <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
-        <translation type="unfinished"></translation>
+        <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
         <source>Wait for the current step to finish.</source>
-        <translation type="unfinished"></translation>
+        <translation>請等目前步驟完成。</translation>
     </message>
     <message>
         <source>Enable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>運轉致能</translation>
     </message>
     <message>
         <source>Enable operation energises the motor of node %1: it will hold its position and follow commands.
@@ -1685,2796 +708,2827 @@ Differs from the default</source>
 Make sure the machine is safe to move and people are clear.
 
 Send 6040h = 000Fh now?</source>
-        <translation type="unfinished"></translation>
+        <translation>運轉致能會讓節點 %1 的馬達通電：馬達會保持位置並依命令動作。
+
+請確認機台可以安全移動，且人員已離開。
+
+現在送出 6040h = 000Fh？</translation>
     </message>
     <message>
         <source>Enable operation was not confirmed; nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>未確認運轉致能；沒有送出任何內容。</translation>
     </message>
     <message>
         <source>%1: sending… (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：傳送中…（%2）</translation>
     </message>
     <message>
         <source>%1 done: the drive is now in %2 (statusword %3h).</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 完成：驅動器目前處於 %2（狀態字元 %3h）。</translation>
     </message>
     <message>
         <source>Step “%1” failed: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>步驟「%1」失敗：%2。</translation>
     </message>
     <message>
         <source>
 The drive was sent Disable voltage (6040h = 0000h) and is now in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>
+已對驅動器送出 Disable voltage（6040h = 0000h），目前處於 %1。</translation>
     </message>
     <message>
         <source>
 DISABLING FAILED: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>
+停用失敗：%1</translation>
     </message>
     <message>
         <source>What to check: </source>
-        <translation type="unfinished"></translation>
+        <translation>檢查事項：</translation>
     </message>
     <message>
         <source>The drive does not list %1 as supported (6502h = %2h).</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器未列出支援 %1（6502h = %2h）。</translation>
     </message>
     <message>
         <source>Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…</source>
-        <translation type="unfinished"></translation>
+        <translation>設定操作模式：6060h = %1（%2），接著檢查 6061h…</translation>
     </message>
     <message>
         <source>Mode set and verified: the drive shows %1 in 6061h.</source>
-        <translation type="unfinished"></translation>
+        <translation>模式已設定並驗證：驅動器在 6061h 顯示 %1。</translation>
     </message>
     <message>
         <source>Could not set %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>無法設定 %1：%2</translation>
     </message>
     <message>
         <source>Enable the drive first (Operation enabled), then arm the test move.</source>
-        <translation type="unfinished"></translation>
+        <translation>請先讓驅動器致能（Operation enabled），再準備測試運轉。</translation>
     </message>
     <message>
         <source>Test move</source>
-        <translation type="unfinished"></translation>
+        <translation>測試運轉</translation>
     </message>
     <message>
         <source>While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.
 Releasing the button stops it. Make sure the axis is free to move.
 
 Arm the test move?</source>
-        <translation type="unfinished"></translation>
+        <translation>按住「按住運轉」期間，節點 %1 的馬達將%2，最長 %3 ms。
+放開按鈕即停止。請確認軸可以自由移動。
+
+要準備測試運轉嗎？</translation>
     </message>
     <message>
         <source>Test move not armed.</source>
-        <translation type="unfinished"></translation>
+        <translation>未準備測試運轉。</translation>
     </message>
     <message>
         <source>Test move armed: hold the “Hold to run” button to move, release it to stop.</source>
-        <translation type="unfinished"></translation>
+        <translation>測試運轉已就緒：按住「按住運轉」按鈕即移動，放開即停止。</translation>
     </message>
     <message>
         <source>Arm the test move first.</source>
-        <translation type="unfinished"></translation>
+        <translation>請先準備測試運轉。</translation>
     </message>
     <message>
         <source>Test move stopped: %1. The drive stays enabled; press Disable when done.</source>
-        <translation type="unfinished"></translation>
+        <translation>測試運轉已停止：%1。驅動器保持致能；完成後請按「停用」。</translation>
     </message>
     <message>
         <source>Test move failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>測試運轉失敗：%1</translation>
     </message>
     <message>
         <source>Moving while the button is held…</source>
-        <translation type="unfinished"></translation>
+        <translation>按住按鈕期間運轉中…</translation>
     </message>
     <message>
         <source>hold-to-run button released</source>
-        <translation type="unfinished"></translation>
+        <translation>已放開「按住運轉」按鈕</translation>
     </message>
     <message>
         <source>Quick stop: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止：%1</translation>
     </message>
     <message>
         <source>Quick stop: sending 6040h = 0002h…</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止：送出 6040h = 0002h…</translation>
     </message>
     <message>
         <source>Quick stop done: the drive is in %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止完成：驅動器處於 %1。</translation>
     </message>
     <message>
         <source>Disable: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>停用：%1</translation>
     </message>
     <message>
         <source>Disabling: Shutdown, then Disable voltage…</source>
-        <translation type="unfinished"></translation>
+        <translation>停用中：先 Shutdown，再 Disable voltage…</translation>
     </message>
     <message>
         <source>The drive is disabled (%1): the motor has no power.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器已停用（%1）：馬達無電源。</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2</translation>
     </message>
     <message numerus="yes">
         <source>Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them for coscope-cli script run.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>模擬執行：致能程序將從 %1 起送出 %n 個步驟——實際上沒有送出任何內容。「另存為腳本…」可保留這些步驟供 coscope-cli script run 使用。</numerusform>
         </translation>
     </message>
     <message>
         <source>Looking for a CiA 402 drive (device type 1000h = …0192h)…</source>
-        <translation type="unfinished"></translation>
+        <translation>尋找 CiA 402 驅動器（裝置類型 1000h = …0192h）…</translation>
     </message>
     <message>
         <source>No CiA 402 drive answered yet; trying again.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚無 CiA 402 驅動器回應；重試中。</translation>
     </message>
     <message>
         <source>another drive was chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>已選擇另一台驅動器</translation>
     </message>
     <message>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>Node %1 — %2</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 — %2</translation>
     </message>
     <message>
         <source>Reading the identity of node %1 (1018h)…</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取節點 %1 的識別資訊（1018h）…</translation>
     </message>
     <message>
         <source>Node %1 is a %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 是 %2：%3</translation>
     </message>
     <message>
         <source>The state of node %1 is not known: not connected.</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 的狀態不明：未連線。</translation>
     </message>
     <message>
         <source>not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線</translation>
     </message>
     <message>
         <source>The drive is initialising (Not ready to switch on); waiting for Switch on disabled…</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器正在初始化（Not ready to switch on）；等待進入 Switch on disabled…</translation>
     </message>
     <message>
         <source>The drive finished initialising.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器已完成初始化。</translation>
     </message>
     <message>
         <source>Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
         <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
-        <translation type="unfinished"></translation>
+        <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
         <source>Error code 603Fh could not be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法讀取錯誤碼 603Fh：%1</translation>
     </message>
     <message>
         <source>%1 is %2, not %3: the drive is not in CANopen control and will ignore the controlword. Set %1 = %3 first.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 為 %2，而非 %3：驅動器不在 CANopen 控制模式，會忽略控制字元。請先將 %1 設為 %3。</translation>
     </message>
     <message>
         <source>Mode of operation (6061h): %1</source>
-        <translation type="unfinished"></translation>
+        <translation>操作模式（6061h）：%1</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::EventsDock</name>
+    <name>EventsDock</name>
     <message>
         <source>Events</source>
-        <translation type="unfinished"></translation>
+        <translation>事件</translation>
     </message>
     <message>
         <source>Double-click an event to show its frame in the trace</source>
-        <translation type="unfinished"></translation>
+        <translation>按兩下事件可在追蹤中顯示其封包</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::EventsModel</name>
+    <name>EventsModel</name>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>時間（秒）</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>Event</source>
-        <translation type="unfinished"></translation>
+        <translation>事件</translation>
     </message>
     <message>
         <source>Details</source>
-        <translation type="unfinished"></translation>
+        <translation>詳細資料</translation>
     </message>
     <message>
         <source>Frame</source>
-        <translation type="unfinished"></translation>
+        <translation>封包</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::FrameDetailsView</name>
+    <name>FrameDetailsView</name>
     <message>
         <source>Field</source>
-        <translation type="unfinished"></translation>
+        <translation>欄位</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>值</translation>
     </message>
     <message>
         <source>Bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組</translation>
     </message>
     <message>
         <source>SDO transfer</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 傳輸</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>Object</source>
-        <translation type="unfinished"></translation>
+        <translation>物件</translation>
     </message>
     <message>
         <source>Direction</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>upload (read from the server)</source>
-        <translation type="unfinished"></translation>
+        <translation>上傳（從 SDO 伺服器讀取）</translation>
     </message>
     <message>
         <source>download (write to the server)</source>
-        <translation type="unfinished"></translation>
+        <translation>下載（寫入 SDO 伺服器）</translation>
     </message>
     <message>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>模式</translation>
     </message>
     <message>
         <source>block</source>
-        <translation type="unfinished"></translation>
+        <translation>區塊</translation>
     </message>
     <message>
         <source>segmented</source>
-        <translation type="unfinished"></translation>
+        <translation>分段</translation>
     </message>
     <message>
         <source>expedited</source>
-        <translation type="unfinished"></translation>
+        <translation>加速</translation>
     </message>
     <message>
         <source>Size</source>
-        <translation type="unfinished"></translation>
+        <translation>大小</translation>
     </message>
     <message numerus="yes">
         <source>%n byte(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n 位元組</numerusform>
         </translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished"></translation>
+        <translation>資料</translation>
     </message>
     <message>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態</translation>
     </message>
     <message>
         <source>Abort code</source>
-        <translation type="unfinished"></translation>
+        <translation>中止碼</translation>
     </message>
     <message>
         <source>Abort reason</source>
-        <translation type="unfinished"></translation>
+        <translation>中止原因</translation>
     </message>
     <message>
         <source>Frames</source>
-        <translation type="unfinished"></translation>
+        <translation>封包</translation>
     </message>
     <message>
         <source>1 (frame %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>1（封包 %1）</translation>
     </message>
     <message>
         <source>%1 (frames %2–%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（封包 %2–%3）</translation>
     </message>
     <message>
         <source>Duration</source>
-        <translation type="unfinished"></translation>
+        <translation>持續時間</translation>
     </message>
     <message>
         <source>Frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>封包 %1</translation>
     </message>
     <message>
         <source>Identifier</source>
-        <translation type="unfinished"></translation>
+        <translation>識別碼</translation>
     </message>
     <message>
         <source>Service</source>
-        <translation type="unfinished"></translation>
+        <translation>服務</translation>
     </message>
     <message>
         <source>, node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>，節點 %1</translation>
     </message>
     <message>
         <source>Length</source>
-        <translation type="unfinished"></translation>
+        <translation>長度</translation>
     </message>
     <message>
         <source> (remote request)</source>
-        <translation type="unfinished"></translation>
+        <translation> （遠端請求）</translation>
     </message>
     <message>
         <source>transmitted</source>
-        <translation type="unfinished"></translation>
+        <translation>已傳送</translation>
     </message>
     <message>
         <source>error frame</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤封包</translation>
     </message>
     <message>
         <source>Flags</source>
-        <translation type="unfinished"></translation>
+        <translation>旗標</translation>
     </message>
     <message>
         <source>Warning</source>
-        <translation type="unfinished"></translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組 %1</translation>
     </message>
     <message>
         <source>bytes %1–%2</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組 %1–%2</translation>
     </message>
     <message>
         <source>, bit %1</source>
-        <translation type="unfinished"></translation>
+        <translation>，位元 %1</translation>
     </message>
     <message>
         <source>, bits %1–%2</source>
-        <translation type="unfinished"></translation>
+        <translation>，位元 %1–%2</translation>
     </message>
     <message>
         <source>(no payload)</source>
-        <translation type="unfinished"></translation>
+        <translation>（無資料內容）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::HealthDock</name>
+    <name>HealthDock</name>
     <message>
         <source>Health</source>
-        <translation type="unfinished"></translation>
+        <translation>健康狀態</translation>
     </message>
     <message>
         <source>No frames yet</source>
-        <translation type="unfinished"></translation>
+        <translation>尚無封包</translation>
     </message>
     <message>
         <source>What to look at first, the worst at the top</source>
-        <translation type="unfinished"></translation>
+        <translation>應優先查看的項目，最嚴重的在最上方</translation>
     </message>
     <message>
         <source>Nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>PDOs</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO</translation>
     </message>
     <message>
         <source>Average load</source>
-        <translation type="unfinished"></translation>
+        <translation>平均負載</translation>
     </message>
     <message>
         <source>Peak load</source>
-        <translation type="unfinished"></translation>
+        <translation>峰值負載</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>時間（秒）</translation>
     </message>
     <message>
         <source>Bus load (%)</source>
-        <translation type="unfinished"></translation>
+        <translation>總線負載（%）</translation>
     </message>
     <message>
         <source>Bus load</source>
-        <translation type="unfinished"></translation>
+        <translation>總線負載</translation>
     </message>
     <message numerus="yes">
         <source>%n frame(s) over %1 s; bus load average %2 %, peak %3 % at %4 bit/s; %5 error frame(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 秒內共 %n 個封包；總線負載平均 %2 %，峰值 %3 %，鮑率 %4 bit/s；%5 個錯誤封包</numerusform>
         </translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::HealthModel</name>
+    <name>HealthModel</name>
     <message>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>嚴重程度</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>時間</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>Finding</source>
-        <translation type="unfinished"></translation>
+        <translation>發現項目</translation>
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態</translation>
     </message>
     <message>
         <source>Error control</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤控制</translation>
     </message>
     <message>
         <source>Beats</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳次數</translation>
     </message>
     <message>
         <source>Period min/avg/max ms</source>
-        <translation type="unfinished"></translation>
+        <translation>週期 最小/平均/最大 ms</translation>
     </message>
     <message>
         <source>Late</source>
-        <translation type="unfinished"></translation>
+        <translation>延遲</translation>
     </message>
     <message>
         <source>Timeouts</source>
-        <translation type="unfinished"></translation>
+        <translation>逾時</translation>
     </message>
     <message>
         <source>Boot-ups</source>
-        <translation type="unfinished"></translation>
+        <translation>上線報文</translation>
     </message>
     <message>
         <source>Resets</source>
-        <translation type="unfinished"></translation>
+        <translation>重置次數</translation>
     </message>
     <message>
         <source>SDO transfers</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 傳輸</translation>
     </message>
     <message>
         <source>SDO p99 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO p99 ms</translation>
     </message>
     <message>
         <source>SDO aborts</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 中止</translation>
     </message>
     <message>
         <source>SDO timeouts</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 逾時</translation>
     </message>
     <message>
         <source>EMCY</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY</translation>
     </message>
     <message>
         <source>COB-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>COB-ID</translation>
     </message>
     <message>
         <source>PDO</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO</translation>
     </message>
     <message>
         <source>Frames</source>
-        <translation type="unfinished"></translation>
+        <translation>封包</translation>
     </message>
     <message>
         <source>Rate Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>頻率 Hz</translation>
     </message>
     <message>
         <source>Jitter ms</source>
-        <translation type="unfinished"></translation>
+        <translation>抖動 ms</translation>
     </message>
     <message>
         <source>Critical</source>
-        <translation type="unfinished"></translation>
+        <translation>嚴重</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤</translation>
     </message>
     <message>
         <source>Warning</source>
-        <translation type="unfinished"></translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>Info</source>
-        <translation type="unfinished"></translation>
+        <translation>資訊</translation>
     </message>
     <message>
         <source>bus</source>
-        <translation type="unfinished"></translation>
+        <translation>總線</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>無</translation>
     </message>
     <message>
         <source>guarding stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>節點保護已停止</translation>
     </message>
     <message>
         <source>heartbeat stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳已停止</translation>
     </message>
     <message>
         <source>guarding</source>
-        <translation type="unfinished"></translation>
+        <translation>節點保護</translation>
     </message>
     <message>
         <source>heartbeat</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳</translation>
     </message>
     <message>
         <source>%1 (no consumer)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（無消費者）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::JournalOfferBar</name>
+    <name>JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
-        <translation type="unfinished"></translation>
+        <translation>未關閉的擷取</translation>
     </message>
     <message>
         <source>Reopen capture</source>
-        <translation type="unfinished"></translation>
+        <translation>重新開啟擷取</translation>
     </message>
     <message>
         <source>Dismiss</source>
-        <translation type="unfinished"></translation>
+        <translation>忽略</translation>
     </message>
     <message>
         <source>A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). Its journal %1 (%2, last written %3) holds everything received up to about a second before.</source>
-        <translation type="unfinished"></translation>
+        <translation>有一個擷取未關閉：CoScope 結束時沒有關閉它（被強制終止、當機或斷電）。其日誌 %1（%2，最後寫入於 %3）保存了大約一秒前為止收到的所有內容。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::MainWindow</name>
+    <name>MainWindow</name>
     <message>
         <source>Capture stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>擷取已停止</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>檔案(&amp;F)</translation>
     </message>
     <message>
         <source>&amp;Open log…</source>
-        <translation type="unfinished"></translation>
+        <translation>開啟記錄檔(&amp;O)…</translation>
     </message>
     <message>
         <source>Open CAN log</source>
-        <translation type="unfinished"></translation>
+        <translation>開啟 CAN 記錄檔</translation>
     </message>
     <message>
         <source>&amp;Save trace as…</source>
-        <translation type="unfinished"></translation>
+        <translation>另存追蹤(&amp;S)…</translation>
     </message>
     <message>
         <source>Save trace</source>
-        <translation type="unfinished"></translation>
+        <translation>儲存追蹤</translation>
     </message>
     <message>
         <source>&amp;Export filtered rows…</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出篩選後的資料列(&amp;E)…</translation>
     </message>
     <message>
         <source>Export filtered rows</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出篩選後的資料列</translation>
     </message>
     <message>
         <source>Export PDO layout as &amp;DBC…</source>
-        <translation type="unfinished"></translation>
+        <translation>將 PDO 配置匯出為 &amp;DBC…</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>結束(&amp;Q)</translation>
     </message>
     <message>
         <source>&amp;Bus</source>
-        <translation type="unfinished"></translation>
+        <translation>總線(&amp;B)</translation>
     </message>
     <message>
         <source>&amp;Connect…</source>
-        <translation type="unfinished"></translation>
+        <translation>連線(&amp;C)…</translation>
     </message>
     <message>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>連線</translation>
     </message>
     <message>
         <source>Connect to &amp;virtual drives (sim://)</source>
-        <translation type="unfinished"></translation>
+        <translation>連線到虛擬驅動器（sim://）(&amp;V)</translation>
     </message>
     <message>
         <source>&amp;Recent connections</source>
-        <translation type="unfinished"></translation>
+        <translation>最近的連線(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>中斷連線(&amp;D)</translation>
     </message>
     <message>
         <source>Bus</source>
-        <translation type="unfinished"></translation>
+        <translation>總線</translation>
     </message>
     <message>
         <source>&amp;Commission</source>
-        <translation type="unfinished"></translation>
+        <translation>調機(&amp;C)</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>檢視(&amp;V)</translation>
     </message>
     <message>
         <source>Reset layout</source>
-        <translation type="unfinished"></translation>
+        <translation>重設版面配置</translation>
     </message>
     <message>
         <source>The default layout applies at the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>預設版面配置會在下次啟動時套用</translation>
     </message>
     <message>
         <source>Reopened the capture journal %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已重新開啟擷取日誌 %1</translation>
     </message>
     <message>
         <source>Cannot connect to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>無法連線到 %1：%2</translation>
     </message>
     <message>
         <source>Open log</source>
-        <translation type="unfinished"></translation>
+        <translation>開啟記錄檔</translation>
     </message>
     <message>
         <source>A save is already running</source>
-        <translation type="unfinished"></translation>
+        <translation>已有一個儲存作業在執行</translation>
     </message>
     <message>
         <source>Connect to a bus first</source>
-        <translation type="unfinished"></translation>
+        <translation>請先連線到總線</translation>
     </message>
     <message>
         <source>Listen-only bus: commissioning would transmit</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽總線：調機需要傳送</translation>
     </message>
     <message>
         <source>Listen-only bus</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽總線</translation>
     </message>
     <message>
         <source>A save is still running; wait for it or cancel it first</source>
-        <translation type="unfinished"></translation>
+        <translation>仍有儲存作業在執行；請等它完成或先取消</translation>
     </message>
     <message>
         <source>Unsaved capture</source>
-        <translation type="unfinished"></translation>
+        <translation>未儲存的擷取</translation>
     </message>
     <message>
         <source>The trace holds %L1 frames that are not saved. Save the capture first?</source>
-        <translation type="unfinished"></translation>
+        <translation>追蹤中有 %L1 個封包尚未儲存。要先儲存擷取內容嗎？</translation>
     </message>
     <message>
         <source>%1: %L2 frames, %L3 lines not understood — first: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%L2 個封包，%L3 行無法解析——第一行：%4</translation>
     </message>
     <message>
         <source>%1: %L2 frames (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%L2 個封包（%3）</translation>
     </message>
     <message>
         <source>Save cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消儲存</translation>
     </message>
     <message>
         <source>Saved %L1 frames to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已將 %L1 個封包儲存至 %2</translation>
     </message>
     <message>
         <source>Could not read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>無法讀取 %1：%2</translation>
     </message>
     <message>
         <source>%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 以 %2 格式讀取：%L3 行，%L4 個封包，略過 %L5 行。</translation>
     </message>
     <message>
         <source>%1 read as %2: %L3 frames, %L4 records skipped.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 以 %2 格式讀取：%L3 個封包，略過 %L4 筆記錄。</translation>
     </message>
     <message>
         <source>No frames were found in this file.</source>
-        <translation type="unfinished"></translation>
+        <translation>此檔案中找不到任何封包。</translation>
     </message>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 行：%2</translation>
     </message>
     <message>
         <source>… and %L1 more</source>
-        <translation type="unfinished"></translation>
+        <translation>… 另有 %L1 項</translation>
     </message>
     <message>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>語言(&amp;L)</translation>
     </message>
     <message>
         <source>System language (%1)</source>
         <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>系統語言（%1）</translation>
     </message>
     <message>
         <source>Close the other windows (wizards, dialogs) to change the language</source>
-        <translation type="unfinished"></translation>
+        <translation>請先關閉其他視窗（精靈、對話方塊）再切換語言</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodeIdChangePage</name>
+    <name>NodeIdChangePage</name>
     <message>
         <source>What to change</source>
-        <translation type="unfinished"></translation>
+        <translation>要變更的項目</translation>
     </message>
     <message>
         <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
         <source>Node-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 ID</translation>
     </message>
     <message>
         <source>Baud rate (bit rate)</source>
-        <translation type="unfinished"></translation>
+        <translation>鮑率（位元速率）</translation>
     </message>
     <message>
         <source>LSS (layer setting services, CiA 305) — works for any LSS-capable device</source>
-        <translation type="unfinished"></translation>
+        <translation>LSS（層設定服務，CiA 305）——適用於任何支援 LSS 的裝置</translation>
     </message>
     <message>
         <source>Change:</source>
-        <translation type="unfinished"></translation>
+        <translation>變更：</translation>
     </message>
     <message>
         <source>New node-ID:</source>
-        <translation type="unfinished"></translation>
+        <translation>新節點 ID：</translation>
     </message>
     <message>
         <source>New baud rate:</source>
-        <translation type="unfinished"></translation>
+        <translation>新鮑率：</translation>
     </message>
     <message>
         <source>How:</source>
-        <translation type="unfinished"></translation>
+        <translation>方式：</translation>
     </message>
     <message>
         <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
-        <translation type="unfinished"></translation>
+        <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
         <source>The drive&apos;s own parameter — none documented for this device</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodeIdFindPage</name>
+    <name>NodeIdFindPage</name>
     <message>
         <source>Find the device</source>
-        <translation type="unfinished"></translation>
+        <translation>找出裝置</translation>
     </message>
     <message>
         <source>Pick the drive whose node-ID or baud rate (bit rate) you want to change.</source>
-        <translation type="unfinished"></translation>
+        <translation>選擇要變更節點 ID 或鮑率（位元速率）的驅動器。</translation>
     </message>
     <message>
         <source>These are the devices CoScope has seen on the bus. &lt;b&gt;Scan&lt;/b&gt; asks every node-ID 1-127 for its device type and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: &lt;b&gt;Find device without node-ID&lt;/b&gt; finds it with LSS Fastscan (CiA 305).</source>
-        <translation type="unfinished"></translation>
+        <translation>以下是 CoScope 在總線上看到的裝置。&lt;b&gt;掃描&lt;/b&gt;會向節點 ID 1-127 逐一查詢裝置類型與識別資訊（SDO 讀取，不變更任何內容）。沒有節點 ID 的新裝置（尚未 LSS 設定）不會發出任何訊息：&lt;b&gt;尋找沒有節點 ID 的裝置&lt;/b&gt;會以 LSS Fastscan（CiA 305）找出它。</translation>
     </message>
     <message>
         <source>Node-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 ID</translation>
     </message>
     <message>
         <source>Device (dictionary)</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置（字典）</translation>
     </message>
     <message>
         <source>State (NMT)</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態（NMT）</translation>
     </message>
     <message>
         <source>Scan the bus</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描總線</translation>
     </message>
     <message>
         <source>Find device without node-ID (LSS Fastscan)</source>
-        <translation type="unfinished"></translation>
+        <translation>尋找沒有節點 ID 的裝置（LSS Fastscan）</translation>
     </message>
     <message>
         <source>Scanning node-IDs 1-127…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在掃描節點 ID 1-127…</translation>
     </message>
     <message>
         <source>LSS Fastscan: looking for a device without node-ID…</source>
-        <translation type="unfinished"></translation>
+        <translation>LSS Fastscan：正在尋找沒有節點 ID 的裝置…</translation>
     </message>
     <message numerus="yes">
         <source>Scan finished: %n device(s) known.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>掃描完成：已知 %n 台裝置。</numerusform>
         </translation>
     </message>
     <message>
         <source>(unknown — LSS only)</source>
-        <translation type="unfinished"></translation>
+        <translation>（未知——僅 LSS）</translation>
     </message>
     <message>
         <source>Device type:</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置類型：</translation>
     </message>
     <message>
         <source>(not identified — scan)</source>
-        <translation type="unfinished"></translation>
+        <translation>（未識別——請掃描）</translation>
     </message>
     <message>
         <source>Target: the device without node-ID found by LSS Fastscan.</source>
-        <translation type="unfinished"></translation>
+        <translation>目標：以 LSS Fastscan 找到的無節點 ID 裝置。</translation>
     </message>
     <message>
         <source>Target: node %1%2.</source>
-        <translation type="unfinished"></translation>
+        <translation>目標：節點 %1%2。</translation>
     </message>
     <message>
         <source>No device chosen yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未選擇裝置。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodeIdRunPage</name>
+    <name>NodeIdRunPage</name>
     <message>
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
-        <translation type="unfinished"></translation>
+        <translation>模擬執行：尚未送出任何內容。以下正是 CoScope 將要送出的內容與原因。</translation>
     </message>
     <message>
         <source>Check and change</source>
-        <translation type="unfinished"></translation>
+        <translation>檢查並變更</translation>
     </message>
     <message>
         <source>Change it now</source>
-        <translation type="unfinished"></translation>
+        <translation>立即變更</translation>
     </message>
     <message>
         <source>Sending: CoScope runs the sequence below; each step turns green when the device has answered.</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送中：CoScope 正在執行下列順序；裝置回應後該步驟會變成綠色。</translation>
     </message>
     <message>
         <source>Takes effect: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>生效時機：%1</translation>
     </message>
     <message>
         <source>CoScope will reconnect at %1 after the first part.</source>
-        <translation type="unfinished"></translation>
+        <translation>第一部分完成後，CoScope 會以 %1 重新連線。</translation>
     </message>
     <message>
         <source>Cannot prepare the change: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法準備變更：%1</translation>
     </message>
     <message>
         <source>Sent: the sequence below ran to the end. The device has its new setting.</source>
-        <translation type="unfinished"></translation>
+        <translation>已送出：下列順序已全部執行完畢。裝置已套用新設定。</translation>
     </message>
     <message>
         <source>Stopped: the green steps below were sent, the red one failed, the rest was not sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>已停止：下列綠色步驟已送出，紅色步驟失敗，其餘未送出。</translation>
     </message>
     <message>
         <source>Preparing the sequence…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在準備順序…</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodeIdWizard</name>
+    <name>NodeIdWizard</name>
     <message>
         <source>Baud rate and node-ID — CoScope</source>
-        <translation type="unfinished"></translation>
+        <translation>鮑率與節點 ID — CoScope</translation>
     </message>
     <message>
         <source>Not connected to a bus: this wizard talks to the devices, so connect first (File ▸ Connect).</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線到總線：此精靈需要與裝置通訊，請先連線（檔案 ▸ 連線）。</translation>
     </message>
     <message>
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. Reconnect without listen-only to use it.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法變更任何設定。請取消僅監聽後重新連線再使用。</translation>
     </message>
     <message>
         <source>The bus is not open (yet): wait for it to connect.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線（尚）未開啟：請等待連線完成。</translation>
     </message>
     <message>
         <source>The connection was closed while the change was running. Connect again and scan to see where the device is.</source>
-        <translation type="unfinished"></translation>
+        <translation>變更進行中連線被關閉。請重新連線並掃描，確認裝置目前的位置。</translation>
     </message>
     <message>
         <source>No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有無節點 ID 的裝置回應（LSS Fastscan）。總線上每台裝置都有節點 ID。</translation>
     </message>
     <message>
         <source>Found a device without node-ID: vendor %1h, product %2h, serial %3h. It waits in LSS configuration state for its node-ID.</source>
-        <translation type="unfinished"></translation>
+        <translation>找到一台沒有節點 ID 的裝置：廠商 %1h，產品 %2h，序號 %3h。它正在 LSS 設定狀態中等待節點 ID。</translation>
     </message>
     <message>
         <source>Choose a device first.</source>
-        <translation type="unfinished"></translation>
+        <translation>請先選擇裝置。</translation>
     </message>
     <message>
         <source>Choose the new node-ID.</source>
-        <translation type="unfinished"></translation>
+        <translation>請選擇新的節點 ID。</translation>
     </message>
     <message>
         <source>The device already has node-ID %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置的節點 ID 已經是 %1。</translation>
     </message>
     <message>
         <source>Node-ID %1 is already used by another device on this bus: two devices with one node-ID break communication.</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 ID %1 已被此總線上的另一台裝置使用：兩台裝置使用同一個節點 ID 會導致通訊中斷。</translation>
     </message>
     <message>
         <source>Choose a bit rate other than the one the bus runs at now (%1).</source>
-        <translation type="unfinished"></translation>
+        <translation>請選擇與總線目前鮑率（%1）不同的位元速率。</translation>
     </message>
     <message>
         <source>the device without node-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>無節點 ID 的裝置</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>&lt;b&gt;How:&lt;/b&gt; LSS (layer setting services, CiA 305) picks %1 by its identity (1018h) and gives it the new setting; the device stores it itself.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
         <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Takes effect:&lt;/b&gt; %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;生效時機：&lt;/b&gt;%1。</translation>
     </message>
     <message>
         <source>&lt;b&gt;About this drive:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
-        <translation type="unfinished"></translation>
+        <translation>未看到任何節點</translation>
     </message>
     <message>
         <source>nodes %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>CoScope reconnects at the new bit rate by itself and waits for %1 there.</source>
-        <translation type="unfinished"></translation>
+        <translation>CoScope 會自動以新的位元速率重新連線，並在該速率下等待 %1。</translation>
     </message>
     <message>
         <source>&lt;b&gt;If it does not come back:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>變更已在進行中。</translation>
     </message>
     <message>
         <source>The sequence is not ready yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>順序尚未準備好。</translation>
     </message>
     <message>
         <source>Running…</source>
-        <translation type="unfinished"></translation>
+        <translation>執行中…</translation>
     </message>
     <message>
         <source>The connection is gone: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>連線已中斷：%1</translation>
     </message>
     <message>
         <source>Stopped at %1.
 The device answered: %2
 What to check: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>停止於 %1。
+裝置回應：%2
+檢查事項：%3</translation>
     </message>
     <message>
         <source>Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).</source>
-        <translation type="unfinished"></translation>
+        <translation>完成：原本為 %1 的裝置現在以節點 ID %2 回應（已在總線上回報）。</translation>
     </message>
     <message>
         <source>without node-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>無節點 ID</translation>
     </message>
     <message>
         <source>Done: node %1 now runs at %2 and CoScope is connected at %2. Nodes still at %3 cannot be reached at this rate: change them too, or reconnect at %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>完成：節點 %1 現在以 %2 運作，CoScope 也已以 %2 連線。仍為 %3 的節點在此速率下無法通訊：請一併變更，或以 %3 重新連線。</translation>
     </message>
     <message>
         <source>The connection is gone before reconnecting.</source>
-        <translation type="unfinished"></translation>
+        <translation>重新連線前連線已中斷。</translation>
     </message>
     <message>
         <source>Reconnecting at %1 (%2)…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在以 %1 重新連線（%2）…</translation>
     </message>
     <message>
         <source>Could not reconnect at %1: %2
 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>無法以 %1 重新連線：%2
+%3</translation>
     </message>
     <message>
         <source>connected at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已以 %1 連線</translation>
     </message>
     <message>
         <source>The bus did not open at %1.
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>總線無法以 %1 開啟。
+%2</translation>
     </message>
     <message>
         <source>Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 現在以節點 ID %2 回應（鮑率與節點 ID 精靈）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodesDock</name>
+    <name>NodesDock</name>
     <message>
         <source>Nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>Scan network (SDO 1000h on nodes 1–127)</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描網路（對節點 1–127 讀取 SDO 1000h）</translation>
     </message>
     <message>
         <source>Scan network</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描網路</translation>
     </message>
     <message>
         <source>Read identity</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取識別資訊</translation>
     </message>
     <message>
         <source>Assign dictionary…</source>
-        <translation type="unfinished"></translation>
+        <translation>指定字典…</translation>
     </message>
     <message>
         <source>Assign dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>指定字典</translation>
     </message>
     <message>
         <source>Dictionary for node %1:</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 的字典：</translation>
     </message>
     <message>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>All nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>所有節點</translation>
     </message>
     <message>
         <source>Listen-only: commands disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽：指令已停用</translation>
     </message>
     <message>
         <source>Not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線</translation>
     </message>
     <message>
         <source>Scan finished: %1 node(s) answered</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描完成：%1 個節點回應</translation>
     </message>
     <message>
         <source>A scan is running</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描進行中</translation>
     </message>
     <message>
         <source>Listen-only bus: a scan would transmit</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽總線：掃描需要傳送</translation>
     </message>
     <message>
         <source>Connect to a bus first</source>
-        <translation type="unfinished"></translation>
+        <translation>請先連線到總線</translation>
     </message>
     <message>
         <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
         <source>Listen-only: NMT commands are disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽：NMT 指令已停用</translation>
     </message>
     <message>
         <source>Not connected to a bus</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線到總線</translation>
     </message>
     <message>
         <source>An NMT command is waiting for your answer</source>
-        <translation type="unfinished"></translation>
+        <translation>有一個 NMT 指令正在等待您的回覆</translation>
     </message>
     <message>
         <source>all nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>所有節點</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>Send NMT “%1” to %2?
 
 Frame: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>要將 NMT「%1」送給 %2 嗎？
+
+封包：%3</translation>
     </message>
     <message>
         <source>Send NMT command</source>
-        <translation type="unfinished"></translation>
+        <translation>送出 NMT 指令</translation>
     </message>
     <message>
         <source>NMT %1 to %2 failed: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>對 %2 送出 NMT %1 失敗：%3</translation>
     </message>
     <message>
         <source>NMT command failed</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 指令失敗</translation>
     </message>
     <message>
         <source>Sent NMT %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已對 %2 送出 NMT %1</translation>
     </message>
     <message>
         <source>Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).
 
 </source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器 %1 已致能（Operation enabled，狀態字元 0x%2）：%3會讓它突然停止；馬達會失去扭矩或觸發通訊中斷處理（6007h）。%4請先停用（CiA 402 精靈：停用）。
+
+</translation>
     </message>
     <message>
         <source>a reset</source>
-        <translation type="unfinished"></translation>
+        <translation>重置</translation>
     </message>
     <message>
         <source>this command</source>
-        <translation type="unfinished"></translation>
+        <translation>此指令</translation>
     </message>
     <message>
         <source>Delta drives raise AL401 (CANopen communication lost). </source>
-        <translation type="unfinished"></translation>
+        <translation>台達驅動器會發出 AL401（CANopen 通訊中斷）。</translation>
     </message>
     <message>
         <source>Scan needs a connected bus that is not listen-only</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描需要已連線且非僅監聽的總線</translation>
     </message>
     <message>
         <source>A scan is already running</source>
-        <translation type="unfinished"></translation>
+        <translation>已有掃描在進行中</translation>
     </message>
     <message>
         <source>Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?</source>
-        <translation type="unfinished"></translation>
+        <translation>要從節點 ID 1–127 逐一讀取物件 1000h 嗎（在 601h–67Fh 送出 SDO 上傳請求）？</translation>
     </message>
     <message>
         <source>Scanning nodes 1–127…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在掃描節點 1–127…</translation>
     </message>
     <message>
         <source>Node %1 uses dictionary %2</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 使用字典 %2</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::NodesModel</name>
+    <name>NodesModel</name>
     <message>
         <source>No heartbeat</source>
-        <translation type="unfinished"></translation>
+        <translation>無心跳</translation>
     </message>
     <message>
         <source>Unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>not present</source>
-        <translation type="unfinished"></translation>
+        <translation>不存在</translation>
     </message>
     <message>
         <source>Device name (1008h): %1
 Hardware version (1009h): %2
 Software version (100Ah): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置名稱（1008h）：%1
+硬體版本（1009h）：%2
+軟體版本（100Ah）：%3</translation>
     </message>
     <message>
         <source>vendor %1</source>
-        <translation type="unfinished"></translation>
+        <translation>廠商 %1</translation>
     </message>
     <message>
         <source>, product %1</source>
-        <translation type="unfinished"></translation>
+        <translation>，產品 %1</translation>
     </message>
     <message>
         <source>, product not present</source>
-        <translation type="unfinished"></translation>
+        <translation>，無產品資訊</translation>
     </message>
     <message>
         <source>, rev %1</source>
-        <translation type="unfinished"></translation>
+        <translation>，版次 %1</translation>
     </message>
     <message>
         <source>, rev not present</source>
-        <translation type="unfinished"></translation>
+        <translation>，無版次資訊</translation>
     </message>
     <message>
         <source>, s/n %1</source>
-        <translation type="unfinished"></translation>
+        <translation>，序號 %1</translation>
     </message>
     <message>
         <source>, s/n not present</source>
-        <translation type="unfinished"></translation>
+        <translation>，無序號資訊</translation>
     </message>
     <message>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>（無）</translation>
     </message>
     <message>
         <source>boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上線報文</translation>
     </message>
     <message>
         <source>heartbeat</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳</translation>
     </message>
     <message>
         <source>scan</source>
-        <translation type="unfinished"></translation>
+        <translation>掃描</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished"></translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>NMT state</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 狀態</translation>
     </message>
     <message>
         <source>Heartbeat age</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳經過時間</translation>
     </message>
     <message>
         <source>Device name</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置名稱</translation>
     </message>
     <message>
         <source>Identity (1018h)</source>
-        <translation type="unfinished"></translation>
+        <translation>識別資訊（1018h）</translation>
     </message>
     <message>
         <source>Dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>字典</translation>
     </message>
     <message>
         <source>EMCY</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY</translation>
     </message>
     <message>
         <source>Seen by</source>
-        <translation type="unfinished"></translation>
+        <translation>偵測來源</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::ObjectDictionaryDock</name>
+    <name>ObjectDictionaryDock</name>
     <message>
         <source>Object Dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>物件字典</translation>
     </message>
     <message>
         <source>Search index or name (6060, 0x1018, heartbeat)</source>
-        <translation type="unfinished"></translation>
+        <translation>搜尋索引或名稱（6060、0x1018、heartbeat）</translation>
     </message>
     <message>
         <source>Only changed</source>
-        <translation type="unfinished"></translation>
+        <translation>僅顯示已變更</translation>
     </message>
     <message>
         <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
-        <translation type="unfinished"></translation>
+        <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
         <source>Read all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部讀取</translation>
     </message>
     <message>
         <source>Read every readable object of the node over SDO (DOMAINs are skipped)</source>
-        <translation type="unfinished"></translation>
+        <translation>透過 SDO 讀取節點所有可讀的物件（略過 DOMAIN）</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>取消</translation>
     </message>
     <message>
         <source>Export DCF…</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出 DCF…</translation>
     </message>
     <message>
         <source>Export node %1 as DCF</source>
-        <translation type="unfinished"></translation>
+        <translation>將節點 %1 匯出為 DCF</translation>
     </message>
     <message>
         <source>Device configuration (*.dcf)</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置組態（*.dcf）</translation>
     </message>
     <message>
         <source>Apply DCF…</source>
-        <translation type="unfinished"></translation>
+        <translation>套用 DCF…</translation>
     </message>
     <message>
         <source>Apply a DCF to node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>將 DCF 套用到節點 %1</translation>
     </message>
     <message>
         <source>Device configuration (*.dcf *.eds);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置組態（*.dcf *.eds）;;所有檔案（*）</translation>
     </message>
     <message>
         <source>Assign dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>指定字典</translation>
     </message>
     <message>
         <source>Read</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取</translation>
     </message>
     <message>
         <source>Write value…</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入值…</translation>
     </message>
     <message>
         <source>Copy value</source>
-        <translation type="unfinished"></translation>
+        <translation>複製值</translation>
     </message>
     <message>
         <source>Copy error</source>
-        <translation type="unfinished"></translation>
+        <translation>複製錯誤</translation>
     </message>
     <message>
         <source>Expand all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部展開</translation>
     </message>
     <message>
         <source>Collapse all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部收合</translation>
     </message>
     <message>
         <source>Listen-only: SDO disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>僅監聽：SDO 已停用</translation>
     </message>
     <message>
         <source>Not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線</translation>
     </message>
     <message>
         <source>Reading node %1 stopped: another node was chosen</source>
-        <translation type="unfinished"></translation>
+        <translation>已停止讀取節點 %1：已選擇另一個節點</translation>
     </message>
     <message>
         <source>Dictionary %1 of node %2 cannot be loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>無法載入節點 %2 的字典 %1</translation>
     </message>
     <message>
         <source>Node %1 uses dictionary %2</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 使用字典 %2</translation>
     </message>
     <message>
         <source>&lt;b&gt;No node selected&lt;/b&gt; — pick one in the Nodes dock</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;未選擇節點&lt;/b&gt;——請在「節點」面板中選擇一個</translation>
     </message>
     <message>
         <source>Select a node in the Nodes dock to see its object dictionary.</source>
-        <translation type="unfinished"></translation>
+        <translation>在「節點」面板中選擇一個節點，即可查看其物件字典。</translation>
     </message>
     <message>
         <source>&lt;b&gt;Node %1&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
         <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
-        <translation type="unfinished"></translation>
+        <translation> · %1 個項目，已讀取 %2 個</translation>
     </message>
     <message>
         <source> · &lt;i&gt;listen-only: no SDO&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation> · &lt;i&gt;僅監聽：無 SDO&lt;/i&gt;</translation>
     </message>
     <message>
         <source> · &lt;i&gt;offline: no SDO&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation> · &lt;i&gt;離線：無 SDO&lt;/i&gt;</translation>
     </message>
     <message>
         <source>No dictionary is known for node %1: it was not identified (1018h) or matched none in the library. Assign one to see its objects.</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 沒有已知的字典：它尚未識別（1018h），或與字典庫中的任何一個都不相符。請指定字典以查看其物件。</translation>
     </message>
     <message>
         <source>%1: no node selected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未選擇節點</translation>
     </message>
     <message>
         <source>%1: no dictionary for node %2 (assign one)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：節點 %2 沒有字典（請指定一個）</translation>
     </message>
     <message>
         <source>%1: the bus is listen-only, nothing is sent</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：總線為僅監聽，不會傳送任何內容</translation>
     </message>
     <message>
         <source>%1: not connected to a bus</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未連線到總線</translation>
     </message>
     <message>
         <source>Read %1</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取 %1</translation>
     </message>
     <message>
         <source>%1 %2 is write-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 為唯寫</translation>
     </message>
     <message>
         <source>Node %1 %2 %3 = %4</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 %2 %3 = %4</translation>
     </message>
     <message>
         <source>Write %1 %2 = %3 to node %4?</source>
-        <translation type="unfinished"></translation>
+        <translation>要將 %1 %2 = %3 寫入節點 %4 嗎？</translation>
     </message>
     <message>
         <source>Node %1 %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 %2：%3</translation>
     </message>
     <message>
         <source>Write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入 %1</translation>
     </message>
     <message>
         <source>%1 %2 is %3: not writable</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 為 %3：不可寫入</translation>
     </message>
     <message>
         <source>Write object</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入物件</translation>
     </message>
     <message numerus="yes">
         <source>
 
 SDO download of %n byte(s): %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>
+
+SDO 下載 %n 位元組：%1</numerusform>
         </translation>
     </message>
     <message>
         <source>Node %1 %2 written: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 %2 已寫入：%3</translation>
     </message>
     <message>
         <source>A read or DCF application is already running</source>
-        <translation type="unfinished"></translation>
+        <translation>已有讀取或 DCF 套用作業在執行</translation>
     </message>
     <message>
         <source>Reading %1 objects of node %2…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在讀取節點 %2 的 %1 個物件…</translation>
     </message>
     <message>
         <source>Read of node %1 cancelled: %2 values read</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消讀取節點 %1：已讀取 %2 個值</translation>
     </message>
     <message>
         <source>Node %1: %2 values read, %3 refused (red rows; the tool tip has the abort text)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1：已讀取 %2 個值，%3 個被拒絕（紅色資料列；工具提示中有中止說明）</translation>
     </message>
     <message>
         <source>Node %1: %2 values read</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1：已讀取 %2 個值</translation>
     </message>
     <message>
         <source>Export of node %1 failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出節點 %1 失敗：%2</translation>
     </message>
     <message>
         <source>Node %1: %2 values exported to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1：已將 %2 個值匯出至 %3</translation>
     </message>
     <message>
         <source>Export: no node with a dictionary selected</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出：未選擇有字典的節點</translation>
     </message>
     <message>
         <source>Export: wait for the running read to finish</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出：請等待目前的讀取完成</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出</translation>
     </message>
     <message>
         <source>Apply DCF</source>
-        <translation type="unfinished"></translation>
+        <translation>套用 DCF</translation>
     </message>
     <message>
         <source>Apply DCF: wait for the running read to finish</source>
-        <translation type="unfinished"></translation>
+        <translation>套用 DCF：請等待目前的讀取完成</translation>
     </message>
     <message>
         <source>%1 is not a usable DCF: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 不是可用的 DCF：%2</translation>
     </message>
     <message>
         <source>no object could be read</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
         <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
         <source>Apply DCF cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消套用 DCF</translation>
     </message>
     <message>
         <source>Node %1 already has every value of %2 (%3 entries not written)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 已具有 %2 的所有值（%3 個項目未寫入）</translation>
     </message>
     <message>
         <source>Apply DCF: the bus can no longer transmit</source>
-        <translation type="unfinished"></translation>
+        <translation>套用 DCF：總線已無法傳送</translation>
     </message>
     <message>
         <source>Writing %1 objects to node %2…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在將 %1 個物件寫入節點 %2…</translation>
     </message>
     <message>
         <source>DCF applied to node %1: %2 written, %3 refused — first: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>已將 DCF 套用到節點 %1：寫入 %2 個，%3 個被拒絕——第一個：%4</translation>
     </message>
     <message>
         <source>DCF applied to node %1: %2 objects written%3</source>
-        <translation type="unfinished"></translation>
+        <translation>已將 DCF 套用到節點 %1：寫入 %2 個物件%3</translation>
     </message>
     <message>
         <source> (cancelled)</source>
-        <translation type="unfinished"></translation>
+        <translation> （已取消）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::OdTreeModel</name>
+    <name>OdTreeModel</name>
     <message>
         <source>Index</source>
-        <translation type="unfinished"></translation>
+        <translation>索引</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名稱</translation>
     </message>
     <message>
         <source>Type</source>
-        <translation type="unfinished"></translation>
+        <translation>類型</translation>
     </message>
     <message>
         <source>Access</source>
-        <translation type="unfinished"></translation>
+        <translation>存取</translation>
     </message>
     <message>
         <source>PDO</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO</translation>
     </message>
     <message>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>預設值</translation>
     </message>
     <message>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>值</translation>
     </message>
     <message>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>單位</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoApplyPage</name>
+    <name>PdoApplyPage</name>
     <message>
         <source>Check and apply</source>
-        <translation type="unfinished"></translation>
+        <translation>檢查並套用</translation>
     </message>
     <message>
         <source>This is exactly what will be sent, step by step (dry run: nothing has been sent yet). If the drive refuses a step, the wizard stops, tells you why and writes the old settings back.</source>
-        <translation type="unfinished"></translation>
+        <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
         <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
-        <translation type="unfinished"></translation>
+        <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
         <source>Apply to the drive</source>
-        <translation type="unfinished"></translation>
+        <translation>套用到驅動器</translation>
     </message>
     <message>
         <source>Without this the new mapping is lost when the drive is switched off or reset</source>
-        <translation type="unfinished"></translation>
+        <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
         <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
         <source>Applying…</source>
-        <translation type="unfinished"></translation>
+        <translation>套用中…</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoChoosePage</name>
+    <name>PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
-        <translation type="unfinished"></translation>
+        <translation>哪台驅動器、哪個報文</translation>
     </message>
     <message>
         <source>A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, e.g. commands).</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO（過程資料物件）是一個 CAN 報文，最多攜帶 8 位元組的即時數值。驅動器會傳送它的 TPDO（傳送 PDO，例如狀態與位置），並接收它的 RPDO（接收 PDO，例如命令）。</translation>
     </message>
     <message>
         <source>%1 — the drive sends (transmit PDO %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1——驅動器傳送（傳送 PDO %2）</translation>
     </message>
     <message>
         <source>%1 — the drive receives (receive PDO %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1——驅動器接收（接收 PDO %2）</translation>
     </message>
     <message>
         <source>Byte</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組</translation>
     </message>
     <message>
         <source>Object</source>
-        <translation type="unfinished"></translation>
+        <translation>物件</translation>
     </message>
     <message>
         <source>Bits</source>
-        <translation type="unfinished"></translation>
+        <translation>位元</translation>
     </message>
     <message>
         <source>Drive (node):</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器（節點）：</translation>
     </message>
     <message>
         <source>Message (PDO):</source>
-        <translation type="unfinished"></translation>
+        <translation>報文（PDO）：</translation>
     </message>
     <message>
         <source>Node %1 (no dictionary)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1（無字典）</translation>
     </message>
     <message>
         <source>Node %1 — %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 — %2%3</translation>
     </message>
     <message>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>Waiting for a drive to appear on the bus…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在等待驅動器出現在總線上…</translation>
     </message>
     <message>
         <source>Reading %1 of node %2 from the drive (SDO upload of %3h and %4h)…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在從驅動器讀取節點 %2 的 %1（SDO 上傳 %3h 與 %4h）…</translation>
     </message>
     <message>
         <source>Could not read %1 of node %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>無法讀取節點 %2 的 %1：%3</translation>
     </message>
     <message>
         <source>CAN-ID %1h%2. %3. %4 of 64 bits used.</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-ID %1h%2。%3。已使用 64 位元中的 %4 位元。</translation>
     </message>
     <message>
         <source> (switched off: COB-ID bit 31 set)</source>
-        <translation type="unfinished"></translation>
+        <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
         <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
         <source>Now in the drive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器目前：%1</translation>
     </message>
     <message>
         <source>(nothing mapped: the message is empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>（沒有映射：報文為空）</translation>
     </message>
     <message>
         <source>Good to know about this drive:</source>
-        <translation type="unfinished"></translation>
+        <translation>關於此驅動器的注意事項：</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoFrameLayout</name>
+    <name>PdoDbcExport</name>
+    <message>
+        <source>%1: cannot write the DBC file (%2)</source>
+        <translation>%1：無法寫入 DBC 檔案（%2）</translation>
+    </message>
+    <message>
+        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
+        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
+    </message>
+    <message>
+        <source>Export PDO layout as DBC</source>
+        <translation>將 PDO 配置匯出為 DBC</translation>
+    </message>
+    <message>
+        <source>DBC file (*.dbc)</source>
+        <translation>DBC 檔案（*.dbc）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoFrameLayout</name>
     <message>
         <source>byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組 %1</translation>
     </message>
     <message>
         <source>%1 of 64 bits — too long: a PDO carries at most 8 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>64 位元中的 %1 位元——太長：一個 PDO 最多攜帶 8 位元組</translation>
     </message>
     <message>
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>已使用 64 位元中的 %1 位元（封包中 %2 位元組）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoMappingPage</name>
+    <name>PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
-        <translation type="unfinished"></translation>
+        <translation>報文攜帶的內容</translation>
     </message>
     <message>
         <source>Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes (64 bits).</source>
-        <translation type="unfinished"></translation>
+        <translation>依封包中出現的順序挑選要放進報文的值（即 PDO 映射）。按兩下物件或將其拖曳到右側；以拖曳或「上移／下移」調整順序。一個封包最多 8 位元組（64 位元）。</translation>
     </message>
     <message>
         <source>Search by name or index, e.g. velocity or 606C</source>
-        <translation type="unfinished"></translation>
+        <translation>依名稱或索引搜尋，例如 velocity 或 606C</translation>
     </message>
     <message>
         <source>Add →</source>
-        <translation type="unfinished"></translation>
+        <translation>加入 →</translation>
     </message>
     <message>
         <source>← Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>← 移除</translation>
     </message>
     <message>
         <source>Up</source>
-        <translation type="unfinished"></translation>
+        <translation>上移</translation>
     </message>
     <message>
         <source>Down</source>
-        <translation type="unfinished"></translation>
+        <translation>下移</translation>
     </message>
     <message>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>清除</translation>
     </message>
     <message>
         <source>As in the drive</source>
-        <translation type="unfinished"></translation>
+        <translation>與驅動器相同</translation>
     </message>
     <message>
         <source>Start again from the mapping read from the drive</source>
-        <translation type="unfinished"></translation>
+        <translation>從驅動器讀到的映射重新開始</translation>
     </message>
     <message>
         <source>Objects this drive allows in the message:</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器允許放入報文的物件：</translation>
     </message>
     <message>
         <source>In the message, in frame order:</source>
-        <translation type="unfinished"></translation>
+        <translation>報文內容（依封包順序）：</translation>
     </message>
     <message>
         <source>The frame, byte by byte:</source>
-        <translation type="unfinished"></translation>
+        <translation>封包逐位元組內容：</translation>
     </message>
     <message>
         <source>(no dictionary for this node: objects cannot be listed)</source>
-        <translation type="unfinished"></translation>
+        <translation>（此節點沒有字典：無法列出物件）</translation>
     </message>
     <message>
         <source>%1  (%2, %3 bits)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1  （%2，%3 位元）</translation>
     </message>
     <message>
         <source>%1h:%2 — %3, access %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1h:%2 — %3，存取 %4</translation>
     </message>
     <message>
         <source>Cannot add: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法加入：%1</translation>
     </message>
     <message>
         <source>%1  (%2 bits)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1  （%2 位元）</translation>
     </message>
     <message>
         <source>Too long: %1 bits. Remove objects until the total is 64 bits or less.</source>
-        <translation type="unfinished"></translation>
+        <translation>太長：%1 位元。請移除物件直到總長度不超過 64 位元。</translation>
     </message>
     <message>
         <source>Nothing mapped: the message would carry no data.</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有映射：報文將不攜帶任何資料。</translation>
     </message>
     <message>
         <source>Same as in the drive now.</source>
-        <translation type="unfinished"></translation>
+        <translation>與驅動器目前的設定相同。</translation>
     </message>
     <message>
         <source>Changed: %1 objects, %2 bits (was %3 objects, %4 bits).</source>
-        <translation type="unfinished"></translation>
+        <translation>已變更：%1 個物件，%2 位元（原為 %3 個物件，%4 位元）。</translation>
     </message>
     <message>
         <source> Many drives allow at most 8 objects per PDO.</source>
-        <translation type="unfinished"></translation>
+        <translation> 許多驅動器每個 PDO 最多只允許 8 個物件。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoTimingPage</name>
+    <name>PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
-        <translation type="unfinished"></translation>
+        <translation>報文何時送出</translation>
     </message>
     <message>
         <source>Choose what makes the drive send the message (TPDO) or act on it (RPDO), and the CAN-ID it uses.</source>
-        <translation type="unfinished"></translation>
+        <translation>選擇讓驅動器傳送報文（TPDO）或處理報文（RPDO）的觸發條件，以及所使用的 CAN-ID。</translation>
     </message>
     <message>
         <source>On SYNC, every n-th SYNC (synchronous cyclic, type 1–240)</source>
-        <translation type="unfinished"></translation>
+        <translation>依 SYNC，每第 n 個 SYNC（同步週期，類型 1–240）</translation>
     </message>
     <message>
         <source>On SYNC, only after a value changed (synchronous acyclic, type 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>依 SYNC，僅在值變化後（同步非週期，類型 0）</translation>
     </message>
     <message>
         <source>On change and/or by timer (event-driven, type 255: device profile)</source>
-        <translation type="unfinished"></translation>
+        <translation>值變化時和／或依計時器（事件觸發，類型 255：裝置子協定）</translation>
     </message>
     <message>
         <source>On change and/or by timer (event-driven, type 254: manufacturer)</source>
-        <translation type="unfinished"></translation>
+        <translation>值變化時和／或依計時器（事件觸發，類型 254：製造商定義）</translation>
     </message>
     <message>
         <source>Other transmission type (e.g. 252/253: only on request, RTR)</source>
-        <translation type="unfinished"></translation>
+        <translation>其他傳輸類型（例如 252/253：僅在請求時，RTR）</translation>
     </message>
     <message>
         <source>every </source>
-        <translation type="unfinished"></translation>
+        <translation>每 </translation>
     </message>
     <message>
         <source> SYNC(s)</source>
-        <translation type="unfinished"></translation>
+        <translation> 個 SYNC</translation>
     </message>
     <message>
         <source> ms</source>
-        <translation type="unfinished"></translation>
+        <translation> ms</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>關閉</translation>
     </message>
     <message>
         <source>Message switched on (COB-ID bit 31 = 0: PDO valid)</source>
-        <translation type="unfinished"></translation>
+        <translation>報文已開啟（COB-ID 位元 31 = 0：PDO 有效）</translation>
     </message>
     <message>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>預設值</translation>
     </message>
     <message>
         <source>The pre-defined connection set (CiA 301 §7.3.5): TPDO1 180h + node … RPDO4 500h + node</source>
-        <translation type="unfinished"></translation>
+        <translation>預定義連線組（CiA 301 §7.3.5）：TPDO1 180h + 節點 … RPDO4 500h + 節點</translation>
     </message>
     <message>
         <source>Sent when:</source>
-        <translation type="unfinished"></translation>
+        <translation>傳送時機：</translation>
     </message>
     <message>
         <source>Minimum gap (inhibit time):</source>
-        <translation type="unfinished"></translation>
+        <translation>最小間隔（禁止時間）：</translation>
     </message>
     <message>
         <source>Timer (event timer):</source>
-        <translation type="unfinished"></translation>
+        <translation>計時器（事件計時器）：</translation>
     </message>
     <message>
         <source>CAN-ID (COB-ID, hex):</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-ID（COB-ID，十六進位）：</translation>
     </message>
     <message>
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器的 CAN-ID 固定（COB-ID 唯讀）：無法變更，報文也無法關閉</translation>
     </message>
     <message>
         <source>The drive waits at least this long between two messages (100 µs units on the bus)</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器在兩個報文之間至少等待這麼久（總線上以 100 µs 為單位）</translation>
     </message>
     <message>
         <source>Not available on this drive or for an RPDO</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器或 RPDO 不提供此功能</translation>
     </message>
     <message>
         <source>Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout when no message came for this long</source>
-        <translation type="unfinished"></translation>
+        <translation>事件觸發 TPDO：至少以此頻率送出；RPDO：超過此時間未收到報文時，驅動器會回報逾時</translation>
     </message>
     <message>
         <source>Not available on this drive</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器不提供此功能</translation>
     </message>
     <message>
         <source>Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.</source>
-        <translation type="unfinished"></translation>
+        <translation>必須有設備送出 SYNC（SYNC 產生者，物件 1005h/1006h），否則此報文永遠不會送出。</translation>
     </message>
     <message>
         <source>The master must send SYNC after the message, every cycle.</source>
-        <translation type="unfinished"></translation>
+        <translation>主站必須在每個週期於報文之後送出 SYNC。</translation>
     </message>
     <message>
         <source>Event timer off: sent only when a mapped value changes.</source>
-        <translation type="unfinished"></translation>
+        <translation>事件計時器關閉：只有在映射的值變化時才送出。</translation>
     </message>
     <message>
         <source>Sent when a value changes, and at least every %1 ms.</source>
-        <translation type="unfinished"></translation>
+        <translation>值變化時送出，且至少每 %1 ms 送出一次。</translation>
     </message>
     <message>
         <source>Never more often than every %1 ms (inhibit time).</source>
-        <translation type="unfinished"></translation>
+        <translation>送出間隔不短於 %1 ms（禁止時間）。</translation>
     </message>
     <message>
         <source>CAN-ID %1h is not the default %2h: make sure no other message uses it.</source>
-        <translation type="unfinished"></translation>
+        <translation>CAN-ID %1h 不是預設的 %2h：請確認沒有其他報文使用它。</translation>
     </message>
     <message>
         <source>The message will be switched off: the drive will neither send nor accept it.</source>
-        <translation type="unfinished"></translation>
+        <translation>報文將被關閉：驅動器既不傳送也不接收它。</translation>
     </message>
     <message>
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
-        <translation type="unfinished"></translation>
+        <translation>AIMOTOR：同步 PDO 需要主站送出 SYNC。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PdoWizard</name>
+    <name>PdoWizard</name>
     <message>
         <source>PDO mapping — CoScope</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO 映射 — CoScope</translation>
     </message>
     <message>
         <source>Not connected to a bus: this wizard talks to the drive, so connect first (File ▸ Connect).</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線到總線：此精靈需要與驅動器通訊，請先連線（檔案 ▸ 連線）。</translation>
     </message>
     <message>
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change the drive. Reconnect without listen-only to use it.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法讀取或變更驅動器。請取消僅監聽後重新連線再使用。</translation>
     </message>
     <message>
         <source>The bus is not open (yet): wait for it to connect.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線（尚）未開啟：請等待連線完成。</translation>
     </message>
     <message>
         <source>the connection changed while reading</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取時連線已變更</translation>
     </message>
     <message>
         <source>The connection was closed while the PDO was being changed. Connect again and read the PDO to see what is in force.</source>
-        <translation type="unfinished"></translation>
+        <translation>變更 PDO 時連線被關閉。請重新連線並讀取 PDO，確認目前生效的設定。</translation>
     </message>
     <message>
         <source>Choose a drive first.</source>
-        <translation type="unfinished"></translation>
+        <translation>請先選擇驅動器。</translation>
     </message>
     <message>
         <source>The PDO has not been read from the drive yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未從驅動器讀取 PDO。</translation>
     </message>
     <message>
         <source>PDO mapping: %1 of node %2</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
         <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
-        <translation type="unfinished"></translation>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
-        <translation type="unfinished"></translation>
+        <translation>啟動過程資料：驅動器進入操作狀態並傳送／使用其 PDO（NMT 啟動）</translation>
     </message>
     <message>
         <source>A change is already being applied.</source>
-        <translation type="unfinished"></translation>
+        <translation>已有變更正在套用。</translation>
     </message>
     <message>
         <source>Stopped at step %1 of %2: %3%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>停止於第 %1 步（共 %2 步）：%3%4。</translation>
     </message>
     <message>
         <source>What the drive answered: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器的回應：%1</translation>
     </message>
     <message>
         <source>What to check: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>檢查事項：%1</translation>
     </message>
     <message>
         <source>The previous settings were written back: %1 works as before (%2 objects, %3 bits). The drive was left pre-operational.</source>
-        <translation type="unfinished"></translation>
+        <translation>已寫回先前的設定：%1 與之前相同（%2 個物件，%3 位元）。驅動器維持在預操作狀態。</translation>
     </message>
     <message>
         <source>Writing the previous settings back failed as well (%1): read the PDO again and check it before starting the drive.</source>
-        <translation type="unfinished"></translation>
+        <translation>寫回先前的設定也失敗了（%1）：啟動驅動器前，請重新讀取 PDO 並檢查。</translation>
     </message>
     <message>
         <source>Nothing was changed on the drive.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器上沒有任何變更。</translation>
     </message>
     <message>
         <source>Done: %1 of node %2 now carries %3 objects (%4 bits), checked by reading back. The trace and the plot decode it with the new layout from now on.</source>
-        <translation type="unfinished"></translation>
+        <translation>完成：節點 %2 的 %1 現在攜帶 %3 個物件（%4 位元），已讀回確認。追蹤與圖表從現在起以新的配置解碼。</translation>
     </message>
     <message>
         <source> The drive is pre-operational: start it (NMT start) to make PDOs flow.</source>
-        <translation type="unfinished"></translation>
+        <translation> 驅動器處於預操作狀態：啟動它（NMT 啟動）即可開始傳送 PDO。</translation>
     </message>
     <message>
         <source> Starting the drive failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation> 啟動驅動器失敗：%1</translation>
     </message>
     <message>
         <source> The drive was started (operational).</source>
-        <translation type="unfinished"></translation>
+        <translation> 驅動器已啟動（操作狀態）。</translation>
     </message>
     <message>
         <source>
 But storing failed (%1): the new mapping works now and is lost at power-off. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>
+但儲存失敗（%1）：新的映射目前有效，斷電後會遺失。%2</translation>
     </message>
     <message>
         <source> Stored in the drive (kept after power-off).</source>
-        <translation type="unfinished"></translation>
+        <translation> 已儲存到驅動器（斷電後保留）。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PlotDock</name>
+    <name>PlotDock</name>
     <message>
         <source>Plot</source>
-        <translation type="unfinished"></translation>
+        <translation>圖表</translation>
     </message>
     <message>
         <source>Rolling window</source>
-        <translation type="unfinished"></translation>
+        <translation>滾動視窗</translation>
     </message>
     <message>
         <source>Whole trace</source>
-        <translation type="unfinished"></translation>
+        <translation>整個追蹤</translation>
     </message>
     <message>
         <source>Follow the newest samples over a window of seconds, or show the whole trace</source>
-        <translation type="unfinished"></translation>
+        <translation>在數秒寬的視窗內跟隨最新的取樣，或顯示整個追蹤</translation>
     </message>
     <message>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> 秒</translation>
     </message>
     <message>
         <source>Width of the rolling window</source>
-        <translation type="unfinished"></translation>
+        <translation>滾動視窗的寬度</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暫停</translation>
     </message>
     <message>
         <source>Freeze the view (data keeps being recorded); zoom and pan pause too</source>
-        <translation type="unfinished"></translation>
+        <translation>凍結畫面（資料仍持續記錄）；縮放與平移也會暫停</translation>
     </message>
     <message>
         <source>Stacked</source>
-        <translation type="unfinished"></translation>
+        <translation>堆疊</translation>
     </message>
     <message>
         <source>Shared plot</source>
-        <translation type="unfinished"></translation>
+        <translation>共用圖表</translation>
     </message>
     <message>
         <source>Stacked plots sharing the time axis, or one plot with a y-axis per signal</source>
-        <translation type="unfinished"></translation>
+        <translation>共用時間軸的堆疊圖表，或每個訊號各有一條 Y 軸的單一圖表</translation>
     </message>
     <message>
         <source>Autoscale</source>
-        <translation type="unfinished"></translation>
+        <translation>自動縮放</translation>
     </message>
     <message>
         <source>Fit the y-axes to the visible data</source>
-        <translation type="unfinished"></translation>
+        <translation>將 Y 軸調整為符合可見資料</translation>
     </message>
     <message>
         <source>Auto Y</source>
-        <translation type="unfinished"></translation>
+        <translation>自動 Y</translation>
     </message>
     <message>
         <source>Keep the y-axes fitted; off: drag and wheel zoom the y-axes too</source>
-        <translation type="unfinished"></translation>
+        <translation>持續自動調整 Y 軸；關閉時：拖曳與滾輪也會縮放 Y 軸</translation>
     </message>
     <message>
         <source>Legend</source>
-        <translation type="unfinished"></translation>
+        <translation>圖例</translation>
     </message>
     <message>
         <source>Clear cursors</source>
-        <translation type="unfinished"></translation>
+        <translation>清除游標</translation>
     </message>
     <message>
         <source>Add raw signal…</source>
-        <translation type="unfinished"></translation>
+        <translation>加入原始訊號…</translation>
     </message>
     <message>
         <source>Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>繪製任何封包的位元（起始位元、長度、類型、位元組順序、係數、偏移、單位）：適用於沒有字典的裝置</translation>
     </message>
     <message>
         <source>Export</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出</translation>
     </message>
     <message>
         <source>PNG image…</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG 圖片…</translation>
     </message>
     <message>
         <source>PDF document…</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF 文件…</translation>
     </message>
     <message>
         <source>CSV of the visible window…</source>
-        <translation type="unfinished"></translation>
+        <translation>可見視窗的 CSV…</translation>
     </message>
     <message>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>繼續</translation>
     </message>
     <message>
         <source>No frames from the bus yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未從總線收到封包。</translation>
     </message>
     <message>
         <source>Reading the log…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在讀取記錄檔…</translation>
     </message>
     <message>
         <source>The log holds no frames.</source>
-        <translation type="unfinished"></translation>
+        <translation>記錄檔中沒有封包。</translation>
     </message>
     <message>
         <source>Nothing to plot: connect to a bus (Bus menu) or open a log (File ▸ Open log…).</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有可繪製的內容：請連線到總線（總線選單）或開啟記錄檔（檔案 ▸ 開啟記錄檔…）。</translation>
     </message>
     <message>
         <source>bus %1 node %2</source>
-        <translation type="unfinished"></translation>
+        <translation>總線 %1 節點 %2</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.</source>
-        <translation type="unfinished"></translation>
+        <translation>此追蹤中沒有 PDO（%L1 個封包）：圖表顯示的是 PDO 所攜帶的物件。</translation>
     </message>
     <message>
         <source>Nodes seen: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>已看到的節點：%1。</translation>
     </message>
     <message>
         <source>Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).</source>
-        <translation type="unfinished"></translation>
+        <translation>節點啟動後才會傳送 PDO（節點面板：按右鍵 ▸ 啟動）。</translation>
     </message>
     <message>
         <source>No dictionary for these nodes, so their PDOs cannot be decoded: %1. Assign one in the Nodes dock (right-click the node ▸ Assign dictionary…)%2; its PDO signals are then listed here.</source>
-        <translation type="unfinished"></translation>
+        <translation>這些節點沒有字典，因此無法解碼其 PDO：%1。請在節點面板中指定字典（在節點上按右鍵 ▸ 指定字典…）%2；之後其 PDO 訊號就會列在這裡。</translation>
     </message>
     <message>
         <source> or identify the nodes with Bus ▸ Scan network</source>
-        <translation type="unfinished"></translation>
+        <translation> 或以「總線 ▸ 掃描網路」識別節點</translation>
     </message>
     <message>
         <source>PDOs whose mapping is not known (changed before the trace began): %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>映射未知的 PDO（在追蹤開始前已變更）：%1。</translation>
     </message>
     <message>
         <source>Raw signal %1 added: it is listed under COB-ID %2h once its frames are read</source>
-        <translation type="unfinished"></translation>
+        <translation>已加入原始訊號 %1：讀到其封包後，會列在 COB-ID %2h 之下</translation>
     </message>
     <message>
         <source>%1: cannot write the PNG image</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：無法寫入 PNG 圖片</translation>
     </message>
     <message>
         <source>%1: cannot write the PDF document</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：無法寫入 PDF 文件</translation>
     </message>
     <message>
         <source>PNG image (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>PNG 圖片（*.png）</translation>
     </message>
     <message>
         <source>PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF 文件（*.pdf）</translation>
     </message>
     <message>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV（*.csv）</translation>
     </message>
     <message>
         <source>Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>匯出圖表</translation>
     </message>
     <message>
         <source>Plot exported to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>圖表已匯出至 %1</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::PlotView</name>
+    <name>PlotView</name>
     <message>
         <source>Pick signals on the left</source>
-        <translation type="unfinished"></translation>
+        <translation>請在左側選擇訊號</translation>
     </message>
     <message>
         <source>Time [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>時間 [s]</translation>
     </message>
     <message>
         <source>Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.</source>
-        <translation type="unfinished"></translation>
+        <translation>按一下圖表可放置游標 A（並跳至該封包），Shift+按一下放置游標 B。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::RawSignalDialog</name>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <translation>正在以指定的字典解碼 PDO</translation>
+    </message>
+    <message>
+        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
+        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入 Switch on disabled：故障位元 3 為 0，位元 6 為 1。</translation>
+    </message>
+    <message>
+        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
+        <translation>Shutdown（轉換 2）：讓驅動器準備就緒，馬達仍不通電。送出 6040h = 0006h。預期進入 Ready to switch on：位元 0 與 5 為 1，位元 6 為 0。</translation>
+    </message>
+    <message>
+        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
+        <translation>Switch on（轉換 3）：開啟功率級，馬達尚未通電；需要主電源。送出 6040h = 0007h。預期進入 Switched on：位元 0、1、4（電壓已啟用）與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
+        <translation>Enable operation（轉換 4）：馬達通電，保持位置並依命令動作。送出 6040h = 000Fh。預期進入 Operation enabled：位元 0、1、2 與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>booting (boot-up)</source>
+        <translation>開機中（boot-up）</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>running (operational)</source>
+        <translation>運轉中（操作狀態）</translation>
+    </message>
+    <message>
+        <source>ready (pre-operational)</source>
+        <translation>就緒（預操作狀態）</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>已偵測</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation>CiA 402 逐步致能…</translation>
+    </message>
+</context>
+<context>
+    <name>RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
-        <translation type="unfinished"></translation>
+        <translation>加入原始訊號</translation>
     </message>
     <message>
         <source>0x181</source>
-        <translation type="unfinished"></translation>
+        <translation>0x181</translation>
     </message>
     <message>
         <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
-        <translation type="unfinished"></translation>
+        <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
         <source>Intel: the least significant bit; Motorola: the most significant bit (DBC numbering, bit 7 of byte 0 = 7)</source>
-        <translation type="unfinished"></translation>
+        <translation>Intel：最低有效位元；Motorola：最高有效位元（DBC 編號方式，位元組 0 的位元 7 = 7）</translation>
     </message>
     <message>
         <source> bits</source>
-        <translation type="unfinished"></translation>
+        <translation> 位元</translation>
     </message>
     <message>
         <source>Unsigned</source>
-        <translation type="unfinished"></translation>
+        <translation>無號</translation>
     </message>
     <message>
         <source>Signed</source>
-        <translation type="unfinished"></translation>
+        <translation>有號</translation>
     </message>
     <message>
         <source>Float (IEEE 754, 32 or 64 bits)</source>
-        <translation type="unfinished"></translation>
+        <translation>浮點數（IEEE 754，32 或 64 位元）</translation>
     </message>
     <message>
         <source>Intel (little-endian, as CANopen PDOs)</source>
-        <translation type="unfinished"></translation>
+        <translation>Intel（小端序，與 CANopen PDO 相同）</translation>
     </message>
     <message>
         <source>Motorola (big-endian)</source>
-        <translation type="unfinished"></translation>
+        <translation>Motorola（大端序）</translation>
     </message>
     <message>
         <source>value = raw × factor + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>值 = 原始值 × 係數 + 偏移</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名稱</translation>
     </message>
     <message>
         <source>COB-ID</source>
-        <translation type="unfinished"></translation>
+        <translation>COB-ID</translation>
     </message>
     <message>
         <source>Start bit</source>
-        <translation type="unfinished"></translation>
+        <translation>起始位元</translation>
     </message>
     <message>
         <source>Length</source>
-        <translation type="unfinished"></translation>
+        <translation>長度</translation>
     </message>
     <message>
         <source>Type</source>
-        <translation type="unfinished"></translation>
+        <translation>類型</translation>
     </message>
     <message>
         <source>Byte order</source>
-        <translation type="unfinished"></translation>
+        <translation>位元組順序</translation>
     </message>
     <message>
         <source>Factor</source>
-        <translation type="unfinished"></translation>
+        <translation>係數</translation>
     </message>
     <message>
         <source>Offset</source>
-        <translation type="unfinished"></translation>
+        <translation>偏移</translation>
     </message>
     <message>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>單位</translation>
     </message>
     <message>
         <source>Plot bits of any frame, for a device without a dictionary.</source>
-        <translation type="unfinished"></translation>
+        <translation>繪製任何封包的位元，適用於沒有字典的裝置。</translation>
     </message>
     <message>
         <source>Give the signal a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>請為訊號命名。</translation>
     </message>
     <message>
         <source>The COB-ID must be a number up to 1FFFFFFFh (0x181, 385 or 181h).</source>
-        <translation type="unfinished"></translation>
+        <translation>COB-ID 必須是不超過 1FFFFFFFh 的數字（0x181、385 或 181h）。</translation>
     </message>
     <message>
         <source>The factor must be a number other than 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>係數必須是不為 0 的數字。</translation>
     </message>
     <message>
         <source>The offset must be a number.</source>
-        <translation type="unfinished"></translation>
+        <translation>偏移必須是數字。</translation>
     </message>
     <message>
         <source>A float is 32 or 64 bits long.</source>
-        <translation type="unfinished"></translation>
+        <translation>浮點數長度為 32 或 64 位元。</translation>
     </message>
     <message>
         <source>The signal ends past byte 64 of the frame.</source>
-        <translation type="unfinished"></translation>
+        <translation>訊號結束位置超出封包的第 64 位元組。</translation>
     </message>
     <message>
         <source>This signal cannot be read: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>無法讀取此訊號：%1。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::ScriptPreview</name>
+    <name>ScriptPreview</name>
     <message>
         <source>What it does</source>
-        <translation type="unfinished"></translation>
+        <translation>用途</translation>
     </message>
     <message>
         <source>Script line</source>
-        <translation type="unfinished"></translation>
+        <translation>腳本行</translation>
     </message>
     <message>
         <source>Why</source>
-        <translation type="unfinished"></translation>
+        <translation>原因</translation>
     </message>
     <message>
         <source>Result</source>
-        <translation type="unfinished"></translation>
+        <translation>結果</translation>
     </message>
     <message>
         <source>Save as script…</source>
-        <translation type="unfinished"></translation>
+        <translation>另存為腳本…</translation>
     </message>
     <message>
         <source>Write these steps to a text file that `coscope-cli script run BUS FILE` replays</source>
-        <translation type="unfinished"></translation>
+        <translation>將這些步驟寫入文字檔，可用 `coscope-cli script run BUS FILE` 重播</translation>
     </message>
     <message numerus="yes">
         <source>%n step(s) will be sent</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>將送出 %n 個步驟</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%1 — %n step(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 — %n 個步驟</numerusform>
         </translation>
     </message>
     <message>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>完成</translation>
     </message>
     <message>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>失敗</translation>
     </message>
     <message>
         <source>running…</source>
-        <translation type="unfinished"></translation>
+        <translation>執行中…</translation>
     </message>
     <message>
         <source>Save as script</source>
-        <translation type="unfinished"></translation>
+        <translation>另存為腳本</translation>
     </message>
     <message>
         <source>Command scripts (*.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>指令腳本（*.txt）;;所有檔案（*）</translation>
     </message>
     <message>
         <source>Could not save the script: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法儲存腳本：%1</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::ScriptRunPanel</name>
+    <name>ScriptRunPanel</name>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>執行</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Stopped: the connection changed.</source>
-        <translation type="unfinished"></translation>
+        <translation>已停止：連線已變更。</translation>
     </message>
     <message>
         <source>Send these commands?</source>
-        <translation type="unfinished"></translation>
+        <translation>要送出這些指令嗎？</translation>
     </message>
     <message>
         <source>A run is in progress.</source>
-        <translation type="unfinished"></translation>
+        <translation>正在執行中。</translation>
     </message>
     <message>
         <source>The bus cannot send now.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線目前無法傳送。</translation>
     </message>
     <message>
         <source>Step %1 of %2…</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 步（共 %2 步）…</translation>
     </message>
     <message numerus="yes">
         <source>Done: %n step(s) completed.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>完成：已完成 %n 個步驟。</numerusform>
         </translation>
     </message>
     <message>
         <source>Stopped at step %1; nothing further was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>停止於第 %1 步；之後沒有再送出任何內容。</translation>
     </message>
     <message>
         <source>Failed at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>失敗於 %1</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::SignalPicker</name>
+    <name>SignalPicker</name>
     <message>
         <source>Search signals (name, object, node)</source>
-        <translation type="unfinished"></translation>
+        <translation>搜尋訊號（名稱、物件、節點）</translation>
     </message>
     <message>
         <source>Signal</source>
-        <translation type="unfinished"></translation>
+        <translation>訊號</translation>
     </message>
     <message>
         <source>Object</source>
-        <translation type="unfinished"></translation>
+        <translation>物件</translation>
     </message>
     <message>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>單位</translation>
     </message>
     <message>
         <source>Factor</source>
-        <translation type="unfinished"></translation>
+        <translation>係數</translation>
     </message>
     <message>
         <source>No signal matches “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有符合「%1」的訊號。</translation>
     </message>
     <message>
         <source>Bus %1, COB-ID %2h (raw signals)</source>
-        <translation type="unfinished"></translation>
+        <translation>總線 %1，COB-ID %2h（原始訊號）</translation>
     </message>
     <message>
         <source>COB-ID %1h (raw signals)</source>
-        <translation type="unfinished"></translation>
+        <translation>COB-ID %1h（原始訊號）</translation>
     </message>
     <message>
         <source>Bus %1, node %2</source>
-        <translation type="unfinished"></translation>
+        <translation>總線 %1，節點 %2</translation>
     </message>
     <message>
         <source>Node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>value = raw × factor + %1 (defined: × %2 %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>值 = 原始值 × 係數 + %1（定義：× %2 %3）</translation>
     </message>
     <message>
         <source>value = raw × factor (dictionary: %1 %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>值 = 原始值 × 係數（字典：%1 %2）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::TraceDock</name>
+    <name>TraceDock</name>
     <message>
         <source>Trace</source>
-        <translation type="unfinished"></translation>
+        <translation>追蹤</translation>
     </message>
     <message>
         <source>Close this report</source>
-        <translation type="unfinished"></translation>
+        <translation>關閉此報告</translation>
     </message>
     <message>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>跟隨</translation>
     </message>
     <message>
         <source>Follow new frames (scrolling up pauses)</source>
-        <translation type="unfinished"></translation>
+        <translation>跟隨新封包（向上捲動時暫停）</translation>
     </message>
     <message>
         <source>Absolute time</source>
-        <translation type="unfinished"></translation>
+        <translation>絕對時間</translation>
     </message>
     <message>
         <source>Relative time</source>
-        <translation type="unfinished"></translation>
+        <translation>相對時間</translation>
     </message>
     <message>
         <source>Delta time</source>
-        <translation type="unfinished"></translation>
+        <translation>時間差</translation>
     </message>
     <message>
         <source>Latest per ID</source>
-        <translation type="unfinished"></translation>
+        <translation>每個 ID 最新封包</translation>
     </message>
     <message>
         <source>One row per COB-ID showing its latest frame</source>
-        <translation type="unfinished"></translation>
+        <translation>每個 COB-ID 一列，顯示其最新封包</translation>
     </message>
     <message>
         <source>Group SDO</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 分組</translation>
     </message>
     <message>
         <source>Group SDO transfers: each transfer as one row; click its ▸ to show its frames</source>
-        <translation type="unfinished"></translation>
+        <translation>將 SDO 傳輸分組：每次傳輸顯示為一列；按一下 ▸ 顯示其封包</translation>
     </message>
     <message>
         <source>Filter: node:5 svc:sdo,emcy id:580-5FF text</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：node:5 svc:sdo,emcy id:580-5FF 文字</translation>
     </message>
     <message>
         <source>Find</source>
-        <translation type="unfinished"></translation>
+        <translation>尋找</translation>
     </message>
     <message>
         <source>Previous</source>
-        <translation type="unfinished"></translation>
+        <translation>上一個</translation>
     </message>
     <message>
         <source>Find previous</source>
-        <translation type="unfinished"></translation>
+        <translation>尋找上一個</translation>
     </message>
     <message>
         <source>Next</source>
-        <translation type="unfinished"></translation>
+        <translation>下一個</translation>
     </message>
     <message>
         <source>Find next</source>
-        <translation type="unfinished"></translation>
+        <translation>尋找下一個</translation>
     </message>
     <message>
         <source>Bookmark</source>
-        <translation type="unfinished"></translation>
+        <translation>書籤</translation>
     </message>
     <message>
         <source>Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump</source>
-        <translation type="unfinished"></translation>
+        <translation>在選取的封包上切換書籤（Ctrl+B）；F2 / Shift+F2 跳轉</translation>
     </message>
     <message>
         <source>%L1 rows, %L2 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 列，%L2 個封包</translation>
     </message>
     <message>
         <source>%L1 SDO transfers grouped</source>
-        <translation type="unfinished"></translation>
+        <translation>已將 %L1 個 SDO 傳輸分組</translation>
     </message>
     <message>
         <source>%L1 of %L2 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1／%L2 個封包</translation>
     </message>
     <message>
         <source>%L1 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>%L1 個封包</translation>
     </message>
     <message>
         <source>&apos;%1&apos; not found: the trace is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
         <source>&apos;%1&apos; not found in the next %L2 rows; search again to continue</source>
-        <translation type="unfinished"></translation>
+        <translation>在接下來的 %L2 列中找不到「%1」；再搜尋一次以繼續</translation>
     </message>
     <message>
         <source>&apos;%1&apos; not found</source>
-        <translation type="unfinished"></translation>
+        <translation>找不到「%1」</translation>
     </message>
     <message>
         <source>Select a frame to bookmark</source>
-        <translation type="unfinished"></translation>
+        <translation>請選擇要加書籤的封包</translation>
     </message>
     <message>
         <source>No bookmarks (Ctrl+B sets one)</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有書籤（按 Ctrl+B 設定）</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::TraceModel</name>
-    <message>
-        <source>Click to expand or collapse the transfer&apos;s frames</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Δt (s)</source>
-        <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No.</source>
-        <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>COB-ID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Node</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Service</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Dir</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Len</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Summary</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>coscope::gui::WizardFramesPane</name>
+    <name>WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
-        <translation type="unfinished"></translation>
+        <translation>此精靈在總線上的封包</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::WizardGuard</name>
+    <name>WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
-        <translation type="unfinished"></translation>
+        <translation>未連線到任何總線，因此無法傳送。請先連線到總線；您仍可先準備步驟並另存為腳本。</translation>
     </message>
     <message>
         <source>The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; you can still prepare the steps and save them as a script.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線以僅監聽模式開啟：CoScope 不會在上面傳送。請取消僅監聽後重新連線才能送出這些指令；您仍可先準備步驟並另存為腳本。</translation>
     </message>
     <message>
         <source>The bus is still opening; sending is possible once it is open.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線仍在開啟中；開啟後即可傳送。</translation>
     </message>
     <message>
         <source>The bus is not open (%1), so nothing can be sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>總線未開啟（%1），因此無法傳送。</translation>
     </message>
 </context>
 <context>
-    <name>coscope::gui::Workspace</name>
+    <name>Workspace</name>
     <message>
         <source>cannot create the folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>無法建立資料夾 %1</translation>
     </message>
     <message>
         <source>The capture is not journaled to disk (%1); it is kept in memory only</source>
-        <translation type="unfinished"></translation>
+        <translation>擷取內容未寫入磁碟日誌（%1）；僅保存在記憶體中</translation>
     </message>
     <message>
         <source>Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.</source>
-        <translation type="unfinished"></translation>
+        <translation>擷取已停止：無法寫入擷取日誌 %1（%2）。追蹤中保留已收到的 %L3 個封包。</translation>
     </message>
 </context>
 </TS>

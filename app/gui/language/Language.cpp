@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/language/Language.h"
 
+#include "dissectors/VendorTable.h"
+
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QSettings>
@@ -58,6 +60,8 @@ bool apply(const QString& wanted) {
     QCoreApplication::removeTranslator(&i.app);
     QCoreApplication::removeTranslator(&i.qt);
     i.code = QStringLiteral("en");
+    // Vendor alarm and parameter names (resources/alarms, dictionary sidecars) follow the UI.
+    dissect::setVendorTextLanguage(i.code);
     if (code == u"en") return true;
     if (!i.app.load(QStringLiteral(":/i18n/coscope_%1.qm").arg(code))) {
         spdlog::warn("no translation for {} in the program; the UI stays in English", code.toStdString());
@@ -70,6 +74,7 @@ bool apply(const QString& wanted) {
         spdlog::info("Qt's own translation qtbase_{} not found; its dialog buttons stay in English", code.toStdString());
     QCoreApplication::installTranslator(&i.app);
     i.code = code;
+    dissect::setVendorTextLanguage(code);
     return true;
 }
 

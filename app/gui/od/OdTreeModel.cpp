@@ -6,6 +6,8 @@
 #include "core/canopen/Ds402.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/od/NumberNotation.h"
+#include "dissectors/ParameterNames.h"
+#include "dissectors/VendorTable.h"
 
 #include <QBrush>
 #include <QColor>
@@ -153,14 +155,14 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
         if (!e) {  // composite object row
             switch (col) {
             case Object: return hexIndex(obj->index);
-            case Name: return obj->name;
+            case Name: return dissect::localParameterName(obj->name, dissect::vendorTextLanguage());
             case Type: return od::objectTypeName(obj->objectType);
             default: return {};
             }
         }
         switch (col) {
         case Object: return objectRow ? hexIndex(obj->index) : QCoreApplication::translate("OdTreeModel", "sub %1").arg(hexSub(e->sub));
-        case Name: return objectRow ? obj->name : e->name;
+        case Name: return dissect::localParameterName(objectRow ? obj->name : e->name, dissect::vendorTextLanguage());
         case Type: return od::dataTypeName(e->dataType);
         case Access: return od::accessName(e->access);
         case Pdo: return e->pdoMappable ? QStringLiteral("✓") : QString();
