@@ -2,7 +2,1005 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>BusStatusBar</name>
+    <name>CoreText</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>voltage enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal limit active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 12)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 13)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 14)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 15)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shutdown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on + enable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable voltage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation type="unfinished">快速停止</translation>
+    </message>
+    <message>
+        <source>Disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation type="unfinished">运行使能</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on / disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile position (PP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity (VL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile velocity (PV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile torque (PT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing (HM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interpolated position (IP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous position (CSP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous velocity (CSV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous torque (CST)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vl</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cst</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished">停止</translation>
+    </message>
+    <message>
+        <source>Enter pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset communication</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle bit not alternated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter does not match</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too high</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid value for parameter (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too high (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too low (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data available</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished">已关闭</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished">错误</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>错误码（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——厂商报警 %1</translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402StateDiagram</name>
+    <message>
+        <source>13 any fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Ds402VendorNotes</name>
+    <message>
+        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>EventLog</name>
+    <message>
+        <source>EMCY reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished">NMT 状态</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dropped frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation type="unfinished">信息</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished">所有节点</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished">节点 %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat back after timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No heartbeat for %1 ms (period %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <source>NMT (short frame)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT frame must carry 2 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished">所有节点</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished">节点 %1</translation>
+    </message>
+    <message>
+        <source>NMT node control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation type="unfinished">节点 ID</translation>
+    </message>
+    <message>
+        <source>0 (all)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request to node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request (RTR)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT error control (empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error control frame without state byte</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished">NMT 状态</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: error reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, reg %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY frame shorter than 8 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error register (1001h)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO request (client → server)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO response (server → client)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation type="unfinished">索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation type="unfinished">中止码</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">数据</translation>
+    </message>
+    <message>
+        <source>Segment data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame, class %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TIME stamp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LSS command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(29-bit identifier, not CANopen)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 node %2, %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogLoadJob</name>
+    <message>
+        <source>Opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot open</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogSaveJob</name>
+    <message>
+        <source>Saving %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unknown log format</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot write format &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>OdTreeModel</name>
+    <message>
+        <source>sub %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, PDO-mappable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Limits: %1 … %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Differs from the default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3 (bytes %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>PdoDbcExport</name>
+    <message>
+        <source>%1: cannot write the DBC file (%2)</source>
+        <translation>%1：无法写入 DBC 文件（%2）</translation>
+    </message>
+    <message>
+        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
+        <translation>PDO 配置已导出至 %1：%2 个 PDO 报文，%3 个原始信号</translation>
+    </message>
+    <message>
+        <source>Export PDO layout as DBC</source>
+        <translation>将 PDO 配置导出为 DBC</translation>
+    </message>
+    <message>
+        <source>DBC file (*.dbc)</source>
+        <translation>DBC 文件（*.dbc）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoVendorNotes</name>
+    <message>
+        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: this PDO number may not exist on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied as soon as it arrives (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reserved transmission type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <translation>正在以指定的字典解码 PDO</translation>
+    </message>
+    <message>
+        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
+        <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入 Switch on disabled：故障位 3 为 0，位 6 为 1。</translation>
+    </message>
+    <message>
+        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
+        <translation>Shutdown（转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入 Ready to switch on：位 0 与 5 为 1，位 6 为 0。</translation>
+    </message>
+    <message>
+        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
+        <translation>Switch on（转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入 Switched on：位 0、1、4（电压已启用）与 5 为 1。</translation>
+    </message>
+    <message>
+        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
+        <translation>Enable operation（转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入 Operation enabled：位 0、1、2 与 5 为 1。</translation>
+    </message>
+    <message>
+        <source>booting (boot-up)</source>
+        <translation>启动中（boot-up）</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>running (operational)</source>
+        <translation>运行中（操作状态）</translation>
+    </message>
+    <message>
+        <source>ready (pre-operational)</source>
+        <translation>就绪（预操作状态）</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>已检测</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFilter</name>
+    <message>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grouping SDO transfers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filtering</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardFramesPane</name>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">时间（秒）</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">数据</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardMenu</name>
+    <message>
+        <source>Baud rate and node-ID…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation type="unfinished">CiA 402 逐步使能…</translation>
+    </message>
+    <message>
+        <source>PDO mapping…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
         <translation>取消</translation>
@@ -93,7 +1091,7 @@
     </message>
 </context>
 <context>
-    <name>ConnectDialog</name>
+    <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
         <translation>连接到 CAN 总线</translation>
@@ -308,14 +1306,14 @@
     </message>
 </context>
 <context>
-    <name>ConsoleDock</name>
+    <name>coscope::gui::ConsoleDock</name>
     <message>
         <source>Console</source>
         <translation>控制台</translation>
     </message>
 </context>
 <context>
-    <name>DcfApplyDialog</name>
+    <name>coscope::gui::DcfApplyDialog</name>
     <message>
         <source>Apply DCF to node %1</source>
         <translation>将 DCF 应用到节点 %1</translation>
@@ -374,25 +1372,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Fault</name>
-    <message>
-        <source>Error code (603Fh) %1h</source>
-        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
-        <translation>错误码（603Fh）%1h</translation>
-    </message>
-    <message>
-        <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
-        <translation>——厂商报警 %1</translation>
-    </message>
-    <message>
-        <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
-        <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402FramesTabs</name>
+    <name>coscope::gui::Ds402FramesTabs</name>
     <message>
         <source>Frames (requests and responses)</source>
         <translation>帧（请求与响应）</translation>
@@ -403,7 +1383,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402ModeBox</name>
+    <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
         <translation>运行模式（6060h / 6061h）</translation>
@@ -434,7 +1414,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402MotionPlot</name>
+    <name>coscope::gui::Ds402MotionPlot</name>
     <message>
         <source>position 6064h</source>
         <translation>位置 6064h</translation>
@@ -457,14 +1437,14 @@
     </message>
 </context>
 <context>
-    <name>Ds402StateDiagram</name>
+    <name>coscope::gui::Ds402StateDiagram</name>
     <message>
         <source>State not read yet</source>
         <translation>尚未读取状态</translation>
     </message>
 </context>
 <context>
-    <name>Ds402StatusPanel</name>
+    <name>coscope::gui::Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
         <translation>状态字（6041h）：未读取</translation>
@@ -483,7 +1463,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402StepBar</name>
+    <name>coscope::gui::Ds402StepBar</name>
     <message>
         <source>Step through — one button per transition</source>
         <translation>逐步运行 — 每个状态转换一个按钮</translation>
@@ -522,7 +1502,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402TestMoveBox</name>
+    <name>coscope::gui::Ds402TestMoveBox</name>
     <message>
         <source>Test move (optional, small limits)</source>
         <translation>测试运行（选用，小范围限制）</translation>
@@ -577,7 +1557,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Wizard</name>
+    <name>coscope::gui::Ds402Wizard</name>
     <message>
         <source>CiA 402 enable step-through</source>
         <translation>CiA 402 逐步使能</translation>
@@ -908,7 +1888,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsDock</name>
+    <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
         <translation>事件</translation>
@@ -919,7 +1899,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsModel</name>
+    <name>coscope::gui::EventsModel</name>
     <message>
         <source>Time (s)</source>
         <translation>时间（秒）</translation>
@@ -942,7 +1922,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>FrameDetailsView</name>
+    <name>coscope::gui::FrameDetailsView</name>
     <message>
         <source>Field</source>
         <translation>字段</translation>
@@ -1099,7 +2079,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthDock</name>
+    <name>coscope::gui::HealthDock</name>
     <message>
         <source>Health</source>
         <translation>健康状态</translation>
@@ -1148,7 +2128,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthModel</name>
+    <name>coscope::gui::HealthModel</name>
     <message>
         <source>Severity</source>
         <translation>严重程度</translation>
@@ -1283,7 +2263,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>JournalOfferBar</name>
+    <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
         <translation>未关闭的捕获</translation>
@@ -1302,7 +2282,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>MainWindow</name>
+    <name>coscope::gui::MainWindow</name>
     <message>
         <source>Capture stopped</source>
         <translation>捕获已停止</translation>
@@ -1482,7 +2462,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdChangePage</name>
+    <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要更改的项目</translation>
@@ -1529,7 +2509,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdFindPage</name>
+    <name>coscope::gui::NodeIdFindPage</name>
     <message>
         <source>Find the device</source>
         <translation>找出设备</translation>
@@ -1602,7 +2582,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdRunPage</name>
+    <name>coscope::gui::NodeIdRunPage</name>
     <message>
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
         <translation>模拟运行：尚未发送任何内容。以下正是 CoScope 将要发送的内容与原因。</translation>
@@ -1645,7 +2625,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdWizard</name>
+    <name>coscope::gui::NodeIdWizard</name>
     <message>
         <source>Baud rate and node-ID — CoScope</source>
         <translation>波特率与节点 ID — CoScope</translation>
@@ -1808,7 +2788,7 @@ What to check: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesDock</name>
+    <name>coscope::gui::NodesDock</name>
     <message>
         <source>Nodes</source>
         <translation>节点</translation>
@@ -1959,7 +2939,7 @@ Frame: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesModel</name>
+    <name>coscope::gui::NodesModel</name>
     <message>
         <source>No heartbeat</source>
         <translation>无心跳</translation>
@@ -2062,7 +3042,7 @@ Software version (100Ah): %3</source>
     </message>
 </context>
 <context>
-    <name>ObjectDictionaryDock</name>
+    <name>coscope::gui::ObjectDictionaryDock</name>
     <message>
         <source>Object Dictionary</source>
         <translation>对象字典</translation>
@@ -2347,7 +3327,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>OdTreeModel</name>
+    <name>coscope::gui::OdTreeModel</name>
     <message>
         <source>Index</source>
         <translation>索引</translation>
@@ -2382,7 +3362,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoApplyPage</name>
+    <name>coscope::gui::PdoApplyPage</name>
     <message>
         <source>Check and apply</source>
         <translation>检查并应用</translation>
@@ -2417,7 +3397,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoChoosePage</name>
+    <name>coscope::gui::PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
         <translation>哪台驱动器、哪个报文</translation>
@@ -2504,26 +3484,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoDbcExport</name>
-    <message>
-        <source>%1: cannot write the DBC file (%2)</source>
-        <translation>%1：无法写入 DBC 文件（%2）</translation>
-    </message>
-    <message>
-        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation>PDO 配置已导出至 %1：%2 个 PDO 报文，%3 个原始信号</translation>
-    </message>
-    <message>
-        <source>Export PDO layout as DBC</source>
-        <translation>将 PDO 配置导出为 DBC</translation>
-    </message>
-    <message>
-        <source>DBC file (*.dbc)</source>
-        <translation>DBC 文件（*.dbc）</translation>
-    </message>
-</context>
-<context>
-    <name>PdoFrameLayout</name>
+    <name>coscope::gui::PdoFrameLayout</name>
     <message>
         <source>byte %1</source>
         <translation>字节 %1</translation>
@@ -2538,7 +3499,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoMappingPage</name>
+    <name>coscope::gui::PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
         <translation>报文携带的内容</translation>
@@ -2633,7 +3594,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoTimingPage</name>
+    <name>coscope::gui::PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
         <translation>报文何时发送</translation>
@@ -2760,7 +3721,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoWizard</name>
+    <name>coscope::gui::PdoWizard</name>
     <message>
         <source>PDO mapping — CoScope</source>
         <translation>PDO 映射 — CoScope</translation>
@@ -2861,7 +3822,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotDock</name>
+    <name>coscope::gui::PlotDock</name>
     <message>
         <source>Plot</source>
         <translation>图表</translation>
@@ -3040,7 +4001,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotView</name>
+    <name>coscope::gui::PlotView</name>
     <message>
         <source>Pick signals on the left</source>
         <translation>请在左侧选择信号</translation>
@@ -3055,54 +4016,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>QObject</name>
-    <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
-        <translation>正在以指定的字典解码 PDO</translation>
-    </message>
-    <message>
-        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入 Switch on disabled：故障位 3 为 0，位 6 为 1。</translation>
-    </message>
-    <message>
-        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation>Shutdown（转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入 Ready to switch on：位 0 与 5 为 1，位 6 为 0。</translation>
-    </message>
-    <message>
-        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation>Switch on（转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入 Switched on：位 0、1、4（电压已启用）与 5 为 1。</translation>
-    </message>
-    <message>
-        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation>Enable operation（转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入 Operation enabled：位 0、1、2 与 5 为 1。</translation>
-    </message>
-    <message>
-        <source>booting (boot-up)</source>
-        <translation>启动中（boot-up）</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>running (operational)</source>
-        <translation>运行中（操作状态）</translation>
-    </message>
-    <message>
-        <source>ready (pre-operational)</source>
-        <translation>就绪（预操作状态）</translation>
-    </message>
-    <message>
-        <source>seen</source>
-        <translation>已检测</translation>
-    </message>
-    <message>
-        <source>CiA 402 enable step-through…</source>
-        <translation>CiA 402 逐步使能…</translation>
-    </message>
-</context>
-<context>
-    <name>RawSignalDialog</name>
+    <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
         <translation>添加原始信号</translation>
@@ -3217,7 +4131,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptPreview</name>
+    <name>coscope::gui::ScriptPreview</name>
     <message>
         <source>What it does</source>
         <translation>用途</translation>
@@ -3280,7 +4194,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptRunPanel</name>
+    <name>coscope::gui::ScriptRunPanel</name>
     <message>
         <source>Run</source>
         <translation>运行</translation>
@@ -3325,7 +4239,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>SignalPicker</name>
+    <name>coscope::gui::SignalPicker</name>
     <message>
         <source>Search signals (name, object, node)</source>
         <translation>搜索信号（名称、对象、节点）</translation>
@@ -3376,7 +4290,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceDock</name>
+    <name>coscope::gui::TraceDock</name>
     <message>
         <source>Trace</source>
         <translation>跟踪</translation>
@@ -3491,14 +4405,71 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardFramesPane</name>
+    <name>coscope::gui::TraceModel</name>
+    <message>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished">时间</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">时间（秒）</translation>
+    </message>
+    <message>
+        <source>Δt (s)</source>
+        <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation type="unfinished">总线</translation>
+    </message>
+    <message>
+        <source>COB-ID</source>
+        <translation type="unfinished">COB-ID</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation type="unfinished">节点</translation>
+    </message>
+    <message>
+        <source>Service</source>
+        <translation type="unfinished">服务</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Len</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">数据</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
         <translation>此向导在总线上的帧</translation>
     </message>
 </context>
 <context>
-    <name>WizardGuard</name>
+    <name>coscope::gui::WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
         <translation>未连接到任何总线，因此无法发送。请先连接到总线；您仍可先准备步骤并另存为脚本。</translation>
@@ -3517,7 +4488,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>Workspace</name>
+    <name>coscope::gui::Workspace</name>
     <message>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>

@@ -2,7 +2,1005 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_TW">
 <context>
-    <name>BusStatusBar</name>
+    <name>CoreText</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready to switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switched on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>voltage enabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>switch on disabled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>internal limit active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 12)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 13)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 14)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 15)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shutdown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on + enable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disable voltage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation type="unfinished">快速停止</translation>
+    </message>
+    <message>
+        <source>Disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation type="unfinished">運轉致能</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch on / disable operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile position (PP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity (VL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile velocity (PV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile torque (PT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing (HM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interpolated position (IP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous position (CSP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous velocity (CSV)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous torque (CST)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vl</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>csv</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cst</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished">停止</translation>
+    </message>
+    <message>
+        <source>Enter pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset node</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset communication</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pre-operational</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle bit not alternated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Out of memory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter does not match</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too high</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too low</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invalid value for parameter (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too high (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value of parameter written too low (download only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>General error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data available</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished">已關閉</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished">錯誤</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>錯誤碼（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——廠商異警 %1</translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402StateDiagram</name>
+    <message>
+        <source>13 any fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Ds402VendorNotes</name>
+    <message>
+        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>EventLog</name>
+    <message>
+        <source>EMCY reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO abort</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished">NMT 狀態</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dropped frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation type="unfinished">資訊</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished">所有節點</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished">節點 %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat back after timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No heartbeat for %1 ms (period %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <source>NMT (short frame)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT frame must carry 2 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation type="unfinished">所有節點</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation type="unfinished">節點 %1</translation>
+    </message>
+    <message>
+        <source>NMT node control</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation type="unfinished">節點 ID</translation>
+    </message>
+    <message>
+        <source>0 (all)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request to node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Node guarding request (RTR)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT error control (empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error control frame without state byte</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation type="unfinished">NMT 狀態</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: error reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, reg %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMCY frame shorter than 8 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error register (1001h)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, %1 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO request (client → server)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SDO response (server → client)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation type="unfinished">索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation type="unfinished">中止碼</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">資料</translation>
+    </message>
+    <message>
+        <source>Segment data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame, class %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TIME stamp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LSS command</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(29-bit identifier, not CANopen)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 node %2, %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogLoadJob</name>
+    <message>
+        <source>Opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot open</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LogSaveJob</name>
+    <message>
+        <source>Saving %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unknown log format</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot write format &apos;%2&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>OdTreeModel</name>
+    <message>
+        <source>sub %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, PDO-mappable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Limits: %1 … %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>
+Differs from the default</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3 (bytes %4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>PdoDbcExport</name>
+    <message>
+        <source>%1: cannot write the DBC file (%2)</source>
+        <translation>%1：無法寫入 DBC 檔案（%2）</translation>
+    </message>
+    <message>
+        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
+        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
+    </message>
+    <message>
+        <source>Export PDO layout as DBC</source>
+        <translation>將 PDO 配置匯出為 DBC</translation>
+    </message>
+    <message>
+        <source>DBC file (*.dbc)</source>
+        <translation>DBC 檔案（*.dbc）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoVendorNotes</name>
+    <message>
+        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: this PDO number may not exist on it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied as soon as it arrives (event-driven, type %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reserved transmission type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <translation>正在以指定的字典解碼 PDO</translation>
+    </message>
+    <message>
+        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
+        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入 Switch on disabled：故障位元 3 為 0，位元 6 為 1。</translation>
+    </message>
+    <message>
+        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
+        <translation>Shutdown（轉換 2）：讓驅動器準備就緒，馬達仍不通電。送出 6040h = 0006h。預期進入 Ready to switch on：位元 0 與 5 為 1，位元 6 為 0。</translation>
+    </message>
+    <message>
+        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
+        <translation>Switch on（轉換 3）：開啟功率級，馬達尚未通電；需要主電源。送出 6040h = 0007h。預期進入 Switched on：位元 0、1、4（電壓已啟用）與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
+        <translation>Enable operation（轉換 4）：馬達通電，保持位置並依命令動作。送出 6040h = 000Fh。預期進入 Operation enabled：位元 0、1、2 與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>booting (boot-up)</source>
+        <translation>開機中（boot-up）</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>running (operational)</source>
+        <translation>運轉中（操作狀態）</translation>
+    </message>
+    <message>
+        <source>ready (pre-operational)</source>
+        <translation>就緒（預操作狀態）</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>已偵測</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFilter</name>
+    <message>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Grouping SDO transfers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filtering</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardFramesPane</name>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">時間（秒）</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">資料</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WizardMenu</name>
+    <message>
+        <source>Baud rate and node-ID…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation type="unfinished">CiA 402 逐步致能…</translation>
+    </message>
+    <message>
+        <source>PDO mapping…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
         <translation>取消</translation>
@@ -93,7 +1091,7 @@
     </message>
 </context>
 <context>
-    <name>ConnectDialog</name>
+    <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
         <translation>連線到 CAN 總線</translation>
@@ -308,14 +1306,14 @@
     </message>
 </context>
 <context>
-    <name>ConsoleDock</name>
+    <name>coscope::gui::ConsoleDock</name>
     <message>
         <source>Console</source>
         <translation>主控台</translation>
     </message>
 </context>
 <context>
-    <name>DcfApplyDialog</name>
+    <name>coscope::gui::DcfApplyDialog</name>
     <message>
         <source>Apply DCF to node %1</source>
         <translation>將 DCF 套用到節點 %1</translation>
@@ -374,25 +1372,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Fault</name>
-    <message>
-        <source>Error code (603Fh) %1h</source>
-        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
-        <translation>錯誤碼（603Fh）%1h</translation>
-    </message>
-    <message>
-        <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
-        <translation>——廠商異警 %1</translation>
-    </message>
-    <message>
-        <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
-        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402FramesTabs</name>
+    <name>coscope::gui::Ds402FramesTabs</name>
     <message>
         <source>Frames (requests and responses)</source>
         <translation>封包（請求與回應）</translation>
@@ -403,7 +1383,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402ModeBox</name>
+    <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
         <translation>操作模式（6060h / 6061h）</translation>
@@ -434,7 +1414,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402MotionPlot</name>
+    <name>coscope::gui::Ds402MotionPlot</name>
     <message>
         <source>position 6064h</source>
         <translation>位置 6064h</translation>
@@ -457,14 +1437,14 @@
     </message>
 </context>
 <context>
-    <name>Ds402StateDiagram</name>
+    <name>coscope::gui::Ds402StateDiagram</name>
     <message>
         <source>State not read yet</source>
         <translation>尚未讀取狀態</translation>
     </message>
 </context>
 <context>
-    <name>Ds402StatusPanel</name>
+    <name>coscope::gui::Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
         <translation>狀態字元（6041h）：未讀取</translation>
@@ -483,7 +1463,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402StepBar</name>
+    <name>coscope::gui::Ds402StepBar</name>
     <message>
         <source>Step through — one button per transition</source>
         <translation>逐步執行 — 每個狀態轉換一個按鈕</translation>
@@ -522,7 +1502,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402TestMoveBox</name>
+    <name>coscope::gui::Ds402TestMoveBox</name>
     <message>
         <source>Test move (optional, small limits)</source>
         <translation>測試運轉（選用，小範圍限制）</translation>
@@ -577,7 +1557,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Wizard</name>
+    <name>coscope::gui::Ds402Wizard</name>
     <message>
         <source>CiA 402 enable step-through</source>
         <translation>CiA 402 逐步致能</translation>
@@ -908,7 +1888,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsDock</name>
+    <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
         <translation>事件</translation>
@@ -919,7 +1899,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsModel</name>
+    <name>coscope::gui::EventsModel</name>
     <message>
         <source>Time (s)</source>
         <translation>時間（秒）</translation>
@@ -942,7 +1922,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>FrameDetailsView</name>
+    <name>coscope::gui::FrameDetailsView</name>
     <message>
         <source>Field</source>
         <translation>欄位</translation>
@@ -1099,7 +2079,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthDock</name>
+    <name>coscope::gui::HealthDock</name>
     <message>
         <source>Health</source>
         <translation>健康狀態</translation>
@@ -1148,7 +2128,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthModel</name>
+    <name>coscope::gui::HealthModel</name>
     <message>
         <source>Severity</source>
         <translation>嚴重程度</translation>
@@ -1283,7 +2263,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>JournalOfferBar</name>
+    <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
         <translation>未關閉的擷取</translation>
@@ -1302,7 +2282,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>MainWindow</name>
+    <name>coscope::gui::MainWindow</name>
     <message>
         <source>Capture stopped</source>
         <translation>擷取已停止</translation>
@@ -1482,7 +2462,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdChangePage</name>
+    <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要變更的項目</translation>
@@ -1529,7 +2509,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdFindPage</name>
+    <name>coscope::gui::NodeIdFindPage</name>
     <message>
         <source>Find the device</source>
         <translation>找出裝置</translation>
@@ -1602,7 +2582,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdRunPage</name>
+    <name>coscope::gui::NodeIdRunPage</name>
     <message>
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
         <translation>模擬執行：尚未送出任何內容。以下正是 CoScope 將要送出的內容與原因。</translation>
@@ -1645,7 +2625,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdWizard</name>
+    <name>coscope::gui::NodeIdWizard</name>
     <message>
         <source>Baud rate and node-ID — CoScope</source>
         <translation>鮑率與節點 ID — CoScope</translation>
@@ -1808,7 +2788,7 @@ What to check: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesDock</name>
+    <name>coscope::gui::NodesDock</name>
     <message>
         <source>Nodes</source>
         <translation>節點</translation>
@@ -1959,7 +2939,7 @@ Frame: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesModel</name>
+    <name>coscope::gui::NodesModel</name>
     <message>
         <source>No heartbeat</source>
         <translation>無心跳</translation>
@@ -2062,7 +3042,7 @@ Software version (100Ah): %3</source>
     </message>
 </context>
 <context>
-    <name>ObjectDictionaryDock</name>
+    <name>coscope::gui::ObjectDictionaryDock</name>
     <message>
         <source>Object Dictionary</source>
         <translation>物件字典</translation>
@@ -2347,7 +3327,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>OdTreeModel</name>
+    <name>coscope::gui::OdTreeModel</name>
     <message>
         <source>Index</source>
         <translation>索引</translation>
@@ -2382,7 +3362,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoApplyPage</name>
+    <name>coscope::gui::PdoApplyPage</name>
     <message>
         <source>Check and apply</source>
         <translation>檢查並套用</translation>
@@ -2417,7 +3397,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoChoosePage</name>
+    <name>coscope::gui::PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
         <translation>哪台驅動器、哪個報文</translation>
@@ -2504,26 +3484,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoDbcExport</name>
-    <message>
-        <source>%1: cannot write the DBC file (%2)</source>
-        <translation>%1：無法寫入 DBC 檔案（%2）</translation>
-    </message>
-    <message>
-        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
-    </message>
-    <message>
-        <source>Export PDO layout as DBC</source>
-        <translation>將 PDO 配置匯出為 DBC</translation>
-    </message>
-    <message>
-        <source>DBC file (*.dbc)</source>
-        <translation>DBC 檔案（*.dbc）</translation>
-    </message>
-</context>
-<context>
-    <name>PdoFrameLayout</name>
+    <name>coscope::gui::PdoFrameLayout</name>
     <message>
         <source>byte %1</source>
         <translation>位元組 %1</translation>
@@ -2538,7 +3499,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoMappingPage</name>
+    <name>coscope::gui::PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
         <translation>報文攜帶的內容</translation>
@@ -2633,7 +3594,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoTimingPage</name>
+    <name>coscope::gui::PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
         <translation>報文何時送出</translation>
@@ -2760,7 +3721,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>PdoWizard</name>
+    <name>coscope::gui::PdoWizard</name>
     <message>
         <source>PDO mapping — CoScope</source>
         <translation>PDO 映射 — CoScope</translation>
@@ -2861,7 +3822,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotDock</name>
+    <name>coscope::gui::PlotDock</name>
     <message>
         <source>Plot</source>
         <translation>圖表</translation>
@@ -3040,7 +4001,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotView</name>
+    <name>coscope::gui::PlotView</name>
     <message>
         <source>Pick signals on the left</source>
         <translation>請在左側選擇訊號</translation>
@@ -3055,54 +4016,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>QObject</name>
-    <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
-        <translation>正在以指定的字典解碼 PDO</translation>
-    </message>
-    <message>
-        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入 Switch on disabled：故障位元 3 為 0，位元 6 為 1。</translation>
-    </message>
-    <message>
-        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation>Shutdown（轉換 2）：讓驅動器準備就緒，馬達仍不通電。送出 6040h = 0006h。預期進入 Ready to switch on：位元 0 與 5 為 1，位元 6 為 0。</translation>
-    </message>
-    <message>
-        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation>Switch on（轉換 3）：開啟功率級，馬達尚未通電；需要主電源。送出 6040h = 0007h。預期進入 Switched on：位元 0、1、4（電壓已啟用）與 5 為 1。</translation>
-    </message>
-    <message>
-        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation>Enable operation（轉換 4）：馬達通電，保持位置並依命令動作。送出 6040h = 000Fh。預期進入 Operation enabled：位元 0、1、2 與 5 為 1。</translation>
-    </message>
-    <message>
-        <source>booting (boot-up)</source>
-        <translation>開機中（boot-up）</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>running (operational)</source>
-        <translation>運轉中（操作狀態）</translation>
-    </message>
-    <message>
-        <source>ready (pre-operational)</source>
-        <translation>就緒（預操作狀態）</translation>
-    </message>
-    <message>
-        <source>seen</source>
-        <translation>已偵測</translation>
-    </message>
-    <message>
-        <source>CiA 402 enable step-through…</source>
-        <translation>CiA 402 逐步致能…</translation>
-    </message>
-</context>
-<context>
-    <name>RawSignalDialog</name>
+    <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
         <translation>加入原始訊號</translation>
@@ -3217,7 +4131,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptPreview</name>
+    <name>coscope::gui::ScriptPreview</name>
     <message>
         <source>What it does</source>
         <translation>用途</translation>
@@ -3280,7 +4194,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptRunPanel</name>
+    <name>coscope::gui::ScriptRunPanel</name>
     <message>
         <source>Run</source>
         <translation>執行</translation>
@@ -3325,7 +4239,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>SignalPicker</name>
+    <name>coscope::gui::SignalPicker</name>
     <message>
         <source>Search signals (name, object, node)</source>
         <translation>搜尋訊號（名稱、物件、節點）</translation>
@@ -3376,7 +4290,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceDock</name>
+    <name>coscope::gui::TraceDock</name>
     <message>
         <source>Trace</source>
         <translation>追蹤</translation>
@@ -3491,14 +4405,71 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardFramesPane</name>
+    <name>coscope::gui::TraceModel</name>
+    <message>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation type="unfinished">時間</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation type="unfinished">時間（秒）</translation>
+    </message>
+    <message>
+        <source>Δt (s)</source>
+        <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation type="unfinished">總線</translation>
+    </message>
+    <message>
+        <source>COB-ID</source>
+        <translation type="unfinished">COB-ID</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation type="unfinished">節點</translation>
+    </message>
+    <message>
+        <source>Service</source>
+        <translation type="unfinished">服務</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Len</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation type="unfinished">資料</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
         <translation>此精靈在總線上的封包</translation>
     </message>
 </context>
 <context>
-    <name>WizardGuard</name>
+    <name>coscope::gui::WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
         <translation>未連線到任何總線，因此無法傳送。請先連線到總線；您仍可先準備步驟並另存為腳本。</translation>
@@ -3517,7 +4488,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>Workspace</name>
+    <name>coscope::gui::Workspace</name>
     <message>
         <source>cannot create the folder %1</source>
         <translation>無法建立資料夾 %1</translation>
