@@ -5,395 +5,359 @@
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>初始化中（Not ready to switch on）</translation>
     </message>
     <message>
         <source>Switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>禁止启动（Switch on disabled）</translation>
     </message>
     <message>
         <source>Ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>准备启动（Ready to switch on）</translation>
     </message>
     <message>
         <source>Switched on</source>
-        <translation type="unfinished"></translation>
+        <translation>已启动（Switched on）</translation>
     </message>
     <message>
         <source>Operation enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>运行使能（Operation enabled）</translation>
     </message>
     <message>
         <source>Quick stop active</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止中（Quick stop active）</translation>
     </message>
     <message>
         <source>Fault reaction active</source>
-        <translation type="unfinished"></translation>
+        <translation>故障反应中（Fault reaction active）</translation>
     </message>
     <message>
         <source>Fault</source>
-        <translation type="unfinished"></translation>
+        <translation>故障（Fault）</translation>
     </message>
     <message>
         <source>Unknown state</source>
-        <translation type="unfinished"></translation>
+        <translation>未知状态</translation>
     </message>
     <message>
         <source>ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>准备启动</translation>
     </message>
     <message>
         <source>switched on</source>
-        <translation type="unfinished"></translation>
+        <translation>已启动</translation>
     </message>
     <message>
         <source>operation enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>运行使能</translation>
     </message>
     <message>
         <source>fault</source>
-        <translation type="unfinished"></translation>
+        <translation>故障</translation>
     </message>
     <message>
         <source>voltage enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>电压已接通</translation>
     </message>
     <message>
         <source>quick stop</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止</translation>
     </message>
     <message>
         <source>switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>禁止启动</translation>
     </message>
     <message>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 8)</source>
-        <translation type="unfinished"></translation>
+        <translation>厂商自订（位 8）</translation>
     </message>
     <message>
         <source>remote</source>
-        <translation type="unfinished"></translation>
+        <translation>远程控制</translation>
     </message>
     <message>
         <source>target reached</source>
-        <translation type="unfinished"></translation>
+        <translation>到达目标</translation>
     </message>
     <message>
         <source>internal limit active</source>
-        <translation type="unfinished"></translation>
+        <translation>内部限制作用中</translation>
     </message>
     <message>
         <source>operation mode specific (bit 12)</source>
-        <translation type="unfinished"></translation>
+        <translation>按运行模式而定（位 12）</translation>
     </message>
     <message>
         <source>operation mode specific (bit 13)</source>
-        <translation type="unfinished"></translation>
+        <translation>按运行模式而定（位 13）</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 14)</source>
-        <translation type="unfinished"></translation>
+        <translation>厂商自订（位 14）</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 15)</source>
-        <translation type="unfinished"></translation>
+        <translation>厂商自订（位 15）</translation>
     </message>
     <message>
         <source>Shutdown</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭（Shutdown）</translation>
     </message>
     <message>
         <source>Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>启动（Switch on）</translation>
     </message>
     <message>
         <source>Switch on + enable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>启动 + 运行使能（Switch on + Enable operation）</translation>
     </message>
     <message>
         <source>Disable voltage</source>
-        <translation type="unfinished"></translation>
+        <translation>切断电压（Disable voltage）</translation>
     </message>
     <message>
         <source>Quick stop</source>
-        <translation type="unfinished">快速停止</translation>
+        <translation>快速停止（Quick stop）</translation>
     </message>
     <message>
         <source>Disable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>停止运行（Disable operation）</translation>
     </message>
     <message>
         <source>Enable operation</source>
-        <translation type="unfinished">运行使能</translation>
+        <translation>运行使能（Enable operation）</translation>
     </message>
     <message>
         <source>Fault reset</source>
-        <translation type="unfinished"></translation>
+        <translation>故障复位（Fault reset）</translation>
     </message>
     <message>
         <source>Switch on / disable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>启动／停止运行（Switch on / Disable operation）</translation>
     </message>
     <message>
         <source>No command</source>
-        <translation type="unfinished"></translation>
+        <translation>无命令</translation>
     </message>
     <message>
         <source>No mode</source>
-        <translation type="unfinished"></translation>
+        <translation>无模式</translation>
     </message>
     <message>
         <source>Profile position (PP)</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓位置模式（PP）</translation>
     </message>
     <message>
         <source>Velocity (VL)</source>
-        <translation type="unfinished"></translation>
+        <translation>速度模式（VL）</translation>
     </message>
     <message>
         <source>Profile velocity (PV)</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓速度模式（PV）</translation>
     </message>
     <message>
         <source>Profile torque (PT)</source>
-        <translation type="unfinished"></translation>
+        <translation>轮廓转矩模式（PT）</translation>
     </message>
     <message>
         <source>Homing (HM)</source>
-        <translation type="unfinished"></translation>
+        <translation>原点复归（HM）</translation>
     </message>
     <message>
         <source>Interpolated position (IP)</source>
-        <translation type="unfinished"></translation>
+        <translation>插值位置模式（IP）</translation>
     </message>
     <message>
         <source>Cyclic synchronous position (CSP)</source>
-        <translation type="unfinished"></translation>
+        <translation>周期同步位置模式（CSP）</translation>
     </message>
     <message>
         <source>Cyclic synchronous velocity (CSV)</source>
-        <translation type="unfinished"></translation>
+        <translation>周期同步速度模式（CSV）</translation>
     </message>
     <message>
         <source>Cyclic synchronous torque (CST)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>vl</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>cst</source>
-        <translation type="unfinished"></translation>
+        <translation>周期同步转矩模式（CST）</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>启动</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished">停止</translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Enter pre-operational</source>
-        <translation type="unfinished"></translation>
+        <translation>进入预操作状态</translation>
     </message>
     <message>
         <source>Reset node</source>
-        <translation type="unfinished"></translation>
+        <translation>复位节点</translation>
     </message>
     <message>
         <source>Reset communication</source>
-        <translation type="unfinished"></translation>
+        <translation>重置通信</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上线</translation>
     </message>
     <message>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>停止状态</translation>
     </message>
     <message>
         <source>Operational</source>
-        <translation type="unfinished"></translation>
+        <translation>操作状态</translation>
     </message>
     <message>
         <source>Pre-operational</source>
-        <translation type="unfinished"></translation>
+        <translation>预操作状态</translation>
     </message>
     <message>
         <source>Toggle bit not alternated</source>
-        <translation type="unfinished"></translation>
+        <translation>切换位未交替</translation>
     </message>
     <message>
         <source>SDO protocol timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 协议超时</translation>
     </message>
     <message>
         <source>Client/server command specifier not valid or unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>用户端／伺服端命令指定码无效或未知</translation>
     </message>
     <message>
         <source>Invalid block size (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>块大小无效（仅块模式）</translation>
     </message>
     <message>
         <source>Invalid sequence number (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>序列号无效（仅块模式）</translation>
     </message>
     <message>
         <source>CRC error (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>CRC 错误（仅块模式）</translation>
     </message>
     <message>
         <source>Out of memory</source>
-        <translation type="unfinished"></translation>
+        <translation>内存不足</translation>
     </message>
     <message>
         <source>Unsupported access to an object</source>
-        <translation type="unfinished"></translation>
+        <translation>不支持此对象的访问方式</translation>
     </message>
     <message>
         <source>Attempt to read a write-only object</source>
-        <translation type="unfinished"></translation>
+        <translation>尝试读取只写对象</translation>
     </message>
     <message>
         <source>Attempt to write a read-only object</source>
-        <translation type="unfinished"></translation>
+        <translation>尝试写入只读对象</translation>
     </message>
     <message>
         <source>Object does not exist in the object dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>对象字典中没有此对象</translation>
     </message>
     <message>
         <source>Object cannot be mapped to the PDO</source>
-        <translation type="unfinished"></translation>
+        <translation>此对象不能映射到 PDO</translation>
     </message>
     <message>
         <source>The number and length of the objects to be mapped would exceed the PDO length</source>
-        <translation type="unfinished"></translation>
+        <translation>要映射的对象数量与长度会超过 PDO 长度</translation>
     </message>
     <message>
         <source>General parameter incompatibility reason</source>
-        <translation type="unfinished"></translation>
+        <translation>一般参数不兼容</translation>
     </message>
     <message>
         <source>General internal incompatibility in the device</source>
-        <translation type="unfinished"></translation>
+        <translation>设备内部一般不兼容</translation>
     </message>
     <message>
         <source>Access failed due to a hardware error</source>
-        <translation type="unfinished"></translation>
+        <translation>因硬件错误而访问失败</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter does not match</source>
-        <translation type="unfinished"></translation>
+        <translation>数据类型不符，服务参数长度不符</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter too high</source>
-        <translation type="unfinished"></translation>
+        <translation>数据类型不符，服务参数长度过长</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter too low</source>
-        <translation type="unfinished"></translation>
+        <translation>数据类型不符，服务参数长度过短</translation>
     </message>
     <message>
         <source>Sub-index does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引不存在</translation>
     </message>
     <message>
         <source>Invalid value for parameter (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>参数值无效（仅下载）</translation>
     </message>
     <message>
         <source>Value of parameter written too high (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>写入的参数值过高（仅下载）</translation>
     </message>
     <message>
         <source>Value of parameter written too low (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>写入的参数值过低（仅下载）</translation>
     </message>
     <message>
         <source>Maximum value is less than minimum value</source>
-        <translation type="unfinished"></translation>
+        <translation>最大值小于最小值</translation>
     </message>
     <message>
         <source>Resource not available: SDO connection</source>
-        <translation type="unfinished"></translation>
+        <translation>资源不可用：SDO 连接</translation>
     </message>
     <message>
         <source>General error</source>
-        <translation type="unfinished"></translation>
+        <translation>一般错误</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application</source>
-        <translation type="unfinished"></translation>
+        <translation>数据无法发送或保存到应用程序</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application because of local control</source>
-        <translation type="unfinished"></translation>
+        <translation>因本地控制，数据无法发送或保存到应用程序</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application because of the present device state</source>
-        <translation type="unfinished"></translation>
+        <translation>因设备当前状态，数据无法发送或保存到应用程序</translation>
     </message>
     <message>
         <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
-        <translation type="unfinished"></translation>
+        <translation>对象字典动态产生失败或没有对象字典</translation>
     </message>
     <message>
         <source>No data available</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可用的数据</translation>
     </message>
     <message>
         <source>closed</source>
-        <translation type="unfinished">已关闭</translation>
+        <translation>已关闭</translation>
     </message>
     <message>
         <source>opening</source>
-        <translation type="unfinished"></translation>
+        <translation>打开中</translation>
     </message>
     <message>
         <source>open</source>
-        <translation type="unfinished"></translation>
+        <translation>已打开</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished">错误</translation>
+        <translation>错误</translation>
     </message>
 </context>
 <context>
@@ -418,323 +382,325 @@
     <name>Ds402StateDiagram</name>
     <message>
         <source>13 any fault</source>
-        <translation type="unfinished"></translation>
+        <translation>13 任何故障</translation>
     </message>
 </context>
 <context>
     <name>Ds402VendorNotes</name>
     <message>
         <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation type="unfinished"></translation>
+        <translation>P1-01 必须为 0x0C（标准 CANopen 模式），否则驱动器不理会控制字。伺服启动（Servo ON）时不要送 NMT 复位节点：驱动器会发出 AL401。</translation>
     </message>
     <message>
         <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation type="unfinished"></translation>
+        <translation>H02-00 必须为 8（CANopen 控制），否则驱动器不理会控制字。</translation>
     </message>
     <message>
         <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
-        <translation type="unfinished"></translation>
+        <translation>DEXMART DEV 没有 CiA 402 状态机：它的两个电机经由 Multi-Drive 对象（3051h/3052h）操作。请用对象字典面板。</translation>
     </message>
 </context>
 <context>
     <name>EventLog</name>
     <message>
         <source>EMCY reset</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY 错误清除</translation>
     </message>
     <message>
         <source>SDO abort</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 中止</translation>
     </message>
     <message>
         <source>NMT state</source>
-        <translation type="unfinished">NMT 状态</translation>
+        <translation>NMT 状态</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上线</translation>
     </message>
     <message>
         <source>NMT command</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 命令</translation>
     </message>
     <message>
         <source>Heartbeat timeout</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳超时</translation>
     </message>
     <message>
         <source>Bus error</source>
-        <translation type="unfinished"></translation>
+        <translation>总线错误</translation>
     </message>
     <message>
         <source>Dropped frames</source>
-        <translation type="unfinished"></translation>
+        <translation>丢失的帧</translation>
     </message>
     <message>
         <source>Info</source>
-        <translation type="unfinished">信息</translation>
+        <translation>信息</translation>
     </message>
     <message>
         <source>all nodes</source>
-        <translation type="unfinished">所有节点</translation>
+        <translation>所有节点</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished">节点 %1</translation>
+        <translation>节点 %1</translation>
     </message>
     <message>
         <source>Heartbeat back after timeout</source>
-        <translation type="unfinished"></translation>
+        <translation>超时后心跳恢复</translation>
     </message>
     <message>
         <source>State %1</source>
-        <translation type="unfinished"></translation>
+        <translation>状态 %1</translation>
     </message>
     <message>
         <source>No heartbeat for %1 ms (period %2 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms 没有心跳（周期 %2 ms）</translation>
     </message>
 </context>
 <context>
     <name>FrameDecoder</name>
     <message>
         <source>NMT (short frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT（帧过短）</translation>
     </message>
     <message>
         <source>NMT frame must carry 2 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 帧必须有 2 字节</translation>
     </message>
     <message>
         <source>all nodes</source>
-        <translation type="unfinished">所有节点</translation>
+        <translation>所有节点</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished">节点 %1</translation>
+        <translation>节点 %1</translation>
     </message>
     <message>
         <source>NMT node control</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 节点控制</translation>
     </message>
     <message>
         <source>Command specifier</source>
-        <translation type="unfinished"></translation>
+        <translation>命令指定码</translation>
     </message>
     <message>
         <source>Node-ID</source>
-        <translation type="unfinished">节点 ID</translation>
+        <translation>节点 ID</translation>
     </message>
     <message>
         <source>0 (all)</source>
-        <translation type="unfinished"></translation>
+        <translation>0（全部）</translation>
     </message>
     <message>
         <source>Node guarding request to node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>对节点 %1 的节点保护请求</translation>
     </message>
     <message>
         <source>Node guarding request (RTR)</source>
-        <translation type="unfinished"></translation>
+        <translation>节点保护请求（RTR）</translation>
     </message>
     <message>
         <source>NMT error control (empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 错误控制（空）</translation>
     </message>
     <message>
         <source>error control frame without state byte</source>
-        <translation type="unfinished"></translation>
+        <translation>错误控制帧缺少状态字节</translation>
     </message>
     <message>
         <source>Boot-up node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 上线</translation>
     </message>
     <message>
         <source>Heartbeat node %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 心跳：%2</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上线</translation>
     </message>
     <message>
         <source>Heartbeat / guarding</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳／节点保护</translation>
     </message>
     <message>
         <source>Toggle</source>
-        <translation type="unfinished"></translation>
+        <translation>切换位</translation>
     </message>
     <message>
         <source>NMT state</source>
-        <translation type="unfinished">NMT 状态</translation>
+        <translation>NMT 状态</translation>
     </message>
     <message>
         <source>EMCY node %1: error reset</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 紧急报文：错误清除</translation>
     </message>
     <message>
         <source>EMCY node %1: %2 %3, reg %4</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 紧急报文：%2 %3，寄存器 %4</translation>
     </message>
     <message>
         <source>EMCY frame shorter than 8 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY 帧短于 8 字节</translation>
     </message>
     <message>
         <source>Emergency</source>
-        <translation type="unfinished"></translation>
+        <translation>紧急报文</translation>
     </message>
     <message>
         <source>Error code</source>
-        <translation type="unfinished"></translation>
+        <translation>错误码</translation>
     </message>
     <message>
         <source>Error register (1001h)</source>
-        <translation type="unfinished"></translation>
+        <translation>错误寄存器（1001h）</translation>
     </message>
     <message>
         <source>Bit %1</source>
-        <translation type="unfinished"></translation>
+        <translation>位 %1</translation>
     </message>
     <message>
         <source>Manufacturer-specific</source>
-        <translation type="unfinished"></translation>
+        <translation>厂商自订</translation>
     </message>
     <message>
         <source>SDO %1 node %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO %1 节点 %2 %3</translation>
     </message>
     <message>
         <source>, %1 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>，%1 字节</translation>
     </message>
     <message>
         <source>SDO request (client → server)</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 请求（用户端 → 伺服端）</translation>
     </message>
     <message>
         <source>SDO response (server → client)</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 响应（伺服端 → 用户端）</translation>
     </message>
     <message>
         <source>Command</source>
-        <translation type="unfinished"></translation>
+        <translation>命令</translation>
     </message>
     <message>
         <source>Index</source>
-        <translation type="unfinished">索引</translation>
+        <translation>索引</translation>
     </message>
     <message>
         <source>Sub-index</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引</translation>
     </message>
     <message>
         <source>Abort code</source>
-        <translation type="unfinished">中止码</translation>
+        <translation>中止码</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">数据</translation>
+        <translation>数据</translation>
     </message>
     <message>
         <source>Segment data</source>
-        <translation type="unfinished"></translation>
+        <translation>分段数据</translation>
     </message>
     <message>
         <source>Error frame, class %1</source>
-        <translation type="unfinished"></translation>
+        <translation>错误帧，类别 %1</translation>
     </message>
     <message>
         <source>Error frame</source>
-        <translation type="unfinished"></translation>
+        <translation>错误帧</translation>
     </message>
     <message>
         <source>SYNC counter %1</source>
-        <translation type="unfinished"></translation>
+        <translation>SYNC 计数 %1</translation>
     </message>
     <message>
         <source>TIME stamp</source>
-        <translation type="unfinished"></translation>
+        <translation>TIME 时间戳记</translation>
     </message>
     <message>
         <source>(empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>（空）</translation>
     </message>
     <message>
         <source>LSS command</source>
-        <translation type="unfinished"></translation>
+        <translation>LSS 命令</translation>
     </message>
     <message>
         <source>(29-bit identifier, not CANopen)</source>
-        <translation type="unfinished"></translation>
+        <translation>（29 位标识符，非 CANopen）</translation>
     </message>
     <message>
         <source>%1 node %2, %3 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 节点 %2，%3 字节</translation>
     </message>
 </context>
 <context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在打开 %1</translation>
     </message>
     <message>
         <source>%1: cannot open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无法打开</translation>
     </message>
 </context>
 <context>
     <name>LogSaveJob</name>
     <message>
         <source>Saving %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在保存 %1</translation>
     </message>
     <message>
         <source>%1: unknown log format</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未知的日志文件格式</translation>
     </message>
     <message>
         <source>%1: cannot write format &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无法写入格式“%2”</translation>
     </message>
 </context>
 <context>
     <name>OdTreeModel</name>
     <message>
         <source>sub %1</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引 %1</translation>
     </message>
     <message>
         <source>reading…</source>
-        <translation type="unfinished"></translation>
+        <translation>读取中…</translation>
     </message>
     <message>
         <source>writing…</source>
-        <translation type="unfinished"></translation>
+        <translation>写入中…</translation>
     </message>
     <message>
         <source>, PDO-mappable</source>
-        <translation type="unfinished"></translation>
+        <translation>，可映射到 PDO</translation>
     </message>
     <message>
         <source>
 Limits: %1 … %2</source>
-        <translation type="unfinished"></translation>
+        <translation>
+范围：%1 … %2</translation>
     </message>
     <message>
         <source>
 Differs from the default</source>
-        <translation type="unfinished"></translation>
+        <translation>
+与默认值不同</translation>
     </message>
     <message>
         <source>node %1 %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 %2：%3</translation>
     </message>
     <message>
         <source>node %1 %2: %3 (bytes %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>节点 %1 %2：%3（字节 %4）</translation>
     </message>
 </context>
 <context>
@@ -760,131 +726,131 @@ Differs from the default</source>
     <name>PdoVendorNotes</name>
     <message>
         <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Delta ASDA-A2：只有 P1-01（2101h）= 0x0C 时驱动器才使用标准 CANopen；请先确认。</translation>
     </message>
     <message>
         <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
-        <translation type="unfinished"></translation>
+        <translation>Delta 每次 SDO 写入都会把 P 参数（2000h–2FFFh）写进 EEPROM；由 PDO 写入的 P 参数只有在 P3-11 X = 1 时才保存（会耗损 EEPROM）。</translation>
     </message>
     <message>
         <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
-        <translation type="unfinished"></translation>
+        <translation>每个 PDO 最多 8 个对象。两个相同 COB-ID 的 PDO 在 1 ms 内出现会引发报警 AL112。</translation>
     </message>
     <message>
         <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
-        <translation type="unfinished"></translation>
+        <translation>传输类型 0–240 的 RPDO 在下一个 SYNC 生效：主站必须每个周期发送 SYNC。</translation>
     </message>
     <message>
         <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
-        <translation type="unfinished"></translation>
+        <translation>AIMOTOR：只有 H02-00（2002h:01）= 8（CANopen 控制）时 CiA 402 对象才有作用。</translation>
     </message>
     <message>
         <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
-        <translation type="unfinished"></translation>
+        <translation>AIMOTOR 的默认 PDO 为同步（类型 1）：只有收到 SYNC 时才会发送或生效。请启动 SYNC 生产者，或选择事件触发类型。</translation>
     </message>
     <message>
         <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
-        <translation type="unfinished"></translation>
+        <translation>只能映射 CiA 402 对象（6000h–6FFFh）；每个 PDO 最多 8 个对象。</translation>
     </message>
     <message>
         <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation type="unfinished"></translation>
+        <translation>DEXMART DEV：COB-ID 为只读，重新映射时无法关闭 PDO：映射会在报文使用中改变。</translation>
     </message>
     <message>
         <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>每个 PDO 最多 8 个对象。上电时的映射来自参数 09-26；此处的更改若未保存，断电后即消失。</translation>
     </message>
     <message>
         <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
-        <translation type="unfinished"></translation>
+        <translation>两个电机：M1/M2 的值位于 Multi-Drive 对象（3046h 状态，3051h 命令）。</translation>
     </message>
     <message>
         <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
-        <translation type="unfinished"></translation>
+        <translation>此节点没有已知的字典：无法以名称列出对象。请先扫描节点（节点面板）或指定字典。</translation>
     </message>
     <message>
         <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器未及时响应。请确认已上电、节点 ID 正确，并检查线材、终端电阻与波特率。</translation>
     </message>
     <message>
         <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器不允许此对象放入 PDO。请选择其他对象，或查看手册中该对象的“PDO”栏。</translation>
     </message>
     <message>
         <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
-        <translation type="unfinished"></translation>
+        <translation>此驱动器的一个 PDO 放不下这么多数据：请减少对象或改用较小的对象（最多 64 位；部分驱动器最多 8 个对象）。</translation>
     </message>
     <message>
         <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器报告一般参数不兼容：请确认 PDO 编号存在且各值彼此相符。</translation>
     </message>
     <message>
         <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
-        <translation type="unfinished"></translation>
+        <translation>此参数在这台驱动器上为只读（部分驱动器固定 COB-ID）。请保留当前的值。</translation>
     </message>
     <message>
         <source>The drive does not have this object: this PDO number may not exist on it.</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器没有此对象：它可能没有这个 PDO 编号。</translation>
     </message>
     <message>
         <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器拒绝此值：请检查允许范围（传输类型、禁止时间、事件计时器）。</translation>
     </message>
     <message>
         <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
-        <translation type="unfinished"></translation>
+        <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送该命令）</translation>
     </message>
     <message>
         <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
-        <translation type="unfinished"></translation>
+        <translation>请在驱动器手册中查找中止码 0x%1。</translation>
     </message>
     <message>
         <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
-        <translation type="unfinished"></translation>
+        <translation>读回的值与写入的不同：驱动器可能调整或忽略了某个值。请再读一次 PDO 并比较。</translation>
     </message>
     <message>
         <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>值改变后在下一个 SYNC 发送（同步非周期，类型 0）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一个 SYNC 生效（同步，类型 0）</translation>
     </message>
     <message>
         <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>每个 SYNC 都发送（同步周期，类型 1）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一个 SYNC 生效（同步，类型 1）</translation>
     </message>
     <message>
         <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>每 %1 个 SYNC 发送一次（同步周期，类型 %1）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一个 SYNC 生效（同步，类型 %1）</translation>
     </message>
     <message>
         <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
-        <translation type="unfinished"></translation>
+        <translation>在 SYNC 时采样，仅在被请求时发送（仅 RTR 同步，类型 252）</translation>
     </message>
     <message>
         <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
-        <translation type="unfinished"></translation>
+        <translation>仅在被请求时发送（仅 RTR 事件触发，类型 253）</translation>
     </message>
     <message>
         <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>值改变时及／或每个事件计时器周期发送（事件触发，类型 %1）</translation>
     </message>
     <message>
         <source>Applied as soon as it arrives (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>收到即生效（事件触发，类型 %1）</translation>
     </message>
     <message>
         <source>Reserved transmission type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>保留的传输类型 %1</translation>
     </message>
 </context>
 <context>
@@ -934,69 +900,69 @@ Differs from the default</source>
     <name>TraceFilter</name>
     <message>
         <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：“%1”不是节点 ID（0-127）</translation>
     </message>
     <message>
         <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
     </message>
     <message>
         <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
         <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
     </message>
     <message>
         <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
     </message>
     <message>
         <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
         <source>Grouping SDO transfers</source>
-        <translation type="unfinished"></translation>
+        <translation>正在归组 SDO 传输</translation>
     </message>
     <message>
         <source>Filtering</source>
-        <translation type="unfinished"></translation>
+        <translation>筛选中</translation>
     </message>
 </context>
 <context>
     <name>WizardFramesPane</name>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">时间（秒）</translation>
+        <translation>时间（秒）</translation>
     </message>
     <message>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">数据</translation>
+        <translation>数据</translation>
     </message>
     <message>
         <source>Meaning</source>
-        <translation type="unfinished"></translation>
+        <translation>意义</translation>
     </message>
 </context>
 <context>
     <name>WizardMenu</name>
     <message>
         <source>Baud rate and node-ID…</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率与节点 ID…</translation>
     </message>
     <message>
         <source>CiA 402 enable step-through…</source>
-        <translation type="unfinished">CiA 402 逐步使能…</translation>
+        <translation>CiA 402 逐步使能…</translation>
     </message>
     <message>
         <source>PDO mapping…</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO 映射…</translation>
     </message>
 </context>
 <context>
@@ -2183,7 +2149,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>SDO p99 ms</source>
-        <translation>SDO p99 ms</translation>
+        <translation>SDO 响应 p99（ms）</translation>
     </message>
     <message>
         <source>SDO aborts</source>
@@ -4408,57 +4374,57 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <name>coscope::gui::TraceModel</name>
     <message>
         <source>Click to expand or collapse the transfer&apos;s frames</source>
-        <translation type="unfinished"></translation>
+        <translation>单击以展开或折叠此传输的帧</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished">时间</translation>
+        <translation>时间</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">时间（秒）</translation>
+        <translation>时间（秒）</translation>
     </message>
     <message>
         <source>Δt (s)</source>
         <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>Δt（秒）</translation>
     </message>
     <message>
         <source>No.</source>
         <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>编号</translation>
     </message>
     <message>
         <source>Bus</source>
-        <translation type="unfinished">总线</translation>
+        <translation>总线</translation>
     </message>
     <message>
         <source>COB-ID</source>
-        <translation type="unfinished">COB-ID</translation>
+        <translation>COB-ID</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished">节点</translation>
+        <translation>节点</translation>
     </message>
     <message>
         <source>Service</source>
-        <translation type="unfinished">服务</translation>
+        <translation>服务</translation>
     </message>
     <message>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Len</source>
-        <translation type="unfinished"></translation>
+        <translation>长度</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">数据</translation>
+        <translation>数据</translation>
     </message>
     <message>
         <source>Summary</source>
-        <translation type="unfinished"></translation>
+        <translation>摘要</translation>
     </message>
 </context>
 <context>

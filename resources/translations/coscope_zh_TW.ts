@@ -5,395 +5,359 @@
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>初始化中（Not ready to switch on）</translation>
     </message>
     <message>
         <source>Switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>禁止啟動（Switch on disabled）</translation>
     </message>
     <message>
         <source>Ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>準備啟動（Ready to switch on）</translation>
     </message>
     <message>
         <source>Switched on</source>
-        <translation type="unfinished"></translation>
+        <translation>已啟動（Switched on）</translation>
     </message>
     <message>
         <source>Operation enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>運轉致能（Operation enabled）</translation>
     </message>
     <message>
         <source>Quick stop active</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止中（Quick stop active）</translation>
     </message>
     <message>
         <source>Fault reaction active</source>
-        <translation type="unfinished"></translation>
+        <translation>故障反應中（Fault reaction active）</translation>
     </message>
     <message>
         <source>Fault</source>
-        <translation type="unfinished"></translation>
+        <translation>故障（Fault）</translation>
     </message>
     <message>
         <source>Unknown state</source>
-        <translation type="unfinished"></translation>
+        <translation>未知狀態</translation>
     </message>
     <message>
         <source>ready to switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>準備啟動</translation>
     </message>
     <message>
         <source>switched on</source>
-        <translation type="unfinished"></translation>
+        <translation>已啟動</translation>
     </message>
     <message>
         <source>operation enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>運轉致能</translation>
     </message>
     <message>
         <source>fault</source>
-        <translation type="unfinished"></translation>
+        <translation>故障</translation>
     </message>
     <message>
         <source>voltage enabled</source>
-        <translation type="unfinished"></translation>
+        <translation>電壓已接通</translation>
     </message>
     <message>
         <source>quick stop</source>
-        <translation type="unfinished"></translation>
+        <translation>快速停止</translation>
     </message>
     <message>
         <source>switch on disabled</source>
-        <translation type="unfinished"></translation>
+        <translation>禁止啟動</translation>
     </message>
     <message>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>警告</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 8)</source>
-        <translation type="unfinished"></translation>
+        <translation>廠商自訂（位元 8）</translation>
     </message>
     <message>
         <source>remote</source>
-        <translation type="unfinished"></translation>
+        <translation>遠端控制</translation>
     </message>
     <message>
         <source>target reached</source>
-        <translation type="unfinished"></translation>
+        <translation>到達目標</translation>
     </message>
     <message>
         <source>internal limit active</source>
-        <translation type="unfinished"></translation>
+        <translation>內部限制作用中</translation>
     </message>
     <message>
         <source>operation mode specific (bit 12)</source>
-        <translation type="unfinished"></translation>
+        <translation>依操作模式而定（位元 12）</translation>
     </message>
     <message>
         <source>operation mode specific (bit 13)</source>
-        <translation type="unfinished"></translation>
+        <translation>依操作模式而定（位元 13）</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 14)</source>
-        <translation type="unfinished"></translation>
+        <translation>廠商自訂（位元 14）</translation>
     </message>
     <message>
         <source>manufacturer specific (bit 15)</source>
-        <translation type="unfinished"></translation>
+        <translation>廠商自訂（位元 15）</translation>
     </message>
     <message>
         <source>Shutdown</source>
-        <translation type="unfinished"></translation>
+        <translation>關閉（Shutdown）</translation>
     </message>
     <message>
         <source>Switch on</source>
-        <translation type="unfinished"></translation>
+        <translation>啟動（Switch on）</translation>
     </message>
     <message>
         <source>Switch on + enable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>啟動 + 運轉致能（Switch on + Enable operation）</translation>
     </message>
     <message>
         <source>Disable voltage</source>
-        <translation type="unfinished"></translation>
+        <translation>切斷電壓（Disable voltage）</translation>
     </message>
     <message>
         <source>Quick stop</source>
-        <translation type="unfinished">快速停止</translation>
+        <translation>快速停止（Quick stop）</translation>
     </message>
     <message>
         <source>Disable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>停止運轉（Disable operation）</translation>
     </message>
     <message>
         <source>Enable operation</source>
-        <translation type="unfinished">運轉致能</translation>
+        <translation>運轉致能（Enable operation）</translation>
     </message>
     <message>
         <source>Fault reset</source>
-        <translation type="unfinished"></translation>
+        <translation>故障重置（Fault reset）</translation>
     </message>
     <message>
         <source>Switch on / disable operation</source>
-        <translation type="unfinished"></translation>
+        <translation>啟動／停止運轉（Switch on / Disable operation）</translation>
     </message>
     <message>
         <source>No command</source>
-        <translation type="unfinished"></translation>
+        <translation>無命令</translation>
     </message>
     <message>
         <source>No mode</source>
-        <translation type="unfinished"></translation>
+        <translation>無模式</translation>
     </message>
     <message>
         <source>Profile position (PP)</source>
-        <translation type="unfinished"></translation>
+        <translation>輪廓位置模式（PP）</translation>
     </message>
     <message>
         <source>Velocity (VL)</source>
-        <translation type="unfinished"></translation>
+        <translation>速度模式（VL）</translation>
     </message>
     <message>
         <source>Profile velocity (PV)</source>
-        <translation type="unfinished"></translation>
+        <translation>輪廓速度模式（PV）</translation>
     </message>
     <message>
         <source>Profile torque (PT)</source>
-        <translation type="unfinished"></translation>
+        <translation>輪廓扭矩模式（PT）</translation>
     </message>
     <message>
         <source>Homing (HM)</source>
-        <translation type="unfinished"></translation>
+        <translation>原點復歸（HM）</translation>
     </message>
     <message>
         <source>Interpolated position (IP)</source>
-        <translation type="unfinished"></translation>
+        <translation>插值位置模式（IP）</translation>
     </message>
     <message>
         <source>Cyclic synchronous position (CSP)</source>
-        <translation type="unfinished"></translation>
+        <translation>週期同步位置模式（CSP）</translation>
     </message>
     <message>
         <source>Cyclic synchronous velocity (CSV)</source>
-        <translation type="unfinished"></translation>
+        <translation>週期同步速度模式（CSV）</translation>
     </message>
     <message>
         <source>Cyclic synchronous torque (CST)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>vl</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>csv</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>cst</source>
-        <translation type="unfinished"></translation>
+        <translation>週期同步扭矩模式（CST）</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>啟動</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished">停止</translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>Enter pre-operational</source>
-        <translation type="unfinished"></translation>
+        <translation>進入預操作狀態</translation>
     </message>
     <message>
         <source>Reset node</source>
-        <translation type="unfinished"></translation>
+        <translation>重置節點</translation>
     </message>
     <message>
         <source>Reset communication</source>
-        <translation type="unfinished"></translation>
+        <translation>重置通訊</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上線</translation>
     </message>
     <message>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>停止狀態</translation>
     </message>
     <message>
         <source>Operational</source>
-        <translation type="unfinished"></translation>
+        <translation>操作狀態</translation>
     </message>
     <message>
         <source>Pre-operational</source>
-        <translation type="unfinished"></translation>
+        <translation>預操作狀態</translation>
     </message>
     <message>
         <source>Toggle bit not alternated</source>
-        <translation type="unfinished"></translation>
+        <translation>切換位元未交替</translation>
     </message>
     <message>
         <source>SDO protocol timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 協定逾時</translation>
     </message>
     <message>
         <source>Client/server command specifier not valid or unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>用戶端／伺服端命令指定碼無效或未知</translation>
     </message>
     <message>
         <source>Invalid block size (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>區塊大小無效（僅區塊模式）</translation>
     </message>
     <message>
         <source>Invalid sequence number (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>序號無效（僅區塊模式）</translation>
     </message>
     <message>
         <source>CRC error (block mode only)</source>
-        <translation type="unfinished"></translation>
+        <translation>CRC 錯誤（僅區塊模式）</translation>
     </message>
     <message>
         <source>Out of memory</source>
-        <translation type="unfinished"></translation>
+        <translation>記憶體不足</translation>
     </message>
     <message>
         <source>Unsupported access to an object</source>
-        <translation type="unfinished"></translation>
+        <translation>不支援此物件的存取方式</translation>
     </message>
     <message>
         <source>Attempt to read a write-only object</source>
-        <translation type="unfinished"></translation>
+        <translation>嘗試讀取唯寫物件</translation>
     </message>
     <message>
         <source>Attempt to write a read-only object</source>
-        <translation type="unfinished"></translation>
+        <translation>嘗試寫入唯讀物件</translation>
     </message>
     <message>
         <source>Object does not exist in the object dictionary</source>
-        <translation type="unfinished"></translation>
+        <translation>物件字典中沒有此物件</translation>
     </message>
     <message>
         <source>Object cannot be mapped to the PDO</source>
-        <translation type="unfinished"></translation>
+        <translation>此物件不能映射到 PDO</translation>
     </message>
     <message>
         <source>The number and length of the objects to be mapped would exceed the PDO length</source>
-        <translation type="unfinished"></translation>
+        <translation>要映射的物件數量與長度會超過 PDO 長度</translation>
     </message>
     <message>
         <source>General parameter incompatibility reason</source>
-        <translation type="unfinished"></translation>
+        <translation>一般參數不相容</translation>
     </message>
     <message>
         <source>General internal incompatibility in the device</source>
-        <translation type="unfinished"></translation>
+        <translation>裝置內部一般不相容</translation>
     </message>
     <message>
         <source>Access failed due to a hardware error</source>
-        <translation type="unfinished"></translation>
+        <translation>因硬體錯誤而存取失敗</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter does not match</source>
-        <translation type="unfinished"></translation>
+        <translation>資料類型不符，服務參數長度不符</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter too high</source>
-        <translation type="unfinished"></translation>
+        <translation>資料類型不符，服務參數長度過長</translation>
     </message>
     <message>
         <source>Data type does not match, length of service parameter too low</source>
-        <translation type="unfinished"></translation>
+        <translation>資料類型不符，服務參數長度過短</translation>
     </message>
     <message>
         <source>Sub-index does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引不存在</translation>
     </message>
     <message>
         <source>Invalid value for parameter (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>參數值無效（僅下載）</translation>
     </message>
     <message>
         <source>Value of parameter written too high (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入的參數值過高（僅下載）</translation>
     </message>
     <message>
         <source>Value of parameter written too low (download only)</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入的參數值過低（僅下載）</translation>
     </message>
     <message>
         <source>Maximum value is less than minimum value</source>
-        <translation type="unfinished"></translation>
+        <translation>最大值小於最小值</translation>
     </message>
     <message>
         <source>Resource not available: SDO connection</source>
-        <translation type="unfinished"></translation>
+        <translation>資源不可用：SDO 連線</translation>
     </message>
     <message>
         <source>General error</source>
-        <translation type="unfinished"></translation>
+        <translation>一般錯誤</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application</source>
-        <translation type="unfinished"></translation>
+        <translation>資料無法傳送或儲存到應用程式</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application because of local control</source>
-        <translation type="unfinished"></translation>
+        <translation>因本地控制，資料無法傳送或儲存到應用程式</translation>
     </message>
     <message>
         <source>Data cannot be transferred or stored to the application because of the present device state</source>
-        <translation type="unfinished"></translation>
+        <translation>因裝置目前狀態，資料無法傳送或儲存到應用程式</translation>
     </message>
     <message>
         <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
-        <translation type="unfinished"></translation>
+        <translation>物件字典動態產生失敗或沒有物件字典</translation>
     </message>
     <message>
         <source>No data available</source>
-        <translation type="unfinished"></translation>
+        <translation>沒有可用的資料</translation>
     </message>
     <message>
         <source>closed</source>
-        <translation type="unfinished">已關閉</translation>
+        <translation>已關閉</translation>
     </message>
     <message>
         <source>opening</source>
-        <translation type="unfinished"></translation>
+        <translation>開啟中</translation>
     </message>
     <message>
         <source>open</source>
-        <translation type="unfinished"></translation>
+        <translation>已開啟</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished">錯誤</translation>
+        <translation>錯誤</translation>
     </message>
 </context>
 <context>
@@ -418,323 +382,325 @@
     <name>Ds402StateDiagram</name>
     <message>
         <source>13 any fault</source>
-        <translation type="unfinished"></translation>
+        <translation>13 任何故障</translation>
     </message>
 </context>
 <context>
     <name>Ds402VendorNotes</name>
     <message>
         <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation type="unfinished"></translation>
+        <translation>P1-01 必須為 0x0C（標準 CANopen 模式），否則驅動器不理會控制字元。伺服啟動（Servo ON）時不要送 NMT 重置節點：驅動器會發出 AL401。</translation>
     </message>
     <message>
         <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation type="unfinished"></translation>
+        <translation>H02-00 必須為 8（CANopen 控制），否則驅動器不理會控制字元。</translation>
     </message>
     <message>
         <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
-        <translation type="unfinished"></translation>
+        <translation>DEXMART DEV 沒有 CiA 402 狀態機：它的兩個馬達經由 Multi-Drive 物件（3051h/3052h）操作。請用物件字典面板。</translation>
     </message>
 </context>
 <context>
     <name>EventLog</name>
     <message>
         <source>EMCY reset</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY 錯誤清除</translation>
     </message>
     <message>
         <source>SDO abort</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 中止</translation>
     </message>
     <message>
         <source>NMT state</source>
-        <translation type="unfinished">NMT 狀態</translation>
+        <translation>NMT 狀態</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上線</translation>
     </message>
     <message>
         <source>NMT command</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 命令</translation>
     </message>
     <message>
         <source>Heartbeat timeout</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳逾時</translation>
     </message>
     <message>
         <source>Bus error</source>
-        <translation type="unfinished"></translation>
+        <translation>總線錯誤</translation>
     </message>
     <message>
         <source>Dropped frames</source>
-        <translation type="unfinished"></translation>
+        <translation>遺失的封包</translation>
     </message>
     <message>
         <source>Info</source>
-        <translation type="unfinished">資訊</translation>
+        <translation>資訊</translation>
     </message>
     <message>
         <source>all nodes</source>
-        <translation type="unfinished">所有節點</translation>
+        <translation>所有節點</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished">節點 %1</translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>Heartbeat back after timeout</source>
-        <translation type="unfinished"></translation>
+        <translation>逾時後心跳恢復</translation>
     </message>
     <message>
         <source>State %1</source>
-        <translation type="unfinished"></translation>
+        <translation>狀態 %1</translation>
     </message>
     <message>
         <source>No heartbeat for %1 ms (period %2 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms 沒有心跳（週期 %2 ms）</translation>
     </message>
 </context>
 <context>
     <name>FrameDecoder</name>
     <message>
         <source>NMT (short frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT（封包過短）</translation>
     </message>
     <message>
         <source>NMT frame must carry 2 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 封包必須有 2 位元組</translation>
     </message>
     <message>
         <source>all nodes</source>
-        <translation type="unfinished">所有節點</translation>
+        <translation>所有節點</translation>
     </message>
     <message>
         <source>node %1</source>
-        <translation type="unfinished">節點 %1</translation>
+        <translation>節點 %1</translation>
     </message>
     <message>
         <source>NMT node control</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 節點控制</translation>
     </message>
     <message>
         <source>Command specifier</source>
-        <translation type="unfinished"></translation>
+        <translation>命令指定碼</translation>
     </message>
     <message>
         <source>Node-ID</source>
-        <translation type="unfinished">節點 ID</translation>
+        <translation>節點 ID</translation>
     </message>
     <message>
         <source>0 (all)</source>
-        <translation type="unfinished"></translation>
+        <translation>0（全部）</translation>
     </message>
     <message>
         <source>Node guarding request to node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>對節點 %1 的節點保護請求</translation>
     </message>
     <message>
         <source>Node guarding request (RTR)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點保護請求（RTR）</translation>
     </message>
     <message>
         <source>NMT error control (empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>NMT 錯誤控制（空）</translation>
     </message>
     <message>
         <source>error control frame without state byte</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤控制封包缺少狀態位元組</translation>
     </message>
     <message>
         <source>Boot-up node %1</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 上線</translation>
     </message>
     <message>
         <source>Heartbeat node %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 心跳：%2</translation>
     </message>
     <message>
         <source>Boot-up</source>
-        <translation type="unfinished"></translation>
+        <translation>上線</translation>
     </message>
     <message>
         <source>Heartbeat / guarding</source>
-        <translation type="unfinished"></translation>
+        <translation>心跳／節點保護</translation>
     </message>
     <message>
         <source>Toggle</source>
-        <translation type="unfinished"></translation>
+        <translation>切換位元</translation>
     </message>
     <message>
         <source>NMT state</source>
-        <translation type="unfinished">NMT 狀態</translation>
+        <translation>NMT 狀態</translation>
     </message>
     <message>
         <source>EMCY node %1: error reset</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 緊急報文：錯誤清除</translation>
     </message>
     <message>
         <source>EMCY node %1: %2 %3, reg %4</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 緊急報文：%2 %3，暫存器 %4</translation>
     </message>
     <message>
         <source>EMCY frame shorter than 8 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>EMCY 封包短於 8 位元組</translation>
     </message>
     <message>
         <source>Emergency</source>
-        <translation type="unfinished"></translation>
+        <translation>緊急報文</translation>
     </message>
     <message>
         <source>Error code</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤碼</translation>
     </message>
     <message>
         <source>Error register (1001h)</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤暫存器（1001h）</translation>
     </message>
     <message>
         <source>Bit %1</source>
-        <translation type="unfinished"></translation>
+        <translation>位元 %1</translation>
     </message>
     <message>
         <source>Manufacturer-specific</source>
-        <translation type="unfinished"></translation>
+        <translation>廠商自訂</translation>
     </message>
     <message>
         <source>SDO %1 node %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO %1 節點 %2 %3</translation>
     </message>
     <message>
         <source>, %1 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>，%1 位元組</translation>
     </message>
     <message>
         <source>SDO request (client → server)</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 請求（用戶端 → 伺服端）</translation>
     </message>
     <message>
         <source>SDO response (server → client)</source>
-        <translation type="unfinished"></translation>
+        <translation>SDO 回應（伺服端 → 用戶端）</translation>
     </message>
     <message>
         <source>Command</source>
-        <translation type="unfinished"></translation>
+        <translation>命令</translation>
     </message>
     <message>
         <source>Index</source>
-        <translation type="unfinished">索引</translation>
+        <translation>索引</translation>
     </message>
     <message>
         <source>Sub-index</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引</translation>
     </message>
     <message>
         <source>Abort code</source>
-        <translation type="unfinished">中止碼</translation>
+        <translation>中止碼</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">資料</translation>
+        <translation>資料</translation>
     </message>
     <message>
         <source>Segment data</source>
-        <translation type="unfinished"></translation>
+        <translation>分段資料</translation>
     </message>
     <message>
         <source>Error frame, class %1</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤封包，類別 %1</translation>
     </message>
     <message>
         <source>Error frame</source>
-        <translation type="unfinished"></translation>
+        <translation>錯誤封包</translation>
     </message>
     <message>
         <source>SYNC counter %1</source>
-        <translation type="unfinished"></translation>
+        <translation>SYNC 計數 %1</translation>
     </message>
     <message>
         <source>TIME stamp</source>
-        <translation type="unfinished"></translation>
+        <translation>TIME 時間戳記</translation>
     </message>
     <message>
         <source>(empty)</source>
-        <translation type="unfinished"></translation>
+        <translation>（空）</translation>
     </message>
     <message>
         <source>LSS command</source>
-        <translation type="unfinished"></translation>
+        <translation>LSS 命令</translation>
     </message>
     <message>
         <source>(29-bit identifier, not CANopen)</source>
-        <translation type="unfinished"></translation>
+        <translation>（29 位元識別碼，非 CANopen）</translation>
     </message>
     <message>
         <source>%1 node %2, %3 bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 節點 %2，%3 位元組</translation>
     </message>
 </context>
 <context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在開啟 %1</translation>
     </message>
     <message>
         <source>%1: cannot open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：無法開啟</translation>
     </message>
 </context>
 <context>
     <name>LogSaveJob</name>
     <message>
         <source>Saving %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在儲存 %1</translation>
     </message>
     <message>
         <source>%1: unknown log format</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未知的記錄檔格式</translation>
     </message>
     <message>
         <source>%1: cannot write format &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：無法寫入格式「%2」</translation>
     </message>
 </context>
 <context>
     <name>OdTreeModel</name>
     <message>
         <source>sub %1</source>
-        <translation type="unfinished"></translation>
+        <translation>子索引 %1</translation>
     </message>
     <message>
         <source>reading…</source>
-        <translation type="unfinished"></translation>
+        <translation>讀取中…</translation>
     </message>
     <message>
         <source>writing…</source>
-        <translation type="unfinished"></translation>
+        <translation>寫入中…</translation>
     </message>
     <message>
         <source>, PDO-mappable</source>
-        <translation type="unfinished"></translation>
+        <translation>，可映射到 PDO</translation>
     </message>
     <message>
         <source>
 Limits: %1 … %2</source>
-        <translation type="unfinished"></translation>
+        <translation>
+範圍：%1 … %2</translation>
     </message>
     <message>
         <source>
 Differs from the default</source>
-        <translation type="unfinished"></translation>
+        <translation>
+與預設值不同</translation>
     </message>
     <message>
         <source>node %1 %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 %2：%3</translation>
     </message>
     <message>
         <source>node %1 %2: %3 (bytes %4)</source>
-        <translation type="unfinished"></translation>
+        <translation>節點 %1 %2：%3（位元組 %4）</translation>
     </message>
 </context>
 <context>
@@ -760,131 +726,131 @@ Differs from the default</source>
     <name>PdoVendorNotes</name>
     <message>
         <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Delta ASDA-A2：只有 P1-01（2101h）= 0x0C 時驅動器才使用標準 CANopen；請先確認。</translation>
     </message>
     <message>
         <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
-        <translation type="unfinished"></translation>
+        <translation>Delta 每次 SDO 寫入都會把 P 參數（2000h–2FFFh）寫進 EEPROM；由 PDO 寫入的 P 參數只有在 P3-11 X = 1 時才儲存（會耗損 EEPROM）。</translation>
     </message>
     <message>
         <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
-        <translation type="unfinished"></translation>
+        <translation>每個 PDO 最多 8 個物件。兩個相同 COB-ID 的 PDO 在 1 ms 內出現會引發異警 AL112。</translation>
     </message>
     <message>
         <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
-        <translation type="unfinished"></translation>
+        <translation>傳輸類型 0–240 的 RPDO 在下一個 SYNC 生效：主站必須每個週期送出 SYNC。</translation>
     </message>
     <message>
         <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
-        <translation type="unfinished"></translation>
+        <translation>AIMOTOR：只有 H02-00（2002h:01）= 8（CANopen 控制）時 CiA 402 物件才有作用。</translation>
     </message>
     <message>
         <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
-        <translation type="unfinished"></translation>
+        <translation>AIMOTOR 的預設 PDO 為同步（類型 1）：只有收到 SYNC 時才會送出或生效。請啟動 SYNC 生產者，或選擇事件觸發類型。</translation>
     </message>
     <message>
         <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
-        <translation type="unfinished"></translation>
+        <translation>只能映射 CiA 402 物件（6000h–6FFFh）；每個 PDO 最多 8 個物件。</translation>
     </message>
     <message>
         <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation type="unfinished"></translation>
+        <translation>DEXMART DEV：COB-ID 為唯讀，重新映射時無法關閉 PDO：映射會在報文使用中改變。</translation>
     </message>
     <message>
         <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>每個 PDO 最多 8 個物件。上電時的映射來自參數 09-26；此處的變更若未儲存，斷電後即消失。</translation>
     </message>
     <message>
         <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
-        <translation type="unfinished"></translation>
+        <translation>兩個馬達：M1/M2 的值位於 Multi-Drive 物件（3046h 狀態，3051h 命令）。</translation>
     </message>
     <message>
         <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
-        <translation type="unfinished"></translation>
+        <translation>此節點沒有已知的字典：無法以名稱列出物件。請先掃描節點（節點面板）或指定字典。</translation>
     </message>
     <message>
         <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器未及時回應。請確認已上電、節點 ID 正確，並檢查線材、終端電阻與鮑率。</translation>
     </message>
     <message>
         <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器不允許此物件放入 PDO。請選擇其他物件，或查看手冊中該物件的「PDO」欄。</translation>
     </message>
     <message>
         <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
-        <translation type="unfinished"></translation>
+        <translation>此驅動器的一個 PDO 放不下這麼多資料：請減少物件或改用較小的物件（最多 64 位元；部分驅動器最多 8 個物件）。</translation>
     </message>
     <message>
         <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器回報一般參數不相容：請確認 PDO 編號存在且各值彼此相符。</translation>
     </message>
     <message>
         <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
-        <translation type="unfinished"></translation>
+        <translation>此參數在這台驅動器上為唯讀（部分驅動器固定 COB-ID）。請保留目前的值。</translation>
     </message>
     <message>
         <source>The drive does not have this object: this PDO number may not exist on it.</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器沒有此物件：它可能沒有這個 PDO 編號。</translation>
     </message>
     <message>
         <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器拒絕此值：請檢查允許範圍（傳輸類型、禁止時間、事件計時器）。</translation>
     </message>
     <message>
         <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
-        <translation type="unfinished"></translation>
+        <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出該命令）</translation>
     </message>
     <message>
         <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
-        <translation type="unfinished"></translation>
+        <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
     </message>
     <message>
         <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
-        <translation type="unfinished"></translation>
+        <translation>讀回的值與寫入的不同：驅動器可能調整或忽略了某個值。請再讀一次 PDO 並比較。</translation>
     </message>
     <message>
         <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>值改變後在下一個 SYNC 送出（同步非週期，類型 0）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一個 SYNC 生效（同步，類型 0）</translation>
     </message>
     <message>
         <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>每個 SYNC 都送出（同步週期，類型 1）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一個 SYNC 生效（同步，類型 1）</translation>
     </message>
     <message>
         <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>每 %1 個 SYNC 送出一次（同步週期，類型 %1）</translation>
     </message>
     <message>
         <source>Applied at the next SYNC (synchronous, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>在下一個 SYNC 生效（同步，類型 %1）</translation>
     </message>
     <message>
         <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
-        <translation type="unfinished"></translation>
+        <translation>在 SYNC 時取樣，僅在被請求時送出（僅 RTR 同步，類型 252）</translation>
     </message>
     <message>
         <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
-        <translation type="unfinished"></translation>
+        <translation>僅在被請求時送出（僅 RTR 事件觸發，類型 253）</translation>
     </message>
     <message>
         <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>值改變時及／或每個事件計時器週期送出（事件觸發，類型 %1）</translation>
     </message>
     <message>
         <source>Applied as soon as it arrives (event-driven, type %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>收到即生效（事件觸發，類型 %1）</translation>
     </message>
     <message>
         <source>Reserved transmission type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>保留的傳輸類型 %1</translation>
     </message>
 </context>
 <context>
@@ -934,69 +900,69 @@ Differs from the default</source>
     <name>TraceFilter</name>
     <message>
         <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：「%1」不是節點 ID（0-127）</translation>
     </message>
     <message>
         <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
     </message>
     <message>
         <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
         <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
     </message>
     <message>
         <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
     </message>
     <message>
         <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
         <source>Grouping SDO transfers</source>
-        <translation type="unfinished"></translation>
+        <translation>正在歸組 SDO 傳輸</translation>
     </message>
     <message>
         <source>Filtering</source>
-        <translation type="unfinished"></translation>
+        <translation>篩選中</translation>
     </message>
 </context>
 <context>
     <name>WizardFramesPane</name>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">時間（秒）</translation>
+        <translation>時間（秒）</translation>
     </message>
     <message>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">資料</translation>
+        <translation>資料</translation>
     </message>
     <message>
         <source>Meaning</source>
-        <translation type="unfinished"></translation>
+        <translation>意義</translation>
     </message>
 </context>
 <context>
     <name>WizardMenu</name>
     <message>
         <source>Baud rate and node-ID…</source>
-        <translation type="unfinished"></translation>
+        <translation>鮑率與節點 ID…</translation>
     </message>
     <message>
         <source>CiA 402 enable step-through…</source>
-        <translation type="unfinished">CiA 402 逐步致能…</translation>
+        <translation>CiA 402 逐步致能…</translation>
     </message>
     <message>
         <source>PDO mapping…</source>
-        <translation type="unfinished"></translation>
+        <translation>PDO 映射…</translation>
     </message>
 </context>
 <context>
@@ -2183,7 +2149,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>SDO p99 ms</source>
-        <translation>SDO p99 ms</translation>
+        <translation>SDO 回應 p99（ms）</translation>
     </message>
     <message>
         <source>SDO aborts</source>
@@ -4408,57 +4374,57 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <name>coscope::gui::TraceModel</name>
     <message>
         <source>Click to expand or collapse the transfer&apos;s frames</source>
-        <translation type="unfinished"></translation>
+        <translation>按一下以展開或收合此傳輸的封包</translation>
     </message>
     <message>
         <source>Time</source>
-        <translation type="unfinished">時間</translation>
+        <translation>時間</translation>
     </message>
     <message>
         <source>Time (s)</source>
-        <translation type="unfinished">時間（秒）</translation>
+        <translation>時間（秒）</translation>
     </message>
     <message>
         <source>Δt (s)</source>
         <extracomment>Trace column: time since the previous frame, in seconds</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>Δt（秒）</translation>
     </message>
     <message>
         <source>No.</source>
         <extracomment>Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>編號</translation>
     </message>
     <message>
         <source>Bus</source>
-        <translation type="unfinished">總線</translation>
+        <translation>總線</translation>
     </message>
     <message>
         <source>COB-ID</source>
-        <translation type="unfinished">COB-ID</translation>
+        <translation>COB-ID</translation>
     </message>
     <message>
         <source>Node</source>
-        <translation type="unfinished">節點</translation>
+        <translation>節點</translation>
     </message>
     <message>
         <source>Service</source>
-        <translation type="unfinished">服務</translation>
+        <translation>服務</translation>
     </message>
     <message>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <source>Len</source>
-        <translation type="unfinished"></translation>
+        <translation>長度</translation>
     </message>
     <message>
         <source>Data</source>
-        <translation type="unfinished">資料</translation>
+        <translation>資料</translation>
     </message>
     <message>
         <source>Summary</source>
-        <translation type="unfinished"></translation>
+        <translation>摘要</translation>
     </message>
 </context>
 <context>
