@@ -2,7 +2,971 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
-    <name>BusStatusBar</name>
+    <name>CoreText</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>正在初始化</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>伺服无故障</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>伺服准备好</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>等待打开使能</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>伺服已使能</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>快速停机中</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>正在故障停机</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>未知状态</translation>
+    </message>
+    <message>
+        <source>ready to switch on</source>
+        <translation>伺服准备好</translation>
+    </message>
+    <message>
+        <source>switched on</source>
+        <translation>等待打开使能</translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation>伺服已使能</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>voltage enabled</source>
+        <translation>电压已启用</translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation>快速停止</translation>
+    </message>
+    <message>
+        <source>switch on disabled</source>
+        <translation>伺服无故障</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 8)</source>
+        <translation>制造商定义（位 8）</translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation>远程</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>已到达目标</translation>
+    </message>
+    <message>
+        <source>internal limit active</source>
+        <translation>内部限制作用中</translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 12)</source>
+        <translation>按运行模式而定（位 12）</translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 13)</source>
+        <translation>按运行模式而定（位 13）</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 14)</source>
+        <translation>制造商定义（位 14）</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 15)</source>
+        <translation>制造商定义（位 15）</translation>
+    </message>
+    <message>
+        <source>Shutdown</source>
+        <translation>关闭（Shutdown）</translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation>接通主回路（Switch on）</translation>
+    </message>
+    <message>
+        <source>Switch on + enable operation</source>
+        <translation>接通主回路＋使能运行</translation>
+    </message>
+    <message>
+        <source>Disable voltage</source>
+        <translation>断开电压（Disable voltage）</translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation>快速停止</translation>
+    </message>
+    <message>
+        <source>Disable operation</source>
+        <translation>禁止运行（Disable operation）</translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation>运行使能</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation>故障复位</translation>
+    </message>
+    <message>
+        <source>Switch on / disable operation</source>
+        <translation>接通主回路／禁止运行</translation>
+    </message>
+    <message>
+        <source>No command</source>
+        <translation>无命令</translation>
+    </message>
+    <message>
+        <source>No mode</source>
+        <translation>无模式</translation>
+    </message>
+    <message>
+        <source>Profile position (PP)</source>
+        <translation>轮廓位置（PP）</translation>
+    </message>
+    <message>
+        <source>Velocity (VL)</source>
+        <translation>速度（VL）</translation>
+    </message>
+    <message>
+        <source>Profile velocity (PV)</source>
+        <translation>轮廓速度（PV）</translation>
+    </message>
+    <message>
+        <source>Profile torque (PT)</source>
+        <translation>轮廓转矩（PT）</translation>
+    </message>
+    <message>
+        <source>Homing (HM)</source>
+        <translation>原点回零（HM）</translation>
+    </message>
+    <message>
+        <source>Interpolated position (IP)</source>
+        <translation>插补位置（IP）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous position (CSP)</source>
+        <translation>同步位置（CSP）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous velocity (CSV)</source>
+        <translation>同步速度（CSV）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous torque (CST)</source>
+        <translation>同步转矩（CST）</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Enter pre-operational</source>
+        <translation>进入预操作状态</translation>
+    </message>
+    <message>
+        <source>Reset node</source>
+        <translation>复位节点</translation>
+    </message>
+    <message>
+        <source>Reset communication</source>
+        <translation>复位通信</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>启动（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Operational</source>
+        <translation>操作状态</translation>
+    </message>
+    <message>
+        <source>Pre-operational</source>
+        <translation>预操作状态</translation>
+    </message>
+    <message>
+        <source>Toggle bit not alternated</source>
+        <translation>翻转位未交替</translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation>SDO 协议超时</translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown</source>
+        <translation>客户端／服务器命令标识符无效或未知</translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only)</source>
+        <translation>块大小无效（仅限块模式）</translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only)</source>
+        <translation>序列号无效（仅限块模式）</translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation>CRC 错误（仅限块模式）</translation>
+    </message>
+    <message>
+        <source>Out of memory</source>
+        <translation>内存不足</translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object</source>
+        <translation>不支持的对象访问方式</translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object</source>
+        <translation>尝试读取只写对象</translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object</source>
+        <translation>尝试写入只读对象</translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary</source>
+        <translation>对象字典中没有此对象</translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO</source>
+        <translation>对象无法映射到 PDO</translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation>要映射的对象数量与长度会超过 PDO 长度</translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility reason</source>
+        <translation>一般性参数不兼容</translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device</source>
+        <translation>设备内部一般性不兼容</translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error</source>
+        <translation>硬件错误导致访问失败</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter does not match</source>
+        <translation>数据类型不符，服务参数长度不符</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too high</source>
+        <translation>数据类型不符，服务参数长度过长</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too low</source>
+        <translation>数据类型不符，服务参数长度过短</translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist</source>
+        <translation>子索引不存在</translation>
+    </message>
+    <message>
+        <source>Invalid value for parameter (download only)</source>
+        <translation>参数值无效（仅限下载）</translation>
+    </message>
+    <message>
+        <source>Value of parameter written too high (download only)</source>
+        <translation>写入的参数值过高（仅限下载）</translation>
+    </message>
+    <message>
+        <source>Value of parameter written too low (download only)</source>
+        <translation>写入的参数值过低（仅限下载）</translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value</source>
+        <translation>最大值小于最小值</translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection</source>
+        <translation>资源不可用：SDO 连接</translation>
+    </message>
+    <message>
+        <source>General error</source>
+        <translation>一般错误</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application</source>
+        <translation>数据无法发送或保存到应用程序</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control</source>
+        <translation>因本地控制，数据无法发送或保存到应用程序</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state</source>
+        <translation>因设备当前的状态，数据无法发送或保存到应用程序</translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation>对象字典动态产生失败，或没有对象字典</translation>
+    </message>
+    <message>
+        <source>No data available</source>
+        <translation>没有可用的数据</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>打开中</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已打开</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>错误码（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——厂商报警 %1</translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402StateDiagram</name>
+    <message>
+        <source>13 any fault</source>
+        <translation>13 任何故障</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402VendorNotes</name>
+    <message>
+        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
+        <translation>P1-01 必须为 0x0C（标准 CANopen 模式），否则驱动器会忽略控制字。伺服启动（Servo On）时请勿发送 NMT Reset Node：驱动器会发出 AL401。</translation>
+    </message>
+    <message>
+        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
+        <translation>H02-00 必须为 8（CANopen 控制），否则驱动器会忽略控制字。</translation>
+    </message>
+    <message>
+        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
+        <translation>DEXMART DEV 没有 CiA 402 状态机：它的两台电机是通过 Multi-Drive 对象（3051h/3052h）控制。请改用对象字典面板。</translation>
+    </message>
+</context>
+<context>
+    <name>EventLog</name>
+    <message>
+        <source>EMCY reset</source>
+        <translation>EMCY 复位</translation>
+    </message>
+    <message>
+        <source>SDO abort</source>
+        <translation>SDO 中止</translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation>NMT 状态</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>启动（Boot-up）</translation>
+    </message>
+    <message>
+        <source>NMT command</source>
+        <translation>NMT 命令</translation>
+    </message>
+    <message>
+        <source>Heartbeat timeout</source>
+        <translation>心跳超时</translation>
+    </message>
+    <message>
+        <source>Bus error</source>
+        <translation>总线错误</translation>
+    </message>
+    <message>
+        <source>Dropped frames</source>
+        <translation>丢失的帧</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>信息</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation>所有节点</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat back after timeout</source>
+        <translation>超时后心跳恢复</translation>
+    </message>
+    <message>
+        <source>State %1</source>
+        <translation>状态 %1</translation>
+    </message>
+    <message>
+        <source>No heartbeat for %1 ms (period %2 ms)</source>
+        <translation>%1 ms 内没有心跳（周期 %2 ms）</translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <source>NMT (short frame)</source>
+        <translation>NMT（短帧）</translation>
+    </message>
+    <message>
+        <source>NMT frame must carry 2 bytes</source>
+        <translation>NMT 帧必须有 2 个字节</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation>所有节点</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>NMT node control</source>
+        <translation>NMT 节点控制</translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation>命令标识符</translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation>节点 ID</translation>
+    </message>
+    <message>
+        <source>0 (all)</source>
+        <translation>0（全部）</translation>
+    </message>
+    <message>
+        <source>Node guarding request to node %1</source>
+        <translation>对节点 %1 的节点保护请求</translation>
+    </message>
+    <message>
+        <source>Node guarding request (RTR)</source>
+        <translation>节点保护请求（RTR）</translation>
+    </message>
+    <message>
+        <source>NMT error control (empty)</source>
+        <translation>NMT 错误控制（空）</translation>
+    </message>
+    <message>
+        <source>error control frame without state byte</source>
+        <translation>错误控制帧缺少状态字节</translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation>节点 %1 启动（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation>节点 %1 心跳：%2</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>启动（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation>心跳／节点保护</translation>
+    </message>
+    <message>
+        <source>Toggle</source>
+        <translation>翻转位</translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation>NMT 状态</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: error reset</source>
+        <translation>EMCY 节点 %1：错误复位</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, reg %4</source>
+        <translation>EMCY 节点 %1：%2 %3，寄存器 %4</translation>
+    </message>
+    <message>
+        <source>EMCY frame shorter than 8 bytes</source>
+        <translation>EMCY 帧短于 8 字节</translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation>紧急报文</translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation>错误码</translation>
+    </message>
+    <message>
+        <source>Error register (1001h)</source>
+        <translation>错误寄存器（1001h）</translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation>位 %1</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific</source>
+        <translation>制造商定义</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 节点 %2 %3</translation>
+    </message>
+    <message>
+        <source>, %1 bytes</source>
+        <translation>，%1 字节</translation>
+    </message>
+    <message>
+        <source>SDO request (client → server)</source>
+        <translation>SDO 请求（客户端 → 服务器）</translation>
+    </message>
+    <message>
+        <source>SDO response (server → client)</source>
+        <translation>SDO 响应（服务器 → 客户端）</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation>子索引</translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation>中止码</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <source>Segment data</source>
+        <translation>分段数据</translation>
+    </message>
+    <message>
+        <source>Error frame, class %1</source>
+        <translation>错误帧，类别 %1</translation>
+    </message>
+    <message>
+        <source>Error frame</source>
+        <translation>错误帧</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation>SYNC 计数器 %1</translation>
+    </message>
+    <message>
+        <source>TIME stamp</source>
+        <translation>时间戳（TIME）</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>（空）</translation>
+    </message>
+    <message>
+        <source>LSS command</source>
+        <translation>LSS 命令</translation>
+    </message>
+    <message>
+        <source>(29-bit identifier, not CANopen)</source>
+        <translation>（29 位标识符，非 CANopen）</translation>
+    </message>
+    <message>
+        <source>%1 node %2, %3 bytes</source>
+        <translation>%1 节点 %2，%3 字节</translation>
+    </message>
+</context>
+<context>
+    <name>LogLoadJob</name>
+    <message>
+        <source>Opening %1</source>
+        <translation>正在打开 %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot open</source>
+        <translation>%1：无法打开</translation>
+    </message>
+</context>
+<context>
+    <name>LogSaveJob</name>
+    <message>
+        <source>Saving %1</source>
+        <translation>正在保存 %1</translation>
+    </message>
+    <message>
+        <source>%1: unknown log format</source>
+        <translation>%1：未知的日志文件格式</translation>
+    </message>
+    <message>
+        <source>%1: cannot write format &apos;%2&apos;</source>
+        <translation>%1：无法写入格式“%2”</translation>
+    </message>
+</context>
+<context>
+    <name>OdTreeModel</name>
+    <message>
+        <source>sub %1</source>
+        <translation>子索引 %1</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>读取中…</translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation>写入中…</translation>
+    </message>
+    <message>
+        <source>, PDO-mappable</source>
+        <translation>，可映射到 PDO</translation>
+    </message>
+    <message>
+        <source>
+Limits: %1 … %2</source>
+        <translation>
+范围：%1 … %2</translation>
+    </message>
+    <message>
+        <source>
+Differs from the default</source>
+        <translation>
+与默认值不同</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3</source>
+        <translation>节点 %1 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3 (bytes %4)</source>
+        <translation>节点 %1 %2：%3（字节 %4）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoDbcExport</name>
+    <message>
+        <source>%1: cannot write the DBC file (%2)</source>
+        <translation>%1：无法写入 DBC 文件（%2）</translation>
+    </message>
+    <message>
+        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
+        <translation>PDO 配置已导出至 %1：%2 个 PDO 报文，%3 个原始信号</translation>
+    </message>
+    <message>
+        <source>Export PDO layout as DBC</source>
+        <translation>将 PDO 配置导出为 DBC</translation>
+    </message>
+    <message>
+        <source>DBC file (*.dbc)</source>
+        <translation>DBC 文件（*.dbc）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoVendorNotes</name>
+    <message>
+        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
+        <translation>台达 ASDA-A2：只有在 P1-01（2101h）= 0x0C 时，驱动器才使用标准 CANopen；请先检查此参数。</translation>
+    </message>
+    <message>
+        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
+        <translation>台达每次以 SDO 写入 P 参数（2000h–2FFFh）都会写入 EEPROM；以 PDO 写入的 P 参数只有在 P3-11 X = 1 时才会保存（会耗损 EEPROM）。</translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
+        <translation>每个 PDO 最多 8 个对象。两个 PDO 在 1 ms 内使用相同的 COB-ID 会触发报警 AL112。</translation>
+    </message>
+    <message>
+        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
+        <translation>传输类型 0–240 的 RPDO 在下一个 SYNC 生效：主站必须在每个周期发送 SYNC。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
+        <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）时，CiA 402 对象才会生效。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <translation>AIMOTOR 的默认 PDO 为同步型（类型 1）：只有收到 SYNC 时才会发送或应用。请启动 SYNC 生产者，或改选事件触发类型。</translation>
+    </message>
+    <message>
+        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
+        <translation>只能映射 CiA 402 对象（6000h–6FFFh）；每个 PDO 最多 8 个对象。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
+        <translation>DEXMART DEV：COB-ID 为只读，重新映射时无法关闭 PDO：映射会在报文使用中更改。</translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
+        <translation>每个 PDO 最多 8 个对象。上电时的映射来自参数 09-26；在此所做的更改若未保存，断电后就会丢失。</translation>
+    </message>
+    <message>
+        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
+        <translation>两台电机：M1/M2 的值位于 Multi-Drive 对象中（3046h 状态，3051h 命令）。</translation>
+    </message>
+    <message>
+        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
+        <translation>此节点没有已知的字典：无法按名称列出对象。请先扫描节点（节点面板）或指定字典。</translation>
+    </message>
+    <message>
+        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
+        <translation>驱动器未及时响应。请确认它已通电、节点 ID 正确，并检查缆线、终端电阻与波特率。</translation>
+    </message>
+    <message>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <translation>驱动器不允许将此对象放入 PDO。请改选其他对象，或查阅手册中该对象的“PDO”列。</translation>
+    </message>
+    <message>
+        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
+        <translation>此驱动器的单一 PDO 数据过多：请减少对象或改用较短的对象（最多 64 位；部分驱动器每个 PDO 最多 8 个对象）。</translation>
+    </message>
+    <message>
+        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
+        <translation>驱动器报告一般性参数不兼容：请确认此 PDO 编号存在，且各数值彼此相符。</translation>
+    </message>
+    <message>
+        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
+        <translation>此参数在此驱动器上为只读（部分驱动器的 COB-ID 固定）。请保留当前的值。</translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: this PDO number may not exist on it.</source>
+        <translation>驱动器没有此对象：它可能没有这个编号的 PDO。</translation>
+    </message>
+    <message>
+        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
+        <translation>驱动器拒绝此值：请检查允许的范围（传输类型、禁止时间、事件计时器）。</translation>
+    </message>
+    <message>
+        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
+        <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送此命令）</translation>
+    </message>
+    <message>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <translation>请在驱动器手册中查找中止码 0x%1。</translation>
+    </message>
+    <message>
+        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
+        <translation>读回的值与写入的不同：驱动器可能调整或忽略了其中一个。请重新读取 PDO 并比较。</translation>
+    </message>
+    <message>
+        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
+        <translation>值变化后在下一个 SYNC 发送（同步非周期，类型 0）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 0)</source>
+        <translation>在下一个 SYNC 应用（同步，类型 0）</translation>
+    </message>
+    <message>
+        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
+        <translation>每个 SYNC 都发送（同步周期，类型 1）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 1)</source>
+        <translation>在下一个 SYNC 应用（同步，类型 1）</translation>
+    </message>
+    <message>
+        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
+        <translation>每 %1 个 SYNC 发送一次（同步周期，类型 %1）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type %1)</source>
+        <translation>在下一个 SYNC 应用（同步，类型 %1）</translation>
+    </message>
+    <message>
+        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
+        <translation>在 SYNC 采样，仅在被请求时发送（仅 RTR 同步，类型 252）</translation>
+    </message>
+    <message>
+        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
+        <translation>仅在被请求时发送（仅 RTR 事件触发，类型 253）</translation>
+    </message>
+    <message>
+        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
+        <translation>值变化时和／或每个事件计时器周期发送（事件触发，类型 %1）</translation>
+    </message>
+    <message>
+        <source>Applied as soon as it arrives (event-driven, type %1)</source>
+        <translation>收到后立即应用（事件触发，类型 %1）</translation>
+    </message>
+    <message>
+        <source>Reserved transmission type %1</source>
+        <translation>保留的传输类型 %1</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <translation>正在以指定的字典解码 PDO</translation>
+    </message>
+    <message>
+        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
+        <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入伺服无故障（Switch on disabled）：故障位 3 为 0，位 6 为 1。</translation>
+    </message>
+    <message>
+        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
+        <translation>关闭（Shutdown，转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入伺服准备好（Ready to switch on）：位 0 与 5 为 1，位 6 为 0。</translation>
+    </message>
+    <message>
+        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
+        <translation>接通主回路（Switch on，转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入等待打开使能（Switched on）：位 0、1、4（电压已启用）与 5 为 1。</translation>
+    </message>
+    <message>
+        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
+        <translation>使能运行（Enable operation，转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入伺服已使能（Operation enabled）：位 0、1、2 与 5 为 1。</translation>
+    </message>
+    <message>
+        <source>booting (boot-up)</source>
+        <translation>启动中（boot-up）</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>running (operational)</source>
+        <translation>运行中（操作状态）</translation>
+    </message>
+    <message>
+        <source>ready (pre-operational)</source>
+        <translation>就绪（预操作状态）</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>已检测</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFilter</name>
+    <message>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <translation>筛选：“%1”不是节点 ID（0-127）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
+    </message>
+    <message>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
+    </message>
+    <message>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
+    </message>
+    <message>
+        <source>Grouping SDO transfers</source>
+        <translation>正在将 SDO 传输分组</translation>
+    </message>
+    <message>
+        <source>Filtering</source>
+        <translation>筛选中</translation>
+    </message>
+</context>
+<context>
+    <name>WizardFramesPane</name>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间（秒）</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+</context>
+<context>
+    <name>WizardMenu</name>
+    <message>
+        <source>Baud rate and node-ID…</source>
+        <translation>波特率与节点 ID…</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation>CiA 402 逐步使能…</translation>
+    </message>
+    <message>
+        <source>PDO mapping…</source>
+        <translation>PDO 映射…</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
         <translation>取消</translation>
@@ -93,7 +1057,7 @@
     </message>
 </context>
 <context>
-    <name>ConnectDialog</name>
+    <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
         <translation>连接到 CAN 总线</translation>
@@ -308,409 +1272,14 @@
     </message>
 </context>
 <context>
-    <name>ConsoleDock</name>
+    <name>coscope::gui::ConsoleDock</name>
     <message>
         <source>Console</source>
         <translation>控制台</translation>
     </message>
 </context>
 <context>
-    <name>CoreText</name>
-    <message>
-        <source>Not ready to switch on</source>
-        <translation>正在初始化</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>伺服无故障</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>伺服准备好</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>等待打开使能</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>伺服已使能</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>快速停机中</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>正在故障停机</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>故障</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>未知状态</translation>
-    </message>
-    <message>
-        <source>ready to switch on</source>
-        <translation>伺服准备好</translation>
-    </message>
-    <message>
-        <source>switched on</source>
-        <translation>等待打开使能</translation>
-    </message>
-    <message>
-        <source>operation enabled</source>
-        <translation>伺服已使能</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>故障</translation>
-    </message>
-    <message>
-        <source>voltage enabled</source>
-        <translation>电压已启用</translation>
-    </message>
-    <message>
-        <source>quick stop</source>
-        <translation>快速停止</translation>
-    </message>
-    <message>
-        <source>switch on disabled</source>
-        <translation>伺服无故障</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>警告</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 8)</source>
-        <translation>制造商定义（位 8）</translation>
-    </message>
-    <message>
-        <source>remote</source>
-        <translation>远程</translation>
-    </message>
-    <message>
-        <source>target reached</source>
-        <translation>已到达目标</translation>
-    </message>
-    <message>
-        <source>internal limit active</source>
-        <translation>内部限制作用中</translation>
-    </message>
-    <message>
-        <source>operation mode specific (bit 12)</source>
-        <translation>按运行模式而定（位 12）</translation>
-    </message>
-    <message>
-        <source>operation mode specific (bit 13)</source>
-        <translation>按运行模式而定（位 13）</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 14)</source>
-        <translation>制造商定义（位 14）</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 15)</source>
-        <translation>制造商定义（位 15）</translation>
-    </message>
-    <message>
-        <source>Shutdown</source>
-        <translation>关闭（Shutdown）</translation>
-    </message>
-    <message>
-        <source>Switch on</source>
-        <translation>接通主回路（Switch on）</translation>
-    </message>
-    <message>
-        <source>Switch on + enable operation</source>
-        <translation>接通主回路＋使能运行</translation>
-    </message>
-    <message>
-        <source>Disable voltage</source>
-        <translation>断开电压（Disable voltage）</translation>
-    </message>
-    <message>
-        <source>Quick stop</source>
-        <translation>快速停止</translation>
-    </message>
-    <message>
-        <source>Disable operation</source>
-        <translation>禁止运行（Disable operation）</translation>
-    </message>
-    <message>
-        <source>Enable operation</source>
-        <translation>运行使能</translation>
-    </message>
-    <message>
-        <source>Fault reset</source>
-        <translation>故障复位</translation>
-    </message>
-    <message>
-        <source>Switch on / disable operation</source>
-        <translation>接通主回路／禁止运行</translation>
-    </message>
-    <message>
-        <source>No command</source>
-        <translation>无命令</translation>
-    </message>
-    <message>
-        <source>No mode</source>
-        <translation>无模式</translation>
-    </message>
-    <message>
-        <source>Profile position (PP)</source>
-        <translation>轮廓位置（PP）</translation>
-    </message>
-    <message>
-        <source>Velocity (VL)</source>
-        <translation>速度（VL）</translation>
-    </message>
-    <message>
-        <source>Profile velocity (PV)</source>
-        <translation>轮廓速度（PV）</translation>
-    </message>
-    <message>
-        <source>Profile torque (PT)</source>
-        <translation>轮廓转矩（PT）</translation>
-    </message>
-    <message>
-        <source>Homing (HM)</source>
-        <translation>原点回零（HM）</translation>
-    </message>
-    <message>
-        <source>Interpolated position (IP)</source>
-        <translation>插补位置（IP）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous position (CSP)</source>
-        <translation>同步位置（CSP）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous velocity (CSV)</source>
-        <translation>同步速度（CSV）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous torque (CST)</source>
-        <translation>同步转矩（CST）</translation>
-    </message>
-    <message>
-        <source>pp</source>
-        <translation>pp</translation>
-    </message>
-    <message>
-        <source>vl</source>
-        <translation>vl</translation>
-    </message>
-    <message>
-        <source>pv</source>
-        <translation>pv</translation>
-    </message>
-    <message>
-        <source>pt</source>
-        <translation>pt</translation>
-    </message>
-    <message>
-        <source>hm</source>
-        <translation>hm</translation>
-    </message>
-    <message>
-        <source>ip</source>
-        <translation>ip</translation>
-    </message>
-    <message>
-        <source>csp</source>
-        <translation>csp</translation>
-    </message>
-    <message>
-        <source>csv</source>
-        <translation>csv</translation>
-    </message>
-    <message>
-        <source>cst</source>
-        <translation>cst</translation>
-    </message>
-    <message>
-        <source>Start</source>
-        <translation>启动</translation>
-    </message>
-    <message>
-        <source>Stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>Enter pre-operational</source>
-        <translation>进入预操作状态</translation>
-    </message>
-    <message>
-        <source>Reset node</source>
-        <translation>复位节点</translation>
-    </message>
-    <message>
-        <source>Reset communication</source>
-        <translation>复位通信</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>启动（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>Operational</source>
-        <translation>操作状态</translation>
-    </message>
-    <message>
-        <source>Pre-operational</source>
-        <translation>预操作状态</translation>
-    </message>
-    <message>
-        <source>Toggle bit not alternated</source>
-        <translation>翻转位未交替</translation>
-    </message>
-    <message>
-        <source>SDO protocol timed out</source>
-        <translation>SDO 协议超时</translation>
-    </message>
-    <message>
-        <source>Client/server command specifier not valid or unknown</source>
-        <translation>客户端／服务器命令标识符无效或未知</translation>
-    </message>
-    <message>
-        <source>Invalid block size (block mode only)</source>
-        <translation>块大小无效（仅限块模式）</translation>
-    </message>
-    <message>
-        <source>Invalid sequence number (block mode only)</source>
-        <translation>序列号无效（仅限块模式）</translation>
-    </message>
-    <message>
-        <source>CRC error (block mode only)</source>
-        <translation>CRC 错误（仅限块模式）</translation>
-    </message>
-    <message>
-        <source>Out of memory</source>
-        <translation>内存不足</translation>
-    </message>
-    <message>
-        <source>Unsupported access to an object</source>
-        <translation>不支持的对象访问方式</translation>
-    </message>
-    <message>
-        <source>Attempt to read a write-only object</source>
-        <translation>尝试读取只写对象</translation>
-    </message>
-    <message>
-        <source>Attempt to write a read-only object</source>
-        <translation>尝试写入只读对象</translation>
-    </message>
-    <message>
-        <source>Object does not exist in the object dictionary</source>
-        <translation>对象字典中没有此对象</translation>
-    </message>
-    <message>
-        <source>Object cannot be mapped to the PDO</source>
-        <translation>对象无法映射到 PDO</translation>
-    </message>
-    <message>
-        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
-        <translation>要映射的对象数量与长度会超过 PDO 长度</translation>
-    </message>
-    <message>
-        <source>General parameter incompatibility reason</source>
-        <translation>一般性参数不兼容</translation>
-    </message>
-    <message>
-        <source>General internal incompatibility in the device</source>
-        <translation>设备内部一般性不兼容</translation>
-    </message>
-    <message>
-        <source>Access failed due to a hardware error</source>
-        <translation>硬件错误导致访问失败</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter does not match</source>
-        <translation>数据类型不符，服务参数长度不符</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too high</source>
-        <translation>数据类型不符，服务参数长度过长</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too low</source>
-        <translation>数据类型不符，服务参数长度过短</translation>
-    </message>
-    <message>
-        <source>Sub-index does not exist</source>
-        <translation>子索引不存在</translation>
-    </message>
-    <message>
-        <source>Invalid value for parameter (download only)</source>
-        <translation>参数值无效（仅限下载）</translation>
-    </message>
-    <message>
-        <source>Value of parameter written too high (download only)</source>
-        <translation>写入的参数值过高（仅限下载）</translation>
-    </message>
-    <message>
-        <source>Value of parameter written too low (download only)</source>
-        <translation>写入的参数值过低（仅限下载）</translation>
-    </message>
-    <message>
-        <source>Maximum value is less than minimum value</source>
-        <translation>最大值小于最小值</translation>
-    </message>
-    <message>
-        <source>Resource not available: SDO connection</source>
-        <translation>资源不可用：SDO 连接</translation>
-    </message>
-    <message>
-        <source>General error</source>
-        <translation>一般错误</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application</source>
-        <translation>数据无法发送或保存到应用程序</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of local control</source>
-        <translation>因本地控制，数据无法发送或保存到应用程序</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of the present device state</source>
-        <translation>因设备当前的状态，数据无法发送或保存到应用程序</translation>
-    </message>
-    <message>
-        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
-        <translation>对象字典动态产生失败，或没有对象字典</translation>
-    </message>
-    <message>
-        <source>No data available</source>
-        <translation>没有可用的数据</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>已关闭</translation>
-    </message>
-    <message>
-        <source>opening</source>
-        <translation>打开中</translation>
-    </message>
-    <message>
-        <source>open</source>
-        <translation>已打开</translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation>错误</translation>
-    </message>
-</context>
-<context>
-    <name>DcfApplyDialog</name>
+    <name>coscope::gui::DcfApplyDialog</name>
     <message>
         <source>Apply DCF to node %1</source>
         <translation>将 DCF 应用到节点 %1</translation>
@@ -769,25 +1338,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Fault</name>
-    <message>
-        <source>Error code (603Fh) %1h</source>
-        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
-        <translation>错误码（603Fh）%1h</translation>
-    </message>
-    <message>
-        <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
-        <translation>——厂商报警 %1</translation>
-    </message>
-    <message>
-        <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
-        <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402FramesTabs</name>
+    <name>coscope::gui::Ds402FramesTabs</name>
     <message>
         <source>Frames (requests and responses)</source>
         <translation>帧（请求与响应）</translation>
@@ -798,7 +1349,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402ModeBox</name>
+    <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
         <translation>运行模式（6060h / 6061h）</translation>
@@ -829,7 +1380,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402MotionPlot</name>
+    <name>coscope::gui::Ds402MotionPlot</name>
     <message>
         <source>position 6064h</source>
         <translation>位置 6064h</translation>
@@ -852,18 +1403,14 @@
     </message>
 </context>
 <context>
-    <name>Ds402StateDiagram</name>
+    <name>coscope::gui::Ds402StateDiagram</name>
     <message>
         <source>State not read yet</source>
         <translation>尚未读取状态</translation>
     </message>
-    <message>
-        <source>13 any fault</source>
-        <translation>13 任何故障</translation>
-    </message>
 </context>
 <context>
-    <name>Ds402StatusPanel</name>
+    <name>coscope::gui::Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
         <translation>状态字（6041h）：未读取</translation>
@@ -882,7 +1429,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402StepBar</name>
+    <name>coscope::gui::Ds402StepBar</name>
     <message>
         <source>Step through — one button per transition</source>
         <translation>逐步运行 — 每个状态转换一个按钮</translation>
@@ -921,7 +1468,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402TestMoveBox</name>
+    <name>coscope::gui::Ds402TestMoveBox</name>
     <message>
         <source>Test move (optional, small limits)</source>
         <translation>测试运行（选用，小范围限制）</translation>
@@ -976,22 +1523,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402VendorNotes</name>
-    <message>
-        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation>P1-01 必须为 0x0C（标准 CANopen 模式），否则驱动器会忽略控制字。伺服启动（Servo On）时请勿发送 NMT Reset Node：驱动器会发出 AL401。</translation>
-    </message>
-    <message>
-        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation>H02-00 必须为 8（CANopen 控制），否则驱动器会忽略控制字。</translation>
-    </message>
-    <message>
-        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
-        <translation>DEXMART DEV 没有 CiA 402 状态机：它的两台电机是通过 Multi-Drive 对象（3051h/3052h）控制。请改用对象字典面板。</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402Wizard</name>
+    <name>coscope::gui::Ds402Wizard</name>
     <message>
         <source>CiA 402 enable step-through</source>
         <translation>CiA 402 逐步使能</translation>
@@ -1322,66 +1854,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventLog</name>
-    <message>
-        <source>EMCY reset</source>
-        <translation>EMCY 复位</translation>
-    </message>
-    <message>
-        <source>SDO abort</source>
-        <translation>SDO 中止</translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation>NMT 状态</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>启动（Boot-up）</translation>
-    </message>
-    <message>
-        <source>NMT command</source>
-        <translation>NMT 命令</translation>
-    </message>
-    <message>
-        <source>Heartbeat timeout</source>
-        <translation>心跳超时</translation>
-    </message>
-    <message>
-        <source>Bus error</source>
-        <translation>总线错误</translation>
-    </message>
-    <message>
-        <source>Dropped frames</source>
-        <translation>丢失的帧</translation>
-    </message>
-    <message>
-        <source>Info</source>
-        <translation>信息</translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation>所有节点</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>节点 %1</translation>
-    </message>
-    <message>
-        <source>Heartbeat back after timeout</source>
-        <translation>超时后心跳恢复</translation>
-    </message>
-    <message>
-        <source>State %1</source>
-        <translation>状态 %1</translation>
-    </message>
-    <message>
-        <source>No heartbeat for %1 ms (period %2 ms)</source>
-        <translation>%1 ms 内没有心跳（周期 %2 ms）</translation>
-    </message>
-</context>
-<context>
-    <name>EventsDock</name>
+    <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
         <translation>事件</translation>
@@ -1392,7 +1865,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsModel</name>
+    <name>coscope::gui::EventsModel</name>
     <message>
         <source>Time (s)</source>
         <translation>时间（秒）</translation>
@@ -1415,186 +1888,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>FrameDecoder</name>
-    <message>
-        <source>NMT (short frame)</source>
-        <translation>NMT（短帧）</translation>
-    </message>
-    <message>
-        <source>NMT frame must carry 2 bytes</source>
-        <translation>NMT 帧必须有 2 个字节</translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation>所有节点</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>节点 %1</translation>
-    </message>
-    <message>
-        <source>NMT node control</source>
-        <translation>NMT 节点控制</translation>
-    </message>
-    <message>
-        <source>Command specifier</source>
-        <translation>命令标识符</translation>
-    </message>
-    <message>
-        <source>Node-ID</source>
-        <translation>节点 ID</translation>
-    </message>
-    <message>
-        <source>0 (all)</source>
-        <translation>0（全部）</translation>
-    </message>
-    <message>
-        <source>Node guarding request to node %1</source>
-        <translation>对节点 %1 的节点保护请求</translation>
-    </message>
-    <message>
-        <source>Node guarding request (RTR)</source>
-        <translation>节点保护请求（RTR）</translation>
-    </message>
-    <message>
-        <source>NMT error control (empty)</source>
-        <translation>NMT 错误控制（空）</translation>
-    </message>
-    <message>
-        <source>error control frame without state byte</source>
-        <translation>错误控制帧缺少状态字节</translation>
-    </message>
-    <message>
-        <source>Boot-up node %1</source>
-        <translation>节点 %1 启动（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Heartbeat node %1: %2</source>
-        <translation>节点 %1 心跳：%2</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>启动（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Heartbeat / guarding</source>
-        <translation>心跳／节点保护</translation>
-    </message>
-    <message>
-        <source>Toggle</source>
-        <translation>翻转位</translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation>NMT 状态</translation>
-    </message>
-    <message>
-        <source>EMCY node %1: error reset</source>
-        <translation>EMCY 节点 %1：错误复位</translation>
-    </message>
-    <message>
-        <source>EMCY node %1: %2 %3, reg %4</source>
-        <translation>EMCY 节点 %1：%2 %3，寄存器 %4</translation>
-    </message>
-    <message>
-        <source>EMCY frame shorter than 8 bytes</source>
-        <translation>EMCY 帧短于 8 字节</translation>
-    </message>
-    <message>
-        <source>Emergency</source>
-        <translation>紧急报文</translation>
-    </message>
-    <message>
-        <source>Error code</source>
-        <translation>错误码</translation>
-    </message>
-    <message>
-        <source>Error register (1001h)</source>
-        <translation>错误寄存器（1001h）</translation>
-    </message>
-    <message>
-        <source>Bit %1</source>
-        <translation>位 %1</translation>
-    </message>
-    <message>
-        <source>Manufacturer-specific</source>
-        <translation>制造商定义</translation>
-    </message>
-    <message>
-        <source>SDO %1 node %2 %3</source>
-        <translation>SDO %1 节点 %2 %3</translation>
-    </message>
-    <message>
-        <source>, %1 bytes</source>
-        <translation>，%1 字节</translation>
-    </message>
-    <message>
-        <source>SDO request (client → server)</source>
-        <translation>SDO 请求（客户端 → 服务器）</translation>
-    </message>
-    <message>
-        <source>SDO response (server → client)</source>
-        <translation>SDO 响应（服务器 → 客户端）</translation>
-    </message>
-    <message>
-        <source>Command</source>
-        <translation>命令</translation>
-    </message>
-    <message>
-        <source>Index</source>
-        <translation>索引</translation>
-    </message>
-    <message>
-        <source>Sub-index</source>
-        <translation>子索引</translation>
-    </message>
-    <message>
-        <source>Abort code</source>
-        <translation>中止码</translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation>数据</translation>
-    </message>
-    <message>
-        <source>Segment data</source>
-        <translation>分段数据</translation>
-    </message>
-    <message>
-        <source>Error frame, class %1</source>
-        <translation>错误帧，类别 %1</translation>
-    </message>
-    <message>
-        <source>Error frame</source>
-        <translation>错误帧</translation>
-    </message>
-    <message>
-        <source>SYNC counter %1</source>
-        <translation>SYNC 计数器 %1</translation>
-    </message>
-    <message>
-        <source>TIME stamp</source>
-        <translation>时间戳（TIME）</translation>
-    </message>
-    <message>
-        <source>(empty)</source>
-        <translation>（空）</translation>
-    </message>
-    <message>
-        <source>LSS command</source>
-        <translation>LSS 命令</translation>
-    </message>
-    <message>
-        <source>(29-bit identifier, not CANopen)</source>
-        <translation>（29 位标识符，非 CANopen）</translation>
-    </message>
-    <message>
-        <source>%1 node %2, %3 bytes</source>
-        <translation>%1 节点 %2，%3 字节</translation>
-    </message>
-</context>
-<context>
-    <name>FrameDetailsView</name>
+    <name>coscope::gui::FrameDetailsView</name>
     <message>
         <source>Field</source>
         <translation>字段</translation>
@@ -1751,7 +2045,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthDock</name>
+    <name>coscope::gui::HealthDock</name>
     <message>
         <source>Health</source>
         <translation>健康状态</translation>
@@ -1800,7 +2094,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthModel</name>
+    <name>coscope::gui::HealthModel</name>
     <message>
         <source>Severity</source>
         <translation>严重程度</translation>
@@ -1935,7 +2229,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>JournalOfferBar</name>
+    <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
         <translation>未关闭的捕获</translation>
@@ -1954,33 +2248,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>LogLoadJob</name>
-    <message>
-        <source>Opening %1</source>
-        <translation>正在打开 %1</translation>
-    </message>
-    <message>
-        <source>%1: cannot open</source>
-        <translation>%1：无法打开</translation>
-    </message>
-</context>
-<context>
-    <name>LogSaveJob</name>
-    <message>
-        <source>Saving %1</source>
-        <translation>正在保存 %1</translation>
-    </message>
-    <message>
-        <source>%1: unknown log format</source>
-        <translation>%1：未知的日志文件格式</translation>
-    </message>
-    <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
-        <translation>%1：无法写入格式“%2”</translation>
-    </message>
-</context>
-<context>
-    <name>MainWindow</name>
+    <name>coscope::gui::MainWindow</name>
     <message>
         <source>Capture stopped</source>
         <translation>捕获已停止</translation>
@@ -2160,7 +2428,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdChangePage</name>
+    <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要更改的项目</translation>
@@ -2207,7 +2475,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdFindPage</name>
+    <name>coscope::gui::NodeIdFindPage</name>
     <message>
         <source>Find the device</source>
         <translation>找出设备</translation>
@@ -2280,7 +2548,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdRunPage</name>
+    <name>coscope::gui::NodeIdRunPage</name>
     <message>
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
         <translation>模拟运行：尚未发送任何内容。以下正是 CoScope 将要发送的内容与原因。</translation>
@@ -2323,7 +2591,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdWizard</name>
+    <name>coscope::gui::NodeIdWizard</name>
     <message>
         <source>Baud rate and node-ID — CoScope</source>
         <translation>波特率与节点 ID — CoScope</translation>
@@ -2486,7 +2754,7 @@ What to check: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesDock</name>
+    <name>coscope::gui::NodesDock</name>
     <message>
         <source>Nodes</source>
         <translation>节点</translation>
@@ -2637,7 +2905,7 @@ Frame: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesModel</name>
+    <name>coscope::gui::NodesModel</name>
     <message>
         <source>No heartbeat</source>
         <translation>无心跳</translation>
@@ -2740,7 +3008,7 @@ Software version (100Ah): %3</source>
     </message>
 </context>
 <context>
-    <name>ObjectDictionaryDock</name>
+    <name>coscope::gui::ObjectDictionaryDock</name>
     <message>
         <source>Object Dictionary</source>
         <translation>对象字典</translation>
@@ -3025,7 +3293,7 @@ SDO 下载 %n 字节：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>OdTreeModel</name>
+    <name>coscope::gui::OdTreeModel</name>
     <message>
         <source>Index</source>
         <translation>索引</translation>
@@ -3058,45 +3326,9 @@ SDO 下载 %n 字节：%1</numerusform>
         <source>Unit</source>
         <translation>单位</translation>
     </message>
-    <message>
-        <source>sub %1</source>
-        <translation>子索引 %1</translation>
-    </message>
-    <message>
-        <source>reading…</source>
-        <translation>读取中…</translation>
-    </message>
-    <message>
-        <source>writing…</source>
-        <translation>写入中…</translation>
-    </message>
-    <message>
-        <source>, PDO-mappable</source>
-        <translation>，可映射到 PDO</translation>
-    </message>
-    <message>
-        <source>
-Limits: %1 … %2</source>
-        <translation>
-范围：%1 … %2</translation>
-    </message>
-    <message>
-        <source>
-Differs from the default</source>
-        <translation>
-与默认值不同</translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3</source>
-        <translation>节点 %1 %2：%3</translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3 (bytes %4)</source>
-        <translation>节点 %1 %2：%3（字节 %4）</translation>
-    </message>
 </context>
 <context>
-    <name>PdoApplyPage</name>
+    <name>coscope::gui::PdoApplyPage</name>
     <message>
         <source>Check and apply</source>
         <translation>检查并应用</translation>
@@ -3131,7 +3363,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoChoosePage</name>
+    <name>coscope::gui::PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
         <translation>哪台驱动器、哪个报文</translation>
@@ -3218,26 +3450,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoDbcExport</name>
-    <message>
-        <source>%1: cannot write the DBC file (%2)</source>
-        <translation>%1：无法写入 DBC 文件（%2）</translation>
-    </message>
-    <message>
-        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation>PDO 配置已导出至 %1：%2 个 PDO 报文，%3 个原始信号</translation>
-    </message>
-    <message>
-        <source>Export PDO layout as DBC</source>
-        <translation>将 PDO 配置导出为 DBC</translation>
-    </message>
-    <message>
-        <source>DBC file (*.dbc)</source>
-        <translation>DBC 文件（*.dbc）</translation>
-    </message>
-</context>
-<context>
-    <name>PdoFrameLayout</name>
+    <name>coscope::gui::PdoFrameLayout</name>
     <message>
         <source>byte %1</source>
         <translation>字节 %1</translation>
@@ -3252,7 +3465,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoMappingPage</name>
+    <name>coscope::gui::PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
         <translation>报文携带的内容</translation>
@@ -3347,7 +3560,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoTimingPage</name>
+    <name>coscope::gui::PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
         <translation>报文何时发送</translation>
@@ -3474,138 +3687,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoVendorNotes</name>
-    <message>
-        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
-        <translation>台达 ASDA-A2：只有在 P1-01（2101h）= 0x0C 时，驱动器才使用标准 CANopen；请先检查此参数。</translation>
-    </message>
-    <message>
-        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
-        <translation>台达每次以 SDO 写入 P 参数（2000h–2FFFh）都会写入 EEPROM；以 PDO 写入的 P 参数只有在 P3-11 X = 1 时才会保存（会耗损 EEPROM）。</translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
-        <translation>每个 PDO 最多 8 个对象。两个 PDO 在 1 ms 内使用相同的 COB-ID 会触发报警 AL112。</translation>
-    </message>
-    <message>
-        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
-        <translation>传输类型 0–240 的 RPDO 在下一个 SYNC 生效：主站必须在每个周期发送 SYNC。</translation>
-    </message>
-    <message>
-        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
-        <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）时，CiA 402 对象才会生效。</translation>
-    </message>
-    <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
-        <translation>AIMOTOR 的默认 PDO 为同步型（类型 1）：只有收到 SYNC 时才会发送或应用。请启动 SYNC 生产者，或改选事件触发类型。</translation>
-    </message>
-    <message>
-        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
-        <translation>只能映射 CiA 402 对象（6000h–6FFFh）；每个 PDO 最多 8 个对象。</translation>
-    </message>
-    <message>
-        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation>DEXMART DEV：COB-ID 为只读，重新映射时无法关闭 PDO：映射会在报文使用中更改。</translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
-        <translation>每个 PDO 最多 8 个对象。上电时的映射来自参数 09-26；在此所做的更改若未保存，断电后就会丢失。</translation>
-    </message>
-    <message>
-        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
-        <translation>两台电机：M1/M2 的值位于 Multi-Drive 对象中（3046h 状态，3051h 命令）。</translation>
-    </message>
-    <message>
-        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
-        <translation>此节点没有已知的字典：无法按名称列出对象。请先扫描节点（节点面板）或指定字典。</translation>
-    </message>
-    <message>
-        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
-        <translation>驱动器未及时响应。请确认它已通电、节点 ID 正确，并检查缆线、终端电阻与波特率。</translation>
-    </message>
-    <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
-        <translation>驱动器不允许将此对象放入 PDO。请改选其他对象，或查阅手册中该对象的“PDO”列。</translation>
-    </message>
-    <message>
-        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
-        <translation>此驱动器的单一 PDO 数据过多：请减少对象或改用较短的对象（最多 64 位；部分驱动器每个 PDO 最多 8 个对象）。</translation>
-    </message>
-    <message>
-        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
-        <translation>驱动器报告一般性参数不兼容：请确认此 PDO 编号存在，且各数值彼此相符。</translation>
-    </message>
-    <message>
-        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
-        <translation>此参数在此驱动器上为只读（部分驱动器的 COB-ID 固定）。请保留当前的值。</translation>
-    </message>
-    <message>
-        <source>The drive does not have this object: this PDO number may not exist on it.</source>
-        <translation>驱动器没有此对象：它可能没有这个编号的 PDO。</translation>
-    </message>
-    <message>
-        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
-        <translation>驱动器拒绝此值：请检查允许的范围（传输类型、禁止时间、事件计时器）。</translation>
-    </message>
-    <message>
-        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
-        <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送此命令）</translation>
-    </message>
-    <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
-        <translation>请在驱动器手册中查找中止码 0x%1。</translation>
-    </message>
-    <message>
-        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
-        <translation>读回的值与写入的不同：驱动器可能调整或忽略了其中一个。请重新读取 PDO 并比较。</translation>
-    </message>
-    <message>
-        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
-        <translation>值变化后在下一个 SYNC 发送（同步非周期，类型 0）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 0)</source>
-        <translation>在下一个 SYNC 应用（同步，类型 0）</translation>
-    </message>
-    <message>
-        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
-        <translation>每个 SYNC 都发送（同步周期，类型 1）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 1)</source>
-        <translation>在下一个 SYNC 应用（同步，类型 1）</translation>
-    </message>
-    <message>
-        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
-        <translation>每 %1 个 SYNC 发送一次（同步周期，类型 %1）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type %1)</source>
-        <translation>在下一个 SYNC 应用（同步，类型 %1）</translation>
-    </message>
-    <message>
-        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
-        <translation>在 SYNC 采样，仅在被请求时发送（仅 RTR 同步，类型 252）</translation>
-    </message>
-    <message>
-        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
-        <translation>仅在被请求时发送（仅 RTR 事件触发，类型 253）</translation>
-    </message>
-    <message>
-        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
-        <translation>值变化时和／或每个事件计时器周期发送（事件触发，类型 %1）</translation>
-    </message>
-    <message>
-        <source>Applied as soon as it arrives (event-driven, type %1)</source>
-        <translation>收到后立即应用（事件触发，类型 %1）</translation>
-    </message>
-    <message>
-        <source>Reserved transmission type %1</source>
-        <translation>保留的传输类型 %1</translation>
-    </message>
-</context>
-<context>
-    <name>PdoWizard</name>
+    <name>coscope::gui::PdoWizard</name>
     <message>
         <source>PDO mapping — CoScope</source>
         <translation>PDO 映射 — CoScope</translation>
@@ -3706,7 +3788,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotDock</name>
+    <name>coscope::gui::PlotDock</name>
     <message>
         <source>Plot</source>
         <translation>图表</translation>
@@ -3885,7 +3967,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotView</name>
+    <name>coscope::gui::PlotView</name>
     <message>
         <source>Pick signals on the left</source>
         <translation>请在左侧选择信号</translation>
@@ -3900,50 +3982,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>QObject</name>
-    <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
-        <translation>正在以指定的字典解码 PDO</translation>
-    </message>
-    <message>
-        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障复位（转换 15）：在故障原因排除后清除故障。发送控制字 6040h = 0000h，接着 0080h（位 7 上升沿）。预期进入伺服无故障（Switch on disabled）：故障位 3 为 0，位 6 为 1。</translation>
-    </message>
-    <message>
-        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation>关闭（Shutdown，转换 2）：让驱动器准备就绪，电机仍不通电。发送 6040h = 0006h。预期进入伺服准备好（Ready to switch on）：位 0 与 5 为 1，位 6 为 0。</translation>
-    </message>
-    <message>
-        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation>接通主回路（Switch on，转换 3）：打开功率级，电机尚未通电；需要主电源。发送 6040h = 0007h。预期进入等待打开使能（Switched on）：位 0、1、4（电压已启用）与 5 为 1。</translation>
-    </message>
-    <message>
-        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation>使能运行（Enable operation，转换 4）：电机通电，保持位置并按命令动作。发送 6040h = 000Fh。预期进入伺服已使能（Operation enabled）：位 0、1、2 与 5 为 1。</translation>
-    </message>
-    <message>
-        <source>booting (boot-up)</source>
-        <translation>启动中（boot-up）</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>running (operational)</source>
-        <translation>运行中（操作状态）</translation>
-    </message>
-    <message>
-        <source>ready (pre-operational)</source>
-        <translation>就绪（预操作状态）</translation>
-    </message>
-    <message>
-        <source>seen</source>
-        <translation>已检测</translation>
-    </message>
-</context>
-<context>
-    <name>RawSignalDialog</name>
+    <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
         <translation>添加原始信号</translation>
@@ -4058,7 +4097,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptPreview</name>
+    <name>coscope::gui::ScriptPreview</name>
     <message>
         <source>What it does</source>
         <translation>用途</translation>
@@ -4121,7 +4160,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptRunPanel</name>
+    <name>coscope::gui::ScriptRunPanel</name>
     <message>
         <source>Run</source>
         <translation>运行</translation>
@@ -4166,7 +4205,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>SignalPicker</name>
+    <name>coscope::gui::SignalPicker</name>
     <message>
         <source>Search signals (name, object, node)</source>
         <translation>搜索信号（名称、对象、节点）</translation>
@@ -4217,7 +4256,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceDock</name>
+    <name>coscope::gui::TraceDock</name>
     <message>
         <source>Trace</source>
         <translation>跟踪</translation>
@@ -4332,42 +4371,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceFilter</name>
-    <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
-        <translation>筛选：“%1”不是节点 ID（0-127）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
-        <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
-    </message>
-    <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
-        <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
-        <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
-    </message>
-    <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
-        <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
-        <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
-    </message>
-    <message>
-        <source>Grouping SDO transfers</source>
-        <translation>正在将 SDO 传输分组</translation>
-    </message>
-    <message>
-        <source>Filtering</source>
-        <translation>筛选中</translation>
-    </message>
-</context>
-<context>
-    <name>TraceModel</name>
+    <name>coscope::gui::TraceModel</name>
     <message>
         <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>单击可展开或折叠此传输的帧</translation>
@@ -4424,30 +4428,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardFramesPane</name>
+    <name>coscope::gui::WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
         <translation>此向导在总线上的帧</translation>
     </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>时间（秒）</translation>
-    </message>
-    <message>
-        <source>Dir</source>
-        <translation>方向</translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation>数据</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>含义</translation>
-    </message>
 </context>
 <context>
-    <name>WizardGuard</name>
+    <name>coscope::gui::WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
         <translation>未连接到任何总线，因此无法发送。请先连接到总线；您仍可先准备步骤并另存为脚本。</translation>
@@ -4466,22 +4454,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardMenu</name>
-    <message>
-        <source>Baud rate and node-ID…</source>
-        <translation>波特率与节点 ID…</translation>
-    </message>
-    <message>
-        <source>CiA 402 enable step-through…</source>
-        <translation>CiA 402 逐步使能…</translation>
-    </message>
-    <message>
-        <source>PDO mapping…</source>
-        <translation>PDO 映射…</translation>
-    </message>
-</context>
-<context>
-    <name>Workspace</name>
+    <name>coscope::gui::Workspace</name>
     <message>
         <source>cannot create the folder %1</source>
         <translation>无法创建文件夹 %1</translation>

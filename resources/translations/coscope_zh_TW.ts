@@ -2,7 +2,971 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_TW">
 <context>
-    <name>BusStatusBar</name>
+    <name>CoreText</name>
+    <message>
+        <source>Not ready to switch on</source>
+        <translation>初始化中</translation>
+    </message>
+    <message>
+        <source>Switch on disabled</source>
+        <translation>禁止啟動</translation>
+    </message>
+    <message>
+        <source>Ready to switch on</source>
+        <translation>準備啟動</translation>
+    </message>
+    <message>
+        <source>Switched on</source>
+        <translation>已啟動</translation>
+    </message>
+    <message>
+        <source>Operation enabled</source>
+        <translation>運轉致能</translation>
+    </message>
+    <message>
+        <source>Quick stop active</source>
+        <translation>快速停止中</translation>
+    </message>
+    <message>
+        <source>Fault reaction active</source>
+        <translation>故障反應中</translation>
+    </message>
+    <message>
+        <source>Fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>Unknown state</source>
+        <translation>未知狀態</translation>
+    </message>
+    <message>
+        <source>ready to switch on</source>
+        <translation>準備啟動</translation>
+    </message>
+    <message>
+        <source>switched on</source>
+        <translation>已啟動</translation>
+    </message>
+    <message>
+        <source>operation enabled</source>
+        <translation>運轉致能</translation>
+    </message>
+    <message>
+        <source>fault</source>
+        <translation>故障</translation>
+    </message>
+    <message>
+        <source>voltage enabled</source>
+        <translation>電壓已啟用</translation>
+    </message>
+    <message>
+        <source>quick stop</source>
+        <translation>快速停止</translation>
+    </message>
+    <message>
+        <source>switch on disabled</source>
+        <translation>禁止啟動</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 8)</source>
+        <translation>製造商定義（位元 8）</translation>
+    </message>
+    <message>
+        <source>remote</source>
+        <translation>遠端</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>已到達目標</translation>
+    </message>
+    <message>
+        <source>internal limit active</source>
+        <translation>內部限制作用中</translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 12)</source>
+        <translation>依操作模式而定（位元 12）</translation>
+    </message>
+    <message>
+        <source>operation mode specific (bit 13)</source>
+        <translation>依操作模式而定（位元 13）</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 14)</source>
+        <translation>製造商定義（位元 14）</translation>
+    </message>
+    <message>
+        <source>manufacturer specific (bit 15)</source>
+        <translation>製造商定義（位元 15）</translation>
+    </message>
+    <message>
+        <source>Shutdown</source>
+        <translation>關閉（Shutdown）</translation>
+    </message>
+    <message>
+        <source>Switch on</source>
+        <translation>啟動（Switch on）</translation>
+    </message>
+    <message>
+        <source>Switch on + enable operation</source>
+        <translation>啟動＋運轉致能</translation>
+    </message>
+    <message>
+        <source>Disable voltage</source>
+        <translation>切斷電壓（Disable voltage）</translation>
+    </message>
+    <message>
+        <source>Quick stop</source>
+        <translation>快速停止</translation>
+    </message>
+    <message>
+        <source>Disable operation</source>
+        <translation>禁止運轉（Disable operation）</translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation>運轉致能</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation>故障重置</translation>
+    </message>
+    <message>
+        <source>Switch on / disable operation</source>
+        <translation>啟動／禁止運轉</translation>
+    </message>
+    <message>
+        <source>No command</source>
+        <translation>無命令</translation>
+    </message>
+    <message>
+        <source>No mode</source>
+        <translation>無模式</translation>
+    </message>
+    <message>
+        <source>Profile position (PP)</source>
+        <translation>輪廓位置（PP）</translation>
+    </message>
+    <message>
+        <source>Velocity (VL)</source>
+        <translation>速度（VL）</translation>
+    </message>
+    <message>
+        <source>Profile velocity (PV)</source>
+        <translation>輪廓速度（PV）</translation>
+    </message>
+    <message>
+        <source>Profile torque (PT)</source>
+        <translation>輪廓扭矩（PT）</translation>
+    </message>
+    <message>
+        <source>Homing (HM)</source>
+        <translation>原點復歸（HM）</translation>
+    </message>
+    <message>
+        <source>Interpolated position (IP)</source>
+        <translation>補間位置（IP）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous position (CSP)</source>
+        <translation>週期同步位置（CSP）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous velocity (CSV)</source>
+        <translation>週期同步速度（CSV）</translation>
+    </message>
+    <message>
+        <source>Cyclic synchronous torque (CST)</source>
+        <translation>週期同步扭矩（CST）</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>啟動</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Enter pre-operational</source>
+        <translation>進入預操作狀態</translation>
+    </message>
+    <message>
+        <source>Reset node</source>
+        <translation>重置節點</translation>
+    </message>
+    <message>
+        <source>Reset communication</source>
+        <translation>重置通訊</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>上線（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Operational</source>
+        <translation>操作狀態</translation>
+    </message>
+    <message>
+        <source>Pre-operational</source>
+        <translation>預操作狀態</translation>
+    </message>
+    <message>
+        <source>Toggle bit not alternated</source>
+        <translation>切換位元未交替</translation>
+    </message>
+    <message>
+        <source>SDO protocol timed out</source>
+        <translation>SDO 協定逾時</translation>
+    </message>
+    <message>
+        <source>Client/server command specifier not valid or unknown</source>
+        <translation>用戶端／伺服器命令識別碼無效或未知</translation>
+    </message>
+    <message>
+        <source>Invalid block size (block mode only)</source>
+        <translation>區塊大小無效（僅限區塊模式）</translation>
+    </message>
+    <message>
+        <source>Invalid sequence number (block mode only)</source>
+        <translation>序號無效（僅限區塊模式）</translation>
+    </message>
+    <message>
+        <source>CRC error (block mode only)</source>
+        <translation>CRC 錯誤（僅限區塊模式）</translation>
+    </message>
+    <message>
+        <source>Out of memory</source>
+        <translation>記憶體不足</translation>
+    </message>
+    <message>
+        <source>Unsupported access to an object</source>
+        <translation>不支援的物件存取方式</translation>
+    </message>
+    <message>
+        <source>Attempt to read a write-only object</source>
+        <translation>嘗試讀取唯寫物件</translation>
+    </message>
+    <message>
+        <source>Attempt to write a read-only object</source>
+        <translation>嘗試寫入唯讀物件</translation>
+    </message>
+    <message>
+        <source>Object does not exist in the object dictionary</source>
+        <translation>物件字典中沒有此物件</translation>
+    </message>
+    <message>
+        <source>Object cannot be mapped to the PDO</source>
+        <translation>物件無法映射到 PDO</translation>
+    </message>
+    <message>
+        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
+        <translation>要映射的物件數量與長度會超過 PDO 長度</translation>
+    </message>
+    <message>
+        <source>General parameter incompatibility reason</source>
+        <translation>一般性參數不相容</translation>
+    </message>
+    <message>
+        <source>General internal incompatibility in the device</source>
+        <translation>裝置內部一般性不相容</translation>
+    </message>
+    <message>
+        <source>Access failed due to a hardware error</source>
+        <translation>硬體錯誤導致存取失敗</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter does not match</source>
+        <translation>資料類型不符，服務參數長度不符</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too high</source>
+        <translation>資料類型不符，服務參數長度過長</translation>
+    </message>
+    <message>
+        <source>Data type does not match, length of service parameter too low</source>
+        <translation>資料類型不符，服務參數長度過短</translation>
+    </message>
+    <message>
+        <source>Sub-index does not exist</source>
+        <translation>子索引不存在</translation>
+    </message>
+    <message>
+        <source>Invalid value for parameter (download only)</source>
+        <translation>參數值無效（僅限下載）</translation>
+    </message>
+    <message>
+        <source>Value of parameter written too high (download only)</source>
+        <translation>寫入的參數值過高（僅限下載）</translation>
+    </message>
+    <message>
+        <source>Value of parameter written too low (download only)</source>
+        <translation>寫入的參數值過低（僅限下載）</translation>
+    </message>
+    <message>
+        <source>Maximum value is less than minimum value</source>
+        <translation>最大值小於最小值</translation>
+    </message>
+    <message>
+        <source>Resource not available: SDO connection</source>
+        <translation>資源不可用：SDO 連線</translation>
+    </message>
+    <message>
+        <source>General error</source>
+        <translation>一般錯誤</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application</source>
+        <translation>資料無法傳送或儲存到應用程式</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of local control</source>
+        <translation>因本地控制，資料無法傳送或儲存到應用程式</translation>
+    </message>
+    <message>
+        <source>Data cannot be transferred or stored to the application because of the present device state</source>
+        <translation>因裝置目前的狀態，資料無法傳送或儲存到應用程式</translation>
+    </message>
+    <message>
+        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
+        <translation>物件字典動態產生失敗，或沒有物件字典</translation>
+    </message>
+    <message>
+        <source>No data available</source>
+        <translation>沒有可用的資料</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已關閉</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>開啟中</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已開啟</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>錯誤</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402Fault</name>
+    <message>
+        <source>Error code (603Fh) %1h</source>
+        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
+        <translation>錯誤碼（603Fh）%1h</translation>
+    </message>
+    <message>
+        <source> — vendor alarm %1</source>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <translation>——廠商異警 %1</translation>
+    </message>
+    <message>
+        <source>alarm number 0x%1 (not in the %2 table)</source>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402StateDiagram</name>
+    <message>
+        <source>13 any fault</source>
+        <translation>13 任何故障</translation>
+    </message>
+</context>
+<context>
+    <name>Ds402VendorNotes</name>
+    <message>
+        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
+        <translation>P1-01 必須為 0x0C（標準 CANopen 模式），否則驅動器會忽略控制字元。伺服啟動（Servo On）時請勿送出 NMT Reset Node：驅動器會發出 AL401。</translation>
+    </message>
+    <message>
+        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
+        <translation>H02-00 必須為 8（CANopen 控制），否則驅動器會忽略控制字元。</translation>
+    </message>
+    <message>
+        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
+        <translation>DEXMART DEV 沒有 CiA 402 狀態機：它的兩台馬達是透過 Multi-Drive 物件（3051h/3052h）控制。請改用物件字典面板。</translation>
+    </message>
+</context>
+<context>
+    <name>EventLog</name>
+    <message>
+        <source>EMCY reset</source>
+        <translation>EMCY 重置</translation>
+    </message>
+    <message>
+        <source>SDO abort</source>
+        <translation>SDO 中止</translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation>NMT 狀態</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>上線（Boot-up）</translation>
+    </message>
+    <message>
+        <source>NMT command</source>
+        <translation>NMT 命令</translation>
+    </message>
+    <message>
+        <source>Heartbeat timeout</source>
+        <translation>心跳逾時</translation>
+    </message>
+    <message>
+        <source>Bus error</source>
+        <translation>總線錯誤</translation>
+    </message>
+    <message>
+        <source>Dropped frames</source>
+        <translation>遺失的封包</translation>
+    </message>
+    <message>
+        <source>Info</source>
+        <translation>資訊</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation>所有節點</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>Heartbeat back after timeout</source>
+        <translation>逾時後心跳恢復</translation>
+    </message>
+    <message>
+        <source>State %1</source>
+        <translation>狀態 %1</translation>
+    </message>
+    <message>
+        <source>No heartbeat for %1 ms (period %2 ms)</source>
+        <translation>%1 ms 內沒有心跳（週期 %2 ms）</translation>
+    </message>
+</context>
+<context>
+    <name>FrameDecoder</name>
+    <message>
+        <source>NMT (short frame)</source>
+        <translation>NMT（短封包）</translation>
+    </message>
+    <message>
+        <source>NMT frame must carry 2 bytes</source>
+        <translation>NMT 封包必須有 2 個位元組</translation>
+    </message>
+    <message>
+        <source>all nodes</source>
+        <translation>所有節點</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>NMT node control</source>
+        <translation>NMT 節點控制</translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation>命令識別碼</translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation>節點 ID</translation>
+    </message>
+    <message>
+        <source>0 (all)</source>
+        <translation>0（全部）</translation>
+    </message>
+    <message>
+        <source>Node guarding request to node %1</source>
+        <translation>對節點 %1 的節點保護請求</translation>
+    </message>
+    <message>
+        <source>Node guarding request (RTR)</source>
+        <translation>節點保護請求（RTR）</translation>
+    </message>
+    <message>
+        <source>NMT error control (empty)</source>
+        <translation>NMT 錯誤控制（空）</translation>
+    </message>
+    <message>
+        <source>error control frame without state byte</source>
+        <translation>錯誤控制封包缺少狀態位元組</translation>
+    </message>
+    <message>
+        <source>Boot-up node %1</source>
+        <translation>節點 %1 上線（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Heartbeat node %1: %2</source>
+        <translation>節點 %1 心跳：%2</translation>
+    </message>
+    <message>
+        <source>Boot-up</source>
+        <translation>上線（Boot-up）</translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation>心跳／節點保護</translation>
+    </message>
+    <message>
+        <source>Toggle</source>
+        <translation>切換位元</translation>
+    </message>
+    <message>
+        <source>NMT state</source>
+        <translation>NMT 狀態</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: error reset</source>
+        <translation>EMCY 節點 %1：錯誤重置</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, reg %4</source>
+        <translation>EMCY 節點 %1：%2 %3，暫存器 %4</translation>
+    </message>
+    <message>
+        <source>EMCY frame shorter than 8 bytes</source>
+        <translation>EMCY 封包短於 8 位元組</translation>
+    </message>
+    <message>
+        <source>Emergency</source>
+        <translation>緊急報文</translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation>錯誤碼</translation>
+    </message>
+    <message>
+        <source>Error register (1001h)</source>
+        <translation>錯誤暫存器（1001h）</translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation>位元 %1</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific</source>
+        <translation>製造商定義</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 節點 %2 %3</translation>
+    </message>
+    <message>
+        <source>, %1 bytes</source>
+        <translation>，%1 位元組</translation>
+    </message>
+    <message>
+        <source>SDO request (client → server)</source>
+        <translation>SDO 請求（用戶端 → 伺服器）</translation>
+    </message>
+    <message>
+        <source>SDO response (server → client)</source>
+        <translation>SDO 回應（伺服器 → 用戶端）</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation>子索引</translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation>中止碼</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>資料</translation>
+    </message>
+    <message>
+        <source>Segment data</source>
+        <translation>分段資料</translation>
+    </message>
+    <message>
+        <source>Error frame, class %1</source>
+        <translation>錯誤封包，類別 %1</translation>
+    </message>
+    <message>
+        <source>Error frame</source>
+        <translation>錯誤封包</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation>SYNC 計數器 %1</translation>
+    </message>
+    <message>
+        <source>TIME stamp</source>
+        <translation>時間戳記（TIME）</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>（空）</translation>
+    </message>
+    <message>
+        <source>LSS command</source>
+        <translation>LSS 命令</translation>
+    </message>
+    <message>
+        <source>(29-bit identifier, not CANopen)</source>
+        <translation>（29 位元識別碼，非 CANopen）</translation>
+    </message>
+    <message>
+        <source>%1 node %2, %3 bytes</source>
+        <translation>%1 節點 %2，%3 位元組</translation>
+    </message>
+</context>
+<context>
+    <name>LogLoadJob</name>
+    <message>
+        <source>Opening %1</source>
+        <translation>正在開啟 %1</translation>
+    </message>
+    <message>
+        <source>%1: cannot open</source>
+        <translation>%1：無法開啟</translation>
+    </message>
+</context>
+<context>
+    <name>LogSaveJob</name>
+    <message>
+        <source>Saving %1</source>
+        <translation>正在儲存 %1</translation>
+    </message>
+    <message>
+        <source>%1: unknown log format</source>
+        <translation>%1：未知的記錄檔格式</translation>
+    </message>
+    <message>
+        <source>%1: cannot write format &apos;%2&apos;</source>
+        <translation>%1：無法寫入格式「%2」</translation>
+    </message>
+</context>
+<context>
+    <name>OdTreeModel</name>
+    <message>
+        <source>sub %1</source>
+        <translation>子索引 %1</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>讀取中…</translation>
+    </message>
+    <message>
+        <source>writing…</source>
+        <translation>寫入中…</translation>
+    </message>
+    <message>
+        <source>, PDO-mappable</source>
+        <translation>，可映射到 PDO</translation>
+    </message>
+    <message>
+        <source>
+Limits: %1 … %2</source>
+        <translation>
+範圍：%1 … %2</translation>
+    </message>
+    <message>
+        <source>
+Differs from the default</source>
+        <translation>
+與預設值不同</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3</source>
+        <translation>節點 %1 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3 (bytes %4)</source>
+        <translation>節點 %1 %2：%3（位元組 %4）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoDbcExport</name>
+    <message>
+        <source>%1: cannot write the DBC file (%2)</source>
+        <translation>%1：無法寫入 DBC 檔案（%2）</translation>
+    </message>
+    <message>
+        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
+        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
+    </message>
+    <message>
+        <source>Export PDO layout as DBC</source>
+        <translation>將 PDO 配置匯出為 DBC</translation>
+    </message>
+    <message>
+        <source>DBC file (*.dbc)</source>
+        <translation>DBC 檔案（*.dbc）</translation>
+    </message>
+</context>
+<context>
+    <name>PdoVendorNotes</name>
+    <message>
+        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
+        <translation>台達 ASDA-A2：只有在 P1-01（2101h）= 0x0C 時，驅動器才使用標準 CANopen；請先檢查此參數。</translation>
+    </message>
+    <message>
+        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
+        <translation>台達每次以 SDO 寫入 P 參數（2000h–2FFFh）都會寫入 EEPROM；以 PDO 寫入的 P 參數只有在 P3-11 X = 1 時才會儲存（會耗損 EEPROM）。</translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
+        <translation>每個 PDO 最多 8 個物件。兩個 PDO 在 1 ms 內使用相同的 COB-ID 會觸發異警 AL112。</translation>
+    </message>
+    <message>
+        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
+        <translation>傳輸類型 0–240 的 RPDO 在下一個 SYNC 生效：主站必須在每個週期送出 SYNC。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
+        <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
+    </message>
+    <message>
+        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
+        <translation>只能映射 CiA 402 物件（6000h–6FFFh）；每個 PDO 最多 8 個物件。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
+        <translation>DEXMART DEV：COB-ID 為唯讀，重新映射時無法關閉 PDO：映射會在報文使用中變更。</translation>
+    </message>
+    <message>
+        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
+        <translation>每個 PDO 最多 8 個物件。上電時的映射來自參數 09-26；在此所做的變更若未儲存，斷電後就會遺失。</translation>
+    </message>
+    <message>
+        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
+        <translation>兩台馬達：M1/M2 的值位於 Multi-Drive 物件中（3046h 狀態，3051h 命令）。</translation>
+    </message>
+    <message>
+        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
+        <translation>此節點沒有已知的字典：無法依名稱列出物件。請先掃描節點（節點面板）或指定字典。</translation>
+    </message>
+    <message>
+        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
+        <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
+    </message>
+    <message>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
+    </message>
+    <message>
+        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
+        <translation>此驅動器的單一 PDO 資料過多：請減少物件或改用較短的物件（最多 64 位元；部分驅動器每個 PDO 最多 8 個物件）。</translation>
+    </message>
+    <message>
+        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
+        <translation>驅動器回報一般性參數不相容：請確認此 PDO 編號存在，且各數值彼此相符。</translation>
+    </message>
+    <message>
+        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
+        <translation>此參數在此驅動器上為唯讀（部分驅動器的 COB-ID 固定）。請保留目前的值。</translation>
+    </message>
+    <message>
+        <source>The drive does not have this object: this PDO number may not exist on it.</source>
+        <translation>驅動器沒有此物件：它可能沒有這個編號的 PDO。</translation>
+    </message>
+    <message>
+        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
+        <translation>驅動器拒絕此值：請檢查允許的範圍（傳輸類型、禁止時間、事件計時器）。</translation>
+    </message>
+    <message>
+        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
+        <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
+    </message>
+    <message>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
+    </message>
+    <message>
+        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
+        <translation>讀回的值與寫入的不同：驅動器可能調整或忽略了其中一個。請重新讀取 PDO 並比較。</translation>
+    </message>
+    <message>
+        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
+        <translation>值變化後在下一個 SYNC 送出（同步非週期，類型 0）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 0)</source>
+        <translation>在下一個 SYNC 套用（同步，類型 0）</translation>
+    </message>
+    <message>
+        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
+        <translation>每個 SYNC 都送出（同步週期，類型 1）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type 1)</source>
+        <translation>在下一個 SYNC 套用（同步，類型 1）</translation>
+    </message>
+    <message>
+        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
+        <translation>每 %1 個 SYNC 送出一次（同步週期，類型 %1）</translation>
+    </message>
+    <message>
+        <source>Applied at the next SYNC (synchronous, type %1)</source>
+        <translation>在下一個 SYNC 套用（同步，類型 %1）</translation>
+    </message>
+    <message>
+        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
+        <translation>在 SYNC 取樣，僅在被請求時送出（僅 RTR 同步，類型 252）</translation>
+    </message>
+    <message>
+        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
+        <translation>僅在被請求時送出（僅 RTR 事件觸發，類型 253）</translation>
+    </message>
+    <message>
+        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
+        <translation>值變化時和／或每個事件計時器週期送出（事件觸發，類型 %1）</translation>
+    </message>
+    <message>
+        <source>Applied as soon as it arrives (event-driven, type %1)</source>
+        <translation>收到後立即套用（事件觸發，類型 %1）</translation>
+    </message>
+    <message>
+        <source>Reserved transmission type %1</source>
+        <translation>保留的傳輸類型 %1</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>Decoding the PDOs with the assigned dictionaries</source>
+        <translation>正在以指定的字典解碼 PDO</translation>
+    </message>
+    <message>
+        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
+        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入禁止啟動（Switch on disabled）：故障位元 3 為 0，位元 6 為 1。</translation>
+    </message>
+    <message>
+        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
+        <translation>關閉（Shutdown，轉換 2）：讓驅動器準備就緒，馬達仍不通電。送出 6040h = 0006h。預期進入準備啟動（Ready to switch on）：位元 0 與 5 為 1，位元 6 為 0。</translation>
+    </message>
+    <message>
+        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
+        <translation>啟動（Switch on，轉換 3）：開啟功率級，馬達尚未通電；需要主電源。送出 6040h = 0007h。預期進入已啟動（Switched on）：位元 0、1、4（電壓已啟用）與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
+        <translation>運轉致能（Enable operation，轉換 4）：馬達通電，保持位置並依命令動作。送出 6040h = 000Fh。預期進入運轉致能（Operation enabled）：位元 0、1、2 與 5 為 1。</translation>
+    </message>
+    <message>
+        <source>booting (boot-up)</source>
+        <translation>開機中（boot-up）</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>running (operational)</source>
+        <translation>運轉中（操作狀態）</translation>
+    </message>
+    <message>
+        <source>ready (pre-operational)</source>
+        <translation>就緒（預操作狀態）</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>已偵測</translation>
+    </message>
+</context>
+<context>
+    <name>TraceFilter</name>
+    <message>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <translation>篩選：「%1」不是節點 ID（0-127）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
+    </message>
+    <message>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
+    </message>
+    <message>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
+    </message>
+    <message>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
+    </message>
+    <message>
+        <source>Grouping SDO transfers</source>
+        <translation>正在將 SDO 傳輸分組</translation>
+    </message>
+    <message>
+        <source>Filtering</source>
+        <translation>篩選中</translation>
+    </message>
+</context>
+<context>
+    <name>WizardFramesPane</name>
+    <message>
+        <source>Time (s)</source>
+        <translation>時間（秒）</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>資料</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含義</translation>
+    </message>
+</context>
+<context>
+    <name>WizardMenu</name>
+    <message>
+        <source>Baud rate and node-ID…</source>
+        <translation>鮑率與節點 ID…</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable step-through…</source>
+        <translation>CiA 402 逐步致能…</translation>
+    </message>
+    <message>
+        <source>PDO mapping…</source>
+        <translation>PDO 映射…</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
         <translation>取消</translation>
@@ -93,7 +1057,7 @@
     </message>
 </context>
 <context>
-    <name>ConnectDialog</name>
+    <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
         <translation>連線到 CAN 總線</translation>
@@ -308,409 +1272,14 @@
     </message>
 </context>
 <context>
-    <name>ConsoleDock</name>
+    <name>coscope::gui::ConsoleDock</name>
     <message>
         <source>Console</source>
         <translation>主控台</translation>
     </message>
 </context>
 <context>
-    <name>CoreText</name>
-    <message>
-        <source>Not ready to switch on</source>
-        <translation>初始化中</translation>
-    </message>
-    <message>
-        <source>Switch on disabled</source>
-        <translation>禁止啟動</translation>
-    </message>
-    <message>
-        <source>Ready to switch on</source>
-        <translation>準備啟動</translation>
-    </message>
-    <message>
-        <source>Switched on</source>
-        <translation>已啟動</translation>
-    </message>
-    <message>
-        <source>Operation enabled</source>
-        <translation>運轉致能</translation>
-    </message>
-    <message>
-        <source>Quick stop active</source>
-        <translation>快速停止中</translation>
-    </message>
-    <message>
-        <source>Fault reaction active</source>
-        <translation>故障反應中</translation>
-    </message>
-    <message>
-        <source>Fault</source>
-        <translation>故障</translation>
-    </message>
-    <message>
-        <source>Unknown state</source>
-        <translation>未知狀態</translation>
-    </message>
-    <message>
-        <source>ready to switch on</source>
-        <translation>準備啟動</translation>
-    </message>
-    <message>
-        <source>switched on</source>
-        <translation>已啟動</translation>
-    </message>
-    <message>
-        <source>operation enabled</source>
-        <translation>運轉致能</translation>
-    </message>
-    <message>
-        <source>fault</source>
-        <translation>故障</translation>
-    </message>
-    <message>
-        <source>voltage enabled</source>
-        <translation>電壓已啟用</translation>
-    </message>
-    <message>
-        <source>quick stop</source>
-        <translation>快速停止</translation>
-    </message>
-    <message>
-        <source>switch on disabled</source>
-        <translation>禁止啟動</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>警告</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 8)</source>
-        <translation>製造商定義（位元 8）</translation>
-    </message>
-    <message>
-        <source>remote</source>
-        <translation>遠端</translation>
-    </message>
-    <message>
-        <source>target reached</source>
-        <translation>已到達目標</translation>
-    </message>
-    <message>
-        <source>internal limit active</source>
-        <translation>內部限制作用中</translation>
-    </message>
-    <message>
-        <source>operation mode specific (bit 12)</source>
-        <translation>依操作模式而定（位元 12）</translation>
-    </message>
-    <message>
-        <source>operation mode specific (bit 13)</source>
-        <translation>依操作模式而定（位元 13）</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 14)</source>
-        <translation>製造商定義（位元 14）</translation>
-    </message>
-    <message>
-        <source>manufacturer specific (bit 15)</source>
-        <translation>製造商定義（位元 15）</translation>
-    </message>
-    <message>
-        <source>Shutdown</source>
-        <translation>關閉（Shutdown）</translation>
-    </message>
-    <message>
-        <source>Switch on</source>
-        <translation>啟動（Switch on）</translation>
-    </message>
-    <message>
-        <source>Switch on + enable operation</source>
-        <translation>啟動＋運轉致能</translation>
-    </message>
-    <message>
-        <source>Disable voltage</source>
-        <translation>切斷電壓（Disable voltage）</translation>
-    </message>
-    <message>
-        <source>Quick stop</source>
-        <translation>快速停止</translation>
-    </message>
-    <message>
-        <source>Disable operation</source>
-        <translation>禁止運轉（Disable operation）</translation>
-    </message>
-    <message>
-        <source>Enable operation</source>
-        <translation>運轉致能</translation>
-    </message>
-    <message>
-        <source>Fault reset</source>
-        <translation>故障重置</translation>
-    </message>
-    <message>
-        <source>Switch on / disable operation</source>
-        <translation>啟動／禁止運轉</translation>
-    </message>
-    <message>
-        <source>No command</source>
-        <translation>無命令</translation>
-    </message>
-    <message>
-        <source>No mode</source>
-        <translation>無模式</translation>
-    </message>
-    <message>
-        <source>Profile position (PP)</source>
-        <translation>輪廓位置（PP）</translation>
-    </message>
-    <message>
-        <source>Velocity (VL)</source>
-        <translation>速度（VL）</translation>
-    </message>
-    <message>
-        <source>Profile velocity (PV)</source>
-        <translation>輪廓速度（PV）</translation>
-    </message>
-    <message>
-        <source>Profile torque (PT)</source>
-        <translation>輪廓扭矩（PT）</translation>
-    </message>
-    <message>
-        <source>Homing (HM)</source>
-        <translation>原點復歸（HM）</translation>
-    </message>
-    <message>
-        <source>Interpolated position (IP)</source>
-        <translation>補間位置（IP）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous position (CSP)</source>
-        <translation>週期同步位置（CSP）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous velocity (CSV)</source>
-        <translation>週期同步速度（CSV）</translation>
-    </message>
-    <message>
-        <source>Cyclic synchronous torque (CST)</source>
-        <translation>週期同步扭矩（CST）</translation>
-    </message>
-    <message>
-        <source>pp</source>
-        <translation>pp</translation>
-    </message>
-    <message>
-        <source>vl</source>
-        <translation>vl</translation>
-    </message>
-    <message>
-        <source>pv</source>
-        <translation>pv</translation>
-    </message>
-    <message>
-        <source>pt</source>
-        <translation>pt</translation>
-    </message>
-    <message>
-        <source>hm</source>
-        <translation>hm</translation>
-    </message>
-    <message>
-        <source>ip</source>
-        <translation>ip</translation>
-    </message>
-    <message>
-        <source>csp</source>
-        <translation>csp</translation>
-    </message>
-    <message>
-        <source>csv</source>
-        <translation>csv</translation>
-    </message>
-    <message>
-        <source>cst</source>
-        <translation>cst</translation>
-    </message>
-    <message>
-        <source>Start</source>
-        <translation>啟動</translation>
-    </message>
-    <message>
-        <source>Stop</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>Enter pre-operational</source>
-        <translation>進入預操作狀態</translation>
-    </message>
-    <message>
-        <source>Reset node</source>
-        <translation>重置節點</translation>
-    </message>
-    <message>
-        <source>Reset communication</source>
-        <translation>重置通訊</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>上線（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>Operational</source>
-        <translation>操作狀態</translation>
-    </message>
-    <message>
-        <source>Pre-operational</source>
-        <translation>預操作狀態</translation>
-    </message>
-    <message>
-        <source>Toggle bit not alternated</source>
-        <translation>切換位元未交替</translation>
-    </message>
-    <message>
-        <source>SDO protocol timed out</source>
-        <translation>SDO 協定逾時</translation>
-    </message>
-    <message>
-        <source>Client/server command specifier not valid or unknown</source>
-        <translation>用戶端／伺服器命令識別碼無效或未知</translation>
-    </message>
-    <message>
-        <source>Invalid block size (block mode only)</source>
-        <translation>區塊大小無效（僅限區塊模式）</translation>
-    </message>
-    <message>
-        <source>Invalid sequence number (block mode only)</source>
-        <translation>序號無效（僅限區塊模式）</translation>
-    </message>
-    <message>
-        <source>CRC error (block mode only)</source>
-        <translation>CRC 錯誤（僅限區塊模式）</translation>
-    </message>
-    <message>
-        <source>Out of memory</source>
-        <translation>記憶體不足</translation>
-    </message>
-    <message>
-        <source>Unsupported access to an object</source>
-        <translation>不支援的物件存取方式</translation>
-    </message>
-    <message>
-        <source>Attempt to read a write-only object</source>
-        <translation>嘗試讀取唯寫物件</translation>
-    </message>
-    <message>
-        <source>Attempt to write a read-only object</source>
-        <translation>嘗試寫入唯讀物件</translation>
-    </message>
-    <message>
-        <source>Object does not exist in the object dictionary</source>
-        <translation>物件字典中沒有此物件</translation>
-    </message>
-    <message>
-        <source>Object cannot be mapped to the PDO</source>
-        <translation>物件無法映射到 PDO</translation>
-    </message>
-    <message>
-        <source>The number and length of the objects to be mapped would exceed the PDO length</source>
-        <translation>要映射的物件數量與長度會超過 PDO 長度</translation>
-    </message>
-    <message>
-        <source>General parameter incompatibility reason</source>
-        <translation>一般性參數不相容</translation>
-    </message>
-    <message>
-        <source>General internal incompatibility in the device</source>
-        <translation>裝置內部一般性不相容</translation>
-    </message>
-    <message>
-        <source>Access failed due to a hardware error</source>
-        <translation>硬體錯誤導致存取失敗</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter does not match</source>
-        <translation>資料類型不符，服務參數長度不符</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too high</source>
-        <translation>資料類型不符，服務參數長度過長</translation>
-    </message>
-    <message>
-        <source>Data type does not match, length of service parameter too low</source>
-        <translation>資料類型不符，服務參數長度過短</translation>
-    </message>
-    <message>
-        <source>Sub-index does not exist</source>
-        <translation>子索引不存在</translation>
-    </message>
-    <message>
-        <source>Invalid value for parameter (download only)</source>
-        <translation>參數值無效（僅限下載）</translation>
-    </message>
-    <message>
-        <source>Value of parameter written too high (download only)</source>
-        <translation>寫入的參數值過高（僅限下載）</translation>
-    </message>
-    <message>
-        <source>Value of parameter written too low (download only)</source>
-        <translation>寫入的參數值過低（僅限下載）</translation>
-    </message>
-    <message>
-        <source>Maximum value is less than minimum value</source>
-        <translation>最大值小於最小值</translation>
-    </message>
-    <message>
-        <source>Resource not available: SDO connection</source>
-        <translation>資源不可用：SDO 連線</translation>
-    </message>
-    <message>
-        <source>General error</source>
-        <translation>一般錯誤</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application</source>
-        <translation>資料無法傳送或儲存到應用程式</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of local control</source>
-        <translation>因本地控制，資料無法傳送或儲存到應用程式</translation>
-    </message>
-    <message>
-        <source>Data cannot be transferred or stored to the application because of the present device state</source>
-        <translation>因裝置目前的狀態，資料無法傳送或儲存到應用程式</translation>
-    </message>
-    <message>
-        <source>Object dictionary dynamic generation fails or no object dictionary is present</source>
-        <translation>物件字典動態產生失敗，或沒有物件字典</translation>
-    </message>
-    <message>
-        <source>No data available</source>
-        <translation>沒有可用的資料</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>已關閉</translation>
-    </message>
-    <message>
-        <source>opening</source>
-        <translation>開啟中</translation>
-    </message>
-    <message>
-        <source>open</source>
-        <translation>已開啟</translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation>錯誤</translation>
-    </message>
-</context>
-<context>
-    <name>DcfApplyDialog</name>
+    <name>coscope::gui::DcfApplyDialog</name>
     <message>
         <source>Apply DCF to node %1</source>
         <translation>將 DCF 套用到節點 %1</translation>
@@ -769,25 +1338,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402Fault</name>
-    <message>
-        <source>Error code (603Fh) %1h</source>
-        <extracomment>CiA 402 wizard, a drive fault: %1 = the error code in hex</extracomment>
-        <translation>錯誤碼（603Fh）%1h</translation>
-    </message>
-    <message>
-        <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
-        <translation>——廠商異警 %1</translation>
-    </message>
-    <message>
-        <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
-        <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402FramesTabs</name>
+    <name>coscope::gui::Ds402FramesTabs</name>
     <message>
         <source>Frames (requests and responses)</source>
         <translation>封包（請求與回應）</translation>
@@ -798,7 +1349,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402ModeBox</name>
+    <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
         <translation>操作模式（6060h / 6061h）</translation>
@@ -829,7 +1380,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402MotionPlot</name>
+    <name>coscope::gui::Ds402MotionPlot</name>
     <message>
         <source>position 6064h</source>
         <translation>位置 6064h</translation>
@@ -852,18 +1403,14 @@
     </message>
 </context>
 <context>
-    <name>Ds402StateDiagram</name>
+    <name>coscope::gui::Ds402StateDiagram</name>
     <message>
         <source>State not read yet</source>
         <translation>尚未讀取狀態</translation>
     </message>
-    <message>
-        <source>13 any fault</source>
-        <translation>13 任何故障</translation>
-    </message>
 </context>
 <context>
-    <name>Ds402StatusPanel</name>
+    <name>coscope::gui::Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
         <translation>狀態字元（6041h）：未讀取</translation>
@@ -882,7 +1429,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402StepBar</name>
+    <name>coscope::gui::Ds402StepBar</name>
     <message>
         <source>Step through — one button per transition</source>
         <translation>逐步執行 — 每個狀態轉換一個按鈕</translation>
@@ -921,7 +1468,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402TestMoveBox</name>
+    <name>coscope::gui::Ds402TestMoveBox</name>
     <message>
         <source>Test move (optional, small limits)</source>
         <translation>測試運轉（選用，小範圍限制）</translation>
@@ -976,22 +1523,7 @@
     </message>
 </context>
 <context>
-    <name>Ds402VendorNotes</name>
-    <message>
-        <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation>P1-01 必須為 0x0C（標準 CANopen 模式），否則驅動器會忽略控制字元。伺服啟動（Servo On）時請勿送出 NMT Reset Node：驅動器會發出 AL401。</translation>
-    </message>
-    <message>
-        <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation>H02-00 必須為 8（CANopen 控制），否則驅動器會忽略控制字元。</translation>
-    </message>
-    <message>
-        <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
-        <translation>DEXMART DEV 沒有 CiA 402 狀態機：它的兩台馬達是透過 Multi-Drive 物件（3051h/3052h）控制。請改用物件字典面板。</translation>
-    </message>
-</context>
-<context>
-    <name>Ds402Wizard</name>
+    <name>coscope::gui::Ds402Wizard</name>
     <message>
         <source>CiA 402 enable step-through</source>
         <translation>CiA 402 逐步致能</translation>
@@ -1322,66 +1854,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventLog</name>
-    <message>
-        <source>EMCY reset</source>
-        <translation>EMCY 重置</translation>
-    </message>
-    <message>
-        <source>SDO abort</source>
-        <translation>SDO 中止</translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation>NMT 狀態</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>上線（Boot-up）</translation>
-    </message>
-    <message>
-        <source>NMT command</source>
-        <translation>NMT 命令</translation>
-    </message>
-    <message>
-        <source>Heartbeat timeout</source>
-        <translation>心跳逾時</translation>
-    </message>
-    <message>
-        <source>Bus error</source>
-        <translation>總線錯誤</translation>
-    </message>
-    <message>
-        <source>Dropped frames</source>
-        <translation>遺失的封包</translation>
-    </message>
-    <message>
-        <source>Info</source>
-        <translation>資訊</translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation>所有節點</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>節點 %1</translation>
-    </message>
-    <message>
-        <source>Heartbeat back after timeout</source>
-        <translation>逾時後心跳恢復</translation>
-    </message>
-    <message>
-        <source>State %1</source>
-        <translation>狀態 %1</translation>
-    </message>
-    <message>
-        <source>No heartbeat for %1 ms (period %2 ms)</source>
-        <translation>%1 ms 內沒有心跳（週期 %2 ms）</translation>
-    </message>
-</context>
-<context>
-    <name>EventsDock</name>
+    <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
         <translation>事件</translation>
@@ -1392,7 +1865,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>EventsModel</name>
+    <name>coscope::gui::EventsModel</name>
     <message>
         <source>Time (s)</source>
         <translation>時間（秒）</translation>
@@ -1415,186 +1888,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>FrameDecoder</name>
-    <message>
-        <source>NMT (short frame)</source>
-        <translation>NMT（短封包）</translation>
-    </message>
-    <message>
-        <source>NMT frame must carry 2 bytes</source>
-        <translation>NMT 封包必須有 2 個位元組</translation>
-    </message>
-    <message>
-        <source>all nodes</source>
-        <translation>所有節點</translation>
-    </message>
-    <message>
-        <source>node %1</source>
-        <translation>節點 %1</translation>
-    </message>
-    <message>
-        <source>NMT node control</source>
-        <translation>NMT 節點控制</translation>
-    </message>
-    <message>
-        <source>Command specifier</source>
-        <translation>命令識別碼</translation>
-    </message>
-    <message>
-        <source>Node-ID</source>
-        <translation>節點 ID</translation>
-    </message>
-    <message>
-        <source>0 (all)</source>
-        <translation>0（全部）</translation>
-    </message>
-    <message>
-        <source>Node guarding request to node %1</source>
-        <translation>對節點 %1 的節點保護請求</translation>
-    </message>
-    <message>
-        <source>Node guarding request (RTR)</source>
-        <translation>節點保護請求（RTR）</translation>
-    </message>
-    <message>
-        <source>NMT error control (empty)</source>
-        <translation>NMT 錯誤控制（空）</translation>
-    </message>
-    <message>
-        <source>error control frame without state byte</source>
-        <translation>錯誤控制封包缺少狀態位元組</translation>
-    </message>
-    <message>
-        <source>Boot-up node %1</source>
-        <translation>節點 %1 上線（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Heartbeat node %1: %2</source>
-        <translation>節點 %1 心跳：%2</translation>
-    </message>
-    <message>
-        <source>Boot-up</source>
-        <translation>上線（Boot-up）</translation>
-    </message>
-    <message>
-        <source>Heartbeat / guarding</source>
-        <translation>心跳／節點保護</translation>
-    </message>
-    <message>
-        <source>Toggle</source>
-        <translation>切換位元</translation>
-    </message>
-    <message>
-        <source>NMT state</source>
-        <translation>NMT 狀態</translation>
-    </message>
-    <message>
-        <source>EMCY node %1: error reset</source>
-        <translation>EMCY 節點 %1：錯誤重置</translation>
-    </message>
-    <message>
-        <source>EMCY node %1: %2 %3, reg %4</source>
-        <translation>EMCY 節點 %1：%2 %3，暫存器 %4</translation>
-    </message>
-    <message>
-        <source>EMCY frame shorter than 8 bytes</source>
-        <translation>EMCY 封包短於 8 位元組</translation>
-    </message>
-    <message>
-        <source>Emergency</source>
-        <translation>緊急報文</translation>
-    </message>
-    <message>
-        <source>Error code</source>
-        <translation>錯誤碼</translation>
-    </message>
-    <message>
-        <source>Error register (1001h)</source>
-        <translation>錯誤暫存器（1001h）</translation>
-    </message>
-    <message>
-        <source>Bit %1</source>
-        <translation>位元 %1</translation>
-    </message>
-    <message>
-        <source>Manufacturer-specific</source>
-        <translation>製造商定義</translation>
-    </message>
-    <message>
-        <source>SDO %1 node %2 %3</source>
-        <translation>SDO %1 節點 %2 %3</translation>
-    </message>
-    <message>
-        <source>, %1 bytes</source>
-        <translation>，%1 位元組</translation>
-    </message>
-    <message>
-        <source>SDO request (client → server)</source>
-        <translation>SDO 請求（用戶端 → 伺服器）</translation>
-    </message>
-    <message>
-        <source>SDO response (server → client)</source>
-        <translation>SDO 回應（伺服器 → 用戶端）</translation>
-    </message>
-    <message>
-        <source>Command</source>
-        <translation>命令</translation>
-    </message>
-    <message>
-        <source>Index</source>
-        <translation>索引</translation>
-    </message>
-    <message>
-        <source>Sub-index</source>
-        <translation>子索引</translation>
-    </message>
-    <message>
-        <source>Abort code</source>
-        <translation>中止碼</translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation>資料</translation>
-    </message>
-    <message>
-        <source>Segment data</source>
-        <translation>分段資料</translation>
-    </message>
-    <message>
-        <source>Error frame, class %1</source>
-        <translation>錯誤封包，類別 %1</translation>
-    </message>
-    <message>
-        <source>Error frame</source>
-        <translation>錯誤封包</translation>
-    </message>
-    <message>
-        <source>SYNC counter %1</source>
-        <translation>SYNC 計數器 %1</translation>
-    </message>
-    <message>
-        <source>TIME stamp</source>
-        <translation>時間戳記（TIME）</translation>
-    </message>
-    <message>
-        <source>(empty)</source>
-        <translation>（空）</translation>
-    </message>
-    <message>
-        <source>LSS command</source>
-        <translation>LSS 命令</translation>
-    </message>
-    <message>
-        <source>(29-bit identifier, not CANopen)</source>
-        <translation>（29 位元識別碼，非 CANopen）</translation>
-    </message>
-    <message>
-        <source>%1 node %2, %3 bytes</source>
-        <translation>%1 節點 %2，%3 位元組</translation>
-    </message>
-</context>
-<context>
-    <name>FrameDetailsView</name>
+    <name>coscope::gui::FrameDetailsView</name>
     <message>
         <source>Field</source>
         <translation>欄位</translation>
@@ -1751,7 +2045,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthDock</name>
+    <name>coscope::gui::HealthDock</name>
     <message>
         <source>Health</source>
         <translation>健康狀態</translation>
@@ -1800,7 +2094,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>HealthModel</name>
+    <name>coscope::gui::HealthModel</name>
     <message>
         <source>Severity</source>
         <translation>嚴重程度</translation>
@@ -1935,7 +2229,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>JournalOfferBar</name>
+    <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
         <translation>未關閉的擷取</translation>
@@ -1954,33 +2248,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>LogLoadJob</name>
-    <message>
-        <source>Opening %1</source>
-        <translation>正在開啟 %1</translation>
-    </message>
-    <message>
-        <source>%1: cannot open</source>
-        <translation>%1：無法開啟</translation>
-    </message>
-</context>
-<context>
-    <name>LogSaveJob</name>
-    <message>
-        <source>Saving %1</source>
-        <translation>正在儲存 %1</translation>
-    </message>
-    <message>
-        <source>%1: unknown log format</source>
-        <translation>%1：未知的記錄檔格式</translation>
-    </message>
-    <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
-        <translation>%1：無法寫入格式「%2」</translation>
-    </message>
-</context>
-<context>
-    <name>MainWindow</name>
+    <name>coscope::gui::MainWindow</name>
     <message>
         <source>Capture stopped</source>
         <translation>擷取已停止</translation>
@@ -2160,7 +2428,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdChangePage</name>
+    <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要變更的項目</translation>
@@ -2207,7 +2475,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdFindPage</name>
+    <name>coscope::gui::NodeIdFindPage</name>
     <message>
         <source>Find the device</source>
         <translation>找出裝置</translation>
@@ -2280,7 +2548,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdRunPage</name>
+    <name>coscope::gui::NodeIdRunPage</name>
     <message>
         <source>Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.</source>
         <translation>模擬執行：尚未送出任何內容。以下正是 CoScope 將要送出的內容與原因。</translation>
@@ -2323,7 +2591,7 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
-    <name>NodeIdWizard</name>
+    <name>coscope::gui::NodeIdWizard</name>
     <message>
         <source>Baud rate and node-ID — CoScope</source>
         <translation>鮑率與節點 ID — CoScope</translation>
@@ -2486,7 +2754,7 @@ What to check: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesDock</name>
+    <name>coscope::gui::NodesDock</name>
     <message>
         <source>Nodes</source>
         <translation>節點</translation>
@@ -2637,7 +2905,7 @@ Frame: %3</source>
     </message>
 </context>
 <context>
-    <name>NodesModel</name>
+    <name>coscope::gui::NodesModel</name>
     <message>
         <source>No heartbeat</source>
         <translation>無心跳</translation>
@@ -2740,7 +3008,7 @@ Software version (100Ah): %3</source>
     </message>
 </context>
 <context>
-    <name>ObjectDictionaryDock</name>
+    <name>coscope::gui::ObjectDictionaryDock</name>
     <message>
         <source>Object Dictionary</source>
         <translation>物件字典</translation>
@@ -3025,7 +3293,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
 </context>
 <context>
-    <name>OdTreeModel</name>
+    <name>coscope::gui::OdTreeModel</name>
     <message>
         <source>Index</source>
         <translation>索引</translation>
@@ -3058,45 +3326,9 @@ SDO 下載 %n 位元組：%1</numerusform>
         <source>Unit</source>
         <translation>單位</translation>
     </message>
-    <message>
-        <source>sub %1</source>
-        <translation>子索引 %1</translation>
-    </message>
-    <message>
-        <source>reading…</source>
-        <translation>讀取中…</translation>
-    </message>
-    <message>
-        <source>writing…</source>
-        <translation>寫入中…</translation>
-    </message>
-    <message>
-        <source>, PDO-mappable</source>
-        <translation>，可映射到 PDO</translation>
-    </message>
-    <message>
-        <source>
-Limits: %1 … %2</source>
-        <translation>
-範圍：%1 … %2</translation>
-    </message>
-    <message>
-        <source>
-Differs from the default</source>
-        <translation>
-與預設值不同</translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3</source>
-        <translation>節點 %1 %2：%3</translation>
-    </message>
-    <message>
-        <source>node %1 %2: %3 (bytes %4)</source>
-        <translation>節點 %1 %2：%3（位元組 %4）</translation>
-    </message>
 </context>
 <context>
-    <name>PdoApplyPage</name>
+    <name>coscope::gui::PdoApplyPage</name>
     <message>
         <source>Check and apply</source>
         <translation>檢查並套用</translation>
@@ -3131,7 +3363,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoChoosePage</name>
+    <name>coscope::gui::PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
         <translation>哪台驅動器、哪個報文</translation>
@@ -3218,26 +3450,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoDbcExport</name>
-    <message>
-        <source>%1: cannot write the DBC file (%2)</source>
-        <translation>%1：無法寫入 DBC 檔案（%2）</translation>
-    </message>
-    <message>
-        <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
-    </message>
-    <message>
-        <source>Export PDO layout as DBC</source>
-        <translation>將 PDO 配置匯出為 DBC</translation>
-    </message>
-    <message>
-        <source>DBC file (*.dbc)</source>
-        <translation>DBC 檔案（*.dbc）</translation>
-    </message>
-</context>
-<context>
-    <name>PdoFrameLayout</name>
+    <name>coscope::gui::PdoFrameLayout</name>
     <message>
         <source>byte %1</source>
         <translation>位元組 %1</translation>
@@ -3252,7 +3465,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoMappingPage</name>
+    <name>coscope::gui::PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
         <translation>報文攜帶的內容</translation>
@@ -3347,7 +3560,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoTimingPage</name>
+    <name>coscope::gui::PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
         <translation>報文何時送出</translation>
@@ -3474,138 +3687,7 @@ Differs from the default</source>
     </message>
 </context>
 <context>
-    <name>PdoVendorNotes</name>
-    <message>
-        <source>Delta ASDA-A2: the drive speaks standard CANopen only when P1-01 (2101h) = 0x0C; check it first.</source>
-        <translation>台達 ASDA-A2：只有在 P1-01（2101h）= 0x0C 時，驅動器才使用標準 CANopen；請先檢查此參數。</translation>
-    </message>
-    <message>
-        <source>Delta writes every P-parameter (2000h–2FFFh) to EEPROM on each SDO write; P-parameters written by PDO are stored only when P3-11 X = 1 (wears the EEPROM).</source>
-        <translation>台達每次以 SDO 寫入 P 參數（2000h–2FFFh）都會寫入 EEPROM；以 PDO 寫入的 P 參數只有在 P3-11 X = 1 時才會儲存（會耗損 EEPROM）。</translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. Two PDOs with the same COB-ID within 1 ms raise alarm AL112.</source>
-        <translation>每個 PDO 最多 8 個物件。兩個 PDO 在 1 ms 內使用相同的 COB-ID 會觸發異警 AL112。</translation>
-    </message>
-    <message>
-        <source>RPDOs with a transmission type 0–240 act at the next SYNC: the master must send SYNC every cycle.</source>
-        <translation>傳輸類型 0–240 的 RPDO 在下一個 SYNC 生效：主站必須在每個週期送出 SYNC。</translation>
-    </message>
-    <message>
-        <source>AIMOTOR: CiA 402 objects act only when H02-00 (2002h:01) = 8 (CANopen control).</source>
-        <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
-    </message>
-    <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
-        <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
-    </message>
-    <message>
-        <source>Only CiA 402 objects (6000h–6FFFh) can be mapped; at most 8 objects per PDO.</source>
-        <translation>只能映射 CiA 402 物件（6000h–6FFFh）；每個 PDO 最多 8 個物件。</translation>
-    </message>
-    <message>
-        <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation>DEXMART DEV：COB-ID 為唯讀，重新映射時無法關閉 PDO：映射會在報文使用中變更。</translation>
-    </message>
-    <message>
-        <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
-        <translation>每個 PDO 最多 8 個物件。上電時的映射來自參數 09-26；在此所做的變更若未儲存，斷電後就會遺失。</translation>
-    </message>
-    <message>
-        <source>Two motors: the M1/M2 values live in the Multi-Drive objects (3046h status, 3051h commands).</source>
-        <translation>兩台馬達：M1/M2 的值位於 Multi-Drive 物件中（3046h 狀態，3051h 命令）。</translation>
-    </message>
-    <message>
-        <source>No dictionary is known for this node: objects cannot be offered by name. Scan the node (Nodes dock) or assign a dictionary first.</source>
-        <translation>此節點沒有已知的字典：無法依名稱列出物件。請先掃描節點（節點面板）或指定字典。</translation>
-    </message>
-    <message>
-        <source>The drive did not answer in time. Check that it is powered, that its node-ID is right, and the cable, termination and bit rate.</source>
-        <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
-    </message>
-    <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
-        <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
-    </message>
-    <message>
-        <source>Too much data for one PDO on this drive: use fewer objects or smaller ones (at most 64 bits; some drives allow at most 8 objects).</source>
-        <translation>此驅動器的單一 PDO 資料過多：請減少物件或改用較短的物件（最多 64 位元；部分驅動器每個 PDO 最多 8 個物件）。</translation>
-    </message>
-    <message>
-        <source>The drive reports a general parameter incompatibility: check that the PDO number exists and the values fit together.</source>
-        <translation>驅動器回報一般性參數不相容：請確認此 PDO 編號存在，且各數值彼此相符。</translation>
-    </message>
-    <message>
-        <source>This parameter is read-only on this drive (some drives fix the COB-ID). Keep the current value.</source>
-        <translation>此參數在此驅動器上為唯讀（部分驅動器的 COB-ID 固定）。請保留目前的值。</translation>
-    </message>
-    <message>
-        <source>The drive does not have this object: this PDO number may not exist on it.</source>
-        <translation>驅動器沒有此物件：它可能沒有這個編號的 PDO。</translation>
-    </message>
-    <message>
-        <source>The drive refused the value: check the allowed range (transmission type, inhibit time, event timer).</source>
-        <translation>驅動器拒絕此值：請檢查允許的範圍（傳輸類型、禁止時間、事件計時器）。</translation>
-    </message>
-    <message>
-        <source>The drive does not accept this in its present state. It must be pre-operational (the wizard sends that first)</source>
-        <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
-    </message>
-    <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
-        <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
-    </message>
-    <message>
-        <source>The values read back differ from those written: the drive may have adjusted or ignored one. Read the PDO again and compare.</source>
-        <translation>讀回的值與寫入的不同：驅動器可能調整或忽略了其中一個。請重新讀取 PDO 並比較。</translation>
-    </message>
-    <message>
-        <source>Sent at the next SYNC after a value changed (synchronous acyclic, type 0)</source>
-        <translation>值變化後在下一個 SYNC 送出（同步非週期，類型 0）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 0)</source>
-        <translation>在下一個 SYNC 套用（同步，類型 0）</translation>
-    </message>
-    <message>
-        <source>Sent on every SYNC (synchronous cyclic, type 1)</source>
-        <translation>每個 SYNC 都送出（同步週期，類型 1）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type 1)</source>
-        <translation>在下一個 SYNC 套用（同步，類型 1）</translation>
-    </message>
-    <message>
-        <source>Sent once every %1 SYNCs (synchronous cyclic, type %1)</source>
-        <translation>每 %1 個 SYNC 送出一次（同步週期，類型 %1）</translation>
-    </message>
-    <message>
-        <source>Applied at the next SYNC (synchronous, type %1)</source>
-        <translation>在下一個 SYNC 套用（同步，類型 %1）</translation>
-    </message>
-    <message>
-        <source>Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)</source>
-        <translation>在 SYNC 取樣，僅在被請求時送出（僅 RTR 同步，類型 252）</translation>
-    </message>
-    <message>
-        <source>Sent only when asked for (RTR-only event-driven, type 253)</source>
-        <translation>僅在被請求時送出（僅 RTR 事件觸發，類型 253）</translation>
-    </message>
-    <message>
-        <source>Sent when a value changes and/or every event-timer period (event-driven, type %1)</source>
-        <translation>值變化時和／或每個事件計時器週期送出（事件觸發，類型 %1）</translation>
-    </message>
-    <message>
-        <source>Applied as soon as it arrives (event-driven, type %1)</source>
-        <translation>收到後立即套用（事件觸發，類型 %1）</translation>
-    </message>
-    <message>
-        <source>Reserved transmission type %1</source>
-        <translation>保留的傳輸類型 %1</translation>
-    </message>
-</context>
-<context>
-    <name>PdoWizard</name>
+    <name>coscope::gui::PdoWizard</name>
     <message>
         <source>PDO mapping — CoScope</source>
         <translation>PDO 映射 — CoScope</translation>
@@ -3706,7 +3788,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotDock</name>
+    <name>coscope::gui::PlotDock</name>
     <message>
         <source>Plot</source>
         <translation>圖表</translation>
@@ -3885,7 +3967,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>PlotView</name>
+    <name>coscope::gui::PlotView</name>
     <message>
         <source>Pick signals on the left</source>
         <translation>請在左側選擇訊號</translation>
@@ -3900,50 +3982,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>QObject</name>
-    <message>
-        <source>Decoding the PDOs with the assigned dictionaries</source>
-        <translation>正在以指定的字典解碼 PDO</translation>
-    </message>
-    <message>
-        <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入禁止啟動（Switch on disabled）：故障位元 3 為 0，位元 6 為 1。</translation>
-    </message>
-    <message>
-        <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
-        <translation>關閉（Shutdown，轉換 2）：讓驅動器準備就緒，馬達仍不通電。送出 6040h = 0006h。預期進入準備啟動（Ready to switch on）：位元 0 與 5 為 1，位元 6 為 0。</translation>
-    </message>
-    <message>
-        <source>Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.</source>
-        <translation>啟動（Switch on，轉換 3）：開啟功率級，馬達尚未通電；需要主電源。送出 6040h = 0007h。預期進入已啟動（Switched on）：位元 0、1、4（電壓已啟用）與 5 為 1。</translation>
-    </message>
-    <message>
-        <source>Enable operation (transition 4): energises the motor, which then holds its position and follows commands. Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.</source>
-        <translation>運轉致能（Enable operation，轉換 4）：馬達通電，保持位置並依命令動作。送出 6040h = 000Fh。預期進入運轉致能（Operation enabled）：位元 0、1、2 與 5 為 1。</translation>
-    </message>
-    <message>
-        <source>booting (boot-up)</source>
-        <translation>開機中（boot-up）</translation>
-    </message>
-    <message>
-        <source>stopped</source>
-        <translation>停止</translation>
-    </message>
-    <message>
-        <source>running (operational)</source>
-        <translation>運轉中（操作狀態）</translation>
-    </message>
-    <message>
-        <source>ready (pre-operational)</source>
-        <translation>就緒（預操作狀態）</translation>
-    </message>
-    <message>
-        <source>seen</source>
-        <translation>已偵測</translation>
-    </message>
-</context>
-<context>
-    <name>RawSignalDialog</name>
+    <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
         <translation>加入原始訊號</translation>
@@ -4058,7 +4097,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptPreview</name>
+    <name>coscope::gui::ScriptPreview</name>
     <message>
         <source>What it does</source>
         <translation>用途</translation>
@@ -4121,7 +4160,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>ScriptRunPanel</name>
+    <name>coscope::gui::ScriptRunPanel</name>
     <message>
         <source>Run</source>
         <translation>執行</translation>
@@ -4166,7 +4205,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>SignalPicker</name>
+    <name>coscope::gui::SignalPicker</name>
     <message>
         <source>Search signals (name, object, node)</source>
         <translation>搜尋訊號（名稱、物件、節點）</translation>
@@ -4217,7 +4256,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceDock</name>
+    <name>coscope::gui::TraceDock</name>
     <message>
         <source>Trace</source>
         <translation>追蹤</translation>
@@ -4332,42 +4371,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>TraceFilter</name>
-    <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
-        <translation>篩選：「%1」不是節點 ID（0-127）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
-        <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
-    </message>
-    <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
-        <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
-        <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
-    </message>
-    <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
-        <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
-    </message>
-    <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
-        <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
-    </message>
-    <message>
-        <source>Grouping SDO transfers</source>
-        <translation>正在將 SDO 傳輸分組</translation>
-    </message>
-    <message>
-        <source>Filtering</source>
-        <translation>篩選中</translation>
-    </message>
-</context>
-<context>
-    <name>TraceModel</name>
+    <name>coscope::gui::TraceModel</name>
     <message>
         <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
@@ -4424,30 +4428,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardFramesPane</name>
+    <name>coscope::gui::WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
         <translation>此精靈在總線上的封包</translation>
     </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>時間（秒）</translation>
-    </message>
-    <message>
-        <source>Dir</source>
-        <translation>方向</translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation>資料</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>含義</translation>
-    </message>
 </context>
 <context>
-    <name>WizardGuard</name>
+    <name>coscope::gui::WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
         <translation>未連線到任何總線，因此無法傳送。請先連線到總線；您仍可先準備步驟並另存為腳本。</translation>
@@ -4466,22 +4454,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
-    <name>WizardMenu</name>
-    <message>
-        <source>Baud rate and node-ID…</source>
-        <translation>鮑率與節點 ID…</translation>
-    </message>
-    <message>
-        <source>CiA 402 enable step-through…</source>
-        <translation>CiA 402 逐步致能…</translation>
-    </message>
-    <message>
-        <source>PDO mapping…</source>
-        <translation>PDO 映射…</translation>
-    </message>
-</context>
-<context>
-    <name>Workspace</name>
+    <name>coscope::gui::Workspace</name>
     <message>
         <source>cannot create the folder %1</source>
         <translation>無法建立資料夾 %1</translation>

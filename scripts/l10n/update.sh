@@ -4,12 +4,10 @@
 # Usage: scripts/l10n/update.sh [TABLE.json]
 set -e
 cd "$(dirname "$0")/../.."
-LUPDATE=/usr/lib/qt6/bin/lupdate
+# The build's target, not lupdate over app/gui: only with the GUI library's include paths does
+# lupdate name the contexts as tr() looks them up at run time (coscope::gui::MainWindow).
 run_lupdate() {
-    for l in zh_TW zh_CN; do
-        "$LUPDATE" -silent app/gui -ts resources/translations/coscope_$l.ts -target-language $l \
-            -locations none -no-ui-lines -no-obsolete
-    done
+    cmake --build --preset dev --target update_translations >/dev/null
 }
 run_lupdate
 if [ -n "$1" ]; then

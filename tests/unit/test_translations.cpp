@@ -88,11 +88,20 @@ private slots:
         const QString copy = dir.filePath(QStringLiteral("copy.ts"));
         QVERIFY(QFile::copy(ts, copy));
         QFile::setPermissions(copy, QFile::ReadOwner | QFile::WriteOwner);
+        // The same lupdate project as the update_translations target (sources and include paths of
+        // the GUI library: contexts are the classes' full names, coscope::gui::MainWindow).
+        const QString project = dir.filePath(QStringLiteral("project.json"));
+        QProcess gen;
+        gen.setProcessChannelMode(QProcess::MergedChannels);
+        gen.start(QStringLiteral(COSCOPE_CMAKE_COMMAND), {QStringLiteral("-DIN_FILE=" COSCOPE_LUPDATE_PROJECT), QStringLiteral("-DOUT_FILE=") + project,
+                                                          QStringLiteral("-P"), QStringLiteral(COSCOPE_LUPDATE_GENERATOR)});
+        QVERIFY(gen.waitForFinished(60000));
+        QVERIFY2(gen.exitCode() == 0, gen.readAll().constData());
         QProcess lupdate;
         lupdate.setProcessChannelMode(QProcess::MergedChannels);
-        lupdate.start(QStringLiteral(COSCOPE_LUPDATE_PATH),
-                      {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"), QStringLiteral("-no-ui-lines"),
-                       QStringLiteral(COSCOPE_SOURCE_DIR "/app/gui"), QStringLiteral("-ts"), copy});
+        lupdate.start(QStringLiteral(COSCOPE_LUPDATE_PATH), {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+                                                             QStringLiteral("-no-ui-lines"), QStringLiteral("-project"), project,
+                                                             QStringLiteral("-ts"), copy});
         QVERIFY(lupdate.waitForFinished(120000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         int messages = 0;
