@@ -2149,7 +2149,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>SDO p99 ms</source>
-        <translation>SDO p99 ms</translation>
+        <translation>SDO 响应 p99（ms）</translation>
     </message>
     <message>
         <source>SDO aborts</source>
