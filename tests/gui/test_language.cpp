@@ -159,7 +159,7 @@ class TestLanguage : public QObject {
 private slots:
     void initTestCase() {
         eds::installSimulatorDictionaries();
-        QSettings().clear();
+        QSettings().remove(QStringLiteral("ui/language"));
         language::apply(QStringLiteral("en"));
     }
 
