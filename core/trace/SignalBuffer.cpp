@@ -8,9 +8,13 @@
 namespace coscope {
 
 namespace {
-constexpr size_t kBlock1 = 64;     // samples per level-1 summary
-constexpr size_t kBlock2 = 4096;   // samples per level-2 summary
-static_assert(SignalBuffer::kChunkSize % kBlock2 == 0);
+// Pyramid levels: blocks of kFanout^(k+1) samples; the top level is the whole chunk.
+constexpr size_t kFanout = 16;
+constexpr int kLevels = 4;
+constexpr size_t kBlock[kLevels] = {16, 256, 4096, 65536};
+static_assert(kBlock[0] == kFanout && kBlock[1] == kBlock[0] * kFanout && kBlock[2] == kBlock[1] * kFanout && kBlock[3] == kBlock[2] * kFanout);
+static_assert(kBlock[kLevels - 1] == SignalBuffer::kChunkSize);
+constexpr size_t kTimeBlock = 64;  // samples per entry of a chunk's search index
 
 uint64_t bitsOf(double v) {
     if (!std::isfinite(v)) return 0;
@@ -23,14 +27,14 @@ struct SignalBuffer::Chunk {
     std::vector<int64_t> t;
     std::vector<double> v;
     std::vector<FrameNo> f;
-    std::vector<Summary> l1, l2;
+    std::vector<Summary> level[kLevels];  // level[k][j]: samples [j * kBlock[k], (j + 1) * kBlock[k])
     std::vector<int64_t> blockTime;  // time of each 64-block's first sample: searches touch few cache lines
 
     size_t size() const { return t.size(); }
     size_t lowerBound(int64_t time) const {
         const auto b = static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
-        const size_t from = b > 0 ? (b - 1) * kBlock1 : 0;
-        const size_t to = std::min(t.size(), b * kBlock1);
+        const size_t from = b > 0 ? (b - 1) * kTimeBlock : 0;
+        const size_t to = std::min(t.size(), b * kTimeBlock);
         return static_cast<size_t>(std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(from), t.begin() + static_cast<std::ptrdiff_t>(to), time) - t.begin());
     }
     bool full() const { return t.size() >= kChunkSize; }
@@ -39,21 +43,20 @@ struct SignalBuffer::Chunk {
         t.push_back(s.timeNs);
         v.push_back(s.value);
         f.push_back(s.frame);
-        if (i % kBlock1 == 0) blockTime.push_back(s.timeNs);
+        if (i % kTimeBlock == 0) blockTime.push_back(s.timeNs);
         const uint64_t b = bitsOf(s.value);
-        auto fold = [&](std::vector<Summary>& level, size_t block) {
-            if (i % block == 0) {
-                level.push_back({s.value, s.value, b, b});
-                return;
+        for (int k = 0; k < kLevels; ++k) {
+            std::vector<Summary>& lv = level[k];
+            if (i % kBlock[k] == 0) {
+                lv.push_back({s.value, s.value, b, b});
+                continue;
             }
-            Summary& m = level.back();
+            Summary& m = lv.back();
             m.min = std::min(m.min, s.value);
             m.max = std::max(m.max, s.value);
             m.andBits &= b;
             m.orBits |= b;
-        };
-        fold(l1, kBlock1);
-        fold(l2, kBlock2);
+        }
     }
 };
 
@@ -104,6 +107,11 @@ uint64_t SignalBuffer::dropped() const {
     return base_;
 }
 
+SignalPoint SignalBuffer::pointLocked(size_t r) const {
+    const Chunk& c = *chunks_[r / kChunkSize];
+    return {c.t[r % kChunkSize], c.v[r % kChunkSize]};
+}
+
 const SignalSample SignalBuffer::sampleLocked(size_t r) const {
     const Chunk& c = *chunks_[r / kChunkSize];
     const size_t i = r % kChunkSize;
@@ -115,6 +123,25 @@ size_t SignalBuffer::lowerBoundLocked(int64_t timeNs) const {
     const auto k = static_cast<size_t>(std::lower_bound(chunkStart_.begin(), chunkStart_.end(), timeNs) - chunkStart_.begin());
     if (k == 0) return 0;
     return (k - 1) * kChunkSize + chunks_[k - 1]->lowerBound(timeNs);
+}
+
+size_t SignalBuffer::lowerBoundFromLocked(int64_t timeNs, size_t from, size_t n) const {
+    // A plot's bucket edges are near each other: walk the chunk's search index forward from
+    // `from` (a few contiguous entries), then search one 64-block; a global search otherwise.
+    if (from >= n) return from;
+    const Chunk& c = *chunks_[from / kChunkSize];
+    const size_t base = from - from % kChunkSize;
+    if (c.t.back() < timeNs) return std::min(n, std::max(from, lowerBoundLocked(timeNs)));
+    size_t b = (from - base) / kTimeBlock + 1;  // first index entry after from's block
+    size_t steps = 0;
+    while (b < c.blockTime.size() && c.blockTime[b] < timeNs) {
+        if (++steps > 64) return std::min(n, std::max(from, lowerBoundLocked(timeNs)));
+        ++b;
+    }
+    // The answer lies in block b - 1 (or is block b's first sample).
+    const size_t lo = std::max(from - base, (b - 1) * kTimeBlock), hi = std::min(c.t.size(), b * kTimeBlock);
+    const auto it = std::lower_bound(c.t.begin() + static_cast<std::ptrdiff_t>(lo), c.t.begin() + static_cast<std::ptrdiff_t>(hi), timeNs);
+    return std::min(n, base + static_cast<size_t>(it - c.t.begin()));
 }
 
 SignalBuffer::Summary SignalBuffer::reduceLocked(size_t from, size_t to) const {
@@ -134,19 +161,19 @@ SignalBuffer::Summary SignalBuffer::reduceLocked(size_t from, size_t to) const {
             const uint64_t b = bitsOf(c.v[i]);
             merge({c.v[i], c.v[i], b, b});
         };
-        while (lo < hi && lo % kBlock1) raw(lo++);
-        while (lo + kBlock1 <= hi && lo % kBlock2) {
-            merge(c.l1[lo / kBlock1]);
-            lo += kBlock1;
-        }
-        while (lo + kBlock2 <= hi) {
-            merge(c.l2[lo / kBlock2]);
-            lo += kBlock2;
-        }
-        while (lo + kBlock1 <= hi) {
-            merge(c.l1[lo / kBlock1]);
-            lo += kBlock1;
-        }
+        // Up the pyramid: single samples, then ever larger blocks, until lo sits on the largest
+        // block boundary that fits; then down again: the largest whole blocks first.
+        while (lo < hi && lo % kBlock[0] != 0) raw(lo++);
+        for (int k = 0; k + 1 < kLevels; ++k)
+            while (lo + kBlock[k] <= hi && lo % kBlock[k + 1] != 0) {
+                merge(c.level[k][lo / kBlock[k]]);
+                lo += kBlock[k];
+            }
+        for (int k = kLevels - 1; k >= 0; --k)
+            while (lo + kBlock[k] <= hi) {
+                merge(c.level[k][lo / kBlock[k]]);
+                lo += kBlock[k];
+            }
         while (lo < hi) raw(lo++);
     }
     return m;
@@ -233,10 +260,10 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
         size_t end = to;
         if (b + 1 < buckets) {
             const auto edge = static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
-            end = std::clamp(lowerBoundLocked(edge), start, to);
+            end = std::min(lowerBoundFromLocked(edge, start, to), to);
         }
         if (end == start) continue;
-        const SignalSample a = sampleLocked(start), z = sampleLocked(end - 1);
+        const SignalPoint a = pointLocked(start), z = pointLocked(end - 1);
         if (end - start <= 2) {
             out.push_back({a.timeNs, valueOf(a.value)});
             if (end - start == 2) out.push_back({z.timeNs, valueOf(z.value)});

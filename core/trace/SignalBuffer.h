@@ -40,10 +40,11 @@ struct SignalRange {
 // is held for a batch (writer) or one query (reader), never across a frame loop of the other
 // side. Bounded: when `capacity` samples are exceeded the oldest chunk (65536 samples) goes.
 //
-// Min/max decimation (the plot's redraw cost follows pixels, not samples): each chunk keeps a
-// summary (min, max, AND and OR of the integer value) per block of 64 samples and per block
-// of 4096, so the extremes of any stretch cost O(log) block reads. AND/OR give the extremes
-// of one bit of the value (digital traces of 6041h/6040h bits) the same way.
+// Min/max pyramid (the plot's redraw cost follows pixels, not samples): each chunk keeps
+// summaries (min, max, AND and OR of the integer value) of blocks of 16, 256, 4096 and 65536
+// samples (the whole chunk), built as samples arrive, so the extremes of any stretch cost at
+// most ~15 block reads per level whatever the zoom and the length of the history. AND/OR give
+// the extremes of one bit of the value (digital traces of 6041h/6040h bits) the same way.
 class SignalBuffer {
 public:
     static constexpr size_t kChunkSize = 65536;
@@ -89,6 +90,8 @@ private:
     // Global sample indexes: first() is base_, the newest base_ + size - 1.
     size_t countLocked() const;
     size_t lowerBoundLocked(int64_t timeNs) const;  // first index with time >= t
+    size_t lowerBoundFromLocked(int64_t timeNs, size_t from, size_t n) const;  // same, searching forward from `from`
+    SignalPoint pointLocked(size_t global) const;  // time and value only (no frame)
     const SignalSample sampleLocked(size_t global) const;
     Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty
     std::vector<SignalSample> samplesLocked(size_t from, size_t to) const;
