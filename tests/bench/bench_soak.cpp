@@ -99,14 +99,15 @@ private:
 struct Result {
     uint64_t generated = 0, stored = 0, journaled = 0, dropped = 0, pageIns = 0, pageErrors = 0;
     double budgetReachedAt = -1, rssAtBudget = 0, rssEnd = 0, rssMaxAfter = 0, rssStart = 0, stallMs = 0;
-    double indexGrowthMiB = 0, storeMaxMiB = 0;
+    double indexGrowthMiB = 0, storeMaxMiB = 0, stallAt = 0;
+    int stalls = 0;
 };
 
 Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir) {
     Result r;
     r.rssStart = rssMiB();
     QString why;
-    const auto url = BusUrl::parse(QStringLiteral("virtualcan://soak"), &why);
+    const auto url = BusUrl::parse(QStringLiteral("sim://"), &why);
     auto bus = std::make_unique<SaturatedBus>(*url, fd, rate);
     auto store = std::make_shared<TraceStore>();
     CaptureJournal journal;
@@ -138,7 +139,11 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
     while (std::chrono::duration<double>(Clock::now() - t0).count() < seconds) {
         QApplication::processEvents(QEventLoop::AllEvents, 5);
         const qint64 now = tick.elapsed();
-        maxGapMs = std::max(maxGapMs, double(now - lastTick));
+        if (now > 2000 && double(now - lastTick) > maxGapMs) {  // after 2 s of warm-up (first paint)
+            maxGapMs = double(now - lastTick);
+            r.stallAt = now / 1000.0;
+        }
+        if (now - lastTick > 100) ++r.stalls;
         lastTick = now;
         const auto t = Clock::now();
         if (t - lastPull >= std::chrono::milliseconds(33)) {  // what TraceDock does
@@ -195,8 +200,8 @@ void report(const char* name, int rate, double seconds, size_t budget, const Res
         std::printf("resident growth after the budget: %.1f MiB, ratio to budget %.2f (of it %.1f MiB is the per-COB-ID index, 4 B/frame, kept in RAM)\n",
                     growth, growth / budgetMiB, r.indexGrowthMiB);
     }
-    std::printf("longest GUI-thread stall: %.1f ms, ratio to the 100 ms budget %.2f -> %s\n", r.stallMs, r.stallMs / 100.0,
-                r.stallMs < 100 ? "ok" : "FAIL");
+    std::printf("longest GUI-thread stall: %.1f ms at %.1f s, ratio to the 100 ms budget %.2f -> %s (%d stalls over 100 ms)\n", r.stallMs,
+                r.stallAt, r.stallMs / 100.0, r.stallMs < 100 ? "ok" : "FAIL", r.stalls);
     std::printf("chunks paged back from the journal: %llu, page errors %llu\n", (unsigned long long)r.pageIns, (unsigned long long)r.pageErrors);
     std::fflush(stdout);
 }

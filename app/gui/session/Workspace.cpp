@@ -231,6 +231,9 @@ void Workspace::poll() {
         replay_.reset();
     }
     syncDictionaries();
+    // Bounded memory: re-applying the budget evicts chunks the journal has written since the
+    // last new chunk (a capture faster than the journal, or one that just ended).
+    if (const size_t budget = store_->memoryBudget()) store_->setMemoryBudget(budget);
     if (!bus_) return;
     if (journal_ && journal_->hasError()) {
         // The disk is full or gone: stop here rather than capture what could not be kept.
