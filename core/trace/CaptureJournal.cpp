@@ -66,6 +66,7 @@ bool CaptureJournal::open(const QString& path, const QStringList& busNames) {
     }
     w->pcapng.setBusNames(busNames);
     writer_ = w;
+    pager_ = std::make_shared<JournalPager>(path);
     running_.store(true);
     thread_ = std::thread([this] { run(); });
     spdlog::info("capture journal {}", path.toStdString());
@@ -119,6 +120,24 @@ QString CaptureJournal::errorString() const {
     return error_;
 }
 
+// Writes the frames, telling the pager where each chunk of the trace store starts in the file.
+bool CaptureJournal::writeBatch(const std::vector<CanFrame>& batch) {
+    logio::PcapngWriter& out = writer_->pcapng;
+    for (const CanFrame& f : batch) {
+        const uint64_t n = out.framesWritten();
+        if (n > 0 && n % TraceStore::kChunkSize == 0) {
+            if (!out.flush()) return false;
+            pager_->chunkStarts(n, writer_->file.pos());
+        }
+        if (!out.write(f)) return false;
+        if (n == 0) {
+            if (!out.flush()) return false;
+            pager_->setFirstFrameEnd(writer_->file.pos());
+        }
+    }
+    return true;
+}
+
 void CaptureJournal::run() {
     std::vector<CanFrame> batch;
     auto lastSync = Clock::now();
@@ -134,11 +153,13 @@ void CaptureJournal::run() {
         QString why;
         bool ok = !failed_.load();
         if (ok) {
-            for (const CanFrame& f : batch)
-                if (!writer_->pcapng.write(f)) break;
-            ok = writer_->pcapng.flush();  // to the kernel: survives a killed process
+            ok = writeBatch(batch);
+            ok = ok && writer_->pcapng.flush();  // to the kernel: survives a killed process
             if (!ok) why = writer_->pcapng.errorString();
-            else written_.store(writer_->pcapng.framesWritten());
+            else {
+                written_.store(writer_->pcapng.framesWritten());
+                pager_->setWritten(writer_->pcapng.framesWritten(), writer_->file.pos());
+            }
             const auto now = Clock::now();
             // Synced to the disk at least once a second (a power loss keeps all but the last second).
             if (ok && (stopping || ticket > flushesDone_ || now - lastSync >= std::chrono::milliseconds(kSyncIntervalMs - kWriteIntervalMs))) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "core/trace/JournalPager.h"
 #include "core/trace/TraceStore.h"
 
 #include <QString>
@@ -10,6 +11,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <thread>
@@ -50,6 +52,9 @@ public:
     QString errorString() const;
     QString path() const { return path_; }
     uint64_t framesWritten() const { return written_.load(); }
+    // Loads this journal's frames back for a TraceStore with a memory budget (frame n of the
+    // journal is frame n of the store it is fed from). Valid from open(); outlives close().
+    std::shared_ptr<JournalPager> pager() const { return pager_; }
 
     static constexpr int kWriteIntervalMs = 200;
     static constexpr int kSyncIntervalMs = 1000;
@@ -57,6 +62,7 @@ public:
 
 private:
     void run();
+    bool writeBatch(const std::vector<CanFrame>& batch);
 
     QString path_;
     QStringList busNames_;
@@ -73,7 +79,8 @@ private:
     std::atomic<bool> failed_{false};
     std::atomic<uint64_t> written_{0};
     struct Writer;
-    Writer* writer_ = nullptr;  // owned; lives on the writer thread between open() and close()
+    Writer* writer_ = nullptr;
+    std::shared_ptr<JournalPager> pager_;  // owned; lives on the writer thread between open() and close()
 };
 
 }  // namespace coscope

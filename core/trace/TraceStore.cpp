@@ -63,22 +63,35 @@ private:
     std::vector<Table*> retired_;
 };
 
+TraceStore::Chunk::~Chunk() {
+    for (auto& block : fd) delete[] block.load();
+}
+
+size_t TraceStore::Chunk::bytes() const {
+    size_t n = sizeof(Chunk);
+    for (const auto& block : fd)
+        if (block.load(std::memory_order_relaxed)) n += size_t{1} << kFdBlockBits;
+    return n;
+}
+
 TraceStore::TraceStore()
-    : chunks_(new std::atomic<TraceRecord*>[kMaxChunks]),
-      fdChunks_(new std::atomic<uint8_t*>[kMaxFdChunks]),
+    : chunks_(new std::atomic<Chunk*>[kMaxChunks]),
+      lastUse_(new std::atomic<uint32_t>[kMaxChunks]),
+      pins_(new std::atomic<uint32_t>[kMaxChunks]),
       stdIndex_(new std::atomic<Index*>[2048]) {
-    for (uint32_t i = 0; i < kMaxChunks; ++i) chunks_[i].store(nullptr, std::memory_order_relaxed);
-    for (uint32_t i = 0; i < kMaxFdChunks; ++i) fdChunks_[i].store(nullptr, std::memory_order_relaxed);
+    for (uint32_t i = 0; i < kMaxChunks; ++i) {
+        chunks_[i].store(nullptr, std::memory_order_relaxed);
+        lastUse_[i].store(0, std::memory_order_relaxed);
+        pins_[i].store(0, std::memory_order_relaxed);
+    }
     for (uint32_t i = 0; i < 2048; ++i) stdIndex_[i].store(nullptr, std::memory_order_relaxed);
 }
 
 TraceStore::~TraceStore() {
-    for (uint32_t i = 0; i < kMaxChunks; ++i) {
-        TraceRecord* c = chunks_[i].load();
-        if (!c) break;
-        ::operator delete[](c);
-    }
-    for (uint32_t i = 0; i < kMaxFdChunks; ++i) delete[] fdChunks_[i].load();
+    const size_t used = (size() + kChunkSize - 1) / kChunkSize;
+    for (size_t i = 0; i < used + 1 && i < kMaxChunks; ++i) delete chunks_[i].load();
+    std::lock_guard lock(pageMutex_);
+    freeRetired(true);
 }
 
 TraceStore::Index* TraceStore::indexForWrite(uint32_t key) {
@@ -107,37 +120,28 @@ const TraceStore::Index* TraceStore::indexForRead(uint32_t key) const {
     return it == other_.end() ? nullptr : it->second;
 }
 
-uint64_t TraceStore::storeFdPayload(const uint8_t* data, uint8_t len) {
-    constexpr uint32_t chunkBytes = 1u << kFdChunkBits;
-    if (fdUsed_ + len > chunkBytes) {
-        const uint32_t next = fdChunks_[0].load(std::memory_order_relaxed) ? fdChunk_ + 1 : 0;
-        if (next >= kMaxFdChunks) throw std::length_error("trace store: CAN FD payload arena is full");
-        fdChunks_[next].store(new uint8_t[chunkBytes], std::memory_order_release);
-        fdChunk_ = next;
-        fdUsed_ = 0;
-        fdBytes_.fetch_add(chunkBytes, std::memory_order_relaxed);
+uint64_t TraceStore::storeFdPayload(Chunk& c, const uint8_t* data, uint8_t len, size_t* added) {
+    constexpr uint32_t blockBytes = 1u << kFdBlockBits;
+    uint32_t block = c.fdUsed >> kFdBlockBits;
+    if ((c.fdUsed & (blockBytes - 1)) + len > blockBytes) {  // does not fit: next block
+        ++block;
+        c.fdUsed = block << kFdBlockBits;
     }
-    uint8_t* dst = fdChunks_[fdChunk_].load(std::memory_order_relaxed) + fdUsed_;
-    std::memcpy(dst, data, len);
-    const uint64_t ref = (static_cast<uint64_t>(fdChunk_) << kFdChunkBits) | fdUsed_;
-    fdUsed_ += len;
+    if (block >= kFdBlocks) throw std::length_error("trace store: CAN FD payloads of a chunk overflow");
+    uint8_t* dst = c.fd[block].load(std::memory_order_relaxed);
+    if (!dst) {
+        dst = new uint8_t[blockBytes];
+        c.fd[block].store(dst, std::memory_order_release);
+        *added += blockBytes;
+    }
+    const uint64_t ref = c.fdUsed;
+    std::memcpy(dst + (ref & (blockBytes - 1)), data, len);
+    c.fdUsed += len;
     return ref;
 }
 
-const uint8_t* TraceStore::fdPayload(uint64_t ref) const {
-    return fdChunks_[ref >> kFdChunkBits].load(std::memory_order_acquire) + (ref & ((1u << kFdChunkBits) - 1));
-}
-
-FrameNo TraceStore::append(const CanFrame& f) {
-    const size_t n = size_.load(std::memory_order_relaxed);
-    if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks) throw std::length_error("trace store is full (2^32 frames)");
-    const uint32_t c = static_cast<uint32_t>(n >> kChunkBits);
-    TraceRecord* chunk = chunks_[c].load(std::memory_order_relaxed);
-    if (!chunk) {
-        chunk = static_cast<TraceRecord*>(::operator new[](sizeof(TraceRecord) * kChunkSize));
-        chunks_[c].store(chunk, std::memory_order_release);
-    }
-    TraceRecord& r = chunk[n & (kChunkSize - 1)];
+size_t TraceStore::fill(Chunk& c, TraceRecord& r, const CanFrame& f) {
+    size_t added = 0;
     r.timestampNs = f.timestampNs;
     r.id = f.id;
     r.len = f.len;
@@ -146,13 +150,34 @@ FrameNo TraceStore::append(const CanFrame& f) {
     r.reserved = 0;
     r.fdRef = 0;
     const uint8_t bytes = f.payloadSize();
-    if (bytes > 8) r.fdRef = storeFdPayload(f.data.data(), bytes);
+    if (bytes > 8) r.fdRef = storeFdPayload(c, f.data.data(), bytes, &added);
     else std::memcpy(r.data, f.data.data(), bytes);
+    return added;
+}
+
+FrameNo TraceStore::append(const CanFrame& f) {
+    const size_t n = size_.load(std::memory_order_relaxed);
+    if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks) throw std::length_error("trace store is full (2^32 frames)");
+    const uint32_t c = static_cast<uint32_t>(n >> kChunkBits);
+    // The chunk being written is never evicted (the pager does not hold it yet).
+    Chunk* chunk = chunks_[c].load(std::memory_order_relaxed);
+    if (!chunk) {
+        chunk = new Chunk;
+        lastUse_[c].store(clock_.fetch_add(2, std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+        chunks_[c].store(chunk, std::memory_order_release);
+        residentBytes_.fetch_add(sizeof(Chunk), std::memory_order_relaxed);
+        if (budget_.load(std::memory_order_relaxed)) {
+            std::lock_guard lock(pageMutex_);
+            evictOverBudget(c);
+        }
+    }
+    if (const size_t added = fill(*chunk, chunk->records[n & (kChunkSize - 1)], f))
+        residentBytes_.fetch_add(added, std::memory_order_relaxed);
 
     // Publish the frame before indexing it: an index entry must never name a frame a reader
     // cannot see yet (the index may lag size() by one frame, never lead it).
     size_.store(n + 1, std::memory_order_release);
-    const size_t added = indexForWrite(keyOf(r))->push(static_cast<FrameNo>(n));
+    const size_t added = indexForWrite(keyOf(chunk->records[n & (kChunkSize - 1)]))->push(static_cast<FrameNo>(n));
     if (added) indexBytes_.fetch_add(added, std::memory_order_relaxed);
     return static_cast<FrameNo>(n);
 }
@@ -175,9 +200,13 @@ CanFrame TraceStore::frame(FrameNo n) const {
 }
 
 std::span<const uint8_t> TraceStore::payload(FrameNo n) const {
-    const TraceRecord& r = record(n);
+    const Chunk* c = chunk(n >> kChunkBits);
+    const TraceRecord& r = c->records[n & (kChunkSize - 1)];
     const uint8_t bytes = (r.flags & CanFrame::Remote) ? 0 : r.len;
-    if (bytes > 8) return {fdPayload(r.fdRef), bytes};
+    if (bytes > 8) {
+        const uint8_t* block = c->fd[r.fdRef >> kFdBlockBits].load(std::memory_order_acquire);
+        return {block + (r.fdRef & ((1u << kFdBlockBits) - 1)), bytes};
+    }
     return {r.data, bytes};
 }
 
@@ -211,10 +240,7 @@ std::vector<uint32_t> TraceStore::keys() const {
 }
 
 size_t TraceStore::memoryBytes() const {
-    const size_t n = size();
-    const size_t chunks = (n + kChunkSize - 1) / kChunkSize;
-    return chunks * kChunkSize * sizeof(TraceRecord) + fdBytes_.load(std::memory_order_relaxed) +
-           indexBytes_.load(std::memory_order_relaxed);
+    return residentBytes_.load(std::memory_order_relaxed) + indexBytes_.load(std::memory_order_relaxed);
 }
 
 }  // namespace coscope

@@ -17,10 +17,12 @@
 
 namespace coscope {
 
+class TracePager;
+
 using FrameNo = uint32_t;  // stable frame number: position in the store, 0-based
 
 // One stored frame: 24 bytes. Classic payloads (≤ 8 bytes) are inline; CAN FD payloads longer
-// than 8 bytes live out of line in the FD arena and `fdRef` locates them.
+// than 8 bytes live out of line in the FD blocks of the frame's chunk and `fdRef` locates them.
 struct TraceRecord {
     int64_t timestampNs;
     uint32_t id;
@@ -36,17 +38,27 @@ struct TraceRecord {
 static_assert(sizeof(TraceRecord) == 24, "trace records must stay 24 bytes");
 
 // Append-only store for tens of millions of frames (one writer, any number of readers):
-// fixed-size records in chunked arenas (no reallocation, so readers never see memory move),
-// FD payloads out of line, and a per-COB-ID index of frame numbers. A frame number, once
-// given, always names the same frame. Readers see frames [0, size()) and may read them
-// while the writer appends; size() is published with release semantics after each append,
+// fixed-size records in chunks of 64Ki frames (no reallocation, so readers never see memory
+// move), FD payloads out of line in their chunk, and a per-COB-ID index of frame numbers. A frame
+// number, once given, always names the same frame. Readers see frames [0, size()) and may read
+// them while the writer appends; size() is published with release semantics after each append,
 // before the frame enters its index, so index entries never point at or past size().
 // Memory per classic frame: 24 bytes of record + 4 bytes of index entry.
+//
+// Bounded memory (issue 16): with a pager (the capture journal) and a budget, the store keeps
+// at most the budget in RAM. When over it, the least recently read chunks that the pager holds
+// durably are evicted; reading a frame of an evicted chunk loads the whole chunk back from the
+// pager (any thread, transparently). Never evicted: a chunk not yet in the pager, a pinned one.
+// An evicted chunk's memory is freed only after a grace period (kGraceMs, or when more than
+// kMaxRetired are waiting), so a reference from record()/payload() stays valid while it is used
+// right away; do not keep one across calls. The per-COB-ID indexes stay in RAM (4 B a frame).
 class TraceStore {
 public:
     static constexpr uint32_t kChunkBits = 16;  // 65536 records (1.5 MiB) per chunk
     static constexpr uint32_t kChunkSize = 1u << kChunkBits;
     static constexpr uint32_t kMaxChunks = 1u << 16;  // up to 2^32 frames
+    static constexpr int kGraceMs = 1000;
+    static constexpr size_t kMaxRetired = 16;
 
     TraceStore();
     ~TraceStore();
@@ -60,9 +72,7 @@ public:
     // Reader side (any thread).
     size_t size() const { return size_.load(std::memory_order_acquire); }
     bool empty() const { return size() == 0; }
-    const TraceRecord& record(FrameNo n) const {
-        return chunks_[n >> kChunkBits].load(std::memory_order_acquire)[n & (kChunkSize - 1)];
-    }
+    const TraceRecord& record(FrameNo n) const { return chunk(n >> kChunkBits)->records[n & (kChunkSize - 1)]; }
     CanFrame frame(FrameNo n) const;
     // The payload bytes of frame n (empty for remote frames).
     std::span<const uint8_t> payload(FrameNo n) const;
@@ -82,26 +92,69 @@ public:
     // Keys seen so far, ascending.
     std::vector<uint32_t> keys() const;
 
-    // Bytes held (records, FD payloads, indexes), for the benchmark and the status bar.
+    // Bytes held in RAM (resident chunks, their FD payloads, indexes), for the benchmark and
+    // the status bar.
     size_t memoryBytes() const;
 
+    // Paging. The pager holds frame n of this store as its frame n (the journal of a live
+    // capture). Set it and the budget before the first append or while no reader runs.
+    void setPager(std::shared_ptr<TracePager> pager);
+    // 0: unlimited (the default; nothing is evicted).
+    void setMemoryBudget(size_t bytes);
+    size_t memoryBudget() const { return budget_.load(std::memory_order_relaxed); }
+    // Chunks in RAM now, and how many times a chunk was loaded back / failed to load.
+    size_t residentChunks() const;
+    uint64_t pageIns() const { return pageIns_.load(std::memory_order_relaxed); }
+    uint64_t pageErrors() const { return pageErrors_.load(std::memory_order_relaxed); }
+    // Keeps the chunks of frames [first, last] in RAM until unpin() with the same range (the
+    // rows a view shows).
+    void pin(FrameNo first, FrameNo last);
+    void unpin(FrameNo first, FrameNo last);
+
 private:
+    static constexpr uint32_t kFdBlockBits = 20;  // FD payloads: 1 MiB blocks per chunk
+    static constexpr uint32_t kFdBlocks = 4;      // 65536 frames x 64 bytes
+    struct Chunk {
+        TraceRecord records[kChunkSize];
+        std::atomic<uint8_t*> fd[kFdBlocks] = {};
+        uint32_t fdUsed = 0;  // filled by one thread (writer or loader) before publication
+        ~Chunk();
+        size_t bytes() const;
+    };
     class Index;
     Index* indexForWrite(uint32_t key);
     const Index* indexForRead(uint32_t key) const;
-    uint64_t storeFdPayload(const uint8_t* data, uint8_t len);
-    const uint8_t* fdPayload(uint64_t ref) const;
+    static uint64_t storeFdPayload(Chunk& c, const uint8_t* data, uint8_t len, size_t* added);
+    static size_t fill(Chunk& c, TraceRecord& r, const CanFrame& f);  // FD bytes allocated
+    Chunk* chunk(uint32_t c) const {
+        Chunk* p = chunks_[c].load(std::memory_order_acquire);
+        if (!p) return pageIn(c);
+        const uint32_t now = clock_.load(std::memory_order_relaxed);
+        if (lastUse_[c].load(std::memory_order_relaxed) != now) lastUse_[c].store(now, std::memory_order_relaxed);
+        return p;
+    }
+    Chunk* pageIn(uint32_t c) const;
+    void evictOverBudget(uint32_t keep) const;  // pageMutex_ held
+    void freeRetired(bool all) const;           // pageMutex_ held
+    size_t chunksUsed() const { return (size() + kChunkSize - 1) >> kChunkBits; }
 
-    std::unique_ptr<std::atomic<TraceRecord*>[]> chunks_;
+    std::unique_ptr<std::atomic<Chunk*>[]> chunks_;
     std::atomic<size_t> size_{0};
+    mutable std::atomic<size_t> residentBytes_{0};
 
-    // FD arena: 1 MiB chunks; ref = chunk << 20 | offset.
-    static constexpr uint32_t kFdChunkBits = 20;
-    static constexpr uint32_t kMaxFdChunks = 1u << 14;
-    std::unique_ptr<std::atomic<uint8_t*>[]> fdChunks_;
-    uint32_t fdChunk_ = 0;
-    uint32_t fdUsed_ = 1u << kFdChunkBits;  // forces the first allocation
-    std::atomic<size_t> fdBytes_{0};
+    // Paging state: the LRU clock advances by 2 on each chunk allocation and page-in, which
+    // stamps its chunk with the odd value between; a read stamps its chunk with the clock, so
+    // a chunk read after a page-in is younger than the chunk paged in.
+    std::shared_ptr<TracePager> pager_;
+    std::atomic<size_t> budget_{0};
+    mutable std::atomic<uint32_t> clock_{1};
+    std::unique_ptr<std::atomic<uint32_t>[]> lastUse_;
+    std::unique_ptr<std::atomic<uint32_t>[]> pins_;
+    mutable std::mutex loadMutex_;  // one page-in at a time (disk reads outside pageMutex_)
+    mutable std::mutex pageMutex_;  // eviction, installation, retired_
+    mutable std::vector<std::pair<Chunk*, int64_t>> retired_;  // chunk, steady ms when evicted
+    mutable std::atomic<uint64_t> pageIns_{0};
+    mutable std::atomic<uint64_t> pageErrors_{0};
 
     // Index: direct table for the 2048 standard ids, a map for the rest.
     std::unique_ptr<std::atomic<Index*>[]> stdIndex_;

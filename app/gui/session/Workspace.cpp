@@ -5,6 +5,7 @@
 #include "core/canopen/SdoClient.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/trace/JournalFolder.h"
+#include "app/gui/session/MemoryBudget.h"
 
 #include <QFileInfo>
 #include <QSettings>
@@ -92,8 +93,12 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     connect(bus_.get(), &CanBus::errorOccurred, this, &Workspace::errorOccurred);
     session_ = std::make_unique<CaptureSession>(store_);
     openJournal();
-    if (journal_)
+    if (journal_) {
+        // Bounded memory: frames beyond the budget are paged back from the journal.
+        store_->setPager(journal_->pager());
+        store_->setMemoryBudget(traceMemoryBudget());
         session_->addConsumer([j = journal_.get()](const TraceStore& s, FrameNo first, size_t count) { j->appendFromStore(s, first, count); });
+    }
     master_ = std::make_unique<canopen::MasterContext>(bus_.get(), &nodes_);
     for (auto& c : analysisConsumers()) session_->addConsumer(std::move(c));
     session_->addConsumer(master_->dispatcher().consumer());
@@ -226,6 +231,9 @@ void Workspace::poll() {
         replay_.reset();
     }
     syncDictionaries();
+    // Bounded memory: re-applying the budget evicts chunks the journal has written since the
+    // last new chunk (a capture faster than the journal, or one that just ended).
+    if (const size_t budget = store_->memoryBudget()) store_->setMemoryBudget(budget);
     if (!bus_) return;
     if (journal_ && journal_->hasError()) {
         // The disk is full or gone: stop here rather than capture what could not be kept.

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Bounded memory of the trace (issue 16): a TraceStore with a small budget and the capture
+// journal as its pager evicts chunks the journal holds, reads them back identical, keeps the
+// resident chunks bounded and evicts the least recently read one.
+#include "core/trace/CaptureJournal.h"
+#include "core/trace/TraceStore.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cstring>
+#include <vector>
+
+using namespace coscope;
+
+namespace {
+constexpr uint32_t kChunk = TraceStore::kChunkSize;
+
+CanFrame makeFrame(uint32_t i) {
+    CanFrame f;
+    f.timestampNs = 1'700'000'000'000'000'000LL + int64_t(i) * 125'000;
+    f.id = 0x180 + (i % 5);
+    f.len = 8;
+    if (i % 16 == 3) {  // CAN FD, 64 bytes
+        f.flags = CanFrame::Fd | CanFrame::BitRateSwitch;
+        f.len = 64;
+    } else if (i % 16 == 7) {
+        f.flags = CanFrame::Extended;
+        f.id = 0x18FF0000u + (i % 7);
+        f.len = 5;
+    }
+    for (size_t b = 0; b < f.payloadSize(); ++b) f.data[b] = uint8_t(i >> (b % 4 * 8)) ^ uint8_t(b);
+    return f;
+}
+
+bool same(const CanFrame& a, const CanFrame& b) {
+    return a.timestampNs == b.timestampNs && a.id == b.id && a.len == b.len && a.flags == b.flags && a.bus == b.bus &&
+           std::memcmp(a.data.data(), b.data.data(), a.payloadSize()) == 0;
+}
+}  // namespace
+
+class TestTracePaging : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+    std::unique_ptr<CaptureJournal> journal_;
+    std::unique_ptr<TraceStore> store_;
+    uint32_t total_ = 0;
+
+    // A store of `chunks` whole chunks plus `extra` frames, all in a flushed journal.
+    void fill(uint32_t chunks, uint32_t extra, size_t budget) {
+        journal_ = std::make_unique<CaptureJournal>();
+        QVERIFY(journal_->open(dir_.filePath(QStringLiteral("paging.pcapng")), {QStringLiteral("can0")}));
+        store_ = std::make_unique<TraceStore>();
+        store_->setPager(journal_->pager());
+        store_->setMemoryBudget(budget);
+        total_ = chunks * kChunk + extra;
+        std::vector<CanFrame> batch;
+        for (uint32_t i = 0; i < total_; ++i) {
+            batch.push_back(makeFrame(i));
+            if (batch.size() == 1000 || i + 1 == total_) {
+                const FrameNo first = store_->append(batch.front());
+                store_->append(std::span(batch).subspan(1));
+                journal_->appendFromStore(*store_, first, batch.size());
+                batch.clear();
+            }
+        }
+        QVERIFY(journal_->flush());
+        store_->setMemoryBudget(budget);  // evicts what the journal now holds
+    }
+
+private slots:
+    void initTestCase() { QVERIFY(dir_.isValid()); }
+
+    void evictedFramesReadBackIdentical() {
+        fill(6, 1234, 8u << 20);
+        QCOMPARE(store_->size(), size_t(total_));
+        QVERIFY2(store_->residentChunks() <= 3, qPrintable(QString::number(store_->residentChunks())));
+        QVERIFY(store_->memoryBytes() <= store_->memoryBudget() + (2u << 20));
+        for (uint32_t i = 0; i < total_; ++i) {
+            const CanFrame f = store_->frame(i);
+            if (!same(f, makeFrame(i))) QFAIL(qPrintable(QStringLiteral("frame %1 differs").arg(i)));
+            const auto p = store_->payload(i);
+            QCOMPARE(p.size(), size_t(makeFrame(i).payloadSize()));
+            if (i % kChunk == kChunk - 1) QVERIFY2(store_->residentChunks() <= 3, qPrintable(QString::number(store_->residentChunks())));
+        }
+        QVERIFY(store_->pageIns() >= 5);
+        QCOMPARE(store_->pageErrors(), uint64_t(0));
+        // The per-COB-ID index still names the right frames of evicted chunks.
+        const uint32_t key = TraceStore::keyOf(0x181, false);
+        QCOMPARE(store_->record(store_->frameFor(key, 0)).id, 0x181u);
+        QCOMPARE(store_->frameFor(key, 0), FrameNo(1));
+        journal_->close();
+        // A stopped capture stays pageable from its closed journal.
+        QVERIFY(same(store_->frame(5), makeFrame(5)));
+        QVERIFY(same(store_->frame(3 * kChunk + 3), makeFrame(3 * kChunk + 3)));
+    }
+
+    // The bytes of one chunk: every chunk here holds its records and one block of FD payloads.
+    size_t evictOneChunk() {
+        const size_t m0 = store_->memoryBytes();
+        store_->setMemoryBudget(m0 - 1);
+        return m0 - store_->memoryBytes();
+    }
+
+    void leastRecentlyReadChunkIsEvicted() {
+        fill(5, 10, 0);  // chunks 0..5, 5 partial (never evicted)
+        const size_t all = store_->memoryBytes();
+        const size_t chunk = evictOneChunk();
+        store_->setMemoryBudget(all - 3 * chunk);  // room for three chunks
+        QCOMPARE(store_->residentChunks(), size_t(3));  // 3, 4, 5: the newest
+        const uint64_t before = store_->pageIns();
+        (void)store_->record(1 * kChunk + 10);  // evicts 3
+        (void)store_->record(2 * kChunk + 10);  // evicts 4
+        (void)store_->record(1 * kChunk + 11);  // 1 is now read more recently than 2
+        QCOMPARE(store_->pageIns(), before + 2);
+        (void)store_->record(3 * kChunk);  // evicts 2, not 1
+        QCOMPARE(store_->pageIns(), before + 3);
+        QCOMPARE(store_->residentChunks(), size_t(3));
+        (void)store_->record(1 * kChunk + 12);
+        QCOMPARE(store_->pageIns(), before + 3);
+        QVERIFY(same(store_->frame(2 * kChunk + 12), makeFrame(2 * kChunk + 12)));
+        QCOMPARE(store_->pageIns(), before + 4);
+    }
+
+    void pinnedChunkIsNotEvicted() {
+        fill(4, 10, 0);
+        store_->pin(0, 10);
+        const size_t all = store_->memoryBytes();
+        const size_t chunk = evictOneChunk();
+        store_->setMemoryBudget(all - 3 * chunk);  // room for two: 0 (pinned) and 4 (partial)
+        QCOMPARE(store_->residentChunks(), size_t(2));
+        const uint64_t before = store_->pageIns();
+        QVERIFY(same(store_->frame(5), makeFrame(5)));
+        QCOMPARE(store_->pageIns(), before);  // chunk 0 stayed
+        store_->unpin(0, 10);
+        QVERIFY(same(store_->frame(kChunk + 5), makeFrame(kChunk + 5)));
+        QCOMPARE(store_->pageIns(), before + 1);
+    }
+
+    void nothingIsEvictedWithoutPager() {
+        TraceStore store;
+        store.setMemoryBudget(1);
+        for (uint32_t i = 0; i < 2 * kChunk + 5; ++i) store.append(makeFrame(i));
+        QCOMPARE(store.residentChunks(), size_t(3));
+        QVERIFY(same(store.frame(7), makeFrame(7)));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestTracePaging)
+#include "test_trace_paging.moc"
