@@ -12,6 +12,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace coscope {
@@ -33,10 +34,9 @@ bool CanBus::waitForOpen(int timeoutMs) {
         if (s == State::Open) return true;
         // Opened and already closed again (a short replay): what it delivered is in the ring.
         if (s == State::Closed && reachedOpen) return true;
-        if (s == State::Error || s == State::Closed) {
-            // Closed right after open() means the backend has not started yet; give it the time.
-            if (s == State::Error) return false;
-        }
+        // Closed right after open() means the backend has not started yet; give it the time.
+        // Lost means it is reconnecting: wait for it as well.
+        if (s == State::Error) return false;
         if (deadline.hasExpired()) return false;
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
         QThread::msleep(2);
@@ -85,6 +85,12 @@ QString CanBus::errorString() const {
     return error_;
 }
 
+int CanBus::nextRetryInMs() const {
+    const int64_t at = nextRetryNs_.load(std::memory_order_relaxed);
+    if (at == 0) return -1;
+    return static_cast<int>(std::max<int64_t>(0, (at - nowNs()) / 1'000'000));
+}
+
 CanBus::Counters CanBus::counters() const {
     Counters c;
     c.rx = rx_.load(std::memory_order_relaxed);
@@ -122,7 +128,7 @@ void CanBus::setState(State state, const QString& error) {
         if (!error.isEmpty()) error_ = error;
         else if (state == State::Open) error_.clear();
     }
-    if (state == State::Error && !error.isEmpty()) {
+    if ((state == State::Error || state == State::Lost) && !error.isEmpty()) {
         spdlog::warn("{}: {}", url_.toString().toStdString(), error.toStdString());
         emit errorOccurred(error);
     }
@@ -168,6 +174,7 @@ QString toString(CanBus::State state) {
     case CanBus::State::Opening: return QStringLiteral("opening");
     case CanBus::State::Open: return QStringLiteral("open");
     case CanBus::State::Error: return QStringLiteral("error");
+    case CanBus::State::Lost: return QStringLiteral("lost");
     }
     return {};
 }

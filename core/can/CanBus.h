@@ -30,7 +30,10 @@ namespace coscope {
 class CanBus : public QObject {
     Q_OBJECT
 public:
-    enum class State { Closed, Opening, Open, Error };
+    // Lost: the bus was open and its adapter went away (interface deleted or down, socketcand
+    // server gone, plugin device/connection error); the backend retries with back-off until it
+    // is back (Open) or the user closes it. Frames already read stay in the ring and the trace.
+    enum class State { Closed, Opening, Open, Error, Lost };
     Q_ENUM(State)
 
     struct Counters {
@@ -77,6 +80,10 @@ public:
 
     State state() const;
     QString errorString() const;
+    // While Lost: when the adapter went away (ns since the epoch, 0 when not lost) and how long
+    // until the next attempt to reopen it (ms, -1 when none is scheduled).
+    int64_t lostSinceNs() const { return lostSinceNs_.load(std::memory_order_relaxed); }
+    int nextRetryInMs() const;
     Counters counters() const;
 
 signals:
@@ -92,6 +99,8 @@ protected:
     void reportError(const QString& message);  // keeps the state, emits errorOccurred
     void countTx() { tx_.fetch_add(1, std::memory_order_relaxed); }
     void countError() { errors_.fetch_add(1, std::memory_order_relaxed); }
+    void setLostSince(int64_t ns) { lostSinceNs_.store(ns, std::memory_order_relaxed); }
+    void setNextRetryAt(int64_t ns) { nextRetryNs_.store(ns, std::memory_order_relaxed); }  // 0 = none
 
 private:
     BusUrl url_;
@@ -107,6 +116,8 @@ private:
     std::atomic<int> txErrors_{-1};
     std::atomic<int> rxErrors_{-1};
     std::atomic<uint64_t> busOffs_{0};
+    std::atomic<int64_t> lostSinceNs_{0};
+    std::atomic<int64_t> nextRetryNs_{0};
 };
 
 // Creates the backend for a URL (not yet opened). Returns nullptr with a one-line reason.

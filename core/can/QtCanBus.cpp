@@ -83,7 +83,7 @@ void QtCanBus::startOnThread() {
     QString error;
     device_ = QCanBus::instance()->createDevice(url().scheme, url().target, &error);
     if (!device_) {
-        setState(State::Error, QStringLiteral("cannot open %1: %2").arg(name(), explain(error.isEmpty() ? QStringLiteral("plugin refused the device") : error)));
+        failedToOpen(QStringLiteral("cannot open %1: %2").arg(name(), explain(error.isEmpty() ? QStringLiteral("plugin refused the device") : error)));
         return;
     }
     device_->setParent(context_);
@@ -140,8 +140,11 @@ void QtCanBus::fail(const QString& message) {
         device_->deleteLater();
         device_ = nullptr;
     }
+    const bool wasOpen = opened_;
     opened_ = false;
-    setState(State::Error, message);
+    // A device that was open and went away is a lost adapter: reopen with back-off.
+    if (wasOpen) connectionLost(message);
+    else failedToOpen(message);
 }
 
 void QtCanBus::onFramesReceived() {
@@ -190,7 +193,7 @@ void QtCanBus::onDeviceState(int s) {
     if (st == QCanBusDevice::ConnectedState && !opened_) {
         opened_ = true;
         if (openTimer_) openTimer_->stop();
-        setState(State::Open);
+        reachedOpen();
     } else if (st == QCanBusDevice::UnconnectedState && opened_) {
         fail(QStringLiteral("%1 disconnected (device gone or its server closed)").arg(name()));
     }

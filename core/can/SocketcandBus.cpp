@@ -57,6 +57,7 @@ void SocketcandBus::stopOnThread() {
 
 void SocketcandBus::fail(const QString& message) {
     if (phase_ == Phase::Idle || phase_ == Phase::Closing) return;
+    const bool wasOpen = phase_ == Phase::Raw;
     phase_ = Phase::Idle;
     if (handshakeTimer_) handshakeTimer_->stop();
     if (socket_) {
@@ -65,7 +66,9 @@ void SocketcandBus::fail(const QString& message) {
         socket_->deleteLater();
         socket_ = nullptr;
     }
-    setState(State::Error, message);
+    // An open connection that drops is a lost adapter: reconnect with back-off (ThreadedCanBus).
+    if (wasOpen) connectionLost(message);
+    else failedToOpen(message);
 }
 
 void SocketcandBus::onConnected() {
@@ -124,7 +127,7 @@ void SocketcandBus::handle(const Message& m) {
         if (m.kind == Message::Kind::Ok) {
             phase_ = Phase::Raw;
             handshakeTimer_->stop();
-            setState(State::Open);
+            reachedOpen();
         } else if (m.kind == Message::Kind::Error) {
             fail(QStringLiteral("socketcand at %1 refused raw mode: %2").arg(where(), m.text));
         } else {
@@ -171,7 +174,7 @@ void SocketcandBus::onSocketError() {
 
 void SocketcandBus::onDisconnected() {
     switch (phase_) {
-    case Phase::Raw: fail(QStringLiteral("socketcand server closed the connection")); return;
+    case Phase::Raw: fail(QStringLiteral("socketcand server at %1 closed the connection").arg(where())); return;
     case Phase::Connecting:
     case Phase::WaitHi:
     case Phase::WaitOpenOk:
