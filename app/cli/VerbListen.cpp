@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli listen BUS [--count N] [--duration S]: prints frames as candump -L lines.
 #include "app/cli/BusOffWatch.h"
+#include "app/cli/LostWatch.h"
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
@@ -66,6 +67,7 @@ static int runListen(const QStringList& args) {
     QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(256);
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
+    LostWatch lost(bus.get(), kVerb);  // a lost adapter reconnects by itself: capturing goes on
     qint64 printed = 0;
     auto drain = [&] {
         for (;;) {
@@ -81,6 +83,7 @@ static int runListen(const QStringList& args) {
         bus->waitForFrames(50);
         drain();
         busOff.poll();
+        lost.poll();
         if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)
             drain();
             break;

@@ -7,6 +7,7 @@
 // the end); Ctrl-C / SIGTERM close the file cleanly. A write error (full disk) stops the
 // recording with the frames written so far kept.
 #include "app/cli/BusOffWatch.h"
+#include "app/cli/LostWatch.h"
 #include "app/cli/CliVerb.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
@@ -87,6 +88,7 @@ static int runRecord(const QStringList& args) {
     QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(512);
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
+    LostWatch lost(bus.get(), kVerb);  // a lost adapter reconnects by itself: capturing goes on
     qint64 written = 0;
     bool writeFailed = false;
     QElapsedTimer sinceFlush, sinceSync;
@@ -121,6 +123,7 @@ static int runRecord(const QStringList& args) {
         bus->waitForFrames(50);
         drain();
         busOff.poll();
+        lost.poll();
         if (writeFailed)
             return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out->errorString()).arg(written));
         if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)

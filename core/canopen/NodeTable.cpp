@@ -30,12 +30,14 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
             if (r.flags & CanFrame::Remote || r.len < 1) continue;
             NodeInfo& e = entryLocked(info.node);
             const int state = r.data[0] & 0x7F;  // CiA 301 §7.2.8.3.2: bit 7 = toggle
+            const bool afterGap = e.stateUnknownAfterGap && n >= e.gapFrame;
+            if (afterGap) e.stateUnknownAfterGap = false;  // known again (the period spans no gap)
             if (state == 0) {
                 e.seenBootUp = true;
                 ++e.bootUps;
                 e.nmtState = 0x7F;  // after boot-up a node is pre-operational (CiA 301 §7.3.2.2.1)
             } else {
-                if (e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs) e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
+                if (!afterGap && e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs) e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
                 e.seenHeartbeat = true;
                 e.lastHeartbeatNs = r.timestampNs;
                 e.nmtState = state;
@@ -80,6 +82,18 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
         }
     }
     if (changed) bump();
+}
+
+void NodeTable::markGap(FrameNo from) {
+    {
+        std::lock_guard lock(mutex_);
+        for (auto& e : nodes_) {
+            if (!e) continue;
+            e->stateUnknownAfterGap = true;
+            e->gapFrame = from;
+        }
+    }
+    bump();
 }
 
 void NodeTable::clear() {

@@ -31,6 +31,10 @@ struct NodeInfo {
     uint32_t sdoFrames = 0;
     bool seenHeartbeat = false, seenBootUp = false, seenEmcy = false, seenSdo = false, scanned = false;
     bool heartbeatLost = false;      // consumer heartbeat time (1016h) or guarding life time ran out
+    // The adapter was lost (issue 16): nmtState is the last one before the gap and may be stale
+    // until a heartbeat or boot-up at or after frame gapFrame says otherwise.
+    bool stateUnknownAfterGap = false;
+    FrameNo gapFrame = 0;
     int guardingErrors = 0;          // missing or wrong-toggle guarding answers
     std::optional<uint32_t> deviceType;                               // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
@@ -73,6 +77,9 @@ public:
     // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
     // asking it (identity, name, dictionary) goes to `to`; `from` is dropped, nothing is there.
     void moveNode(int from, int to);
+    // The bus was lost: every node's state is unknown from frame `from` on, until its next
+    // heartbeat or boot-up (NodeInfo::stateUnknownAfterGap).
+    void markGap(FrameNo from);
 
 private:
     NodeInfo& entryLocked(int id);

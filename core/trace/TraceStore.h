@@ -110,6 +110,22 @@ public:
     // rows a view shows).
     void pin(FrameNo first, FrameNo last);
     void unpin(FrameNo first, FrameNo last);
+    // A gap in a live capture (issue 16 "Lost adapter"): the adapter was lost at lostNs and back
+    // at backNs; frames from firstFrame on came after it. Not a frame: no consumer or CANopen
+    // dispatcher sees it, views mark the first frame after it. Any thread.
+    struct Gap {
+        FrameNo firstFrame;
+        int64_t lostNs;
+        int64_t backNs;
+    };
+    void addGap(const Gap& gap) {
+        std::lock_guard lock(gapMutex_);
+        gaps_.push_back(gap);
+    }
+    std::vector<Gap> gaps() const {
+        std::lock_guard lock(gapMutex_);
+        return gaps_;
+    }
 
 private:
     static constexpr uint32_t kFdBlockBits = 20;  // FD payloads: 1 MiB blocks per chunk
@@ -163,6 +179,9 @@ private:
     std::unordered_map<uint32_t, Index*> other_;       // readers' view
     std::vector<std::unique_ptr<Index>> indexes_;      // owner (writer only)
     std::atomic<size_t> indexBytes_{0};
+
+    mutable std::mutex gapMutex_;
+    std::vector<Gap> gaps_;
 };
 
 }  // namespace coscope

@@ -18,9 +18,10 @@ public:
     QByteArray afterHandshake;       // client bytes after "< rawmode >" was answered
     bool handshakeDone = false;
 
-    bool listen() {
+    // port 0: chosen by the system; a port of a server that went away: "the server restarted".
+    bool listen(quint16 port = 0) {
         QObject::connect(&server_, &QTcpServer::newConnection, &server_, [this] { onConnection(); });
-        return server_.listen(QHostAddress::LocalHost, 0);
+        return server_.listen(QHostAddress::LocalHost, port);
     }
     quint16 port() const { return server_.serverPort(); }
     QString url(const QString& options = {}) const {

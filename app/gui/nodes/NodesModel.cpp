@@ -53,6 +53,7 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     const bool late = n.seenHeartbeat && n.heartbeatPeriodNs > 0 && now - n.lastHeartbeatNs > std::max<int64_t>(3 * n.heartbeatPeriodNs, 1'500'000'000);
     if (role == NodeIdRole) return n.node;
     if (role == Qt::BackgroundRole && index.column() == State) {
+        if (n.stateUnknownAfterGap) return QBrush(QColor(200, 200, 215));
         if (late) return QBrush(QColor(255, 205, 205));
         switch (n.nmtState) {
         case 0x05: return QBrush(QColor(200, 240, 200));
@@ -68,6 +69,11 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
     case Node: return n.node;
     case State:
+        if (n.stateUnknownAfterGap) {  // issue 16: the bus was lost; the last state may be stale
+            const QString last = n.nmtState < 0 ? tr("Unknown") : canopen::nmtStateName(static_cast<uint8_t>(n.nmtState));
+            return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the next heartbeat (last known: %1)").arg(last)
+                                           : tr("unknown (gap)");
+        }
         if (late) return tr("No heartbeat");
         return n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
     case HeartbeatAge:

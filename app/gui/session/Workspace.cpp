@@ -64,6 +64,7 @@ void Workspace::reset() {
     traceDecoder_->setStore(store_);
     syncedNodesRevision_ = ~uint64_t{0};
     reportedDropped_ = reportedErrors_ = 0;
+    lostSinceNs_ = 0;
     sourceName_.clear();
 }
 
@@ -88,6 +89,7 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     sourceName_ = bus_->url().toString();
     connect(bus_.get(), &CanBus::stateChanged, this, [this](CanBus::State s) {
         if (s == CanBus::State::Error && bus_) events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, bus_->errorString()});
+        if (bus_) noteLostAdapter(s);
         emit busStateChanged(s);
     });
     connect(bus_.get(), &CanBus::errorOccurred, this, &Workspace::errorOccurred);
@@ -110,6 +112,27 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     return true;
 }
 
+// Issue 16 "Lost adapter": the trace keeps everything; the gap goes into the store (marked on the
+// first frame after it, never dispatched as a frame), the Events and the node table.
+void Workspace::noteLostAdapter(CanBus::State s) {
+    if (s == CanBus::State::Lost && lostSinceNs_ == 0) {
+        lostSinceNs_ = bus_->lostSinceNs() ? bus_->lostSinceNs() : nowNs();
+        const FrameNo from = static_cast<FrameNo>(store_->size());
+        nodes_.markGap(from);
+        events_.add({TraceEvent::Kind::BusError, lostSinceNs_, kNoFrame, -1,
+                     tr("Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.").arg(bus_->errorString())});
+        spdlog::warn("bus {} lost: {}", sourceName_.toStdString(), bus_->errorString().toStdString());
+    } else if (s == CanBus::State::Open && lostSinceNs_ != 0) {
+        const int64_t back = nowNs();
+        const FrameNo first = static_cast<FrameNo>(store_->size());
+        store_->addGap({first, lostSinceNs_, back});
+        events_.add({TraceEvent::Kind::Info, back, first, -1,
+                     tr("Bus back after %1 s: frames between are missing from the trace").arg(double(back - lostSinceNs_) / 1e9, 0, 'f', 1)});
+        spdlog::info("bus {} back after {:.1f} s", sourceName_.toStdString(), double(back - lostSinceNs_) / 1e9);
+        lostSinceNs_ = 0;
+    }
+}
+
 void Workspace::disconnectBus() {
     if (!bus_) return;
     // Last chance for whoever drives a device (the CiA 402 wizard disables its drive): the
@@ -118,6 +141,7 @@ void Workspace::disconnectBus() {
     // Keep the trace: stop the bus and the ingest thread, leave the store for review.
     sdo_.reset();
     bus_->close();
+    lostSinceNs_ = 0;
     if (session_) session_->stop();
     session_.reset();
     closeJournal();

@@ -101,6 +101,7 @@ private:
     void reset();
     void openJournal();
     void closeJournal();
+    void noteLostAdapter(CanBus::State state);
     void replaySignals(const std::map<int, QString>& names);
     std::vector<CaptureSession::Consumer> analysisConsumers();
 
@@ -121,6 +122,7 @@ private:
     QString journalPath_;
     uint64_t reportedDropped_ = 0;
     uint64_t reportedErrors_ = 0;
+    int64_t lostSinceNs_ = 0;  // the bus is Lost since (0 = not lost)
     uint64_t syncedNodesRevision_ = 0;
     std::map<int, QString> recordedNames_;  // the dictionaries a finished trace's signals were recorded with
     bool logRecorded_ = false;              // a log read in full or a capture ended: recordedNames_ holds

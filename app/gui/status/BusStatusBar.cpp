@@ -99,9 +99,22 @@ void BusStatusBar::refresh(Job* job) {
         lastFrames_ = frames;
     }
     const auto c = bus->counters();
-    QString state = coreText(toString(bus->state()));
+    QString state;
+    switch (bus->state()) {
+    case CanBus::State::Closed: state = tr("closed"); break;
+    case CanBus::State::Opening: state = tr("opening"); break;
+    case CanBus::State::Open: state = tr("open"); break;
+    case CanBus::State::Error: state = tr("error"); break;
+    case CanBus::State::Lost: {  // issue 16: the adapter went away; the bus reopens by itself
+        const int ms = bus->nextRetryInMs();
+        state = ms < 0 ? tr("lost, retrying now") : tr("lost, retrying in %1 s").arg((ms + 999) / 1000);
+        break;
+    }
+    }
     if (bus->isListenOnly()) state += tr(" · listen-only");
     state_->setText(state);
+    state_->setStyleSheet(bus->state() == CanBus::State::Lost ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
+    state_->setToolTip(bus->state() == CanBus::State::Lost ? tr("Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back (Disconnect stops trying).").arg(bus->errorString()) : QString());
     rate_->setText(tr("%L1 frames/s").arg(rate_fps_, 0, 'f', 0));
     load_->setText(tr("load %1 %").arg(load_pct_, 0, 'f', 1));
     load_->setToolTip(tr("Estimated from frame lengths with worst-case bit stuffing at %1 bit/s").arg(bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000));

@@ -89,6 +89,9 @@ public:
 
     // Decoded one-line summary of frame n (cached).
     QString summaryOf(FrameNo n) const;
+    // The gap of a lost adapter that ends right before frame n (TraceStore::Gap), shown on its row.
+    std::optional<TraceStore::Gap> gapBefore(FrameNo n) const;
+    static QString gapText(const TraceStore::Gap& gap);
     QString timeText(FrameNo n, int row) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/ScriptRunPanel.h"
 
+#include "app/gui/wizards/common/BusLossAdvice.h"
+
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/common/WizardGuard.h"
 #include "core/canopen/SdoClient.h"
 
 #include <QHBoxLayout>
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -42,6 +48,16 @@ ScriptRunPanel::ScriptRunPanel(Workspace* workspace, QWidget* parent) : QWidget(
                 setStatus(tr("Stopped: the connection changed."));
             }
             runner_.reset();  // it refers to the old bus's services
+        });
+    // A lost adapter stops a run at once and says what the device may be left in (issue 16).
+    if (workspace) connect(workspace, &Workspace::busStateChanged, this, [this, workspace](CanBus::State s) {
+            if (s != CanBus::State::Lost || !isRunning()) return;
+            const int step = std::max(0, runner_->currentStep());
+            stopReason_ = BusLossAdvice::scriptMessage(workspace->bus() ? workspace->bus()->errorString() : QString(), step,
+                                                       static_cast<int>(preview_->script().steps.size()));
+            spdlog::warn("script run stopped: bus lost at step {}", step + 1);
+            stop();
+            setStatus(stopReason_);
         });
     updateButtons();
 }
@@ -97,9 +113,10 @@ bool ScriptRunPanel::run(QString* why) {
         connect(runner_.get(), &canopen::ScriptRunner::stepFinished, preview_, &ScriptPreview::markStep);
     }
     preview_->clearMarks();
+    stopReason_.clear();
     const bool ok = runner_->run(preview_->script(), [this](const canopen::ScriptRunResult& r) {
         if (r.ok) setStatus(tr("Done: %n step(s) completed.", nullptr, r.stepsDone));
-        else if (r.cancelled) setStatus(tr("Stopped at step %1; nothing further was sent.").arg(r.failedStep + 1));
+        else if (r.cancelled) setStatus(stopReason_.isEmpty() ? tr("Stopped at step %1; nothing further was sent.").arg(r.failedStep + 1) : stopReason_);
         else setStatus(tr("Failed at %1").arg(r.error));
         updateButtons();
         emit finished(r);

@@ -66,6 +66,7 @@ private:
     QPushButton* stop_ = nullptr;
     QLabel* status_ = nullptr;
     QString confirmation_;
+    QString stopReason_;  // why the running script was stopped (a lost bus), shown instead of "Stopped at step"
     std::unique_ptr<canopen::ScriptRunner> runner_;
 };
 

@@ -34,6 +34,8 @@ QString WizardGuard::reason() const {
         return tr("The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; "
                   "you can still prepare the steps and save them as a script.");
     if (workspace_->bus()->state() == CanBus::State::Opening) return tr("The bus is still opening; sending is possible once it is open.");
+    if (workspace_->bus()->state() == CanBus::State::Lost)
+        return tr("The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.").arg(workspace_->bus()->errorString());
     return tr("The bus is not open (%1), so nothing can be sent.").arg(toString(workspace_->bus()->state()));
 }
 

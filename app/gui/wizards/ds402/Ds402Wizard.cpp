@@ -58,6 +58,10 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
             if (!ctl_ && node_ > 0) selectNode(node_);
             return;
         }
+        if (s == CanBus::State::Lost) {  // issue 16: nothing can be sent; say what the drive may be left in
+            stopOnBusLoss();
+            return;
+        }
         // The connection went away: tell the drive to disable if we still can, then forget it.
         safeDisable(tr("connection lost"));
         dropController(tr("Connection lost (bus %1). The drive was told to disable if the bus still accepted it; otherwise its own "

@@ -139,6 +139,8 @@ private:
     // Disables a drive the wizard may have left switched on, without waiting (close, quit,
     // bus lost). Returns whether something was sent.
     bool safeDisable(const QString& why);
+    // The bus was lost (issue 16): stop, and say the drive's last known state and what to check.
+    void stopOnBusLoss();
     QString checkAdvice() const;  // what to check for this vendor
 
     Workspace* workspace_;

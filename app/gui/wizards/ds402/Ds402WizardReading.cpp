@@ -3,6 +3,7 @@
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/wizards/common/BusLossAdvice.h"
 
 #include "core/canopen/SdoClient.h"
 #include "eds/DictionaryLibrary.h"
@@ -169,6 +170,22 @@ void Ds402Wizard::makeController() {
     ctl_ = std::make_unique<canopen::Ds402Controller>(*ctlSdo_, static_cast<uint8_t>(node_));
     ctl_->setTimeout(1000);
     ctl_->setSendObserver([](const QString& line) { spdlog::info("ds402 wizard: {}", line.toStdString()); });
+}
+
+void Ds402Wizard::stopOnBusLoss() {
+    if (node_ <= 0 || (!ctl_ && state_ == State::Unknown)) {
+        dropController(tr("Bus lost. CoScope reconnects by itself; choose the drive again when the bus is back."));
+        return;
+    }
+    const bool moving = ctl_ && ctl_->testMoveActive();
+    const bool mayBeEnabled = moving || state_ == State::OperationEnabled || state_ == State::SwitchedOn ||
+                              state_ == State::QuickStopActive || state_ == State::FaultReactionActive || sentCommands_;
+    const QString last = state_ == State::Unknown ? tr("CiA 402 state unknown")
+                                                  : tr("%1 (statusword %2h)").arg(canopen::ds402::stateName(state_)).arg(statusword_, 4, 16, QLatin1Char('0')).toUpper();
+    const QString text = BusLossAdvice::driveMessage(workspace_->bus() ? workspace_->bus()->errorString() : QString(), node_,
+                                                     BusLossAdvice::lastNmtState(workspace_->nodes(), node_), last, mayBeEnabled);
+    spdlog::warn("ds402 wizard: bus lost with node {} last in {}{}", node_, last.toStdString(), mayBeEnabled ? ", may still be enabled" : "");
+    dropController(text);
 }
 
 void Ds402Wizard::dropController(const QString& why) {
