@@ -96,6 +96,14 @@ private slots:
         server = serve(net, port);  // back
         QTRY_VERIFY_WITH_TIMEOUT(w.busStatus()->stateText().startsWith(QStringLiteral("open")), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(w.workspace()->store()->gaps().size() == 1, 3000);
+        QVERIFY2(wiz->message().contains(QStringLiteral("may still be enabled")), qPrintable(wiz->message()));  // kept on return
+        // The technician reads the drive again: it is indeed still enabled.
+        QPushButton* read = nullptr;
+        for (QPushButton* b : wiz->findChildren<QPushButton*>())
+            if (b->text() == QStringLiteral("Read state")) read = b;
+        QVERIFY(read);
+        QTest::mouseClick(read, Qt::LeftButton);
+        QVERIFY2(QTest::qWaitFor([&] { return wiz->shownState() == State::OperationEnabled; }, 8000), qPrintable(wiz->message()));
         // The sim drive's heartbeat (generic-cia402 produces one) makes its state known again.
         QTRY_VERIFY_WITH_TIMEOUT(nodes->index(0, NodesModel::State).data().toString() != QStringLiteral("unknown (gap)"), 8000);
         net->stop();

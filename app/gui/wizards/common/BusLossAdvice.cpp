@@ -21,7 +21,7 @@ QString BusLossAdvice::driveMessage(const QString& reason, int node, const QStri
     else
         text += u' ' + tr("The drive was not enabled by this wizard; it should still be in that state.");
     text += u' ' + tr("Check at the drive (display, enable LED, brake) before going near the machine. CoScope reconnects by itself; "
-                      "choose the drive again when the bus is back.");
+                      "press “Read state” when the bus is back.");
     return text;
 }
 
@@ -32,6 +32,24 @@ QString BusLossAdvice::scriptMessage(const QString& reason, int step, int steps)
         .arg(reason)
         .arg(step + 1)
         .arg(steps);
+}
+
+QString BusLossAdvice::pdoMessage(const QString& reason, int node, const QString& pdo, const QString& nmt) {
+    return tr("Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 "
+              "set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) "
+              "and apply again; the drive's own communication-loss reaction decides what it does meanwhile.")
+        .arg(reason, pdo)
+        .arg(node)
+        .arg(nmt);
+}
+
+QString BusLossAdvice::settingsMessage(const QString& reason, int node, const QString& nmt) {
+    return tr("Stopped: bus lost (%1) during the change of node %2 (last known %3). The device may have taken the new node-ID or "
+              "bit rate, stored it without applying it, or kept the old one. When the bus is back, scan (and if nothing answers, "
+              "connect at the other bit rate) to see where the device is before changing anything else.")
+        .arg(reason)
+        .arg(node)
+        .arg(nmt);
 }
 
 }  // namespace coscope::gui

@@ -23,6 +23,10 @@ public:
     static QString driveMessage(const QString& reason, int node, const QString& nmt, const QString& lastDriveState, bool mayBeEnabled);
     // A script run (PDO mapping, node-ID / bit rate, DCF) stopped at step `step` (0-based) of `steps`.
     static QString scriptMessage(const QString& reason, int step, int steps);
+    // The PDO wizard's apply (CiA 301 §7.2.2.3: a PDO is disabled by COB-ID bit 31 while mapped).
+    static QString pdoMessage(const QString& reason, int node, const QString& pdo, const QString& nmt);
+    // The node-ID / bit-rate change (CiA 305 LSS or the vendor's objects, stored with 1010h).
+    static QString settingsMessage(const QString& reason, int node, const QString& nmt);
 };
 
 }  // namespace coscope::gui

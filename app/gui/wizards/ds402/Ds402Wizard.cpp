@@ -55,7 +55,9 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
     });
     connect(workspace_, &Workspace::busStateChanged, this, [this](CanBus::State s) {
         if (s == CanBus::State::Open) {
-            if (!ctl_ && node_ > 0) selectNode(node_);
+            // Back after a loss: the loss message stays until the user reads the drive again.
+            if (!ctl_ && node_ > 0 && !stoppedByLoss_) selectNode(node_);
+            stoppedByLoss_ = false;
             return;
         }
         if (s == CanBus::State::Lost) {  // issue 16: nothing can be sent; say what the drive may be left in

@@ -154,6 +154,7 @@ private:
     bool holding_ = false;
     bool sentCommands_ = false;  // the wizard wrote 6040h since the node was chosen
     bool closing_ = false;
+    bool stoppedByLoss_ = false;  // the bus was lost while a drive was shown: no automatic re-read on return
     int selection_ = 0;    // counts selectNode() calls: answers for an earlier choice are dropped
     int settleTries_ = 0;  // re-reads while the drive is Not ready to switch on
     canopen::ds402::State state_ = canopen::ds402::State::Unknown;

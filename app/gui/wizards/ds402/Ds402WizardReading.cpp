@@ -174,7 +174,7 @@ void Ds402Wizard::makeController() {
 
 void Ds402Wizard::stopOnBusLoss() {
     if (node_ <= 0 || (!ctl_ && state_ == State::Unknown)) {
-        dropController(tr("Bus lost. CoScope reconnects by itself; choose the drive again when the bus is back."));
+        dropController(tr("Bus lost. CoScope reconnects by itself; press “Read state” when the bus is back."));
         return;
     }
     const bool moving = ctl_ && ctl_->testMoveActive();
@@ -184,6 +184,7 @@ void Ds402Wizard::stopOnBusLoss() {
                                                   : tr("%1 (statusword %2h)").arg(canopen::ds402::stateName(state_)).arg(statusword_, 4, 16, QLatin1Char('0')).toUpper();
     const QString text = BusLossAdvice::driveMessage(workspace_->bus() ? workspace_->bus()->errorString() : QString(), node_,
                                                      BusLossAdvice::lastNmtState(workspace_->nodes(), node_), last, mayBeEnabled);
+    stoppedByLoss_ = true;
     spdlog::warn("ds402 wizard: bus lost with node {} last in {}{}", node_, last.toStdString(), mayBeEnabled ? ", may still be enabled" : "");
     dropController(text);
 }

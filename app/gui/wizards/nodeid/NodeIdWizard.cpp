@@ -3,6 +3,7 @@
 
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/common/BusLossAdvice.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
@@ -40,6 +41,14 @@ NodeIdWizard::NodeIdWizard(Workspace* workspace, int node, QWidget* parent) : QW
     // The services hang on the bus's dispatcher: let go of them while it still exists.
     connect(workspace_, &Workspace::aboutToDisconnect, this, &NodeIdWizard::dropServices);
     connect(workspace_, &Workspace::sourceChanged, this, &NodeIdWizard::dropServices);
+    connect(workspace_, &Workspace::busStateChanged, this, [this](CanBus::State s) {
+        if (s != CanBus::State::Lost || !running_ || reconnecting_) return;  // issue 16: stop, say what may be left
+        const QString reason = workspace_->bus() ? workspace_->bus()->errorString() : QString();
+        const int node = request_.node;
+        changer_.reset();
+        changerFor_ = nullptr;
+        finish(false, BusLossAdvice::settingsMessage(reason, node, BusLossAdvice::lastNmtState(workspace_->nodes(), node)));
+    });
     frames_->markStart();
     movePaneTo(FindPageId);
     if (node > 0) selectNode(node);

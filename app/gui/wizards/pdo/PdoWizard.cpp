@@ -2,6 +2,7 @@
 #include "app/gui/wizards/pdo/PdoWizard.h"
 
 #include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/common/BusLossAdvice.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/pdo/PdoApplyPage.h"
@@ -65,6 +66,12 @@ PdoWizard::PdoWizard(Workspace* workspace, int node, QWidget* parent) : QWizard(
     resize(1040, 820);
     connect(this, &QWizard::currentIdChanged, this, &PdoWizard::movePaneTo);
     connect(workspace_, &Workspace::sourceChanged, this, &PdoWizard::dropServices);
+    connect(workspace_, &Workspace::busStateChanged, this, [this](CanBus::State s) {
+        if (s != CanBus::State::Lost || !applying_) return;  // issue 16: stop, say what may be left
+        const QString reason = workspace_->bus() ? workspace_->bus()->errorString() : QString();
+        dropServices();
+        finishApply(false, BusLossAdvice::pdoMessage(reason, state_.node, state_.pdo.name(), BusLossAdvice::lastNmtState(workspace_->nodes(), state_.node)));
+    });
     frames_->markStart();
     movePaneTo(ChoosePageId);
     autoPick_ = node <= 0;
