@@ -53,9 +53,9 @@ private slots:
     }
 
     void lostThenBackAfterFailedAttempts() {
+        QList<CanBus::State> states;  // outlives the bus, whose close() still reports Closed
         FakeAdapterBus bus;
-        QList<CanBus::State> states;
-        connect(&bus, &CanBus::stateChanged, this, [&](CanBus::State s) { states << s; });
+        connect(&bus, &CanBus::stateChanged, &bus, [&](CanBus::State s) { states << s; });
         bus.open();
         QVERIFY(bus.waitForOpen(2000));
         QCOMPARE(bus.starts.load(), 1);
@@ -67,15 +67,15 @@ private slots:
         QVERIFY(bus.nextRetryInMs() > 0 && bus.nextRetryInMs() <= 500);
         // Attempts at 0.5 s and 1.5 s fail and keep it Lost (not Error); the next wait is 2 s.
         QTRY_COMPARE_WITH_TIMEOUT(bus.starts.load(), 3, 3000);
-        QCOMPARE(bus.state(), CanBus::State::Lost);
+        QVERIFY(bus.state() == CanBus::State::Lost);
         QVERIFY2(bus.nextRetryInMs() > 1000 && bus.nextRetryInMs() <= 2000, qPrintable(QString::number(bus.nextRetryInMs())));
 
         bus.present = true;
-        QTRY_COMPARE_WITH_TIMEOUT(bus.state(), CanBus::State::Open, 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(bus.state() == CanBus::State::Open, 3000);
         QCOMPARE(bus.starts.load(), 4);
         QCOMPARE(bus.lostSinceNs(), int64_t(0));
         QCOMPARE(bus.nextRetryInMs(), -1);
-        QTRY_COMPARE(states, (QList<CanBus::State>{CanBus::State::Opening, CanBus::State::Open, CanBus::State::Lost, CanBus::State::Open}));
+        QTRY_VERIFY(states == (QList<CanBus::State>{CanBus::State::Opening, CanBus::State::Open, CanBus::State::Lost, CanBus::State::Open}));
 
         // Lost again: the schedule starts over at 0.5 s.
         bus.unplug();
@@ -90,12 +90,12 @@ private slots:
         bus.unplug();
         QTRY_VERIFY(bus.state() == CanBus::State::Lost);
         bus.close();
-        QCOMPARE(bus.state(), CanBus::State::Closed);
+        QVERIFY(bus.state() == CanBus::State::Closed);
         const int starts = bus.starts.load();
         bus.present = true;
         QTest::qWait(1200);
         QCOMPARE(bus.starts.load(), starts);
-        QCOMPARE(bus.state(), CanBus::State::Closed);
+        QVERIFY(bus.state() == CanBus::State::Closed);
     }
 
     void firstOpenFailureIsAnErrorNotALoss() {
@@ -103,7 +103,7 @@ private slots:
         bus.present = false;
         bus.open();
         QVERIFY(!bus.waitForOpen(2000));
-        QCOMPARE(bus.state(), CanBus::State::Error);
+        QVERIFY(bus.state() == CanBus::State::Error);
         QTest::qWait(700);
         QCOMPARE(bus.starts.load(), 1);
     }
