@@ -2,6 +2,7 @@
 #include "core/can/QtCanBus.h"
 
 #include "core/can/SocketCanLinks.h"
+#include "core/can/SocketCanPresence.h"
 
 #include <QCanBus>
 #include <QCanBusDevice>
@@ -104,6 +105,11 @@ void QtCanBus::startOnThread() {
         if (!opened_) fail(QStringLiteral("cannot open %1: no connection within %2 s").arg(name()).arg(kOpenTimeoutMs / 1000));
     });
     openTimer_->start(kOpenTimeoutMs);
+    if (url().scheme == u"socketcan") {
+        linkTimer_ = new QTimer(context_);
+        linkTimer_->setInterval(1000);
+        QObject::connect(linkTimer_, &QTimer::timeout, context_, [this] { checkLink(); });
+    }
 
     if (!device_->connectDevice()) {
         if (device_) fail(QStringLiteral("cannot open %1: %2").arg(name(), explain(device_->errorString())));  // else already reported
@@ -118,6 +124,8 @@ void QtCanBus::stopOnThread() {
         delete openTimer_;
         openTimer_ = nullptr;
     }
+    delete linkTimer_;
+    linkTimer_ = nullptr;
     if (device_) {
         QObject::disconnect(device_, nullptr, context_, nullptr);
         if (device_->state() != QCanBusDevice::UnconnectedState) device_->disconnectDevice();
@@ -134,6 +142,7 @@ QString QtCanBus::explain(const QString& raw) const {
 void QtCanBus::fail(const QString& message) {
     if (stopping_) return;
     if (openTimer_) openTimer_->stop();
+    if (linkTimer_) linkTimer_->stop();
     if (device_) {
         QObject::disconnect(device_, nullptr, context_, nullptr);
         if (device_->state() != QCanBusDevice::UnconnectedState) device_->disconnectDevice();
@@ -193,9 +202,19 @@ void QtCanBus::onDeviceState(int s) {
     if (st == QCanBusDevice::ConnectedState && !opened_) {
         opened_ = true;
         if (openTimer_) openTimer_->stop();
+        if (linkTimer_) linkTimer_->start();
         reachedOpen();
     } else if (st == QCanBusDevice::UnconnectedState && opened_) {
         fail(QStringLiteral("%1 disconnected (device gone or its server closed)").arg(name()));
+    }
+}
+
+void QtCanBus::checkLink() {
+    if (!opened_ || stopping_) return;
+    switch (socketCanPresence(url().target)) {
+    case LinkPresence::Up: return;
+    case LinkPresence::Gone: fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("No such device")))); return;
+    case LinkPresence::Down: fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("Network is down")))); return;
     }
 }
 

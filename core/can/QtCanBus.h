@@ -52,12 +52,14 @@ private:
     void onFramesReceived();
     void onDeviceError(int error);
     void onDeviceState(int state);
+    void checkLink();
     void fail(const QString& message);
     QString explain(const QString& raw) const;  // socketcan: what the system error means (SocketCanLinks.h)
     QString name() const;
 
     QCanBusDevice* device_ = nullptr;
     QTimer* openTimer_ = nullptr;
+    QTimer* linkTimer_ = nullptr;  // socketcan: is the interface still there and up (SocketCanPresence.h)
     bool restarting_ = false;  // bus thread: resetController() running, its error goes to restartError_
     QString restartError_;
     bool opened_ = false;

@@ -12,6 +12,7 @@
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "core/sim/SimNetwork.h"
 #include "core/sim/SocketcandServer.h"
+#include "core/sim/VirtualDevice.h"
 
 #include <QLabel>
 #include <QMessageBox>
@@ -58,6 +59,8 @@ private slots:
         std::shared_ptr<sim::SimNetwork> net = sim::SimNetwork::fromSpec(QStringLiteral("1:generic-cia402"), &error);
         QVERIFY2(net, qPrintable(error));
         net->start();
+        // The drive produces a heartbeat every 500 ms (1017h), as a commissioned drive does.
+        net->runOnNetworkThread([&] { net->device(1)->writeFromSdo(0x1017, 0, QByteArray::fromHex("f401")); });
         auto server = serve(net, 0);
         const quint16 port = server->serverPort();
         QVERIFY(port != 0);
@@ -81,7 +84,7 @@ private slots:
             auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
             QVERIFY(clickStep(*wiz, Command::EnableOperation));
         }
-        QCOMPARE(wiz->shownState(), State::OperationEnabled);
+        QVERIFY(wiz->shownState() == State::OperationEnabled);
         QTRY_VERIFY_WITH_TIMEOUT(w.workspace()->nodes().node(1).has_value(), 5000);
 
         server.reset();  // the socketcand server dies
@@ -104,7 +107,7 @@ private slots:
         QVERIFY(read);
         QTest::mouseClick(read, Qt::LeftButton);
         QVERIFY2(QTest::qWaitFor([&] { return wiz->shownState() == State::OperationEnabled; }, 8000), qPrintable(wiz->message()));
-        // The sim drive's heartbeat (generic-cia402 produces one) makes its state known again.
+        // The drive's next heartbeat makes its state known again.
         QTRY_VERIFY_WITH_TIMEOUT(nodes->index(0, NodesModel::State).data().toString() != QStringLiteral("unknown (gap)"), 8000);
         net->stop();
     }

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QLoggingCategory>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -152,6 +153,34 @@ private slots:
         const QString text = QString::fromUtf8(f.readAll());
         for (const char* id : {" can0 181#01", " can0 182#02", " can0 281#03", " can0 282#04"})
             QVERIFY2(text.contains(QLatin1String(id)), qPrintable(text));
+    }
+
+    // SocketCAN: the interface is deleted (a USB adapter unplugged) and created again. Only where
+    // the test may create vcan interfaces (vcan module, CAP_NET_ADMIN); skipped otherwise.
+    void socketcanInterfaceDeletedAndBack() {
+        if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
+        const QString ifname = QStringLiteral("cslost%1").arg(QCoreApplication::applicationPid() % 1000);
+        auto ip = [&](const QStringList& args) { return QProcess::execute(QStringLiteral("ip"), args) == 0; };
+        auto create = [&] { return ip({QStringLiteral("link"), QStringLiteral("add"), QStringLiteral("dev"), ifname, QStringLiteral("type"), QStringLiteral("vcan")}) &&
+                                   ip({QStringLiteral("link"), QStringLiteral("set"), ifname, QStringLiteral("up")}); };
+        if (!create()) QSKIP("cannot create a vcan interface here (needs the vcan module and CAP_NET_ADMIN)");
+        auto cleanup = qScopeGuard([&] { ip({QStringLiteral("link"), QStringLiteral("del"), ifname}); });
+        auto bus = openBus(QStringLiteral("socketcan://") + ifname);
+        QVERIFY2(bus->waitForOpen(3000), qPrintable(bus->errorString()));
+        QVERIFY(ip({QStringLiteral("link"), QStringLiteral("del"), ifname}));
+        QTRY_VERIFY_WITH_TIMEOUT(bus->state() == CanBus::State::Lost, 5000);
+        QVERIFY2(bus->errorString().contains(QStringLiteral("No such device")), qPrintable(bus->errorString()));
+        QTest::qWait(1000);
+        QVERIFY(create());
+        QTRY_VERIFY_WITH_TIMEOUT(bus->state() == CanBus::State::Open, 10000);
+        auto other = openBus(QStringLiteral("socketcan://") + ifname);
+        QVERIFY2(other->waitForOpen(3000), qPrintable(other->errorString()));
+        QVERIFY(other->send(CanFrame::classic(0x3A5, {0x42})));
+        const auto frames = readFrames(*bus, 1);
+        QCOMPARE(frames.size(), size_t(1));
+        QCOMPARE(frames[0].id, 0x3A5u);
+        other->close();
+        bus->close();
     }
 
     // Qt's virtualcan plugin: the server lives in the process of the first client. A second
