@@ -5,6 +5,7 @@
 // table shows the node states as unknown; the server comes back: "open", the trace marks the gap.
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/status/BusStatusBar.h"
 #include "app/gui/trace/TraceModel.h"
@@ -13,6 +14,7 @@
 #include "core/sim/SimNetwork.h"
 #include "core/sim/SocketcandServer.h"
 #include "core/sim/VirtualDevice.h"
+#include "eds/SimulatorDictionaries.h"
 
 #include <QLabel>
 #include <QMessageBox>
@@ -52,6 +54,7 @@ private slots:
     void initTestCase() {
         QCoreApplication::setOrganizationName(QStringLiteral("CoScopeTest"));
         QCoreApplication::setApplicationName(QStringLiteral("gui_lost_adapter"));
+        eds::installSimulatorDictionaries();
     }
 
     void lostShownWizardStoppedAndBack() {
