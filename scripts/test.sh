@@ -1,9 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs what is missing, builds CoScope with warnings as errors and runs the whole test suite.
+#   scripts/test.sh [--preset dev|asan] [CTEST-ARGS...]
+# --preset asan builds and runs the same suite under AddressSanitizer + UndefinedBehaviorSanitizer.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+preset=dev
+if [ "${1:-}" = "--preset" ]; then
+  preset="${2:?--preset needs dev or asan}"
+  shift 2
+fi
+case "$preset" in dev|asan) ;; *) echo "test.sh: unknown preset '$preset' (dev or asan)" >&2; exit 2 ;; esac
 scripts/setup.sh test
-cmake --preset dev >/dev/null
-cmake --build --preset dev -j"$(nproc)"
-ctest --preset dev "$@"
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset" -j"$(nproc)"
+ctest --preset "$preset" "$@"

@@ -62,8 +62,8 @@ SocketCanLinkJob::~SocketCanLinkJob() { cancel(); }
 void SocketCanLinkJob::cancel() {
     if (!process_) return;
     process_->disconnect(this);
+    // SIGKILL and no wait on the GUI thread: ~QProcess, run later by deleteLater, reaps it.
     process_->kill();
-    process_->waitForFinished(1000);
     process_->deleteLater();
     process_ = nullptr;
     steps_.clear();

@@ -25,6 +25,7 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include "tests/gui/MenuClick.h"
 #include "tests/gui/WaitFor.h"
 
 #include "tests/gui/ModalAnswer.h"
@@ -36,34 +37,11 @@ using coscope::testing::answerFileDialog;
 
 namespace {
 using coscope::testing::waitFor;
-QString plain(QString t) { return t.remove(QLatin1Char('&')); }
+using coscope::testing::clickMenuItem;
+using coscope::testing::menuItem;
+using coscope::testing::openMenu;
+QString plain(const QString& t) { return coscope::testing::withoutAccelerator(t); }
 
-// Opens the menu `title` by a click on the menu bar; the menu, shown, or null.
-QMenu* openMenu(MainWindow& w, const QString& title) {
-    for (QAction* a : w.menuBar()->actions())
-        if (a->menu() && plain(a->text()) == title) {
-            QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(a).center());
-            return waitFor([&] { return a->menu()->isVisible(); }) ? a->menu() : nullptr;
-        }
-    return nullptr;
-}
-QAction* itemOf(QMenu* menu, const QString& text) {
-    for (QAction* a : menu->actions())
-        if (!a->isSeparator() && plain(a->text()).startsWith(text)) return a;
-    return nullptr;
-}
-// Opens `title` and clicks its item `item`; false when there is no such item.
-bool clickMenuItem(MainWindow& w, const QString& title, const QString& item) {
-    QMenu* menu = openMenu(w, title);
-    if (!menu) return false;
-    QAction* a = itemOf(menu, item);
-    if (!a) {
-        QTest::keyClick(menu, Qt::Key_Escape);
-        return false;
-    }
-    QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
-    return true;
-}
 // The Dictionary column of every node row, as the Nodes dock shows it.
 QStringList dictionaryColumn(MainWindow& w) {
     QStringList out;
@@ -161,7 +139,7 @@ private slots:
         // Not connected: the Bus menu's Scan network is there, disabled, and says why.
         QMenu* bus = openMenu(w, QStringLiteral("Bus"));
         QVERIFY(bus);
-        QAction* scan = itemOf(bus, QStringLiteral("Scan network"));
+        QAction* scan = menuItem(bus, QStringLiteral("Scan network"));
         QVERIFY(scan);
         QVERIFY(!scan->isEnabled());
         QVERIFY2(scan->statusTip().contains(QStringLiteral("Connect")), qPrintable(scan->statusTip()));
@@ -223,7 +201,7 @@ private slots:
             if (expectEnabled && !section.isEmpty()) problem += QStringLiteral("section shown while enabled: ") + section;
             // A click on a disabled item opens nothing.
             if (!expectEnabled) {
-                QAction* first = itemOf(menu, QStringLiteral("CiA 402"));
+                QAction* first = menuItem(menu, QStringLiteral("CiA 402"));
                 QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(first).center());
                 QTest::qWait(100);
                 for (QWidget* top : QApplication::topLevelWidgets())

@@ -23,14 +23,43 @@ using namespace coscope;
 using namespace coscope::gui;
 
 namespace {
-// Picks the backend `key` in the combo from the keyboard, as a user would.
-bool chooseBackend(ConnectDialog& d, const QString& key) {
-    QComboBox* c = d.backend();
+// Picks the first entry of `c` for which `is(text, data)` holds from the keyboard, as a user
+// would: Home, then Down until it is current; false when there is none.
+template <typename Is>
+bool pickByKeys(QComboBox* c, Is is) {
     c->setFocus();
     QTest::keyClick(c, Qt::Key_Home);
-    for (int i = 0; i < c->count() && c->currentData().toString() != key; ++i) QTest::keyClick(c, Qt::Key_Down);
-    return c->currentData().toString() == key;
+    for (int i = 0; i < c->count() && !is(c->currentText(), c->currentData()); ++i) QTest::keyClick(c, Qt::Key_Down);
+    return is(c->currentText(), c->currentData());
 }
+// Picks the backend `key` in the combo from the keyboard.
+bool chooseBackend(ConnectDialog& d, const QString& key) {
+    return pickByKeys(d.backend(), [&](const QString&, const QVariant& v) { return v.toString() == key; });
+}
+bool pickText(QComboBox* c, const QString& text) {
+    return pickByKeys(c, [&](const QString& t, const QVariant&) { return t == text; });
+}
+bool pickBitrate(QComboBox* c, int bitrate) {
+    return pickByKeys(c, [&](const QString&, const QVariant& v) { return v.toInt() == bitrate; });
+}
+// A stand-in for ip(8), the shell script `body`, used by CoScope through COSCOPE_IP while this
+// object lives.
+class StandInIp {
+public:
+    explicit StandInIp(const QByteArray& body) {
+        QFile f(dir_.filePath(QStringLiteral("ip")));
+        ok_ = f.open(QIODevice::WriteOnly) && f.write("#!/bin/sh\n" + body) > 0;
+        f.close();
+        ok_ = ok_ && f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
+        qputenv("COSCOPE_IP", f.fileName().toLocal8Bit());
+    }
+    ~StandInIp() { qunsetenv("COSCOPE_IP"); }
+    bool ok() const { return ok_; }
+
+private:
+    QTemporaryDir dir_;
+    bool ok_ = false;
+};
 // Ticks or unticks the drive in `row` as a user does: click the row, Space toggles its box.
 void toggleDrive(ConnectDialog& d, int row) {
     QTableWidget* t = d.drives();
@@ -85,20 +114,14 @@ private slots:
     // brings it up at the chosen bit rate (ip-link(8) "type can bitrate").
     void socketcanInterfacesShowStateAndBringUpCommand() {
         if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
-        QTemporaryDir dir;
-        const QString ip = dir.filePath(QStringLiteral("ip"));
-        QFile f(ip);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("#!/bin/sh\ncat <<'EOF'\n"
+        StandInIp ip("cat <<'EOF'\n"
                 R"([{"ifname":"lo","flags":["UP"],"link_type":"loopback"},)"
                 R"({"ifname":"can0","flags":["NOARP","ECHO"],"operstate":"DOWN","link_type":"can","linkinfo":{"info_kind":"can",)"
                 R"("info_data":{"state":"STOPPED","bittiming":{"bitrate":250000}}}},)"
                 R"({"ifname":"can1","flags":["NOARP","UP","LOWER_UP"],"operstate":"UP","link_type":"can","linkinfo":{"info_kind":"can",)"
                 R"("info_data":{"state":"BUS-OFF","berr_counter":{"tx":256,"rx":0},"bittiming":{"bitrate":500000}}}}])"
                 "\nEOF\n");
-        f.close();
-        f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
-        qputenv("COSCOPE_IP", ip.toLocal8Bit());
+        QVERIFY(ip.ok());
         ConnectDialog d;
         d.show();
         QVERIFY(QTest::qWaitForWindowExposed(&d));
@@ -107,20 +130,14 @@ private slots:
         auto* state = d.findChild<QLabel*>(QStringLiteral("linkState"));
         // `ip` runs off the GUI thread; the list fills when it answers.
         QVERIFY(coscope::testing::waitFor([&] { return device->findText(QStringLiteral("can0")) >= 0; }, 5000));
-        qunsetenv("COSCOPE_IP");
         QVERIFY(device->findText(QStringLiteral("lo")) < 0);
         // Pick can0 from the list with the keyboard.
-        device->setFocus();
-        QTest::keyClick(device, Qt::Key_Home);
-        while (device->currentText() != QStringLiteral("can0") && device->currentIndex() < device->count() - 1) QTest::keyClick(device, Qt::Key_Down);
-        QCOMPARE(device->currentText(), QStringLiteral("can0"));
+        QVERIFY(pickText(device, QStringLiteral("can0")));
         QVERIFY(state->isVisible());
         QVERIFY2(state->text().contains(QStringLiteral("can0 is down")), qPrintable(state->text()));
         // Choose 125 kbit/s: the command follows the choice.
         auto* bitrate = d.findChild<QComboBox*>(QStringLiteral("bitrate"));
-        bitrate->setFocus();
-        QTest::keyClick(bitrate, Qt::Key_Home);
-        while (bitrate->currentData().toInt() != 125000 && bitrate->currentIndex() < bitrate->count() - 1) QTest::keyClick(bitrate, Qt::Key_Down);
+        QVERIFY(pickBitrate(bitrate, 125000));
         QVERIFY2(state->text().contains(QStringLiteral("sudo ip link set can0 up type can bitrate 125000")), qPrintable(state->text()));
         // can1 is up but bus-off: say so.
         device->setFocus();
@@ -134,13 +151,10 @@ private slots:
     void bringUpRunsTheCommandShown() {
         if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
         if (!mayConfigureLinks()) QSKIP("this test runs without CAP_NET_ADMIN: the button is only offered with it");
+        // Lists can0 down until "link set can0 up type can bitrate N" ran; logs every other call.
         QTemporaryDir dir;
-        const QString ip = dir.filePath(QStringLiteral("ip"));
         const QString calls = dir.filePath(QStringLiteral("calls"));
-        QFile f(ip);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        // A stand-in for ip(8): lists can0 down until "link set can0 up type can bitrate N" ran.
-        f.write(QStringLiteral("#!/bin/sh\nif [ \"$1\" = -details ]; then\n"
+        StandInIp ip(QStringLiteral("if [ \"$1\" = -details ]; then\n"
                                "  if [ -f '%1.up' ]; then r=$(cat '%1.up'); flags='\"NOARP\",\"UP\",\"LOWER_UP\"'; st=ERROR-ACTIVE;\n"
                                "  else r=250000; flags='\"NOARP\"'; st=STOPPED; fi\n"
                                "  echo \"[{\\\"ifname\\\":\\\"can0\\\",\\\"flags\\\":[$flags],\\\"link_type\\\":\\\"can\\\",\\\"linkinfo\\\":{\\\"info_kind\\\":\\\"can\\\","
@@ -149,9 +163,7 @@ private slots:
                                "if [ \"$4\" = up ] && [ \"$7\" = bitrate ]; then echo \"$8\" > '%1.up'; fi\n")
                     .arg(calls)
                     .toUtf8());
-        f.close();
-        f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
-        qputenv("COSCOPE_IP", ip.toLocal8Bit());
+        QVERIFY(ip.ok());
         ConnectDialog d;
         d.show();
         QVERIFY(QTest::qWaitForWindowExposed(&d));
@@ -160,21 +172,16 @@ private slots:
         auto* state = d.findChild<QLabel*>(QStringLiteral("linkState"));
         auto* bringUp = d.findChild<QPushButton*>(QStringLiteral("bringUp"));
         QVERIFY(coscope::testing::waitFor([&] { return device->findText(QStringLiteral("can0")) >= 0; }, 5000));
-        device->setFocus();
-        QTest::keyClick(device, Qt::Key_Home);
-        while (device->currentText() != QStringLiteral("can0") && device->currentIndex() < device->count() - 1) QTest::keyClick(device, Qt::Key_Down);
+        QVERIFY(pickText(device, QStringLiteral("can0")));
         QVERIFY2(state->text().contains(QStringLiteral("can0 is down")), qPrintable(state->text()));
         auto* bitrate = d.findChild<QComboBox*>(QStringLiteral("bitrate"));
-        bitrate->setFocus();
-        QTest::keyClick(bitrate, Qt::Key_Home);
-        while (bitrate->currentData().toInt() != 125000 && bitrate->currentIndex() < bitrate->count() - 1) QTest::keyClick(bitrate, Qt::Key_Down);
+        QVERIFY(pickBitrate(bitrate, 125000));
         QVERIFY(bringUp->isVisible());
         QVERIFY(bringUp->isEnabled());
         QTest::mouseClick(bringUp, Qt::LeftButton);
         QVERIFY2(coscope::testing::waitFor([&] { return state->text().contains(QStringLiteral("can0 is up")); }, 5000), qPrintable(state->text()));
         QVERIFY2(state->text().contains(QStringLiteral("125")), qPrintable(state->text()));
         QVERIFY(!bringUp->isVisible());
-        qunsetenv("COSCOPE_IP");
         QFile log(calls);
         QVERIFY(log.open(QIODevice::ReadOnly));
         QCOMPARE(QString::fromUtf8(log.readAll()).trimmed(), QStringLiteral("link set can0 up type can bitrate 125000 restart-ms 100"));

@@ -18,32 +18,17 @@
 #include <QtTest>
 
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/MenuClick.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerFileDialog;
+using coscope::testing::clickMenuItem;
 using coscope::testing::waitFor;
 
 namespace {
 // File ▸ item, by clicks on the menu bar and the menu.
-bool clickMenuItem(MainWindow& w, const QString& title, const QString& item) {
-    auto plain = [](QString t) { return t.remove(QLatin1Char('&')); };
-    QAction* head = nullptr;
-    for (QAction* a : w.menuBar()->actions())
-        if (plain(a->text()) == title) head = a;
-    if (!head || !head->menu()) return false;
-    QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(head).center());
-    QMenu* menu = head->menu();
-    if (!waitFor([&] { return menu->isVisible(); })) return false;
-    for (QAction* a : menu->actions())
-        if (plain(a->text()).startsWith(item)) {
-            QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
-            return true;
-        }
-    QTest::keyClick(menu, Qt::Key_Escape);
-    return false;
-}
 
 // Opens `path` by File ▸ Open log… and its file dialog; waits until it is read.
 bool openByMenu(MainWindow& w, const QString& path) {

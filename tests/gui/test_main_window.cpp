@@ -38,6 +38,7 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include "tests/gui/MenuClick.h"
 #include "tests/gui/WaitFor.h"
 
 #include <spdlog/spdlog.h>
@@ -52,6 +53,7 @@ using coscope::testing::answerFileDialog;
 
 namespace {
 // Waits (running the event loop, so the window's timer ticks) until `pred` holds.
+using coscope::testing::clickMenuItem;
 using coscope::testing::waitFor;
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
 
@@ -69,24 +71,6 @@ bool openLoaded(MainWindow& w, const QString& path) {
     return true;
 }
 
-// Opens the menu `title` on the menu bar by a click and clicks its item `item` (texts without '&').
-bool clickMenuItem(MainWindow& w, const QString& title, const QString& item) {
-    auto plain = [](QString t) { return t.remove(QLatin1Char('&')); };
-    QAction* head = nullptr;
-    for (QAction* a : w.menuBar()->actions())
-        if (plain(a->text()) == title) head = a;
-    if (!head || !head->menu()) return false;
-    QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(head).center());
-    QMenu* menu = head->menu();
-    if (!waitFor([&] { return menu->isVisible(); })) return false;
-    for (QAction* a : menu->actions())
-        if (plain(a->text()).startsWith(item)) {
-            QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
-            return true;
-        }
-    QTest::keyClick(menu, Qt::Key_Escape);
-    return false;
-}
 // Types into a line edit as a user does: select what is there, type, Enter.
 void typeAndEnter(QLineEdit* edit, const QString& text) {
     QTest::mouseClick(edit, Qt::LeftButton);
