@@ -966,6 +966,49 @@ Differs from the default</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::BusLossAdvice</name>
+    <message>
+        <source>NMT state unknown</source>
+        <translation>NMT 状态未知</translation>
+    </message>
+    <message>
+        <source>NMT: %1</source>
+        <translation>NMT：%1</translation>
+    </message>
+    <message>
+        <source>Bus lost (%1). The wizard stopped: nothing more can be sent to node %2.</source>
+        <translation>总线中断（%1）。向导已停止：无法再向节点 %2 发送任何报文。</translation>
+    </message>
+    <message>
+        <source>Last known state: %1, %2.</source>
+        <translation>最后已知状态：%1，%2。</translation>
+    </message>
+    <message>
+        <source>The drive may still be enabled (and moving, if it was): only its own communication-loss reaction (6007h) or heartbeat consumer (1016h) stops it.</source>
+        <translation>驱动器可能仍处于使能状态（若原本在运行，也可能仍在运行）：只有它自身的通信中断反应（6007h）或心跳消费者（1016h）才会让它停下。</translation>
+    </message>
+    <message>
+        <source>The drive was not enabled by this wizard; it should still be in that state.</source>
+        <translation>此向导没有使能驱动器；它应仍保持原来的状态。</translation>
+    </message>
+    <message>
+        <source>Check at the drive (display, enable LED, brake) before going near the machine. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
+        <translation>靠近机台前，请先在驱动器上确认（显示屏、使能指示灯、抱闸）。CoScope 会自动重新连接；总线恢复后请按“读取状态”。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) during step %2 of %3. The steps before it were sent; this one may or may not have reached the device, nothing after it was sent. The device may be half-configured (a PDO left disabled, a new node-ID or bit rate stored but not applied). When the bus is back, read the objects of this script back before running it again.</source>
+        <translation>已停止：第 %2 步（共 %3 步）执行时总线中断（%1）。之前的步骤都已发送；这一步不一定已送达设备，之后的步骤都没有发送。设备可能只配置了一半（某个 PDO 仍被禁用，或新的节点 ID、波特率已保存但尚未生效）。总线恢复后，请先读回此脚本涉及的对象，再重新执行。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
+        <translation>已停止：应用节点 %3 的 %2 时总线中断（%1）（最后已知：%4）。该 PDO 可能仍被禁用（COB-ID 第 31 位为 1），映射只写入一半，节点停在预操作状态。总线恢复后，请读回 %2（选择页）并重新应用；在此期间驱动器如何动作，取决于它自身的通信中断反应。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) during the change of node %2 (last known %3). The device may have taken the new node-ID or bit rate, stored it without applying it, or kept the old one. When the bus is back, scan (and if nothing answers, connect at the other bit rate) to see where the device is before changing anything else.</source>
+        <translation>已停止：更改节点 %2 时总线中断（%1）（最后已知：%3）。设备可能已采用新的节点 ID 或波特率、已保存但尚未生效，或仍保留旧值。总线恢复后，请先扫描（若无响应，改用另一个波特率连接），确认设备当前的设置，再做其他更改。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
@@ -1054,6 +1097,34 @@ Differs from the default</source>
     <message>
         <source>Last restart failed: %1</source>
         <translation>上次重新启动失败：%1</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>打开中</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已打开</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>lost, retrying now</source>
+        <translation>已中断，正在重试</translation>
+    </message>
+    <message>
+        <source>lost, retrying in %1 s</source>
+        <translation>已中断，%1 秒后重试</translation>
+    </message>
+    <message>
+        <source>Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back (Disconnect stops trying).</source>
+        <translation>适配器中断：%1。跟踪保留所有已收到的帧；适配器恢复后 CoScope 会重新打开总线（按“断开连接”即停止重试）。</translation>
     </message>
 </context>
 <context>
@@ -1851,6 +1922,18 @@ Arm the test move?</source>
     <message>
         <source>Mode of operation (6061h): %1</source>
         <translation>运行模式（6061h）：%1</translation>
+    </message>
+    <message>
+        <source>Bus lost. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
+        <translation>总线中断。CoScope 会自动重新连接；总线恢复后请按“读取状态”。</translation>
+    </message>
+    <message>
+        <source>CiA 402 state unknown</source>
+        <translation>CiA 402 状态未知</translation>
+    </message>
+    <message>
+        <source>%1 (statusword %2h)</source>
+        <translation>%1（状态字 %2h）</translation>
     </message>
 </context>
 <context>
@@ -3005,6 +3088,14 @@ Software version (100Ah): %3</source>
     <message>
         <source>Seen by</source>
         <translation>检测来源</translation>
+    </message>
+    <message>
+        <source>The bus was lost: the state is unknown until the next heartbeat (last known: %1)</source>
+        <translation>总线曾中断：在下一次心跳之前状态未知（最后已知：%1）</translation>
+    </message>
+    <message>
+        <source>unknown (gap)</source>
+        <translation>未知（中断）</translation>
     </message>
 </context>
 <context>
@@ -4426,6 +4517,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>Summary</source>
         <translation>摘要</translation>
     </message>
+    <message>
+        <source>Bus lost at %1, back at %2 (%3 s without frames)</source>
+        <translation>总线于 %1 中断，%2 恢复（%3 秒没有帧）</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::WizardFramesPane</name>
@@ -4452,6 +4547,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>The bus is not open (%1), so nothing can be sent.</source>
         <translation>总线未打开（%1），因此无法发送。</translation>
     </message>
+    <message>
+        <source>The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.</source>
+        <translation>总线已中断（%1）；CoScope 正在重新连接。恢复后即可再发送。</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::Workspace</name>
@@ -4466,6 +4565,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.</source>
         <translation>捕获已停止：无法写入捕获日志 %1（%2）。跟踪中保留已收到的 %L3 帧。</translation>
+    </message>
+    <message>
+        <source>Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.</source>
+        <translation>总线中断：%1。正以逐步延长的间隔重试；各节点的状态在下一次心跳之前未知。</translation>
+    </message>
+    <message>
+        <source>Bus back after %1 s: frames between are missing from the trace</source>
+        <translation>总线在 %1 秒后恢复：中断期间的帧不在跟踪中</translation>
     </message>
 </context>
 </TS>

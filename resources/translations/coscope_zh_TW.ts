@@ -966,6 +966,49 @@ Differs from the default</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::BusLossAdvice</name>
+    <message>
+        <source>NMT state unknown</source>
+        <translation>NMT 狀態未知</translation>
+    </message>
+    <message>
+        <source>NMT: %1</source>
+        <translation>NMT：%1</translation>
+    </message>
+    <message>
+        <source>Bus lost (%1). The wizard stopped: nothing more can be sent to node %2.</source>
+        <translation>總線中斷（%1）。精靈已停止：無法再向節點 %2 傳送任何訊息。</translation>
+    </message>
+    <message>
+        <source>Last known state: %1, %2.</source>
+        <translation>最後已知狀態：%1，%2。</translation>
+    </message>
+    <message>
+        <source>The drive may still be enabled (and moving, if it was): only its own communication-loss reaction (6007h) or heartbeat consumer (1016h) stops it.</source>
+        <translation>驅動器可能仍處於致能狀態（若原本在運轉，也可能仍在運轉）：只有它自身的通訊中斷反應（6007h）或心跳消費者（1016h）才會讓它停下。</translation>
+    </message>
+    <message>
+        <source>The drive was not enabled by this wizard; it should still be in that state.</source>
+        <translation>此精靈沒有將驅動器致能；它應仍保持原來的狀態。</translation>
+    </message>
+    <message>
+        <source>Check at the drive (display, enable LED, brake) before going near the machine. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
+        <translation>靠近機台前，請先在驅動器上確認（顯示器、致能指示燈、煞車）。CoScope 會自動重新連線；總線恢復後請按「讀取狀態」。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) during step %2 of %3. The steps before it were sent; this one may or may not have reached the device, nothing after it was sent. The device may be half-configured (a PDO left disabled, a new node-ID or bit rate stored but not applied). When the bus is back, read the objects of this script back before running it again.</source>
+        <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
+        <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
+    </message>
+    <message>
+        <source>Stopped: bus lost (%1) during the change of node %2 (last known %3). The device may have taken the new node-ID or bit rate, stored it without applying it, or kept the old one. When the bus is back, scan (and if nothing answers, connect at the other bit rate) to see where the device is before changing anything else.</source>
+        <translation>已停止：變更節點 %2 時總線中斷（%1）（最後已知：%3）。裝置可能已採用新的節點 ID 或鮑率、已儲存但尚未生效，或仍保留舊值。總線恢復後，請先掃描（若無回應，改用另一個鮑率連線），確認裝置目前的設定，再做其他變更。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::BusStatusBar</name>
     <message>
         <source>Cancel</source>
@@ -1054,6 +1097,34 @@ Differs from the default</source>
     <message>
         <source>Last restart failed: %1</source>
         <translation>上次重新啟動失敗：%1</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已關閉</translation>
+    </message>
+    <message>
+        <source>opening</source>
+        <translation>開啟中</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已開啟</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>錯誤</translation>
+    </message>
+    <message>
+        <source>lost, retrying now</source>
+        <translation>已中斷，正在重試</translation>
+    </message>
+    <message>
+        <source>lost, retrying in %1 s</source>
+        <translation>已中斷，%1 秒後重試</translation>
+    </message>
+    <message>
+        <source>Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back (Disconnect stops trying).</source>
+        <translation>轉接器中斷：%1。追蹤保留所有已收到的封包；轉接器恢復後 CoScope 會重新開啟總線（按「中斷連線」即停止重試）。</translation>
     </message>
 </context>
 <context>
@@ -1851,6 +1922,18 @@ Arm the test move?</source>
     <message>
         <source>Mode of operation (6061h): %1</source>
         <translation>操作模式（6061h）：%1</translation>
+    </message>
+    <message>
+        <source>Bus lost. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
+        <translation>總線中斷。CoScope 會自動重新連線；總線恢復後請按「讀取狀態」。</translation>
+    </message>
+    <message>
+        <source>CiA 402 state unknown</source>
+        <translation>CiA 402 狀態未知</translation>
+    </message>
+    <message>
+        <source>%1 (statusword %2h)</source>
+        <translation>%1（狀態字元 %2h）</translation>
     </message>
 </context>
 <context>
@@ -3005,6 +3088,14 @@ Software version (100Ah): %3</source>
     <message>
         <source>Seen by</source>
         <translation>偵測來源</translation>
+    </message>
+    <message>
+        <source>The bus was lost: the state is unknown until the next heartbeat (last known: %1)</source>
+        <translation>總線曾中斷：在下一次心跳之前狀態未知（最後已知：%1）</translation>
+    </message>
+    <message>
+        <source>unknown (gap)</source>
+        <translation>未知（中斷）</translation>
     </message>
 </context>
 <context>
@@ -4426,6 +4517,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>Summary</source>
         <translation>摘要</translation>
     </message>
+    <message>
+        <source>Bus lost at %1, back at %2 (%3 s without frames)</source>
+        <translation>總線於 %1 中斷，%2 恢復（%3 秒沒有封包）</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::WizardFramesPane</name>
@@ -4452,6 +4547,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>The bus is not open (%1), so nothing can be sent.</source>
         <translation>總線未開啟（%1），因此無法傳送。</translation>
     </message>
+    <message>
+        <source>The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.</source>
+        <translation>總線已中斷（%1）；CoScope 正在重新連線。恢復後即可再傳送。</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::Workspace</name>
@@ -4466,6 +4565,14 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.</source>
         <translation>擷取已停止：無法寫入擷取日誌 %1（%2）。追蹤中保留已收到的 %L3 個封包。</translation>
+    </message>
+    <message>
+        <source>Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.</source>
+        <translation>總線中斷：%1。正以逐步拉長的間隔重試；各節點的狀態在下一次心跳之前未知。</translation>
+    </message>
+    <message>
+        <source>Bus back after %1 s: frames between are missing from the trace</source>
+        <translation>總線在 %1 秒後恢復：中斷期間的封包不在追蹤中</translation>
     </message>
 </context>
 </TS>

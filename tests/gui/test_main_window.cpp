@@ -39,6 +39,7 @@
 #include <QtTest>
 
 #include "tests/gui/MenuClick.h"
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 #include <spdlog/spdlog.h>
@@ -54,6 +55,7 @@ using coscope::testing::answerFileDialog;
 namespace {
 // Waits (running the event loop, so the window's timer ticks) until `pred` holds.
 using coscope::testing::clickMenuItem;
+using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
 
@@ -71,13 +73,6 @@ bool openLoaded(MainWindow& w, const QString& path) {
     return true;
 }
 
-// Types into a line edit as a user does: select what is there, type, Enter.
-void typeAndEnter(QLineEdit* edit, const QString& text) {
-    QTest::mouseClick(edit, Qt::LeftButton);
-    QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
-    QTest::keyClicks(edit, text);
-    QTest::keyClick(edit, Qt::Key_Return);
-}
 // Clicks a trace row as a user does (the row must be scrolled into view first).
 void clickRow(QTableView* view, int row) {
     view->scrollTo(view->model()->index(row, 0));
