@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh test
 seconds="${1:-300}"
 filter="${2:-}"
-cmake --preset fuzz >/dev/null
+cmake --preset fuzz ${COSCOPE_DEBUG_INFO:+-DCOSCOPE_DEBUG_INFO="$COSCOPE_DEBUG_INFO"} >/dev/null
 targets=()
 for src in tests/fuzz/fuzz_*.cpp; do
   name="$(basename "$src" .cpp)"

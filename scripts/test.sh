@@ -3,6 +3,7 @@
 # Installs what is missing, builds CoScope with warnings as errors and runs the whole test suite.
 #   scripts/test.sh [--preset dev|asan] [CTEST-ARGS...]
 # --preset asan builds and runs the same suite under AddressSanitizer + UndefinedBehaviorSanitizer.
+# COSCOPE_DEBUG_INFO=lines in the environment builds with line tables only (faster; CI uses it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset=dev
@@ -12,6 +13,6 @@ if [ "${1:-}" = "--preset" ]; then
 fi
 case "$preset" in dev|asan) ;; *) echo "test.sh: unknown preset '$preset' (dev or asan)" >&2; exit 2 ;; esac
 scripts/setup.sh test
-cmake --preset "$preset" >/dev/null
+cmake --preset "$preset" ${COSCOPE_DEBUG_INFO:+-DCOSCOPE_DEBUG_INFO="$COSCOPE_DEBUG_INFO"} >/dev/null
 cmake --build --preset "$preset" -j"$(nproc)"
 ctest --preset "$preset" "$@"
