@@ -4,6 +4,7 @@
 // capturing through the loss. The bus goes Lost, keeps what it read, reopens with back-off and
 // is Open again; a user close ends the retries.
 #include "core/can/CanBus.h"
+#include "integration/BusRead.h"
 #include "integration/FakeSocketcandServer.h"
 
 #include <QElapsedTimer>
@@ -18,28 +19,10 @@
 #include <vector>
 
 using namespace coscope;
+using coscope::testing::openBus;
+using coscope::testing::readFrames;
 
 namespace {
-std::vector<CanFrame> readFrames(CanBus& bus, size_t want, int timeoutMs = 3000) {
-    std::vector<CanFrame> out;
-    QElapsedTimer t;
-    t.start();
-    CanFrame buf[64];
-    while (out.size() < want && t.elapsed() < timeoutMs) {
-        bus.waitForFrames(20);
-        for (size_t n = bus.read(buf, 64), i = 0; i < n; ++i) out.push_back(buf[i]);
-    }
-    return out;
-}
-
-std::unique_ptr<CanBus> openBus(const QString& url) {
-    QString err;
-    auto bus = createBus(url, &err);
-    if (!bus) qFatal("createBus: %s", qPrintable(err));
-    bus->open();
-    return bus;
-}
-
 QString cli() { return QStringLiteral(COSCOPE_CLI_PATH); }
 }  // namespace
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // replay:// bus: original timing scaled by speed, loop, end state, read-only, bad lines.
 #include "core/can/CanBus.h"
+#include "integration/BusRead.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -116,15 +117,7 @@ private slots:
         auto bus = createBus(QStringLiteral("replay://%1?speed=0").arg(path), nullptr);
         QSignalSpy errors(bus.get(), &CanBus::errorOccurred);
         bus->open();
-        std::vector<CanFrame> got;
-        CanFrame batch[8];
-        QElapsedTimer t;
-        t.start();
-        while (got.size() < 2 && t.elapsed() < 3000) {
-            bus->waitForFrames(20);
-            const size_t n = bus->read(batch, 8);
-            got.insert(got.end(), batch, batch + n);
-        }
+        const std::vector<CanFrame> got = testing::readFrames(*bus, 2);
         QCOMPARE(got.size(), size_t(2));
         QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 2000);
         QVERIFY(errors.first().first().toString().contains(path + QStringLiteral(":2:")));

@@ -2,6 +2,7 @@
 // SocketcandBus against a scripted loopback server (integration/FakeSocketcandServer.h).
 #include "core/can/CanBus.h"
 #include "core/can/SocketcandBus.h"
+#include "integration/BusRead.h"
 #include "integration/FakeSocketcandServer.h"
 
 #include <QElapsedTimer>
@@ -10,28 +11,8 @@
 #include <vector>
 
 using namespace coscope;
-
-namespace {
-std::vector<CanFrame> readAll(CanBus& bus, size_t want, int timeoutMs = 3000) {
-    std::vector<CanFrame> out;
-    QElapsedTimer t;
-    t.start();
-    CanFrame buf[64];
-    while (out.size() < want && t.elapsed() < timeoutMs) {
-        bus.waitForFrames(20);
-        for (size_t n = bus.read(buf, 64), i = 0; i < n; ++i) out.push_back(buf[i]);
-    }
-    return out;
-}
-
-std::unique_ptr<CanBus> openBus(const QString& url) {
-    QString err;
-    auto bus = createBus(url, &err);
-    if (!bus) qFatal("createBus: %s", qPrintable(err));
-    bus->open();
-    return bus;
-}
-}  // namespace
+using coscope::testing::openBus;
+using coscope::testing::readFrames;
 
 class TestSocketcandClient : public QObject {
     Q_OBJECT
@@ -50,7 +31,7 @@ private slots:
         QTest::qWait(20);
         server.write("CDEF0 1700000000.5 DEADBEEF >");
         server.write("< frame 7FF 1.000001 >< frame 00000080 2.0 01 02 03 >");
-        auto frames = readAll(*bus, 4);
+        auto frames = readFrames(*bus, 4);
         QCOMPARE(frames.size(), size_t(4));
         QCOMPARE(frames[0].id, 0x123u);
         QVERIFY(!frames[0].isExtended());
@@ -75,7 +56,7 @@ private slots:
         QVERIFY2(bus->send(CanFrame::classic(0x700, {}), &err), qPrintable(err));
         const QByteArray expected = "< send 123 2 11 22 >< send 1AAAAAAA 2 01 F1 >< send 700 0 >";
         QTRY_COMPARE_WITH_TIMEOUT(server.afterHandshake, expected, 2000);
-        auto echoes = readAll(*bus, 3);
+        auto echoes = readFrames(*bus, 3);
         QCOMPARE(echoes.size(), size_t(3));
         for (const auto& e : echoes) QVERIFY(e.isTx());
         QCOMPARE(echoes[1].id, 0x1AAAAAAAu);
@@ -87,7 +68,7 @@ private slots:
         server.closeClient();
         QTRY_VERIFY_WITH_TIMEOUT(bus->state() == CanBus::State::Lost, 3000);
         QCOMPARE(bus->errorString(), QStringLiteral("socketcand server at 127.0.0.1:%1 closed the connection").arg(server.port()));
-        auto last = readAll(*bus, 2, 500);
+        auto last = readFrames(*bus, 2, 500);
         QCOMPARE(last.size(), size_t(2));
         QCOMPARE(last[0].id, 0x181u);
         QCOMPARE(last[1].data[0], 0xBB);
@@ -102,7 +83,7 @@ private slots:
         auto bus = openBus(server.url());
         QVERIFY2(bus->waitForOpen(3000), qPrintable(bus->errorString()));
         server.write("< frame XYZ 1.0 11 >< frame 123 1.0 112 >< frame 124 1.0 42 >< error unknown command >");
-        auto frames = readAll(*bus, 1);
+        auto frames = readFrames(*bus, 1);
         QCOMPARE(frames.size(), size_t(1));
         QCOMPARE(frames[0].id, 0x124u);
         QTRY_VERIFY(bus->counters().errors >= 2);

@@ -2,6 +2,7 @@
 // Two QtCanBus endpoints on Qt's virtualcan plugin: the first device starts the plugin's local
 // TCP server (port 35468), the second connects to it; frames written on one arrive on the other.
 #include "core/can/CanBus.h"
+#include "integration/BusRead.h"
 #include "core/can/QtCanBus.h"
 
 #include <QElapsedTimer>
@@ -11,20 +12,8 @@
 #include <vector>
 
 using namespace coscope;
-
-namespace {
-std::vector<CanFrame> readFrames(CanBus& bus, size_t want, int timeoutMs = 3000) {
-    std::vector<CanFrame> out;
-    QElapsedTimer t;
-    t.start();
-    CanFrame buf[64];
-    while (out.size() < want && t.elapsed() < timeoutMs) {
-        bus.waitForFrames(20);
-        for (size_t n = bus.read(buf, 64), i = 0; i < n; ++i) out.push_back(buf[i]);
-    }
-    return out;
-}
-}  // namespace
+using coscope::testing::openBus;
+using coscope::testing::readFrames;
 
 class TestVirtualCan : public QObject {
     Q_OBJECT
