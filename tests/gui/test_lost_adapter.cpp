@@ -98,6 +98,8 @@ private slots:
         QVERIFY(!wiz->stepButton(Command::DisableOperation) || !wiz->stepButton(Command::DisableOperation)->isEnabled());
         QAbstractItemModel* nodes = w.nodesDock()->view()->model();
         QTRY_VERIFY_WITH_TIMEOUT(nodes->rowCount() > 0 && nodes->index(0, NodesModel::State).data().toString() == QStringLiteral("unknown (gap)"), 3000);
+        const size_t eventsBefore = w.workspace()->events().size();
+        QTest::qWait(2500);  // longer than the heartbeat timeout (3 periods, at least 1.5 s)
 
         server = serve(net, port);  // back
         QTRY_VERIFY_WITH_TIMEOUT(w.busStatus()->stateText().startsWith(QStringLiteral("open")), 10000);
@@ -112,6 +114,10 @@ private slots:
         QVERIFY2(QTest::qWaitFor([&] { return wiz->shownState() == State::OperationEnabled; }, 8000), qPrintable(wiz->message()));
         // The drive's next heartbeat makes its state known again.
         QTRY_VERIFY_WITH_TIMEOUT(nodes->index(0, NodesModel::State).data().toString() != QStringLiteral("unknown (gap)"), 8000);
+        // A heartbeat cannot arrive while the adapter is gone: the loss is one event, not a
+        // heartbeat timeout per node.
+        for (const TraceEvent& e : w.workspace()->events().since(eventsBefore))
+            QVERIFY2(e.kind != TraceEvent::Kind::HeartbeatTimeout, qPrintable(e.text));
         net->stop();
     }
 };

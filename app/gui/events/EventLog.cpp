@@ -156,6 +156,12 @@ void EventLog::add(TraceEvent event) {
     events_.push_back(std::move(event));
 }
 
+void EventLog::restartHeartbeatWaits(int64_t backNs) {
+    std::lock_guard lock(mutex_);
+    for (NodeWatch& w : watch_)
+        if (w.lastNs && !w.timedOut) w.lastNs = backNs;
+}
+
 void EventLog::forgetNode(int node) {
     if (node < 1 || node > 127) return;
     std::lock_guard lock(mutex_);

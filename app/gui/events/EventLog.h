@@ -41,6 +41,9 @@ public:
     void checkHeartbeats(int64_t nowNs);
     void add(TraceEvent event);
     void clear();
+    // The bus was lost and is back at backNs (issue 16): a heartbeat missing while the adapter
+    // was gone says nothing about the node, so every node's wait starts again from backNs.
+    void restartHeartbeatWaits(int64_t backNs);
     // Stops expecting heartbeats from `node` (its device moved to another node-ID).
     void forgetNode(int node);
 

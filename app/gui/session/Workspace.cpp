@@ -126,6 +126,7 @@ void Workspace::noteLostAdapter(CanBus::State s) {
         const int64_t back = nowNs();
         const FrameNo first = static_cast<FrameNo>(store_->size());
         store_->addGap({first, lostSinceNs_, back});
+        events_.restartHeartbeatWaits(back);
         events_.add({TraceEvent::Kind::Info, back, first, -1,
                      tr("Bus back after %1 s: frames between are missing from the trace").arg(double(back - lostSinceNs_) / 1e9, 0, 'f', 1)});
         spdlog::info("bus {} back after {:.1f} s", sourceName_.toStdString(), double(back - lostSinceNs_) / 1e9);
@@ -269,11 +270,12 @@ void Workspace::poll() {
         emit captureStopped(message);
         return;
     }
-    events_.checkHeartbeats(nowNs());
+    // While the adapter is lost no heartbeat can arrive: no timeouts then (noise, issue 16).
+    if (lostSinceNs_ == 0) events_.checkHeartbeats(nowNs());
     const auto c = bus_->counters();
     if (c.dropped > reportedDropped_) {
         events_.add({TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1,
-                     QStringLiteral("%1 frames dropped (receive queue full), %2 in total").arg(c.dropped - reportedDropped_).arg(c.dropped)});
+                     tr("%n frame(s) dropped (receive queue full), %1 in total", nullptr, static_cast<int>(c.dropped - reportedDropped_)).arg(c.dropped)});
         reportedDropped_ = c.dropped;
     }
     reportedErrors_ = c.errors;
