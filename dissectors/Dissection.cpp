@@ -38,10 +38,20 @@ void Dissection::addReal(const char* key, double v) { next(key, FlatField::Kind:
 void Dissection::addBool(const char* key, bool v) { next(key, FlatField::Kind::Bool).i = v ? 1 : 0; }
 void Dissection::addText(const char* key, const QString& v) { next(key, FlatField::Kind::Text).text = v; }
 
-PdoSignal& Dissection::addSignal() {
+namespace {
+// `to = from`, skipping the reference counting (two atomic operations) when `to` already holds
+// the same text: names and units repeat frame after frame.
+void assignShared(QString& to, const QString& from) {
+    if (to.isSharedWith(from) && to.constData() == from.constData() && to.size() == from.size()) return;
+    to = from;
+}
+}  // namespace
+
+PdoSignal& Dissection::addSignal(const QString& name, const QString& unit) {
     if (static_cast<size_t>(signalCount) == pdoSignals.size()) pdoSignals.emplace_back();
     PdoSignal& s = pdoSignals[static_cast<size_t>(signalCount++)];
-    s.unit.resize(0);
+    assignShared(s.name, name);
+    assignShared(s.unit, unit);
     s.raw = false;
     return s;
 }

@@ -139,7 +139,7 @@ public:
     void addReal(const char* key, double v);
     void addBool(const char* key, bool v);
     void addText(const char* key, const QString& v);
-    PdoSignal& addSignal();
+    PdoSignal& addSignal(const QString& name, const QString& unit);
     void warn(const QString& text) { warnings.append(text); }
     void item(int depth, const QString& label, const QString& value, int byteOffset = 0, int byteLength = 0,
               int bitOffset = -1, int bitLength = 0);

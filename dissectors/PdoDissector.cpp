@@ -41,6 +41,10 @@ public:
         n_ += k;
         return *this;
     }
+    void append(const char16_t* t, size_t k) {
+        if (k) std::memcpy(room(k), t, k * sizeof(char16_t));
+        n_ += k;
+    }
     SummaryText& operator+=(char16_t c) {
         *room(1) = c;
         ++n_;
@@ -117,13 +121,11 @@ void dissectPdo(DissectCall& c) {
         bit += e.bits;
         if (e.dummy || e.bits == 0) continue;
         if (bit > c.len * 8) break;
-        PdoSignal& sig = out.addSignal();
+        PdoSignal& sig = out.addSignal(e.name, e.unit);
         sig.index = e.index;
         sig.sub = e.sub;
         sig.bitOffset = static_cast<uint8_t>(at);
         sig.bitLength = e.bits;
-        sig.name = e.name;
-        sig.unit = e.unit;
         if (first) s += u' ';
         else s += ", ";
         first = false;
@@ -151,7 +153,8 @@ void dissectPdo(DissectCall& c) {
                     const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
                     sig.value.i = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
                 }
-                s += od::hexValueText(e.index, e.sub, raw, e.bits);
+                char16_t hexBuf[od::kHexTextRoom];
+                s.append(hexBuf, static_cast<size_t>(od::hexValueTextTo(hexBuf, e.index, e.sub, raw, e.bits)));
             } else if (e.typeKnown && cls == od::TypeClass::Signed) {
                 sig.value.kind = FlatField::Kind::Int;
                 if (e.bits < 64) {

@@ -146,14 +146,12 @@ void applyRawSignals(const std::vector<RawSignal>& raw, const CanFrame& f, Disse
         if (!r.matches(f)) continue;
         const std::optional<double> v = r.rawValue(f.data.data(), f.payloadSize());
         if (!v) continue;
-        PdoSignal& sig = d.addSignal();
+        PdoSignal& sig = d.addSignal(r.name, r.unit);
         sig.raw = true;
         sig.index = 0;
         sig.sub = 0;
         sig.bitOffset = static_cast<uint8_t>(r.startBit);
         sig.bitLength = static_cast<uint8_t>(r.length);
-        sig.name = r.name;
-        sig.unit = r.unit;
         const bool integer = r.type != RawSignal::Type::Float && r.factor == 1.0 && r.offset == 0.0;
         if (integer && r.type == RawSignal::Type::Signed) {
             sig.value.kind = FlatField::Kind::Int;

@@ -66,21 +66,35 @@ void DictionaryLibrary::scan(const QString& folder, bool bundled) {
         e.name = fi.completeBaseName();
         e.path = fi.filePath();
         e.bundled = bundled;
-        const ReadResult r = readDictionaryFile(e.path);
-        if (!r.usable) {
+        // Bundled dictionaries are usable (test_eds_library bundledNamesLoad): their identity is
+        // read when first needed. A user's file is read now, and skipped when unusable.
+        if (!bundled && !readIdentity(e)) {
             spdlog::warn("dictionary library: {} is not usable; skipped", e.path.toStdString());
             continue;
         }
-        e.vendorId = r.dictionary.vendorId();
-        e.productCode = r.dictionary.productCode();
-        e.revision = r.dictionary.revisionNumber();
-        e.deviceType = defaultNumber(r.dictionary, 0x1000);
-        if (const od::SubObject* s = r.dictionary.entry(0x1008, 0)) e.deviceName = s->defaultValue.trimmed();
-        readSidecarIdentity(e);
         auto same = std::find_if(entries_.begin(), entries_.end(), [&](const Entry& x) { return x.name == e.name; });
         if (same != entries_.end()) *same = e;  // user folder replaces bundled
         else entries_.push_back(e);
     }
+}
+
+bool DictionaryLibrary::readIdentity(Entry& e) {
+    const ReadResult r = readDictionaryFile(e.path);
+    if (!r.usable) return false;
+    e.vendorId = r.dictionary.vendorId();
+    e.productCode = r.dictionary.productCode();
+    e.revision = r.dictionary.revisionNumber();
+    e.deviceType = defaultNumber(r.dictionary, 0x1000);
+    if (const od::SubObject* s = r.dictionary.entry(0x1008, 0)) e.deviceName = s->defaultValue.trimmed();
+    readSidecarIdentity(e);
+    return true;
+}
+
+void DictionaryLibrary::readBundledIdentities() const {
+    std::call_once(*bundledIdentitiesRead_, [this] {
+        for (Entry& e : entries_)
+            if (e.bundled && !readIdentity(e)) spdlog::warn("dictionary library: {} is not usable", e.path.toStdString());
+    });
 }
 
 // The sidecar's "identity": product variants, placeholder, and the string object (1008h or
@@ -123,6 +137,7 @@ ReadResult DictionaryLibrary::load(const QString& name) const {
 
 const DictionaryLibrary::Entry* DictionaryLibrary::findByIdentity(std::uint32_t vendorId, std::uint32_t productCode, std::optional<std::uint32_t> revision) const {
     if (vendorId == 0 && productCode == 0) return nullptr;  // no identity (see match())
+    readBundledIdentities();
     const Entry* best = nullptr;
     int bestRank = -1;
     std::uint32_t bestRev = 0;
@@ -153,6 +168,7 @@ const DictionaryLibrary::Entry* DictionaryLibrary::match(const DeviceIdentity& d
     };
     // The device type alone (many drives say 0192h) is evidence only once 1018h was read as 0/0.
     const int minimum = device.vendorId && device.productCode ? 2 : 4;
+    readBundledIdentities();
     const Entry* best = nullptr;
     int bestScore = 0;
     bool tie = false;

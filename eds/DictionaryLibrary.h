@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -50,14 +51,19 @@ public:
         bool hasIdentity() const { return vendorId && productCode && (*vendorId != 0 || *productCode != 0); }
     };
 
-    // Scans the bundled resources and userFolder() (or `userFolder` when given).
+    // Scans the bundled resources and userFolder() (or `userFolder` when given). The identity
+    // of the bundled dictionaries is read on first need (entries(), findByIdentity(), match()):
+    // loading one by name, as `decode` does, does not parse the others.
     explicit DictionaryLibrary(const QString& userFolder = QString());
     // The library of the default user folder, scanned once (thread safe).
     static const DictionaryLibrary& shared();
 
     static QString defaultUserFolder();
     const QString& userFolder() const { return userFolder_; }
-    const std::vector<Entry>& entries() const { return entries_; }
+    const std::vector<Entry>& entries() const {
+        readBundledIdentities();
+        return entries_;
+    }
     QStringList names() const;
     const Entry* find(const QString& name) const;
 
@@ -91,9 +97,12 @@ public:
 
 private:
     void scan(const QString& folder, bool bundled);
+    static bool readIdentity(Entry& e);  // false: not a usable dictionary
     static void readSidecarIdentity(Entry& e);
+    void readBundledIdentities() const;  // once (thread safe)
     QString userFolder_;
-    std::vector<Entry> entries_;
+    mutable std::vector<Entry> entries_;  // the identity of bundled entries filled in lazily
+    std::unique_ptr<std::once_flag> bundledIdentitiesRead_ = std::make_unique<std::once_flag>();
 };
 
 // "FILE" as given on a command line: an existing path, or else a dictionary library name.

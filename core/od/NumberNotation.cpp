@@ -53,23 +53,42 @@ HexKind hexKindFor(std::uint16_t index, std::uint8_t sub) {
     return HexKind::None;
 }
 
+int hexTextTo(char16_t* out, std::uint64_t value, int digits) {
+    static constexpr char16_t kDigits[] = u"0123456789ABCDEF";
+    int n = 1;  // significant digits of `value` (0 has one)
+    while (n < 16 && (value >> (4 * n))) ++n;
+    if (digits > 16) digits = 16;
+    const int width = n > digits ? n : digits;
+    for (int i = width - 1; i >= 0; --i, value >>= 4) out[i] = kDigits[value & 15];
+    out[width] = u'h';
+    return width + 1;
+}
+
 QString hexText(std::uint64_t value, int digits) {
-    return QString::number(value, 16).toUpper().rightJustified(digits, u'0') + u'h';
+    char16_t buf[kHexTextRoom];
+    if (digits > 16) return QString(digits - 16, u'0') + QString::fromUtf16(buf, hexTextTo(buf, value, 16));
+    return QString::fromUtf16(buf, hexTextTo(buf, value, digits));
 }
 
 QString objectText(std::uint16_t index, std::uint8_t sub) {
     return hexText(index, 4) + u':' + QString::number(sub, 16).toUpper().rightJustified(2, u'0');
 }
 
-QString hexValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
-    if (bits <= 0 || bits > 64) return {};
+int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
+    if (bits <= 0 || bits > 64) return 0;
     if (bits < 64) raw &= (std::uint64_t(1) << bits) - 1;
     switch (hexKindFor(index, sub)) {
-    case HexKind::None: return {};
-    case HexKind::Pattern: return hexText(raw, (bits + 3) / 4);
-    case HexKind::CobId: return raw <= 0x7FF ? hexText(raw, 3) : hexText(raw, 8);
+    case HexKind::None: return 0;
+    case HexKind::Pattern: return hexTextTo(out, raw, (bits + 3) / 4);
+    case HexKind::CobId: return raw <= 0x7FF ? hexTextTo(out, raw, 3) : hexTextTo(out, raw, 8);
     }
-    return {};
+    return 0;
+}
+
+QString hexValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
+    char16_t buf[kHexTextRoom];
+    const int n = hexValueTextTo(buf, index, sub, raw, bits);
+    return n ? QString::fromUtf16(buf, n) : QString();
 }
 
 QString valueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {

@@ -32,6 +32,10 @@ HexKind hexKindFor(std::uint16_t index, std::uint8_t sub);
 
 // "0650h": upper-case hex of `value`, at least `digits` digits, suffix h.
 QString hexText(std::uint64_t value, int digits = 0);
+// The same written to `out` (room for kHexTextRoom units, `digits` <= 16), no allocation;
+// returns the number of units written. For hot paths (trace summaries).
+inline constexpr int kHexTextRoom = 18;
+int hexTextTo(char16_t* out, std::uint64_t value, int digits = 0);
 
 // "6041h:00".
 QString objectText(std::uint16_t index, std::uint8_t sub);
@@ -40,6 +44,8 @@ QString objectText(std::uint16_t index, std::uint8_t sub);
 // wire): hex for the objects above, empty for the rest (the caller writes those in decimal with
 // their unit, as the data type says).
 QString hexValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits);
+// The same written to `out` (room for kHexTextRoom units); returns its length, 0 = not hex.
+int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits);
 
 // Same for a value whose data type is not known (a script step, an SDO without a dictionary):
 // the hex text when the rule says hex, else decimal; a value whose top bit is set may be negative,
