@@ -16,8 +16,12 @@ const char kHex[] = "0123456789abcdef";
 
 void appendNumber(QByteArray& out, int64_t v) {
     char buf[24];
-    const int n = std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(v));
-    out.append(buf, n);
+    char* const e = buf + sizeof buf;
+    char* p = e;
+    uint64_t u = v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
+    do { *--p = char('0' + u % 10); u /= 10; } while (u);
+    if (v < 0) *--p = '-';
+    out.append(p, e - p);
 }
 void appendUNumber(QByteArray& out, uint64_t v) {
     char buf[24];
@@ -311,21 +315,42 @@ void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const Q
     out.resize(at + (o - start));
 }
 
+namespace {
+// UTF-8 of `s` appended without a temporary QByteArray.
+void appendUtf8(QByteArray& out, const QString& s) {
+    const qsizetype at = out.size();
+    out.resize(at + 3 * s.size());
+    char* const e = putUtf8(out.data() + at, s);
+    out.resize(e - out.constData());
+}
+}  // namespace
+
 void appendTransferText(QByteArray& out, const Dissection& d) {
+    // One per SDO transfer: written piece by piece, without temporary strings.
     const SdoTransferRecord& t = d.transfer;
-    out.append("    = SDO ");
-    out.append(t.upload ? "upload" : "download");
-    out.append(' ').append(mode(t).toLatin1()).append(" node ");
+    out.append(t.upload ? "    = SDO upload " : "    = SDO download ");
+    out.append(t.block ? "block" : t.segmented ? "segmented" : "expedited");
+    out.append(" node ");
     appendNumber(out, t.node);
-    out.append(' ').append(object(t).toLatin1());
-    if (!t.name.isEmpty()) out.append(' ').append(t.name.toUtf8());
-    out.append(": ").append(t.status.toUtf8());
+    static const char kUpper[] = "0123456789ABCDEF";
+    const char obj[9] = {' ', kUpper[t.index >> 12], kUpper[(t.index >> 8) & 15], kUpper[(t.index >> 4) & 15], kUpper[t.index & 15],
+                         ':', kUpper[t.sub >> 4], kUpper[t.sub & 15], 0};
+    out.append(obj, 8);
+    if (!t.name.isEmpty()) {
+        out.append(' ');
+        appendUtf8(out, t.name);
+    }
+    out.append(": ");
+    appendUtf8(out, t.status);
     if (t.status == QLatin1String("aborted")) out.append(QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText).toUtf8());
     else {
         out.append(", ");
         appendNumber(out, t.size);
         out.append(" bytes");
-        if (!t.valueText.isEmpty()) out.append(" = ").append(t.valueText.toUtf8());
+        if (!t.valueText.isEmpty()) {
+            out.append(" = ");
+            appendUtf8(out, t.valueText);
+        }
     }
     out.append('\n');
 }

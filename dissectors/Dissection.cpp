@@ -5,6 +5,16 @@
 
 namespace coscope::dissect {
 
+namespace {
+// `to = from`, skipping the reference counting (two atomic operations) when `to` already holds
+// the same text: names and units repeat frame after frame.
+void assignShared(QString& to, const QString& from) {
+    // The same buffer (shared, or the same static literal), or both empty: nothing to do.
+    if (to.size() == from.size() && (to.constData() == from.constData() || to.isEmpty())) return;
+    to = from;
+}
+}  // namespace
+
 void Dissection::reset(Level level) {
     level_ = level;
     service = canopen::Service::Unknown;
@@ -36,16 +46,8 @@ void Dissection::addInt(const char* key, int64_t v) { next(key, FlatField::Kind:
 void Dissection::addUInt(const char* key, uint64_t v) { next(key, FlatField::Kind::UInt).u = v; }
 void Dissection::addReal(const char* key, double v) { next(key, FlatField::Kind::Real).d = v; }
 void Dissection::addBool(const char* key, bool v) { next(key, FlatField::Kind::Bool).i = v ? 1 : 0; }
-void Dissection::addText(const char* key, const QString& v) { next(key, FlatField::Kind::Text).text = v; }
+void Dissection::addText(const char* key, const QString& v) { assignShared(next(key, FlatField::Kind::Text).text, v); }
 
-namespace {
-// `to = from`, skipping the reference counting (two atomic operations) when `to` already holds
-// the same text: names and units repeat frame after frame.
-void assignShared(QString& to, const QString& from) {
-    if (to.isSharedWith(from) && to.constData() == from.constData() && to.size() == from.size()) return;
-    to = from;
-}
-}  // namespace
 
 PdoSignal& Dissection::addSignal(const QString& name, const QString& unit) {
     if (static_cast<size_t>(signalCount) == pdoSignals.size()) pdoSignals.emplace_back();

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <string>
 
 namespace coscope::dissect {
@@ -66,16 +67,25 @@ public:
     // Replaces `out` with the text, reusing its capacity.
     void storeIn(QString& out) const {
         out.resize(static_cast<qsizetype>(n_));
-        if (n_) std::memcpy(static_cast<void*>(out.data()), buf_.data(), n_ * sizeof(char16_t));
+        if (n_) std::memcpy(static_cast<void*>(out.data()), buf_.get(), n_ * sizeof(char16_t));
     }
 
 private:
-    // Space for k more code units at the end.
-    char16_t* room(size_t k) {
-        if (n_ + k > buf_.size()) buf_.resize(std::max<size_t>(2 * buf_.size(), n_ + k + 256));
-        return buf_.data() + n_;
+    // Space for k more code units at the end; the check is inlined, growing is not.
+    [[gnu::always_inline]] char16_t* room(size_t k) {
+        if (n_ + k > cap_) [[unlikely]]
+            grow(n_ + k);
+        return buf_.get() + n_;
     }
-    std::u16string buf_;
+    [[gnu::noinline]] void grow(size_t need) {
+        const size_t cap = std::max<size_t>(2 * cap_, need + 256);
+        auto b = std::make_unique<char16_t[]>(cap);
+        if (n_) std::memcpy(b.get(), buf_.get(), n_ * sizeof(char16_t));
+        buf_ = std::move(b);
+        cap_ = cap;
+    }
+    std::unique_ptr<char16_t[]> buf_;
+    size_t cap_ = 0;
     size_t n_ = 0;
 };
 }  // namespace

@@ -60,6 +60,34 @@ QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub
     return text;
 }
 
+// Appends "6041:00 Statusword" (objectLabel) to `s` in place.
+void appendObjectLabel(QString& s, uint16_t index, uint8_t sub, const QString& name) {
+    static const char16_t digits[] = u"0123456789ABCDEF";
+    const char16_t label[7] = {digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15],
+                               u':', digits[sub >> 4], digits[sub & 15]};
+    s.append(reinterpret_cast<const QChar*>(label), 7);
+    if (!name.isEmpty()) {
+        s += u' ';
+        s += name;
+    }
+}
+
+// "VERB node N OBJECT NAME", written into `s` reusing its capacity (the frequent SDO lines).
+void startSummary(QString& s, QLatin1StringView verb, int node, uint16_t index, uint8_t sub, const QString& name) {
+    s.resize(0);
+    s += verb;
+    s += QLatin1StringView("node ");
+    char16_t num[12];
+    char16_t* const e = num + 12;
+    char16_t* p = e;
+    auto u = static_cast<unsigned>(node < 0 ? -node : node);
+    do { *--p = static_cast<char16_t>(u'0' + u % 10); u /= 10; } while (u);
+    if (node < 0) *--p = u'-';
+    s.append(reinterpret_cast<const QChar*>(p), e - p);
+    s += u' ';
+    appendObjectLabel(s, index, sub, name);
+}
+
 }  // namespace
 
 void dissectSdo(DissectCall& c) {
@@ -103,7 +131,8 @@ void dissectSdo(DissectCall& c) {
         out.addInt("sdo.index", f.index);
         out.addInt("sdo.sub", f.sub);
     }
-    const QString who = QLatin1StringView("node ") + QString::number(c.node);
+    // "node N" for the less frequent lines (the initiate lines write it in place).
+    const auto whoText = [&] { return QLatin1StringView("node ") + QString::number(c.node); };
     QString& s = out.summary;
     QString valueTextOut;
     QString meaning;
@@ -135,45 +164,53 @@ void dissectSdo(DissectCall& c) {
 
     switch (f.command) {
     case SdoCommand::InitiateDownloadRequest:
-        s = QLatin1StringView("SDO write ") + who + u' ' + objectLabel(f.index, f.sub, name);
-        if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
-        else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        startSummary(s, QLatin1StringView("SDO write "), c.node, f.index, f.sub, name);
+        if (f.expedited) {
+            s += QLatin1StringView(" = ");
+            s += valueTextOut;
+        } else {
+            s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        }
         break;
-    case SdoCommand::InitiateDownloadResponse: s = QLatin1StringView("SDO write ok ") + who + u' ' + objectLabel(f.index, f.sub, name); break;
-    case SdoCommand::InitiateUploadRequest: s = QLatin1StringView("SDO read ") + who + u' ' + objectLabel(f.index, f.sub, name); break;
+    case SdoCommand::InitiateDownloadResponse: startSummary(s, QLatin1StringView("SDO write ok "), c.node, f.index, f.sub, name); break;
+    case SdoCommand::InitiateUploadRequest: startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name); break;
     case SdoCommand::InitiateUploadResponse:
-        s = QLatin1StringView("SDO read ") + who + u' ' + objectLabel(f.index, f.sub, name);
-        if (f.expedited) s += QStringLiteral(" = ") + valueTextOut;
-        else s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name);
+        if (f.expedited) {
+            s += QLatin1StringView(" = ");
+            s += valueTextOut;
+        } else {
+            s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        }
         break;
     case SdoCommand::Abort:
-        s = QStringLiteral("SDO abort %1 %2: %3 %4").arg(who, objectLabel(f.index, f.sub, name), hex(f.abortCode, 8), abortText(n, f.abortCode));
+        s = QStringLiteral("SDO abort %1 %2: %3 %4").arg(whoText(), objectLabel(f.index, f.sub, name), hex(f.abortCode, 8), abortText(n, f.abortCode));
         break;
     case SdoCommand::DownloadSegmentRequest:
     case SdoCommand::UploadSegmentResponse:
-        s = QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
+        s = QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, whoText()).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
         break;
     case SdoCommand::BlockSegment:
-        s = QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
+        s = QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(whoText()).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
         break;
     case SdoCommand::BlockDownloadInitiate:
     case SdoCommand::BlockUploadInitiate:
     case SdoCommand::BlockDownloadInitiateResponse:
     case SdoCommand::BlockUploadInitiateResponse:
-        s = QStringLiteral("SDO %1 %2 %3").arg(cs, who, objectLabel(f.index, f.sub, name));
+        s = QStringLiteral("SDO %1 %2 %3").arg(cs, whoText(), objectLabel(f.index, f.sub, name));
         if (f.blockSize) s += QStringLiteral(", block size %1").arg(f.blockSize);
         if (f.sizeIndicated) s += QStringLiteral(", %1 bytes").arg(f.size);
         break;
     case SdoCommand::BlockDownloadAck:
     case SdoCommand::BlockUploadAck:
-        s = QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who).arg(f.ackSeq).arg(f.blockSize);
+        s = QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, whoText()).arg(f.ackSeq).arg(f.blockSize);
         break;
     case SdoCommand::BlockDownloadEnd:
     case SdoCommand::BlockUploadEnd:
-        s = QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0'));
+        s = QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, whoText()).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0'));
         break;
-    case SdoCommand::Invalid: s = QStringLiteral("SDO %1 (invalid)").arg(who); break;
-    default: s = QStringLiteral("SDO %1 %2").arg(cs, who); break;
+    case SdoCommand::Invalid: s = QStringLiteral("SDO %1 (invalid)").arg(whoText()); break;
+    default: s = QStringLiteral("SDO %1 %2").arg(cs, whoText()); break;
     }
     if (!f.hasMux && chActive && f.command != SdoCommand::Invalid) s += QStringLiteral(" [%1]").arg(objectLabel(chIndex, chSub, QString()));
     if (out.hasTransfer) {
@@ -196,7 +233,11 @@ void dissectSdo(DissectCall& c) {
         uint64_t raw = 0;
         for (int i = 0; i < f.data.size() && i < 8; ++i) raw |= uint64_t(uint8_t(f.data[i])) << (8 * i);
         meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()));
-        if (!meaning.isEmpty()) s += QStringLiteral(" (") + meaning + u')';
+        if (!meaning.isEmpty()) {
+            s += QLatin1StringView(" (");
+            s += meaning;
+            s += u')';
+        }
     }
 }
 
