@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotView.h"
 
+#include "app/gui/plot/EnvelopeGraph.h"
+
 #include <QVBoxLayout>
 
 #include <qcustomplot.h>
@@ -84,7 +86,7 @@ void PlotView::rebuild() {
 
     auto styleGraph = [&](size_t i, QCPAxisRect* rect, QCPAxis* y) {
         const PlotSignal& s = signals_[i];
-        QCPGraph* g = plot_->addGraph(rect->axis(QCPAxis::atBottom), y);
+        QCPGraph* g = new EnvelopeGraph(rect->axis(QCPAxis::atBottom), y);  // registers with plot_
         g->setPen(QPen(s.color, 1.0));  // wider pens go through the stroker: several times slower
         g->setName(s.scale.unit.isEmpty() || s.digital ? s.label : QStringLiteral("%1 [%2]").arg(s.label, s.scale.unit));
         g->setLineStyle(s.digital ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
