@@ -35,6 +35,9 @@ PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(thi
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot_->setNoAntialiasingOnDrag(true);
     plot_->setPlottingHint(QCP::phFastPolylines, true);
+    // One paint buffer instead of two: the overlay layer (QCustomPlot's selection rectangle,
+    // unused here) needs no own buffer to clear and blend on every replot.
+    if (QCPLayer* overlay = plot_->layer(QStringLiteral("overlay"))) overlay->setMode(QCPLayer::lmLogical);
     connect(plot_, &QCustomPlot::mousePress, this, &PlotView::onPress);
     connect(plot_, &QCustomPlot::mouseRelease, this, &PlotView::onRelease);
     rebuild();
