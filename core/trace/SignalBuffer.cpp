@@ -125,23 +125,44 @@ size_t SignalBuffer::lowerBoundLocked(int64_t timeNs) const {
     return (k - 1) * kChunkSize + chunks_[k - 1]->lowerBound(timeNs);
 }
 
-size_t SignalBuffer::lowerBoundFromLocked(int64_t timeNs, size_t from, size_t n) const {
-    // A plot's bucket edges are near each other: walk the chunk's search index forward from
-    // `from` (a few contiguous entries), then search one 64-block; a global search otherwise.
+size_t SignalBuffer::lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from, size_t n) const {
+    // Galloping search from the guess (a plot's buckets hold about as many samples as the one
+    // before): a steady rate needs two probes, an irregular one a few doublings.
+    auto time = [this](size_t r) { return chunks_[r / kChunkSize]->t[r % kChunkSize]; };
     if (from >= n) return from;
-    const Chunk& c = *chunks_[from / kChunkSize];
-    const size_t base = from - from % kChunkSize;
-    if (c.t.back() < timeNs) return std::min(n, std::max(from, lowerBoundLocked(timeNs)));
-    size_t b = (from - base) / kTimeBlock + 1;  // first index entry after from's block
-    size_t steps = 0;
-    while (b < c.blockTime.size() && c.blockTime[b] < timeNs) {
-        if (++steps > 64) return std::min(n, std::max(from, lowerBoundLocked(timeNs)));
-        ++b;
+    hint = std::clamp(hint, from, n);
+    size_t lo = from, hi = n;  // the answer lies in [lo, hi]
+    if (hint < n && time(hint) < timeNs) {  // later: probe hint + 1, + 2, + 4, ...
+        size_t below = hint;
+        for (size_t step = 1;; step *= 2) {
+            if (step >= n - below) break;
+            if (time(below + step) >= timeNs) {
+                hi = below + step;
+                break;
+            }
+            below += step;
+        }
+        lo = below + 1;
+    } else if (hint > from && time(hint - 1) >= timeNs) {  // earlier: probe hint - 2, - 3, - 5, ...
+        size_t atOrAfter = hint - 1;
+        for (size_t step = 1;; step *= 2) {
+            if (atOrAfter - from < step) break;
+            if (time(atOrAfter - step) < timeNs) {
+                lo = atOrAfter - step + 1;
+                break;
+            }
+            atOrAfter -= step;
+        }
+        hi = atOrAfter;
+    } else {
+        return hint;  // time(hint - 1) < t <= time(hint)
     }
-    // The answer lies in block b - 1 (or is block b's first sample).
-    const size_t lo = std::max(from - base, (b - 1) * kTimeBlock), hi = std::min(c.t.size(), b * kTimeBlock);
-    const auto it = std::lower_bound(c.t.begin() + static_cast<std::ptrdiff_t>(lo), c.t.begin() + static_cast<std::ptrdiff_t>(hi), timeNs);
-    return std::min(n, base + static_cast<size_t>(it - c.t.begin()));
+    while (lo < hi) {  // binary search: first index in [lo, hi) with time >= t, else hi
+        const size_t mid = lo + (hi - lo) / 2;
+        if (time(mid) < timeNs) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
 }
 
 SignalBuffer::Summary SignalBuffer::reduceLocked(size_t from, size_t to) const {
@@ -256,13 +277,15 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
     if (lo < from) push(lo);
     const double span = double(t1) - double(t0);
     size_t start = from;
+    size_t lastCount = (to - from) / size_t(buckets);
     for (int b = 0; b < buckets && start < to; ++b) {
         size_t end = to;
         if (b + 1 < buckets) {
             const auto edge = static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
-            end = std::min(lowerBoundFromLocked(edge, start, to), to);
+            end = std::min(lowerBoundNearLocked(edge, start + lastCount, start, to), to);
         }
         if (end == start) continue;
+        lastCount = end - start;
         const SignalPoint a = pointLocked(start), z = pointLocked(end - 1);
         if (end - start <= 2) {
             out.push_back({a.timeNs, valueOf(a.value)});

@@ -90,7 +90,7 @@ private:
     // Global sample indexes: first() is base_, the newest base_ + size - 1.
     size_t countLocked() const;
     size_t lowerBoundLocked(int64_t timeNs) const;  // first index with time >= t
-    size_t lowerBoundFromLocked(int64_t timeNs, size_t from, size_t n) const;  // same, searching forward from `from`
+    size_t lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from, size_t n) const;  // same in [from, n], galloping from `hint`
     SignalPoint pointLocked(size_t global) const;  // time and value only (no frame)
     const SignalSample sampleLocked(size_t global) const;
     Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty

@@ -7,7 +7,8 @@
 //  - BM_Decimate/<len>: the data side alone (the 8 decimations of a replot, 1300 columns).
 //  - BM_PaintOnly/<len>/...: QCustomPlot::replot() alone (axes, text, 8 dense traces).
 //  - BM_PeerPlainScan/<len>: the old plain scan, every sample read once into 1300 columns (what
-//    the data side of a redraw costs when it follows samples).
+//    the data side of a redraw costs when it follows samples); each replot is also printed
+//    against it (BENCH plot_replot_..._vs_scan).
 // Reported: ms per replot (wall, and CPU of the thread: the benchmark host is often shared),
 // budget_ratio = 3 ms / measured (>= 1 passes), and a machine-readable BENCH line each for
 // scripts/bench.sh's summary.
@@ -170,7 +171,14 @@ void BM_Replot(benchmark::State& state, int64_t seconds, PlotView::Layout layout
     auto view = makeView(layout, seconds);
     double totalMs = 0, cpuMs = 0;
     timed(state, totalMs, cpuMs, [&] { view->refresh(true); });
-    report(state, "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes"), totalMs, cpuMs);
+    const std::string name = "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes");
+    report(state, name, totalMs, cpuMs);
+    // The same figure against the old plain scan of that length (same run): a whole replot
+    // should cost less than only reading every sample once.
+    char line[256];
+    const double cpu = cpuMs / double(state.iterations());
+    std::snprintf(line, sizeof line, "BENCH plot_%s_vs_scan %.3f cpu_ms %.3f peer_plain_scan %.2f", name.c_str(), cpu, peerMs[seconds], peerMs[seconds] / cpu);
+    benchLines()[name + "_vs_scan"] = line;
 }
 
 void BM_PaintOnly(benchmark::State& state, int64_t seconds, PlotView::Layout layout) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotView.h"
 
+#include "app/gui/plot/EnvelopeGraph.h"
+
 #include <QVBoxLayout>
 
 #include <qcustomplot.h>
@@ -33,6 +35,9 @@ PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(thi
     plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     plot_->setNoAntialiasingOnDrag(true);
     plot_->setPlottingHint(QCP::phFastPolylines, true);
+    // One paint buffer instead of two: the overlay layer (QCustomPlot's selection rectangle,
+    // unused here) needs no own buffer to clear and blend on every replot.
+    if (QCPLayer* overlay = plot_->layer(QStringLiteral("overlay"))) overlay->setMode(QCPLayer::lmLogical);
     connect(plot_, &QCustomPlot::mousePress, this, &PlotView::onPress);
     connect(plot_, &QCustomPlot::mouseRelease, this, &PlotView::onRelease);
     rebuild();
@@ -84,7 +89,7 @@ void PlotView::rebuild() {
 
     auto styleGraph = [&](size_t i, QCPAxisRect* rect, QCPAxis* y) {
         const PlotSignal& s = signals_[i];
-        QCPGraph* g = plot_->addGraph(rect->axis(QCPAxis::atBottom), y);
+        QCPGraph* g = new EnvelopeGraph(rect->axis(QCPAxis::atBottom), y);  // registers with plot_
         g->setPen(QPen(s.color, 1.0));  // wider pens go through the stroker: several times slower
         g->setName(s.scale.unit.isEmpty() || s.digital ? s.label : QStringLiteral("%1 [%2]").arg(s.label, s.scale.unit));
         g->setLineStyle(s.digital ? QCPGraph::lsStepLeft : QCPGraph::lsLine);

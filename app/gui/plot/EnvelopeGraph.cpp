@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/plot/EnvelopeGraph.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace coscope::gui {
+
+EnvelopeGraph::EnvelopeGraph(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPGraph(keyAxis, valueAxis) {}
+
+void EnvelopeGraph::rasterise(const QVector<QPointF>& polyline, QVector<QRect>* spans, QVector<QLineF>* longSegments) {
+    spans->clear();
+    longSegments->clear();
+    bool open = false;  // a column is being collected
+    int column = 0;
+    double lo = 0, hi = 0;
+    QPointF prev;
+    auto flush = [&] {
+        const int top = static_cast<int>(std::floor(lo)), bottom = static_cast<int>(std::floor(hi));
+        spans->append(QRect(column, top, 1, bottom - top + 1));
+    };
+    for (const QPointF& p : polyline) {
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {  // a gap (NaN value): the line breaks
+            if (open) flush();
+            open = false;
+            continue;
+        }
+        const int c = static_cast<int>(std::floor(p.x()));
+        if (!open) {
+            open = true;
+            column = c;
+            lo = hi = p.y();
+        } else if (c == column) {
+            lo = std::min(lo, p.y());
+            hi = std::max(hi, p.y());
+        } else if (std::abs(c - column) == 1) {
+            // The join to the previous column's last point is drawn in the new column.
+            flush();
+            column = c;
+            lo = std::min(prev.y(), p.y());
+            hi = std::max(prev.y(), p.y());
+        } else {
+            // A gap in the data wider than a column: a plain line segment bridges it.
+            flush();
+            longSegments->append(QLineF(prev, p));
+            column = c;
+            lo = hi = p.y();
+        }
+        prev = p;
+    }
+    if (open) flush();
+}
+
+void EnvelopeGraph::mergeColumns(const QVector<QRect>& spans, QVector<QRect>* blocks) {
+    // Sweep the columns left to right keeping open bands of rows (disjoint, together the
+    // previous column's span) with the column each opened at. Rows a column no longer covers
+    // close their band into a rectangle; rows it newly covers open a band (at most two: above
+    // and below, as every column's span is one interval).
+    blocks->clear();
+    struct Band {
+        int top, bottom, since;
+    };
+    std::vector<Band> open, next;
+    int last = 0;
+    auto close = [&](int top, int bottom, int since) { blocks->append(QRect(since, top, last - since + 1, bottom - top + 1)); };
+    auto closeAll = [&] {
+        for (const Band& b : open) close(b.top, b.bottom, b.since);
+        open.clear();
+    };
+    for (const QRect& s : spans) {
+        const int c = s.x(), t = s.top(), b = s.bottom();
+        if (!open.empty() && (c != last + 1 || open.size() > 32)) closeAll();  // a gap, or too fragmented
+        next.clear();
+        for (Band band : open) {
+            if (band.bottom < t || band.top > b) {
+                close(band.top, band.bottom, band.since);
+                continue;
+            }
+            if (band.top < t) close(band.top, t - 1, band.since), band.top = t;
+            if (band.bottom > b) close(b + 1, band.bottom, band.since), band.bottom = b;
+            next.push_back(band);
+        }
+        if (next.empty()) {
+            next.push_back({t, b, c});
+        } else {
+            if (next.front().top > t) next.insert(next.begin(), Band{t, next.front().top - 1, c});
+            if (next.back().bottom < b) next.push_back({next.back().bottom + 1, b, c});
+        }
+        open.swap(next);
+        last = c;
+    }
+    closeAll();
+}
+
+void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const {
+    spans_.clear();
+    // Dense: more points than the pixel columns they cover. Vector output (PDF) and a vertical
+    // key axis keep the polyline.
+    const bool dense = lines.size() > 2 && std::abs(lines.back().x() - lines.front().x()) + 1 < lines.size();
+    if (!dense || painter->modes().testFlag(QCPPainter::pmVectorized) || keyAxis()->orientation() != Qt::Horizontal) {
+        QCPGraph::drawLinePlot(painter, lines);
+        return;
+    }
+    rasterise(lines, &spans_, &longSegments_);
+    const QPen pen = painter->pen();
+    const int w = std::max(1, static_cast<int>(std::lround(pen.widthF())));
+    if (!longSegments_.isEmpty()) painter->drawLines(longSegments_);
+    // Filled as few wide rectangles (row fills) rather than a 1-pixel column per column: the
+    // raster engine fills rows, so this is what keeps dense bands cheap.
+    mergeColumns(spans_, &blocks_);
+    if (w > 1)
+        for (QRect& r : blocks_) r.adjust(-(w - 1) / 2, -(w - 1) / 2, w / 2, w / 2);
+    painter->save();
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(pen.color());
+    painter->setAntialiasing(false);
+    painter->drawRects(blocks_);
+    painter->restore();
+}
+
+}  // namespace coscope::gui
