@@ -6,6 +6,7 @@
 
 #include <QBuffer>
 #include <QFile>
+#include <QFileInfo>
 
 namespace coscope {
 
@@ -26,6 +27,8 @@ void JournalPager::setWritten(uint64_t frames, int64_t bytes) {
     bytes_ = bytes;
     frames_.store(frames, std::memory_order_release);
 }
+
+std::string JournalPager::spillDirectory() const { return QFile::encodeName(QFileInfo(path_).absolutePath()).toStdString(); }
 
 bool JournalPager::loadRange(const QByteArray& bytes, uint64_t skip, uint32_t count, std::vector<CanFrame>& out, std::string* why) const {
     QByteArray data = bytes;

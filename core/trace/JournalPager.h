@@ -31,6 +31,8 @@ public:
 
     uint64_t durableFrames() const override { return frames_.load(std::memory_order_acquire); }
     bool load(uint64_t first, uint32_t count, std::vector<CanFrame>& out, std::string* why) override;
+    // The journal's folder.
+    std::string spillDirectory() const override;
 
 private:
     bool loadRange(const QByteArray& bytes, uint64_t skip, uint32_t count, std::vector<CanFrame>& out, std::string* why) const;

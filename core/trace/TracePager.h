@@ -19,6 +19,9 @@ public:
     // Frames [first, first + count) in order into `out`; false if they cannot be read (the
     // file went away), with a reason in `why`.
     virtual bool load(uint64_t first, uint32_t count, std::vector<CanFrame>& out, std::string* why) = 0;
+    // A folder on disk where the store may keep what else would grow in RAM (its per-COB-ID
+    // index blocks, see IndexSpill); empty: none.
+    virtual std::string spillDirectory() const { return {}; }
 };
 
 }  // namespace coscope

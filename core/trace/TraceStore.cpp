@@ -1,48 +1,71 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/trace/TraceStore.h"
 
+#include "core/trace/IndexSpill.h"
+#include "core/trace/TracePager.h"
+
 #include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <new>
 #include <stdexcept>
+
+#include <spdlog/spdlog.h>
+#include <sys/mman.h>
 
 namespace coscope {
 
-// Frame numbers of one key, in chunks of 4096; the chunk table grows by copying into a larger
+namespace {
+int64_t nowMs() {
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+// Frame numbers of one key, in blocks of 4096; the block table grows by copying into a larger
 // table, and old tables stay alive until the store dies so a reader holding one stays valid.
+// With bounded memory a full block moves to the store's IndexSpill (its address changes to the
+// mapping, its RAM is freed after a grace period); the newest block stays in RAM.
 class TraceStore::Index {
 public:
     static constexpr uint32_t kBits = 12;
     static constexpr uint32_t kSize = 1u << kBits;
+    static constexpr size_t kBlockBytes = kSize * sizeof(FrameNo);  // 16 KiB, whole pages
 
+    explicit Index(const std::unique_ptr<IndexSpill>& spill) : spill_(spill) {}
     ~Index() {
         const size_t n = (count_.load() + kSize - 1) / kSize;
         Table* t = table_.load();
-        for (size_t i = 0; i < n; ++i) delete[] t->chunks[i];
+        for (size_t i = 0; i < n; ++i) {
+            FrameNo* block = t->chunks[i].load();
+            if (!spill_ || !spill_->holds(block)) delete[] block;
+        }
+        for (auto& [block, ms] : retiredBlocks_) delete[] block;
         for (Table* old : retired_) delete old;
         delete t;
     }
 
-    // Writer only.
-    size_t push(FrameNo f) {
+    // Writer only. Returns the change of the bytes held in RAM.
+    std::ptrdiff_t push(FrameNo f, TraceStore& store) {
         const size_t n = count_.load(std::memory_order_relaxed);
         const size_t c = n >> kBits;
-        size_t added = 0;
+        std::ptrdiff_t added = 0;
         Table* t = table_.load(std::memory_order_relaxed);
         if ((n & (kSize - 1)) == 0) {
             if (!t || c >= t->capacity) {
                 auto* bigger = new Table;
                 bigger->capacity = t ? t->capacity * 2 : 4;
-                bigger->chunks = std::make_unique<FrameNo*[]>(bigger->capacity);
-                if (t) std::copy_n(t->chunks.get(), t->capacity, bigger->chunks.get());
-                added += bigger->capacity * sizeof(FrameNo*);
+                bigger->chunks = std::make_unique<std::atomic<FrameNo*>[]>(bigger->capacity);
+                for (size_t i = 0; t && i < t->capacity; ++i) bigger->chunks[i].store(t->chunks[i].load(std::memory_order_relaxed), std::memory_order_relaxed);
+                added += static_cast<std::ptrdiff_t>(bigger->capacity * sizeof(FrameNo*));
                 if (t) retired_.push_back(t);
                 t = bigger;
                 table_.store(t, std::memory_order_release);
             }
-            t->chunks[c] = new FrameNo[kSize];
-            added += kSize * sizeof(FrameNo);
+            t->chunks[c].store(new FrameNo[kSize], std::memory_order_release);
+            added += static_cast<std::ptrdiff_t>(kBlockBytes);
+            if (c > 0) added -= spillBlock(t, c - 1, store);
         }
-        t->chunks[c][n & (kSize - 1)] = f;
+        t->chunks[c].load(std::memory_order_relaxed)[n & (kSize - 1)] = f;
         count_.store(n + 1, std::memory_order_release);
         return added;
     }
@@ -50,21 +73,53 @@ public:
     size_t count() const { return count_.load(std::memory_order_acquire); }
     FrameNo at(size_t i) const {
         const Table* t = table_.load(std::memory_order_acquire);
-        return t->chunks[i >> kBits][i & (kSize - 1)];
+        return t->chunks[i >> kBits].load(std::memory_order_acquire)[i & (kSize - 1)];
     }
 
 private:
     struct Table {
         size_t capacity = 0;
-        std::unique_ptr<FrameNo*[]> chunks;
+        std::unique_ptr<std::atomic<FrameNo*>[]> chunks;
     };
+
+    // Moves full block c to the spill file; returns the bytes of RAM given up.
+    size_t spillBlock(Table* t, size_t c, TraceStore& store) {
+        const int64_t now = nowMs();
+        while (!retiredBlocks_.empty() && now - retiredBlocks_.front().second >= kGraceMs) {
+            delete[] retiredBlocks_.front().first;
+            retiredBlocks_.erase(retiredBlocks_.begin());
+        }
+        IndexSpill* spill = store.spillForWrite();
+        FrameNo* block = t->chunks[c].load(std::memory_order_relaxed);
+        if (!spill || spill->holds(block)) return 0;
+        const auto* mapped = static_cast<const FrameNo*>(spill->write(block, kBlockBytes));
+        if (!mapped) return 0;  // disk full: the block stays in RAM, nothing is lost
+        t->chunks[c].store(const_cast<FrameNo*>(mapped), std::memory_order_release);
+        retiredBlocks_.emplace_back(block, now);  // a reader may still hold it: freed after kGraceMs
+        return kBlockBytes;
+    }
+
+    const std::unique_ptr<IndexSpill>& spill_;
     std::atomic<Table*> table_{nullptr};
     std::atomic<size_t> count_{0};
     std::vector<Table*> retired_;
+    std::vector<std::pair<FrameNo*, int64_t>> retiredBlocks_;
 };
 
+namespace {
+void* mapBytes(size_t bytes) {
+    void* p = ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+    return p;
+}
+}  // namespace
+
+void* TraceStore::Chunk::operator new(size_t bytes) { return mapBytes(bytes); }
+void TraceStore::Chunk::operator delete(void* p, size_t bytes) { ::munmap(p, bytes); }
+
 TraceStore::Chunk::~Chunk() {
-    for (auto& block : fd) delete[] block.load();
+    for (auto& block : fd)
+        if (uint8_t* p = block.load()) ::munmap(p, size_t{1} << kFdBlockBits);
 }
 
 size_t TraceStore::Chunk::bytes() const {
@@ -88,24 +143,41 @@ TraceStore::TraceStore()
 }
 
 TraceStore::~TraceStore() {
+    stopLoader();
     const size_t used = (size() + kChunkSize - 1) / kChunkSize;
     for (size_t i = 0; i < used + 1 && i < kMaxChunks; ++i) delete chunks_[i].load();
     std::lock_guard lock(pageMutex_);
     freeRetired(true);
 }
 
+IndexSpill* TraceStore::spillForWrite() {
+    if (spillTried_) return spill_ && spill_->ok() ? spill_.get() : nullptr;
+    if (!budget_.load(std::memory_order_relaxed)) return nullptr;
+    std::string dir;
+    {
+        std::lock_guard lock(pageMutex_);
+        if (!pager_) return nullptr;
+        dir = pager_->spillDirectory();
+    }
+    if (dir.empty()) return nullptr;
+    spillTried_ = true;
+    spill_ = std::make_unique<IndexSpill>(dir);
+    if (!spill_->ok()) spdlog::warn("trace: the per-COB-ID index stays in RAM: {}", spill_->error());
+    return spill_->ok() ? spill_.get() : nullptr;
+}
+
 TraceStore::Index* TraceStore::indexForWrite(uint32_t key) {
     if (key < 2048) {
         Index* idx = stdIndex_[key].load(std::memory_order_relaxed);
         if (idx) return idx;
-        indexes_.push_back(std::make_unique<Index>());
+        indexes_.push_back(std::make_unique<Index>(spill_));
         idx = indexes_.back().get();
         stdIndex_[key].store(idx, std::memory_order_release);
         return idx;
     }
     auto it = writerOther_.find(key);
     if (it != writerOther_.end()) return it->second;
-    indexes_.push_back(std::make_unique<Index>());
+    indexes_.push_back(std::make_unique<Index>(spill_));
     Index* idx = indexes_.back().get();
     writerOther_.emplace(key, idx);
     std::unique_lock lock(otherMutex_);
@@ -130,7 +202,7 @@ uint64_t TraceStore::storeFdPayload(Chunk& c, const uint8_t* data, uint8_t len, 
     if (block >= kFdBlocks) throw std::length_error("trace store: CAN FD payloads of a chunk overflow");
     uint8_t* dst = c.fd[block].load(std::memory_order_relaxed);
     if (!dst) {
-        dst = new uint8_t[blockBytes];
+        dst = static_cast<uint8_t*>(mapBytes(blockBytes));
         c.fd[block].store(dst, std::memory_order_release);
         *added += blockBytes;
     }
@@ -177,8 +249,8 @@ FrameNo TraceStore::append(const CanFrame& f) {
     // Publish the frame before indexing it: an index entry must never name a frame a reader
     // cannot see yet (the index may lag size() by one frame, never lead it).
     size_.store(n + 1, std::memory_order_release);
-    const size_t added = indexForWrite(keyOf(chunk->records[n & (kChunkSize - 1)]))->push(static_cast<FrameNo>(n));
-    if (added) indexBytes_.fetch_add(added, std::memory_order_relaxed);
+    const std::ptrdiff_t added = indexForWrite(keyOf(chunk->records[n & (kChunkSize - 1)]))->push(static_cast<FrameNo>(n), *this);
+    if (added) indexBytes_.fetch_add(static_cast<size_t>(added), std::memory_order_relaxed);  // wraps down when negative
     return static_cast<FrameNo>(n);
 }
 

@@ -7,16 +7,19 @@
 #include "core/can/CanFrame.h"
 
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <memory>
 #include <mutex>
 #include <shared_mutex>
 #include <span>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
 namespace coscope {
 
+class IndexSpill;
 class TracePager;
 
 using FrameNo = uint32_t;  // stable frame number: position in the store, 0-based
@@ -51,7 +54,9 @@ static_assert(sizeof(TraceRecord) == 24, "trace records must stay 24 bytes");
 // pager (any thread, transparently). Never evicted: a chunk not yet in the pager, a pinned one.
 // An evicted chunk's memory is freed only after a grace period (kGraceMs, or when more than
 // kMaxRetired are waiting), so a reference from record()/payload() stays valid while it is used
-// right away; do not keep one across calls. The per-COB-ID indexes stay in RAM (4 B a frame).
+// right away; do not keep one across calls. The per-COB-ID indexes keep their newest block of
+// 4096 frame numbers per key in RAM; their full blocks go to an IndexSpill file next to the
+// journal (the pager's spillDirectory()), so memory stays flat however long the capture runs.
 class TraceStore {
 public:
     static constexpr uint32_t kChunkBits = 16;  // 65536 records (1.5 MiB) per chunk
@@ -110,6 +115,12 @@ public:
     // rows a view shows).
     void pin(FrameNo first, FrameNo last);
     void unpin(FrameNo first, FrameNo last);
+    // True if frame n is in RAM now: reading it does not wait for the disk. Any thread.
+    bool isResident(FrameNo n) const;
+    // Loads frame n's chunk back on the store's loader thread and returns at once, so a GUI
+    // thread never waits for the disk: it asks for the rows it is about to show, draws them as
+    // loading, and draws them again once pageIns() has grown. Any thread.
+    void requestPageIn(FrameNo n) const;
     // A gap in a live capture (issue 16 "Lost adapter"): the adapter was lost at lostNs and back
     // at backNs; frames from firstFrame on came after it. Not a frame: no consumer or CANopen
     // dispatcher sees it, views mark the first frame after it. Any thread.
@@ -135,10 +146,16 @@ private:
         std::atomic<uint8_t*> fd[kFdBlocks] = {};
         uint32_t fdUsed = 0;  // filled by one thread (writer or loader) before publication
         ~Chunk();
+        // Chunks and FD blocks are mapped from and given back to the kernel directly: from
+        // malloc, a 1.5 MiB block freed on another thread than the one that allocated it stays
+        // in that thread's arena, and the process grows although the store does not.
+        static void* operator new(size_t bytes);
+        static void operator delete(void* p, size_t bytes);
         size_t bytes() const;
     };
     class Index;
     Index* indexForWrite(uint32_t key);
+    IndexSpill* spillForWrite();  // writer only; nullptr without bounded memory
     const Index* indexForRead(uint32_t key) const;
     static uint64_t storeFdPayload(Chunk& c, const uint8_t* data, uint8_t len, size_t* added);
     static size_t fill(Chunk& c, TraceRecord& r, const CanFrame& f);  // FD bytes allocated
@@ -150,6 +167,8 @@ private:
         return p;
     }
     Chunk* pageIn(uint32_t c) const;
+    void loaderLoop() const;
+    void stopLoader();
     void evictOverBudget(uint32_t keep) const;  // pageMutex_ held
     void freeRetired(bool all) const;           // pageMutex_ held
     size_t chunksUsed() const { return (size() + kChunkSize - 1) >> kChunkBits; }
@@ -171,8 +190,18 @@ private:
     mutable std::vector<std::pair<Chunk*, int64_t>> retired_;  // chunk, steady ms when evicted
     mutable std::atomic<uint64_t> pageIns_{0};
     mutable std::atomic<uint64_t> pageErrors_{0};
+    // Asynchronous page-ins: chunk numbers asked for, served by loader_ (started on first use).
+    mutable std::mutex requestMutex_;
+    mutable std::condition_variable requestWake_;
+    mutable std::vector<uint32_t> requests_;
+    mutable std::thread loader_;
+    mutable bool stopLoader_ = false;
 
-    // Index: direct table for the 2048 standard ids, a map for the rest.
+    // Index: direct table for the 2048 standard ids, a map for the rest. Full index blocks of a
+    // store with a budget and a pager go to spill_ (declared before indexes_,
+    // so it outlives them).
+    std::unique_ptr<IndexSpill> spill_;
+    bool spillTried_ = false;
     std::unique_ptr<std::atomic<Index*>[]> stdIndex_;
     std::unordered_map<uint32_t, Index*> writerOther_;  // writer's private view
     mutable std::shared_mutex otherMutex_;

@@ -4,6 +4,7 @@
 #include "core/trace/TracePager.h"
 #include "core/trace/TraceStore.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 
@@ -42,6 +43,45 @@ void TraceStore::pin(FrameNo first, FrameNo last) {
 
 void TraceStore::unpin(FrameNo first, FrameNo last) {
     for (uint32_t c = first >> kChunkBits; c <= (last >> kChunkBits); ++c) pins_[c].fetch_sub(1, std::memory_order_relaxed);
+}
+
+bool TraceStore::isResident(FrameNo n) const {
+    return n < size() && chunks_[n >> kChunkBits].load(std::memory_order_acquire) != nullptr;
+}
+
+void TraceStore::requestPageIn(FrameNo n) const {
+    if (n >= size()) return;
+    const uint32_t c = n >> kChunkBits;
+    if (chunks_[c].load(std::memory_order_acquire)) return;
+    {
+        std::lock_guard lock(requestMutex_);
+        if (stopLoader_) return;
+        if (std::find(requests_.begin(), requests_.end(), c) == requests_.end()) requests_.push_back(c);
+        if (!loader_.joinable()) loader_ = std::thread([this] { loaderLoop(); });
+    }
+    requestWake_.notify_one();
+}
+
+void TraceStore::loaderLoop() const {
+    std::unique_lock lock(requestMutex_);
+    for (;;) {
+        requestWake_.wait(lock, [this] { return stopLoader_ || !requests_.empty(); });
+        if (stopLoader_) return;
+        const uint32_t c = requests_.front();
+        requests_.erase(requests_.begin());
+        lock.unlock();
+        if (!chunks_[c].load(std::memory_order_acquire)) pageIn(c);
+        lock.lock();
+    }
+}
+
+void TraceStore::stopLoader() {
+    {
+        std::lock_guard lock(requestMutex_);
+        stopLoader_ = true;
+    }
+    requestWake_.notify_all();
+    if (loader_.joinable()) loader_.join();
 }
 
 void TraceStore::evictOverBudget(uint32_t keep) const {

@@ -4464,6 +4464,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
 <context>
     <name>coscope::gui::TraceModel</name>
     <message>
+        <source>loading…</source>
+        <extracomment>Trace row whose frame is being read back from the capture journal on disk</extracomment>
+        <translation>載入中…</translation>
+    </message>
+    <message>
         <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
     </message>

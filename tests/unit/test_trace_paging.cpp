@@ -5,10 +5,14 @@
 #include "core/trace/CaptureJournal.h"
 #include "core/trace/TraceStore.h"
 
+#include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <condition_variable>
 #include <cstring>
+#include <map>
+#include <mutex>
 #include <vector>
 
 using namespace coscope;
@@ -32,6 +36,37 @@ CanFrame makeFrame(uint32_t i) {
     for (size_t b = 0; b < f.payloadSize(); ++b) f.data[b] = uint8_t(i >> (b % 4 * 8)) ^ uint8_t(b);
     return f;
 }
+
+// A pager that holds the frames in RAM and answers only when the test opens its gate (a slow
+// disk, a journal on a network share).
+class GatedPager : public TracePager {
+public:
+    std::vector<CanFrame> frames;
+    uint64_t durableFrames() const override { return frames.size(); }
+    bool load(uint64_t first, uint32_t count, std::vector<CanFrame>& out, std::string*) override {
+        std::unique_lock lock(mutex_);
+        ++waiting_;
+        changed_.notify_all();
+        changed_.wait(lock, [this] { return open_; });
+        out.assign(frames.begin() + static_cast<std::ptrdiff_t>(first), frames.begin() + static_cast<std::ptrdiff_t>(first + count));
+        return true;
+    }
+    void open() {
+        std::lock_guard lock(mutex_);
+        open_ = true;
+        changed_.notify_all();
+    }
+    bool waitForLoad() {  // a load has started (on some thread)
+        std::unique_lock lock(mutex_);
+        return changed_.wait_for(lock, std::chrono::seconds(10), [this] { return waiting_ > 0; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    bool open_ = false;
+    int waiting_ = 0;
+};
 
 bool same(const CanFrame& a, const CanFrame& b) {
     return a.timestampNs == b.timestampNs && a.id == b.id && a.len == b.len && a.flags == b.flags && a.bus == b.bus &&
@@ -136,6 +171,55 @@ private slots:
         store_->unpin(0, 10);
         QVERIFY(same(store_->frame(kChunk + 5), makeFrame(kChunk + 5)));
         QCOMPARE(store_->pageIns(), before + 1);
+    }
+
+    // The per-COB-ID index is bounded too: 16 chunks of frames are 4 MiB of index entries, more
+    // than the budget; its full blocks go to the spill file and it still names the right frames.
+    void indexStaysWithinBudget() {
+        const size_t budget = 3u << 20;
+        fill(16, 0, budget);
+        QVERIFY2(store_->memoryBytes() <= budget, qPrintable(QStringLiteral("%1 bytes in RAM, budget %2").arg(store_->memoryBytes()).arg(budget)));
+        std::map<uint32_t, std::vector<FrameNo>> expected;
+        for (uint32_t i = 0; i < total_; ++i) {
+            const CanFrame f = makeFrame(i);
+            expected[TraceStore::keyOf(f.id, f.flags & CanFrame::Extended)].push_back(i);
+        }
+        QCOMPARE(store_->keys().size(), expected.size());
+        for (const auto& [key, frames] : expected) {
+            QCOMPARE(store_->countFor(key), frames.size());
+            QVERIFY(store_->framesFor(key) == frames);
+            QCOMPARE(store_->frameFor(key, frames.size() / 2), frames[frames.size() / 2]);
+        }
+        QVERIFY(same(store_->frame(store_->frameFor(TraceStore::keyOf(0x182, false), 3)), makeFrame(store_->frameFor(TraceStore::keyOf(0x182, false), 3))));
+    }
+
+    // requestPageIn() returns while the disk is slow: the loading happens on the store's loader
+    // thread, and the chunk is resident (and counted) once it is done.
+    void requestPageInDoesNotWaitForTheDisk() {
+        auto pager = std::make_shared<GatedPager>();
+        TraceStore store;
+        store.setPager(pager);
+        for (uint32_t i = 0; i < 2 * kChunk + 5; ++i) {
+            pager->frames.push_back(makeFrame(i));
+            store.append(pager->frames.back());
+        }
+        store.setMemoryBudget(1);  // evicts chunks 0 and 1
+        QVERIFY(!store.isResident(5));
+        QVERIFY(store.isResident(2 * kChunk + 1));
+        QElapsedTimer timer;
+        timer.start();
+        store.requestPageIn(5);
+        store.requestPageIn(6);  // the same chunk: asked once
+        QVERIFY2(timer.elapsed() < 1000, qPrintable(QString::number(timer.elapsed())));
+        QVERIFY(pager->waitForLoad());  // the loader thread waits for the disk, the caller does not
+        QVERIFY(!store.isResident(5));
+        QCOMPARE(store.pageIns(), uint64_t(0));
+        pager->open();
+        QTRY_VERIFY_WITH_TIMEOUT(store.pageIns() == 1, 10000);
+        store.setMemoryBudget(0);  // nothing evicted from now on
+        QVERIFY(store.isResident(5));
+        QVERIFY(same(store.frame(5), makeFrame(5)));
+        QCOMPARE(store.pageIns(), uint64_t(1));
     }
 
     void nothingIsEvictedWithoutPager() {

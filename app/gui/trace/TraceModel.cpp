@@ -2,6 +2,7 @@
 #include "app/gui/trace/TraceModel.h"
 
 #include "core/canopen/CobId.h"
+#include "dissectors/NetworkContext.h"
 
 #include <QBrush>
 #include <QColor>
@@ -261,6 +262,10 @@ void TraceModel::setLatestPerCobId(bool on) {
 
 void TraceModel::refresh() {
     if (!store_) return;
+    if (loading_ && store_->pageIns() != pageInsSeen_) {  // rows drawn as loading may be back
+        loading_ = false;
+        if (rows_ > 0) emit dataChanged(index(0, 0), index(rows_ - 1, ColumnCount - 1));
+    }
     if (decoder_->revision() != decoderRevision_) {  // dictionaries changed: decode again
         decoderRevision_ = decoder_->revision();
         summaries_.clear();
@@ -481,6 +486,14 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
             }
         }
     }
+    if (kind != RowKind::Transfer && (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Qt::BackgroundRole || role == Qt::ForegroundRole) &&
+        pagedOut(n, index.row(), col)) {
+        if (role != Qt::DisplayRole) return {};
+        if (col == Number) return static_cast<qulonglong>(n) + 1;
+        //: Trace row whose frame is being read back from the capture journal on disk
+        if (col == Summary) return tr("loading…");
+        return {};
+    }
     if (kind == RowKind::TransferFrame && role == Qt::DisplayRole && col == Summary) return QStringLiteral("      ↳ ") + summaryOf(n);
     switch (role) {
     case RowKindRole: return static_cast<int>(RowKind::Frame);
@@ -539,6 +552,25 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     case Summary: return summaryOf(n);
     default: return {};
     }
+}
+
+bool TraceModel::pagedOut(FrameNo n, int row, int col) const {
+    // The frames data() reads for this cell: the frame; for the summary also the frames the
+    // decoder replays from its checkpoint; for Δt the previous row's frame.
+    FrameNo need[3] = {n, n, n};
+    if (col == Summary) need[1] = static_cast<FrameNo>(n - n % dissect::NetworkContext::checkpointInterval());
+    if (col == Time && timeMode_ == TimeMode::Delta && row > 0) need[2] = frameAt(row - 1);
+    bool out = false;
+    for (const FrameNo f : need) {
+        if (f >= store_->size() || store_->isResident(f)) continue;
+        if (!loading_) {  // counted before asking, so a page-in done meanwhile is not missed
+            loading_ = true;
+            pageInsSeen_ = store_->pageIns();
+        }
+        store_->requestPageIn(f);
+        out = true;
+    }
+    return out;
 }
 
 QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int role) const {

@@ -152,6 +152,13 @@ private:
     mutable std::unordered_map<FrameNo, QString> summaries_;
     mutable dissect::Dissection scratch_;
     uint64_t decoderRevision_ = 0;  // of the cached summaries
+
+    // Rows of frames paged out to the journal (issue 16 "Bounded memory"): data() asks the
+    // store to load them on its loader thread and draws them as loading; refresh() repaints
+    // once the store has paged something in. The GUI thread never waits for the disk.
+    bool pagedOut(FrameNo n, int row, int col) const;
+    mutable bool loading_ = false;
+    mutable uint64_t pageInsSeen_ = 0;
 };
 
 }  // namespace coscope::gui
