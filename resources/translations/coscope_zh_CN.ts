@@ -697,7 +697,7 @@
     </message>
     <message>
         <source>manufacturer specific</source>
-        <translation>制造商自订</translation>
+        <translation>制造商自定义</translation>
     </message>
     <message>
         <source>once</source>
@@ -737,7 +737,7 @@
     </message>
     <message>
         <source>%1 more EMCY from node %2</source>
-        <translation>节点 %2 还有 %1 笔 EMCY</translation>
+        <translation>节点 %2 还有 %1 条 EMCY</translation>
     </message>
     <message>
         <source>EMCY %1 %2 from node %3 at %4</source>
@@ -833,7 +833,7 @@
     </message>
     <message>
         <source>Check %1 = %2 (mask %3) on node %4</source>
-        <translation>确认节点 %4 的 %1 = %2（遮罩 %3）</translation>
+        <translation>确认节点 %4 的 %1 = %2（掩码 %3）</translation>
     </message>
     <message>
         <source>NMT %1 to all nodes</source>
@@ -1097,7 +1097,7 @@
     </message>
     <message>
         <source>Restart its communication so it uses node-ID %1 (NMT reset communication)</source>
-        <translation>重置它的通信，使其改用节点 ID %1（NMT 重置通信）</translation>
+        <translation>重置它的通信，使其改用节点 ID %1（NMT 复位通信）</translation>
     </message>
     <message>
         <source>Wait until it reports at node-ID %1 (boot-up / heartbeat)</source>
@@ -1109,7 +1109,7 @@
     </message>
     <message>
         <source>after NMT reset communication (sent by this wizard) or a power cycle</source>
-        <translation>在 NMT 重置通信（由本向导发送）或重新上电之后</translation>
+        <translation>在 NMT 复位通信（由本向导发送）或重新上电之后</translation>
     </message>
     <message>
         <source>Look for the device at node-ID %1 (scan). If it is not there: switch it off and on; if it still does not answer, find it with LSS Fastscan / inquiry and set the node-ID again.</source>
@@ -1161,7 +1161,7 @@
     </message>
     <message>
         <source>the bus already runs at %1</source>
-        <translation>总线已经以 %1 运作</translation>
+        <translation>总线已经以 %1 运行</translation>
     </message>
     <message>
         <source>give the device a node-ID first; then change its bit rate</source>
@@ -1185,7 +1185,7 @@
     </message>
     <message>
         <source>Give it the new bit rate %1; not used yet (LSS configure bit timing)</source>
-        <translation>设置新波特率 %1；尚未生效（LSS 设置位时序）</translation>
+        <translation>设置新波特率 %1；尚未生效（LSS 设置位定时）</translation>
     </message>
     <message>
         <source>Make it keep the new bit rate after power-off (LSS store configuration)</source>
@@ -1193,11 +1193,11 @@
     </message>
     <message>
         <source>Switch to the new bit rate now; it goes silent on this bus (LSS activate bit timing)</source>
-        <translation>立即切换到新波特率；它在这条总线上将不再出声（LSS 启用位时序）</translation>
+        <translation>立即切换到新波特率；它在这条总线上将不再收发（LSS 激活位定时）</translation>
     </message>
     <message>
         <source>at once with LSS activate bit timing (and at every power-on after the store)</source>
-        <translation>在 LSS 启用位时序时立即生效（保存后每次上电亦然）</translation>
+        <translation>在 LSS 激活位定时时立即生效（保存后每次上电亦然）</translation>
     </message>
     <message>
         <source>%1 has no documented bit-rate parameter; use LSS</source>
@@ -1217,7 +1217,7 @@
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
-        <translation>重置设备，使其以 %1 运作；它在这条总线上将不再出声（NMT 复位节点）</translation>
+        <translation>重置设备，使其以 %1 运行；它在这条总线上将不再收发（NMT 复位节点）</translation>
     </message>
     <message>
         <source>Let the reset leave the adapter and the device restart before reconnecting</source>
@@ -1233,7 +1233,7 @@
     </message>
     <message>
         <source>Ask it to announce itself at the new bit rate (NMT reset communication)</source>
-        <translation>请它以新波特率重新报到（NMT 重置通信）</translation>
+        <translation>请它以新波特率重新报到（NMT 复位通信）</translation>
     </message>
     <message>
         <source>Wait until node %1 reports at %2 (boot-up / heartbeat)</source>
@@ -1261,7 +1261,7 @@
     </message>
     <message>
         <source>Put the old bit rate %1 back (LSS configure bit timing)</source>
-        <translation>恢复旧波特率 %1（LSS 设置位时序）</translation>
+        <translation>恢复旧波特率 %1（LSS 设置位定时）</translation>
     </message>
     <message>
         <source>Store the old setting again (LSS store configuration)</source>
@@ -1653,7 +1653,7 @@
     </message>
     <message>
         <source>manufacturer-specific error</source>
-        <translation>制造商自订错误</translation>
+        <translation>制造商自定义错误</translation>
     </message>
     <message>
         <source>error %1</source>
@@ -1677,15 +1677,15 @@
     </message>
     <message>
         <source>%1 bit/s is not in the CiA 305 bit timing table</source>
-        <translation>%1 bit/s 不在 CiA 305 位时序表中</translation>
+        <translation>%1 bit/s 不在 CiA 305 位定时表中</translation>
     </message>
     <message>
         <source>no answer to LSS configure bit timing (is a slave in configuration state?)</source>
-        <translation>LSS 设置位时序没有响应（是否有从站处于设置状态？）</translation>
+        <translation>LSS 设置位定时没有响应（是否有从站处于设置状态？）</translation>
     </message>
     <message>
         <source>configure bit timing</source>
-        <translation>设置位时序</translation>
+        <translation>设置位定时</translation>
     </message>
     <message>
         <source>no answer to LSS store configuration (is a slave in configuration state?)</source>
@@ -1737,7 +1737,7 @@
     </message>
     <message>
         <source>node %1 %2 reads %3, expected %4 under mask %5</source>
-        <translation>节点 %1 %2 读到 %3，预期为 %4（遮罩 %5）</translation>
+        <translation>节点 %1 %2 读到 %3，预期为 %4（掩码 %5）</translation>
     </message>
     <message>
         <source>sent</source>
@@ -1822,6 +1822,238 @@
     <message>
         <source>mapping entry %1 (%2)</source>
         <translation>映射项目 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Error reset or no error</source>
+        <translation>错误重置或无错误</translation>
+    </message>
+    <message>
+        <source>Generic error</source>
+        <translation>一般错误</translation>
+    </message>
+    <message>
+        <source>Continuous over-current</source>
+        <translation>持续过电流</translation>
+    </message>
+    <message>
+        <source>Short circuit / earth leakage</source>
+        <translation>短路／接地漏电</translation>
+    </message>
+    <message>
+        <source>Mains over-voltage</source>
+        <translation>主电源过电压</translation>
+    </message>
+    <message>
+        <source>Mains under-voltage</source>
+        <translation>主电源欠电压</translation>
+    </message>
+    <message>
+        <source>DC link over-voltage</source>
+        <translation>直流母线过电压</translation>
+    </message>
+    <message>
+        <source>DC link under-voltage</source>
+        <translation>直流母线欠电压</translation>
+    </message>
+    <message>
+        <source>Excess temperature device</source>
+        <translation>设备温度过高</translation>
+    </message>
+    <message>
+        <source>Excess temperature drive</source>
+        <translation>驱动器温度过高</translation>
+    </message>
+    <message>
+        <source>Data storage error (EEPROM)</source>
+        <translation>数据保存错误（EEPROM）</translation>
+    </message>
+    <message>
+        <source>Internal software error</source>
+        <translation>内部软件错误</translation>
+    </message>
+    <message>
+        <source>Motor blocked</source>
+        <translation>电机堵转</translation>
+    </message>
+    <message>
+        <source>Incremental sensor 1 fault</source>
+        <translation>增量式传感器 1 故障</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN 溢出（对象丢失）</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN 处于错误被动模式</translation>
+    </message>
+    <message>
+        <source>Life guard error or heartbeat error</source>
+        <translation>节点保护错误或心跳错误</translation>
+    </message>
+    <message>
+        <source>Recovered from bus off</source>
+        <translation>已从总线关闭恢复</translation>
+    </message>
+    <message>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID 冲突</translation>
+    </message>
+    <message>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO 因长度错误未处理</translation>
+    </message>
+    <message>
+        <source>PDO length exceeded</source>
+        <translation>PDO 长度超出</translation>
+    </message>
+    <message>
+        <source>DAM MPDO not processed, destination object not available</source>
+        <translation>DAM MPDO 未处理，目标对象不存在</translation>
+    </message>
+    <message>
+        <source>Unexpected SYNC data length</source>
+        <translation>SYNC 数据长度不符</translation>
+    </message>
+    <message>
+        <source>RPDO timeout</source>
+        <translation>RPDO 超时</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>追随误差</translation>
+    </message>
+    <message>
+        <source>Reference limit</source>
+        <translation>参考极限</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>电流</translation>
+    </message>
+    <message>
+        <source>Current, device input side</source>
+        <translation>电流（设备输入侧）</translation>
+    </message>
+    <message>
+        <source>Current inside the device</source>
+        <translation>设备内部电流</translation>
+    </message>
+    <message>
+        <source>Current, device output side</source>
+        <translation>电流（设备输出侧）</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Mains voltage</source>
+        <translation>主电源电压</translation>
+    </message>
+    <message>
+        <source>Voltage inside the device</source>
+        <translation>设备内部电压</translation>
+    </message>
+    <message>
+        <source>Output voltage</source>
+        <translation>输出电压</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Ambient temperature</source>
+        <translation>环境温度</translation>
+    </message>
+    <message>
+        <source>Device temperature</source>
+        <translation>设备温度</translation>
+    </message>
+    <message>
+        <source>Device hardware</source>
+        <translation>设备硬件</translation>
+    </message>
+    <message>
+        <source>Device software</source>
+        <translation>设备软件</translation>
+    </message>
+    <message>
+        <source>Internal software</source>
+        <translation>内部软件</translation>
+    </message>
+    <message>
+        <source>User software</source>
+        <translation>用户软件</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>数据集</translation>
+    </message>
+    <message>
+        <source>Additional modules</source>
+        <translation>附加模块</translation>
+    </message>
+    <message>
+        <source>Monitoring</source>
+        <translation>监控</translation>
+    </message>
+    <message>
+        <source>Communication</source>
+        <translation>通信</translation>
+    </message>
+    <message>
+        <source>Protocol error</source>
+        <translation>协议错误</translation>
+    </message>
+    <message>
+        <source>External error</source>
+        <translation>外部错误</translation>
+    </message>
+    <message>
+        <source>Additional functions</source>
+        <translation>附加功能</translation>
+    </message>
+    <message>
+        <source>Device specific</source>
+        <translation>设备自定义</translation>
+    </message>
+    <message>
+        <source>Unknown error code</source>
+        <translation>未知的错误码</translation>
+    </message>
+    <message>
+        <source>Delta: P-parameters written over CAN are saved to EEPROM at once. P3-00 takes effect after a power cycle (marked ●).</source>
+        <translation>台达：经 CAN 写入的 P 参数会立即存入 EEPROM。P3-00 须重新上电后才生效（标记 ●）。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN (200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of H0C-08 are not documented: use LSS for the bit rate.</source>
+        <translation>AIMOTOR：手册以 RS485 工具设置 H0C-00（节点 ID）；经 CAN（200Ch:01）写入是推定的做法，请以 1010h 保存并重新上电。H0C-08 的波特率代码未见于文档：波特率请使用 LSS 设置。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP switch SW2. No bit-rate parameter: use LSS.</source>
+        <translation>DEXMART DEV：参数 09-19 仅在 Rev A 上设置节点 ID；Rev B/C/D 使用 DIP 开关 SW2。没有波特率参数：请使用 LSS。</translation>
+    </message>
+    <message>
+        <source>Voltage enabled</source>
+        <translation>电压已使能</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>远程控制（Remote）</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>已到达目标</translation>
+    </message>
+    <message>
+        <source>Internal limit active</source>
+        <translation>内部限制作用中</translation>
     </message>
 </context>
 <context>
@@ -5018,6 +5250,19 @@ SDO 下载 %n 字节：%1</numerusform>
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
         <translation>已使用 64 位中的 %1 位（帧中 %2 字节）</translation>
     </message>
+    <message>
+        <source>byte %1: %3</source>
+        <extracomment>PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)</extracomment>
+        <translation>字节 %1：%3</translation>
+    </message>
+    <message>
+        <source>byte %1-%2: %3</source>
+        <translation>字节 %1–%2：%3</translation>
+    </message>
+    <message>
+        <source>%1 of 64 bits</source>
+        <translation>已用 %1 / 64 位</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::PdoMappingPage</name>
@@ -6040,7 +6285,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>%1 frames dropped (receive queue full), %2 in total</source>
-        <translation>丢失 %1 帧（接收队列已满），累计 %2 个</translation>
+        <translation>丢失 %1 帧（接收队列已满），累计 %2 帧</translation>
     </message>
 </context>
 </TS>

@@ -1823,6 +1823,238 @@
         <source>mapping entry %1 (%2)</source>
         <translation>映射項目 %1（%2）</translation>
     </message>
+    <message>
+        <source>Error reset or no error</source>
+        <translation>錯誤重置或無錯誤</translation>
+    </message>
+    <message>
+        <source>Generic error</source>
+        <translation>一般錯誤</translation>
+    </message>
+    <message>
+        <source>Continuous over-current</source>
+        <translation>持續過電流</translation>
+    </message>
+    <message>
+        <source>Short circuit / earth leakage</source>
+        <translation>短路／接地漏電</translation>
+    </message>
+    <message>
+        <source>Mains over-voltage</source>
+        <translation>主電源過電壓</translation>
+    </message>
+    <message>
+        <source>Mains under-voltage</source>
+        <translation>主電源欠電壓</translation>
+    </message>
+    <message>
+        <source>DC link over-voltage</source>
+        <translation>直流母線過電壓</translation>
+    </message>
+    <message>
+        <source>DC link under-voltage</source>
+        <translation>直流母線欠電壓</translation>
+    </message>
+    <message>
+        <source>Excess temperature device</source>
+        <translation>裝置溫度過高</translation>
+    </message>
+    <message>
+        <source>Excess temperature drive</source>
+        <translation>驅動器溫度過高</translation>
+    </message>
+    <message>
+        <source>Data storage error (EEPROM)</source>
+        <translation>資料儲存錯誤（EEPROM）</translation>
+    </message>
+    <message>
+        <source>Internal software error</source>
+        <translation>內部軟體錯誤</translation>
+    </message>
+    <message>
+        <source>Motor blocked</source>
+        <translation>馬達堵轉</translation>
+    </message>
+    <message>
+        <source>Incremental sensor 1 fault</source>
+        <translation>增量式感測器 1 故障</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN 溢位（物件遺失）</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN 處於錯誤被動模式</translation>
+    </message>
+    <message>
+        <source>Life guard error or heartbeat error</source>
+        <translation>節點保護錯誤或心跳錯誤</translation>
+    </message>
+    <message>
+        <source>Recovered from bus off</source>
+        <translation>已從總線關閉恢復</translation>
+    </message>
+    <message>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID 衝突</translation>
+    </message>
+    <message>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO 因長度錯誤未處理</translation>
+    </message>
+    <message>
+        <source>PDO length exceeded</source>
+        <translation>PDO 長度超出</translation>
+    </message>
+    <message>
+        <source>DAM MPDO not processed, destination object not available</source>
+        <translation>DAM MPDO 未處理，目標物件不存在</translation>
+    </message>
+    <message>
+        <source>Unexpected SYNC data length</source>
+        <translation>SYNC 資料長度不符</translation>
+    </message>
+    <message>
+        <source>RPDO timeout</source>
+        <translation>RPDO 逾時</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>追隨誤差</translation>
+    </message>
+    <message>
+        <source>Reference limit</source>
+        <translation>參考極限</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>電流</translation>
+    </message>
+    <message>
+        <source>Current, device input side</source>
+        <translation>電流（裝置輸入側）</translation>
+    </message>
+    <message>
+        <source>Current inside the device</source>
+        <translation>裝置內部電流</translation>
+    </message>
+    <message>
+        <source>Current, device output side</source>
+        <translation>電流（裝置輸出側）</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>電壓</translation>
+    </message>
+    <message>
+        <source>Mains voltage</source>
+        <translation>主電源電壓</translation>
+    </message>
+    <message>
+        <source>Voltage inside the device</source>
+        <translation>裝置內部電壓</translation>
+    </message>
+    <message>
+        <source>Output voltage</source>
+        <translation>輸出電壓</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>溫度</translation>
+    </message>
+    <message>
+        <source>Ambient temperature</source>
+        <translation>環境溫度</translation>
+    </message>
+    <message>
+        <source>Device temperature</source>
+        <translation>裝置溫度</translation>
+    </message>
+    <message>
+        <source>Device hardware</source>
+        <translation>裝置硬體</translation>
+    </message>
+    <message>
+        <source>Device software</source>
+        <translation>裝置軟體</translation>
+    </message>
+    <message>
+        <source>Internal software</source>
+        <translation>內部軟體</translation>
+    </message>
+    <message>
+        <source>User software</source>
+        <translation>使用者軟體</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>資料集</translation>
+    </message>
+    <message>
+        <source>Additional modules</source>
+        <translation>附加模組</translation>
+    </message>
+    <message>
+        <source>Monitoring</source>
+        <translation>監控</translation>
+    </message>
+    <message>
+        <source>Communication</source>
+        <translation>通訊</translation>
+    </message>
+    <message>
+        <source>Protocol error</source>
+        <translation>協定錯誤</translation>
+    </message>
+    <message>
+        <source>External error</source>
+        <translation>外部錯誤</translation>
+    </message>
+    <message>
+        <source>Additional functions</source>
+        <translation>附加功能</translation>
+    </message>
+    <message>
+        <source>Device specific</source>
+        <translation>裝置自訂</translation>
+    </message>
+    <message>
+        <source>Unknown error code</source>
+        <translation>未知的錯誤碼</translation>
+    </message>
+    <message>
+        <source>Delta: P-parameters written over CAN are saved to EEPROM at once. P3-00 takes effect after a power cycle (marked ●).</source>
+        <translation>台達：經 CAN 寫入的 P 參數會立即存入 EEPROM。P3-00 須重新上電後才生效（標記 ●）。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN (200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of H0C-08 are not documented: use LSS for the bit rate.</source>
+        <translation>AIMOTOR：手冊以 RS485 工具設定 H0C-00（節點 ID）；經 CAN（200Ch:01）寫入是推定的做法，請以 1010h 儲存並重新上電。H0C-08 的鮑率代碼未見於文件：鮑率請使用 LSS 設定。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP switch SW2. No bit-rate parameter: use LSS.</source>
+        <translation>DEXMART DEV：參數 09-19 僅在 Rev A 上設定節點 ID；Rev B/C/D 使用 DIP 開關 SW2。沒有鮑率參數：請使用 LSS。</translation>
+    </message>
+    <message>
+        <source>Voltage enabled</source>
+        <translation>電壓已致能</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>遠端控制（Remote）</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>已到達目標</translation>
+    </message>
+    <message>
+        <source>Internal limit active</source>
+        <translation>內部限制作用中</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -5017,6 +5249,19 @@ SDO 下載 %n 位元組：%1</numerusform>
     <message>
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
         <translation>已使用 64 位元中的 %1 位元（封包中 %2 位元組）</translation>
+    </message>
+    <message>
+        <source>byte %1: %3</source>
+        <extracomment>PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)</extracomment>
+        <translation>位元組 %1：%3</translation>
+    </message>
+    <message>
+        <source>byte %1-%2: %3</source>
+        <translation>位元組 %1–%2：%3</translation>
+    </message>
+    <message>
+        <source>%1 of 64 bits</source>
+        <translation>已用 %1 / 64 位元</translation>
     </message>
 </context>
 <context>

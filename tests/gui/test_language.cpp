@@ -11,6 +11,7 @@
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
+#include "eds/DictionaryLibrary.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QAbstractButton>
@@ -53,8 +54,25 @@ const QStringList kSame = {
     QStringLiteral("AIMOTOR"),   QStringLiteral("DEXMART"), QStringLiteral("COB-ID"), QStringLiteral("SDO"),
     QStringLiteral("PDO"),       QStringLiteral("NMT"),     QStringLiteral("EMCY"),   QStringLiteral("SYNC"),
     QStringLiteral("ms"),        QStringLiteral("rpm"),     QStringLiteral("Hz"),     QStringLiteral("Rx"),
-    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
+    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("sim"),     QStringLiteral("aimotor"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
 };
+
+// The object names of the virtual drives' dictionaries (EDS names, the manuals' own where they
+// give them): data, not UI text.
+const QSet<QString>& dictionaryNames() {
+    static const QSet<QString> names = [] {
+        QSet<QString> out;
+        for (const char* d : {"delta-asda-a2", "aimotor", "dexmart-dev", "generic-cia402"}) {
+            const eds::ReadResult r = eds::loadDictionaryByPathOrName(QString::fromLatin1(d));
+            for (const auto& [index, o] : r.dictionary.objects()) {
+                out.insert(o.name);
+                for (const auto& sub : o.subs) out.insert(sub.name);
+            }
+        }
+        return out;
+    }();
+    return names;
+}
 
 struct Text {
     QString text, where;
@@ -131,7 +149,12 @@ QList<Text> visibleTexts(QWidget* window) {
 bool compared(const QString& t) {
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{2,}"));
     // A bus URL or file name is data, the same in every language.
-    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://"));
+    // Identifiers: dictionary names ("delta-asda-a2"), abbreviations ("NMT_EC", "TPDO1"), paths.
+    // A command script line (the "Script line" column): coscope-cli's language, the same everywhere.
+    static const QRegularExpression scriptLine(QStringLiteral("^(sdo|nmt|lss|wait|wait-node|reconnect) [a-z0-9]"));
+    static const QRegularExpression identifier(QStringLiteral("^([a-z0-9]+([-_][a-z0-9]+)+|[A-Z0-9_]+|[^ ]*/[^ ]*)$"));
+    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://")) && !dictionaryNames().contains(t) &&
+           !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch();
 }
 
 // Texts of `now` that are in `english` (what the same window showed in English).

@@ -264,6 +264,14 @@ const char* const kTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "event timer (%1)"),
     QT_TRANSLATE_NOOP("CoreText", "mapping sub0 = 0 (%1)"),
     QT_TRANSLATE_NOOP("CoreText", "mapping entry %1 (%2)"),
+    QT_TRANSLATE_NOOP("CoreText", "Delta: P-parameters written over CAN are saved to EEPROM at once. P3-00 takes effect after a power cycle (marked ●)."),
+    QT_TRANSLATE_NOOP("CoreText", "AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN (200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of H0C-08 are not documented: use LSS for the bit rate."),
+    QT_TRANSLATE_NOOP("CoreText", "DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP switch SW2. No bit-rate parameter: use LSS."),
+    QT_TRANSLATE_NOOP("CoreText", "Voltage enabled"),
+    QT_TRANSLATE_NOOP("CoreText", "Remote"),
+    QT_TRANSLATE_NOOP("CoreText", "Warning"),
+    QT_TRANSLATE_NOOP("CoreText", "Target reached"),
+    QT_TRANSLATE_NOOP("CoreText", "Internal limit active"),
 };
 // clang-format on
 }  // namespace

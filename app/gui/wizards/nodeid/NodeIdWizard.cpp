@@ -260,7 +260,7 @@ QString NodeIdWizard::explanation() const {
         while (when.endsWith(u'.')) when.chop(1);  // the sentence gets its own full stop
         parts << tr("<b>Takes effect:</b> %1.").arg(when.toHtmlEscaped());
     }
-    if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(v->note.toHtmlEscaped());
+    if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(coreText(v->note).toHtmlEscaped());
     if (request_.change == Change::BitRate) {
         QStringList others;
         for (int n : knownNodes())
