@@ -152,9 +152,11 @@ bool compared(const QString& t) {
     // Identifiers: dictionary names ("delta-asda-a2"), abbreviations ("NMT_EC", "TPDO1"), paths.
     // A command script line (the "Script line" column): coscope-cli's language, the same everywhere.
     static const QRegularExpression scriptLine(QStringLiteral("^(sdo|nmt|lss|wait|wait-node|reconnect) [a-z0-9]"));
+    // A number with its unit ("500 kbit/s"), or frame data in hex ("43 18 10 01 DD 01 00 00").
+    static const QRegularExpression numberOrData(QStringLiteral("^([0-9][0-9.,]* ?(bit/s|kbit/s|Mbit/s|ms|s|rpm|Hz)|[0-9A-F]{2}( [0-9A-F]{2})*)$"));
     static const QRegularExpression identifier(QStringLiteral("^([a-z0-9]+([-_][a-z0-9]+)+|[A-Z0-9_]+|[^ ]*/[^ ]*)$"));
     return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://")) && !dictionaryNames().contains(t) &&
-           !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch();
+           !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch() && !numberOrData.match(t).hasMatch();
 }
 
 // Texts of `now` that are in `english` (what the same window showed in English).
