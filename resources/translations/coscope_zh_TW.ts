@@ -2055,6 +2055,14 @@
         <source>Internal limit active</source>
         <translation>內部限制作用中</translation>
     </message>
+    <message>
+        <source>TPDO%1 node %2: %3</source>
+        <translation>TPDO%1 節點 %2：%3</translation>
+    </message>
+    <message>
+        <source>RPDO%1 node %2: %3</source>
+        <translation>RPDO%1 節點 %2：%3</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>

@@ -176,6 +176,8 @@ const char* const kTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "Additional functions"),
     QT_TRANSLATE_NOOP("CoreText", "Device specific"),
     QT_TRANSLATE_NOOP("CoreText", "Unknown error code"),
+    QT_TRANSLATE_NOOP("CoreText", "TPDO%1 node %2: %3"),
+    QT_TRANSLATE_NOOP("CoreText", "RPDO%1 node %2: %3"),
 };
 // clang-format on
 }  // namespace
