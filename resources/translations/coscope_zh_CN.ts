@@ -6291,9 +6291,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>Bus back after %1 s: frames between are missing from the trace</source>
         <translation>总线在 %1 秒后恢复：中断期间的帧不在跟踪中</translation>
     </message>
-    <message>
-        <source>%1 frames dropped (receive queue full), %2 in total</source>
-        <translation>丢失 %1 帧（接收队列已满），累计 %2 帧</translation>
+    <message numerus="yes">
+        <source>%n frame(s) dropped (receive queue full), %1 in total</source>
+        <translation>
+            <numerusform>丢失 %n 帧（接收队列已满），累计 %1 帧</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

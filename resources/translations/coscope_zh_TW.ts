@@ -6291,9 +6291,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>Bus back after %1 s: frames between are missing from the trace</source>
         <translation>總線在 %1 秒後恢復：中斷期間的封包不在追蹤中</translation>
     </message>
-    <message>
-        <source>%1 frames dropped (receive queue full), %2 in total</source>
-        <translation>丟失 %1 個封包（接收佇列已滿），累計 %2 個</translation>
+    <message numerus="yes">
+        <source>%n frame(s) dropped (receive queue full), %1 in total</source>
+        <translation>
+            <numerusform>丟失 %n 個封包（接收佇列已滿），累計 %1 個</numerusform>
+        </translation>
     </message>
 </context>
 </TS>
