@@ -359,6 +359,1710 @@
         <source>error</source>
         <translation>错误</translation>
     </message>
+    <message>
+        <source>NMT %1, node %2</source>
+        <translation>NMT %1，节点 %2</translation>
+    </message>
+    <message>
+        <source>NMT %1, all nodes</source>
+        <translation>NMT %1，所有节点</translation>
+    </message>
+    <message>
+        <source>NMT (malformed)</source>
+        <translation>NMT（格式错误）</translation>
+    </message>
+    <message>
+        <source>NMT command with %1 bytes; CiA 301 requires 2</source>
+        <translation>NMT 命令有 %1 字节；CiA 301 规定为 2</translation>
+    </message>
+    <message>
+        <source>unknown NMT command specifier 0x%1</source>
+        <translation>未知的 NMT 命令码 0x%1</translation>
+    </message>
+    <message>
+        <source>NMT target node-ID %1 is outside 0..127</source>
+        <translation>NMT 目标节点 ID %1 不在 0..127 之间</translation>
+    </message>
+    <message>
+        <source>Node guarding request, node %1</source>
+        <translation>节点保护请求，节点 %1</translation>
+    </message>
+    <message>
+        <source>error control frame with %1 bytes; CiA 301 requires 1</source>
+        <translation>错误控制帧有 %1 字节；CiA 301 规定为 1</translation>
+    </message>
+    <message>
+        <source>Error control (malformed), node %1</source>
+        <translation>错误控制（格式错误），节点 %1</translation>
+    </message>
+    <message>
+        <source>unknown NMT state 0x%1</source>
+        <translation>未知的 NMT 状态 0x%1</translation>
+    </message>
+    <message>
+        <source>node guarding toggle bit did not alternate (still %1)</source>
+        <translation>节点保护的切换位没有交替（仍为 %1）</translation>
+    </message>
+    <message>
+        <source>Boot-up, node %1</source>
+        <translation>启动报文，节点 %1</translation>
+    </message>
+    <message>
+        <source>Node guarding, node %1: %2, toggle %3</source>
+        <translation>节点保护，节点 %1：%2，切换位 %3</translation>
+    </message>
+    <message>
+        <source>Heartbeat, node %1: %2</source>
+        <translation>心跳，节点 %1：%2</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation>SYNC 计数 %1</translation>
+    </message>
+    <message>
+        <source>SYNC with %1 bytes; CiA 301 allows 0 or 1</source>
+        <translation>SYNC 有 %1 字节；CiA 301 只允许 0 或 1</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1 is outside 1..240</source>
+        <translation>SYNC 计数 %1 不在 1..240 之间</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, register 0x%4</source>
+        <translation>EMCY 节点 %1：%2 %3，错误寄存器 0x%4</translation>
+    </message>
+    <message>
+        <source>EMCY (malformed), node %1</source>
+        <translation>EMCY（格式错误），节点 %1</translation>
+    </message>
+    <message>
+        <source>EMCY with %1 bytes; CiA 301 requires 8</source>
+        <translation>EMCY 有 %1 字节；CiA 301 规定为 8</translation>
+    </message>
+    <message>
+        <source>M%1 alarm %2</source>
+        <translation>M%1 报警 %2</translation>
+    </message>
+    <message>
+        <source>%1 0x%2 (not in the table)</source>
+        <translation>%1 0x%2（不在报警表中）</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2 = %3</source>
+        <translation>SDO 写入 节点 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2, %3 bytes (segmented)</source>
+        <translation>SDO 写入 节点 %1 %2，%3 字节（分段）</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2 (segmented)</source>
+        <translation>SDO 写入 节点 %1 %2（分段）</translation>
+    </message>
+    <message>
+        <source>SDO write ok node %1 %2</source>
+        <translation>SDO 写入成功 节点 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2 = %3</source>
+        <translation>SDO 读取 节点 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2, %3 bytes (segmented)</source>
+        <translation>SDO 读取 节点 %1 %2，%3 字节（分段）</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2 (segmented)</source>
+        <translation>SDO 读取 节点 %1 %2（分段）</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2</source>
+        <translation>SDO 读取 节点 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO abort node %1 %2: %3 %4</source>
+        <translation>SDO 中止 节点 %1 %2：%3 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, toggle %3, %4 bytes, last</source>
+        <translation>SDO %1 节点 %2，切换位 %3，%4 字节，最后一段</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, toggle %3, %4 bytes</source>
+        <translation>SDO %1 节点 %2，切换位 %3，%4 字节</translation>
+    </message>
+    <message>
+        <source>SDO block segment %1 node %2, %3 bytes, last</source>
+        <translation>SDO 块分段 %1 节点 %2，%3 字节，最后一段</translation>
+    </message>
+    <message>
+        <source>SDO block segment %1 node %2, %3 bytes</source>
+        <translation>SDO 块分段 %1 节点 %2，%3 字节</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, ackseq %3, block size %4</source>
+        <translation>SDO %1 节点 %2，确认序列号 %3，块大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, %3 unused bytes, CRC 0x%4</source>
+        <translation>SDO %1 节点 %2，%3 个未使用字节，CRC 0x%4</translation>
+    </message>
+    <message>
+        <source>SDO node %1 (invalid)</source>
+        <translation>SDO 节点 %1（无效）</translation>
+    </message>
+    <message>
+        <source>SDO remote frame, node %1</source>
+        <translation>SDO 远程帧，节点 %1</translation>
+    </message>
+    <message>
+        <source>remote frame on an SDO COB-ID</source>
+        <translation>SDO COB-ID 上出现远程帧</translation>
+    </message>
+    <message>
+        <source>unknown abort code</source>
+        <translation>未知的中止码</translation>
+    </message>
+    <message>
+        <source>initiate download request</source>
+        <translation>起始下载请求</translation>
+    </message>
+    <message>
+        <source>download segment request</source>
+        <translation>下载分段请求</translation>
+    </message>
+    <message>
+        <source>initiate upload request</source>
+        <translation>起始上传请求</translation>
+    </message>
+    <message>
+        <source>upload segment request</source>
+        <translation>上传分段请求</translation>
+    </message>
+    <message>
+        <source>initiate download response</source>
+        <translation>起始下载响应</translation>
+    </message>
+    <message>
+        <source>download segment response</source>
+        <translation>下载分段响应</translation>
+    </message>
+    <message>
+        <source>initiate upload response</source>
+        <translation>起始上传响应</translation>
+    </message>
+    <message>
+        <source>upload segment response</source>
+        <translation>上传分段响应</translation>
+    </message>
+    <message>
+        <source>block upload initiate</source>
+        <translation>块上传起始</translation>
+    </message>
+    <message>
+        <source>block upload start</source>
+        <translation>块上传开始</translation>
+    </message>
+    <message>
+        <source>block upload ack</source>
+        <translation>块上传确认</translation>
+    </message>
+    <message>
+        <source>block upload end</source>
+        <translation>块上传结束</translation>
+    </message>
+    <message>
+        <source>block upload end response</source>
+        <translation>块上传结束响应</translation>
+    </message>
+    <message>
+        <source>block upload initiate response</source>
+        <translation>块上传起始响应</translation>
+    </message>
+    <message>
+        <source>block download initiate</source>
+        <translation>块下载起始</translation>
+    </message>
+    <message>
+        <source>block download initiate response</source>
+        <translation>块下载起始响应</translation>
+    </message>
+    <message>
+        <source>block download ack</source>
+        <translation>块下载确认</translation>
+    </message>
+    <message>
+        <source>block download end</source>
+        <translation>块下载结束</translation>
+    </message>
+    <message>
+        <source>block download end response</source>
+        <translation>块下载结束响应</translation>
+    </message>
+    <message>
+        <source>%1 node %2: remote request</source>
+        <translation>%1 节点 %2：远程请求</translation>
+    </message>
+    <message>
+        <source>%1 of node %2 is not valid (COB-ID 0x%3) but was seen on the bus</source>
+        <translation>节点 %2 的 %1 无效（COB-ID 0x%3），却出现在总线上</translation>
+    </message>
+    <message>
+        <source>%1 has %2 bytes but its mapping needs %3</source>
+        <translation>%1 有 %2 字节，但它的映射需要 %3</translation>
+    </message>
+    <message>
+        <source>not CANopen (29-bit identifier)</source>
+        <translation>不是 CANopen（29 位标识符）</translation>
+    </message>
+    <message>
+        <source>unknown COB-ID</source>
+        <translation>未知的 COB-ID</translation>
+    </message>
+    <message>
+        <source>new SDO request for %1 while the transfer of %2 was unfinished (abandoned)</source>
+        <translation>%2 的传输尚未完成时又出现 %1 的 SDO 请求（已放弃前者）</translation>
+    </message>
+    <message>
+        <source>response for %1 but the request was for %2</source>
+        <translation>响应的是 %1，但请求的是 %2</translation>
+    </message>
+    <message>
+        <source>SDO transfer of %1 carried %2 bytes but announced %3</source>
+        <translation>%1 的 SDO 传输带了 %2 字节，但声明为 %3</translation>
+    </message>
+    <message>
+        <source>block ack acknowledges %1 segments, %2 were sent</source>
+        <translation>块确认了 %1 个分段，实际发送 %2 个</translation>
+    </message>
+    <message>
+        <source>SDO block CRC 0x%1 does not match the data (0x%2)</source>
+        <translation>SDO 块 CRC 0x%1 与数据不符（0x%2）</translation>
+    </message>
+    <message>
+        <source>unexpected SDO %1 (%2)</source>
+        <translation>非预期的 SDO %1（%2）</translation>
+    </message>
+    <message>
+        <source>no transfer in progress</source>
+        <translation>没有进行中的传输</translation>
+    </message>
+    <message>
+        <source>transfer of %1 in progress</source>
+        <translation>%1 的传输进行中</translation>
+    </message>
+    <message>
+        <source>SDO toggle bit %1, expected %2</source>
+        <translation>SDO 切换位为 %1，预期为 %2</translation>
+    </message>
+    <message>
+        <source>abort names %1 but the transfer in progress is %2</source>
+        <translation>中止指的是 %1，但进行中的传输是 %2</translation>
+    </message>
+    <message>
+        <source>block segment %1, expected %2</source>
+        <translation>块分段 %1，预期为 %2</translation>
+    </message>
+    <message>
+        <source>block segment %1 beyond the block size %2</source>
+        <translation>块分段 %1 超出块大小 %2</translation>
+    </message>
+    <message>
+        <source>generic error</source>
+        <translation>一般错误</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>电流</translation>
+    </message>
+    <message>
+        <source>voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>communication error</source>
+        <translation>通信错误</translation>
+    </message>
+    <message>
+        <source>device profile specific</source>
+        <translation>设备规范定义</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <source>manufacturer specific</source>
+        <translation>制造商自定义</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>1 次</translation>
+    </message>
+    <message>
+        <source>%1 times</source>
+        <translation>%1 次</translation>
+    </message>
+    <message>
+        <source>node %1 (bus %2)</source>
+        <translation>节点 %1（总线 %2）</translation>
+    </message>
+    <message>
+        <source>node %1 rebooted %2 (boot-up without an NMT reset)</source>
+        <translation>节点 %1 重新启动了 %2（没有 NMT 重置却发送启动报文）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat stopped: nothing for %2 (period %3)</source>
+        <translation>节点 %1 心跳停止：%2 没有任何消息（周期 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat stopped: nothing for %2 (period %3), 1017h was set to 0</source>
+        <translation>节点 %1 心跳停止：%2 没有任何消息（周期 %3），1017h 已被设为 0</translation>
+    </message>
+    <message>
+        <source>node %1 guarding stopped: nothing for %2 (period %3)</source>
+        <translation>节点 %1 节点保护停止：%2 没有任何消息（周期 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat lost %2 (longest gap %3, period %4)</source>
+        <translation>节点 %1 心跳丢失 %2（最长间隔 %3，周期 %4）</translation>
+    </message>
+    <message>
+        <source>node %1 guarding lost %2 (longest gap %3, period %4)</source>
+        <translation>节点 %1 节点保护丢失 %2（最长间隔 %3，周期 %4）</translation>
+    </message>
+    <message>
+        <source>%1 more EMCY from node %2</source>
+        <translation>节点 %2 还有 %1 条 EMCY</translation>
+    </message>
+    <message>
+        <source>EMCY %1 %2 from node %3 at %4</source>
+        <translation>EMCY %1 %2，来自节点 %3，时间 %4</translation>
+    </message>
+    <message>
+        <source>node %1 left %2 SDO request unanswered</source>
+        <translation>节点 %1 有 %2 个 SDO 请求没有响应</translation>
+    </message>
+    <message>
+        <source>node %1 left %2 SDO requests unanswered</source>
+        <translation>节点 %1 有 %2 个 SDO 请求没有响应</translation>
+    </message>
+    <message>
+        <source>node %1 aborted SDO %2 with %3 %4</source>
+        <translation>节点 %1 以 %3 %4 中止 SDO %2</translation>
+    </message>
+    <message>
+        <source>node %1 answered SDO in %2 p99 (max %3)</source>
+        <translation>节点 %1 的 SDO 响应时间 p99 为 %2（最大 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat late %2 (over 1.5x the %3 period)</source>
+        <translation>节点 %1 心跳延迟 %2（超过周期 %3 的 1.5 倍）</translation>
+    </message>
+    <message>
+        <source>node %1 guarding late %2 (over 1.5x the %3 period)</source>
+        <translation>节点 %1 节点保护延迟 %2（超过周期 %3 的 1.5 倍）</translation>
+    </message>
+    <message>
+        <source>%1 CAN error frame</source>
+        <translation>%1 个 CAN 错误帧</translation>
+    </message>
+    <message>
+        <source>%1 CAN error frames</source>
+        <translation>%1 个 CAN 错误帧</translation>
+    </message>
+    <message>
+        <source>%1 SYNC cycle missing (period %2)</source>
+        <translation>缺少 %1 个 SYNC 周期（周期 %2）</translation>
+    </message>
+    <message>
+        <source>%1 SYNC cycles missing (period %2)</source>
+        <translation>缺少 %1 个 SYNC 周期（周期 %2）</translation>
+    </message>
+    <message>
+        <source>bus load peaks at %1 % (average %2 %) at %3 bit/s</source>
+        <translation>总线负载峰值 %1 %（平均 %2 %），波特率 %3 bit/s</translation>
+    </message>
+    <message>
+        <source>RPDO (%1) sent to node %2, which never answers</source>
+        <translation>RPDO（%1）送往节点 %2，但它从未响应</translation>
+    </message>
+    <message>
+        <source>TPDO (%1) sent to node %2, which never answers</source>
+        <translation>TPDO（%1）送往节点 %2，但它从未响应</translation>
+    </message>
+    <message>
+        <source>%1 of node %2 (%3) every %4 jitters by %5</source>
+        <translation>节点 %2 的 %1（%3）每 %4 一次，抖动 %5</translation>
+    </message>
+    <message>
+        <source>RPDO%1 of node %2 (%3) is valid but nobody sends it</source>
+        <translation>节点 %2 的 RPDO%1（%3）有效，但没有人发送它</translation>
+    </message>
+    <message>
+        <source>%1 node-ID (%2..%3) got an SDO request and never answered: a network scan, or devices missing</source>
+        <translation>%1 个节点 ID（%2..%3）收到 SDO 请求却从未响应：可能是网络扫描，或设备不在</translation>
+    </message>
+    <message>
+        <source>%1 node-IDs (%2..%3) got an SDO request and never answered: a network scan, or devices missing</source>
+        <translation>%1 个节点 ID（%2..%3）收到 SDO 请求却从未响应：可能是网络扫描，或设备不在</translation>
+    </message>
+    <message>
+        <source>%1 frame is not CANopen</source>
+        <translation>%1 帧不是 CANopen</translation>
+    </message>
+    <message>
+        <source>%1 frames are not CANopen</source>
+        <translation>%1 帧不是 CANopen</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2 on node %3</source>
+        <translation>在节点 %3 写入 %1 = %2</translation>
+    </message>
+    <message>
+        <source>Read %1 from node %2</source>
+        <translation>从节点 %2 读取 %1</translation>
+    </message>
+    <message>
+        <source>Check %1 = %2 on node %3</source>
+        <translation>确认节点 %3 的 %1 = %2</translation>
+    </message>
+    <message>
+        <source>Check %1 = %2 (mask %3) on node %4</source>
+        <translation>确认节点 %4 的 %1 = %2（掩码 %3）</translation>
+    </message>
+    <message>
+        <source>NMT %1 to all nodes</source>
+        <translation>对所有节点发送 NMT %1</translation>
+    </message>
+    <message>
+        <source>NMT %1 to node %2</source>
+        <translation>对节点 %2 发送 NMT %1</translation>
+    </message>
+    <message>
+        <source>LSS: every device to configuration state</source>
+        <translation>LSS：所有设备进入设置状态</translation>
+    </message>
+    <message>
+        <source>LSS: every device back to waiting state</source>
+        <translation>LSS：所有设备回到等待状态</translation>
+    </message>
+    <message>
+        <source>LSS: select the device with vendor %1h, product %2h, revision %3h, serial %4h</source>
+        <translation>LSS：选中厂商 %1h、产品 %2h、版本 %3h、序列号 %4h 的设备</translation>
+    </message>
+    <message>
+        <source>LSS: set node-ID to unconfigured (FFh)</source>
+        <translation>LSS：将节点 ID 设为未设置（FFh）</translation>
+    </message>
+    <message>
+        <source>LSS: set node-ID %1</source>
+        <translation>LSS：设置节点 ID 为 %1</translation>
+    </message>
+    <message>
+        <source>LSS: set bit rate %1</source>
+        <translation>LSS：设置波特率为 %1</translation>
+    </message>
+    <message>
+        <source>LSS: store configuration</source>
+        <translation>LSS：保存设置</translation>
+    </message>
+    <message>
+        <source>LSS: switch to the new bit rate (switch delay %1 ms)</source>
+        <translation>LSS：切换到新波特率（切换延迟 %1 ms）</translation>
+    </message>
+    <message>
+        <source>Wait %1 ms</source>
+        <translation>等待 %1 ms</translation>
+    </message>
+    <message>
+        <source>Wait up to %1 ms for node %2 (boot-up or heartbeat)</source>
+        <translation>最多等待 %1 ms，直到节点 %2 报告（启动报文或心跳）</translation>
+    </message>
+    <message>
+        <source>Reconnect the adapter at %1</source>
+        <translation>以 %1 重新连接适配器</translation>
+    </message>
+    <message>
+        <source>Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)</source>
+        <translation>修改期间先关闭 %1（COB-ID 位 31 = 1：PDO 无效）</translation>
+    </message>
+    <message>
+        <source>When the message is sent: type %1 (transmission type)</source>
+        <translation>报文何时发送：类型 %1（传输类型）</translation>
+    </message>
+    <message>
+        <source>Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)</source>
+        <translation>两笔报文之间的最短间隔：%1 ms（禁止时间，单位 100 µs）</translation>
+    </message>
+    <message>
+        <source>No minimum gap between two messages (inhibit time = 0)</source>
+        <translation>两笔报文之间不设最短间隔（禁止时间 = 0）</translation>
+    </message>
+    <message>
+        <source>Send at least every %1 ms (event timer)</source>
+        <translation>至少每 %1 ms 发送一次（事件计时器）</translation>
+    </message>
+    <message>
+        <source>No timer: sent only on its trigger (event timer = 0)</source>
+        <translation>不使用计时器：仅在触发时发送（事件计时器 = 0）</translation>
+    </message>
+    <message>
+        <source>Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)</source>
+        <translation>清空映射对象清单以便重新写入（映射子索引 0 = 0）</translation>
+    </message>
+    <message>
+        <source>Object %1 of the message: %2, %3 bits (mapping entry %4)</source>
+        <translation>报文的第 %1 个对象：%2，%3 位（映射项目 %4）</translation>
+    </message>
+    <message>
+        <source>Activate the %1 mapped objects (mapping sub-index 0 = number of entries)</source>
+        <translation>启用这 %1 个映射对象（映射子索引 0 = 项目数）</translation>
+    </message>
+    <message>
+        <source>Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)</source>
+        <translation>以 CAN-ID %2h 重新打开 %1（COB-ID 位 31 = 0）</translation>
+    </message>
+    <message>
+        <source>Map %1 of node %2</source>
+        <translation>映射节点 %2 的 %1</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3; nothing would be sent</source>
+        <translation>节点 %1 %2：%3；不会发送任何内容</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3; nothing was sent</source>
+        <translation>节点 %1 %2：%3；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)</source>
+        <translation>停止过程数据，以便修改 PDO（NMT 进入预操作状态，CiA 301 §7.3.2）</translation>
+    </message>
+    <message>
+        <source>Check: the COB-ID reads back as written</source>
+        <translation>确认：读回的 COB-ID 与写入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the transmission type reads back as written</source>
+        <translation>确认：读回的传输类型与写入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the inhibit time reads back as written</source>
+        <translation>确认：读回的禁止时间与写入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the event timer reads back as written</source>
+        <translation>确认：读回的事件计时器与写入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the number of mapped objects reads back as written</source>
+        <translation>确认：读回的映射对象数与写入值相同</translation>
+    </message>
+    <message>
+        <source>Check: mapping entry %1 reads back as written</source>
+        <translation>确认：读回的映射项目 %1 与写入值相同</translation>
+    </message>
+    <message>
+        <source>reading the current %1: %2</source>
+        <translation>读取当前的 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2; previous mapping restored</source>
+        <translation>%1 失败：%2；已恢复先前的映射</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2; restoring the previous mapping failed too: %3</source>
+        <translation>%1 失败：%2；恢复先前的映射也失败：%3</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失败：%2</translation>
+    </message>
+    <message>
+        <source>COB-ID invalid</source>
+        <translation>COB-ID 设为无效</translation>
+    </message>
+    <message>
+        <source>COB-ID valid</source>
+        <translation>COB-ID 设为有效</translation>
+    </message>
+    <message>
+        <source>transmission type</source>
+        <translation>传输类型</translation>
+    </message>
+    <message>
+        <source>inhibit time</source>
+        <translation>禁止时间</translation>
+    </message>
+    <message>
+        <source>event timer</source>
+        <translation>事件计时器</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = 0</source>
+        <translation>映射 sub0 = 0</translation>
+    </message>
+    <message>
+        <source>mapping entry %1</source>
+        <translation>映射项目 %1</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = %1</source>
+        <translation>映射 sub0 = %1</translation>
+    </message>
+    <message>
+        <source>COB-ID reads back as %1</source>
+        <translation>读回的 COB-ID 为 %1</translation>
+    </message>
+    <message>
+        <source>transmission type reads back as %1</source>
+        <translation>读回的传输类型为 %1</translation>
+    </message>
+    <message>
+        <source>the mapping reads back differently (%1 entries)</source>
+        <translation>读回的映射不同（%1 个项目）</translation>
+    </message>
+    <message>
+        <source>inhibit time reads back differently</source>
+        <translation>读回的禁止时间不同</translation>
+    </message>
+    <message>
+        <source>event timer reads back differently</source>
+        <translation>读回的事件计时器不同</translation>
+    </message>
+    <message>
+        <source>verify</source>
+        <translation>验证</translation>
+    </message>
+    <message>
+        <source>verify: %1</source>
+        <translation>验证：%1</translation>
+    </message>
+    <message>
+        <source>read-back failed: %1</source>
+        <translation>读回失败：%1</translation>
+    </message>
+    <message>
+        <source>the unconfigured device</source>
+        <translation>未设置节点 ID 的设备</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
+        <translation>以设备的新波特率 %1 重新打开适配器</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is not 1-127</source>
+        <translation>节点 ID %1 不在 1–127 之间</translation>
+    </message>
+    <message>
+        <source>the new node-ID must be 1-127</source>
+        <translation>新的节点 ID 必须在 1–127 之间</translation>
+    </message>
+    <message>
+        <source>node %1 already has this node-ID</source>
+        <translation>节点 %1 已经是这个节点 ID</translation>
+    </message>
+    <message>
+        <source>%1 allows node-IDs %2-%3 only</source>
+        <translation>%1 只允许节点 ID %2–%3</translation>
+    </message>
+    <message>
+        <source>Change node-ID %1 → %2</source>
+        <translation>更改节点 ID %1 → %2</translation>
+    </message>
+    <message>
+        <source>Pick this one device by its identity so only it listens to the next commands (LSS switch state selective)</source>
+        <translation>按识别数据选中这一台设备，让接下来的命令只有它接收（LSS 选择性切换状态）</translation>
+    </message>
+    <message>
+        <source>Give it node-ID %1; not used yet (LSS configure node-ID)</source>
+        <translation>设置节点 ID 为 %1；尚未生效（LSS 设置节点 ID）</translation>
+    </message>
+    <message>
+        <source>Make the device keep the new node-ID after power-off (LSS store configuration)</source>
+        <translation>让设备在断电后保留新的节点 ID（LSS 保存设置）</translation>
+    </message>
+    <message>
+        <source>End the setting mode (LSS switch state global: waiting)</source>
+        <translation>结束设置模式（LSS 全域切换状态：等待）</translation>
+    </message>
+    <message>
+        <source>Restart its communication so it uses node-ID %1 (NMT reset communication)</source>
+        <translation>重置它的通信，使其改用节点 ID %1（NMT 复位通信）</translation>
+    </message>
+    <message>
+        <source>Wait until it reports at node-ID %1 (boot-up / heartbeat)</source>
+        <translation>等待它以节点 ID %1 报告（启动报文／心跳）</translation>
+    </message>
+    <message>
+        <source>at once when the setting mode ends (the device starts with its new node-ID)</source>
+        <translation>设置模式结束时立即生效（设备以新的节点 ID 启动）</translation>
+    </message>
+    <message>
+        <source>after NMT reset communication (sent by this wizard) or a power cycle</source>
+        <translation>在 NMT 复位通信（由本向导发送）或重新上电之后</translation>
+    </message>
+    <message>
+        <source>Look for the device at node-ID %1 (scan). If it is not there: switch it off and on; if it still does not answer, find it with LSS Fastscan / inquiry and set the node-ID again.</source>
+        <translation>在节点 ID %1 查找设备（扫描）。若找不到：将它断电再上电；若仍无响应，用 LSS Fastscan／查找找出它，再重新设置节点 ID。</translation>
+    </message>
+    <message>
+        <source>%1 has no documented node-ID parameter; use LSS</source>
+        <translation>%1 没有文档记载的节点 ID 参数；请使用 LSS</translation>
+    </message>
+    <message>
+        <source>this device</source>
+        <translation>此设备</translation>
+    </message>
+    <message>
+        <source>an LSS-unconfigured device has no node-ID for SDO; use LSS</source>
+        <translation>尚未经 LSS 设置的设备没有可供 SDO 使用的节点 ID；请使用 LSS</translation>
+    </message>
+    <message>
+        <source>Write the new node-ID %1 into %2 (SDO download)</source>
+        <translation>将新的节点 ID %1 写入 %2（SDO 下载）</translation>
+    </message>
+    <message>
+        <source>Write the new node-ID %1 into %2 [object inferred] (SDO download)</source>
+        <translation>将新的节点 ID %1 写入 %2 [对象为推定]（SDO 下载）</translation>
+    </message>
+    <message>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h &quot;save&quot;）</translation>
+    </message>
+    <message>
+        <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
+        <translation>重置设备，使其采用节点 ID %1（NMT 复位节点）</translation>
+    </message>
+    <message>
+        <source>after a power cycle (%1). The wizard also sends NMT reset node, which many drives accept; if the drive does not come back, switch it off and on while the wizard waits.</source>
+        <translation>在重新上电之后（%1）。向导也会发送 NMT 复位节点，许多驱动器接受此命令；若驱动器没有回来，请在向导等待时将它断电再上电。</translation>
+    </message>
+    <message>
+        <source>after NMT reset node (sent by this wizard) or a power cycle (%1)</source>
+        <translation>在 NMT 复位节点（由本向导发送）或重新上电之后（%1）</translation>
+    </message>
+    <message>
+        <source>Switch the drive off and on and look for it at node-ID %1, then at %2. If it answers at %2, the change is stored; if it answers at %1, write %3 again or use LSS.</source>
+        <translation>将驱动器断电再上电，先在节点 ID %1、再在 %2 查找它。若在 %2 响应，更改已保存；若在 %1 响应，请重新写入 %3 或改用 LSS。</translation>
+    </message>
+    <message>
+        <source>choose the new bit rate</source>
+        <translation>请选择新的波特率</translation>
+    </message>
+    <message>
+        <source>the bus already runs at %1</source>
+        <translation>总线已经以 %1 运行</translation>
+    </message>
+    <message>
+        <source>give the device a node-ID first; then change its bit rate</source>
+        <translation>请先给设备节点 ID，再更改它的波特率</translation>
+    </message>
+    <message>
+        <source>Change bit rate of node %1: %2 → %3</source>
+        <translation>更改节点 %1 的波特率：%2 → %3</translation>
+    </message>
+    <message>
+        <source>Find node %1 at %2</source>
+        <translation>以 %2 查找节点 %1</translation>
+    </message>
+    <message>
+        <source>%1 is not in the LSS bit-rate table (CiA 305 Table 1)</source>
+        <translation>%1 不在 LSS 波特率表中（CiA 305 表 1）</translation>
+    </message>
+    <message>
+        <source>Pick this one device by its identity so only it listens (LSS switch state selective)</source>
+        <translation>按识别数据选中这一台设备，让只有它接收（LSS 选择性切换状态）</translation>
+    </message>
+    <message>
+        <source>Give it the new bit rate %1; not used yet (LSS configure bit timing)</source>
+        <translation>设置新波特率 %1；尚未生效（LSS 设置位定时）</translation>
+    </message>
+    <message>
+        <source>Make it keep the new bit rate after power-off (LSS store configuration)</source>
+        <translation>让它在断电后保留新波特率（LSS 保存设置）</translation>
+    </message>
+    <message>
+        <source>Switch to the new bit rate now; it goes silent on this bus (LSS activate bit timing)</source>
+        <translation>立即切换到新波特率；它在这条总线上将不再收发（LSS 激活位定时）</translation>
+    </message>
+    <message>
+        <source>at once with LSS activate bit timing (and at every power-on after the store)</source>
+        <translation>在 LSS 激活位定时时立即生效（保存后每次上电亦然）</translation>
+    </message>
+    <message>
+        <source>%1 has no documented bit-rate parameter; use LSS</source>
+        <translation>%1 没有文档记载的波特率参数；请使用 LSS</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set to %2</source>
+        <translation>%1 无法设为 %2</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2h: bit rate %3 (SDO download)</source>
+        <translation>写入 %1 = %2h：波特率 %3（SDO 下载）</translation>
+    </message>
+    <message>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数（保存参数，1010h &quot;save&quot;）</translation>
+    </message>
+    <message>
+        <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
+        <translation>重置设备，使其以 %1 运行；它在这条总线上将不再收发（NMT 复位节点）</translation>
+    </message>
+    <message>
+        <source>Let the reset leave the adapter and the device restart before reconnecting</source>
+        <translation>重新连接前，先让重置命令发送、设备完成重新启动</translation>
+    </message>
+    <message>
+        <source>after a power cycle (%1); the wizard also sends NMT reset node</source>
+        <translation>在重新上电之后（%1）；向导也会发送 NMT 复位节点</translation>
+    </message>
+    <message>
+        <source>after NMT reset node (%1)</source>
+        <translation>在 NMT 复位节点之后（%1）</translation>
+    </message>
+    <message>
+        <source>Ask it to announce itself at the new bit rate (NMT reset communication)</source>
+        <translation>请它以新波特率重新报到（NMT 复位通信）</translation>
+    </message>
+    <message>
+        <source>Wait until node %1 reports at %2 (boot-up / heartbeat)</source>
+        <translation>等待节点 %1 以 %2 报告（启动报文／心跳）</translation>
+    </message>
+    <message>
+        <source>Reconnect at %1 (the old rate) and scan: if node %2 is there, the change did not take effect — switch it off and on and try again at %3. If it answers at neither rate, try the other standard rates, or use LSS with this device alone on the bus.</source>
+        <translation>以 %1（旧波特率）重新连接并扫描：若节点 %2 仍在，表示更改未生效——将它断电再上电，再以 %3 尝试。若两种波特率都没有响应，请试试其他标准波特率，或让总线上只剩这台设备再使用 LSS。</translation>
+    </message>
+    <message>
+        <source>cannot read the bit-rate parameter: %1</source>
+        <translation>无法读取波特率参数：%1</translation>
+    </message>
+    <message>
+        <source>cannot read the identity (1018h) that LSS needs to pick this device: %1</source>
+        <translation>无法读取 LSS 选中此设备所需的识别数据（1018h）：%1</translation>
+    </message>
+    <message>
+        <source>Put back what was changed</source>
+        <translation>恢复已更改的设置</translation>
+    </message>
+    <message>
+        <source>Put the old node-ID %1 back (LSS configure node-ID)</source>
+        <translation>恢复旧的节点 ID %1（LSS 设置节点 ID）</translation>
+    </message>
+    <message>
+        <source>Put the old bit rate %1 back (LSS configure bit timing)</source>
+        <translation>恢复旧波特率 %1（LSS 设置位定时）</translation>
+    </message>
+    <message>
+        <source>Store the old setting again (LSS store configuration)</source>
+        <translation>再次保存旧设置（LSS 保存设置）</translation>
+    </message>
+    <message>
+        <source>Write the old value back</source>
+        <translation>写回旧值</translation>
+    </message>
+    <message>
+        <source>Save the old value again</source>
+        <translation>再次保存旧值</translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation>第 %1 步：%2</translation>
+    </message>
+    <message>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
+        <translation>没有设备以此识别数据响应 LSS。请确认驱动器支持 LSS（CiA 305）；若不支持，请改用它自己的参数（厂商方式）或厂商的工具。</translation>
+    </message>
+    <message>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
+        <translation>设备拒绝了这个值。请确认它支持此值（见手册的节点 ID 范围／波特率）。</translation>
+    </message>
+    <message>
+        <source>The device could not save the setting, so it would be lost at power-off. Check that it supports LSS store (some keep the setting only until power-off); try its own parameter instead.</source>
+        <translation>设备无法保存设置，断电后设置会丢失。请确认它支持 LSS 保存（有些设备只保留到断电为止）；请改用它自己的参数。</translation>
+    </message>
+    <message>
+        <source>Check that %1 is powered and answers at this node-ID, that the parameter can be written now (some drives refuse parameter writes while the servo is on or in another control mode) and that the value is in range.</source>
+        <translation>请确认%1已上电并以此节点 ID 响应、此时参数可以写入（有些驱动器在伺服启动中或其他控制模式下会拒绝写入参数），且数值在范围内。</translation>
+    </message>
+    <message>
+        <source>Check the connection to %1 and try again.</source>
+        <translation>请检查与%1的连接后再试一次。</translation>
+    </message>
+    <message>
+        <source>Put back: %1.</source>
+        <translation>已恢复：%1。</translation>
+    </message>
+    <message>
+        <source>Could not put everything back (%1: %2).</source>
+        <translation>无法全部恢复（%1：%2）。</translation>
+    </message>
+    <message>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
+        <translation>Delta ASDA-A2 手册 §1.3.1，P3-00（“●”：重新上电后生效）</translation>
+    </message>
+    <message>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-01 digit Z</source>
+        <translation>Delta ASDA-A2 手册 §1.3.1，P3-01 第 Z 位</translation>
+    </message>
+    <message>
+        <source>AIMOTOR manual, CAN settings (H0C-00; object 200Ch:01 inferred)</source>
+        <translation>AIMOTOR 手册，CAN 设置（H0C-00；对象 200Ch:01 为推定）</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV tutorial §8.7 (parameter 09-19, DEV Rev A only)</source>
+        <translation>DEXMART DEV 教学 §8.7（参数 09-19，仅限 DEV Rev A）</translation>
+    </message>
+    <message>
+        <source>node %1 axis %2</source>
+        <translation>节点 %1 轴 %2</translation>
+    </message>
+    <message>
+        <source>%1 went to %2 instead of %3: statusword 0x%4</source>
+        <translation>%1 进入了%2，而不是%3：状态字 0x%4</translation>
+    </message>
+    <message>
+        <source>%1 did not reach %2 within %3 ms: statusword 0x%4 (%5): %6</source>
+        <translation>%1 未在 %3 ms 内到达%2：状态字 0x%4（%5）：%6</translation>
+    </message>
+    <message>
+        <source>missing bit %1 (%2)</source>
+        <translation>缺少位 %1（%2）</translation>
+    </message>
+    <message>
+        <source>unexpected bit %1 (%2)</source>
+        <translation>多出位 %1（%2）</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is on: %3</source>
+        <translation>%1（位 %2）为 on：%3</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is off: %3</source>
+        <translation>%1（位 %2）为 off：%3</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is on</source>
+        <translation>%1（位 %2）为 on</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is off</source>
+        <translation>%1（位 %2）为 off</translation>
+    </message>
+    <message>
+        <source>bit 7 low before fault reset</source>
+        <translation>故障复位前将位 7 设为低</translation>
+    </message>
+    <message>
+        <source>Disable voltage, enable failed</source>
+        <translation>切断电压（使能失败）</translation>
+    </message>
+    <message>
+        <source>%1; drive disabled</source>
+        <translation>%1；已解除驱动器使能</translation>
+    </message>
+    <message>
+        <source>%1; disabling the drive failed too: %2</source>
+        <translation>%1；解除驱动器使能也失败：%2</translation>
+    </message>
+    <message>
+        <source>%1: modes of operation display %2h shows %3 (%4), not %5 (%6), after %7 ms</source>
+        <translation>%1：%7 ms 后，运行模式显示 %2h 为 %3（%4），而不是 %5（%6）</translation>
+    </message>
+    <message>
+        <source>Controlword bit 7 low first: fault reset acts on its rising edge</source>
+        <translation>先将控制字位 7 设为低：故障复位在上升沿动作</translation>
+    </message>
+    <message>
+        <source>Clear the fault (Fault reset, CiA 402 transition 15)</source>
+        <translation>清除故障（故障复位，CiA 402 转换 15）</translation>
+    </message>
+    <message>
+        <source>Make the drive ready (Shutdown, transition 2)</source>
+        <translation>让驱动器就绪（Shutdown，转换 2）</translation>
+    </message>
+    <message>
+        <source>Switch the power stage on, motor not yet energised (Switch on, transition 3)</source>
+        <translation>打开功率级，电机尚未通电（Switch on，转换 3）</translation>
+    </message>
+    <message>
+        <source>Energise the motor: it holds position and follows commands (Enable operation, transition 4)</source>
+        <translation>电机通电：保持位置并跟随命令（运行使能，转换 4）</translation>
+    </message>
+    <message>
+        <source>Stop following commands, power stage stays on (Disable operation, transition 5)</source>
+        <translation>停止跟随命令，功率级保持打开（Disable operation，转换 5）</translation>
+    </message>
+    <message>
+        <source>Remove power from the motor (Disable voltage)</source>
+        <translation>切断电机电源（Disable voltage）</translation>
+    </message>
+    <message>
+        <source>Brake on the quick stop ramp (Quick stop)</source>
+        <translation>按快速停止斜坡减速（Quick stop）</translation>
+    </message>
+    <message>
+        <source>Statusword must show %1</source>
+        <translation>状态字必须显示%1</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable of node %1</source>
+        <translation>节点 %1 的 CiA 402 使能</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable of node %1 axis %2</source>
+        <translation>节点 %1 轴 %2 的 CiA 402 使能</translation>
+    </message>
+    <message>
+        <source>Choose the mode of operation: %1 (6060h)</source>
+        <translation>选择运行模式：%1（6060h）</translation>
+    </message>
+    <message>
+        <source>The drive confirms the mode (modes of operation display 6061h)</source>
+        <translation>驱动器确认模式（运行模式显示 6061h）</translation>
+    </message>
+    <message>
+        <source>jog velocity must be non-zero and at most %1 units/s</source>
+        <translation>点动速度不可为 0，且最多 %1 单位/s</translation>
+    </message>
+    <message>
+        <source>profile velocity must be 1-%1 units/s</source>
+        <translation>轮廓速度必须在 1–%1 单位/s 之间</translation>
+    </message>
+    <message>
+        <source>relative move must be non-zero and at most %1 units</source>
+        <translation>相对移动量不可为 0，且最多 %1 单位</translation>
+    </message>
+    <message>
+        <source>acceleration and deceleration must be above 0</source>
+        <translation>加速度与减速度必须大于 0</translation>
+    </message>
+    <message>
+        <source>test move time must be 1-%1 ms</source>
+        <translation>测试运动时间必须在 1–%1 ms 之间</translation>
+    </message>
+    <message>
+        <source>watchdog must be at least 50 ms</source>
+        <translation>看门狗时间至少须 50 ms</translation>
+    </message>
+    <message>
+        <source>a test move is already running</source>
+        <translation>已有测试运动在运行中</translation>
+    </message>
+    <message>
+        <source>%1 (profile acceleration)</source>
+        <translation>%1（轮廓加速度）</translation>
+    </message>
+    <message>
+        <source>%1 (profile deceleration)</source>
+        <translation>%1（轮廓减速度）</translation>
+    </message>
+    <message>
+        <source>Enable operation, halt off</source>
+        <translation>运行使能，解除暂停（halt）</translation>
+    </message>
+    <message>
+        <source>%1 (target velocity)</source>
+        <translation>%1（目标速度）</translation>
+    </message>
+    <message>
+        <source>%1 (profile velocity)</source>
+        <translation>%1（轮廓速度）</translation>
+    </message>
+    <message>
+        <source>%1 (target position, relative)</source>
+        <translation>%1（目标位置，相对）</translation>
+    </message>
+    <message>
+        <source>Enable operation, relative, new set-point low</source>
+        <translation>运行使能，相对，新设置点为低</translation>
+    </message>
+    <message>
+        <source>New set-point (bit 4 rising), relative (bit 6)</source>
+        <translation>新设置点（位 4 上升沿），相对（位 6）</translation>
+    </message>
+    <message>
+        <source>test move set-up failed: %1</source>
+        <translation>测试运动设置失败：%1</translation>
+    </message>
+    <message>
+        <source>%1 is in %2, not Operation enabled: enable the drive before a test move</source>
+        <translation>%1 处于%2，不是运行使能：测试运动前请先使能驱动器</translation>
+    </message>
+    <message>
+        <source>cannot set the mode for the test move: %1</source>
+        <translation>无法设置测试运动的模式：%1</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering during the test move (%1)</source>
+        <translation>测试运动中驱动器停止响应（%1）</translation>
+    </message>
+    <message>
+        <source>the drive faulted during the test move (statusword 0x%1)</source>
+        <translation>测试运动中驱动器发生故障（状态字 0x%1）</translation>
+    </message>
+    <message>
+        <source>the drive left Operation enabled during the test move (now %1)</source>
+        <translation>测试运动中驱动器离开了运行使能（现在为%1）</translation>
+    </message>
+    <message>
+        <source>position read failed during the test move: %1</source>
+        <translation>测试运动中读取位置失败：%1</translation>
+    </message>
+    <message>
+        <source>velocity read failed during the test move: %1</source>
+        <translation>测试运动中读取速度失败：%1</translation>
+    </message>
+    <message>
+        <source>hold-to-run released (no signal for %1 ms)</source>
+        <translation>已放开按住运行（%1 ms 没有信号）</translation>
+    </message>
+    <message>
+        <source>time limit of %1 ms reached</source>
+        <translation>已达 %1 ms 的时间上限</translation>
+    </message>
+    <message>
+        <source>Halt: stop the test move on the deceleration ramp</source>
+        <translation>暂停（Halt）：按减速斜坡停止测试运动</translation>
+    </message>
+    <message>
+        <source>halt failed: %1</source>
+        <translation>暂停失败：%1</translation>
+    </message>
+    <message>
+        <source>velocity read failed while stopping: %1</source>
+        <translation>停止时读取速度失败：%1</translation>
+    </message>
+    <message>
+        <source>the motor did not stop within %1 ms of the halt</source>
+        <translation>暂停后 %1 ms 内电机未停止</translation>
+    </message>
+    <message>
+        <source>%1: %2h = 0 (target velocity)</source>
+        <translation>%1：%2h = 0（目标速度）</translation>
+    </message>
+    <message>
+        <source>target velocity 0 failed: %1</source>
+        <translation>目标速度设为 0 失败：%1</translation>
+    </message>
+    <message>
+        <source>Quick stop, test move failed</source>
+        <translation>快速停止（测试运动失败）</translation>
+    </message>
+    <message>
+        <source>Disable voltage, test move failed</source>
+        <translation>切断电压（测试运动失败）</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is outside 1-127</source>
+        <translation>节点 ID %1 不在 1–127 之间</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: cancelled</source>
+        <translation>节点 %1 读取 %2：已取消</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: cancelled</source>
+        <translation>节点 %1 写入 %2：已取消</translation>
+    </message>
+    <message>
+        <source>the server answered for %1</source>
+        <translation>伺服端响应的是 %1</translation>
+    </message>
+    <message>
+        <source>toggle bit not alternated in an upload segment</source>
+        <translation>上传分段的切换位没有交替</translation>
+    </message>
+    <message>
+        <source>the server sent %1 bytes, more than the %2 it announced</source>
+        <translation>伺服端发送 %1 字节，多于声明的 %2</translation>
+    </message>
+    <message>
+        <source>the server sent %1 bytes of the %2 it announced</source>
+        <translation>伺服端只发送声明 %2 字节中的 %1</translation>
+    </message>
+    <message>
+        <source>toggle bit not alternated in a download segment response</source>
+        <translation>下载分段响应的切换位没有交替</translation>
+    </message>
+    <message>
+        <source>unexpected %1 from the server</source>
+        <translation>伺服端送来非预期的 %1</translation>
+    </message>
+    <message>
+        <source>block end says %1 unused bytes</source>
+        <translation>块结束标示 %1 个未使用字节</translation>
+    </message>
+    <message>
+        <source>CRC error: the server sent %1, the data gives %2</source>
+        <translation>CRC 错误：伺服端发送 %1，数据计算为 %2</translation>
+    </message>
+    <message>
+        <source>invalid block size %1</source>
+        <translation>无效的块大小 %1</translation>
+    </message>
+    <message>
+        <source>acknowledged segment %1 of %2 sent</source>
+        <translation>已确认 %2 个已发送分段中的第 %1 个</translation>
+    </message>
+    <message>
+        <source>node %1 did not answer read of %2 within %3 ms (SDO protocol timed out, 0x05040000)</source>
+        <translation>节点 %1 未在 %3 ms 内响应 %2 的读取（SDO 协议超时，0x05040000）</translation>
+    </message>
+    <message>
+        <source>node %1 did not answer write of %2 within %3 ms (SDO protocol timed out, 0x05040000)</source>
+        <translation>节点 %1 未在 %3 ms 内响应 %2 的写入（SDO 协议超时，0x05040000）</translation>
+    </message>
+    <message>
+        <source>node %1 aborted %2: %3</source>
+        <translation>节点 %1 中止了 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: %3; transfer aborted with 0x%4</source>
+        <translation>节点 %1 读取 %2：%3；传输以 0x%4 中止</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: %3; transfer aborted with 0x%4</source>
+        <translation>节点 %1 写入 %2：%3；传输以 0x%4 中止</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: %3</source>
+        <translation>节点 %1 读取 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: %3</source>
+        <translation>节点 %1 写入 %2：%3</translation>
+    </message>
+    <message>
+        <source>not supported or out of range</source>
+        <translation>不支持或超出范围</translation>
+    </message>
+    <message>
+        <source>manufacturer-specific error</source>
+        <translation>制造商自定义错误</translation>
+    </message>
+    <message>
+        <source>error %1</source>
+        <translation>错误 %1</translation>
+    </message>
+    <message>
+        <source>LSS %1 refused by the slave: %2 (error code %3)</source>
+        <translation>从站拒绝 LSS %1：%2（错误码 %3）</translation>
+    </message>
+    <message>
+        <source>no slave with that identity answered switch state selective</source>
+        <translation>没有符合此识别数据的从站响应选择性切换状态</translation>
+    </message>
+    <message>
+        <source>no answer to LSS configure node-ID (is a slave in configuration state?)</source>
+        <translation>LSS 设置节点 ID 没有响应（是否有从站处于设置状态？）</translation>
+    </message>
+    <message>
+        <source>configure node-ID</source>
+        <translation>设置节点 ID</translation>
+    </message>
+    <message>
+        <source>%1 bit/s is not in the CiA 305 bit timing table</source>
+        <translation>%1 bit/s 不在 CiA 305 位定时表中</translation>
+    </message>
+    <message>
+        <source>no answer to LSS configure bit timing (is a slave in configuration state?)</source>
+        <translation>LSS 设置位定时没有响应（是否有从站处于设置状态？）</translation>
+    </message>
+    <message>
+        <source>configure bit timing</source>
+        <translation>设置位定时</translation>
+    </message>
+    <message>
+        <source>no answer to LSS store configuration (is a slave in configuration state?)</source>
+        <translation>LSS 保存设置没有响应（是否有从站处于设置状态？）</translation>
+    </message>
+    <message>
+        <source>store configuration</source>
+        <translation>保存设置</translation>
+    </message>
+    <message>
+        <source>no answer to LSS %1 (is a slave in configuration state?)</source>
+        <translation>LSS %1 没有响应（是否有从站处于设置状态？）</translation>
+    </message>
+    <message>
+        <source>this run cannot reopen the adapter; reconnect at %1 bit/s by hand</source>
+        <translation>此次运行无法重新打开适配器；请手动以 %1 bit/s 重新连接</translation>
+    </message>
+    <message>
+        <source>could not reopen the adapter</source>
+        <translation>无法重新打开适配器</translation>
+    </message>
+    <message>
+        <source>connected at %1 bit/s</source>
+        <translation>已以 %1 bit/s 连接</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): cancelled</source>
+        <translation>第 %1 步（%2）：已取消</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): %3</source>
+        <translation>第 %1 步（%2）：%3</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已写入</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>读到 %1</translation>
+    </message>
+    <message>
+        <source>read %1 as expected</source>
+        <translation>读到 %1，符合预期</translation>
+    </message>
+    <message>
+        <source>node %1 %2 reads %3, expected %4</source>
+        <translation>节点 %1 %2 读到 %3，预期为 %4</translation>
+    </message>
+    <message>
+        <source>node %1 %2 reads %3, expected %4 under mask %5</source>
+        <translation>节点 %1 %2 读到 %3，预期为 %4（掩码 %5）</translation>
+    </message>
+    <message>
+        <source>sent</source>
+        <translation>已发送</translation>
+    </message>
+    <message>
+        <source>the device confirmed</source>
+        <translation>设备已确认</translation>
+    </message>
+    <message>
+        <source>the device stored it</source>
+        <translation>设备已保存</translation>
+    </message>
+    <message>
+        <source>waited %1 ms</source>
+        <translation>已等待 %1 ms</translation>
+    </message>
+    <message>
+        <source>node %1 sent no boot-up within %2 ms</source>
+        <translation>节点 %1 未在 %2 ms 内发送启动报文</translation>
+    </message>
+    <message>
+        <source>node %1 sent no boot-up or heartbeat within %2 ms</source>
+        <translation>节点 %1 未在 %2 ms 内发送启动报文或心跳</translation>
+    </message>
+    <message>
+        <source>unknown step</source>
+        <translation>未知的步骤</translation>
+    </message>
+    <message>
+        <source>node %1 booted</source>
+        <translation>节点 %1 已上线</translation>
+    </message>
+    <message>
+        <source>node %1 is %2</source>
+        <translation>节点 %1 为%2</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is outside 1-127 (0 = all nodes)</source>
+        <translation>节点 ID %1 不在 1–127 之间（0 = 所有节点）</translation>
+    </message>
+    <message>
+        <source>%1 (not writable)</source>
+        <translation>%1（不可写入）</translation>
+    </message>
+    <message>
+        <source>command object, not configuration</source>
+        <translation>命令对象，不是设置值</translation>
+    </message>
+    <message>
+        <source>unchanged (%1)</source>
+        <translation>未更改（%1）</translation>
+    </message>
+    <message>
+        <source>node %1 %2: not in the dictionary</source>
+        <translation>节点 %1 %2：不在对象字典中</translation>
+    </message>
+    <message>
+        <source>COB-ID invalid (%1)</source>
+        <translation>COB-ID 设为无效（%1）</translation>
+    </message>
+    <message>
+        <source>COB-ID valid (%1)</source>
+        <translation>COB-ID 设为有效（%1）</translation>
+    </message>
+    <message>
+        <source>transmission type (%1)</source>
+        <translation>传输类型（%1）</translation>
+    </message>
+    <message>
+        <source>inhibit time (%1)</source>
+        <translation>禁止时间（%1）</translation>
+    </message>
+    <message>
+        <source>event timer (%1)</source>
+        <translation>事件计时器（%1）</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = 0 (%1)</source>
+        <translation>映射 sub0 = 0（%1）</translation>
+    </message>
+    <message>
+        <source>mapping entry %1 (%2)</source>
+        <translation>映射项目 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Error reset or no error</source>
+        <translation>错误重置或无错误</translation>
+    </message>
+    <message>
+        <source>Generic error</source>
+        <translation>一般错误</translation>
+    </message>
+    <message>
+        <source>Continuous over-current</source>
+        <translation>持续过电流</translation>
+    </message>
+    <message>
+        <source>Short circuit / earth leakage</source>
+        <translation>短路／接地漏电</translation>
+    </message>
+    <message>
+        <source>Mains over-voltage</source>
+        <translation>主电源过电压</translation>
+    </message>
+    <message>
+        <source>Mains under-voltage</source>
+        <translation>主电源欠电压</translation>
+    </message>
+    <message>
+        <source>DC link over-voltage</source>
+        <translation>直流母线过电压</translation>
+    </message>
+    <message>
+        <source>DC link under-voltage</source>
+        <translation>直流母线欠电压</translation>
+    </message>
+    <message>
+        <source>Excess temperature device</source>
+        <translation>设备温度过高</translation>
+    </message>
+    <message>
+        <source>Excess temperature drive</source>
+        <translation>驱动器温度过高</translation>
+    </message>
+    <message>
+        <source>Data storage error (EEPROM)</source>
+        <translation>数据保存错误（EEPROM）</translation>
+    </message>
+    <message>
+        <source>Internal software error</source>
+        <translation>内部软件错误</translation>
+    </message>
+    <message>
+        <source>Motor blocked</source>
+        <translation>电机堵转</translation>
+    </message>
+    <message>
+        <source>Incremental sensor 1 fault</source>
+        <translation>增量式传感器 1 故障</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN 溢出（对象丢失）</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN 处于错误被动模式</translation>
+    </message>
+    <message>
+        <source>Life guard error or heartbeat error</source>
+        <translation>节点保护错误或心跳错误</translation>
+    </message>
+    <message>
+        <source>Recovered from bus off</source>
+        <translation>已从总线关闭恢复</translation>
+    </message>
+    <message>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID 冲突</translation>
+    </message>
+    <message>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO 因长度错误未处理</translation>
+    </message>
+    <message>
+        <source>PDO length exceeded</source>
+        <translation>PDO 长度超出</translation>
+    </message>
+    <message>
+        <source>DAM MPDO not processed, destination object not available</source>
+        <translation>DAM MPDO 未处理，目标对象不存在</translation>
+    </message>
+    <message>
+        <source>Unexpected SYNC data length</source>
+        <translation>SYNC 数据长度不符</translation>
+    </message>
+    <message>
+        <source>RPDO timeout</source>
+        <translation>RPDO 超时</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>追随误差</translation>
+    </message>
+    <message>
+        <source>Reference limit</source>
+        <translation>参考极限</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>电流</translation>
+    </message>
+    <message>
+        <source>Current, device input side</source>
+        <translation>电流（设备输入侧）</translation>
+    </message>
+    <message>
+        <source>Current inside the device</source>
+        <translation>设备内部电流</translation>
+    </message>
+    <message>
+        <source>Current, device output side</source>
+        <translation>电流（设备输出侧）</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Mains voltage</source>
+        <translation>主电源电压</translation>
+    </message>
+    <message>
+        <source>Voltage inside the device</source>
+        <translation>设备内部电压</translation>
+    </message>
+    <message>
+        <source>Output voltage</source>
+        <translation>输出电压</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Ambient temperature</source>
+        <translation>环境温度</translation>
+    </message>
+    <message>
+        <source>Device temperature</source>
+        <translation>设备温度</translation>
+    </message>
+    <message>
+        <source>Device hardware</source>
+        <translation>设备硬件</translation>
+    </message>
+    <message>
+        <source>Device software</source>
+        <translation>设备软件</translation>
+    </message>
+    <message>
+        <source>Internal software</source>
+        <translation>内部软件</translation>
+    </message>
+    <message>
+        <source>User software</source>
+        <translation>用户软件</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>数据集</translation>
+    </message>
+    <message>
+        <source>Additional modules</source>
+        <translation>附加模块</translation>
+    </message>
+    <message>
+        <source>Monitoring</source>
+        <translation>监控</translation>
+    </message>
+    <message>
+        <source>Communication</source>
+        <translation>通信</translation>
+    </message>
+    <message>
+        <source>Protocol error</source>
+        <translation>协议错误</translation>
+    </message>
+    <message>
+        <source>External error</source>
+        <translation>外部错误</translation>
+    </message>
+    <message>
+        <source>Additional functions</source>
+        <translation>附加功能</translation>
+    </message>
+    <message>
+        <source>Device specific</source>
+        <translation>设备自定义</translation>
+    </message>
+    <message>
+        <source>Unknown error code</source>
+        <translation>未知的错误码</translation>
+    </message>
+    <message>
+        <source>Delta: P-parameters written over CAN are saved to EEPROM at once. P3-00 takes effect after a power cycle (marked ●).</source>
+        <translation>台达：经 CAN 写入的 P 参数会立即存入 EEPROM。P3-00 须重新上电后才生效（标记 ●）。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN (200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of H0C-08 are not documented: use LSS for the bit rate.</source>
+        <translation>AIMOTOR：手册以 RS485 工具设置 H0C-00（节点 ID）；经 CAN（200Ch:01）写入是推定的做法，请以 1010h 保存并重新上电。H0C-08 的波特率代码未见于文档：波特率请使用 LSS 设置。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP switch SW2. No bit-rate parameter: use LSS.</source>
+        <translation>DEXMART DEV：参数 09-19 仅在 Rev A 上设置节点 ID；Rev B/C/D 使用 DIP 开关 SW2。没有波特率参数：请使用 LSS。</translation>
+    </message>
+    <message>
+        <source>Voltage enabled</source>
+        <translation>电压已使能</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>远程控制（Remote）</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>已到达目标</translation>
+    </message>
+    <message>
+        <source>Internal limit active</source>
+        <translation>内部限制作用中</translation>
+    </message>
+    <message>
+        <source>TPDO%1 node %2: %3</source>
+        <translation>TPDO%1 节点 %2：%3</translation>
+    </message>
+    <message>
+        <source>RPDO%1 node %2: %3</source>
+        <translation>RPDO%1 节点 %2：%3</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3554,6 +5258,19 @@ SDO 下载 %n 字节：%1</numerusform>
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
         <translation>已使用 64 位中的 %1 位（帧中 %2 字节）</translation>
     </message>
+    <message>
+        <source>byte %1: %3</source>
+        <extracomment>PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)</extracomment>
+        <translation>字节 %1：%3</translation>
+    </message>
+    <message>
+        <source>byte %1-%2: %3</source>
+        <translation>字节 %1–%2：%3</translation>
+    </message>
+    <message>
+        <source>%1 of 64 bits</source>
+        <translation>已用 %1 / 64 位</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::PdoMappingPage</name>
@@ -4578,6 +6295,12 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Bus back after %1 s: frames between are missing from the trace</source>
         <translation>总线在 %1 秒后恢复：中断期间的帧不在跟踪中</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) dropped (receive queue full), %1 in total</source>
+        <translation>
+            <numerusform>丢失 %n 帧（接收队列已满），累计 %1 帧</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

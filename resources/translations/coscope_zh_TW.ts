@@ -359,6 +359,1710 @@
         <source>error</source>
         <translation>錯誤</translation>
     </message>
+    <message>
+        <source>NMT %1, node %2</source>
+        <translation>NMT %1，節點 %2</translation>
+    </message>
+    <message>
+        <source>NMT %1, all nodes</source>
+        <translation>NMT %1，所有節點</translation>
+    </message>
+    <message>
+        <source>NMT (malformed)</source>
+        <translation>NMT（格式錯誤）</translation>
+    </message>
+    <message>
+        <source>NMT command with %1 bytes; CiA 301 requires 2</source>
+        <translation>NMT 命令有 %1 位元組；CiA 301 規定為 2</translation>
+    </message>
+    <message>
+        <source>unknown NMT command specifier 0x%1</source>
+        <translation>未知的 NMT 命令碼 0x%1</translation>
+    </message>
+    <message>
+        <source>NMT target node-ID %1 is outside 0..127</source>
+        <translation>NMT 目標節點 ID %1 不在 0..127 之間</translation>
+    </message>
+    <message>
+        <source>Node guarding request, node %1</source>
+        <translation>節點保護請求，節點 %1</translation>
+    </message>
+    <message>
+        <source>error control frame with %1 bytes; CiA 301 requires 1</source>
+        <translation>錯誤控制封包有 %1 位元組；CiA 301 規定為 1</translation>
+    </message>
+    <message>
+        <source>Error control (malformed), node %1</source>
+        <translation>錯誤控制（格式錯誤），節點 %1</translation>
+    </message>
+    <message>
+        <source>unknown NMT state 0x%1</source>
+        <translation>未知的 NMT 狀態 0x%1</translation>
+    </message>
+    <message>
+        <source>node guarding toggle bit did not alternate (still %1)</source>
+        <translation>節點保護的切換位元沒有交替（仍為 %1）</translation>
+    </message>
+    <message>
+        <source>Boot-up, node %1</source>
+        <translation>上線報文，節點 %1</translation>
+    </message>
+    <message>
+        <source>Node guarding, node %1: %2, toggle %3</source>
+        <translation>節點保護，節點 %1：%2，切換位元 %3</translation>
+    </message>
+    <message>
+        <source>Heartbeat, node %1: %2</source>
+        <translation>心跳，節點 %1：%2</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1</source>
+        <translation>SYNC 計數 %1</translation>
+    </message>
+    <message>
+        <source>SYNC with %1 bytes; CiA 301 allows 0 or 1</source>
+        <translation>SYNC 有 %1 位元組；CiA 301 只允許 0 或 1</translation>
+    </message>
+    <message>
+        <source>SYNC counter %1 is outside 1..240</source>
+        <translation>SYNC 計數 %1 不在 1..240 之間</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, register 0x%4</source>
+        <translation>EMCY 節點 %1：%2 %3，錯誤暫存器 0x%4</translation>
+    </message>
+    <message>
+        <source>EMCY (malformed), node %1</source>
+        <translation>EMCY（格式錯誤），節點 %1</translation>
+    </message>
+    <message>
+        <source>EMCY with %1 bytes; CiA 301 requires 8</source>
+        <translation>EMCY 有 %1 位元組；CiA 301 規定為 8</translation>
+    </message>
+    <message>
+        <source>M%1 alarm %2</source>
+        <translation>M%1 異警 %2</translation>
+    </message>
+    <message>
+        <source>%1 0x%2 (not in the table)</source>
+        <translation>%1 0x%2（不在異警表中）</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2 = %3</source>
+        <translation>SDO 寫入 節點 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2, %3 bytes (segmented)</source>
+        <translation>SDO 寫入 節點 %1 %2，%3 位元組（分段）</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2 (segmented)</source>
+        <translation>SDO 寫入 節點 %1 %2（分段）</translation>
+    </message>
+    <message>
+        <source>SDO write ok node %1 %2</source>
+        <translation>SDO 寫入成功 節點 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2 = %3</source>
+        <translation>SDO 讀取 節點 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2, %3 bytes (segmented)</source>
+        <translation>SDO 讀取 節點 %1 %2，%3 位元組（分段）</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2 (segmented)</source>
+        <translation>SDO 讀取 節點 %1 %2（分段）</translation>
+    </message>
+    <message>
+        <source>SDO read node %1 %2</source>
+        <translation>SDO 讀取 節點 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO abort node %1 %2: %3 %4</source>
+        <translation>SDO 中止 節點 %1 %2：%3 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, toggle %3, %4 bytes, last</source>
+        <translation>SDO %1 節點 %2，切換位元 %3，%4 位元組，最後一段</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, toggle %3, %4 bytes</source>
+        <translation>SDO %1 節點 %2，切換位元 %3，%4 位元組</translation>
+    </message>
+    <message>
+        <source>SDO block segment %1 node %2, %3 bytes, last</source>
+        <translation>SDO 區塊分段 %1 節點 %2，%3 位元組，最後一段</translation>
+    </message>
+    <message>
+        <source>SDO block segment %1 node %2, %3 bytes</source>
+        <translation>SDO 區塊分段 %1 節點 %2，%3 位元組</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, ackseq %3, block size %4</source>
+        <translation>SDO %1 節點 %2，確認序號 %3，區塊大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2, %3 unused bytes, CRC 0x%4</source>
+        <translation>SDO %1 節點 %2，%3 個未使用位元組，CRC 0x%4</translation>
+    </message>
+    <message>
+        <source>SDO node %1 (invalid)</source>
+        <translation>SDO 節點 %1（無效）</translation>
+    </message>
+    <message>
+        <source>SDO remote frame, node %1</source>
+        <translation>SDO 遠程封包，節點 %1</translation>
+    </message>
+    <message>
+        <source>remote frame on an SDO COB-ID</source>
+        <translation>SDO COB-ID 上出現遠程封包</translation>
+    </message>
+    <message>
+        <source>unknown abort code</source>
+        <translation>未知的中止碼</translation>
+    </message>
+    <message>
+        <source>initiate download request</source>
+        <translation>起始下載請求</translation>
+    </message>
+    <message>
+        <source>download segment request</source>
+        <translation>下載分段請求</translation>
+    </message>
+    <message>
+        <source>initiate upload request</source>
+        <translation>起始上傳請求</translation>
+    </message>
+    <message>
+        <source>upload segment request</source>
+        <translation>上傳分段請求</translation>
+    </message>
+    <message>
+        <source>initiate download response</source>
+        <translation>起始下載回應</translation>
+    </message>
+    <message>
+        <source>download segment response</source>
+        <translation>下載分段回應</translation>
+    </message>
+    <message>
+        <source>initiate upload response</source>
+        <translation>起始上傳回應</translation>
+    </message>
+    <message>
+        <source>upload segment response</source>
+        <translation>上傳分段回應</translation>
+    </message>
+    <message>
+        <source>block upload initiate</source>
+        <translation>區塊上傳起始</translation>
+    </message>
+    <message>
+        <source>block upload start</source>
+        <translation>區塊上傳開始</translation>
+    </message>
+    <message>
+        <source>block upload ack</source>
+        <translation>區塊上傳確認</translation>
+    </message>
+    <message>
+        <source>block upload end</source>
+        <translation>區塊上傳結束</translation>
+    </message>
+    <message>
+        <source>block upload end response</source>
+        <translation>區塊上傳結束回應</translation>
+    </message>
+    <message>
+        <source>block upload initiate response</source>
+        <translation>區塊上傳起始回應</translation>
+    </message>
+    <message>
+        <source>block download initiate</source>
+        <translation>區塊下載起始</translation>
+    </message>
+    <message>
+        <source>block download initiate response</source>
+        <translation>區塊下載起始回應</translation>
+    </message>
+    <message>
+        <source>block download ack</source>
+        <translation>區塊下載確認</translation>
+    </message>
+    <message>
+        <source>block download end</source>
+        <translation>區塊下載結束</translation>
+    </message>
+    <message>
+        <source>block download end response</source>
+        <translation>區塊下載結束回應</translation>
+    </message>
+    <message>
+        <source>%1 node %2: remote request</source>
+        <translation>%1 節點 %2：遠程請求</translation>
+    </message>
+    <message>
+        <source>%1 of node %2 is not valid (COB-ID 0x%3) but was seen on the bus</source>
+        <translation>節點 %2 的 %1 無效（COB-ID 0x%3），卻出現在總線上</translation>
+    </message>
+    <message>
+        <source>%1 has %2 bytes but its mapping needs %3</source>
+        <translation>%1 有 %2 位元組，但它的映射需要 %3</translation>
+    </message>
+    <message>
+        <source>not CANopen (29-bit identifier)</source>
+        <translation>不是 CANopen（29 位元識別碼）</translation>
+    </message>
+    <message>
+        <source>unknown COB-ID</source>
+        <translation>未知的 COB-ID</translation>
+    </message>
+    <message>
+        <source>new SDO request for %1 while the transfer of %2 was unfinished (abandoned)</source>
+        <translation>%2 的傳輸尚未完成時又出現 %1 的 SDO 請求（已放棄前者）</translation>
+    </message>
+    <message>
+        <source>response for %1 but the request was for %2</source>
+        <translation>回應的是 %1，但請求的是 %2</translation>
+    </message>
+    <message>
+        <source>SDO transfer of %1 carried %2 bytes but announced %3</source>
+        <translation>%1 的 SDO 傳輸帶了 %2 位元組，但宣告為 %3</translation>
+    </message>
+    <message>
+        <source>block ack acknowledges %1 segments, %2 were sent</source>
+        <translation>區塊確認了 %1 個分段，實際送出 %2 個</translation>
+    </message>
+    <message>
+        <source>SDO block CRC 0x%1 does not match the data (0x%2)</source>
+        <translation>SDO 區塊 CRC 0x%1 與資料不符（0x%2）</translation>
+    </message>
+    <message>
+        <source>unexpected SDO %1 (%2)</source>
+        <translation>非預期的 SDO %1（%2）</translation>
+    </message>
+    <message>
+        <source>no transfer in progress</source>
+        <translation>沒有進行中的傳輸</translation>
+    </message>
+    <message>
+        <source>transfer of %1 in progress</source>
+        <translation>%1 的傳輸進行中</translation>
+    </message>
+    <message>
+        <source>SDO toggle bit %1, expected %2</source>
+        <translation>SDO 切換位元為 %1，預期為 %2</translation>
+    </message>
+    <message>
+        <source>abort names %1 but the transfer in progress is %2</source>
+        <translation>中止指的是 %1，但進行中的傳輸是 %2</translation>
+    </message>
+    <message>
+        <source>block segment %1, expected %2</source>
+        <translation>區塊分段 %1，預期為 %2</translation>
+    </message>
+    <message>
+        <source>block segment %1 beyond the block size %2</source>
+        <translation>區塊分段 %1 超出區塊大小 %2</translation>
+    </message>
+    <message>
+        <source>generic error</source>
+        <translation>一般錯誤</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>電流</translation>
+    </message>
+    <message>
+        <source>voltage</source>
+        <translation>電壓</translation>
+    </message>
+    <message>
+        <source>temperature</source>
+        <translation>溫度</translation>
+    </message>
+    <message>
+        <source>communication error</source>
+        <translation>通訊錯誤</translation>
+    </message>
+    <message>
+        <source>device profile specific</source>
+        <translation>裝置規範定義</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>保留</translation>
+    </message>
+    <message>
+        <source>manufacturer specific</source>
+        <translation>製造商自訂</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>1 次</translation>
+    </message>
+    <message>
+        <source>%1 times</source>
+        <translation>%1 次</translation>
+    </message>
+    <message>
+        <source>node %1 (bus %2)</source>
+        <translation>節點 %1（總線 %2）</translation>
+    </message>
+    <message>
+        <source>node %1 rebooted %2 (boot-up without an NMT reset)</source>
+        <translation>節點 %1 重新啟動了 %2（沒有 NMT 重置卻送出上線報文）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat stopped: nothing for %2 (period %3)</source>
+        <translation>節點 %1 心跳停止：%2 沒有任何訊息（週期 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat stopped: nothing for %2 (period %3), 1017h was set to 0</source>
+        <translation>節點 %1 心跳停止：%2 沒有任何訊息（週期 %3），1017h 已被設為 0</translation>
+    </message>
+    <message>
+        <source>node %1 guarding stopped: nothing for %2 (period %3)</source>
+        <translation>節點 %1 節點保護停止：%2 沒有任何訊息（週期 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat lost %2 (longest gap %3, period %4)</source>
+        <translation>節點 %1 心跳遺失 %2（最長間隔 %3，週期 %4）</translation>
+    </message>
+    <message>
+        <source>node %1 guarding lost %2 (longest gap %3, period %4)</source>
+        <translation>節點 %1 節點保護遺失 %2（最長間隔 %3，週期 %4）</translation>
+    </message>
+    <message>
+        <source>%1 more EMCY from node %2</source>
+        <translation>節點 %2 還有 %1 筆 EMCY</translation>
+    </message>
+    <message>
+        <source>EMCY %1 %2 from node %3 at %4</source>
+        <translation>EMCY %1 %2，來自節點 %3，時間 %4</translation>
+    </message>
+    <message>
+        <source>node %1 left %2 SDO request unanswered</source>
+        <translation>節點 %1 有 %2 個 SDO 請求沒有回應</translation>
+    </message>
+    <message>
+        <source>node %1 left %2 SDO requests unanswered</source>
+        <translation>節點 %1 有 %2 個 SDO 請求沒有回應</translation>
+    </message>
+    <message>
+        <source>node %1 aborted SDO %2 with %3 %4</source>
+        <translation>節點 %1 以 %3 %4 中止 SDO %2</translation>
+    </message>
+    <message>
+        <source>node %1 answered SDO in %2 p99 (max %3)</source>
+        <translation>節點 %1 的 SDO 回應時間 p99 為 %2（最大 %3）</translation>
+    </message>
+    <message>
+        <source>node %1 heartbeat late %2 (over 1.5x the %3 period)</source>
+        <translation>節點 %1 心跳延遲 %2（超過週期 %3 的 1.5 倍）</translation>
+    </message>
+    <message>
+        <source>node %1 guarding late %2 (over 1.5x the %3 period)</source>
+        <translation>節點 %1 節點保護延遲 %2（超過週期 %3 的 1.5 倍）</translation>
+    </message>
+    <message>
+        <source>%1 CAN error frame</source>
+        <translation>%1 個 CAN 錯誤封包</translation>
+    </message>
+    <message>
+        <source>%1 CAN error frames</source>
+        <translation>%1 個 CAN 錯誤封包</translation>
+    </message>
+    <message>
+        <source>%1 SYNC cycle missing (period %2)</source>
+        <translation>缺少 %1 個 SYNC 週期（週期 %2）</translation>
+    </message>
+    <message>
+        <source>%1 SYNC cycles missing (period %2)</source>
+        <translation>缺少 %1 個 SYNC 週期（週期 %2）</translation>
+    </message>
+    <message>
+        <source>bus load peaks at %1 % (average %2 %) at %3 bit/s</source>
+        <translation>總線負載峰值 %1 %（平均 %2 %），鮑率 %3 bit/s</translation>
+    </message>
+    <message>
+        <source>RPDO (%1) sent to node %2, which never answers</source>
+        <translation>RPDO（%1）送往節點 %2，但它從未回應</translation>
+    </message>
+    <message>
+        <source>TPDO (%1) sent to node %2, which never answers</source>
+        <translation>TPDO（%1）送往節點 %2，但它從未回應</translation>
+    </message>
+    <message>
+        <source>%1 of node %2 (%3) every %4 jitters by %5</source>
+        <translation>節點 %2 的 %1（%3）每 %4 一次，抖動 %5</translation>
+    </message>
+    <message>
+        <source>RPDO%1 of node %2 (%3) is valid but nobody sends it</source>
+        <translation>節點 %2 的 RPDO%1（%3）有效，但沒有人送出它</translation>
+    </message>
+    <message>
+        <source>%1 node-ID (%2..%3) got an SDO request and never answered: a network scan, or devices missing</source>
+        <translation>%1 個節點 ID（%2..%3）收到 SDO 請求卻從未回應：可能是網路掃描，或裝置不在</translation>
+    </message>
+    <message>
+        <source>%1 node-IDs (%2..%3) got an SDO request and never answered: a network scan, or devices missing</source>
+        <translation>%1 個節點 ID（%2..%3）收到 SDO 請求卻從未回應：可能是網路掃描，或裝置不在</translation>
+    </message>
+    <message>
+        <source>%1 frame is not CANopen</source>
+        <translation>%1 個封包不是 CANopen</translation>
+    </message>
+    <message>
+        <source>%1 frames are not CANopen</source>
+        <translation>%1 個封包不是 CANopen</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2 on node %3</source>
+        <translation>在節點 %3 寫入 %1 = %2</translation>
+    </message>
+    <message>
+        <source>Read %1 from node %2</source>
+        <translation>從節點 %2 讀取 %1</translation>
+    </message>
+    <message>
+        <source>Check %1 = %2 on node %3</source>
+        <translation>確認節點 %3 的 %1 = %2</translation>
+    </message>
+    <message>
+        <source>Check %1 = %2 (mask %3) on node %4</source>
+        <translation>確認節點 %4 的 %1 = %2（遮罩 %3）</translation>
+    </message>
+    <message>
+        <source>NMT %1 to all nodes</source>
+        <translation>對所有節點送出 NMT %1</translation>
+    </message>
+    <message>
+        <source>NMT %1 to node %2</source>
+        <translation>對節點 %2 送出 NMT %1</translation>
+    </message>
+    <message>
+        <source>LSS: every device to configuration state</source>
+        <translation>LSS：所有裝置進入設定狀態</translation>
+    </message>
+    <message>
+        <source>LSS: every device back to waiting state</source>
+        <translation>LSS：所有裝置回到等待狀態</translation>
+    </message>
+    <message>
+        <source>LSS: select the device with vendor %1h, product %2h, revision %3h, serial %4h</source>
+        <translation>LSS：選取廠商 %1h、產品 %2h、版本 %3h、序號 %4h 的裝置</translation>
+    </message>
+    <message>
+        <source>LSS: set node-ID to unconfigured (FFh)</source>
+        <translation>LSS：將節點 ID 設為未設定（FFh）</translation>
+    </message>
+    <message>
+        <source>LSS: set node-ID %1</source>
+        <translation>LSS：設定節點 ID 為 %1</translation>
+    </message>
+    <message>
+        <source>LSS: set bit rate %1</source>
+        <translation>LSS：設定鮑率為 %1</translation>
+    </message>
+    <message>
+        <source>LSS: store configuration</source>
+        <translation>LSS：儲存設定</translation>
+    </message>
+    <message>
+        <source>LSS: switch to the new bit rate (switch delay %1 ms)</source>
+        <translation>LSS：切換到新鮑率（切換延遲 %1 ms）</translation>
+    </message>
+    <message>
+        <source>Wait %1 ms</source>
+        <translation>等待 %1 ms</translation>
+    </message>
+    <message>
+        <source>Wait up to %1 ms for node %2 (boot-up or heartbeat)</source>
+        <translation>最多等待 %1 ms，直到節點 %2 回報（上線報文或心跳）</translation>
+    </message>
+    <message>
+        <source>Reconnect the adapter at %1</source>
+        <translation>以 %1 重新連接轉接器</translation>
+    </message>
+    <message>
+        <source>Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)</source>
+        <translation>修改期間先關閉 %1（COB-ID 位元 31 = 1：PDO 無效）</translation>
+    </message>
+    <message>
+        <source>When the message is sent: type %1 (transmission type)</source>
+        <translation>報文何時送出：類型 %1（傳輸類型）</translation>
+    </message>
+    <message>
+        <source>Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)</source>
+        <translation>兩筆報文之間的最短間隔：%1 ms（禁止時間，單位 100 µs）</translation>
+    </message>
+    <message>
+        <source>No minimum gap between two messages (inhibit time = 0)</source>
+        <translation>兩筆報文之間不設最短間隔（禁止時間 = 0）</translation>
+    </message>
+    <message>
+        <source>Send at least every %1 ms (event timer)</source>
+        <translation>至少每 %1 ms 送出一次（事件計時器）</translation>
+    </message>
+    <message>
+        <source>No timer: sent only on its trigger (event timer = 0)</source>
+        <translation>不使用計時器：僅在觸發時送出（事件計時器 = 0）</translation>
+    </message>
+    <message>
+        <source>Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)</source>
+        <translation>清空映射物件清單以便重新寫入（映射子索引 0 = 0）</translation>
+    </message>
+    <message>
+        <source>Object %1 of the message: %2, %3 bits (mapping entry %4)</source>
+        <translation>報文的第 %1 個物件：%2，%3 位元（映射項目 %4）</translation>
+    </message>
+    <message>
+        <source>Activate the %1 mapped objects (mapping sub-index 0 = number of entries)</source>
+        <translation>啟用這 %1 個映射物件（映射子索引 0 = 項目數）</translation>
+    </message>
+    <message>
+        <source>Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)</source>
+        <translation>以 CAN-ID %2h 重新開啟 %1（COB-ID 位元 31 = 0）</translation>
+    </message>
+    <message>
+        <source>Map %1 of node %2</source>
+        <translation>映射節點 %2 的 %1</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3; nothing would be sent</source>
+        <translation>節點 %1 %2：%3；不會送出任何內容</translation>
+    </message>
+    <message>
+        <source>node %1 %2: %3; nothing was sent</source>
+        <translation>節點 %1 %2：%3；未送出任何內容</translation>
+    </message>
+    <message>
+        <source>Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)</source>
+        <translation>停止過程資料，以便修改 PDO（NMT 進入預操作狀態，CiA 301 §7.3.2）</translation>
+    </message>
+    <message>
+        <source>Check: the COB-ID reads back as written</source>
+        <translation>確認：讀回的 COB-ID 與寫入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the transmission type reads back as written</source>
+        <translation>確認：讀回的傳輸類型與寫入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the inhibit time reads back as written</source>
+        <translation>確認：讀回的禁止時間與寫入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the event timer reads back as written</source>
+        <translation>確認：讀回的事件計時器與寫入值相同</translation>
+    </message>
+    <message>
+        <source>Check: the number of mapped objects reads back as written</source>
+        <translation>確認：讀回的映射物件數與寫入值相同</translation>
+    </message>
+    <message>
+        <source>Check: mapping entry %1 reads back as written</source>
+        <translation>確認：讀回的映射項目 %1 與寫入值相同</translation>
+    </message>
+    <message>
+        <source>reading the current %1: %2</source>
+        <translation>讀取目前的 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2; previous mapping restored</source>
+        <translation>%1 失敗：%2；已恢復先前的映射</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2; restoring the previous mapping failed too: %3</source>
+        <translation>%1 失敗：%2；恢復先前的映射也失敗：%3</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 失敗：%2</translation>
+    </message>
+    <message>
+        <source>COB-ID invalid</source>
+        <translation>COB-ID 設為無效</translation>
+    </message>
+    <message>
+        <source>COB-ID valid</source>
+        <translation>COB-ID 設為有效</translation>
+    </message>
+    <message>
+        <source>transmission type</source>
+        <translation>傳輸類型</translation>
+    </message>
+    <message>
+        <source>inhibit time</source>
+        <translation>禁止時間</translation>
+    </message>
+    <message>
+        <source>event timer</source>
+        <translation>事件計時器</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = 0</source>
+        <translation>映射 sub0 = 0</translation>
+    </message>
+    <message>
+        <source>mapping entry %1</source>
+        <translation>映射項目 %1</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = %1</source>
+        <translation>映射 sub0 = %1</translation>
+    </message>
+    <message>
+        <source>COB-ID reads back as %1</source>
+        <translation>讀回的 COB-ID 為 %1</translation>
+    </message>
+    <message>
+        <source>transmission type reads back as %1</source>
+        <translation>讀回的傳輸類型為 %1</translation>
+    </message>
+    <message>
+        <source>the mapping reads back differently (%1 entries)</source>
+        <translation>讀回的映射不同（%1 個項目）</translation>
+    </message>
+    <message>
+        <source>inhibit time reads back differently</source>
+        <translation>讀回的禁止時間不同</translation>
+    </message>
+    <message>
+        <source>event timer reads back differently</source>
+        <translation>讀回的事件計時器不同</translation>
+    </message>
+    <message>
+        <source>verify</source>
+        <translation>驗證</translation>
+    </message>
+    <message>
+        <source>verify: %1</source>
+        <translation>驗證：%1</translation>
+    </message>
+    <message>
+        <source>read-back failed: %1</source>
+        <translation>讀回失敗：%1</translation>
+    </message>
+    <message>
+        <source>the unconfigured device</source>
+        <translation>未設定節點 ID 的裝置</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
+        <translation>以裝置的新鮑率 %1 重新開啟轉接器</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is not 1-127</source>
+        <translation>節點 ID %1 不在 1–127 之間</translation>
+    </message>
+    <message>
+        <source>the new node-ID must be 1-127</source>
+        <translation>新的節點 ID 必須在 1–127 之間</translation>
+    </message>
+    <message>
+        <source>node %1 already has this node-ID</source>
+        <translation>節點 %1 已經是這個節點 ID</translation>
+    </message>
+    <message>
+        <source>%1 allows node-IDs %2-%3 only</source>
+        <translation>%1 只允許節點 ID %2–%3</translation>
+    </message>
+    <message>
+        <source>Change node-ID %1 → %2</source>
+        <translation>變更節點 ID %1 → %2</translation>
+    </message>
+    <message>
+        <source>Pick this one device by its identity so only it listens to the next commands (LSS switch state selective)</source>
+        <translation>依識別資料選取這一台裝置，讓接下來的命令只有它接收（LSS 選擇性切換狀態）</translation>
+    </message>
+    <message>
+        <source>Give it node-ID %1; not used yet (LSS configure node-ID)</source>
+        <translation>設定節點 ID 為 %1；尚未生效（LSS 設定節點 ID）</translation>
+    </message>
+    <message>
+        <source>Make the device keep the new node-ID after power-off (LSS store configuration)</source>
+        <translation>讓裝置在斷電後保留新的節點 ID（LSS 儲存設定）</translation>
+    </message>
+    <message>
+        <source>End the setting mode (LSS switch state global: waiting)</source>
+        <translation>結束設定模式（LSS 全域切換狀態：等待）</translation>
+    </message>
+    <message>
+        <source>Restart its communication so it uses node-ID %1 (NMT reset communication)</source>
+        <translation>重置它的通訊，使其改用節點 ID %1（NMT 重置通訊）</translation>
+    </message>
+    <message>
+        <source>Wait until it reports at node-ID %1 (boot-up / heartbeat)</source>
+        <translation>等待它以節點 ID %1 回報（上線報文／心跳）</translation>
+    </message>
+    <message>
+        <source>at once when the setting mode ends (the device starts with its new node-ID)</source>
+        <translation>設定模式結束時立即生效（裝置以新的節點 ID 啟動）</translation>
+    </message>
+    <message>
+        <source>after NMT reset communication (sent by this wizard) or a power cycle</source>
+        <translation>在 NMT 重置通訊（由本精靈送出）或重新上電之後</translation>
+    </message>
+    <message>
+        <source>Look for the device at node-ID %1 (scan). If it is not there: switch it off and on; if it still does not answer, find it with LSS Fastscan / inquiry and set the node-ID again.</source>
+        <translation>在節點 ID %1 尋找裝置（掃描）。若找不到：將它斷電再上電；若仍無回應，用 LSS Fastscan／查詢找出它，再重新設定節點 ID。</translation>
+    </message>
+    <message>
+        <source>%1 has no documented node-ID parameter; use LSS</source>
+        <translation>%1 沒有文件記載的節點 ID 參數；請使用 LSS</translation>
+    </message>
+    <message>
+        <source>this device</source>
+        <translation>此裝置</translation>
+    </message>
+    <message>
+        <source>an LSS-unconfigured device has no node-ID for SDO; use LSS</source>
+        <translation>尚未經 LSS 設定的裝置沒有可供 SDO 使用的節點 ID；請使用 LSS</translation>
+    </message>
+    <message>
+        <source>Write the new node-ID %1 into %2 (SDO download)</source>
+        <translation>將新的節點 ID %1 寫入 %2（SDO 下載）</translation>
+    </message>
+    <message>
+        <source>Write the new node-ID %1 into %2 [object inferred] (SDO download)</source>
+        <translation>將新的節點 ID %1 寫入 %2 [物件為推定]（SDO 下載）</translation>
+    </message>
+    <message>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h &quot;save&quot;）</translation>
+    </message>
+    <message>
+        <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
+        <translation>重置裝置，使其採用節點 ID %1（NMT 重置節點）</translation>
+    </message>
+    <message>
+        <source>after a power cycle (%1). The wizard also sends NMT reset node, which many drives accept; if the drive does not come back, switch it off and on while the wizard waits.</source>
+        <translation>在重新上電之後（%1）。精靈也會送出 NMT 重置節點，許多驅動器接受此命令；若驅動器沒有回來，請在精靈等待時將它斷電再上電。</translation>
+    </message>
+    <message>
+        <source>after NMT reset node (sent by this wizard) or a power cycle (%1)</source>
+        <translation>在 NMT 重置節點（由本精靈送出）或重新上電之後（%1）</translation>
+    </message>
+    <message>
+        <source>Switch the drive off and on and look for it at node-ID %1, then at %2. If it answers at %2, the change is stored; if it answers at %1, write %3 again or use LSS.</source>
+        <translation>將驅動器斷電再上電，先在節點 ID %1、再在 %2 尋找它。若在 %2 回應，變更已儲存；若在 %1 回應，請重新寫入 %3 或改用 LSS。</translation>
+    </message>
+    <message>
+        <source>choose the new bit rate</source>
+        <translation>請選擇新的鮑率</translation>
+    </message>
+    <message>
+        <source>the bus already runs at %1</source>
+        <translation>總線已經以 %1 運作</translation>
+    </message>
+    <message>
+        <source>give the device a node-ID first; then change its bit rate</source>
+        <translation>請先給裝置節點 ID，再變更它的鮑率</translation>
+    </message>
+    <message>
+        <source>Change bit rate of node %1: %2 → %3</source>
+        <translation>變更節點 %1 的鮑率：%2 → %3</translation>
+    </message>
+    <message>
+        <source>Find node %1 at %2</source>
+        <translation>以 %2 尋找節點 %1</translation>
+    </message>
+    <message>
+        <source>%1 is not in the LSS bit-rate table (CiA 305 Table 1)</source>
+        <translation>%1 不在 LSS 鮑率表中（CiA 305 表 1）</translation>
+    </message>
+    <message>
+        <source>Pick this one device by its identity so only it listens (LSS switch state selective)</source>
+        <translation>依識別資料選取這一台裝置，讓只有它接收（LSS 選擇性切換狀態）</translation>
+    </message>
+    <message>
+        <source>Give it the new bit rate %1; not used yet (LSS configure bit timing)</source>
+        <translation>設定新鮑率 %1；尚未生效（LSS 設定位元時序）</translation>
+    </message>
+    <message>
+        <source>Make it keep the new bit rate after power-off (LSS store configuration)</source>
+        <translation>讓它在斷電後保留新鮑率（LSS 儲存設定）</translation>
+    </message>
+    <message>
+        <source>Switch to the new bit rate now; it goes silent on this bus (LSS activate bit timing)</source>
+        <translation>立即切換到新鮑率；它在這條總線上將不再出聲（LSS 啟用位元時序）</translation>
+    </message>
+    <message>
+        <source>at once with LSS activate bit timing (and at every power-on after the store)</source>
+        <translation>在 LSS 啟用位元時序時立即生效（儲存後每次上電亦然）</translation>
+    </message>
+    <message>
+        <source>%1 has no documented bit-rate parameter; use LSS</source>
+        <translation>%1 沒有文件記載的鮑率參數；請使用 LSS</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set to %2</source>
+        <translation>%1 無法設為 %2</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2h: bit rate %3 (SDO download)</source>
+        <translation>寫入 %1 = %2h：鮑率 %3（SDO 下載）</translation>
+    </message>
+    <message>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數（儲存參數，1010h &quot;save&quot;）</translation>
+    </message>
+    <message>
+        <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
+        <translation>重置裝置，使其以 %1 運作；它在這條總線上將不再出聲（NMT 重置節點）</translation>
+    </message>
+    <message>
+        <source>Let the reset leave the adapter and the device restart before reconnecting</source>
+        <translation>重新連線前，先讓重置命令送出、裝置完成重新啟動</translation>
+    </message>
+    <message>
+        <source>after a power cycle (%1); the wizard also sends NMT reset node</source>
+        <translation>在重新上電之後（%1）；精靈也會送出 NMT 重置節點</translation>
+    </message>
+    <message>
+        <source>after NMT reset node (%1)</source>
+        <translation>在 NMT 重置節點之後（%1）</translation>
+    </message>
+    <message>
+        <source>Ask it to announce itself at the new bit rate (NMT reset communication)</source>
+        <translation>請它以新鮑率重新報到（NMT 重置通訊）</translation>
+    </message>
+    <message>
+        <source>Wait until node %1 reports at %2 (boot-up / heartbeat)</source>
+        <translation>等待節點 %1 以 %2 回報（上線報文／心跳）</translation>
+    </message>
+    <message>
+        <source>Reconnect at %1 (the old rate) and scan: if node %2 is there, the change did not take effect — switch it off and on and try again at %3. If it answers at neither rate, try the other standard rates, or use LSS with this device alone on the bus.</source>
+        <translation>以 %1（舊鮑率）重新連線並掃描：若節點 %2 仍在，表示變更未生效——將它斷電再上電，再以 %3 嘗試。若兩種鮑率都沒有回應，請試試其他標準鮑率，或讓總線上只剩這台裝置再使用 LSS。</translation>
+    </message>
+    <message>
+        <source>cannot read the bit-rate parameter: %1</source>
+        <translation>無法讀取鮑率參數：%1</translation>
+    </message>
+    <message>
+        <source>cannot read the identity (1018h) that LSS needs to pick this device: %1</source>
+        <translation>無法讀取 LSS 選取此裝置所需的識別資料（1018h）：%1</translation>
+    </message>
+    <message>
+        <source>Put back what was changed</source>
+        <translation>恢復已變更的設定</translation>
+    </message>
+    <message>
+        <source>Put the old node-ID %1 back (LSS configure node-ID)</source>
+        <translation>恢復舊的節點 ID %1（LSS 設定節點 ID）</translation>
+    </message>
+    <message>
+        <source>Put the old bit rate %1 back (LSS configure bit timing)</source>
+        <translation>恢復舊鮑率 %1（LSS 設定位元時序）</translation>
+    </message>
+    <message>
+        <source>Store the old setting again (LSS store configuration)</source>
+        <translation>再次儲存舊設定（LSS 儲存設定）</translation>
+    </message>
+    <message>
+        <source>Write the old value back</source>
+        <translation>寫回舊值</translation>
+    </message>
+    <message>
+        <source>Save the old value again</source>
+        <translation>再次儲存舊值</translation>
+    </message>
+    <message>
+        <source>step %1: %2</source>
+        <translation>第 %1 步：%2</translation>
+    </message>
+    <message>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
+        <translation>沒有裝置以此識別資料回應 LSS。請確認驅動器支援 LSS（CiA 305）；若不支援，請改用它自己的參數（廠商方式）或廠商的工具。</translation>
+    </message>
+    <message>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
+        <translation>裝置拒絕了這個值。請確認它支援此值（見手冊的節點 ID 範圍／鮑率）。</translation>
+    </message>
+    <message>
+        <source>The device could not save the setting, so it would be lost at power-off. Check that it supports LSS store (some keep the setting only until power-off); try its own parameter instead.</source>
+        <translation>裝置無法儲存設定，斷電後設定會遺失。請確認它支援 LSS 儲存（有些裝置只保留到斷電為止）；請改用它自己的參數。</translation>
+    </message>
+    <message>
+        <source>Check that %1 is powered and answers at this node-ID, that the parameter can be written now (some drives refuse parameter writes while the servo is on or in another control mode) and that the value is in range.</source>
+        <translation>請確認%1已上電並以此節點 ID 回應、此時參數可以寫入（有些驅動器在伺服啟動中或其他控制模式下會拒絕寫入參數），且數值在範圍內。</translation>
+    </message>
+    <message>
+        <source>Check the connection to %1 and try again.</source>
+        <translation>請檢查與%1的連線後再試一次。</translation>
+    </message>
+    <message>
+        <source>Put back: %1.</source>
+        <translation>已恢復：%1。</translation>
+    </message>
+    <message>
+        <source>Could not put everything back (%1: %2).</source>
+        <translation>無法全部恢復（%1：%2）。</translation>
+    </message>
+    <message>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
+        <translation>Delta ASDA-A2 手冊 §1.3.1，P3-00（「●」：重新上電後生效）</translation>
+    </message>
+    <message>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-01 digit Z</source>
+        <translation>Delta ASDA-A2 手冊 §1.3.1，P3-01 第 Z 位</translation>
+    </message>
+    <message>
+        <source>AIMOTOR manual, CAN settings (H0C-00; object 200Ch:01 inferred)</source>
+        <translation>AIMOTOR 手冊，CAN 設定（H0C-00；物件 200Ch:01 為推定）</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV tutorial §8.7 (parameter 09-19, DEV Rev A only)</source>
+        <translation>DEXMART DEV 教學 §8.7（參數 09-19，僅限 DEV Rev A）</translation>
+    </message>
+    <message>
+        <source>node %1 axis %2</source>
+        <translation>節點 %1 軸 %2</translation>
+    </message>
+    <message>
+        <source>%1 went to %2 instead of %3: statusword 0x%4</source>
+        <translation>%1 進入了%2，而不是%3：狀態字元 0x%4</translation>
+    </message>
+    <message>
+        <source>%1 did not reach %2 within %3 ms: statusword 0x%4 (%5): %6</source>
+        <translation>%1 未在 %3 ms 內到達%2：狀態字元 0x%4（%5）：%6</translation>
+    </message>
+    <message>
+        <source>missing bit %1 (%2)</source>
+        <translation>缺少位元 %1（%2）</translation>
+    </message>
+    <message>
+        <source>unexpected bit %1 (%2)</source>
+        <translation>多出位元 %1（%2）</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is on: %3</source>
+        <translation>%1（位元 %2）為 on：%3</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is off: %3</source>
+        <translation>%1（位元 %2）為 off：%3</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is on</source>
+        <translation>%1（位元 %2）為 on</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2) is off</source>
+        <translation>%1（位元 %2）為 off</translation>
+    </message>
+    <message>
+        <source>bit 7 low before fault reset</source>
+        <translation>故障重置前將位元 7 設為低</translation>
+    </message>
+    <message>
+        <source>Disable voltage, enable failed</source>
+        <translation>切斷電壓（致能失敗）</translation>
+    </message>
+    <message>
+        <source>%1; drive disabled</source>
+        <translation>%1；已解除驅動器致能</translation>
+    </message>
+    <message>
+        <source>%1; disabling the drive failed too: %2</source>
+        <translation>%1；解除驅動器致能也失敗：%2</translation>
+    </message>
+    <message>
+        <source>%1: modes of operation display %2h shows %3 (%4), not %5 (%6), after %7 ms</source>
+        <translation>%1：%7 ms 後，操作模式顯示 %2h 為 %3（%4），而不是 %5（%6）</translation>
+    </message>
+    <message>
+        <source>Controlword bit 7 low first: fault reset acts on its rising edge</source>
+        <translation>先將控制字元位元 7 設為低：故障重置在上升緣動作</translation>
+    </message>
+    <message>
+        <source>Clear the fault (Fault reset, CiA 402 transition 15)</source>
+        <translation>清除故障（故障重置，CiA 402 轉換 15）</translation>
+    </message>
+    <message>
+        <source>Make the drive ready (Shutdown, transition 2)</source>
+        <translation>讓驅動器就緒（Shutdown，轉換 2）</translation>
+    </message>
+    <message>
+        <source>Switch the power stage on, motor not yet energised (Switch on, transition 3)</source>
+        <translation>開啟功率級，馬達尚未通電（Switch on，轉換 3）</translation>
+    </message>
+    <message>
+        <source>Energise the motor: it holds position and follows commands (Enable operation, transition 4)</source>
+        <translation>馬達通電：保持位置並跟隨命令（運轉致能，轉換 4）</translation>
+    </message>
+    <message>
+        <source>Stop following commands, power stage stays on (Disable operation, transition 5)</source>
+        <translation>停止跟隨命令，功率級保持開啟（Disable operation，轉換 5）</translation>
+    </message>
+    <message>
+        <source>Remove power from the motor (Disable voltage)</source>
+        <translation>切斷馬達電源（Disable voltage）</translation>
+    </message>
+    <message>
+        <source>Brake on the quick stop ramp (Quick stop)</source>
+        <translation>依快速停止斜坡減速（Quick stop）</translation>
+    </message>
+    <message>
+        <source>Statusword must show %1</source>
+        <translation>狀態字元必須顯示%1</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable of node %1</source>
+        <translation>節點 %1 的 CiA 402 致能</translation>
+    </message>
+    <message>
+        <source>CiA 402 enable of node %1 axis %2</source>
+        <translation>節點 %1 軸 %2 的 CiA 402 致能</translation>
+    </message>
+    <message>
+        <source>Choose the mode of operation: %1 (6060h)</source>
+        <translation>選擇操作模式：%1（6060h）</translation>
+    </message>
+    <message>
+        <source>The drive confirms the mode (modes of operation display 6061h)</source>
+        <translation>驅動器確認模式（操作模式顯示 6061h）</translation>
+    </message>
+    <message>
+        <source>jog velocity must be non-zero and at most %1 units/s</source>
+        <translation>寸動速度不可為 0，且最多 %1 單位/s</translation>
+    </message>
+    <message>
+        <source>profile velocity must be 1-%1 units/s</source>
+        <translation>輪廓速度必須在 1–%1 單位/s 之間</translation>
+    </message>
+    <message>
+        <source>relative move must be non-zero and at most %1 units</source>
+        <translation>相對移動量不可為 0，且最多 %1 單位</translation>
+    </message>
+    <message>
+        <source>acceleration and deceleration must be above 0</source>
+        <translation>加速度與減速度必須大於 0</translation>
+    </message>
+    <message>
+        <source>test move time must be 1-%1 ms</source>
+        <translation>測試運動時間必須在 1–%1 ms 之間</translation>
+    </message>
+    <message>
+        <source>watchdog must be at least 50 ms</source>
+        <translation>看門狗時間至少須 50 ms</translation>
+    </message>
+    <message>
+        <source>a test move is already running</source>
+        <translation>已有測試運動在執行中</translation>
+    </message>
+    <message>
+        <source>%1 (profile acceleration)</source>
+        <translation>%1（輪廓加速度）</translation>
+    </message>
+    <message>
+        <source>%1 (profile deceleration)</source>
+        <translation>%1（輪廓減速度）</translation>
+    </message>
+    <message>
+        <source>Enable operation, halt off</source>
+        <translation>運轉致能，解除暫停（halt）</translation>
+    </message>
+    <message>
+        <source>%1 (target velocity)</source>
+        <translation>%1（目標速度）</translation>
+    </message>
+    <message>
+        <source>%1 (profile velocity)</source>
+        <translation>%1（輪廓速度）</translation>
+    </message>
+    <message>
+        <source>%1 (target position, relative)</source>
+        <translation>%1（目標位置，相對）</translation>
+    </message>
+    <message>
+        <source>Enable operation, relative, new set-point low</source>
+        <translation>運轉致能，相對，新設定點為低</translation>
+    </message>
+    <message>
+        <source>New set-point (bit 4 rising), relative (bit 6)</source>
+        <translation>新設定點（位元 4 上升緣），相對（位元 6）</translation>
+    </message>
+    <message>
+        <source>test move set-up failed: %1</source>
+        <translation>測試運動設定失敗：%1</translation>
+    </message>
+    <message>
+        <source>%1 is in %2, not Operation enabled: enable the drive before a test move</source>
+        <translation>%1 處於%2，不是運轉致能：測試運動前請先致能驅動器</translation>
+    </message>
+    <message>
+        <source>cannot set the mode for the test move: %1</source>
+        <translation>無法設定測試運動的模式：%1</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering during the test move (%1)</source>
+        <translation>測試運動中驅動器停止回應（%1）</translation>
+    </message>
+    <message>
+        <source>the drive faulted during the test move (statusword 0x%1)</source>
+        <translation>測試運動中驅動器發生故障（狀態字元 0x%1）</translation>
+    </message>
+    <message>
+        <source>the drive left Operation enabled during the test move (now %1)</source>
+        <translation>測試運動中驅動器離開了運轉致能（現在為%1）</translation>
+    </message>
+    <message>
+        <source>position read failed during the test move: %1</source>
+        <translation>測試運動中讀取位置失敗：%1</translation>
+    </message>
+    <message>
+        <source>velocity read failed during the test move: %1</source>
+        <translation>測試運動中讀取速度失敗：%1</translation>
+    </message>
+    <message>
+        <source>hold-to-run released (no signal for %1 ms)</source>
+        <translation>已放開按住運轉（%1 ms 沒有訊號）</translation>
+    </message>
+    <message>
+        <source>time limit of %1 ms reached</source>
+        <translation>已達 %1 ms 的時間上限</translation>
+    </message>
+    <message>
+        <source>Halt: stop the test move on the deceleration ramp</source>
+        <translation>暫停（Halt）：依減速斜坡停止測試運動</translation>
+    </message>
+    <message>
+        <source>halt failed: %1</source>
+        <translation>暫停失敗：%1</translation>
+    </message>
+    <message>
+        <source>velocity read failed while stopping: %1</source>
+        <translation>停止時讀取速度失敗：%1</translation>
+    </message>
+    <message>
+        <source>the motor did not stop within %1 ms of the halt</source>
+        <translation>暫停後 %1 ms 內馬達未停止</translation>
+    </message>
+    <message>
+        <source>%1: %2h = 0 (target velocity)</source>
+        <translation>%1：%2h = 0（目標速度）</translation>
+    </message>
+    <message>
+        <source>target velocity 0 failed: %1</source>
+        <translation>目標速度設為 0 失敗：%1</translation>
+    </message>
+    <message>
+        <source>Quick stop, test move failed</source>
+        <translation>快速停止（測試運動失敗）</translation>
+    </message>
+    <message>
+        <source>Disable voltage, test move failed</source>
+        <translation>切斷電壓（測試運動失敗）</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is outside 1-127</source>
+        <translation>節點 ID %1 不在 1–127 之間</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: cancelled</source>
+        <translation>節點 %1 讀取 %2：已取消</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: cancelled</source>
+        <translation>節點 %1 寫入 %2：已取消</translation>
+    </message>
+    <message>
+        <source>the server answered for %1</source>
+        <translation>伺服端回應的是 %1</translation>
+    </message>
+    <message>
+        <source>toggle bit not alternated in an upload segment</source>
+        <translation>上傳分段的切換位元沒有交替</translation>
+    </message>
+    <message>
+        <source>the server sent %1 bytes, more than the %2 it announced</source>
+        <translation>伺服端送出 %1 位元組，多於宣告的 %2</translation>
+    </message>
+    <message>
+        <source>the server sent %1 bytes of the %2 it announced</source>
+        <translation>伺服端只送出宣告 %2 位元組中的 %1</translation>
+    </message>
+    <message>
+        <source>toggle bit not alternated in a download segment response</source>
+        <translation>下載分段回應的切換位元沒有交替</translation>
+    </message>
+    <message>
+        <source>unexpected %1 from the server</source>
+        <translation>伺服端送來非預期的 %1</translation>
+    </message>
+    <message>
+        <source>block end says %1 unused bytes</source>
+        <translation>區塊結束標示 %1 個未使用位元組</translation>
+    </message>
+    <message>
+        <source>CRC error: the server sent %1, the data gives %2</source>
+        <translation>CRC 錯誤：伺服端送出 %1，資料計算為 %2</translation>
+    </message>
+    <message>
+        <source>invalid block size %1</source>
+        <translation>無效的區塊大小 %1</translation>
+    </message>
+    <message>
+        <source>acknowledged segment %1 of %2 sent</source>
+        <translation>已確認 %2 個已送出分段中的第 %1 個</translation>
+    </message>
+    <message>
+        <source>node %1 did not answer read of %2 within %3 ms (SDO protocol timed out, 0x05040000)</source>
+        <translation>節點 %1 未在 %3 ms 內回應 %2 的讀取（SDO 協定逾時，0x05040000）</translation>
+    </message>
+    <message>
+        <source>node %1 did not answer write of %2 within %3 ms (SDO protocol timed out, 0x05040000)</source>
+        <translation>節點 %1 未在 %3 ms 內回應 %2 的寫入（SDO 協定逾時，0x05040000）</translation>
+    </message>
+    <message>
+        <source>node %1 aborted %2: %3</source>
+        <translation>節點 %1 中止了 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: %3; transfer aborted with 0x%4</source>
+        <translation>節點 %1 讀取 %2：%3；傳輸以 0x%4 中止</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: %3; transfer aborted with 0x%4</source>
+        <translation>節點 %1 寫入 %2：%3；傳輸以 0x%4 中止</translation>
+    </message>
+    <message>
+        <source>node %1 read %2: %3</source>
+        <translation>節點 %1 讀取 %2：%3</translation>
+    </message>
+    <message>
+        <source>node %1 write %2: %3</source>
+        <translation>節點 %1 寫入 %2：%3</translation>
+    </message>
+    <message>
+        <source>not supported or out of range</source>
+        <translation>不支援或超出範圍</translation>
+    </message>
+    <message>
+        <source>manufacturer-specific error</source>
+        <translation>製造商自訂錯誤</translation>
+    </message>
+    <message>
+        <source>error %1</source>
+        <translation>錯誤 %1</translation>
+    </message>
+    <message>
+        <source>LSS %1 refused by the slave: %2 (error code %3)</source>
+        <translation>從站拒絕 LSS %1：%2（錯誤碼 %3）</translation>
+    </message>
+    <message>
+        <source>no slave with that identity answered switch state selective</source>
+        <translation>沒有符合此識別資料的從站回應選擇性切換狀態</translation>
+    </message>
+    <message>
+        <source>no answer to LSS configure node-ID (is a slave in configuration state?)</source>
+        <translation>LSS 設定節點 ID 沒有回應（是否有從站處於設定狀態？）</translation>
+    </message>
+    <message>
+        <source>configure node-ID</source>
+        <translation>設定節點 ID</translation>
+    </message>
+    <message>
+        <source>%1 bit/s is not in the CiA 305 bit timing table</source>
+        <translation>%1 bit/s 不在 CiA 305 位元時序表中</translation>
+    </message>
+    <message>
+        <source>no answer to LSS configure bit timing (is a slave in configuration state?)</source>
+        <translation>LSS 設定位元時序沒有回應（是否有從站處於設定狀態？）</translation>
+    </message>
+    <message>
+        <source>configure bit timing</source>
+        <translation>設定位元時序</translation>
+    </message>
+    <message>
+        <source>no answer to LSS store configuration (is a slave in configuration state?)</source>
+        <translation>LSS 儲存設定沒有回應（是否有從站處於設定狀態？）</translation>
+    </message>
+    <message>
+        <source>store configuration</source>
+        <translation>儲存設定</translation>
+    </message>
+    <message>
+        <source>no answer to LSS %1 (is a slave in configuration state?)</source>
+        <translation>LSS %1 沒有回應（是否有從站處於設定狀態？）</translation>
+    </message>
+    <message>
+        <source>this run cannot reopen the adapter; reconnect at %1 bit/s by hand</source>
+        <translation>此次執行無法重新開啟轉接器；請手動以 %1 bit/s 重新連線</translation>
+    </message>
+    <message>
+        <source>could not reopen the adapter</source>
+        <translation>無法重新開啟轉接器</translation>
+    </message>
+    <message>
+        <source>connected at %1 bit/s</source>
+        <translation>已以 %1 bit/s 連線</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): cancelled</source>
+        <translation>第 %1 步（%2）：已取消</translation>
+    </message>
+    <message>
+        <source>step %1 (%2): %3</source>
+        <translation>第 %1 步（%2）：%3</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已寫入</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>讀到 %1</translation>
+    </message>
+    <message>
+        <source>read %1 as expected</source>
+        <translation>讀到 %1，符合預期</translation>
+    </message>
+    <message>
+        <source>node %1 %2 reads %3, expected %4</source>
+        <translation>節點 %1 %2 讀到 %3，預期為 %4</translation>
+    </message>
+    <message>
+        <source>node %1 %2 reads %3, expected %4 under mask %5</source>
+        <translation>節點 %1 %2 讀到 %3，預期為 %4（遮罩 %5）</translation>
+    </message>
+    <message>
+        <source>sent</source>
+        <translation>已送出</translation>
+    </message>
+    <message>
+        <source>the device confirmed</source>
+        <translation>裝置已確認</translation>
+    </message>
+    <message>
+        <source>the device stored it</source>
+        <translation>裝置已儲存</translation>
+    </message>
+    <message>
+        <source>waited %1 ms</source>
+        <translation>已等待 %1 ms</translation>
+    </message>
+    <message>
+        <source>node %1 sent no boot-up within %2 ms</source>
+        <translation>節點 %1 未在 %2 ms 內送出上線報文</translation>
+    </message>
+    <message>
+        <source>node %1 sent no boot-up or heartbeat within %2 ms</source>
+        <translation>節點 %1 未在 %2 ms 內送出上線報文或心跳</translation>
+    </message>
+    <message>
+        <source>unknown step</source>
+        <translation>未知的步驟</translation>
+    </message>
+    <message>
+        <source>node %1 booted</source>
+        <translation>節點 %1 已上線</translation>
+    </message>
+    <message>
+        <source>node %1 is %2</source>
+        <translation>節點 %1 為%2</translation>
+    </message>
+    <message>
+        <source>node-ID %1 is outside 1-127 (0 = all nodes)</source>
+        <translation>節點 ID %1 不在 1–127 之間（0 = 所有節點）</translation>
+    </message>
+    <message>
+        <source>%1 (not writable)</source>
+        <translation>%1（不可寫入）</translation>
+    </message>
+    <message>
+        <source>command object, not configuration</source>
+        <translation>命令物件，不是設定值</translation>
+    </message>
+    <message>
+        <source>unchanged (%1)</source>
+        <translation>未變更（%1）</translation>
+    </message>
+    <message>
+        <source>node %1 %2: not in the dictionary</source>
+        <translation>節點 %1 %2：不在物件字典中</translation>
+    </message>
+    <message>
+        <source>COB-ID invalid (%1)</source>
+        <translation>COB-ID 設為無效（%1）</translation>
+    </message>
+    <message>
+        <source>COB-ID valid (%1)</source>
+        <translation>COB-ID 設為有效（%1）</translation>
+    </message>
+    <message>
+        <source>transmission type (%1)</source>
+        <translation>傳輸類型（%1）</translation>
+    </message>
+    <message>
+        <source>inhibit time (%1)</source>
+        <translation>禁止時間（%1）</translation>
+    </message>
+    <message>
+        <source>event timer (%1)</source>
+        <translation>事件計時器（%1）</translation>
+    </message>
+    <message>
+        <source>mapping sub0 = 0 (%1)</source>
+        <translation>映射 sub0 = 0（%1）</translation>
+    </message>
+    <message>
+        <source>mapping entry %1 (%2)</source>
+        <translation>映射項目 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Error reset or no error</source>
+        <translation>錯誤重置或無錯誤</translation>
+    </message>
+    <message>
+        <source>Generic error</source>
+        <translation>一般錯誤</translation>
+    </message>
+    <message>
+        <source>Continuous over-current</source>
+        <translation>持續過電流</translation>
+    </message>
+    <message>
+        <source>Short circuit / earth leakage</source>
+        <translation>短路／接地漏電</translation>
+    </message>
+    <message>
+        <source>Mains over-voltage</source>
+        <translation>主電源過電壓</translation>
+    </message>
+    <message>
+        <source>Mains under-voltage</source>
+        <translation>主電源欠電壓</translation>
+    </message>
+    <message>
+        <source>DC link over-voltage</source>
+        <translation>直流母線過電壓</translation>
+    </message>
+    <message>
+        <source>DC link under-voltage</source>
+        <translation>直流母線欠電壓</translation>
+    </message>
+    <message>
+        <source>Excess temperature device</source>
+        <translation>裝置溫度過高</translation>
+    </message>
+    <message>
+        <source>Excess temperature drive</source>
+        <translation>驅動器溫度過高</translation>
+    </message>
+    <message>
+        <source>Data storage error (EEPROM)</source>
+        <translation>資料儲存錯誤（EEPROM）</translation>
+    </message>
+    <message>
+        <source>Internal software error</source>
+        <translation>內部軟體錯誤</translation>
+    </message>
+    <message>
+        <source>Motor blocked</source>
+        <translation>馬達堵轉</translation>
+    </message>
+    <message>
+        <source>Incremental sensor 1 fault</source>
+        <translation>增量式感測器 1 故障</translation>
+    </message>
+    <message>
+        <source>CAN overrun (objects lost)</source>
+        <translation>CAN 溢位（物件遺失）</translation>
+    </message>
+    <message>
+        <source>CAN in error passive mode</source>
+        <translation>CAN 處於錯誤被動模式</translation>
+    </message>
+    <message>
+        <source>Life guard error or heartbeat error</source>
+        <translation>節點保護錯誤或心跳錯誤</translation>
+    </message>
+    <message>
+        <source>Recovered from bus off</source>
+        <translation>已從總線關閉恢復</translation>
+    </message>
+    <message>
+        <source>CAN-ID collision</source>
+        <translation>CAN-ID 衝突</translation>
+    </message>
+    <message>
+        <source>PDO not processed due to length error</source>
+        <translation>PDO 因長度錯誤未處理</translation>
+    </message>
+    <message>
+        <source>PDO length exceeded</source>
+        <translation>PDO 長度超出</translation>
+    </message>
+    <message>
+        <source>DAM MPDO not processed, destination object not available</source>
+        <translation>DAM MPDO 未處理，目標物件不存在</translation>
+    </message>
+    <message>
+        <source>Unexpected SYNC data length</source>
+        <translation>SYNC 資料長度不符</translation>
+    </message>
+    <message>
+        <source>RPDO timeout</source>
+        <translation>RPDO 逾時</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>追隨誤差</translation>
+    </message>
+    <message>
+        <source>Reference limit</source>
+        <translation>參考極限</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>電流</translation>
+    </message>
+    <message>
+        <source>Current, device input side</source>
+        <translation>電流（裝置輸入側）</translation>
+    </message>
+    <message>
+        <source>Current inside the device</source>
+        <translation>裝置內部電流</translation>
+    </message>
+    <message>
+        <source>Current, device output side</source>
+        <translation>電流（裝置輸出側）</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>電壓</translation>
+    </message>
+    <message>
+        <source>Mains voltage</source>
+        <translation>主電源電壓</translation>
+    </message>
+    <message>
+        <source>Voltage inside the device</source>
+        <translation>裝置內部電壓</translation>
+    </message>
+    <message>
+        <source>Output voltage</source>
+        <translation>輸出電壓</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>溫度</translation>
+    </message>
+    <message>
+        <source>Ambient temperature</source>
+        <translation>環境溫度</translation>
+    </message>
+    <message>
+        <source>Device temperature</source>
+        <translation>裝置溫度</translation>
+    </message>
+    <message>
+        <source>Device hardware</source>
+        <translation>裝置硬體</translation>
+    </message>
+    <message>
+        <source>Device software</source>
+        <translation>裝置軟體</translation>
+    </message>
+    <message>
+        <source>Internal software</source>
+        <translation>內部軟體</translation>
+    </message>
+    <message>
+        <source>User software</source>
+        <translation>使用者軟體</translation>
+    </message>
+    <message>
+        <source>Data set</source>
+        <translation>資料集</translation>
+    </message>
+    <message>
+        <source>Additional modules</source>
+        <translation>附加模組</translation>
+    </message>
+    <message>
+        <source>Monitoring</source>
+        <translation>監控</translation>
+    </message>
+    <message>
+        <source>Communication</source>
+        <translation>通訊</translation>
+    </message>
+    <message>
+        <source>Protocol error</source>
+        <translation>協定錯誤</translation>
+    </message>
+    <message>
+        <source>External error</source>
+        <translation>外部錯誤</translation>
+    </message>
+    <message>
+        <source>Additional functions</source>
+        <translation>附加功能</translation>
+    </message>
+    <message>
+        <source>Device specific</source>
+        <translation>裝置自訂</translation>
+    </message>
+    <message>
+        <source>Unknown error code</source>
+        <translation>未知的錯誤碼</translation>
+    </message>
+    <message>
+        <source>Delta: P-parameters written over CAN are saved to EEPROM at once. P3-00 takes effect after a power cycle (marked ●).</source>
+        <translation>台達：經 CAN 寫入的 P 參數會立即存入 EEPROM。P3-00 須重新上電後才生效（標記 ●）。</translation>
+    </message>
+    <message>
+        <source>AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN (200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of H0C-08 are not documented: use LSS for the bit rate.</source>
+        <translation>AIMOTOR：手冊以 RS485 工具設定 H0C-00（節點 ID）；經 CAN（200Ch:01）寫入是推定的做法，請以 1010h 儲存並重新上電。H0C-08 的鮑率代碼未見於文件：鮑率請使用 LSS 設定。</translation>
+    </message>
+    <message>
+        <source>DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP switch SW2. No bit-rate parameter: use LSS.</source>
+        <translation>DEXMART DEV：參數 09-19 僅在 Rev A 上設定節點 ID；Rev B/C/D 使用 DIP 開關 SW2。沒有鮑率參數：請使用 LSS。</translation>
+    </message>
+    <message>
+        <source>Voltage enabled</source>
+        <translation>電壓已致能</translation>
+    </message>
+    <message>
+        <source>Remote</source>
+        <translation>遠端控制（Remote）</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>Target reached</source>
+        <translation>已到達目標</translation>
+    </message>
+    <message>
+        <source>Internal limit active</source>
+        <translation>內部限制作用中</translation>
+    </message>
+    <message>
+        <source>TPDO%1 node %2: %3</source>
+        <translation>TPDO%1 節點 %2：%3</translation>
+    </message>
+    <message>
+        <source>RPDO%1 node %2: %3</source>
+        <translation>RPDO%1 節點 %2：%3</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3554,6 +5258,19 @@ SDO 下載 %n 位元組：%1</numerusform>
         <source>%1 of 64 bits used (%2 bytes in the frame)</source>
         <translation>已使用 64 位元中的 %1 位元（封包中 %2 位元組）</translation>
     </message>
+    <message>
+        <source>byte %1: %3</source>
+        <extracomment>PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)</extracomment>
+        <translation>位元組 %1：%3</translation>
+    </message>
+    <message>
+        <source>byte %1-%2: %3</source>
+        <translation>位元組 %1–%2：%3</translation>
+    </message>
+    <message>
+        <source>%1 of 64 bits</source>
+        <translation>已用 %1 / 64 位元</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::PdoMappingPage</name>
@@ -4578,6 +6295,12 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Bus back after %1 s: frames between are missing from the trace</source>
         <translation>總線在 %1 秒後恢復：中斷期間的封包不在追蹤中</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) dropped (receive queue full), %1 in total</source>
+        <translation>
+            <numerusform>丟失 %n 個封包（接收佇列已滿），累計 %1 個</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -1,16 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The UI in Chinese (issue #17): the main window and the three commissioning wizards show no
-// label, button, menu entry, tab, dock title or column header whose text is still its English
-// source, in zh_TW and in zh_CN; View ▸ Language switches at once, by mouse clicks, and switching
-// back and forth leaves no text of the previous language.
+// The UI in Chinese (issue #17): the main window and every page of the three commissioning
+// wizards show no label, button, menu entry, tab, dock title, column header, table cell (the
+// frames' Meaning, the dry-run steps and their explanations), tooltip or list entry whose text is
+// still its English source, in zh_TW and in zh_CN; View ▸ Language switches at once, by mouse
+// clicks, and switching back and forth leaves no text of the previous language.
 #include "app/gui/MainWindow.h"
 #include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/WizardMenu.h"
+#include "app/gui/wizards/nodeid/NodeIdPages.h"
+#include "app/gui/wizards/nodeid/NodeIdWizard.h"
+#include "eds/DictionaryLibrary.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QAbstractButton>
+#include <QAbstractItemView>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QRadioButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QWizard>
 #include <QApplication>
 #include <QDockWidget>
 #include <QGroupBox>
@@ -42,8 +54,25 @@ const QStringList kSame = {
     QStringLiteral("AIMOTOR"),   QStringLiteral("DEXMART"), QStringLiteral("COB-ID"), QStringLiteral("SDO"),
     QStringLiteral("PDO"),       QStringLiteral("NMT"),     QStringLiteral("EMCY"),   QStringLiteral("SYNC"),
     QStringLiteral("ms"),        QStringLiteral("rpm"),     QStringLiteral("Hz"),     QStringLiteral("Rx"),
-    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
+    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("sim"),     QStringLiteral("aimotor"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
 };
+
+// The object names of the virtual drives' dictionaries (EDS names, the manuals' own where they
+// give them): data, not UI text.
+const QSet<QString>& dictionaryNames() {
+    static const QSet<QString> names = [] {
+        QSet<QString> out;
+        for (const char* d : {"delta-asda-a2", "aimotor", "dexmart-dev", "generic-cia402"}) {
+            const eds::ReadResult r = eds::loadDictionaryByPathOrName(QString::fromLatin1(d));
+            for (const auto& [index, o] : r.dictionary.objects()) {
+                out.insert(o.name);
+                for (const auto& sub : o.subs) out.insert(sub.name);
+            }
+        }
+        return out;
+    }();
+    return names;
+}
 
 struct Text {
     QString text, where;
@@ -69,25 +98,49 @@ void menuTexts(const QMenu* menu, QList<Text>& out) {
     }
 }
 
+// Rows of a table or list the user sees (the first 40): each cell's text and tooltip.
+void viewTexts(const QAbstractItemView* v, QList<Text>& out) {
+    const QAbstractItemModel* m = v->model();
+    if (!m) return;
+    for (int r = 0; r < std::min(m->rowCount(), 40); ++r)
+        for (int c = 0; c < m->columnCount(); ++c) {
+            const QModelIndex i = m->index(r, c);
+            for (int role : {int(Qt::DisplayRole), int(Qt::ToolTipRole)}) {
+                const QVariant d = m->data(i, role);
+                if (d.typeId() == QMetaType::QString)
+                    for (const QString& line : d.toString().split(u'\n')) out.append({plain(line), name(v) + QStringLiteral(" cell")});
+            }
+        }
+}
+
 // What the user reads in `window`: visible labels, buttons, group titles, tabs, dock titles,
-// column headers, and every entry of its menus.
+// column headers, table cells, list entries, tooltips, and every entry of its menus.
 QList<Text> visibleTexts(QWidget* window) {
     QList<Text> out{{plain(window->windowTitle()), QStringLiteral("window title")}};
     for (QLabel* l : window->findChildren<QLabel*>())
-        if (l->isVisible()) out.append({plain(l->text()), name(l)});
+        if (l->isVisible())
+            for (const QString& line : plain(l->text()).split(u'\n')) out.append({line.trimmed(), name(l)});
     for (QAbstractButton* b : window->findChildren<QAbstractButton*>())
         if (b->isVisible()) out.append({plain(b->text()), name(b)});
     for (QGroupBox* g : window->findChildren<QGroupBox*>())
         if (g->isVisible()) out.append({plain(g->title()), name(g)});
     for (QTabBar* t : window->findChildren<QTabBar*>())
         if (t->isVisible())
-            for (int i = 0; i < t->count(); ++i) out.append({plain(t->tabText(i)), name(t)});
+            for (int i = 0; i < t->count(); ++i) out.append({plain(t->tabText(i)), name(t)}), out.append({plain(t->tabToolTip(i)), name(t) + QStringLiteral(" tooltip")});
     for (QDockWidget* d : window->findChildren<QDockWidget*>())
         if (d->isVisible()) out.append({plain(d->windowTitle()), name(d)});
     for (QHeaderView* h : window->findChildren<QHeaderView*>())
         if (h->isVisible() && h->model())
             for (int i = 0; i < h->count(); ++i)
                 if (!h->isSectionHidden(i)) out.append({plain(h->model()->headerData(i, h->orientation()).toString()), name(h->parent())});
+    for (QComboBox* c : window->findChildren<QComboBox*>())
+        if (c->isVisible())
+            for (int i = 0; i < c->count(); ++i) out.append({plain(c->itemText(i)), name(c) + QStringLiteral(" entry")});
+    for (QAbstractItemView* v : window->findChildren<QAbstractItemView*>())
+        if (v->isVisible() && !qobject_cast<QHeaderView*>(v) && !qobject_cast<QComboBox*>(v->parentWidget())) viewTexts(v, out);
+    for (QWidget* w : window->findChildren<QWidget*>())
+        if (w->isVisible() && !w->toolTip().isEmpty())
+            for (const QString& line : plain(w->toolTip()).split(u'\n')) out.append({line.trimmed(), name(w) + QStringLiteral(" tooltip")});
     if (auto* mw = qobject_cast<QMainWindow*>(window))
         for (const QMenu* m : mw->menuBar()->findChildren<QMenu*>(Qt::FindDirectChildrenOnly)) menuTexts(m, out);
     return out;
@@ -96,7 +149,14 @@ QList<Text> visibleTexts(QWidget* window) {
 bool compared(const QString& t) {
     static const QRegularExpression word(QStringLiteral("[A-Za-z]{2,}"));
     // A bus URL or file name is data, the same in every language.
-    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://"));
+    // Identifiers: dictionary names ("delta-asda-a2"), abbreviations ("NMT_EC", "TPDO1"), paths.
+    // A command script line (the "Script line" column): coscope-cli's language, the same everywhere.
+    static const QRegularExpression scriptLine(QStringLiteral("^(sdo|nmt|lss|wait|wait-node|reconnect) [a-z0-9]"));
+    // A number with its unit ("500 kbit/s"), or frame data in hex ("43 18 10 01 DD 01 00 00").
+    static const QRegularExpression numberOrData(QStringLiteral("^([0-9][0-9.,]* ?(bit/s|kbit/s|Mbit/s|ms|s|rpm|Hz)|[0-9A-F]{2}( [0-9A-F]{2})*)$"));
+    static const QRegularExpression identifier(QStringLiteral("^([a-z0-9]+([-_][a-z0-9]+)+|[A-Z0-9_]+|[^ ]*/[^ ]*)$"));
+    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://")) && !dictionaryNames().contains(t) &&
+           !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch() && !numberOrData.match(t).hasMatch();
 }
 
 // Texts of `now` that are in `english` (what the same window showed in English).
@@ -152,6 +212,71 @@ void closeWizard(QWidget* wiz) {
     QTest::qWait(100);
 }
 
+void click(QWidget* b) { QTest::mouseClick(b, Qt::LeftButton, {}, b->rect().center()); }
+
+bool clickNext(QWizard* wiz) {
+    QAbstractButton* next = wiz->button(QWizard::NextButton);
+    const int before = wiz->currentId();
+    if (!waitFor([&] { return next->isVisible() && next->isEnabled(); }, 10000)) return false;
+    click(next);
+    return waitFor([&] { return wiz->currentId() != before; }, 5000);
+}
+
+// Every page of wizard `id` the way a technician goes through it, by clicks and keys; the texts
+// of each page. Empty when a page could not be reached.
+QList<Text> walkWizard(MainWindow& w, const QString& id) {
+    QWidget* wiz = openAndSettle(w, id);
+    if (!wiz) return {};
+    QList<Text> all = visibleTexts(wiz);
+    bool ok = true;
+    if (id == u"ds402") {
+        // The dry run: the enable sequence with each step's explanation, on its tab.
+        auto* dry = wiz->findChild<QPushButton*>(QStringLiteral("dryRun"));
+        ok = dry && waitFor([&] { return dry->isEnabled(); }, 5000);
+        if (ok) click(dry);
+        QTest::qWait(500);
+        all += visibleTexts(wiz);
+        // Back to the frames tab: the requests and responses with their meaning.
+        auto* tabs = wiz->findChild<QTabWidget*>();
+        if (ok && tabs) {
+            QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, {}, tabs->tabBar()->tabRect(0).center());
+            QTest::qWait(300);
+            all += visibleTexts(wiz);
+        }
+    } else if (id == u"pdo") {
+        auto* pdo = qobject_cast<QWizard*>(wiz);
+        for (int page = 0; ok && page < 3; ++page) {
+            ok = pdo && clickNext(pdo);
+            QTest::qWait(500);
+            all += visibleTexts(wiz);
+        }
+    } else if (id == u"nodeid") {
+        auto* nid = qobject_cast<NodeIdWizard*>(wiz);
+        ok = nid != nullptr;
+        if (ok) {
+            QSignalSpy scanned(nid, &NodeIdWizard::scanFinished);
+            click(nid->findPage()->scanButton());
+            ok = scanned.wait(15000);
+            all += visibleTexts(wiz);
+        }
+        if (ok && (ok = clickNext(nid))) {
+            click(nid->findChild<QRadioButton*>(QStringLiteral("changeNodeId")));
+            click(nid->findChild<QRadioButton*>(QStringLiteral("viaLss")));
+            QLineEdit* edit = nid->findChild<QSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>();
+            click(edit);
+            QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+            QTest::keyClicks(edit, QStringLiteral("41"));
+            QTest::qWait(300);
+            all += visibleTexts(wiz);
+            QSignalSpy ready(nid, &NodeIdWizard::dryRunReady);
+            ok = clickNext(nid) && (ready.count() > 0 || ready.wait(8000));
+            QTest::qWait(300);
+            all += visibleTexts(wiz);
+        }
+    }
+    closeWizard(wiz);
+    return ok ? all : QList<Text>{};
+}
 }  // namespace
 
 class TestLanguage : public QObject {
@@ -176,10 +301,8 @@ private slots:
         const QList<Text> englishMain = visibleTexts(&w);
         QMap<QString, QList<Text>> englishWizard;
         for (const QString& id : ids) {
-            QWidget* wiz = openAndSettle(w, id);
-            QVERIFY2(wiz, qPrintable(id));
-            englishWizard[id] = visibleTexts(wiz);
-            closeWizard(wiz);
+            englishWizard[id] = walkWizard(w, id);
+            QVERIFY2(!englishWizard[id].isEmpty(), qPrintable(id));
         }
 
         for (const QString& code : {QStringLiteral("zh_TW"), QStringLiteral("zh_CN")}) {
@@ -189,10 +312,9 @@ private slots:
             const QStringList main = stillEnglish(visibleTexts(&w), englishMain);
             QVERIFY2(main.isEmpty(), qPrintable(code + QStringLiteral(" main window, still English:\n") + main.join(u'\n')));
             for (const QString& id : ids) {
-                QWidget* wiz = openAndSettle(w, id);
-                QVERIFY2(wiz, qPrintable(id));
-                const QStringList left = stillEnglish(visibleTexts(wiz), englishWizard[id]);
-                closeWizard(wiz);
+                const QList<Text> now = walkWizard(w, id);
+                QVERIFY2(!now.isEmpty(), qPrintable(code + u' ' + id));
+                const QStringList left = stillEnglish(now, englishWizard[id]);
                 QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1 wizard %2, still English:\n%3").arg(code, id, left.join(u'\n'))));
             }
         }
@@ -201,6 +323,10 @@ private slots:
         QTest::qWait(300);
         const QStringList stale = withChinese(visibleTexts(&w));
         QVERIFY2(stale.isEmpty(), qPrintable(QStringLiteral("Chinese left after switching to English:\n") + stale.join(u'\n')));
+        for (const QString& id : ids) {
+            const QStringList staleWizard = withChinese(walkWizard(w, id));
+            QVERIFY2(staleWizard.isEmpty(), qPrintable(QStringLiteral("wizard %1, Chinese left after switching to English:\n%2").arg(id, staleWizard.join(u'\n'))));
+        }
         QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("en"));
     }
 };

@@ -85,7 +85,7 @@ private slots:
         QCOMPARE(abort->frame, FrameNo(6));
         // since() returns only what is new
         QCOMPARE(log.since(ev.size()).size(), size_t(0));
-        log.add({TraceEvent::Kind::Dropped, 0, kNoFrame, -1, QStringLiteral("3 frames dropped")});
+        log.add(renderedEvent(TraceEvent::Kind::Dropped, 0, kNoFrame, -1, [] { return QStringLiteral("3 frames dropped"); }));
         QCOMPARE(log.since(ev.size()).size(), size_t(1));
         const auto gen = log.generation();
         log.clear();

@@ -33,6 +33,12 @@ QString eventKindName(TraceEvent::Kind kind) {
     return {};
 }
 
+TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node, std::function<QString()> render) {
+    TraceEvent e{kind, timeNs, frame, node, render(), {}};
+    e.render = std::move(render);
+    return e;
+}
+
 namespace {
 // A server's "object does not exist" / "sub-index does not exist" abort for an optional
 // identity object: 1008h device name, 1009h hardware version, 100Ah software version (CiA 301
@@ -52,16 +58,16 @@ EventLog::EventLog(std::shared_ptr<const FrameDecoder> decoder) : decoder_(std::
 
 void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
     if (count == 0) return;
-    dissect::Dissection d;
     std::lock_guard lock(mutex_);
-    auto push = [&](TraceEvent::Kind k, const TraceRecord& r, FrameNo n, int node, QString text) {
-        events_.push_back({k, r.timestampNs, n, node, std::move(text)});
+    // Each event keeps what it needs to be written again in another UI language.
+    auto push = [&](TraceEvent::Kind k, const TraceRecord& r, FrameNo n, int node, std::function<QString()> render) {
+        events_.push_back(renderedEvent(k, r.timestampNs, n, node, std::move(render)));
     };
     for (size_t i = 0; i < count; ++i) {
         const FrameNo n = first + static_cast<FrameNo>(i);
         const TraceRecord& r = store.record(n);
         if (r.flags & CanFrame::Error) {
-            push(TraceEvent::Kind::BusError, r, n, -1, decodeCanError(store.frame(n)).summary());
+            push(TraceEvent::Kind::BusError, r, n, -1, [f = store.frame(n)] { return coreText(decodeCanError(f).summary()); });
             continue;
         }
         if (r.flags & CanFrame::Extended) continue;
@@ -69,9 +75,10 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
         switch (info.service) {
         case Service::Nmt:
             if (r.len >= 2) {
-                const QString target = r.data[1] == 0 ? QCoreApplication::translate("EventLog", "all nodes") : QCoreApplication::translate("EventLog", "node %1").arg(r.data[1]);
-                push(TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1,
-                     QStringLiteral("%1 → %2").arg(coreText(canopen::nmtCommandName(r.data[0])), target));
+                push(TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1, [cs = r.data[0], node = r.data[1]] {
+                    const QString target = node == 0 ? QCoreApplication::translate("EventLog", "all nodes") : QCoreApplication::translate("EventLog", "node %1").arg(node);
+                    return QStringLiteral("%1 → %2").arg(coreText(canopen::nmtCommandName(cs)), target);
+                });
             }
             break;
         case Service::NmtErrorControl: {
@@ -79,21 +86,22 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             NodeWatch& w = watch_[static_cast<size_t>(info.node)];
             const int state = r.data[0] & 0x7F;
             if (w.timedOut) {
-                push(TraceEvent::Kind::NmtState, r, n, info.node, QCoreApplication::translate("EventLog", "Heartbeat back after timeout"));
+                push(TraceEvent::Kind::NmtState, r, n, info.node, [] { return QCoreApplication::translate("EventLog", "Heartbeat back after timeout"); });
                 w.timedOut = false;
             }
             if (state == 0) {
-                push(TraceEvent::Kind::BootUp, r, n, info.node, QCoreApplication::translate("EventLog", "Boot-up"));
+                push(TraceEvent::Kind::BootUp, r, n, info.node, [] { return QCoreApplication::translate("EventLog", "Boot-up"); });
                 w.state = 0x7F;  // pre-operational after boot-up (CiA 301 §7.3.2.2.1)
                 w.lastNs = 0;
                 w.periodNs = 0;
                 break;
             }
             if (w.state != state) {
-                push(TraceEvent::Kind::NmtState, r, n, info.node,
-                     w.state < 0 ? QCoreApplication::translate("EventLog", "State %1").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(state))))
-                                 : QStringLiteral("%1 → %2").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(w.state))),
-                                                                 coreText(canopen::nmtStateName(static_cast<uint8_t>(state)))));
+                push(TraceEvent::Kind::NmtState, r, n, info.node, [from = w.state, state] {
+                    const QString now = coreText(canopen::nmtStateName(static_cast<uint8_t>(state)));
+                    return from < 0 ? QCoreApplication::translate("EventLog", "State %1").arg(now)
+                                    : QStringLiteral("%1 → %2").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(from))), now);
+                });
                 w.state = state;
             }
             if (w.lastNs && r.timestampNs > w.lastNs) w.periodNs = r.timestampNs - w.lastNs;
@@ -110,18 +118,23 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             if (!emcy && (r.flags & CanFrame::Tx) && r.len >= 8 && r.data[4] == 0x00 && r.data[5] == 0x00 && r.data[6] == 0x04 && r.data[7] == 0x05) break;
             if (info.service == Service::SdoResponse && optionalObjectAbsent(r)) break;
             const CanFrame f = store.frame(n);
-            d.reset(dissect::Dissection::Level::Flat);
-            decoder_->decode(f, d);
-            QString text = d.summary;
-            if (emcy) {
-                const auto m = canopen::parseEmcy(f.data.data(), f.len);
-                if (const auto* v = d.find("emcy.vendor")) text += QStringLiteral(" — %1").arg(v->text);
-                const QStringList bits = canopen::errorRegisterBits(m.errorRegister);
-                if (!bits.isEmpty()) text += QStringLiteral(" [%1]").arg(bits.join(QStringLiteral(", ")));
-                push(m.code == 0 ? TraceEvent::Kind::EmcyReset : TraceEvent::Kind::Emcy, r, n, info.node, text);
-            } else {
-                push(TraceEvent::Kind::SdoAbort, r, n, info.node, text);
-            }
+            // Decoded again on each render: the vendor alarm name follows the UI language.
+            auto render = [f, emcy, decoder = decoder_] {
+                dissect::Dissection d;
+                d.reset(dissect::Dissection::Level::Flat);
+                decoder->decode(f, d);
+                QString text = coreText(d.summary);
+                if (emcy) {
+                    const auto m = canopen::parseEmcy(f.data.data(), f.len);
+                    if (const auto* v = d.find("emcy.vendor")) text += QStringLiteral(" — %1").arg(coreLines(v->text));
+                    QStringList bits = canopen::errorRegisterBits(m.errorRegister);
+                    for (QString& b : bits) b = coreText(b);
+                    if (!bits.isEmpty()) text += QStringLiteral(" [%1]").arg(bits.join(QStringLiteral(", ")));
+                }
+                return text;
+            };
+            if (emcy) push(canopen::parseEmcy(f.data.data(), f.len).code == 0 ? TraceEvent::Kind::EmcyReset : TraceEvent::Kind::Emcy, r, n, info.node, std::move(render));
+            else push(TraceEvent::Kind::SdoAbort, r, n, info.node, std::move(render));
             break;
         }
         default: break;
@@ -143,10 +156,10 @@ void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
         const int64_t limit = std::max<int64_t>(3 * w.periodNs, 1'500'000'000);
         if (nowNs - w.lastNs > limit) {
             w.timedOut = true;
-            events_.push_back({TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id),
-                               QCoreApplication::translate("EventLog", "No heartbeat for %1 ms (period %2 ms)")
-                                   .arg((nowNs - w.lastNs) / 1'000'000)
-                                   .arg(w.periodNs / 1'000'000)});
+            auto render = [silentMs = (nowNs - w.lastNs) / 1'000'000, periodMs = w.periodNs / 1'000'000] {
+                return QCoreApplication::translate("EventLog", "No heartbeat for %1 ms (period %2 ms)").arg(silentMs).arg(periodMs);
+            };
+            events_.push_back(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id), std::move(render)));
         }
     }
 }

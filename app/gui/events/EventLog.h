@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -24,9 +25,16 @@ struct TraceEvent {
     int64_t timeNs = 0;
     FrameNo frame = kNoFrame;
     int node = -1;
-    QString text;
+    QString text;  // in the UI language of when it was logged (or as add() was given it)
+    // Writes the text again in the UI language of now (View ▸ Language rebuilds the Events view,
+    // which asks for it); empty for events add()ed with a fixed text.
+    std::function<QString()> render;
 };
 QString eventKindName(TraceEvent::Kind kind);
+
+// An event whose text `render` writes, now and again in each UI language the Events view is
+// built in.
+TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node, std::function<QString()> render);
 
 // The event list of a trace: EMCY (code text, error register bits, vendor alarm text from the
 // decoder), SDO aborts (not a server's "not present" for an optional identity object), NMT commands and state changes, boot-ups, heartbeat timeouts, error

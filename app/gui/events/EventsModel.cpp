@@ -29,6 +29,9 @@ void EventsModel::refresh() {
     }
     auto fresh = log_->since(events_.size());
     if (fresh.empty()) return;
+    // In the UI language of now: a view built after View ▸ Language shows every event in it.
+    for (TraceEvent& e : fresh)
+        if (e.render) e.text = e.render();
     beginInsertRows({}, rowCount(), rowCount() + static_cast<int>(fresh.size()) - 1);
     events_.insert(events_.end(), std::make_move_iterator(fresh.begin()), std::make_move_iterator(fresh.end()));
     endInsertRows();

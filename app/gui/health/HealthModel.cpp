@@ -103,7 +103,7 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
         }
     case Time: return f.hasTime ? dissect::healthTime(f.timeNs, report_.startNs) : QString();
     case Node: return f.node >= 0 ? QString::number(f.node) : tr("bus");
-    case Text: return f.text;  // built by dissectors/ in English, like the CLI report
+    case Text: return coreLines(f.text);  // built by dissectors/ in English, like the CLI report; shown in the UI language
     }
     return {};
 }

@@ -1,110 +1,154 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/language/CoreText.h"
 
+#include "app/gui/language/CoreTextLists.h"
+#include "app/gui/language/Language.h"
+
 #include <QCoreApplication>
+#include <QHash>
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <vector>
 
 namespace coscope::gui {
 
 namespace {
-// The English texts of the lower layers the GUI shows, for lupdate. Keep each exactly as the
-// lower layer writes it (a text not listed here is shown untranslated).
-[[maybe_unused]] const char* const kListed[] = {
-    // The names of core/canopen (Ds402.cpp, Nmt.cpp, SdoAbort.cpp) and core/can/CanBus.cpp.
-    QT_TRANSLATE_NOOP("CoreText", "Not ready to switch on"),
-    QT_TRANSLATE_NOOP("CoreText", "Switch on disabled"),
-    QT_TRANSLATE_NOOP("CoreText", "Ready to switch on"),
-    QT_TRANSLATE_NOOP("CoreText", "Switched on"),
-    QT_TRANSLATE_NOOP("CoreText", "Operation enabled"),
-    QT_TRANSLATE_NOOP("CoreText", "Quick stop active"),
-    QT_TRANSLATE_NOOP("CoreText", "Fault reaction active"),
-    QT_TRANSLATE_NOOP("CoreText", "Fault"),
-    QT_TRANSLATE_NOOP("CoreText", "Unknown state"),
-    QT_TRANSLATE_NOOP("CoreText", "ready to switch on"),
-    QT_TRANSLATE_NOOP("CoreText", "switched on"),
-    QT_TRANSLATE_NOOP("CoreText", "operation enabled"),
-    QT_TRANSLATE_NOOP("CoreText", "fault"),
-    QT_TRANSLATE_NOOP("CoreText", "voltage enabled"),
-    QT_TRANSLATE_NOOP("CoreText", "quick stop"),
-    QT_TRANSLATE_NOOP("CoreText", "switch on disabled"),
-    QT_TRANSLATE_NOOP("CoreText", "warning"),
-    QT_TRANSLATE_NOOP("CoreText", "manufacturer specific (bit 8)"),
-    QT_TRANSLATE_NOOP("CoreText", "remote"),
-    QT_TRANSLATE_NOOP("CoreText", "target reached"),
-    QT_TRANSLATE_NOOP("CoreText", "internal limit active"),
-    QT_TRANSLATE_NOOP("CoreText", "operation mode specific (bit 12)"),
-    QT_TRANSLATE_NOOP("CoreText", "operation mode specific (bit 13)"),
-    QT_TRANSLATE_NOOP("CoreText", "manufacturer specific (bit 14)"),
-    QT_TRANSLATE_NOOP("CoreText", "manufacturer specific (bit 15)"),
-    QT_TRANSLATE_NOOP("CoreText", "Shutdown"),
-    QT_TRANSLATE_NOOP("CoreText", "Switch on"),
-    QT_TRANSLATE_NOOP("CoreText", "Switch on + enable operation"),
-    QT_TRANSLATE_NOOP("CoreText", "Disable voltage"),
-    QT_TRANSLATE_NOOP("CoreText", "Quick stop"),
-    QT_TRANSLATE_NOOP("CoreText", "Disable operation"),
-    QT_TRANSLATE_NOOP("CoreText", "Enable operation"),
-    QT_TRANSLATE_NOOP("CoreText", "Fault reset"),
-    QT_TRANSLATE_NOOP("CoreText", "Switch on / disable operation"),
-    QT_TRANSLATE_NOOP("CoreText", "No command"),
-    QT_TRANSLATE_NOOP("CoreText", "No mode"),
-    QT_TRANSLATE_NOOP("CoreText", "Profile position (PP)"),
-    QT_TRANSLATE_NOOP("CoreText", "Velocity (VL)"),
-    QT_TRANSLATE_NOOP("CoreText", "Profile velocity (PV)"),
-    QT_TRANSLATE_NOOP("CoreText", "Profile torque (PT)"),
-    QT_TRANSLATE_NOOP("CoreText", "Homing (HM)"),
-    QT_TRANSLATE_NOOP("CoreText", "Interpolated position (IP)"),
-    QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous position (CSP)"),
-    QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous velocity (CSV)"),
-    QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous torque (CST)"),
-    QT_TRANSLATE_NOOP("CoreText", "Start"),
-    QT_TRANSLATE_NOOP("CoreText", "Stop"),
-    QT_TRANSLATE_NOOP("CoreText", "Enter pre-operational"),
-    QT_TRANSLATE_NOOP("CoreText", "Reset node"),
-    QT_TRANSLATE_NOOP("CoreText", "Reset communication"),
-    QT_TRANSLATE_NOOP("CoreText", "Boot-up"),
-    QT_TRANSLATE_NOOP("CoreText", "Stopped"),
-    QT_TRANSLATE_NOOP("CoreText", "Operational"),
-    QT_TRANSLATE_NOOP("CoreText", "Pre-operational"),
-    QT_TRANSLATE_NOOP("CoreText", "Toggle bit not alternated"),
-    QT_TRANSLATE_NOOP("CoreText", "SDO protocol timed out"),
-    QT_TRANSLATE_NOOP("CoreText", "Client/server command specifier not valid or unknown"),
-    QT_TRANSLATE_NOOP("CoreText", "Invalid block size (block mode only)"),
-    QT_TRANSLATE_NOOP("CoreText", "Invalid sequence number (block mode only)"),
-    QT_TRANSLATE_NOOP("CoreText", "CRC error (block mode only)"),
-    QT_TRANSLATE_NOOP("CoreText", "Out of memory"),
-    QT_TRANSLATE_NOOP("CoreText", "Unsupported access to an object"),
-    QT_TRANSLATE_NOOP("CoreText", "Attempt to read a write-only object"),
-    QT_TRANSLATE_NOOP("CoreText", "Attempt to write a read-only object"),
-    QT_TRANSLATE_NOOP("CoreText", "Object does not exist in the object dictionary"),
-    QT_TRANSLATE_NOOP("CoreText", "Object cannot be mapped to the PDO"),
-    QT_TRANSLATE_NOOP("CoreText", "The number and length of the objects to be mapped would exceed the PDO length"),
-    QT_TRANSLATE_NOOP("CoreText", "General parameter incompatibility reason"),
-    QT_TRANSLATE_NOOP("CoreText", "General internal incompatibility in the device"),
-    QT_TRANSLATE_NOOP("CoreText", "Access failed due to a hardware error"),
-    QT_TRANSLATE_NOOP("CoreText", "Data type does not match, length of service parameter does not match"),
-    QT_TRANSLATE_NOOP("CoreText", "Data type does not match, length of service parameter too high"),
-    QT_TRANSLATE_NOOP("CoreText", "Data type does not match, length of service parameter too low"),
-    QT_TRANSLATE_NOOP("CoreText", "Sub-index does not exist"),
-    QT_TRANSLATE_NOOP("CoreText", "Invalid value for parameter (download only)"),
-    QT_TRANSLATE_NOOP("CoreText", "Value of parameter written too high (download only)"),
-    QT_TRANSLATE_NOOP("CoreText", "Value of parameter written too low (download only)"),
-    QT_TRANSLATE_NOOP("CoreText", "Maximum value is less than minimum value"),
-    QT_TRANSLATE_NOOP("CoreText", "Resource not available: SDO connection"),
-    QT_TRANSLATE_NOOP("CoreText", "General error"),
-    QT_TRANSLATE_NOOP("CoreText", "Data cannot be transferred or stored to the application"),
-    QT_TRANSLATE_NOOP("CoreText", "Data cannot be transferred or stored to the application because of local control"),
-    QT_TRANSLATE_NOOP("CoreText", "Data cannot be transferred or stored to the application because of the present device state"),
-    QT_TRANSLATE_NOOP("CoreText", "Object dictionary dynamic generation fails or no object dictionary is present"),
-    QT_TRANSLATE_NOOP("CoreText", "No data available"),
-    QT_TRANSLATE_NOOP("CoreText", "closed"),
-    QT_TRANSLATE_NOOP("CoreText", "opening"),
-    QT_TRANSLATE_NOOP("CoreText", "open"),
-    QT_TRANSLATE_NOOP("CoreText", "error"),
+
+// A listed text with placeholders, as an anchored expression: each %N becomes a lazy group.
+struct Pattern {
+    const char* source = nullptr;
+    QRegularExpression re;
+    std::vector<int> argOrder;  // group g holds %argOrder[g-1]
+    qsizetype literal = 0;      // letters outside the placeholders: longer patterns are tried first
 };
+
+constexpr qsizetype kPrefixKey = 3;  // patterns are bucketed by the first characters of their text
+
+struct Patterns {
+    std::vector<Pattern> all;
+    QHash<QString, std::vector<size_t>> byPrefix;  // literal prefix (kPrefixKey chars) -> patterns
+    std::vector<size_t> open;                      // patterns whose literal prefix is shorter
+
+    Patterns() {
+        static const QRegularExpression placeholder(QStringLiteral("%([1-9])"));
+        for (auto list : {coretext::names(), coretext::wizards(), coretext::trace()}) {
+            for (const char* text : list) {
+                const QString s = QString::fromUtf8(text);
+                if (!s.contains(placeholder)) continue;
+                Pattern p;
+                p.source = text;
+                QString re;
+                qsizetype at = 0;
+                auto it = placeholder.globalMatch(s);
+                while (it.hasNext()) {
+                    const auto m = it.next();
+                    const QString lit = s.mid(at, m.capturedStart() - at);
+                    re += QRegularExpression::escape(lit);
+                    p.literal += lit.size();
+                    re += QStringLiteral("(.*?)");
+                    p.argOrder.push_back(m.captured(1).toInt());
+                    at = m.capturedEnd();
+                }
+                const QString tail = s.mid(at);
+                re += QRegularExpression::escape(tail);
+                p.literal += tail.size();
+                p.re = QRegularExpression(QRegularExpression::anchoredPattern(re), QRegularExpression::DotMatchesEverythingOption);
+                p.re.optimize();
+                all.push_back(std::move(p));
+            }
+        }
+        std::stable_sort(all.begin(), all.end(), [](const Pattern& a, const Pattern& b) { return a.literal > b.literal; });
+        for (size_t i = 0; i < all.size(); ++i) {
+            const QString s = QString::fromUtf8(all[i].source);
+            const qsizetype firstArg = s.indexOf(u'%');
+            if (firstArg >= kPrefixKey) byPrefix[s.left(kPrefixKey)].push_back(i);
+            else open.push_back(i);
+        }
+    }
+};
+
+const Patterns& patterns() {
+    static const Patterns p;
+    return p;
+}
+
+// `translated` with each %N replaced by values[N-1] in one pass (a value may contain '%').
+QString fill(const QString& translated, const std::vector<QString>& values) {
+    QString out;
+    out.reserve(translated.size() + 32);
+    for (qsizetype i = 0; i < translated.size(); ++i) {
+        const QChar c = translated.at(i);
+        if (c == u'%' && i + 1 < translated.size() && translated.at(i + 1).isDigit()) {
+            const int n = translated.at(i + 1).digitValue();
+            if (n >= 1 && static_cast<size_t>(n) <= values.size()) {
+                out += values[static_cast<size_t>(n - 1)];
+                ++i;
+                continue;
+            }
+        }
+        out += c;
+    }
+    return out;
+}
+
+QString lookUp(const QString& english, int depth) {
+    if (english.isEmpty()) return english;
+    const QByteArray key = english.toUtf8();
+    const QString direct = QCoreApplication::translate("CoreText", key.constData());
+    if (direct != english || depth > 3) return direct;
+    const Patterns& ps = patterns();
+    auto tryOne = [&](size_t i, QString* out) {
+        const Pattern& p = ps.all[i];
+        const auto m = p.re.match(english);
+        if (!m.hasMatch()) return false;
+        const QString translated = QCoreApplication::translate("CoreText", p.source);
+        if (translated == QString::fromUtf8(p.source)) return false;
+        std::vector<QString> values(9);
+        for (size_t g = 0; g < p.argOrder.size(); ++g) values[static_cast<size_t>(p.argOrder[g] - 1)] = lookUp(m.captured(static_cast<int>(g + 1)), depth + 1);
+        *out = fill(translated, values);
+        return true;
+    };
+    QString out;
+    // Both lists are sorted longest-literal first; the bucket's patterns are the more specific.
+    if (const auto it = ps.byPrefix.constFind(english.left(kPrefixKey)); it != ps.byPrefix.constEnd())
+        for (size_t i : *it)
+            if (tryOne(i, &out)) return out;
+    for (size_t i : ps.open)
+        if (tryOne(i, &out)) return out;
+    return english;
+}
+
 }  // namespace
 
 QString coreText(const QString& english) {
-    const QByteArray key = english.toUtf8();
-    return QCoreApplication::translate("CoreText", key.constData());
+    if (language::current() == u"en") return english;
+    return lookUp(english, 0);
+}
+
+QString coreLines(const QString& english) {
+    if (language::current() == u"en") return english;
+    QStringList lines = english.split(u'\n');
+    for (QString& line : lines) {
+        const QString whole = lookUp(line, 0);
+        if (whole != line || !line.contains(QLatin1String("; "))) {
+            line = whole;
+            continue;
+        }
+        QStringList parts = line.split(QStringLiteral("; "));
+        for (QString& part : parts) part = lookUp(part, 0);
+        line = parts.join(QStringLiteral("; "));
+    }
+    return lines.join(u'\n');
+}
+
+QString coreJoined(const QString& english, const QString& separator) {
+    if (language::current() == u"en") return english;
+    const QString whole = lookUp(english, 0);
+    if (whole != english) return whole;
+    QStringList parts = english.split(separator);
+    for (QString& part : parts) part = lookUp(part, 0);
+    return parts.join(separator);
 }
 
 }  // namespace coscope::gui

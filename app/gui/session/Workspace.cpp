@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/session/Workspace.h"
+#include "app/gui/language/CoreText.h"
 
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
@@ -88,7 +89,7 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     bus_ = std::move(bus);
     sourceName_ = bus_->url().toString();
     connect(bus_.get(), &CanBus::stateChanged, this, [this](CanBus::State s) {
-        if (s == CanBus::State::Error && bus_) events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, bus_->errorString()});
+        if (s == CanBus::State::Error && bus_) events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, [why = bus_->errorString()] { return coreText(why); }));
         if (bus_) noteLostAdapter(s);
         emit busStateChanged(s);
     });
@@ -119,16 +120,18 @@ void Workspace::noteLostAdapter(CanBus::State s) {
         lostSinceNs_ = bus_->lostSinceNs() ? bus_->lostSinceNs() : nowNs();
         const FrameNo from = static_cast<FrameNo>(store_->size());
         nodes_.markGap(from);
-        events_.add({TraceEvent::Kind::BusError, lostSinceNs_, kNoFrame, -1,
-                     tr("Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.").arg(bus_->errorString())});
+        events_.add(renderedEvent(TraceEvent::Kind::BusError, lostSinceNs_, kNoFrame, -1, [why = bus_->errorString()] {
+            return tr("Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.").arg(coreText(why));
+        }));
         spdlog::warn("bus {} lost: {}", sourceName_.toStdString(), bus_->errorString().toStdString());
     } else if (s == CanBus::State::Open && lostSinceNs_ != 0) {
         const int64_t back = nowNs();
         const FrameNo first = static_cast<FrameNo>(store_->size());
         store_->addGap({first, lostSinceNs_, back});
         events_.restartHeartbeatWaits(back);
-        events_.add({TraceEvent::Kind::Info, back, first, -1,
-                     tr("Bus back after %1 s: frames between are missing from the trace").arg(double(back - lostSinceNs_) / 1e9, 0, 'f', 1)});
+        events_.add(renderedEvent(TraceEvent::Kind::Info, back, first, -1, [s = double(back - lostSinceNs_) / 1e9] {
+            return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
+        }));
         spdlog::info("bus {} back after {:.1f} s", sourceName_.toStdString(), double(back - lostSinceNs_) / 1e9);
         lostSinceNs_ = 0;
     }
@@ -265,7 +268,12 @@ void Workspace::poll() {
         const QString message = tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
                                     .arg(journal_->path(), journal_->errorString())
                                     .arg(store_->size());
-        events_.add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, message});
+        events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1,
+                                  [path = journal_->path(), why = journal_->errorString(), frames = store_->size()] {
+                                      return tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
+                                          .arg(path, coreText(why))
+                                          .arg(frames);
+                                  }));
         disconnectBus();
         emit captureStopped(message);
         return;
@@ -274,8 +282,9 @@ void Workspace::poll() {
     if (lostSinceNs_ == 0) events_.checkHeartbeats(nowNs());
     const auto c = bus_->counters();
     if (c.dropped > reportedDropped_) {
-        events_.add({TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1,
-                     tr("%n frame(s) dropped (receive queue full), %1 in total", nullptr, static_cast<int>(c.dropped - reportedDropped_)).arg(c.dropped)});
+        events_.add(renderedEvent(TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1, [now = c.dropped - reportedDropped_, total = c.dropped] {
+            return tr("%n frame(s) dropped (receive queue full), %1 in total", nullptr, static_cast<int>(now)).arg(total);
+        }));
         reportedDropped_ = c.dropped;
     }
     reportedErrors_ = c.errors;

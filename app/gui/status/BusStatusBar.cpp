@@ -147,11 +147,11 @@ void BusStatusBar::restartController() {
     if (!bus) return;
     QString why;
     if (bus->restartController(&why)) {
-        workspace_->events().add({TraceEvent::Kind::Info, nowNs(), kNoFrame, -1, tr("Controller restarted after bus-off")});
+        workspace_->events().add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, -1, [] { return tr("Controller restarted after bus-off"); }));
         return;
     }
     // Said where the user looks, and kept in the Events.
-    workspace_->events().add({TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, tr("Restart after bus-off failed: %1").arg(why)});
+    workspace_->events().add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, [why] { return tr("Restart after bus-off failed: %1").arg(coreText(why)); }));
     if (auto* bar = qobject_cast<QStatusBar*>(parent())) bar->showMessage(tr("Restart after bus-off failed: %1").arg(why), 10000);
     restart_->setToolTip(tr("Last restart failed: %1").arg(why));
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/language/CoreText.h"
 
 #include "core/canopen/CobId.h"
 #include "dissectors/NetworkContext.h"
@@ -428,8 +429,13 @@ QString TraceModel::summaryOf(FrameNo n) const {
     if (summaries_.size() >= kSummaryCacheLimit) summaries_.clear();
     scratch_.reset(dissect::Dissection::Level::Flat);
     decoder_->decodeAt(*store_, n, scratch_);
-    QString text = scratch_.summary;
-    if (!scratch_.warnings.isEmpty()) text += QStringLiteral("  ⚠ ") + scratch_.warnings.join(QStringLiteral("; "));
+    // The dissectors write English (the CLI's words); the row shows the UI language (CoreText.h).
+    QString text = coreLines(scratch_.summary);
+    if (!scratch_.warnings.isEmpty()) {
+        QStringList warnings = scratch_.warnings;
+        for (QString& w : warnings) w = coreText(w);
+        text += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
+    }
     return summaries_.emplace(n, text).first->second;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/ScriptPreview.h"
+#include "app/gui/language/CoreText.h"
 
 #include <QFileDialog>
 #include <QFontDatabase>
@@ -67,12 +68,13 @@ void ScriptPreview::setScript(const canopen::CommandScript& script) {
         auto* num = new QTableWidgetItem(QString::number(i + 1));
         num->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(i, Number, num);
-        table_->setItem(i, What, new QTableWidgetItem(s.describe()));
+        table_->setItem(i, What, new QTableWidgetItem(coreText(s.describe())));
         auto* line = new QTableWidgetItem(s.toLine());
         line->setFont(fixed);
         table_->setItem(i, Line, line);
-        auto* why = new QTableWidgetItem(QString(s.why).replace(u'\n', u' '));
-        why->setToolTip(s.why);
+        const QString whyText = coreLines(s.why);
+        auto* why = new QTableWidgetItem(QString(whyText).replace(u'\n', u' '));
+        why->setToolTip(whyText);
         table_->setItem(i, Why, why);
         table_->setItem(i, Result, new QTableWidgetItem());
         states_ << QString();
@@ -91,10 +93,11 @@ void ScriptPreview::markStep(int step, bool ok, const QString& detail) {
     if (step < 0 || step >= table_->rowCount()) return;
     setRowColour(step, ok ? QColor(205, 240, 205) : QColor(255, 205, 205));
     QTableWidgetItem* result = table_->item(step, Result);
-    const QString text = ok ? (detail.isEmpty() ? tr("done") : detail) : (detail.isEmpty() ? tr("failed") : detail);
+    const QString shown = coreText(detail);
+    const QString text = ok ? (detail.isEmpty() ? tr("done") : shown) : (detail.isEmpty() ? tr("failed") : shown);
     result->setText(text);
     for (int c = 0; c < ColumnCount; ++c)
-        if (auto* item = table_->item(step, c)) item->setToolTip(c == Why ? script_.steps[static_cast<size_t>(step)].why + u'\n' + text : text);
+        if (auto* item = table_->item(step, c)) item->setToolTip(c == Why ? coreLines(script_.steps[static_cast<size_t>(step)].why) + u'\n' + text : text);
     states_[step] = ok ? QStringLiteral("done") : QStringLiteral("failed: ") + detail;
     table_->scrollToItem(result);
 }

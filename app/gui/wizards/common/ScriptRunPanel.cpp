@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/ScriptRunPanel.h"
+#include "app/gui/language/CoreText.h"
 
 #include "app/gui/wizards/common/BusLossAdvice.h"
 
@@ -117,7 +118,7 @@ bool ScriptRunPanel::run(QString* why) {
     const bool ok = runner_->run(preview_->script(), [this](const canopen::ScriptRunResult& r) {
         if (r.ok) setStatus(tr("Done: %n step(s) completed.", nullptr, r.stepsDone));
         else if (r.cancelled) setStatus(stopReason_.isEmpty() ? tr("Stopped at step %1; nothing further was sent.").arg(r.failedStep + 1) : stopReason_);
-        else setStatus(tr("Failed at %1").arg(r.error));
+        else setStatus(tr("Failed at %1").arg(coreText(r.error)));
         updateButtons();
         emit finished(r);
     });

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/WizardFramesPane.h"
+#include "app/gui/language/CoreText.h"
 
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/CobId.h"
@@ -167,8 +168,12 @@ struct WizardFramesPane::Private {
         if (decoder) {
             scratch.reset(dissect::Dissection::Level::Flat);
             decoder->decodeAt(*store, n, scratch);
-            row.summary = scratch.summary;
-            if (!scratch.warnings.isEmpty()) row.summary += QStringLiteral("  ⚠ ") + scratch.warnings.join(QStringLiteral("; "));
+            row.summary = coreLines(scratch.summary);  // the dissectors' English in the UI language
+            if (!scratch.warnings.isEmpty()) {
+                QStringList warnings = scratch.warnings;
+                for (QString& w : warnings) w = coreText(w);
+                row.summary += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
+            }
         }
         return row;
     }

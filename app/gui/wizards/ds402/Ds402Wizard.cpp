@@ -198,6 +198,7 @@ void Ds402Wizard::buildUi() {
     disable_->setToolTip(tr("Removes power from the motor: Shutdown then Disable voltage (6040h = 0006h, 0000h)."));
     connect(disable_, &QPushButton::clicked, this, &Ds402Wizard::disableDrive);
     dryRun_ = new QPushButton(tr("Dry run"), this);
+    dryRun_->setObjectName(QStringLiteral("dryRun"));
     dryRun_->setToolTip(tr("Show the exact SDO sequence of the enable, without sending anything."));
     connect(dryRun_, &QPushButton::clicked, this, [this] { dryRun(); });
     auto* close = new QPushButton(tr("Close"), this);

@@ -81,8 +81,8 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         }
         // Failed: say which step and what the drive answered, then leave it disabled.
         if (r.statusword || r.state != State::Unknown) self->showState(r.state, r.statusword);
-        QString text = tr("Step “%1” failed: %2.").arg(name, r.error);
-        if (!r.advice.isEmpty()) text += QStringLiteral("\n") + r.advice + QStringLiteral(".");
+        QString text = tr("Step “%1” failed: %2.").arg(name, coreText(r.error));
+        if (!r.advice.isEmpty()) text += QStringLiteral("\n") + coreJoined(r.advice, QStringLiteral(". ")) + QStringLiteral(".");
         self->setMessage(text, true);
         if (!self->ctl_) return;
         self->ctl_->disableVoltage([self, text, command](const Ds402Result& d0) {
@@ -91,7 +91,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
                 if (!self) return;
                 self->busy_ = false;
                 QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(coreText(canopen::ds402::stateName(d.state)))
-                                         : tr("\nDISABLING FAILED: %1").arg(d.error));
+                                         : tr("\nDISABLING FAILED: %1").arg(coreText(d.error)));
                 if (d.ok) self->showState(d.state, d.statusword);
                 self->reading_ = true;
                 self->afterState(d, [self, t] {
@@ -149,7 +149,7 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
             self->mode_->showVerified(r.mode);
             self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.").arg(coreText(canopen::ds402::modeName(r.mode))));
         } else {
-            self->setMessage(tr("Could not set %1: %2").arg(coreText(canopen::ds402::modeName(mode)), r.error), true);
+            self->setMessage(tr("Could not set %1: %2").arg(coreText(canopen::ds402::modeName(mode)), coreText(r.error)), true);
         }
         self->updateButtons();
         emit self->modeFinished(r.ok);
@@ -222,7 +222,7 @@ bool Ds402Wizard::pressHoldToRun(QString* why) {
             self->feed_->stop();
             self->holding_ = false;
             if (r.ok) self->setMessage(tr("Test move stopped: %1. The drive stays enabled; press Disable when done.").arg(r.stopReason));
-            else self->setMessage(tr("Test move failed: %1").arg(r.error), true);
+            else self->setMessage(tr("Test move failed: %1").arg(coreText(r.error)), true);
             self->refresh();
             self->updateButtons();
             emit self->testMoveFinished(r.ok);
@@ -279,7 +279,7 @@ void Ds402Wizard::showStopped(const Ds402Result& r, const QString& doneText, con
         showState(r.state, r.statusword);
         setMessage(doneText.arg(coreText(canopen::ds402::stateName(r.state))));
     } else {
-        setMessage(tr("%1: %2").arg(what, r.error), true);
+        setMessage(tr("%1: %2").arg(what, coreText(r.error)), true);
     }
     refresh();
 }

@@ -264,10 +264,10 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
         if (r.error.contains(QStringLiteral("06020000")) || r.error.contains(QStringLiteral("does not exist"), Qt::CaseInsensitive)) {
             cia402_ = false;
             poll_->stop();
-            setMessage(tr("Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).").arg(node_).arg(r.error), true);
+            setMessage(tr("Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).").arg(node_).arg(coreText(r.error)), true);
             setProperty("screenshotReady", true);
         } else {
-            setMessage(tr("Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.").arg(r.error), true);
+            setMessage(tr("Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.").arg(coreText(r.error)), true);
         }
         return then();
     }
@@ -290,7 +290,7 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
                 const uint16_t code = e.ok ? static_cast<uint16_t>(le32(e.data)) : 0;
                 self->readObject(0x1003, 1, [self, then, code, e](const SdoResult& h) {
                     const Ds402Fault f = describeDs402Fault(self->dictionary_, code, h.ok ? le32(h.data) : 0);
-                    self->faultText_ = e.ok ? f.text() : tr("Error code 603Fh could not be read: %1").arg(e.error);
+                    self->faultText_ = e.ok ? f.text() : tr("Error code 603Fh could not be read: %1").arg(coreText(e.error));
                     self->status_->setFaultText(self->faultText_);
                     self->setProperty("screenshotReady", true);
                     then();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
+#include "app/gui/language/CoreText.h"
 
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/session/Workspace.h"
@@ -161,7 +162,7 @@ void NodeIdWizard::findUnconfigured() {
     fastscanLss_->fastscan([self](const canopen::LssResult& r) {
         if (!self) return;
         if (!r.ok) {
-            emit self->fastscanFinished(false, r.noSlave ? tr("No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.") : r.error);
+            emit self->fastscanFinished(false, r.noSlave ? tr("No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.") : coreText(r.error));
             return;
         }
         self->request_.node = 0xFF;
@@ -238,7 +239,7 @@ QString NodeIdWizard::blockingProblem() const {
     canopen::NodeSettingsRequest r = request_;
     r.bitRate = busBitRate();
     QString error;
-    if (!canopen::planNodeSettings(r, &error)) return error;
+    if (!canopen::planNodeSettings(r, &error)) return coreText(error);
     return {};
 }
 
@@ -255,11 +256,11 @@ QString NodeIdWizard::explanation() const {
     else
         parts << tr("<b>How:</b> CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).").arg(vendorParameterName());
     if (p) {
-        QString when = p->takesEffect;
+        QString when = coreText(p->takesEffect);
         while (when.endsWith(u'.')) when.chop(1);  // the sentence gets its own full stop
         parts << tr("<b>Takes effect:</b> %1.").arg(when.toHtmlEscaped());
     }
-    if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(v->note.toHtmlEscaped());
+    if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(coreText(v->note).toHtmlEscaped());
     if (request_.change == Change::BitRate) {
         QStringList others;
         for (int n : knownNodes())
@@ -270,8 +271,8 @@ QString NodeIdWizard::explanation() const {
                           bitRateText(request_.newBitRate > 0 ? request_.newBitRate : busBitRate()));
         parts << tr("CoScope reconnects at the new bit rate by itself and waits for %1 there.").arg(who);
     }
-    if (p) parts << tr("<b>If it does not come back:</b> %1").arg(p->recovery.toHtmlEscaped());
-    else if (!error.isEmpty()) parts << tr("<b style='color:#a40000'>Cannot do this:</b> %1").arg(error.toHtmlEscaped());
+    if (p) parts << tr("<b>If it does not come back:</b> %1").arg(coreText(p->recovery).toHtmlEscaped());
+    else if (!error.isEmpty()) parts << tr("<b style='color:#a40000'>Cannot do this:</b> %1").arg(coreText(error).toHtmlEscaped());
     return parts.join(QStringLiteral("<br>"));
 }
 
@@ -336,8 +337,8 @@ void NodeIdWizard::runPart(int part) {
         [self, part](const canopen::NodeSettingsOutcome& out) {
             if (!self) return;
             if (!out.ok) {
-                QString text = tr("Stopped at %1.\nThe device answered: %2\nWhat to check: %3").arg(out.step, out.answer, out.advice);
-                if (!out.restored.isEmpty()) text += QStringLiteral("\n") + out.restored;
+                QString text = tr("Stopped at %1.\nThe device answered: %2\nWhat to check: %3").arg(coreText(out.step), coreText(out.answer), coreText(out.advice));
+                if (!out.restored.isEmpty()) text += QStringLiteral("\n") + coreText(out.restored);
                 return self->finish(false, text);
             }
             if (part == 0 && self->plan_->reconnect) return self->reconnect();
@@ -394,8 +395,9 @@ void NodeIdWizard::followChange(int from, int to) {
     if (from >= 1 && from <= 127 && from != to) {
         nodes.moveNode(from, to);
         workspace_->events().forgetNode(from);  // its heartbeats come from `to` now
-        workspace_->events().add({TraceEvent::Kind::Info, nowNs(), kNoFrame, to,
-                                  tr("Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)").arg(from).arg(to)});
+        workspace_->events().add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, to, [from, to] {
+            return tr("Node %1 now answers at node-ID %2 (Baud rate and node-ID wizard)").arg(from).arg(to);
+        }));
         workspace_->syncDictionaries();
     }
     // Ask the device at its new ID (or rate) who it is (1018h): confirms the entry, and gives a

@@ -27,10 +27,11 @@ QString PdoFrameLayout::layoutText() const {
     int bit = 0;
     for (const Field& f : fields_) {
         const int first = bit / 8, last = (bit + std::max(f.bits, 1) - 1) / 8;
-        parts << (first == last ? QStringLiteral("byte %1: %3").arg(first) : QStringLiteral("byte %1-%2: %3").arg(first).arg(last)).arg(f.label);
+        //: PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)
+        parts << (first == last ? tr("byte %1: %3").arg(first) : tr("byte %1-%2: %3").arg(first).arg(last)).arg(f.label);
         bit += f.bits;
     }
-    parts << QStringLiteral("%1 of 64 bits").arg(bit);
+    parts << tr("%1 of 64 bits").arg(bit);
     return parts.join(QStringLiteral("; "));
 }
 

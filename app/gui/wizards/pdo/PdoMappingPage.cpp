@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/pdo/PdoMappingPage.h"
+#include "app/gui/language/CoreText.h"
 
 #include "app/gui/wizards/pdo/PdoFrameLayout.h"
 #include "app/gui/wizards/pdo/PdoWizard.h"
@@ -157,7 +158,7 @@ bool PdoMappingPage::addObject(uint16_t index, uint8_t sub, QString* why) {
     QString error;
     if (!canopen::validatePdoMapping(one, s.pdo, s.dictionary.get(), &error)) {
         if (why) *why = error;
-        summary_->setText(tr("Cannot add: %1").arg(error));
+        summary_->setText(tr("Cannot add: %1").arg(coreText(error)));
         return false;
     }
     s.wanted.entries.push_back(one.front());

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/pdo/PdoWizard.h"
+#include "app/gui/language/CoreText.h"
 
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/BusLossAdvice.h"
@@ -256,7 +257,7 @@ canopen::CommandScript PdoWizard::dryRun(QString* error) const {
     if (!cfg) return fail(sendRefusal());
     QString why;
     script = cfg->plan(static_cast<uint8_t>(state_.node), state_.pdo, state_.wanted, state_.dictionary.get(), &why);
-    if (script.steps.empty()) return fail(why);
+    if (script.steps.empty()) return fail(coreText(why));
     script.title = tr("PDO mapping: %1 of node %2").arg(state_.pdo.name()).arg(state_.node);
     if (store_ && canStore()) {
         canopen::ScriptStep s;
@@ -320,8 +321,8 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
         if (r.failedStepNumber >= 0) failedRow = 1 + r.failedStepNumber;
         else if (r.failedStep == u"verify") failedRow = 1 + writes;
         for (int i = 0; i < failedRow; ++i) pv->markStep(i, true);
-        pv->markStep(failedRow, false, r.error);
-        const QString stepWhy = failedRow < static_cast<int>(applied_.steps.size()) ? applied_.steps[static_cast<size_t>(failedRow)].why : QString();
+        pv->markStep(failedRow, false, coreText(r.error));
+        const QString stepWhy = failedRow < static_cast<int>(applied_.steps.size()) ? coreLines(applied_.steps[static_cast<size_t>(failedRow)].why) : QString();
         QStringList lines;
         lines << tr("Stopped at step %1 of %2: %3%4.").arg(failedRow + 1).arg(applied_.steps.size()).arg(stepWhy, r.failedStep.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(r.failedStep));
         // r.error: "<step> failed: <answer>; previous mapping restored" -> the answer alone.
@@ -331,7 +332,7 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
             const qsizetype at = answer.indexOf(tail);
             if (at >= 0) answer.truncate(at);
         }
-        lines << tr("What the drive answered: %1").arg(answer);
+        lines << tr("What the drive answered: %1").arg(coreText(answer));
         const bool timedOut = r.error.contains(QStringLiteral("timed out"), Qt::CaseInsensitive) || r.error.contains(QStringLiteral("no answer"), Qt::CaseInsensitive);
         lines << tr("What to check: %1").arg(pdoFailureAdvice(r.abortCode, timedOut, state_.dictionaryName));
         if (r.restored) {
@@ -340,7 +341,7 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
             state_.current = r.previous;
         } else if (!r.steps.isEmpty()) {
             lines << tr("Writing the previous settings back failed as well (%1): read the PDO again and check it before starting the drive.")
-                         .arg(r.error.section(QStringLiteral("; restoring the previous mapping failed too: "), 1));
+                         .arg(coreText(r.error.section(QStringLiteral("; restoring the previous mapping failed too: "), 1)));
         } else {
             lines << tr("Nothing was changed on the drive.");
         }
@@ -365,7 +366,7 @@ void PdoWizard::runStoreAndStart(int row) {
         QString error;
         if (!nmt_ || !nmt_->start(node, &error)) {
             preview()->markStep(at, false, error);
-            return finishApply(false, text + tr(" Starting the drive failed: %1").arg(error));
+            return finishApply(false, text + tr(" Starting the drive failed: %1").arg(coreText(error)));
         }
         preview()->markStep(at, true);
         Q_UNUSED(row);
@@ -375,10 +376,10 @@ void PdoWizard::runStoreAndStart(int row) {
     QPointer<PdoWizard> self(this);
     workspace_->sdo()->download(node, 0x1010, 1, le32(kSaveSignature), [self, row, done, start](const canopen::SdoResult& r) {
         if (!self || !self->applying_) return;
-        self->preview()->markStep(row, r.ok, r.ok ? QString() : r.error);
+        self->preview()->markStep(row, r.ok, r.ok ? QString() : coreText(r.error));
         if (!r.ok)
             return self->finishApply(false, done + tr("\nBut storing failed (%1): the new mapping works now and is lost at power-off. %2")
-                                                    .arg(r.error, pdoFailureAdvice(r.serverAborted ? r.abortCode : 0, r.timedOut, self->state_.dictionaryName)));
+                                                    .arg(coreText(r.error), pdoFailureAdvice(r.serverAborted ? r.abortCode : 0, r.timedOut, self->state_.dictionaryName)));
         start(row + 1, done + tr(" Stored in the drive (kept after power-off)."));
     });
 }

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <span>
+
+namespace coscope::gui::coretext {
+
+// The English texts of the lower layers the GUI translates (context "CoreText"), one list per
+// area. Each entry is exactly what the lower layer writes; "%1".."%9" stand for the values it
+// fills in (CoreText.h).
+std::span<const char* const> names();      // CoreTextNames.cpp: states, commands, modes, aborts
+std::span<const char* const> wizards();    // CoreTextWizards.cpp: script steps, controller errors
+std::span<const char* const> trace();      // CoreTextTrace.cpp: dissector summaries, health findings
+
+}  // namespace coscope::gui::coretext
