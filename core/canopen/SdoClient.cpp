@@ -5,6 +5,7 @@
 #include "core/canopen/SdoAbort.h"
 #include "core/canopen/SdoBlockFrames.h"
 
+#include <QCoreApplication>
 #include <QTimer>
 
 #include <spdlog/spdlog.h>
@@ -419,6 +420,14 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
 void SdoClient::onTimeout(uint8_t node) {
     auto it = queues_.find(node);
     if (it == queues_.end() || !it->second->active) return;
+    // The answer may be waiting in this thread's queue already: a thread that was busy for longer
+    // than the timeout (a slow machine, a sanitizer build, a long repaint) sees the timer and the
+    // answer together, and may take the timer first. The timeout is about the server, not about
+    // us: deliver what has arrived, then decide.
+    const Transfer* waiting = it->second->active.get();
+    QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
+    it = queues_.find(node);
+    if (it == queues_.end() || it->second->active.get() != waiting || it->second->timer->isActive()) return;  // answered
     NodeQueue& q = *it->second;
     Transfer& t = *q.active;
     const int ms = t.options.timeoutMs > 0 ? t.options.timeoutMs : defaultTimeoutMs_;

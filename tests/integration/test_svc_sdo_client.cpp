@@ -12,6 +12,11 @@
 
 #include <QtTest>
 
+#include <atomic>
+#include <chrono>
+#include <optional>
+#include <thread>
+
 using namespace coscope;
 using namespace coscope::canopen;
 using namespace svctest;
@@ -208,6 +213,54 @@ private slots:
         QCOMPARE(req.size(), size_t(2));  // the request once, then our abort
         QCOMPARE(bytesOf(req[0]), hex("2F60600001000000"));
         QCOMPARE(bytesOf(req[1]), hex("8060600000000405"));
+    }
+
+    // An answer already waiting for the client when its timer is handled is an answer: a thread
+    // busy for longer than the timeout (a long repaint, a sanitizer build) meets the expired timer
+    // and the answer together, and another expired timer may run first and let the answer in.
+    // Received frames are processed before the timeout is checked (as CANopenNode's SDO client
+    // does); what made the Nodes dock identify no node after connecting under ASan.
+    void answerWaitingWhenTheTimerIsHandledIsNoTimeout() {
+        using namespace std::chrono_literals;
+        Rig rig;
+        auto* n = rig.addNode(5);
+        auto release = std::make_shared<std::atomic<bool>>(false);
+        n->setScript([release](const CanFrame& in, ScriptedNode& node) {
+            if (in.data[0] != 0x40) return;
+            for (int i = 0; i < 20000 && !release->load(); ++i) std::this_thread::sleep_for(1ms);
+            node.reply({0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00});
+        });
+        QVERIFY(rig.open());
+        SdoClient client(*rig.context);
+        SdoOptions o;
+        o.timeoutMs = 100;
+        const auto& store = rig.session.store();
+        // Expires before the transfer's timer: the node answers now, and the answer is queued
+        // for the client before the transfer's timer is handled in the same pass.
+        QTimer before;
+        before.setSingleShot(true);
+        before.setTimerType(Qt::PreciseTimer);
+        bool answerQueued = false;
+        connect(&before, &QTimer::timeout, [&] {
+            release->store(true);
+            for (int i = 0; i < 20000 && !answerQueued; ++i) {
+                const size_t size = store->size();
+                answerQueued = size > 0 && store->record(static_cast<FrameNo>(size - 1)).id == 0x585u;
+                std::this_thread::sleep_for(1ms);
+            }
+            std::this_thread::sleep_for(200ms);  // the capture thread hands it on right after storing it
+        });
+        std::optional<SdoResult> result;
+        before.start(10);
+        client.upload(5, 0x1000, 0, [&](const SdoResult& r) { result = r; }, o);
+        QCoreApplication::sendPostedEvents(&client, QEvent::MetaCall);  // the request goes out, its timer starts
+        for (int i = 0; i < 20000 && n->seen().empty(); ++i) std::this_thread::sleep_for(1ms);
+        std::this_thread::sleep_for(300ms);  // busy: both timers expire
+        QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), 10000);
+        QVERIFY(answerQueued);
+        QVERIFY2(result->ok, qPrintable(result->error));
+        QCOMPARE(result->data, hex("92010200"));
+        QCOMPARE(n->seen().size(), size_t(1));  // no abort went out
     }
 
     void defaultTimeoutIsOneSecond() {
