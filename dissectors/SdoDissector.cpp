@@ -162,26 +162,25 @@ void dissectSdo(DissectCall& c) {
     default: break;
     }
 
+    // An initiate frame that carries data: its value, or the size a segmented transfer announces.
+    const auto appendInitiatedData = [&](QString& text) {
+        if (f.expedited) {
+            text += QLatin1StringView(" = ");
+            text += valueTextOut;
+        } else {
+            text += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
+        }
+    };
     switch (f.command) {
     case SdoCommand::InitiateDownloadRequest:
         startSummary(s, QLatin1StringView("SDO write "), c.node, f.index, f.sub, name);
-        if (f.expedited) {
-            s += QLatin1StringView(" = ");
-            s += valueTextOut;
-        } else {
-            s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
-        }
+        appendInitiatedData(s);
         break;
     case SdoCommand::InitiateDownloadResponse: startSummary(s, QLatin1StringView("SDO write ok "), c.node, f.index, f.sub, name); break;
     case SdoCommand::InitiateUploadRequest: startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name); break;
     case SdoCommand::InitiateUploadResponse:
         startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name);
-        if (f.expedited) {
-            s += QLatin1StringView(" = ");
-            s += valueTextOut;
-        } else {
-            s += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
-        }
+        appendInitiatedData(s);
         break;
     case SdoCommand::Abort:
         s = QStringLiteral("SDO abort %1 %2: %3 %4").arg(whoText(), objectLabel(f.index, f.sub, name), hex(f.abortCode, 8), abortText(n, f.abortCode));

@@ -10,16 +10,13 @@
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/RawSignal.h"
+#include "app/cli/TextWriter.h"
 
-#include <condition_variable>
 #include <cstdio>
 #include <cstring>
-#include <deque>
 #include <memory>
-#include <mutex>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace coscope::cli {
@@ -46,109 +43,6 @@ bool applyDicts(dissect::NetworkContext& ctx, const QStringList& dicts, int* cod
     }
     return true;
 }
-
-// --format text on a thread of its own: the decoding thread hands over each batch's frames with
-// their summaries, warnings and transfer lines; this thread formats the lines with appendText()
-// (the same bytes as formatting them in place) and writes them to stdout.
-class TextWriter {
-public:
-    struct Line {
-        uint32_t frame = 0;           // index in Job::frames
-        uint32_t summaryAt = 0, summaryLength = 0;  // in Job::summaries
-        int warningAt = 0, warningCount = 0;        // in Job::warnings
-        int transferAt = 0, transferLength = 0;     // in Job::transfers (appendTransferText)
-    };
-    struct Job {
-        std::vector<CanFrame> frames;
-        std::vector<Line> lines;
-        std::u16string summaries;
-        QStringList warnings;
-        QByteArray transfers;
-        QStringList busNames;
-    };
-
-    TextWriter() : thread_([this] { run(); }) {}
-    ~TextWriter() { finish(); }
-    TextWriter(const TextWriter&) = delete;
-    TextWriter& operator=(const TextWriter&) = delete;
-
-    // An empty job to fill (recycled, so its buffers keep their capacity).
-    std::unique_ptr<Job> take() {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return !free_.empty() || created_ < kDepth; });
-        if (free_.empty()) {
-            ++created_;
-            return std::make_unique<Job>();
-        }
-        auto job = std::move(free_.back());
-        free_.pop_back();
-        return job;
-    }
-    void submit(std::unique_ptr<Job> job) {
-        std::lock_guard lock(mutex_);
-        queue_.push_back(std::move(job));
-        changed_.notify_all();
-    }
-    // Writes what is queued and ends the thread.
-    void finish() {
-        {
-            std::lock_guard lock(mutex_);
-            done_ = true;
-            changed_.notify_all();
-        }
-        if (thread_.joinable()) thread_.join();
-    }
-
-private:
-    static constexpr size_t kDepth = 4;
-    void run() {
-        QByteArray out;
-        out.reserve(1 << 21);
-        dissect::Dissection d;
-        const QString bus0 = QStringLiteral("can0");
-        for (;;) {
-            std::unique_ptr<Job> job;
-            {
-                std::unique_lock lock(mutex_);
-                changed_.wait(lock, [&] { return !queue_.empty() || done_; });
-                if (queue_.empty()) break;
-                job = std::move(queue_.front());
-                queue_.pop_front();
-            }
-            for (const Line& l : job->lines) {
-                const CanFrame& f = job->frames[l.frame];
-                d.summary.resize(static_cast<qsizetype>(l.summaryLength));
-                if (l.summaryLength) std::memcpy(static_cast<void*>(d.summary.data()), job->summaries.data() + l.summaryAt, l.summaryLength * sizeof(char16_t));
-                if (!d.warnings.isEmpty()) d.warnings.clear();
-                for (int i = 0; i < l.warningCount; ++i) d.warnings.append(job->warnings[l.warningAt + i]);
-                const QString& bus = f.bus < job->busNames.size() ? job->busNames[f.bus] : bus0;
-                dissect::appendText(out, f, d, bus);
-                if (l.transferLength) out.append(job->transfers.constData() + l.transferAt, l.transferLength);
-            }
-            if (out.size() > (1 << 20)) {
-                std::fwrite(out.constData(), 1, static_cast<size_t>(out.size()), stdout);
-                out.resize(0);
-            }
-            job->lines.clear();
-            job->summaries.clear();
-            job->warnings.clear();
-            job->transfers.resize(0);
-            std::lock_guard lock(mutex_);
-            free_.push_back(std::move(job));
-            changed_.notify_all();
-        }
-        std::fwrite(out.constData(), 1, static_cast<size_t>(out.size()), stdout);
-        std::fflush(stdout);
-    }
-
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::deque<std::unique_ptr<Job>> queue_;
-    std::vector<std::unique_ptr<Job>> free_;
-    size_t created_ = 0;
-    bool done_ = false;
-    std::thread thread_;  // last: starts when the rest is ready
-};
 
 int runDecode(const QStringList& args) {
     QCommandLineParser parser;
