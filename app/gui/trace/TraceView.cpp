@@ -116,6 +116,8 @@ void TraceView::syncBar() {
     bar_->setPageStep(std::max(1, inner->pageStep()));
     bar_->setSingleStep(1);
     bar_->setValue(window_->base() + inner->value());
+    const bool needed = bar_->maximum() > 0;  // shown as needed, as the view's own would be
+    if (needed == bar_->isHidden()) bar_->setVisible(needed);
 }
 
 void TraceView::updateGeometries() {
