@@ -2,7 +2,7 @@
 // Resident memory flat in the live trace (issue 16 "Bounded memory"): the trace's table shows a
 // window of at most about trace/windowRows rows (Qt keeps bytes per row in its views), set small
 // here, and yet a live capture of many times that is followed to its newest frame, and End, Home,
-// PgDn, the wheel and the trace's scroll bar reach every frame with its own number, the details
+// PgDn, the wheel, the trace's scroll bar and Find reach every frame with its own number, the details
 // pane showing the selected one.
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/Workspace.h"
@@ -13,6 +13,7 @@
 
 #include <QFile>
 #include <QHeaderView>
+#include <QLineEdit>
 #include <QScrollBar>
 #include <QSettings>
 #include <QTableView>
@@ -21,10 +22,12 @@
 #include <QWheelEvent>
 #include <QtTest>
 
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
 using namespace coscope::gui;
+using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 
 namespace {
@@ -163,6 +166,13 @@ private slots:
         QTest::keyClick(view, Qt::Key_Down);
         QCOMPARE(currentNumber(view), qulonglong(2));
         QVERIFY(waitFor([&] { return detailsTitle(dock) == QStringLiteral("Frame 2"); }, 3000));
+
+        // Find reaches a frame many windows away (frame 40000 carries 0x9C3F): it is selected,
+        // shown with its own number, its details in the pane.
+        typeAndEnter(dock->findChild<QLineEdit*>(QStringLiteral("findEdit")), QStringLiteral("00 9C 3F"));
+        QCOMPARE(currentNumber(view), qulonglong(kFrames));
+        QVERIFY(waitFor([&] { return detailsTitle(dock) == QStringLiteral("Frame %1").arg(kFrames); }, 3000));
+        QVERIFY(view->model()->rowCount() <= kMaxRows);
     }
 };
 
