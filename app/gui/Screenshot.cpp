@@ -11,6 +11,7 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -55,7 +56,7 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
         timer->stop();
         window->refresh();
         if (view == u"trace") {  // show a decoded frame in the details pane
-            QTableView* tv = window->traceDock()->view();
+            TraceView* tv = window->traceDock()->view();
             const int rows = window->traceDock()->model()->rowCount();
             if (rows > 0) {
                 window->traceDock()->setFollow(false);
@@ -67,8 +68,8 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
                         pick = r;
                         break;
                     }
-                tv->selectRow(pick);
-                tv->scrollToBottom();
+                tv->setCurrentRow(pick, false);
+                tv->scrollToEnd();
             }
         }
         QApplication::processEvents();

@@ -2,7 +2,7 @@
 // Soak benchmark of issue 16 ("Bounded memory", Done when): a simulated bus at saturation feeds
 // the real capture path (bus reader thread -> FrameRing -> CaptureSession -> TraceStore with a
 // small memory budget -> CaptureJournal pcapng) while the GUI thread shows the live trace in a
-// TraceModel/QTableView, pulling every 33 ms like the main window and jumping to the oldest rows
+// TraceModel/TraceView, pulling every 33 ms like the main window and jumping to the oldest rows
 // every 10 s (those rows are paged back from the journal on the store's loader thread; the view
 // draws them as loading meanwhile).
 //  - classic: 1 Mbit/s, 8-byte data frames, about 8,000 frames/s (~125 bit times a frame with
@@ -17,6 +17,7 @@
 // Usage: bench_soak [SECONDS per mode, default 600] [--short (= 60 s)] [--budget-mb N (8)]
 //        [--mode classic|fd|both]
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 #include "core/can/CanBus.h"
 #include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
@@ -151,8 +152,7 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
 
     gui::TraceModel model;
     model.setStore(store);
-    QTableView view;
-    view.setModel(&model);
+    gui::TraceView view(&model);  // the trace dock's view: a window of the rows, its own scroll bar
     view.resize(1000, 700);
     view.show();
 
@@ -191,11 +191,11 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
         if (t - lastPull >= std::chrono::milliseconds(33)) {  // what TraceDock does
             lastPull = t;
             model.refresh();
-            view.scrollToBottom();
+            view.scrollToEnd();
         }
         if (t - lastTop >= std::chrono::seconds(10)) {  // the user looks at the oldest rows
             lastTop = t;
-            view.scrollToTop();
+            view.scrollToStart();
             view.repaint();
         }
         if (t - lastSample >= std::chrono::milliseconds(500)) {

@@ -312,7 +312,7 @@ private slots:
         QVERIFY(waitFor([&] { return !dock.isFiltering() && dock.model()->isGrouped(); }, &dock));
         QCOMPARE(dock.model()->rowCount(), 9);
         // Details of the segmented transfer's row: the record's fields.
-        dock.view()->setCurrentIndex(dock.model()->index(3, TraceModel::Summary));
+        dock.view()->setCurrentIndex(dock.view()->model()->index(3, TraceModel::Summary));
         QTreeWidget* tree = dock.details()->tree();
         QCOMPARE(tree->topLevelItemCount(), 1);
         QTreeWidgetItem* top = tree->topLevelItem(0);
@@ -324,20 +324,20 @@ private slots:
                      all.contains(QStringLiteral("Frames=6 (frames 5–11)")) && all.contains(QStringLiteral("Size=11 byte")),
                  qPrintable(all));
         // The aborted one.
-        dock.view()->setCurrentIndex(dock.model()->index(6, TraceModel::Summary));
+        dock.view()->setCurrentIndex(dock.view()->model()->index(6, TraceModel::Summary));
         top = tree->topLevelItem(0);
         fields.clear();
         for (int i = 0; i < top->childCount(); ++i) fields << top->child(i)->text(0) + u'=' + top->child(i)->text(1);
         QVERIFY2(fields.join(u'|').contains(QStringLiteral("Status=aborted")) && fields.join(u'|').contains(QStringLiteral("Abort code=0x06020000")),
                  qPrintable(fields.join(u'|')));
         // A click on the arrow expands; a frame under it shows the frame's own details.
-        const QRect arrow = dock.view()->visualRect(dock.model()->index(3, TraceModel::Number));
+        const QRect arrow = dock.view()->visualRect(dock.view()->model()->index(3, TraceModel::Number));
         QTest::mouseClick(dock.view()->viewport(), Qt::LeftButton, {}, arrow.center());
         QCOMPARE(dock.model()->rowCount(), 15);
-        dock.view()->setCurrentIndex(dock.model()->index(5, TraceModel::Summary));
+        dock.view()->setCurrentIndex(dock.view()->model()->index(5, TraceModel::Summary));
         QVERIFY(tree->topLevelItem(0)->text(0).startsWith(QStringLiteral("Frame 6")));
         if (const QString grab = qEnvironmentVariable("COSCOPE_TEST_GRAB"); !grab.isEmpty()) {  // to look at it
-            dock.view()->setCurrentIndex(dock.model()->index(3, TraceModel::Summary));
+            dock.view()->setCurrentIndex(dock.view()->model()->index(3, TraceModel::Summary));
             dock.grab().save(grab);
         }
         // A filter keeps the grouping.

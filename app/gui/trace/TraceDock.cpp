@@ -5,6 +5,8 @@
 #include "app/gui/trace/FrameDetailsView.h"
 #include "app/gui/trace/TraceFilter.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
+#include "app/gui/trace/TraceWindow.h"
 
 #include <QAction>
 #include <QApplication>
@@ -61,9 +63,15 @@ TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Tr
 
     auto* split = new QSplitter(Qt::Vertical, content);
     split->setObjectName(QStringLiteral("traceSplit"));
-    view_ = new QTableView(split);
+    // The table and the scroll bar spanning the whole trace (TraceView shows a window of it).
+    auto* table = new QWidget(split);
+    auto* tableRow = new QHBoxLayout(table);
+    tableRow->setContentsMargins(0, 0, 0, 0);
+    tableRow->setSpacing(0);
+    view_ = new TraceView(model_, table);
     view_->setObjectName(QStringLiteral("traceView"));
-    view_->setModel(model_);
+    tableRow->addWidget(view_, 1);
+    tableRow->addWidget(view_->traceScrollBar());
     view_->verticalHeader()->hide();
     view_->verticalHeader()->setDefaultSectionSize(view_->fontMetrics().height() + 4);
     view_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);  // uniform rows: cheap for 10 M rows
@@ -85,7 +93,7 @@ TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Tr
     view_->setColumnWidth(TraceModel::Length, w * 4);
     view_->setColumnWidth(TraceModel::Data, w * 24);
     details_ = new FrameDetailsView(split);
-    split->addWidget(view_);
+    split->addWidget(table);
     split->addWidget(details_);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
@@ -95,17 +103,14 @@ TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Tr
     connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &TraceDock::onCurrentChanged);
     // A transfer row opens and closes by a click on its arrow (the No. column) or a double click.
     connect(view_, &QAbstractItemView::clicked, this, [this](const QModelIndex& i) {
-        if (i.column() == TraceModel::Number) toggleRow(i);
+        if (i.column() == TraceModel::Number) toggleRow(view_->logicalRow(i));
     });
     connect(view_, &QAbstractItemView::doubleClicked, this, [this](const QModelIndex& i) {
-        if (i.column() != TraceModel::Number) toggleRow(i);
+        if (i.column() != TraceModel::Number) toggleRow(view_->logicalRow(i));
     });
     // Scrolling up by hand pauses following; the Follow button resumes it.
-    connect(view_->verticalScrollBar(), &QScrollBar::actionTriggered, this, [this](int action) {
-        if (action != QAbstractSlider::SliderNoAction && follow_->isChecked()) {
-            QScrollBar* sb = view_->verticalScrollBar();
-            if (sb->sliderPosition() < sb->maximum()) follow_->setChecked(false);
-        }
+    connect(view_, &TraceView::userScrolled, this, [this](bool atEnd) {
+        if (!atEnd && follow_->isChecked()) follow_->setChecked(false);
     });
     rebind();
 }
@@ -127,7 +132,7 @@ void TraceDock::buildToolbar(QWidget* host) {
     follow_->setToolTip(tr("Follow new frames (scrolling up pauses)"));
     connect(follow_, &QAction::toggled, this, [this, st](bool on) {
         follow_->setIcon(st->standardIcon(on ? QStyle::SP_MediaPlay : QStyle::SP_MediaPause));
-        if (on) view_->scrollToBottom();
+        if (on) view_->scrollToEnd();
     });
     timeMode_ = new QComboBox(tb);
     timeMode_->setObjectName(QStringLiteral("timeMode"));
@@ -245,7 +250,7 @@ void TraceDock::refresh() {
         onCurrentChanged();
     }
     model_->setBusNames(workspace_->busNames());
-    if (follow_->isChecked() && model_->rowCount() > 0) view_->scrollToBottom();
+    if (follow_->isChecked() && model_->rowCount() > 0) view_->scrollToEnd();
     const size_t total = workspace_->store() ? workspace_->store()->size() : 0;
     if (model_->isGrouped()) {
         countLabel_->setText(tr("%L1 rows, %L2 frames").arg(model_->rowCount()).arg(total));
@@ -288,10 +293,10 @@ void TraceDock::clearFilter() { applyFilter(QString()); }
 void TraceDock::setGroupSdo(bool on) { groupSdo_->setChecked(on); }
 bool TraceDock::groupsSdo() const { return groupSdo_->isChecked(); }
 
-void TraceDock::toggleRow(const QModelIndex& index) {
-    if (!index.isValid() || model_->rowKind(index.row()) != TraceModel::RowKind::Transfer) return;
+void TraceDock::toggleRow(int row) {
+    if (row < 0 || model_->rowKind(row) != TraceModel::RowKind::Transfer) return;
     setFollow(false);
-    model_->toggleExpanded(index.row());
+    model_->toggleExpanded(row);
 }
 
 Job* TraceDock::activeJob() const { return filterJob_.get(); }
@@ -307,9 +312,7 @@ void TraceDock::showFrame(FrameNo n) {
     }
     if (row < 0) return;
     setFollow(false);
-    const QModelIndex idx = model_->index(row, 0);
-    view_->setCurrentIndex(idx);
-    view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
+    view_->setCurrentRow(row, true);
 }
 
 void TraceDock::setFindMissed(bool missed) {
@@ -326,14 +329,13 @@ bool TraceDock::find(const QString& text, bool forward) {
     }
     setFollow(false);
     const int rows = model_->rowCount();
-    const int start = view_->currentIndex().isValid() ? view_->currentIndex().row() : (forward ? -1 : rows);
+    const int current = view_->currentRow();
+    const int start = current >= 0 ? current : (forward ? -1 : rows);
     int searched = 0;
     for (int row = start + (forward ? 1 : -1); row >= 0 && row < rows && searched < kFindBudgetRows; row += forward ? 1 : -1, ++searched) {
         for (int col : {int(TraceModel::Summary), int(TraceModel::CobId), int(TraceModel::Data)}) {
             if (model_->data(model_->index(row, col), Qt::DisplayRole).toString().contains(text, Qt::CaseInsensitive)) {
-                const QModelIndex idx = model_->index(row, 0);
-                view_->setCurrentIndex(idx);
-                view_->scrollTo(idx, QAbstractItemView::PositionAtCenter);
+                view_->setCurrentRow(row, true);
                 setFindMissed(false);
                 return true;
             }
@@ -344,18 +346,18 @@ bool TraceDock::find(const QString& text, bool forward) {
     setFindMissed(true);
     if (searched >= kFindBudgetRows) {
         const int row = start + (forward ? searched : -searched);
-        view_->setCurrentIndex(model_->index(std::clamp(row, 0, rows - 1), 0));
+        view_->setCurrentRow(std::clamp(row, 0, rows - 1), false);
     }
     return false;
 }
 
 void TraceDock::toggleBookmark() {
-    const QModelIndex idx = view_->currentIndex();
-    if (!idx.isValid()) {
+    const int row = view_->currentRow();
+    if (row < 0) {
         emit message(tr("Select a frame to bookmark"));
         return;
     }
-    model_->toggleBookmark(model_->frameAt(idx.row()));
+    model_->toggleBookmark(model_->frameAt(row));
 }
 
 void TraceDock::gotoBookmark(bool forward) {
@@ -364,8 +366,8 @@ void TraceDock::gotoBookmark(bool forward) {
         emit message(tr("No bookmarks (Ctrl+B sets one)"));
         return;
     }
-    const QModelIndex idx = view_->currentIndex();
-    const FrameNo cur = idx.isValid() ? model_->frameAt(idx.row()) : (forward ? 0 : ~FrameNo(0));
+    const int row = view_->currentRow();
+    const FrameNo cur = row >= 0 ? model_->frameAt(row) : (forward ? 0 : ~FrameNo(0));
     FrameNo target;
     if (forward) {
         auto it = marks.upper_bound(cur);
@@ -378,14 +380,14 @@ void TraceDock::gotoBookmark(bool forward) {
 }
 
 void TraceDock::onCurrentChanged() {
-    const QModelIndex idx = view_->currentIndex();
-    if (!idx.isValid() || !model_->store()) {
+    const int row = view_->currentRow();
+    if (row < 0 || !model_->store()) {
         details_->clear();
         shownDetailsFor_ = -1;
         return;
     }
-    if (model_->rowKind(idx.row()) == TraceModel::RowKind::Transfer) {  // keyed -2 - group
-        const int64_t g = model_->groupAt(idx.row());
+    if (model_->rowKind(row) == TraceModel::RowKind::Transfer) {  // keyed -2 - group
+        const int64_t g = model_->groupAt(row);
         if (-2 - g == shownDetailsFor_) return;
         shownDetailsFor_ = -2 - g;
         detailsRevision_ = workspace_->decoder()->revision();
@@ -393,7 +395,7 @@ void TraceDock::onCurrentChanged() {
         details_->showTransfer(model_->transferRecord(g), std::vector<FrameNo>(frames.begin(), frames.end()));
         return;
     }
-    const FrameNo n = model_->frameAt(idx.row());
+    const FrameNo n = model_->frameAt(row);
     if (static_cast<int64_t>(n) == shownDetailsFor_) return;
     shownDetailsFor_ = n;
     detailsRevision_ = workspace_->decoder()->revision();

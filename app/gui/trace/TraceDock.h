@@ -3,6 +3,7 @@
 // display, filters, frame details, SDO transfer groups and loading/saving logs off the GUI thread.
 #pragma once
 
+#include "app/gui/trace/TraceView.h"
 #include "core/trace/TraceStore.h"
 
 #include <QDockWidget>
@@ -13,7 +14,6 @@ class QAction;
 class QComboBox;
 class QLabel;
 class QLineEdit;
-class QTableView;
 
 namespace coscope::gui {
 
@@ -35,7 +35,7 @@ public:
     void refresh();  // timer tick
 
     TraceModel* model() const { return model_; }
-    QTableView* view() const { return view_; }
+    TraceView* view() const { return view_; }
     FrameDetailsView* details() const { return details_; }
 
     void setFollow(bool on);
@@ -68,12 +68,12 @@ signals:
 private:
     void buildToolbar(QWidget* bar);
     void onCurrentChanged();
-    void toggleRow(const QModelIndex& index);
+    void toggleRow(int row);  // a row of the trace model
     void setFindMissed(bool missed);  // the find field turns red while its text is not found
 
     Workspace* workspace_;
     TraceModel* model_ = nullptr;
-    QTableView* view_ = nullptr;
+    TraceView* view_ = nullptr;
     FrameDetailsView* details_ = nullptr;
     QAction* follow_ = nullptr;
     QComboBox* timeMode_ = nullptr;
