@@ -25,17 +25,33 @@ struct Pattern {
 
 constexpr qsizetype kPrefixKey = 3;  // patterns are bucketed by the first characters of their text
 
+// A shape (coretext::shapes()): "%1" + separator + "%2" + tail, e.g. "%1 (%2)".
+struct Shape {
+    const char* source = nullptr;
+    QString head, separator, tail;  // the literals before %1, between %1 and %2, after %2
+};
+
 struct Patterns {
     std::vector<Pattern> all;
     QHash<QString, std::vector<size_t>> byPrefix;  // literal prefix (kPrefixKey chars) -> patterns
     std::vector<size_t> open;                      // patterns whose literal prefix is shorter
+    QHash<QString, const char*> folded;            // lower-case text -> listed text without placeholders
+    std::vector<Shape> shapes;
 
     Patterns() {
         static const QRegularExpression placeholder(QStringLiteral("%([1-9])"));
-        for (auto list : {coretext::names(), coretext::wizards(), coretext::trace()}) {
+        for (const char* text : coretext::shapes()) {
+            const QString s = QString::fromUtf8(text);
+            const qsizetype one = s.indexOf(QLatin1String("%1")), two = s.indexOf(QLatin1String("%2"));
+            shapes.push_back({text, s.left(one), s.mid(one + 2, two - one - 2), s.mid(two + 2)});
+        }
+        for (auto list : coretext::all()) {
             for (const char* text : list) {
                 const QString s = QString::fromUtf8(text);
-                if (!s.contains(placeholder)) continue;
+                if (!s.contains(placeholder)) {
+                    folded.insert(s.toLower(), text);
+                    continue;
+                }
                 Pattern p;
                 p.source = text;
                 QString re;
@@ -92,12 +108,35 @@ QString fill(const QString& translated, const std::vector<QString>& values) {
     return out;
 }
 
+QString lookUp(const QString& english, int depth);
+
+// `english` in one of the shapes ("0650h (Switch on disabled)", "generic error (AL555 …)"): the
+// shape's translation with both parts looked up, when at least one of them is translated. Every
+// place of the separator is tried, the last first (an annotation closes the text).
+QString byShape(const QString& english, int depth) {
+    for (const Shape& sh : patterns().shapes) {
+        if (!english.startsWith(sh.head) || !english.endsWith(sh.tail)) continue;
+        const QString inner = english.mid(sh.head.size(), english.size() - sh.head.size() - sh.tail.size());
+        for (qsizetype at = inner.lastIndexOf(sh.separator); at > 0; at = at > 0 ? inner.lastIndexOf(sh.separator, at - 1) : -1) {
+            const QString one = inner.left(at), two = inner.mid(at + sh.separator.size());
+            if (two.isEmpty()) continue;
+            const QString oneT = lookUp(one, depth + 1), twoT = lookUp(two, depth + 1);
+            if (oneT == one && twoT == two) continue;
+            return fill(QCoreApplication::translate("CoreText", sh.source), {oneT, twoT});
+        }
+    }
+    return english;
+}
+
 QString lookUp(const QString& english, int depth) {
     if (english.isEmpty()) return english;
     const QByteArray key = english.toUtf8();
     const QString direct = QCoreApplication::translate("CoreText", key.constData());
     if (direct != english || depth > 3) return direct;
     const Patterns& ps = patterns();
+    // The health report writes EMCY texts in lower case ("generic error"): the listed text's translation.
+    if (const auto it = ps.folded.constFind(english.toLower()); it != ps.folded.constEnd() && english != QString::fromUtf8(*it))
+        return QCoreApplication::translate("CoreText", *it);
     auto tryOne = [&](size_t i, QString* out) {
         const Pattern& p = ps.all[i];
         const auto m = p.re.match(english);
@@ -116,10 +155,17 @@ QString lookUp(const QString& english, int depth) {
             if (tryOne(i, &out)) return out;
     for (size_t i : ps.open)
         if (tryOne(i, &out)) return out;
-    return english;
+    return byShape(english, depth);
 }
 
 }  // namespace
+
+namespace coretext {
+std::span<const std::span<const char* const>> all() {
+    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details()};
+    return lists;
+}
+}  // namespace coretext
 
 QString coreText(const QString& english) {
     if (language::current() == u"en") return english;
