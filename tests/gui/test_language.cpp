@@ -42,6 +42,7 @@
 #include <QTableView>
 #include <QTextDocumentFragment>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QtTest>
 
 #include "tests/gui/WaitFor.h"
