@@ -2187,6 +2187,14 @@
         <source>Reserved mode %1</source>
         <translation>保留模式 %1</translation>
     </message>
+    <message>
+        <source>abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>0x%1 %2</source>
+        <translation>0x%1 %2</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>

@@ -11,6 +11,7 @@
 #include "core/canopen/Ds402.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/NetworkHealth.h"
+#include "eds/SimulatorDictionaries.h"
 
 #include <QRegularExpression>
 #include <QtTest>
@@ -23,8 +24,8 @@ namespace {
 constexpr int64_t kMs = 1'000'000;
 
 // The English words a translated text may keep: CANopen abbreviations are matched by their
-// capitals (SDO, EMCY, CSP …); these are the rest.
-const QStringList kKept = {QStringLiteral("CiA"), QStringLiteral("ms"), QStringLiteral("bit/s"), QStringLiteral("Shutdown")};
+// capitals (SDO, EMCY, CSP …); these are the rest (units).
+const QStringList kKept = {QStringLiteral("CiA"), QStringLiteral("ms"), QStringLiteral("s"), QStringLiteral("rpm")};
 
 // The words with a small letter left in `text` once the object names (data, from the
 // dictionary), an English name the translation repeats in full-width parentheses after the
@@ -34,9 +35,10 @@ QStringList englishLeft(QString text, const QStringList& objectNames) {
     static const QRegularExpression word(QStringLiteral("(?<![0-9A-Za-z_])[A-Za-z]*[a-z][A-Za-z]*(?![0-9A-Za-z_])"));
     text.replace(aside, QStringLiteral("\\1"));
     for (const QString& n : objectNames) text.remove(n);
-    for (const QString& k : kKept) text.remove(k);
+    text.remove(QStringLiteral("bit/s"));
     QStringList out;
-    for (auto it = word.globalMatch(text); it.hasNext();) out << it.next().captured();
+    for (auto it = word.globalMatch(text); it.hasNext();)
+        if (const QString w = it.next().captured(); !kKept.contains(w)) out << w;
     return out;
 }
 
@@ -57,6 +59,10 @@ Produced producerOutputs() {
     dissect::NetworkContext ctx;
     dissect::NetworkHealth health;
     dissect::Dissection d;
+    // Node 1 is the generic CiA 402 drive of the simulator (its object names, its PDO mapping).
+    eds::installSimulatorDictionaries();
+    QString error;
+    if (!ctx.assignDictionary(1, QStringLiteral("generic-cia402"), &error)) qWarning("generic-cia402: %s", qPrintable(error));
     int64_t now = 0;
     auto feed = [&](uint32_t id, std::initializer_list<uint8_t> bytes, int64_t stepMs = 10) {
         CanFrame f = CanFrame::classic(id, bytes);
@@ -156,7 +162,8 @@ private slots:
         const Produced p = producerOutputs();
         QVERIFY(p.lines.size() > 100);
         // The report has the EMCY and the stopped heartbeat (the sample must stay meaningful).
-        QVERIFY(p.lines.filter(QStringLiteral("EMCY 5530h")).size() == 1);
+        QVERIFY(!p.lines.filter(QStringLiteral("EMCY 2310h")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("more EMCY")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("heartbeat stopped")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("(Switch on disabled)")).isEmpty());
         QVERIFY(language::apply(code));
@@ -166,7 +173,8 @@ private slots:
             const QStringList words = englishLeft(shown, p.objectNames);
             if (!words.isEmpty()) left << QStringLiteral("%1\n    -> %2   [%3]").arg(english, shown, words.join(u' '));
         }
-        QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 text(s) with English left:\n").arg(code).arg(left.size()) + left.join(u'\n')));
+        for (const QString& l : left) qInfo("English left: %s", qPrintable(l));
+        QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 text(s) with English left (listed above)").arg(code).arg(left.size())));
     }
 
     // In English the texts pass unchanged (the CLI and an English UI read the same words).

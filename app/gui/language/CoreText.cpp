@@ -108,32 +108,42 @@ QString fill(const QString& translated, const std::vector<QString>& values) {
     return out;
 }
 
-QString lookUp(const QString& english, int depth);
+QString lookUp(const QString& english, int depth, qsizetype* covered = nullptr);
 
-// `english` in one of the shapes ("0650h (Switch on disabled)", "generic error (AL555 …)"): the
-// shape's translation with both parts looked up, when at least one of them is translated. Every
-// place of the separator is tried, the last first (an annotation closes the text).
-QString byShape(const QString& english, int depth) {
+// `english` in one of the shapes ("0650h (Switch on disabled)", "0x5530 Data storage error
+// (EEPROM)", "generic error (AL555 …)"): the shape's translation with both parts looked up. Of
+// the shapes and the places of their separator, the one whose translated parts cover the most
+// of the text wins (the last place on a tie: an annotation closes the text); `english` as it is
+// when no part is translated. *covered = the letters translated.
+QString byShape(const QString& english, int depth, qsizetype* covered) {
+    qsizetype best = 0;
+    const Shape* bestShape = nullptr;
+    std::vector<QString> parts;
     for (const Shape& sh : patterns().shapes) {
         if (!english.startsWith(sh.head) || !english.endsWith(sh.tail)) continue;
         const QString inner = english.mid(sh.head.size(), english.size() - sh.head.size() - sh.tail.size());
-        for (qsizetype at = inner.lastIndexOf(sh.separator); at > 0; at = at > 0 ? inner.lastIndexOf(sh.separator, at - 1) : -1) {
+        for (qsizetype at = inner.lastIndexOf(sh.separator); at > 0; at = inner.lastIndexOf(sh.separator, at - 1)) {
             const QString one = inner.left(at), two = inner.mid(at + sh.separator.size());
             if (two.isEmpty()) continue;
-            const QString oneT = lookUp(one, depth + 1), twoT = lookUp(two, depth + 1);
-            if (oneT == one && twoT == two) continue;
-            return fill(QCoreApplication::translate("CoreText", sh.source), {oneT, twoT});
+            qsizetype c1 = 0, c2 = 0;
+            QString oneT = lookUp(one, depth + 1, &c1), twoT = lookUp(two, depth + 1, &c2);
+            if (c1 + c2 > best) best = c1 + c2, bestShape = &sh, parts = {std::move(oneT), std::move(twoT)};
         }
     }
-    return english;
+    if (covered) *covered = best;
+    return bestShape ? fill(QCoreApplication::translate("CoreText", bestShape->source), parts) : english;
 }
 
-QString lookUp(const QString& english, int depth) {
+QString lookUp(const QString& english, int depth, qsizetype* covered) {
+    if (covered) *covered = english.size();
     if (english.isEmpty()) return english;
     const QByteArray key = english.toUtf8();
     const QString direct = QCoreApplication::translate("CoreText", key.constData());
-    if (direct != english || depth > 3) return direct;
+    if (direct != english) return direct;
+    if (covered) *covered = 0;
+    if (depth > 3) return english;
     const Patterns& ps = patterns();
+    if (covered) *covered = english.size();
     // The health report writes EMCY texts in lower case ("generic error"): the listed text's translation.
     if (const auto it = ps.folded.constFind(english.toLower()); it != ps.folded.constEnd() && english != QString::fromUtf8(*it))
         return QCoreApplication::translate("CoreText", *it);
@@ -155,7 +165,7 @@ QString lookUp(const QString& english, int depth) {
             if (tryOne(i, &out)) return out;
     for (size_t i : ps.open)
         if (tryOne(i, &out)) return out;
-    return byShape(english, depth);
+    return byShape(english, depth, covered);
 }
 
 }  // namespace

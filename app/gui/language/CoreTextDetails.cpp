@@ -36,6 +36,7 @@ const char* const kTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "Mode of operation (CiA 402)"),
     QT_TRANSLATE_NOOP("CoreText", "Bit %1"),
     QT_TRANSLATE_NOOP("CoreText", "set"),
+    QT_TRANSLATE_NOOP("CoreText", "abort"),
     // dissectors/SdoReassembly.cpp: how a transfer ended.
     QT_TRANSLATE_NOOP("CoreText", "ok"),
     QT_TRANSLATE_NOOP("CoreText", "aborted"),
@@ -44,8 +45,10 @@ const char* const kTexts[] = {
 };
 
 // A value with what it means, as the dissectors join them: tried last, each part looked up.
+// Each has exactly %1 and %2, in this order.
 const char* const kShapes[] = {
     QT_TRANSLATE_NOOP("CoreText", "%1 (%2)"),
+    QT_TRANSLATE_NOOP("CoreText", "0x%1 %2"),  // a code and its name: EMCY error code, SDO abort code
 };
 // clang-format on
 }  // namespace
