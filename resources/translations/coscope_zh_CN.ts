@@ -2195,6 +2195,46 @@
         <source>0x%1 %2</source>
         <translation>0x%1 %2</translation>
     </message>
+    <message>
+        <source>SDO %1 node %2</source>
+        <translation>SDO %1 节点 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 节点 %2 %3</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4</source>
+        <translation>SDO %1 节点 %2 %3，块大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, %4 bytes</source>
+        <translation>SDO %1 节点 %2 %3，%4 字节</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4, %5 bytes</source>
+        <translation>SDO %1 节点 %2 %3，块大小 %4，%5 字节</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1［%2］</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes = %3</source>
+        <translation>%1 → 已读取 %2 字节 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes</source>
+        <translation>%1 → 已读取 %2 字节</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes = %3</source>
+        <translation>%1 → 已写入 %2 字节 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes</source>
+        <translation>%1 → 已写入 %2 字节</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -4003,6 +4043,10 @@ Arm the test move?</source>
     <message>
         <source>(no payload)</source>
         <translation>（无数据内容）</translation>
+    </message>
+    <message>
+        <source>%1h (%2-bit)</source>
+        <translation>%1h（%2 位）</translation>
     </message>
 </context>
 <context>

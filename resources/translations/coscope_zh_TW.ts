@@ -2195,6 +2195,46 @@
         <source>0x%1 %2</source>
         <translation>0x%1 %2</translation>
     </message>
+    <message>
+        <source>SDO %1 node %2</source>
+        <translation>SDO %1 節點 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 節點 %2 %3</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4</source>
+        <translation>SDO %1 節點 %2 %3，區塊大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, %4 bytes</source>
+        <translation>SDO %1 節點 %2 %3，%4 位元組</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4, %5 bytes</source>
+        <translation>SDO %1 節點 %2 %3，區塊大小 %4，%5 位元組</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1［%2］</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes = %3</source>
+        <translation>%1 → 已讀取 %2 位元組 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes</source>
+        <translation>%1 → 已讀取 %2 位元組</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes = %3</source>
+        <translation>%1 → 已寫入 %2 位元組 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes</source>
+        <translation>%1 → 已寫入 %2 位元組</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -4003,6 +4043,10 @@ Arm the test move?</source>
     <message>
         <source>(no payload)</source>
         <translation>（無資料內容）</translation>
+    </message>
+    <message>
+        <source>%1h (%2-bit)</source>
+        <translation>%1h（%2 位元）</translation>
     </message>
 </context>
 <context>

@@ -150,6 +150,7 @@ private slots:
         };
         for (auto list : coretext::all())
             for (const char* s : list) check(s);
+        for (const char* s : coretext::suffixes()) check(s);
         for (const char* s : coretext::shapes())
             if (QCoreApplication::translate("CoreText", s).isEmpty()) missing << QString::fromUtf8(s);
         QVERIFY2(missing.isEmpty(), qPrintable(code + QStringLiteral(": no translation for:\n") + missing.join(u'\n')));

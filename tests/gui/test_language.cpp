@@ -295,7 +295,8 @@ QStringList englishWords(QString text) {
     static const QRegularExpression word(QStringLiteral("(?<![0-9A-Za-z_])[A-Za-z]*[a-z][A-Za-z]*(?![0-9A-Za-z_])"));
     static const QStringList names = [] {
         QStringList n = dictionaryNames().values();
-        n << kSame << QStringLiteral("CiA") << QStringLiteral("bit/s");
+        // The virtual drive's name (1008h, read by the wizard): data.
+        n << kSame << QStringLiteral("CiA") << QStringLiteral("bit/s") << QStringLiteral("Generic CiA 402 drive");
         std::sort(n.begin(), n.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
         n.removeAll(QString());
         return n;
@@ -436,8 +437,6 @@ private slots:
         auto* net = static_cast<SimBus*>(w.workspace()->bus())->network();
         net->runOnNetworkThread([&] { net->device(4)->injectDriveFault(); });
         QTest::qWait(500);
-        auto* tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
-        QVERIFY(tree);
 
         for (const QString& code : {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN")}) {
             if (code != language::current()) QVERIFY2(chooseLanguage(w, code), qPrintable(code));
@@ -454,14 +453,18 @@ private slots:
             QVERIFY(wiz && QTest::qWaitForWindowExposed(wiz));
             auto* frames = wiz->findChild<QTableView*>(QStringLiteral("wizardFrames"));
             QVERIFY(frames);
-            QVERIFY2(waitFor([&] { return !rowsContaining(frames->model(), QStringLiteral("6041h")).isEmpty(); }, 8000), qPrintable(code));
+            QVERIFY2(waitFor([&] { return !rowsContaining(frames->model(), QStringLiteral("6041:00")).isEmpty(); }, 8000), qPrintable(code));
             QTest::qWait(500);
             expect(QStringLiteral("CiA 402 wizard frames"), cellsWithEnglish(frames));
             closeWizard(wiz);
             // 2. The trace: a statusword read clicked, its summaries and the details pane.
             auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
-            QVERIFY(clickTraceRow(w, QStringLiteral("6041h")));
-            QVERIFY(waitFor([&] { return tree->topLevelItemCount() > 0; }, 3000));
+            QVERIFY(clickTraceRow(w, QStringLiteral("6041:00 Statusword =")));
+            QPointer<QTreeWidget> tree;
+            QVERIFY(waitFor([&] {
+                tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
+                return tree && tree->topLevelItemCount() > 0;
+            }, 3000));
             expect(QStringLiteral("details pane"), detailsWithEnglish(tree));
             const int summaryColumn = trace->model()->columnCount() - 1;
             expect(QStringLiteral("trace summaries"), cellsWithEnglish(trace, summaryColumn));

@@ -21,6 +21,7 @@ struct Pattern {
     QRegularExpression re;
     std::vector<int> argOrder;  // group g holds %argOrder[g-1]
     qsizetype literal = 0;      // letters outside the placeholders: longer patterns are tried first
+    bool suffix = false;        // from coretext::suffixes(): tried before the others
 };
 
 constexpr qsizetype kPrefixKey = 3;  // patterns are bucketed by the first characters of their text
@@ -35,6 +36,7 @@ struct Patterns {
     std::vector<Pattern> all;
     QHash<QString, std::vector<size_t>> byPrefix;  // literal prefix (kPrefixKey chars) -> patterns
     std::vector<size_t> open;                      // patterns whose literal prefix is shorter
+    std::vector<size_t> suffixes;                  // coretext::suffixes(), tried first
     QHash<QString, const char*> folded;            // lower-case text -> listed text without placeholders
     std::vector<Shape> shapes;
 
@@ -45,7 +47,10 @@ struct Patterns {
             const qsizetype one = s.indexOf(QLatin1String("%1")), two = s.indexOf(QLatin1String("%2"));
             shapes.push_back({text, s.left(one), s.mid(one + 2, two - one - 2), s.mid(two + 2)});
         }
-        for (auto list : coretext::all()) {
+        std::vector<std::span<const char* const>> lists(coretext::all().begin(), coretext::all().end());
+        lists.push_back(coretext::suffixes());
+        for (auto list : lists) {
+            const bool suffix = list.data() == coretext::suffixes().data();
             for (const char* text : list) {
                 const QString s = QString::fromUtf8(text);
                 if (!s.contains(placeholder)) {
@@ -54,6 +59,7 @@ struct Patterns {
                 }
                 Pattern p;
                 p.source = text;
+                p.suffix = suffix;
                 QString re;
                 qsizetype at = 0;
                 auto it = placeholder.globalMatch(s);
@@ -78,7 +84,8 @@ struct Patterns {
         for (size_t i = 0; i < all.size(); ++i) {
             const QString s = QString::fromUtf8(all[i].source);
             const qsizetype firstArg = s.indexOf(u'%');
-            if (firstArg >= kPrefixKey) byPrefix[s.left(kPrefixKey)].push_back(i);
+            if (all[i].suffix) suffixes.push_back(i);
+            else if (firstArg >= kPrefixKey) byPrefix[s.left(kPrefixKey)].push_back(i);
             else open.push_back(i);
         }
     }
@@ -159,6 +166,8 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
         return true;
     };
     QString out;
+    for (size_t i : ps.suffixes)
+        if (tryOne(i, &out)) return out;
     // Both lists are sorted longest-literal first; the bucket's patterns are the more specific.
     if (const auto it = ps.byPrefix.constFind(english.left(kPrefixKey)); it != ps.byPrefix.constEnd())
         for (size_t i : *it)

@@ -37,11 +37,27 @@ const char* const kTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "Bit %1"),
     QT_TRANSLATE_NOOP("CoreText", "set"),
     QT_TRANSLATE_NOOP("CoreText", "abort"),
+    // dissectors/SdoDissector.cpp: the summaries not listed in CoreTextTrace.cpp.
+    QT_TRANSLATE_NOOP("CoreText", "SDO %1 node %2"),
+    QT_TRANSLATE_NOOP("CoreText", "SDO %1 node %2 %3"),
+    QT_TRANSLATE_NOOP("CoreText", "SDO %1 node %2 %3, block size %4"),
+    QT_TRANSLATE_NOOP("CoreText", "SDO %1 node %2 %3, %4 bytes"),
+    QT_TRANSLATE_NOOP("CoreText", "SDO %1 node %2 %3, block size %4, %5 bytes"),
     // dissectors/SdoReassembly.cpp: how a transfer ended.
     QT_TRANSLATE_NOOP("CoreText", "ok"),
     QT_TRANSLATE_NOOP("CoreText", "aborted"),
     QT_TRANSLATE_NOOP("CoreText", "size mismatch"),
     QT_TRANSLATE_NOOP("CoreText", "crc error"),
+};
+
+// What dissectors/SdoDissector.cpp appends to a summary: the object of the transfer in progress,
+// the transfer's result. Tried before every other listed text.
+const char* const kSuffixes[] = {
+    QT_TRANSLATE_NOOP("CoreText", "%1 [%2]"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 -> read %2 bytes = %3"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 -> read %2 bytes"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 -> wrote %2 bytes = %3"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 -> wrote %2 bytes"),
 };
 
 // A value with what it means, as the dissectors join them: tried last, each part looked up.
@@ -55,5 +71,6 @@ const char* const kShapes[] = {
 
 std::span<const char* const> details() { return kTexts; }
 std::span<const char* const> shapes() { return kShapes; }
+std::span<const char* const> suffixes() { return kSuffixes; }
 
 }  // namespace coscope::gui::coretext

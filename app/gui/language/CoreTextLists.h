@@ -17,7 +17,10 @@ std::span<const char* const> details();    // CoreTextDetails.cpp: the details p
 // of the separator; used only when a part is translated.
 std::span<const char* const> shapes();
 
-// Every list above but shapes(), in lookup order.
+// "%1 [%2]", "%1 -> read %2 bytes": what is appended to a summary, tried before the others.
+std::span<const char* const> suffixes();
+
+// Every list above but shapes() and suffixes(), in lookup order.
 std::span<const std::span<const char* const>> all();
 
 }  // namespace coscope::gui::coretext

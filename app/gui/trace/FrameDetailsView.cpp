@@ -112,7 +112,7 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), coreLines(d.summary)});
     const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()
                                       : QStringLiteral("%1").arg(f.id, 3, 16, QLatin1Char('0')).toUpper();
-    new QTreeWidgetItem(top, {tr("Identifier"), QStringLiteral("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
+    new QTreeWidgetItem(top, {tr("Identifier"), tr("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
     new QTreeWidgetItem(top, {tr("Service"), canopen::serviceName(d.service) + (d.node >= 0 ? tr(", node %1").arg(d.node) : QString())});
     new QTreeWidgetItem(top, {tr("Length"), QString::number(f.len) + (f.isRemote() ? tr(" (remote request)") : QString())});
     QStringList flags;
