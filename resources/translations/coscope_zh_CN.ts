@@ -2063,6 +2063,178 @@
         <source>RPDO%1 node %2: %3</source>
         <translation>RPDO%1 节点 %2：%3</translation>
     </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation>命令标识符</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation>子索引</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <source>Data (mapping not known)</source>
+        <translation>数据（映射未知）</translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation>中止码</translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation>节点 ID</translation>
+    </message>
+    <message>
+        <source>0 (all nodes)</source>
+        <translation>0（所有节点）</translation>
+    </message>
+    <message>
+        <source>Counter</source>
+        <translation>计数器</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Toggle bit</source>
+        <translation>翻转位</translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation>错误码</translation>
+    </message>
+    <message>
+        <source>Error register</source>
+        <translation>错误寄存器</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific error field</source>
+        <translation>制造商定义错误字段</translation>
+    </message>
+    <message>
+        <source>Vendor alarm</source>
+        <translation>厂家报警</translation>
+    </message>
+    <message>
+        <source>Milliseconds after midnight</source>
+        <translation>午夜起的毫秒数</translation>
+    </message>
+    <message>
+        <source>Days since 1984-01-01</source>
+        <translation>自 1984-01-01 起的天数</translation>
+    </message>
+    <message>
+        <source>Command (CiA 402)</source>
+        <translation>命令（CiA 402）</translation>
+    </message>
+    <message>
+        <source>State (CiA 402)</source>
+        <translation>状态（CiA 402）</translation>
+    </message>
+    <message>
+        <source>Mode of operation (CiA 402)</source>
+        <translation>运行模式（CiA 402）</translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation>位 %1</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>为 1</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>size mismatch</source>
+        <translation>大小不符</translation>
+    </message>
+    <message>
+        <source>crc error</source>
+        <translation>CRC 错误</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific mode %1</source>
+        <translation>制造商定义模式 %1</translation>
+    </message>
+    <message>
+        <source>Reserved mode %1</source>
+        <translation>保留模式 %1</translation>
+    </message>
+    <message>
+        <source>abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>0x%1 %2</source>
+        <translation>0x%1 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2</source>
+        <translation>SDO %1 节点 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 节点 %2 %3</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4</source>
+        <translation>SDO %1 节点 %2 %3，块大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, %4 bytes</source>
+        <translation>SDO %1 节点 %2 %3，%4 字节</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4, %5 bytes</source>
+        <translation>SDO %1 节点 %2 %3，块大小 %4，%5 字节</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1［%2］</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes = %3</source>
+        <translation>%1 → 已读取 %2 字节 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes</source>
+        <translation>%1 → 已读取 %2 字节</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes = %3</source>
+        <translation>%1 → 已写入 %2 字节 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes</source>
+        <translation>%1 → 已写入 %2 字节</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -2598,6 +2770,48 @@ Differs from the default</source>
     <message>
         <source>seen</source>
         <translation>已检测</translation>
+    </message>
+</context>
+<context>
+    <name>SdoGroupIndex</name>
+    <message>
+        <source>SDO read node %1 %2</source>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
+        <translation>SDO 读取 节点 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2</source>
+        <translation>SDO 写入 节点 %1 %2</translation>
+    </message>
+    <message>
+        <source>block</source>
+        <translation>块</translation>
+    </message>
+    <message>
+        <source>segmented</source>
+        <translation>分段</translation>
+    </message>
+    <message>
+        <source>expedited</source>
+        <translation>加速</translation>
+    </message>
+    <message>
+        <source>1 frame</source>
+        <translation>1 帧</translation>
+    </message>
+    <message>
+        <source>%1 frames</source>
+        <translation>%1 帧</translation>
+    </message>
+    <message>
+        <source>: aborted 0x%1 %2 (%3, %4)</source>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
+        <translation>：已中止 0x%1 %2（%3，%4）</translation>
+    </message>
+    <message>
+        <source> (%1, %2 bytes, %3)</source>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
+        <translation>（%1，%2 字节，%3）</translation>
     </message>
 </context>
 <context>
@@ -3829,6 +4043,10 @@ Arm the test move?</source>
     <message>
         <source>(no payload)</source>
         <translation>（无数据内容）</translation>
+    </message>
+    <message>
+        <source>%1h (%2-bit)</source>
+        <translation>%1h（%2 位）</translation>
     </message>
 </context>
 <context>

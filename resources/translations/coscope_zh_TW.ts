@@ -2063,6 +2063,178 @@
         <source>RPDO%1 node %2: %3</source>
         <translation>RPDO%1 節點 %2：%3</translation>
     </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Command specifier</source>
+        <translation>命令識別碼</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>索引</translation>
+    </message>
+    <message>
+        <source>Sub-index</source>
+        <translation>子索引</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>資料</translation>
+    </message>
+    <message>
+        <source>Data (mapping not known)</source>
+        <translation>資料（映射未知）</translation>
+    </message>
+    <message>
+        <source>Abort code</source>
+        <translation>中止碼</translation>
+    </message>
+    <message>
+        <source>Node-ID</source>
+        <translation>節點 ID</translation>
+    </message>
+    <message>
+        <source>0 (all nodes)</source>
+        <translation>0（所有節點）</translation>
+    </message>
+    <message>
+        <source>Counter</source>
+        <translation>計數器</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>狀態</translation>
+    </message>
+    <message>
+        <source>Toggle bit</source>
+        <translation>切換位元</translation>
+    </message>
+    <message>
+        <source>Error code</source>
+        <translation>錯誤碼</translation>
+    </message>
+    <message>
+        <source>Error register</source>
+        <translation>錯誤暫存器</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific error field</source>
+        <translation>製造商定義錯誤欄位</translation>
+    </message>
+    <message>
+        <source>Vendor alarm</source>
+        <translation>廠商異警</translation>
+    </message>
+    <message>
+        <source>Milliseconds after midnight</source>
+        <translation>午夜起的毫秒數</translation>
+    </message>
+    <message>
+        <source>Days since 1984-01-01</source>
+        <translation>自 1984-01-01 起的天數</translation>
+    </message>
+    <message>
+        <source>Command (CiA 402)</source>
+        <translation>命令（CiA 402）</translation>
+    </message>
+    <message>
+        <source>State (CiA 402)</source>
+        <translation>狀態（CiA 402）</translation>
+    </message>
+    <message>
+        <source>Mode of operation (CiA 402)</source>
+        <translation>操作模式（CiA 402）</translation>
+    </message>
+    <message>
+        <source>Bit %1</source>
+        <translation>位元 %1</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>為 1</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <source>aborted</source>
+        <translation>已中止</translation>
+    </message>
+    <message>
+        <source>size mismatch</source>
+        <translation>大小不符</translation>
+    </message>
+    <message>
+        <source>crc error</source>
+        <translation>CRC 錯誤</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>Manufacturer-specific mode %1</source>
+        <translation>製造商定義模式 %1</translation>
+    </message>
+    <message>
+        <source>Reserved mode %1</source>
+        <translation>保留模式 %1</translation>
+    </message>
+    <message>
+        <source>abort</source>
+        <translation>中止</translation>
+    </message>
+    <message>
+        <source>0x%1 %2</source>
+        <translation>0x%1 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2</source>
+        <translation>SDO %1 節點 %2</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3</source>
+        <translation>SDO %1 節點 %2 %3</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4</source>
+        <translation>SDO %1 節點 %2 %3，區塊大小 %4</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, %4 bytes</source>
+        <translation>SDO %1 節點 %2 %3，%4 位元組</translation>
+    </message>
+    <message>
+        <source>SDO %1 node %2 %3, block size %4, %5 bytes</source>
+        <translation>SDO %1 節點 %2 %3，區塊大小 %4，%5 位元組</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <translation>%1［%2］</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes = %3</source>
+        <translation>%1 → 已讀取 %2 位元組 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; read %2 bytes</source>
+        <translation>%1 → 已讀取 %2 位元組</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes = %3</source>
+        <translation>%1 → 已寫入 %2 位元組 = %3</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; wrote %2 bytes</source>
+        <translation>%1 → 已寫入 %2 位元組</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -2598,6 +2770,48 @@ Differs from the default</source>
     <message>
         <source>seen</source>
         <translation>已偵測</translation>
+    </message>
+</context>
+<context>
+    <name>SdoGroupIndex</name>
+    <message>
+        <source>SDO read node %1 %2</source>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
+        <translation>SDO 讀取 節點 %1 %2</translation>
+    </message>
+    <message>
+        <source>SDO write node %1 %2</source>
+        <translation>SDO 寫入 節點 %1 %2</translation>
+    </message>
+    <message>
+        <source>block</source>
+        <translation>區塊</translation>
+    </message>
+    <message>
+        <source>segmented</source>
+        <translation>分段</translation>
+    </message>
+    <message>
+        <source>expedited</source>
+        <translation>加速</translation>
+    </message>
+    <message>
+        <source>1 frame</source>
+        <translation>1 個封包</translation>
+    </message>
+    <message>
+        <source>%1 frames</source>
+        <translation>%1 個封包</translation>
+    </message>
+    <message>
+        <source>: aborted 0x%1 %2 (%3, %4)</source>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
+        <translation>：已中止 0x%1 %2（%3，%4）</translation>
+    </message>
+    <message>
+        <source> (%1, %2 bytes, %3)</source>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
+        <translation>（%1，%2 位元組，%3）</translation>
     </message>
 </context>
 <context>
@@ -3829,6 +4043,10 @@ Arm the test move?</source>
     <message>
         <source>(no payload)</source>
         <translation>（無資料內容）</translation>
+    </message>
+    <message>
+        <source>%1h (%2-bit)</source>
+        <translation>%1h（%2 位元）</translation>
     </message>
 </context>
 <context>

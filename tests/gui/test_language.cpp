@@ -5,6 +5,11 @@
 // still its English source, in zh_TW and in zh_CN; View ▸ Language switches at once, by mouse
 // clicks, and switching back and forth leaves no text of the previous language.
 #include "app/gui/MainWindow.h"
+#include "app/gui/health/HealthDock.h"
+#include "app/gui/trace/TraceDock.h"
+#include "core/sim/SimBus.h"
+#include "core/sim/SimNetwork.h"
+#include "core/sim/VirtualDevice.h"
 #include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/session/Workspace.h"
@@ -34,7 +39,10 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QTabBar>
+#include <QTableView>
 #include <QTextDocumentFragment>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QtTest>
 
 #include "tests/gui/WaitFor.h"
@@ -277,6 +285,89 @@ QList<Text> walkWizard(MainWindow& w, const QString& id) {
     closeWizard(wiz);
     return ok ? all : QList<Text>{};
 }
+
+// The English words left inside a text shown in Chinese (a state name in a decoded value, a
+// finding's phrase): the words with a small letter once object names (data), names and units
+// (kSame), abbreviations and an English name the translation repeats in full-width parentheses
+// after the Chinese ("關閉（Shutdown）") are taken out.
+QStringList englishWords(QString text) {
+    static const QRegularExpression aside(QStringLiteral("(\\p{Han})（[^（）]*）"));
+    static const QRegularExpression word(QStringLiteral("(?<![0-9A-Za-z_])[A-Za-z]*[a-z][A-Za-z]*(?![0-9A-Za-z_])"));
+    static const QStringList names = [] {
+        QStringList n = dictionaryNames().values();
+        // The virtual drive's name (1008h, read by the wizard): data.
+        n << kSame << QStringLiteral("CiA") << QStringLiteral("bit/s") << QStringLiteral("Generic CiA 402 drive");
+        std::sort(n.begin(), n.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+        n.removeAll(QString());
+        return n;
+    }();
+    text.replace(aside, QStringLiteral("\\1"));
+    for (const QString& n : names) text.remove(n);
+    QStringList out;
+    for (auto it = word.globalMatch(text); it.hasNext();) out << it.next().captured();
+    return out;
+}
+
+// The cells of `view` whose text keeps English words, with the words.
+QStringList cellsWithEnglish(const QAbstractItemView* view, int column = -1) {
+    QStringList out;
+    const QAbstractItemModel* m = view->model();
+    for (int r = 0; r < m->rowCount(); ++r)
+        for (int c = 0; c < m->columnCount(); ++c) {
+            if (column >= 0 && c != column) continue;
+            const QString t = m->data(m->index(r, c)).toString();
+            if (const QStringList w = englishWords(t); !w.isEmpty()) out << QStringLiteral("\"%1\" [%2]").arg(t, w.join(u' '));
+        }
+    out.removeDuplicates();
+    return out;
+}
+
+// Every field name and value of the details pane's tree.
+QStringList detailsWithEnglish(QTreeWidget* tree) {
+    QStringList out;
+    for (QTreeWidgetItemIterator it(tree); *it; ++it)
+        for (int c = 0; c < 2; ++c)
+            if (const QStringList w = englishWords((*it)->text(c)); !w.isEmpty()) out << QStringLiteral("\"%1\" [%2]").arg((*it)->text(c), w.join(u' '));
+    out.removeDuplicates();
+    return out;
+}
+
+QStringList rowsContaining(const QAbstractItemModel* m, const QString& part) {
+    QStringList out;
+    for (int r = 0; r < m->rowCount(); ++r)
+        for (int c = 0; c < m->columnCount(); ++c)
+            if (const QString t = m->data(m->index(r, c)).toString(); t.contains(part)) out << t;
+    return out;
+}
+
+// Clicks the first trace row whose summary holds `part` (a statusword read with its meaning);
+// false when there is none.
+bool clickTraceRow(MainWindow& w, const QString& part) {
+    auto* view = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
+    const QAbstractItemModel* m = view->model();
+    for (int r = m->rowCount() - 1; r >= 0; --r)
+        for (int c = 0; c < m->columnCount(); ++c) {
+            const QModelIndex i = m->index(r, c);
+            if (!m->data(i).toString().contains(part)) continue;
+            view->scrollTo(i);
+            QTest::qWait(50);
+            QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(i).center());
+            return true;
+        }
+    return false;
+}
+
+// Brings the Health dock up by clicking its tab.
+bool showHealth(MainWindow& w) {
+    HealthDock* dock = w.healthDock();
+    for (QTabBar* b : w.findChildren<QTabBar*>())
+        for (int i = 0; i < b->count(); ++i)
+            if (b->tabText(i).remove(u'&') == dock->windowTitle()) {
+                QTest::mouseClick(b, Qt::LeftButton, {}, b->tabRect(i).center());
+                return waitFor([&] { return dock->isVisible(); }, 3000);
+            }
+    return dock->isVisible();
+}
 }  // namespace
 
 class TestLanguage : public QObject {
@@ -328,6 +419,63 @@ private slots:
             QVERIFY2(staleWizard.isEmpty(), qPrintable(QStringLiteral("wizard %1, Chinese left after switching to English:\n%2").arg(id, staleWizard.join(u'\n'))));
         }
         QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("en"));
+    }
+
+    // The lower layers' texts where the GUI shows them (issue #17): the CiA 402 state and mode
+    // names in the decoded values of the CiA 402 wizard's frames, the trace and the details
+    // pane's top line and fields (a row clicked), and the Health dock's EMCY findings: English
+    // words in English, none in zh_TW and zh_CN.
+    void lowerLayerTextsInChinese() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.resize(1500, 950);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.connectBus(kNet));
+        QVERIFY(waitFor([&] { return w.workspace()->nodes().snapshot().size() >= 4; }, 15000));
+        // Node 4's drive trips: an EMCY on the bus, in the wizard's frames and the health findings.
+        auto* net = static_cast<SimBus*>(w.workspace()->bus())->network();
+        net->runOnNetworkThread([&] { net->device(4)->injectDriveFault(); });
+        QTest::qWait(500);
+
+        for (const QString& code : {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN")}) {
+            if (code != language::current()) QVERIFY2(chooseLanguage(w, code), qPrintable(code));
+            const bool english = code == u"en";
+            QTest::qWait(300);
+            QStringList problems;
+            auto expect = [&](const QString& where, const QStringList& left) {
+                // In English the same places must show English words (the check sees them).
+                if (english ? left.isEmpty() : !left.isEmpty())
+                    problems << QStringLiteral("%1 %2:\n  %3").arg(code, where, english ? QStringLiteral("no English words found") : left.join(QStringLiteral("\n  ")));
+            };
+            // 1. The CiA 402 wizard on node 4: its first reads (statusword, modes) and the EMCY.
+            QWidget* wiz = openWizard(QStringLiteral("ds402"), w.workspace(), 4, &w);
+            QVERIFY(wiz && QTest::qWaitForWindowExposed(wiz));
+            auto* frames = wiz->findChild<QTableView*>(QStringLiteral("wizardFrames"));
+            QVERIFY(frames);
+            QVERIFY2(waitFor([&] { return !rowsContaining(frames->model(), QStringLiteral("6041:00")).isEmpty(); }, 8000), qPrintable(code));
+            QTest::qWait(500);
+            expect(QStringLiteral("CiA 402 wizard frames"), cellsWithEnglish(frames));
+            closeWizard(wiz);
+            // 2. The trace: a statusword read clicked, its summaries and the details pane.
+            auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
+            QVERIFY(clickTraceRow(w, QStringLiteral("6041:00 Statusword =")));
+            QPointer<QTreeWidget> tree;
+            QVERIFY(waitFor([&] {
+                tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
+                return tree && tree->topLevelItemCount() > 0;
+            }, 3000));
+            expect(QStringLiteral("details pane"), detailsWithEnglish(tree));
+            const int summaryColumn = trace->model()->columnCount() - 1;
+            expect(QStringLiteral("trace summaries"), cellsWithEnglish(trace, summaryColumn));
+            // 3. The Health dock's findings: the EMCY of node 4.
+            QVERIFY(showHealth(w));
+            QTableView* findings = w.healthDock()->findingsView();
+            QVERIFY2(waitFor([&] { return !rowsContaining(findings->model(), QStringLiteral("EMCY")).isEmpty(); }, 8000), qPrintable(code));
+            expect(QStringLiteral("health findings"), cellsWithEnglish(findings));
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
+        }
+        QVERIFY(chooseLanguage(w, QStringLiteral("en")));
     }
 };
 

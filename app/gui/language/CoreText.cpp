@@ -21,23 +21,45 @@ struct Pattern {
     QRegularExpression re;
     std::vector<int> argOrder;  // group g holds %argOrder[g-1]
     qsizetype literal = 0;      // letters outside the placeholders: longer patterns are tried first
+    bool suffix = false;        // from coretext::suffixes(): tried before the others
 };
 
 constexpr qsizetype kPrefixKey = 3;  // patterns are bucketed by the first characters of their text
+
+// A shape (coretext::shapes()): "%1" + separator + "%2" + tail, e.g. "%1 (%2)".
+struct Shape {
+    const char* source = nullptr;
+    QString head, separator, tail;  // the literals before %1, between %1 and %2, after %2
+};
 
 struct Patterns {
     std::vector<Pattern> all;
     QHash<QString, std::vector<size_t>> byPrefix;  // literal prefix (kPrefixKey chars) -> patterns
     std::vector<size_t> open;                      // patterns whose literal prefix is shorter
+    std::vector<size_t> suffixes;                  // coretext::suffixes(), tried first
+    QHash<QString, const char*> folded;            // lower-case text -> listed text without placeholders
+    std::vector<Shape> shapes;
 
     Patterns() {
         static const QRegularExpression placeholder(QStringLiteral("%([1-9])"));
-        for (auto list : {coretext::names(), coretext::wizards(), coretext::trace()}) {
+        for (const char* text : coretext::shapes()) {
+            const QString s = QString::fromUtf8(text);
+            const qsizetype one = s.indexOf(QLatin1String("%1")), two = s.indexOf(QLatin1String("%2"));
+            shapes.push_back({text, s.left(one), s.mid(one + 2, two - one - 2), s.mid(two + 2)});
+        }
+        std::vector<std::span<const char* const>> lists(coretext::all().begin(), coretext::all().end());
+        lists.push_back(coretext::suffixes());
+        for (auto list : lists) {
+            const bool suffix = list.data() == coretext::suffixes().data();
             for (const char* text : list) {
                 const QString s = QString::fromUtf8(text);
-                if (!s.contains(placeholder)) continue;
+                if (!s.contains(placeholder)) {
+                    folded.insert(s.toLower(), text);
+                    continue;
+                }
                 Pattern p;
                 p.source = text;
+                p.suffix = suffix;
                 QString re;
                 qsizetype at = 0;
                 auto it = placeholder.globalMatch(s);
@@ -62,7 +84,8 @@ struct Patterns {
         for (size_t i = 0; i < all.size(); ++i) {
             const QString s = QString::fromUtf8(all[i].source);
             const qsizetype firstArg = s.indexOf(u'%');
-            if (firstArg >= kPrefixKey) byPrefix[s.left(kPrefixKey)].push_back(i);
+            if (all[i].suffix) suffixes.push_back(i);
+            else if (firstArg >= kPrefixKey) byPrefix[s.left(kPrefixKey)].push_back(i);
             else open.push_back(i);
         }
     }
@@ -92,12 +115,45 @@ QString fill(const QString& translated, const std::vector<QString>& values) {
     return out;
 }
 
-QString lookUp(const QString& english, int depth) {
+QString lookUp(const QString& english, int depth, qsizetype* covered = nullptr);
+
+// `english` in one of the shapes ("0650h (Switch on disabled)", "0x5530 Data storage error
+// (EEPROM)", "generic error (AL555 …)"): the shape's translation with both parts looked up. Of
+// the shapes and the places of their separator, the one whose translated parts cover the most
+// of the text wins (the last place on a tie: an annotation closes the text); `english` as it is
+// when no part is translated. *covered = the letters translated.
+QString byShape(const QString& english, int depth, qsizetype* covered) {
+    qsizetype best = 0;
+    const Shape* bestShape = nullptr;
+    std::vector<QString> parts;
+    for (const Shape& sh : patterns().shapes) {
+        if (!english.startsWith(sh.head) || !english.endsWith(sh.tail)) continue;
+        const QString inner = english.mid(sh.head.size(), english.size() - sh.head.size() - sh.tail.size());
+        for (qsizetype at = inner.lastIndexOf(sh.separator); at > 0; at = inner.lastIndexOf(sh.separator, at - 1)) {
+            const QString one = inner.left(at), two = inner.mid(at + sh.separator.size());
+            if (two.isEmpty()) continue;
+            qsizetype c1 = 0, c2 = 0;
+            QString oneT = lookUp(one, depth + 1, &c1), twoT = lookUp(two, depth + 1, &c2);
+            if (c1 + c2 > best) best = c1 + c2, bestShape = &sh, parts = {std::move(oneT), std::move(twoT)};
+        }
+    }
+    if (covered) *covered = best;
+    return bestShape ? fill(QCoreApplication::translate("CoreText", bestShape->source), parts) : english;
+}
+
+QString lookUp(const QString& english, int depth, qsizetype* covered) {
+    if (covered) *covered = english.size();
     if (english.isEmpty()) return english;
     const QByteArray key = english.toUtf8();
     const QString direct = QCoreApplication::translate("CoreText", key.constData());
-    if (direct != english || depth > 3) return direct;
+    if (direct != english) return direct;
+    if (covered) *covered = 0;
+    if (depth > 3) return english;
     const Patterns& ps = patterns();
+    if (covered) *covered = english.size();
+    // The health report writes EMCY texts in lower case ("generic error"): the listed text's translation.
+    if (const auto it = ps.folded.constFind(english.toLower()); it != ps.folded.constEnd() && english != QString::fromUtf8(*it))
+        return QCoreApplication::translate("CoreText", *it);
     auto tryOne = [&](size_t i, QString* out) {
         const Pattern& p = ps.all[i];
         const auto m = p.re.match(english);
@@ -110,16 +166,25 @@ QString lookUp(const QString& english, int depth) {
         return true;
     };
     QString out;
+    for (size_t i : ps.suffixes)
+        if (tryOne(i, &out)) return out;
     // Both lists are sorted longest-literal first; the bucket's patterns are the more specific.
     if (const auto it = ps.byPrefix.constFind(english.left(kPrefixKey)); it != ps.byPrefix.constEnd())
         for (size_t i : *it)
             if (tryOne(i, &out)) return out;
     for (size_t i : ps.open)
         if (tryOne(i, &out)) return out;
-    return english;
+    return byShape(english, depth, covered);
 }
 
 }  // namespace
+
+namespace coretext {
+std::span<const std::span<const char* const>> all() {
+    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details()};
+    return lists;
+}
+}  // namespace coretext
 
 QString coreText(const QString& english) {
     if (language::current() == u"en") return english;

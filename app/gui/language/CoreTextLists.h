@@ -11,5 +11,16 @@ namespace coscope::gui::coretext {
 std::span<const char* const> names();      // CoreTextNames.cpp: states, commands, modes, aborts
 std::span<const char* const> wizards();    // CoreTextWizards.cpp: script steps, controller errors
 std::span<const char* const> trace();      // CoreTextTrace.cpp: dissector summaries, health findings
+std::span<const char* const> details();    // CoreTextDetails.cpp: the details pane's field names
+
+// "%1 (%2)": how a value and its meaning are joined. Tried after every listed text, at each place
+// of the separator; used only when a part is translated.
+std::span<const char* const> shapes();
+
+// "%1 [%2]", "%1 -> read %2 bytes": what is appended to a summary, tried before the others.
+std::span<const char* const> suffixes();
+
+// Every list above but shapes() and suffixes(), in lookup order.
+std::span<const std::span<const char* const>> all();
 
 }  // namespace coscope::gui::coretext

@@ -54,6 +54,8 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous position (CSP)"),
     QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous velocity (CSV)"),
     QT_TRANSLATE_NOOP("CoreText", "Cyclic synchronous torque (CST)"),
+    QT_TRANSLATE_NOOP("CoreText", "Manufacturer-specific mode %1"),
+    QT_TRANSLATE_NOOP("CoreText", "Reserved mode %1"),
     QT_TRANSLATE_NOOP("CoreText", "Start"),
     QT_TRANSLATE_NOOP("CoreText", "Stop"),
     QT_TRANSLATE_NOOP("CoreText", "Enter pre-operational"),

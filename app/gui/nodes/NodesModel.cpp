@@ -70,7 +70,7 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     case Node: return n.node;
     case State:
         if (n.stateUnknownAfterGap) {  // issue 16: the bus was lost; the last state may be stale
-            const QString last = n.nmtState < 0 ? tr("Unknown") : canopen::nmtStateName(static_cast<uint8_t>(n.nmtState));
+            const QString last = n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
             return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the next heartbeat (last known: %1)").arg(last)
                                            : tr("unknown (gap)");
         }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/trace/FrameDetailsView.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/CobId.h"
 
 #include <QFontDatabase>
@@ -85,12 +87,12 @@ void FrameDetailsView::showTransfer(const dissect::SdoTransferRecord& t, const s
         add(tr("Data"), QString::fromLatin1(t.data.left(64).toHex(' ').toUpper()) + (t.data.size() > 64 ? QStringLiteral(" …") : QString()))
             ->setData(0, kLengthRole, static_cast<int>(t.data.size()));
     }
-    if (!t.valueText.isEmpty()) add(tr("Value"), t.valueText);
-    auto* status = add(tr("Status"), t.status);
+    if (!t.valueText.isEmpty()) add(tr("Value"), coreText(t.valueText));
+    auto* status = add(tr("Status"), coreText(t.status));
     if (t.status != QLatin1String("ok")) status->setForeground(1, QColor(176, 0, 32));
     if (t.status == QLatin1String("aborted")) {
         add(tr("Abort code"), QStringLiteral("0x%1").arg(t.abortCode, 8, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x")));
-        add(tr("Abort reason"), t.abortText);
+        add(tr("Abort reason"), coreText(t.abortText));
     }
     if (!frames.empty())
         add(tr("Frames"), frames.size() == 1 ? tr("1 (frame %1)").arg(frames.front() + 1)
@@ -106,10 +108,11 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     highlight_ = {0, 0};
     tree_->clear();
 
-    auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), d.summary});
+    // The dissectors write in English (shared with the CLI): shown in the UI language (CoreText.h).
+    auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), coreLines(d.summary)});
     const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()
                                       : QStringLiteral("%1").arg(f.id, 3, 16, QLatin1Char('0')).toUpper();
-    new QTreeWidgetItem(top, {tr("Identifier"), QStringLiteral("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
+    new QTreeWidgetItem(top, {tr("Identifier"), tr("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
     new QTreeWidgetItem(top, {tr("Service"), canopen::serviceName(d.service) + (d.node >= 0 ? tr(", node %1").arg(d.node) : QString())});
     new QTreeWidgetItem(top, {tr("Length"), QString::number(f.len) + (f.isRemote() ? tr(" (remote request)") : QString())});
     QStringList flags;
@@ -120,7 +123,7 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     if (f.isError()) flags << tr("error frame");
     if (!flags.isEmpty()) new QTreeWidgetItem(top, {tr("Flags"), flags.join(QStringLiteral(", "))});
     for (const QString& w : d.warnings) {
-        auto* item = new QTreeWidgetItem(top, {tr("Warning"), w});
+        auto* item = new QTreeWidgetItem(top, {tr("Warning"), coreText(w)});
         item->setForeground(1, QColor(176, 0, 32));
     }
     top->setExpanded(true);
@@ -130,8 +133,8 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     for (const auto& t : d.tree) {
         parents.resize(static_cast<size_t>(t.depth));
         QTreeWidgetItem* item = parents.empty() ? new QTreeWidgetItem(tree_) : new QTreeWidgetItem(parents.back());
-        item->setText(0, t.label);
-        item->setText(1, t.value);
+        item->setText(0, coreText(t.label));
+        item->setText(1, coreLines(t.value));
         if (t.byteLength > 0) {
             QString where = t.byteLength == 1 ? tr("byte %1").arg(t.byteOffset) : tr("bytes %1–%2").arg(t.byteOffset).arg(t.byteOffset + t.byteLength - 1);
             if (t.bitOffset >= 0) where += t.bitLength == 1 ? tr(", bit %1").arg(t.bitOffset) : tr(", bits %1–%2").arg(t.bitOffset).arg(t.bitOffset + t.bitLength - 1);

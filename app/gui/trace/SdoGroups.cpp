@@ -4,6 +4,8 @@
 #include "app/gui/language/CoreText.h"
 
 #include "app/gui/trace/FrameDecoder.h"
+
+#include <QCoreApplication>
 #include "core/canopen/CobId.h"
 #include "core/canopen/SdoAbort.h"
 
@@ -111,23 +113,28 @@ dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const 
 }
 
 QString SdoGroupIndex::summary(const dissect::SdoTransferRecord& t, size_t frames) {
-    QString s = QStringLiteral("SDO %1 node %2 %3:%4")
-                    .arg(t.upload ? QStringLiteral("read") : QStringLiteral("write"))
+    const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper() +
+                           (t.name.isEmpty() ? QString() : u' ' + t.name);
+    //: Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")
+    QString s = (t.upload ? QCoreApplication::translate("SdoGroupIndex", "SDO read node %1 %2") : QCoreApplication::translate("SdoGroupIndex", "SDO write node %1 %2"))
                     .arg(t.node)
-                    .arg(t.index, 4, 16, QLatin1Char('0'))
-                    .arg(t.sub, 2, 16, QLatin1Char('0'));
-    s = s.left(s.size() - 7) + s.right(7).toUpper();
-    if (!t.name.isEmpty()) s += u' ' + t.name;
-    const QString mode = t.block ? QStringLiteral("block") : t.segmented ? QStringLiteral("segmented") : QStringLiteral("expedited");
-    const QString frameText = frames == 1 ? QStringLiteral("1 frame") : QStringLiteral("%1 frames").arg(frames);
+                    .arg(object);
+    const QString mode = t.block ? QCoreApplication::translate("SdoGroupIndex", "block")
+                         : t.segmented ? QCoreApplication::translate("SdoGroupIndex", "segmented")
+                                       : QCoreApplication::translate("SdoGroupIndex", "expedited");
+    const QString frameText = frames == 1 ? QCoreApplication::translate("SdoGroupIndex", "1 frame") : QCoreApplication::translate("SdoGroupIndex", "%1 frames").arg(frames);
     if (t.status == QLatin1String("aborted")) {
-        s += QStringLiteral(": aborted 0x%1 %2 (%3, %4)").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText, mode, frameText);
+        //: %1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"
+        s += QCoreApplication::translate("SdoGroupIndex", ": aborted 0x%1 %2 (%3, %4)")
+                 .arg(t.abortCode, 8, 16, QLatin1Char('0'))
+                 .arg(coreText(t.abortText), mode, frameText);
         return s;
     }
-    if (!t.valueText.isEmpty()) s += QStringLiteral(" = ") + t.valueText;
+    if (!t.valueText.isEmpty()) s += QStringLiteral(" = ") + coreText(t.valueText);
     else if (!t.data.isEmpty()) s += QStringLiteral(" = ") + QString::fromLatin1(t.data.left(16).toHex(' ').toUpper()) + (t.data.size() > 16 ? QStringLiteral(" …") : QString());
-    s += QStringLiteral(" (%1, %2 bytes, %3)").arg(mode).arg(t.size).arg(frameText);
-    if (t.status != QLatin1String("ok")) s += QStringLiteral(" ⚠ ") + t.status;
+    //: %1 = expedited/segmented/block, %2 = size, %3 = "3 frames"
+    s += QCoreApplication::translate("SdoGroupIndex", " (%1, %2 bytes, %3)").arg(mode).arg(t.size).arg(frameText);
+    if (t.status != QLatin1String("ok")) s += QStringLiteral(" ⚠ ") + coreText(t.status);
     return s;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/BusLossAdvice.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Nmt.h"
 #include "core/canopen/NodeTable.h"
 
@@ -9,7 +11,7 @@ namespace coscope::gui {
 QString BusLossAdvice::lastNmtState(const canopen::NodeTable& nodes, int node) {
     const auto info = nodes.node(node);
     if (!info || info->nmtState < 0) return tr("NMT state unknown");
-    return tr("NMT: %1").arg(canopen::nmtStateName(static_cast<uint8_t>(info->nmtState)));
+    return tr("NMT: %1").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(info->nmtState))));
 }
 
 QString BusLossAdvice::driveMessage(const QString& reason, int node, const QString& nmt, const QString& lastDriveState, bool mayBeEnabled) {

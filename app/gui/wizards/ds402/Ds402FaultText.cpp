@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/ds402/Ds402FaultText.h"
 
+#include "app/gui/language/CoreText.h"
+
 #include "core/canopen/Emcy.h"
 #include "dissectors/VendorTable.h"
 
@@ -11,7 +13,7 @@ namespace coscope::gui {
 QString Ds402Fault::text() const {
     //: CiA 402 wizard, a drive fault: %1 = the error code in hex
     QString out = QCoreApplication::translate("Ds402Fault", "Error code (603Fh) %1h").arg(QStringLiteral("%1").arg(errorCode, 4, 16, QChar(u'0')).toUpper());
-    if (!ciaText.isEmpty()) out += QStringLiteral(": ") + ciaText;
+    if (!ciaText.isEmpty()) out += QStringLiteral(": ") + coreText(ciaText);  // the CiA 301/402 name in the UI language
     //: CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")
     if (!vendorAlarm.isEmpty()) out += QCoreApplication::translate("Ds402Fault", " — vendor alarm %1").arg(vendorAlarm);
     return out;

@@ -181,11 +181,11 @@ void Ds402Wizard::stopOnBusLoss() {
     const bool mayBeEnabled = moving || state_ == State::OperationEnabled || state_ == State::SwitchedOn ||
                               state_ == State::QuickStopActive || state_ == State::FaultReactionActive || sentCommands_;
     const QString last = state_ == State::Unknown ? tr("CiA 402 state unknown")
-                                                  : tr("%1 (statusword %2h)").arg(canopen::ds402::stateName(state_), QString::number(statusword_, 16).rightJustified(4, u'0').toUpper());
+                                                  : tr("%1 (statusword %2h)").arg(coreText(canopen::ds402::stateName(state_)), QString::number(statusword_, 16).rightJustified(4, u'0').toUpper());
     const QString text = BusLossAdvice::driveMessage(workspace_->bus() ? workspace_->bus()->errorString() : QString(), node_,
                                                      BusLossAdvice::lastNmtState(workspace_->nodes(), node_), last, mayBeEnabled);
     stoppedByLoss_ = true;
-    spdlog::warn("ds402 wizard: bus lost with node {} last in {}{}", node_, last.toStdString(), mayBeEnabled ? ", may still be enabled" : "");
+    spdlog::warn("ds402 wizard: bus lost with node {} last in {} (statusword {:04X}h){}", node_, canopen::ds402::stateName(state_).toStdString(), statusword_, mayBeEnabled ? ", may still be enabled" : "");
     dropController(text);
 }
 
