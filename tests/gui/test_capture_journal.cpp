@@ -7,7 +7,10 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/trace/LogLoadJob.h"
+#include "app/gui/trace/LogSaveJob.h"
 #include "core/logio/PcapLog.h"
 #include "core/trace/CaptureJournal.h"
 #include "eds/SimulatorDictionaries.h"
@@ -17,6 +20,7 @@
 #include <QFileInfo>
 #include <QPushButton>
 #include <QSettings>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -55,6 +59,33 @@ QString makeUnclosedJournal(const QString& name, int frames) {
         v.push_back(f);
     }
     j.append(v);
+    j.close();
+    QFile s(CaptureJournal::sidecarOf(path));
+    if (!s.open(QIODevice::WriteOnly)) return {};
+    s.write("2147483646\n");
+    return path;
+}
+// As makeUnclosedJournal, with node 5's heartbeat (operational) before a gap at frame `gapAt`
+// and only PDOs of another node after it; the gap is recorded as the app records one live.
+QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs) {
+    QDir().mkpath(capturesFolder());
+    const QString path = capturesFolder() + u'/' + name;
+    CaptureJournal j;
+    if (!j.open(path, {QStringLiteral("can0")})) return {};
+    std::vector<CanFrame> v;
+    for (int i = 0; i < frames; ++i) {
+        CanFrame f;
+        f.timestampNs = 1'700'000'000'000'000'000LL + i * 1'000'000LL + (i >= gapAt ? 5'000'000'000LL : 0);
+        f.id = i < gapAt ? 0x705 : 0x186;
+        f.len = 1;
+        f.data[0] = i < gapAt ? 0x05 : uint8_t(i);
+        v.push_back(f);
+    }
+    *lostNs = v[size_t(gapAt - 1)].timestampNs + 500'000'000LL;
+    *backNs = v[size_t(gapAt)].timestampNs - 1'000'000LL;
+    j.append(std::span(v).first(size_t(gapAt)));
+    j.addGap({FrameNo(gapAt), *lostNs, *backNs});
+    j.append(std::span(v).subspan(size_t(gapAt)));
     j.close();
     QFile s(CaptureJournal::sidecarOf(path));
     if (!s.open(QIODevice::WriteOnly)) return {};
@@ -145,6 +176,44 @@ private slots:
         QCOMPARE(w.workspace()->store()->frame(299).data[1], uint8_t(299 & 0xFF));
         QVERIFY(!w.journalOffer()->isVisible());
         QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(path)));  // offered once
+    }
+
+    // Issue 16 "Lost adapter": the gap of a capture is in its journal; reopened after a kill the
+    // trace marks it again (at the same frame, with the same times), the Nodes table shows the
+    // nodes seen before it as unknown, and Save As to pcapng keeps it.
+    void reopenedJournalShowsTheGap() {
+        int64_t lost = 0, back = 0;
+        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261125-111111-gap.pcapng"), 300, 200, &lost, &back);
+        QVERIFY(!path.isEmpty());
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.journalOffer()->offeredPath(), path);
+        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        QCOMPARE(w.workspace()->store()->size(), size_t(300));
+        const auto gaps = w.workspace()->store()->gaps();
+        QCOMPARE(gaps.size(), size_t(1));
+        QCOMPARE(gaps[0].firstFrame, FrameNo(200));
+        QCOMPARE(gaps[0].lostNs, lost);
+        QCOMPARE(gaps[0].backNs, back);
+        QAbstractItemModel* nodes = w.nodesDock()->view()->model();
+        QVERIFY(waitFor([&] { return nodes->rowCount() == 1; }));
+        QCOMPARE(nodes->index(0, NodesModel::State).data().toString(), QStringLiteral("unknown (gap)"));
+
+        const QString saved = data_.filePath(QStringLiteral("saved.pcapng"));
+        LogSaveJob save(saved, QStringLiteral("pcapng"), w.workspace()->store(), std::nullopt, w.workspace()->busNames());
+        save.start();
+        save.wait();
+        QVERIFY2(!save.hasError(), qPrintable(save.errorString()));
+        logio::PcapReader r;
+        QVERIFY(r.open(saved));
+        QCOMPARE(r.readAll().size(), size_t(300));
+        QCOMPARE(r.gaps().size(), size_t(1));
+        QCOMPARE(r.gaps()[0].frame, uint64_t(200));
+        QCOMPARE(r.gaps()[0].lostNs, lost);
+        QCOMPARE(r.gaps()[0].backNs, back);
     }
 
     void dismissKeepsTheJournalAndOffersTheNext() {

@@ -5,17 +5,20 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 #include <QCoreApplication>
 
 namespace coscope::gui {
 
-LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers)
+LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers, GapHandler onGap)
     : Job(QCoreApplication::translate("LogLoadJob", "Opening %1").arg(QFileInfo(path).fileName())),
       path_(std::move(path)),
       store_(std::move(store)),
-      consumers_(std::move(consumers)) {}
+      consumers_(std::move(consumers)),
+      onGap_(std::move(onGap)) {}
 
 LogLoadJob::~LogLoadJob() { stopAndJoin(); }
 
@@ -62,13 +65,26 @@ void LogLoadJob::run() {
     }
     std::vector<CanFrame> batch(4096);
     size_t seenDiagnostics = 0;
+    size_t seenGaps = 0;
     for (;;) {
         if (isCancelled()) reader->cancel();
         const size_t n = reader->read(batch.data(), batch.size());
         if (n == 0) break;
         const FrameNo first = static_cast<FrameNo>(store_->size());
         store_->append(std::span<const CanFrame>(batch.data(), n));
-        for (const auto& c : consumers_) c(*store_, first, n);
+        // The consumers see the frames before each gap, the gap, then the frames after it.
+        FrameNo done = first;
+        const FrameNo end = FrameNo(first + n);
+        for (const auto& gaps = reader->gaps(); seenGaps < gaps.size(); ++seenGaps) {
+            const TraceStore::Gap g{std::clamp(FrameNo(gaps[seenGaps].frame), done, end), gaps[seenGaps].lostNs, gaps[seenGaps].backNs};
+            if (g.firstFrame > done)
+                for (const auto& c : consumers_) c(*store_, done, g.firstFrame - done);
+            done = g.firstFrame;
+            store_->addGap(g);
+            if (onGap_) onGap_(g);
+        }
+        if (end > done)
+            for (const auto& c : consumers_) c(*store_, done, end - done);
         setProgress(reader->progress());
         std::lock_guard lock(mutex_);
         busNames_ = reader->busNames();

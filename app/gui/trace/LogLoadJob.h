@@ -8,6 +8,8 @@
 
 #include <QStringList>
 
+#include <functional>
+
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -18,9 +20,13 @@ namespace coscope::gui {
 // Frames become visible batch by batch while the rest loads (the store is readable while it is
 // appended to), and each batch goes to the consumers (node table, event log) like live traffic.
 // A malformed line is a diagnostic (line number + message); the rest still loads.
+// A gap of the capture recorded in the log (a pcapng journal) goes into the store
+// (TraceStore::addGap) and to `onGap` on the loading thread, between the consumers' calls for
+// the frames before and after it.
 class LogLoadJob : public Job {
 public:
-    LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers);
+    using GapHandler = std::function<void(const TraceStore::Gap&)>;
+    LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers, GapHandler onGap = {});
     ~LogLoadJob() override;
 
     const QString& path() const { return path_; }
@@ -40,6 +46,7 @@ private:
     QString path_;
     std::shared_ptr<TraceStore> store_;
     std::vector<CaptureSession::Consumer> consumers_;
+    GapHandler onGap_;
     mutable std::mutex mutex_;
     std::unique_ptr<logio::LogReader> reader_;  // guarded for the accessors
     QString format_;
