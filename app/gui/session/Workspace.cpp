@@ -165,6 +165,10 @@ void Workspace::disconnectBus() {
 
 QString Workspace::journalFolder() const { return journals::defaultFolder(); }
 
+void Workspace::applyMemoryBudget() {
+    if (store_->memoryBudget() != 0) store_->setMemoryBudget(traceMemoryBudget());
+}
+
 void Workspace::openJournal() {
     journalPath_ = journals::newJournalPath(journalFolder(), sourceName_);
     auto journal = std::make_unique<CaptureJournal>();
