@@ -214,6 +214,11 @@ void MainWindow::offerAndCleanJournals() {
     journalOffer_->offerFrom(folder);
     // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
     journals::cleanup(folder, journalCleanupPolicy());
+    // Spill files of logs opened by an app that was killed (those of this one are removed
+    // with their trace).
+    journals::CleanupPolicy spills;
+    spills.maxAgeDays = 1;
+    journals::cleanup(folder + QStringLiteral("/opened"), spills);
 }
 
 // Not modal for the app: the capture goes on while it is open. OK applies the budget to the

@@ -437,7 +437,7 @@ void PcapngWriter::writeInterface(uint8_t bus) {
     put32(o, uint32_t(body.size() + 12));
     o += body;
     put32(o, uint32_t(body.size() + 12));
-    headerBlocks_.push_back({framesWritten(), o.mid(start)});
+    headerBlocks_.push_back({framesWritten(), o.mid(start), int(bus)});
     if (interfaceOfBus_.size() <= bus) interfaceOfBus_.resize(size_t(bus) + 1, -1);
     interfaceOfBus_[bus] = int(interfaces_++);
 }

@@ -76,6 +76,7 @@ public:
     struct HeaderBlock {
         uint64_t beforeFrame = 0;
         QByteArray bytes;
+        int bus = -1;  // the interface block's bus (CanFrame::bus); -1: the section header
     };
     const std::vector<HeaderBlock>& headerBlocks() const { return headerBlocks_; }
 

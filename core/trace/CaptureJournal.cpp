@@ -94,6 +94,11 @@ void CaptureJournal::addGap(const TraceStore::Gap& gap) {
     pendingGaps_.push_back(gap);
 }
 
+size_t CaptureJournal::queuedFrames() const {
+    std::lock_guard lock(mutex_);
+    return pending_.size();
+}
+
 bool CaptureJournal::flush() {
     if (!running_.load()) return !hasError();
     std::unique_lock lock(mutex_);
@@ -145,7 +150,7 @@ bool CaptureJournal::writeBatch(const std::vector<CanFrame>& batch) {
     }
     // The header blocks written so far, for the pager to read a chunk alone.
     const auto& blocks = out.headerBlocks();
-    for (size_t i = pager_->headerBlocks(); i < blocks.size(); ++i) pager_->addHeaderBlock(blocks[i].beforeFrame, blocks[i].bytes);
+    for (size_t i = pager_->headerBlocks(); i < blocks.size(); ++i) pager_->addHeaderBlock(blocks[i].beforeFrame, blocks[i].bytes, blocks[i].bus);
     return true;
 }
 

@@ -45,6 +45,9 @@ public:
     // gap.firstFrame of the store (a pcapng packet comment), or with the first frame written
     // after that if it was already written. Dropped if no frame follows before close().
     void addGap(const TraceStore::Gap& gap);
+    // Frames queued and not yet handed to the writer thread (a producer faster than the disk
+    // waits with flush() when this grows: a log read into a spill journal).
+    size_t queuedFrames() const;
     // Writes what is queued and syncs it; blocks until done (Save As, tests).
     bool flush();
     // Writes the rest, syncs, closes the file and removes the sidecar.

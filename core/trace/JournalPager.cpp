@@ -17,9 +17,10 @@ void JournalPager::chunkStarts(uint64_t frame, int64_t offset) {
     starts_[c] = offset;
 }
 
-void JournalPager::addHeaderBlock(uint64_t beforeFrame, const QByteArray& bytes) {
+void JournalPager::addHeaderBlock(uint64_t beforeFrame, const QByteArray& bytes, int bus) {
     std::lock_guard lock(mutex_);
     header_.emplace_back(beforeFrame, bytes);
+    if (bus >= 0) busOfInterface_.push_back(uint8_t(bus));
 }
 
 size_t JournalPager::headerBlocks() const {
@@ -35,7 +36,10 @@ void JournalPager::setWritten(uint64_t frames, int64_t bytes) {
 
 std::string JournalPager::spillDirectory() const { return QFile::encodeName(QFileInfo(path_).absolutePath()).toStdString(); }
 
-bool JournalPager::loadRange(QByteArray data, uint64_t skip, uint32_t count, std::vector<CanFrame>& out, std::string* why) const {
+// The reader numbers buses by the interface blocks in file order (their names differ), so the
+// reader's bus i is the bus of the i-th interface block.
+bool JournalPager::loadRange(QByteArray data, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface, std::vector<CanFrame>& out,
+                             std::string* why) const {
     QBuffer buffer(&data);
     buffer.open(QIODevice::ReadOnly);
     logio::PcapReader reader;
@@ -51,7 +55,10 @@ bool JournalPager::loadRange(QByteArray data, uint64_t skip, uint32_t count, std
         const size_t n = reader.read(batch.data(), batch.size());
         if (n == 0) break;
         for (size_t i = 0; i < n && out.size() < count; ++i, ++seen)
-            if (seen >= skip) out.push_back(batch[i]);
+            if (seen >= skip) {
+                out.push_back(batch[i]);
+                if (out.back().bus < busOfInterface.size()) out.back().bus = busOfInterface[out.back().bus];
+            }
     }
     if (out.size() == count) return true;
     *why = "the journal holds fewer frames than the trace";
@@ -72,6 +79,7 @@ bool JournalPager::load(uint64_t first, uint32_t count, std::vector<CanFrame>& o
     int64_t begin = -1;
     int64_t end = 0;
     QByteArray bytes;
+    std::vector<uint8_t> busOfInterface;
     {
         std::lock_guard lock(mutex_);
         if (first + count > frames_.load(std::memory_order_relaxed)) {
@@ -83,6 +91,7 @@ bool JournalPager::load(uint64_t first, uint32_t count, std::vector<CanFrame>& o
         if (c0 > 0)
             for (const auto& [before, block] : header_)
                 if (before < rangeFirst) bytes += block;
+        busOfInterface = busOfInterface_;
     }
     if (begin < 0 || end <= begin || (c0 > 0 && bytes.isEmpty())) {
         *why = "the journal's index does not locate those frames";
@@ -104,7 +113,7 @@ bool JournalPager::load(uint64_t first, uint32_t count, std::vector<CanFrame>& o
         *why = QStringLiteral("%1: cannot read bytes %2 to %3").arg(path_).arg(begin).arg(end).toStdString();
         return false;
     }
-    return loadRange(std::move(bytes), first - rangeFirst, count, out, why);
+    return loadRange(std::move(bytes), first - rangeFirst, count, busOfInterface, out, why);
 }
 
 }  // namespace coscope

@@ -27,8 +27,10 @@ public:
 
     // Writer thread: frame `frame` (a multiple of kChunkSize) starts at byte `offset`.
     void chunkStarts(uint64_t frame, int64_t offset);
-    // Writer thread: a header block (SHB, IDB) written right before frame `beforeFrame`.
-    void addHeaderBlock(uint64_t beforeFrame, const QByteArray& bytes);
+    // Writer thread: a header block (SHB: bus -1; IDB of `bus`) written right before frame
+    // `beforeFrame`. A frame read back gets the bus of its interface block, whatever order the
+    // buses first appeared in.
+    void addHeaderBlock(uint64_t beforeFrame, const QByteArray& bytes, int bus = -1);
     size_t headerBlocks() const;
     // Writer thread: `frames` frames are in the file (handed to the kernel), `bytes` long.
     void setWritten(uint64_t frames, int64_t bytes);
@@ -39,12 +41,14 @@ public:
     std::string spillDirectory() const override;
 
 private:
-    bool loadRange(QByteArray bytes, uint64_t skip, uint32_t count, std::vector<CanFrame>& out, std::string* why) const;
+    bool loadRange(QByteArray bytes, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface, std::vector<CanFrame>& out,
+                   std::string* why) const;
 
     const QString path_;
     mutable std::mutex mutex_;
     std::vector<int64_t> starts_{0};  // byte offset of frame c * kChunkSize; starts_[0] = 0
     std::vector<std::pair<uint64_t, QByteArray>> header_;  // header blocks, by the frame they precede
+    std::vector<uint8_t> busOfInterface_;                   // the bus of each interface block, in file order
     int64_t bytes_ = 0;
     std::atomic<uint64_t> frames_{0};
 };

@@ -216,6 +216,59 @@ private slots:
         QCOMPARE(r.gaps()[0].backNs, back);
     }
 
+    // Issue 16 "Bounded memory" for File ▸ Open: a log larger than the trace memory budget is
+    // read through a spill journal; the trace keeps about the budget in RAM, pages the rest back
+    // identical, and the spill goes away with the trace.
+    void openedLogStaysWithinTheBudget() {
+        QSettings().setValue(QStringLiteral("trace/memoryBudgetMB"), 4);
+        const QString log = data_.filePath(QStringLiteral("big.log"));
+        constexpr uint32_t kFrames = 8 * TraceStore::kChunkSize + 123;  // 12 MB of records in RAM
+        {
+            QFile f(log);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QByteArray text;
+            for (uint32_t i = 0; i < kFrames; ++i) {
+                text += QStringLiteral("(1700000000.%1) can%2 %3#%4\n")
+                            .arg(i, 6, 10, QLatin1Char('0'))
+                            .arg(i % 7 == 3 ? 1 : 0)
+                            .arg(0x181 + i % 3, 3, 16, QLatin1Char('0'))
+                            .arg(i, 8, 16, QLatin1Char('0'))
+                            .toLatin1();
+                if (text.size() > (1 << 20)) {
+                    f.write(text);
+                    text.clear();
+                }
+            }
+            f.write(text);
+        }
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.openLog(log));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }, 120000));
+        auto store = w.workspace()->store();
+        QCOMPARE(store->size(), size_t(kFrames));
+        const QString spill = w.workspace()->loadJob()->spillPath();
+        QVERIFY(spill.startsWith(capturesFolder() + QStringLiteral("/opened/")));
+        QVERIFY(QFileInfo::exists(spill));
+        const bool within = waitFor([&] { return store->memoryBytes() <= (size_t(6) << 20); });
+        QVERIFY2(within, qPrintable(QStringLiteral("%1 bytes in RAM, %2 chunks").arg(store->memoryBytes()).arg(store->residentChunks())));
+        QVERIFY2(store->residentChunks() <= 3, qPrintable(QString::number(store->residentChunks())));
+        const uint64_t pageInsBefore = store->pageIns();
+        for (uint32_t i : {0u, 1u, 3u, 70000u, 3 * TraceStore::kChunkSize + 10, kFrames - 1}) {
+            const CanFrame f = store->frame(i);
+            QCOMPARE(f.id, 0x181u + i % 3);
+            QCOMPARE(int(f.bus), i % 7 == 3 ? 1 : 0);
+            QCOMPARE(f.timestampNs, 1'700'000'000'000'000'000LL + int64_t(i) * 1000);
+            QCOMPARE(f.data[3], uint8_t(i));
+        }
+        QVERIFY(store->pageIns() > pageInsBefore);
+        QCOMPARE(store->pageErrors(), uint64_t(0));
+        QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(spill)));  // never offered as an unclosed capture
+        w.workspace()->clear();
+        QVERIFY(!QFileInfo::exists(spill));
+        QSettings().remove(QStringLiteral("trace/memoryBudgetMB"));
+    }
+
     void dismissKeepsTheJournalAndOffersTheNext() {
         const QString older = makeUnclosedJournal(QStringLiteral("capture-a.pcapng"), 5);
         QVERIFY(setModified(older, QDateTime::currentDateTime().addSecs(-60)));

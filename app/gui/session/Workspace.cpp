@@ -204,6 +204,8 @@ bool Workspace::openLog(const QString& path, QString* error) {
         }));
     };
     loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers(), onGap);
+    // Bounded memory: a large log pages from a spill journal beside the capture journals.
+    loadJob_->setSpill(journalFolder() + QStringLiteral("/opened"), traceMemoryBudget());
     loadJob_->start();
     emit sourceChanged();
     return true;

@@ -2,6 +2,9 @@
 #include "app/gui/trace/LogLoadJob.h"
 
 #include "core/logio/LogFormats.h"
+#include "core/trace/JournalFolder.h"
+
+#include <QFile>
 
 #include <QFileInfo>
 
@@ -20,7 +23,45 @@ LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vec
       consumers_(std::move(consumers)),
       onGap_(std::move(onGap)) {}
 
-LogLoadJob::~LogLoadJob() { stopAndJoin(); }
+LogLoadJob::~LogLoadJob() {
+    stopAndJoin();
+    if (spill_) {
+        spill_->close();
+        QFile::remove(spill_->path());
+    }
+}
+
+void LogLoadJob::setSpill(QString folder, size_t budget) {
+    spillFolder_ = std::move(folder);
+    budget_ = budget;
+}
+
+QString LogLoadJob::spillPath() const {
+    std::lock_guard lock(mutex_);
+    return spillPath_;
+}
+
+// The frames read so far go to the spill first, a chunk at a time (never a copy of them all in
+// the queue), then the store pages from it.
+void LogLoadJob::startSpill() {
+    const QString path = journals::newJournalPath(spillFolder_, QFileInfo(path_).fileName());
+    auto spill = std::make_unique<CaptureJournal>();
+    if (path.isEmpty() || !spill->open(path, {})) {
+        spdlog::warn("opening {} without a spill file, all in memory: {}", path_.toStdString(), spill->errorString().toStdString());
+        spillFolder_.clear();
+        return;
+    }
+    const size_t size = store_->size();
+    for (size_t first = 0; first < size; first += TraceStore::kChunkSize) {
+        spill->appendFromStore(*store_, FrameNo(first), std::min<size_t>(TraceStore::kChunkSize, size - first));
+        spill->flush();
+    }
+    store_->setPager(spill->pager());
+    store_->setMemoryBudget(budget_);
+    spill_ = std::move(spill);
+    std::lock_guard lock(mutex_);
+    spillPath_ = path;
+}
 
 QString LogLoadJob::formatName() const {
     std::lock_guard lock(mutex_);
@@ -85,6 +126,12 @@ void LogLoadJob::run() {
         }
         if (end > done)
             for (const auto& c : consumers_) c(*store_, done, end - done);
+        if (spill_) {
+            spill_->appendFromStore(*store_, first, n);
+            if (spill_->queuedFrames() > TraceStore::kChunkSize) spill_->flush();  // the disk sets the pace
+        } else if (budget_ && !spillFolder_.isEmpty() && store_->memoryBytes() > budget_ / 2) {
+            startSpill();
+        }
         setProgress(reader->progress());
         std::lock_guard lock(mutex_);
         busNames_ = reader->busNames();
@@ -95,6 +142,10 @@ void LogLoadJob::run() {
             problems_.push_back(d[seenDiagnostics]);
         }
         linesRead_ = reader->linesRead();
+    }
+    if (spill_) {
+        spill_->close();  // all durable: the store evicts down to its budget
+        store_->setMemoryBudget(budget_);
     }
     std::lock_guard lock(mutex_);
     busNames_ = reader->busNames();

@@ -3,6 +3,7 @@
 
 #include "app/gui/session/Job.h"
 #include "core/logio/LogReader.h"
+#include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
 #include "core/trace/TraceStore.h"
 
@@ -39,10 +40,17 @@ public:
     std::vector<logio::LogDiagnostic> firstProblems(int max = 5) const;
     int64_t linesRead() const;  // text formats; 0 for binary ones
 
+    // Bounded memory (issue 16), before start(): once the store holds half of `budget`, every
+    // frame also goes to a spill journal in `folder` and the store keeps at most `budget` in
+    // RAM, paging older chunks back from the spill. The spill is removed with the job.
+    void setSpill(QString folder, size_t budget);
+    QString spillPath() const;
+
 protected:
     void run() override;
 
 private:
+    void startSpill();
     QString path_;
     std::shared_ptr<TraceStore> store_;
     std::vector<CaptureSession::Consumer> consumers_;
@@ -55,6 +63,10 @@ private:
     QStringList diagnostics_;
     std::vector<logio::LogDiagnostic> problems_;
     int64_t linesRead_ = 0;
+    QString spillFolder_;
+    size_t budget_ = 0;
+    std::unique_ptr<CaptureJournal> spill_;  // loading thread, then the destructor
+    QString spillPath_;                      // guarded
 };
 
 }  // namespace coscope::gui
