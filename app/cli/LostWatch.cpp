@@ -16,7 +16,9 @@ void LostWatch::poll() {
                      qPrintable(bus_->errorString()), qPrintable(QString::number(retryMs < 0 ? 0.5 : retryMs / 1000.0, 'f', 1)));
         std::fflush(stderr);
     } else if (s == CanBus::State::Open && lostSinceNs_ != 0) {
-        const double gapS = static_cast<double>(nowNs() - lostSinceNs_) / 1e9;
+        const int64_t back = nowNs();
+        const double gapS = static_cast<double>(back - lostSinceNs_) / 1e9;
+        if (onBack_) onBack_(lostSinceNs_, back);
         std::fprintf(stderr, "coscope-cli %s: bus back after %.1f s\n", qPrintable(verb_), gapS);
         std::fflush(stderr);
         lostSinceNs_ = 0;

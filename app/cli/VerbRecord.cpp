@@ -89,6 +89,7 @@ static int runRecord(const QStringList& args) {
     std::vector<CanFrame> batch(512);
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     LostWatch lost(bus.get(), kVerb);  // a lost adapter reconnects by itself: capturing goes on
+    lost.setOnBack([&](int64_t lostNs, int64_t backNs) { out->markGap(lostNs, backNs); });  // on the next frame written
     qint64 written = 0;
     bool writeFailed = false;
     QElapsedTimer sinceFlush, sinceSync;

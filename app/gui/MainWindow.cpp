@@ -2,6 +2,7 @@
 #include "app/gui/MainWindow.h"
 
 #include "app/gui/JournalOffer.h"
+#include "app/gui/session/CaptureSettingsDialog.h"
 
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
@@ -149,6 +150,8 @@ void MainWindow::buildMenus() {
     });
     file->addAction(tr("Export PDO layout as &DBC…"), this, [this] { exportPdoLayoutDbc(*workspace_, this, [this](const QString& m) { showMessage(m); }); });
     file->addSeparator();
+    file->addAction(tr("Capture se&ttings…"), QKeySequence::Preferences, this, &MainWindow::showCaptureSettings);
+    file->addSeparator();
     // Ctrl+Q spelled out: QKeySequence::Quit is empty where the platform theme has no binding for it.
     file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
 
@@ -211,6 +214,26 @@ void MainWindow::offerAndCleanJournals() {
     journalOffer_->offerFrom(folder);
     // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
     journals::cleanup(folder, journalCleanupPolicy());
+    // Spill files of logs opened by an app that was killed (those of this one are removed
+    // with their trace).
+    journals::CleanupPolicy spills;
+    spills.maxAgeDays = 1;
+    journals::cleanup(folder + QStringLiteral("/opened"), spills);
+}
+
+// Not modal for the app: the capture goes on while it is open. OK applies the budget to the
+// trace at once and cleans the journal folder up with the new limits (never the journal of the
+// trace shown: it pages from it).
+void MainWindow::showCaptureSettings() {
+    auto* dialog = new CaptureSettingsDialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &CaptureSettingsDialog::applied, this, [this] {
+        workspace_->applyMemoryBudget();
+        const QStringList keep = workspace_->journalPath().isEmpty() ? QStringList{} : QStringList{workspace_->journalPath()};
+        const QStringList removed = journals::cleanup(workspace_->journalFolder(), journalCleanupPolicy(), keep);
+        if (!removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+    });
+    dialog->open();
 }
 
 void MainWindow::rebuildRecentMenu() {

@@ -92,6 +92,7 @@ private:
     void saveLayout();
     void showError(const QString& message);
     // At start: offers a capture journal left unclosed, then removes old journals.
+    void showCaptureSettings();
     void offerAndCleanJournals();
     void reportLoad(const LogLoadJob& load);
     void showMessage(const QString& message);

@@ -24,6 +24,15 @@ struct LogDiagnostic {
     QString message;
 };
 
+// A gap in a live capture recorded in the log (issue 16 "Lost adapter"): the adapter was lost
+// at lostNs and back at backNs; `frame` (0-based, counting the frames read) is the first frame
+// after it. Only formats that can say so carry gaps (pcapng: a comment on that frame's block).
+struct CaptureGap {
+    uint64_t frame = 0;
+    int64_t lostNs = 0;
+    int64_t backNs = 0;
+};
+
 // Reads one log format incrementally (DESIGN.md "Reliability": a bad line is reported with its
 // line number and the rest is read; nothing here throws or aborts on bad input).
 // Typical use: open(), then read() batches until it returns 0; then check errorString().
@@ -53,6 +62,8 @@ public:
     QString errorString() const { return error_; }
 
     const std::vector<LogDiagnostic>& diagnostics() const { return diagnostics_; }
+    // Gaps of the capture found so far, in frame order (see CaptureGap).
+    const std::vector<CaptureGap>& gaps() const { return gaps_; }
     uint64_t diagnosticCount() const { return diagnosticCount_; }  // including unstored ones
     uint64_t framesRead() const { return framesRead_; }
     // Lines read so far for text formats; 0 for binary ones.
@@ -73,6 +84,7 @@ protected:
     void warn(int64_t where, const QString& message);
     void fail(const QString& message);
     void finish() { done_ = true; }
+    void addGap(const CaptureGap& gap) { gaps_.push_back(gap); }
     void updateProgress();
     // Index of a bus by name, added on first sight (at most 256 buses; later ones share 255).
     uint8_t busIndex(std::string_view name);
@@ -86,6 +98,7 @@ private:
     QString sourceName_;
     QString error_;
     std::vector<LogDiagnostic> diagnostics_;
+    std::vector<CaptureGap> gaps_;
     uint64_t diagnosticCount_ = 0;
     uint64_t framesRead_ = 0;
     QStringList busNames_;

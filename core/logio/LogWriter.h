@@ -32,6 +32,13 @@ public:
     void setSummaryProvider(std::function<QString(const CanFrame&)> provider) { summary_ = std::move(provider); }
 
     bool write(const CanFrame& frame, const QString& summary = {});
+    // The next frame written comes after a gap in the capture (issue 16 "Lost adapter": the
+    // adapter was lost at lostNs and back at backNs). Formats that can say so (pcapng) record
+    // it with that frame; the others ignore it.
+    virtual void markGap(int64_t lostNs, int64_t backNs) {
+        (void)lostNs;
+        (void)backNs;
+    }
     bool flush();
     // flush(), then to the disk (fdatasync) for a file: what a power loss keeps.
     bool sync();

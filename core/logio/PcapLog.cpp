@@ -5,6 +5,7 @@
 
 #include <QFile>
 #include <QIODevice>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <limits>
@@ -269,6 +270,8 @@ int PcapReader::readPcapngBlock(CanFrame& f) {
         }
         const Interface& itf = interfaces_[itfId];
         f.timestampNs = toNs(ticks, itf.unitsPerSecond);
+        const uint32_t padded = (capLen + 3) & ~3U;
+        if (type == kEpb && bodyLen > 20 + padded) parsePacketOptions(b + 20 + padded, bodyLen - 20 - padded);
         return decodePacket(b + 20, capLen, itf, f) ? 1 : 0;
     }
     if (type == kSpb) {
@@ -299,7 +302,8 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
             if (type == kEpb && total >= 32 && total % 4 == 0 && total <= kMaxBlock && qint64(total) <= end_ - pos_) {
                 const unsigned char* b = h + 8;
                 const uint32_t itfId = rd(b), capLen = rd(b + 12);
-                if (itfId < interfaces_.size() && capLen <= total - 32) {
+                // Blocks with options (a packet comment) take the general path, which reads them.
+                if (itfId < interfaces_.size() && capLen <= total - 32 && total <= 36 + ((capLen + 3) & ~3U)) {
                     pos_ += qsizetype(total);
                     ++packet_;
                     const Interface& itf = interfaces_[itfId];
@@ -333,9 +337,31 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
             finish();
             break;
         }
-        if (r > 0) ++n;
+        if (r > 0) {
+            if (gapPending_) {
+                pendingGap_.frame = framesRead() + n;
+                addGap(pendingGap_);
+                gapPending_ = false;
+            }
+            ++n;
+        }
     }
     return n;
+}
+
+// Options: code u16, length u16, value padded to 4 (pcapng section 3.5); opt_comment is 1.
+void PcapReader::parsePacketOptions(const unsigned char* p, uint32_t len) {
+    for (uint32_t off = 0; off + 4 <= len;) {
+        const uint16_t code = u16(p + off), n = u16(p + off + 2);
+        off += 4;
+        if (code == 0 || off + n > len) break;
+        int64_t lost = 0, back = 0;
+        if (code == 1 && PcapngWriter::parseGapComment(QByteArray(reinterpret_cast<const char*>(p + off), n), &lost, &back)) {
+            gapPending_ = true;
+            pendingGap_ = {0, lost, back};
+        }
+        off += (uint32_t(n) + 3) & ~3U;
+    }
 }
 
 // ---- writer
@@ -354,8 +380,30 @@ void pad4(QByteArray& o) {
 }
 }  // namespace
 
+QByteArray PcapngWriter::gapComment(int64_t lostNs, int64_t backNs) {
+    return QStringLiteral("CoScope: gap in the capture before this frame: the adapter was lost for %1 s, frames in between are missing "
+                          "(lost_ns=%2 back_ns=%3)")
+        .arg(double(backNs - lostNs) / 1e9, 0, 'f', 1)
+        .arg(lostNs)
+        .arg(backNs)
+        .toUtf8();
+}
+
+bool PcapngWriter::parseGapComment(const QByteArray& comment, int64_t* lostNs, int64_t* backNs) {
+    if (!comment.startsWith("CoScope: gap in the capture")) return false;
+    static const QRegularExpression re(QStringLiteral("\\(lost_ns=(-?\\d+) back_ns=(-?\\d+)\\)"));
+    const QRegularExpressionMatch m = re.match(QString::fromUtf8(comment));
+    if (!m.hasMatch()) return false;
+    *lostNs = m.captured(1).toLongLong();
+    *backNs = m.captured(2).toLongLong();
+    return true;
+}
+
+void PcapngWriter::markGap(int64_t lostNs, int64_t backNs) { comment_ = gapComment(lostNs, backNs); }
+
 void PcapngWriter::writeHeader(const CanFrame*) {
     QByteArray& o = out();
+    const qsizetype start = o.size();
     put32(o, kShb);
     put32(o, 28);
     put32(o, kByteOrderMagic);
@@ -364,6 +412,7 @@ void PcapngWriter::writeHeader(const CanFrame*) {
     put32(o, 0xFFFFFFFF);  // section length unknown
     put32(o, 0xFFFFFFFF);
     put32(o, 28);
+    headerBlocks_.push_back({framesWritten(), o.mid(start)});
 }
 
 void PcapngWriter::writeInterface(uint8_t bus) {
@@ -383,10 +432,12 @@ void PcapngWriter::writeInterface(uint8_t bus) {
     put16(body, 0);  // opt_endofopt
     put16(body, 0);
     QByteArray& o = out();
+    const qsizetype start = o.size();
     put32(o, kIdb);
     put32(o, uint32_t(body.size() + 12));
     o += body;
     put32(o, uint32_t(body.size() + 12));
+    headerBlocks_.push_back({framesWritten(), o.mid(start), int(bus)});
     if (interfaceOfBus_.size() <= bus) interfaceOfBus_.resize(size_t(bus) + 1, -1);
     interfaceOfBus_[bus] = int(interfaces_++);
 }
@@ -413,7 +464,9 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     }
     if (!f.isRemote()) std::memcpy(pkt + 8, f.data.data(), std::min<size_t>(f.len, capLen - 8));
     QByteArray& o = out();
-    const uint32_t total = 12 + 20 + capLen + 4;  // capLen is a multiple of 4
+    const uint32_t commentLen = uint32_t(std::min<qsizetype>(comment_.size(), 0xFFFF));
+    const uint32_t options = commentLen ? 4 + ((commentLen + 3) & ~3U) : 0;
+    const uint32_t total = 12 + 20 + capLen + options + 4;  // capLen is a multiple of 4
     put32(o, kEpb);
     put32(o, total);
     put32(o, uint32_t(interfaceOfBus_[f.bus]));
@@ -423,6 +476,13 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     put32(o, capLen);
     put32(o, capLen);
     o.append(reinterpret_cast<const char*>(pkt), capLen);
+    if (commentLen) {
+        put16(o, 1);  // opt_comment
+        put16(o, uint16_t(commentLen));
+        o.append(comment_.constData(), commentLen);
+        pad4(o);
+        comment_.clear();
+    }
     put16(o, 0);  // opt_endofopt
     put16(o, 0);
     put32(o, total);

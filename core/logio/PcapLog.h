@@ -15,6 +15,8 @@ namespace coscope::logio {
 // pcap: both byte orders, microsecond (a1b2c3d4) and nanosecond (a1b23c4d) magic.
 // pcapng (draft-ietf-opsawg-pcapng): SHB (either byte order), IDB with if_tsresol and
 // if_name, EPB, SPB and the obsolete packet block. Record numbers count packets from 1.
+// A packet comment (opt_comment) in CoScope's gap form (PcapngWriter::gapComment) is a gap of
+// the capture before that packet (LogReader::gaps()).
 class PcapReader : public LogReader {
 public:
     QString formatName() const override { return QStringLiteral("pcap"); }
@@ -38,6 +40,7 @@ private:
     bool parseSectionHeader(const unsigned char* first8);
     void parseInterface(const QByteArray& body);
     bool decodePacket(const unsigned char* p, uint32_t capLen, const Interface& itf, CanFrame& frame);
+    void parsePacketOptions(const unsigned char* p, uint32_t len);
     uint32_t u32(const unsigned char* p) const;
     uint16_t u16(const unsigned char* p) const;
     int64_t toNs(uint64_t ticks, uint64_t unitsPerSecond) const;
@@ -52,6 +55,8 @@ private:
     qsizetype pos_ = 0;
     qsizetype end_ = 0;
     bool eof_ = false;
+    bool gapPending_ = false;  // the next frame returned follows pendingGap_
+    CaptureGap pendingGap_;
 };
 
 // Writes pcapng (SHB, one IDB per bus with link type 227 and nanosecond resolution, EPBs),
@@ -59,6 +64,21 @@ private:
 class PcapngWriter : public LogWriter {
 public:
     QString formatName() const override { return QStringLiteral("pcapng"); }
+    // The gap goes into the next packet block as its comment (opt_comment, which Wireshark shows
+    // as the packet comment), in the form gapComment() writes and parseGapComment() reads.
+    void markGap(int64_t lostNs, int64_t backNs) override;
+    static QByteArray gapComment(int64_t lostNs, int64_t backNs);
+    static bool parseGapComment(const QByteArray& comment, int64_t* lostNs, int64_t* backNs);
+
+    // The blocks a reader needs before the packet blocks: the section header, then each
+    // interface block with the number of frames written before it. A journal's pager puts them
+    // in front of one chunk's packet blocks to read that chunk alone.
+    struct HeaderBlock {
+        uint64_t beforeFrame = 0;
+        QByteArray bytes;
+        int bus = -1;  // the interface block's bus (CanFrame::bus); -1: the section header
+    };
+    const std::vector<HeaderBlock>& headerBlocks() const { return headerBlocks_; }
 
 protected:
     void writeHeader(const CanFrame* first) override;
@@ -68,6 +88,8 @@ private:
     void writeInterface(uint8_t bus);
     std::vector<int> interfaceOfBus_;  // bus -> interface id, -1 = none yet
     uint32_t interfaces_ = 0;
+    QByteArray comment_;  // for the next packet block
+    std::vector<HeaderBlock> headerBlocks_;
 };
 
 }  // namespace coscope::logio

@@ -48,6 +48,8 @@ bool CaptureJournal::open(const QString& path, const QStringList& busNames) {
     failed_.store(false);
     written_.store(0);
     stop_ = false;
+    pendingGaps_.clear();
+    gaps_.clear();
     flushRequests_ = flushesDone_ = 0;
     QFile sidecar(sidecarOf(path));
     if (!sidecar.open(QIODevice::WriteOnly | QIODevice::Truncate) || sidecar.write(QByteArray::number(QCoreApplication::applicationPid()) + '\n') < 0) {
@@ -84,6 +86,17 @@ void CaptureJournal::appendFromStore(const TraceStore& store, FrameNo first, siz
     std::lock_guard lock(mutex_);
     pending_.reserve(pending_.size() + count);
     for (size_t i = 0; i < count; ++i) pending_.push_back(store.frame(FrameNo(first + i)));
+}
+
+void CaptureJournal::addGap(const TraceStore::Gap& gap) {
+    if (!running_.load()) return;
+    std::lock_guard lock(mutex_);
+    pendingGaps_.push_back(gap);
+}
+
+size_t CaptureJournal::queuedFrames() const {
+    std::lock_guard lock(mutex_);
+    return pending_.size();
 }
 
 bool CaptureJournal::flush() {
@@ -125,16 +138,19 @@ bool CaptureJournal::writeBatch(const std::vector<CanFrame>& batch) {
     logio::PcapngWriter& out = writer_->pcapng;
     for (const CanFrame& f : batch) {
         const uint64_t n = out.framesWritten();
+        if (!gaps_.empty() && gaps_.front().firstFrame <= n) {
+            out.markGap(gaps_.front().lostNs, gaps_.front().backNs);
+            gaps_.erase(gaps_.begin());
+        }
         if (n > 0 && n % TraceStore::kChunkSize == 0) {
             if (!out.flush()) return false;
             pager_->chunkStarts(n, writer_->file.pos());
         }
         if (!out.write(f)) return false;
-        if (n == 0) {
-            if (!out.flush()) return false;
-            pager_->setFirstFrameEnd(writer_->file.pos());
-        }
     }
+    // The header blocks written so far, for the pager to read a chunk alone.
+    const auto& blocks = out.headerBlocks();
+    for (size_t i = pager_->headerBlocks(); i < blocks.size(); ++i) pager_->addHeaderBlock(blocks[i].beforeFrame, blocks[i].bytes, blocks[i].bus);
     return true;
 }
 
@@ -148,6 +164,8 @@ void CaptureJournal::run() {
         const uint64_t ticket = flushRequests_;
         batch.clear();
         batch.swap(pending_);
+        gaps_.insert(gaps_.end(), pendingGaps_.begin(), pendingGaps_.end());
+        pendingGaps_.clear();
         lock.unlock();
 
         QString why;

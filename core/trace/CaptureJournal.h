@@ -41,6 +41,13 @@ public:
     void append(std::span<const CanFrame> frames);
     // A CaptureSession consumer that queues each new batch.
     void appendFromStore(const TraceStore& store, FrameNo first, size_t count);
+    // A gap of the capture (the adapter was lost and is back): recorded with frame
+    // gap.firstFrame of the store (a pcapng packet comment), or with the first frame written
+    // after that if it was already written. Dropped if no frame follows before close().
+    void addGap(const TraceStore::Gap& gap);
+    // Frames queued and not yet handed to the writer thread (a producer faster than the disk
+    // waits with flush() when this grows: a log read into a spill journal).
+    size_t queuedFrames() const;
     // Writes what is queued and syncs it; blocks until done (Save As, tests).
     bool flush();
     // Writes the rest, syncs, closes the file and removes the sidecar.
@@ -70,6 +77,8 @@ private:
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::vector<CanFrame> pending_;
+    std::vector<TraceStore::Gap> pendingGaps_;
+    std::vector<TraceStore::Gap> gaps_;  // writer thread: gaps waiting for their frame
     bool stop_ = false;
     uint64_t flushRequests_ = 0;  // flush() asked this many times
     uint64_t flushesDone_ = 0;

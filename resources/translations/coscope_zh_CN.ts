@@ -3046,6 +3046,45 @@ Differs from the default</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::CaptureSettingsDialog</name>
+    <message>
+        <source>Capture settings</source>
+        <translation>捕获设置</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>Automatic (%1)</source>
+        <translation>自动（%1）</translation>
+    </message>
+    <message>
+        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GB.</source>
+        <translation>跟踪在内存中最多保留这么多；较旧的帧在需要时从捕获日志读回。0 = 自动：内存的四分之一，最多 4 GB。</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> 天</translation>
+    </message>
+    <message>
+        <source>Trace memory budget:</source>
+        <translation>跟踪内存上限：</translation>
+    </message>
+    <message>
+        <source>Keep capture journals for:</source>
+        <translation>捕获日志保留时间：</translation>
+    </message>
+    <message>
+        <source>Keep capture journals up to:</source>
+        <translation>捕获日志保留总量上限：</translation>
+    </message>
+    <message>
+        <source>Capture journals are kept in %1. Older ones are removed at start and when these settings change; a journal being written or not yet offered for reopening is never removed.</source>
+        <translation>捕获日志保存在 %1。较旧的日志会在启动时及这些设置更改时删除；正在写入或尚未提供重新打开的日志绝不会被删除。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
@@ -4430,6 +4469,16 @@ Arm the test move?</source>
     <message>
         <source>Close the other windows (wizards, dialogs) to change the language</source>
         <translation>请先关闭其他窗口（向导、对话框）再切换语言</translation>
+    </message>
+    <message>
+        <source>Capture se&amp;ttings…</source>
+        <translation>捕获设置(&amp;T)…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Removed %n old capture journal(s)</source>
+        <translation>
+            <numerusform>已删除 %n 个旧的捕获日志</numerusform>
+        </translation>
     </message>
 </context>
 <context>

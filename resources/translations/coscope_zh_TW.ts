@@ -3046,6 +3046,45 @@ Differs from the default</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::CaptureSettingsDialog</name>
+    <message>
+        <source>Capture settings</source>
+        <translation>擷取設定</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>Automatic (%1)</source>
+        <translation>自動（%1）</translation>
+    </message>
+    <message>
+        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GB.</source>
+        <translation>追蹤在記憶體中最多保留這麼多；較舊的封包在需要時從擷取日誌讀回。0 = 自動：記憶體的四分之一，最多 4 GB。</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> 天</translation>
+    </message>
+    <message>
+        <source>Trace memory budget:</source>
+        <translation>追蹤記憶體上限：</translation>
+    </message>
+    <message>
+        <source>Keep capture journals for:</source>
+        <translation>擷取日誌保留時間：</translation>
+    </message>
+    <message>
+        <source>Keep capture journals up to:</source>
+        <translation>擷取日誌保留總量上限：</translation>
+    </message>
+    <message>
+        <source>Capture journals are kept in %1. Older ones are removed at start and when these settings change; a journal being written or not yet offered for reopening is never removed.</source>
+        <translation>擷取日誌保存在 %1。較舊的日誌會在啟動時及這些設定變更時移除；正在寫入或尚未提供重新開啟的日誌絕不會被移除。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
@@ -4430,6 +4469,16 @@ Arm the test move?</source>
     <message>
         <source>Close the other windows (wizards, dialogs) to change the language</source>
         <translation>請先關閉其他視窗（精靈、對話方塊）再切換語言</translation>
+    </message>
+    <message>
+        <source>Capture se&amp;ttings…</source>
+        <translation>擷取設定(&amp;T)…</translation>
+    </message>
+    <message numerus="yes">
+        <source>Removed %n old capture journal(s)</source>
+        <translation>
+            <numerusform>已移除 %n 個舊的擷取日誌</numerusform>
+        </translation>
     </message>
 </context>
 <context>

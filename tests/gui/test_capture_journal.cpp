@@ -7,7 +7,10 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/SimulationDemo.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/trace/LogLoadJob.h"
+#include "app/gui/trace/LogSaveJob.h"
 #include "core/logio/PcapLog.h"
 #include "core/trace/CaptureJournal.h"
 #include "eds/SimulatorDictionaries.h"
@@ -17,6 +20,7 @@
 #include <QFileInfo>
 #include <QPushButton>
 #include <QSettings>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -55,6 +59,33 @@ QString makeUnclosedJournal(const QString& name, int frames) {
         v.push_back(f);
     }
     j.append(v);
+    j.close();
+    QFile s(CaptureJournal::sidecarOf(path));
+    if (!s.open(QIODevice::WriteOnly)) return {};
+    s.write("2147483646\n");
+    return path;
+}
+// As makeUnclosedJournal, with node 5's heartbeat (operational) before a gap at frame `gapAt`
+// and only PDOs of another node after it; the gap is recorded as the app records one live.
+QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs) {
+    QDir().mkpath(capturesFolder());
+    const QString path = capturesFolder() + u'/' + name;
+    CaptureJournal j;
+    if (!j.open(path, {QStringLiteral("can0")})) return {};
+    std::vector<CanFrame> v;
+    for (int i = 0; i < frames; ++i) {
+        CanFrame f;
+        f.timestampNs = 1'700'000'000'000'000'000LL + i * 1'000'000LL + (i >= gapAt ? 5'000'000'000LL : 0);
+        f.id = i < gapAt ? 0x705 : 0x186;
+        f.len = 1;
+        f.data[0] = i < gapAt ? 0x05 : uint8_t(i);
+        v.push_back(f);
+    }
+    *lostNs = v[size_t(gapAt - 1)].timestampNs + 500'000'000LL;
+    *backNs = v[size_t(gapAt)].timestampNs - 1'000'000LL;
+    j.append(std::span(v).first(size_t(gapAt)));
+    j.addGap({FrameNo(gapAt), *lostNs, *backNs});
+    j.append(std::span(v).subspan(size_t(gapAt)));
     j.close();
     QFile s(CaptureJournal::sidecarOf(path));
     if (!s.open(QIODevice::WriteOnly)) return {};
@@ -145,6 +176,97 @@ private slots:
         QCOMPARE(w.workspace()->store()->frame(299).data[1], uint8_t(299 & 0xFF));
         QVERIFY(!w.journalOffer()->isVisible());
         QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(path)));  // offered once
+    }
+
+    // Issue 16 "Lost adapter": the gap of a capture is in its journal; reopened after a kill the
+    // trace marks it again (at the same frame, with the same times), the Nodes table shows the
+    // nodes seen before it as unknown, and Save As to pcapng keeps it.
+    void reopenedJournalShowsTheGap() {
+        int64_t lost = 0, back = 0;
+        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261125-111111-gap.pcapng"), 300, 200, &lost, &back);
+        QVERIFY(!path.isEmpty());
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.journalOffer()->offeredPath(), path);
+        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        QCOMPARE(w.workspace()->store()->size(), size_t(300));
+        const auto gaps = w.workspace()->store()->gaps();
+        QCOMPARE(gaps.size(), size_t(1));
+        QCOMPARE(gaps[0].firstFrame, FrameNo(200));
+        QCOMPARE(gaps[0].lostNs, lost);
+        QCOMPARE(gaps[0].backNs, back);
+        QAbstractItemModel* nodes = w.nodesDock()->view()->model();
+        QVERIFY(waitFor([&] { return nodes->rowCount() == 1; }));
+        QCOMPARE(nodes->index(0, NodesModel::State).data().toString(), QStringLiteral("unknown (gap)"));
+
+        const QString saved = data_.filePath(QStringLiteral("saved.pcapng"));
+        LogSaveJob save(saved, QStringLiteral("pcapng"), w.workspace()->store(), std::nullopt, w.workspace()->busNames());
+        save.start();
+        save.wait();
+        QVERIFY2(!save.hasError(), qPrintable(save.errorString()));
+        logio::PcapReader r;
+        QVERIFY(r.open(saved));
+        QCOMPARE(r.readAll().size(), size_t(300));
+        QCOMPARE(r.gaps().size(), size_t(1));
+        QCOMPARE(r.gaps()[0].frame, uint64_t(200));
+        QCOMPARE(r.gaps()[0].lostNs, lost);
+        QCOMPARE(r.gaps()[0].backNs, back);
+    }
+
+    // Issue 16 "Bounded memory" for File ▸ Open: a log larger than the trace memory budget is
+    // read through a spill journal; the trace keeps about the budget in RAM, pages the rest back
+    // identical, and the spill goes away with the trace.
+    void openedLogStaysWithinTheBudget() {
+        QSettings().setValue(QStringLiteral("trace/memoryBudgetMB"), 4);
+        const QString log = data_.filePath(QStringLiteral("big.log"));
+        constexpr uint32_t kFrames = 8 * TraceStore::kChunkSize + 123;  // 12 MB of records in RAM
+        {
+            QFile f(log);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QByteArray text;
+            for (uint32_t i = 0; i < kFrames; ++i) {
+                text += QStringLiteral("(1700000000.%1) can%2 %3#%4\n")
+                            .arg(i, 6, 10, QLatin1Char('0'))
+                            .arg(i % 7 == 3 ? 1 : 0)
+                            .arg(0x181 + i % 3, 3, 16, QLatin1Char('0'))
+                            .arg(i, 8, 16, QLatin1Char('0'))
+                            .toLatin1();
+                if (text.size() > (1 << 20)) {
+                    f.write(text);
+                    text.clear();
+                }
+            }
+            f.write(text);
+        }
+        MainWindow w;
+        w.setQuiet(true);
+        QVERIFY(w.openLog(log));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }, 120000));
+        auto store = w.workspace()->store();
+        QCOMPARE(store->size(), size_t(kFrames));
+        const QString spill = w.workspace()->loadJob()->spillPath();
+        QVERIFY(spill.startsWith(capturesFolder() + QStringLiteral("/opened/")));
+        QVERIFY(QFileInfo::exists(spill));
+        const bool within = waitFor([&] { return store->memoryBytes() <= (size_t(6) << 20); });
+        QVERIFY2(within, qPrintable(QStringLiteral("%1 bytes in RAM, %2 chunks").arg(store->memoryBytes()).arg(store->residentChunks())));
+        QVERIFY2(store->residentChunks() <= 3, qPrintable(QString::number(store->residentChunks())));
+        const uint64_t pageInsBefore = store->pageIns();
+        for (uint32_t i : {0u, 1u, 3u, 70000u, 3 * TraceStore::kChunkSize + 10, kFrames - 1}) {
+            const CanFrame f = store->frame(i);
+            QCOMPARE(f.id, 0x181u + i % 3);
+            QCOMPARE(int(f.bus), i % 7 == 3 ? 1 : 0);
+            QCOMPARE(f.timestampNs, 1'700'000'000'000'000'000LL + int64_t(i) * 1000);
+            QCOMPARE(f.data[3], uint8_t(i));
+        }
+        QVERIFY(store->pageIns() > pageInsBefore);
+        QCOMPARE(store->pageErrors(), uint64_t(0));
+        QVERIFY(!QFileInfo::exists(CaptureJournal::sidecarOf(spill)));  // never offered as an unclosed capture
+        w.workspace()->clear();
+        QVERIFY(!QFileInfo::exists(spill));
+        QSettings().remove(QStringLiteral("trace/memoryBudgetMB"));
     }
 
     void dismissKeepsTheJournalAndOffersTheNext() {

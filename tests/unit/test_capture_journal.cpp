@@ -8,6 +8,8 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -116,6 +118,47 @@ private slots:
         QCOMPARE(r.frames.size(), size_t(49));
         QVERIFY(sameFrames(r.frames, in, 49));
         QCOMPARE(r.diagnostics, uint64_t(1));
+    }
+
+    // Issue 16 "Lost adapter": the gap goes into the journal as the comment of the first packet
+    // after it; our reader gives it back at that frame, tshark reads the file without error
+    // and shows the comment on that packet.
+    void gapIsInTheJournalAndReadBack() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("gap.pcapng"));
+        CaptureJournal j;
+        QVERIFY(j.open(path, {QStringLiteral("can0")}));
+        const auto in = frames(150);
+        const int64_t lost = in[99].timestampNs + 1'000'000, back = in[100].timestampNs - 2'000'000;
+        j.append(std::span(in).first(100));
+        QVERIFY(j.flush());
+        j.addGap({100, lost, back});
+        j.append(std::span(in).subspan(100));
+        QVERIFY(j.close());
+
+        logio::PcapReader r;
+        QVERIFY(r.open(path));
+        const auto read = r.readAll();
+        QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
+        QCOMPARE(r.diagnosticCount(), uint64_t(0));
+        QVERIFY(sameFrames(read, in, in.size()));
+        QCOMPARE(r.gaps().size(), size_t(1));
+        QCOMPARE(r.gaps()[0].frame, uint64_t(100));
+        QCOMPARE(r.gaps()[0].lostNs, lost);
+        QCOMPARE(r.gaps()[0].backNs, back);
+
+        const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
+        if (tshark.isEmpty()) return;
+        QProcess p;
+        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("frame.comment")});
+        QVERIFY(p.waitForFinished(60000));
+        const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, qPrintable(err));
+        QVERIFY2(!err.contains(QStringLiteral("appears to be damaged")) && !err.contains(QStringLiteral("cut short")), qPrintable(err));
+        const QList<QByteArray> lines = p.readAllStandardOutput().split('\n');
+        QVERIFY(lines.size() >= 150);
+        QVERIFY2(lines[100].contains("gap in the capture"), lines[100].constData());
+        QVERIFY(lines[99].trimmed().isEmpty() && lines[101].trimmed().isEmpty());
     }
 
     void fullDiskIsReported() {

@@ -6,6 +6,8 @@
 #include "core/trace/TraceStore.h"
 
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -67,6 +69,15 @@ private:
     bool open_ = false;
     int waiting_ = 0;
 };
+
+// Bytes this process has read from files so far (/proc/self/io rchar), -1 when unknown.
+qint64 bytesReadByProcess() {
+    QFile io(QStringLiteral("/proc/self/io"));
+    if (!io.open(QIODevice::ReadOnly)) return -1;
+    for (const QByteArray& line : io.readAll().split('\n'))
+        if (line.startsWith("rchar:")) return line.mid(6).trimmed().toLongLong();
+    return -1;
+}
 
 bool same(const CanFrame& a, const CanFrame& b) {
     return a.timestampNs == b.timestampNs && a.id == b.id && a.len == b.len && a.flags == b.flags && a.bus == b.bus &&
@@ -220,6 +231,45 @@ private slots:
         QVERIFY(store.isResident(5));
         QVERIFY(same(store.frame(5), makeFrame(5)));
         QCOMPARE(store.pageIns(), uint64_t(1));
+    }
+
+    // A page-in reads its chunk's byte range and nothing else, however large the journal is:
+    // here a second bus appears in the middle of the journal (its interface block lies after the
+    // file's header), and loading a later chunk still reads about one chunk from the disk.
+    void pageInReadsOnlyItsChunk() {
+        if (bytesReadByProcess() < 0) QSKIP("no /proc/self/io");
+        CaptureJournal journal;
+        QVERIFY(journal.open(dir_.filePath(QStringLiteral("range.pcapng")), {QStringLiteral("can0"), QStringLiteral("can1")}));
+        constexpr uint32_t kChunks = 4;
+        std::vector<CanFrame> all;
+        for (uint32_t i = 0; i < kChunks * kChunk; ++i) {
+            CanFrame f = makeFrame(i);
+            f.bus = i > kChunk + 10 && i % 3 == 0 ? 1 : 0;
+            all.push_back(f);
+        }
+        journal.append(all);
+        QVERIFY(journal.flush());
+        const qint64 fileBytes = QFileInfo(journal.path()).size();
+        const qint64 chunkBytes = fileBytes / kChunks;
+        auto pager = journal.pager();
+        for (uint32_t c : {3u, 2u, 0u}) {
+            std::vector<CanFrame> out;
+            std::string why;
+            const qint64 before = bytesReadByProcess();
+            QVERIFY2(pager->load(uint64_t(c) * kChunk, kChunk, out, &why), why.c_str());
+            const qint64 read = bytesReadByProcess() - before;
+            QVERIFY2(read < chunkBytes * 3 / 2, qPrintable(QStringLiteral("chunk %1: read %2 bytes of a %3-byte journal").arg(c).arg(read).arg(fileBytes)));
+            QCOMPARE(out.size(), size_t(kChunk));
+            for (uint32_t i = 0; i < kChunk; i += 997)
+                QVERIFY2(same(out[i], all[size_t(c) * kChunk + i]), qPrintable(QStringLiteral("frame %1").arg(c * kChunk + i)));
+            QVERIFY(same(out.back(), all[size_t(c + 1) * kChunk - 1]));
+        }
+        // Frames not aligned to a chunk, across two chunks.
+        std::vector<CanFrame> out;
+        std::string why;
+        QVERIFY2(pager->load(3 * kChunk - 5, 10, out, &why), why.c_str());
+        for (uint32_t i = 0; i < 10; ++i) QVERIFY(same(out[i], all[3 * kChunk - 5 + i]));
+        QVERIFY(journal.close());
     }
 
     void nothingIsEvictedWithoutPager() {

@@ -128,6 +128,7 @@ void Workspace::noteLostAdapter(CanBus::State s) {
         const int64_t back = nowNs();
         const FrameNo first = static_cast<FrameNo>(store_->size());
         store_->addGap({first, lostSinceNs_, back});
+        if (journal_) journal_->addGap({first, lostSinceNs_, back});  // a reopened journal shows it again
         events_.restartHeartbeatWaits(back);
         events_.add(renderedEvent(TraceEvent::Kind::Info, back, first, -1, [s = double(back - lostSinceNs_) / 1e9] {
             return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
@@ -164,6 +165,10 @@ void Workspace::disconnectBus() {
 
 QString Workspace::journalFolder() const { return journals::defaultFolder(); }
 
+void Workspace::applyMemoryBudget() {
+    if (store_->memoryBudget() != 0) store_->setMemoryBudget(traceMemoryBudget());
+}
+
 void Workspace::openJournal() {
     journalPath_ = journals::newJournalPath(journalFolder(), sourceName_);
     auto journal = std::make_unique<CaptureJournal>();
@@ -190,7 +195,17 @@ bool Workspace::openLog(const QString& path, QString* error) {
     }
     reset();
     sourceName_ = QFileInfo(path).fileName();
-    loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers());
+    // A gap recorded in the log (a journal of a capture whose adapter was lost): the node states
+    // become unknown from there, as they did live, and the Events say so.
+    auto onGap = [this](const TraceStore::Gap& g) {
+        nodes_.markGap(g.firstFrame);
+        events_.add(renderedEvent(TraceEvent::Kind::Info, g.backNs, g.firstFrame, -1, [s = double(g.backNs - g.lostNs) / 1e9] {
+            return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
+        }));
+    };
+    loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers(), onGap);
+    // Bounded memory: a large log pages from a spill journal beside the capture journals.
+    loadJob_->setSpill(journalFolder() + QStringLiteral("/opened"), traceMemoryBudget());
     loadJob_->start();
     emit sourceChanged();
     return true;

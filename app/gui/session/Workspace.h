@@ -71,6 +71,9 @@ public:
     const CaptureJournal* journal() const { return journal_.get(); }
     QString journalPath() const { return journalPath_; }  // the last capture's, kept after disconnect
     QString journalFolder() const;
+    // The trace memory budget setting (MemoryBudget.h) changed: applied at once to a trace paged
+    // from its journal (a live capture, or one just ended); the next capture uses it anyway.
+    void applyMemoryBudget();
 
     QString sourceName() const { return sourceName_; }
     QStringList busNames() const;

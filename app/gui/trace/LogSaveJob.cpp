@@ -6,6 +6,8 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 #include <QCoreApplication>
@@ -54,6 +56,10 @@ void LogSaveJob::run() {
         return;
     }
     const size_t total = frames_ ? frames_->size() : store_->size();
+    // Gaps of the capture go with the first frame saved after them (pcapng keeps them).
+    std::vector<TraceStore::Gap> gaps = store_->gaps();
+    std::sort(gaps.begin(), gaps.end(), [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
+    size_t nextGap = 0;
     for (size_t i = 0; i < total; ++i) {
         if ((i & 0xFFFF) == 0) {
             setProgress(total ? double(i) / double(total) : 1.0);
@@ -61,6 +67,10 @@ void LogSaveJob::run() {
         }
         const FrameNo n = frames_ ? (*frames_)[i] : static_cast<FrameNo>(i);
         *current = n;
+        if (nextGap < gaps.size() && gaps[nextGap].firstFrame <= n) {
+            writer->markGap(gaps[nextGap].lostNs, gaps[nextGap].backNs);
+            while (nextGap < gaps.size() && gaps[nextGap].firstFrame <= n) ++nextGap;
+        }
         if (!writer->write(store_->frame(n))) break;
         written_.store(i + 1, std::memory_order_relaxed);
     }
