@@ -2850,6 +2850,13 @@ Differs from the default</source>
     </message>
 </context>
 <context>
+    <name>TraceFind</name>
+    <message>
+        <source>Finding &apos;%1&apos;</source>
+        <translation>正在查找“%1”</translation>
+    </message>
+</context>
+<context>
     <name>WizardFramesPane</name>
     <message>
         <source>Time (s)</source>
@@ -6427,10 +6434,6 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; not found in the next %L2 rows; search again to continue</source>
-        <translation>在接下来的 %L2 行中找不到“%1”；再次搜索以继续</translation>
     </message>
     <message>
         <source>&apos;%1&apos; not found</source>

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Bounded memory in the app (issue 16): with a tiny trace budget (trace/memoryBudgetMB = 1) a
 // live capture of several chunks keeps only a few in RAM, and yet scrolling to the top, Find,
-// a filter and Save As reach the oldest frames, which come back from the capture journal.
+// a filter and Save As reach the oldest frames, which come back from the capture journal; Find
+// reaches frames that are all paged out when it is asked (it searches the store's frames on a
+// worker, never the rows' "loading…" text).
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/MemoryBudget.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 #include "core/logio/LogFormats.h"
 #include "core/trace/CaptureJournal.h"
 #include "eds/SimulatorDictionaries.h"
@@ -14,9 +17,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLineEdit>
+#include <QToolBar>
+#include <QToolButton>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -68,51 +74,54 @@ private slots:
     }
     void cleanupTestCase() { QSettings().remove(kMemoryBudgetKey); }
 
+    // A live capture of the log (through the journal) as fast as the capture path takes it.
+    static bool capture(MainWindow& w, const QString& log) {
+        w.setQuiet(true);
+        w.show();
+        if (!QTest::qWaitForWindowActive(&w)) return false;
+        if (!w.connectBus(QStringLiteral("replay://") + log + QStringLiteral("?speed=0"))) return false;
+        auto store = w.workspace()->store();
+        return waitFor([&] { return store->size() == size_t(kFrames); }, 120000) && waitFor([&] {
+                   const CaptureJournal* j = w.workspace()->journal();  // none once the replay ended
+                   return !j || j->framesWritten() == uint64_t(kFrames);
+               }, 60000) && waitFor([&] { return w.traceDock()->model()->rowCount() == kFrames; }, 30000);
+    }
+
     void oldestFramesReachableWithTinyBudget() {
         const QString log = writeLog(dir_.filePath(QStringLiteral("in.log")));
         QVERIFY(!log.isEmpty());
         MainWindow w;
-        w.setQuiet(true);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
-        // A live capture (through the journal) as fast as the capture path takes it.
-        QVERIFY(w.connectBus(QStringLiteral("replay://") + log + QStringLiteral("?speed=0")));
+        QVERIFY(capture(w, log));
         auto store = w.workspace()->store();
-        QVERIFY(waitFor([&] { return store->size() == size_t(kFrames); }, 60000));
-        QVERIFY(waitFor([&] {
-            const CaptureJournal* j = w.workspace()->journal();  // none once the replay ended
-            return !j || j->framesWritten() == uint64_t(kFrames);
-        }, 20000));
-        QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() == kFrames; }, 10000));
 
         // Scrolling to the oldest rows (Ctrl+Home in the table) shows frame 0.
         QTableView* view = w.traceDock()->view();
         TraceModel* m = w.traceDock()->model();
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, QPoint(view->viewport()->width() / 2, 5));
         QTest::keyClick(view->viewport(), Qt::Key_Home, Qt::ControlModifier);
-        QVERIFY2(waitFor([&] { return view->rowAt(0) == 0; }, 3000), qPrintable(QString::number(view->rowAt(0))));
+        QVERIFY2(waitFor([&] { return view->rowAt(0) == 0; }, 10000), qPrintable(QString::number(view->rowAt(0))));
         // The row is drawn as loading while the store's loader thread reads it back, then shown.
-        QVERIFY2(waitFor([&] { return cell(m, 0, TraceModel::CobId) == QStringLiteral("181"); }, 10000), qPrintable(cell(m, 0, TraceModel::Summary)));
+        QVERIFY2(waitFor([&] { return cell(m, 0, TraceModel::CobId) == QStringLiteral("181"); }, 30000), qPrintable(cell(m, 0, TraceModel::Summary)));
         QCOMPARE(store->frame(0).data[3], uint8_t(0));
         QCOMPARE(store->frame(kFrames - 1).data[3], uint8_t((kFrames - 1) & 0xFF));
         QVERIFY(store->pageIns() >= 1);  // frame 0 came back from the journal
         // Back within the budget (1 MiB of chunks + indexes) once the pages read are let go again
         // (evicted chunks are freed up to 1 s later, while a reader may still hold them).
-        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 5000), qPrintable(QString::number(store->memoryBytes())));
+        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000), qPrintable(QString::number(store->memoryBytes())));
 
         // Find goes back to the one EMCY among the oldest frames.
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
         typeAndEnter(find, QStringLiteral("EMCY"));
-        QVERIFY(waitFor([&] { return view->currentIndex().isValid() && m->frameAt(view->currentIndex().row()) == FrameNo(kEmcyAt); }, 20000));
+        QVERIFY(waitFor([&] { return view->currentIndex().isValid() && m->frameAt(view->currentIndex().row()) == FrameNo(kEmcyAt); }, 60000));
 
         // A filter finds it too.
         typeAndEnter(w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit")), QStringLiteral("svc:emcy"));
-        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && m->isFiltered() && m->rowCount() == 1; }, 30000));
+        QVERIFY(waitFor([&] { return !w.traceDock()->isFiltering() && m->isFiltered() && m->rowCount() == 1; }, 60000));
         QCOMPARE(m->frameAt(0), FrameNo(kEmcyAt));
         // Back within the budget (1 MiB of chunks + indexes) once the pages read are let go again
         // (evicted chunks are freed up to 1 s later, while a reader may still hold them).
-        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 5000), qPrintable(QString::number(store->memoryBytes())));
+        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000), qPrintable(QString::number(store->memoryBytes())));
 
         // Save As writes every frame, the evicted ones from the journal.
         const QString out = dir_.filePath(QStringLiteral("saved.log"));
@@ -127,6 +136,67 @@ private slots:
         QCOMPARE(saved[kEmcyAt].id, 0x81u);
         QCOMPARE(saved[1].data[3], uint8_t(1));
         QCOMPARE(saved[70000].data[2], uint8_t(70000 >> 8));
+        QCOMPARE(store->pageErrors(), uint64_t(0));
+    }
+
+    // Find by the find field (Enter: next, the ▲ button: previous) while every frame it must
+    // reach is paged out to the journal: the frame found is selected and shown.
+    void findReachesPagedOutFrames() {
+        const QString log = writeLog(dir_.filePath(QStringLiteral("find.log")));
+        QVERIFY(!log.isEmpty());
+        MainWindow w;
+        QVERIFY(capture(w, log));
+        auto store = w.workspace()->store();
+        TraceView* view = w.traceDock()->view();
+        TraceModel* m = w.traceDock()->model();
+        QCOMPARE(view->currentRow(), -1);  // nothing selected: Find starts at the first row
+        // The view follows the end (the chunks of its rows stay in RAM); the budget sends the
+        // older chunks back to the journal.
+        QVERIFY2(waitFor([&] { return !store->isResident(0) && !store->isResident(70000); }, 60000),
+                 qPrintable(QString::number(store->residentChunks())));
+        const uint64_t pageIns = store->pageIns();
+
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        QVERIFY(find);
+        typeAndEnter(find, QStringLiteral("EMCY"));  // in the summary only
+        QVERIFY2(waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); }, 60000),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(store->pageIns() > pageIns);  // read back from the journal
+        QVERIFY(!find->property("missed").toBool());
+        // Shown: its row is in view, with its own COB-ID once its chunk is in RAM.
+        QVERIFY(waitFor([&] { return view->rowAt(view->viewport()->height() / 2) >= 0; }, 10000));
+        QVERIFY(waitFor([&] {
+            const QModelIndex i = view->currentIndex();
+            return i.isValid() && view->visualRect(i).intersects(view->viewport()->rect()) &&
+                   view->model()->data(i.siblingAtColumn(TraceModel::CobId)).toString() == QStringLiteral("081");
+        }, 30000));
+
+        // Frame 70000 (data 00 01 11 70), in the second chunk, which is paged out now.
+        QVERIFY(waitFor([&] { return !store->isResident(70000); }, 60000));
+        QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
+        typeAndEnter(find, QStringLiteral("00 01 11 70"));
+        QVERIFY2(waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(70000); }, 60000),
+                 qPrintable(w.statusBar()->currentMessage()));
+
+        // Back with Find previous from there: the EMCY again, its chunk paged out meanwhile.
+        QVERIFY(waitFor([&] { return !store->isResident(kEmcyAt); }, 60000));
+        QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(find, QStringLiteral("emcy"));
+        auto* bar = w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar"));
+        QVERIFY(bar);
+        QAction* prev = nullptr;
+        for (QAction* a : bar->actions())
+            if (a->objectName() == QStringLiteral("findPrevAction")) prev = a;
+        QVERIFY(prev);
+        QTest::mouseClick(bar->widgetForAction(prev), Qt::LeftButton);
+        QVERIFY2(waitFor([&] { return m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); }, 60000), qPrintable(w.statusBar()->currentMessage()));
+
+        // A text that is nowhere: searched to the end, then said so.
+        QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
+        typeAndEnter(find, QStringLiteral("no such text"));
+        QVERIFY2(waitFor([&] { return find->property("missed").toBool(); }, 120000), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("not found")));
+        QCOMPARE(m->frameAt(view->currentRow()), FrameNo(kEmcyAt));
         QCOMPARE(store->pageErrors(), uint64_t(0));
     }
 };

@@ -43,7 +43,13 @@ void EventsDock::rebind() { model_->setLog(&workspace_->events()); }
 
 void EventsDock::refresh() {
     const auto& s = workspace_->store();
-    model_->setOrigin(s && !s->empty() ? s->record(0).timestampNs : 0);
+    if (!s || s->empty()) {
+        model_->setOrigin(0);
+        originStore_.reset();
+    } else if (originStore_.lock() != s) {
+        model_->setOrigin(s->record(0).timestampNs);
+        originStore_ = s;
+    }
     auto* sb = view_->verticalScrollBar();
     const bool atEnd = sb->value() >= sb->maximum() - 2;
     const int before = model_->rowCount();

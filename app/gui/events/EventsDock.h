@@ -35,6 +35,9 @@ private:
     EventsModel* model_ = nullptr;
     QTableView* view_ = nullptr;
     bool follow_ = true;
+    // The store whose first frame's time is the origin: read once, not at every tick (with
+    // bounded memory, issue 16, a read of frame 0 would keep its chunk in RAM or load it back).
+    std::weak_ptr<const TraceStore> originStore_;
 };
 
 }  // namespace coscope::gui

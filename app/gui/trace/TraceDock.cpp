@@ -4,6 +4,7 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/FrameDetailsView.h"
 #include "app/gui/trace/TraceFilter.h"
+#include "app/gui/trace/TraceFind.h"
 #include "app/gui/trace/TraceModel.h"
 #include "app/gui/trace/TraceView.h"
 #include "app/gui/trace/TraceWindow.h"
@@ -11,6 +12,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QFrame>
 #include <QHeaderView>
 #include <QLabel>
@@ -26,7 +28,7 @@
 namespace coscope::gui {
 
 namespace {
-constexpr int kFindBudgetRows = 500000;  // rows searched per find step: keeps the GUI responsive
+constexpr int kFindSliceMs = 30;  // Find on the GUI thread at most this long, then on a worker
 }
 
 TraceDock::TraceDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Trace"), parent), workspace_(workspace) {
@@ -219,6 +221,7 @@ bool TraceDock::loadReportShown() const { return report_->isVisible(); }
 
 void TraceDock::rebind() {
     hideLoadReport();
+    findJob_.reset();
     filterJob_.reset();
     model_->setStore(workspace_->store());
     model_->setDecoder(workspace_->decoder());
@@ -277,6 +280,7 @@ bool TraceDock::applyFilter(const QString& query, QString* error) {
     filterEdit_->setStyleSheet({});
     filterEdit_->setToolTip({});
     if (filterEdit_->text() != query) filterEdit_->setText(query);
+    findJob_.reset();  // it searched the rows of the view before
     filterJob_.reset();
     const bool group = groupSdo_->isChecked();
     if ((filter->isEmpty() && !group) || !workspace_->store()) {
@@ -299,7 +303,10 @@ void TraceDock::toggleRow(int row) {
     model_->toggleExpanded(row);
 }
 
-Job* TraceDock::activeJob() const { return filterJob_.get(); }
+Job* TraceDock::activeJob() const {
+    if (findJob_) return findJob_.get();
+    return filterJob_.get();
+}
 
 void TraceDock::showFrame(FrameNo n) {
     model_->refresh();
@@ -321,34 +328,86 @@ void TraceDock::setFindMissed(bool missed) {
 }
 
 bool TraceDock::find(const QString& text, bool forward) {
+    findJob_.reset();  // a new search replaces one still running
     if (text.isEmpty()) return false;
-    if (model_->rowCount() == 0) {
+    if (model_->rowCount() == 0 || !model_->store()) {
         setFindMissed(true);
         emit message(tr("'%1' not found: the trace is empty").arg(text));
         return false;
     }
     setFollow(false);
-    const int rows = model_->rowCount();
+    const FindRows rows = model_->findRows();
     const int current = view_->currentRow();
-    const int start = current >= 0 ? current : (forward ? -1 : rows);
-    int searched = 0;
-    for (int row = start + (forward ? 1 : -1); row >= 0 && row < rows && searched < kFindBudgetRows; row += forward ? 1 : -1, ++searched) {
-        for (int col : {int(TraceModel::Summary), int(TraceModel::CobId), int(TraceModel::Data)}) {
-            if (model_->data(model_->index(row, col), Qt::DisplayRole).toString().contains(text, Qt::CaseInsensitive)) {
-                view_->setCurrentRow(row, true);
-                setFindMissed(false);
-                return true;
+    const int64_t from = current >= 0 ? model_->findPosition(current) + (forward ? 1 : -1) : (forward ? 0 : static_cast<int64_t>(rows.count) - 1);
+    return findFrom(text, forward, rows, from);
+}
+
+bool TraceDock::findFrom(const QString& text, bool forward, const FindRows& rows, int64_t from) {
+    // Rows whose frames are in RAM are tested here, for a moment; a frame paged out to the
+    // journal (issue 16) is read back by the worker, so the GUI thread never waits for the disk.
+    const TraceStore& store = *model_->store();
+    FrameMatcher matcher(text, model_->decoder());
+    QElapsedTimer clock;
+    clock.start();
+    uint32_t tick = 0;
+    for (;;) {
+        const FindStep step = findRows(store, rows, matcher, from, forward, [&](int64_t, FrameNo n) {
+            if ((++tick & 0xFF) == 0 && clock.elapsed() > kFindSliceMs) return false;
+            return findReadsResident(store, n);
+        });
+        if (step.found >= 0) {
+            const int row = model_->rowOfFindPosition(rows, step.found);
+            if (row >= 0 && row == view_->currentRow()) {  // another frame of the selected transfer
+                from = step.found + (forward ? 1 : -1);
+                continue;
             }
+            if (row < 0) {
+                findMissed(text);
+                return false;
+            }
+            view_->setCurrentRow(row, true);
+            setFindMissed(false);
+            return true;
         }
+        if (step.next < 0) {
+            findMissed(text);
+            return false;
+        }
+        const uint64_t serial = ++findSerial_;
+        findJob_ = std::make_unique<FindJob>(model_->store(), model_->decoder(), text, rows, step.next, forward, [this, serial] {
+            QMetaObject::invokeMethod(this, [this, serial] { onFindDone(serial); }, Qt::QueuedConnection);
+        });
+        findJob_->start();
+        return false;
     }
-    emit message(searched >= kFindBudgetRows ? tr("'%1' not found in the next %L2 rows; search again to continue").arg(text).arg(kFindBudgetRows)
-                                             : tr("'%1' not found").arg(text));
+}
+
+void TraceDock::onFindDone(uint64_t serial) {
+    if (!findJob_ || serial != findSerial_) return;  // replaced or stopped meanwhile
+    findJob_->wait();
+    const std::unique_ptr<FindJob> job = std::move(findJob_);
+    if (job->isCancelled()) return;
+    if (job->foundRow() < 0) {
+        findMissed(job->text());
+        return;
+    }
+    // The rows may have changed meanwhile (a live capture appends): the row of the frame found.
+    const int row = model_->rowOf(job->foundFrame());
+    if (row < 0) {
+        findMissed(job->text());
+        return;
+    }
+    if (row == view_->currentRow()) {  // another frame of the selected transfer: go on
+        findFrom(job->text(), job->forward(), model_->findRows(), job->foundRow() + (job->forward() ? 1 : -1));
+        return;
+    }
+    view_->setCurrentRow(row, true);
+    setFindMissed(false);
+}
+
+void TraceDock::findMissed(const QString& text) {
+    emit message(tr("'%1' not found").arg(text));
     setFindMissed(true);
-    if (searched >= kFindBudgetRows) {
-        const int row = start + (forward ? searched : -searched);
-        view_->setCurrentRow(std::clamp(row, 0, rows - 1), false);
-    }
-    return false;
 }
 
 void TraceDock::toggleBookmark() {

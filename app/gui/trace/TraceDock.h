@@ -18,6 +18,8 @@ class QLineEdit;
 namespace coscope::gui {
 
 class FilterJob;
+class FindJob;
+struct FindRows;
 class FrameDetailsView;
 class Job;
 class TraceModel;
@@ -51,8 +53,12 @@ public:
     Job* activeJob() const;
 
     void showFrame(FrameNo n);  // selects it (clears the filter if it hides the frame)
-    // Finds text (summary, COB-ID, data) from the current row on; false when not found.
+    // Finds text (summary, COB-ID, data) from the current row on and selects its row. Rows whose
+    // frames are in RAM are tested at once; the search goes on on a worker (isFinding(), its
+    // progress in activeJob()) when it reaches frames paged out to the journal or takes long,
+    // and selects the row it finds when done. True when found at once.
     bool find(const QString& text, bool forward);
+    bool isFinding() const { return findJob_ != nullptr; }
     void toggleBookmark();
     void gotoBookmark(bool forward);
 
@@ -70,6 +76,9 @@ private:
     void onCurrentChanged();
     void toggleRow(int row);  // a row of the trace model
     void setFindMissed(bool missed);  // the find field turns red while its text is not found
+    bool findFrom(const QString& text, bool forward, const FindRows& rows, int64_t from);
+    void onFindDone(uint64_t serial);
+    void findMissed(const QString& text);
 
     Workspace* workspace_;
     TraceModel* model_ = nullptr;
@@ -85,6 +94,8 @@ private:
     QWidget* report_ = nullptr;
     QLabel* reportText_ = nullptr;
     std::unique_ptr<FilterJob> filterJob_;
+    std::unique_ptr<FindJob> findJob_;
+    uint64_t findSerial_ = 0;  // of findJob_, so a finished job's late report is told apart
     int64_t shownDetailsFor_ = -1;
     uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
 };

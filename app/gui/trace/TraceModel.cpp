@@ -380,6 +380,35 @@ std::vector<FrameNo> TraceModel::shownFrames() const {
     return out;
 }
 
+FindRows TraceModel::findRows() const {
+    FindRows rows;
+    if (isGrouped()) {
+        if (filter_) rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_);
+        rows.count = filter_ ? filtered_.size() : scanned_;
+        return rows;
+    }
+    rows.count = static_cast<size_t>(rows_);
+    switch (source()) {
+    case Source::All: break;
+    case Source::Filtered: rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_.begin(), filtered_.begin() + rows_); break;
+    case Source::Latest: rows.frames = std::make_shared<const std::vector<FrameNo>>(latestRows_.begin(), latestRows_.begin() + rows_); break;
+    }
+    return rows;
+}
+
+int64_t TraceModel::findPosition(int row) const {
+    if (!isGrouped()) return row;
+    const FrameNo n = frameAt(row);
+    if (!filter_) return n;
+    return std::lower_bound(filtered_.begin(), filtered_.end(), n) - filtered_.begin();
+}
+
+int TraceModel::rowOfFindPosition(const FindRows& rows, int64_t pos) const {
+    if (pos < 0 || static_cast<size_t>(pos) >= rows.count) return -1;
+    if (!isGrouped()) return pos < rows_ ? static_cast<int>(pos) : -1;
+    return rowOf(rows.frameAt(static_cast<size_t>(pos)));
+}
+
 int TraceModel::rowAtOrAfter(FrameNo n) const {
     if (isGrouped()) {
         const auto end = grouped_.top.begin() + static_cast<std::ptrdiff_t>(grouped_.top.size());
@@ -429,13 +458,7 @@ QString TraceModel::summaryOf(FrameNo n) const {
     if (summaries_.size() >= kSummaryCacheLimit) summaries_.clear();
     scratch_.reset(dissect::Dissection::Level::Flat);
     decoder_->decodeAt(*store_, n, scratch_);
-    // The dissectors write English (the CLI's words); the row shows the UI language (CoreText.h).
-    QString text = coreLines(scratch_.summary);
-    if (!scratch_.warnings.isEmpty()) {
-        QStringList warnings = scratch_.warnings;
-        for (QString& w : warnings) w = coreText(w);
-        text += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
-    }
+    QString text = summaryText(scratch_);
     return summaries_.emplace(n, text).first->second;
 }
 
@@ -536,10 +559,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     case Number: return static_cast<qulonglong>(n) + 1;
     case Time: return timeText(n, index.row());
     case Bus: return r.bus < busNames_.size() ? busNames_[r.bus] : QString::number(r.bus);
-    case CobId:
-        if (r.flags & CanFrame::Error) return QStringLiteral("ERR");
-        return (r.flags & CanFrame::Extended) ? QStringLiteral("%1").arg(r.id, 8, 16, QLatin1Char('0')).toUpper()
-                                              : QStringLiteral("%1").arg(r.id, 3, 16, QLatin1Char('0')).toUpper();
+    case CobId: return cobIdText(r);
     case Node: {
         const auto info = canopen::classifyCobId(r.id, r.flags & (CanFrame::Extended | CanFrame::Error));
         return info.node >= 0 ? QVariant(info.node) : QVariant(QString());
@@ -550,11 +570,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     }
     case Direction: return (r.flags & CanFrame::Tx) ? QStringLiteral("Tx") : QStringLiteral("Rx");  // as in the CAN tools and manuals
     case Length: return r.len;
-    case Data: {
-        if (r.flags & CanFrame::Remote) return QStringLiteral("RTR");
-        const auto p = store_->payload(n);
-        return QString::fromLatin1(QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size())).toHex(' ').toUpper());
-    }
+    case Data: return dataText(*store_, n);
     case Summary: return summaryOf(n);
     default: return {};
     }

@@ -4,6 +4,7 @@
 #include "app/gui/trace/FrameDecoder.h"
 #include "app/gui/trace/SdoGroups.h"
 #include "app/gui/trace/TraceFilter.h"
+#include "app/gui/trace/TraceFind.h"
 #include "core/trace/TraceStore.h"
 
 #include <QAbstractTableModel>
@@ -79,6 +80,13 @@ public:
     // The frames the view stands for, in trace order, each once (a collapsed transfer row
     // stands for all its frames the filter lets through): what "save shown frames" writes.
     std::vector<FrameNo> shownFrames() const;
+    // What Find looks through (TraceFind.h): the frames of the rows in row order; grouped, the
+    // frames of the source in trace order (a frame then stands for its transfer's header row
+    // while the transfer is collapsed). findPosition(): the position of a row's frame there;
+    // rowOfFindPosition(): the row that shows position `pos` of `rows`.
+    FindRows findRows() const;
+    int64_t findPosition(int row) const;
+    int rowOfFindPosition(const FindRows& rows, int64_t pos) const;
     // The row showing frame n, or the nearest row after it (-1 when none).
     int rowAtOrAfter(FrameNo n) const;
     int rowOf(FrameNo n) const;  // exact, -1 when the frame is not shown

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/trace/TraceFind.h"
+
+#include "app/gui/language/CoreText.h"
+#include "dissectors/NetworkContext.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+namespace coscope::gui {
+
+QString cobIdText(const TraceRecord& r) {
+    if (r.flags & CanFrame::Error) return QStringLiteral("ERR");
+    return (r.flags & CanFrame::Extended) ? QStringLiteral("%1").arg(r.id, 8, 16, QLatin1Char('0')).toUpper()
+                                          : QStringLiteral("%1").arg(r.id, 3, 16, QLatin1Char('0')).toUpper();
+}
+
+QString dataText(const TraceStore& store, FrameNo n) {
+    if (store.record(n).flags & CanFrame::Remote) return QStringLiteral("RTR");
+    const auto p = store.payload(n);
+    return QString::fromLatin1(QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size())).toHex(' ').toUpper());
+}
+
+QString summaryText(const dissect::Dissection& d) {
+    // The dissectors write English (the CLI's words); the row shows the UI language (CoreText.h).
+    QString text = coreLines(d.summary);
+    if (!d.warnings.isEmpty()) {
+        QStringList warnings = d.warnings;
+        for (QString& w : warnings) w = coreText(w);
+        text += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
+    }
+    return text;
+}
+
+bool FrameMatcher::matches(const TraceStore& store, FrameNo n) {
+    if (cobIdText(store.record(n)).contains(text_, Qt::CaseInsensitive)) return true;
+    if (dataText(store, n).contains(text_, Qt::CaseInsensitive)) return true;
+    scratch_.reset(dissect::Dissection::Level::Flat);
+    decoder_->decodeAt(store, n, scratch_);
+    return summaryText(scratch_).contains(text_, Qt::CaseInsensitive);
+}
+
+FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& matcher, int64_t from, bool forward,
+                  const std::function<bool(int64_t, FrameNo)>& mayRead) {
+    const auto count = static_cast<int64_t>(rows.count);
+    for (int64_t row = from; row >= 0 && row < count; row += forward ? 1 : -1) {
+        const FrameNo n = rows.frameAt(static_cast<size_t>(row));
+        if (mayRead && !mayRead(row, n)) return {-1, row};
+        if (matcher.matches(store, n)) return {row, -1};
+    }
+    return {};
+}
+
+bool findReadsResident(const TraceStore& store, FrameNo n) {
+    // The summary is decoded from the decoder's checkpoint at or before n (TraceDecoder).
+    const auto checkpoint = static_cast<FrameNo>(n - n % dissect::NetworkContext::checkpointInterval());
+    return store.isResident(n) && store.isResident(checkpoint);
+}
+
+FindJob::FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text, FindRows rows,
+                 int64_t from, bool forward, std::function<void()> done)
+    : Job(QCoreApplication::translate("TraceFind", "Finding '%1'").arg(text)),
+      store_(std::move(store)),
+      decoder_(std::move(decoder)),
+      text_(std::move(text)),
+      rows_(std::move(rows)),
+      from_(from),
+      forward_(forward),
+      done_(std::move(done)) {}
+
+FindJob::~FindJob() { stopAndJoin(); }
+
+void FindJob::run() {
+    FrameMatcher matcher(text_, decoder_);
+    const auto total = static_cast<double>(forward_ ? static_cast<int64_t>(rows_.count) - from_ : from_ + 1);
+    uint32_t tick = 0;
+    const FindStep step = findRows(*store_, rows_, matcher, from_, forward_, [&](int64_t row, FrameNo) {
+        if ((++tick & 0xFFF) != 0) return true;
+        setProgress(total > 0 ? static_cast<double>(forward_ ? row - from_ : from_ - row) / total : 1.0);
+        return !isCancelled();
+    });
+    if (!isCancelled()) found_ = step.found;
+    if (done_) done_();
+}
+
+}  // namespace coscope::gui

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "app/gui/session/Job.h"
+#include "app/gui/trace/FrameDecoder.h"
+#include "core/trace/TraceStore.h"
+
+#include <QString>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace coscope::gui {
+
+// The texts of a frame's trace row that Find looks in, as the trace shows them (TraceModel uses
+// them too): the COB-ID column, the data bytes, the decoded summary in the UI language.
+QString cobIdText(const TraceRecord& r);
+QString dataText(const TraceStore& store, FrameNo n);
+QString summaryText(const dissect::Dissection& d);
+
+// The rows Find looks through, as frame numbers in row order: row r is frame r, or (filtered,
+// latest per COB-ID) (*frames)[r]. A copy, so a worker can read it while the view changes.
+struct FindRows {
+    std::shared_ptr<const std::vector<FrameNo>> frames;  // null: row r is frame r
+    size_t count = 0;
+    FrameNo frameAt(size_t row) const { return frames ? (*frames)[row] : static_cast<FrameNo>(row); }
+};
+
+// Does frame n's row contain `text` (case-insensitive)? Reads the frame from the store, so a
+// frame paged out to the journal is loaded back (issue 16): never matched against "loading…".
+class FrameMatcher {
+public:
+    FrameMatcher(QString text, std::shared_ptr<const FrameDecoder> decoder) : text_(std::move(text)), decoder_(std::move(decoder)) {}
+    bool matches(const TraceStore& store, FrameNo n);
+
+private:
+    QString text_;
+    std::shared_ptr<const FrameDecoder> decoder_;
+    dissect::Dissection scratch_;
+};
+
+// Tests rows from `from` on (inclusive) in one direction while `mayRead(row, frame)` says so.
+// found: the first matching row, else -1; next: the row it stopped before (-1: ran off the end).
+struct FindStep {
+    int64_t found = -1;
+    int64_t next = -1;
+};
+FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& matcher, int64_t from, bool forward,
+                  const std::function<bool(int64_t row, FrameNo n)>& mayRead);
+
+// The frames a row's texts are read from (the frame, the decoder's checkpoint before it) are in
+// RAM: testing it on the GUI thread does not wait for the disk.
+bool findReadsResident(const TraceStore& store, FrameNo n);
+
+// Find over rows whose frames are paged out (or too many to test at once): on a worker, which
+// loads the chunks back from the journal as it goes; `done` is called on the worker when it ends.
+class FindJob : public Job {
+public:
+    FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text, FindRows rows, int64_t from,
+            bool forward, std::function<void()> done);
+    ~FindJob() override;
+
+    const QString& text() const { return text_; }
+    bool forward() const { return forward_; }
+    int64_t foundRow() const { return found_; }  // valid once isDone(); -1: not found
+    FrameNo foundFrame() const { return rows_.frameAt(static_cast<size_t>(found_)); }
+
+protected:
+    void run() override;
+
+private:
+    std::shared_ptr<const TraceStore> store_;
+    std::shared_ptr<const FrameDecoder> decoder_;
+    QString text_;
+    FindRows rows_;
+    int64_t from_;
+    bool forward_;
+    std::function<void()> done_;
+    int64_t found_ = -1;
+};
+
+}  // namespace coscope::gui
