@@ -7,6 +7,8 @@
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <algorithm>
+
 namespace coscope::gui {
 
 QString cobIdText(const TraceRecord& r) {
@@ -43,10 +45,40 @@ bool FrameMatcher::matches(const TraceStore& store, FrameNo n) {
 FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& matcher, int64_t from, bool forward,
                   const std::function<bool(int64_t, FrameNo)>& mayRead) {
     const auto count = static_cast<int64_t>(rows.count);
-    for (int64_t row = from; row >= 0 && row < count; row += forward ? 1 : -1) {
-        const FrameNo n = rows.frameAt(static_cast<size_t>(row));
-        if (mayRead && !mayRead(row, n)) return {-1, row};
-        if (matcher.matches(store, n)) return {row, -1};
+    if (forward) {
+        for (int64_t row = from; row >= 0 && row < count; ++row) {
+            const FrameNo n = rows.frameAt(static_cast<size_t>(row));
+            if (mayRead && !mayRead(row, n)) return {-1, row};
+            if (matcher.matches(store, n)) return {row, -1};
+        }
+        return {};
+    }
+    // Backward. A summary is decoded forward from the checkpoint before its frame (TraceDecoder),
+    // so rows tested one by one backward would each re-decode up to a checkpoint interval. The
+    // rows are taken in runs whose frames share a checkpoint and tested in frame order; the
+    // highest matching row of a run is the one a row-by-row search back would have met first.
+    const uint64_t interval = dissect::NetworkContext::checkpointInterval();
+    std::vector<std::pair<FrameNo, int64_t>> run;
+    int64_t row = from < count ? from : -1;
+    while (row >= 0) {
+        run.clear();
+        const uint64_t block = rows.frameAt(static_cast<size_t>(row)) / interval;
+        int64_t stopped = -1;
+        for (; row >= 0; --row) {
+            const FrameNo n = rows.frameAt(static_cast<size_t>(row));
+            if (n / interval != block) break;
+            if (mayRead && !mayRead(row, n)) {
+                stopped = row;
+                break;
+            }
+            run.emplace_back(n, row);
+        }
+        std::sort(run.begin(), run.end());
+        int64_t found = -1;
+        for (const auto& [n, r] : run)
+            if (matcher.matches(store, n)) found = std::max(found, r);
+        if (found >= 0) return {found, -1};
+        if (stopped >= 0) return {-1, stopped};
     }
     return {};
 }

@@ -41,6 +41,8 @@ private:
 };
 
 // Tests rows from `from` on (inclusive) in one direction while `mayRead(row, frame)` says so.
+// Backward, the rows of one checkpoint interval are decoded in frame order (FrameDecoder's
+// decodeAt is cheap forward only), so a search back costs about one dissection per row too.
 // found: the first matching row, else -1; next: the row it stopped before (-1: ran off the end).
 struct FindStep {
     int64_t found = -1;
