@@ -153,7 +153,9 @@ void startSimulationDemo(Workspace* ws) {
             QObject::connect(ws, &Workspace::sourceChanged, wait, &QObject::deleteLater);
             wait->start();
         });
-        scanner->scan(1, 127, 200);
+        // The simulated nodes exist: wait as long as the SDO default (1 s) so that a loaded
+        // machine or a sanitizer build, whose simulator answers late, still finds them.
+        scanner->scan(1, 127, 1000);
     });
     poll->start();
 }
