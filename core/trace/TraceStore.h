@@ -111,10 +111,14 @@ public:
     size_t residentChunks() const;
     uint64_t pageIns() const { return pageIns_.load(std::memory_order_relaxed); }
     uint64_t pageErrors() const { return pageErrors_.load(std::memory_order_relaxed); }
+    // Page-ins made on one thread, which then waited for the disk: the GUI thread must not
+    // (issue 16: stalls under 100 ms). For the tests and the soak benchmark. Any thread.
+    void watchPageInsOn(std::thread::id thread) { watched_.store(thread, std::memory_order_relaxed); }
+    uint64_t watchedPageIns() const { return watchedPageIns_.load(std::memory_order_relaxed); }
     // Keeps the chunks of frames [first, last] in RAM until unpin() with the same range (the
-    // rows a view shows).
-    void pin(FrameNo first, FrameNo last);
-    void unpin(FrameNo first, FrameNo last);
+    // rows a view shows). Any thread.
+    void pin(FrameNo first, FrameNo last) const;
+    void unpin(FrameNo first, FrameNo last) const;
     // True if frame n is in RAM now: reading it does not wait for the disk. Any thread.
     bool isResident(FrameNo n) const;
     // Loads frame n's chunk back on the store's loader thread and returns at once, so a GUI
@@ -190,6 +194,8 @@ private:
     mutable std::vector<std::pair<Chunk*, int64_t>> retired_;  // chunk, steady ms when evicted
     mutable std::atomic<uint64_t> pageIns_{0};
     mutable std::atomic<uint64_t> pageErrors_{0};
+    std::atomic<std::thread::id> watched_{};
+    mutable std::atomic<uint64_t> watchedPageIns_{0};
     // Asynchronous page-ins: chunk numbers asked for, served by loader_ (started on first use).
     mutable std::mutex requestMutex_;
     mutable std::condition_variable requestWake_;

@@ -7,9 +7,11 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/MemoryBudget.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/trace/FrameDetailsView.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
 #include "app/gui/trace/TraceView.h"
+#include "app/gui/trace/TraceWindow.h"
 #include "core/logio/LogFormats.h"
 #include "core/trace/CaptureJournal.h"
 #include "eds/SimulatorDictionaries.h"
@@ -25,7 +27,10 @@
 #include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 #include <QtTest>
+
+#include <thread>
 
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
@@ -45,14 +50,23 @@ constexpr int kEmcyAt = 5;                // the one EMCY, in the oldest chunk
 
 QString cell(const TraceModel* m, int row, int col) { return m->data(m->index(row, col), Qt::DisplayRole).toString(); }
 
-// TPDO1 of node 1 carrying its frame number; one EMCY of node 1 near the start.
-QString writeLog(const QString& path) {
+// A segmented SDO upload of 1008h (Device name, 10 bytes "COSCOPESIM") from node 1, at frames
+// kSdoAt.. (CiA 301 §7.2.4.3.4-7: initiate 40h / 41h with size, segments 60h/70h, answers
+// 00h with 7 bytes, 19h = toggle 1, 4 bytes unused, last).
+constexpr int kSdoAt = 20;
+const char* const kSdo[] = {"601#4008100000000000", "581#410810000A000000", "601#6000000000000000",
+                            "581#00434F53434F5045", "601#7000000000000000", "581#1953494D00000000"};
+
+// TPDO1 of node 1 carrying its frame number; one EMCY of node 1 near the start; with `sdo`
+// the upload above.
+QString writeLog(const QString& path, bool sdo = false) {
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly)) return {};
     QByteArray out;
     for (int i = 0; i < kFrames; ++i) {
         out += "(1700000000." + QByteArray::number(i).rightJustified(6, '0') + ") can0 ";
-        out += i == kEmcyAt ? QByteArray("081#1023050000000000") : "181#" + QByteArray::number(i, 16).rightJustified(8, '0').toUpper();
+        if (sdo && i >= kSdoAt && i < kSdoAt + 6) out += kSdo[i - kSdoAt];
+        else out += i == kEmcyAt ? QByteArray("081#1023050000000000") : "181#" + QByteArray::number(i, 16).rightJustified(8, '0').toUpper();
         out += '\n';
     }
     f.write(out);
@@ -197,6 +211,50 @@ private slots:
         QVERIFY2(waitFor([&] { return find->property("missed").toBool(); }, 120000), qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("not found")));
         QCOMPARE(m->frameAt(view->currentRow()), FrameNo(kEmcyAt));
+        QCOMPARE(store->pageErrors(), uint64_t(0));
+    }
+
+    // The grouped view's transfer row, its frames paged out: drawn as loading while the store's
+    // loader reads them back, then its reassembled value; the GUI thread never read the disk.
+    void groupedTransferRowComesBackFromTheJournal() {
+        const QString log = writeLog(dir_.filePath(QStringLiteral("sdo.log")), true);
+        QVERIFY(!log.isEmpty());
+        MainWindow w;
+        QVERIFY(capture(w, log));
+        auto store = w.workspace()->store();
+        store->watchPageInsOn(std::this_thread::get_id());
+        TraceView* view = w.traceDock()->view();
+        TraceModel* m = w.traceDock()->model();
+        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000), qPrintable(QString::number(store->residentChunks())));
+
+        auto* bar = w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar"));
+        QVERIFY(bar);
+        for (QAction* a : bar->actions())
+            if (a->objectName() == QStringLiteral("groupSdoAction")) QTest::mouseClick(bar->widgetForAction(a), Qt::LeftButton);
+        QVERIFY(w.traceDock()->groupsSdo());
+        // One row for the six frames of the transfer.
+        QVERIFY(waitFor([&] { return m->isGrouped() && m->rowCount() == kFrames - 5; }, 60000));
+        QVERIFY(!store->isResident(kSdoAt));
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, QPoint(view->viewport()->width() / 2, 5));
+        QTest::keyClick(view->viewport(), Qt::Key_Home, Qt::ControlModifier);
+        QVERIFY(waitFor([&] { return view->rowAt(0) == 0; }, 10000));
+        QCOMPARE(m->rowKind(kSdoAt), TraceModel::RowKind::Transfer);
+        QVERIFY2(waitFor([&] { return cell(m, kSdoAt, TraceModel::Summary).contains(QStringLiteral("device name = COSCOPESIM")); }, 30000),
+                 qPrintable(cell(m, kSdoAt, TraceModel::Summary)));
+        QCOMPARE(cell(m, kSdoAt, TraceModel::Length), QStringLiteral("10"));
+        // Ctrl+Home selected the first frame, paged out when it was selected: the details pane
+        // shows it once it is back.
+        QCOMPARE(view->currentRow(), 0);
+        QTreeWidget* details = w.traceDock()->details()->tree();
+        QVERIFY2(waitFor([&] { return details->topLevelItemCount() > 0 && details->topLevelItem(0)->text(0) == QStringLiteral("Frame 1"); }, 30000),
+                 qPrintable(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QStringLiteral("(empty)")));
+        // The transfer row, clicked: its reassembled value in the details.
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(view->traceWindow()->fromSource(kSdoAt), TraceModel::Summary)).center());
+        QVERIFY2(waitFor([&] {
+            const auto found = details->findItems(QStringLiteral("COSCOPESIM"), Qt::MatchContains | Qt::MatchRecursive, 1);
+            return !found.isEmpty();
+        }, 30000), qPrintable(QStringLiteral("row %1: %2 / %3").arg(view->currentRow()).arg(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QString(), details->topLevelItemCount() ? details->topLevelItem(0)->text(1) : QString())));
+        QCOMPARE(store->watchedPageIns(), uint64_t(0));
         QCOMPARE(store->pageErrors(), uint64_t(0));
     }
 };

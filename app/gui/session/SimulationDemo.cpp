@@ -148,7 +148,11 @@ void startSimulationDemo(Workspace* ws) {
                         startMotion(ws, static_cast<uint8_t>(n.node));
                         return;
                     }
-                if (++*tries >= 20 || !ws->canTransmit()) wait->deleteLater();
+                // A minute: identity reads of a loaded machine or a sanitizer build come late.
+                if (++*tries >= 240 || !ws->canTransmit()) {
+                    if (*tries >= 240) spdlog::warn("simulation: the AIMOTOR was not identified within 60 s; the demo does not move it");
+                    wait->deleteLater();
+                }
             });
             QObject::connect(ws, &Workspace::sourceChanged, wait, &QObject::deleteLater);
             wait->start();

@@ -56,6 +56,12 @@ void FrameDetailsView::clear() {
     highlight_ = {0, 0};
 }
 
+void FrameDetailsView::showLoading() {
+    clear();
+    //: Details pane while the selected frame is read back from the capture journal on disk
+    tree_->addTopLevelItem(new QTreeWidgetItem(QStringList{tr("Loading the frame back from the capture journal…")}));
+}
+
 void FrameDetailsView::showFrame(const CanFrame& f, uint64_t number) {
     dissect::Dissection d;
     d.reset(dissect::Dissection::Level::Tree);

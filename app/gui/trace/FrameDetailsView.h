@@ -30,6 +30,8 @@ public:
     // `frames` are its frame numbers (0-based).
     void showTransfer(const dissect::SdoTransferRecord& t, const std::vector<FrameNo>& frames);
     void clear();
+    // The frame or transfer shown next is being read back from the capture journal.
+    void showLoading();
 
     QTreeWidget* tree() const { return tree_; }
     // The bytes highlighted now: [first, first + count).

@@ -9,6 +9,7 @@
 #include "app/gui/trace/TraceView.h"
 #include "app/gui/trace/TraceWindow.h"
 
+#include <utility>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -229,6 +230,7 @@ void TraceDock::rebind() {
     details_->setDecoder(workspace_->decoder());
     details_->clear();
     shownDetailsFor_ = -1;
+    detailsLoading_ = false;
     if (!filterEdit_->text().trimmed().isEmpty()) applyFilter(filterEdit_->text());
 }
 
@@ -248,6 +250,9 @@ void TraceDock::refresh() {
         filterJob_.reset();
     }
     if (!filterJob_) model_->refresh();
+    const auto [top, bottom] = view_->visibleRows();
+    model_->pinRows(top, bottom, view_->currentRow());  // what is shown stays in RAM
+    if (detailsLoading_) onCurrentChanged();  // asks again; shows it once it is back
     if (shownDetailsFor_ != -1 && workspace_->decoder()->revision() != detailsRevision_) {  // dictionaries changed
         shownDetailsFor_ = -1;
         onCurrentChanged();
@@ -441,7 +446,16 @@ void TraceDock::gotoBookmark(bool forward) {
 void TraceDock::onCurrentChanged() {
     const int row = view_->currentRow();
     if (row < 0 || !model_->store()) {
+        detailsLoading_ = false;
         details_->clear();
+        shownDetailsFor_ = -1;
+        return;
+    }
+    // A frame paged out to the journal is shown once the store's loader has read it back:
+    // the GUI thread does not wait for the disk (issue 16).
+    const bool wasLoading = std::exchange(detailsLoading_, model_->rowPagedOut(row));
+    if (detailsLoading_) {
+        if (!wasLoading || shownDetailsFor_ != -1) details_->showLoading();
         shownDetailsFor_ = -1;
         return;
     }

@@ -97,6 +97,7 @@ private:
     std::unique_ptr<FindJob> findJob_;
     uint64_t findSerial_ = 0;  // of findJob_, so a finished job's late report is told apart
     int64_t shownDetailsFor_ = -1;
+    bool detailsLoading_ = false;  // the current row's frames are being paged in (refresh() retries)
     uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
 };
 

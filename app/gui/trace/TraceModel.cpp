@@ -501,6 +501,10 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     }
     if (kind == RowKind::Transfer) {
         const auto g = static_cast<uint32_t>(groupAt(index.row()));
+        if ((role == Qt::DisplayRole || role == Qt::ToolTipRole) && col != Number && !groupTexts_.count(g) && groupPagedOut(g)) {
+            if (role == Qt::DisplayRole && col == Summary) return tr("loading…");
+            return {};
+        }
         const TraceRecord& r = store_->record(n);
         if (role == Qt::ToolTipRole) return col == Number ? tr("Click to expand or collapse the transfer's frames") : groupText(g).summary;
         if (role == Qt::DisplayRole) {
@@ -574,25 +578,6 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     case Summary: return summaryOf(n);
     default: return {};
     }
-}
-
-bool TraceModel::pagedOut(FrameNo n, int row, int col) const {
-    // The frames data() reads for this cell: the frame; for the summary also the frames the
-    // decoder replays from its checkpoint; for Δt the previous row's frame.
-    FrameNo need[3] = {n, n, n};
-    if (col == Summary) need[1] = static_cast<FrameNo>(n - n % dissect::NetworkContext::checkpointInterval());
-    if (col == Time && timeMode_ == TimeMode::Delta && row > 0) need[2] = frameAt(row - 1);
-    bool out = false;
-    for (const FrameNo f : need) {
-        if (f >= store_->size() || store_->isResident(f)) continue;
-        if (!loading_) {  // counted before asking, so a page-in done meanwhile is not missed
-            loading_ = true;
-            pageInsSeen_ = store_->pageIns();
-        }
-        store_->requestPageIn(f);
-        out = true;
-    }
-    return out;
 }
 
 QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int role) const {

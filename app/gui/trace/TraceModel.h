@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <set>
 #include <unordered_map>
 #include <vector>
@@ -70,6 +71,12 @@ public:
     bool toggleExpanded(int row);
     // The transfer record of a group (decoded in the trace's context) and its frames.
     dissect::SdoTransferRecord transferRecord(int64_t group) const;
+    // Some frames the row's summary and details read (the frame and the decoder's checkpoint;
+    // a transfer's frames) are on disk: asks the store to load them and says true until then.
+    bool rowPagedOut(int row) const;
+    // Keeps the chunks of the rows shown (rows first..last and `current`) in RAM whatever the
+    // budget (TraceStore::pin): shown rows and the details pane are not paged out under the view.
+    void pinRows(int first, int last, int current);
     void setLatestPerCobId(bool on);
     bool latestPerCobId() const { return latest_; }
 
@@ -165,6 +172,10 @@ private:
     // store to load them on its loader thread and draws them as loading; refresh() repaints
     // once the store has paged something in. The GUI thread never waits for the disk.
     bool pagedOut(FrameNo n, int row, int col) const;
+    bool groupPagedOut(uint32_t group) const;  // a transfer's frames and its last one's checkpoint
+    bool requestPageIns(std::span<const FrameNo> frames) const;  // true: some are paged out
+    std::shared_ptr<const TraceStore> pinnedStore_;
+    std::vector<uint32_t> pinned_;  // chunks pinned in pinnedStore_
     mutable bool loading_ = false;
     mutable uint64_t pageInsSeen_ = 0;
 };

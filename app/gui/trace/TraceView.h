@@ -4,6 +4,8 @@
 #include <QPersistentModelIndex>
 #include <QTableView>
 
+#include <utility>
+
 class QScrollBar;
 
 namespace coscope::gui {
@@ -33,6 +35,8 @@ public:
     void setCurrentRow(int row, bool center);
     void scrollToEnd();    // the newest row at the bottom (following a live capture)
     void scrollToStart();  // the first row at the top
+    // The logical rows in the viewport now: [first, last] (last may be past the end).
+    std::pair<int, int> visibleRows() const { return {topRow(), topRow() + pageRows()}; }
 
 signals:
     // The user scrolled (wheel, scroll bar); `atEnd`: the last row is in view.
