@@ -2,7 +2,9 @@
 // The Plot dock on the virtual network (`coscope --simulate`): the demo enables the AIMOTOR
 // drive (node 2) in profile velocity; the dock picks its position and velocity from TPDO1/2,
 // the values move, the units are the AIMOTOR's (pulse, pulse/s: extract-aimotor §6), pause
-// keeps recording, a click jumps to a frame and the CSV export holds the decoded values.
+// keeps recording, a click jumps to a frame and the CSV export holds the decoded values. The
+// test acts as a user does (clicks and keys on the dock's widgets) and waits on the data itself,
+// never for a time: it holds on a loaded machine or a sanitizer build.
 #include "app/gui/MainWindow.h"
 #include "app/gui/plot/PlotDock.h"
 #include "app/gui/plot/SignalPicker.h"
