@@ -131,7 +131,7 @@ private slots:
         // AIMOTOR TPDOs are synchronous (type 1): send SYNCs.
         QElapsedTimer t;
         t.start();
-        while (session.store()->countFor(TraceStore::keyOf(0x183, false)) < 5 && t.elapsed() < 2000) {
+        while (session.store()->countFor(TraceStore::keyOf(0x183, false)) < 5 && t.elapsed() < 30000) {  // a loaded machine answers late
             bus->send(CanFrame::classic(0x080, {}));
             QTest::qWait(10);
         }

@@ -113,9 +113,10 @@ private slots:
         QVERIFY(!sync.setCounterOverflow(1));
         QVERIFY(sync.setCounterOverflow(4));
         QVERIFY(sync.start());
-        QTRY_VERIFY_WITH_TIMEOUT(sync.sent() >= 10, 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(sync.sent() >= 10, 30000);
         sync.stop();
-        QTest::qWait(50);
+        // The capture may trail the producer on a loaded machine: wait for the frames themselves.
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session.store()->framesFor(0x80).size() >= 10, 30000);
         const auto frames = rig.session.store()->framesFor(0x80);
         QVERIFY(frames.size() >= 10);
         std::vector<int> counters;

@@ -74,10 +74,12 @@ void PlotDock::buildToolbar(QWidget* host) {
     host->layout()->addWidget(bar);
 
     mode_ = new QComboBox(bar);
+    mode_->setObjectName(QStringLiteral("plotMode"));
     mode_->addItems({tr("Rolling window"), tr("Whole trace")});
     mode_->setToolTip(tr("Follow the newest samples over a window of seconds, or show the whole trace"));
     bar->addWidget(mode_);
     window_ = new QDoubleSpinBox(bar);
+    window_->setObjectName(QStringLiteral("plotWindowSeconds"));
     window_->setRange(0.1, 3600);
     window_->setDecimals(1);
     window_->setValue(10);
@@ -87,8 +89,10 @@ void PlotDock::buildToolbar(QWidget* host) {
     pause_ = bar->addAction(tr("Pause"));
     pause_->setCheckable(true);
     pause_->setToolTip(tr("Freeze the view (data keeps being recorded); zoom and pan pause too"));
+    bar->widgetForAction(pause_)->setObjectName(QStringLiteral("plotPause"));
     bar->addSeparator();
     layout_ = new QComboBox(bar);
+    layout_->setObjectName(QStringLiteral("plotLayout"));
     layout_->addItems({tr("Stacked"), tr("Shared plot")});
     layout_->setToolTip(tr("Stacked plots sharing the time axis, or one plot with a y-axis per signal"));
     bar->addWidget(layout_);
@@ -107,6 +111,7 @@ void PlotDock::buildToolbar(QWidget* host) {
     raw->setToolTip(tr("Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a dictionary"));
     bar->widgetForAction(raw)->setObjectName(QStringLiteral("addRawSignal"));
     auto* exportButton = new QToolButton(bar);
+    exportButton->setObjectName(QStringLiteral("plotExport"));
     exportButton->setText(tr("Export"));
     exportButton->setPopupMode(QToolButton::InstantPopup);
     auto* menu = new QMenu(exportButton);

@@ -28,6 +28,8 @@ SignalPicker::SignalPicker(QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     search_->setPlaceholderText(tr("Search signals (name, object, node)"));
     search_->setClearButtonEnabled(true);
+    search_->setObjectName(QStringLiteral("signalSearch"));
+    tree_->setObjectName(QStringLiteral("signalTree"));
     hint_->setObjectName(QStringLiteral("signalHint"));
     hint_->setWordWrap(true);
     hint_->setTextInteractionFlags(Qt::TextSelectableByMouse);
