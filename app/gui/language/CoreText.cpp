@@ -117,6 +117,24 @@ QString fill(const QString& translated, const std::vector<QString>& values) {
 
 QString lookUp(const QString& english, int depth, qsizetype* covered = nullptr);
 
+// `english` as a list joined by `join` (one of coretext::joins(): "a; b", "a, b"): the items'
+// translations joined the UI language's way when every item is translated in full; empty
+// otherwise. An item may be a list of the other kind, so the cost stays linear.
+QString byList(const QString& english, int depth, const char* join) {
+    const QString source = QString::fromUtf8(join);
+    const QString separator = source.mid(2, source.size() - 4);  // "%1" + separator + "%2"
+    if (!english.contains(separator)) return {};
+    QStringList items = english.split(separator);
+    for (QString& item : items) {
+        qsizetype covered = 0;
+        const QString translated = lookUp(item, depth + 1, &covered);
+        if (item.isEmpty() || covered < item.size()) return {};
+        item = translated;
+    }
+    const QString translatedJoin = QCoreApplication::translate("CoreText", join);
+    return items.join(translatedJoin.mid(2, translatedJoin.size() - 4));
+}
+
 // `english` in one of the shapes ("0650h (Switch on disabled)", "0x5530 Data storage error
 // (EEPROM)", "generic error (AL555 …)"): the shape's translation with both parts looked up. Of
 // the shapes and the places of their separator, the one whose translated parts cover the most
@@ -165,6 +183,10 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
         *out = fill(translated, values);
         return true;
     };
+    // A "; " list first (the problems of a CAN error frame): a pattern would take the rest of
+    // the list as its last value.
+    const auto joins = coretext::joins();
+    if (const QString list = byList(english, depth, joins[0]); !list.isEmpty()) return list;
     QString out;
     for (size_t i : ps.suffixes)
         if (tryOne(i, &out)) return out;
@@ -174,6 +196,7 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
             if (tryOne(i, &out)) return out;
     for (size_t i : ps.open)
         if (tryOne(i, &out)) return out;
+    if (const QString list = byList(english, depth, joins[1]); !list.isEmpty()) return list;
     return byShape(english, depth, covered);
 }
 
@@ -181,7 +204,7 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
 
 namespace coretext {
 std::span<const std::span<const char* const>> all() {
-    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details()};
+    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details(), bus()};
     return lists;
 }
 }  // namespace coretext
