@@ -124,6 +124,18 @@ Produced producerOutputs() {
     // TPDO1 with the CiA 402 default mapping (statusword).
     feed(0x181, {0x37, 0x06});
     feed(0x181, {0x08, 0x02});
+    // The Delta drive's TPDO1 mapped over SDO (CiA 301 §7.5.2.36) as the simulator's demo does:
+    // statusword, mode display, position; its summary lists the signals.
+    auto write = [&](uint8_t sub, uint32_t v, uint8_t cs) {
+        feed(0x602, {cs, 0x00, 0x1A, sub, uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)});
+        feed(0x582, {0x60, 0x00, 0x1A, sub, 0, 0, 0, 0});
+    };
+    write(0, 0, 0x2F);
+    write(1, 0x60410010, 0x23);
+    write(2, 0x60610008, 0x23);
+    write(3, 0x60640020, 0x23);
+    write(0, 3, 0x2F);
+    feed(0x182, {0x37, 0x06, 0x08, 0x84, 0x0C, 0x00, 0x00});
     // EMCY (CiA 301 §7.2.7): drive faults, the error register and a reset.
     for (uint16_t code : {0x2310, 0x3210, 0x4310, 0x5530, 0x7121, 0x8130, 0x8611, 0xFF00}) {
         feed(0x081, {uint8_t(code), uint8_t(code >> 8), 0x8B, 0, 0, 0, 0, 0});
@@ -207,6 +219,7 @@ private slots:
         QVERIFY(!p.lines.filter(QStringLiteral("more EMCY")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("heartbeat stopped")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("(Switch on disabled)")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("(Operation enabled), ")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("CAN error: bus-off")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("LSS Fastscan")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("AL185 ")).isEmpty());
