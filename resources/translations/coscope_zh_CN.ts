@@ -2235,6 +2235,442 @@
         <source>%1 -&gt; wrote %2 bytes</source>
         <translation>%1 → 已写入 %2 字节</translation>
     </message>
+    <message>
+        <source>CAN error: %1</source>
+        <translation>CAN 错误：%1</translation>
+    </message>
+    <message>
+        <source>Error classes</source>
+        <translation>错误类别</translation>
+    </message>
+    <message>
+        <source>Bus state</source>
+        <translation>总线状态</translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation>问题</translation>
+    </message>
+    <message>
+        <source>TX error counter</source>
+        <translation>发送错误计数器</translation>
+    </message>
+    <message>
+        <source>RX error counter</source>
+        <translation>接收错误计数器</translation>
+    </message>
+    <message>
+        <source>error active</source>
+        <translation>错误主动</translation>
+    </message>
+    <message>
+        <source>error warning</source>
+        <translation>错误警告</translation>
+    </message>
+    <message>
+        <source>error passive</source>
+        <translation>错误被动</translation>
+    </message>
+    <message>
+        <source>bus-off</source>
+        <translation>总线关闭</translation>
+    </message>
+    <message>
+        <source>bus-off (the controller stopped sending after too many errors)</source>
+        <translation>总线关闭（错误过多，控制器已停止发送）</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>TX error passive</source>
+        <translation>发送错误被动</translation>
+    </message>
+    <message>
+        <source>RX error passive</source>
+        <translation>接收错误被动</translation>
+    </message>
+    <message>
+        <source>TX error warning</source>
+        <translation>发送错误警告</translation>
+    </message>
+    <message>
+        <source>RX error warning</source>
+        <translation>接收错误警告</translation>
+    </message>
+    <message>
+        <source>RX buffer overflow (frames lost)</source>
+        <translation>接收缓冲区溢出（帧丢失）</translation>
+    </message>
+    <message>
+        <source>TX buffer overflow</source>
+        <translation>发送缓冲区溢出</translation>
+    </message>
+    <message>
+        <source>back to error active</source>
+        <translation>回到错误主动</translation>
+    </message>
+    <message>
+        <source>unspecified</source>
+        <translation>未指明</translation>
+    </message>
+    <message>
+        <source>no acknowledge (no other node on the bus, or a different bit rate)</source>
+        <translation>没有 ACK 应答（总线上没有其他节点，或波特率不同）</translation>
+    </message>
+    <message>
+        <source>protocol violation</source>
+        <translation>协议错误</translation>
+    </message>
+    <message>
+        <source>protocol violation: %1</source>
+        <translation>协议错误：%1</translation>
+    </message>
+    <message>
+        <source>protocol violation: %1 in the %2</source>
+        <translation>协议错误：%1（位置：%2）</translation>
+    </message>
+    <message>
+        <source>protocol violation in the %1</source>
+        <translation>协议错误（位置：%1）</translation>
+    </message>
+    <message>
+        <source>bit error</source>
+        <translation>位错误</translation>
+    </message>
+    <message>
+        <source>form error</source>
+        <translation>格式错误</translation>
+    </message>
+    <message>
+        <source>stuff error</source>
+        <translation>填充错误</translation>
+    </message>
+    <message>
+        <source>could not send a dominant bit</source>
+        <translation>无法发送显性位</translation>
+    </message>
+    <message>
+        <source>could not send a recessive bit</source>
+        <translation>无法发送隐性位</translation>
+    </message>
+    <message>
+        <source>bus overload</source>
+        <translation>总线过载</translation>
+    </message>
+    <message>
+        <source>active error flag</source>
+        <translation>主动错误标志</translation>
+    </message>
+    <message>
+        <source>while transmitting</source>
+        <translation>发送时</translation>
+    </message>
+    <message>
+        <source>start of frame</source>
+        <translation>帧起始（SOF）</translation>
+    </message>
+    <message>
+        <source>identifier bits %1</source>
+        <translation>标识符位 %1</translation>
+    </message>
+    <message>
+        <source>SRTR bit</source>
+        <translation>SRTR 位</translation>
+    </message>
+    <message>
+        <source>IDE bit</source>
+        <translation>IDE 位</translation>
+    </message>
+    <message>
+        <source>RTR bit</source>
+        <translation>RTR 位</translation>
+    </message>
+    <message>
+        <source>reserved bit %1</source>
+        <translation>保留位 %1</translation>
+    </message>
+    <message>
+        <source>data length code</source>
+        <translation>数据长度码（DLC）</translation>
+    </message>
+    <message>
+        <source>data field</source>
+        <translation>数据段</translation>
+    </message>
+    <message>
+        <source>CRC sequence</source>
+        <translation>CRC 序列</translation>
+    </message>
+    <message>
+        <source>CRC delimiter</source>
+        <translation>CRC 界定符</translation>
+    </message>
+    <message>
+        <source>ACK slot</source>
+        <translation>ACK 槽</translation>
+    </message>
+    <message>
+        <source>ACK delimiter</source>
+        <translation>ACK 界定符</translation>
+    </message>
+    <message>
+        <source>end of frame</source>
+        <translation>帧结束（EOF）</translation>
+    </message>
+    <message>
+        <source>intermission</source>
+        <translation>帧间隔</translation>
+    </message>
+    <message>
+        <source>transceiver problem (status 0x%1)</source>
+        <translation>收发器异常（状态 0x%1）</translation>
+    </message>
+    <message>
+        <source>lost arbitration at bit %1</source>
+        <translation>仲裁失败（第 %1 位）</translation>
+    </message>
+    <message>
+        <source>lost arbitration</source>
+        <translation>仲裁失败</translation>
+    </message>
+    <message>
+        <source>transmit timeout</source>
+        <translation>发送超时</translation>
+    </message>
+    <message>
+        <source>bus error</source>
+        <translation>总线错误</translation>
+    </message>
+    <message>
+        <source>controller restarted</source>
+        <translation>控制器已重新启动</translation>
+    </message>
+    <message>
+        <source>error counters TX %1, RX %2</source>
+        <translation>错误计数器 TX %1，RX %2</translation>
+    </message>
+    <message>
+        <source>error frame (class %1h)</source>
+        <translation>错误帧（类别 %1h）</translation>
+    </message>
+    <message>
+        <source>Switch state global</source>
+        <translation>全域切换状态</translation>
+    </message>
+    <message>
+        <source>Switch state selective: vendor-ID</source>
+        <translation>选择性切换状态：厂商 ID</translation>
+    </message>
+    <message>
+        <source>Switch state selective: product code</source>
+        <translation>选择性切换状态：产品代码</translation>
+    </message>
+    <message>
+        <source>Switch state selective: revision number</source>
+        <translation>选择性切换状态：版本号</translation>
+    </message>
+    <message>
+        <source>Switch state selective: serial number</source>
+        <translation>选择性切换状态：序列号</translation>
+    </message>
+    <message>
+        <source>Switch state selective response</source>
+        <translation>选择性切换状态响应</translation>
+    </message>
+    <message>
+        <source>Configure node-ID</source>
+        <translation>设置节点 ID</translation>
+    </message>
+    <message>
+        <source>Configure node-ID response</source>
+        <translation>设置节点 ID 响应</translation>
+    </message>
+    <message>
+        <source>Configure bit timing</source>
+        <translation>设置位定时</translation>
+    </message>
+    <message>
+        <source>Configure bit timing response</source>
+        <translation>设置位定时响应</translation>
+    </message>
+    <message>
+        <source>Activate bit timing</source>
+        <translation>激活位定时</translation>
+    </message>
+    <message>
+        <source>Store configuration</source>
+        <translation>保存设置</translation>
+    </message>
+    <message>
+        <source>Store configuration response</source>
+        <translation>保存设置响应</translation>
+    </message>
+    <message>
+        <source>Inquire vendor-ID</source>
+        <translation>查询厂商 ID</translation>
+    </message>
+    <message>
+        <source>Vendor-ID</source>
+        <translation>厂商 ID</translation>
+    </message>
+    <message>
+        <source>Inquire product code</source>
+        <translation>查询产品代码</translation>
+    </message>
+    <message>
+        <source>Product code</source>
+        <translation>产品代码</translation>
+    </message>
+    <message>
+        <source>Inquire revision number</source>
+        <translation>查询版本号</translation>
+    </message>
+    <message>
+        <source>Revision number</source>
+        <translation>版本号</translation>
+    </message>
+    <message>
+        <source>Inquire serial number</source>
+        <translation>查询序列号</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <source>Inquire node-ID</source>
+        <translation>查询节点 ID</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: vendor-ID</source>
+        <translation>识别远程从站：厂商 ID</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: product code</source>
+        <translation>识别远程从站：产品代码</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: revision low</source>
+        <translation>识别远程从站：版本号下限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: revision high</source>
+        <translation>识别远程从站：版本号上限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: serial low</source>
+        <translation>识别远程从站：序列号下限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: serial high</source>
+        <translation>识别远程从站：序列号上限</translation>
+    </message>
+    <message>
+        <source>Identify non-configured remote slave</source>
+        <translation>识别未设置节点 ID 的远程从站</translation>
+    </message>
+    <message>
+        <source>Identify slave</source>
+        <translation>从站识别响应</translation>
+    </message>
+    <message>
+        <source>Identify non-configured slave</source>
+        <translation>未设置节点 ID 的从站识别响应</translation>
+    </message>
+    <message>
+        <source>Fastscan</source>
+        <translation>快速扫描（Fastscan）</translation>
+    </message>
+    <message>
+        <source>Unknown LSS command 0x%1</source>
+        <translation>未知的 LSS 命令 0x%1</translation>
+    </message>
+    <message>
+        <source>LSS %1</source>
+        <translation>LSS：%1</translation>
+    </message>
+    <message>
+        <source>LSS %1: configuration</source>
+        <translation>LSS：%1（设置状态）</translation>
+    </message>
+    <message>
+        <source>LSS %1: waiting</source>
+        <translation>LSS：%1（等待状态）</translation>
+    </message>
+    <message>
+        <source>LSS %1: node-ID %2</source>
+        <translation>LSS：%1（节点 ID %2）</translation>
+    </message>
+    <message>
+        <source>LSS %1: error %2</source>
+        <translation>LSS：%1（错误 %2）</translation>
+    </message>
+    <message>
+        <source>LSS %1: ok</source>
+        <translation>LSS：%1（成功）</translation>
+    </message>
+    <message>
+        <source>LSS %1: %2 kbit/s</source>
+        <translation>LSS：%1（波特率 %2 kbit/s）</translation>
+    </message>
+    <message>
+        <source>LSS %1: table %2 index %3</source>
+        <translation>LSS：%1（表 %2，索引 %3）</translation>
+    </message>
+    <message>
+        <source>LSS %1: delay %2 ms</source>
+        <translation>LSS：%1（延迟 %2 ms）</translation>
+    </message>
+    <message>
+        <source>LSS %1: 0x%2</source>
+        <translation>LSS：%1 = 0x%2</translation>
+    </message>
+    <message>
+        <source>LSS Node-ID: %1</source>
+        <translation>LSS：节点 ID = %1</translation>
+    </message>
+    <message>
+        <source>LSS %1: IDNumber 0x%2, bit %3, sub %4, next %5</source>
+        <translation>LSS：%1（识别号 0x%2，检查位 %3，比对项 %4，下一项 %5）</translation>
+    </message>
+    <message>
+        <source>LSS (malformed)</source>
+        <translation>LSS（格式错误）</translation>
+    </message>
+    <message>
+        <source>LSS frame with %1 bytes; CiA 305 requires 8</source>
+        <translation>LSS 帧有 %1 字节；CiA 305 规定为 8</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, register 0x%4, %5</source>
+        <translation>EMCY 节点 %1：%2 %3，错误寄存器 0x%4，%5</translation>
+    </message>
+    <message>
+        <source>Delta alarm number</source>
+        <translation>台达报警号</translation>
+    </message>
+    <message>
+        <source>AIMOTOR fault code</source>
+        <translation>AIMOTOR 故障码</translation>
+    </message>
+    <message>
+        <source>M1 alarm code</source>
+        <translation>M1 报警码</translation>
+    </message>
+    <message>
+        <source>M2 alarm code</source>
+        <translation>M2 报警码</translation>
+    </message>
+    <message>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1、%2</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>

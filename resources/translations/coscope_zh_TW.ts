@@ -2235,6 +2235,442 @@
         <source>%1 -&gt; wrote %2 bytes</source>
         <translation>%1 → 已寫入 %2 位元組</translation>
     </message>
+    <message>
+        <source>CAN error: %1</source>
+        <translation>CAN 錯誤：%1</translation>
+    </message>
+    <message>
+        <source>Error classes</source>
+        <translation>錯誤類別</translation>
+    </message>
+    <message>
+        <source>Bus state</source>
+        <translation>總線狀態</translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation>問題</translation>
+    </message>
+    <message>
+        <source>TX error counter</source>
+        <translation>傳送錯誤計數器</translation>
+    </message>
+    <message>
+        <source>RX error counter</source>
+        <translation>接收錯誤計數器</translation>
+    </message>
+    <message>
+        <source>error active</source>
+        <translation>錯誤主動</translation>
+    </message>
+    <message>
+        <source>error warning</source>
+        <translation>錯誤警告</translation>
+    </message>
+    <message>
+        <source>error passive</source>
+        <translation>錯誤被動</translation>
+    </message>
+    <message>
+        <source>bus-off</source>
+        <translation>總線關閉</translation>
+    </message>
+    <message>
+        <source>bus-off (the controller stopped sending after too many errors)</source>
+        <translation>總線關閉（錯誤過多，控制器已停止傳送）</translation>
+    </message>
+    <message>
+        <source>controller: %1</source>
+        <translation>控制器：%1</translation>
+    </message>
+    <message>
+        <source>TX error passive</source>
+        <translation>傳送錯誤被動</translation>
+    </message>
+    <message>
+        <source>RX error passive</source>
+        <translation>接收錯誤被動</translation>
+    </message>
+    <message>
+        <source>TX error warning</source>
+        <translation>傳送錯誤警告</translation>
+    </message>
+    <message>
+        <source>RX error warning</source>
+        <translation>接收錯誤警告</translation>
+    </message>
+    <message>
+        <source>RX buffer overflow (frames lost)</source>
+        <translation>接收緩衝區溢位（封包遺失）</translation>
+    </message>
+    <message>
+        <source>TX buffer overflow</source>
+        <translation>傳送緩衝區溢位</translation>
+    </message>
+    <message>
+        <source>back to error active</source>
+        <translation>回到錯誤主動</translation>
+    </message>
+    <message>
+        <source>unspecified</source>
+        <translation>未指明</translation>
+    </message>
+    <message>
+        <source>no acknowledge (no other node on the bus, or a different bit rate)</source>
+        <translation>沒有 ACK 應答（總線上沒有其他節點，或鮑率不同）</translation>
+    </message>
+    <message>
+        <source>protocol violation</source>
+        <translation>協定錯誤</translation>
+    </message>
+    <message>
+        <source>protocol violation: %1</source>
+        <translation>協定錯誤：%1</translation>
+    </message>
+    <message>
+        <source>protocol violation: %1 in the %2</source>
+        <translation>協定錯誤：%1（位置：%2）</translation>
+    </message>
+    <message>
+        <source>protocol violation in the %1</source>
+        <translation>協定錯誤（位置：%1）</translation>
+    </message>
+    <message>
+        <source>bit error</source>
+        <translation>位元錯誤</translation>
+    </message>
+    <message>
+        <source>form error</source>
+        <translation>格式錯誤</translation>
+    </message>
+    <message>
+        <source>stuff error</source>
+        <translation>填充錯誤</translation>
+    </message>
+    <message>
+        <source>could not send a dominant bit</source>
+        <translation>無法送出顯性位元</translation>
+    </message>
+    <message>
+        <source>could not send a recessive bit</source>
+        <translation>無法送出隱性位元</translation>
+    </message>
+    <message>
+        <source>bus overload</source>
+        <translation>總線過載</translation>
+    </message>
+    <message>
+        <source>active error flag</source>
+        <translation>主動錯誤旗標</translation>
+    </message>
+    <message>
+        <source>while transmitting</source>
+        <translation>傳送時</translation>
+    </message>
+    <message>
+        <source>start of frame</source>
+        <translation>封包起始（SOF）</translation>
+    </message>
+    <message>
+        <source>identifier bits %1</source>
+        <translation>識別碼位元 %1</translation>
+    </message>
+    <message>
+        <source>SRTR bit</source>
+        <translation>SRTR 位元</translation>
+    </message>
+    <message>
+        <source>IDE bit</source>
+        <translation>IDE 位元</translation>
+    </message>
+    <message>
+        <source>RTR bit</source>
+        <translation>RTR 位元</translation>
+    </message>
+    <message>
+        <source>reserved bit %1</source>
+        <translation>保留位元 %1</translation>
+    </message>
+    <message>
+        <source>data length code</source>
+        <translation>資料長度碼（DLC）</translation>
+    </message>
+    <message>
+        <source>data field</source>
+        <translation>資料欄位</translation>
+    </message>
+    <message>
+        <source>CRC sequence</source>
+        <translation>CRC 序列</translation>
+    </message>
+    <message>
+        <source>CRC delimiter</source>
+        <translation>CRC 分隔位元</translation>
+    </message>
+    <message>
+        <source>ACK slot</source>
+        <translation>ACK 槽</translation>
+    </message>
+    <message>
+        <source>ACK delimiter</source>
+        <translation>ACK 分隔位元</translation>
+    </message>
+    <message>
+        <source>end of frame</source>
+        <translation>封包結尾（EOF）</translation>
+    </message>
+    <message>
+        <source>intermission</source>
+        <translation>封包間隔</translation>
+    </message>
+    <message>
+        <source>transceiver problem (status 0x%1)</source>
+        <translation>收發器異常（狀態 0x%1）</translation>
+    </message>
+    <message>
+        <source>lost arbitration at bit %1</source>
+        <translation>仲裁失敗（第 %1 位元）</translation>
+    </message>
+    <message>
+        <source>lost arbitration</source>
+        <translation>仲裁失敗</translation>
+    </message>
+    <message>
+        <source>transmit timeout</source>
+        <translation>傳送逾時</translation>
+    </message>
+    <message>
+        <source>bus error</source>
+        <translation>總線錯誤</translation>
+    </message>
+    <message>
+        <source>controller restarted</source>
+        <translation>控制器已重新啟動</translation>
+    </message>
+    <message>
+        <source>error counters TX %1, RX %2</source>
+        <translation>錯誤計數器 TX %1，RX %2</translation>
+    </message>
+    <message>
+        <source>error frame (class %1h)</source>
+        <translation>錯誤封包（類別 %1h）</translation>
+    </message>
+    <message>
+        <source>Switch state global</source>
+        <translation>全域切換狀態</translation>
+    </message>
+    <message>
+        <source>Switch state selective: vendor-ID</source>
+        <translation>選擇性切換狀態：廠商 ID</translation>
+    </message>
+    <message>
+        <source>Switch state selective: product code</source>
+        <translation>選擇性切換狀態：產品代碼</translation>
+    </message>
+    <message>
+        <source>Switch state selective: revision number</source>
+        <translation>選擇性切換狀態：版本號</translation>
+    </message>
+    <message>
+        <source>Switch state selective: serial number</source>
+        <translation>選擇性切換狀態：序號</translation>
+    </message>
+    <message>
+        <source>Switch state selective response</source>
+        <translation>選擇性切換狀態回應</translation>
+    </message>
+    <message>
+        <source>Configure node-ID</source>
+        <translation>設定節點 ID</translation>
+    </message>
+    <message>
+        <source>Configure node-ID response</source>
+        <translation>設定節點 ID 回應</translation>
+    </message>
+    <message>
+        <source>Configure bit timing</source>
+        <translation>設定位元時序</translation>
+    </message>
+    <message>
+        <source>Configure bit timing response</source>
+        <translation>設定位元時序回應</translation>
+    </message>
+    <message>
+        <source>Activate bit timing</source>
+        <translation>啟用位元時序</translation>
+    </message>
+    <message>
+        <source>Store configuration</source>
+        <translation>儲存設定</translation>
+    </message>
+    <message>
+        <source>Store configuration response</source>
+        <translation>儲存設定回應</translation>
+    </message>
+    <message>
+        <source>Inquire vendor-ID</source>
+        <translation>查詢廠商 ID</translation>
+    </message>
+    <message>
+        <source>Vendor-ID</source>
+        <translation>廠商 ID</translation>
+    </message>
+    <message>
+        <source>Inquire product code</source>
+        <translation>查詢產品代碼</translation>
+    </message>
+    <message>
+        <source>Product code</source>
+        <translation>產品代碼</translation>
+    </message>
+    <message>
+        <source>Inquire revision number</source>
+        <translation>查詢版本號</translation>
+    </message>
+    <message>
+        <source>Revision number</source>
+        <translation>版本號</translation>
+    </message>
+    <message>
+        <source>Inquire serial number</source>
+        <translation>查詢序號</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>序號</translation>
+    </message>
+    <message>
+        <source>Inquire node-ID</source>
+        <translation>查詢節點 ID</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: vendor-ID</source>
+        <translation>識別遠端從站：廠商 ID</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: product code</source>
+        <translation>識別遠端從站：產品代碼</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: revision low</source>
+        <translation>識別遠端從站：版本號下限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: revision high</source>
+        <translation>識別遠端從站：版本號上限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: serial low</source>
+        <translation>識別遠端從站：序號下限</translation>
+    </message>
+    <message>
+        <source>Identify remote slave: serial high</source>
+        <translation>識別遠端從站：序號上限</translation>
+    </message>
+    <message>
+        <source>Identify non-configured remote slave</source>
+        <translation>識別未設定節點 ID 的遠端從站</translation>
+    </message>
+    <message>
+        <source>Identify slave</source>
+        <translation>從站識別回應</translation>
+    </message>
+    <message>
+        <source>Identify non-configured slave</source>
+        <translation>未設定節點 ID 的從站識別回應</translation>
+    </message>
+    <message>
+        <source>Fastscan</source>
+        <translation>快速掃描（Fastscan）</translation>
+    </message>
+    <message>
+        <source>Unknown LSS command 0x%1</source>
+        <translation>未知的 LSS 命令 0x%1</translation>
+    </message>
+    <message>
+        <source>LSS %1</source>
+        <translation>LSS：%1</translation>
+    </message>
+    <message>
+        <source>LSS %1: configuration</source>
+        <translation>LSS：%1（設定狀態）</translation>
+    </message>
+    <message>
+        <source>LSS %1: waiting</source>
+        <translation>LSS：%1（等待狀態）</translation>
+    </message>
+    <message>
+        <source>LSS %1: node-ID %2</source>
+        <translation>LSS：%1（節點 ID %2）</translation>
+    </message>
+    <message>
+        <source>LSS %1: error %2</source>
+        <translation>LSS：%1（錯誤 %2）</translation>
+    </message>
+    <message>
+        <source>LSS %1: ok</source>
+        <translation>LSS：%1（成功）</translation>
+    </message>
+    <message>
+        <source>LSS %1: %2 kbit/s</source>
+        <translation>LSS：%1（鮑率 %2 kbit/s）</translation>
+    </message>
+    <message>
+        <source>LSS %1: table %2 index %3</source>
+        <translation>LSS：%1（表 %2，索引 %3）</translation>
+    </message>
+    <message>
+        <source>LSS %1: delay %2 ms</source>
+        <translation>LSS：%1（延遲 %2 ms）</translation>
+    </message>
+    <message>
+        <source>LSS %1: 0x%2</source>
+        <translation>LSS：%1 = 0x%2</translation>
+    </message>
+    <message>
+        <source>LSS Node-ID: %1</source>
+        <translation>LSS：節點 ID = %1</translation>
+    </message>
+    <message>
+        <source>LSS %1: IDNumber 0x%2, bit %3, sub %4, next %5</source>
+        <translation>LSS：%1（識別號 0x%2，檢查位元 %3，比對項 %4，下一項 %5）</translation>
+    </message>
+    <message>
+        <source>LSS (malformed)</source>
+        <translation>LSS（格式錯誤）</translation>
+    </message>
+    <message>
+        <source>LSS frame with %1 bytes; CiA 305 requires 8</source>
+        <translation>LSS 封包有 %1 位元組；CiA 305 規定為 8</translation>
+    </message>
+    <message>
+        <source>EMCY node %1: %2 %3, register 0x%4, %5</source>
+        <translation>EMCY 節點 %1：%2 %3，錯誤暫存器 0x%4，%5</translation>
+    </message>
+    <message>
+        <source>Delta alarm number</source>
+        <translation>台達異警號碼</translation>
+    </message>
+    <message>
+        <source>AIMOTOR fault code</source>
+        <translation>AIMOTOR 故障碼</translation>
+    </message>
+    <message>
+        <source>M1 alarm code</source>
+        <translation>M1 異警碼</translation>
+    </message>
+    <message>
+        <source>M2 alarm code</source>
+        <translation>M2 異警碼</translation>
+    </message>
+    <message>
+        <source>%1; %2</source>
+        <translation>%1；%2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1、%2</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>

@@ -4,13 +4,17 @@
 // the health report and the CiA 402 names write for sample frames (CiA 301 §7.2, CiA 402-2 §6)
 // comes out with no English phrase left. A lower-layer message reworded without its CoreText
 // entry falls back to English and fails here.
+#include "CoreTextSamples.h"
+#include "app/gui/events/EventLog.h"
 #include "app/gui/language/CoreText.h"
 #include "app/gui/language/CoreTextLists.h"
 #include "app/gui/language/Language.h"
+#include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanFrame.h"
 #include "core/canopen/Ds402.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/NetworkHealth.h"
+#include "dissectors/VendorTable.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QRegularExpression>
@@ -43,14 +47,38 @@ QStringList englishLeft(QString text, const QStringList& objectNames) {
 }
 
 struct Produced {
-    QStringList lines;        // summaries, warnings, field values, findings, names
+    QStringList lines;        // summaries, field values, findings, names (shown through coreLines())
+    QStringList warnings;     // shown one by one through coreText()
     QStringList objectNames;  // object names the dissectors took from the dictionaries
 };
 
 void addTree(const dissect::Dissection& d, Produced& p) {
     p.lines << d.summary;
-    p.lines << d.warnings;
+    p.warnings << d.warnings;
     for (const auto& t : d.tree) p.lines << t.label << t.value;
+}
+
+// The nodes of the sample: the generic CiA 402 drive (1), the Delta ASDA-A2 (2), the AIMOTOR (3).
+const std::map<int, QString> kDictionaries = {{1, QStringLiteral("generic-cia402")}, {2, QStringLiteral("delta-asda-a2")}, {3, QStringLiteral("aimotor")}};
+
+// The frames beyond the CiA 402 drive's (CoreTextSamples.h).
+std::vector<CanFrame> moreFrames() {
+    std::vector<CanFrame> out = coretextsamples::canErrorFrames();
+    for (auto more : {coretextsamples::lssFrames(), coretextsamples::vendorEmcyFrames()}) out.insert(out.end(), more.begin(), more.end());
+    return out;
+}
+
+// The vendors' alarm codes and their own alarm names in `lang` (data, like the object names:
+// "Er.101", and the manuals write some names with Latin letters, "參數 id 超範圍"). An English
+// name (a table without the Chinese one) is not taken out.
+QStringList vendorAlarmNames(const QString& lang) {
+    QStringList out;
+    for (int node : {2, 3})
+        if (const dissect::VendorTable* t = dissect::vendorTable(kDictionaries.at(node)))
+            for (const auto& a : t->alarms)
+                for (const QString& n : {a.code, a.textIn(lang)})
+                    if (n != a.text) out << n;
+    return out;
 }
 
 // Frames of a CiA 402 drive at node 1 the way a commissioning session has them.
@@ -62,7 +90,8 @@ Produced producerOutputs() {
     // Node 1 is the generic CiA 402 drive of the simulator (its object names, its PDO mapping).
     eds::installSimulatorDictionaries();
     QString error;
-    if (!ctx.assignDictionary(1, QStringLiteral("generic-cia402"), &error)) qWarning("generic-cia402: %s", qPrintable(error));
+    for (const auto& [node, name] : kDictionaries)
+        if (!ctx.assignDictionary(node, name, &error)) qWarning("%s: %s", qPrintable(name), qPrintable(error));
     int64_t now = 0;
     auto feed = [&](uint32_t id, std::initializer_list<uint8_t> bytes, int64_t stepMs = 10) {
         CanFrame f = CanFrame::classic(id, bytes);
@@ -95,11 +124,31 @@ Produced producerOutputs() {
     // TPDO1 with the CiA 402 default mapping (statusword).
     feed(0x181, {0x37, 0x06});
     feed(0x181, {0x08, 0x02});
+    // The Delta drive's TPDO1 mapped over SDO (CiA 301 §7.5.2.36) as the simulator's demo does:
+    // statusword, mode display, position; its summary lists the signals.
+    auto write = [&](uint8_t sub, uint32_t v, uint8_t cs) {
+        feed(0x602, {cs, 0x00, 0x1A, sub, uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)});
+        feed(0x582, {0x60, 0x00, 0x1A, sub, 0, 0, 0, 0});
+    };
+    write(0, 0, 0x2F);
+    write(1, 0x60410010, 0x23);
+    write(2, 0x60610008, 0x23);
+    write(3, 0x60640020, 0x23);
+    write(0, 3, 0x2F);
+    feed(0x182, {0x37, 0x06, 0x08, 0x84, 0x0C, 0x00, 0x00});
     // EMCY (CiA 301 §7.2.7): drive faults, the error register and a reset.
     for (uint16_t code : {0x2310, 0x3210, 0x4310, 0x5530, 0x7121, 0x8130, 0x8611, 0xFF00}) {
         feed(0x081, {uint8_t(code), uint8_t(code >> 8), 0x8B, 0, 0, 0, 0, 0});
     }
     feed(0x081, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0});
+    // CAN error frames, LSS both ways, the vendors' EMCY (CoreTextSamples.h).
+    for (CanFrame f : moreFrames()) {
+        now += 10 * kMs;
+        f.timestampNs = now;
+        ctx.dissect(f, d, dissect::Dissection::Level::Tree);
+        addTree(d, p);
+        health.add(f, d, ctx);
+    }
     // Node 1's heartbeat stops: the health report says so.
     const dissect::HealthReport r = health.report(&ctx, now + 2000 * kMs);
     for (const auto& f : r.findings) p.lines << f.text;
@@ -108,9 +157,11 @@ Produced producerOutputs() {
     for (int c = 0; c <= int(canopen::ds402::Command::FaultReset); ++c) p.lines << canopen::ds402::commandName(canopen::ds402::Command(c));
     for (int m = -1; m <= 11; ++m) p.lines << canopen::ds402::modeName(int8_t(m));
     for (int b = 0; b < 16; ++b) p.lines << canopen::ds402::statuswordBitName(b);
-    p.lines.removeAll(QString());
-    p.lines.removeDuplicates();
-    for (int node : {1}) {
+    for (QStringList* l : {&p.lines, &p.warnings}) {
+        l->removeAll(QString());
+        l->removeDuplicates();
+    }
+    for (int node : {1, 2, 3}) {
         if (const auto dict = ctx.node(node).dictionary)
             for (const auto& [index, o] : dict->objects()) {
                 p.objectNames << o.name;
@@ -151,8 +202,9 @@ private slots:
         for (auto list : coretext::all())
             for (const char* s : list) check(s);
         for (const char* s : coretext::suffixes()) check(s);
-        for (const char* s : coretext::shapes())
-            if (QCoreApplication::translate("CoreText", s).isEmpty()) missing << QString::fromUtf8(s);
+        for (auto list : {coretext::shapes(), coretext::joins()})
+            for (const char* s : list)
+                if (QCoreApplication::translate("CoreText", s).isEmpty()) missing << QString::fromUtf8(s);
         QVERIFY2(missing.isEmpty(), qPrintable(code + QStringLiteral(": no translation for:\n") + missing.join(u'\n')));
     }
 
@@ -167,13 +219,24 @@ private slots:
         QVERIFY(!p.lines.filter(QStringLiteral("more EMCY")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("heartbeat stopped")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("(Switch on disabled)")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("(Operation enabled), ")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("CAN error: bus-off")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("LSS Fastscan")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("AL185 ")).isEmpty());
+        QVERIFY(!p.lines.filter(QStringLiteral("Er.A33 ")).isEmpty());
+        QVERIFY(!p.warnings.filter(QStringLiteral("CAN error: ")).isEmpty());
         QVERIFY(language::apply(code));
+        // The vendor alarm names were written in the language of then (VendorTable.h): again in this one.
+        const Produced now = producerOutputs();
+        QStringList data = now.objectNames + vendorAlarmNames(code);
+        std::sort(data.begin(), data.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
         QStringList left;
-        for (const QString& english : p.lines) {
-            const QString shown = coreLines(english);
-            const QStringList words = englishLeft(shown, p.objectNames);
+        auto check = [&](const QString& english, const QString& shown) {
+            const QStringList words = englishLeft(shown, data);
             if (!words.isEmpty()) left << QStringLiteral("%1\n    -> %2   [%3]").arg(english, shown, words.join(u' '));
-        }
+        };
+        for (const QString& english : now.lines) check(english, coreLines(english));
+        for (const QString& english : now.warnings) check(english, coreText(english));
         for (const QString& l : left) qInfo("English left: %s", qPrintable(l));
         QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 text(s) with English left (listed above)").arg(code).arg(left.size())));
     }
@@ -183,6 +246,47 @@ private slots:
         QVERIFY(language::apply(QStringLiteral("en")));
         const Produced p = producerOutputs();
         for (const QString& english : p.lines) QCOMPARE(coreLines(english), english);
+        for (const QString& english : p.warnings) QCOMPARE(coreText(english), english);
+    }
+
+    // The Events dock's texts of the same frames, through the app's decoder (the dictionaries
+    // assigned, so the vendor alarms are named), rendered in the UI language.
+    void eventsAreTranslated_data() { everyListedTextIsTranslated_data(); }
+    void eventsAreTranslated() {
+        QFETCH(QString, code);
+        auto store = std::make_shared<TraceStore>();
+        int64_t now = 0;
+        for (CanFrame f : moreFrames()) {
+            f.timestampNs = now += 10 * kMs;
+            store->append(f);
+        }
+        auto decoder = std::make_shared<TraceDecoder>(false);
+        decoder->setDictionaries(kDictionaries);
+        decoder->setStore(store);
+        EventLog log(decoder);
+        log.consume(*store, 0, store->size());
+        QVERIFY(language::apply(code));
+        QStringList objectNames = vendorAlarmNames(code);
+        std::sort(objectNames.begin(), objectNames.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+        QStringList left;
+        QStringList shownAll;
+        int busErrors = 0, emcy = 0;
+        for (const TraceEvent& e : log.since(0)) {
+            busErrors += e.kind == TraceEvent::Kind::BusError;
+            emcy += e.kind == TraceEvent::Kind::Emcy;
+            const QString shown = e.render ? e.render() : e.text;
+            shownAll << shown;
+            if (const QStringList words = englishLeft(shown, objectNames); !words.isEmpty())
+                left << QStringLiteral("%1   [%2]").arg(shown, words.join(u' '));
+        }
+        QCOMPARE(busErrors, int(coretextsamples::canErrorFrames().size()));
+        // A frame with two problems reads as two items, the location inside the first.
+        const QString two = QCoreApplication::translate("CoreText", "%1; %2")
+                                .arg(coreText(QStringLiteral("protocol violation: stuff error in the CRC sequence")), coreText(QStringLiteral("bus error")));
+        QVERIFY2(std::any_of(shownAll.begin(), shownAll.end(), [&](const QString& s) { return s == two; }), qPrintable(two));
+        QCOMPARE(emcy, 12);
+        for (const QString& l : left) qInfo("English left: %s", qPrintable(l));
+        QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 event(s) with English left (listed above)").arg(code).arg(left.size())));
     }
 };
 

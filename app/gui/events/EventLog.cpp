@@ -126,7 +126,9 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
                 QString text = coreText(d.summary);
                 if (emcy) {
                     const auto m = canopen::parseEmcy(f.data.data(), f.len);
-                    if (const auto* v = d.find("emcy.vendor")) text += QStringLiteral(" — %1").arg(coreLines(v->text));
+                    // The dissector's summary names the vendor alarm already; else the raw vendor bytes.
+                    if (const auto* v = d.find("emcy.vendor"); v && !d.summary.endsWith(QStringLiteral(", ") + v->text))
+                        text += QStringLiteral(" — %1").arg(coreLines(v->text));
                     QStringList bits = canopen::errorRegisterBits(m.errorRegister);
                     for (QString& b : bits) b = coreText(b);
                     if (!bits.isEmpty()) text += QStringLiteral(" [%1]").arg(bits.join(QStringLiteral(", ")));

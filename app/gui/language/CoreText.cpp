@@ -117,6 +117,28 @@ QString fill(const QString& translated, const std::vector<QString>& values) {
 
 QString lookUp(const QString& english, int depth, qsizetype* covered = nullptr);
 
+// `english` as a list joined by `join` (one of coretext::joins(): "a; b", "a, b"): the items'
+// translations joined the UI language's way; empty when no item is translated, or when one is
+// not translated in full and `partial` is false. *covered = the letters translated. An item may
+// be a list of the other kind, so the cost stays linear.
+QString byList(const QString& english, int depth, const char* join, bool partial, qsizetype* covered) {
+    *covered = 0;
+    const QString source = QString::fromUtf8(join);
+    const QString separator = source.mid(2, source.size() - 4);  // "%1" + separator + "%2"
+    if (!english.contains(separator)) return {};
+    QStringList items = english.split(separator);
+    for (QString& item : items) {
+        qsizetype c = 0;
+        const QString translated = lookUp(item, depth + 1, &c);
+        if (!partial && (item.isEmpty() || c < item.size())) return {};
+        *covered += c;
+        item = translated;
+    }
+    if (*covered == 0) return {};
+    const QString translatedJoin = QCoreApplication::translate("CoreText", join);
+    return items.join(translatedJoin.mid(2, translatedJoin.size() - 4));
+}
+
 // `english` in one of the shapes ("0650h (Switch on disabled)", "0x5530 Data storage error
 // (EEPROM)", "generic error (AL555 …)"): the shape's translation with both parts looked up. Of
 // the shapes and the places of their separator, the one whose translated parts cover the most
@@ -165,6 +187,11 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
         *out = fill(translated, values);
         return true;
     };
+    // A "; " list first (the problems of a CAN error frame): a pattern would take the rest of
+    // the list as its last value.
+    const auto joins = coretext::joins();
+    qsizetype listCovered = 0;
+    if (const QString list = byList(english, depth, joins[0], false, &listCovered); !list.isEmpty()) return list;
     QString out;
     for (size_t i : ps.suffixes)
         if (tryOne(i, &out)) return out;
@@ -174,14 +201,26 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
             if (tryOne(i, &out)) return out;
     for (size_t i : ps.open)
         if (tryOne(i, &out)) return out;
-    return byShape(english, depth, covered);
+    // A ", " list (the signals of a PDO, "Statusword = 0637h (Operation enabled), Position …"):
+    // at once when each item is translated in full; else the list or the shape that translates
+    // more ("0x2311 Current, device output side" is a code and one name, not a list).
+    const QString list = byList(english, depth, joins[1], true, &listCovered);
+    if (!list.isEmpty() && listCovered == english.size() - english.count(QLatin1String(", ")) * 2) return list;
+    qsizetype shapeCovered = 0;
+    const QString shaped = byShape(english, depth, &shapeCovered);
+    if (!list.isEmpty() && listCovered > shapeCovered) {
+        if (covered) *covered = listCovered;
+        return list;
+    }
+    if (covered) *covered = shapeCovered;
+    return shaped;
 }
 
 }  // namespace
 
 namespace coretext {
 std::span<const std::span<const char* const>> all() {
-    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details()};
+    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details(), bus()};
     return lists;
 }
 }  // namespace coretext

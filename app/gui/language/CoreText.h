@@ -11,6 +11,8 @@ namespace coscope::gui {
 // - listed as it is: its translation;
 // - matching a listed text with placeholders ("Heartbeat, node %1: %2"): the translation of that
 //   text with the values put back, each value itself looked up (a state name inside a summary);
+// - a list joined by "; " or ", " (coretext::joins(): the problems of a CAN error frame, the
+//   signals of a PDO): item by item, joined the UI language's way;
 // - else the text as it is. In English it returns the text at once.
 QString coreText(const QString& english);
 
