@@ -38,6 +38,10 @@ protected:
     void drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const override;
 
 private:
+    // Writes the spans straight into the painter's QImage (the plot's own paint buffer) when
+    // that is pixel for pixel what filling them would do; false: paint them instead.
+    bool fillDirect(QCPPainter* painter, const QColor& color, int penWidth) const;
+
     mutable QVector<QRect> spans_;
     mutable QVector<QRect> blocks_;
     mutable QVector<QLineF> longSegments_;
