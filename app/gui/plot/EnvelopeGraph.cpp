@@ -147,6 +147,7 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
 
 void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const {
     spans_.clear();
+    direct_ = false;
     // Dense: more points than the pixel columns they cover. Vector output (PDF) and a vertical
     // key axis keep the polyline.
     const bool dense = lines.size() > 2 && std::abs(lines.back().x() - lines.front().x()) + 1 < lines.size();
@@ -158,7 +159,7 @@ void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& li
     const QPen pen = painter->pen();
     const int w = std::max(1, static_cast<int>(std::lround(pen.widthF())));
     if (!longSegments_.isEmpty()) painter->drawLines(longSegments_);
-    if (fillDirect(painter, pen.color(), w)) return;
+    if ((direct_ = fillDirect(painter, pen.color(), w))) return;
     // Filled as few wide rectangles (row fills) rather than a 1-pixel column per column: the
     // raster engine fills rows, so this is what keeps dense bands cheap.
     mergeColumns(spans_, &blocks_);
