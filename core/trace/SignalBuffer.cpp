@@ -27,7 +27,11 @@ struct SignalBuffer::Chunk {
     std::vector<int64_t> t;
     std::vector<double> v;
     std::vector<FrameNo> f;
-    std::vector<Summary> level[kLevels];  // level[k][j]: samples [j * kBlock[k], (j + 1) * kBlock[k])
+    // level[k][j]: extremes of samples [j * kBlock[k], (j + 1) * kBlock[k]); bits[k][j] the AND
+    // and OR of their integer values. Kept apart: an analog trace's redraw reads only the
+    // extremes (16 bytes a block), so a pixel column's edge touches half the memory.
+    std::vector<MinMax> level[kLevels];
+    std::vector<Bits> bits[kLevels];
     std::vector<int64_t> blockTime;  // time of each 64-block's first sample: searches touch few cache lines
 
     size_t size() const { return t.size(); }
@@ -46,16 +50,17 @@ struct SignalBuffer::Chunk {
         if (i % kTimeBlock == 0) blockTime.push_back(s.timeNs);
         const uint64_t b = bitsOf(s.value);
         for (int k = 0; k < kLevels; ++k) {
-            std::vector<Summary>& lv = level[k];
             if (i % kBlock[k] == 0) {
-                lv.push_back({s.value, s.value, b, b});
+                level[k].push_back({s.value, s.value});
+                bits[k].push_back({b, b});
                 continue;
             }
-            Summary& m = lv.back();
+            MinMax& m = level[k].back();
             m.min = std::min(m.min, s.value);
             m.max = std::max(m.max, s.value);
-            m.andBits &= b;
-            m.orBits |= b;
+            Bits& x = bits[k].back();
+            x.andBits &= b;
+            x.orBits |= b;
         }
     }
 };
@@ -165,39 +170,69 @@ size_t SignalBuffer::lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t fr
     return lo;
 }
 
+template <bool WithBits>
 SignalBuffer::Summary SignalBuffer::reduceLocked(size_t from, size_t to) const {
-    Summary m{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), ~uint64_t(0), 0};
-    auto merge = [&m](const Summary& s) {
-        m.min = std::min(m.min, s.min);
-        m.max = std::max(m.max, s.max);
-        m.andBits &= s.andBits;
-        m.orBits |= s.orBits;
-    };
+    double mn = std::numeric_limits<double>::infinity(), mx = -std::numeric_limits<double>::infinity();
+    uint64_t andBits = ~uint64_t(0), orBits = 0;
     while (from < to) {
         const Chunk& c = *chunks_[from / kChunkSize];
         size_t lo = from % kChunkSize;
         const size_t hi = std::min(kChunkSize, lo + (to - from));
         from += hi - lo;
+        const double* v = c.v.data();
         auto raw = [&](size_t i) {
-            const uint64_t b = bitsOf(c.v[i]);
-            merge({c.v[i], c.v[i], b, b});
+            mn = std::min(mn, v[i]);
+            mx = std::max(mx, v[i]);
+            if constexpr (WithBits) {
+                const uint64_t b = bitsOf(v[i]);
+                andBits &= b;
+                orBits |= b;
+            }
+        };
+        auto block = [&](int k, size_t j) {
+            const MinMax& m = c.level[k][j];
+            mn = std::min(mn, m.min);
+            mx = std::max(mx, m.max);
+            if constexpr (WithBits) {
+                andBits &= c.bits[k][j].andBits;
+                orBits |= c.bits[k][j].orBits;
+            }
         };
         // Up the pyramid: single samples, then ever larger blocks, until lo sits on the largest
         // block boundary that fits; then down again: the largest whole blocks first.
         while (lo < hi && lo % kBlock[0] != 0) raw(lo++);
         for (int k = 0; k + 1 < kLevels; ++k)
             while (lo + kBlock[k] <= hi && lo % kBlock[k + 1] != 0) {
-                merge(c.level[k][lo / kBlock[k]]);
+                block(k, lo / kBlock[k]);
                 lo += kBlock[k];
             }
         for (int k = kLevels - 1; k >= 0; --k)
             while (lo + kBlock[k] <= hi) {
-                merge(c.level[k][lo / kBlock[k]]);
+                block(k, lo / kBlock[k]);
                 lo += kBlock[k];
             }
         while (lo < hi) raw(lo++);
     }
-    return m;
+    return {mn, mx, andBits, orBits};
+}
+
+void SignalBuffer::prefetchLocked(size_t r, size_t span) const {
+    // The memory a column edge near sample r will read (its time, the raw values either side,
+    // the blocks of the levels a column of `span` samples climbs), requested ahead so the
+    // reads of several columns overlap instead of waiting one after the other.
+    const size_t k = r / kChunkSize;
+    if (k >= chunks_.size()) return;
+    const Chunk& c = *chunks_[k];
+    const size_t i = r % kChunkSize;
+    if (i >= c.size()) return;
+    __builtin_prefetch(c.t.data() + i);
+    for (size_t j = i >= 16 ? i - 16 : 0; j < i + 16 && j < c.size(); j += 8) __builtin_prefetch(c.v.data() + j);
+    for (int lv = 0; lv + 1 < kLevels && kBlock[lv] * 2 <= span; ++lv) {
+        const size_t first = (i / kBlock[lv + 1]) * kFanout;  // the blocks of this level sharing r's parent
+        const MinMax* base = c.level[lv].data();
+        const size_t n = c.level[lv].size();
+        for (size_t j = first; j < first + kFanout && j < n; j += 4) __builtin_prefetch(base + j);
+    }
 }
 
 std::vector<SignalSample> SignalBuffer::samplesLocked(size_t from, size_t to) const {
@@ -249,8 +284,11 @@ SignalRange SignalBuffer::range(int64_t t0, int64_t t1, int bit) const {
     std::lock_guard lock(mutex_);
     const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
     if (from >= to) return {};
-    const Summary s = reduceLocked(from, to);
-    if (bit >= 0 && bit < 64) return {double((s.andBits >> bit) & 1), double((s.orBits >> bit) & 1), true};
+    if (bit >= 0 && bit < 64) {
+        const Summary s = reduceLocked<true>(from, to);
+        return {double((s.andBits >> bit) & 1), double((s.orBits >> bit) & 1), true};
+    }
+    const Summary s = reduceLocked<false>(from, to);
     return {s.min, s.max, true};
 }
 
@@ -278,7 +316,11 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
     const double span = double(t1) - double(t0);
     size_t start = from;
     size_t lastCount = (to - from) / size_t(buckets);
+    const bool bits = bit >= 0 && bit < 64;
+    constexpr int kAhead = 3;  // columns whose memory is requested ahead
     for (int b = 0; b < buckets && start < to; ++b) {
+        if (lastCount >= 16)
+            if (const size_t ahead = start + size_t(kAhead) * lastCount; ahead < to) prefetchLocked(ahead, lastCount);
         size_t end = to;
         if (b + 1 < buckets) {
             const auto edge = static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
@@ -291,9 +333,9 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
             out.push_back({a.timeNs, valueOf(a.value)});
             if (end - start == 2) out.push_back({z.timeNs, valueOf(z.value)});
         } else {
-            const Summary s = reduceLocked(start, end);
+            const Summary s = bits ? reduceLocked<true>(start, end) : reduceLocked<false>(start, end);
             double mn = s.min, mx = s.max;
-            if (bit >= 0 && bit < 64) {
+            if (bits) {
                 mn = double((s.andBits >> bit) & 1);
                 mx = double((s.orBits >> bit) & 1);
             }

@@ -86,6 +86,12 @@ private:
         double min, max;
         uint64_t andBits, orBits;
     };
+    struct MinMax {
+        double min, max;
+    };
+    struct Bits {
+        uint64_t andBits, orBits;
+    };
     struct Chunk;
     // Global sample indexes: first() is base_, the newest base_ + size - 1.
     size_t countLocked() const;
@@ -93,7 +99,9 @@ private:
     size_t lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from, size_t n) const;  // same in [from, n], galloping from `hint`
     SignalPoint pointLocked(size_t global) const;  // time and value only (no frame)
     const SignalSample sampleLocked(size_t global) const;
-    Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty
+    template <bool WithBits>
+    Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty; AND/OR only WithBits
+    void prefetchLocked(size_t global, size_t span) const;  // hints the reads of a column edge there
     std::vector<SignalSample> samplesLocked(size_t from, size_t to) const;
 
     size_t capacityChunks_;

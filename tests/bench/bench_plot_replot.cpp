@@ -131,6 +131,15 @@ void timed(benchmark::State& state, double& totalMs, double& cpuMs, F&& f) {
     }
 }
 
+// Each replot case's figures (CPU and wall ms), for the side-by-side table at the end.
+struct Case {
+    double cpuMs = 0, wallMs = 0;
+};
+std::map<std::pair<int64_t, int>, Case>& replotCases() {
+    static std::map<std::pair<int64_t, int>, Case> cases;
+    return cases;
+}
+
 // The old plain scan: every sample read once into kColumns min/max columns (CPU ms per pass).
 std::map<int64_t, double> peerMs;
 double plainScan(const std::vector<std::vector<SignalSample>>& raw) {
@@ -173,6 +182,7 @@ void BM_Replot(benchmark::State& state, int64_t seconds, PlotView::Layout layout
     timed(state, totalMs, cpuMs, [&] { view->refresh(true); });
     const std::string name = "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes");
     report(state, name, totalMs, cpuMs);
+    replotCases()[{seconds, int(layout)}] = {cpuMs / double(state.iterations()), totalMs / double(state.iterations())};
     // The same figure against the old plain scan of that length (same run): a whole replot
     // should cost less than only reading every sample once.
     char line[256];
@@ -224,5 +234,23 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     for (const auto& [name, line] : benchLines()) std::printf("%s\n", line.c_str());
+    // Side by side: each length and layout, its replot, the plain scan of that length, and the
+    // budget (ratios >= 1 pass). The host's load is printed: CPU ms is the fairer figure on a
+    // shared machine, wall ms what a user waits for.
+    double load[3] = {0, 0, 0};
+    if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+        if (std::fscanf(f, "%lf %lf %lf", &load[0], &load[1], &load[2]) != 3) load[0] = load[1] = load[2] = 0;
+        std::fclose(f);
+    }
+    if (!replotCases().empty()) {
+        std::printf("\nreplot of 8 signals x 1 kHz, whole history in view (load average %.2f %.2f %.2f)\n", load[0], load[1], load[2]);
+        std::printf("%-7s %-12s %10s %10s %14s %9s %14s\n", "length", "layout", "cpu ms", "wall ms", "plain scan ms", "vs scan", "3 ms budget");
+        for (const auto& [key, c] : replotCases()) {
+            const double peer = peerMs.count(key.first) ? peerMs[key.first] : 0;
+            std::printf("%-7s %-12s %10.3f %10.3f %14.3f %8.1fx %13.2fx\n", lengthName(key.first).c_str(),
+                        key.second == int(PlotView::Layout::Stacked) ? "stacked" : "shared axes", c.cpuMs, c.wallMs, peer, peer > 0 ? peer / c.cpuMs : 0.0,
+                        kBudgetMs / c.cpuMs);
+        }
+    }
     return 0;
 }

@@ -184,6 +184,43 @@ private slots:
         QVERIFY(n > 800);
         QVERIFY(drawnAt(double(kLate) / kRate, -700));
     }
+
+    // On screen the dense trace is written straight into the plot's paint buffer; the exported
+    // picture (toPixmap) fills the same spans through QPainter. Both must show the same trace
+    // pixels, the whole hour in view and zoomed in.
+    void screenEqualsExport() {
+        PlotView view;
+        view.resize(1000, 500);
+        PlotSignal s;
+        s.key = {0, 2, 0x6064, 0, -1};
+        s.label = QStringLiteral("n2 Position actual value");
+        s.color = plotColor(1);
+        s.buffer = buffer_;
+        view.setLegendVisible(false);
+        view.setSignals({s});
+        view.setOrigin(0);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QCustomPlot* cp = view.customPlot();
+        for (const auto& [from, to] : {std::pair{0.0, 3610.0}, std::pair{1200.0, 1260.0}}) {
+            view.setTimeRange(from, to);
+            view.refresh(true);
+            QVERIFY(graph(view)->lastPaintDirect());
+            QVERIFY(!graph(view)->lastSpans().isEmpty());
+            const QImage screen = cp->grab().toImage();
+            const QImage exported = cp->toPixmap(0, 0, 1.0).toImage();
+            QVERIFY(!graph(view)->lastPaintDirect());  // the export painted through QPainter
+            const QRect r = cp->axisRect(0)->rect();
+            int trace = 0, differ = 0;
+            for (int y = r.top(); y <= r.bottom(); ++y)
+                for (int x = r.left(); x <= r.right(); ++x) {
+                    const bool a = isTrace(screen.pixel(x, y), s.color), b = isTrace(exported.pixel(x, y), s.color);
+                    trace += a;
+                    differ += a != b;
+                }
+            QVERIFY2(trace > 1000 && differ == 0, qPrintable(QStringLiteral("%1..%2 s: %3 trace pixels, %4 differ").arg(from).arg(to).arg(trace).arg(differ)));
+        }
+    }
 };
 
 QTEST_MAIN(TestPlotEnvelope)

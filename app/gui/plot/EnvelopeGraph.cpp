@@ -3,8 +3,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace coscope::gui {
+
+namespace {
+// n pixels of one colour, four to a store (what the raster engine's own fill does).
+void fillRow(uint32_t* p, int n, uint32_t v) {
+    using V4 = uint32_t __attribute__((vector_size(16)));
+    const V4 four = {v, v, v, v};
+    int i = 0;
+    for (; i + 4 <= n; i += 4) std::memcpy(p + i, &four, sizeof four);
+    for (; i < n; ++i) p[i] = v;
+}
+}  // namespace
 
 EnvelopeGraph::EnvelopeGraph(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPGraph(keyAxis, valueAxis) {}
 
@@ -92,8 +104,50 @@ void EnvelopeGraph::mergeColumns(const QVector<QRect>& spans, QVector<QRect>* bl
     closeAll();
 }
 
+bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) const {
+    // Only where writing the pixels is exactly what the raster engine would do: a QImage in a
+    // 32-bit format, opaque colour, plain source-over, whole-pixel translation, one clip rect.
+    QPaintDevice* device = painter->device();
+    if (!device || device->devType() != QInternal::Image) return false;
+    auto* image = static_cast<QImage*>(device);
+    const QImage::Format f = image->format();
+    if (f != QImage::Format_ARGB32_Premultiplied && f != QImage::Format_ARGB32 && f != QImage::Format_RGB32) return false;
+    if (color.alpha() != 255 || painter->opacity() != 1.0 || painter->compositionMode() != QPainter::CompositionMode_SourceOver) return false;
+    if (painter->pen().brush().style() != Qt::SolidPattern) return false;
+    painter->save();
+    painter->setAntialiasing(false);  // QCPPainter drops its half-pixel shift
+    const QTransform t = painter->combinedTransform();
+    const bool plain = painter->deviceTransform().isIdentity() && t.type() <= QTransform::TxTranslate && t.dx() == std::round(t.dx()) &&
+                       t.dy() == std::round(t.dy());
+    QRect clip = image->rect();
+    bool ok = plain;
+    if (ok && painter->hasClipping()) {
+        const QRegion region = painter->clipRegion();
+        ok = region.rectCount() <= 1;
+        clip &= region.boundingRect().translated(static_cast<int>(t.dx()), static_cast<int>(t.dy()));
+    }
+    painter->restore();
+    if (!ok) return false;
+    const int dx = static_cast<int>(t.dx()), dy = static_cast<int>(t.dy());
+    const uint32_t px = qPremultiply(color.rgba());
+    uchar* bits = image->bits();
+    const qsizetype stride = image->bytesPerLine();
+    // Row by row over the merged rectangles: consecutive pixels of a row share cache lines,
+    // a column's would each touch its own.
+    mergeColumns(spans_, &blocks_);
+    for (const QRect& b : blocks_) {
+        QRect r = b.translated(dx, dy);
+        if (w > 1) r.adjust(-(w - 1) / 2, -(w - 1) / 2, w / 2, w / 2);
+        r &= clip;
+        if (r.isEmpty()) continue;
+        for (int y = r.top(); y <= r.bottom(); ++y) fillRow(reinterpret_cast<uint32_t*>(bits + y * stride) + r.left(), r.width(), px);
+    }
+    return true;
+}
+
 void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const {
     spans_.clear();
+    direct_ = false;
     // Dense: more points than the pixel columns they cover. Vector output (PDF) and a vertical
     // key axis keep the polyline.
     const bool dense = lines.size() > 2 && std::abs(lines.back().x() - lines.front().x()) + 1 < lines.size();
@@ -105,6 +159,7 @@ void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& li
     const QPen pen = painter->pen();
     const int w = std::max(1, static_cast<int>(std::lround(pen.widthF())));
     if (!longSegments_.isEmpty()) painter->drawLines(longSegments_);
+    if ((direct_ = fillDirect(painter, pen.color(), w))) return;
     // Filled as few wide rectangles (row fills) rather than a 1-pixel column per column: the
     // raster engine fills rows, so this is what keeps dense bands cheap.
     mergeColumns(spans_, &blocks_);

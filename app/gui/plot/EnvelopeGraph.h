@@ -24,6 +24,8 @@ public:
     // The rectangles of the last dense paint (pixel coordinates), for tests; empty when the
     // last paint drew a polyline.
     const QVector<QRect>& lastSpans() const { return spans_; }
+    // Whether the last dense paint wrote its spans straight into the paint buffer's pixels.
+    bool lastPaintDirect() const { return direct_; }
 
     // One vertical span per pixel column covering a polyline given in pixel coordinates
     // (x ascending). Segments longer than one column are returned in `longSegments` (drawn as
@@ -38,7 +40,12 @@ protected:
     void drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const override;
 
 private:
+    // Writes the spans straight into the painter's QImage (the plot's own paint buffer) when
+    // that is pixel for pixel what filling them would do; false: paint them instead.
+    bool fillDirect(QCPPainter* painter, const QColor& color, int penWidth) const;
+
     mutable QVector<QRect> spans_;
+    mutable bool direct_ = false;
     mutable QVector<QRect> blocks_;
     mutable QVector<QLineF> longSegments_;
 };

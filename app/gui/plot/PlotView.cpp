@@ -2,6 +2,7 @@
 #include "app/gui/plot/PlotView.h"
 
 #include "app/gui/plot/EnvelopeGraph.h"
+#include "app/gui/plot/PlotSurface.h"
 
 #include <QVBoxLayout>
 
@@ -28,7 +29,7 @@ QString number(double v) {
 }
 }  // namespace
 
-PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new QCustomPlot(this)) {
+PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
