@@ -57,7 +57,8 @@ void PlotSurface::installImageBuffer() {
 }
 
 void PlotSurface::paintEvent(QPaintEvent* event) {
-    if (!image_ || !image_->base.isValid() || mPaintBuffers.isEmpty() || mPaintBuffers.first().data() != image_) {
+    // Ours still (checked before image_ is read), and on an opaque background.
+    if (!image_ || mPaintBuffers.isEmpty() || mPaintBuffers.first().data() != image_ || !image_->base.isValid()) {
         QCustomPlot::paintEvent(event);
         return;
     }
