@@ -4530,6 +4530,11 @@ Arm the test move?</source>
         <source>%1h (%2-bit)</source>
         <translation>%1h（%2 位）</translation>
     </message>
+    <message>
+        <source>Loading the frame back from the capture journal…</source>
+        <extracomment>Details pane while the selected frame is read back from the capture journal on disk</extracomment>
+        <translation>正在从捕获日志读回帧…</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HealthDock</name>

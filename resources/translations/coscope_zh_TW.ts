@@ -4530,6 +4530,11 @@ Arm the test move?</source>
         <source>%1h (%2-bit)</source>
         <translation>%1h（%2 位元）</translation>
     </message>
+    <message>
+        <source>Loading the frame back from the capture journal…</source>
+        <extracomment>Details pane while the selected frame is read back from the capture journal on disk</extracomment>
+        <translation>正在從擷取日誌讀回封包…</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HealthDock</name>
