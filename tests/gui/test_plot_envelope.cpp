@@ -116,6 +116,18 @@ class TestPlotEnvelope : public QObject {
         return compared;
     }
 
+    // The hour of position samples as the view's one signal, in plot colour `color`, no legend.
+    void plotPosition(PlotView& view, int color) {
+        PlotSignal s;
+        s.key = {0, 2, 0x6064, 0, -1};
+        s.label = QStringLiteral("n2 Position actual value");
+        s.color = plotColor(color);
+        s.buffer = buffer_;
+        view.setLegendVisible(false);
+        view.setSignals({s});
+        view.setOrigin(0);
+    }
+
     EnvelopeGraph* graph(PlotView& view) { return qobject_cast<EnvelopeGraph*>(view.customPlot()->graph(0)); }
 
 private slots:
@@ -128,14 +140,7 @@ private slots:
     void drawsTheEnvelopeOfAnHour() {
         PlotView view;
         view.resize(1000, 500);
-        PlotSignal s;
-        s.key = {0, 2, 0x6064, 0, -1};
-        s.label = QStringLiteral("n2 Position actual value");
-        s.color = plotColor(0);
-        s.buffer = buffer_;
-        view.setLegendVisible(false);
-        view.setSignals({s});
-        view.setOrigin(0);
+        plotPosition(view, 0);
         view.setTimeRange(0, 3600);
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
@@ -191,14 +196,7 @@ private slots:
     void screenEqualsExport() {
         PlotView view;
         view.resize(1000, 500);
-        PlotSignal s;
-        s.key = {0, 2, 0x6064, 0, -1};
-        s.label = QStringLiteral("n2 Position actual value");
-        s.color = plotColor(1);
-        s.buffer = buffer_;
-        view.setLegendVisible(false);
-        view.setSignals({s});
-        view.setOrigin(0);
+        plotPosition(view, 1);
         view.show();
         QVERIFY(QTest::qWaitForWindowExposed(&view));
         QCustomPlot* cp = view.customPlot();
@@ -214,7 +212,7 @@ private slots:
             int trace = 0, differ = 0;
             for (int y = r.top(); y <= r.bottom(); ++y)
                 for (int x = r.left(); x <= r.right(); ++x) {
-                    const bool a = isTrace(screen.pixel(x, y), s.color), b = isTrace(exported.pixel(x, y), s.color);
+                    const bool a = isTrace(screen.pixel(x, y), plotColor(1)), b = isTrace(exported.pixel(x, y), plotColor(1));
                     trace += a;
                     differ += a != b;
                 }
