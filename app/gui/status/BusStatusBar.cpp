@@ -86,11 +86,22 @@ void BusStatusBar::refresh(Job* job) {
         lastNs_ = now;
         lastFrames_ = frames;
     } else if (now - lastNs_ >= 500'000'000) {
+        // Over the frames in RAM only: a chunk already paged out to the journal (a capture faster
+        // than a small budget) is not read back on the GUI thread; its share is estimated.
         double bits = 0;
-        for (uint64_t n = lastFrames_; n < frames; ++n) {
-            const TraceRecord& r = store->record(static_cast<FrameNo>(n));
-            bits += frameBits((r.flags & CanFrame::Remote) ? 0 : std::min<int>(r.len, 8), r.flags & CanFrame::Extended);
+        uint64_t counted = 0;
+        for (uint64_t n = lastFrames_; n < frames;) {
+            const uint64_t chunkEnd = std::min<uint64_t>(frames, ((n >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits);
+            if (!store->isResident(static_cast<FrameNo>(n))) {
+                n = chunkEnd;
+                continue;
+            }
+            for (; n < chunkEnd; ++n, ++counted) {
+                const TraceRecord& r = store->record(static_cast<FrameNo>(n));
+                bits += frameBits((r.flags & CanFrame::Remote) ? 0 : std::min<int>(r.len, 8), r.flags & CanFrame::Extended);
+            }
         }
+        if (counted > 0) bits *= double(frames - lastFrames_) / double(counted);
         const double secs = double(now - lastNs_) / 1e9;
         rate_fps_ = double(frames - lastFrames_) / secs;
         const int bitrate = bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000;

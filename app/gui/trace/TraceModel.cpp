@@ -501,11 +501,11 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
     }
     if (kind == RowKind::Transfer) {
         const auto g = static_cast<uint32_t>(groupAt(index.row()));
-        if ((role == Qt::DisplayRole || role == Qt::ToolTipRole) && col != Number && !groupTexts_.count(g) && groupPagedOut(g)) {
+        // Every role but the number reads its frames (the texts, the first frame's fields).
+        if (col != Number && groupPagedOut(g)) {
             if (role == Qt::DisplayRole && col == Summary) return tr("loading…");
             return {};
         }
-        const TraceRecord& r = store_->record(n);
         if (role == Qt::ToolTipRole) return col == Number ? tr("Click to expand or collapse the transfer's frames") : groupText(g).summary;
         if (role == Qt::DisplayRole) {
             switch (col) {
@@ -514,7 +514,7 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
             case Length: return groupText(g).size;
             case Data: return groupText(g).data;
             case Summary: return groupText(g).summary;
-            case CobId: return QStringLiteral("%1").arg(r.id, 3, 16, QLatin1Char('0')).toUpper();
+            case CobId: return QStringLiteral("%1").arg(store_->record(n).id, 3, 16, QLatin1Char('0')).toUpper();
             default: break;  // time, bus, node, direction: of its first frame
             }
         }
