@@ -29,6 +29,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -310,6 +311,7 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
         showError(tr("A save is already running"));
         return false;
     }
+    if (!confirmGapsLost(path, format)) return false;
     std::optional<std::vector<FrameNo>> frames;
     // Each shown frame once, in order (a collapsed SDO transfer row stands for its frames).
     if (filteredOnly) frames = trace_->model()->shownFrames();
@@ -318,6 +320,30 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
     saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;
+}
+
+// Issue 16 "Lost adapter": a gap of the capture must not vanish unseen. Formats without a place
+// for it (candump, BLF; LogWriter::keepsGaps()) save only after the user agrees.
+bool MainWindow::confirmGapsLost(const QString& path, const QString& format) {
+    const auto& store = workspace_->store();
+    const size_t gaps = store ? store->gaps().size() : 0;
+    if (gaps == 0) return true;
+    const QString name = logio::LogFormats::writerFormatFor(path, format, nullptr);
+    const auto writer = name.isEmpty() ? nullptr : logio::LogFormats::createWriter(name);
+    if (!writer || writer->keepsGaps()) return true;  // an unknown format fails in the save job
+    if (quiet_) {
+        spdlog::warn("saving {}: the {} format cannot hold the trace's {} gaps", path.toStdString(), name.toStdString(), gaps);
+        return true;
+    }
+    QMessageBox box(QMessageBox::Warning, tr("Save trace"),
+                    tr("The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not "
+                       "show where frames are missing. pcapng, ASC, TRC and CSV keep them.",
+                       nullptr, int(gaps))
+                        .arg(name),
+                    QMessageBox::Save | QMessageBox::Cancel, this);
+    box.button(QMessageBox::Save)->setText(tr("Save anyway"));
+    box.setDefaultButton(QMessageBox::Cancel);
+    return box.exec() == QMessageBox::Save;
 }
 
 bool MainWindow::showView(const QString& name) {

@@ -106,6 +106,8 @@ private:
     // (nothing unsaved, or Discard). Save starts Save As and returns false; `then` runs once the
     // file is written in full (from refresh(), no nested event loop). Cancel returns false.
     bool maybeSaveCapture(std::function<void()> then);
+    // False when the trace has gaps that `format` cannot hold and the user does not save anyway.
+    bool confirmGapsLost(const QString& path, const QString& format);
 
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
