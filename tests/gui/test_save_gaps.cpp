@@ -5,6 +5,7 @@
 // writes every frame).
 #include "app/gui/MainWindow.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
 #include "core/logio/LogFormats.h"
