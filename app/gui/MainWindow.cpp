@@ -26,6 +26,8 @@
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFutureWatcher>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -214,12 +216,41 @@ void MainWindow::offerAndCleanJournals() {
     });
     journalOffer_->offerFrom(folder);
     // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
-    journals::cleanup(folder, journalCleanupPolicy());
+    cleanJournalsInBackground(folder, journalCleanupPolicy(), false);
     // Spill files of logs opened by an app that was killed (those of this one are removed
     // with their trace).
     journals::CleanupPolicy spills;
     spills.maxAgeDays = 1;
-    journals::cleanup(folder + QStringLiteral("/opened"), spills);
+    cleanJournalsInBackground(folder + QStringLiteral("/opened"), spills, false);
+}
+
+// The journals the window must keep: the capture's (being written, or the last one, which the
+// trace pages from), the log opened, the one offered. Read by clean-ups on worker threads.
+void MainWindow::updateKeptJournals() {
+    QStringList paths{workspace_->journalPath(), openedLogPath_};
+    if (journalOffer_) paths << journalOffer_->offeredPath();
+    paths.removeAll(QString());
+    const std::lock_guard lock(keptJournals_->mutex);
+    keptJournals_->paths = paths;
+}
+
+// Issue 16: the age/size clean-up lists and removes files, which a slow or network disk makes
+// long: it runs on a worker (QtConcurrent), asking keptJournals_ right before each removal.
+void MainWindow::cleanJournalsInBackground(const QString& folder, const journals::CleanupPolicy& policy, bool report) {
+    updateKeptJournals();
+    auto kept = keptJournals_;
+    auto* watcher = new QFutureWatcher<QStringList>(this);
+    connect(watcher, &QFutureWatcher<QStringList>::finished, this, [this, watcher, report] {
+        const QStringList removed = watcher->result();
+        watcher->deleteLater();
+        if (report && !removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+    });
+    watcher->setFuture(QtConcurrent::run([folder, policy, kept] {
+        return journals::cleanup(folder, policy, {}, QDateTime::currentDateTime(), [kept](const QString& path) {
+            const std::lock_guard lock(kept->mutex);
+            return kept->paths.contains(path);
+        });
+    }));
 }
 
 // Not modal for the app: the capture goes on while it is open. OK applies the budget to the
@@ -230,9 +261,7 @@ void MainWindow::showCaptureSettings() {
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &CaptureSettingsDialog::applied, this, [this] {
         workspace_->applyMemoryBudget();
-        const QStringList keep = workspace_->journalPath().isEmpty() ? QStringList{} : QStringList{workspace_->journalPath()};
-        const QStringList removed = journals::cleanup(workspace_->journalFolder(), journalCleanupPolicy(), keep);
-        if (!removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+        cleanJournalsInBackground(workspace_->journalFolder(), journalCleanupPolicy(), true);
     });
     dialog->open();
 }
@@ -303,6 +332,8 @@ bool MainWindow::openLog(const QString& path) {
         return false;
     }
     loadReported_ = false;
+    openedLogPath_ = QFileInfo(path).absoluteFilePath();
+    updateKeptJournals();
     return true;
 }
 
@@ -367,6 +398,7 @@ bool MainWindow::showView(const QString& name) {
 
 void MainWindow::onSourceChanged() {
     scanWhenOpen_ = false;
+    updateKeptJournals();
     trace_->rebind();
     nodes_->rebind();
     od_->rebind();
