@@ -40,13 +40,20 @@ static int runConvert(const QStringList& args) {
     int lastPercent = -1;
     std::vector<CanFrame> batch(4096);
     bool namesSet = false;
+    size_t nextGap = 0;
     while (size_t n = reader->read(batch.data(), batch.size())) {
         if (!namesSet || reader->busNames().size() > 0) {
             writer->setBusNames(reader->busNames());
             namesSet = true;
         }
-        for (size_t i = 0; i < n; ++i)
+        // Gaps of the capture (issue 16 "Lost adapter") go before their first frame; a format
+        // that cannot hold them counts them (warned about below).
+        const auto& gaps = reader->gaps();
+        const uint64_t first = reader->framesRead() - n;
+        for (size_t i = 0; i < n; ++i) {
+            for (; nextGap < gaps.size() && gaps[nextGap].frame <= first + i; ++nextGap) writer->markGap(gaps[nextGap].lostNs, gaps[nextGap].backNs);
             if (!writer->write(batch[i])) break;
+        }
         if (writer->hasError() || interrupted()) break;
         if (showProgress) {
             const int percent = int(reader->progress() * 100);
@@ -64,6 +71,11 @@ static int runConvert(const QStringList& args) {
     if (reader->diagnosticCount() > reader->diagnostics().size())
         std::fprintf(stderr, "%s: warning: %llu more problems not shown\n", qPrintable(in),
                      static_cast<unsigned long long>(reader->diagnosticCount() - reader->diagnostics().size()));
+
+    if (writer->gapsDropped())
+        std::fprintf(stderr, "%s: warning: the input has %llu gap(s) in the capture (adapter lost) that the %s format cannot hold; "
+                     "they are not in the output (pcapng, asc, trc and csv keep them)\n",
+                     qPrintable(outPath), static_cast<unsigned long long>(writer->gapsDropped()), qPrintable(format));
 
     if (writer->hasError()) return failure(verb, QStringLiteral("%1: %2").arg(outPath, writer->errorString()));
     if (interrupted()) return failure(verb, QStringLiteral("interrupted after %1 frames").arg(writer->framesWritten()));

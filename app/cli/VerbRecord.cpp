@@ -89,7 +89,13 @@ static int runRecord(const QStringList& args) {
     std::vector<CanFrame> batch(512);
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     LostWatch lost(bus.get(), kVerb);  // a lost adapter reconnects by itself: capturing goes on
-    lost.setOnBack([&](int64_t lostNs, int64_t backNs) { out->markGap(lostNs, backNs); });  // on the next frame written
+    lost.setOnBack([&](int64_t lostNs, int64_t backNs) {
+        out->markGap(lostNs, backNs);  // on the next frame written
+        if (!out->keepsGaps())
+            std::fprintf(stderr, "coscope-cli record: warning: the %s format cannot hold the gap in the capture (adapter lost for %.1f s); "
+                         "%s will not show it (pcapng, asc, trc and csv keep gaps)\n",
+                         qPrintable(format), double(backNs - lostNs) / 1e9, qPrintable(pos[1]));
+    });
     qint64 written = 0;
     bool writeFailed = false;
     QElapsedTimer sinceFlush, sinceSync;

@@ -26,9 +26,12 @@
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFutureWatcher>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -213,12 +216,41 @@ void MainWindow::offerAndCleanJournals() {
     });
     journalOffer_->offerFrom(folder);
     // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
-    journals::cleanup(folder, journalCleanupPolicy());
+    cleanJournalsInBackground(folder, journalCleanupPolicy(), false);
     // Spill files of logs opened by an app that was killed (those of this one are removed
     // with their trace).
     journals::CleanupPolicy spills;
     spills.maxAgeDays = 1;
-    journals::cleanup(folder + QStringLiteral("/opened"), spills);
+    cleanJournalsInBackground(folder + QStringLiteral("/opened"), spills, false);
+}
+
+// The journals the window must keep: the capture's (being written, or the last one, which the
+// trace pages from), the log opened, the one offered. Read by clean-ups on worker threads.
+void MainWindow::updateKeptJournals() {
+    QStringList paths{workspace_->journalPath(), openedLogPath_};
+    if (journalOffer_) paths << journalOffer_->offeredPath();
+    paths.removeAll(QString());
+    const std::lock_guard lock(keptJournals_->mutex);
+    keptJournals_->paths = paths;
+}
+
+// Issue 16: the age/size clean-up lists and removes files, which a slow or network disk makes
+// long: it runs on a worker (QtConcurrent), asking keptJournals_ right before each removal.
+void MainWindow::cleanJournalsInBackground(const QString& folder, const journals::CleanupPolicy& policy, bool report) {
+    updateKeptJournals();
+    auto kept = keptJournals_;
+    auto* watcher = new QFutureWatcher<QStringList>(this);
+    connect(watcher, &QFutureWatcher<QStringList>::finished, this, [this, watcher, report] {
+        const QStringList removed = watcher->result();
+        watcher->deleteLater();
+        if (report && !removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+    });
+    watcher->setFuture(QtConcurrent::run([folder, policy, kept] {
+        return journals::cleanup(folder, policy, {}, QDateTime::currentDateTime(), [kept](const QString& path) {
+            const std::lock_guard lock(kept->mutex);
+            return kept->paths.contains(path);
+        });
+    }));
 }
 
 // Not modal for the app: the capture goes on while it is open. OK applies the budget to the
@@ -229,9 +261,7 @@ void MainWindow::showCaptureSettings() {
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &CaptureSettingsDialog::applied, this, [this] {
         workspace_->applyMemoryBudget();
-        const QStringList keep = workspace_->journalPath().isEmpty() ? QStringList{} : QStringList{workspace_->journalPath()};
-        const QStringList removed = journals::cleanup(workspace_->journalFolder(), journalCleanupPolicy(), keep);
-        if (!removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+        cleanJournalsInBackground(workspace_->journalFolder(), journalCleanupPolicy(), true);
     });
     dialog->open();
 }
@@ -302,6 +332,8 @@ bool MainWindow::openLog(const QString& path) {
         return false;
     }
     loadReported_ = false;
+    openedLogPath_ = QFileInfo(path).absoluteFilePath();
+    updateKeptJournals();
     return true;
 }
 
@@ -310,6 +342,7 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
         showError(tr("A save is already running"));
         return false;
     }
+    if (!confirmGapsLost(path, format)) return false;
     std::optional<std::vector<FrameNo>> frames;
     // Each shown frame once, in order (a collapsed SDO transfer row stands for its frames).
     if (filteredOnly) frames = trace_->model()->shownFrames();
@@ -318,6 +351,30 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
     saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;
+}
+
+// Issue 16 "Lost adapter": a gap of the capture must not vanish unseen. Formats without a place
+// for it (candump, BLF; LogWriter::keepsGaps()) save only after the user agrees.
+bool MainWindow::confirmGapsLost(const QString& path, const QString& format) {
+    const auto& store = workspace_->store();
+    const size_t gaps = store ? store->gaps().size() : 0;
+    if (gaps == 0) return true;
+    const QString name = logio::LogFormats::writerFormatFor(path, format, nullptr);
+    const auto writer = name.isEmpty() ? nullptr : logio::LogFormats::createWriter(name);
+    if (!writer || writer->keepsGaps()) return true;  // an unknown format fails in the save job
+    if (quiet_) {
+        spdlog::warn("saving {}: the {} format cannot hold the trace's {} gaps", path.toStdString(), name.toStdString(), gaps);
+        return true;
+    }
+    QMessageBox box(QMessageBox::Warning, tr("Save trace"),
+                    tr("The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not "
+                       "show where frames are missing. pcapng, ASC, TRC and CSV keep them.",
+                       nullptr, int(gaps))
+                        .arg(name),
+                    QMessageBox::Save | QMessageBox::Cancel, this);
+    box.button(QMessageBox::Save)->setText(tr("Save anyway"));
+    box.setDefaultButton(QMessageBox::Cancel);
+    return box.exec() == QMessageBox::Save;
 }
 
 bool MainWindow::showView(const QString& name) {
@@ -341,6 +398,7 @@ bool MainWindow::showView(const QString& name) {
 
 void MainWindow::onSourceChanged() {
     scanWhenOpen_ = false;
+    updateKeptJournals();
     trace_->rebind();
     nodes_->rebind();
     od_->rebind();

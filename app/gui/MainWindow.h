@@ -4,11 +4,14 @@
 // dialog, the session (Workspace) and the wizards. Models separate from views.
 #pragma once
 
+#include "core/trace/JournalFolder.h"
+
 #include <QMainWindow>
 #include <QPointer>
 
 #include <functional>
 #include <memory>
+#include <mutex>
 
 class QAction;
 class QMenu;
@@ -106,6 +109,10 @@ private:
     // (nothing unsaved, or Discard). Save starts Save As and returns false; `then` runs once the
     // file is written in full (from refresh(), no nested event loop). Cancel returns false.
     bool maybeSaveCapture(std::function<void()> then);
+    void updateKeptJournals();
+    void cleanJournalsInBackground(const QString& folder, const journals::CleanupPolicy& policy, bool report);
+    // False when the trace has gaps that `format` cannot hold and the user does not save anyway.
+    bool confirmGapsLost(const QString& path, const QString& format);
 
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
@@ -135,6 +142,12 @@ private:
     std::function<void()> afterSave_;  // what the "save first?" question held back
     bool saveAsked_ = false;           // the user answered it for the action now running
     bool quiet_ = false;
+    struct KeptJournals {
+        std::mutex mutex;
+        QStringList paths;
+    };
+    std::shared_ptr<KeptJournals> keptJournals_ = std::make_shared<KeptJournals>();
+    QString openedLogPath_;
     QString lastError_;
 };
 

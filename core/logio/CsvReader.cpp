@@ -33,6 +33,10 @@ CsvReader::LineResult CsvReader::parseLine(std::string_view line, CanFrame& f) {
     if (trimmed(line).empty()) return LineResult::Skip;
     const CsvFields c(line, ',');
     if (c.size() < Data + 1) return bad(QStringLiteral("%1 columns, expected 11").arg(c.size()));
+    if (c[Dir] == "gap") {
+        noteGapComment(c[Summary]);
+        return LineResult::Skip;
+    }
     const auto ts = parseDecimalNs(c[Time], 1000000000);
     if (!ts) return bad(QStringLiteral("bad time %1").arg(quoted(c[Time])));
     f.timestampNs = *ts;

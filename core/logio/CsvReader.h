@@ -7,7 +7,8 @@ namespace coscope::logio {
 
 // CoScope's own CSV, as CsvWriter writes it (CsvWriter.h): the header
 // "number,time,bus,id,ext,rtr,fd,dir,len,data,summary", time in seconds, id in hex with 0x,
-// data as hex bytes separated by spaces. The summary column is not read back.
+// data as hex bytes separated by spaces. The summary column is not read back, except in a
+// "gap" row (CsvWriter.h): a gap of the capture before the next frame.
 class CsvReader : public LineLogReader {
 public:
     QString formatName() const override { return QStringLiteral("csv"); }

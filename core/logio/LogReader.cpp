@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/LogReader.h"
 
+#include "core/logio/CaptureGapText.h"
+
 #include <QFile>
 #include <QFileInfo>
 
@@ -138,6 +140,11 @@ bool LineLogReader::nextLine(std::string_view& line) {
     }
 }
 
+void LineLogReader::noteGapComment(std::string_view text) {
+    int64_t lost = 0, back = 0;
+    if (parseCaptureGapText(text, &lost, &back)) pendingGaps_.push_back({0, lost, back});
+}
+
 size_t LineLogReader::readFrames(CanFrame* out, size_t max) {
     size_t n = 0;
     std::string_view line;
@@ -150,7 +157,14 @@ size_t LineLogReader::readFrames(CanFrame* out, size_t max) {
         }
         CanFrame& f = out[n];
         f = CanFrame{};
-        if (parseLine(line, f) == LineResult::Frame) ++n;
+        if (parseLine(line, f) == LineResult::Frame) {
+            for (CaptureGap& g : pendingGaps_) {
+                g.frame = framesRead() + n;
+                addGap(g);
+            }
+            pendingGaps_.clear();
+            ++n;
+        }
     }
     return n;
 }

@@ -26,7 +26,8 @@ struct LogDiagnostic {
 
 // A gap in a live capture recorded in the log (issue 16 "Lost adapter"): the adapter was lost
 // at lostNs and back at backNs; `frame` (0-based, counting the frames read) is the first frame
-// after it. Only formats that can say so carry gaps (pcapng: a comment on that frame's block).
+// after it. Only formats that can say so carry gaps (CaptureGapText.h: a comment on that
+// frame's pcapng block, a comment line in ASC and TRC, a "gap" row in CSV).
 struct CaptureGap {
     uint64_t frame = 0;
     int64_t lostNs = 0;
@@ -121,6 +122,9 @@ protected:
     size_t readFrames(CanFrame* out, size_t max) override;
     // For readHeader(): the next line, or false at the end.
     bool nextLine(std::string_view& line);
+    // A comment's text (after "//", ";", ...): when it is a gap in CaptureGapText.h's wording,
+    // the next frame returned is the first after that gap (gaps()).
+    void noteGapComment(std::string_view text);
     // Puts the last line back so readFrames() sees it again.
     void unreadLine() { unread_ = true; }
     int64_t lineNumber() const { return lineNumber_; }
@@ -136,6 +140,7 @@ private:
     bool unread_ = false;
     std::string_view last_;
     int64_t lineNumber_ = 0;
+    std::vector<CaptureGap> pendingGaps_;  // before the next frame
 };
 
 }  // namespace coscope::logio

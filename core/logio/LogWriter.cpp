@@ -67,11 +67,18 @@ bool LogWriter::ensureHeader(const CanFrame* first) {
 bool LogWriter::write(const CanFrame& frame, const QString& summary) {
     if (!device_ || closed_ || hasError()) return false;
     ensureHeader(&frame);
+    for (const auto& [lost, back] : pendingGaps_) writeGap(lost, back);
+    pendingGaps_.clear();
     if (summary.isEmpty() && summary_ && wantsSummary()) writeFrame(frame, summary_(frame));
     else writeFrame(frame, summary);
     ++written_;
     if (buffer_.size() >= kFlushAt) return flush();
     return true;
+}
+
+void LogWriter::markGap(int64_t lostNs, int64_t backNs) {
+    if (keepsGaps()) pendingGaps_.emplace_back(lostNs, backNs);
+    else ++gapsDropped_;
 }
 
 bool LogWriter::flush() {

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
+#include <vector>
 
 class QIODevice;
 
@@ -33,12 +35,14 @@ public:
 
     bool write(const CanFrame& frame, const QString& summary = {});
     // The next frame written comes after a gap in the capture (issue 16 "Lost adapter": the
-    // adapter was lost at lostNs and back at backNs). Formats that can say so (pcapng) record
-    // it with that frame; the others ignore it.
-    virtual void markGap(int64_t lostNs, int64_t backNs) {
-        (void)lostNs;
-        (void)backNs;
-    }
+    // adapter was lost at lostNs and back at backNs). Formats that can say so (keepsGaps():
+    // pcapng, ASC, TRC, CSV; CaptureGapText.h) record it with that frame; the others count it
+    // in gapsDropped().
+    void markGap(int64_t lostNs, int64_t backNs);
+    // Whether this format can hold a gap of the capture (candump and BLF cannot).
+    virtual bool keepsGaps() const { return false; }
+    // Gaps given to markGap() that this format could not hold.
+    uint64_t gapsDropped() const { return gapsDropped_; }
     bool flush();
     // flush(), then to the disk (fdatasync) for a file: what a power loss keeps.
     bool sync();
@@ -51,6 +55,11 @@ public:
 protected:
     virtual void writeHeader(const CanFrame* first) = 0;  // first == nullptr: empty log
     virtual void writeFrame(const CanFrame& frame, const QString& summary) = 0;
+    // Formats that keepsGaps(): records a gap before the frame written next (after the header).
+    virtual void writeGap(int64_t lostNs, int64_t backNs) {
+        (void)lostNs;
+        (void)backNs;
+    }
     virtual void writeFooter() {}
     virtual bool wantsSummary() const { return false; }
     // Formats that hold frames back (BLF containers) move them to out() here; called by flush().
@@ -73,6 +82,8 @@ private:
     std::function<QString(const CanFrame&)> summary_;
     QString error_;
     uint64_t written_ = 0;
+    std::vector<std::pair<int64_t, int64_t>> pendingGaps_;  // lost, back
+    uint64_t gapsDropped_ = 0;
     bool headerDone_ = false;
     bool closed_ = false;
 };

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/PcapLog.h"
 
+#include "core/logio/CaptureGapText.h"
 #include "core/logio/TextScan.h"
 
 #include <QFile>
 #include <QIODevice>
-#include <QRegularExpression>
 
 #include <algorithm>
 #include <limits>
@@ -356,7 +356,7 @@ void PcapReader::parsePacketOptions(const unsigned char* p, uint32_t len) {
         off += 4;
         if (code == 0 || off + n > len) break;
         int64_t lost = 0, back = 0;
-        if (code == 1 && PcapngWriter::parseGapComment(QByteArray(reinterpret_cast<const char*>(p + off), n), &lost, &back)) {
+        if (code == 1 && parseCaptureGapText(std::string_view(reinterpret_cast<const char*>(p + off), n), &lost, &back)) {
             gapPending_ = true;
             pendingGap_ = {0, lost, back};
         }
@@ -380,26 +380,10 @@ void pad4(QByteArray& o) {
 }
 }  // namespace
 
-QByteArray PcapngWriter::gapComment(int64_t lostNs, int64_t backNs) {
-    return QStringLiteral("CoScope: gap in the capture before this frame: the adapter was lost for %1 s, frames in between are missing "
-                          "(lost_ns=%2 back_ns=%3)")
-        .arg(double(backNs - lostNs) / 1e9, 0, 'f', 1)
-        .arg(lostNs)
-        .arg(backNs)
-        .toUtf8();
+// One comment a packet: the first gap before it (two gaps without a frame between are one).
+void PcapngWriter::writeGap(int64_t lostNs, int64_t backNs) {
+    if (comment_.isEmpty()) comment_ = captureGapText(lostNs, backNs);
 }
-
-bool PcapngWriter::parseGapComment(const QByteArray& comment, int64_t* lostNs, int64_t* backNs) {
-    if (!comment.startsWith("CoScope: gap in the capture")) return false;
-    static const QRegularExpression re(QStringLiteral("\\(lost_ns=(-?\\d+) back_ns=(-?\\d+)\\)"));
-    const QRegularExpressionMatch m = re.match(QString::fromUtf8(comment));
-    if (!m.hasMatch()) return false;
-    *lostNs = m.captured(1).toLongLong();
-    *backNs = m.captured(2).toLongLong();
-    return true;
-}
-
-void PcapngWriter::markGap(int64_t lostNs, int64_t backNs) { comment_ = gapComment(lostNs, backNs); }
 
 void PcapngWriter::writeHeader(const CanFrame*) {
     QByteArray& o = out();

@@ -15,7 +15,7 @@ namespace coscope::logio {
 // pcap: both byte orders, microsecond (a1b2c3d4) and nanosecond (a1b23c4d) magic.
 // pcapng (draft-ietf-opsawg-pcapng): SHB (either byte order), IDB with if_tsresol and
 // if_name, EPB, SPB and the obsolete packet block. Record numbers count packets from 1.
-// A packet comment (opt_comment) in CoScope's gap form (PcapngWriter::gapComment) is a gap of
+// A packet comment (opt_comment) in CoScope's gap form (CaptureGapText.h) is a gap of
 // the capture before that packet (LogReader::gaps()).
 class PcapReader : public LogReader {
 public:
@@ -64,11 +64,9 @@ private:
 class PcapngWriter : public LogWriter {
 public:
     QString formatName() const override { return QStringLiteral("pcapng"); }
-    // The gap goes into the next packet block as its comment (opt_comment, which Wireshark shows
-    // as the packet comment), in the form gapComment() writes and parseGapComment() reads.
-    void markGap(int64_t lostNs, int64_t backNs) override;
-    static QByteArray gapComment(int64_t lostNs, int64_t backNs);
-    static bool parseGapComment(const QByteArray& comment, int64_t* lostNs, int64_t* backNs);
+    // A gap goes into the next packet block as its comment (opt_comment, which Wireshark shows
+    // as the packet comment), in the wording of CaptureGapText.h.
+    bool keepsGaps() const override { return true; }
 
     // The blocks a reader needs before the packet blocks: the section header, then each
     // interface block with the number of frames written before it. A journal's pager puts them
@@ -83,6 +81,7 @@ public:
 protected:
     void writeHeader(const CanFrame* first) override;
     void writeFrame(const CanFrame& frame, const QString& summary) override;
+    void writeGap(int64_t lostNs, int64_t backNs) override;
 
 private:
     void writeInterface(uint8_t bus);

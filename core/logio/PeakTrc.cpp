@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/PeakTrc.h"
 
+#include "core/logio/CaptureGapText.h"
+
 #include <QDateTime>
 
 #include <cstdio>
@@ -107,6 +109,8 @@ TrcReader::LineResult TrcReader::parseLine(std::string_view line, CanFrame& f) {
             columns_.clear();
             for (char c : line.substr(10))
                 if (c != ',' && !isSpace(c)) columns_ += c;
+        } else {
+            noteGapComment(line.substr(1));
         }
         return LineResult::Skip;
     }
@@ -235,6 +239,8 @@ void TrcWriter::writeHeader(const CanFrame* first) {
     o += ";   |         |       |  |    |      |  |  |    |\r\n";
     o += ";---+-- ------+------ +- +- --+----- +- +- +--- +- -- -- -- -- -- -- --\r\n";
 }
+
+void TrcWriter::writeGap(int64_t lostNs, int64_t backNs) { out() += "; " + captureGapText(lostNs, backNs) + "\r\n"; }
 
 void TrcWriter::writeFrame(const CanFrame& f, const QString&) {
     const int64_t rel = f.timestampNs - startNs_;

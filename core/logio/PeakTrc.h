@@ -12,7 +12,8 @@ namespace coscope::logio {
 // 1.x lines "N) offset-ms [bus] [Rx|Tx] ID [-] DLC data|RTR", 2.x lines in the order given by
 // ";$COLUMNS=" (N number, O offset ms, T type, B bus, I id, d Rx/Tx, R reserved, L DLC,
 // l length, D data). Types: DT data, FD/FB/FE/BI CAN FD (BRS/ESI), RR remote, ER error;
-// status and event lines are skipped. Ids with more than 4 digits are 29-bit.
+// status and event lines are skipped. Ids with more than 4 digits are 29-bit. A comment line
+// "; " in CaptureGapText.h's wording is a gap of the capture before the next frame.
 class TrcReader : public LineLogReader {
 public:
     QString formatName() const override { return QStringLiteral("trc"); }
@@ -41,14 +42,18 @@ private:
 std::optional<int64_t> oleDateToNs(std::string_view text);
 QByteArray nsToOleDate(int64_t ns);
 
-// Writes TRC version 2.1 (the version PCAN-View 5 writes).
+// Writes TRC version 2.1 (the version PCAN-View 5 writes). A gap of the capture is a comment
+// line "; <CaptureGapText.h wording>" before the first frame after it (PEAK's format takes any
+// line starting with ';' as a comment; python-can's TRCReader skips them too).
 class TrcWriter : public LogWriter {
 public:
     QString formatName() const override { return QStringLiteral("trc"); }
+    bool keepsGaps() const override { return true; }
 
 protected:
     void writeHeader(const CanFrame* first) override;
     void writeFrame(const CanFrame& frame, const QString& summary) override;
+    void writeGap(int64_t lostNs, int64_t backNs) override;
 
 private:
     int64_t startNs_ = 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/VectorAsc.h"
 
+#include "core/logio/CaptureGapText.h"
 #include "core/logio/TextScan.h"
 
 #include <QTimeZone>
@@ -113,7 +114,11 @@ bool AscReader::parseByte(std::string_view t, uint8_t& out) const {
 
 AscReader::LineResult AscReader::parseLine(std::string_view line, CanFrame& f) {
     line = trimmed(line);
-    if (line.empty() || line.substr(0, 2) == "//") return LineResult::Skip;
+    if (line.empty()) return LineResult::Skip;
+    if (line.substr(0, 2) == "//") {
+        noteGapComment(line.substr(2));
+        return LineResult::Skip;
+    }
     const char c0 = line.front();
     if (!(c0 >= '0' && c0 <= '9')) {
         Tokens tokens(line);
@@ -292,6 +297,8 @@ void AscWriter::writeFrame(const CanFrame& f, const QString&) {
         }
     o += '\n';
 }
+
+void AscWriter::writeGap(int64_t lostNs, int64_t backNs) { out() += "// " + captureGapText(lostNs, backNs) + '\n'; }
 
 void AscWriter::writeFooter() { out() += "End TriggerBlock\n"; }
 

@@ -15,6 +15,7 @@ namespace coscope::logio {
 // classic lines "<t> <ch> <id>[x] <Rx|Tx> d <dlc> <bytes>", remote "r [dlc]", "<t> <ch> ErrorFrame",
 // "<t> CANFD <ch> <Rx|Tx> <id>[x] [name] <brs> <esi> <dlc> <len> <bytes> ... <flags> ...".
 // Channels are numbered from 1. Other events (statistics, chip status, J1939TP) are skipped.
+// A comment line "// " in CaptureGapText.h's wording is a gap of the capture before the next frame.
 class AscReader : public LineLogReader {
 public:
     QString formatName() const override { return QStringLiteral("asc"); }
@@ -43,15 +44,19 @@ QDateTime parseAscDate(std::string_view text);
 QByteArray formatAscDate(const QDateTime& time);
 
 // Writes .asc in the form CANalyzer and python-can read: base hex, absolute timestamps relative
-// to the "Begin Triggerblock" time (the first frame's time, to the millisecond).
+// to the "Begin Triggerblock" time (the first frame's time, to the millisecond). A gap of the
+// capture is a comment line "// <CaptureGapText.h wording>" before the first frame after it
+// (CANalyzer and python-can skip "//" lines in the trigger block).
 class AscWriter : public LogWriter {
 public:
     QString formatName() const override { return QStringLiteral("asc"); }
+    bool keepsGaps() const override { return true; }
 
 protected:
     void writeHeader(const CanFrame* first) override;
     void writeFrame(const CanFrame& frame, const QString& summary) override;
     void writeFooter() override;
+    void writeGap(int64_t lostNs, int64_t backNs) override;
 
 private:
     int64_t startNs_ = 0;

@@ -75,10 +75,11 @@ QStringList unclosed(const QString& folder) {
 
 void markOffered(const QString& journalPath) { QFile::remove(CaptureJournal::sidecarOf(journalPath)); }
 
-QStringList cleanup(const QString& folder, const CleanupPolicy& policy, const QStringList& keep, const QDateTime& now) {
+QStringList cleanup(const QString& folder, const CleanupPolicy& policy, const QStringList& keep, const QDateTime& now,
+                    const std::function<bool(const QString&)>& keepNow) {
     QStringList removed;
     std::vector<Journal> all = list(folder);
-    const auto kept = [&](const Journal& j) { return j.hasSidecar || keep.contains(j.path); };
+    const auto kept = [&](const Journal& j) { return j.hasSidecar || keep.contains(j.path) || (keepNow && keepNow(j.path)); };
     const QDateTime oldest = now.addDays(-policy.maxAgeDays);
     qint64 total = 0;
     std::vector<Journal> left;

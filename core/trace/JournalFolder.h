@@ -6,6 +6,7 @@
 #include <QStringList>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace coscope {
@@ -41,9 +42,11 @@ QStringList unclosed(const QString& folder);
 void markOffered(const QString& journalPath);
 // Removes journals older than the policy's age, then the oldest while the folder is over its
 // size. Never one in `keep` nor one with a sidecar (open now, or unclosed and not yet offered).
-// Returns the removed paths.
+// Returns the removed paths. `keepNow`, when given, is asked right before each removal (a
+// clean-up on a worker thread: the journal the GUI opened meanwhile stays).
 QStringList cleanup(const QString& folder, const CleanupPolicy& policy, const QStringList& keep = {},
-                    const QDateTime& now = QDateTime::currentDateTime());
+                    const QDateTime& now = QDateTime::currentDateTime(),
+                    const std::function<bool(const QString&)>& keepNow = {});
 
 }  // namespace journals
 }  // namespace coscope

@@ -4928,6 +4928,16 @@ Arm the test move?</source>
             <numerusform>已删除 %n 个旧的捕获日志</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
+        <translation>
+            <numerusform>跟踪中有 %n 处中断（适配器丢失）；%1 格式无法保存中断，保存后将看不出哪里缺少帧。pcapng、ASC、TRC 和 CSV 会保留中断。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save anyway</source>
+        <translation>仍要保存</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodeIdChangePage</name>

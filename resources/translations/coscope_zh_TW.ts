@@ -4928,6 +4928,16 @@ Arm the test move?</source>
             <numerusform>已移除 %n 個舊的擷取日誌</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
+        <translation>
+            <numerusform>追蹤中有 %n 處中斷（轉接器遺失）；%1 格式無法保存中斷，存檔後將看不出哪裡缺少封包。pcapng、ASC、TRC 與 CSV 會保留中斷。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save anyway</source>
+        <translation>仍要儲存</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodeIdChangePage</name>

@@ -299,7 +299,7 @@ private slots:
             QVERIFY(setModified(p, QDateTime::currentDateTime().addDays(-5)));
         MainWindow w;
         w.setQuiet(true);
-        QVERIFY(!QFileInfo::exists(old));
+        QVERIFY(waitFor([&] { return !QFileInfo::exists(old); }));  // on a worker thread
         QVERIFY(QFileInfo::exists(recent));
         QVERIFY(QFileInfo::exists(unclosedOld));  // not offered yet: kept
         QCOMPARE(w.journalOffer()->offeredPath(), unclosedOld);

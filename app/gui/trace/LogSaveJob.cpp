@@ -56,7 +56,8 @@ void LogSaveJob::run() {
         return;
     }
     const size_t total = frames_ ? frames_->size() : store_->size();
-    // Gaps of the capture go with the first frame saved after them (pcapng keeps them).
+    // Gaps of the capture go with the first frame saved after them (pcapng, ASC, TRC and CSV
+    // keep them; MainWindow asks before saving to a format that cannot).
     std::vector<TraceStore::Gap> gaps = store_->gaps();
     std::sort(gaps.begin(), gaps.end(), [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
     size_t nextGap = 0;
@@ -67,10 +68,8 @@ void LogSaveJob::run() {
         }
         const FrameNo n = frames_ ? (*frames_)[i] : static_cast<FrameNo>(i);
         *current = n;
-        if (nextGap < gaps.size() && gaps[nextGap].firstFrame <= n) {
+        for (; nextGap < gaps.size() && gaps[nextGap].firstFrame <= n; ++nextGap)
             writer->markGap(gaps[nextGap].lostNs, gaps[nextGap].backNs);
-            while (nextGap < gaps.size() && gaps[nextGap].firstFrame <= n) ++nextGap;
-        }
         if (!writer->write(store_->frame(n))) break;
         written_.store(i + 1, std::memory_order_relaxed);
     }
