@@ -41,6 +41,7 @@ QDateTime parseAscDate(std::string_view text) {
             for (; i < t.size() && t[i] != '.'; ++i) {
                 if (t[i] == ':') { if (++idx > 2) break; continue; }
                 if (t[i] < '0' || t[i] > '9') return {};
+                if (parts[idx] > 9999) return {};  // no clock field has that many digits (and no int overflow)
                 parts[idx] = parts[idx] * 10 + (t[i] - '0');
             }
             h = parts[0], m = parts[1], s = parts[2];
