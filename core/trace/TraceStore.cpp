@@ -243,8 +243,15 @@ FrameNo TraceStore::append(const CanFrame& f) {
             evictOverBudget(c);
         }
     }
-    if (const size_t added = fill(*chunk, chunk->records[n & (kChunkSize - 1)], f))
+    if (const size_t added = fill(*chunk, chunk->records[n & (kChunkSize - 1)], f)) {
         residentBytes_.fetch_add(added, std::memory_order_relaxed);
+        // A chunk of FD frames grows by 1 MiB payload blocks: keep the budget when it grows too,
+        // not only when a chunk starts (otherwise the store stays up to 4 MiB over it).
+        if (budget_.load(std::memory_order_relaxed)) {
+            std::lock_guard lock(pageMutex_);
+            evictOverBudget(c);
+        }
+    }
 
     // Publish the frame before indexing it: an index entry must never name a frame a reader
     // cannot see yet (the index may lag size() by one frame, never lead it).
