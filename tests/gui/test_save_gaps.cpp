@@ -8,15 +8,19 @@
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 #include "core/logio/LogFormats.h"
 
 #include <QFileInfo>
+#include <QLineEdit>
+#include <QStatusBar>
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -24,6 +28,7 @@ using namespace coscope::gui;
 using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
 using coscope::testing::clickMenuItem;
+using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 
 namespace {
@@ -78,6 +83,11 @@ private slots:
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(1));
         QCOMPARE(w.workspace()->store()->gaps()[0].firstFrame, FrameNo(kGapBefore));
         QCOMPARE(w.workspace()->store()->gaps()[0].lostNs, kLost);
+        // Find (the find field, Enter) reaches the row by the gap's text it shows.
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        QVERIFY(find);
+        typeAndEnter(find, QStringLiteral("bus lost at"));
+        QVERIFY2(waitFor([&] { return w.traceDock()->view()->currentRow() == kGapBefore; }), qPrintable(w.statusBar()->currentMessage()));
 
         // To candump: the question; Cancel saves nothing.
         const QString log = dir_.filePath(QStringLiteral("out.log"));

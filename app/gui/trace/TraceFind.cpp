@@ -2,6 +2,7 @@
 #include "app/gui/trace/TraceFind.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/trace/TraceModel.h"
 #include "dissectors/NetworkContext.h"
 
 #include <QCoreApplication>
@@ -34,7 +35,18 @@ QString summaryText(const dissect::Dissection& d) {
     return text;
 }
 
+bool FrameMatcher::gapMatches(const TraceStore& store, FrameNo n) {
+    if (!gapsRead_) {  // the row's summary starts with the gap's text (TraceModel::gapText)
+        gapsRead_ = true;
+        for (const TraceStore::Gap& g : store.gaps())
+            if (!gaps_.count(g.firstFrame)) gaps_.emplace(g.firstFrame, TraceModel::gapText(g).contains(text_, Qt::CaseInsensitive));
+    }
+    const auto it = gaps_.find(n);
+    return it != gaps_.end() && it->second;
+}
+
 bool FrameMatcher::matches(const TraceStore& store, FrameNo n) {
+    if (gapMatches(store, n)) return true;
     if (cobIdText(store.record(n)).contains(text_, Qt::CaseInsensitive)) return true;
     if (dataText(store, n).contains(text_, Qt::CaseInsensitive)) return true;
     scratch_.reset(dissect::Dissection::Level::Flat);

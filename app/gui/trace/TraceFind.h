@@ -9,6 +9,7 @@
 #include <QString>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <span>
 #include <vector>
@@ -61,9 +62,15 @@ public:
     bool matchesRow(const TraceStore& store, const FindRows& rows, size_t row);
 
 private:
+    bool gapMatches(const TraceStore& store, FrameNo n);
+
     QString text_;
     std::shared_ptr<const FrameDecoder> decoder_;
     dissect::Dissection scratch_;
+    // The frames whose row says a gap (an adapter lost) ended before them (the first gap, as
+    // TraceModel::gapBefore() shows), and whether that text holds text_: read once from the store.
+    std::map<FrameNo, bool> gaps_;
+    bool gapsRead_ = false;
 };
 
 // Tests rows from `from` on (inclusive) in one direction while `mayRead(row, frame)` says so.
