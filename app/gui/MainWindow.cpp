@@ -3,6 +3,8 @@
 
 #include "app/gui/JournalOffer.h"
 #include "app/gui/session/CaptureSettingsDialog.h"
+#include "app/gui/session/GapSaveQuestion.h"
+#include "app/gui/session/JournalCleaner.h"
 
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
@@ -26,8 +28,6 @@
 #include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFutureWatcher>
-#include <QtConcurrent/QtConcurrentRun>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -68,6 +68,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowNestedDocks | QMainWindow::AllowTabbedDocks);
 
     workspace_ = new Workspace(this);
+    journalCleaner_ = new JournalCleaner(this);
+    connect(journalCleaner_, &JournalCleaner::cleaned, this, [this](const QStringList& removed, bool report) {
+        if (report && !removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+    });
     createDocks();
     status_ = new BusStatusBar(statusBar(), workspace_);
     buildMenus();
@@ -133,6 +137,7 @@ void MainWindow::createDocks() {
 
 MainWindow::~MainWindow() {
     saveJob_.reset();
+    dbcJob_.reset();
     workspace_->disconnectBus();
 }
 
@@ -151,7 +156,13 @@ void MainWindow::buildMenus() {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
-    file->addAction(tr("Export PDO layout as &DBC…"), this, [this] { exportPdoLayoutDbc(*workspace_, this, [this](const QString& m) { showMessage(m); }); });
+    file->addAction(tr("Export PDO layout as &DBC…"), this, [this] {
+        if (dbcJob_ && !dbcJob_->isDone()) return showError(tr("An export is already running"));
+        const QString path = askPdoDbcPath(this);
+        if (path.isEmpty()) return;
+        dbcJob_ = std::make_unique<PdoDbcJob>(*workspace_, path);  // reads the trace on a worker
+        dbcJob_->start();
+    });
     file->addSeparator();
     file->addAction(tr("Capture se&ttings…"), QKeySequence::Preferences, this, &MainWindow::showCaptureSettings);
     file->addSeparator();
@@ -216,12 +227,12 @@ void MainWindow::offerAndCleanJournals() {
     });
     journalOffer_->offerFrom(folder);
     // Journals with a sidecar (open now, or unclosed and not offered yet) are never removed.
-    cleanJournalsInBackground(folder, journalCleanupPolicy(), false);
+    cleanJournals(folder, journalCleanupPolicy(), false);
     // Spill files of logs opened by an app that was killed (those of this one are removed
     // with their trace).
     journals::CleanupPolicy spills;
     spills.maxAgeDays = 1;
-    cleanJournalsInBackground(folder + QStringLiteral("/opened"), spills, false);
+    cleanJournals(folder + QStringLiteral("/opened"), spills, false);
 }
 
 // The journals the window must keep: the capture's (being written, or the last one, which the
@@ -229,28 +240,12 @@ void MainWindow::offerAndCleanJournals() {
 void MainWindow::updateKeptJournals() {
     QStringList paths{workspace_->journalPath(), openedLogPath_};
     if (journalOffer_) paths << journalOffer_->offeredPath();
-    paths.removeAll(QString());
-    const std::lock_guard lock(keptJournals_->mutex);
-    keptJournals_->paths = paths;
+    journalCleaner_->setKept(std::move(paths));
 }
 
-// Issue 16: the age/size clean-up lists and removes files, which a slow or network disk makes
-// long: it runs on a worker (QtConcurrent), asking keptJournals_ right before each removal.
-void MainWindow::cleanJournalsInBackground(const QString& folder, const journals::CleanupPolicy& policy, bool report) {
+void MainWindow::cleanJournals(const QString& folder, const journals::CleanupPolicy& policy, bool report) {
     updateKeptJournals();
-    auto kept = keptJournals_;
-    auto* watcher = new QFutureWatcher<QStringList>(this);
-    connect(watcher, &QFutureWatcher<QStringList>::finished, this, [this, watcher, report] {
-        const QStringList removed = watcher->result();
-        watcher->deleteLater();
-        if (report && !removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
-    });
-    watcher->setFuture(QtConcurrent::run([folder, policy, kept] {
-        return journals::cleanup(folder, policy, {}, QDateTime::currentDateTime(), [kept](const QString& path) {
-            const std::lock_guard lock(kept->mutex);
-            return kept->paths.contains(path);
-        });
-    }));
+    journalCleaner_->clean(folder, policy, report);
 }
 
 // Not modal for the app: the capture goes on while it is open. OK applies the budget to the
@@ -261,7 +256,7 @@ void MainWindow::showCaptureSettings() {
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &CaptureSettingsDialog::applied, this, [this] {
         workspace_->applyMemoryBudget();
-        cleanJournalsInBackground(workspace_->journalFolder(), journalCleanupPolicy(), true);
+        cleanJournals(workspace_->journalFolder(), journalCleanupPolicy(), true);
     });
     dialog->open();
 }
@@ -342,7 +337,7 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
         showError(tr("A save is already running"));
         return false;
     }
-    if (!confirmGapsLost(path, format)) return false;
+    if (!GapSaveQuestion::confirm(this, workspace_->store().get(), path, format, quiet_)) return false;
     std::optional<std::vector<FrameNo>> frames;
     // Each shown frame once, in order (a collapsed SDO transfer row stands for its frames).
     if (filteredOnly) frames = trace_->model()->shownFrames();
@@ -351,30 +346,6 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
     saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;
-}
-
-// Issue 16 "Lost adapter": a gap of the capture must not vanish unseen. Formats without a place
-// for it (candump, BLF; LogWriter::keepsGaps()) save only after the user agrees.
-bool MainWindow::confirmGapsLost(const QString& path, const QString& format) {
-    const auto& store = workspace_->store();
-    const size_t gaps = store ? store->gaps().size() : 0;
-    if (gaps == 0) return true;
-    const QString name = logio::LogFormats::writerFormatFor(path, format, nullptr);
-    const auto writer = name.isEmpty() ? nullptr : logio::LogFormats::createWriter(name);
-    if (!writer || writer->keepsGaps()) return true;  // an unknown format fails in the save job
-    if (quiet_) {
-        spdlog::warn("saving {}: the {} format cannot hold the trace's {} gaps", path.toStdString(), name.toStdString(), gaps);
-        return true;
-    }
-    QMessageBox box(QMessageBox::Warning, tr("Save trace"),
-                    tr("The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not "
-                       "show where frames are missing. pcapng, ASC, TRC and CSV keep them.",
-                       nullptr, int(gaps))
-                        .arg(name),
-                    QMessageBox::Save | QMessageBox::Cancel, this);
-    box.button(QMessageBox::Save)->setText(tr("Save anyway"));
-    box.setDefaultButton(QMessageBox::Cancel);
-    return box.exec() == QMessageBox::Save;
 }
 
 bool MainWindow::showView(const QString& name) {
@@ -511,6 +482,14 @@ void MainWindow::refresh() {
                 saveAsked_ = false;
                 return;  // the action refreshed or closed the window itself
             }
+        }
+    }
+    if (dbcJob_) {
+        if (!dbcJob_->isDone()) shown = dbcJob_.get();
+        else {
+            if (dbcJob_->hasError()) showError(dbcJob_->errorString());
+            else if (!dbcJob_->isCancelled()) showMessage(dbcJob_->summary());
+            dbcJob_.reset();
         }
     }
     status_->refresh(shown);

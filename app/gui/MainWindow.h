@@ -11,7 +11,6 @@
 
 #include <functional>
 #include <memory>
-#include <mutex>
 
 class QAction;
 class QMenu;
@@ -24,10 +23,12 @@ class BusStatusBar;
 class ConsoleDock;
 class EventsDock;
 class HealthDock;
+class JournalCleaner;
 class JournalOfferBar;
 class LogLoadJob;
 class LogSaveJob;
 class NodesDock;
+class PdoDbcJob;
 class ObjectDictionaryDock;
 class PlotDock;
 class TraceDock;
@@ -69,6 +70,7 @@ public:
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
     JournalOfferBar* journalOffer() const { return journalOffer_; }
+    JournalCleaner* journalCleaner() const { return journalCleaner_; }
     LogSaveJob* saveJob() const { return saveJob_.get(); }
     QString lastError() const { return lastError_; }
 
@@ -109,10 +111,10 @@ private:
     // (nothing unsaved, or Discard). Save starts Save As and returns false; `then` runs once the
     // file is written in full (from refresh(), no nested event loop). Cancel returns false.
     bool maybeSaveCapture(std::function<void()> then);
+    // The journals the clean-up must keep: the capture's (being written, or the last one, which
+    // the trace pages from), the log opened, the one offered.
     void updateKeptJournals();
-    void cleanJournalsInBackground(const QString& folder, const journals::CleanupPolicy& policy, bool report);
-    // False when the trace has gaps that `format` cannot hold and the user does not save anyway.
-    bool confirmGapsLost(const QString& path, const QString& format);
+    void cleanJournals(const QString& folder, const journals::CleanupPolicy& policy, bool report);
 
     Workspace* workspace_ = nullptr;
     TraceDock* trace_ = nullptr;
@@ -133,6 +135,7 @@ private:
     bool scanWhenOpen_ = false;  // scan once the bus just connected can transmit
     QTimer* timer_ = nullptr;
     std::unique_ptr<LogSaveJob> saveJob_;
+    std::unique_ptr<PdoDbcJob> dbcJob_;  // File ▸ Export PDO layout as DBC
     bool loadReported_ = true;
     const void* captureStore_ = nullptr;  // the store a bus connection fills
     const void* savedStore_ = nullptr;    // the store last saved in full, and its size then
@@ -142,11 +145,7 @@ private:
     std::function<void()> afterSave_;  // what the "save first?" question held back
     bool saveAsked_ = false;           // the user answered it for the action now running
     bool quiet_ = false;
-    struct KeptJournals {
-        std::mutex mutex;
-        QStringList paths;
-    };
-    std::shared_ptr<KeptJournals> keptJournals_ = std::make_shared<KeptJournals>();
+    JournalCleaner* journalCleaner_ = nullptr;
     QString openedLogPath_;
     QString lastError_;
 };

@@ -338,11 +338,11 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
             break;
         }
         if (r > 0) {
-            if (gapPending_) {
-                pendingGap_.frame = framesRead() + n;
-                addGap(pendingGap_);
-                gapPending_ = false;
+            for (CaptureGap& g : pendingGaps_) {
+                g.frame = framesRead() + n;
+                addGap(g);
             }
+            pendingGaps_.clear();
             ++n;
         }
     }
@@ -356,10 +356,8 @@ void PcapReader::parsePacketOptions(const unsigned char* p, uint32_t len) {
         off += 4;
         if (code == 0 || off + n > len) break;
         int64_t lost = 0, back = 0;
-        if (code == 1 && parseCaptureGapText(std::string_view(reinterpret_cast<const char*>(p + off), n), &lost, &back)) {
-            gapPending_ = true;
-            pendingGap_ = {0, lost, back};
-        }
+        if (code == 1 && parseCaptureGapText(std::string_view(reinterpret_cast<const char*>(p + off), n), &lost, &back))
+            pendingGaps_.push_back({0, lost, back});  // one comment a gap, in the order written
         off += (uint32_t(n) + 3) & ~3U;
     }
 }
@@ -380,10 +378,9 @@ void pad4(QByteArray& o) {
 }
 }  // namespace
 
-// One comment a packet: the first gap before it (two gaps without a frame between are one).
-void PcapngWriter::writeGap(int64_t lostNs, int64_t backNs) {
-    if (comment_.isEmpty()) comment_ = captureGapText(lostNs, backNs);
-}
+// One comment a gap: gaps without a frame between them (the adapter lost twice in a row) are
+// comments of the same packet, in order (pcapng allows an option more than once, section 3.5).
+void PcapngWriter::writeGap(int64_t lostNs, int64_t backNs) { comments_.push_back(captureGapText(lostNs, backNs).left(0xFFFF)); }
 
 void PcapngWriter::writeHeader(const CanFrame*) {
     QByteArray& o = out();
@@ -448,8 +445,8 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     }
     if (!f.isRemote()) std::memcpy(pkt + 8, f.data.data(), std::min<size_t>(f.len, capLen - 8));
     QByteArray& o = out();
-    const uint32_t commentLen = uint32_t(std::min<qsizetype>(comment_.size(), 0xFFFF));
-    const uint32_t options = commentLen ? 4 + ((commentLen + 3) & ~3U) : 0;
+    uint32_t options = 0;
+    for (const QByteArray& c : comments_) options += 4 + ((uint32_t(c.size()) + 3) & ~3U);
     const uint32_t total = 12 + 20 + capLen + options + 4;  // capLen is a multiple of 4
     put32(o, kEpb);
     put32(o, total);
@@ -460,13 +457,13 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     put32(o, capLen);
     put32(o, capLen);
     o.append(reinterpret_cast<const char*>(pkt), capLen);
-    if (commentLen) {
+    for (const QByteArray& c : comments_) {
         put16(o, 1);  // opt_comment
-        put16(o, uint16_t(commentLen));
-        o.append(comment_.constData(), commentLen);
+        put16(o, uint16_t(c.size()));
+        o.append(c);
         pad4(o);
-        comment_.clear();
     }
+    comments_.clear();
     put16(o, 0);  // opt_endofopt
     put16(o, 0);
     put32(o, total);

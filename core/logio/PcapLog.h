@@ -55,8 +55,7 @@ private:
     qsizetype pos_ = 0;
     qsizetype end_ = 0;
     bool eof_ = false;
-    bool gapPending_ = false;  // the next frame returned follows pendingGap_
-    CaptureGap pendingGap_;
+    std::vector<CaptureGap> pendingGaps_;  // the next frame returned follows these
 };
 
 // Writes pcapng (SHB, one IDB per bus with link type 227 and nanosecond resolution, EPBs),
@@ -87,7 +86,7 @@ private:
     void writeInterface(uint8_t bus);
     std::vector<int> interfaceOfBus_;  // bus -> interface id, -1 = none yet
     uint32_t interfaces_ = 0;
-    QByteArray comment_;  // for the next packet block
+    std::vector<QByteArray> comments_;  // for the next packet block, one a gap
     std::vector<HeaderBlock> headerBlocks_;
 };
 

@@ -138,7 +138,8 @@ bool CaptureJournal::writeBatch(const std::vector<CanFrame>& batch) {
     logio::PcapngWriter& out = writer_->pcapng;
     for (const CanFrame& f : batch) {
         const uint64_t n = out.framesWritten();
-        if (!gaps_.empty() && gaps_.front().firstFrame <= n) {
+        // Every gap before this frame (the adapter may have been lost twice in a row).
+        while (!gaps_.empty() && gaps_.front().firstFrame <= n) {
             out.markGap(gaps_.front().lostNs, gaps_.front().backNs);
             gaps_.erase(gaps_.begin());
         }

@@ -2951,6 +2951,23 @@
     </message>
 </context>
 <context>
+    <name>GapSaveQuestion</name>
+    <message>
+        <source>Save trace</source>
+        <translation>保存跟踪</translation>
+    </message>
+    <message numerus="yes">
+        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
+        <translation>
+            <numerusform>跟踪中有 %n 处中断（适配器丢失）；%1 格式无法保存中断，保存后将看不出哪里缺少帧。pcapng、ASC、TRC 和 CSV 会保留中断。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save anyway</source>
+        <translation>仍要保存</translation>
+    </message>
+</context>
+<context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
@@ -3032,6 +3049,10 @@ Differs from the default</source>
     <message>
         <source>DBC file (*.dbc)</source>
         <translation>DBC 文件（*.dbc）</translation>
+    </message>
+    <message>
+        <source>Exporting the PDO layout</source>
+        <translation>正在导出 PDO 配置</translation>
     </message>
 </context>
 <context>
@@ -4928,15 +4949,9 @@ Arm the test move?</source>
             <numerusform>已删除 %n 个旧的捕获日志</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
-        <translation>
-            <numerusform>跟踪中有 %n 处中断（适配器丢失）；%1 格式无法保存中断，保存后将看不出哪里缺少帧。pcapng、ASC、TRC 和 CSV 会保留中断。</numerusform>
-        </translation>
-    </message>
     <message>
-        <source>Save anyway</source>
-        <translation>仍要保存</translation>
+        <source>An export is already running</source>
+        <translation>已有一项导出正在进行</translation>
     </message>
 </context>
 <context>

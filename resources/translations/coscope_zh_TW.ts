@@ -2951,6 +2951,23 @@
     </message>
 </context>
 <context>
+    <name>GapSaveQuestion</name>
+    <message>
+        <source>Save trace</source>
+        <translation>儲存追蹤</translation>
+    </message>
+    <message numerus="yes">
+        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
+        <translation>
+            <numerusform>追蹤中有 %n 處中斷（轉接器遺失）；%1 格式無法保存中斷，存檔後將看不出哪裡缺少封包。pcapng、ASC、TRC 與 CSV 會保留中斷。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save anyway</source>
+        <translation>仍要儲存</translation>
+    </message>
+</context>
+<context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
@@ -3032,6 +3049,10 @@ Differs from the default</source>
     <message>
         <source>DBC file (*.dbc)</source>
         <translation>DBC 檔案（*.dbc）</translation>
+    </message>
+    <message>
+        <source>Exporting the PDO layout</source>
+        <translation>正在匯出 PDO 配置</translation>
     </message>
 </context>
 <context>
@@ -4928,15 +4949,9 @@ Arm the test move?</source>
             <numerusform>已移除 %n 個舊的擷取日誌</numerusform>
         </translation>
     </message>
-    <message numerus="yes">
-        <source>The trace has %n gap(s) (adapter lost); the %1 format cannot hold them, so the saved file will not show where frames are missing. pcapng, ASC, TRC and CSV keep them.</source>
-        <translation>
-            <numerusform>追蹤中有 %n 處中斷（轉接器遺失）；%1 格式無法保存中斷，存檔後將看不出哪裡缺少封包。pcapng、ASC、TRC 與 CSV 會保留中斷。</numerusform>
-        </translation>
-    </message>
     <message>
-        <source>Save anyway</source>
-        <translation>仍要儲存</translation>
+        <source>An export is already running</source>
+        <translation>已有一項匯出正在進行</translation>
     </message>
 </context>
 <context>

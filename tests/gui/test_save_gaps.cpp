@@ -8,15 +8,19 @@
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 #include "core/logio/LogFormats.h"
 
 #include <QFileInfo>
+#include <QLineEdit>
+#include <QStatusBar>
 #include <QMessageBox>
 #include <QTemporaryDir>
 #include <QtTest>
 
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -24,6 +28,7 @@ using namespace coscope::gui;
 using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
 using coscope::testing::clickMenuItem;
+using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 
 namespace {
@@ -31,7 +36,10 @@ constexpr int64_t kT0 = 1700000000000000000LL;
 constexpr int64_t kLost = kT0 + 5000000, kBack = kT0 + 3005000000LL;
 constexpr int kFrames = 12, kGapBefore = 5;
 
-bool writeAscWithGap(const QString& path) {
+constexpr int64_t kLost2 = kBack + 1000000, kBack2 = kBack + 2000000;  // lost again at once
+
+// `twice`: the adapter lost again right after it came back, before frame kGapBefore arrived.
+bool writeAscWithGap(const QString& path, bool twice = false) {
     auto w = logio::LogFormats::createWriter(QStringLiteral("asc"));
     if (!w->open(path)) return false;
     for (int i = 0; i < kFrames; ++i) {
@@ -41,6 +49,7 @@ bool writeAscWithGap(const QString& path) {
         f.len = 2;
         f.data[0] = uint8_t(i);
         if (i == kGapBefore) w->markGap(kLost, kBack);
+        if (i == kGapBefore && twice) w->markGap(kLost2, kBack2);
         w->write(f);
     }
     return w->close();
@@ -74,6 +83,11 @@ private slots:
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(1));
         QCOMPARE(w.workspace()->store()->gaps()[0].firstFrame, FrameNo(kGapBefore));
         QCOMPARE(w.workspace()->store()->gaps()[0].lostNs, kLost);
+        // Find (the find field, Enter) reaches the row by the gap's text it shows.
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        QVERIFY(find);
+        typeAndEnter(find, QStringLiteral("bus lost at"));
+        QVERIFY2(waitFor([&] { return w.traceDock()->view()->currentRow() == kGapBefore; }), qPrintable(w.statusBar()->currentMessage()));
 
         // To candump: the question; Cancel saves nothing.
         const QString log = dir_.filePath(QStringLiteral("out.log"));
@@ -115,6 +129,32 @@ private slots:
         QCOMPARE(reader->gaps().size(), size_t(1));
         QCOMPARE(reader->gaps()[0].frame, uint64_t(kGapBefore));
         QCOMPARE(reader->gaps()[0].backNs, kBack);
+    }
+
+    // Two gaps before one frame: both in the trace, both in the pcapng Save As writes (two
+    // comments of that packet), each with its own times, in order.
+    void twoGapsBeforeOneFrameSurviveSaveAs() {
+        const QString in = dir_.filePath(QStringLiteral("gaps2.asc"));
+        QVERIFY(writeAscWithGap(in, true));
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(chooseFile(w, QStringLiteral("Open log"), in));
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0; }));
+        QCOMPARE(w.workspace()->store()->gaps().size(), size_t(2));
+        const QString out = dir_.filePath(QStringLiteral("out2.pcapng"));
+        QVERIFY(chooseFile(w, QStringLiteral("Save trace as"), out));
+        QVERIFY(waitFor([&] { return w.saveJob() == nullptr && QFileInfo::exists(out); }));
+        QString error;
+        auto reader = logio::LogFormats::openReader(out, &error);
+        QVERIFY2(reader, qPrintable(error));
+        QCOMPARE(reader->readAll().size(), size_t(kFrames));
+        QCOMPARE(reader->gaps().size(), size_t(2));
+        QCOMPARE(reader->gaps()[0].frame, uint64_t(kGapBefore));
+        QCOMPARE(reader->gaps()[1].frame, uint64_t(kGapBefore));
+        QCOMPARE(reader->gaps()[0].lostNs, kLost);
+        QCOMPARE(reader->gaps()[1].lostNs, kLost2);
+        QCOMPARE(reader->gaps()[1].backNs, kBack2);
     }
 };
 

@@ -53,7 +53,7 @@ private slots:
     void backwardCostsOneDissectionPerRow() {
         constexpr uint32_t kFrames = 70000;
         auto store = makeStore(kFrames);
-        const FindRows rows{nullptr, kFrames};
+        const FindRows rows{nullptr, kFrames, nullptr};
         for (const bool forward : {false, true}) {
             auto decoder = std::make_shared<CountingDecoder>(std::set<FrameNo>{forward ? kFrames - 5 : 5});
             FrameMatcher matcher(QStringLiteral("emcy"), decoder);
@@ -72,7 +72,7 @@ private slots:
         auto store = makeStore(3 * kInterval);
         auto decoder = std::make_shared<CountingDecoder>(std::set<FrameNo>{100, kA, kB, kC});
         FrameMatcher matcher(QStringLiteral("EMCY"), decoder);
-        const FindRows all{nullptr, 3 * kInterval};
+        const FindRows all{nullptr, 3 * kInterval, nullptr};
         QCOMPARE(findRows(*store, all, matcher, kB + 50, false, {}).found, int64_t(kB));
         QCOMPARE(findRows(*store, all, matcher, kB, false, {}).found, int64_t(kB));  // inclusive
         QCOMPARE(findRows(*store, all, matcher, kB - 1, false, {}).found, int64_t(kA));
@@ -83,7 +83,7 @@ private slots:
         // Every 50th frame: rows are positions in that list.
         auto every50 = std::make_shared<std::vector<FrameNo>>();
         for (FrameNo n = 0; n < 3 * kInterval; n += 50) every50->push_back(n);
-        const FindRows filtered{every50, every50->size()};
+        const FindRows filtered{every50, every50->size(), nullptr};
         const FindStep step = findRows(*store, filtered, matcher, int64_t(every50->size()) - 1, false, {});
         QCOMPARE(step.found, int64_t(kC / 50));
         QCOMPARE(filtered.frameAt(size_t(step.found)), kC);
@@ -96,7 +96,7 @@ private slots:
         auto store = makeStore(2 * kInterval);
         auto decoder = std::make_shared<CountingDecoder>(std::set<FrameNo>{kInterval + 100, kInterval + 300});
         FrameMatcher matcher(QStringLiteral("EMCY"), decoder);
-        const FindRows all{nullptr, 2 * kInterval};
+        const FindRows all{nullptr, 2 * kInterval, nullptr};
         std::vector<int64_t> asked;
         const auto refuse200 = [&](int64_t row, FrameNo) {
             asked.push_back(row);

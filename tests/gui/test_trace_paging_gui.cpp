@@ -254,6 +254,19 @@ private slots:
             const auto found = details->findItems(QStringLiteral("COSCOPESIM"), Qt::MatchContains | Qt::MatchRecursive, 1);
             return !found.isEmpty();
         }, 30000), qPrintable(QStringLiteral("row %1: %2 / %3").arg(view->currentRow()).arg(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QString(), details->topLevelItemCount() ? details->topLevelItem(0)->text(1) : QString())));
+
+        // Find previous (Shift+F3) from the last row finds the transfer row by its own summary
+        // ("6 frames" is in no frame's text) while its frames are paged out: a worker reads them.
+        QTest::keyClick(view->viewport(), Qt::Key_End, Qt::ControlModifier);
+        QVERIFY(waitFor([&] { return view->currentRow() == m->rowCount() - 1; }, 10000));
+        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000), qPrintable(QString::number(store->residentChunks())));
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        QVERIFY(find);
+        QTest::keyClick(view->viewport(), Qt::Key_F, Qt::ControlModifier);
+        QTest::keyClicks(find, QStringLiteral("6 frames"));
+        QTest::keyClick(find, Qt::Key_F3, Qt::ShiftModifier);
+        QVERIFY2(waitFor([&] { return view->currentRow() == kSdoAt; }, 60000), qPrintable(w.statusBar()->currentMessage()));
+        QCOMPARE(m->rowKind(kSdoAt), TraceModel::RowKind::Transfer);
         QCOMPARE(store->watchedPageIns(), uint64_t(0));
         QCOMPARE(store->pageErrors(), uint64_t(0));
     }

@@ -17,8 +17,11 @@ constexpr int64_t kT0 = 1700000000000000000LL;
 constexpr int64_t kLost = kT0 + 5000000, kBack = kT0 + 3005000000LL;
 constexpr int kFrames = 10, kGapBefore = 4;
 
-// An ASC capture of 10 frames with the adapter lost between frame 3 and frame 4.
-bool writeAscWithGap(const QString& path) {
+constexpr int64_t kLost2 = kBack + 1000000, kBack2 = kBack + 2000000;  // lost again at once
+
+// An ASC capture of 10 frames with the adapter lost between frame 3 and frame 4 (`twice`: lost
+// again right after it came back, before frame 4 arrived).
+bool writeAscWithGap(const QString& path, bool twice = false) {
     auto w = LogFormats::createWriter(QStringLiteral("asc"));
     if (!w->open(path)) return false;
     for (int i = 0; i < kFrames; ++i) {
@@ -28,6 +31,7 @@ bool writeAscWithGap(const QString& path) {
         f.len = 1;
         f.data[0] = uint8_t(i);
         if (i == kGapBefore) w->markGap(kLost, kBack);
+        if (i == kGapBefore && twice) w->markGap(kLost2, kBack2);
         w->write(f);
     }
     return w->close();
@@ -66,6 +70,40 @@ private slots:
         QCOMPARE(reader->gaps()[0].frame, uint64_t(kGapBefore));
         QCOMPARE(reader->gaps()[0].lostNs, kLost);
         QCOMPARE(reader->gaps()[0].backNs, kBack);
+    }
+
+    // Two gaps before the same frame: both kept, in order, through pcapng (two comments of one
+    // packet) and back to ASC, and in TRC and CSV.
+    void twoGapsBeforeOneFrame_data() {
+        QTest::addColumn<QString>("ext");
+        QTest::newRow("trc") << "trc";
+        QTest::newRow("csv") << "csv";
+        QTest::newRow("pcapng") << "pcapng";
+    }
+
+    void twoGapsBeforeOneFrame() {
+        QFETCH(QString, ext);
+        const QString in = dir_.filePath(QStringLiteral("gaps2.asc"));
+        QVERIFY(writeAscWithGap(in, true));
+        const QString out = dir_.filePath(QStringLiteral("out2.") + ext);
+        Run r = cli({QStringLiteral("convert"), in, out});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QString back = dir_.filePath(QStringLiteral("back2.asc"));  // and from it again
+        r = cli({QStringLiteral("convert"), out, back});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        for (const QString& path : {out, back}) {
+            QString error;
+            auto reader = LogFormats::openReader(path, &error);
+            QVERIFY2(reader, qPrintable(error));
+            QCOMPARE(reader->readAll().size(), size_t(kFrames));
+            QCOMPARE(reader->gaps().size(), size_t(2));
+            QCOMPARE(reader->gaps()[0].frame, uint64_t(kGapBefore));
+            QCOMPARE(reader->gaps()[1].frame, uint64_t(kGapBefore));
+            QCOMPARE(reader->gaps()[0].lostNs, kLost);
+            QCOMPARE(reader->gaps()[0].backNs, kBack);
+            QCOMPARE(reader->gaps()[1].lostNs, kLost2);
+            QCOMPARE(reader->gaps()[1].backNs, kBack2);
+        }
     }
 
     void warnedWhereItCannot_data() {

@@ -161,6 +161,46 @@ private slots:
         QVERIFY(lines[99].trimmed().isEmpty() && lines[101].trimmed().isEmpty());
     }
 
+    // The adapter lost twice with no frame between (issue 16 "Lost adapter"): both gaps, with
+    // their own times, are comments of the same packet, read back in order; tshark shows both.
+    void twoGapsBeforeOneFrameAreBothKept() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("gaps.pcapng"));
+        CaptureJournal j;
+        QVERIFY(j.open(path, {QStringLiteral("can0")}));
+        const auto in = frames(150);
+        const int64_t lost1 = in[99].timestampNs + 1'000'000, back1 = lost1 + 3'000'000;
+        const int64_t lost2 = back1 + 1'000'000, back2 = in[100].timestampNs - 1'000'000;
+        j.append(std::span(in).first(100));
+        j.addGap({100, lost1, back1});
+        j.addGap({100, lost2, back2});
+        j.append(std::span(in).subspan(100));
+        QVERIFY(j.close());
+
+        logio::PcapReader r;
+        QVERIFY(r.open(path));
+        const auto read = r.readAll();
+        QCOMPARE(r.diagnosticCount(), uint64_t(0));
+        QVERIFY(sameFrames(read, in, in.size()));
+        QCOMPARE(r.gaps().size(), size_t(2));
+        QCOMPARE(r.gaps()[0].frame, uint64_t(100));
+        QCOMPARE(r.gaps()[1].frame, uint64_t(100));
+        QCOMPARE(r.gaps()[0].lostNs, lost1);
+        QCOMPARE(r.gaps()[0].backNs, back1);
+        QCOMPARE(r.gaps()[1].lostNs, lost2);
+        QCOMPARE(r.gaps()[1].backNs, back2);
+
+        const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
+        if (tshark.isEmpty()) return;
+        QProcess p;
+        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("frame.comment")});
+        QVERIFY(p.waitForFinished(60000));
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+        const QList<QByteArray> lines = p.readAllStandardOutput().split('\n');
+        QVERIFY(lines.size() >= 150);
+        QVERIFY2(lines[100].count("gap in the capture") == 2, lines[100].constData());
+    }
+
     void fullDiskIsReported() {
         if (!QFileInfo::exists(QStringLiteral("/dev/full"))) QSKIP("no /dev/full");
         QTemporaryDir dir;

@@ -3,11 +3,10 @@
 
 #include "app/gui/session/Workspace.h"
 #include "dissectors/DbcExport.h"
-#include "dissectors/NetworkContext.h"
 
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileDialog>
+#include <QSaveFile>
 
 #include <spdlog/spdlog.h>
 
@@ -19,37 +18,43 @@ struct PdoDbcExport {
 };
 }  // namespace
 
-bool writePdoLayoutDbc(Workspace& workspace, const QString& path, QString* summary) {
-    dissect::NetworkContext ctx;
+PdoDbcJob::PdoDbcJob(Workspace& workspace, QString path)
+    : Job(PdoDbcExport::tr("Exporting the PDO layout")), path_(std::move(path)), store_(workspace.store()), raw_(workspace.rawSignals()) {
+    frames_ = store_ ? store_->size() : 0;
     for (const canopen::NodeInfo& n : workspace.nodes().snapshot()) {
         if (n.dictionary.isEmpty()) continue;
         QString error;
-        if (!ctx.assignDictionary(n.node, n.dictionary, &error)) spdlog::warn("DBC export: node {}: {}", n.node, error.toStdString());
+        if (!ctx_.assignDictionary(n.node, n.dictionary, &error)) spdlog::warn("DBC export: node {}: {}", n.node, error.toStdString());
     }
-    // The layout the trace leaves in force: every frame through the context, as the CLI does.
-    const TraceStore& store = *workspace.store();
-    dissect::Dissection d;
-    const size_t total = store.size();
-    for (size_t i = 0; i < total; ++i) ctx.dissect(store.frame(static_cast<FrameNo>(i)), d, dissect::Dissection::Level::Stats);
-    int pdos = 0;
-    const QByteArray dbc = dissect::pdoLayoutDbc(ctx, workspace.rawSignals(), 0, &pdos);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(dbc) != dbc.size() || !f.flush()) {
-        if (summary) *summary = PdoDbcExport::tr("%1: cannot write the DBC file (%2)").arg(path, f.errorString());
-        return false;
-    }
-    if (summary)
-        *summary = PdoDbcExport::tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals").arg(path).arg(pdos).arg(workspace.rawSignals().size());
-    return true;
 }
 
-void exportPdoLayoutDbc(Workspace& workspace, QWidget* parent, const std::function<void(const QString&)>& report) {
+PdoDbcJob::~PdoDbcJob() { stopAndJoin(); }
+
+void PdoDbcJob::run() {
+    // The layout the trace leaves in force: every frame through the context, as the CLI does.
+    dissect::Dissection d;
+    for (size_t i = 0; i < frames_; ++i) {
+        if ((i & 0xFFFF) == 0) {
+            if (isCancelled()) return;
+            setProgress(static_cast<double>(i) / static_cast<double>(frames_));
+        }
+        ctx_.dissect(store_->frame(static_cast<FrameNo>(i)), d, dissect::Dissection::Level::Stats);
+    }
+    int pdos = 0;
+    const QByteArray dbc = dissect::pdoLayoutDbc(ctx_, raw_, 0, &pdos);
+    // Written whole or not at all: the file appears complete (QSaveFile renames at commit).
+    QSaveFile f(path_);
+    if (!f.open(QIODevice::WriteOnly) || f.write(dbc) != dbc.size() || !f.commit()) {
+        fail(PdoDbcExport::tr("%1: cannot write the DBC file (%2)").arg(path_, f.errorString()));
+        return;
+    }
+    summary_ = PdoDbcExport::tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals").arg(path_).arg(pdos).arg(raw_.size());
+}
+
+QString askPdoDbcPath(QWidget* parent) {
     QString path = QFileDialog::getSaveFileName(parent, PdoDbcExport::tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
-    if (path.isEmpty()) return;
-    if (!path.endsWith(QStringLiteral(".dbc"), Qt::CaseInsensitive)) path += QStringLiteral(".dbc");
-    QString summary;
-    writePdoLayoutDbc(workspace, path, &summary);
-    report(summary);
+    if (!path.isEmpty() && !path.endsWith(QStringLiteral(".dbc"), Qt::CaseInsensitive)) path += QStringLiteral(".dbc");
+    return path;
 }
 
 }  // namespace coscope::gui

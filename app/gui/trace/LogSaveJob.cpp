@@ -59,7 +59,8 @@ void LogSaveJob::run() {
     // Gaps of the capture go with the first frame saved after them (pcapng, ASC, TRC and CSV
     // keep them; MainWindow asks before saving to a format that cannot).
     std::vector<TraceStore::Gap> gaps = store_->gaps();
-    std::sort(gaps.begin(), gaps.end(), [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
+    // Stable: two gaps before the same frame keep their order (the earlier loss first).
+    std::stable_sort(gaps.begin(), gaps.end(), [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
     size_t nextGap = 0;
     for (size_t i = 0; i < total; ++i) {
         if ((i & 0xFFFF) == 0) {

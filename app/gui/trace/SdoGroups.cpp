@@ -88,12 +88,16 @@ int64_t SdoGroupIndex::groupOf(FrameNo n) const {
 }
 
 dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const SdoGroupIndex& index, size_t g, const FrameDecoder& decoder) {
-    const SdoGroup& grp = index.group(g);
+    return record(store, index.frames(g), decoder);
+}
+
+dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, std::span<const FrameNo> frames, const FrameDecoder& decoder) {
+    if (frames.empty()) return {};
     // Reassembled from the group's own frames: always available.
     dissect::SdoChannel ch;
     dissect::Dissection d;
     d.reset(dissect::Dissection::Level::Stats);
-    for (FrameNo n : index.frames(g)) {
+    for (FrameNo n : frames) {
         const TraceRecord& r = store.record(n);
         const bool fromClient = (r.id & 0x780) == 0x600;
         const auto payload = store.payload(n);
@@ -106,7 +110,7 @@ dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const 
     // The decoder's, in the context of the trace: object name and typed value.
     dissect::Dissection full;
     full.reset(dissect::Dissection::Level::Flat);
-    decoder.decodeAt(store, grp.last, full);
+    decoder.decodeAt(store, frames.back(), full);
     if (full.hasTransfer && full.transfer.index == own.index && full.transfer.sub == own.sub && full.transfer.status == own.status)
         return full.transfer;
     return own;
@@ -136,6 +140,14 @@ QString SdoGroupIndex::summary(const dissect::SdoTransferRecord& t, size_t frame
     s += QCoreApplication::translate("SdoGroupIndex", " (%1, %2 bytes, %3)").arg(mode).arg(t.size).arg(frameText);
     if (t.status != QLatin1String("ok")) s += QStringLiteral(" ⚠ ") + coreText(t.status);
     return s;
+}
+
+SdoGroupIndex::RowText SdoGroupIndex::rowText(const dissect::SdoTransferRecord& t, size_t frames) {
+    RowText text;
+    text.summary = summary(t, frames);
+    text.size = t.size;
+    text.data = QString::fromLatin1(t.data.left(8).toHex(' ').toUpper()) + (t.data.size() > 8 ? QStringLiteral(" …") : QString());
+    return text;
 }
 
 void GroupedRows::append(const SdoGroupIndex& index, const std::vector<FrameNo>* source, FrameNo from, FrameNo to) {

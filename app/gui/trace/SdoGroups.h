@@ -54,8 +54,16 @@ public:
     // The transfer record of group g: from the decoder (names, typed value: it decodes the last
     // frame in its context) when it reports the same transfer, else reassembled from the frames.
     static dissect::SdoTransferRecord record(const TraceStore& store, const SdoGroupIndex& index, size_t g, const FrameDecoder& decoder);
+    // Same, of a transfer's frames (in trace order; the last one completed or aborted it).
+    static dissect::SdoTransferRecord record(const TraceStore& store, std::span<const FrameNo> frames, const FrameDecoder& decoder);
     // "SDO read node 5 1008:00 Device name = "X" (segmented, 18 bytes, 7 frames)".
     static QString summary(const dissect::SdoTransferRecord& t, size_t frames);
+    // The texts of a transfer's row in the trace: Summary, Data (its first 8 bytes), Len.
+    struct RowText {
+        QString summary, data;
+        uint32_t size = 0;
+    };
+    static RowText rowText(const dissect::SdoTransferRecord& t, size_t frames);
 
 private:
     struct Channel {

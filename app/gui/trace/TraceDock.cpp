@@ -205,6 +205,20 @@ void TraceDock::buildToolbar(QWidget* host) {
     connect(prevMark, &QAction::triggered, this, [this] { gotoBookmark(false); });
     addAction(nextMark);
     addAction(prevMark);
+    // Ctrl+F: to the find field; F3 / Shift+F3: find next / previous, while the focus is in this trace.
+    const auto shortcut = [this](QKeySequence::StandardKey key, auto slot) {
+        auto* a = new QAction(this);
+        a->setShortcuts(key);
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        connect(a, &QAction::triggered, this, slot);
+        addAction(a);
+    };
+    shortcut(QKeySequence::Find, [this] {
+        findEdit_->setFocus(Qt::ShortcutFocusReason);
+        findEdit_->selectAll();
+    });
+    shortcut(QKeySequence::FindNext, [this] { find(findEdit_->text(), true); });
+    shortcut(QKeySequence::FindPrevious, [this] { find(findEdit_->text(), false); });
     row->addWidget(tb, 1);
     countLabel_ = new QLabel(host);
     countLabel_->setObjectName(QStringLiteral("traceCount"));
@@ -356,9 +370,9 @@ bool TraceDock::findFrom(const QString& text, bool forward, const FindRows& rows
     clock.start();
     uint32_t tick = 0;
     for (;;) {
-        const FindStep step = findRows(store, rows, matcher, from, forward, [&](int64_t, FrameNo n) {
+        const FindStep step = findRows(store, rows, matcher, from, forward, [&](int64_t row, FrameNo) {
             if ((++tick & 0xFF) == 0 && clock.elapsed() > kFindSliceMs) return false;
-            return findReadsResident(store, n);
+            return findReadsResident(store, rows, static_cast<size_t>(row));
         });
         if (step.found >= 0) {
             const int row = model_->rowOfFindPosition(rows, step.found);
@@ -396,8 +410,9 @@ void TraceDock::onFindDone(uint64_t serial) {
         findMissed(job->text());
         return;
     }
-    // The rows may have changed meanwhile (a live capture appends): the row of the frame found.
-    const int row = model_->rowOf(job->foundFrame());
+    // The rows may have changed meanwhile (a live capture appends): the row of the frame or
+    // transfer found.
+    const int row = model_->rowOfFindPosition(job->rows(), job->foundRow());
     if (row < 0) {
         findMissed(job->text());
         return;

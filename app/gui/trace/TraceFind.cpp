@@ -2,6 +2,7 @@
 #include "app/gui/trace/TraceFind.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/trace/TraceModel.h"
 #include "dissectors/NetworkContext.h"
 
 #include <QCoreApplication>
@@ -34,12 +35,33 @@ QString summaryText(const dissect::Dissection& d) {
     return text;
 }
 
+bool FrameMatcher::gapMatches(const TraceStore& store, FrameNo n) {
+    if (!gapsRead_) {  // the row's summary starts with the gap's text (TraceModel::gapText)
+        gapsRead_ = true;
+        for (const TraceStore::Gap& g : store.gaps())
+            if (!gaps_.count(g.firstFrame)) gaps_.emplace(g.firstFrame, TraceModel::gapText(g).contains(text_, Qt::CaseInsensitive));
+    }
+    const auto it = gaps_.find(n);
+    return it != gaps_.end() && it->second;
+}
+
 bool FrameMatcher::matches(const TraceStore& store, FrameNo n) {
+    if (gapMatches(store, n)) return true;
     if (cobIdText(store.record(n)).contains(text_, Qt::CaseInsensitive)) return true;
     if (dataText(store, n).contains(text_, Qt::CaseInsensitive)) return true;
     scratch_.reset(dissect::Dissection::Level::Flat);
     decoder_->decodeAt(store, n, scratch_);
     return summaryText(scratch_).contains(text_, Qt::CaseInsensitive);
+}
+
+bool FrameMatcher::matchesRow(const TraceStore& store, const FindRows& rows, size_t row) {
+    const int64_t t = rows.transferAt(row);
+    if (t < 0) return matches(store, rows.frameAt(row));
+    const auto frames = rows.transferFrames(static_cast<size_t>(t));
+    // The row shows the COB-ID of the frame it stands at (its first frame the view shows).
+    if (cobIdText(store.record(rows.frameAt(row))).contains(text_, Qt::CaseInsensitive)) return true;
+    const SdoGroupIndex::RowText text = SdoGroupIndex::rowText(SdoGroupIndex::record(store, frames, *decoder_), frames.size());
+    return text.summary.contains(text_, Qt::CaseInsensitive) || text.data.contains(text_, Qt::CaseInsensitive);
 }
 
 FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& matcher, int64_t from, bool forward,
@@ -49,7 +71,7 @@ FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& m
         for (int64_t row = from; row >= 0 && row < count; ++row) {
             const FrameNo n = rows.frameAt(static_cast<size_t>(row));
             if (mayRead && !mayRead(row, n)) return {-1, row};
-            if (matcher.matches(store, n)) return {row, -1};
+            if (matcher.matchesRow(store, rows, static_cast<size_t>(row))) return {row, -1};
         }
         return {};
     }
@@ -76,7 +98,7 @@ FindStep findRows(const TraceStore& store, const FindRows& rows, FrameMatcher& m
         std::sort(run.begin(), run.end());
         int64_t found = -1;
         for (const auto& [n, r] : run)
-            if (matcher.matches(store, n)) found = std::max(found, r);
+            if (matcher.matchesRow(store, rows, static_cast<size_t>(r))) found = std::max(found, r);
         if (found >= 0) return {found, -1};
         if (stopped >= 0) return {-1, stopped};
     }
@@ -87,6 +109,15 @@ bool findReadsResident(const TraceStore& store, FrameNo n) {
     // The summary is decoded from the decoder's checkpoint at or before n (TraceDecoder).
     const auto checkpoint = static_cast<FrameNo>(n - n % dissect::NetworkContext::checkpointInterval());
     return store.isResident(n) && store.isResident(checkpoint);
+}
+
+bool findReadsResident(const TraceStore& store, const FindRows& rows, size_t row) {
+    const int64_t t = rows.transferAt(row);
+    if (t < 0) return findReadsResident(store, rows.frameAt(row));
+    // A transfer's texts: all its frames (reassembly) and the decoding of its last one.
+    const auto frames = rows.transferFrames(static_cast<size_t>(t));
+    if (!findReadsResident(store, frames.back())) return false;
+    return std::all_of(frames.begin(), frames.end(), [&](FrameNo n) { return store.isResident(n); });
 }
 
 FindJob::FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text, FindRows rows,

@@ -205,12 +205,7 @@ const TraceModel::GroupText& TraceModel::groupText(uint32_t group) const {
     const auto it = groupTexts_.find(group);
     if (it != groupTexts_.end()) return it->second;
     if (groupTexts_.size() >= kSummaryCacheLimit) groupTexts_.clear();
-    const dissect::SdoTransferRecord t = transferRecord(group);
-    GroupText text;
-    text.summary = SdoGroupIndex::summary(t, groups_->group(group).count);
-    text.size = t.size;
-    text.data = QString::fromLatin1(t.data.left(8).toHex(' ').toUpper()) + (t.data.size() > 8 ? QStringLiteral(" …") : QString());
-    return groupTexts_.emplace(group, std::move(text)).first->second;
+    return groupTexts_.emplace(group, SdoGroupIndex::rowText(transferRecord(group), groups_->group(group).count)).first->second;
 }
 
 // Live: frames [oldScanned, size) arrived (`newSource` = those the filter lets through).
@@ -274,16 +269,23 @@ void TraceModel::refresh() {
         if (rows_ > 0) emit dataChanged(index(0, Summary), index(rows_ - 1, Summary));
     }
     const size_t size = store_->size();
-    if (size > 0 && !haveT0_) {
-        t0_ = store_->record(0).timestampNs;
-        haveT0_ = true;
+    if (size > 0 && !haveT0_) {  // frame 0 may be paged out (a view made late): once it is back
+        const FrameNo first = 0;
+        if (!requestPageIns(std::span<const FrameNo>(&first, 1))) {
+            t0_ = store_->record(0).timestampNs;
+            haveT0_ = true;
+        }
     }
     switch (source()) {
     case Source::All: {
         if (groups_) {
+            // The transfers are found in the new frames that are in RAM (pinned meanwhile);
+            // the others once the store's loader has read them back.
             const FrameNo old = scanned_;
-            scanned_ = static_cast<FrameNo>(size);
-            if (old < scanned_) refreshGrouped({}, old);
+            const FrameNo upTo = pinResident(old, static_cast<FrameNo>(size));
+            scanned_ = upTo;
+            if (old < upTo) refreshGrouped({}, old);
+            unpinResident(old, upTo);
             return;
         }
         const int n = static_cast<int>(std::min<size_t>(size, INT_MAX));
@@ -295,15 +297,17 @@ void TraceModel::refresh() {
     }
     case Source::Filtered: {
         if (scanned_ < size) {
-            // New frames since the filter ran: few per tick on a live bus, tested here.
-            const auto more = runFilter(*store_, *filter_, *decoder_, scanned_, static_cast<FrameNo>(size));
-            if (more) filtered_.insert(filtered_.end(), more->begin(), more->end());
+            // New frames since the filter ran: few per tick on a live bus, tested here when
+            // they are in RAM (pinned meanwhile). Frames paged out to the journal (the filter
+            // job ran long, the budget is small) are tested once the store's loader has read
+            // them back: the GUI thread never waits for the disk (issue 16).
             const FrameNo old = scanned_;
-            scanned_ = static_cast<FrameNo>(size);
-            if (groups_) {
-                refreshGrouped(more ? std::move(*more) : std::vector<FrameNo>{}, old);
-                return;
-            }
+            const FrameNo upTo = pinResident(old, static_cast<FrameNo>(size));
+            auto more = runFilter(*store_, *filter_, *decoder_, old, upTo);
+            if (more) filtered_.insert(filtered_.end(), more->begin(), more->end());
+            scanned_ = upTo;
+            if (groups_ && old < upTo) refreshGrouped(more ? std::move(*more) : std::vector<FrameNo>{}, old);
+            unpinResident(old, upTo);
         }
         if (groups_) return;
         const int n = static_cast<int>(std::min<size_t>(filtered_.size(), INT_MAX));
@@ -378,35 +382,6 @@ std::vector<FrameNo> TraceModel::shownFrames() const {
     for (int r = 0; r < rows_; ++r) out.push_back(frameAt(r));
     if (source() == Source::Latest) std::sort(out.begin(), out.end());
     return out;
-}
-
-FindRows TraceModel::findRows() const {
-    FindRows rows;
-    if (isGrouped()) {
-        if (filter_) rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_);
-        rows.count = filter_ ? filtered_.size() : scanned_;
-        return rows;
-    }
-    rows.count = static_cast<size_t>(rows_);
-    switch (source()) {
-    case Source::All: break;
-    case Source::Filtered: rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_.begin(), filtered_.begin() + rows_); break;
-    case Source::Latest: rows.frames = std::make_shared<const std::vector<FrameNo>>(latestRows_.begin(), latestRows_.begin() + rows_); break;
-    }
-    return rows;
-}
-
-int64_t TraceModel::findPosition(int row) const {
-    if (!isGrouped()) return row;
-    const FrameNo n = frameAt(row);
-    if (!filter_) return n;
-    return std::lower_bound(filtered_.begin(), filtered_.end(), n) - filtered_.begin();
-}
-
-int TraceModel::rowOfFindPosition(const FindRows& rows, int64_t pos) const {
-    if (pos < 0 || static_cast<size_t>(pos) >= rows.count) return -1;
-    if (!isGrouped()) return pos < rows_ ? static_cast<int>(pos) : -1;
-    return rowOf(rows.frameAt(static_cast<size_t>(pos)));
 }
 
 int TraceModel::rowAtOrAfter(FrameNo n) const {

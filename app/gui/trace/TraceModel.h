@@ -129,10 +129,7 @@ private:
     int visibleRow(size_t top) const;
     size_t topIndexOfGroup(uint32_t group) const;
     void ensureExpandedAt() const;
-    struct GroupText {
-        QString summary, data;
-        uint32_t size = 0;
-    };
+    using GroupText = SdoGroupIndex::RowText;
     const GroupText& groupText(uint32_t group) const;
 
     std::shared_ptr<const TraceStore> store_;
@@ -174,6 +171,10 @@ private:
     bool pagedOut(FrameNo n, int row, int col) const;
     bool groupPagedOut(uint32_t group) const;  // a transfer's frames and its last one's checkpoint
     bool requestPageIns(std::span<const FrameNo> frames) const;  // true: some are paged out
+    // New frames [from, to) tested by refresh(): pins their chunks from `from` on while they are
+    // in RAM and returns where the first one that is not starts (asked of the loader), or `to`.
+    FrameNo pinResident(FrameNo from, FrameNo to) const;
+    void unpinResident(FrameNo from, FrameNo upTo) const;
     std::shared_ptr<const TraceStore> pinnedStore_;
     std::vector<uint32_t> pinned_;  // chunks pinned in pinnedStore_
     mutable bool loading_ = false;

@@ -78,4 +78,25 @@ bool TraceModel::requestPageIns(std::span<const FrameNo> need) const {
     return out;
 }
 
+FrameNo TraceModel::pinResident(FrameNo from, FrameNo to) const {
+    // A text filter decodes a frame from the checkpoint before it, in the same chunk
+    // (NetworkContext::checkpointInterval() divides TraceStore::kChunkSize).
+    static_assert(TraceStore::kChunkSize % dissect::NetworkContext::checkpointInterval() == 0);
+    FrameNo end = from;
+    while (end < to) {
+        store_->pin(end, end);  // then resident stays resident
+        if (!store_->isResident(end)) {
+            store_->unpin(end, end);
+            requestPageIns(std::span<const FrameNo>(&end, 1));
+            break;
+        }
+        end = std::min<FrameNo>(static_cast<FrameNo>(((uint64_t(end) >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits), to);
+    }
+    return end;
+}
+
+void TraceModel::unpinResident(FrameNo from, FrameNo upTo) const {
+    if (upTo > from) store_->unpin(from, upTo - 1);
+}
+
 }  // namespace coscope::gui
