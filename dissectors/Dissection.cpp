@@ -24,6 +24,7 @@ void Dissection::reset(Level level) {
     if (!warnings.isEmpty()) warnings.clear();
     signalCount = 0;
     hasTransfer = false;
+    if (!namesFrom.isEmpty()) namesFrom.resize(0);
     fieldCount_ = 0;
     if (!tree.empty()) tree.clear();
 }

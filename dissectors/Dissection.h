@@ -102,6 +102,7 @@ struct SdoTransferRecord {
     uint32_t abortCode = 0;
     QString abortText;
     QString name;            // object name from the dictionary
+    QString namesFrom;       // that dictionary's bundledName (Dissection::namesFrom)
     QString valueText;       // typed value text ("" when not decodable)
     int64_t startNs = 0;
     int64_t endNs = 0;
@@ -127,6 +128,10 @@ public:
     int signalCount = 0;
     bool hasTransfer = false;
     SdoTransferRecord transfer;
+    // The bundled dictionary the object names in this frame's texts come from
+    // (od::ObjectDictionary::bundledName): the GUI names those objects in its language
+    // (dissectors/ObjectNames.h). Empty = a user's dictionary or none: its names stay as written.
+    QString namesFrom;
     std::vector<TreeItem> tree;
 
     // Flat fields, valid [0, fieldCount()).

@@ -109,6 +109,7 @@ void dissectPdo(DissectCall& c) {
             out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3").arg(kindText()).arg(c.len).arg((bits + 7) / 8));
     }
     if (!out.wantText()) return;
+    if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
     // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once.
     thread_local SummaryText s;
     s.clear();

@@ -112,10 +112,14 @@ void dissectSdo(DissectCall& c) {
 
     // Names and typed values only when text is wanted: statistics need no dictionary.
     const od::ObjectDictionary* dict = out.wantText() ? c.ctx.namesFor(c.node) : nullptr;
+    if (dict) out.namesFrom = dict->bundledName;
     if (out.hasTransfer) {
         SdoTransferRecord& t = out.transfer;
         if (t.status == QLatin1String("aborted")) t.abortText = abortText(n, t.abortCode);
-        if (dict && dict->entry(t.index, t.sub)) t.name = dict->displayName(t.index, t.sub);
+        if (dict && dict->entry(t.index, t.sub)) {
+            t.name = dict->displayName(t.index, t.sub);
+            t.namesFrom = dict->bundledName;
+        }
         if (!t.data.isEmpty() && out.wantText()) {
             FlatField v;
             t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);

@@ -244,6 +244,7 @@ ReadResult DictionaryLibrary::loadFile(const QString& path) {
     const QString sidecar = sidecarPath(path);
     QFile f(sidecar);
     if (r.usable && f.exists() && f.open(QIODevice::ReadOnly)) applyUnits(r.dictionary, f.readAll(), sidecar, r.diagnostics);
+    if (r.usable && path.startsWith(QLatin1String(":/dictionaries/"))) r.dictionary.bundledName = QFileInfo(path).completeBaseName();
     return r;
 }
 

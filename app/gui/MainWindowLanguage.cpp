@@ -71,7 +71,9 @@ void MainWindow::setLanguage(const QString& code, bool remember) {
 
 void MainWindow::rebuildInLanguage() {
     const QByteArray layout = saveState();
-    const int node = nodes_->selectedNode();
+    // The node the OD dock shows (the Nodes dock's selection is not rebuilt: a second switch
+    // would find none).
+    const int node = od_->node() > 0 ? od_->node() : nodes_->selectedNode();
     // Menus first: they hold the docks' actions (View, Bus ▸ Scan).
     setMenuBar(new QMenuBar(this));
     for (QDockWidget* d : std::initializer_list<QDockWidget*>{trace_, nodes_, od_, plot_, events_, health_, console_}) {

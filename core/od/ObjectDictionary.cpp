@@ -93,7 +93,7 @@ const SubObject* Object::sub(std::uint8_t s) const {
 
 ObjectDictionary::ObjectDictionary(const ObjectDictionary& o)
     : fileInfo(o.fileInfo), device(o.device), commissioning(o.commissioning), dummyUsage(o.dummyUsage),
-      dynamicChannels(o.dynamicChannels), extraSections(o.extraSections), comments(o.comments), objects_(o.objects_) {
+      dynamicChannels(o.dynamicChannels), extraSections(o.extraSections), comments(o.comments), bundledName(o.bundledName), objects_(o.objects_) {
     rebuildIndex();
 }
 
@@ -106,6 +106,7 @@ ObjectDictionary& ObjectDictionary::operator=(const ObjectDictionary& o) {
     dynamicChannels = o.dynamicChannels;
     extraSections = o.extraSections;
     comments = o.comments;
+    bundledName = o.bundledName;
     objects_ = o.objects_;
     rebuildIndex();
     return *this;

@@ -190,6 +190,10 @@ public:
     std::vector<DynamicChannel> dynamicChannels;
     std::vector<ExtraSection> extraSections;
     QStringList comments;  // [Comments] LineN texts
+    // NAME of a dictionary compiled into CoScope (":/dictionaries/NAME.eds", set by
+    // eds::DictionaryLibrary::loadFile); empty for a user's EDS/DCF/XDD. The GUI names the
+    // standard objects of a bundled one in its language (dissectors/ObjectNames.h).
+    QString bundledName;
 
 private:
     static std::uint32_t key(std::uint16_t index, std::uint8_t sub) { return (std::uint32_t(index) << 8) | sub; }

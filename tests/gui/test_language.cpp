@@ -12,6 +12,9 @@
 #include "core/sim/VirtualDevice.h"
 #include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
+#include "app/gui/od/ObjectDictionaryDock.h"
+#include "app/gui/od/OdTreeModel.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
@@ -27,6 +30,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QToolBar>
 #include <QWizard>
 #include <QApplication>
 #include <QDockWidget>
@@ -357,6 +361,43 @@ bool clickTraceRow(MainWindow& w, const QString& part) {
     return false;
 }
 
+// Brings `dock` up by clicking its tab.
+bool showDock(QDockWidget* dock) {
+    auto* w = qobject_cast<QMainWindow*>(dock->parentWidget());
+    if (!w) return false;
+    for (QTabBar* b : w->findChildren<QTabBar*>())
+        for (int i = 0; i < b->count(); ++i)
+            if (b->tabText(i).remove(u'&') == dock->windowTitle()) {
+                QTest::mouseClick(b, Qt::LeftButton, {}, b->tabRect(i).center());
+                return waitFor([&] { return dock->isVisible(); }, 3000);
+            }
+    return dock->isVisible();
+}
+
+// The EDS names of standard objects the bundled dictionaries name in Chinese (glossary.md
+// "Standard objects"), as whole words.
+QStringList standardObjectNamesIn(const QString& text) {
+    static const QRegularExpression names(QStringLiteral(
+        "\\b(Statusword|Controlword|Device type|Error register|Modes of operation( display)?|Identity object|Vendor-ID|"
+        "Producer heartbeat time|Position actual value|Target position|Manufacturer device name|TPDO1 mapping parameter)\\b"));
+    QStringList out;
+    for (auto it = names.globalMatch(text); it.hasNext();) out << it.next().captured();
+    return out;
+}
+
+// The cells of `m` (each row, its children too) that show such an English name.
+QStringList cellsWithObjectNames(const QAbstractItemModel* m, const QModelIndex& parent = {}) {
+    QStringList out;
+    for (int r = 0; r < m->rowCount(parent); ++r)
+        for (int c = 0; c < m->columnCount(parent); ++c) {
+            const QModelIndex i = m->index(r, c, parent);
+            if (const QString t = m->data(i).toString(); !standardObjectNamesIn(t).isEmpty()) out << t;
+            if (c == 0 && m->hasChildren(i)) out += cellsWithObjectNames(m, i);
+        }
+    out.removeDuplicates();
+    return out;
+}
+
 // Brings the Health dock up by clicking its tab.
 bool showHealth(MainWindow& w) {
     HealthDock* dock = w.healthDock();
@@ -459,7 +500,9 @@ private slots:
             closeWizard(wiz);
             // 2. The trace: a statusword read clicked, its summaries and the details pane.
             auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
-            QVERIFY(clickTraceRow(w, QStringLiteral("6041:00 Statusword =")));
+            // Node 4's generic dictionary names the statusword in the UI language (ObjectNames.h).
+            const QString statusword = english ? QStringLiteral("Statusword") : code == u"zh_TW" ? QStringLiteral(u"狀態字元") : QStringLiteral(u"状态字");
+            QVERIFY2(clickTraceRow(w, QStringLiteral("6041:00 %1 =").arg(statusword)), qPrintable(code));
             QPointer<QTreeWidget> tree;
             QVERIFY(waitFor([&] {
                 tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
@@ -476,6 +519,84 @@ private slots:
             QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
         }
         QVERIFY(chooseLanguage(w, QStringLiteral("en")));
+    }
+
+    // The standard objects of the bundled dictionaries in the manuals' words (issue 17): the OD
+    // dock's names of the Delta drive (node 1; "Read all" clicked, so the trace has an SDO read
+    // of each), the trace's summaries and the details pane of a statusword read show no EDS name
+    // (Statusword, Device type …) in zh_TW and zh_CN, and again the EDS names in English.
+    void standardObjectNamesInTheUiLanguage() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.resize(1500, 950);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(w.connectBus(kNet, true));  // the drives identified by the scan on connect
+        QVERIFY(waitFor([&] { return w.workspace()->nodes().snapshot().size() >= 4; }, 15000));
+        // Node 1 clicked in the Nodes dock: the OD dock shows its dictionary; "Read all" clicked.
+        QVERIFY(showDock(w.odDock()));
+        QVERIFY(waitFor([&] { const auto n = w.workspace()->nodes().node(1); return n && !n->dictionary.isEmpty(); }, 10000));
+        QTableView* nodes = w.nodesDock()->view();
+        auto clickNode = [&](int node) {
+            const QModelIndex i = nodes->model()->index(w.nodesDock()->model()->rowOfNode(node), 0);
+            QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {}, nodes->visualRect(i).center());
+            return waitFor([&] { return w.odDock()->node() == node && w.odDock()->model()->hasDictionary(); }, 3000);
+        };
+        QVERIFY(clickNode(2) && clickNode(1));
+        QWidget* readAll = nullptr;
+        for (QToolBar* bar : w.odDock()->findChildren<QToolBar*>())
+            for (QAction* a : bar->actions())
+                if (a->objectName() == u"odReadAll") readAll = bar->widgetForAction(a);
+        QVERIFY(readAll && waitFor([&] { return readAll->isEnabled(); }, 5000));
+        QTest::mouseClick(readAll, Qt::LeftButton);
+        QVERIFY(waitFor([&] { return !w.odDock()->isBusy() && w.odDock()->model()->valuesRead() > 100; }, 30000));
+
+        const QStringList chinese = {QStringLiteral(u"狀態字元"), QStringLiteral(u"状态字")};
+        for (const QString& code : {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN"), QStringLiteral("en")}) {
+            if (code != language::current()) QVERIFY2(chooseLanguage(w, code), qPrintable(code));
+            QTest::qWait(300);
+            const bool english = code == u"en";
+            QStringList problems;
+            auto expect = [&](const QString& where, const QStringList& cells, bool hasChinese) {
+                if (english ? cells.isEmpty() : !cells.isEmpty())
+                    problems << QStringLiteral("%1 %2: %3").arg(code, where, english ? QStringLiteral("no EDS name shown") : cells.mid(0, 12).join(QStringLiteral("\n  ")));
+                if (!english && !hasChinese) problems << QStringLiteral("%1 %2: no %3").arg(code, where, chinese.join(u'/'));
+                if (english && hasChinese) problems << QStringLiteral("%1 %2: Chinese object names left").arg(code, where);
+            };
+            auto shows = [&](const QStringList& texts) {
+                return std::any_of(texts.begin(), texts.end(), [&](const QString& t) { return t.contains(chinese[0]) || t.contains(chinese[1]); });
+            };
+            // 1. The OD dock (rebuilt in the new language, still on node 1).
+            QVERIFY(showDock(w.odDock()));
+            QVERIFY2(waitFor([&] { return w.odDock()->node() == 1; }, 3000), qPrintable(QStringLiteral("%1: OD dock on node %2").arg(code).arg(w.odDock()->node())));
+            auto* tree = w.odDock()->findChild<QTreeView*>(QStringLiteral("odTree"));
+            QVERIFY(tree && tree->isVisible());
+            const QStringList odNames = rowsContaining(tree->model(), QString());
+            expect(QStringLiteral("OD dock"), cellsWithObjectNames(tree->model()), shows(odNames));
+            // 2. The trace: the SDO reads' summaries; a statusword read clicked, the details pane.
+            auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
+            const int summaryColumn = trace->model()->columnCount() - 1;
+            QStringList summaries;
+            for (int r = 0; r < trace->model()->rowCount(); ++r) summaries << trace->model()->data(trace->model()->index(r, summaryColumn)).toString();
+            QStringList left;
+            for (const QString& s : summaries)
+                if (!standardObjectNamesIn(s).isEmpty()) left << s;
+            left.removeDuplicates();
+            expect(QStringLiteral("trace summaries"), left, shows(summaries));
+            QVERIFY2(clickTraceRow(w, QStringLiteral("6041:00")), qPrintable(code));
+            QPointer<QTreeWidget> fields;
+            QVERIFY(waitFor([&] {
+                fields = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
+                return fields && fields->topLevelItemCount() > 0;
+            }, 3000));
+            QStringList details;
+            for (QTreeWidgetItemIterator it(fields); *it; ++it) details << (*it)->text(0) << (*it)->text(1);
+            QStringList detailsLeft;
+            for (const QString& d : details)
+                if (!standardObjectNamesIn(d).isEmpty()) detailsLeft << d;
+            expect(QStringLiteral("details pane"), detailsLeft, shows(details));
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
+        }
     }
 };
 

@@ -2,6 +2,7 @@
 #include "app/gui/events/EventLog.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/language/ObjectNameText.h"
 #include "core/can/CanErrorFrame.h"
 
 #include "core/canopen/CobId.h"
@@ -123,7 +124,7 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
                 dissect::Dissection d;
                 d.reset(dissect::Dissection::Level::Flat);
                 decoder->decode(f, d);
-                QString text = coreText(d.summary);
+                QString text = coreText(localObjectNames(d, d.summary));
                 if (emcy) {
                     const auto m = canopen::parseEmcy(f.data.data(), f.len);
                     // The dissector's summary names the vendor alarm already; else the raw vendor bytes.

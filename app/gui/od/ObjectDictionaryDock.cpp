@@ -11,6 +11,8 @@
 #include "core/canopen/SdoClient.h"
 #include "eds/DictionaryLibrary.h"
 #include "eds/EdsReader.h"
+#include "dissectors/ObjectNames.h"
+#include "dissectors/VendorTable.h"
 
 #include <QAction>
 #include <QApplication>
@@ -174,7 +176,7 @@ void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
         const auto index = static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt());
         const auto sub = static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt());
         const od::SubObject* e = model_->dictionary().entry(index, sub);
-        addMenuTitle(menu, QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub), model_->dictionary().displayName(index, sub)));
+        addMenuTitle(menu, QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage())));
         readSelected_->setEnabled(canTransmit() && e && od::isReadable(e->access));
         writeSelected_->setEnabled(canTransmit() && e && od::isWritable(e->access));
         menu.addAction(readSelected_);
@@ -384,7 +386,7 @@ bool ObjectDictionaryDock::upload(uint16_t index, uint8_t sub, bool announce) {
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return false;
     if (!od::isReadable(e->access)) {
-        showMessage(tr("%1 %2 is write-only").arg(canopen::objectRef(index, sub), model_->dictionary().displayName(index, sub)), true);
+        showMessage(tr("%1 %2 is write-only").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage())), true);
         return false;
     }
     model_->setState(index, sub, OdTreeModel::State::Reading);
@@ -396,7 +398,7 @@ bool ObjectDictionaryDock::upload(uint16_t index, uint8_t sub, bool announce) {
             self->model_->setUploaded(index, sub, r.data);
             const QString err = self->model_->errorText(index, sub);
             if (!err.isEmpty()) self->showMessage(err, true);
-            else if (announce) self->showMessage(tr("Node %1 %2 %3 = %4").arg(r.node).arg(canopen::objectRef(index, sub), self->model_->dictionary().displayName(index, sub),
+            else if (announce) self->showMessage(tr("Node %1 %2 %3 = %4").arg(r.node).arg(canopen::objectRef(index, sub), dissect::localDisplayName(self->model_->dictionary(), index, sub, dissect::vendorTextLanguage()),
                                                                         self->model_->actualText(index, sub)));
         } else {
             self->model_->setError(index, sub, r.error);
@@ -411,7 +413,7 @@ QString ObjectDictionaryDock::writeQuestion(uint16_t index, uint8_t sub, const o
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return {};
     const QString ref = QStringLiteral("%1h:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("H:"), QLatin1String("h:"));
-    return tr("Write %1 %2 = %3 to node %4?").arg(ref, model_->dictionary().displayName(index, sub), model_->valueText(*e, value)).arg(node_);
+    return tr("Write %1 %2 = %3 to node %4?").arg(ref, dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), model_->valueText(*e, value)).arg(node_);
 }
 
 bool ObjectDictionaryDock::writeEntryText(uint16_t index, uint8_t sub, const QString& text) {
@@ -431,7 +433,7 @@ bool ObjectDictionaryDock::writeEntry(uint16_t index, uint8_t sub, const od::Val
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return false;
     if (!od::isWritable(e->access)) {
-        showMessage(tr("%1 %2 is %3: not writable").arg(canopen::objectRef(index, sub), model_->dictionary().displayName(index, sub), od::accessName(e->access)), true);
+        showMessage(tr("%1 %2 is %3: not writable").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), od::accessName(e->access)), true);
         return false;
     }
     QString encError;

@@ -6,6 +6,7 @@
 #include "core/canopen/Ds402.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/od/NumberNotation.h"
+#include "dissectors/ObjectNames.h"
 #include "dissectors/ParameterNames.h"
 #include "dissectors/VendorTable.h"
 
@@ -23,6 +24,13 @@ QString hexSub(uint8_t sub) { return QStringLiteral("%1").arg(sub, 2, 16, QLatin
 const QColor kErrorColor(0xB0, 0x00, 0x20);
 const QColor kChangedColor(0x00, 0x4E, 0xA8);
 }  // namespace
+
+QString OdTreeModel::localName(uint16_t index, int sub, const QString& edsName) const {
+    // A standard object of a bundled dictionary as the manuals name it, a vendor parameter with
+    // its Chinese name; a user's EDS as written (dissectors/ObjectNames.h).
+    const QString lang = dissect::vendorTextLanguage();
+    return dissect::localParameterName(dissect::localObjectName(dictionary_.bundledName, index, sub, edsName, lang), lang);
+}
 
 OdTreeModel::OdTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
 
@@ -148,6 +156,9 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
         QString t = hexIndex(obj->index) + u' ' + QStringLiteral("%1").arg(obj->index, 4, 16, QLatin1Char('0')) + u' ' + obj->name;
         if (e && !objectRow) t += u' ' + QStringLiteral("%1:%2").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0')) + u' ' + e->name;
         if (objectRow) for (const auto& s : obj->subs) t += u' ' + s.name;
+        // The names shown (Chinese) are found too.
+        t += u' ' + localName(obj->index, -1, obj->name);
+        if (e && !objectRow) t += u' ' + localName(obj->index, e->sub, e->name);
         return t;
     }
     const int col = index.column();
@@ -155,14 +166,14 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
         if (!e) {  // composite object row
             switch (col) {
             case Object: return hexIndex(obj->index);
-            case Name: return dissect::localParameterName(obj->name, dissect::vendorTextLanguage());
+            case Name: return localName(obj->index, -1, obj->name);
             case Type: return od::objectTypeName(obj->objectType);
             default: return {};
             }
         }
         switch (col) {
         case Object: return objectRow ? hexIndex(obj->index) : QCoreApplication::translate("OdTreeModel", "sub %1").arg(hexSub(e->sub));
-        case Name: return dissect::localParameterName(objectRow ? obj->name : e->name, dissect::vendorTextLanguage());
+        case Name: return objectRow ? localName(obj->index, -1, obj->name) : localName(obj->index, e->sub, e->name);
         case Type: return od::dataTypeName(e->dataType);
         case Access: return od::accessName(e->access);
         case Pdo: return e->pdoMappable ? QStringLiteral("✓") : QString();
@@ -202,8 +213,11 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
     }
     if (role == Qt::ToolTipRole) {
         if (st && !st->error.isEmpty()) return st->error;
+        // The name shown, and the EDS's own when the view shows a translated one.
+        const QString eds = dictionary_.displayName(e->index, e->sub);
+        const QString shown = dissect::localDisplayName(dictionary_, e->index, e->sub, dissect::vendorTextLanguage());
         QString tip = QStringLiteral("%1:%2 %3\n%4, %5%6").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0'))
-                          .arg(dictionary_.displayName(e->index, e->sub), od::dataTypeName(e->dataType), od::accessName(e->access),
+                          .arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::dataTypeName(e->dataType), od::accessName(e->access),
                                e->pdoMappable ? QCoreApplication::translate("OdTreeModel", ", PDO-mappable") : QString());
         if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty()) tip += QCoreApplication::translate("OdTreeModel", "\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
         if (st && st->changed) tip += QCoreApplication::translate("OdTreeModel", "\nDiffers from the default");

@@ -63,6 +63,9 @@ public:
     // Display text of a value for this node's entry: unit, and the CiA 402 meaning of modes of
     // operation ("1 (Profile position (PP))").
     QString valueText(const od::SubObject& entry, const od::Value& value, bool withUnit = true) const;
+    // The name the view shows for an object (sub -1) or entry: in the UI language for a bundled
+    // dictionary's standard objects and vendor parameters, else the EDS name.
+    QString localName(uint16_t index, int sub, const QString& edsName) const;
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;

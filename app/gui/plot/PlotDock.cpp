@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotDock.h"
 
+#include "app/gui/language/ObjectNameText.h"
+
 #include "app/gui/plot/PlotCsv.h"
 #include "app/gui/plot/RawSignalDialog.h"
 #include "app/gui/plot/SignalPicker.h"
@@ -192,8 +194,8 @@ void PlotDock::updatePlotted() {
         if (!info) continue;
         PlotSignal s;
         s.key = key;
-        s.name = info->name;
-        s.label = key.raw ? info->name : QStringLiteral("n%1 %2").arg(key.node).arg(info->digital ? info->name.section(QStringLiteral(": "), 1) : info->name);
+        s.name = localSignalName(*info);  // the manual's name for a bundled dictionary's object
+        s.label = key.raw ? s.name : QStringLiteral("n%1 %2").arg(key.node).arg(info->digital ? s.name.section(QStringLiteral(": "), 1) : s.name);
         if (key.bus) s.label = QStringLiteral("bus%1 ").arg(key.bus) + s.label;
         s.scale = picker_->scale(key);
         s.digital = info->digital;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/SignalPicker.h"
 
+#include "app/gui/language/ObjectNameText.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
@@ -151,10 +153,11 @@ void SignalPicker::rebuildTree() {
         }
         QTreeWidgetItem* parent = s.digital && wordItem ? wordItem : nodeItem;
         auto* item = new QTreeWidgetItem(parent);
-        item->setText(ColName, s.digital ? s.name.section(QStringLiteral(": "), 1) : s.name);
+        const QString name = localSignalName(s);  // the manual's name for a bundled dictionary's object
+        item->setText(ColName, s.digital ? name.section(QStringLiteral(": "), 1) : name);
         item->setText(ColObject, s.digital ? QStringLiteral("bit %1").arg(s.key.bit) : s.object);
         item->setToolTip(ColObject, s.pdo);
-        item->setToolTip(ColName, QStringLiteral("%1 — %2 (%3)").arg(s.key.text(), s.name, s.pdo));
+        item->setToolTip(ColName, QStringLiteral("%1 — %2 (%3)").arg(s.key.text(), name == s.name ? s.name : QStringLiteral("%1 / %2").arg(name, s.name), s.pdo));
         item->setData(ColName, kKeyRole, keyData(s.key));
         Qt::ItemFlags flags = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable;
         if (!s.digital) {

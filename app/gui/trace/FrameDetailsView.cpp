@@ -2,6 +2,7 @@
 #include "app/gui/trace/FrameDetailsView.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/language/ObjectNameText.h"
 
 #include "core/canopen/CobId.h"
 
@@ -82,10 +83,11 @@ void FrameDetailsView::showTransfer(const dissect::SdoTransferRecord& t, const s
     highlight_ = {0, 0};
     tree_->clear();
     const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper();
-    auto* top = new QTreeWidgetItem(tree_, {tr("SDO transfer"), QStringLiteral("%1 %2").arg(object, t.name)});
+    const QString name = localObjectName(t);
+    auto* top = new QTreeWidgetItem(tree_, {tr("SDO transfer"), QStringLiteral("%1 %2").arg(object, name)});
     auto add = [top](const QString& label, const QString& value) { return new QTreeWidgetItem(top, {label, value}); };
     add(tr("Node"), QString::number(t.node));
-    add(tr("Object"), t.name.isEmpty() ? object : QStringLiteral("%1 %2").arg(object, t.name));
+    add(tr("Object"), name.isEmpty() ? object : QStringLiteral("%1 %2").arg(object, name));
     add(tr("Direction"), t.upload ? tr("upload (read from the server)") : tr("download (write to the server)"));
     add(tr("Mode"), t.block ? tr("block") : t.segmented ? tr("segmented") : tr("expedited"));
     add(tr("Size"), tr("%n byte(s)", nullptr, static_cast<int>(t.size)));
@@ -115,7 +117,8 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     tree_->clear();
 
     // The dissectors write in English (shared with the CLI): shown in the UI language (CoreText.h).
-    auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), coreLines(d.summary)});
+    // Object names of a bundled dictionary in the UI language too (ObjectNameText.h).
+    auto* top = new QTreeWidgetItem(tree_, {tr("Frame %1").arg(number), coreLines(localObjectNames(d, d.summary))});
     const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()
                                       : QStringLiteral("%1").arg(f.id, 3, 16, QLatin1Char('0')).toUpper();
     new QTreeWidgetItem(top, {tr("Identifier"), tr("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
@@ -129,7 +132,7 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     if (f.isError()) flags << tr("error frame");
     if (!flags.isEmpty()) new QTreeWidgetItem(top, {tr("Flags"), flags.join(QStringLiteral(", "))});
     for (const QString& w : d.warnings) {
-        auto* item = new QTreeWidgetItem(top, {tr("Warning"), coreText(w)});
+        auto* item = new QTreeWidgetItem(top, {tr("Warning"), coreText(localObjectNames(d, w))});
         item->setForeground(1, QColor(176, 0, 32));
     }
     top->setExpanded(true);
@@ -139,8 +142,8 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     for (const auto& t : d.tree) {
         parents.resize(static_cast<size_t>(t.depth));
         QTreeWidgetItem* item = parents.empty() ? new QTreeWidgetItem(tree_) : new QTreeWidgetItem(parents.back());
-        item->setText(0, coreText(t.label));
-        item->setText(1, coreLines(t.value));
+        item->setText(0, coreText(localObjectNames(d, t.label)));
+        item->setText(1, coreLines(localObjectNames(d, t.value)));
         if (t.byteLength > 0) {
             QString where = t.byteLength == 1 ? tr("byte %1").arg(t.byteOffset) : tr("bytes %1–%2").arg(t.byteOffset).arg(t.byteOffset + t.byteLength - 1);
             if (t.bitOffset >= 0) where += t.bitLength == 1 ? tr(", bit %1").arg(t.bitOffset) : tr(", bits %1–%2").arg(t.bitOffset).arg(t.bitOffset + t.bitLength - 1);

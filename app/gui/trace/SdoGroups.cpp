@@ -2,6 +2,7 @@
 #include "app/gui/trace/SdoGroups.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/language/ObjectNameText.h"
 
 #include "app/gui/trace/FrameDecoder.h"
 
@@ -118,7 +119,7 @@ dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, std::s
 
 QString SdoGroupIndex::summary(const dissect::SdoTransferRecord& t, size_t frames) {
     const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper() +
-                           (t.name.isEmpty() ? QString() : u' ' + t.name);
+                           (t.name.isEmpty() ? QString() : u' ' + localObjectName(t));
     //: Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")
     QString s = (t.upload ? QCoreApplication::translate("SdoGroupIndex", "SDO read node %1 %2") : QCoreApplication::translate("SdoGroupIndex", "SDO write node %1 %2"))
                     .arg(t.node)

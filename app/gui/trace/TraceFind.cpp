@@ -2,6 +2,7 @@
 #include "app/gui/trace/TraceFind.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/language/ObjectNameText.h"
 #include "app/gui/trace/TraceModel.h"
 #include "dissectors/NetworkContext.h"
 
@@ -26,10 +27,10 @@ QString dataText(const TraceStore& store, FrameNo n) {
 
 QString summaryText(const dissect::Dissection& d) {
     // The dissectors write English (the CLI's words); the row shows the UI language (CoreText.h).
-    QString text = coreLines(d.summary);
+    QString text = coreLines(localObjectNames(d, d.summary));
     if (!d.warnings.isEmpty()) {
         QStringList warnings = d.warnings;
-        for (QString& w : warnings) w = coreText(w);
+        for (QString& w : warnings) w = coreText(localObjectNames(d, w));
         text += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
     }
     return text;

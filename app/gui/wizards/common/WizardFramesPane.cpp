@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/language/CoreText.h"
+#include "app/gui/language/ObjectNameText.h"
 
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/CobId.h"
@@ -168,10 +169,10 @@ struct WizardFramesPane::Private {
         if (decoder) {
             scratch.reset(dissect::Dissection::Level::Flat);
             decoder->decodeAt(*store, n, scratch);
-            row.summary = coreLines(scratch.summary);  // the dissectors' English in the UI language
+            row.summary = coreLines(localObjectNames(scratch, scratch.summary));  // the dissectors' English in the UI language
             if (!scratch.warnings.isEmpty()) {
                 QStringList warnings = scratch.warnings;
-                for (QString& w : warnings) w = coreText(w);
+                for (QString& w : warnings) w = coreText(localObjectNames(scratch, w));
                 row.summary += QStringLiteral("  ⚠ ") + warnings.join(QStringLiteral("; "));
             }
         }

@@ -4,6 +4,8 @@
 
 #include "app/gui/wizards/pdo/PdoFrameLayout.h"
 #include "app/gui/wizards/pdo/PdoWizard.h"
+#include "dissectors/ObjectNames.h"
+#include "dissectors/VendorTable.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -137,7 +139,10 @@ void PdoMappingPage::fillAvailable() {
             if (bits <= 0 || bits > 64) continue;
             auto* item = new QListWidgetItem(tr("%1  (%2, %3 bits)").arg(s.objectName(index, sub.sub), od::dataTypeName(sub.dataType)).arg(bits), available_);
             item->setData(kEntryRole, canopen::PdoMapEntry{index, sub.sub, static_cast<uint8_t>(bits)}.encode());
-            item->setToolTip(tr("%1h:%2 — %3, access %4").arg(index, 4, 16, QChar(u'0')).arg(sub.sub, 2, 16, QChar(u'0')).arg(s.dictionary->displayName(index, sub.sub), od::accessName(sub.access)));
+            // The EDS's own name in the tooltip when the list shows the manual's (ObjectNames.h).
+            const QString eds = s.dictionary->displayName(index, sub.sub);
+            const QString shown = dissect::localDisplayName(*s.dictionary, index, sub.sub, dissect::vendorTextLanguage());
+            item->setToolTip(tr("%1h:%2 — %3, access %4").arg(index, 4, 16, QChar(u'0')).arg(sub.sub, 2, 16, QChar(u'0')).arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::accessName(sub.access)));
         }
     }
     setFilter(search_->text());
