@@ -102,7 +102,7 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
         }
         return;
     }
-    // Row by row: the row's 16 pixels once, every trace covering the row in order. Only the
+    // Row by row: the row's 16 pixels once, every trace covering the row. Only the
     // rows some trace covers (stacked traces leave the rows between their rects alone).
     std::pair<int, int> bands[16];
     std::vector<std::pair<int, int>> moreBands;
@@ -121,13 +121,20 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
             uchar* row = bits + y * stride + qsizetype(x0) * 4;
             V4 p[4];
             std::memcpy(p, row, sizeof p);
-            for (size_t k = 0; k < n; ++k) {
+            // The last trace first: a pixel it covers is final (it would be painted over the
+            // earlier ones), so each lane takes the first trace that covers it, and once all 16
+            // lanes are taken the traces below are not looked at (overlaid bands cover each other).
+            V4 taken[4] = {};
+            for (size_t k = n; k-- > 0;) {
                 const Lanes& a = l[k];
                 if (y < a.from || y > a.to) continue;
                 for (int q = 0; q < 4; ++q) {
-                    const V4 m = (a.top[q] <= y) & (a.bottom[q] >= y);
+                    const V4 m = (a.top[q] <= y) & (a.bottom[q] >= y) & ~taken[q];
                     p[q] = (p[q] & ~m) | (a.color & m);
+                    taken[q] |= m;
                 }
+                const V4 all = taken[0] & taken[1] & taken[2] & taken[3];
+                if ((all[0] & all[1] & all[2] & all[3]) == -1) break;
             }
             std::memcpy(row, p, sizeof p);
         }
