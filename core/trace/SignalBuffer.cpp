@@ -15,10 +15,11 @@ constexpr size_t kBlock[kLevels] = {16, 256, 4096, 65536};
 static_assert(kBlock[0] == kFanout && kBlock[1] == kBlock[0] * kFanout && kBlock[2] == kBlock[1] * kFanout && kBlock[3] == kBlock[2] * kFanout);
 static_assert(kBlock[kLevels - 1] == SignalBuffer::kChunkSize);
 constexpr size_t kTimeBlock = 64;  // samples per entry of a chunk's search index
-// Edge index levels (envelope()): blocks of 16 to 4096 samples, fanout 4, so that some level
-// has blocks between 1/16 and 1/4 of any pixel column of 64 samples or more.
-constexpr int kEdgeLevels = 5;
-constexpr size_t kEdgeBlock[kEdgeLevels] = {16, 64, 256, 1024, 4096};
+// Edge index levels (envelope()): blocks of 16 to 4096 samples, fanout 2, so that some level
+// has blocks between 1/8 and 1/4 of any pixel column of 64 samples or more (4 to 8 reads a
+// column; ~5 bytes a sample).
+constexpr int kEdgeLevels = 9;
+constexpr size_t kEdgeBlock[kEdgeLevels] = {16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
 constexpr size_t kEdgeBlocksPerColumn = 4;  // a level's block is at most a quarter column
 static_assert(SignalBuffer::kChunkSize % kEdgeBlock[kEdgeLevels - 1] == 0);
 

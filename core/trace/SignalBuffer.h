@@ -83,8 +83,8 @@ public:
     // What the plot draws: decimate(t0, t1, columns) (into `out`, reusing its memory), except
     // that when a column holds at least 64 samples the edges between columns snap to blocks of
     // at most a quarter column (the window's own ends stay exact). A sample near an edge may
-    // count in the neighbouring column, less than a quarter pixel away; in exchange a replot
-    // reads one contiguous run of block summaries per chunk (the "edge index", ~4-16 reads a
+    // count in the neighbouring column, about a quarter pixel away at most; in exchange a replot
+    // reads one contiguous run of block summaries per chunk (the "edge index", 4-8 reads a
     // column) instead of searching and climbing the pyramid at every column edge.
     void envelope(int64_t t0, int64_t t1, int columns, std::vector<SignalPoint>& out) const;
 
