@@ -15,6 +15,13 @@ constexpr size_t kBlock[kLevels] = {16, 256, 4096, 65536};
 static_assert(kBlock[0] == kFanout && kBlock[1] == kBlock[0] * kFanout && kBlock[2] == kBlock[1] * kFanout && kBlock[3] == kBlock[2] * kFanout);
 static_assert(kBlock[kLevels - 1] == SignalBuffer::kChunkSize);
 constexpr size_t kTimeBlock = 64;  // samples per entry of a chunk's search index
+// Edge index levels (envelope()): blocks of 16 to 4096 samples, fanout 2, so that some level
+// has blocks between 1/8 and 1/4 of any pixel column of 64 samples or more (4 to 8 reads a
+// column; ~5 bytes a sample).
+constexpr int kEdgeLevels = 9;
+constexpr size_t kEdgeBlock[kEdgeLevels] = {16, 32, 64, 128, 256, 512, 1024, 2048, 4096};
+constexpr size_t kEdgeBlocksPerColumn = 4;  // a level's block is at most a quarter column
+static_assert(SignalBuffer::kChunkSize % kEdgeBlock[kEdgeLevels - 1] == 0);
 
 uint64_t bitsOf(double v) {
     if (!std::isfinite(v)) return 0;
@@ -22,6 +29,13 @@ uint64_t bitsOf(double v) {
     return static_cast<uint64_t>(static_cast<int64_t>(v));
 }
 }  // namespace
+
+// One block of an edge index level: its first sample's time, its first and last value and its
+// extremes, together (40 bytes): an envelope reads these one after the other.
+struct SignalBuffer::Edge {
+    int64_t t;
+    double first, last, min, max;
+};
 
 struct SignalBuffer::Chunk {
     std::vector<int64_t> t;
@@ -33,6 +47,7 @@ struct SignalBuffer::Chunk {
     std::vector<MinMax> level[kLevels];
     std::vector<Bits> bits[kLevels];
     std::vector<int64_t> blockTime;  // time of each 64-block's first sample: searches touch few cache lines
+    std::vector<Edge> edge[kEdgeLevels];  // edge[k][j]: samples [j * kEdgeBlock[k], (j + 1) * kEdgeBlock[k])
 
     size_t size() const { return t.size(); }
     size_t lowerBound(int64_t time) const {
@@ -61,6 +76,16 @@ struct SignalBuffer::Chunk {
             Bits& x = bits[k].back();
             x.andBits &= b;
             x.orBits |= b;
+        }
+        for (int k = 0; k < kEdgeLevels; ++k) {
+            if (i % kEdgeBlock[k] == 0) {
+                edge[k].push_back({s.timeNs, s.value, s.value, s.value, s.value});
+                continue;
+            }
+            Edge& e = edge[k].back();
+            e.last = s.value;
+            e.min = std::min(e.min, s.value);
+            e.max = std::max(e.max, s.value);
         }
     }
 };
@@ -295,10 +320,14 @@ SignalRange SignalBuffer::range(int64_t t0, int64_t t1, int bit) const {
 std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buckets, int bit) const {
     std::vector<SignalPoint> out;
     std::lock_guard lock(mutex_);
+    if (!countLocked() || t1 < t0) return out;
+    decimateLocked(lowerBoundLocked(t0), lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1), t0, t1, buckets, bit, out);
+    return out;
+}
+
+void SignalBuffer::decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit, std::vector<SignalPoint>& out) const {
     const size_t n = countLocked();
-    if (!n || t1 < t0) return out;
     buckets = std::max(1, buckets);
-    const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
     auto valueOf = [bit](double v) { return bit >= 0 && bit < 64 ? double((bitsOf(v) >> bit) & 1) : v; };
     auto push = [&](size_t r) {
         const SignalSample s = sampleLocked(r);
@@ -307,11 +336,11 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
     const size_t lo = from > 0 ? from - 1 : from;     // one before the window
     const size_t hi = to < n ? to + 1 : to;           // one after it
     if (to - from <= size_t(2) * size_t(buckets)) {
-        out.reserve(hi - lo);
+        out.reserve(out.size() + (hi - lo));
         for (size_t r = lo; r < hi; ++r) push(r);
-        return out;
+        return;
     }
-    out.reserve(size_t(2) * size_t(buckets) + 2);
+    out.reserve(out.size() + size_t(2) * size_t(buckets) + 2);
     if (lo < from) push(lo);
     const double span = double(t1) - double(t0);
     size_t start = from;
@@ -347,7 +376,78 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
         start = end;
     }
     if (hi > to) push(to);
-    return out;
+}
+
+void SignalBuffer::envelope(int64_t t0, int64_t t1, int columns, std::vector<SignalPoint>& out) const {
+    out.clear();
+    std::lock_guard lock(mutex_);
+    const size_t n = countLocked();
+    if (!n || t1 < t0) return;
+    columns = std::max(1, columns);
+    const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
+    // The right level, chosen once: the largest whose blocks are at most a quarter column.
+    const size_t perColumn = (to - from) / size_t(columns);
+    int level = kEdgeLevels - 1;
+    while (level >= 0 && kEdgeBlock[level] * kEdgeBlocksPerColumn > perColumn) --level;
+    if (level < 0) {  // zoomed in: few samples a column, the exact edges cost little
+        decimateLocked(from, to, t0, t1, columns, -1, out);
+        return;
+    }
+    const size_t block = kEdgeBlock[level];
+    out.reserve(size_t(2) * size_t(columns) + 2);
+    if (from > 0) out.push_back(pointLocked(from - 1));
+    // One column at a time: the blocks whose first sample falls in it (the window's partial
+    // first and last block exactly, from the pyramid).
+    const double scale = double(columns) / std::max(1.0, double(t1) - double(t0));
+    int column = -1;
+    Edge acc{};
+    int64_t lastTime = 0;
+    size_t count = 0;
+    auto flush = [&] {
+        if (column < 0) return;
+        if (count <= 2) {
+            out.push_back({acc.t, acc.first});
+            if (count == 2) out.push_back({lastTime, acc.last});
+            return;
+        }
+        const bool rising = acc.last >= acc.first;  // min first when rising, as decimate()
+        out.push_back({acc.t, rising ? acc.min : acc.max});
+        out.push_back({lastTime, rising ? acc.max : acc.min});
+    };
+    // tLast: where the column's last point goes (a whole block's first time: inside the column).
+    auto add = [&](const Edge& e, size_t samples, int64_t tLast) {
+        const int c = std::clamp(static_cast<int>((double(e.t) - double(t0)) * scale), 0, columns - 1);
+        if (c != column) {
+            flush();
+            column = c;
+            acc = e;
+            count = 0;
+        } else {
+            acc.last = e.last;
+            acc.min = std::min(acc.min, e.min);
+            acc.max = std::max(acc.max, e.max);
+        }
+        lastTime = tLast;
+        count += samples;
+    };
+    auto exact = [&](size_t lo, size_t hi) {  // [lo, hi) within one block
+        const Summary s = reduceLocked<false>(lo, hi);
+        const SignalPoint a = pointLocked(lo), z = pointLocked(hi - 1);
+        add(Edge{a.timeNs, a.value, z.value, s.min, s.max}, hi - lo, z.timeNs);
+    };
+    size_t r = from;
+    const size_t headEnd = std::min(to, (from + block - 1) / block * block);
+    if (r < headEnd) exact(r, headEnd), r = headEnd;
+    const size_t bodyEnd = std::max(r, to / block * block);
+    while (r < bodyEnd) {  // whole blocks, read in order chunk by chunk
+        const Chunk& c = *chunks_[r / kChunkSize];
+        const size_t chunkEnd = std::min(bodyEnd, (r / kChunkSize + 1) * kChunkSize);
+        const Edge* e = c.edge[level].data() + (r % kChunkSize) / block;
+        for (; r < chunkEnd; r += block, ++e) add(*e, block, e->t);
+    }
+    if (r < to) exact(r, to);
+    flush();
+    if (to < n) out.push_back(pointLocked(to));
 }
 
 }  // namespace coscope

@@ -1,17 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Plot budget (DESIGN.md "Performance budgets"): 8 signals x 1 kHz replot within 3 ms whether
-// the data is 10 minutes or 1 hour long (cost follows pixels, not samples). Each case is run for
-// 10 minutes and for 1 hour of data, the whole history in view:
-//  - BM_Replot/<len>/stacked|shared_axes: PlotView::refresh(true): every signal re-decimated from
-//    the buffers' min/max pyramid (one min/max per pixel column) and the QCustomPlot replotted.
-//  - BM_Decimate/<len>: the data side alone (the 8 decimations of a replot, 1300 columns).
+// the data is 10 minutes or 1 hour long (cost follows pixels, not samples). A replot is what the
+// user sees change: every timed replot moves the time range (so the ticks, labels and every
+// trace are redrawn), never the same picture again.
+//  - BM_Replot/<len>/stacked|shared_axes: live scrolling with the whole history in view: the
+//    window's end moves on by 33 ms each replot; PlotView::refresh() re-reads every signal's
+//    columns from its buffer and QCustomPlot replots.
+//  - BM_Zoom/<len>/...: the same with the window zooming in step by step (wheel notches of
+//    0.85) from the whole history down to a few seconds, then out again.
+//  - BM_Decimate/<len>: the data side alone (the 8 envelopes of a replot, 1300 columns).
+//  - BM_FrameOnly/...: the same plot with no samples: what QCustomPlot's axes, tick labels,
+//    grid, legend and layout cost by themselves on a moving range.
 //  - BM_PaintOnly/<len>/...: QCustomPlot::replot() alone (axes, text, 8 dense traces).
 //  - BM_PeerPlainScan/<len>: the old plain scan, every sample read once into 1300 columns (what
 //    the data side of a redraw costs when it follows samples); each replot is also printed
-//    against it (BENCH plot_replot_..._vs_scan).
+//    against it (BENCH plot_..._vs_scan).
 // Reported: ms per replot (wall, and CPU of the thread: the benchmark host is often shared),
-// budget_ratio = 3 ms / measured (>= 1 passes), and a machine-readable BENCH line each for
-// scripts/bench.sh's summary.
+// ratio to budget = measured / 3 ms (<= 1 passes) with PASS/FAIL, and a machine-readable BENCH
+// line each for scripts/bench.sh's summary (which, like bench_gui_trace, gives budget / measured:
+// >= 1 passes there).
 #include "app/gui/plot/PlotView.h"
 #include "core/trace/SignalBuffer.h"
 
@@ -67,7 +74,7 @@ const std::vector<std::shared_ptr<SignalBuffer>>& buffers(int64_t seconds) {
 
 std::string lengthName(int64_t seconds) { return seconds >= 3600 ? "1h" : std::to_string(seconds / 60) + "min"; }
 
-std::unique_ptr<PlotView> makeView(PlotView::Layout layout, int64_t seconds) {
+std::unique_ptr<PlotView> makeView(PlotView::Layout layout, int64_t seconds, bool withData = true) {
     auto view = std::make_unique<PlotView>();
     view->resize(1400, 900);
     view->setLayoutMode(layout);
@@ -78,7 +85,7 @@ std::unique_ptr<PlotView> makeView(PlotView::Layout layout, int64_t seconds) {
         p.label = QStringLiteral("n%1 Position actual value").arg(s + 1);
         p.scale = {0.001, 0, QStringLiteral("rev")};
         p.color = plotColor(s);
-        p.buffer = buffers(seconds)[static_cast<size_t>(s)];
+        if (withData) p.buffer = buffers(seconds)[static_cast<size_t>(s)];
         sigs.push_back(p);
     }
     view->setSignals(sigs);
@@ -107,10 +114,11 @@ void report(benchmark::State& state, const std::string& name, double totalMs, do
     const double ms = totalMs / double(state.iterations());
     const double cpu = cpuMs / double(state.iterations());
     state.counters["ms_per_replot"] = ms;
-    state.counters["budget_ratio"] = kBudgetMs / ms;  // >= 1 meets the budget, as in the other benchmarks
+    state.counters["ratio_to_budget"] = ms / kBudgetMs;  // <= 1 meets the budget, as in the other benchmarks
     state.counters["cpu_ms_per_replot"] = cpu;
-    state.counters["cpu_budget_ratio"] = kBudgetMs / cpu;
-    // BENCH name figure unit peer-or-budget peer-kind ratio (scripts/bench.sh collects these),
+    state.counters["cpu_ratio_to_budget"] = cpu / kBudgetMs;
+    // BENCH name figure unit peer-or-budget peer-kind ratio (scripts/bench.sh collects these; its
+    // summary's ratios are >= 1 when met),
     // printed once at the end: the last (longest) run of each benchmark counts.
     char line[256];
     if (peerMs > 0)
@@ -169,17 +177,27 @@ void BM_PeerPlainScan(benchmark::State& state, int64_t seconds) {
 
 void BM_Decimate(benchmark::State& state, int64_t seconds) {
     buffers(seconds);  // filled before the clock runs
+    std::vector<SignalPoint> points;
     double totalMs = 0, cpuMs = 0;
     timed(state, totalMs, cpuMs, [&] {
-        for (const auto& b : buffers(seconds)) benchmark::DoNotOptimize(b->decimate(0, seconds * 1'000'000'000LL, kColumns).size());
+        for (const auto& b : buffers(seconds)) {
+            b->envelope(0, seconds * 1'000'000'000LL, kColumns, points);
+            benchmark::DoNotOptimize(points.data());
+        }
     });
     report(state, "decimate_" + lengthName(seconds), totalMs, cpuMs, peerMs[seconds]);
 }
 
+// The window's end moves on by 33 ms a replot (live data arriving, whole history in view),
+// cycling over the last 30 s of the data.
 void BM_Replot(benchmark::State& state, int64_t seconds, PlotView::Layout layout) {
     auto view = makeView(layout, seconds);
-    double totalMs = 0, cpuMs = 0;
-    timed(state, totalMs, cpuMs, [&] { view->refresh(true); });
+    double totalMs = 0, cpuMs = 0, end = double(seconds) - 30;
+    timed(state, totalMs, cpuMs, [&] {
+        end = end + 0.033 > double(seconds) ? double(seconds) - 30 : end + 0.033;
+        view->setTimeRange(0, end);
+        view->refresh();
+    });
     const std::string name = "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes");
     report(state, name, totalMs, cpuMs);
     replotCases()[{seconds, int(layout)}] = {cpuMs / double(state.iterations()), totalMs / double(state.iterations())};
@@ -189,6 +207,35 @@ void BM_Replot(benchmark::State& state, int64_t seconds, PlotView::Layout layout
     const double cpu = cpuMs / double(state.iterations());
     std::snprintf(line, sizeof line, "BENCH plot_%s_vs_scan %.3f cpu_ms %.3f peer_plain_scan %.2f", name.c_str(), cpu, peerMs[seconds], peerMs[seconds] / cpu);
     benchLines()[name + "_vs_scan"] = line;
+}
+
+// Wheel zoom about a point at 40 % of the history: 0.85 per notch in, 40 notches (an hour
+// down to ~5 s, past the point where columns hold single samples), then out again.
+void BM_Zoom(benchmark::State& state, int64_t seconds, PlotView::Layout layout) {
+    auto view = makeView(layout, seconds);
+    double totalMs = 0, cpuMs = 0;
+    int step = 0;
+    timed(state, totalMs, cpuMs, [&] {
+        const int notch = step < 40 ? step : 80 - step;
+        step = (step + 1) % 80;
+        const double span = double(seconds) * std::pow(0.85, notch), at = 0.4 * double(seconds);
+        view->setTimeRange(at - 0.4 * span, at + 0.6 * span);
+        view->refresh();
+    });
+    report(state, "zoom_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes"), totalMs, cpuMs);
+}
+
+// The plot without samples on the same moving range: QCustomPlot's own share of a replot.
+void BM_FrameOnly(benchmark::State& state, PlotView::Layout layout) {
+    auto view = makeView(layout, 600, false);
+    double totalMs = 0, cpuMs = 0, end = 570;
+    timed(state, totalMs, cpuMs, [&] {
+        end = end + 0.033 > 600 ? 570 : end + 0.033;
+        view->setTimeRange(0, end);
+        view->refresh();
+    });
+    state.counters["ms_per_replot"] = totalMs / double(state.iterations());
+    state.counters["cpu_ms_per_replot"] = cpuMs / double(state.iterations());
 }
 
 void BM_PaintOnly(benchmark::State& state, int64_t seconds, PlotView::Layout layout) {
@@ -220,6 +267,10 @@ BENCHMARK_CAPTURE(BM_Replot, 10min_stacked, 600, PlotView::Layout::Stacked)->Uni
 BENCHMARK_CAPTURE(BM_Replot, 10min_shared_axes, 600, PlotView::Layout::Overlay)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Replot, 1h_stacked, 3600, PlotView::Layout::Stacked)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Replot, 1h_shared_axes, 3600, PlotView::Layout::Overlay)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Zoom, 1h_stacked, 3600, PlotView::Layout::Stacked)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Zoom, 1h_shared_axes, 3600, PlotView::Layout::Overlay)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrameOnly, stacked, PlotView::Layout::Stacked)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FrameOnly, shared_axes, PlotView::Layout::Overlay)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PaintOnly, 1h_stacked, 3600, PlotView::Layout::Stacked)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_PaintOnly, 1h_shared_axes, 3600, PlotView::Layout::Overlay)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReplotRollingWindow)->Unit(benchmark::kMillisecond);
@@ -243,13 +294,13 @@ int main(int argc, char** argv) {
         std::fclose(f);
     }
     if (!replotCases().empty()) {
-        std::printf("\nreplot of 8 signals x 1 kHz, whole history in view (load average %.2f %.2f %.2f)\n", load[0], load[1], load[2]);
-        std::printf("%-7s %-12s %10s %10s %14s %9s %14s\n", "length", "layout", "cpu ms", "wall ms", "plain scan ms", "vs scan", "3 ms budget");
+        std::printf("\nreplot of 8 signals x 1 kHz, whole history in view, scrolling (load average %.2f %.2f %.2f)\n", load[0], load[1], load[2]);
+        std::printf("%-7s %-12s %10s %10s %14s %9s %17s %s\n", "length", "layout", "cpu ms", "wall ms", "plain scan ms", "vs scan", "ratio to budget", "3 ms (cpu)");
         for (const auto& [key, c] : replotCases()) {
             const double peer = peerMs.count(key.first) ? peerMs[key.first] : 0;
-            std::printf("%-7s %-12s %10.3f %10.3f %14.3f %8.1fx %13.2fx\n", lengthName(key.first).c_str(),
+            std::printf("%-7s %-12s %10.3f %10.3f %14.3f %8.1fx %17.2f %s\n", lengthName(key.first).c_str(),
                         key.second == int(PlotView::Layout::Stacked) ? "stacked" : "shared axes", c.cpuMs, c.wallMs, peer, peer > 0 ? peer / c.cpuMs : 0.0,
-                        kBudgetMs / c.cpuMs);
+                        c.cpuMs / kBudgetMs, c.cpuMs <= kBudgetMs ? "PASS" : "FAIL");
         }
     }
     return 0;

@@ -2,7 +2,8 @@
 // SignalBuffer's min/max pyramid against a plain scan over the same samples: random values and
 // times, appended in random batches (the pyramid grows while it is queried), random zoom windows
 // and pixel widths. Every pixel column of decimate() must carry exactly the min and max of the
-// samples whose time falls in it; range() the extremes of the window (and of one bit).
+// samples whose time falls in it; range() the extremes of the window (and of one bit). envelope()
+// (what the plot draws) may count a sample in the neighbouring column, never lose or invent one.
 #include "core/trace/SignalBuffer.h"
 
 #include <QtTest>
@@ -150,6 +151,66 @@ private slots:
                                                              [](const SignalPoint& a, const SignalPoint& b) { return a.timeNs == b.timeNs && a.value == b.value; }),
                      "after sample " + QByteArray::number(i) + ": " + describe(got, want));
         }
+    }
+    // The plot's envelope against a plain scan: each drawn column's extremes are samples of that
+    // column or a neighbour, and every sample lies within the extremes drawn in its column or a
+    // neighbour (spikes are never lost). Zoomed in (under 64 samples a column) it is decimate().
+    void envelopeKeepsEverySample() {
+        std::mt19937_64 rng(20261126);
+        SignalBuffer buf;
+        std::vector<SignalSample> all;
+        int64_t t = 0;
+        while (all.size() < 5 * SignalBuffer::kChunkSize + 777) {
+            t += 500 + static_cast<int64_t>(rng() % 1000);
+            double v = double(int64_t(rng() % 2001) - 1000);
+            if (rng() % 3000 == 0) v = double(int64_t(rng() % 2'000'001) - 1'000'000);
+            all.push_back({t, v, static_cast<FrameNo>(all.size())});
+        }
+        buf.append(all);
+        std::vector<SignalPoint> got;
+        int snapped = 0;
+        for (int q = 0; q < 60; ++q) {
+            const int64_t first = all.front().timeNs, span = all.back().timeNs - first;
+            const int64_t len = q == 0 ? span : static_cast<int64_t>(rng() % uint64_t(span));
+            const int64_t t0 = q == 0 ? first : first - span / 20 + static_cast<int64_t>(rng() % uint64_t(span));
+            const int64_t t1 = t0 + len;
+            const int columns = 50 + static_cast<int>(rng() % 1500);
+            buf.envelope(t0, t1, columns, got);
+            const auto exact = plainDecimate(all, t0, t1, columns, -1);
+            struct Span {
+                double min = 0, max = 0;
+                bool any = false;
+                void add(double v) { min = any ? std::min(min, v) : v, max = any ? std::max(max, v) : v, any = true; }
+            };
+            const double scale = double(columns) / double(std::max<int64_t>(1, t1 - t0));
+            auto columnOf = [&](int64_t time) { return std::clamp(static_cast<int>((double(time) - double(t0)) * scale), 0, columns - 1); };
+            std::vector<Span> drawn(size_t(columns) + 2), plain(size_t(columns) + 2);  // index column + 1
+            for (const SignalPoint& p : got)
+                if (p.timeNs >= t0 && p.timeNs <= t1) drawn[size_t(columnOf(p.timeNs)) + 1].add(p.value);
+            size_t inWindow = 0;
+            for (const SignalSample& s : all)
+                if (s.timeNs >= t0 && s.timeNs <= t1) plain[size_t(columnOf(s.timeNs)) + 1].add(s.value), ++inWindow;
+            const QByteArray where = "[" + QByteArray::number(qlonglong(t0)) + ", " + QByteArray::number(qlonglong(t1)) + "] in " + QByteArray::number(columns) + " columns";
+            if (inWindow < size_t(64) * size_t(columns)) {
+                QVERIFY2(got.size() == exact.size() && std::equal(got.begin(), got.end(), exact.begin(), [](const SignalPoint& a, const SignalPoint& b) {
+                             return a.timeNs == b.timeNs && a.value == b.value;
+                         }), where + ": " + describe(got, exact));
+                continue;
+            }
+            ++snapped;
+            QVERIFY2(got.size() <= size_t(2) * size_t(columns) + 2, where);
+            for (size_t c = 1; c <= size_t(columns); ++c) {
+                Span near, nearDrawn;
+                for (size_t d = c - 1; d <= c + 1; ++d) {
+                    if (plain[d].any) near.add(plain[d].min), near.add(plain[d].max);
+                    if (drawn[d].any) nearDrawn.add(drawn[d].min), nearDrawn.add(drawn[d].max);
+                }
+                const QByteArray col = where + ", column " + QByteArray::number(qulonglong(c - 1));
+                if (drawn[c].any) QVERIFY2(near.any && drawn[c].min >= near.min && drawn[c].max <= near.max, col + ": drawn beyond the samples");
+                if (plain[c].any) QVERIFY2(nearDrawn.any && plain[c].min >= nearDrawn.min && plain[c].max <= nearDrawn.max, col + ": a sample lost");
+            }
+        }
+        QVERIFY(snapped > 20);
     }
 };
 

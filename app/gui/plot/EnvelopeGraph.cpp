@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/EnvelopeGraph.h"
 
+#include "app/gui/plot/PlotSurface.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -132,6 +134,9 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
     const uint32_t px = qPremultiply(color.rgba());
     uchar* bits = image->bits();
     const qsizetype stride = image->bytesPerLine();
+    // On the plot's own surface the spans go to its canvas: all traces are written in one pass
+    // once the last graph is drawn.
+    if (auto* surface = qobject_cast<PlotSurface*>(parentPlot()); surface && w == 1 && surface->canvas().add(image, px, spans_, dx, dy, clip)) return true;
     // Row by row over the merged rectangles: consecutive pixels of a row share cache lines,
     // a column's would each touch its own.
     mergeColumns(spans_, &blocks_);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "app/gui/plot/SpanCanvas.h"
+
 #include <qcustomplot.h>
 
 #include <QImage>
@@ -18,13 +20,22 @@ class PlotSurface : public QCustomPlot {
 public:
     explicit PlotSurface(QWidget* parent = nullptr);
 
+    // Where the dense traces of a replot wait to be written in one pass (EnvelopeGraph).
+    SpanCanvas& canvas() { return canvas_; }
+    // Call once the graphs exist: the canvas is written right after the last of them (before
+    // anything drawn later on their layer: cursors, items).
+    void placeTraceFlush();
+
 protected:
     void paintEvent(QPaintEvent* event) override;
 
 private:
     class ImageBuffer;
+    class TraceFlush;
     void installImageBuffer();
     ImageBuffer* image_ = nullptr;  // mPaintBuffers' first entry, owned there
+    SpanCanvas canvas_;
+    TraceFlush* flush_ = nullptr;  // a layerable of the plot (owned by it)
 };
 
 }  // namespace coscope::gui

@@ -144,6 +144,7 @@ void PlotView::rebuild() {
         }
     }
     if (QCPAxis* t = timeAxis()) t->setLabel(tr("Time [s]"));
+    static_cast<PlotSurface*>(plot_)->placeTraceFlush();  // after the graphs, before the cursors
 
     // One legend in the top rect; a click on an entry hides or shows its trace.
     auto* legend = new QCPLegend;
@@ -212,20 +213,25 @@ void PlotView::setLegendVisible(bool on) {
 }
 
 void PlotView::rescaleY() {
+    for (Track& t : tracks_) {
+        t.anyVisible = false;
+        for (auto it = t.graph->data()->constBegin(); it != t.graph->data()->constEnd(); ++it) {
+            if (it->key < from_ || it->key > to_ || !std::isfinite(it->value)) continue;
+            t.visibleMin = t.anyVisible ? std::min(t.visibleMin, it->value) : it->value;
+            t.visibleMax = t.anyVisible ? std::max(t.visibleMax, it->value) : it->value;
+            t.anyVisible = true;
+        }
+    }
+    fitY();
+}
+
+void PlotView::fitY() {
     // Per y-axis: the extremes of the visible points of every graph on it.
     std::vector<std::pair<QCPAxis*, QCPRange>> ranges;
     for (size_t i = 0; i < tracks_.size(); ++i) {
         const Track& t = tracks_[i];
-        if (signals_[i].digital) continue;
-        bool found = false;
-        QCPRange r(0, 0);
-        for (auto it = t.graph->data()->constBegin(); it != t.graph->data()->constEnd(); ++it) {
-            if (it->key < from_ || it->key > to_ || !std::isfinite(it->value)) continue;
-            if (!found) r = QCPRange(it->value, it->value);
-            else r.expand(it->value);
-            found = true;
-        }
-        if (!found) continue;
+        if (signals_[i].digital || !t.anyVisible) continue;
+        const QCPRange r(t.visibleMin, t.visibleMax);
         auto slot = std::find_if(ranges.begin(), ranges.end(), [&](const auto& p) { return p.first == t.yAxis; });
         if (slot == ranges.end()) ranges.emplace_back(t.yAxis, r);
         else slot->second.expand(r);
@@ -250,17 +256,31 @@ bool PlotView::refresh(bool force) {
     for (size_t i = 0; i < tracks_.size(); ++i) {
         const PlotSignal& s = signals_[i];
         QVector<QCPGraphData> data;
+        tracks_[i].anyVisible = false;
         if (s.buffer) {
             tracks_[i].drawnAppended = s.buffer->appended();
-            const std::vector<SignalPoint> pts = s.buffer->decimate(t0, t1, width, s.digital ? s.key.bit : -1);
-            data.reserve(static_cast<qsizetype>(pts.size()));
-            for (const SignalPoint& p : pts) data.append(QCPGraphData(toSeconds(p.timeNs), s.valueOf(p.value)));
+            // Analog traces from the buffer's edge index (cost follows the columns shown);
+            // a bit's trace from the pyramid's AND/OR masks.
+            if (s.digital) points_ = s.buffer->decimate(t0, t1, width, s.key.bit);
+            else s.buffer->envelope(t0, t1, width, points_);
+            data.resize(static_cast<qsizetype>(points_.size()));
+            QCPGraphData* d = data.data();
+            Track& t = tracks_[i];
+            for (const SignalPoint& p : points_) {
+                *d = QCPGraphData(toSeconds(p.timeNs), s.valueOf(p.value));
+                if (d->key >= from_ && d->key <= to_ && std::isfinite(d->value)) {  // what rescaleY() would find
+                    t.visibleMin = t.anyVisible ? std::min(t.visibleMin, d->value) : d->value;
+                    t.visibleMax = t.anyVisible ? std::max(t.visibleMax, d->value) : d->value;
+                    t.anyVisible = true;
+                }
+                ++d;
+            }
         }
         // Dense min/max columns gain nothing from antialiasing and cost most of the paint time.
         tracks_[i].graph->setAntialiased(data.size() <= width);
         tracks_[i].graph->data()->set(data, true);
     }
-    if (autoY_) rescaleY();
+    if (autoY_) fitY();
     placeCursorItems();
     drawnFrom_ = from_;
     drawnTo_ = to_;

@@ -83,7 +83,10 @@ private:
         QCPAxis* yAxis = nullptr;
         QCPGraph* graph = nullptr;
         uint64_t drawnAppended = ~uint64_t(0);
+        double visibleMin = 0, visibleMax = 0;  // extremes of the drawn points in the time range
+        bool anyVisible = false;
     };
+    void fitY();  // each y-axis to its tracks' visible extremes
     void rebuild();
     void applyXRange(const QCPRange& r);
     void onPress(QMouseEvent* e);
@@ -94,6 +97,7 @@ private:
     QCustomPlot* plot_;
     std::vector<PlotSignal> signals_;
     std::vector<Track> tracks_;
+    std::vector<SignalPoint> points_;  // one trace's columns, reused by every refresh
     std::vector<QCPAxisRect*> rects_;
     std::vector<QCPItemStraightLine*> cursorItems_;
     Layout layout_ = Layout::Stacked;

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/gui/plot/SpanCanvas.h"
+
+#include <algorithm>
+#include <climits>
+#include <cstring>
+#include <utility>
+
+namespace coscope::gui {
+
+namespace {
+constexpr int kGroup = 16;  // columns of a group: 64 bytes of a row
+using V4 = int32_t __attribute__((vector_size(16)));
+}  // namespace
+
+void SpanCanvas::begin(QImage* image) {
+    image_ = image;
+    used_ = 0;
+}
+
+bool SpanCanvas::add(const QImage* image, uint32_t px, const QVector<QRect>& spans, int dx, int dy, const QRect& clip) {
+    if (!image_ || image != image_) return false;
+    for (qsizetype i = 1; i < spans.size(); ++i)
+        if (spans[i].x() <= spans[i - 1].x()) return false;
+    const QRect c = clip & image_->rect();
+    if (used_ == traces_.size()) traces_.emplace_back();
+    Trace& t = traces_[used_++];
+    t.px = px;
+    t.spans.clear();
+    for (const QRect& s : spans) {
+        const int x = s.x() + dx, top = std::max(s.top() + dy, c.top()), bottom = std::min(s.bottom() + dy, c.bottom());
+        if (x >= c.left() && x <= c.right() && top <= bottom) t.spans.push_back({x, top, bottom});
+    }
+    return true;
+}
+
+void SpanCanvas::flush() {
+    if (!image_ || used_ == 0) {
+        used_ = 0;
+        return;
+    }
+    // Groups in column order; a cursor per trace walks its spans along.
+    std::vector<size_t> cursor(used_, 0);
+    for (;;) {
+        int x = INT_MAX;
+        for (size_t k = 0; k < used_; ++k)
+            if (cursor[k] < traces_[k].spans.size()) x = std::min(x, traces_[k].spans[cursor[k]].x);
+        if (x == INT_MAX) break;
+        writeGroup(x & ~(kGroup - 1), 0, used_, cursor);
+    }
+    used_ = 0;
+}
+
+void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_t>& cursor) {
+    // Per trace: its lanes' rows (none: top > bottom) and the rows it covers in this group.
+    struct Lanes {
+        V4 top[4], bottom[4];
+        int from, to;
+        V4 color;
+    };
+    Lanes lanes[16];
+    std::vector<Lanes> more;
+    Lanes* l = lanes;
+    if (last - first > 16) {
+        more.resize(last - first);
+        l = more.data();
+    }
+    size_t n = 0;
+    for (size_t k = first; k < last; ++k) {
+        const Trace& t = traces_[k];
+        alignas(16) int32_t top[kGroup], bottom[kGroup];
+        std::fill(std::begin(top), std::end(top), INT32_MAX);
+        std::fill(std::begin(bottom), std::end(bottom), INT32_MIN);
+        int from = INT_MAX, to = INT_MIN;
+        size_t& i = cursor[k];
+        for (; i < t.spans.size() && t.spans[i].x < x0 + kGroup; ++i) {
+            const Span& s = t.spans[i];
+            top[s.x - x0] = s.top;
+            bottom[s.x - x0] = s.bottom;
+            from = std::min(from, s.top);
+            to = std::max(to, s.bottom);
+        }
+        if (from > to) continue;
+        Lanes& a = l[n++];
+        std::memcpy(a.top, top, sizeof a.top);
+        std::memcpy(a.bottom, bottom, sizeof a.bottom);
+        a.from = from;
+        a.to = to;
+        const auto c = int32_t(t.px);
+        a.color = V4{c, c, c, c};
+    }
+    if (n == 0) return;
+    uchar* bits = image_->bits();
+    const qsizetype stride = image_->bytesPerLine();
+    if (x0 < 0 || x0 + kGroup > image_->width()) {  // the image's edge: lane by lane
+        for (size_t k = 0; k < n; ++k) {
+            alignas(16) int32_t top[kGroup], bottom[kGroup];
+            std::memcpy(top, l[k].top, sizeof top);
+            std::memcpy(bottom, l[k].bottom, sizeof bottom);
+            for (int q = 0; q < kGroup; ++q)
+                for (int y = top[q]; y <= bottom[q]; ++y) reinterpret_cast<uint32_t*>(bits + y * stride)[x0 + q] = uint32_t(l[k].color[0]);
+        }
+        return;
+    }
+    // Row by row: the row's 16 pixels once, every trace covering the row. Only the
+    // rows some trace covers (stacked traces leave the rows between their rects alone).
+    std::pair<int, int> bands[16];
+    std::vector<std::pair<int, int>> moreBands;
+    std::pair<int, int>* band = bands;
+    if (n > 16) {
+        moreBands.resize(n);
+        band = moreBands.data();
+    }
+    for (size_t k = 0; k < n; ++k) band[k] = {l[k].from, l[k].to};
+    std::sort(band, band + n);
+    for (size_t b = 0; b < n;) {
+        const int from = band[b].first;
+        int to = band[b].second;
+        for (++b; b < n && band[b].first <= to + 1; ++b) to = std::max(to, band[b].second);
+        for (int y = from; y <= to; ++y) {
+            uchar* row = bits + y * stride + qsizetype(x0) * 4;
+            V4 p[4];
+            std::memcpy(p, row, sizeof p);
+            // The last trace first: a pixel it covers is final (it would be painted over the
+            // earlier ones), so each lane takes the first trace that covers it, and once all 16
+            // lanes are taken the traces below are not looked at (overlaid bands cover each other).
+            V4 taken[4] = {};
+            for (size_t k = n; k-- > 0;) {
+                const Lanes& a = l[k];
+                if (y < a.from || y > a.to) continue;
+                for (int q = 0; q < 4; ++q) {
+                    const V4 m = (a.top[q] <= y) & (a.bottom[q] >= y) & ~taken[q];
+                    p[q] = (p[q] & ~m) | (a.color & m);
+                    taken[q] |= m;
+                }
+                const V4 all = taken[0] & taken[1] & taken[2] & taken[3];
+                if ((all[0] & all[1] & all[2] & all[3]) == -1) break;
+            }
+            std::memcpy(row, p, sizeof p);
+        }
+    }
+}
+
+}  // namespace coscope::gui
