@@ -12,10 +12,12 @@
 //    gap between event-loop ticks (budget 100 ms: the window stays interactive).
 //  - BM_Open10M: a 10 M-frame candump -L file (written once to a temp dir) opened in a
 //    Workspace with a Trace dock until the first 40 rows are in the model and decoded. Budget 1 s.
-//    Then, in the same run, until the load job is done: every frame in the store and handed to
-//    the consumers (plot signal buffers, node table), so filters, SDO grouping and the plot work
-//    on the whole log. Budget 2 s ("fully indexed"). Resident bytes per frame: the process's
-//    resident set after the load minus before it, over 10 M.
+//    Then, in the same run, until the load job is done (every frame in the store and handed to
+//    the consumers: plot signal buffers, node table, events), and until the trace decoder's
+//    snapshot index covers the whole store with the dictionaries the window's poll handed over
+//    (random access, filters and SDO grouping start from it): "fully indexed", budget 2 s.
+//    Resident bytes per frame: the process's resident set once indexed minus before the open,
+//    over 10 M, shown against the store's budget of 32 bytes per frame.
 // Counters: seconds, budget_ratio = budget / measured (≥ 1 meets the budget). Runs offscreen.
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDecoder.h"
@@ -48,6 +50,7 @@ constexpr double kFrameBudget = 1.0 / 60.0;  // one refresh of a 60 Hz display
 constexpr double kStallBudget = 0.1;         // longest acceptable GUI-thread stall
 constexpr double kOpenBudget = 1.0;          // DESIGN.md: rows within 1 s
 constexpr double kFullBudget = 2.0;          // DESIGN.md: fully indexed within 2 s
+constexpr double kStoreBytesBudget = 32;     // DESIGN.md: trace store, bytes per classic frame
 
 double residentBytes() {
     long pages = 0, resident = 0;
@@ -298,7 +301,7 @@ QString logFile() {
 
 void BM_Open10M(benchmark::State& state) {
     const QString path = logFile();
-    double firstRows = 0, worst = 0, fullWorst = 0, perFrame = 0;
+    double firstRows = 0, worst = 0, loadedWorst = 0, fullWorst = 0, perFrame = 0;
     for (auto _ : state) {
         const double rssBefore = residentBytes();
         Workspace ws;
@@ -313,9 +316,11 @@ void BM_Open10M(benchmark::State& state) {
             return;
         }
         dock.rebind();
-        // The main window pulls every 33 ms; the first page must be in the model and decoded.
+        // The main window pulls every 33 ms (Workspace::poll, then the docks); the first page
+        // must be in the model and decoded.
         for (;;) {
             QApplication::processEvents(QEventLoop::AllEvents, 5);
+            ws.poll();
             dock.refresh();
             if (dock.model()->rowCount() >= kPageRows) {
                 fetchPage(*dock.model(), 0);
@@ -331,27 +336,48 @@ void BM_Open10M(benchmark::State& state) {
         firstRows = since(t0);
         worst = std::max(worst, firstRows);
         state.SetIterationTime(firstRows);
-        // Fully loaded: the job has read every frame and fed every consumer.
+        // Loaded: the job has read every frame and fed every consumer (node table, events,
+        // plot signal buffers).
         while (ws.loadJob() && !ws.loadJob()->isDone()) {
             QApplication::processEvents(QEventLoop::AllEvents, 5);
+            ws.poll();
             dock.refresh();
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
         }
+        ws.poll();  // hands the dictionaries matched while loading to the decoder
         dock.refresh();
         QApplication::processEvents();
+        loadedWorst = std::max(loadedWorst, since(t0));
+        // Fully indexed: also the decoder's snapshot index covers the whole store (random access
+        // to any row, filters and SDO grouping start from it; TraceDecoder), with the
+        // dictionaries the window handed over by then.
+        for (;;) {
+            const size_t need = ws.store()->size() / dissect::NetworkContext::checkpointInterval() + 1;
+            if (ws.traceDecoder().checkpointCount() >= need) break;
+            QApplication::processEvents(QEventLoop::AllEvents, 5);
+            ws.poll();
+            dock.refresh();
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
         fullWorst = std::max(fullWorst, since(t0));
         if (perFrame == 0) perFrame = (residentBytes() - rssBefore) / double(kFrames);  // first open: later ones reuse freed heap
     }
     state.counters["seconds"] = worst;
     state.counters["budget_ratio"] = kOpenBudget / worst;
+    state.counters["loaded_seconds"] = loadedWorst;
     state.counters["full_seconds"] = fullWorst;
+    state.counters["full_budget_ratio"] = kFullBudget / fullWorst;
     state.counters["resident_bytes_per_frame"] = perFrame;
-    std::printf("open 10 M-frame candump -L: first rows after %.3f s (budget %.1f s, ratio %.1fx), fully loaded after %.3f s (budget %.1f s), "
-                "%.1f resident bytes per frame\n",
-                worst, kOpenBudget, kOpenBudget / worst, fullWorst, kFullBudget, perFrame);
+    state.counters["store_budget_ratio"] = kStoreBytesBudget / perFrame;
+    std::printf("open 10 M-frame candump -L: first rows after %.3f s (budget %.1f s, ratio %.2fx), load job done after %.3f s, fully indexed "
+                "after %.3f s (budget %.1f s, ratio %.2fx), %.1f resident bytes per frame\n",
+                worst, kOpenBudget, kOpenBudget / worst, loadedWorst, fullWorst, kFullBudget, kFullBudget / fullWorst, perFrame);
     std::printf("BENCH gui_open_10m_first_rows %.3f s %.1f budget %.2f\n", worst, kOpenBudget, kOpenBudget / worst);
-    std::printf("BENCH gui_open_10m_fully_loaded %.3f s %.1f budget %.2f\n", fullWorst, kFullBudget, kFullBudget / fullWorst);
-    std::printf("BENCH gui_open_10m_resident_per_frame %.1f bytes - info -\n", perFrame);
+    std::printf("BENCH gui_open_10m_load_job_done %.3f s %.1f budget %.2f\n", loadedWorst, kFullBudget, kFullBudget / loadedWorst);
+    std::printf("BENCH gui_open_10m_fully_indexed %.3f s %.1f budget %.2f\n", fullWorst, kFullBudget, kFullBudget / fullWorst);
+    // DESIGN.md budgets the store at 32 bytes per classic frame; this is the whole process
+    // (store, decoder snapshots, node table, events, plot buffers) against that figure.
+    std::printf("BENCH gui_open_10m_resident_per_frame %.1f bytes %.0f store_budget %.2f\n", perFrame, kStoreBytesBudget, kStoreBytesBudget / perFrame);
 }
 BENCHMARK(BM_Open10M)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 

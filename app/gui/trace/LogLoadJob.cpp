@@ -9,6 +9,9 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <condition_variable>
+#include <deque>
+#include <thread>
 
 #include <spdlog/spdlog.h>
 
@@ -93,6 +96,34 @@ int64_t LogLoadJob::linesRead() const {
     return linesRead_;
 }
 
+namespace {
+
+// One batch read ahead by the parsing thread: its frames and the capture gaps found up to its
+// end (CaptureGap::frame counts the frames read from the start of the log).
+struct ReadBatch {
+    std::vector<CanFrame> frames;
+    size_t count = 0;
+    std::vector<logio::CaptureGap> gaps;
+};
+
+constexpr size_t kBatchFrames = 4096;
+constexpr size_t kBatchesAhead = 8;  // bounded: at most this many batches wait for the store
+
+}  // namespace
+
+void LogLoadJob::noteReaderLocked(const logio::LogReader& reader, size_t& seenDiagnostics) {
+    busNames_ = reader.busNames();
+    diagnosticCount_ = reader.diagnosticCount();
+    const auto& d = reader.diagnostics();
+    for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
+        diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+        problems_.push_back(d[seenDiagnostics]);
+    }
+    linesRead_ = reader.linesRead();
+}
+
+// Parsing runs on its own thread, a few batches ahead of this one, which appends them to the
+// store and hands them to the consumers (issue 19: the two overlap instead of taking turns).
 void LogLoadJob::run() {
     QString error;
     auto reader = logio::LogFormats::openReader(path_, &error);
@@ -104,20 +135,63 @@ void LogLoadJob::run() {
         std::lock_guard lock(mutex_);
         format_ = reader->formatName();
     }
-    std::vector<CanFrame> batch(4096);
-    size_t seenDiagnostics = 0;
-    size_t seenGaps = 0;
+    std::mutex queueMutex;
+    std::condition_variable queueChanged;
+    std::deque<ReadBatch> ready;     // parsed, waiting for the store
+    std::vector<ReadBatch> spare;    // emptied, for the parser to fill again
+    bool parsed = false;             // the parser reached the end (or was cancelled)
+    std::thread parser([&] {
+        size_t seenDiagnostics = 0;
+        size_t seenGaps = 0;
+        for (;;) {
+            ReadBatch b;
+            {
+                std::unique_lock lock(queueMutex);
+                queueChanged.wait(lock, [&] { return ready.size() < kBatchesAhead; });
+                if (!spare.empty()) {
+                    b = std::move(spare.back());
+                    spare.pop_back();
+                }
+            }
+            if (isCancelled()) reader->cancel();
+            b.frames.resize(kBatchFrames);
+            b.gaps.clear();
+            b.count = reader->read(b.frames.data(), b.frames.size());
+            for (const auto& gaps = reader->gaps(); seenGaps < gaps.size(); ++seenGaps) b.gaps.push_back(gaps[seenGaps]);
+            setProgress(reader->progress());
+            {
+                std::lock_guard lock(mutex_);
+                noteReaderLocked(*reader, seenDiagnostics);
+            }
+            std::lock_guard lock(queueMutex);
+            if (b.count == 0) {
+                parsed = true;
+                queueChanged.notify_all();
+                return;
+            }
+            ready.push_back(std::move(b));
+            queueChanged.notify_all();
+        }
+    });
     for (;;) {
-        if (isCancelled()) reader->cancel();
-        const size_t n = reader->read(batch.data(), batch.size());
-        if (n == 0) break;
+        if (isCancelled()) reader->cancel();  // thread-safe: the parser's read() returns 0 soon
+        ReadBatch b;
+        {
+            std::unique_lock lock(queueMutex);
+            queueChanged.wait(lock, [&] { return !ready.empty() || parsed; });
+            if (ready.empty()) break;
+            b = std::move(ready.front());
+            ready.pop_front();
+            queueChanged.notify_all();
+        }
+        const size_t n = b.count;
         const FrameNo first = static_cast<FrameNo>(store_->size());
-        store_->append(std::span<const CanFrame>(batch.data(), n));
+        store_->append(std::span<const CanFrame>(b.frames.data(), n));
         // The consumers see the frames before each gap, the gap, then the frames after it.
         FrameNo done = first;
         const FrameNo end = FrameNo(first + n);
-        for (const auto& gaps = reader->gaps(); seenGaps < gaps.size(); ++seenGaps) {
-            const TraceStore::Gap g{std::clamp(FrameNo(gaps[seenGaps].frame), done, end), gaps[seenGaps].lostNs, gaps[seenGaps].backNs};
+        for (const logio::CaptureGap& cg : b.gaps) {
+            const TraceStore::Gap g{std::clamp(FrameNo(cg.frame), done, end), cg.lostNs, cg.backNs};
             if (g.firstFrame > done)
                 for (const auto& c : consumers_) c(*store_, done, g.firstFrame - done);
             done = g.firstFrame;
@@ -132,31 +206,16 @@ void LogLoadJob::run() {
         } else if (budget_ && !spillFolder_.isEmpty() && store_->memoryBytes() > budget_ / 2) {
             startSpill();
         }
-        setProgress(reader->progress());
-        std::lock_guard lock(mutex_);
-        busNames_ = reader->busNames();
-        diagnosticCount_ = reader->diagnosticCount();
-        const auto& d = reader->diagnostics();
-        for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
-            diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
-            problems_.push_back(d[seenDiagnostics]);
-        }
-        linesRead_ = reader->linesRead();
+        std::lock_guard lock(queueMutex);
+        spare.push_back(std::move(b));
     }
+    parser.join();
     if (spill_) {
         spill_->close();  // all durable: the store evicts down to its budget
         store_->setMemoryBudget(budget_);
     }
-    std::lock_guard lock(mutex_);
-    busNames_ = reader->busNames();
-    diagnosticCount_ = reader->diagnosticCount();
-    const auto& d = reader->diagnostics();
-    for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
-        diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
-        problems_.push_back(d[seenDiagnostics]);
-    }
-    linesRead_ = reader->linesRead();
     if (reader->hasError()) fail(reader->errorString());
+    std::lock_guard lock(mutex_);
     spdlog::info("opened {}: {} frames ({}), {} problems", path_.toStdString(), store_->size(), format_.toStdString(), diagnosticCount_);
 }
 

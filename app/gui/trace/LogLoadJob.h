@@ -51,6 +51,7 @@ protected:
 
 private:
     void startSpill();
+    void noteReaderLocked(const logio::LogReader& reader, size_t& seenDiagnostics);  // mutex_ held
     QString path_;
     std::shared_ptr<TraceStore> store_;
     std::vector<CaptureSession::Consumer> consumers_;
