@@ -208,9 +208,7 @@ void appendTransferJson(QByteArray& out, const CanFrame& f, const Dissection& d,
 
 namespace {
 // Writes the UTF-8 of `s` at `p` (room for 3 bytes per UTF-16 unit); returns the end.
-char* putUtf8(char* p, const QString& s) {
-    const qsizetype n = s.size();
-    const char16_t* src = reinterpret_cast<const char16_t*>(s.constData());
+char* putUtf8(char* p, const char16_t* src, qsizetype n) {
     qsizetype i = 0;
 #if defined(__SSE2__)
     // 8 ASCII code units at a time; anything else goes to the loop below.
@@ -225,7 +223,7 @@ char* putUtf8(char* p, const QString& s) {
         const char16_t c = src[i];
         if (c >= 0x80) {
             // Rare: let Qt encode it (surrogates, replacement of broken pairs).
-            const QByteArray u = s.toUtf8();
+            const QByteArray u = QString::fromRawData(reinterpret_cast<const QChar*>(src), n).toUtf8();
             std::memcpy(p, u.constData(), static_cast<size_t>(u.size()));
             return p + u.size();
         }
@@ -233,13 +231,19 @@ char* putUtf8(char* p, const QString& s) {
     }
     return p + n;
 }
+char* putUtf8(char* p, const QString& s) { return putUtf8(p, reinterpret_cast<const char16_t*>(s.constData()), s.size()); }
 }  // namespace
 
 void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
+    appendText(out, f, std::u16string_view(reinterpret_cast<const char16_t*>(d.summary.constData()), static_cast<size_t>(d.summary.size())),
+               d.warnings.constData(), d.warnings.size(), bus);
+}
+
+void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
     // Hand-formatted straight into the output buffer: this runs for every line of a
     // million-frame decode. The space reserved is an upper bound; the rest is cut after.
-    qsizetype bound = 18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * d.summary.size() + 1;
-    for (const QString& w : d.warnings) bound += 4 + 3 * w.size();
+    qsizetype bound = 18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * static_cast<qsizetype>(summary.size()) + 1;
+    for (qsizetype i = 0; i < warningCount; ++i) bound += 4 + 3 * warnings[i].size();
     const qsizetype at = out.size();
     out.resize(at + bound);
     char* const start = out.data() + at;
@@ -305,11 +309,11 @@ void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const Q
     pad += 2;
     std::memset(o, ' ', static_cast<size_t>(pad));
     o += pad;
-    o = putUtf8(o, d.summary);
-    for (const QString& w : d.warnings) {
+    o = putUtf8(o, summary.data(), static_cast<qsizetype>(summary.size()));
+    for (qsizetype i = 0; i < warningCount; ++i) {
         std::memcpy(o, "  ! ", 4);
         o += 4;
-        o = putUtf8(o, w);
+        o = putUtf8(o, warnings[i]);
     }
     *o++ = '\n';
     out.resize(at + (o - start));

@@ -7,6 +7,8 @@
 #include <QByteArray>
 #include <QString>
 
+#include <string_view>
+
 namespace coscope::dissect {
 
 // Output formats of `coscope-cli decode` (UTF-8, one line per frame, '\n' ended).
@@ -25,6 +27,9 @@ namespace coscope::dissect {
 void appendJson(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
 void appendTransferJson(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
 void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
+// The same line from its parts (the summary as UTF-16, `warningCount` warnings), for a
+// formatting thread that holds the texts in buffers of its own (app/cli/TextWriter).
+void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus);
 void appendCsv(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
 QByteArray csvHeader();
 // The transfer record as a text line (for text/csv output).

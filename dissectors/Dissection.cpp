@@ -24,7 +24,9 @@ void Dissection::reset(Level level) {
     if (!warnings.isEmpty()) warnings.clear();
     signalCount = 0;
     hasTransfer = false;
-    if (!namesFrom.isEmpty()) namesFrom.resize(0);
+    // Assigned from a dictionary's bundledName (shared data): release it rather than resize it,
+    // which would detach, i.e. allocate a copy for every PDO/SDO frame.
+    if (!namesFrom.isNull()) namesFrom = QString();
     fieldCount_ = 0;
     if (!tree.empty()) tree.clear();
 }

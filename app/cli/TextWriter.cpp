@@ -11,7 +11,6 @@ namespace coscope::cli {
 void TextWriter::run() {
     QByteArray out;
     out.reserve(1 << 21);
-    dissect::Dissection d;
     const QString bus0 = QStringLiteral("can0");
     for (;;) {
         std::unique_ptr<Job> job;
@@ -24,12 +23,10 @@ void TextWriter::run() {
         }
         for (const Line& l : job->lines) {
             const CanFrame& f = job->frames[l.frame];
-            d.summary.resize(static_cast<qsizetype>(l.summaryLength));
-            if (l.summaryLength) std::memcpy(static_cast<void*>(d.summary.data()), job->summaries.data() + l.summaryAt, l.summaryLength * sizeof(char16_t));
-            if (!d.warnings.isEmpty()) d.warnings.clear();
-            for (int i = 0; i < l.warningCount; ++i) d.warnings.append(job->warnings[l.warningAt + i]);
             const QString& bus = f.bus < job->busNames.size() ? job->busNames[f.bus] : bus0;
-            dissect::appendText(out, f, d, bus);
+            // Straight from the job's buffers: no copy of the texts per line.
+            dissect::appendText(out, f, std::u16string_view(job->summaries.data() + l.summaryAt, l.summaryLength),
+                                l.warningCount ? job->warnings.constData() + l.warningAt : nullptr, l.warningCount, bus);
             if (l.transferLength) out.append(job->transfers.constData() + l.transferAt, l.transferLength);
         }
         if (out.size() > (1 << 20)) {

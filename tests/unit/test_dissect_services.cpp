@@ -240,6 +240,39 @@ private slots:
         QCOMPARE(o.value("ext").toBool(), true);
         QCOMPARE(o.value("service").toString(), QStringLiteral("UNKNOWN"));
     }
+
+    // The text line from its parts (TextWriter's path) has the bytes of the line from the
+    // Dissection: non-ASCII summary, two warnings, a second bus, an empty summary.
+    void textLineFromParts() {
+        NetworkContext ctx;
+        Dissection d;
+        CanFrame f = fr(0x080, {0x00, 0x01, 0x02});
+        f.timestampNs = 12345678901LL;
+        ctx.dissect(f, d, Dissection::Level::Flat);
+        QCOMPARE(d.warnings.size(), 2);
+        d.summary = QStringLiteral("SYNC \u4f4d\u7f6e \u00b5s \U0001F600 counter 0");
+        const QString bus = QStringLiteral("vcan1");
+        QByteArray whole, parts;
+        appendText(whole, f, d, bus);
+        const std::u16string summary(reinterpret_cast<const char16_t*>(d.summary.constData()), static_cast<size_t>(d.summary.size()));
+        appendText(parts, f, summary, d.warnings.constData(), d.warnings.size(), bus);
+        QCOMPARE(parts, whole);
+        QCOMPARE(parts, QByteArray("         12.345678  vcan1  080  [3]  00 01 02                   SYNC \xe4\xbd\x8d\xe7\xbd\xae \xc2\xb5s \xf0\x9f\x98\x80 counter 0"
+                                   "  ! SYNC with 3 bytes; CiA 301 allows 0 or 1  ! SYNC counter 0 is outside 1..240\n"));
+        QByteArray empty;
+        appendText(empty, f, std::u16string_view(), nullptr, 0, bus);
+        QCOMPARE(empty, QByteArray("         12.345678  vcan1  080  [3]  00 01 02                   \n"));
+    }
+
+    // reset() forgets the dictionary the names came from, and leaves that dictionary's name alone.
+    void resetClearsNamesFrom() {
+        Dissection d;
+        const QString bundled = QStringLiteral("delta-asda-a2");
+        d.namesFrom = bundled;
+        d.reset(Dissection::Level::Flat);
+        QVERIFY(d.namesFrom.isEmpty());
+        QCOMPARE(bundled, QStringLiteral("delta-asda-a2"));
+    }
 };
 
 QTEST_GUILESS_MAIN(DissectServices)
