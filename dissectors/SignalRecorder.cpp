@@ -113,7 +113,7 @@ SignalScale SignalRecorder::scaleFor(int bus, int node, const QString& dictionar
     });
 }
 
-SignalRecorder::Slot& SignalRecorder::slotFor(int bus, int node, const PdoMapEntry& e, const QString& pdo) {
+SignalRecorder::Slot& SignalRecorder::slotFor(int bus, int node, const PdoMapEntry& e, bool tpdo, int pdoNumber) {
     const SignalKey key{static_cast<uint8_t>(bus), static_cast<uint8_t>(node), e.index, e.sub, -1};
     const auto it = slots_.find(key.packed());
     if (it != slots_.end()) return *it->second;
@@ -122,7 +122,7 @@ SignalRecorder::Slot& SignalRecorder::slotFor(int bus, int node, const PdoMapEnt
     i.key = key;
     i.name = e.name;
     i.object = objectText(e.index, e.sub);
-    i.pdo = pdo;
+    i.pdo = pdoText(tpdo, pdoNumber);  // only for a new slot: no string per frame
     i.dictionary = context_.node(bus, node).dictionaryName;
     std::tie(i.rawUnit, i.rawFactor) = unitOf(e, i.dictionary);
     i.scale = scaleFor(bus, node, i.dictionary, i.rawUnit, i.rawFactor);
@@ -151,7 +151,7 @@ void SignalRecorder::ensureCatalogue() {
                     for (int k = 0; k < cfg.count && k < static_cast<int>(cfg.entries.size()); ++k) {
                         const PdoMapEntry& e = cfg.entries[static_cast<size_t>(k)];
                         if (e.dummy || e.bits == 0) continue;
-                        Slot& s = slotFor(bus, node, e, pdoText(dir == 1, static_cast<int>(p) + 1));
+                        Slot& s = slotFor(bus, node, e, dir == 1, static_cast<int>(p) + 1);
                         const auto [unit, factor] = unitOf(e, ns.dictionaryName);
                         if (s.info.dictionary == ns.dictionaryName && s.info.name == e.name && s.info.rawUnit == unit && s.info.rawFactor == factor) continue;
                         std::lock_guard lock(mutex_);
@@ -184,6 +184,17 @@ void SignalRecorder::learnParameter(int bus, int node, const SdoTransferRecord& 
     revision_.fetch_add(1, std::memory_order_acq_rel);
 }
 
+// A PDO's first frame: true once per bus and COB-ID (a flat table for 11-bit identifiers, no
+// tree lookup per PDO frame).
+bool SignalRecorder::notePdoSeen(int bus, uint32_t id, bool extended) {
+    if (extended) return pdoKeysExtended_.insert(uint64_t(bus) << 32 | id).second;
+    if (static_cast<size_t>(bus) >= pdoSeenStd_.size()) pdoSeenStd_.resize(static_cast<size_t>(bus) + 1);
+    auto& seen = pdoSeenStd_[static_cast<size_t>(bus)];
+    if (seen.test(id & 0x7FF)) return false;
+    seen.set(id & 0x7FF);
+    return true;
+}
+
 void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t count) {
     applyDictionaries();
     if (!count) return;
@@ -200,7 +211,7 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
         const int pdoIndex = canopen::pdoNumber(scratch_.service);
         if (pdoIndex < 0 || f.isRemote() || scratch_.node < 1 || scratch_.node > 127) continue;
         const bool tpdo = canopen::isTpdo(scratch_.service);
-        if (pdoKeys_.insert(uint64_t(f.bus) << 32 | f.id).second) {
+        if (notePdoSeen(f.bus, f.id, f.isExtended())) {
             std::lock_guard lock(mutex_);
             pdos_.push_back({f.bus, f.id, scratch_.node, pdoText(tpdo, scratch_.pdoNumber)});
         }
@@ -214,7 +225,7 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
             if (e.dummy) continue;
             const std::optional<double> v = pdoValue(e, f.data.data(), f.payloadSize(), at);
             if (!v) continue;
-            Slot& s = slotFor(f.bus, scratch_.node, e, pdoText(tpdo, scratch_.pdoNumber));
+            Slot& s = slotFor(f.bus, scratch_.node, e, tpdo, scratch_.pdoNumber);
             if (s.pending.empty()) dirty_.push_back(&s);
             s.pending.push_back({f.timestampNs, *v, n});
         }

@@ -10,6 +10,7 @@
 #include <QString>
 
 #include <atomic>
+#include <bitset>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -73,7 +74,8 @@ private:
         std::shared_ptr<SignalBuffer> buffer;
         std::vector<SignalSample> pending;  // ingest thread only
     };
-    Slot& slotFor(int bus, int node, const PdoMapEntry& e, const QString& pdo);
+    Slot& slotFor(int bus, int node, const PdoMapEntry& e, bool tpdo, int pdoNumber);
+    bool notePdoSeen(int bus, uint32_t id, bool extended);
     Slot& rawSlot(int bus, size_t number);
     void recordRaw(const CanFrame& f, FrameNo n);
     void ensureCatalogue();
@@ -92,7 +94,8 @@ private:
     bool namesChanged_ = false;
     std::vector<RawSignal> pendingRaw_, raw_;  // pendingRaw_ guarded by mutex_; raw_ ingest thread
     bool rawChanged_ = false;
-    std::set<uint64_t> pdoKeys_;  // ingest thread: bus << 32 | COB-ID of the PDOs in pdos_
+    std::vector<std::bitset<2048>> pdoSeenStd_;  // ingest thread: [bus][11-bit COB-ID] in pdos_
+    std::set<uint64_t> pdoKeysExtended_;         // ingest thread: bus << 32 | 29-bit COB-ID in pdos_
     std::vector<PdoSeen> pdos_;   // guarded by mutex_
     std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value
     std::atomic<uint64_t> revision_{1};
