@@ -66,6 +66,7 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
         l = more.data();
     }
     size_t n = 0;
+    int64_t pixels = 0;  // what the spans cover, counted once per trace
     for (size_t k = first; k < last; ++k) {
         const Trace& t = traces_[k];
         alignas(16) int32_t top[kGroup], bottom[kGroup];
@@ -77,6 +78,7 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
             const Span& s = t.spans[i];
             top[s.x - x0] = s.top;
             bottom[s.x - x0] = s.bottom;
+            pixels += s.bottom - s.top + 1;
             from = std::min(from, s.top);
             to = std::max(to, s.bottom);
         }
@@ -92,16 +94,6 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
     if (n == 0) return;
     uchar* bits = image_->bits();
     const qsizetype stride = image_->bytesPerLine();
-    if (x0 < 0 || x0 + kGroup > image_->width()) {  // the image's edge: lane by lane
-        for (size_t k = 0; k < n; ++k) {
-            alignas(16) int32_t top[kGroup], bottom[kGroup];
-            std::memcpy(top, l[k].top, sizeof top);
-            std::memcpy(bottom, l[k].bottom, sizeof bottom);
-            for (int q = 0; q < kGroup; ++q)
-                for (int y = top[q]; y <= bottom[q]; ++y) reinterpret_cast<uint32_t*>(bits + y * stride)[x0 + q] = uint32_t(l[k].color[0]);
-        }
-        return;
-    }
     // Row by row: the row's 16 pixels once, every trace covering the row. Only the
     // rows some trace covers (stacked traces leave the rows between their rects alone).
     std::pair<int, int> bands[16];
@@ -113,10 +105,33 @@ void SpanCanvas::writeGroup(int x0, size_t first, size_t last, std::vector<size_
     }
     for (size_t k = 0; k < n; ++k) band[k] = {l[k].from, l[k].to};
     std::sort(band, band + n);
+    size_t merged = 0;  // merged in place: the rows some trace covers
+    int64_t rows = 0;
     for (size_t b = 0; b < n;) {
-        const int from = band[b].first;
-        int to = band[b].second;
-        for (++b; b < n && band[b].first <= to + 1; ++b) to = std::max(to, band[b].second);
+        std::pair<int, int> m = band[b];
+        for (++b; b < n && band[b].first <= m.second + 1; ++b) m.second = std::max(m.second, band[b].second);
+        band[merged++] = m;
+        rows += m.second - m.first + 1;
+    }
+    // Thin spans (a short recording, a zoom): each trace's spans column by column, one store a
+    // pixel they cover, within the group's stripe of the image (a few tens of KiB, kept in the
+    // cache across the traces). Tall overlaid spans (a long recording's envelopes) cover each
+    // other: row by row below, every pixel once. The row sweep costs about a store's worth per
+    // trace on a row; measured (8 x 1 kHz, shared axes, one way or the other for every group):
+    // columns 3.5x cheaper at 10 min, rows 4x cheaper at 1 h.
+    constexpr int64_t kRowSweepAbove = 32;  // span pixels per row of the union
+    if (x0 < 0 || x0 + kGroup > image_->width() || pixels <= kRowSweepAbove * rows) {  // the image's edge, or thin spans: lane by lane
+        for (size_t k = 0; k < n; ++k) {
+            alignas(16) int32_t top[kGroup], bottom[kGroup];
+            std::memcpy(top, l[k].top, sizeof top);
+            std::memcpy(bottom, l[k].bottom, sizeof bottom);
+            for (int q = 0; q < kGroup; ++q)
+                for (int y = top[q]; y <= bottom[q]; ++y) reinterpret_cast<uint32_t*>(bits + y * stride)[x0 + q] = uint32_t(l[k].color[0]);
+        }
+        return;
+    }
+    for (size_t b = 0; b < merged; ++b) {
+        const auto [from, to] = band[b];
         for (int y = from; y <= to; ++y) {
             uchar* row = bits + y * stride + qsizetype(x0) * 4;
             V4 p[4];
