@@ -6,6 +6,7 @@
 
 #include "core/can/CanFrame.h"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -133,16 +134,25 @@ public:
         int64_t lostNs;
         int64_t backNs;
     };
+    // Kept in frame order; gaps before the same frame in the order they were added.
     void addGap(const Gap& gap) {
         std::lock_guard lock(gapMutex_);
-        gaps_.push_back(gap);
+        gaps_.insert(std::upper_bound(gaps_.begin(), gaps_.end(), gap.firstFrame, [](FrameNo n, const Gap& g) { return n < g.firstFrame; }), gap);
     }
     std::vector<Gap> gaps() const {
         std::lock_guard lock(gapMutex_);
         return gaps_;
     }
+    // The gaps that end right before frame n (usually none; two when the adapter was lost again
+    // before its first frame came). A binary search: views ask for every row they paint.
+    std::vector<Gap> gapsAt(FrameNo n) const {
+        std::lock_guard lock(gapMutex_);
+        const auto [b, e] = std::equal_range(gaps_.begin(), gaps_.end(), Gap{n, 0, 0}, [](const Gap& x, const Gap& y) { return x.firstFrame < y.firstFrame; });
+        return {b, e};
+    }
 
 private:
+    static int64_t nowMs();  // steady clock, for the retired index tables' age
     static constexpr uint32_t kFdBlockBits = 20;  // FD payloads: 1 MiB blocks per chunk
     static constexpr uint32_t kFdBlocks = 4;      // 65536 frames x 64 bytes
     struct Chunk {

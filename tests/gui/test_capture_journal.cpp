@@ -18,12 +18,14 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 #include <csignal>
@@ -67,7 +69,8 @@ QString makeUnclosedJournal(const QString& name, int frames) {
 }
 // As makeUnclosedJournal, with node 5's heartbeat (operational) before a gap at frame `gapAt`
 // and only PDOs of another node after it; the gap is recorded as the app records one live.
-QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs) {
+// secondGap: the adapter was lost a second time, 2 s after it came back, before any frame came.
+QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs, bool secondGap = false) {
     QDir().mkpath(capturesFolder());
     const QString path = capturesFolder() + u'/' + name;
     CaptureJournal j;
@@ -84,7 +87,12 @@ QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, i
     *lostNs = v[size_t(gapAt - 1)].timestampNs + 500'000'000LL;
     *backNs = v[size_t(gapAt)].timestampNs - 1'000'000LL;
     j.append(std::span(v).first(size_t(gapAt)));
-    j.addGap({FrameNo(gapAt), *lostNs, *backNs});
+    if (secondGap) {
+        j.addGap({FrameNo(gapAt), *lostNs, *lostNs + 1'000'000'000LL});
+        j.addGap({FrameNo(gapAt), *lostNs + 3'000'000'000LL, *backNs});
+    } else {
+        j.addGap({FrameNo(gapAt), *lostNs, *backNs});
+    }
     j.append(std::span(v).subspan(size_t(gapAt)));
     j.close();
     QFile s(CaptureJournal::sidecarOf(path));
@@ -214,6 +222,38 @@ private slots:
         QCOMPARE(r.gaps()[0].frame, uint64_t(200));
         QCOMPARE(r.gaps()[0].lostNs, lost);
         QCOMPARE(r.gaps()[0].backNs, back);
+    }
+
+    // Two gaps before one frame (lost, back, lost again before a frame came): the row of that
+    // frame shows both, in order, and Find finds it by the second one's text.
+    void twoGapsBeforeOneFrameBothShow() {
+        int64_t lost = 0, back = 0;
+        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261126-111111-gaps.pcapng"), 300, 200, &lost, &back, true);
+        QVERIFY(!path.isEmpty());
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.journalOffer()->offeredPath(), path);
+        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
+        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        QCOMPARE(w.workspace()->store()->gaps().size(), size_t(2));
+        const QAbstractItemModel* m = w.traceDock()->view()->model();
+        QVERIFY(waitFor([&] { return m->rowCount() == 300; }));
+        auto clock = [](int64_t ns) { return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz")); };
+        const QString firstLost = clock(lost), secondLost = clock(lost + 3'000'000'000LL);
+        for (const int role : {int(Qt::DisplayRole), int(Qt::ToolTipRole)}) {
+            const QString text = m->index(200, TraceModel::Summary).data(role).toString();
+            QCOMPARE(text.count(QStringLiteral("Bus lost at")), 2);
+            QVERIFY2(text.indexOf(firstLost) >= 0 && text.indexOf(firstLost) < text.indexOf(secondLost), qPrintable(text));
+        }
+        QVERIFY(m->index(199, TraceModel::Summary).data().toString().indexOf(QStringLiteral("Bus lost")) < 0);
+        QVERIFY(m->index(201, TraceModel::Summary).data().toString().indexOf(QStringLiteral("Bus lost")) < 0);
+        // Find (the find field, Enter) reaches the row by the text of the second gap.
+        auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
+        QVERIFY(find);
+        typeAndEnter(find, secondLost);
+        QVERIFY(waitFor([&] { return w.traceDock()->view()->currentRow() == 200; }));
     }
 
     // Issue 16 "Bounded memory" for File ▸ Open: a log larger than the trace memory budget is

@@ -37,10 +37,10 @@ QString summaryText(const dissect::Dissection& d) {
 }
 
 bool FrameMatcher::gapMatches(const TraceStore& store, FrameNo n) {
-    if (!gapsRead_) {  // the row's summary starts with the gap's text (TraceModel::gapText)
+    if (!gapsRead_) {  // the row's summary starts with its gaps' text (TraceModel::gapsText)
         gapsRead_ = true;
         for (const TraceStore::Gap& g : store.gaps())
-            if (!gaps_.count(g.firstFrame)) gaps_.emplace(g.firstFrame, TraceModel::gapText(g).contains(text_, Qt::CaseInsensitive));
+            if (TraceModel::gapText(g).contains(text_, Qt::CaseInsensitive)) gaps_[g.firstFrame] = true;
     }
     const auto it = gaps_.find(n);
     return it != gaps_.end() && it->second;

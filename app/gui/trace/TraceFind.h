@@ -67,8 +67,8 @@ private:
     QString text_;
     std::shared_ptr<const FrameDecoder> decoder_;
     dissect::Dissection scratch_;
-    // The frames whose row says a gap (an adapter lost) ended before them (the first gap, as
-    // TraceModel::gapBefore() shows), and whether that text holds text_: read once from the store.
+    // The frames whose row says that a gap (an adapter lost) holding text_ ended before them
+    // (TraceModel::gapsText): read once from the store.
     std::map<FrameNo, bool> gaps_;
     bool gapsRead_ = false;
 };

@@ -345,15 +345,16 @@ void TraceModel::refreshLatest() {
     if (firstChanged >= 0) emit dataChanged(index(firstChanged, 0), index(lastChanged, ColumnCount - 1));
 }
 
-std::optional<TraceStore::Gap> TraceModel::gapBefore(FrameNo n) const {
-    for (const TraceStore::Gap& g : store_->gaps())
-        if (g.firstFrame == n) return g;
-    return std::nullopt;
-}
 
 QString TraceModel::gapText(const TraceStore::Gap& g) {
     auto clock = [](int64_t ns) { return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz")); };
     return tr("Bus lost at %1, back at %2 (%3 s without frames)").arg(clock(g.lostNs), clock(g.backNs)).arg(double(g.backNs - g.lostNs) / 1e9, 0, 'f', 1);
+}
+
+QString TraceModel::gapsText(const std::vector<TraceStore::Gap>& gaps) {
+    QStringList texts;
+    for (const TraceStore::Gap& g : gaps) texts << gapText(g);
+    return texts.join(QStringLiteral(" · "));
 }
 
 FrameNo TraceModel::frameAt(int row) const {
@@ -517,19 +518,19 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
         return {};
     case Qt::BackgroundRole:
         if (isBookmarked(n)) return QBrush(QColor(255, 236, 150));
-        if (gapBefore(n)) return QBrush(QColor(200, 200, 215));
+        if (!gapsBefore(n).empty()) return QBrush(QColor(200, 200, 215));
         if (store_->record(n).flags & CanFrame::Error) return QBrush(QColor(255, 205, 205));
         return {};
     case Qt::ForegroundRole:
         if (col == Direction && (store_->record(n).flags & CanFrame::Tx)) return QBrush(QColor(30, 90, 200));
         return {};
     case Qt::ToolTipRole:
-        if (const auto gap = gapBefore(n)) return gapText(*gap);
+        if (const auto gaps = gapsBefore(n); !gaps.empty()) return gapsText(gaps);
         if (col == Summary) return summaryOf(n);
         return {};
     case Qt::DisplayRole:
         if (col == Summary)
-            if (const auto gap = gapBefore(n)) return gapText(*gap) + QStringLiteral(" · ") + summaryOf(n);
+            if (const auto gaps = gapsBefore(n); !gaps.empty()) return gapsText(gaps) + QStringLiteral(" · ") + summaryOf(n);
         break;
     default: return {};
     }

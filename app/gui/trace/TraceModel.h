@@ -104,9 +104,11 @@ public:
 
     // Decoded one-line summary of frame n (cached).
     QString summaryOf(FrameNo n) const;
-    // The gap of a lost adapter that ends right before frame n (TraceStore::Gap), shown on its row.
-    std::optional<TraceStore::Gap> gapBefore(FrameNo n) const;
+    // The gaps of a lost adapter that end right before frame n (TraceStore::Gap), shown on its
+    // row: gapText() of each, in the order they happened.
+    std::vector<TraceStore::Gap> gapsBefore(FrameNo n) const { return store_->gapsAt(n); }
     static QString gapText(const TraceStore::Gap& gap);
+    static QString gapsText(const std::vector<TraceStore::Gap>& gaps);
     QString timeText(FrameNo n, int row) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
