@@ -2,42 +2,13 @@
 #include "dissectors/ObjectNames.h"
 
 #include "dissectors/ParameterNames.h"
+#include "dissectors/SidecarNames.h"
 
-#include <QDir>
-#include <QFile>
-#include <QHash>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QRegularExpression>
-
-#include <mutex>
 
 namespace coscope::dissect {
 
 namespace {
-
-// dictionary name -> "6041" / "1018:01" -> {"zh_TW": …, "zh_CN": …}
-using Names = QHash<QString, QHash<QString, QJsonObject>>;
-
-Names loadAll() {
-    Names names;
-    const QDir dir(QStringLiteral(":/dictionaries"));
-    for (const QString& file : dir.entryList({QStringLiteral("*.json")}, QDir::Files)) {
-        QFile f(dir.filePath(file));
-        if (!f.open(QIODevice::ReadOnly)) continue;
-        const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("objectNames")).toObject();
-        auto& table = names[file.chopped(5)];
-        for (auto it = o.begin(); it != o.end(); ++it) table.insert(it.key(), it.value().toObject());
-    }
-    return names;
-}
-
-const Names& all() {
-    static std::once_flag once;
-    static Names names;
-    std::call_once(once, [] { names = loadAll(); });
-    return names;
-}
 
 QString key(std::uint16_t index, int sub) {
     QString k = QStringLiteral("%1").arg(index, 4, 16, QLatin1Char('0')).toUpper();
@@ -49,8 +20,9 @@ QString key(std::uint16_t index, int sub) {
 
 QString localObjectName(const QString& bundledName, std::uint16_t index, int sub, const QString& edsName, const QString& lang) {
     if (bundledName.isEmpty() || (lang != u"zh_TW" && lang != u"zh_CN")) return edsName;
-    const auto table = all().constFind(bundledName);
-    if (table == all().constEnd()) return edsName;
+    const SidecarSections& all = sidecarSections(QStringLiteral("objectNames"));
+    const auto table = all.constFind(bundledName);
+    if (table == all.constEnd()) return edsName;
     auto it = table->constFind(key(index, sub));
     // The objects of axis n of a multi-axis drive (CiA 402: index + 800h * (n - 1)).
     if (it == table->constEnd() && index >= 0x6800 && index < 0xA000)

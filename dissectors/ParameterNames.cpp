@@ -1,41 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/ParameterNames.h"
 
-#include <QDir>
-#include <QFile>
-#include <QHash>
-#include <QJsonDocument>
-#include <QJsonObject>
+#include "dissectors/SidecarNames.h"
+
 #include <QRegularExpression>
 
-#include <mutex>
-
 namespace coscope::dissect {
-
-namespace {
-
-using Names = QHash<QString, QJsonObject>;  // "P3-00" -> {"zh_TW": …, "zh_CN": …}
-
-Names loadAll() {
-    Names names;
-    const QDir dir(QStringLiteral(":/dictionaries"));
-    for (const QString& file : dir.entryList({QStringLiteral("*.json")}, QDir::Files)) {
-        QFile f(dir.filePath(file));
-        if (!f.open(QIODevice::ReadOnly)) continue;
-        const QJsonObject p = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("parameterNames")).toObject();
-        for (auto it = p.begin(); it != p.end(); ++it) names.insert(it.key(), it.value().toObject());
-    }
-    return names;
-}
-
-const Names& all() {
-    static std::once_flag once;
-    static Names names;
-    std::call_once(once, [] { names = loadAll(); });
-    return names;
-}
-
-}  // namespace
 
 QString localParameterName(const QString& edsName, const QString& lang) {
     if (lang != u"zh_TW" && lang != u"zh_CN") return edsName;
@@ -44,10 +14,13 @@ QString localParameterName(const QString& edsName, const QString& lang) {
     const QRegularExpressionMatch m = code.match(edsName);
     if (!m.hasMatch()) return edsName;
     const QString key = edsName.left(edsName.indexOf(u' '));
-    const auto it = all().constFind(key);
-    if (it == all().constEnd()) return edsName;
-    const QString zh = it->value(lang).toString();
-    return zh.isEmpty() ? edsName : m.captured(1) + u' ' + zh;
+    for (const SidecarSection& names : sidecarSections(QStringLiteral("parameterNames"))) {
+        const auto it = names.constFind(key);
+        if (it == names.constEnd()) continue;
+        const QString zh = it->value(lang).toString();
+        return zh.isEmpty() ? edsName : m.captured(1) + u' ' + zh;
+    }
+    return edsName;
 }
 
 }  // namespace coscope::dissect

@@ -45,6 +45,14 @@ struct CanFrame {
     friend bool operator==(const CanFrame& a, const CanFrame& b);
 };
 
+// CANopen puts multi-byte values little-endian (CiA 301 §7.1.2): bytes at..at+3 of the payload.
+inline void putLe32(CanFrame& f, int at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
+}
+inline uint32_t le32At(const CanFrame& f, int at) {
+    return uint32_t(f.data[at]) | (uint32_t(f.data[at + 1]) << 8) | (uint32_t(f.data[at + 2]) << 16) | (uint32_t(f.data[at + 3]) << 24);
+}
+
 // CAN FD data length codes (ISO 11898-1): the lengths an FD frame can have.
 bool isValidFdLength(int len);
 // Smallest valid FD length >= len (payloads are padded up to it).

@@ -10,9 +10,6 @@
 namespace coscope::canopen {
 
 namespace {
-void put32(CanFrame& f, int at, uint32_t v) {
-    for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
-}
 constexpr int kMaxRestarts = 3;
 }  // namespace
 
@@ -80,7 +77,7 @@ void LssMaster::fastscanStep(std::shared_ptr<FastscanState> st, LssCallback done
     Request r;
     r.frame = request(lss::Fastscan);
     const bool confirm = st->bit == 0;
-    put32(r.frame, 1, st->id[st->sub]);
+    putLe32(r.frame, 1, st->id[st->sub]);
     r.frame.data[5] = static_cast<uint8_t>(st->bit);
     r.frame.data[6] = static_cast<uint8_t>(st->sub);
     r.frame.data[7] = static_cast<uint8_t>(confirm ? (st->sub + 1) % 4 : st->sub);

@@ -11,12 +11,6 @@
 namespace coscope::canopen {
 
 namespace {
-uint32_t u32At(const CanFrame& f, int at) {
-    return uint32_t(f.data[at]) | (uint32_t(f.data[at + 1]) << 8) | (uint32_t(f.data[at + 2]) << 16) | (uint32_t(f.data[at + 3]) << 24);
-}
-void put32(CanFrame& f, int at, uint32_t v) {
-    for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
-}
 QString configureError(const QString& what, uint8_t code) {
     // CiA 305 §6.4: 0 success, 1 not supported / out of range, FFh manufacturer specific.
     const QString why = code == 1 ? QStringLiteral("not supported or out of range") : code == 0xFF ? QStringLiteral("manufacturer-specific error") : QStringLiteral("error %1").arg(code);
@@ -113,7 +107,7 @@ void LssMaster::switchStateSelective(const LssIdentity& id, LssCallback done) {
     for (int i = 0; i < 4; ++i) {
         Request r;
         r.frame = request(static_cast<uint8_t>(lss::SwitchSelectiveVendor + i));
-        put32(r.frame, 1, v[i]);
+        putLe32(r.frame, 1, v[i]);
         if (i == 3) {
             r.expectCs = lss::SwitchSelectiveResponse;
             r.then = [this, done](bool answered, const CanFrame&) {
@@ -192,7 +186,7 @@ void LssMaster::inquire(uint8_t cs, LssCallback done) {
             out.error = noAnswer(QStringLiteral("no answer to LSS %1 (is a slave in configuration state?)").arg(lssCommandName(cs, true)));
         } else {
             out.ok = true;
-            out.value = cs == lss::InquireNodeId ? a.data[1] : u32At(a, 1);
+            out.value = cs == lss::InquireNodeId ? a.data[1] : le32At(a, 1);
         }
         done(out);
     };

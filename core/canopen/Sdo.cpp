@@ -43,9 +43,6 @@ void putMux(CanFrame& f, uint16_t index, uint8_t sub) {
     f.data[3] = sub;
 }
 
-void put32(CanFrame& f, int at, uint32_t v) {
-    for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
-}
 }  // namespace
 
 SdoFrame parseSdo(const uint8_t* d, int len, bool fromClient, bool inSubBlock) {
@@ -236,7 +233,7 @@ CanFrame initiateDownload(uint8_t node, uint16_t index, uint8_t sub, const QByte
         std::memcpy(f.data.data() + 4, data.constData(), static_cast<size_t>(data.size()));
     } else {
         f.data[0] = 0x21;  // ccs=1, e=0, s=1: size in bytes 4..7
-        put32(f, 4, static_cast<uint32_t>(data.size()));
+        putLe32(f, 4, static_cast<uint32_t>(data.size()));
     }
     return f;
 }
@@ -260,7 +257,7 @@ CanFrame uploadSegmentRequest(uint8_t node, bool toggle) { return frame8(0x600u 
 CanFrame abortFromClient(uint8_t node, uint16_t index, uint8_t sub, uint32_t code) {
     CanFrame f = frame8(0x600u + node, {0x80});
     putMux(f, index, sub);
-    put32(f, 4, code);
+    putLe32(f, 4, code);
     return f;
 }
 
@@ -286,7 +283,7 @@ CanFrame initiateUploadResponse(uint8_t node, uint16_t index, uint8_t sub, const
         std::memcpy(f.data.data() + 4, data.constData(), static_cast<size_t>(data.size()));
     } else {
         f.data[0] = 0x41;  // scs=2, e=0, s=1
-        put32(f, 4, static_cast<uint32_t>(data.size()));
+        putLe32(f, 4, static_cast<uint32_t>(data.size()));
     }
     return f;
 }

@@ -18,13 +18,15 @@ QString objectRef(uint16_t index, uint8_t sub) {
     return QStringLiteral("%1:%2").arg(index, 4, 16, QChar(u'0')).arg(sub, 2, 16, QChar(u'0')).toUpper();
 }
 
-namespace {
-enum class Phase : uint8_t {
+// Where a transfer is (not in an anonymous namespace: SdoClient::Transfer holds one).
+enum class SdoClientPhase : uint8_t {
     UploadInitiate, UploadSegment,
     DownloadInitiate, DownloadSegment,
     BlockUploadInitiate, BlockUploadSub, BlockUploadEnd,
     BlockDownloadInitiate, BlockDownloadSub, BlockDownloadEnd,
 };
+namespace {
+using Phase = SdoClientPhase;
 constexpr int kSegment = 7;  // data bytes per segment (CiA 301 §7.2.4.3.4, §7.2.4.3.12)
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include "core/logio/VectorBlf.h"
 
 #include "core/logio/TextScan.h"
+#include "core/logio/VectorBlfFormat.h"
 
 #include <QDateTime>
 #include <QIODevice>
@@ -14,10 +15,7 @@
 namespace coscope::logio {
 
 namespace {
-constexpr uint32_t kCanMessage = 1, kCanError = 2, kLogContainer = 10, kCanErrorExt = 73, kCanMessage2 = 86,
-                   kCanFdMessage = 100, kCanFdMessage64 = 101;
-constexpr uint32_t kMsgExt = 0x80000000U;    // extended id flag in the arbitration id
-constexpr uint8_t kDirTx = 0x01, kRemote = 0x80;
+using namespace blf;
 constexpr uint32_t kMaxObject = 64 * 1024 * 1024;
 
 bool isLobj(const unsigned char* p) { return std::memcmp(p, "LOBJ", 4) == 0; }

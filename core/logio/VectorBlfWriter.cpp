@@ -2,6 +2,8 @@
 // BlfWriter (core/logio/VectorBlf.h): the layout the BlfReader reads, written back.
 #include "core/logio/VectorBlf.h"
 
+#include "core/logio/VectorBlfFormat.h"
+
 #include <QDateTime>
 #include <QIODevice>
 
@@ -12,11 +14,9 @@
 namespace coscope::logio {
 
 namespace {
-constexpr uint32_t kCanMessage = 1, kCanError = 2, kLogContainer = 10, kCanFdMessage = 100;
+using namespace blf;
 constexpr uint32_t kFileHeaderSize = 144;
 constexpr qsizetype kContainerMax = 128 * 1024;
-constexpr uint32_t kMsgExt = 0x80000000U;
-constexpr uint8_t kDirTx = 0x01, kRemote = 0x80;
 
 void put16(QByteArray& b, uint16_t v) {
     b.append(char(v & 0xFF));

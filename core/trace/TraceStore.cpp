@@ -15,11 +15,9 @@
 
 namespace coscope {
 
-namespace {
-int64_t nowMs() {
+int64_t TraceStore::nowMs() {
     return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-}  // namespace
 
 // Frame numbers of one key, in blocks of 4096; the block table grows by copying into a larger
 // table, and old tables stay alive until the store dies so a reader holding one stays valid.

@@ -12,11 +12,6 @@
 
 namespace coscope {
 
-namespace {
-int64_t nowMs() {
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-}  // namespace
 
 void TraceStore::setPager(std::shared_ptr<TracePager> pager) {
     std::lock_guard lock(pageMutex_);

@@ -12,7 +12,7 @@ namespace coscope::gui::coretext {
 
 namespace {
 // clang-format off
-const char* const kTexts[] = {
+const char* const kBusTexts[] = {
     // CAN error frames: summary, details pane labels, bus states.
     QT_TRANSLATE_NOOP("CoreText", "CAN error: %1"),
     QT_TRANSLATE_NOOP("CoreText", "Error classes"),
@@ -136,7 +136,7 @@ const char* const kJoins[] = {
 // clang-format on
 }  // namespace
 
-std::span<const char* const> bus() { return kTexts; }
+std::span<const char* const> bus() { return kBusTexts; }
 std::span<const char* const> joins() { return kJoins; }
 
 }  // namespace coscope::gui::coretext

@@ -10,7 +10,7 @@ namespace coscope::gui::coretext {
 
 namespace {
 // clang-format off
-const char* const kTexts[] = {
+const char* const kDetailsTexts[] = {
     // dissectors/*Dissector.cpp, Ds402Meaning.cpp: Dissection::item() labels and fixed values.
     QT_TRANSLATE_NOOP("CoreText", "Command"),
     QT_TRANSLATE_NOOP("CoreText", "Command specifier"),
@@ -69,7 +69,7 @@ const char* const kShapes[] = {
 // clang-format on
 }  // namespace
 
-std::span<const char* const> details() { return kTexts; }
+std::span<const char* const> details() { return kDetailsTexts; }
 std::span<const char* const> shapes() { return kShapes; }
 std::span<const char* const> suffixes() { return kSuffixes; }
 

@@ -10,7 +10,7 @@ namespace coscope::gui::coretext {
 
 namespace {
 // clang-format off
-const char* const kTexts[] = {
+const char* const kTraceTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "NMT %1, node %2"),
     QT_TRANSLATE_NOOP("CoreText", "NMT %1, all nodes"),
     QT_TRANSLATE_NOOP("CoreText", "NMT (malformed)"),
@@ -182,6 +182,6 @@ const char* const kTexts[] = {
 // clang-format on
 }  // namespace
 
-std::span<const char* const> trace() { return kTexts; }
+std::span<const char* const> trace() { return kTraceTexts; }
 
 }  // namespace coscope::gui::coretext

@@ -11,7 +11,7 @@ namespace coscope::gui::coretext {
 
 namespace {
 // clang-format off
-const char* const kTexts[] = {
+const char* const kWizardsTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "Write %1 = %2 on node %3"),
     QT_TRANSLATE_NOOP("CoreText", "Read %1 from node %2"),
     QT_TRANSLATE_NOOP("CoreText", "Check %1 = %2 on node %3"),
@@ -276,6 +276,6 @@ const char* const kTexts[] = {
 // clang-format on
 }  // namespace
 
-std::span<const char* const> wizards() { return kTexts; }
+std::span<const char* const> wizards() { return kWizardsTexts; }
 
 }  // namespace coscope::gui::coretext

@@ -28,6 +28,11 @@ constexpr int kPollMs = 40;              // 25 Hz, within the ≤ 30 Hz budget o
 constexpr size_t kScanPerTick = 200000;  // frames examined per tick (a busy bus never stalls the GUI)
 constexpr int kMaxRows = 2000;           // oldest rows go when a node's PDOs flood the pane
 
+}  // namespace
+
+// Not anonymous: WizardFramesPane::Private holds a FramesModel.
+namespace framespane {
+
 struct Row {
     FrameNo frame = 0;
     int64_t timeNs = 0;
@@ -119,11 +124,11 @@ private:
     int64_t t0_ = 0;
 };
 
-}  // namespace
+}  // namespace framespane
 
 struct WizardFramesPane::Private {
     Workspace* workspace = nullptr;
-    FramesModel model;
+    framespane::FramesModel model;
     QTableView* view = nullptr;
     QTimer* timer = nullptr;
     std::shared_ptr<TraceStore> store;  // the store being followed (replaced with the source)
@@ -152,9 +157,9 @@ struct WizardFramesPane::Private {
         }
     }
 
-    Row makeRow(FrameNo n) {
+    framespane::Row makeRow(FrameNo n) {
         const TraceRecord& r = store->record(n);
-        Row row;
+        framespane::Row row;
         row.frame = n;
         row.timeNs = r.timestampNs;
         row.tx = r.flags & CanFrame::Tx;
@@ -195,10 +200,10 @@ WizardFramesPane::WizardFramesPane(Workspace* workspace, QWidget* parent) : QWid
     h->setSectionResizeMode(QHeaderView::Interactive);
     h->setStretchLastSection(true);
     const int digit = d_->view->fontMetrics().horizontalAdvance(QLatin1Char('0'));
-    d_->view->setColumnWidth(FramesModel::Time, digit * 10);
-    d_->view->setColumnWidth(FramesModel::Direction, digit * 4);
-    d_->view->setColumnWidth(FramesModel::CobId, digit * 8);
-    d_->view->setColumnWidth(FramesModel::Data, digit * 26);
+    d_->view->setColumnWidth(framespane::FramesModel::Time, digit * 10);
+    d_->view->setColumnWidth(framespane::FramesModel::Direction, digit * 4);
+    d_->view->setColumnWidth(framespane::FramesModel::CobId, digit * 8);
+    d_->view->setColumnWidth(framespane::FramesModel::Data, digit * 26);
 
     auto* title = new QLabel(tr("Frames on the bus for this wizard"), this);
     auto* layout = new QVBoxLayout(this);
@@ -245,7 +250,7 @@ void WizardFramesPane::poll() {
     const size_t size = d_->store->size();
     if (d_->next >= size) return;
     const size_t end = std::min(size, d_->next + kScanPerTick);
-    std::vector<Row> rows;
+    std::vector<framespane::Row> rows;
     for (size_t n = d_->next; n < end; ++n)
         if (d_->wanted(d_->store->record(static_cast<FrameNo>(n)))) rows.push_back(d_->makeRow(static_cast<FrameNo>(n)));
     d_->next = end;
@@ -259,7 +264,7 @@ int WizardFramesPane::rowCount() const { return d_->model.rowCount(); }
 
 QString WizardFramesPane::rowText(int row) const {
     if (row < 0 || row >= d_->model.rowCount()) return {};
-    const Row& r = d_->model.row(row);
+    const framespane::Row& r = d_->model.row(row);
     return QStringLiteral("%1 %2 %3  %4").arg(r.tx ? QStringLiteral("Tx") : QStringLiteral("Rx"), r.cobId, r.data, r.summary);
 }
 
