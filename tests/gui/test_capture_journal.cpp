@@ -11,6 +11,9 @@
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/trace/LogLoadJob.h"
 #include "app/gui/trace/LogSaveJob.h"
+#include "app/gui/trace/TraceDock.h"
+#include "app/gui/trace/TraceModel.h"
+#include "app/gui/trace/TraceView.h"
 #include "core/logio/PcapLog.h"
 #include "core/trace/CaptureJournal.h"
 #include "eds/SimulatorDictionaries.h"
@@ -252,7 +255,7 @@ private slots:
         // Find (the find field, Enter) reaches the row by the text of the second gap.
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
-        typeAndEnter(find, secondLost);
+        coscope::testing::typeAndEnter(find, secondLost);
         QVERIFY(waitFor([&] { return w.traceDock()->view()->currentRow() == 200; }));
     }
 
