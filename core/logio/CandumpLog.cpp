@@ -8,18 +8,6 @@
 namespace coscope::logio {
 
 namespace {
-// hexDigit() as a table: the payload loop runs for every byte of every frame.
-struct HexTable {
-    int8_t digit[256];
-    constexpr HexTable() : digit() {
-        for (int c = 0; c < 256; ++c) digit[c] = -1;
-        for (int c = '0'; c <= '9'; ++c) digit[c] = static_cast<int8_t>(c - '0');
-        for (int c = 'a'; c <= 'f'; ++c) digit[c] = static_cast<int8_t>(c - 'a' + 10);
-        for (int c = 'A'; c <= 'F'; ++c) digit[c] = static_cast<int8_t>(c - 'A' + 10);
-    }
-};
-constexpr HexTable kHex;
-
 constexpr uint32_t kCanErrFlag = 0x20000000U;  // linux/can.h CAN_ERR_FLAG
 constexpr uint32_t kCanEffMask = 0x1FFFFFFFU;
 
@@ -114,7 +102,7 @@ CandumpReader::LineResult CandumpReader::parseLogForm(std::string_view p, Tokens
         if (d[i] == '.') { ++i; continue; }
         if (d[i] == '_') break;  // len8_dlc suffix "_9": the payload ends here
         if (i + 1 >= d.size()) return bad(QStringLiteral("odd number of hex digits in data"));
-        const int hi = kHex.digit[uint8_t(d[i])], lo = kHex.digit[uint8_t(d[i + 1])];
+        const int hi = hexDigit(d[i]), lo = hexDigit(d[i + 1]);
         if (hi < 0 || lo < 0) return bad(QStringLiteral("data is not hexadecimal"));
         if (n >= maxLen) return bad(QStringLiteral("more than %1 data bytes").arg(maxLen));
         f.data[n++] = static_cast<uint8_t>((hi << 4) | lo);
