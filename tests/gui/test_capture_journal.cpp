@@ -103,6 +103,15 @@ QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, i
     s.write("2147483646\n");
     return path;
 }
+// Shows the window, which must offer the journal `path`, and reopens it by the offer's button.
+void reopenOffered(MainWindow& w, const QString& path) {
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.journalOffer()->isVisible());
+    QCOMPARE(w.journalOffer()->offeredPath(), path);
+    QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
+    QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+}
 }  // namespace
 
 class TestCaptureJournalGui : public QObject {
@@ -177,12 +186,8 @@ private slots:
         QVERIFY(!path.isEmpty());
         MainWindow w;
         w.setQuiet(true);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.journalOffer()->isVisible());
-        QCOMPARE(w.journalOffer()->offeredPath(), path);
-        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        reopenOffered(w, path);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(w.workspace()->store()->size(), size_t(300));
         QCOMPARE(w.workspace()->store()->frame(299).data[1], uint8_t(299 & 0xFF));
         QVERIFY(!w.journalOffer()->isVisible());
@@ -198,11 +203,8 @@ private slots:
         QVERIFY(!path.isEmpty());
         MainWindow w;
         w.setQuiet(true);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QCOMPARE(w.journalOffer()->offeredPath(), path);
-        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        reopenOffered(w, path);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(w.workspace()->store()->size(), size_t(300));
         const auto gaps = w.workspace()->store()->gaps();
         QCOMPARE(gaps.size(), size_t(1));
@@ -235,11 +237,8 @@ private slots:
         QVERIFY(!path.isEmpty());
         MainWindow w;
         w.setQuiet(true);
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QCOMPARE(w.journalOffer()->offeredPath(), path);
-        QTest::mouseClick(w.journalOffer()->reopenButton(), Qt::LeftButton);
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); }));
+        reopenOffered(w, path);
+        if (QTest::currentTestFailed()) return;
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(2));
         const QAbstractItemModel* m = w.traceDock()->view()->model();
         QVERIFY(waitFor([&] { return m->rowCount() == 300; }));
