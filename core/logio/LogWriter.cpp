@@ -12,19 +12,19 @@ namespace coscope::logio {
 
 namespace {
 constexpr qsizetype kFlushAt = 256 * 1024;
-const char kHexDigits[] = "0123456789ABCDEF";
+const char kUpperHexDigits[] = "0123456789ABCDEF";
 }  // namespace
 
 void appendHex2(QByteArray& out, uint8_t byte) {
-    out.append(kHexDigits[byte >> 4]);
-    out.append(kHexDigits[byte & 0xF]);
+    out.append(kUpperHexDigits[byte >> 4]);
+    out.append(kUpperHexDigits[byte & 0xF]);
 }
 
 void appendHex(QByteArray& out, uint32_t value, int width) {
     char tmp[8];
     int n = 0;
     do {
-        tmp[n++] = kHexDigits[value & 0xF];
+        tmp[n++] = kUpperHexDigits[value & 0xF];
         value >>= 4;
     } while (value && n < 8);
     for (int i = n; i < width; ++i) out.append('0');

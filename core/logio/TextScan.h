@@ -12,17 +12,17 @@
 namespace coscope::logio {
 
 // A table read: the log readers call it for every digit of every frame.
-struct HexDigits {
+struct HexDigitValues {
     int8_t digit[256];
-    constexpr HexDigits() : digit() {
+    constexpr HexDigitValues() : digit() {
         for (int c = 0; c < 256; ++c) digit[c] = -1;
         for (int c = '0'; c <= '9'; ++c) digit[c] = static_cast<int8_t>(c - '0');
         for (int c = 'a'; c <= 'f'; ++c) digit[c] = static_cast<int8_t>(c - 'a' + 10);
         for (int c = 'A'; c <= 'F'; ++c) digit[c] = static_cast<int8_t>(c - 'A' + 10);
     }
 };
-inline constexpr HexDigits kHexDigits;
-inline int hexDigit(char c) { return kHexDigits.digit[static_cast<uint8_t>(c)]; }
+inline constexpr HexDigitValues kHexDigitValues;
+inline int hexDigit(char c) { return kHexDigitValues.digit[static_cast<uint8_t>(c)]; }
 
 inline bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
