@@ -71,11 +71,19 @@ void Workspace::reset() {
 
 // The plot feed holds its own reference to the recorder of this source: a consumer never
 // outlives its session or load job, and reset() replaces the recorder only after stopping them.
-std::vector<CaptureSession::Consumer> Workspace::analysisConsumers() {
-    return {[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
-            [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
-            [this](const TraceStore& s, FrameNo first, size_t count) { health_.consume(s, first, count); },
-            [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
+// A log being opened hands its frames to the Health monitor's low-priority thread (issue 19:
+// the trace's index, filters and plots first); a live capture analyses them as they come.
+std::vector<CaptureSession::Consumer> Workspace::analysisConsumers(bool healthLater) {
+    std::vector<CaptureSession::Consumer> out{[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
+                                              [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
+                                              [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
+    if (healthLater)
+        out.push_back([this, store = std::shared_ptr<const TraceStore>(store_)](const TraceStore&, FrameNo first, size_t count) {
+            health_.consumeLater(store, first, count);
+        });
+    else
+        out.push_back([this](const TraceStore& s, FrameNo first, size_t count) { health_.consume(s, first, count); });
+    return out;
 }
 
 bool Workspace::connectBus(const QString& url, QString* error) {
@@ -103,7 +111,7 @@ bool Workspace::connectBus(const QString& url, QString* error) {
         session_->addConsumer([j = journal_.get()](const TraceStore& s, FrameNo first, size_t count) { j->appendFromStore(s, first, count); });
     }
     master_ = std::make_unique<canopen::MasterContext>(bus_.get(), &nodes_);
-    for (auto& c : analysisConsumers()) session_->addConsumer(std::move(c));
+    for (auto& c : analysisConsumers(false)) session_->addConsumer(std::move(c));
     session_->addConsumer(master_->dispatcher().consumer());
     sdo_ = std::make_unique<canopen::SdoClient>(*master_);
     session_->start(bus_.get());
@@ -203,7 +211,7 @@ bool Workspace::openLog(const QString& path, QString* error) {
             return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
         }));
     };
-    loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers(), onGap);
+    loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers(true), onGap);
     // Bounded memory: a large log pages from a spill journal beside the capture journals.
     loadJob_->setSpill(journalFolder() + QStringLiteral("/opened"), traceMemoryBudget());
     loadJob_->start();

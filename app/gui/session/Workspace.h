@@ -106,7 +106,7 @@ private:
     void closeJournal();
     void noteLostAdapter(CanBus::State state);
     void replaySignals(const std::map<int, QString>& names);
-    std::vector<CaptureSession::Consumer> analysisConsumers();
+    std::vector<CaptureSession::Consumer> analysisConsumers(bool healthLater);
 
     std::shared_ptr<TraceDecoder> traceDecoder_;
     std::shared_ptr<const FrameDecoder> decoder_;

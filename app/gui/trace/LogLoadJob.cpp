@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <condition_variable>
+#include <ctime>
 #include <deque>
 #include <thread>
 
@@ -109,6 +110,12 @@ struct ReadBatch {
 constexpr size_t kBatchFrames = 4096;
 constexpr size_t kBatchesAhead = 8;  // bounded: at most this many batches wait for the store
 
+double loadThreadCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + double(ts.tv_nsec) / 1e9;
+}
+
 }  // namespace
 
 void LogLoadJob::noteReaderLocked(const logio::LogReader& reader, size_t& seenDiagnostics) {
@@ -140,6 +147,7 @@ void LogLoadJob::run() {
     std::deque<ReadBatch> ready;     // parsed, waiting for the store
     std::vector<ReadBatch> spare;    // emptied, for the parser to fill again
     bool parsed = false;             // the parser reached the end (or was cancelled)
+    double parserCpu = 0;            // seconds, for the log line at the end
     std::thread parser([&] {
         size_t seenDiagnostics = 0;
         size_t seenGaps = 0;
@@ -166,6 +174,7 @@ void LogLoadJob::run() {
             std::lock_guard lock(queueMutex);
             if (b.count == 0) {
                 parsed = true;
+                parserCpu = loadThreadCpuSeconds();
                 queueChanged.notify_all();
                 return;
             }
@@ -216,7 +225,8 @@ void LogLoadJob::run() {
     }
     if (reader->hasError()) fail(reader->errorString());
     std::lock_guard lock(mutex_);
-    spdlog::info("opened {}: {} frames ({}), {} problems", path_.toStdString(), store_->size(), format_.toStdString(), diagnosticCount_);
+    spdlog::info("opened {}: {} frames ({}), {} problems; CPU {:.2f} s parsing, {:.2f} s storing and analysing", path_.toStdString(), store_->size(),
+                 format_.toStdString(), diagnosticCount_, parserCpu, loadThreadCpuSeconds());
 }
 
 }  // namespace coscope::gui

@@ -246,6 +246,14 @@ void TraceDock::rebind() {
     shownDetailsFor_ = -1;
     detailsLoading_ = false;
     if (!filterEdit_->text().trimmed().isEmpty()) applyFilter(filterEdit_->text());
+    // A log opened for review starts at its first frame, as in Wireshark or Logxaminer (and the
+    // window does not chase a file still loading); a live capture follows the newest frames.
+    if (workspace_->loadJob()) {
+        setFollow(false);
+        view_->scrollToTop();
+    } else if (workspace_->isLive()) {
+        setFollow(true);
+    }
 }
 
 void TraceDock::refresh() {
