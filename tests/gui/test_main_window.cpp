@@ -283,6 +283,31 @@ private slots:
                  qPrintable(w.statusBar()->currentMessage()));
     }
 
+    // A log opened for review starts at its first frame with Follow off (the view does not
+    // chase a file still loading); Follow, clicked, goes to the newest frame.
+    void openedLogStartsAtItsFirstFrame() {
+        const QString path = dir_.filePath(QStringLiteral("long.log"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        for (int i = 0; i < 5000; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#%2\n").arg(i * 100, 6, 10, QLatin1Char('0')).arg(i, 4, 16, QLatin1Char('0')).toLatin1());
+        f.close();
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(openByMenu(w, path));
+        QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() == 5000; }));
+        QTableView* view = w.traceDock()->view();
+        QAction* follow = barAction(w, QStringLiteral("Follow"));
+        QVERIFY(follow);
+        QTest::qWait(200);  // a few of the window's pulls
+        QVERIFY(!follow->isChecked());
+        QCOMPARE(view->rowAt(0), 0);
+        QTest::mouseClick(traceBar(w)->widgetForAction(follow), Qt::LeftButton);
+        QVERIFY(follow->isChecked());
+        QVERIFY(waitFor([&] { return view->rowAt(view->viewport()->height() - 2) == 4999; }));
+    }
+
     void eventJumpsToFrame() {
         MainWindow w;
         w.setQuiet(true);
