@@ -75,7 +75,7 @@ private slots:
     // Until it has caught up, the report is one the thread published: never more frames than
     // were handed over, and the revision moves when a new one is out.
     void publishedWhileBehind() {
-        const auto store = traffic(600);  // 66,000 frames: several publications
+        const auto store = traffic(600);  // 66,000 frames
         HealthMonitor m;
         const uint64_t rev0 = m.revision();
         QCOMPARE(m.report(INT64_MIN).bus.frames, uint64_t(0));

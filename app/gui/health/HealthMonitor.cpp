@@ -2,6 +2,7 @@
 #include "app/gui/health/HealthMonitor.h"
 
 #include <algorithm>
+#include <chrono>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -12,9 +13,9 @@ namespace coscope::gui {
 
 namespace {
 // consumeLater()'s thread analyses this many frames per turn of its loop and publishes a report
-// every kPublishEvery turns, and whenever it has caught up.
+// at most every kPublishMs (a report sorts and sums every track), and whenever it has caught up.
 constexpr size_t kLaterBatch = 4096;
-constexpr int kPublishEvery = 24;
+constexpr auto kPublishMs = std::chrono::milliseconds(250);
 }  // namespace
 
 HealthMonitor::HealthMonitor() { ctx_.setGenericNames(false); }
@@ -67,7 +68,7 @@ void HealthMonitor::laterLoop() {
     // The lowest priority, for this thread alone (on Linux a thread's nice value is its own).
     setpriority(PRIO_PROCESS, static_cast<id_t>(gettid()), 19);
 #endif
-    int turns = 0;
+    auto lastPublished = std::chrono::steady_clock::now();
     std::unique_lock lock(mutex_);
     for (;;) {
         pendingAdded_.wait(lock, [this] { return stopping_ || !pending_.empty(); });
@@ -78,7 +79,7 @@ void HealthMonitor::laterLoop() {
         p.count -= work.count;
         if (p.count == 0) pending_.pop_front();
         inFlight_ += work.count;
-        const bool publish = pending_.empty() || ++turns % kPublishEvery == 0;
+        const bool publish = pending_.empty() || std::chrono::steady_clock::now() - lastPublished >= kPublishMs;
         const uint64_t generation = generation_.load(std::memory_order_acquire);
         lock.unlock();
         // Without mutex_: report() never waits for this thread, whose turn may come late.
@@ -94,6 +95,7 @@ void HealthMonitor::laterLoop() {
         lock.lock();
         if (generation_.load(std::memory_order_acquire) != generation) continue;  // cleared meanwhile
         if (publish && report) {
+            lastPublished = std::chrono::steady_clock::now();
             published_ = std::move(report);
             inFlight_ = 0;
             revision_.fetch_add(1, std::memory_order_release);

@@ -32,7 +32,7 @@ public:
     // Analyses them soon, in order, on the monitor's own lowest-priority thread: while a log
     // opens, the trace, its index, filters and plots get the CPU first and the Health view fills
     // in behind them (issue 19). Until clear(), report() is then the one that thread last
-    // published (about every 100,000 frames and when it has caught up), so the view never waits
+    // published (every 250 ms and when it has caught up), so the view never waits
     // for a thread the scheduler may keep waiting. Not mixed with consume() before a clear().
     void consumeLater(std::shared_ptr<const TraceStore> store, FrameNo first, size_t count);
     // Every frame handed to consumeLater() is in the report.
