@@ -51,8 +51,9 @@ void dissectPdo(DissectCall& c) {
     auto finish = [&] {
         if (!out.summarySink) s.storeIn(out.summary);
     };
-    s += kindText();
-    s += " node ";
+    s.appendLiteral(tpdo ? u"TPDO" : u"RPDO");  // pdoKindText() without a QString
+    s.appendDecimal(out.pdoNumber);
+    s.appendLiteral(u" node ");
     s.appendDecimal(c.node);
     s += u':';
     if (!mapped) {
@@ -76,11 +77,11 @@ void dissectPdo(DissectCall& c) {
         sig.bitOffset = static_cast<uint8_t>(at);
         sig.bitLength = e.bits;
         if (first) s += u' ';
-        else s += ", ";
+        else s.appendLiteral(u", ");
         first = false;
         s += e.name;
-        s += " = ";
-        const od::TypeClass cls = e.typeKnown ? od::typeClass(e.type) : od::TypeClass::Unsigned;
+        s.appendLiteral(u" = ");
+        const od::TypeClass cls = e.cls;
         QString text;
         if (!out.wantTree() && e.factor == 1.0 && e.bits <= 64 && (cls == od::TypeClass::Signed || cls == od::TypeClass::Unsigned)) {
             // Integers without a scale factor (nearly every PDO signal): the value and its
@@ -102,7 +103,7 @@ void dissectPdo(DissectCall& c) {
                     const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
                     sig.value.i = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
                 }
-                s.grew(static_cast<size_t>(od::hexValueTextTo(s.room(od::kHexTextRoom), e.index, e.sub, raw, e.bits)));
+                s.grew(static_cast<size_t>(od::hexValueTextTo(s.room(od::kHexTextRoom), e.hexKind, raw, e.bits)));
             } else if (e.typeKnown && cls == od::TypeClass::Signed) {
                 sig.value.kind = FlatField::Kind::Int;
                 if (e.bits < 64) {
@@ -136,7 +137,7 @@ void dissectPdo(DissectCall& c) {
             uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
             if (!m.isEmpty()) {
-                s += " (";
+                s.appendLiteral(u" (");
                 s += m;
                 s += u')';
             }

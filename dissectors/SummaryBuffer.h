@@ -36,6 +36,12 @@ public:
         if (k) std::memcpy(room(k), t, k * sizeof(char16_t));
         n_ += k;
     }
+    // A u"..." literal: its length is known, the copy inlined.
+    template <size_t N>
+    void appendLiteral(const char16_t (&t)[N]) {
+        std::memcpy(room(N - 1), t, (N - 1) * sizeof(char16_t));
+        n_ += N - 1;
+    }
     SummaryBuffer& operator+=(char16_t c) {
         *room(1) = c;
         ++n_;
@@ -45,22 +51,21 @@ public:
     // Written in place, digits counted first (no temporary to copy), two at a time.
     void appendDecimal(uint64_t u, bool negative) {
         size_t k = 1;
-        uint64_t t = u;
-        for (; t >= 100; t /= 100) k += 2;
-        if (t >= 10) ++k;
+        for (uint64_t t = u; t >= 10; t /= 10) ++k;
         char16_t* p = room(k + 1);
         if (negative) *p++ = u'-';
         size_t i = k;
         for (; u >= 100; u /= 100) {
-            const auto r = static_cast<unsigned>(u % 100);
-            p[--i] = static_cast<char16_t>(u'0' + r % 10);
-            p[--i] = static_cast<char16_t>(u'0' + r / 10);
+            const char* pair = kDecimalPairs + 2 * (u % 100);
+            p[--i] = static_cast<char16_t>(pair[1]);
+            p[--i] = static_cast<char16_t>(pair[0]);
         }
         if (u >= 10) {
-            p[--i] = static_cast<char16_t>(u'0' + u % 10);
-            u /= 10;
+            p[1] = static_cast<char16_t>(kDecimalPairs[2 * u + 1]);
+            p[0] = static_cast<char16_t>(kDecimalPairs[2 * u]);
+        } else {
+            p[0] = static_cast<char16_t>(u'0' + u);
         }
-        p[--i] = static_cast<char16_t>(u'0' + u);
         n_ += k + (negative ? 1 : 0);
     }
     // Space for at least k more code units at the end; commit what was written with grew().
@@ -78,6 +83,10 @@ public:
     }
 
 private:
+    static constexpr char kDecimalPairs[] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
     [[gnu::noinline]] void grow(size_t need) {
         const size_t cap = std::max<size_t>(2 * cap_, need + 256);
         auto b = std::make_unique<char16_t[]>(cap);

@@ -75,9 +75,13 @@ QString objectText(std::uint16_t index, std::uint8_t sub) {
 }
 
 int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
+    return hexValueTextTo(out, hexKindFor(index, sub), raw, bits);
+}
+
+int hexValueTextTo(char16_t* out, HexKind kind, std::uint64_t raw, int bits) {
     if (bits <= 0 || bits > 64) return 0;
     if (bits < 64) raw &= (std::uint64_t(1) << bits) - 1;
-    switch (hexKindFor(index, sub)) {
+    switch (kind) {
     case HexKind::None: return 0;
     case HexKind::Pattern: return hexTextTo(out, raw, (bits + 3) / 4);
     case HexKind::CobId: return raw <= 0x7FF ? hexTextTo(out, raw, 3) : hexTextTo(out, raw, 8);
