@@ -139,6 +139,10 @@ public:
     // output): dissectors that can (PDO) append the summary there and leave `summary` empty.
     // The consumer tells by the buffer's size; reset() does not change it.
     SummaryBuffer* summarySink = nullptr;
+    // False for a consumer that reads no flat fields and PDO signals (the CLI's text output reads
+    // the summary, warnings and transfer): add*() then keep nothing, addSignal() hands out a
+    // scratch signal, and signalCount stays 0. reset() does not change it.
+    bool wantFields = true;
 
     // Flat fields, valid [0, fieldCount()).
     int fieldCount() const { return fieldCount_; }
@@ -158,6 +162,7 @@ public:
 private:
     FlatField& next(const char* key, FlatField::Kind kind);
     Level level_ = Level::Flat;
+    PdoSignal scratchSignal_;  // addSignal() without wantFields
     std::vector<FlatField> fields_;
     int fieldCount_ = 0;
 };

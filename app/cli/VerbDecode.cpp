@@ -104,6 +104,7 @@ int runDecode(const QStringList& args) {
             // Without raw signals (which extend the summary afterwards) the dissectors may write
             // their summaries straight into the job.
             d.summarySink = raw.empty() ? &job->summaries : nullptr;
+            d.wantFields = !raw.empty();  // the raw signals join the PDO signals; text shows no other field
             for (size_t i = 0; i < batch.size(); ++i) {
                 const CanFrame& f = batch[i];
                 const size_t at = job->summaries.size();
@@ -131,6 +132,7 @@ int runDecode(const QStringList& args) {
                 job->lines.push_back(l);
             }
             d.summarySink = nullptr;
+            d.wantFields = true;
             writer.submit(std::move(job));
         }
     }  // the writer has written everything
