@@ -133,7 +133,8 @@ void dissectPdo(DissectCall& c) {
         if (out.wantTree())
             out.item(0, QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).arg(e.name), text,
                      byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
-        if (e.index >= 0x6000 && e.index <= 0x67FF) {
+        // Only 6040h/6041h/6060h/6061h (any axis) have a CiA 402 meaning (Ds402Meaning.h).
+        if (e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 && ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60)) {
             uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
             if (!m.isEmpty()) {

@@ -51,7 +51,7 @@ public:
     // Written in place, digits counted first (no temporary to copy), two at a time.
     void appendDecimal(uint64_t u, bool negative) {
         size_t k = 1;
-        for (uint64_t t = u; t >= 10; t /= 10) ++k;
+        while (k < 20 && u >= kPowersOf10[k]) ++k;
         char16_t* p = room(k + 1);
         if (negative) *p++ = u'-';
         size_t i = k;
@@ -83,6 +83,10 @@ public:
     }
 
 private:
+    static constexpr uint64_t kPowersOf10[20] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u, 1000000000u,
+                                                 10000000000u, 100000000000u, 1000000000000u, 10000000000000u, 100000000000000u,
+                                                 1000000000000000u, 10000000000000000u, 100000000000000000u, 1000000000000000000u,
+                                                 10000000000000000000u};
     static constexpr char kDecimalPairs[] =
         "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
         "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
