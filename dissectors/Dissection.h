@@ -139,9 +139,9 @@ public:
     // output): dissectors that can (PDO) append the summary there and leave `summary` empty.
     // The consumer tells by the buffer's size; reset() does not change it.
     SummaryBuffer* summarySink = nullptr;
-    // False for a consumer that reads no flat fields and PDO signals (the CLI's text output reads
-    // the summary, warnings and transfer): add*() then keep nothing, addSignal() hands out a
-    // scratch signal, and signalCount stays 0. reset() does not change it.
+    // False for a consumer that reads no flat fields, PDO signals or namesFrom (the CLI's text output:
+    // summary, warnings, transfer): add*() keep nothing, addSignal() hands out a scratch signal,
+    // signalCount stays 0, PDO frames set no namesFrom. reset() does not change it.
     bool wantFields = true;
 
     // Flat fields, valid [0, fieldCount()).

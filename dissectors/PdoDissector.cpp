@@ -42,7 +42,9 @@ void dissectPdo(DissectCall& c) {
             out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3").arg(kindText()).arg(c.len).arg((bits + 7) / 8));
     }
     if (!out.wantText()) return;
-    if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
+    // namesFrom goes with the fields: the GUI names the signals by it.
+    if (out.wantFields)
+        if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
     // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once, or
     // written straight into the consumer's buffer (Dissection::summarySink).
     thread_local SummaryBuffer scratch;
