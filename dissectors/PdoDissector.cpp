@@ -73,7 +73,8 @@ void dissectPdo(DissectCall& c) {
         bit += e.bits;
         if (e.dummy || e.bits == 0) continue;
         if (bit > c.len * 8) break;
-        PdoSignal& sig = out.addSignal(e.name, e.unit);
+        thread_local PdoSignal scratchSignal;  // without wantFields: the value is still decoded here
+        PdoSignal& sig = out.wantFields ? out.addSignal(e.name, e.unit) : scratchSignal;
         sig.index = e.index;
         sig.sub = e.sub;
         sig.bitOffset = static_cast<uint8_t>(at);
