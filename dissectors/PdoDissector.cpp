@@ -9,6 +9,8 @@
 #include "dissectors/SummaryBuffer.h"
 #include "dissectors/ValueText.h"
 
+#include <bit>
+#include <cstring>
 
 namespace coscope::dissect {
 
@@ -91,7 +93,10 @@ void dissectPdo(DissectCall& c) {
             // text exactly as decodeBits() gives them, written straight into the summary.
             uint64_t raw = 0;
             if (at % 8 == 0 && e.bits % 8 == 0) {
-                for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
+                if constexpr (std::endian::native == std::endian::little)
+                    std::memcpy(&raw, c.data + at / 8, static_cast<size_t>(e.bits / 8));  // within the payload: bit <= len * 8
+                else
+                    for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
             } else {
                 for (int k = 0; k < e.bits; ++k) {
                     const int b = at + k;
