@@ -211,8 +211,14 @@ namespace {
 char* putUtf8(char* p, const char16_t* src, qsizetype n) {
     qsizetype i = 0;
 #if defined(__SSE2__)
-    // 8 ASCII code units at a time; anything else goes to the loop below.
+    // 16 or 8 ASCII code units at a time; anything else goes to the loop below.
     const __m128i high = _mm_set1_epi16(static_cast<short>(0xFF80));
+    for (; i + 16 <= n; i += 16) {  // 16 at a time while the text is ASCII
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i + 8));
+        if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_and_si128(_mm_or_si128(a, b), high), _mm_setzero_si128())) != 0xFFFF) break;
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(p + i), _mm_packus_epi16(a, b));
+    }
     for (; i + 8 <= n; i += 8) {
         const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i));
         if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_and_si128(v, high), _mm_setzero_si128())) != 0xFFFF) break;
@@ -242,12 +248,19 @@ void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const Q
 void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
     // Hand-formatted straight into the output buffer: this runs for every line of a
     // million-frame decode. The space reserved is an upper bound; the rest is cut after.
+    const qsizetype at = out.size();
+    out.resize(at + textLineBound(summary, warnings, warningCount, bus));
+    char* const start = out.data() + at;
+    out.resize(at + (writeTextLine(start, f, summary, warnings, warningCount, bus) - start));
+}
+
+qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
     qsizetype bound = 18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * static_cast<qsizetype>(summary.size()) + 1;
     for (qsizetype i = 0; i < warningCount; ++i) bound += 4 + 3 * warnings[i].size();
-    const qsizetype at = out.size();
-    out.resize(at + bound);
-    char* const start = out.data() + at;
-    char* o = start;
+    return bound;
+}
+
+char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
     {
         // The seconds (and sign) change rarely: their text is kept from the previous line.
         thread_local int64_t lastSec = -1;
@@ -316,7 +329,7 @@ void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary,
         o = putUtf8(o, warnings[i]);
     }
     *o++ = '\n';
-    out.resize(at + (o - start));
+    return o;
 }
 
 namespace {

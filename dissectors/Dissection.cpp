@@ -45,14 +45,24 @@ FlatField& Dissection::next(const char* key, FlatField::Kind kind) {
     return f;
 }
 
-void Dissection::addInt(const char* key, int64_t v) { next(key, FlatField::Kind::Int).i = v; }
-void Dissection::addUInt(const char* key, uint64_t v) { next(key, FlatField::Kind::UInt).u = v; }
-void Dissection::addReal(const char* key, double v) { next(key, FlatField::Kind::Real).d = v; }
-void Dissection::addBool(const char* key, bool v) { next(key, FlatField::Kind::Bool).i = v ? 1 : 0; }
-void Dissection::addText(const char* key, const QString& v) { assignShared(next(key, FlatField::Kind::Text).text, v); }
-
+void Dissection::addInt(const char* key, int64_t v) {
+    if (wantFields) next(key, FlatField::Kind::Int).i = v;
+}
+void Dissection::addUInt(const char* key, uint64_t v) {
+    if (wantFields) next(key, FlatField::Kind::UInt).u = v;
+}
+void Dissection::addReal(const char* key, double v) {
+    if (wantFields) next(key, FlatField::Kind::Real).d = v;
+}
+void Dissection::addBool(const char* key, bool v) {
+    if (wantFields) next(key, FlatField::Kind::Bool).i = v ? 1 : 0;
+}
+void Dissection::addText(const char* key, const QString& v) {
+    if (wantFields) assignShared(next(key, FlatField::Kind::Text).text, v);
+}
 
 PdoSignal& Dissection::addSignal(const QString& name, const QString& unit) {
+    if (!wantFields) return scratchSignal_;  // the dissector still fills in the value it decodes
     if (static_cast<size_t>(signalCount) == pdoSignals.size()) pdoSignals.emplace_back();
     PdoSignal& s = pdoSignals[static_cast<size_t>(signalCount++)];
     assignShared(s.name, name);

@@ -54,6 +54,8 @@ namespace coscope::dissect {
 //   can.err.state  string    "error active", "error warning", "error passive", "bus-off" (when reported)
 //   can.err.tx_errors, can.err.rx_errors integer  the controller's error counters (when reported)
 //   can.err.text   string    what the error frame reports, in words
+class SummaryBuffer;  // dissectors/SummaryBuffer.h
+
 struct FlatField {
     enum class Kind : uint8_t { Int, UInt, Real, Bool, Text };
     const char* key = nullptr;  // a string literal: the stable field name
@@ -133,6 +135,14 @@ public:
     // (dissectors/ObjectNames.h). Empty = a user's dictionary or none: its names stay as written.
     QString namesFrom;
     std::vector<TreeItem> tree;
+    // Set by a consumer that keeps the summaries of many frames in one buffer (the CLI's text
+    // output): dissectors that can (PDO) append the summary there and leave `summary` empty.
+    // The consumer tells by the buffer's size; reset() does not change it.
+    SummaryBuffer* summarySink = nullptr;
+    // False for a consumer that reads no flat fields, PDO signals or namesFrom (the CLI's text output:
+    // summary, warnings, transfer): add*() keep nothing, addSignal() hands out a scratch signal,
+    // signalCount stays 0, PDO frames set no namesFrom. reset() does not change it.
+    bool wantFields = true;
 
     // Flat fields, valid [0, fieldCount()).
     int fieldCount() const { return fieldCount_; }
@@ -152,6 +162,7 @@ public:
 private:
     FlatField& next(const char* key, FlatField::Kind kind);
     Level level_ = Level::Flat;
+    PdoSignal scratchSignal_;  // addSignal() without wantFields
     std::vector<FlatField> fields_;
     int fieldCount_ = 0;
 };

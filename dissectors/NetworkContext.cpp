@@ -159,11 +159,12 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
     }
     if (!identityMatching_ || n.userAssigned) return;
     eds::DeviceIdentity& id = n.identity;
-    const QString text = QString::fromLatin1(t.data).section(QChar(0), 0, 0);
+    // The text only for the two string objects: this runs for every confirmed transfer.
+    auto text = [&] { return QString::fromLatin1(t.data).section(QChar(0), 0, 0); };
     if (t.index == 0x1000 && t.sub == 0) id.deviceType = v;
     else if (t.index == 0x1018 && t.sub >= 1 && t.sub <= 3) (t.sub == 1 ? id.vendorId : t.sub == 2 ? id.productCode : id.revision) = v;
-    else if (t.index == 0x1008 && t.sub == 0) id.deviceName = text;
-    else if (t.index == 0x100A && t.sub == 0) id.softwareVersion = text;
+    else if (t.index == 0x1008 && t.sub == 0) id.deviceName = text();
+    else if (t.index == 0x100A && t.sub == 0) id.softwareVersion = text();
     else return;
     const auto* entry = eds::DictionaryLibrary::shared().match(id);
     const QString match = entry ? entry->name : QString();

@@ -6,12 +6,11 @@
 #include "dissectors/Ds402Meaning.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/Services.h"
+#include "dissectors/SummaryBuffer.h"
 #include "dissectors/ValueText.h"
 
-#include <algorithm>
+#include <bit>
 #include <cstring>
-#include <memory>
-#include <string>
 
 namespace coscope::dissect {
 
@@ -24,70 +23,6 @@ QString pdoKindText(bool tpdo, int number) {
     if (number >= 1 && number <= 4) return kinds[tpdo ? 1 : 0][number - 1];
     return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number);
 }
-// A growable UTF-16 buffer for building a summary with few allocations.
-class SummaryText {
-public:
-    void clear() { n_ = 0; }
-    SummaryText& operator+=(const QString& t) {
-        const auto k = static_cast<size_t>(t.size());
-        char16_t* p = room(k);
-        if (k) std::memcpy(p, t.constData(), k * sizeof(char16_t));
-        n_ += k;
-        return *this;
-    }
-    SummaryText& operator+=(const char* latin1) {
-        const size_t k = std::strlen(latin1);
-        char16_t* p = room(k);
-        for (size_t i = 0; i < k; ++i) p[i] = static_cast<char16_t>(static_cast<unsigned char>(latin1[i]));
-        n_ += k;
-        return *this;
-    }
-    void append(const char16_t* t, size_t k) {
-        if (k) std::memcpy(room(k), t, k * sizeof(char16_t));
-        n_ += k;
-    }
-    SummaryText& operator+=(char16_t c) {
-        *room(1) = c;
-        ++n_;
-        return *this;
-    }
-    void appendDecimal(int64_t v) {
-        appendDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0);
-    }
-    void appendDecimal(uint64_t u, bool negative) {
-        char16_t tmp[24];
-        char16_t* e = tmp + 24;
-        char16_t* p = e;
-        do { *--p = static_cast<char16_t>(u'0' + u % 10); u /= 10; } while (u);
-        if (negative) *--p = u'-';
-        const auto k = static_cast<size_t>(e - p);
-        std::memcpy(room(k), p, k * sizeof(char16_t));
-        n_ += k;
-    }
-    // Replaces `out` with the text, reusing its capacity.
-    void storeIn(QString& out) const {
-        out.resize(static_cast<qsizetype>(n_));
-        if (n_) std::memcpy(static_cast<void*>(out.data()), buf_.get(), n_ * sizeof(char16_t));
-    }
-
-private:
-    // Space for k more code units at the end; the check is inlined, growing is not.
-    [[gnu::always_inline]] char16_t* room(size_t k) {
-        if (n_ + k > cap_) [[unlikely]]
-            grow(n_ + k);
-        return buf_.get() + n_;
-    }
-    [[gnu::noinline]] void grow(size_t need) {
-        const size_t cap = std::max<size_t>(2 * cap_, need + 256);
-        auto b = std::make_unique<char16_t[]>(cap);
-        if (n_) std::memcpy(b.get(), buf_.get(), n_ * sizeof(char16_t));
-        buf_ = std::move(b);
-        cap_ = cap;
-    }
-    std::unique_ptr<char16_t[]> buf_;
-    size_t cap_ = 0;
-    size_t n_ = 0;
-};
 }  // namespace
 
 void dissectPdo(DissectCall& c) {
@@ -109,18 +44,26 @@ void dissectPdo(DissectCall& c) {
             out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3").arg(kindText()).arg(c.len).arg((bits + 7) / 8));
     }
     if (!out.wantText()) return;
-    if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
-    // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once.
-    thread_local SummaryText s;
-    s.clear();
-    s += kindText();
-    s += " node ";
+    // namesFrom goes with the fields: the GUI names the signals by it.
+    if (out.wantFields)
+        if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
+    // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once, or
+    // written straight into the consumer's buffer (Dissection::summarySink).
+    thread_local SummaryBuffer scratch;
+    SummaryBuffer& s = out.summarySink ? *out.summarySink : scratch;
+    if (!out.summarySink) s.clear();
+    auto finish = [&] {
+        if (!out.summarySink) s.storeIn(out.summary);
+    };
+    s.appendLiteral(tpdo ? u"TPDO" : u"RPDO");  // pdoKindText() without a QString
+    s.appendDecimal(out.pdoNumber);
+    s.appendLiteral(u" node ");
     s.appendDecimal(c.node);
     s += u':';
     if (!mapped) {
         s += u' ';
         s += hexBytes(c.data, c.len, true);
-        s.storeIn(out.summary);
+        finish();
         if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
         return;
     }
@@ -132,24 +75,28 @@ void dissectPdo(DissectCall& c) {
         bit += e.bits;
         if (e.dummy || e.bits == 0) continue;
         if (bit > c.len * 8) break;
-        PdoSignal& sig = out.addSignal(e.name, e.unit);
+        thread_local PdoSignal scratchSignal;  // without wantFields: the value is still decoded here
+        PdoSignal& sig = out.wantFields ? out.addSignal(e.name, e.unit) : scratchSignal;
         sig.index = e.index;
         sig.sub = e.sub;
         sig.bitOffset = static_cast<uint8_t>(at);
         sig.bitLength = e.bits;
         if (first) s += u' ';
-        else s += ", ";
+        else s.appendLiteral(u", ");
         first = false;
         s += e.name;
-        s += " = ";
-        const od::TypeClass cls = e.typeKnown ? od::typeClass(e.type) : od::TypeClass::Unsigned;
+        s.appendLiteral(u" = ");
+        const od::TypeClass cls = e.cls;
         QString text;
         if (!out.wantTree() && e.factor == 1.0 && e.bits <= 64 && (cls == od::TypeClass::Signed || cls == od::TypeClass::Unsigned)) {
             // Integers without a scale factor (nearly every PDO signal): the value and its
             // text exactly as decodeBits() gives them, written straight into the summary.
             uint64_t raw = 0;
             if (at % 8 == 0 && e.bits % 8 == 0) {
-                for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
+                if constexpr (std::endian::native == std::endian::little)
+                    std::memcpy(&raw, c.data + at / 8, static_cast<size_t>(e.bits / 8));  // within the payload: bit <= len * 8
+                else
+                    for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
             } else {
                 for (int k = 0; k < e.bits; ++k) {
                     const int b = at + k;
@@ -164,8 +111,7 @@ void dissectPdo(DissectCall& c) {
                     const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
                     sig.value.i = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
                 }
-                char16_t hexBuf[od::kHexTextRoom];
-                s.append(hexBuf, static_cast<size_t>(od::hexValueTextTo(hexBuf, e.index, e.sub, raw, e.bits)));
+                s.grew(static_cast<size_t>(od::hexValueTextTo(s.room(od::kHexTextRoom), e.hexKind, raw, e.bits)));
             } else if (e.typeKnown && cls == od::TypeClass::Signed) {
                 sig.value.kind = FlatField::Kind::Int;
                 if (e.bits < 64) {
@@ -195,17 +141,18 @@ void dissectPdo(DissectCall& c) {
         if (out.wantTree())
             out.item(0, QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).arg(e.name), text,
                      byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
-        if (e.index >= 0x6000 && e.index <= 0x67FF) {
+        // Only 6040h/6041h/6060h/6061h (any axis) have a CiA 402 meaning (Ds402Meaning.h).
+        if (e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 && ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60)) {
             uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
             if (!m.isEmpty()) {
-                s += " (";
+                s.appendLiteral(u" (");
                 s += m;
                 s += u')';
             }
         }
     }
-    s.storeIn(out.summary);
+    finish();
 }
 
 }  // namespace coscope::dissect

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/od/DataType.h"
+#include "core/od/NumberNotation.h"
 
 #include <QString>
 
@@ -24,6 +25,8 @@ struct PdoMapEntry {
     bool typeKnown = false;  // from the dictionary; otherwise unsigned of `bits`
     bool dummy = false;      // index 0001h..0007h: a gap (CiA 301 §7.4.7.1 dummy mapping)
     bool hex = false;        // written in hex (controlword, statusword…: od/NumberNotation.h)
+    od::HexKind hexKind = od::HexKind::None;       // od::hexKindFor(index, sub); hex = not None
+    od::TypeClass cls = od::TypeClass::Unsigned;  // od::typeClass(type) when typeKnown, else Unsigned
     QString name;
     QString unit;
     double factor = 1.0;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "eds/DictionaryLibrary.h"
 
+#include "core/od/PermanentText.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -244,7 +246,7 @@ ReadResult DictionaryLibrary::loadFile(const QString& path) {
     const QString sidecar = sidecarPath(path);
     QFile f(sidecar);
     if (r.usable && f.exists() && f.open(QIODevice::ReadOnly)) applyUnits(r.dictionary, f.readAll(), sidecar, r.diagnostics);
-    if (r.usable && path.startsWith(QLatin1String(":/dictionaries/"))) r.dictionary.bundledName = QFileInfo(path).completeBaseName();
+    if (r.usable && path.startsWith(QLatin1String(":/dictionaries/"))) r.dictionary.bundledName = od::permanentText(QFileInfo(path).completeBaseName());  // copied per frame (Dissection::namesFrom)
     return r;
 }
 

@@ -5,12 +5,19 @@
 
 #include <cstdio>
 #include <cstring>
+#include <vector>
 
 namespace coscope::cli {
 
 void TextWriter::run() {
-    QByteArray out;
-    out.reserve(1 << 21);
+    // Lines are written into a plain buffer of our own (no QByteArray resize per line) and
+    // the buffer to stdout once it holds a megabyte.
+    std::vector<char> out(size_t(1) << 21);
+    size_t used = 0;
+    auto flush = [&] {
+        std::fwrite(out.data(), 1, used, stdout);
+        used = 0;
+    };
     const QString bus0 = QStringLiteral("can0");
     for (;;) {
         std::unique_ptr<Job> job;
@@ -25,14 +32,21 @@ void TextWriter::run() {
             const CanFrame& f = job->frames[l.frame];
             const QString& bus = f.bus < job->busNames.size() ? job->busNames[f.bus] : bus0;
             // Straight from the job's buffers: no copy of the texts per line.
-            dissect::appendText(out, f, std::u16string_view(job->summaries.data() + l.summaryAt, l.summaryLength),
-                                l.warningCount ? job->warnings.constData() + l.warningAt : nullptr, l.warningCount, bus);
-            if (l.transferLength) out.append(job->transfers.constData() + l.transferAt, l.transferLength);
+            const std::u16string_view summary(job->summaries.data() + l.summaryAt, l.summaryLength);
+            const QString* warnings = l.warningCount ? job->warnings.constData() + l.warningAt : nullptr;
+            const size_t need = static_cast<size_t>(dissect::textLineBound(summary, warnings, l.warningCount, bus)) + static_cast<size_t>(l.transferLength);
+            if (used + need > out.size()) {
+                flush();
+                if (need > out.size()) out.resize(need);
+            }
+            char* o = dissect::writeTextLine(out.data() + used, f, summary, warnings, l.warningCount, bus);
+            if (l.transferLength) {
+                std::memcpy(o, job->transfers.constData() + l.transferAt, static_cast<size_t>(l.transferLength));
+                o += l.transferLength;
+            }
+            used = static_cast<size_t>(o - out.data());
         }
-        if (out.size() > (1 << 20)) {
-            std::fwrite(out.constData(), 1, static_cast<size_t>(out.size()), stdout);
-            out.resize(0);
-        }
+        if (used > (size_t(1) << 20)) flush();
         job->lines.clear();
         job->summaries.clear();
         job->warnings.clear();
@@ -41,7 +55,7 @@ void TextWriter::run() {
         free_.push_back(std::move(job));
         changed_.notify_all();
     }
-    std::fwrite(out.constData(), 1, static_cast<size_t>(out.size()), stdout);
+    flush();
     std::fflush(stdout);
 }
 

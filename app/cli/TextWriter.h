@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "dissectors/SummaryBuffer.h"
 
 #include <QByteArray>
 #include <QStringList>
@@ -10,7 +11,6 @@
 #include <deque>
 #include <memory>
 #include <mutex>
-#include <string>
 #include <thread>
 #include <vector>
 
@@ -28,9 +28,9 @@ public:
         int transferAt = 0, transferLength = 0;     // in Job::transfers (appendTransferText)
     };
     struct Job {
-        std::vector<CanFrame> frames;
+        std::vector<CanFrame> frames;  // the batch (logio::ReadAhead::keepBatch), lines index it
         std::vector<Line> lines;
-        std::u16string summaries;
+        dissect::SummaryBuffer summaries;  // the dissectors write here (Dissection::summarySink)
         QStringList warnings;
         QByteArray transfers;
         QStringList busNames;

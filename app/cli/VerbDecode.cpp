@@ -100,17 +100,25 @@ int runDecode(const QStringList& args) {
         for (auto batch = ahead->next(); !batch.empty(); batch = ahead->next()) {
             auto job = writer.take();
             job->busNames = ahead->busNames();
-            job->frames.assign(batch.begin(), batch.end());
+            ahead->keepBatch(job->frames);  // `batch` now lives in the job: no copy
+            // Without raw signals (which extend the summary afterwards) the dissectors may write
+            // their summaries straight into the job.
+            d.summarySink = raw.empty() ? &job->summaries : nullptr;
+            d.wantFields = !raw.empty();  // the raw signals join the PDO signals; text shows no other field
             for (size_t i = 0; i < batch.size(); ++i) {
                 const CanFrame& f = batch[i];
+                const size_t at = job->summaries.size();
                 ctx.dissect(f, d, dissect::Dissection::Level::Flat);
                 if (!raw.empty()) dissect::applyRawSignals(raw, f, d);
-                if (!filter.isEmpty() && !filter.matches(f, d)) continue;
+                if (!filter.isEmpty() && !filter.matches(f, d)) {
+                    job->summaries.truncate(at);
+                    continue;
+                }
+                if (job->summaries.size() == at) job->summaries += d.summary;  // not written in the sink
                 TextWriter::Line l;
                 l.frame = static_cast<uint32_t>(i);
-                l.summaryAt = static_cast<uint32_t>(job->summaries.size());
-                l.summaryLength = static_cast<uint32_t>(d.summary.size());
-                job->summaries.append(reinterpret_cast<const char16_t*>(d.summary.constData()), static_cast<size_t>(d.summary.size()));
+                l.summaryAt = static_cast<uint32_t>(at);
+                l.summaryLength = static_cast<uint32_t>(job->summaries.size() - at);
                 if (!d.warnings.isEmpty()) {
                     l.warningAt = static_cast<int>(job->warnings.size());
                     l.warningCount = static_cast<int>(d.warnings.size());
@@ -123,6 +131,8 @@ int runDecode(const QStringList& args) {
                 }
                 job->lines.push_back(l);
             }
+            d.summarySink = nullptr;
+            d.wantFields = true;
             writer.submit(std::move(job));
         }
     }  // the writer has written everything

@@ -5,8 +5,9 @@
 
 namespace coscope::logio {
 
-ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth) : reader_(reader), slots_(depth < 2 ? 2 : depth) {
-    for (Slot& s : slots_) s.frames.resize(batchFrames ? batchFrames : 1);
+ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth)
+    : reader_(reader), batchFrames_(batchFrames ? batchFrames : 1), slots_(depth < 2 ? 2 : depth) {
+    for (Slot& s : slots_) s.frames.resize(batchFrames_);
     thread_ = std::thread([this] { produce(); });
 }
 
@@ -58,6 +59,14 @@ std::span<const CanFrame> ReadAhead::next() {
     const Slot& s = slots_[consumed_ % slots_.size()];
     busNames_ = s.busNames;
     return {s.frames.data(), s.count};
+}
+
+
+void ReadAhead::keepBatch(std::vector<CanFrame>& frames) {
+    // The held slot is the consumer's alone (produce() waits for it to be handed back).
+    if (!holding_) return;
+    if (frames.size() != batchFrames_) frames.resize(batchFrames_);
+    slots_[consumed_ % slots_.size()].frames.swap(frames);
 }
 
 }  // namespace coscope::logio

@@ -29,6 +29,11 @@ public:
 
     // The next batch of frames; valid until the next call. Empty at the end.
     std::span<const CanFrame> next();
+    // Keeps the current batch past next() without a copy: its storage moves into `frames` (the
+    // span next() returned stays valid, now owned by `frames`), and `frames`' former storage
+    // (any size; resized to a batch) takes its place for a later batch. Only between next()
+    // returning a batch and the next call.
+    void keepBatch(std::vector<CanFrame>& frames);
     // The reader's bus names as they were after the current batch (CanFrame::bus indexes them).
     const QStringList& busNames() const { return busNames_; }
 
@@ -41,6 +46,7 @@ private:
         QStringList busNames;
     };
     LogReader& reader_;
+    size_t batchFrames_;
     std::vector<Slot> slots_;
     std::mutex mutex_;
     std::condition_variable changed_;

@@ -55,8 +55,8 @@ HexKind hexKindFor(std::uint16_t index, std::uint8_t sub) {
 
 int hexTextTo(char16_t* out, std::uint64_t value, int digits) {
     static constexpr char16_t kDigits[] = u"0123456789ABCDEF";
-    int n = 1;  // significant digits of `value` (0 has one)
-    while (n < 16 && (value >> (4 * n))) ++n;
+    // Significant digits of `value` (0 has one).
+    const int n = value ? (64 - __builtin_clzll(value) + 3) / 4 : 1;
     if (digits > 16) digits = 16;
     const int width = n > digits ? n : digits;
     for (int i = width - 1; i >= 0; --i, value >>= 4) out[i] = kDigits[value & 15];
@@ -75,9 +75,13 @@ QString objectText(std::uint16_t index, std::uint8_t sub) {
 }
 
 int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
+    return hexValueTextTo(out, hexKindFor(index, sub), raw, bits);
+}
+
+int hexValueTextTo(char16_t* out, HexKind kind, std::uint64_t raw, int bits) {
     if (bits <= 0 || bits > 64) return 0;
     if (bits < 64) raw &= (std::uint64_t(1) << bits) - 1;
-    switch (hexKindFor(index, sub)) {
+    switch (kind) {
     case HexKind::None: return 0;
     case HexKind::Pattern: return hexTextTo(out, raw, (bits + 3) / 4);
     case HexKind::CobId: return raw <= 0x7FF ? hexTextTo(out, raw, 3) : hexTextTo(out, raw, 8);

@@ -46,6 +46,8 @@ QString objectText(std::uint16_t index, std::uint8_t sub);
 QString hexValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits);
 // The same written to `out` (room for kHexTextRoom units); returns its length, 0 = not hex.
 int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits);
+// The same with hexKindFor(index, sub) already known.
+int hexValueTextTo(char16_t* out, HexKind kind, std::uint64_t raw, int bits);
 
 // Same for a value whose data type is not known (a script step, an SDO without a dictionary):
 // the hex text when the rule says hex, else decimal; a value whose top bit is set may be negative,

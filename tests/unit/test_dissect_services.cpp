@@ -4,6 +4,7 @@
 #include "core/can/CanFrame.h"
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
+#include "dissectors/SummaryBuffer.h"
 #include "dissectors/VendorTable.h"
 
 #include <QJsonArray>
@@ -198,6 +199,46 @@ private slots:
         // Wrong DLC and an unexpected response: warnings, not crashes.
         ctx.dissect(fr(0x581, {0x60, 0x40, 0x60}), d);
         QVERIFY(d.warnings.size() >= 2);
+    }
+
+    // The CLI's text output: PDO summaries written into a consumer's buffer (summarySink), no
+    // fields kept (wantFields = false); the text is the one `summary` gets otherwise, numbers
+    // as QString::number writes them.
+    void pdoSummaryIntoSink() {
+        NetworkContext ctx;
+        QString err;
+        QVERIFY(ctx.assignDictionary(1, QStringLiteral("delta-asda-a2"), &err));
+        Dissection plain, sunk;
+        SummaryBuffer sink;
+        sunk.summarySink = &sink;
+        sunk.wantFields = false;
+        // TPDO1 of node 1 = statusword 6041h (16 bit) + target position 607Ah (INTEGER32), each write confirmed.
+        const std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0},
+                                                          {0x23, 0x00, 0x1A, 0x01, 0x10, 0x00, 0x41, 0x60},
+                                                          {0x23, 0x00, 0x1A, 0x02, 0x20, 0x00, 0x7A, 0x60},
+                                                          {0x2F, 0x00, 0x1A, 0x00, 0x02, 0, 0, 0}};
+        for (const auto& w : writes) {
+            CanFrame req = CanFrame::classic(0x601, {});
+            req.len = 8;
+            std::copy(w.begin(), w.end(), req.data.begin());
+            ctx.dissect(req, plain);
+            ctx.dissect(CanFrame::classic(0x581, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}), plain);
+        }
+        for (const int32_t v : {0, 9, 10, 99, 100, 12345678, -1, -100, INT32_MAX, INT32_MIN}) {
+            const auto u = static_cast<uint32_t>(v);
+            const CanFrame f = fr(0x181, {0x37, 0x16, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), uint8_t(u >> 24)});
+            ctx.dissect(f, plain);
+            QCOMPARE(plain.signalCount, 2);
+            QCOMPARE(plain.pdoSignals[1].value.i, int64_t(v));
+            QVERIFY2(plain.summary.contains(QStringLiteral(" = %1").arg(v)), qPrintable(plain.summary));
+            const size_t at = sink.size();
+            ctx.dissect(f, sunk);
+            QVERIFY(sunk.summary.isEmpty());
+            QCOMPARE(sunk.fieldCount(), 0);
+            QCOMPARE(sunk.signalCount, 0);
+            QCOMPARE(QString::fromUtf16(sink.data() + at, static_cast<qsizetype>(sink.size() - at)), plain.summary);
+        }
+        QVERIFY(plain.fieldCount() > 0);  // ds402.statusword, ds402.state
     }
 
     void sdoVendorAbort() {

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+
+namespace coscope::dissect {
+
+// A growable UTF-16 buffer for building summaries with few allocations: a dissector's scratch
+// text, or (Dissection::summarySink) the buffer of a consumer that keeps many summaries one
+// after another, so the text is written once, where it is used.
+class SummaryBuffer {
+public:
+    size_t size() const { return n_; }
+    const char16_t* data() const { return buf_.get(); }
+    void clear() { n_ = 0; }
+    void truncate(size_t n) {
+        if (n < n_) n_ = n;
+    }
+    SummaryBuffer& operator+=(const QString& t) {
+        append(reinterpret_cast<const char16_t*>(t.constData()), static_cast<size_t>(t.size()));
+        return *this;
+    }
+    SummaryBuffer& operator+=(const char* latin1) {
+        const size_t k = std::strlen(latin1);
+        char16_t* p = room(k);
+        for (size_t i = 0; i < k; ++i) p[i] = static_cast<char16_t>(static_cast<unsigned char>(latin1[i]));
+        n_ += k;
+        return *this;
+    }
+    void append(const char16_t* t, size_t k) {
+        if (k) std::memcpy(room(k), t, k * sizeof(char16_t));
+        n_ += k;
+    }
+    // A u"..." literal: its length is known, the copy inlined.
+    template <size_t N>
+    void appendLiteral(const char16_t (&t)[N]) {
+        std::memcpy(room(N - 1), t, (N - 1) * sizeof(char16_t));
+        n_ += N - 1;
+    }
+    SummaryBuffer& operator+=(char16_t c) {
+        *room(1) = c;
+        ++n_;
+        return *this;
+    }
+    void appendDecimal(int64_t v) { appendDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0); }
+    // Written in place, digits counted first (no temporary to copy), two at a time.
+    void appendDecimal(uint64_t u, bool negative) {
+        size_t k = 1;
+        while (k < 20 && u >= kPowersOf10[k]) ++k;
+        char16_t* p = room(k + 1);
+        if (negative) *p++ = u'-';
+        size_t i = k;
+        for (; u >= 100; u /= 100) {
+            const char* pair = kDecimalPairs + 2 * (u % 100);
+            p[--i] = static_cast<char16_t>(pair[1]);
+            p[--i] = static_cast<char16_t>(pair[0]);
+        }
+        if (u >= 10) {
+            p[1] = static_cast<char16_t>(kDecimalPairs[2 * u + 1]);
+            p[0] = static_cast<char16_t>(kDecimalPairs[2 * u]);
+        } else {
+            p[0] = static_cast<char16_t>(u'0' + u);
+        }
+        n_ += k + (negative ? 1 : 0);
+    }
+    // Space for at least k more code units at the end; commit what was written with grew().
+    [[gnu::always_inline]] char16_t* room(size_t k) {
+        if (n_ + k > cap_) [[unlikely]]
+            grow(n_ + k);
+        return buf_.get() + n_;
+    }
+    void grew(size_t k) { n_ += k; }
+    // Replaces `out` with the text from `from` on, reusing its capacity.
+    void storeIn(QString& out, size_t from = 0) const {
+        const size_t n = n_ - from;
+        out.resize(static_cast<qsizetype>(n));
+        if (n) std::memcpy(static_cast<void*>(out.data()), buf_.get() + from, n * sizeof(char16_t));
+    }
+
+private:
+    static constexpr uint64_t kPowersOf10[20] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u, 1000000000u,
+                                                 10000000000u, 100000000000u, 1000000000000u, 10000000000000u, 100000000000000u,
+                                                 1000000000000000u, 10000000000000000u, 100000000000000000u, 1000000000000000000u,
+                                                 10000000000000000000u};
+    static constexpr char kDecimalPairs[] =
+        "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+        "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+        "8081828384858687888990919293949596979899";
+    [[gnu::noinline]] void grow(size_t need) {
+        const size_t cap = std::max<size_t>(2 * cap_, need + 256);
+        auto b = std::make_unique<char16_t[]>(cap);
+        if (n_) std::memcpy(b.get(), buf_.get(), n_ * sizeof(char16_t));
+        buf_ = std::move(b);
+        cap_ = cap;
+    }
+    std::unique_ptr<char16_t[]> buf_;
+    size_t cap_ = 0;
+    size_t n_ = 0;
+};
+
+}  // namespace coscope::dissect
