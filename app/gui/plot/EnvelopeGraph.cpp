@@ -150,6 +150,31 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
     return true;
 }
 
+void EnvelopeGraph::draw(QCPPainter* painter) {
+    QCPAxis* key = keyAxis();
+    QCPAxis* value = valueAxis();
+    const bool plain = key && value && mLineStyle == lsLine && mScatterStyle.isNone() && mBrush.style() == Qt::NoBrush && selection().isEmpty() &&
+                       !painter->modes().testFlag(QCPPainter::pmVectorized) && key->orientation() == Qt::Horizontal && key->scaleType() == QCPAxis::stLinear &&
+                       value->scaleType() == QCPAxis::stLinear && !key->rangeReversed() && !value->rangeReversed();
+    if (!plain) {
+        QCPGraph::draw(painter);
+        return;
+    }
+    const QCPRange kr = key->range(), vr = value->range();
+    if (kr.size() <= 0 || mDataContainer->isEmpty()) return;
+    // QCPGraph::getVisibleDataBounds: one point either side of the visible range.
+    const auto begin = mDataContainer->findBegin(kr.lower), end = mDataContainer->findEnd(kr.upper);
+    lines_.resize(end - begin);
+    // QCPAxis::coordToPixel's linear, unreversed arithmetic, term for term (same pixels).
+    const double kSize = kr.size(), kWidth = key->axisRect()->width(), kLeft = key->axisRect()->left();
+    const double vSize = vr.size(), vHeight = value->axisRect()->height(), vBottom = value->axisRect()->bottom();
+    QPointF* out = lines_.data();
+    for (auto it = begin; it != end; ++it, ++out) *out = QPointF((it->key - kr.lower) / kSize * kWidth + kLeft, vBottom - (it->value - vr.lower) / vSize * vHeight);
+    painter->setPen(mPen);
+    painter->setBrush(Qt::NoBrush);
+    drawLinePlot(painter, lines_);
+}
+
 void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const {
     spans_.clear();
     direct_ = false;
