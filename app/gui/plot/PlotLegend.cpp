@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotLegend.h"
 
-#include <QDataStream>
-#include <QIODevice>
-
 #include <algorithm>
 #include <cmath>
 
@@ -14,12 +11,11 @@ void PlotLegend::addEntry(QCPAbstractPlottable* plottable) {
 }
 
 PlotLegend::Look PlotLegend::currentLook(qreal pixelRatio) const {
-    Look look{mOuterRect, clipRect(), pixelRatio, getBrush(), getBorderPen(), {}};
+    Look look{mOuterRect, clipRect(), pixelRatio, getBrush(), getBorderPen(), {}, false};
     look.entries.reserve(size_t(itemCount()));
     for (int i = 0; i < itemCount(); ++i) {
-        QCPAbstractLegendItem* it = item(i);
-        if (auto* entry = dynamic_cast<const PlotLegendEntry*>(it)) look.entries.push_back(entry->realVisibility() ? entry->lookKey() : QByteArray());
-        else look.entries.push_back(QByteArray("?"));  // another kind of item: never pictured
+        if (auto* entry = dynamic_cast<const PlotLegendEntry*>(item(i))) look.entries.push_back(entry->look());
+        else look.foreign = true;
     }
     return look;
 }
@@ -34,7 +30,7 @@ void PlotLegend::draw(QCPPainter* painter) {
                        t.type() <= QTransform::TxTranslate && t.dx() == std::round(t.dx()) && t.dy() == std::round(t.dy());
     Look look;
     if (plain) look = currentLook(painter->device()->devicePixelRatioF());
-    pictured_ = plain && std::none_of(look.entries.begin(), look.entries.end(), [](const QByteArray& e) { return e == "?"; });
+    pictured_ = plain && !look.foreign;
     if (pictured_) {
         if (picture_.isNull() || !(look == look_)) render(look, *painter);
         painter->drawImage(pictureAt_, picture_);
@@ -93,18 +89,31 @@ QSize PlotLegendEntry::minimumOuterSizeHint() const {
     return size_;
 }
 
-QByteArray PlotLegendEntry::lookKey() const {
-    QByteArray key;
-    QDataStream out(&key, QIODevice::WriteOnly);
-    out << mRect << mOuterRect << getFont() << getTextColor() << getIconBorderPen() << mParentLegend->iconSize() << mParentLegend->iconTextPadding();
+PlotLegendEntryLook PlotLegendEntry::look() const {
+    PlotLegendEntryLook l;
+    l.visible = realVisibility();
+    if (!l.visible) return l;
+    l.rect = mRect;
+    l.outer = mOuterRect;
+    l.font = getFont();
+    l.text = getTextColor();
+    l.iconBorder = getIconBorderPen();
+    l.icon = mParentLegend->iconSize();
+    l.padding = mParentLegend->iconTextPadding();
     if (mPlottable) {
-        out << mPlottable->name() << mPlottable->pen() << mPlottable->brush();
+        l.name = mPlottable->name();
+        l.pen = mPlottable->pen();
+        l.brush = mPlottable->brush();
         if (auto* graph = qobject_cast<const QCPGraph*>(mPlottable)) {
             const QCPScatterStyle& s = graph->scatterStyle();
-            out << int(graph->lineStyle()) << int(s.shape()) << s.size() << s.pen() << s.brush();
+            l.lineStyle = int(graph->lineStyle());
+            l.scatterShape = int(s.shape());
+            l.scatterSize = s.size();
+            l.scatterPen = s.pen();
+            l.scatterBrush = s.brush();
         }
     }
-    return key;
+    return l;
 }
 
 void PlotLegendEntry::draw(QCPPainter* painter) {

@@ -12,6 +12,25 @@ namespace coscope::gui {
 
 class PlotLegendEntry;
 
+// What one legend entry shows (PlotLegendEntry::look); compared, not hashed, on every draw.
+struct PlotLegendEntryLook {
+    QRect rect, outer;
+    QFont font;
+    QColor text;
+    QPen iconBorder;
+    QSize icon;
+    int padding = 0;
+    QString name;
+    QPen pen;
+    QBrush brush;
+    int lineStyle = -1, scatterShape = -1;
+    double scatterSize = 0;
+    QPen scatterPen;
+    QBrush scatterBrush;
+    bool visible = false;
+    bool operator==(const PlotLegendEntryLook& o) const = default;
+};
+
 // The plot's legend (a QCPLegend): on screen it is drawn from a picture of the box and its
 // entries, rendered by QCPLegend and QCPPlottableLegendItem themselves and drawn anew only when
 // what it shows changes (entry texts, fonts, text colours, trace pens, icon size, the box's brush
@@ -36,7 +55,8 @@ private:
         qreal pixelRatio = 1;
         QBrush brush;
         QPen border;
-        std::vector<QByteArray> entries;  // PlotLegendEntry::lookKey() of each entry
+        std::vector<PlotLegendEntryLook> entries;
+        bool foreign = false;  // an item that is not a PlotLegendEntry: never pictured
         bool operator==(const Look& o) const = default;
     };
     Look currentLook(qreal pixelRatio) const;
@@ -56,8 +76,8 @@ public:
     PlotLegendEntry(QCPLegend* legend, QCPAbstractPlottable* plottable) : QCPPlottableLegendItem(legend, plottable) {}
 
     QSize minimumOuterSizeHint() const override;
-    // What the entry shows, as one comparable value (text, font, colours, pens, rects).
-    QByteArray lookKey() const;
+    // What the entry shows (text, font, colours, pens, rects).
+    PlotLegendEntryLook look() const;
     QRect layerClip() const { return clipRect(); }
     // QCPPlottableLegendItem's own drawing (with its antialiasing), for the legend's picture.
     void drawEntry(QCPPainter* painter) {
