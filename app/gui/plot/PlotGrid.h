@@ -9,6 +9,8 @@
 
 namespace coscope::gui {
 
+struct PlotPixels;
+
 // The grid lines of the plot's axes, drawn in their place (QCustomPlot's "grid" layer) instead of
 // by each axis's QCPGrid: the same lines (QCPGrid::drawGridLines: a line a tick, the zero line
 // instead of the tick line at 0, the grid's pens). On the plot's own image, a 1-pixel dotted or
@@ -29,7 +31,7 @@ protected:
     void draw(QCPPainter* painter) override;
 
 private:
-    void drawAxis(QCPPainter* painter, QCPAxis* axis, QImage* image, QPoint shift, const QRect& clip) const;
+    void drawAxis(QCPPainter* painter, QCPAxis* axis, const PlotPixels& pixels) const;
     std::vector<QPointer<QCPAxis>> axes_;
 };
 

@@ -3,6 +3,7 @@
 
 #include "app/gui/plot/EnvelopeGraph.h"
 #include "app/gui/plot/PlotGrid.h"
+#include "app/gui/plot/PlotTicks.h"
 #include "app/gui/plot/PlotLegend.h"
 #include "app/gui/plot/PlotSurface.h"
 
@@ -31,7 +32,7 @@ QString number(double v) {
 }
 }  // namespace
 
-PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)) {
+PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)), ticks_(new PlotTicks(plot_)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
@@ -69,6 +70,7 @@ void PlotView::rebuild() {
     tracks_.assign(signals_.size(), Track{});
     rects_.clear();
     grid_->clear();
+    ticks_->clear();
     auto* group = new QCPMarginGroup(plot_);
     QFont small = font();
     small.setPointSizeF(font().pointSizeF() * 0.9);
@@ -151,12 +153,16 @@ void PlotView::rebuild() {
     if (QCPAxis* t = timeAxis()) t->setLabel(tr("Time [s]"));
     // Hidden axes (the top ones, an unused right one) need no ticks: QCustomPlot would still make
     // their ticks and labels on every replot.
+    // The visible ones' tick marks are written into the plot's image (PlotTicks).
     for (QCPAxisRect* rect : rects_)
         for (QCPAxis* a : rect->axes())
             if (!a->visible()) {
                 a->setTicks(false);
                 a->setTickLabels(false);
+            } else {
+                ticks_->adopt(a);
             }
+    ticks_->placeFirst();
     static_cast<PlotSurface*>(plot_)->placeTraceFlush();  // after the graphs, before the cursors
 
     // One legend in the top rect; a click on an entry hides or shows its trace.

@@ -19,6 +19,7 @@ class QLabel;
 namespace coscope::gui {
 
 class PlotGrid;
+class PlotTicks;
 
 // The plotting surface (QCustomPlot): the picked signals either stacked, one axis rect each,
 // sharing the time axis, or overlaid in one rect with an own y-axis per signal. Time is in
@@ -97,7 +98,8 @@ private:
     QCPAxis* timeAxis() const;
 
     QCustomPlot* plot_;
-    PlotGrid* grid_;  // a layerable of plot_ (owned by it)
+    PlotGrid* grid_;    // layerables of plot_ (owned by it)
+    PlotTicks* ticks_;
     std::vector<PlotSignal> signals_;
     std::vector<Track> tracks_;
     std::vector<SignalPoint> points_;  // one trace's columns, reused by every refresh
