@@ -414,24 +414,12 @@ void SignalBuffer::envelope(int64_t t0, int64_t t1, int columns, std::vector<Sig
         out.push_back({acc.t, rising ? acc.min : acc.max});
         out.push_back({lastTime, rising ? acc.max : acc.min});
     };
-    auto columnOf = [&](int64_t t) { return std::clamp(static_cast<int>((double(t) - double(t0)) * scale), 0, columns - 1); };
-    // The first time of the column after c (columnOf rises with the time): blocks come in time
-    // order, so a block before it is in the current column without columnOf's product.
-    auto nextColumnStart = [&](int c) {
-        if (c >= columns - 1) return INT64_MAX;
-        int64_t g = t0 + static_cast<int64_t>(std::ceil(double(c + 1) / scale));
-        while (columnOf(g) > c) --g;  // the estimate is off by a rounding at most
-        while (columnOf(g) <= c) ++g;
-        return g;
-    };
-    int64_t nextStart = INT64_MIN;
     // tLast: where the column's last point goes (a whole block's first time: inside the column).
     auto add = [&](const Edge& e, size_t samples, int64_t tLast) {
-        const int c = e.t < nextStart ? column : columnOf(e.t);
+        const int c = std::clamp(static_cast<int>((double(e.t) - double(t0)) * scale), 0, columns - 1);
         if (c != column) {
             flush();
             column = c;
-            nextStart = nextColumnStart(c);
             acc = e;
             count = 0;
         } else {
