@@ -17,6 +17,7 @@ PlotPixels PlotPixels::of(QCPPainter* painter) {
     auto* img = static_cast<QImage*>(device);
     const QImage::Format f = img->format();
     if (f != QImage::Format_ARGB32_Premultiplied && f != QImage::Format_ARGB32 && f != QImage::Format_RGB32) return out;
+    if (img->devicePixelRatio() != 1.0) return out;  // a high-DPI buffer: device pixels are not painter pixels
     painter->save();
     painter->setAntialiasing(false);  // QCPPainter drops its half-pixel shift
     const QTransform t = painter->combinedTransform();

@@ -12,8 +12,8 @@ class QCPPainter;
 namespace coscope::gui {
 
 // The plot's image behind a painter, when writing a 1-pixel line's pixels straight into it is
-// what the raster engine would do: a 32-bit image, plain source-over, no opacity, unscaled,
-// whole-pixel translation, one clip rectangle (PlotGrid, PlotTicks).
+// what the raster engine would do: a 32-bit image at device pixel ratio 1, plain source-over,
+// full opacity, unscaled, whole-pixel translation, one clip rectangle (PlotGrid, PlotTicks).
 struct PlotPixels {
     QImage* image = nullptr;  // nullptr: draw with the painter
     QPoint shift;             // painter to image coordinates
