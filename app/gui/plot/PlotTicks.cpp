@@ -67,8 +67,28 @@ void PlotTicks::drawAxis(QCPPainter* painter, const Adopted& a, const PlotPixels
     };
     painter->save();
     painter->setAntialiasing(false);
-    marks(axis->tickVector(), a.tick, axis->tickLengthOut(), axis->tickLengthIn());
-    if (axis->subTicks()) marks(PlotTicksAxisAccess::subTicks(axis), a.subTick, axis->subTickLengthOut(), axis->subTickLengthIn());
+    const QVector<double> ticks = axis->tickVector();
+    const QVector<double>& subTicks = PlotTicksAxisAccess::subTicks(axis);
+    marks(ticks, a.tick, axis->tickLengthOut(), axis->tickLengthIn());
+    if (axis->subTicks()) marks(subTicks, a.subTick, axis->subTickLengthOut(), axis->subTickLengthIn());
+    // The base line's endings (QCPAxisRect::addAxis gives a second axis on a side half bars):
+    // QCPAxisPainterPrivate draws them antialiased with the pen it last set, the sub ticks' (or
+    // the ticks', the base line's), which the axis now has as no pen.
+    const QCPLineEnding lower = axis->lowerEnding(), upper = axis->upperEnding();
+    if (lower.style() != QCPLineEnding::esNone || upper.style() != QCPLineEnding::esNone) {
+        const QPointF o = QPointF(origin) + QPointF(xCor, 0);
+        QLineF base = horizontal ? QLineF(o, o + QPointF(rect.width(), 0)) : QLineF(o, o + QPointF(0, -rect.height()));
+        if (axis->rangeReversed()) base = QLineF(base.p2(), base.p1());
+        const QPen pen = axis->subTicks() && !subTicks.isEmpty() ? a.subTick : !ticks.isEmpty() ? a.tick : axis->basePen();
+        painter->setPen(pen);
+        painter->setAntialiasing(true);
+        painter->setBrush(QBrush(axis->basePen().color()));
+        const QCPVector2D v(base.dx(), base.dy());
+        if (lower.style() != QCPLineEnding::esNone)
+            lower.draw(painter, QCPVector2D(base.p1()) - v.normalized() * lower.realLength() * (lower.inverted() ? -1 : 1), -v);
+        if (upper.style() != QCPLineEnding::esNone)
+            upper.draw(painter, QCPVector2D(base.p2()) + v.normalized() * upper.realLength() * (upper.inverted() ? -1 : 1), v);
+    }
     painter->restore();
 }
 
