@@ -23,23 +23,30 @@ void fillRow(uint32_t* p, int n, uint32_t v) {
 EnvelopeGraph::EnvelopeGraph(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPGraph(keyAxis, valueAxis) {}
 
 void EnvelopeGraph::rasterise(const QVector<QPointF>& polyline, QVector<QRect>* spans, QVector<QLineF>* longSegments) {
-    spans->clear();
     longSegments->clear();
+    // At most a span a point: written through a pointer, the vector cut to size at the end
+    // (an append a span costs more than the rest of the loop).
+    spans->resize(polyline.size());
+    QRect* out = spans->data();
     bool open = false;  // a column is being collected
     int column = 0;
     double lo = 0, hi = 0;
     QPointF prev;
+    auto floorInt = [](double v) {  // std::floor for finite values in int range, without a libm call
+        const int i = static_cast<int>(v);
+        return v < i ? i - 1 : i;
+    };
     auto flush = [&] {
-        const int top = static_cast<int>(std::floor(lo)), bottom = static_cast<int>(std::floor(hi));
-        spans->append(QRect(column, top, 1, bottom - top + 1));
+        const int top = floorInt(lo), bottom = floorInt(hi);
+        *out++ = QRect(column, top, 1, bottom - top + 1);
     };
     for (const QPointF& p : polyline) {
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) {  // a gap (NaN value): the line breaks
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.x()) > 1e9 || std::abs(p.y()) > 1e9) {  // a gap (NaN value): the line breaks
             if (open) flush();
             open = false;
             continue;
         }
-        const int c = static_cast<int>(std::floor(p.x()));
+        const int c = floorInt(p.x());
         if (!open) {
             open = true;
             column = c;
@@ -63,6 +70,7 @@ void EnvelopeGraph::rasterise(const QVector<QPointF>& polyline, QVector<QRect>* 
         prev = p;
     }
     if (open) flush();
+    spans->resize(out - spans->data());
 }
 
 void EnvelopeGraph::mergeColumns(const QVector<QRect>& spans, QVector<QRect>* blocks) {
@@ -148,6 +156,31 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
         for (int y = r.top(); y <= r.bottom(); ++y) fillRow(reinterpret_cast<uint32_t*>(bits + y * stride) + r.left(), r.width(), px);
     }
     return true;
+}
+
+void EnvelopeGraph::draw(QCPPainter* painter) {
+    QCPAxis* key = keyAxis();
+    QCPAxis* value = valueAxis();
+    const bool plain = key && value && mLineStyle == lsLine && mScatterStyle.isNone() && mBrush.style() == Qt::NoBrush && selection().isEmpty() &&
+                       !painter->modes().testFlag(QCPPainter::pmVectorized) && key->orientation() == Qt::Horizontal && key->scaleType() == QCPAxis::stLinear &&
+                       value->scaleType() == QCPAxis::stLinear && !key->rangeReversed() && !value->rangeReversed();
+    if (!plain) {
+        QCPGraph::draw(painter);
+        return;
+    }
+    const QCPRange kr = key->range(), vr = value->range();
+    if (kr.size() <= 0 || mDataContainer->isEmpty()) return;
+    // QCPGraph::getVisibleDataBounds: one point either side of the visible range.
+    const auto begin = mDataContainer->findBegin(kr.lower), end = mDataContainer->findEnd(kr.upper);
+    lines_.resize(end - begin);
+    // QCPAxis::coordToPixel's linear, unreversed arithmetic, term for term (same pixels).
+    const double kSize = kr.size(), kWidth = key->axisRect()->width(), kLeft = key->axisRect()->left();
+    const double vSize = vr.size(), vHeight = value->axisRect()->height(), vBottom = value->axisRect()->bottom();
+    QPointF* out = lines_.data();
+    for (auto it = begin; it != end; ++it, ++out) *out = QPointF((it->key - kr.lower) / kSize * kWidth + kLeft, vBottom - (it->value - vr.lower) / vSize * vHeight);
+    painter->setPen(mPen);
+    painter->setBrush(Qt::NoBrush);
+    drawLinePlot(painter, lines_);
 }
 
 void EnvelopeGraph::drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const {

@@ -37,6 +37,11 @@ public:
     static void mergeColumns(const QVector<QRect>& spans, QVector<QRect>* blocks);
 
 protected:
+    // The plain case (a linear line graph, nothing selected, no fill or scatters, on a raster
+    // painter) converts the visible points to pixels in one loop instead of QCPGraph's copy of
+    // them and two out-of-line coordToPixel calls a point; the same points as QCPGraph::getLines
+    // gives, then drawLinePlot. Anything else is QCPGraph::draw.
+    void draw(QCPPainter* painter) override;
     void drawLinePlot(QCPPainter* painter, const QVector<QPointF>& lines) const override;
 
 private:
@@ -45,6 +50,7 @@ private:
     bool fillDirect(QCPPainter* painter, const QColor& color, int penWidth) const;
 
     mutable QVector<QRect> spans_;
+    QVector<QPointF> lines_;  // the plain case's pixel points, reused
     mutable bool direct_ = false;
     mutable QVector<QRect> blocks_;
     mutable QVector<QLineF> longSegments_;

@@ -2,6 +2,9 @@
 #include "app/gui/plot/PlotView.h"
 
 #include "app/gui/plot/EnvelopeGraph.h"
+#include "app/gui/plot/PlotGrid.h"
+#include "app/gui/plot/PlotTicks.h"
+#include "app/gui/plot/PlotLegend.h"
 #include "app/gui/plot/PlotSurface.h"
 
 #include <QVBoxLayout>
@@ -29,7 +32,7 @@ QString number(double v) {
 }
 }  // namespace
 
-PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)) {
+PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)), ticks_(new PlotTicks(plot_)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
@@ -66,6 +69,8 @@ void PlotView::rebuild() {
     plot_->plotLayout()->clear();  // deletes the axis rects, their extra axes and the legend
     tracks_.assign(signals_.size(), Track{});
     rects_.clear();
+    grid_->clear();
+    ticks_->clear();
     auto* group = new QCPMarginGroup(plot_);
     QFont small = font();
     small.setPointSizeF(font().pointSizeF() * 0.9);
@@ -79,6 +84,8 @@ void PlotView::rebuild() {
         QCPAxis* x = rect->axis(QCPAxis::atBottom);
         x->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0, Qt::DotLine));
         rect->axis(QCPAxis::atLeft)->grid()->setPen(QPen(QColor(0xdd, 0xdd, 0xdd), 0, Qt::DotLine));
+        grid_->adopt(x);  // the dotted lines written straight into the plot's image
+        grid_->adopt(rect->axis(QCPAxis::atLeft));
         for (QCPAxis* a : rect->axes()) {
             a->setLabelFont(small);
             a->setTickLabelFont(small);
@@ -144,10 +151,22 @@ void PlotView::rebuild() {
         }
     }
     if (QCPAxis* t = timeAxis()) t->setLabel(tr("Time [s]"));
+    // Hidden axes (the top ones, an unused right one) need no ticks: QCustomPlot would still make
+    // their ticks and labels on every replot.
+    // The visible ones' tick marks are written into the plot's image (PlotTicks).
+    for (QCPAxisRect* rect : rects_)
+        for (QCPAxis* a : rect->axes())
+            if (!a->visible()) {
+                a->setTicks(false);
+                a->setTickLabels(false);
+            } else {
+                ticks_->adopt(a);
+            }
+    ticks_->placeFirst();
     static_cast<PlotSurface*>(plot_)->placeTraceFlush();  // after the graphs, before the cursors
 
     // One legend in the top rect; a click on an entry hides or shows its trace.
-    auto* legend = new QCPLegend;
+    auto* legend = new PlotLegend;
     rects_.front()->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignLeft);
     legend->setLayer(QStringLiteral("legend"));
     legend->setFont(small);
@@ -155,7 +174,7 @@ void PlotView::rebuild() {
     legend->setBorderPen(QPen(QColor(0xbb, 0xbb, 0xbb)));
     legend->setIconSize(18, 10);
     plot_->legend = legend;
-    for (Track& t : tracks_) t.graph->addToLegend(legend);
+    for (Track& t : tracks_) legend->addEntry(t.graph);
     legend->setVisible(legendOn_ && !signals_.empty());
 
     // Cursor lines, one pair per rect.

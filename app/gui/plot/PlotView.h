@@ -18,6 +18,9 @@ class QLabel;
 
 namespace coscope::gui {
 
+class PlotGrid;
+class PlotTicks;
+
 // The plotting surface (QCustomPlot): the picked signals either stacked, one axis rect each,
 // sharing the time axis, or overlaid in one rect with an own y-axis per signal. Time is in
 // seconds from the trace's first frame. On refresh() it pulls min/max-decimated points for the
@@ -95,6 +98,8 @@ private:
     QCPAxis* timeAxis() const;
 
     QCustomPlot* plot_;
+    PlotGrid* grid_;    // layerables of plot_ (owned by it)
+    PlotTicks* ticks_;
     std::vector<PlotSignal> signals_;
     std::vector<Track> tracks_;
     std::vector<SignalPoint> points_;  // one trace's columns, reused by every refresh
