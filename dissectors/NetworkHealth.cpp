@@ -71,11 +71,6 @@ uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* miss
 }
 
 // ---- NetworkHealth
-NetworkHealth::BusTrack& NetworkHealth::busTrack(int bus) {
-    if (static_cast<size_t>(bus) >= buses_.size()) buses_.resize(static_cast<size_t>(bus) + 1);
-    return buses_[static_cast<size_t>(bus)];
-}
-
 NetworkHealth::NodeTrack& NetworkHealth::node(int bus, int id) {
     auto& slot = busTrack(bus).nodes[static_cast<size_t>(id & 0x7F)];
     if (!slot) slot = std::make_unique<NodeTrack>();

@@ -112,7 +112,12 @@ private:
     };
 
     NodeTrack& node(int bus, int id);
-    BusTrack& busTrack(int bus);
+    // Every frame asks for its bus: inline, the vector grows only for a new bus.
+    BusTrack& busTrack(int bus) {
+        if (static_cast<size_t>(bus) >= buses_.size()) [[unlikely]]
+            buses_.resize(static_cast<size_t>(bus) + 1);
+        return buses_[static_cast<size_t>(bus)];
+    }
     void addLoad(const CanFrame& f);
     void addErrorControl(const CanFrame& f, int node, BusTrack& b);   // HeartbeatHealth.cpp
     void addNmtCommand(const CanFrame& f, BusTrack& b);                // HeartbeatHealth.cpp

@@ -9,29 +9,6 @@
 
 namespace coscope::dissect {
 
-namespace {
-// Bits on the wire by (extended, FD, payload size), computed at compile time: frameBits() runs
-// twice per frame in `stats` (trace and health bus load), so it is a plain table read.
-struct FrameBitsTable {
-    double bits[2][2][65];
-};
-constexpr FrameBitsTable makeFrameBitsTable() {
-    FrameBitsTable t{};
-    for (int ext = 0; ext < 2; ++ext)
-        for (int fd = 0; fd < 2; ++fd)
-            for (int n = 0; n <= 64; ++n) t.bits[ext][fd][n] = ((ext ? 54.0 : 34.0) + 8.0 * n + (fd ? 21.0 : 0.0)) * 1.1 + 13.0;
-    return t;
-}
-constexpr FrameBitsTable kFrameBits = makeFrameBitsTable();
-}  // namespace
-
-double TraceStats::frameBits(const CanFrame& f) {
-    // Classic base frame: SOF..CRC delimiter = 34 + 8n stuffable bits (+ 20 for a 29-bit id),
-    // then ACK, EOF and intermission (13 bits); stuffing adds up to ~10 % of the stuffable
-    // bits. FD frames are counted at the nominal rate (an overestimate when BRS is used).
-    return kFrameBits.bits[f.isExtended() ? 1 : 0][f.isFd() ? 1 : 0][std::min<int>(f.payloadSize(), 64)];
-}
-
 void TraceStats::add(const CanFrame& f) {
     ++frames_;
     if (!haveT0_) {

@@ -16,6 +16,22 @@
 
 namespace coscope::dissect {
 
+// Bits on the wire by (extended, FD, payload size), computed at compile time (TraceStats::frameBits).
+// Classic base frame: SOF..CRC delimiter = 34 + 8n stuffable bits (+ 20 for a 29-bit id), then
+// ACK, EOF and intermission (13 bits); stuffing adds up to ~10 % of the stuffable bits. FD frames
+// are counted at the nominal rate (an overestimate when BRS is used).
+struct FrameBitsTable {
+    double bits[2][2][65];
+};
+constexpr FrameBitsTable makeFrameBitsTable() {
+    FrameBitsTable t{};
+    for (int ext = 0; ext < 2; ++ext)
+        for (int fd = 0; fd < 2; ++fd)
+            for (int n = 0; n <= 64; ++n) t.bits[ext][fd][n] = ((ext ? 54.0 : 34.0) + 8.0 * n + (fd ? 21.0 : 0.0)) * 1.1 + 13.0;
+    return t;
+}
+inline constexpr FrameBitsTable kFrameBits = makeFrameBitsTable();
+
 // What `coscope-cli stats` reports about a trace: frames per COB-ID and service, nodes with
 // their last NMT state, an estimated bus load per second, SDO transfers and aborts, EMCYs and
 // warnings. Feed frames in order with add(); the context is run at the Stats level (no text).
@@ -42,8 +58,11 @@ public:
     uint64_t framesOfService(canopen::Service s) const { return perService_[static_cast<size_t>(s)]; }
 
     // Estimated bits on the wire of one frame: CiA/ISO 11898-1 frame fields plus an average
-    // stuffing of 1 bit in 10 of the stuffable part (nominal, not worst case).
-    static double frameBits(const CanFrame& f);
+    // stuffing of 1 bit in 10 of the stuffable part (nominal, not worst case). Inline: `stats`
+    // asks twice for every frame (trace and health bus load).
+    static double frameBits(const CanFrame& f) {
+        return kFrameBits.bits[f.isExtended() ? 1 : 0][f.isFd() ? 1 : 0][f.payloadSize() < 64 ? f.payloadSize() : 64];
+    }
 
 private:
     NetworkContext ctx_;
