@@ -15,6 +15,13 @@
 namespace coscope::dissect {
 
 namespace {
+template <typename T>
+T loadLittle(const uint8_t* p) {
+    T v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
 // "TPDO1".."RPDO4" are built once; other numbers (custom COB-IDs) on demand.
 QString pdoKindText(bool tpdo, int number) {
     static const QString kinds[2][4] = {
@@ -93,10 +100,20 @@ void dissectPdo(DissectCall& c) {
             // text exactly as decodeBits() gives them, written straight into the summary.
             uint64_t raw = 0;
             if (at % 8 == 0 && e.bits % 8 == 0) {
-                if constexpr (std::endian::native == std::endian::little)
-                    std::memcpy(&raw, c.data + at / 8, static_cast<size_t>(e.bits / 8));  // within the payload: bit <= len * 8
-                else
-                    for (int k = 0; k < e.bits / 8; ++k) raw |= uint64_t(c.data[at / 8 + k]) << (8 * k);
+                // Within the payload: bit <= len * 8. Fixed-size loads for the common widths: a
+                // variable-length copy into `raw` stalls the load of `raw` after it.
+                const uint8_t* p = c.data + at / 8;
+                const int bytes = e.bits / 8;
+                if constexpr (std::endian::native == std::endian::little) {
+                    if (bytes == 2) raw = loadLittle<uint16_t>(p);
+                    else if (bytes == 4) raw = loadLittle<uint32_t>(p);
+                    else if (bytes == 1) raw = p[0];
+                    else if (bytes == 8) raw = loadLittle<uint64_t>(p);
+                    else
+                        for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
+                } else {
+                    for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
+                }
             } else {
                 for (int k = 0; k < e.bits; ++k) {
                     const int b = at + k;

@@ -33,7 +33,7 @@ public:
         return *this;
     }
     void append(const char16_t* t, size_t k) {
-        if (k) std::memcpy(room(k), t, k * sizeof(char16_t));
+        copyUnits(room(k), t, k);
         n_ += k;
     }
     // A u"..." literal: its length is known, the copy inlined.
@@ -83,6 +83,29 @@ public:
     }
 
 private:
+    // Names, units and meanings are short: copied inline, in two overlapping fixed-size moves,
+    // not by a call to the C library's memcpy. On the benchmark machine glibc picks its
+    // AVX-512 memcpy, and calling it for every signal name made decode text 1.3-2.5x slower.
+    [[gnu::always_inline]] static void copyUnits(char16_t* d, const char16_t* t, size_t k) {
+        auto* o = reinterpret_cast<unsigned char*>(d);
+        const auto* i = reinterpret_cast<const unsigned char*>(t);
+        const size_t n = k * sizeof(char16_t);
+        auto two = [&]<size_t W>() {  // W <= n <= 2 * W
+            unsigned char a[W], b[W];
+            __builtin_memcpy(a, i, W);
+            __builtin_memcpy(b, i + n - W, W);
+            __builtin_memcpy(o, a, W);
+            __builtin_memcpy(o + n - W, b, W);
+        };
+        if (n > 64) [[unlikely]]
+            std::memcpy(o, i, n);
+        else if (n > 32) two.template operator()<32>();
+        else if (n > 16) two.template operator()<16>();
+        else if (n > 8) two.template operator()<8>();
+        else if (n > 4) two.template operator()<4>();
+        else if (n == 4) __builtin_memcpy(o, i, 4);
+        else if (n == 2) __builtin_memcpy(o, i, 2);
+    }
     static constexpr uint64_t kPowersOf10[20] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u, 1000000000u,
                                                  10000000000u, 100000000000u, 1000000000000u, 10000000000000u, 100000000000000u,
                                                  1000000000000000u, 10000000000000000u, 100000000000000000u, 1000000000000000000u,
