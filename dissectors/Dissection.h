@@ -55,6 +55,7 @@ namespace coscope::dissect {
 //   can.err.tx_errors, can.err.rx_errors integer  the controller's error counters (when reported)
 //   can.err.text   string    what the error frame reports, in words
 class SummaryBuffer;  // dissectors/SummaryBuffer.h
+struct PdoTextSink;  // dissectors/PdoText.h
 
 struct FlatField {
     enum class Kind : uint8_t { Int, UInt, Real, Bool, Text };
@@ -139,6 +140,11 @@ public:
     // output): dissectors that can (PDO) append the summary there and leave `summary` empty.
     // The consumer tells by the buffer's size; reset() does not change it.
     SummaryBuffer* summarySink = nullptr;
+    // Set by a consumer that writes the text itself, maybe on another thread (the CLI's text
+    // output): a PDO frame of integer signals (without the tree) leaves a record of its
+    // decoded values there (writePdoSummary() writes its text) and no summary. The consumer
+    // tells by the number of records; reset() does not change it.
+    PdoTextSink* pdoTextSink = nullptr;
     // False for a consumer that reads no flat fields, PDO signals or namesFrom (the CLI's text output:
     // summary, warnings, transfer): add*() keep nothing, addSignal() hands out a scratch signal,
     // signalCount stays 0, PDO frames set no namesFrom. reset() does not change it.

@@ -13,5 +13,7 @@ namespace coscope::dissect {
 // for the summary; empty when the object is none of these.
 QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth = 1, int byteOffset = 0,
                      int byteLength = 0);
+// The short text alone (command, state or mode name), for a summary without fields or tree.
+QString ds402MeaningText(uint16_t index, uint8_t sub, uint64_t raw);
 
 }  // namespace coscope::dissect

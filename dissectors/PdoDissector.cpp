@@ -3,8 +3,10 @@
 // (1600h/1A00h + n), least significant bit first (§7.2.2.4), by the mapping in force in the
 // network context (dictionary defaults, then what SDO transfers of 14xxh..1Bxxh set).
 #include "core/od/NumberNotation.h"
+#include "core/od/PermanentText.h"
 #include "dissectors/Ds402Meaning.h"
 #include "dissectors/NetworkContext.h"
+#include "dissectors/PdoText.h"
 #include "dissectors/Services.h"
 #include "dissectors/SummaryBuffer.h"
 #include "dissectors/ValueText.h"
@@ -30,6 +32,185 @@ QString pdoKindText(bool tpdo, int number) {
     if (number >= 1 && number <= 4) return kinds[tpdo ? 1 : 0][number - 1];
     return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number);
 }
+
+// ds402MeaningText() of a sub 0, permanent (od::permanentText: a PdoTextValue may point to it),
+// from a small cache: control- and statuswords rarely change.
+QString cachedDs402Text(uint16_t index, uint64_t raw) {
+    struct Meaning {
+        uint32_t key = 0;  // 0: empty
+        QString text;
+    };
+    thread_local Meaning cache[16];
+    const uint32_t v16 = static_cast<uint16_t>(raw);
+    const bool isMode = (index & 0x7FE) == 0x60;  // 6060h/6061h are 8 bits
+    const uint32_t key = (uint32_t(index) << 16 | (isMode ? static_cast<uint8_t>(raw) : v16)) + 1;
+    Meaning& m = cache[(v16 ^ (v16 >> 4) ^ index) & 15];
+    if (m.key != key) {
+        m.key = key;
+        m.text = od::permanentText(ds402MeaningText(index, 0, raw));
+    }
+    return m.text;
+}
+
+// Only 6040h/6041h/6060h/6061h (any axis) have a CiA 402 meaning (Ds402Meaning.h).
+bool hasDs402Meaning(const PdoMapEntry& e) {
+    return e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 && ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60);
+}
+
+// An integer without a scale factor (nearly every PDO signal): its value exactly as
+// decodeBits() gives it, in `sig`, and for the text in `v` (all but label, unit and meaning).
+void decodeInteger(const PdoMapEntry& e, const uint8_t* data, int at, PdoSignal& sig, PdoTextValue& v) {
+    uint64_t raw = 0;
+    if (at % 8 == 0 && e.bits % 8 == 0) {
+        // Within the payload (the caller checked). Fixed-size loads for the common widths: a
+        // variable-length copy into `raw` stalls the load of `raw` after it.
+        const uint8_t* p = data + at / 8;
+        const int bytes = e.bits / 8;
+        if constexpr (std::endian::native == std::endian::little) {
+            if (bytes == 2) raw = loadLittle<uint16_t>(p);
+            else if (bytes == 4) raw = loadLittle<uint32_t>(p);
+            else if (bytes == 1) raw = p[0];
+            else if (bytes == 8) raw = loadLittle<uint64_t>(p);
+            else
+                for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
+        } else {
+            for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
+        }
+    } else {
+        for (int k = 0; k < e.bits; ++k) {
+            const int b = at + k;
+            if (data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << k;
+        }
+    }
+    const bool isSigned = e.typeKnown && e.cls == od::TypeClass::Signed;
+    const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
+    const auto signedValue = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
+    sig.value.kind = isSigned ? FlatField::Kind::Int : FlatField::Kind::UInt;
+    if (isSigned) sig.value.i = signedValue;
+    else sig.value.u = raw;
+    v.bits = e.bits;
+    if (e.hex) {  // controlword, statusword…: the bit pattern (od/NumberNotation.h)
+        v.form = PdoTextValue::Form::Hex;
+        v.hexKind = e.hexKind;
+        v.raw = raw;
+    } else if (isSigned) {
+        v.form = PdoTextValue::Form::Signed;
+        v.raw = static_cast<uint64_t>(signedValue);
+    } else {
+        v.form = PdoTextValue::Form::Unsigned;
+        v.raw = raw;
+    }
+}
+
+bool isInteger(const PdoMapEntry& e) {
+    return e.factor == 1.0 && e.bits <= 64 && (e.cls == od::TypeClass::Signed || e.cls == od::TypeClass::Unsigned);
+}
+
+// Every signal of the mapping an integer with its label made: the frame decodes to
+// PdoTextValues (decodeValues), its text written from them.
+bool onlyIntegers(const PdoConfig& cfg) {
+    for (int i = 0; i < cfg.count; ++i) {
+        const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
+        if (!e.dummy && e.bits != 0 && (!isInteger(e) || e.label.isEmpty() || e.label.size() > 0xFFFF || e.unitText.size() > 0xFFFF)) return false;
+    }
+    return true;
+}
+
+// The values of a frame of integers (onlyIntegers) appended to `values`, the signals and
+// CiA 402 fields added as asked.
+void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue>& values) {
+    Dissection& out = c.out;
+    int bit = 0;
+    for (int i = 0; i < cfg.count; ++i) {
+        const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
+        const int at = bit;
+        bit += e.bits;
+        if (e.dummy || e.bits == 0) continue;
+        if (bit > c.len * 8) break;
+        PdoSignal& sig = out.addSignal(e.name, e.unit);  // without wantFields: a scratch signal
+        sig.index = e.index;
+        sig.sub = e.sub;
+        sig.bitOffset = static_cast<uint8_t>(at);
+        sig.bitLength = e.bits;
+        PdoTextValue& v = values.emplace_back();
+        v.label = reinterpret_cast<const char16_t*>(e.label.constData());
+        v.labelLength = static_cast<uint16_t>(e.label.size());
+        v.unit = reinterpret_cast<const char16_t*>(e.unitText.constData());
+        v.unitLength = static_cast<uint16_t>(e.unitText.size());
+        decodeInteger(e, c.data, at, sig, v);
+        if (hasDs402Meaning(e)) {
+            const uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
+            if (out.wantFields) {
+                const int byteOff = at / 8;
+                ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, (at + e.bits + 7) / 8 - byteOff);  // the fields
+            }
+            const QString m = cachedDs402Text(e.index, raw);
+            v.meaning = reinterpret_cast<const char16_t*>(m.constData());
+            v.meaningLength = static_cast<uint16_t>(m.size());
+        }
+    }
+}
+
+// The summary and, as asked, the signals and the tree items of any PDO (the tree, scaled or
+// non-integer signals, a mapping not known).
+void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg, bool mapped, bool tpdo) {
+    Dissection& out = c.out;
+    writePdoHeader(w, tpdo, out.pdoNumber, c.node);
+    if (!mapped) {
+        w.put(u' ');
+        w.put(hexBytes(c.data, c.len, true));
+        if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
+        return;
+    }
+    int bit = 0;
+    bool first = true;
+    for (int i = 0; i < cfg->count; ++i) {
+        const PdoMapEntry& e = cfg->entries[static_cast<size_t>(i)];
+        const int at = bit;
+        bit += e.bits;
+        if (e.dummy || e.bits == 0) continue;
+        if (bit > c.len * 8) break;
+        PdoSignal& sig = out.addSignal(e.name, e.unit);  // without wantFields: a scratch signal
+        sig.index = e.index;
+        sig.sub = e.sub;
+        sig.bitOffset = static_cast<uint8_t>(at);
+        sig.bitLength = e.bits;
+        if (first) w.put(u' ');
+        else w.put(u", ");
+        first = false;
+        w.put(e.name);
+        w.put(u" = ");
+        QString text;
+        if (!out.wantTree() && isInteger(e)) {
+            PdoTextValue v;
+            decodeInteger(e, c.data, at, sig, v);
+            if (!e.unit.isEmpty()) {
+                v.unit = reinterpret_cast<const char16_t*>(e.unitText.constData());
+                v.unitLength = static_cast<uint16_t>(e.unitText.size());
+            }
+            writePdoValue(w, v);
+        } else {
+            text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
+            if (e.hex && (sig.value.kind == FlatField::Kind::UInt || sig.value.kind == FlatField::Kind::Int))
+                text = od::hexValueText(e.index, e.sub, sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u, e.bits);
+            w.put(text);
+        }
+        const int byteOff = at / 8;
+        const int byteLen = (at + e.bits + 7) / 8 - byteOff;
+        if (out.wantTree())
+            out.item(0, QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).arg(e.name), text,
+                     byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
+        if (hasDs402Meaning(e)) {
+            const uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
+            const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
+            if (!m.isEmpty()) {
+                w.put(u" (");
+                w.put(m);
+                w.put(u')');
+            }
+        }
+    }
+}
 }  // namespace
 
 void dissectPdo(DissectCall& c) {
@@ -54,122 +235,40 @@ void dissectPdo(DissectCall& c) {
     // namesFrom goes with the fields: the GUI names the signals by it.
     if (out.wantFields)
         if (const od::ObjectDictionary* names = c.ctx.namesFor(c.node)) out.namesFrom = names->bundledName;
+    const bool integers = mapped && !out.wantTree() && onlyIntegers(*cfg);
+    if (integers && out.pdoTextSink) {  // the text is written later, by the sink's owner
+        PdoTextSink& sink = *out.pdoTextSink;
+        PdoTextRecord& r = sink.records.emplace_back();
+        r.tpdo = tpdo;
+        r.number = static_cast<uint16_t>(out.pdoNumber);
+        r.node = static_cast<uint8_t>(c.node);
+        r.valuesAt = static_cast<uint32_t>(sink.values.size());
+        decodeValues(c, *cfg, sink.values);
+        r.valueCount = static_cast<uint32_t>(sink.values.size()) - r.valuesAt;
+        return;
+    }
     // The summary is assembled in a reused UTF-16 buffer and copied into out.summary once, or
     // written straight into the consumer's buffer (Dissection::summarySink).
     thread_local SummaryBuffer scratch;
     SummaryBuffer& s = out.summarySink ? *out.summarySink : scratch;
     if (!out.summarySink) s.clear();
-    auto finish = [&] {
-        if (!out.summarySink) s.storeIn(out.summary);
-    };
-    s.appendLiteral(tpdo ? u"TPDO" : u"RPDO");  // pdoKindText() without a QString
-    s.appendDecimal(out.pdoNumber);
-    s.appendLiteral(u" node ");
-    s.appendDecimal(c.node);
-    s += u':';
-    if (!mapped) {
-        s += u' ';
-        s += hexBytes(c.data, c.len, true);
-        finish();
-        if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
-        return;
-    }
-    int bit = 0;
-    bool first = true;
-    for (int i = 0; i < cfg->count; ++i) {
-        const PdoMapEntry& e = cfg->entries[static_cast<size_t>(i)];
-        const int at = bit;
-        bit += e.bits;
-        if (e.dummy || e.bits == 0) continue;
-        if (bit > c.len * 8) break;
-        thread_local PdoSignal scratchSignal;  // without wantFields: the value is still decoded here
-        PdoSignal& sig = out.wantFields ? out.addSignal(e.name, e.unit) : scratchSignal;
-        sig.index = e.index;
-        sig.sub = e.sub;
-        sig.bitOffset = static_cast<uint8_t>(at);
-        sig.bitLength = e.bits;
-        if (first) s += u' ';
-        else s.appendLiteral(u", ");
-        first = false;
-        s += e.name;
-        s.appendLiteral(u" = ");
-        const od::TypeClass cls = e.cls;
-        QString text;
-        if (!out.wantTree() && e.factor == 1.0 && e.bits <= 64 && (cls == od::TypeClass::Signed || cls == od::TypeClass::Unsigned)) {
-            // Integers without a scale factor (nearly every PDO signal): the value and its
-            // text exactly as decodeBits() gives them, written straight into the summary.
-            uint64_t raw = 0;
-            if (at % 8 == 0 && e.bits % 8 == 0) {
-                // Within the payload: bit <= len * 8. Fixed-size loads for the common widths: a
-                // variable-length copy into `raw` stalls the load of `raw` after it.
-                const uint8_t* p = c.data + at / 8;
-                const int bytes = e.bits / 8;
-                if constexpr (std::endian::native == std::endian::little) {
-                    if (bytes == 2) raw = loadLittle<uint16_t>(p);
-                    else if (bytes == 4) raw = loadLittle<uint32_t>(p);
-                    else if (bytes == 1) raw = p[0];
-                    else if (bytes == 8) raw = loadLittle<uint64_t>(p);
-                    else
-                        for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
-                } else {
-                    for (int k = 0; k < bytes; ++k) raw |= uint64_t(p[k]) << (8 * k);
-                }
-            } else {
-                for (int k = 0; k < e.bits; ++k) {
-                    const int b = at + k;
-                    if (c.data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << k;
-                }
-            }
-            if (e.hex) {  // controlword, statusword…: the bit pattern (od/NumberNotation.h)
-                sig.value.kind = FlatField::Kind::UInt;
-                sig.value.u = raw;
-                if (e.typeKnown && cls == od::TypeClass::Signed) {
-                    sig.value.kind = FlatField::Kind::Int;
-                    const uint64_t sign = e.bits < 64 ? uint64_t(1) << (e.bits - 1) : 0;
-                    sig.value.i = static_cast<int64_t>(e.bits < 64 ? (raw ^ sign) - sign : raw);
-                }
-                s.grew(static_cast<size_t>(od::hexValueTextTo(s.room(od::kHexTextRoom), e.hexKind, raw, e.bits)));
-            } else if (e.typeKnown && cls == od::TypeClass::Signed) {
-                sig.value.kind = FlatField::Kind::Int;
-                if (e.bits < 64) {
-                    const uint64_t sign = uint64_t(1) << (e.bits - 1);
-                    sig.value.i = static_cast<int64_t>((raw ^ sign) - sign);
-                } else {
-                    sig.value.i = static_cast<int64_t>(raw);
-                }
-                s.appendDecimal(sig.value.i);
-            } else {
-                sig.value.kind = FlatField::Kind::UInt;
-                sig.value.u = raw;
-                s.appendDecimal(raw, false);
-            }
-            if (!e.unit.isEmpty()) {
-                s += u' ';
-                s += e.unit;
-            }
+    {
+        SummaryBuffer::Cursor w(s);
+        if (integers) {
+            thread_local std::vector<PdoTextValue> values;
+            values.clear();
+            decodeValues(c, *cfg, values);
+            PdoTextRecord r;
+            r.tpdo = tpdo;
+            r.number = static_cast<uint16_t>(out.pdoNumber);
+            r.node = static_cast<uint8_t>(c.node);
+            r.valueCount = static_cast<uint32_t>(values.size());
+            writePdoSummary(w, r, values.data());
         } else {
-            text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
-            if (e.hex && (sig.value.kind == FlatField::Kind::UInt || sig.value.kind == FlatField::Kind::Int))
-                text = od::hexValueText(e.index, e.sub, sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u, e.bits);
-            s += text;
-        }
-        const int byteOff = at / 8;
-        const int byteLen = (at + e.bits + 7) / 8 - byteOff;
-        if (out.wantTree())
-            out.item(0, QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).arg(e.name), text,
-                     byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
-        // Only 6040h/6041h/6060h/6061h (any axis) have a CiA 402 meaning (Ds402Meaning.h).
-        if (e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 && ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60)) {
-            uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
-            const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
-            if (!m.isEmpty()) {
-                s.appendLiteral(u" (");
-                s += m;
-                s += u')';
-            }
+            writePdoText(w, c, cfg, mapped, tpdo);
         }
     }
-    finish();
+    if (!out.summarySink) s.storeIn(out.summary);
 }
 
 }  // namespace coscope::dissect

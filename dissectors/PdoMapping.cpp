@@ -44,6 +44,9 @@ PdoMapEntry makeMapEntry(uint32_t raw, const od::ObjectDictionary* dict) {
     // Copied into every decoded signal of every frame: without reference counting.
     e.name = od::permanentText(e.name);
     e.unit = od::permanentText(e.unit);
+    // Permanent too: a PdoTextValue points to them after the mapping has changed.
+    e.label = od::permanentText(QStringLiteral(", ") + e.name + QStringLiteral(" = "));
+    if (!e.unit.isEmpty()) e.unitText = od::permanentText(u' ' + e.unit);
     return e;
 }
 

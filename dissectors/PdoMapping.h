@@ -30,6 +30,10 @@ struct PdoMapEntry {
     QString name;
     QString unit;
     double factor = 1.0;
+    // The summary's text around the value, made once with the entry (PdoDissector): ", " name
+    // " = " before it (the first signal drops the comma) and " " unit after it (empty: no unit).
+    QString label;
+    QString unitText;
 };
 
 // Communication and mapping parameters of one PDO (1400h/1600h for RPDOs, 1800h/1A00h for TPDOs).

@@ -4,6 +4,7 @@
 #include <QString>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -32,7 +33,7 @@ public:
         n_ += k;
         return *this;
     }
-    void append(const char16_t* t, size_t k) {
+    [[gnu::always_inline]] void append(const char16_t* t, size_t k) {
         copyUnits(room(k), t, k);
         n_ += k;
     }
@@ -48,26 +49,7 @@ public:
         return *this;
     }
     void appendDecimal(int64_t v) { appendDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0); }
-    // Written in place, digits counted first (no temporary to copy), two at a time.
-    void appendDecimal(uint64_t u, bool negative) {
-        size_t k = 1;
-        while (k < 20 && u >= kPowersOf10[k]) ++k;
-        char16_t* p = room(k + 1);
-        if (negative) *p++ = u'-';
-        size_t i = k;
-        for (; u >= 100; u /= 100) {
-            const char* pair = kDecimalPairs + 2 * (u % 100);
-            p[--i] = static_cast<char16_t>(pair[1]);
-            p[--i] = static_cast<char16_t>(pair[0]);
-        }
-        if (u >= 10) {
-            p[1] = static_cast<char16_t>(kDecimalPairs[2 * u + 1]);
-            p[0] = static_cast<char16_t>(kDecimalPairs[2 * u]);
-        } else {
-            p[0] = static_cast<char16_t>(u'0' + u);
-        }
-        n_ += k + (negative ? 1 : 0);
-    }
+    void appendDecimal(uint64_t u, bool negative) { n_ = static_cast<size_t>(writeDecimal(room(kDecimalRoom), u, negative) - buf_.get()); }
     // Space for at least k more code units at the end; commit what was written with grew().
     [[gnu::always_inline]] char16_t* room(size_t k) {
         if (n_ + k > cap_) [[unlikely]]
@@ -82,7 +64,56 @@ public:
         if (n) std::memcpy(static_cast<void*>(out.data()), buf_.get() + from, n * sizeof(char16_t));
     }
 
+    // Writes many pieces through a pointer of its own (kept in a register): no reload of the
+    // buffer's fields between pieces. The buffer is whole again when the cursor goes.
+    class Cursor {
+    public:
+        explicit Cursor(SummaryBuffer& b) : b_(b), p_(b.buf_.get() + b.n_), end_(b.buf_.get() + b.cap_) {}
+        ~Cursor() { b_.n_ = static_cast<size_t>(p_ - b_.buf_.get()); }
+        Cursor(const Cursor&) = delete;
+        Cursor& operator=(const Cursor&) = delete;
+        // Room for k more units; then write at at() and advance().
+        [[gnu::always_inline]] void need(size_t k) {
+            if (k > static_cast<size_t>(end_ - p_)) [[unlikely]]
+                regrow(k);
+        }
+        char16_t* at() const { return p_; }
+        void advance(size_t k) { p_ += k; }
+        [[gnu::always_inline]] void put(const char16_t* t, size_t k) {
+            need(k);
+            copyUnits(p_, t, k);
+            p_ += k;
+        }
+        [[gnu::always_inline]] void put(const QString& t) { put(reinterpret_cast<const char16_t*>(t.constData()), static_cast<size_t>(t.size())); }
+        template <size_t N>
+        [[gnu::always_inline]] void put(const char16_t (&t)[N]) {
+            need(N - 1);
+            __builtin_memcpy(p_, t, (N - 1) * sizeof(char16_t));
+            p_ += N - 1;
+        }
+        [[gnu::always_inline]] void put(char16_t c) {
+            need(1);
+            *p_++ = c;
+        }
+        [[gnu::always_inline]] void putDecimal(uint64_t u, bool negative) {
+            need(kDecimalRoom);
+            p_ = writeDecimal(p_, u, negative);
+        }
+        void putDecimal(int64_t v) { putDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0); }
+
+    private:
+        [[gnu::noinline]] void regrow(size_t k) {
+            b_.n_ = static_cast<size_t>(p_ - b_.buf_.get());
+            p_ = b_.room(k);
+            end_ = b_.buf_.get() + b_.cap_;
+        }
+        SummaryBuffer& b_;
+        char16_t* p_;
+        char16_t* end_;
+    };
+
 private:
+    static constexpr size_t kDecimalRoom = 21;  // sign and 20 digits
     // Names, units and meanings are short: copied inline, in two overlapping fixed-size moves,
     // not by a call to the C library's memcpy. On the benchmark machine glibc picks its
     // AVX-512 memcpy, and calling it for every signal name made decode text 1.3-2.5x slower.
@@ -105,6 +136,27 @@ private:
         else if (n > 4) two.template operator()<4>();
         else if (n == 4) __builtin_memcpy(o, i, 4);
         else if (n == 2) __builtin_memcpy(o, i, 2);
+    }
+    // The decimal text of u (after '-' when negative) at p, digits counted first (no temporary
+    // to copy) and written two at a time; returns the end.
+    [[gnu::always_inline]] static char16_t* writeDecimal(char16_t* p, uint64_t u, bool negative) {
+        // Digits from the bit width (log10(2) ~ 1233 / 4096), one comparison to settle it.
+        const size_t t = static_cast<size_t>((std::bit_width(u | 1) * 1233) >> 12);
+        const size_t k = t + ((u | 1) >= kPowersOf10[t] ? 1 : 0);
+        if (negative) *p++ = u'-';
+        size_t i = k;
+        for (; u >= 100; u /= 100) {
+            const char* pair = kDecimalPairs + 2 * (u % 100);
+            p[--i] = static_cast<char16_t>(pair[1]);
+            p[--i] = static_cast<char16_t>(pair[0]);
+        }
+        if (u >= 10) {
+            p[1] = static_cast<char16_t>(kDecimalPairs[2 * u + 1]);
+            p[0] = static_cast<char16_t>(kDecimalPairs[2 * u]);
+        } else {
+            p[0] = static_cast<char16_t>(u'0' + u);
+        }
+        return p + k;
     }
     static constexpr uint64_t kPowersOf10[20] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u, 1000000000u,
                                                  10000000000u, 100000000000u, 1000000000000u, 10000000000000u, 100000000000000u,

@@ -19,6 +19,7 @@ void TextWriter::run() {
         used = 0;
     };
     const QString bus0 = QStringLiteral("can0");
+    dissect::SummaryBuffer pdoText;  // the summary of a PDO record
     for (;;) {
         std::unique_ptr<Job> job;
         {
@@ -32,7 +33,16 @@ void TextWriter::run() {
             const CanFrame& f = job->frames[l.frame];
             const QString& bus = f.bus < job->busNames.size() ? job->busNames[f.bus] : bus0;
             // Straight from the job's buffers: no copy of the texts per line.
-            const std::u16string_view summary(job->summaries.data() + l.summaryAt, l.summaryLength);
+            std::u16string_view summary(job->summaries.data() + l.summaryAt, l.summaryLength);
+            if (l.pdoRecord >= 0) {
+                const dissect::PdoTextRecord& r = job->pdo.records[static_cast<size_t>(l.pdoRecord)];
+                pdoText.clear();
+                {
+                    dissect::SummaryBuffer::Cursor w(pdoText);
+                    dissect::writePdoSummary(w, r, job->pdo.values.data() + r.valuesAt);
+                }
+                summary = std::u16string_view(pdoText.data(), pdoText.size());
+            }
             const QString* warnings = l.warningCount ? job->warnings.constData() + l.warningAt : nullptr;
             const size_t need = static_cast<size_t>(dissect::textLineBound(summary, warnings, l.warningCount, bus)) + static_cast<size_t>(l.transferLength);
             if (used + need > out.size()) {
@@ -49,6 +59,7 @@ void TextWriter::run() {
         if (used > (size_t(1) << 20)) flush();
         job->lines.clear();
         job->summaries.clear();
+        job->pdo.clear();
         job->warnings.clear();
         job->transfers.resize(0);
         std::lock_guard lock(mutex_);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "dissectors/PdoText.h"
 #include "dissectors/SummaryBuffer.h"
 
 #include <QByteArray>
@@ -17,7 +18,8 @@
 namespace coscope::cli {
 
 // --format text on a thread of its own: the decoding thread hands over each batch's frames with
-// their summaries, warnings and transfer lines; this thread formats the lines with appendText()
+// their summaries (PDO summaries as decoded values, their text written here: the two threads
+// share the work), warnings and transfer lines; this thread formats the lines with appendText()
 // (the same bytes as formatting them in place) and writes them to stdout.
 class TextWriter {
 public:
@@ -26,11 +28,13 @@ public:
         uint32_t summaryAt = 0, summaryLength = 0;  // in Job::summaries
         int warningAt = 0, warningCount = 0;        // in Job::warnings
         int transferAt = 0, transferLength = 0;     // in Job::transfers (appendTransferText)
+        int pdoRecord = -1;  // >= 0: the summary is this record of Job::pdo, written here
     };
     struct Job {
         std::vector<CanFrame> frames;  // the batch (logio::ReadAhead::keepBatch), lines index it
         std::vector<Line> lines;
         dissect::SummaryBuffer summaries;  // the dissectors write here (Dissection::summarySink)
+        dissect::PdoTextSink pdo;          // and PDO values here (Dissection::pdoTextSink)
         QStringList warnings;
         QByteArray transfers;
         QStringList busNames;

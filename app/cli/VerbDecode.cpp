@@ -104,21 +104,29 @@ int runDecode(const QStringList& args) {
             // Without raw signals (which extend the summary afterwards) the dissectors may write
             // their summaries straight into the job.
             d.summarySink = raw.empty() ? &job->summaries : nullptr;
+            d.pdoTextSink = raw.empty() ? &job->pdo : nullptr;
             d.wantFields = !raw.empty();  // the raw signals join the PDO signals; text shows no other field
             for (size_t i = 0; i < batch.size(); ++i) {
                 const CanFrame& f = batch[i];
                 const size_t at = job->summaries.size();
+                const size_t pdoAt = job->pdo.records.size();
                 ctx.dissect(f, d, dissect::Dissection::Level::Flat);
                 if (!raw.empty()) dissect::applyRawSignals(raw, f, d);
+                const bool pdoRecord = job->pdo.records.size() != pdoAt;
                 if (!filter.isEmpty() && !filter.matches(f, d)) {
                     job->summaries.truncate(at);
+                    if (pdoRecord) {
+                        job->pdo.values.resize(job->pdo.records.back().valuesAt);
+                        job->pdo.records.pop_back();
+                    }
                     continue;
                 }
-                if (job->summaries.size() == at) job->summaries += d.summary;  // not written in the sink
+                if (job->summaries.size() == at && !pdoRecord) job->summaries += d.summary;  // not written in a sink
                 TextWriter::Line l;
                 l.frame = static_cast<uint32_t>(i);
                 l.summaryAt = static_cast<uint32_t>(at);
                 l.summaryLength = static_cast<uint32_t>(job->summaries.size() - at);
+                if (pdoRecord) l.pdoRecord = static_cast<int>(pdoAt);
                 if (!d.warnings.isEmpty()) {
                     l.warningAt = static_cast<int>(job->warnings.size());
                     l.warningCount = static_cast<int>(d.warnings.size());
@@ -132,6 +140,7 @@ int runDecode(const QStringList& args) {
                 job->lines.push_back(l);
             }
             d.summarySink = nullptr;
+            d.pdoTextSink = nullptr;
             d.wantFields = true;
             writer.submit(std::move(job));
         }

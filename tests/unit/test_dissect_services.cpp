@@ -4,6 +4,7 @@
 #include "core/can/CanFrame.h"
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
+#include "dissectors/PdoText.h"
 #include "dissectors/SummaryBuffer.h"
 #include "dissectors/VendorTable.h"
 
@@ -239,6 +240,66 @@ private slots:
             QCOMPARE(QString::fromUtf16(sink.data() + at, static_cast<qsizetype>(sink.size() - at)), plain.summary);
         }
         QVERIFY(plain.fieldCount() > 0);  // ds402.statusword, ds402.state
+    }
+
+    // The CLI's text output: PDO frames of integer signals leave records of their decoded values
+    // (pdoTextSink), written to text later on the writer thread. The text must be the one the
+    // frame had when it was decoded, also after the mapping changed.
+    void pdoRecordsIntoTextSink() {
+        NetworkContext ctx;
+        QString err;
+        QVERIFY(ctx.assignDictionary(1, QStringLiteral("delta-asda-a2"), &err));
+        Dissection plain, deferred;
+        PdoTextSink sink;
+        deferred.pdoTextSink = &sink;
+        deferred.wantFields = false;
+        // Sets TPDO1 of node 1 by SDO downloads of 1A00h (CiA 301 §7.5.2.38: disable with sub 0 = 0,
+        // write the entries, then sub 0 = count), each confirmed by the server.
+        auto mapTpdo1 = [&](const std::vector<uint32_t>& entries) {
+            std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0}};
+            for (size_t i = 0; i < entries.size(); ++i) {
+                const uint32_t e = entries[i];
+                writes.push_back({0x23, 0x00, 0x1A, uint8_t(i + 1), uint8_t(e), uint8_t(e >> 8), uint8_t(e >> 16), uint8_t(e >> 24)});
+            }
+            writes.push_back({0x2F, 0x00, 0x1A, 0x00, uint8_t(entries.size()), 0, 0, 0});
+            for (const auto& w : writes) {
+                CanFrame req = CanFrame::classic(0x601, {});
+                req.len = 8;
+                std::copy(w.begin(), w.end(), req.data.begin());
+                ctx.dissect(req, plain);
+                ctx.dissect(CanFrame::classic(0x581, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}), plain);
+            }
+        };
+        QStringList expected;
+        auto dissectBoth = [&](const CanFrame& f) {
+            ctx.dissect(f, plain);
+            expected << plain.summary;
+            const size_t before = sink.records.size();
+            ctx.dissect(f, deferred);
+            QCOMPARE(sink.records.size(), before + 1);
+            QVERIFY(deferred.summary.isEmpty());
+        };
+        // Statusword 6041h (16 bit, hex by CiA 301 notation) + position actual value 6064h (INTEGER32).
+        mapTpdo1({0x60410010, 0x60640020});
+        dissectBoth(fr(0x181, {0x37, 0x16, 0x9C, 0xFF, 0xFF, 0xFF}));  // 1637h: operation enabled (CiA 402 Table 30); -100
+        QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Statusword = 1637h (Operation enabled), Position actual value = -100 PUU"));
+        dissectBoth(fr(0x181, {0x08, 0x00, 0x40, 0x42, 0x0F, 0x00}));  // 0008h: fault; 1000000
+        // Remapped: modes of operation display 6061h (INTEGER8) + statusword.
+        mapTpdo1({0x60610008, 0x60410010});
+        dissectBoth(fr(0x181, {0x08, 0x37, 0x02}));  // 8 = cyclic synchronous position (CiA 402 Table 35)
+        dissectBoth(fr(0x181, {0xFF, 0x40, 0x02}));  // -1: manufacturer-specific; 0240h: switch on disabled
+        QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Modes of operation display = -1 (Manufacturer-specific mode -1), "
+                                                 "Statusword = 0240h (Switch on disabled)"));
+        QCOMPARE(sink.records.size(), size_t(4));
+        for (size_t i = 0; i < sink.records.size(); ++i) {
+            SummaryBuffer text;
+            {
+                SummaryBuffer::Cursor w(text);
+                writePdoSummary(w, sink.records[i], sink.values.data() + sink.records[i].valuesAt);
+            }
+            QCOMPARE(QString::fromUtf16(text.data(), static_cast<qsizetype>(text.size())), expected[static_cast<qsizetype>(i)]);
+        }
+        QVERIFY(expected[0] != expected[2]);
     }
 
     void sdoVendorAbort() {
