@@ -122,7 +122,7 @@ int runDecode(const QStringList& args) {
                     continue;
                 }
                 if (job->summaries.size() == at && !pdoRecord) job->summaries += d.summary;  // not written in a sink
-                TextWriter::Line l;
+                TextWriter::Line& l = job->lines.emplace_back();  // in place: a copy would reload it whole
                 l.frame = static_cast<uint32_t>(i);
                 l.summaryAt = static_cast<uint32_t>(at);
                 l.summaryLength = static_cast<uint32_t>(job->summaries.size() - at);
@@ -137,7 +137,6 @@ int runDecode(const QStringList& args) {
                     dissect::appendTransferText(job->transfers, d);
                     l.transferLength = static_cast<int>(job->transfers.size()) - l.transferAt;
                 }
-                job->lines.push_back(l);
             }
             d.summarySink = nullptr;
             d.pdoTextSink = nullptr;
