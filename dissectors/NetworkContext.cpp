@@ -5,6 +5,8 @@
 #include "dissectors/Services.h"
 #include "dissectors/VendorTable.h"
 
+#include <array>
+
 namespace coscope::dissect {
 
 using canopen::Service;
@@ -181,6 +183,18 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
     }
 }
 
+namespace {
+// canopen::classifyCobId() of every 11-bit identifier, looked up once per frame.
+const std::array<canopen::CobIdInfo, 0x800>& standardCobIds() {
+    static const auto table = [] {
+        std::array<canopen::CobIdInfo, 0x800> t;
+        for (uint32_t id = 0; id < t.size(); ++id) t[id] = canopen::classifyCobId(id);
+        return t;
+    }();
+    return table;
+}
+}  // namespace
+
 void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection::Level level) {
     ++frames_;
     if (frame.bus != current_) selectBus(frame.bus);
@@ -208,7 +222,7 @@ void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection:
                 return;
             }
         } else {
-            const canopen::CobIdInfo info = canopen::classifyCobId(frame.id, frame.isExtended());
+            const canopen::CobIdInfo info = frame.isExtended() ? canopen::CobIdInfo{} : standardCobIds()[frame.id & 0x7FF];
             service = info.service;
             node = info.node;
             if (const int p = canopen::pdoNumber(service); p >= 0) out.pdoNumber = p + 1;

@@ -7,12 +7,6 @@
 
 namespace coscope::dissect {
 
-int PdoConfig::mappedBits() const {
-    int bits = 0;
-    for (int i = 0; i < count && i < static_cast<int>(entries.size()); ++i) bits += entries[static_cast<size_t>(i)].bits;
-    return bits;
-}
-
 PdoMapEntry makeMapEntry(uint32_t raw, const od::ObjectDictionary* dict) {
     PdoMapEntry e;
     e.index = static_cast<uint16_t>(raw >> 16);

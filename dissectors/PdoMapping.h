@@ -46,7 +46,12 @@ struct PdoConfig {
 
     bool valid() const { return cobIdKnown && !(cobId & 0x80000000u); }
     uint32_t canId() const { return cobId & ((cobId & 0x20000000u) ? 0x1FFFFFFFu : 0x7FFu); }
-    int mappedBits() const;
+    int mappedBits() const {  // inline: every PDO frame checks its length by it
+        int bits = 0;
+        const int n = count < static_cast<int>(entries.size()) ? count : static_cast<int>(entries.size());
+        for (int i = 0; i < n; ++i) bits += entries[static_cast<size_t>(i)].bits;
+        return bits;
+    }
 };
 
 // Fills `e` from a raw mapping value, resolving name/type/unit in `dict` (may be null).
