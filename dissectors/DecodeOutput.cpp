@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/DecodeOutput.h"
 
+#include "dissectors/ShortCopy.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -261,24 +263,6 @@ qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qs
 }
 
 namespace {
-// A few bytes copied inline, in two overlapping fixed-size moves: glibc's memcpy and memset
-// for them (its AVX-512 versions on the benchmark machine) cost more than the line around them.
-[[gnu::always_inline]] inline void copyFew(char* o, const char* s, size_t n) {
-    auto two = [&]<size_t W>() {  // W <= n <= 2 * W
-        char a[W], b[W];
-        __builtin_memcpy(a, s, W);
-        __builtin_memcpy(b, s + n - W, W);
-        __builtin_memcpy(o, a, W);
-        __builtin_memcpy(o + n - W, b, W);
-    };
-    if (n > 32) [[unlikely]]
-        std::memcpy(o, s, n);
-    else if (n > 16) two.template operator()<16>();
-    else if (n > 8) two.template operator()<8>();
-    else if (n > 4) two.template operator()<4>();
-    else
-        for (size_t i = 0; i < n; ++i) o[i] = s[i];
-}
 constexpr char kSpaces[] = "                                ";  // 32
 constexpr char kDigitPairs[] =
     "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
@@ -291,7 +275,7 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
         // The seconds (and sign) change rarely: their text is kept from the previous line.
         thread_local int64_t lastSec = -1;
         thread_local bool lastNeg = false;
-        thread_local char secText[64];  // 21 at most; room for copyFew()
+        thread_local char secText[80];  // 21 at most; room for copyShort()
         thread_local int secLen = 0;
         const int64_t us = f.timestampNs / 1000;
         int64_t frac = us < 0 ? -(us % 1000000) : us % 1000000;
@@ -310,7 +294,7 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
             lastSec = sec;
             lastNeg = neg;
         }
-        copyFew(o, secText, static_cast<size_t>(secLen));
+        copyShort(o, secText, static_cast<size_t>(secLen));
         o += secLen;
         *o++ = '.';
         for (int i = 4; i >= 0; i -= 2, frac /= 100) {  // two digits at a time
@@ -350,7 +334,7 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
     int pad = 26 - 3 * f.payloadSize();
     if (pad < 0) pad = 0;
     pad += 2;
-    if (pad <= 32) copyFew(o, kSpaces, static_cast<size_t>(pad));
+    if (pad <= 32) copyShort(o, kSpaces, static_cast<size_t>(pad));
     else std::memset(o, ' ', static_cast<size_t>(pad));
     o += pad;
     o = putUtf8(o, summary.data(), static_cast<qsizetype>(summary.size()));

@@ -102,6 +102,26 @@ void decodeInteger(const PdoMapEntry& e, const uint8_t* data, int at, PdoSignal&
     }
 }
 
+// Calls f(entry, bit offset, signal) for each mapped object of the frame, dummies and what lies
+// past the payload left out; the signal (Dissection::addSignal) carries its place.
+template <typename F>
+void forEachSignal(DissectCall& c, const PdoConfig& cfg, F f) {
+    int bit = 0;
+    for (int i = 0; i < cfg.count; ++i) {
+        const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
+        const int at = bit;
+        bit += e.bits;
+        if (e.dummy || e.bits == 0) continue;
+        if (bit > c.len * 8) break;
+        PdoSignal& sig = c.out.addSignal(e.name, e.unit);  // without wantFields: a scratch signal
+        sig.index = e.index;
+        sig.sub = e.sub;
+        sig.bitOffset = static_cast<uint8_t>(at);
+        sig.bitLength = e.bits;
+        f(e, at, sig);
+    }
+}
+
 bool isInteger(const PdoMapEntry& e) {
     return e.factor == 1.0 && e.bits <= 64 && (e.cls == od::TypeClass::Signed || e.cls == od::TypeClass::Unsigned);
 }
@@ -120,18 +140,7 @@ bool onlyIntegers(const PdoConfig& cfg) {
 // CiA 402 fields added as asked.
 void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue>& values) {
     Dissection& out = c.out;
-    int bit = 0;
-    for (int i = 0; i < cfg.count; ++i) {
-        const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
-        const int at = bit;
-        bit += e.bits;
-        if (e.dummy || e.bits == 0) continue;
-        if (bit > c.len * 8) break;
-        PdoSignal& sig = out.addSignal(e.name, e.unit);  // without wantFields: a scratch signal
-        sig.index = e.index;
-        sig.sub = e.sub;
-        sig.bitOffset = static_cast<uint8_t>(at);
-        sig.bitLength = e.bits;
+    forEachSignal(c, cfg, [&](const PdoMapEntry& e, int at, PdoSignal& sig) {
         PdoTextValue& v = values.emplace_back();
         v.label = reinterpret_cast<const char16_t*>(e.label.constData());
         v.labelLength = static_cast<uint16_t>(e.label.size());
@@ -148,7 +157,7 @@ void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue
             v.meaning = reinterpret_cast<const char16_t*>(m.constData());
             v.meaningLength = static_cast<uint16_t>(m.size());
         }
-    }
+    });
 }
 
 // The summary and, as asked, the signals and the tree items of any PDO (the tree, scaled or
@@ -162,19 +171,8 @@ void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg
         if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
         return;
     }
-    int bit = 0;
     bool first = true;
-    for (int i = 0; i < cfg->count; ++i) {
-        const PdoMapEntry& e = cfg->entries[static_cast<size_t>(i)];
-        const int at = bit;
-        bit += e.bits;
-        if (e.dummy || e.bits == 0) continue;
-        if (bit > c.len * 8) break;
-        PdoSignal& sig = out.addSignal(e.name, e.unit);  // without wantFields: a scratch signal
-        sig.index = e.index;
-        sig.sub = e.sub;
-        sig.bitOffset = static_cast<uint8_t>(at);
-        sig.bitLength = e.bits;
+    forEachSignal(c, *cfg, [&](const PdoMapEntry& e, int at, PdoSignal& sig) {
         if (first) w.put(u' ');
         else w.put(u", ");
         first = false;
@@ -209,7 +207,7 @@ void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg
                 w.put(u')');
             }
         }
-    }
+    });
 }
 }  // namespace
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "dissectors/ShortCopy.h"
+
 #include <QString>
 
 #include <algorithm>
@@ -37,19 +39,11 @@ public:
         copyUnits(room(k), t, k);
         n_ += k;
     }
-    // A u"..." literal: its length is known, the copy inlined.
-    template <size_t N>
-    void appendLiteral(const char16_t (&t)[N]) {
-        std::memcpy(room(N - 1), t, (N - 1) * sizeof(char16_t));
-        n_ += N - 1;
-    }
     SummaryBuffer& operator+=(char16_t c) {
         *room(1) = c;
         ++n_;
         return *this;
     }
-    void appendDecimal(int64_t v) { appendDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0); }
-    void appendDecimal(uint64_t u, bool negative) { n_ = static_cast<size_t>(writeDecimal(room(kDecimalRoom), u, negative) - buf_.get()); }
     // Space for at least k more code units at the end; commit what was written with grew().
     [[gnu::always_inline]] char16_t* room(size_t k) {
         if (n_ + k > cap_) [[unlikely]]
@@ -114,29 +108,8 @@ public:
 
 private:
     static constexpr size_t kDecimalRoom = 21;  // sign and 20 digits
-    // Names, units and meanings are short: copied inline, in two overlapping fixed-size moves,
-    // not by a call to the C library's memcpy. On the benchmark machine glibc picks its
-    // AVX-512 memcpy, and calling it for every signal name made decode text 1.3-2.5x slower.
-    [[gnu::always_inline]] static void copyUnits(char16_t* d, const char16_t* t, size_t k) {
-        auto* o = reinterpret_cast<unsigned char*>(d);
-        const auto* i = reinterpret_cast<const unsigned char*>(t);
-        const size_t n = k * sizeof(char16_t);
-        auto two = [&]<size_t W>() {  // W <= n <= 2 * W
-            unsigned char a[W], b[W];
-            __builtin_memcpy(a, i, W);
-            __builtin_memcpy(b, i + n - W, W);
-            __builtin_memcpy(o, a, W);
-            __builtin_memcpy(o + n - W, b, W);
-        };
-        if (n > 64) [[unlikely]]
-            std::memcpy(o, i, n);
-        else if (n > 32) two.template operator()<32>();
-        else if (n > 16) two.template operator()<16>();
-        else if (n > 8) two.template operator()<8>();
-        else if (n > 4) two.template operator()<4>();
-        else if (n == 4) __builtin_memcpy(o, i, 4);
-        else if (n == 2) __builtin_memcpy(o, i, 2);
-    }
+    // Names, units and meanings are short: copied inline (ShortCopy.h).
+    [[gnu::always_inline]] static void copyUnits(char16_t* d, const char16_t* t, size_t k) { copyShort(d, t, k * sizeof(char16_t)); }
     // The decimal text of u (after '-' when negative) at p, digits counted first (no temporary
     // to copy) and written two at a time; returns the end.
     [[gnu::always_inline]] static char16_t* writeDecimal(char16_t* p, uint64_t u, bool negative) {

@@ -19,6 +19,24 @@ using canopen::Service;
 
 namespace {
 CanFrame fr(uint32_t id, std::initializer_list<uint8_t> b) { return CanFrame::classic(id, b); }
+
+// Sets TPDO1 of node 1 by SDO downloads of 1A00h, each confirmed by the server (CiA 301
+// §7.5.2.38: disable with sub 0 = 0, write the entries, then sub 0 = their count).
+void mapTpdo1(NetworkContext& ctx, Dissection& d, const std::vector<uint32_t>& entries) {
+    std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0}};
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const uint32_t e = entries[i];
+        writes.push_back({0x23, 0x00, 0x1A, uint8_t(i + 1), uint8_t(e), uint8_t(e >> 8), uint8_t(e >> 16), uint8_t(e >> 24)});
+    }
+    writes.push_back({0x2F, 0x00, 0x1A, 0x00, uint8_t(entries.size()), 0, 0, 0});
+    for (const auto& w : writes) {
+        CanFrame req = CanFrame::classic(0x601, {});
+        req.len = 8;
+        std::copy(w.begin(), w.end(), req.data.begin());
+        ctx.dissect(req, d);
+        ctx.dissect(CanFrame::classic(0x581, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}), d);
+    }
+}
 QJsonObject json(const CanFrame& f, const Dissection& d) {
     QByteArray line;
     appendJson(line, f, d, QStringLiteral("can0"));
@@ -213,18 +231,8 @@ private slots:
         SummaryBuffer sink;
         sunk.summarySink = &sink;
         sunk.wantFields = false;
-        // TPDO1 of node 1 = statusword 6041h (16 bit) + target position 607Ah (INTEGER32), each write confirmed.
-        const std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0},
-                                                          {0x23, 0x00, 0x1A, 0x01, 0x10, 0x00, 0x41, 0x60},
-                                                          {0x23, 0x00, 0x1A, 0x02, 0x20, 0x00, 0x7A, 0x60},
-                                                          {0x2F, 0x00, 0x1A, 0x00, 0x02, 0, 0, 0}};
-        for (const auto& w : writes) {
-            CanFrame req = CanFrame::classic(0x601, {});
-            req.len = 8;
-            std::copy(w.begin(), w.end(), req.data.begin());
-            ctx.dissect(req, plain);
-            ctx.dissect(CanFrame::classic(0x581, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}), plain);
-        }
+        // TPDO1 of node 1 = statusword 6041h (16 bit) + target position 607Ah (INTEGER32).
+        mapTpdo1(ctx, plain, {0x60410010, 0x607A0020});
         for (const int32_t v : {0, 9, 10, 99, 100, 12345678, -1, -100, INT32_MAX, INT32_MIN}) {
             const auto u = static_cast<uint32_t>(v);
             const CanFrame f = fr(0x181, {0x37, 0x16, uint8_t(u), uint8_t(u >> 8), uint8_t(u >> 16), uint8_t(u >> 24)});
@@ -253,23 +261,6 @@ private slots:
         PdoTextSink sink;
         deferred.pdoTextSink = &sink;
         deferred.wantFields = false;
-        // Sets TPDO1 of node 1 by SDO downloads of 1A00h (CiA 301 §7.5.2.38: disable with sub 0 = 0,
-        // write the entries, then sub 0 = count), each confirmed by the server.
-        auto mapTpdo1 = [&](const std::vector<uint32_t>& entries) {
-            std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0}};
-            for (size_t i = 0; i < entries.size(); ++i) {
-                const uint32_t e = entries[i];
-                writes.push_back({0x23, 0x00, 0x1A, uint8_t(i + 1), uint8_t(e), uint8_t(e >> 8), uint8_t(e >> 16), uint8_t(e >> 24)});
-            }
-            writes.push_back({0x2F, 0x00, 0x1A, 0x00, uint8_t(entries.size()), 0, 0, 0});
-            for (const auto& w : writes) {
-                CanFrame req = CanFrame::classic(0x601, {});
-                req.len = 8;
-                std::copy(w.begin(), w.end(), req.data.begin());
-                ctx.dissect(req, plain);
-                ctx.dissect(CanFrame::classic(0x581, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}), plain);
-            }
-        };
         QStringList expected;
         auto dissectBoth = [&](const CanFrame& f) {
             ctx.dissect(f, plain);
@@ -280,12 +271,12 @@ private slots:
             QVERIFY(deferred.summary.isEmpty());
         };
         // Statusword 6041h (16 bit, hex by CiA 301 notation) + position actual value 6064h (INTEGER32).
-        mapTpdo1({0x60410010, 0x60640020});
+        mapTpdo1(ctx, plain, {0x60410010, 0x60640020});
         dissectBoth(fr(0x181, {0x37, 0x16, 0x9C, 0xFF, 0xFF, 0xFF}));  // 1637h: operation enabled (CiA 402 Table 30); -100
         QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Statusword = 1637h (Operation enabled), Position actual value = -100 PUU"));
         dissectBoth(fr(0x181, {0x08, 0x00, 0x40, 0x42, 0x0F, 0x00}));  // 0008h: fault; 1000000
         // Remapped: modes of operation display 6061h (INTEGER8) + statusword.
-        mapTpdo1({0x60610008, 0x60410010});
+        mapTpdo1(ctx, plain, {0x60610008, 0x60410010});
         dissectBoth(fr(0x181, {0x08, 0x37, 0x02}));  // 8 = cyclic synchronous position (CiA 402 Table 35)
         dissectBoth(fr(0x181, {0xFF, 0x40, 0x02}));  // -1: manufacturer-specific; 0240h: switch on disabled
         QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Modes of operation display = -1 (Manufacturer-specific mode -1), "
