@@ -83,7 +83,7 @@ QString Ds402Controller::explainMismatch(State s, uint16_t sw) {
 }
 
 void Ds402Controller::readState(Ds402Callback done) {
-    sdo_.upload(node_, objectIndex(0x6041), 0, [this, done](const SdoResult& r) {
+    sdo_.upload(node_, objectIndex(0x6041), 0, [done](const SdoResult& r) {
         Ds402Result out;
         if (!r.ok) {
             out.error = r.error;

@@ -3,7 +3,8 @@
 // between writing each trace's spans column by column (thin spans) and a row sweep (tall,
 // overlaid spans). Either way the image must be pixel for pixel what painting the traces one
 // after the other gives (a later trace covers an earlier one), including groups cut by the
-// image's edge and by the clip rect, and traces with gaps.
+// image's edge and by the clip rect, and traces with gaps. Where the CPU has AVX-512 the canvas
+// writes with masked stores; each case runs both ways there.
 #include "app/gui/plot/SpanCanvas.h"
 
 #include <QtTest>
@@ -51,14 +52,24 @@ private slots:
     void equalsTracesPaintedInTurn_data() {
         QTest::addColumn<int>("height");
         QTest::addColumn<bool>("gaps");
-        QTest::newRow("thin spans (column by column)") << 6 << false;
-        QTest::newRow("tall overlaid spans (row sweep)") << 400 << false;
-        QTest::newRow("mixed, with gaps") << 60 << true;
+        QTest::addColumn<bool>("masked");
+        for (const bool masked : {false, true}) {
+            if (masked && !SpanCanvas::maskedStoresSupported()) {
+                qInfo("this CPU has no AVX-512: the masked-store cases are not run");
+                break;
+            }
+            const char* how = masked ? ", AVX-512 masked stores" : ", portable loops";
+            QTest::newRow(qPrintable(QStringLiteral("one-pixel spans (a steep thin line)") + how)) << 0 << false << masked;
+            QTest::newRow(qPrintable(QStringLiteral("thin spans (column by column)") + how)) << 6 << false << masked;
+            QTest::newRow(qPrintable(QStringLiteral("tall overlaid spans (row sweep)") + how)) << 400 << false << masked;
+            QTest::newRow(qPrintable(QStringLiteral("mixed, with gaps") + how)) << 60 << true << masked;
+        }
     }
 
     void equalsTracesPaintedInTurn() {
         QFETCH(int, height);
         QFETCH(bool, gaps);
+        QFETCH(bool, masked);
         std::mt19937 rng(uint32_t(height) * 7919u + (gaps ? 1u : 0u));
         const int width = 403, rows = 300;  // not a whole number of 16-column groups
         QImage expected(width, rows, QImage::Format_ARGB32_Premultiplied);
@@ -77,6 +88,7 @@ private slots:
         reference(expected, traces, dx, dy, clip);
 
         SpanCanvas canvas;
+        canvas.setMaskedStores(masked);
         canvas.begin(&actual);
         for (const TraceSpec& t : traces) QVERIFY(canvas.add(&actual, t.px, t.spans, dx, dy, clip));
         canvas.flush();

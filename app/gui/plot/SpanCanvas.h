@@ -28,6 +28,13 @@ public:
     // Writes every trace added since begin() and forgets them.
     void flush();
 
+    // AVX-512 masked stores write 16 pixels of a row at once where the CPU has them (the
+    // default there); off, the portable loops write the same pixels (the tests compare both).
+    static bool maskedStoresSupported();
+    void setMaskedStores(bool on);
+
+    struct Lanes;  // one trace's spans within a group of 16 columns (SpanCanvas.cpp)
+
 private:
     struct Span {
         int x, top, bottom;  // image coordinates, clipped
@@ -39,6 +46,7 @@ private:
     void writeGroup(int x0, size_t first, size_t last, std::vector<size_t>& cursor);
 
     QImage* image_ = nullptr;
+    bool masked_ = maskedStoresSupported();
     std::vector<Trace> traces_;  // [0, used_) pending; the rest kept for their memory
     size_t used_ = 0;
 };
