@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -16,14 +17,20 @@ namespace {
 
 const char kHex[] = "0123456789abcdef";
 
-void appendNumber(QByteArray& out, int64_t v) {
+// The decimal text of v at o ('-' first when negative); returns the end.
+char* putNumber(char* o, int64_t v) {
     char buf[24];
     char* const e = buf + sizeof buf;
     char* p = e;
     uint64_t u = v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
     do { *--p = char('0' + u % 10); u /= 10; } while (u);
     if (v < 0) *--p = '-';
-    out.append(p, e - p);
+    std::memcpy(o, p, static_cast<size_t>(e - p));
+    return o + (e - p);
+}
+void appendNumber(QByteArray& out, int64_t v) {
+    char buf[24];
+    out.append(buf, putNumber(buf, v) - buf);
 }
 void appendUNumber(QByteArray& out, uint64_t v) {
     char buf[24];
@@ -347,44 +354,47 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
     return o;
 }
 
-namespace {
-// UTF-8 of `s` appended without a temporary QByteArray.
-void appendUtf8(QByteArray& out, const QString& s) {
-    const qsizetype at = out.size();
-    out.resize(at + 3 * s.size());
-    char* const e = putUtf8(out.data() + at, s);
-    out.resize(e - out.constData());
-}
-}  // namespace
 
 void appendTransferText(QByteArray& out, const Dissection& d) {
-    // One per SDO transfer: written piece by piece, without temporary strings.
+    // One per SDO transfer: written in place after one resize, without temporary strings.
     const SdoTransferRecord& t = d.transfer;
-    out.append(t.upload ? "    = SDO upload " : "    = SDO download ");
-    out.append(t.block ? "block" : t.segmented ? "segmented" : "expedited");
-    out.append(" node ");
-    appendNumber(out, t.node);
+    const bool aborted = t.status == QLatin1String("aborted");
+    const QString abort = aborted ? QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText) : QString();
+    const qsizetype at = out.size();
+    // Fixed text and numbers fit in 96 bytes; a UTF-16 unit is at most 3 bytes of UTF-8.
+    out.resize(at + 96 + 3 * (t.name.size() + t.status.size() + abort.size() + t.valueText.size()));
+    char* o = out.data() + at;
+    const auto put = [&o](std::string_view text) {
+        std::memcpy(o, text.data(), text.size());
+        o += text.size();
+    };
+    put(t.upload ? "    = SDO upload " : "    = SDO download ");
+    put(t.block ? "block" : t.segmented ? "segmented" : "expedited");
+    put(" node ");
+    o = putNumber(o, t.node);
     static const char kUpper[] = "0123456789ABCDEF";
-    const char obj[9] = {' ', kUpper[t.index >> 12], kUpper[(t.index >> 8) & 15], kUpper[(t.index >> 4) & 15], kUpper[t.index & 15],
-                         ':', kUpper[t.sub >> 4], kUpper[t.sub & 15], 0};
-    out.append(obj, 8);
+    const char obj[8] = {' ', kUpper[t.index >> 12], kUpper[(t.index >> 8) & 15], kUpper[(t.index >> 4) & 15], kUpper[t.index & 15],
+                         ':', kUpper[t.sub >> 4], kUpper[t.sub & 15]};
+    put(std::string_view(obj, 8));
     if (!t.name.isEmpty()) {
-        out.append(' ');
-        appendUtf8(out, t.name);
+        *o++ = ' ';
+        o = putUtf8(o, t.name);
     }
-    out.append(": ");
-    appendUtf8(out, t.status);
-    if (t.status == QLatin1String("aborted")) out.append(QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText).toUtf8());
-    else {
-        out.append(", ");
-        appendNumber(out, t.size);
-        out.append(" bytes");
+    put(": ");
+    o = putUtf8(o, t.status);
+    if (aborted) {
+        o = putUtf8(o, abort);
+    } else {
+        put(", ");
+        o = putNumber(o, t.size);
+        put(" bytes");
         if (!t.valueText.isEmpty()) {
-            out.append(" = ");
-            appendUtf8(out, t.valueText);
+            put(" = ");
+            o = putUtf8(o, t.valueText);
         }
     }
-    out.append('\n');
+    *o++ = '\n';
+    out.resize(o - out.constData());
 }
 
 QByteArray csvHeader() { return "t,bus,id,ext,rtr,fd,len,data,service,node,summary,warnings\n"; }

@@ -124,9 +124,11 @@ const od::ObjectDictionary* NetworkContext::namesFor(int node) const {
     const auto& nodes = buses_[current_].nodes;
     if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary) return nodes[static_cast<size_t>(node)].dictionary.get();
     if (!genericNames_) return nullptr;
-    if (!generic_) const_cast<NetworkContext*>(this)->generic_ = eds::DictionaryLibrary::shared().loadShared(QStringLiteral("generic-cia402"));
+    if (!generic_) const_cast<NetworkContext*>(this)->generic_ = genericDictionary();
     return generic_.get();
 }
+
+DictionaryPtr NetworkContext::genericDictionary() { return eds::DictionaryLibrary::shared().loadShared(QStringLiteral("generic-cia402")); }
 
 namespace {
 uint32_t littleEndian(const QByteArray& b) {

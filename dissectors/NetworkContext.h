@@ -64,6 +64,9 @@ public:
     // Names from the generic CiA 301/402 dictionary for nodes without one of their own (on by
     // default). Statistics turn it off: they show no names, and loading it costs ~5 ms.
     void setGenericNames(bool on) { genericNames_ = on; }
+    // That generic dictionary, parsed once per process and shared (thread-safe): a consumer may
+    // load it on another thread ahead of the frames that need it.
+    static DictionaryPtr genericDictionary();
 
     // Decodes one frame and advances the context.
     void dissect(const CanFrame& frame, Dissection& out, Dissection::Level level = Dissection::Level::Flat);

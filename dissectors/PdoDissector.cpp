@@ -105,7 +105,7 @@ void decodeInteger(const PdoMapEntry& e, const uint8_t* data, int at, PdoSignal&
 // Calls f(entry, bit offset, signal) for each mapped object of the frame, dummies and what lies
 // past the payload left out; the signal (Dissection::addSignal) carries its place.
 template <typename F>
-void forEachSignal(DissectCall& c, const PdoConfig& cfg, F f) {
+void forEachSignal(DissectCall& c, const PdoConfig& cfg, F&& f) {  // by reference: a capture block passed by value on the stack stalls its reload
     int bit = 0;
     for (int i = 0; i < cfg.count; ++i) {
         const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];

@@ -8,6 +8,7 @@
 #include "dissectors/Ds402Meaning.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/Services.h"
+#include "dissectors/SummaryBuffer.h"
 #include "dissectors/ValueText.h"
 #include "dissectors/VendorTable.h"
 
@@ -27,18 +28,15 @@ QString abortText(const NodeState& n, uint32_t code) {
 }
 
 // "6041:00 Statusword": index and sub-index in upper-case hex, then the name if any.
-QString objectLabel(uint16_t index, uint8_t sub, const QString& name) {
+void putObjectLabel(SummaryBuffer::Cursor& w, uint16_t index, uint8_t sub, const QString& name) {
     static const char16_t digits[] = u"0123456789ABCDEF";
     const char16_t label[7] = {digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15],
                                u':', digits[sub >> 4], digits[sub & 15]};
-    QString s;
-    s.reserve(7 + (name.isEmpty() ? 0 : 1 + name.size()));
-    s.append(reinterpret_cast<const QChar*>(label), 7);
+    w.put(label, 7);
     if (!name.isEmpty()) {
-        s += u' ';
-        s += name;
+        w.put(u' ');
+        w.put(name);
     }
-    return s;
 }
 
 // Types the value of an object with the dictionary, when the entry is known.
@@ -60,32 +58,67 @@ QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub
     return text;
 }
 
-// Appends "6041:00 Statusword" (objectLabel) to `s` in place.
-void appendObjectLabel(QString& s, uint16_t index, uint8_t sub, const QString& name) {
-    static const char16_t digits[] = u"0123456789ABCDEF";
-    const char16_t label[7] = {digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15],
-                               u':', digits[sub >> 4], digits[sub & 15]};
-    s.append(reinterpret_cast<const QChar*>(label), 7);
-    if (!name.isEmpty()) {
-        s += u' ';
-        s += name;
+// The line of a frame by its command: "SDO read node 1 6041:00 Statusword = 1637h", etc.
+void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node, const QString& cs, const QString& name,
+                  const QString& valueText, const NodeState& n) {
+    // "VERB node N OBJECT NAME" for the initiate lines, then the value or the announced size.
+    const auto initiate = [&](const auto& verb, bool data) {
+        w.put(verb);
+        w.put(u"node ");
+        w.putDecimal(node);
+        w.put(u' ');
+        putObjectLabel(w, f.index, f.sub, name);
+        if (!data) return;
+        if (f.expedited) {
+            w.put(u" = ");
+            w.put(valueText);
+        } else if (f.sizeIndicated) {
+            w.put(u", ");
+            w.putDecimal(f.size, false);
+            w.put(u" bytes (segmented)");
+        } else {
+            w.put(u" (segmented)");
+        }
+    };
+    // "node N" for the less frequent lines.
+    const QString who = QLatin1StringView("node ") + QString::number(node);
+    switch (f.command) {
+    case SdoCommand::InitiateDownloadRequest: initiate(u"SDO write ", true); break;
+    case SdoCommand::InitiateDownloadResponse: initiate(u"SDO write ok ", false); break;
+    case SdoCommand::InitiateUploadRequest: initiate(u"SDO read ", false); break;
+    case SdoCommand::InitiateUploadResponse: initiate(u"SDO read ", true); break;
+    case SdoCommand::Abort:
+        w.put(u"SDO abort ");
+        w.put(who);
+        w.put(u' ');
+        putObjectLabel(w, f.index, f.sub, name);
+        w.put(QStringLiteral(": %1 %2").arg(hex(f.abortCode, 8), abortText(n, f.abortCode)));
+        break;
+    case SdoCommand::DownloadSegmentRequest:
+    case SdoCommand::UploadSegmentResponse:
+        w.put(QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        break;
+    case SdoCommand::BlockSegment:
+        w.put(QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        break;
+    case SdoCommand::BlockDownloadInitiate:
+    case SdoCommand::BlockUploadInitiate:
+    case SdoCommand::BlockDownloadInitiateResponse:
+    case SdoCommand::BlockUploadInitiateResponse:
+        w.put(QStringLiteral("SDO %1 %2 ").arg(cs, who));
+        putObjectLabel(w, f.index, f.sub, name);
+        if (f.blockSize) w.put(QStringLiteral(", block size %1").arg(f.blockSize));
+        if (f.sizeIndicated) w.put(QStringLiteral(", %1 bytes").arg(f.size));
+        break;
+    case SdoCommand::BlockDownloadAck:
+    case SdoCommand::BlockUploadAck: w.put(QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who).arg(f.ackSeq).arg(f.blockSize)); break;
+    case SdoCommand::BlockDownloadEnd:
+    case SdoCommand::BlockUploadEnd:
+        w.put(QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0')));
+        break;
+    case SdoCommand::Invalid: w.put(QStringLiteral("SDO %1 (invalid)").arg(who)); break;
+    default: w.put(QStringLiteral("SDO %1 %2").arg(cs, who)); break;
     }
-}
-
-// "VERB node N OBJECT NAME", written into `s` reusing its capacity (the frequent SDO lines).
-void startSummary(QString& s, QLatin1StringView verb, int node, uint16_t index, uint8_t sub, const QString& name) {
-    s.resize(0);
-    s += verb;
-    s += QLatin1StringView("node ");
-    char16_t num[12];
-    char16_t* const e = num + 12;
-    char16_t* p = e;
-    auto u = static_cast<unsigned>(node < 0 ? -node : node);
-    do { *--p = static_cast<char16_t>(u'0' + u % 10); u /= 10; } while (u);
-    if (node < 0) *--p = u'-';
-    s.append(reinterpret_cast<const QChar*>(p), e - p);
-    s += u' ';
-    appendObjectLabel(s, index, sub, name);
 }
 
 }  // namespace
@@ -113,6 +146,14 @@ void dissectSdo(DissectCall& c) {
     // Names and typed values only when text is wanted: statistics need no dictionary.
     const od::ObjectDictionary* dict = out.wantText() ? c.ctx.namesFor(c.node) : nullptr;
     if (dict) out.namesFrom = dict->bundledName;
+    // The value an expedited initiate frame carries, typed once: an expedited upload ends its
+    // transfer on this frame with the same bytes, so the transfer's text is the same.
+    const bool carriesValue = f.expedited && (f.command == SdoCommand::InitiateDownloadRequest || f.command == SdoCommand::InitiateUploadResponse);
+    const bool haveValue = carriesValue && !f.data.isEmpty() && out.wantText();
+    QString valueTextOut;
+    FlatField value;
+    if (haveValue)
+        valueTextOut = typedValue(dict, f.index, f.sub, reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), value);
     if (out.hasTransfer) {
         SdoTransferRecord& t = out.transfer;
         if (t.status == QLatin1String("aborted")) t.abortText = abortText(n, t.abortCode);
@@ -121,8 +162,12 @@ void dissectSdo(DissectCall& c) {
             t.namesFrom = dict->bundledName;
         }
         if (!t.data.isEmpty() && out.wantText()) {
-            FlatField v;
-            t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);
+            if (haveValue && !t.segmented && !t.block && t.index == f.index && t.sub == f.sub && t.data == f.data) {
+                t.valueText = valueTextOut;
+            } else {
+                FlatField v;
+                t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);
+            }
         }
         c.ctx.applySdoTransfer(c.node, t);
     }
@@ -135,21 +180,13 @@ void dissectSdo(DissectCall& c) {
         out.addInt("sdo.index", f.index);
         out.addInt("sdo.sub", f.sub);
     }
-    // "node N" for the less frequent lines (the initiate lines write it in place).
-    const auto whoText = [&] { return QLatin1StringView("node ") + QString::number(c.node); };
-    QString& s = out.summary;
-    QString valueTextOut;
-    QString meaning;
-    const bool carriesValue = f.expedited && (f.command == SdoCommand::InitiateDownloadRequest || f.command == SdoCommand::InitiateUploadResponse);
-    if (carriesValue && !f.data.isEmpty()) {
-        FlatField v;
-        valueTextOut = typedValue(dict, f.index, f.sub, reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), v);
-        switch (v.kind) {
-        case FlatField::Kind::Int: out.addInt("sdo.value", v.i); break;
-        case FlatField::Kind::UInt: out.addUInt("sdo.value", v.u); break;
-        case FlatField::Kind::Real: out.addReal("sdo.value", v.d); break;
-        case FlatField::Kind::Bool: out.addBool("sdo.value", v.i != 0); break;
-        case FlatField::Kind::Text: out.addText("sdo.value", v.text); break;
+    if (haveValue) {
+        switch (value.kind) {
+        case FlatField::Kind::Int: out.addInt("sdo.value", value.i); break;
+        case FlatField::Kind::UInt: out.addUInt("sdo.value", value.u); break;
+        case FlatField::Kind::Real: out.addReal("sdo.value", value.d); break;
+        case FlatField::Kind::Bool: out.addBool("sdo.value", value.i != 0); break;
+        case FlatField::Kind::Text: out.addText("sdo.value", value.text); break;
         }
     }
     if (f.sizeIndicated && !f.expedited) out.addInt("sdo.size", f.size);
@@ -165,63 +202,6 @@ void dissectSdo(DissectCall& c) {
         break;
     default: break;
     }
-
-    // An initiate frame that carries data: its value, or the size a segmented transfer announces.
-    const auto appendInitiatedData = [&](QString& text) {
-        if (f.expedited) {
-            text += QLatin1StringView(" = ");
-            text += valueTextOut;
-        } else {
-            text += f.sizeIndicated ? QStringLiteral(", %1 bytes (segmented)").arg(f.size) : QStringLiteral(" (segmented)");
-        }
-    };
-    switch (f.command) {
-    case SdoCommand::InitiateDownloadRequest:
-        startSummary(s, QLatin1StringView("SDO write "), c.node, f.index, f.sub, name);
-        appendInitiatedData(s);
-        break;
-    case SdoCommand::InitiateDownloadResponse: startSummary(s, QLatin1StringView("SDO write ok "), c.node, f.index, f.sub, name); break;
-    case SdoCommand::InitiateUploadRequest: startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name); break;
-    case SdoCommand::InitiateUploadResponse:
-        startSummary(s, QLatin1StringView("SDO read "), c.node, f.index, f.sub, name);
-        appendInitiatedData(s);
-        break;
-    case SdoCommand::Abort:
-        s = QStringLiteral("SDO abort %1 %2: %3 %4").arg(whoText(), objectLabel(f.index, f.sub, name), hex(f.abortCode, 8), abortText(n, f.abortCode));
-        break;
-    case SdoCommand::DownloadSegmentRequest:
-    case SdoCommand::UploadSegmentResponse:
-        s = QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, whoText()).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
-        break;
-    case SdoCommand::BlockSegment:
-        s = QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(whoText()).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString());
-        break;
-    case SdoCommand::BlockDownloadInitiate:
-    case SdoCommand::BlockUploadInitiate:
-    case SdoCommand::BlockDownloadInitiateResponse:
-    case SdoCommand::BlockUploadInitiateResponse:
-        s = QStringLiteral("SDO %1 %2 %3").arg(cs, whoText(), objectLabel(f.index, f.sub, name));
-        if (f.blockSize) s += QStringLiteral(", block size %1").arg(f.blockSize);
-        if (f.sizeIndicated) s += QStringLiteral(", %1 bytes").arg(f.size);
-        break;
-    case SdoCommand::BlockDownloadAck:
-    case SdoCommand::BlockUploadAck:
-        s = QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, whoText()).arg(f.ackSeq).arg(f.blockSize);
-        break;
-    case SdoCommand::BlockDownloadEnd:
-    case SdoCommand::BlockUploadEnd:
-        s = QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, whoText()).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0'));
-        break;
-    case SdoCommand::Invalid: s = QStringLiteral("SDO %1 (invalid)").arg(whoText()); break;
-    default: s = QStringLiteral("SDO %1 %2").arg(cs, whoText()); break;
-    }
-    if (!f.hasMux && chActive && f.command != SdoCommand::Invalid) s += QStringLiteral(" [%1]").arg(objectLabel(chIndex, chSub, QString()));
-    if (out.hasTransfer) {
-        const SdoTransferRecord& t = out.transfer;
-        if (t.status == QLatin1String("ok") && (t.segmented || t.block))
-            s += QStringLiteral(" -> %1 %2 bytes%3").arg(t.upload ? QStringLiteral("read") : QStringLiteral("wrote")).arg(t.size).arg(t.valueText.isEmpty() ? QString() : QStringLiteral(" = ") + t.valueText.left(60));
-    }
-
     if (out.wantTree()) {
         out.item(0, QStringLiteral("Command"), QStringLiteral("%1 (0x%2)").arg(cs).arg(c.len ? c.data[0] : 0, 2, 16, QLatin1Char('0')), 0, 1);
         if (f.hasMux) {
@@ -232,16 +212,48 @@ void dissectSdo(DissectCall& c) {
         else if (carriesValue) out.item(0, QStringLiteral("Value"), valueTextOut, 4, static_cast<int>(f.data.size()));
         else if (!f.data.isEmpty()) out.item(0, QStringLiteral("Data"), hexBytes(reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), true), 1, static_cast<int>(f.data.size()));
     }
+    // The CiA 402 meaning of a control- or statusword value (adds its fields).
+    QString meaning;
     if (carriesValue && !f.data.isEmpty()) {
         uint64_t raw = 0;
         for (int i = 0; i < f.data.size() && i < 8; ++i) raw |= uint64_t(uint8_t(f.data[i])) << (8 * i);
         meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()));
+    }
+
+    // The summary, written into the consumer's buffer (Dissection::summarySink) or a reused
+    // scratch buffer copied into out.summary once: no temporary strings for the frequent
+    // initiate lines.
+    thread_local SummaryBuffer scratch;
+    SummaryBuffer& sb = out.summarySink ? *out.summarySink : scratch;
+    if (!out.summarySink) sb.clear();
+    {
+        SummaryBuffer::Cursor w(sb);
+        writeSummary(w, f, c.node, cs, name, valueTextOut, n);
+        if (!f.hasMux && chActive && f.command != SdoCommand::Invalid) {
+            w.put(u" [");
+            putObjectLabel(w, chIndex, chSub, QString());
+            w.put(u']');
+        }
+        if (out.hasTransfer) {
+            const SdoTransferRecord& t = out.transfer;
+            if (t.status == QLatin1String("ok") && (t.segmented || t.block)) {
+                if (t.upload) w.put(u" -> read ");
+                else w.put(u" -> wrote ");
+                w.putDecimal(t.size, false);
+                w.put(u" bytes");
+                if (!t.valueText.isEmpty()) {
+                    w.put(u" = ");
+                    w.put(t.valueText.left(60));
+                }
+            }
+        }
         if (!meaning.isEmpty()) {
-            s += QLatin1StringView(" (");
-            s += meaning;
-            s += u')';
+            w.put(u" (");
+            w.put(meaning);
+            w.put(u')');
         }
     }
+    if (!out.summarySink) sb.storeIn(out.summary);
 }
 
 }  // namespace coscope::dissect

@@ -17,6 +17,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace coscope::cli {
@@ -76,6 +77,9 @@ int runDecode(const QStringList& args) {
         if (!r) return usageError(kVerb, error);
         raw.push_back(*r);
     }
+    // Parsing the generic dictionary (names for nodes without one of their own) runs beside the
+    // reading of the first batches rather than on the decoding thread when an SDO first needs it.
+    std::jthread preload([] { dissect::NetworkContext::genericDictionary(); });
     dissect::NetworkContext ctx;
     ctx.setIdentityMatching(!parser.isSet(QStringLiteral("no-identity")));
     if (!applyDicts(ctx, parser.values(QStringLiteral("dict")), &code)) return code;
