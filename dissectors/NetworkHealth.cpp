@@ -16,13 +16,6 @@ namespace coscope::dissect {
 using canopen::Service;
 
 // ---- IntervalStats: a double's exponent and top 5 mantissa bits make a 1/32-octave bucket.
-int IntervalStats::bucketOf(int64_t ns) {
-    const double x = static_cast<double>(std::max<int64_t>(ns, 1));
-    uint64_t bits;
-    std::memcpy(&bits, &x, sizeof bits);
-    return static_cast<int>(bits >> 47) - (1023 << 5);  // >= 0 for x >= 1
-}
-
 double IntervalStats::bucketMidMs(int bucket) {
     const uint64_t bits = (static_cast<uint64_t>(bucket + (1023 << 5)) << 47) | (uint64_t{1} << 46);
     double x;
@@ -30,28 +23,20 @@ double IntervalStats::bucketMidMs(int bucket) {
     return x / 1e6;
 }
 
-void IntervalStats::add(int64_t ns) {
-    if (count == 0 || ns < minNs) minNs = ns;
-    if (count == 0 || ns > maxNs) maxNs = ns;
-    ++count;
-    const double ms = static_cast<double>(ns) / 1e6;
-    sumMs += ms;
-    sumSqMs += ms * ms;
-    const int b = bucketOf(ns);
-    if (static_cast<size_t>(b) >= histogram.size()) {
-        histogram.resize(static_cast<size_t>(b) + 1, 0);
-        bucketSumMs.resize(static_cast<size_t>(b) + 1, 0.0);
-    }
-    ++histogram[static_cast<size_t>(b)];
-    bucketSumMs[static_cast<size_t>(b)] += ms;
+double IntervalStats::jitterMs() const {
+    if (count == 0) return 0;
+    const double n = static_cast<double>(count);
+    const double meanDev = static_cast<double>(sumDevNs) / n;
+    const double var = sumSqDevNs / n - meanDev * meanDev;  // ns squared
+    return var > 0 ? std::sqrt(var) / 1e6 : 0;
 }
 
 double IntervalStats::medianMs() const {
     if (count == 0) return 0;
     uint64_t seen = 0;
-    for (size_t b = 0; b < histogram.size(); ++b) {
-        seen += histogram[b];
-        if (seen * 2 >= count) return bucketSumMs[b] / histogram[b];  // the mean of the median bucket
+    for (const Bucket& b : buckets) {
+        seen += b.count;
+        if (seen * 2 >= count) return static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;  // the mean of the median bucket
     }
     return 0;
 }
@@ -59,12 +44,12 @@ double IntervalStats::medianMs() const {
 uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* missingPeriods) const {
     uint64_t n = 0, missing = 0;
     if (periodMs <= 0) return 0;
-    for (size_t b = 0; b < histogram.size(); ++b) {
-        if (!histogram[b]) continue;
-        const double mid = bucketSumMs[b] / histogram[b];
+    for (const Bucket& b : buckets) {
+        if (!b.count) continue;
+        const double mid = static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;
         if (mid <= factor * periodMs) continue;
-        n += histogram[b];
-        missing += histogram[b] * static_cast<uint64_t>(std::max(0.0, std::round(mid / periodMs) - 1.0));
+        n += b.count;
+        missing += b.count * static_cast<uint64_t>(std::max(0.0, std::round(mid / periodMs) - 1.0));
     }
     if (missingPeriods) *missingPeriods = missing;
     return n;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <memory>
@@ -17,21 +18,49 @@ namespace coscope::dissect {
 
 struct VendorTable;
 
-// Periods of a repeating frame at little cost per frame: count, min, max, sum and sum of squares
-// (for the jitter), and a histogram in 1/32-octave buckets with their sums (for the median and
-// the gaps).
+// Periods of a repeating frame at little cost per frame: count, min, max, the sum and the sum of
+// squares of the deviations from the first period (the shifted-data variance: no cancellation
+// for a steady period), and a histogram in 1/32-octave buckets with their sums (for the median
+// and the gaps). Sums in nanoseconds: no division per frame.
 struct IntervalStats {
+    struct Bucket {
+        uint64_t count = 0;
+        int64_t sumNs = 0;  // the intervals of the bucket added up
+    };
     uint64_t count = 0;
     int64_t minNs = 0, maxNs = 0;
-    double sumMs = 0, sumSqMs = 0;
-    std::vector<uint32_t> histogram;  // by bucketOf(ns)
-    std::vector<double> bucketSumMs;  // the intervals of each bucket added up
+    int64_t shiftNs = 0;      // the first interval
+    int64_t sumDevNs = 0;     // of (interval - shiftNs)
+    double sumSqDevNs = 0;    // of (interval - shiftNs) squared
+    std::vector<Bucket> buckets;  // by bucketOf(ns)
 
-    void add(int64_t ns);
+    // Inline: every PDO and SYNC frame adds one.
+    void add(int64_t ns) {
+        if (count == 0) minNs = maxNs = shiftNs = ns;
+        if (ns < minNs) minNs = ns;
+        if (ns > maxNs) maxNs = ns;
+        ++count;
+        const int64_t dev = ns - shiftNs;
+        sumDevNs += dev;
+        sumSqDevNs += static_cast<double>(dev) * static_cast<double>(dev);
+        const auto b = static_cast<size_t>(bucketOf(ns));
+        if (b >= buckets.size()) [[unlikely]]
+            buckets.resize(b + 1);
+        ++buckets[b].count;
+        buckets[b].sumNs += ns;
+    }
+    double averageMs() const { return count ? (static_cast<double>(shiftNs) + static_cast<double>(sumDevNs) / static_cast<double>(count)) / 1e6 : 0; }
+    double jitterMs() const;  // standard deviation; 0 when empty
     double medianMs() const;  // 0 when empty
     // Gaps over `factor` x `periodMs`: how many, and how many whole periods they leave out.
     uint64_t countOver(double periodMs, double factor, uint64_t* missingPeriods = nullptr) const;
-    static int bucketOf(int64_t ns);
+    // The bucket of an interval: the top bits of its double (exponent and 5 bits of mantissa).
+    static int bucketOf(int64_t ns) {
+        const double x = static_cast<double>(ns > 1 ? ns : 1);
+        uint64_t bits;
+        std::memcpy(&bits, &x, sizeof bits);
+        return static_cast<int>(bits >> 47) - (1023 << 5);  // >= 0 for x >= 1
+    }
     static double bucketMidMs(int bucket);
 };
 

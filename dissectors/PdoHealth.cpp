@@ -62,9 +62,8 @@ void NetworkHealth::fillPdos(HealthReport& r, const NetworkContext* ctx) const {
         if (s.count) {
             h.periodMinMs = static_cast<double>(s.minNs) / 1e6;
             h.periodMaxMs = static_cast<double>(s.maxNs) / 1e6;
-            h.periodAvgMs = s.sumMs / static_cast<double>(s.count);
-            const double var = s.sumSqMs / static_cast<double>(s.count) - h.periodAvgMs * h.periodAvgMs;
-            h.jitterMs = var > 0 ? std::sqrt(var) : 0;
+            h.periodAvgMs = s.averageMs();
+            h.jitterMs = s.jitterMs();
             const double span = static_cast<double>(p.lastNs - p.firstNs) / 1e9;
             h.rateHz = span > 0 ? static_cast<double>(s.count) / span : 0;
         }
