@@ -62,20 +62,6 @@ NetworkHealth::NodeTrack& NetworkHealth::node(int bus, int id) {
     return *slot;
 }
 
-void NetworkHealth::addLoad(const CanFrame& f) {
-    const int64_t delta = f.timestampNs - firstNs_;
-    int64_t sec = sec_;
-    if (!(sec_ >= 0 && delta >= secLo_ && delta < secHi_)) {
-        sec = delta / 1000000000;
-        if (sec < 0 || sec >= 10000000) return;  // out of order or absurd: no load slot
-        sec_ = sec;
-        secLo_ = sec == 0 ? -999999999 : sec * 1000000000;
-        secHi_ = (sec + 1) * 1000000000;
-        if (static_cast<size_t>(sec) >= bitsPerSecond_.size()) bitsPerSecond_.resize(static_cast<size_t>(sec) + 1, 0.0);
-    }
-    bitsPerSecond_[static_cast<size_t>(sec)] += TraceStats::frameBits(f);
-}
-
 void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx) {
     if (!haveFirst_) {
         firstNs_ = f.timestampNs;
@@ -83,7 +69,7 @@ void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkCon
     }
     ++frames_;
     lastNs_ = std::max(lastNs_, f.timestampNs);
-    addLoad(f);
+    if (!sharedLoad_) ownLoad_.add(f);
     if (f.isError()) {
         ++errorFrames_;
         return;
@@ -171,11 +157,12 @@ void NetworkHealth::fillBus(HealthReport& r, const NetworkContext* ctx) const {
     b.errorFrames = errorFrames_;
     b.nonCanopen = nonCanopen_;
     b.durationS = static_cast<double>(lastNs_ - firstNs_) / 1e9;
-    const size_t n = bitsPerSecond_.size();
+    const std::vector<double>& bitsPerSecond = load().bitsPerSecond();
+    const size_t n = bitsPerSecond.size();
     double total = 0;
     b.perSecondPct.resize(n);
     for (size_t i = 0; i < n; ++i) {
-        const double pct = 100.0 * bitsPerSecond_[i] / bitRate_;
+        const double pct = 100.0 * bitsPerSecond[i] / bitRate_;
         b.perSecondPct[i] = pct;
         total += pct;
         if (pct > b.loadPeakPct) {

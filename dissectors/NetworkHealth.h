@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "dissectors/BusLoad.h"
 #include "dissectors/Dissection.h"
 #include "dissectors/HealthReport.h"
 #include "dissectors/NetworkContext.h"
@@ -84,6 +85,11 @@ public:
     // default: the last frame). `ctx` (may be null) adds the RPDOs configured with no producer.
     HealthReport report(const NetworkContext* ctx = nullptr, int64_t nowNs = std::numeric_limits<int64_t>::min()) const;
 
+    // The bus load is counted here, in add(), unless the consumer counts it itself (on the thread
+    // that reads the log, once for this report and the trace statistics) and hands it over here
+    // before the first frame; it must outlive this object's report().
+    void useBusLoad(const BusLoad* load) { sharedLoad_ = load; }
+
     uint64_t frames() const { return frames_; }
     int64_t lastNs() const { return lastNs_; }
 
@@ -147,7 +153,6 @@ private:
             buses_.resize(static_cast<size_t>(bus) + 1);
         return buses_[static_cast<size_t>(bus)];
     }
-    void addLoad(const CanFrame& f);
     void addErrorControl(const CanFrame& f, int node, BusTrack& b);   // HeartbeatHealth.cpp
     void addNmtCommand(const CanFrame& f, BusTrack& b);                // HeartbeatHealth.cpp
     void addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);  // SdoHealth.cpp
@@ -168,8 +173,9 @@ private:
     IntervalStats syncPeriods_;
     uint64_t syncs_ = 0;
     int syncPeriodUs_ = -1;
-    std::vector<double> bitsPerSecond_;
-    int64_t sec_ = -1, secLo_ = 0, secHi_ = 0;
+    BusLoad ownLoad_;
+    const BusLoad* sharedLoad_ = nullptr;  // useBusLoad(); not a pointer to ownLoad_, which moves with a copy
+    const BusLoad& load() const { return sharedLoad_ ? *sharedLoad_ : ownLoad_; }
 };
 
 // Findings in plain words, worst first (HealthFindings.cpp).

@@ -11,26 +11,7 @@ namespace coscope::dissect {
 
 void TraceStats::add(const CanFrame& f) {
     ++frames_;
-    if (!haveT0_) {
-        t0_ = f.timestampNs;
-        haveT0_ = true;
-    }
-    const int64_t delta = f.timestampNs - t0_;
-    int64_t sec;
-    if (sec_ >= 0 && delta >= secLo_ && delta < secHi_) {
-        sec = sec_;
-    } else {
-        sec = delta / 1000000000;  // truncates toward zero: (-1 s, 1 s) is second 0
-        if (sec >= 0 && sec < 1000000) {
-            sec_ = sec;
-            secLo_ = sec == 0 ? -999999999 : sec * 1000000000;
-            secHi_ = (sec + 1) * 1000000000;
-        }
-    }
-    if (sec >= 0 && sec < 1000000) {
-        if (static_cast<size_t>(sec) >= bitsPerSecond_.size()) bitsPerSecond_.resize(static_cast<size_t>(sec) + 1, 0.0);
-        bitsPerSecond_[static_cast<size_t>(sec)] += frameBits(f);
-    }
+    if (!sharedLoad_) ownLoad_.add(f);
     if (f.isError()) {
         ++errorFrames_;
         return;
@@ -98,19 +79,20 @@ QByteArray TraceStats::report(bool perSecond) const {
         }
     if (!anyNode) o.append("  (none)\n");
     double peak = 0, total = 0;
-    for (double b : bitsPerSecond_) {
+    const std::vector<double>& bitsPerSecond = load().bitsPerSecond();
+    for (double b : bitsPerSecond) {
         peak = std::max(peak, b);
         total += b;
     }
-    seconds = static_cast<double>(bitsPerSecond_.size());
+    seconds = static_cast<double>(bitsPerSecond.size());
     if (perSecond) {
         o.append("\nBus load (estimated, ");
         put("%d bit/s):\n", bitRate_);
     }
     if (perSecond && seconds > 0) put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_, 100.0 * peak / bitRate_, seconds);
-    const size_t shown = perSecond ? std::min<size_t>(bitsPerSecond_.size(), 3600) : 0;
-    for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond_[i] / bitRate_);
-    if (perSecond && shown < bitsPerSecond_.size()) put("  ... %zu more seconds\n", bitsPerSecond_.size() - shown);
+    const size_t shown = perSecond ? std::min<size_t>(bitsPerSecond.size(), 3600) : 0;
+    for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond[i] / bitRate_);
+    if (perSecond && shown < bitsPerSecond.size()) put("  ... %zu more seconds\n", bitsPerSecond.size() - shown);
     put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n", (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_),
         (unsigned long long)sdoOk_, (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
     for (const auto& [code, n] : abortCodes_)

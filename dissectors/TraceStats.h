@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanFrame.h"
+#include "dissectors/BusLoad.h"
 #include "dissectors/Dissection.h"
 #include "dissectors/NetworkContext.h"
 
@@ -15,22 +16,6 @@
 #include <vector>
 
 namespace coscope::dissect {
-
-// Bits on the wire by (extended, FD, payload size), computed at compile time (TraceStats::frameBits).
-// Classic base frame: SOF..CRC delimiter = 34 + 8n stuffable bits (+ 20 for a 29-bit id), then
-// ACK, EOF and intermission (13 bits); stuffing adds up to ~10 % of the stuffable bits. FD frames
-// are counted at the nominal rate (an overestimate when BRS is used).
-struct FrameBitsTable {
-    double bits[2][2][65];
-};
-constexpr FrameBitsTable makeFrameBitsTable() {
-    FrameBitsTable t{};
-    for (int ext = 0; ext < 2; ++ext)
-        for (int fd = 0; fd < 2; ++fd)
-            for (int n = 0; n <= 64; ++n) t.bits[ext][fd][n] = ((ext ? 54.0 : 34.0) + 8.0 * n + (fd ? 21.0 : 0.0)) * 1.1 + 13.0;
-    return t;
-}
-inline constexpr FrameBitsTable kFrameBits = makeFrameBitsTable();
 
 // What `coscope-cli stats` reports about a trace: frames per COB-ID and service, nodes with
 // their last NMT state, an estimated bus load per second, SDO transfers and aborts, EMCYs and
@@ -57,12 +42,10 @@ public:
     uint64_t emcys() const { return emcys_; }
     uint64_t framesOfService(canopen::Service s) const { return perService_[static_cast<size_t>(s)]; }
 
-    // Estimated bits on the wire of one frame: CiA/ISO 11898-1 frame fields plus an average
-    // stuffing of 1 bit in 10 of the stuffable part (nominal, not worst case). Inline: `stats`
-    // asks twice for every frame (trace and health bus load).
-    static double frameBits(const CanFrame& f) {
-        return kFrameBits.bits[f.isExtended() ? 1 : 0][f.isFd() ? 1 : 0][f.payloadSize() < 64 ? f.payloadSize() : 64];
-    }
+    // The bus load is counted here, in add(), unless the consumer counts it itself (on the thread
+    // that reads the log, once for this report and the health report) and hands it over here
+    // before the first frame; it must outlive this object's report().
+    void useBusLoad(const BusLoad* load) { sharedLoad_ = load; }
 
 private:
     NetworkContext ctx_;
@@ -77,12 +60,9 @@ private:
     std::map<int, uint64_t> emcyPerNode_;
     std::vector<std::array<uint64_t, 128>> nodeFrames_;  // per bus, per node-ID
     QStringList busNames_;
-    std::vector<double> bitsPerSecond_;
-    int64_t t0_ = 0;
-    bool haveT0_ = false;
-    // The second the last frame fell in and its range of (timestamp - t0_), [secLo_, secHi_):
-    // frames of the same second skip the division.
-    int64_t sec_ = -1, secLo_ = 0, secHi_ = 0;
+    BusLoad ownLoad_;
+    const BusLoad* sharedLoad_ = nullptr;  // useBusLoad(); not a pointer to ownLoad_, which moves with a copy
+    const BusLoad& load() const { return sharedLoad_ ? *sharedLoad_ : ownLoad_; }
     std::vector<QString> warningSamples_;
 };
 

@@ -5,6 +5,7 @@
 #include "app/cli/CliVerb.h"
 #include "core/logio/LogFormats.h"
 #include "core/logio/ReadAhead.h"
+#include "dissectors/BusLoad.h"
 #include "dissectors/HealthOutput.h"
 #include "dissectors/NetworkHealth.h"
 #include "dissectors/TraceStats.h"
@@ -52,9 +53,16 @@ int runStats(const QStringList& args) {
     QString error;
     auto reader = logio::LogFormats::openReader(pos[0], &error);
     if (!reader) return failure(kVerb, error);
+    // The bus load needs only the frames: counted once, for both reports, on the thread that
+    // reads the file, while this one decodes.
+    dissect::BusLoad load;
+    stats.useBusLoad(&load);
+    health.useBusLoad(&load);
     {
         // Parsing the file and counting run on two cores.
-        logio::ReadAhead ahead(*reader);
+        logio::ReadAhead ahead(*reader, logio::ReadAhead::kBatchFrames, logio::ReadAhead::kDepth, [&load](std::span<const CanFrame> batch) {
+            for (const CanFrame& f : batch) load.add(f);
+        });
         for (auto batch = ahead.next(); !batch.empty(); batch = ahead.next())
             for (const CanFrame& f : batch) {
                 stats.add(f);

@@ -3,10 +3,12 @@
 
 #include "core/logio/LogReader.h"
 
+#include <utility>
+
 namespace coscope::logio {
 
-ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth)
-    : reader_(reader), batchFrames_(batchFrames ? batchFrames : 1), slots_(depth < 2 ? 2 : depth) {
+ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth, BatchObserver observer)
+    : reader_(reader), batchFrames_(batchFrames ? batchFrames : 1), observer_(std::move(observer)), slots_(depth < 2 ? 2 : depth) {
     for (Slot& s : slots_) s.frames.resize(batchFrames_);
     thread_ = std::thread([this] { produce(); });
 }
@@ -35,6 +37,7 @@ void ReadAhead::produce() {
         // The slot is free (the consumer moved past it): fill it without the lock.
         slot->count = reader_.read(slot->frames.data(), slot->frames.size());
         slot->busNames = reader_.busNames();  // a shared copy, made on this thread
+        if (observer_ && slot->count) observer_(std::span<const CanFrame>(slot->frames.data(), slot->count));
         std::lock_guard lock(mutex_);
         if (slot->count == 0) {
             finished_ = true;

@@ -7,6 +7,7 @@
 
 #include <condition_variable>
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <span>
 #include <thread>
@@ -22,7 +23,13 @@ class LogReader;
 // returned an empty batch, which means the end, a fatal error or cancel().
 class ReadAhead {
 public:
-    explicit ReadAhead(LogReader& reader, size_t batchFrames = 4096, size_t depth = 4);
+    // What runs on the reading thread for each batch it has read, before the consumer gets it
+    // (work that needs only the frames, taken off the consumer's thread); it must not block.
+    using BatchObserver = std::function<void(std::span<const CanFrame>)>;
+
+    static constexpr size_t kBatchFrames = 4096, kDepth = 4;
+
+    explicit ReadAhead(LogReader& reader, size_t batchFrames = kBatchFrames, size_t depth = kDepth, BatchObserver observer = {});
     ~ReadAhead();  // cancels the reader if it is still running and waits for the thread
     ReadAhead(const ReadAhead&) = delete;
     ReadAhead& operator=(const ReadAhead&) = delete;
@@ -47,6 +54,7 @@ private:
     };
     LogReader& reader_;
     size_t batchFrames_;
+    BatchObserver observer_;
     std::vector<Slot> slots_;
     std::mutex mutex_;
     std::condition_variable changed_;

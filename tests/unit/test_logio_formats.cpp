@@ -18,6 +18,10 @@
 
 #include <zlib.h>
 
+#include <span>
+#include <thread>
+#include <vector>
+
 using namespace coscope;
 using namespace coscope::logio;
 
@@ -537,12 +541,22 @@ private slots:
         buf.open(QIODevice::ReadOnly);
         CandumpReader r;
         QVERIFY(r.open(&buf));
-        std::vector<CanFrame> got;
+        std::vector<CanFrame> got, observed;
+        std::thread::id observerThread;
         {
-            ReadAhead ahead(r, 1000, 3);
-            for (auto b = ahead.next(); !b.empty(); b = ahead.next()) got.insert(got.end(), b.begin(), b.end());
+            // The observer sees each batch on the reading thread before the consumer does.
+            ReadAhead ahead(r, 1000, 3, [&](std::span<const CanFrame> b) {
+                observerThread = std::this_thread::get_id();
+                observed.insert(observed.end(), b.begin(), b.end());
+            });
+            for (auto b = ahead.next(); !b.empty(); b = ahead.next()) {
+                QVERIFY(observed.size() >= got.size() + b.size());
+                got.insert(got.end(), b.begin(), b.end());
+            }
         }
         compareFrames(got, want, false, false);
+        compareFrames(observed, want, false, false);
+        QVERIFY(observerThread != std::thread::id() && observerThread != std::this_thread::get_id());
         QBuffer buf2(&text);
         buf2.open(QIODevice::ReadOnly);
         CandumpReader r2;
