@@ -80,8 +80,8 @@ void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node
             w.put(u" (segmented)");
         }
     };
-    // "node N" for the less frequent lines.
-    const QString who = QLatin1StringView("node ") + QString::number(node);
+    // "node N" for the less frequent lines (made only for them).
+    const auto who = [node] { return QLatin1StringView("node ") + QString::number(node); };
     switch (f.command) {
     case SdoCommand::InitiateDownloadRequest: initiate(u"SDO write ", true); break;
     case SdoCommand::InitiateDownloadResponse: initiate(u"SDO write ok ", false); break;
@@ -89,35 +89,35 @@ void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node
     case SdoCommand::InitiateUploadResponse: initiate(u"SDO read ", true); break;
     case SdoCommand::Abort:
         w.put(u"SDO abort ");
-        w.put(who);
+        w.put(who());
         w.put(u' ');
         putObjectLabel(w, f.index, f.sub, name);
         w.put(QStringLiteral(": %1 %2").arg(hex(f.abortCode, 8), abortText(n, f.abortCode)));
         break;
     case SdoCommand::DownloadSegmentRequest:
     case SdoCommand::UploadSegmentResponse:
-        w.put(QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        w.put(QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who()).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
         break;
     case SdoCommand::BlockSegment:
-        w.put(QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        w.put(QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who()).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
         break;
     case SdoCommand::BlockDownloadInitiate:
     case SdoCommand::BlockUploadInitiate:
     case SdoCommand::BlockDownloadInitiateResponse:
     case SdoCommand::BlockUploadInitiateResponse:
-        w.put(QStringLiteral("SDO %1 %2 ").arg(cs, who));
+        w.put(QStringLiteral("SDO %1 %2 ").arg(cs, who()));
         putObjectLabel(w, f.index, f.sub, name);
         if (f.blockSize) w.put(QStringLiteral(", block size %1").arg(f.blockSize));
         if (f.sizeIndicated) w.put(QStringLiteral(", %1 bytes").arg(f.size));
         break;
     case SdoCommand::BlockDownloadAck:
-    case SdoCommand::BlockUploadAck: w.put(QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who).arg(f.ackSeq).arg(f.blockSize)); break;
+    case SdoCommand::BlockUploadAck: w.put(QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who()).arg(f.ackSeq).arg(f.blockSize)); break;
     case SdoCommand::BlockDownloadEnd:
     case SdoCommand::BlockUploadEnd:
-        w.put(QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0')));
+        w.put(QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who()).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0')));
         break;
-    case SdoCommand::Invalid: w.put(QStringLiteral("SDO %1 (invalid)").arg(who)); break;
-    default: w.put(QStringLiteral("SDO %1 %2").arg(cs, who)); break;
+    case SdoCommand::Invalid: w.put(QStringLiteral("SDO %1 (invalid)").arg(who())); break;
+    default: w.put(QStringLiteral("SDO %1 %2").arg(cs, who())); break;
     }
 }
 
