@@ -354,7 +354,6 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
     return o;
 }
 
-
 void appendTransferText(QByteArray& out, const Dissection& d) {
     // One per SDO transfer: written in place after one resize, without temporary strings.
     const SdoTransferRecord& t = d.transfer;

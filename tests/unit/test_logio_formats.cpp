@@ -18,6 +18,7 @@
 
 #include <zlib.h>
 
+#include <atomic>
 #include <span>
 #include <thread>
 #include <vector>
@@ -541,16 +542,18 @@ private slots:
         buf.open(QIODevice::ReadOnly);
         CandumpReader r;
         QVERIFY(r.open(&buf));
-        std::vector<CanFrame> got, observed;
+        std::vector<CanFrame> got, observed;  // `observed` is read only after the reading thread ended
+        std::atomic<size_t> observedCount{0};
         std::thread::id observerThread;
         {
             // The observer sees each batch on the reading thread before the consumer does.
             ReadAhead ahead(r, 1000, 3, [&](std::span<const CanFrame> b) {
                 observerThread = std::this_thread::get_id();
                 observed.insert(observed.end(), b.begin(), b.end());
+                observedCount += b.size();
             });
             for (auto b = ahead.next(); !b.empty(); b = ahead.next()) {
-                QVERIFY(observed.size() >= got.size() + b.size());
+                QVERIFY(observedCount.load() >= got.size() + b.size());
                 got.insert(got.end(), b.begin(), b.end());
             }
         }
