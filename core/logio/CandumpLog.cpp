@@ -46,7 +46,58 @@ CandumpReader::LineResult CandumpReader::bad(const QString& message) {
     return LineResult::Bad;
 }
 
+// candump -L's own line, "(1700000000.123456) can0 123#11223344" (can-utils log.c: seconds,
+// a fraction, one space, the interface, one space, the frame, nothing after it), read in one
+// pass: it is nearly every line of a log, and the general path below tokenises it three times.
+// Anything else in the line (FD "##", remote "R", "." separators, a direction, an 8-digit id
+// with the error flag, a fault) returns false with `f` untouched and takes the general path,
+// which reads the lines taken here as the same frame.
+bool CandumpReader::parsePlainLogLine(std::string_view line, CanFrame& f) {
+    const char* p = line.data();
+    const char* const end = p + line.size();
+    if (p == end || *p++ != '(') return false;
+    int64_t seconds = 0;
+    const char* start = p;
+    while (p < end && unsigned(*p - '0') < 10) seconds = seconds * 10 + (*p++ - '0');
+    // Below INT64_MAX / 1e9 - 1 s, so that seconds and fraction add up without overflow.
+    if (p == start || p - start > 10 || seconds >= INT64_MAX / 1'000'000'000 || p == end || *p++ != '.') return false;
+    int64_t fraction = 0;
+    start = p;
+    while (p < end && unsigned(*p - '0') < 10) fraction = fraction * 10 + (*p++ - '0');
+    const auto fractionDigits = p - start;
+    if (fractionDigits == 0 || fractionDigits > 9 || end - p < 2 || p[0] != ')' || p[1] != ' ') return false;
+    static constexpr int64_t kScale[10] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000, 10'000, 1'000, 100, 10, 1};
+    p += 2;
+    start = p;
+    while (p < end && !isSpace(*p)) ++p;
+    if (p == start || end - p < 2 || *p != ' ') return false;
+    const std::string_view iface(start, size_t(p - start));
+    start = ++p;
+    uint32_t id = 0;
+    for (int d; p < end && (d = hexDigit(*p)) >= 0; ++p) id = (id << 4) | uint32_t(d);
+    const auto idDigits = p - start;
+    if (p == end || *p++ != '#') return false;
+    const bool extended = idDigits == 8;
+    if (extended ? (id > kCanEffMask || (id & kCanErrFlag)) : (idDigits != 3 || id > 0x7FF)) return false;
+    if (end - p > 16 || (end - p) % 2) return false;
+    uint64_t data = 0;  // byte i at bits 8i: one 8-byte store (a memcpy of n bytes was a third of the time)
+    unsigned n = 0;
+    for (; p < end; p += 2, ++n) {
+        const int hi = hexDigit(p[0]), lo = hexDigit(p[1]);
+        if ((hi | lo) < 0) return false;
+        data |= uint64_t((hi << 4) | lo) << (8 * n);
+    }
+    f.id = id;
+    if (extended) f.flags |= CanFrame::Extended;
+    f.len = static_cast<uint8_t>(n);
+    for (unsigned i = 0; i < 8; ++i) f.data[i] = static_cast<uint8_t>(data >> (8 * i));
+    f.timestampNs = seconds * 1'000'000'000 + fraction * kScale[fractionDigits];
+    f.bus = busIndex(iface);
+    return true;
+}
+
 CandumpReader::LineResult CandumpReader::parseLine(std::string_view line, CanFrame& f) {
+    if (parsePlainLogLine(line, f)) return LineResult::Frame;
     line = trimmed(line);
     if (line.empty() || line.front() == '#' || line.front() == ';') return LineResult::Skip;
     Tokens tokens(line);

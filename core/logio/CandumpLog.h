@@ -21,6 +21,7 @@ protected:
     LineResult parseLine(std::string_view line, CanFrame& frame) override;
 
 private:
+    bool parsePlainLogLine(std::string_view line, CanFrame& frame);
     LineResult parseLogForm(std::string_view payload, Tokens& rest, CanFrame& frame);
     LineResult parseTextForm(Tokens& tokens, CanFrame& frame);
     LineResult bad(const QString& message);

@@ -107,14 +107,16 @@ inline std::optional<int64_t> parseDecimalNs(std::string_view t, int64_t unitNs)
     if (i < t.size()) {  // fraction
         ++i;
         int64_t scale = unitNs;
+        int64_t fraction = 0;  // below unitNs
         bool any = digits > 0;
         for (; i < t.size(); ++i) {
             if (t[i] < '0' || t[i] > '9') return std::nullopt;
             scale /= 10;
-            ns += (t[i] - '0') * scale;
+            fraction += (t[i] - '0') * scale;
             any = true;
         }
-        if (!any) return std::nullopt;
+        if (!any || ns > INT64_MAX - fraction) return std::nullopt;
+        ns += fraction;
     } else if (digits == 0) {
         return std::nullopt;
     }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Readers of other tools' logs (BUSMASTER, IXXAT, SavvyCAN GVRET, Kvaser) and CoScope's own CSV,
+// Readers of other tools' logs (candump -L line forms, BUSMASTER, IXXAT, SavvyCAN GVRET, Kvaser) and CoScope's own CSV,
 // from the hand-written fixtures in tests/data/logs: frames, times, flags, bad lines by number,
 // and detection by content (a .trc or .log name alone says nothing).
 #include "core/logio/BusmasterLog.h"
+#include "core/logio/CandumpLog.h"
 #include "core/logio/CsvReader.h"
 #include "core/logio/CsvWriter.h"
 #include "core/logio/LogFormats.h"
@@ -64,6 +65,43 @@ std::vector<CanFrame> readBytes(LogReader& r, const QByteArray& bytes) {
 class TestLogioReaders : public QObject {
     Q_OBJECT
 private slots:
+    // candump -L lines (can-utils log.c: "(sec.frac) iface id#data", optional " T"/" R"): the
+    // plain form is read in one pass, every other form by the general path; both must give the
+    // frame the line says, and a faulty line a diagnostic with its number.
+    void candumpLogLineForms() {
+        const QByteArray text =
+            "(1700000000.123456) can0 181#0102030405060708\n"        // 1: plain, 8 bytes
+            "(1700000000.1) can1 7ff#\n"                              // 2: lower case, no data, 1 fraction digit
+            "(1700000000.123456789) can0 18FF0001#AABB\n"             // 3: 29-bit, ns fraction
+            "(1700000000.1234567891) can0 123#00\n"                   // 4: digits beyond 1 ns ignored
+            "(1700000000.000001) can0 20000004#0004000000000000\n"    // 5: error frame (CAN_ERR_FLAG)
+            "(1700000000.000002) can0 0123#11\n"                      // 6: 4 digits: 29-bit id 123h
+            "(1700000000.000003) can0 123#11 T\n"                     // 7: transmitted
+            "(1700000000.000004)\tcan0\t123#22\n"                     // 8: tabs
+            "(1700000000.000005) can0 800#11\n"                       // 9: bad: 11-bit id above 7FF
+            "(1700000000.000006) can0 123#112233445566778899\n"       // 10: bad: 9 bytes
+            "(1700000000.000007) can0 123#11 X\n"                     // 11: bad: text after the frame
+            "(9223372036.999999999) can0 123#11\n"                    // 12: bad: beyond int64 ns
+            "(1700000000.000008) can0 123#11.22\n";                   // 13: '.' separator
+        CandumpReader r;
+        const auto f = readBytes(r, text);
+        QCOMPARE(badLines(Read{{}, {}, r.diagnostics(), 0}), QList<int64_t>({9, 10, 11, 12}));
+        QCOMPARE(f.size(), size_t(9));
+        QVERIFY(f[0].id == 0x181 && f[0].len == 8 && f[0].data[7] == 0x08 && f[0].flags == 0 && f[0].bus == 0);
+        QCOMPARE(f[0].timestampNs, 1700000000123456000LL);
+        QVERIFY(f[1].id == 0x7FF && f[1].len == 0 && f[1].bus == 1);
+        QCOMPARE(f[1].timestampNs, 1700000000100000000LL);
+        QVERIFY(f[2].isExtended() && f[2].id == 0x18FF0001 && f[2].len == 2 && f[2].data[1] == 0xBB);
+        QCOMPARE(f[2].timestampNs, 1700000000123456789LL);
+        QCOMPARE(f[3].timestampNs, 1700000000123456789LL);
+        QVERIFY(f[4].isError() && !f[4].isExtended() && f[4].id == 0x4 && f[4].data[1] == 0x04);
+        QVERIFY(f[5].isExtended() && f[5].id == 0x123);
+        QVERIFY(f[6].isTx() && f[6].id == 0x123 && f[6].len == 1);
+        QVERIFY(f[7].id == 0x123 && f[7].data[0] == 0x22 && !f[7].isTx());
+        QVERIFY(f[8].id == 0x123 && f[8].len == 2 && f[8].data[1] == 0x22);
+        QCOMPARE(r.busNames(), QStringList({QStringLiteral("can0"), QStringLiteral("can1")}));
+    }
+
     void busmasterV3HexSystemTime() {
         const Read r = readFixture("busmaster_v3_hex_system.log");
         QCOMPARE(r.format, QStringLiteral("busmaster"));
