@@ -226,53 +226,77 @@ size_t TraceStore::fill(Chunk& c, TraceRecord& r, const CanFrame& f) {
 }
 
 FrameNo TraceStore::append(const CanFrame& f) {
-    const size_t n = size_.load(std::memory_order_relaxed);
-    if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks) throw std::length_error("trace store is full (2^32 frames)");
-    const uint32_t c = static_cast<uint32_t>(n >> kChunkBits);
-    // The chunk being written is never evicted (the pager does not hold it yet).
-    Chunk* chunk = chunks_[c].load(std::memory_order_relaxed);
-    if (!chunk) {
-        chunk = new Chunk;
-        lastUse_[c].store(clock_.fetch_add(2, std::memory_order_relaxed) + 1, std::memory_order_relaxed);
-        chunks_[c].store(chunk, std::memory_order_release);
-        residentBytes_.fetch_add(sizeof(Chunk), std::memory_order_relaxed);
-        if (budget_.load(std::memory_order_relaxed)) {
-            std::lock_guard lock(pageMutex_);
-            evictOverBudget(c);
-        }
-    }
-    if (const size_t added = fill(*chunk, chunk->records[n & (kChunkSize - 1)], f)) {
-        residentBytes_.fetch_add(added, std::memory_order_relaxed);
-        // A chunk of FD frames grows by 1 MiB payload blocks: keep the budget when it grows too,
-        // not only when a chunk starts (otherwise the store stays up to 4 MiB over it).
-        if (budget_.load(std::memory_order_relaxed)) {
-            std::lock_guard lock(pageMutex_);
-            evictOverBudget(c);
-        }
-    }
-
-    // Publish the frame before indexing it: an index entry must never name a frame a reader
-    // cannot see yet (the index may lag size() by one frame, never lead it).
-    size_.store(n + 1, std::memory_order_release);
-    const std::ptrdiff_t added = indexForWrite(keyOf(chunk->records[n & (kChunkSize - 1)]))->push(static_cast<FrameNo>(n), *this);
-    if (added) indexBytes_.fetch_add(static_cast<size_t>(added), std::memory_order_relaxed);  // wraps down when negative
-    return static_cast<FrameNo>(n);
+    const auto n = static_cast<FrameNo>(size_.load(std::memory_order_relaxed));
+    append(std::span<const CanFrame>(&f, 1));
+    return n;
 }
 
+// A batch is written a chunk at a time: its records, then one publication of size_ (readers on
+// other threads read the size and the chunks all the time: one store per frame made them wait
+// for that cache line per frame), then its index entries.
 void TraceStore::append(std::span<const CanFrame> frames) {
-    for (const CanFrame& f : frames) append(f);
+    while (!frames.empty()) {
+        const size_t n = size_.load(std::memory_order_relaxed);
+        if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks) throw std::length_error("trace store is full (2^32 frames)");
+        const uint32_t c = static_cast<uint32_t>(n >> kChunkBits);
+        const size_t first = n & (kChunkSize - 1);
+        const size_t count = std::min<size_t>(kChunkSize - first, frames.size());
+        // The chunk being written is never evicted (the pager does not hold it yet).
+        Chunk* chunk = chunks_[c].load(std::memory_order_relaxed);
+        if (!chunk) {
+            chunk = new Chunk;
+            lastUse_[c].store(clock_.fetch_add(2, std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+            chunks_[c].store(chunk, std::memory_order_release);
+            residentBytes_.fetch_add(sizeof(Chunk), std::memory_order_relaxed);
+            if (budget_.load(std::memory_order_relaxed)) {
+                std::lock_guard lock(pageMutex_);
+                evictOverBudget(c);
+            }
+        }
+        for (size_t i = 0; i < count; ++i) {
+            if (const size_t added = fill(*chunk, chunk->records[first + i], frames[i])) {
+                residentBytes_.fetch_add(added, std::memory_order_relaxed);
+                // A chunk of FD frames grows by 1 MiB payload blocks: keep the budget when it
+                // grows too, not only when a chunk starts (otherwise the store stays up to 4 MiB
+                // over it).
+                if (budget_.load(std::memory_order_relaxed)) {
+                    std::lock_guard lock(pageMutex_);
+                    evictOverBudget(c);
+                }
+            }
+        }
+        // Publish the frames before indexing them: an index entry must never name a frame a
+        // reader cannot see yet (the index may lag size(), never lead it).
+        size_.store(n + count, std::memory_order_release);
+        std::ptrdiff_t added = 0;
+        for (size_t i = 0; i < count; ++i)
+            added += indexForWrite(keyOf(chunk->records[first + i]))->push(static_cast<FrameNo>(n + i), *this);
+        if (added) indexBytes_.fetch_add(static_cast<size_t>(added), std::memory_order_relaxed);  // wraps down when negative
+        frames = frames.subspan(count);
+    }
 }
 
+// Every analysis reads every frame through here (issue 19): one chunk lookup, and a classic
+// payload as one 8-byte copy, masked to its length, instead of a call to memcpy.
 CanFrame TraceStore::frame(FrameNo n) const {
-    const TraceRecord& r = record(n);
+    const Chunk* c = chunk(n >> kChunkBits);
+    const TraceRecord& r = c->records[n & (kChunkSize - 1)];
     CanFrame f;
     f.timestampNs = r.timestampNs;
     f.id = r.id;
     f.len = r.len;
     f.flags = r.flags;
     f.bus = r.bus;
-    const auto p = payload(n);
-    std::memcpy(f.data.data(), p.data(), p.size());
+    const uint8_t bytes = (r.flags & CanFrame::Remote) ? 0 : r.len;
+    if (bytes > 8) {
+        const uint8_t* block = c->fd[r.fdRef >> kFdBlockBits].load(std::memory_order_acquire);
+        std::memcpy(f.data.data(), block + (r.fdRef & ((1u << kFdBlockBits) - 1)), bytes);
+    } else {
+        uint64_t v;
+        std::memcpy(&v, r.data, 8);
+        if (bytes < 8) v &= (uint64_t{1} << (8 * bytes)) - 1;
+        std::memcpy(f.data.data(), &v, 8);
+    }
     return f;
 }
 

@@ -46,7 +46,7 @@ static_assert(sizeof(TraceRecord) == 24, "trace records must stay 24 bytes");
 // move), FD payloads out of line in their chunk, and a per-COB-ID index of frame numbers. A frame
 // number, once given, always names the same frame. Readers see frames [0, size()) and may read
 // them while the writer appends; size() is published with release semantics after each append,
-// before the frame enters its index, so index entries never point at or past size().
+// before the frames enter their index, so index entries never point at or past size().
 // Memory per classic frame: 24 bytes of record + 4 bytes of index entry.
 //
 // Bounded memory (issue 16): with a pager (the capture journal) and a budget, the store keeps
@@ -188,8 +188,10 @@ private:
     size_t chunksUsed() const { return (size() + kChunkSize - 1) >> kChunkBits; }
 
     std::unique_ptr<std::atomic<Chunk*>[]> chunks_;
-    std::atomic<size_t> size_{0};
-    mutable std::atomic<size_t> residentBytes_{0};
+    // Written once per appended batch and read by every reader: a cache line of its own, so the
+    // writer's stores do not evict what readers read on each frame (chunks_, clock_).
+    alignas(64) std::atomic<size_t> size_{0};
+    alignas(64) mutable std::atomic<size_t> residentBytes_{0};
 
     // Paging state: the LRU clock advances by 2 on each chunk allocation and page-in, which
     // stamps its chunk with the odd value between; a read stamps its chunk with the clock, so
