@@ -108,7 +108,16 @@ struct ReadBatch {
 };
 
 constexpr size_t kBatchFrames = 4096;
-constexpr size_t kBatchesAhead = 8;  // bounded: at most this many batches wait for the store
+constexpr size_t kBatchesAhead = 8;     // bounded: at most this many batches wait for the store
+constexpr size_t kHandoffsBehind = 16;  // and this many stored runs of frames for the consumers
+
+// Frames [first, first + count) of the store for the consumers, or a gap before `first`.
+struct Handoff {
+    FrameNo first = 0;
+    size_t count = 0;
+    bool isGap = false;
+    TraceStore::Gap gap{};
+};
 
 double loadThreadCpuSeconds() {
     timespec ts{};
@@ -129,8 +138,9 @@ void LogLoadJob::noteReaderLocked(const logio::LogReader& reader, size_t& seenDi
     linesRead_ = reader.linesRead();
 }
 
-// Parsing runs on its own thread, a few batches ahead of this one, which appends them to the
-// store and hands them to the consumers (issue 19: the two overlap instead of taking turns).
+// Three stages overlap, each on a thread of its own (issue 19): parsing, a few batches ahead;
+// storing (this thread: the store and the spill); and analysing (the consumers), a few batches
+// behind the store. The consumers read the frames from the store, in order, as before.
 void LogLoadJob::run() {
     QString error;
     auto reader = logio::LogFormats::openReader(path_, &error);
@@ -147,7 +157,9 @@ void LogLoadJob::run() {
     std::deque<ReadBatch> ready;     // parsed, waiting for the store
     std::vector<ReadBatch> spare;    // emptied, for the parser to fill again
     bool parsed = false;             // the parser reached the end (or was cancelled)
-    double parserCpu = 0;            // seconds, for the log line at the end
+    std::deque<Handoff> stored;      // in the store, waiting for the consumers
+    bool storing = true;             // this thread may still add to `stored`
+    double parserCpu = 0, analysisCpu = 0;  // seconds, for the log line at the end
     std::thread parser([&] {
         size_t seenDiagnostics = 0;
         size_t seenGaps = 0;
@@ -182,6 +194,33 @@ void LogLoadJob::run() {
             queueChanged.notify_all();
         }
     });
+    // The consumers see the frames before each gap, the gap (onGap), then the frames after it.
+    std::thread analyst([&] {
+        for (;;) {
+            Handoff h;
+            {
+                std::unique_lock lock(queueMutex);
+                queueChanged.wait(lock, [&] { return !stored.empty() || !storing; });
+                if (stored.empty()) break;
+                h = stored.front();
+                stored.pop_front();
+                queueChanged.notify_all();
+            }
+            if (h.isGap) {
+                if (onGap_) onGap_(h.gap);
+            } else {
+                for (const auto& c : consumers_) c(*store_, h.first, h.count);
+            }
+        }
+        std::lock_guard lock(queueMutex);
+        analysisCpu = loadThreadCpuSeconds();
+    });
+    auto handOff = [&](const Handoff& h) {
+        std::unique_lock lock(queueMutex);
+        queueChanged.wait(lock, [&] { return stored.size() < kHandoffsBehind; });
+        stored.push_back(h);
+        queueChanged.notify_all();
+    };
     for (;;) {
         if (isCancelled()) reader->cancel();  // thread-safe: the parser's read() returns 0 soon
         ReadBatch b;
@@ -196,19 +235,16 @@ void LogLoadJob::run() {
         const size_t n = b.count;
         const FrameNo first = static_cast<FrameNo>(store_->size());
         store_->append(std::span<const CanFrame>(b.frames.data(), n));
-        // The consumers see the frames before each gap, the gap, then the frames after it.
         FrameNo done = first;
         const FrameNo end = FrameNo(first + n);
         for (const logio::CaptureGap& cg : b.gaps) {
             const TraceStore::Gap g{std::clamp(FrameNo(cg.frame), done, end), cg.lostNs, cg.backNs};
-            if (g.firstFrame > done)
-                for (const auto& c : consumers_) c(*store_, done, g.firstFrame - done);
+            if (g.firstFrame > done) handOff({done, size_t(g.firstFrame - done)});
             done = g.firstFrame;
             store_->addGap(g);
-            if (onGap_) onGap_(g);
+            handOff({done, 0, true, g});
         }
-        if (end > done)
-            for (const auto& c : consumers_) c(*store_, done, end - done);
+        if (end > done) handOff({done, size_t(end - done)});
         if (spill_) {
             spill_->appendFromStore(*store_, first, n);
             if (spill_->queuedFrames() > TraceStore::kChunkSize) spill_->flush();  // the disk sets the pace
@@ -219,14 +255,20 @@ void LogLoadJob::run() {
         spare.push_back(std::move(b));
     }
     parser.join();
+    {
+        std::lock_guard lock(queueMutex);
+        storing = false;
+        queueChanged.notify_all();
+    }
+    analyst.join();
     if (spill_) {
         spill_->close();  // all durable: the store evicts down to its budget
         store_->setMemoryBudget(budget_);
     }
     if (reader->hasError()) fail(reader->errorString());
     std::lock_guard lock(mutex_);
-    spdlog::info("opened {}: {} frames ({}), {} problems; CPU {:.2f} s parsing, {:.2f} s storing and analysing", path_.toStdString(), store_->size(),
-                 format_.toStdString(), diagnosticCount_, parserCpu, loadThreadCpuSeconds());
+    spdlog::info("opened {}: {} frames ({}), {} problems; CPU {:.2f} s parsing, {:.2f} s storing, {:.2f} s analysing", path_.toStdString(),
+                 store_->size(), format_.toStdString(), diagnosticCount_, parserCpu, loadThreadCpuSeconds(), analysisCpu);
 }
 
 }  // namespace coscope::gui

@@ -22,8 +22,8 @@ namespace coscope::gui {
 // appended to), and each batch goes to the consumers (node table, event log) like live traffic.
 // A malformed line is a diagnostic (line number + message); the rest still loads.
 // A gap of the capture recorded in the log (a pcapng journal) goes into the store
-// (TraceStore::addGap) and to `onGap` on the loading thread, between the consumers' calls for
-// the frames before and after it.
+// (TraceStore::addGap) and to `onGap`, on the consumers' thread between their calls for the
+// frames before and after it. The consumers run on one thread of the job (not the caller's).
 class LogLoadJob : public Job {
 public:
     using GapHandler = std::function<void(const TraceStore::Gap&)>;
