@@ -185,18 +185,6 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
     }
 }
 
-namespace {
-// canopen::classifyCobId() of every 11-bit identifier, looked up once per frame.
-const std::array<canopen::CobIdInfo, 0x800>& standardCobIds() {
-    static const auto table = [] {
-        std::array<canopen::CobIdInfo, 0x800> t;
-        for (uint32_t id = 0; id < t.size(); ++id) t[id] = canopen::classifyCobId(id);
-        return t;
-    }();
-    return table;
-}
-}  // namespace
-
 void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection::Level level) {
     ++frames_;
     if (frame.bus != current_) selectBus(frame.bus);
@@ -224,7 +212,7 @@ void NetworkContext::dissect(const CanFrame& frame, Dissection& out, Dissection:
                 return;
             }
         } else {
-            const canopen::CobIdInfo info = frame.isExtended() ? canopen::CobIdInfo{} : standardCobIds()[frame.id & 0x7FF];
+            const canopen::CobIdInfo info = canopen::classifyCobId(frame.id, frame.isExtended());
             service = info.service;
             node = info.node;
             if (const int p = canopen::pdoNumber(service); p >= 0) out.pdoNumber = p + 1;

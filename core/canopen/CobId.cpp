@@ -20,19 +20,6 @@ constexpr std::array<Entry, 19> kNames{{
     {Service::Unknown, "UNKNOWN"},
 }};
 
-// Function code (bits 10..7) -> service for node-addressed objects (CiA 301 Table 43).
-constexpr Service kByFunction[16] = {
-    Service::Unknown,      // 0000: NMT (id 0) only
-    Service::Emcy,         // 0001: SYNC at 080h, EMCY at 081h..0FFh
-    Service::Time,         // 0010: TIME at 100h
-    Service::Tpdo1, Service::Rpdo1, Service::Tpdo2, Service::Rpdo2, Service::Tpdo3, Service::Rpdo3,
-    Service::Tpdo4, Service::Rpdo4,
-    Service::SdoResponse,  // 1011: 580h + node
-    Service::SdoRequest,   // 1100: 600h + node
-    Service::Unknown,      // 1101
-    Service::NmtErrorControl,  // 1110: 700h + node
-    Service::Unknown,      // 1111: LSS 7E4h/7E5h handled before
-};
 }  // namespace
 
 QString serviceName(Service s) {
@@ -46,32 +33,6 @@ std::optional<Service> serviceFromName(const QString& name) {
     for (const auto& e : kNames)
         if (up == QLatin1String(e.name)) return e.service;
     return std::nullopt;
-}
-
-bool isTpdo(Service s) { return s == Service::Tpdo1 || s == Service::Tpdo2 || s == Service::Tpdo3 || s == Service::Tpdo4; }
-bool isRpdo(Service s) { return s == Service::Rpdo1 || s == Service::Rpdo2 || s == Service::Rpdo3 || s == Service::Rpdo4; }
-
-int pdoNumber(Service s) {
-    switch (s) {
-    case Service::Tpdo1: case Service::Rpdo1: return 0;
-    case Service::Tpdo2: case Service::Rpdo2: return 1;
-    case Service::Tpdo3: case Service::Rpdo3: return 2;
-    case Service::Tpdo4: case Service::Rpdo4: return 3;
-    default: return -1;
-    }
-}
-
-CobIdInfo classifyCobId(uint32_t id, bool extended) {
-    if (extended || id > 0x7FF) return {};
-    if (id == 0x000) return {Service::Nmt, -1};
-    if (id == 0x080) return {Service::Sync, -1};
-    if (id == 0x100) return {Service::Time, -1};
-    if (id == 0x7E5) return {Service::LssRequest, -1};
-    if (id == 0x7E4) return {Service::LssResponse, -1};
-    const int node = static_cast<int>(id & 0x7F);
-    const Service s = kByFunction[(id >> 7) & 0xF];
-    if (s == Service::Unknown || s == Service::Time || node == 0) return {};
-    return {s, node};
 }
 
 uint32_t defaultCobId(Service s, int node) {
