@@ -121,10 +121,20 @@ bool TraceDecoder::extendOnceLocked(std::unique_lock<std::mutex>& lock) const {
     return true;
 }
 
+// Nothing to do means the store has less than one interval past the last snapshot. Nobody
+// signals its growth, so the worker looks again: soon while it grows (a log being opened fills an
+// interval in well under a millisecond; sleeping 250 ms there left the index that far behind
+// at the end of the load), rarely when it does not.
 void TraceDecoder::workerLoop() {
     std::unique_lock lock(mutex_);
-    while (!stop_)
-        if (!extendOnceLocked(lock) && !stop_) wake_.wait_for(lock, std::chrono::milliseconds(250));
+    size_t seen = 0;
+    while (!stop_) {
+        if (extendOnceLocked(lock) || stop_) continue;
+        const size_t size = store_ ? store_->size() : 0;
+        const bool growing = size != seen;
+        seen = size;
+        wake_.wait_for(lock, growing ? std::chrono::milliseconds(10) : std::chrono::milliseconds(250));
+    }
 }
 
 void TraceDecoder::decode(const CanFrame& frame, Dissection& out) const {
