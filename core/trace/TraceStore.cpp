@@ -276,6 +276,16 @@ void TraceStore::append(std::span<const CanFrame> frames) {
     }
 }
 
+// The payload of record r of chunk c (empty for remote frames).
+std::span<const uint8_t> TraceStore::payloadOf(const Chunk& c, const TraceRecord& r) {
+    const uint8_t bytes = (r.flags & CanFrame::Remote) ? 0 : r.len;
+    if (bytes > 8) {
+        const uint8_t* block = c.fd[r.fdRef >> kFdBlockBits].load(std::memory_order_acquire);
+        return {block + (r.fdRef & ((1u << kFdBlockBits) - 1)), bytes};
+    }
+    return {r.data, bytes};
+}
+
 // Every analysis reads every frame through here (issue 19): one chunk lookup, and a classic
 // payload as one 8-byte copy, masked to its length, instead of a call to memcpy.
 CanFrame TraceStore::frame(FrameNo n) const {
@@ -287,14 +297,13 @@ CanFrame TraceStore::frame(FrameNo n) const {
     f.len = r.len;
     f.flags = r.flags;
     f.bus = r.bus;
-    const uint8_t bytes = (r.flags & CanFrame::Remote) ? 0 : r.len;
-    if (bytes > 8) {
-        const uint8_t* block = c->fd[r.fdRef >> kFdBlockBits].load(std::memory_order_acquire);
-        std::memcpy(f.data.data(), block + (r.fdRef & ((1u << kFdBlockBits) - 1)), bytes);
+    const auto p = payloadOf(*c, r);
+    if (p.size() > 8) {
+        std::memcpy(f.data.data(), p.data(), p.size());
     } else {
         uint64_t v;
         std::memcpy(&v, r.data, 8);
-        if (bytes < 8) v &= (uint64_t{1} << (8 * bytes)) - 1;
+        if (p.size() < 8) v &= (uint64_t{1} << (8 * p.size())) - 1;
         std::memcpy(f.data.data(), &v, 8);
     }
     return f;
@@ -302,13 +311,7 @@ CanFrame TraceStore::frame(FrameNo n) const {
 
 std::span<const uint8_t> TraceStore::payload(FrameNo n) const {
     const Chunk* c = chunk(n >> kChunkBits);
-    const TraceRecord& r = c->records[n & (kChunkSize - 1)];
-    const uint8_t bytes = (r.flags & CanFrame::Remote) ? 0 : r.len;
-    if (bytes > 8) {
-        const uint8_t* block = c->fd[r.fdRef >> kFdBlockBits].load(std::memory_order_acquire);
-        return {block + (r.fdRef & ((1u << kFdBlockBits) - 1)), bytes};
-    }
-    return {r.data, bytes};
+    return payloadOf(*c, c->records[n & (kChunkSize - 1)]);
 }
 
 size_t TraceStore::countFor(uint32_t key) const {

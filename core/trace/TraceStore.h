@@ -173,6 +173,7 @@ private:
     const Index* indexForRead(uint32_t key) const;
     static uint64_t storeFdPayload(Chunk& c, const uint8_t* data, uint8_t len, size_t* added);
     static size_t fill(Chunk& c, TraceRecord& r, const CanFrame& f);  // FD bytes allocated
+    static std::span<const uint8_t> payloadOf(const Chunk& c, const TraceRecord& r);
     Chunk* chunk(uint32_t c) const {
         Chunk* p = chunks_[c].load(std::memory_order_acquire);
         if (!p) return pageIn(c);
