@@ -58,12 +58,13 @@ bool CandumpReader::parsePlainLogLine(std::string_view line, CanFrame& f) {
     if (p == end || *p++ != '(') return false;
     int64_t seconds = 0;
     const char* start = p;
-    while (p < end && unsigned(*p - '0') < 10) seconds = seconds * 10 + (*p++ - '0');
+    // At most 11 digits are read (more fail below), so the value cannot overflow.
+    while (p < end && p - start <= 10 && unsigned(*p - '0') < 10) seconds = seconds * 10 + (*p++ - '0');
     // Below INT64_MAX / 1e9 - 1 s, so that seconds and fraction add up without overflow.
     if (p == start || p - start > 10 || seconds >= INT64_MAX / 1'000'000'000 || p == end || *p++ != '.') return false;
     int64_t fraction = 0;
     start = p;
-    while (p < end && unsigned(*p - '0') < 10) fraction = fraction * 10 + (*p++ - '0');
+    while (p < end && p - start <= 9 && unsigned(*p - '0') < 10) fraction = fraction * 10 + (*p++ - '0');
     const auto fractionDigits = p - start;
     if (fractionDigits == 0 || fractionDigits > 9 || end - p < 2 || p[0] != ')' || p[1] != ' ') return false;
     static constexpr int64_t kScale[10] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000, 10'000, 1'000, 100, 10, 1};

@@ -82,10 +82,11 @@ private slots:
             "(1700000000.000006) can0 123#112233445566778899\n"       // 10: bad: 9 bytes
             "(1700000000.000007) can0 123#11 X\n"                     // 11: bad: text after the frame
             "(9223372036.999999999) can0 123#11\n"                    // 12: bad: beyond int64 ns
-            "(1700000000.000008) can0 123#11.22\n";                   // 13: '.' separator
+            "(1700000000.000008) can0 123#11.22\n"                    // 13: '.' separator
+            "(12345678901234567890123.5) can0 123#11\n";             // 14: bad: 23-digit seconds (fuzzer)
         CandumpReader r;
         const auto f = readBytes(r, text);
-        QCOMPARE(badLines(Read{{}, {}, r.diagnostics(), 0}), QList<int64_t>({9, 10, 11, 12}));
+        QCOMPARE(badLines(Read{{}, {}, r.diagnostics(), 0}), QList<int64_t>({9, 10, 11, 12, 14}));
         QCOMPARE(f.size(), size_t(9));
         QVERIFY(f[0].id == 0x181 && f[0].len == 8 && f[0].data[7] == 0x08 && f[0].flags == 0 && f[0].bus == 0);
         QCOMPARE(f[0].timestampNs, 1700000000123456000LL);
