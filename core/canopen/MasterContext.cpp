@@ -1,10 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/canopen/MasterContext.h"
 
+#include "core/canopen/PeriodicSender.h"
+
 namespace coscope::canopen {
 
 MasterContext::MasterContext(CanBus* bus, NodeTable* nodes)
     : bus_(bus), ownNodes_(nodes ? nullptr : std::make_unique<NodeTable>()), nodes_(nodes ? nodes : ownNodes_.get()) {}
+
+MasterContext::~MasterContext() = default;
+
+PeriodicSender& MasterContext::periodic() {
+    std::lock_guard lock(mutex_);
+    if (!periodic_) periodic_ = std::make_unique<PeriodicSender>([this](const CanFrame& f, QString* error) { return send(f, error); });
+    return *periodic_;
+}
 
 bool MasterContext::send(const CanFrame& frame, QString* error) {
     if (!bus_) {

@@ -18,6 +18,8 @@
 
 namespace coscope::canopen {
 
+class PeriodicSender;
+
 // What the master services share for one bus: the bus they send on, the dispatcher that brings
 // them the frames they wait for (fed by the bus's one CaptureSession), and the bus's node table
 // (the services read each node's dictionary there, hence its vendor abort texts, and write what
@@ -26,6 +28,7 @@ class MasterContext {
 public:
     // `nodes`: the bus's node table (the application's); null = the context keeps its own.
     explicit MasterContext(CanBus* bus, NodeTable* nodes = nullptr);
+    ~MasterContext();  // stops the periodic sender, if any
 
     CanBus* bus() const { return bus_; }
     FrameDispatcher& dispatcher() { return dispatcher_; }
@@ -34,6 +37,10 @@ public:
 
     // Sends through CanBus::send (which enforces listen-only). On failure *error names the bus.
     bool send(const CanFrame& frame, QString* error);
+
+    // The bus's one scheduler of periodic frames (SYNC, heartbeat, transmit list), created on
+    // first use; thread-safe. It sends until this context is destroyed or its jobs are removed.
+    PeriodicSender& periodic();
 
     // The dictionary a node matched (e.g. "delta-asda-a2"), kept in the node table; loads its
     // vendor abort table.
@@ -51,6 +58,7 @@ private:
     NodeTable* nodes_;
     mutable std::mutex mutex_;
     mutable std::map<QString, std::shared_ptr<VendorAbortTable>> tables_;
+    std::unique_ptr<PeriodicSender> periodic_;  // under mutex_
 };
 
 }  // namespace coscope::canopen
