@@ -16,8 +16,8 @@ namespace coscope::canopen {
 // heartbeat time (1017h, ms). Drives that consume it (1016h) notice when CoScope is gone.
 // Sent by the bus's PeriodicSender.
 //
-// Thread-safety: configure, start and stop from one thread (the owner's); setState() and the
-// getters may be called from any thread.
+// Thread-safety: configure, start, stop and poll from one thread (the owner's); setState(),
+// state() and frame() may be called from any thread.
 class HeartbeatProducer {
 public:
     static constexpr uint8_t kDefaultNodeId = 127;
@@ -56,13 +56,15 @@ public:
 
 private:
     struct Shared;
+    void stopJob();
 
     MasterContext& context_;
     PeriodicSender::JobId job_ = 0;
     std::shared_ptr<Shared> shared_;  // node and state, read on the sender thread
     uint8_t node_ = kDefaultNodeId;
     uint16_t periodMs_ = kDefaultPeriodMs;
-    uint64_t sentBefore_ = 0;
+    uint64_t sentBefore_ = 0;  // heartbeats of finished runs
+    QString lastError_;        // of the last finished run
 };
 
 }  // namespace coscope::canopen

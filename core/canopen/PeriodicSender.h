@@ -91,6 +91,9 @@ public:
     // Removes a job, running or stopped. After it returns none of the job's callbacks is running
     // or will run (except when called from that very callback). False for an unknown id.
     bool remove(JobId id);
+    // remove() that also returns the job's last status (exists = false for an unknown id): the
+    // final sent count, with no frame between reading it and removing.
+    Status take(JobId id);
     void removeAll();
 
     // A snapshot of a job's state (cheap, for polling at 30 Hz).
@@ -108,6 +111,7 @@ private:
     void run();
     void runDue(JobId id, std::unique_lock<std::mutex>& lock);
     bool onSenderThread() const;
+    static Status statusOf(const Entry& e);  // mutex_ held
 
     SendFunction send_;
     mutable std::mutex mutex_;        // guards the jobs and the flags below

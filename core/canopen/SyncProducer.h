@@ -75,6 +75,7 @@ private:
     uint32_t periodUs_ = 0;
     uint8_t overflow_ = 0;
     uint64_t sentBefore_ = 0;  // frames of finished runs
+    QString lastError_;        // of the last finished run
 };
 
 }  // namespace coscope::canopen
