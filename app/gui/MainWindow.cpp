@@ -11,6 +11,8 @@
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
+#include "app/gui/master/MasterActions.h"
+#include "app/gui/master/TransmitDock.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PdoDbcExport.h"
@@ -105,6 +107,7 @@ void MainWindow::createDocks() {
     events_ = new EventsDock(workspace_, this);
     health_ = new HealthDock(workspace_, this);
     console_ = new ConsoleDock(this);
+    transmit_ = new TransmitDock(workspace_, this);
     // No central widget: every part is a dock the user can arrange.
     addDockWidget(Qt::LeftDockWidgetArea, trace_);
     addDockWidget(Qt::RightDockWidgetArea, nodes_);
@@ -115,6 +118,7 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::BottomDockWidgetArea, console_);
     tabifyDockWidget(events_, console_);
     tabifyDockWidget(events_, health_);
+    tabifyDockWidget(events_, transmit_);
     events_->raise();
     resizeDocks({trace_, nodes_}, {880, 480}, Qt::Horizontal);
     resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
@@ -124,6 +128,7 @@ void MainWindow::createDocks() {
     connect(nodes_, &NodesDock::message, this, &MainWindow::showMessage);
     connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);
     connect(plot_, &PlotDock::message, this, &MainWindow::showMessage);
+    connect(transmit_, &TransmitDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::nodeSelected, od_, &ObjectDictionaryDock::setNode);
     connect(plot_, &PlotDock::frameActivated, this, [this](uint32_t n) {
         trace_->raise();
@@ -178,11 +183,22 @@ void MainWindow::buildMenus() {
     bus->addAction(tr("Connect to &virtual drives (sim://)"), this, [this] { connectBus(QStringLiteral("sim://"), true); });
     recentMenu_ = bus->addMenu(tr("&Recent connections"));
     QAction* disconnectAction = bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    disconnectAction_ = disconnectAction;
+    disconnectAction->setEnabled(workspace_->bus() != nullptr);
     bus->addSeparator();
     // The Nodes dock's own action: the same scan as its context menu.
     QAction* scan = nodes_->scanAction();
     scan->setIcon(st->standardIcon(QStyle::SP_BrowserReload));
     bus->addAction(scan);
+    // CoScope as the master of the bus: SYNC and its own heartbeat (app/gui/master).
+    delete masterActions_;
+    masterActions_ = new MasterActions(workspace_, this);
+    connect(masterActions_, &MasterActions::message, this, &MainWindow::showMessage);
+    connect(masterActions_, &MasterActions::error, this, &MainWindow::showError);
+    bus->addSeparator();
+    bus->addAction(masterActions_->syncAction());
+    bus->addAction(masterActions_->settingsAction());
+    bus->addAction(transmit_->toggleViewAction());
     rebuildRecentMenu();
 
     if (!busBar_) {
@@ -196,6 +212,8 @@ void MainWindow::buildMenus() {
     bar->addAction(connectAction);
     bar->addAction(disconnectAction);
     bar->addAction(scan);
+    bar->addSeparator();
+    bar->addAction(masterActions_->syncAction());
 
     commission_ = menuBar()->addMenu(tr("&Commission"));
     commission_->setToolTipsVisible(true);
@@ -207,7 +225,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
                            static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(health_),
-                           static_cast<QDockWidget*>(console_)})
+                           static_cast<QDockWidget*>(console_), static_cast<QDockWidget*>(transmit_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
     addLanguageMenu(view);
@@ -361,6 +379,7 @@ bool MainWindow::showView(const QString& name) {
     else if (name == u"events") d = events_;
     else if (name == u"health") d = health_;
     else if (name == u"console") d = console_;
+    else if (name == u"transmit") d = transmit_;
     if (!d) return false;
     d->show();
     d->raise();
@@ -442,6 +461,10 @@ void MainWindow::refresh() {
     events_->refresh();
     health_->refresh();
     console_->refresh();
+    transmit_->refresh();
+    masterActions_->refresh();
+    status_->setMasterText(masterActions_->statusText());
+    disconnectAction_->setEnabled(workspace_->bus() != nullptr);
 
     Job* shown = trace_->activeJob();
     if (LogLoadJob* load = workspace_->loadJob()) {

@@ -27,11 +27,13 @@ class JournalCleaner;
 class JournalOfferBar;
 class LogLoadJob;
 class LogSaveJob;
+class MasterActions;
 class NodesDock;
 class PdoDbcJob;
 class ObjectDictionaryDock;
 class PlotDock;
 class TraceDock;
+class TransmitDock;
 class Workspace;
 
 // The main window only assembles: the workspace (what is being looked at), the docks (each with
@@ -66,6 +68,8 @@ public:
     PlotDock* plotDock() const { return plot_; }
     EventsDock* eventsDock() const { return events_; }
     HealthDock* healthDock() const { return health_; }
+    TransmitDock* transmitDock() const { return transmit_; }
+    MasterActions* masterActions() const { return masterActions_; }
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
@@ -125,6 +129,9 @@ private:
     EventsDock* events_ = nullptr;
     HealthDock* health_ = nullptr;
     ConsoleDock* console_ = nullptr;
+    TransmitDock* transmit_ = nullptr;
+    MasterActions* masterActions_ = nullptr;  // Bus ▸ SYNC producer, Master settings…
+    QAction* disconnectAction_ = nullptr;
     BusStatusBar* status_ = nullptr;
     JournalOfferBar* journalOffer_ = nullptr;
     QMenu* recentMenu_ = nullptr;

@@ -6,7 +6,7 @@
 namespace coscope::canopen {
 
 bool isMotionObject(uint16_t index) {
-    if (index < 0x6000 || index >= 0x6800) return false;
+    if (index < 0x6000 || index > 0x9FFF) return false;  // axes 0-7: 6000h-9FFFh
     const uint16_t base = static_cast<uint16_t>(0x6000 + ((index - 0x6000) % 0x800));  // axis 0 (CiA 402-2 §5.2)
     switch (base) {
     case 0x6040:  // controlword

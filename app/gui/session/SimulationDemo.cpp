@@ -67,8 +67,10 @@ void startMotion(Workspace* ws, uint8_t node) {
     });
     writeInOrder(ws, node, writes, 0, [ws, node] {
         if (!ws->master()) return;
+        // The bus's own SYNC producer (Bus ▸ SYNC producer shows it running and stops it).
+        canopen::SyncProducer* sync = ws->syncProducer();
+        if (!sync) return;
         auto* holder = new QObject(ws);
-        auto* sync = new canopen::SyncProducer(*ws->master(), holder);
         sync->setPeriodUs(10000);  // 100 Hz SYNC: the TPDOs follow it
         QString error;
         if (!sync->start(&error)) spdlog::warn("simulation: SYNC: {}", error.toStdString());
@@ -84,8 +86,7 @@ void startMotion(Workspace* ws, uint8_t node) {
         step->start();
         QMetaObject::invokeMethod(step, "timeout");  // first target at once
         // The master context goes with the source: stop before anything else runs.
-        QObject::connect(ws, &Workspace::sourceChanged, holder, [holder, sync, step] {
-            sync->stop();
+        QObject::connect(ws, &Workspace::sourceChanged, holder, [holder, step] {
             step->stop();
             holder->deleteLater();
         });

@@ -2,6 +2,7 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/language/CoreText.h"
 
+#include "core/canopen/BusMaster.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
 #include "core/can/BusInterfaceName.h"
@@ -47,6 +48,7 @@ void Workspace::reset() {
     }
     loadJob_.reset();
     if (bus_) emit aboutToDisconnect();
+    busMaster_.reset();  // periodic sends stop before the bus closes
     sdo_.reset();
     if (bus_) bus_->close();
     if (session_) session_->stop();
@@ -114,6 +116,7 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     for (auto& c : analysisConsumers(false)) session_->addConsumer(std::move(c));
     session_->addConsumer(master_->dispatcher().consumer());
     sdo_ = std::make_unique<canopen::SdoClient>(*master_);
+    busMaster_ = std::make_unique<canopen::BusMaster>(*master_);
     session_->start(bus_.get());
     spdlog::info("connecting to {}", sourceName_.toStdString());
     bus_->open();
@@ -152,6 +155,7 @@ void Workspace::disconnectBus() {
     // bus and the SDO client are still there.
     emit aboutToDisconnect();
     // Keep the trace: stop the bus and the ingest thread, leave the store for review.
+    busMaster_.reset();  // periodic sends stop before the bus closes
     sdo_.reset();
     bus_->close();
     lostSinceNs_ = 0;
@@ -223,6 +227,9 @@ void Workspace::clear() {
     reset();
     emit sourceChanged();
 }
+
+canopen::SyncProducer* Workspace::syncProducer() const { return busMaster_ ? &busMaster_->sync() : nullptr; }
+canopen::HeartbeatProducer* Workspace::heartbeatProducer() const { return busMaster_ ? &busMaster_->heartbeat() : nullptr; }
 
 bool Workspace::canTransmit() const { return bus_ && bus_->state() == CanBus::State::Open && !bus_->isListenOnly(); }
 

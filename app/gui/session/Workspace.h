@@ -21,8 +21,11 @@
 #include <memory>
 
 namespace coscope::canopen {
+class BusMaster;
+class HeartbeatProducer;
 class MasterContext;
 class SdoClient;
+class SyncProducer;
 }  // namespace coscope::canopen
 
 namespace coscope::gui {
@@ -62,6 +65,11 @@ public:
     bool canTransmit() const;  // a bus is open and not listen-only
     canopen::MasterContext* master() const { return master_.get(); }
     canopen::SdoClient* sdo() const { return sdo_.get(); }
+    // The master services of the open bus (SYNC, CoScope's heartbeat, the transmit list), or
+    // null: they stop before the bus closes.
+    canopen::BusMaster* busMaster() const { return busMaster_.get(); }
+    canopen::SyncProducer* syncProducer() const;
+    canopen::HeartbeatProducer* heartbeatProducer() const;
     LogLoadJob* loadJob() const { return loadJob_.get(); }
 
     // The capture journal of the live capture (DESIGN.md "Reliability"): every frame of a bus
@@ -120,6 +128,7 @@ private:
     std::unique_ptr<CaptureSession> session_;
     std::unique_ptr<canopen::MasterContext> master_;
     std::unique_ptr<canopen::SdoClient> sdo_;
+    std::unique_ptr<canopen::BusMaster> busMaster_;
     std::unique_ptr<LogLoadJob> loadJob_;
     QString sourceName_;
     QString journalPath_;

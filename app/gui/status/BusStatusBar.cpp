@@ -47,6 +47,8 @@ BusStatusBar::BusStatusBar(QStatusBar* bar, Workspace* workspace) : QObject(bar)
     errors_ = label(QStringLiteral("statusErrors"), 80);
     controller_ = label(QStringLiteral("statusController"), 0);
     controller_->hide();
+    master_ = label(QStringLiteral("statusMaster"), 0);
+    master_->hide();
     restart_ = new QPushButton(tr("Restart controller"), bar);
     restart_->setObjectName(QStringLiteral("restartController"));
     restart_->setToolTip(tr("The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)"));
@@ -54,6 +56,11 @@ BusStatusBar::BusStatusBar(QStatusBar* bar, Workspace* workspace) : QObject(bar)
     bar->addPermanentWidget(restart_);
     connect(restart_, &QPushButton::clicked, this, &BusStatusBar::restartController);
     refresh(nullptr);
+}
+
+void BusStatusBar::setMasterText(const QString& text) {
+    if (master_->text() != text) master_->setText(text);
+    master_->setVisible(!text.isEmpty());
 }
 
 void BusStatusBar::refresh(Job* job) {

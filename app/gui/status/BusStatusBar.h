@@ -32,6 +32,8 @@ public:
     QString rateText() const;
     QString loadText() const;
     QString controllerText() const;
+    // What CoScope sends on its own as the bus's master ("SYNC 10 ms (1,234) · heartbeat 127"); hidden when empty.
+    void setMasterText(const QString& text);
 
 private slots:
     void restartController();
@@ -45,6 +47,7 @@ private:
     QLabel* dropped_ = nullptr;
     QLabel* errors_ = nullptr;
     QLabel* controller_ = nullptr;
+    QLabel* master_ = nullptr;
     QPushButton* restart_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QPushButton* cancel_ = nullptr;
