@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli/BusSession.h"
 
+#include "core/canopen/DriveDisable.h"
 #include "core/canopen/ServiceWait.h"
 #include "eds/DictionaryLibrary.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QRegularExpression>
+
+#include <cstdio>
 
 namespace coscope::cli {
 
@@ -14,6 +17,13 @@ BusSession::BusSession() = default;
 BusSession::~BusSession() {
     master_.reset();  // its last frames go out before the bus closes
     sdo_.reset();
+    // Whatever ended the verb (a failure, an interrupt, a bug): a drive it left enabled gets
+    // Disable voltage, seen going out, before the bus closes. Verbs that leave a drive enabled
+    // on purpose (ds402 enable) take it off the record first.
+    if (context_ && bus_ && !context_->enabledDrives().isEmpty()) {
+        const canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*context_);
+        if (!outcome.drives.empty()) std::fprintf(stderr, "coscope-cli: before closing the bus: %s\n", qPrintable(outcome.summary().replace(u'\n', QStringLiteral("; "))));
+    }
     if (session_) session_->stop();
     if (bus_) bus_->close();
 }

@@ -82,6 +82,9 @@ static int runDs402(const QStringList& args, const QString& action) {
     else if (action == u"quickstop") r = wait([&](auto cb) { ctl.quickStop(cb); });
     else r = wait([&](auto cb) { ctl.disable(cb); });
     if (!r.ok) return failure(verb, r.advice.isEmpty() ? r.error : r.error + QStringLiteral(" — ") + r.advice);
+    // Enabled or quick-stopped as asked: left so on purpose, not disabled when the bus closes
+    // (BusSession disables what a verb leaves enabled by accident).
+    if (action == u"enable" || action == u"quickstop") s.context().enabledDrives().forget(*node, ax);
     show(r);
     return Ok;
 }
@@ -194,7 +197,9 @@ static int runJog(const QStringList& args) {
     if (!s.open(pos[0], &error)) return failure(verb, error);
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
     observe(ctl, out);
-    // Whatever happens below, the drive ends disabled.
+    // Whatever happens below, the drive ends disabled: also on Ctrl+C or SIGTERM, which stop the
+    // move (halt, then disable) instead of ending the process with the motor turning.
+    installInterruptHandler();
     auto disableAtEnd = [&](const QString& failed) {
         const auto d = waitDs402([&](auto cb) { ctl.disable(cb); }, 10000);
         if (!d.ok) {
@@ -208,6 +213,7 @@ static int runJog(const QStringList& args) {
     const auto en = waitDs402([&](auto cb) { ctl.enable(cb); });
     if (!en.ok) return disableAtEnd(en.advice.isEmpty() ? en.error : en.error + QStringLiteral(" — ") + en.advice);
     out << "node " << *node << ": operation enabled\n";
+    if (interrupted()) return disableAtEnd(QStringLiteral("interrupted before the move"));
     bool finished = false;
     canopen::Ds402Result moved;
     int32_t lastPos = 0, firstPos = 0;
@@ -222,7 +228,8 @@ static int runJog(const QStringList& args) {
     // The CLI holds the "button" for --for ms, feeding the controller's watchdog.
     canopen::waitUntil([&] {
         if (finished) return true;
-        if (t.elapsed() < ms) ctl.feedWatchdog();
+        if (interrupted()) ctl.stopTestMove(QStringLiteral("interrupted"));
+        else if (t.elapsed() < ms) ctl.feedWatchdog();
         else ctl.stopTestMove(QStringLiteral("--for %1 ms elapsed").arg(ms));
         return false;
     }, ms + 10000);
@@ -231,6 +238,7 @@ static int runJog(const QStringList& args) {
         return disableAtEnd(QStringLiteral("the test move did not finish"));
     }
     if (!moved.ok) return disableAtEnd(moved.error);
+    if (interrupted()) return disableAtEnd(QStringLiteral("interrupted after moving from %1 to %2 (position actual 6064h)").arg(firstPos).arg(lastPos));
     out << "node " << *node << ": moved from " << firstPos << " to " << lastPos << " (position actual 6064h), stopped: " << moved.stopReason << "\n";
     return disableAtEnd({});
 }

@@ -3,6 +3,7 @@
 
 #include "app/gui/JournalOffer.h"
 #include "app/gui/session/CaptureSettingsDialog.h"
+#include "app/gui/session/EnabledDrivesQuestion.h"
 #include "app/gui/session/GapSaveQuestion.h"
 #include "app/gui/session/JournalCleaner.h"
 
@@ -299,11 +300,14 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSaveCapture([this] { close(); })) {
+    if (!maybeSaveCapture([this] { close(); }) || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
         event->ignore();
         return;
     }
     saveLayout();
+    // Quitting ends the capture here, while the window still shows what happens: drives CoScope
+    // enabled get their Disable voltage, seen on the bus, before it closes (Workspace).
+    workspace_->disconnectBus();
     QMainWindow::closeEvent(event);
 }
 
@@ -321,6 +325,7 @@ void MainWindow::dropEvent(QDropEvent* event) {
 
 bool MainWindow::connectBus(const QString& url, bool scanWhenOpen) {
     if (!maybeSaveCapture([this, url, scanWhenOpen] { connectBus(url, scanWhenOpen); })) return false;
+    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Connect, quiet_)) return false;
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         showError(tr("Cannot connect to %1: %2").arg(url, error));
@@ -334,10 +339,14 @@ bool MainWindow::connectBus(const QString& url, bool scanWhenOpen) {
     return true;
 }
 
-void MainWindow::disconnectBus() { workspace_->disconnectBus(); }
+void MainWindow::disconnectBus() {
+    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Disconnect, quiet_)) return;
+    workspace_->disconnectBus();
+}
 
 bool MainWindow::openLog(const QString& path) {
     if (!maybeSaveCapture([this, path] { openLog(path); })) return false;
+    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::OpenLog, quiet_)) return false;
     QString error;
     if (!workspace_->openLog(path, &error)) {
         showError(error);

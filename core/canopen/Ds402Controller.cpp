@@ -99,7 +99,14 @@ void Ds402Controller::readState(Ds402Callback done) {
 void Ds402Controller::writeControlword(uint16_t cw, const QString& why, std::function<void(const SdoResult&)> then) {
     if (onSend_)
         onSend_(QStringLiteral("%1: %2h = 0x%3 (%4)").arg(prefix(), QString::number(objectIndex(0x6040), 16).toUpper(), QStringLiteral("%1").arg(cw, 4, 16, QChar(u'0')).toUpper(), why));
-    sdo_.download(node_, objectIndex(0x6040), 0, u16(cw), std::move(then));
+    // The bus's record of the drives CoScope enabled (EnabledDrives): an enabling word before it
+    // goes out, a disabling one once the drive took it.
+    EnabledDrives& record = sdo_.context().enabledDrives();
+    if (EnabledDrives::enablesVoltage(cw)) record.noteControlword(node_, axis_, cw);
+    sdo_.download(node_, objectIndex(0x6040), 0, u16(cw), [&record, node = node_, axis = axis_, cw, then = std::move(then)](const SdoResult& r) {
+        if (r.ok && !EnabledDrives::enablesVoltage(cw)) record.noteControlword(node, axis, cw);
+        if (then) then(r);
+    });
 }
 
 void Ds402Controller::waitForState(State target, State alternative, QElapsedTimer started, Ds402Callback done) {

@@ -80,8 +80,34 @@ void FrameDispatcher::dispatch(const CanFrame* frames, size_t count) {
     }
 }
 
+int FrameDispatcher::addWatch(std::vector<uint32_t> cobIds, Watch watch) {
+    std::lock_guard lock(watchMutex_);
+    const int id = nextWatchId_++;
+    watches_.push_back({id, std::move(cobIds), std::move(watch)});
+    watchCount_.store(static_cast<int>(watches_.size()));
+    return id;
+}
+
+void FrameDispatcher::removeWatch(int id) {
+    std::lock_guard lock(watchMutex_);
+    std::erase_if(watches_, [id](const WatchEntry& w) { return w.id == id; });
+    watchCount_.store(static_cast<int>(watches_.size()));
+}
+
+void FrameDispatcher::offerToWatches(const TraceStore& store, FrameNo first, size_t count) {
+    std::lock_guard lock(watchMutex_);
+    for (size_t i = 0; i < count; ++i) {
+        const FrameNo n = static_cast<FrameNo>(first + i);
+        const TraceRecord& r = store.record(n);
+        if (r.flags & (CanFrame::Extended | CanFrame::Error)) continue;
+        for (const WatchEntry& w : watches_)
+            if (std::find(w.cobIds.begin(), w.cobIds.end(), r.id) != w.cobIds.end()) w.watch(store.frame(n));
+    }
+}
+
 CaptureSession::Consumer FrameDispatcher::consumer() {
     return [this](const TraceStore& store, FrameNo first, size_t count) {
+        if (watchCount_.load(std::memory_order_relaxed)) offerToWatches(store, first, count);
         // Cheap test on the stored record (id and flags); only frames some service waits for
         // are rebuilt and handed on.
         std::vector<CanFrame> wanted;

@@ -37,6 +37,14 @@ public:
     // Replaces the COB-IDs of a subscription.
     void setCobIds(int id, std::vector<uint32_t> cobIds);
 
+    // Frames of `cobIds` (11-bit), our own Tx copies included, handed to `watch` on the ingest
+    // thread as they are stored, after the trace store and the capture journal got them: for a
+    // bounded wait that needs no event loop (DriveDisable.h). Any thread; nothing is handed on
+    // once removeWatch() returned.
+    using Watch = std::function<void(const CanFrame& frame)>;
+    int addWatch(std::vector<uint32_t> cobIds, Watch watch);
+    void removeWatch(int id);
+
     // Ingest thread: offer a batch of frames.
     void dispatch(const CanFrame* frames, size_t count);
     // A CaptureSession consumer that feeds dispatch() from the store.
@@ -51,12 +59,22 @@ private:
         std::shared_ptr<std::atomic<bool>> alive;  // false once unsubscribed (checked on the subscriber's thread)
         std::vector<CanFrame> pending;  // ingest thread, under mutex_
     };
+    struct WatchEntry {
+        int id = 0;
+        std::vector<uint32_t> cobIds;
+        Watch watch;
+    };
     void rebuildWantedLocked();
+    void offerToWatches(const TraceStore& store, FrameNo first, size_t count);
 
     std::mutex mutex_;
     std::vector<Subscription> subs_;
     std::array<std::atomic<uint8_t>, 2048> wanted_{};  // per 11-bit id: some subscriber wants it
     int nextId_ = 1;
+    std::mutex watchMutex_;
+    std::vector<WatchEntry> watches_;
+    std::atomic<int> watchCount_{0};
+    int nextWatchId_ = 1;
 };
 
 }  // namespace coscope::canopen

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/can/CanBus.h"
+#include "core/canopen/EnabledDrives.h"
 #include "core/canopen/FrameDispatcher.h"
 #include "core/canopen/NodeTable.h"
 #include "core/canopen/SdoAbortTexts.h"
@@ -21,7 +22,8 @@ namespace coscope::canopen {
 class PeriodicSender;
 
 // What the master services share for one bus: the bus they send on, the dispatcher that brings
-// them the frames they wait for (fed by the bus's one CaptureSession), and the bus's node table
+// them the frames they wait for (fed by the bus's one CaptureSession), the record of the drives
+// CoScope enabled on it (disabled before the bus closes: DriveDisable.h), and the bus's node table
 // (the services read each node's dictionary there, hence its vendor abort texts, and write what
 // they learn). The owner keeps the bus, session, table and context alive longer than the services.
 class MasterContext {
@@ -32,6 +34,7 @@ public:
 
     CanBus* bus() const { return bus_; }
     FrameDispatcher& dispatcher() { return dispatcher_; }
+    EnabledDrives& enabledDrives() { return enabledDrives_; }
     NodeTable& nodes() { return *nodes_; }
     const NodeTable& nodes() const { return *nodes_; }
 
@@ -54,6 +57,7 @@ private:
 
     CanBus* bus_;
     FrameDispatcher dispatcher_;
+    EnabledDrives enabledDrives_;
     std::unique_ptr<NodeTable> ownNodes_;
     NodeTable* nodes_;
     mutable std::mutex mutex_;

@@ -3,6 +3,7 @@
 #include "app/gui/language/CoreText.h"
 
 #include "core/canopen/BusMaster.h"
+#include "core/canopen/DriveDisable.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
 #include "core/can/BusInterfaceName.h"
@@ -20,6 +21,7 @@ namespace coscope::gui {
 
 namespace {
 const QString kRawKey = QStringLiteral("plot/rawSignals");
+constexpr int kDisableWaitMs = 500;  // for the Disable frames' copies before a bus closes
 }  // namespace
 
 Workspace::Workspace(QObject* parent)
@@ -50,6 +52,7 @@ void Workspace::reset() {
     if (bus_) emit aboutToDisconnect();
     busMaster_.reset();  // periodic sends stop before the bus closes
     sdo_.reset();
+    disableEnabledDrives();
     if (bus_) bus_->close();
     if (session_) session_->stop();
     session_.reset();
@@ -157,6 +160,7 @@ void Workspace::disconnectBus() {
     // Keep the trace: stop the bus and the ingest thread, leave the store for review.
     busMaster_.reset();  // periodic sends stop before the bus closes
     sdo_.reset();
+    disableEnabledDrives();
     bus_->close();
     lostSinceNs_ = 0;
     if (session_) session_->stop();
@@ -173,6 +177,29 @@ void Workspace::disconnectBus() {
     sourceName_ += QStringLiteral(" (disconnected)");
     emit busStateChanged(CanBus::State::Closed);
     emit sourceChanged();
+}
+
+// The frames go straight on the bus and the wait is bounded (500 ms): nothing of the window's
+// (no SDO client, no event loop) is needed, so it also runs from the destructor.
+void Workspace::disableEnabledDrives() {
+    if (!master_ || master_->enabledDrives().isEmpty()) return;
+    const canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*master_, kDisableWaitMs);
+    for (const auto& d : outcome.drives) {
+        const int node = d.drive.node, axis = d.drive.axis;
+        auto name = [node, axis] { return axis ? tr("node %1 axis %2").arg(node).arg(axis) : tr("node %1").arg(node); };
+        if (d.seen) {
+            events_.add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, node, [name] {
+                return tr("Disable voltage (6040h = 0000h) sent to %1 before the bus closed, and seen on the bus").arg(name());
+            }));
+            continue;
+        }
+        auto text = [name, why = d.error] {
+            return tr("%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.")
+                .arg(name(), coreText(why));
+        };
+        events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, node, text));
+        emit errorOccurred(text());
+    }
 }
 
 QString Workspace::journalFolder() const { return journals::defaultFolder(); }

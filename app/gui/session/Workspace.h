@@ -100,7 +100,8 @@ public:
 
 signals:
     // Emitted while the bus and the SDO client still work, just before they are closed
-    // (disconnect, another connection, opening a log).
+    // (disconnect, another connection, opening a log, the workspace going away). Then the
+    // drives CoScope left enabled are sent Disable voltage, seen going out before the bus closes.
     void aboutToDisconnect();
     void sourceChanged();
     void busStateChanged(coscope::CanBus::State state);
@@ -110,6 +111,10 @@ signals:
 
 private:
     void reset();
+    // Before the bus closes, whatever closes it: the last word to each drive CoScope enabled
+    // (canopen::disableEnabledDrives), after the SDO client is gone; said in the log, the Events
+    // and, when a Disable was not seen on the bus, as an error.
+    void disableEnabledDrives();
     void openJournal();
     void closeJournal();
     void noteLostAdapter(CanBus::State state);

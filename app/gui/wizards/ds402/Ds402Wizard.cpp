@@ -3,7 +3,6 @@
 // and reading the drive: Ds402WizardReading.cpp; what the buttons do: Ds402WizardCommands.cpp.
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 
-#include "core/canopen/Sdo.h"
 #include "core/canopen/SdoClient.h"
 
 #include "app/gui/session/Workspace.h"
@@ -15,7 +14,6 @@
 #include "app/gui/wizards/ds402/Ds402StepBar.h"
 #include "app/gui/wizards/ds402/Ds402TestMoveBox.h"
 
-#include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QGroupBox>
@@ -72,19 +70,9 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
     connect(workspace_, &Workspace::sourceChanged, this, [this] {
         if (ctlSdo_ != workspace_->sdo()) dropController(tr("The connection changed. Choose the drive again."));
     });
-    connect(qApp, &QCoreApplication::aboutToQuit, this, [this] { safeDisable(tr("application quits")); });
-    // Disconnecting (or switching source) closes the bus and the SDO client right after this
-    // signal, before the client's queue would run: one expedited SDO download of 6040h goes out
-    // at once on the bus (CanBus::send, which still refuses in listen-only) — Quick stop while
-    // moving (605Ah: stop, then Switch on disabled), else Disable voltage.
-    connect(workspace_, &Workspace::aboutToDisconnect, this, [this] {
-        if (!workspace_->bus() || !workspace_->canTransmit() || node_ <= 0 || !cia402_) return;
-        const bool moving = ctl_ && ctl_->testMoveActive();
-        spdlog::info("ds402 wizard: bus closing, disabling node {}", node_);
-        const CanFrame f = canopen::sdo::initiateDownload(static_cast<uint8_t>(node_), 0x6040, 0, QByteArray::fromHex(moving ? "0200" : "0000"));
-        QString error;
-        if (!workspace_->bus()->send(f, &error)) spdlog::warn("ds402 wizard: could not disable node {}: {}", node_, error.toStdString());
-    });
+    // Disconnecting, another connection, a log opened or the app quitting: the workspace sends
+    // Disable voltage to every drive CoScope enabled and sees it go out before the bus closes
+    // (canopen::disableEnabledDrives); the window asked first. Nothing more to send from here.
     if (const QString why = sendRefusal(); !why.isEmpty() && workspace_->bus() && workspace_->bus()->isListenOnly()) {
         banner_->setText(tr("Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h)."));
         banner_->show();

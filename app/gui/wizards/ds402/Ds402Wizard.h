@@ -42,7 +42,8 @@ class Ds402FramesTabs;
 // step bar (Ds402StepBar), the mode box (Ds402ModeBox), the test move (Ds402TestMoveBox) and the
 // frames and dry-run tabs (Ds402FramesTabs); this class runs the drive through them.
 //
-// Safety (DESIGN.md): asks before Enable operation and before arming a test move; a failed step
+// Safety (DESIGN.md): asks before Enable operation and before arming a test move (and before the
+// move switches the mode of operation); any stop, fault, step or mode change ends the arming; a failed step
 // sends Disable voltage; closing the wizard (Close, Esc, the window's ✕), losing the bus or
 // quitting the app disables a drive the wizard left switched on. What it shows is what it last
 // read from the drive: nothing once the connection is gone. The test move speaks the drive's
@@ -136,6 +137,11 @@ private:
     void updateButtons();
     void fillModes();
     bool confirm(const QString& title, const QString& text);
+    // Arming a test move ends with any stop, fault, mode change or step (DESIGN.md "Reliability
+    // and safety"): a new hold-to-run needs a new confirmation. Says why when it was armed.
+    void disarm(const QString& why);
+    // Confirmed, with the drive in `driveMode` (6061h): the move switches to its own mode, as agreed.
+    void arm(const canopen::Ds402TestMove& move, int8_t driveMode);
     // Disables a drive the wizard may have left switched on, without waiting (close, quit,
     // bus lost). Returns whether something was sent.
     bool safeDisable(const QString& why);
@@ -151,6 +157,8 @@ private:
     bool reading_ = false;
     bool cia402_ = true;
     bool armed_ = false;
+    int8_t armedMode_ = 0;      // the mode of operation (6061h) the armed test move runs in
+    int8_t armedFromMode_ = 0;  // ... and the one the drive showed when it was armed (until it switched)
     bool holding_ = false;
     bool sentCommands_ = false;  // the wizard wrote 6040h since the node was chosen
     bool closing_ = false;

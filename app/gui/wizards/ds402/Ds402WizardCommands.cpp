@@ -63,6 +63,7 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         if (why) *why = tr("Enable operation was not confirmed; nothing was sent.");
         return false;
     }
+    disarm(tr("a state machine step"));
     busy_ = true;
     sentCommands_ = true;
     const QString name = coreText(canopen::ds402::commandName(command));
@@ -137,6 +138,7 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         if (why) *why = tr("The drive does not list %1 as supported (6502h = %2h).").arg(coreText(canopen::ds402::modeName(mode))).arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
         return false;
     }
+    disarm(tr("the mode of operation is being changed"));
     busy_ = true;
     updateButtons();
     setMessage(tr("Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…").arg(mode).arg(coreText(canopen::ds402::modeName(mode))));
@@ -179,6 +181,22 @@ bool Ds402Wizard::armTestMove(QString* why) {
         if (why) *why = bad;
         return false;
     }
+    // The move runs in profile velocity (jog) or profile position (short move), never switching
+    // the drive's mode silently: refused when the drive lacks that mode (6502h), asked otherwise.
+    const int8_t needed = m.kind == Ds402TestMove::Kind::Jog ? 3 : 1;
+    const int8_t current = mode_->driveMode();
+    const QString neededName = coreText(canopen::ds402::modeName(needed));
+    if (supported_ && !canopen::ds402::modeSupported(*supported_, needed)) {
+        if (why) *why = tr("The test move needs %1, which the drive does not list as supported (6502h): no test move in %2.").arg(neededName, coreText(canopen::ds402::modeName(current)));
+        return false;
+    }
+    if (current != needed &&
+        !confirm(tr("Mode of operation"), tr("The drive is in %1; the test move needs %2: switch the mode of operation (6060h = %3)?")
+                                               .arg(coreText(canopen::ds402::modeName(current)), neededName)
+                                               .arg(needed))) {
+        if (why) *why = tr("Test move not armed: the mode of operation stays %1.").arg(coreText(canopen::ds402::modeName(current)));
+        return false;
+    }
     const QString what = move_->describe(m);
     if (!confirm(tr("Test move"), tr("While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.\n"
                                      "Releasing the button stops it. Make sure the axis is free to move.\n\nArm the test move?")
@@ -186,10 +204,27 @@ bool Ds402Wizard::armTestMove(QString* why) {
         if (why) *why = tr("Test move not armed.");
         return false;
     }
-    armed_ = true;
-    setMessage(tr("Test move armed: hold the “Hold to run” button to move, release it to stop."));
-    updateButtons();
+    // Agreed: the move itself writes 6060h and checks 6061h before it starts (Ds402Controller).
+    arm(m, current);
     return true;
+}
+
+void Ds402Wizard::arm(const Ds402TestMove& m, int8_t driveMode) {
+    armed_ = true;
+    armedMode_ = m.kind == Ds402TestMove::Kind::Jog ? 3 : 1;
+    armedFromMode_ = driveMode;
+    setMessage(armedMode_ == driveMode ? tr("Test move armed: hold the “Hold to run” button to move, release it to stop.")
+                                       : tr("Test move armed: holding the “Hold to run” button first switches the mode of operation to %1, then moves; "
+                                            "release it to stop.").arg(coreText(canopen::ds402::modeName(armedMode_))));
+    updateButtons();
+}
+
+void Ds402Wizard::disarm(const QString& why) {
+    if (!armed_) return;
+    armed_ = false;
+    spdlog::info("ds402 wizard: test move of node {} no longer armed ({})", node_, why.toStdString());
+    setMessage(tr("The test move is no longer armed (%1): arm it again to move.").arg(why));
+    updateButtons();
 }
 
 bool Ds402Wizard::pressHoldToRun(QString* why) {
@@ -222,7 +257,10 @@ bool Ds402Wizard::pressHoldToRun(QString* why) {
             self->feed_->stop();
             self->holding_ = false;
             if (r.ok) self->setMessage(tr("Test move stopped: %1. The drive stays enabled; press Disable when done.").arg(r.stopReason));
-            else self->setMessage(tr("Test move failed: %1").arg(coreText(r.error)), true);
+            else {
+                self->disarm(tr("the test move failed"));
+                self->setMessage(tr("Test move failed: %1").arg(coreText(r.error)), true);
+            }
             self->refresh();
             self->updateButtons();
             emit self->testMoveFinished(r.ok);
@@ -251,6 +289,7 @@ void Ds402Wizard::quickStop() {
     if (!ctl_ && !closing_) makeController();  // the window shows a drive: Quick stop works whatever came before
     if (!ctl_) return setMessage(tr("Quick stop: %1").arg(sendRefusal()), true);
     holding_ = false;
+    disarm(tr("Quick stop"));
     sentCommands_ = true;
     setMessage(tr("Quick stop: sending 6040h = 0002h…"));
     QPointer<Ds402Wizard> self(this);
@@ -263,7 +302,7 @@ void Ds402Wizard::disableDrive() {
     if (!ctl_ && !closing_) makeController();
     if (!ctl_) return setMessage(tr("Disable: %1").arg(sendRefusal()), true);
     holding_ = false;
-    armed_ = false;
+    disarm(tr("Disable"));
     setMessage(tr("Disabling: Shutdown, then Disable voltage…"));
     QPointer<Ds402Wizard> self(this);
     auto done = [self](const Ds402Result& r) {
@@ -303,9 +342,17 @@ bool Ds402Wizard::safeDisable(const QString& why) {
     if (!moving && !powered) return false;
     spdlog::info("ds402 wizard: disabling node {} ({})", node_, why.toStdString());
     const auto n = static_cast<uint8_t>(node_);
-    // Fire and forget (the wizard may be gone when the answers come): the SDO client sends in order.
-    if (moving) ctlSdo_->download(n, 0x6040, 0, QByteArray::fromHex("0200"), [](const SdoResult&) {});  // quick stop
-    ctlSdo_->download(n, 0x6040, 0, QByteArray::fromHex("0000"), [](const SdoResult&) {});              // disable voltage
+    // Fire and forget (the wizard may be gone when the answers come): the SDO client sends in
+    // order. Once the drive took it, the bus's record of enabled drives forgets it (the context
+    // outlives the client, whose callbacks stop with it).
+    canopen::EnabledDrives* record = &ctlSdo_->context().enabledDrives();
+    if (moving) {
+        record->noteControlword(n, 0, 0x0002);
+        ctlSdo_->download(n, 0x6040, 0, QByteArray::fromHex("0200"), [](const SdoResult&) {});  // quick stop
+    }
+    ctlSdo_->download(n, 0x6040, 0, QByteArray::fromHex("0000"), [record, n](const SdoResult& r) {  // disable voltage
+        if (r.ok) record->noteControlword(n, 0, 0x0000);
+    });
     return true;
 }
 

@@ -318,6 +318,8 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
 }
 
 void Ds402Wizard::showState(State s, uint16_t swd) {
+    // Out of Operation enabled (stopped, disabled, faulted): whatever comes back, the arming is over.
+    if (s != State::OperationEnabled) disarm(s == State::Fault || s == State::FaultReactionActive ? tr("the drive faulted") : tr("the drive left Operation enabled"));
     statusword_ = swd;
     if (s != state_ || visited_.isEmpty()) visited_ << s;
     state_ = s;
@@ -338,6 +340,9 @@ void Ds402Wizard::fillModes() {
 }
 
 void Ds402Wizard::showDriveMode(int8_t mode) {
+    // Armed in another mode, the move switches (as agreed) to its own; any other mode ends the arming.
+    if (mode == armedMode_) armedFromMode_ = mode;
+    else if (mode != armedFromMode_) disarm(tr("the mode of operation changed"));
     status_->setModeText(tr("Mode of operation (6061h): %1").arg(coreText(canopen::ds402::modeName(mode))));
     if (!mode_->showDriveMode(mode)) return;
     // The test move follows the kind the drive's mode runs (PV: jog, PP: short move).
