@@ -37,15 +37,19 @@ bool afterCommand(const NodeInfo& e) { return e.nmtSource == NmtSource::OurComma
 // the one its frames show.
 void inferState(NodeInfo& e, NmtSource source, FrameNo n, int64_t t) {
     const bool afterGap = e.stateUnknownAfterGap && n >= e.gapFrame;
-    if (afterCommand(e) && !afterGap && t - e.nmtSinceNs < kCommandSettleNs) return;
+    // Just after a command, a frame that contradicts it may have been queued before it.
+    const bool settling = afterCommand(e) && !afterGap && t - e.nmtSinceNs < kCommandSettleNs;
     if (source == NmtSource::Pdo) {
-        if (e.nmtState != 0x05 || afterGap || afterCommand(e)) setState(e, 0x05, source, n, t);
-        if (afterGap) e.stateUnknownAfterGap = false;
+        if (e.nmtState == 0x05 && !afterGap && !afterCommand(e)) return;  // known already
+        if (settling && e.nmtState != 0x05) return;
+        setState(e, 0x05, source, n, t);
+        e.stateUnknownAfterGap = e.stateUnknownAfterGap && !afterGap;
         return;
     }
     // SDO or EMCY: Pre-operational or Operational; which one, only a PDO or error control tells.
-    const bool contradicts = e.nmtState == 0x04 || e.nmtState == 0x00;
-    if (contradicts || (afterGap && e.nmtState != 0x05) || (afterCommand(e) && e.nmtState < 0)) setState(e, 0x7F, source, n, t);
+    const bool contradicts = e.nmtState == 0x04 || e.nmtState == 0x00 || (afterCommand(e) && e.nmtState < 0);
+    if (contradicts && settling) return;
+    if (contradicts || (afterGap && e.nmtState != 0x05)) setState(e, 0x7F, source, n, t);
     if (afterGap && e.nmtState == 0x7F) e.stateUnknownAfterGap = false;
 }
 

@@ -70,13 +70,21 @@ private slots:
         QCOMPARE(int(b.table.node(2)->nmtCommand), 0x01);
         QCOMPARE(b.state(3), 0x7F);  // not addressed
         QCOMPARE(b.source(3), NmtSource::BootUp);
-        // A TPDO right after the command may have been queued before it: no evidence yet.
+        // Its first TPDO (event-driven ones go out on entering Operational) confirms it.
         b.frame(0x182, {1, 2}, 1);
+        QCOMPARE(b.state(2), 0x05);
+        QCOMPARE(b.source(2), NmtSource::Pdo);
+        QCOMPARE(b.table.node(2)->nmtFrame, FrameNo(3));
+        // After our Stop, a TPDO at once may have been queued before it: no evidence yet; one
+        // later shows the node did not stop.
+        b.frame(0x000, {0x02, 0x02}, 100, CanFrame::Tx);
+        b.frame(0x182, {1, 2}, 1);
+        QCOMPARE(b.state(2), 0x04);
         QCOMPARE(b.source(2), NmtSource::OurCommand);
         b.frame(0x182, {1, 2}, 50);
         QCOMPARE(b.state(2), 0x05);
         QCOMPARE(b.source(2), NmtSource::Pdo);
-        QCOMPARE(b.table.node(2)->nmtFrame, FrameNo(4));
+        QCOMPARE(b.table.node(2)->nmtFrame, FrameNo(6));
         // A node that sends PDOs is Operational whatever was last heard: node 3 said 7Fh.
         b.frame(0x183, {0}, 100);
         QCOMPARE(b.state(3), 0x05);
