@@ -13,16 +13,6 @@ namespace {
 // An NMT command explains a state change or a boot-up seen within this time.
 constexpr int64_t kCommandWindowNs = 5'000'000'000;
 constexpr uint8_t kResetNode = 129, kResetComm = 130;
-
-// The state an NMT command leads to (CiA 301 §7.3.2.2.1), -1 for the resets (boot-up first).
-int stateAfter(int cs) {
-    switch (cs) {
-    case 1: return 5;
-    case 2: return 4;
-    case 128: return 127;
-    default: return -1;
-    }
-}
 }  // namespace
 
 void NetworkHealth::addNmtCommand(const CanFrame& f, BusTrack& b) {
@@ -77,7 +67,7 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     }
     if (state == t.state) return;
     QString cause;
-    if (commanded && (stateAfter(t.lastCommand) == state)) {
+    if (commanded && (canopen::nmtStateAfter(static_cast<uint8_t>(t.lastCommand)) == state)) {
         cause = commandText();
         t.lastCommand = -1;
     } else if (t.state == 0 && state == 127) {

@@ -69,9 +69,13 @@ void HeartbeatMonitor::onFrames(const std::vector<CanFrame>& frames) {
                     ++info.bootUps;
                     booted = changed = true;
                 }
-                if (info.nmtState != state || info.heartbeatLost) changed = true;
+                // After boot-up a node is pre-operational (CiA 301 §7.3.2.2.1), as the node table has it.
+                const int now = booted ? 0x7F : state;
+                if (info.nmtState != now || info.heartbeatLost) changed = true;
                 info.heartbeatLost = false;
-                info.nmtState = state;
+                info.nmtState = now;
+                info.nmtSource = booted ? NmtSource::BootUp : guardAnswer ? NmtSource::Guarding : NmtSource::Heartbeat;
+                info.nmtCommand = 0;
             } else {
                 ++info.emcyCount;
                 info.lastEmcyCode = code;

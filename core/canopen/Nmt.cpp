@@ -36,6 +36,15 @@ QString nmtStateName(uint8_t state) {
     }
 }
 
+int nmtStateAfter(uint8_t cs) {
+    switch (cs) {
+    case 0x01: return 0x05;
+    case 0x02: return 0x04;
+    case 0x80: return 0x7F;
+    default: return -1;
+    }
+}
+
 CanFrame nmtFrame(NmtCommand cs, uint8_t node) { return CanFrame::classic(0x000, {static_cast<uint8_t>(cs), node}); }
 
 CanFrame heartbeatFrame(uint8_t node, NmtState state) {

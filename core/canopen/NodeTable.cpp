@@ -2,6 +2,7 @@
 #include "core/canopen/NodeTable.h"
 
 #include "core/canopen/CobId.h"
+#include "core/canopen/Nmt.h"
 
 namespace coscope::canopen {
 
@@ -14,6 +15,46 @@ NodeInfo& NodeTable::entryLocked(int id) {
     return *slot;
 }
 
+namespace {
+
+// A frame a node had queued before a command reached it may still go out just after the command:
+// its frames this soon after a command say nothing about the new state.
+constexpr int64_t kCommandSettleNs = 20'000'000;
+
+void setState(NodeInfo& e, int state, NmtSource source, FrameNo n, int64_t t, uint8_t command = 0) {
+    e.nmtState = state;
+    e.nmtSource = source;
+    e.nmtCommand = command;
+    e.nmtFrame = n;
+    e.nmtSinceNs = t;
+}
+
+bool afterCommand(const NodeInfo& e) { return e.nmtSource == NmtSource::OurCommand || e.nmtSource == NmtSource::OtherCommand; }
+
+// The node's own frame `source` (a PDO, an SDO answer, EMCY) at frame n: its state is corrected
+// when the one known contradicts it (CiA 301 §7.3.2.2: PDOs only in Operational; SDO and EMCY
+// only in Pre-operational and Operational), and a state not yet confirmed by the node becomes
+// the one its frames show.
+void inferState(NodeInfo& e, NmtSource source, FrameNo n, int64_t t) {
+    const bool afterGap = e.stateUnknownAfterGap && n >= e.gapFrame;
+    // Just after a command, a frame that contradicts it may have been queued before it.
+    const bool settling = afterCommand(e) && !afterGap && t - e.nmtSinceNs < kCommandSettleNs;
+    if (source == NmtSource::Pdo) {
+        if (e.nmtState == 0x05 && !afterGap && !afterCommand(e)) return;  // known already
+        if (settling && e.nmtState != 0x05) return;
+        setState(e, 0x05, source, n, t);
+        e.stateUnknownAfterGap = e.stateUnknownAfterGap && !afterGap;
+        return;
+    }
+    // SDO or EMCY: Pre-operational or Operational; which one, only a PDO or error control tells.
+    const bool contradicts = e.nmtState == 0x04 || e.nmtState == 0x00 || (afterCommand(e) && e.nmtState < 0);
+    if (contradicts && settling) return;
+    if (contradicts || (afterGap && e.nmtState != 0x05)) setState(e, 0x7F, source, n, t);
+    if (afterGap && e.nmtState == 0x7F) e.stateUnknownAfterGap = false;
+}
+
+}  // namespace
+
 void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
     bool changed = false;
     std::lock_guard lock(mutex_);
@@ -22,12 +63,29 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
         const TraceRecord& r = store.record(n);
         if (r.flags & (CanFrame::Extended | CanFrame::Error)) continue;
         const auto info = classifyCobId(r.id);
+        if (info.service == Service::Nmt && r.len >= 2 && !(r.flags & CanFrame::Remote)) {
+            // A command seen on the bus (CiA 301 §7.2.8.3.1): what the node was told, ours when
+            // we sent it. It creates no node: a command says nothing about who is there.
+            const uint8_t cs = r.data[0], target = r.data[1];
+            const NmtSource source = r.flags & CanFrame::Tx ? NmtSource::OurCommand : NmtSource::OtherCommand;
+            for (auto& slot : nodes_) {
+                if (!slot || (target != 0 && slot->node != target)) continue;
+                setState(*slot, nmtStateAfter(cs), source, n, r.timestampNs, cs);
+                if (n >= slot->gapFrame) slot->stateUnknownAfterGap = false;
+                changed = true;
+            }
+            continue;
+        }
         if (info.node < 1) continue;
         // Only what a node itself sends proves it exists: error control, EMCY, SDO responses, TPDOs.
         // Requests to a node (600h, RPDOs, guarding RTR) say nothing about it being there.
         switch (info.service) {
         case Service::NmtErrorControl: {
-            if (r.flags & CanFrame::Remote || r.len < 1) continue;
+            if (r.flags & CanFrame::Remote) {  // a guarding request: the next answer is guarding
+                if (auto& slot = nodes_[static_cast<size_t>(info.node)]) slot->guardRequested = true;
+                continue;
+            }
+            if (r.len < 1) continue;
             NodeInfo& e = entryLocked(info.node);
             const int state = r.data[0] & 0x7F;  // CiA 301 §7.2.8.3.2: bit 7 = toggle
             const bool afterGap = e.stateUnknownAfterGap && n >= e.gapFrame;
@@ -35,13 +93,16 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
             if (state == 0) {
                 e.seenBootUp = true;
                 ++e.bootUps;
-                e.nmtState = 0x7F;  // after boot-up a node is pre-operational (CiA 301 §7.3.2.2.1)
+                setState(e, 0x7F, NmtSource::BootUp, n, r.timestampNs);  // then pre-operational (CiA 301 §7.3.2.2.1)
+            } else if (e.guardRequested) {
+                setState(e, state, NmtSource::Guarding, n, r.timestampNs);
             } else {
                 if (!afterGap && e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs) e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
                 e.seenHeartbeat = true;
                 e.lastHeartbeatNs = r.timestampNs;
-                e.nmtState = state;
+                setState(e, state, NmtSource::Heartbeat, n, r.timestampNs);
             }
+            e.guardRequested = false;
             e.lastSeenNs = r.timestampNs;
             e.lastFrame = n;
             changed = true;
@@ -55,6 +116,7 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
             e.lastEmcyCode = code;
             e.lastSeenNs = r.timestampNs;
             e.lastFrame = n;
+            inferState(e, NmtSource::Emcy, n, r.timestampNs);
             changed = true;
             break;
         }
@@ -64,6 +126,7 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
             ++e.sdoFrames;
             e.lastSeenNs = r.timestampNs;
             e.lastFrame = n;
+            inferState(e, NmtSource::Sdo, n, r.timestampNs);
             changed = true;
             break;
         }
@@ -72,9 +135,15 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
         case Service::Tpdo3:
         case Service::Tpdo4: {
             auto& slot = nodes_[static_cast<size_t>(info.node)];
-            if (slot) {  // PDO ids may be remapped: a TPDO alone does not create a node
+            // PDO ids may be remapped: a TPDO alone does not create a node. An RTR asks for it.
+            if (slot && !(r.flags & (CanFrame::Remote | CanFrame::Tx))) {
                 slot->lastSeenNs = r.timestampNs;
                 slot->lastFrame = n;
+                const int before = slot->nmtState;
+                const NmtSource was = slot->nmtSource;
+                const bool gap = slot->stateUnknownAfterGap;
+                inferState(*slot, NmtSource::Pdo, n, r.timestampNs);
+                changed = changed || before != slot->nmtState || was != slot->nmtSource || gap != slot->stateUnknownAfterGap;
             }
             break;
         }

@@ -15,12 +15,34 @@
 
 namespace coscope::canopen {
 
+// Where a node's NMT state was learned (shown beside it in the Nodes dock). Only error control
+// (heartbeat, guarding answer, boot-up) is the node saying its state; a command seen on the bus
+// is what the node was told (not confirmed); the node's own frames bound its state: PDOs only in
+// Operational, SDO and EMCY only in Pre-operational or Operational, Stopped has nothing but NMT
+// and error control (CiA 301 §7.3.2.2, the table of NMT states and communication objects).
+enum class NmtSource : uint8_t {
+    Unknown,
+    BootUp,        // 700h+n 00h: then Pre-operational (CiA 301 §7.3.2.2.1)
+    Heartbeat,     // 700h+n with the state (CiA 301 §7.2.8.3.2.2)
+    Guarding,      // the answer to our (or another master's) RTR on 700h+n (CiA 301 §7.2.8.3.2.1)
+    OurCommand,    // an NMT command we sent (a Tx frame on 000h); nmtCommand says which
+    OtherCommand,  // an NMT command another master sent (an Rx frame on 000h)
+    Pdo,           // the node sends PDOs: Operational
+    Sdo,           // the node answers SDO: at least Pre-operational
+    Emcy,          // the node sends EMCY: at least Pre-operational
+};
+
 // What is known about one node 1..127: from the traffic seen (boot-up, heartbeat, EMCY, SDO
 // responses; CiA 301 §7.2.8.3.2), from the master's heartbeat consumer / node guarding, and
 // from what was asked (scan, identity reads), with the dictionary matched or assigned to it.
 struct NodeInfo {
     int node = 0;
-    int nmtState = -1;               // last state from boot-up/heartbeat/guarding (0, 4, 5, 7Fh), -1 unknown
+    int nmtState = -1;               // last state (0 initialising, 4, 5, 7Fh), -1 unknown
+    NmtSource nmtSource = NmtSource::Unknown;  // where nmtState comes from
+    uint8_t nmtCommand = 0;          // the command specifier behind OurCommand/OtherCommand
+    FrameNo nmtFrame = 0;            // the frame nmtState was taken from
+    int64_t nmtSinceNs = 0;          // its time
+    bool guardRequested = false;     // an RTR on 700h+n is pending: the next answer is guarding
     int64_t lastHeartbeatNs = 0;     // 0 = none seen
     int64_t heartbeatPeriodNs = 0;   // interval between the last two heartbeats
     int64_t lastSeenNs = 0;          // any frame from the node
@@ -32,7 +54,8 @@ struct NodeInfo {
     bool seenHeartbeat = false, seenBootUp = false, seenEmcy = false, seenSdo = false, scanned = false;
     bool heartbeatLost = false;      // consumer heartbeat time (1016h) or guarding life time ran out
     // The adapter was lost (issue 16): nmtState is the last one before the gap and may be stale
-    // until a heartbeat or boot-up at or after frame gapFrame says otherwise.
+    // until a frame at or after gapFrame shows it: error control, a PDO, an SDO answer or EMCY
+    // from a node last seen otherwise than Operational, or an NMT command.
     bool stateUnknownAfterGap = false;
     FrameNo gapFrame = 0;
     int guardingErrors = 0;          // missing or wrong-toggle guarding answers
@@ -77,8 +100,8 @@ public:
     // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
     // asking it (identity, name, dictionary) goes to `to`; `from` is dropped, nothing is there.
     void moveNode(int from, int to);
-    // The bus was lost: every node's state is unknown from frame `from` on, until its next
-    // heartbeat or boot-up (NodeInfo::stateUnknownAfterGap).
+    // The bus was lost: every node's state is unknown from frame `from` on, until a frame shows
+    // it again (NodeInfo::stateUnknownAfterGap).
     void markGap(FrameNo from);
 
 private:

@@ -40,6 +40,9 @@ std::optional<ParsedInteger> parseIntegerText(const QString& text, TextStyle sty
         r.hex = true;
     } else if (style == TextStyle::Person && s.startsWith(QLatin1String("0b"), Qt::CaseInsensitive)) {
         v = digits(s.mid(2), 2);
+    } else if (style != TextStyle::Eds && s.size() > 1 && (s.back() == u'h' || s.back() == u'H')) {
+        v = digits(s.chopped(1), 16);  // CiA 301's way: "1Fh"
+        r.hex = true;
     } else if (style == TextStyle::Eds && s.size() > 1 && s.front() == u'0') {
         v = digits(s.mid(1), 8);
         if (!v) v = digits(s, 10);

@@ -285,30 +285,9 @@ ValueResult Value::parse(DataType type, const QString& rawText, const Limits& li
     case TypeClass::Unsigned: {
         const auto n = parseIntegerText(text, style);
         if (!n) return fail(QStringLiteral("'%1' is not a number for %2").arg(rawText, typeName));
-        if (typeClass(type) == TypeClass::Unsigned) {
-            if (n->negative || n->magnitude > unsignedMax(bits))
-                return fail(QStringLiteral("'%1' does not fit %2 (%3)").arg(rawText, typeName, typeRange(type)));
-            r.value = Value::unsignedInt(n->magnitude);
-        } else {
-            std::int64_t v = 0;
-            if (n->hex && !n->negative) {
-                // A 0x number is the bit pattern of the type (0xFF as INTEGER8 is -1).
-                if (n->magnitude > unsignedMax(bits))
-                    return fail(QStringLiteral("'%1' does not fit %2 (%3)").arg(rawText, typeName, typeRange(type)));
-                std::uint64_t u = n->magnitude;
-                if (bits < 64 && (u >> (bits - 1)) & 1) u |= ~unsignedMax(bits);
-                v = static_cast<std::int64_t>(u);
-            } else if (n->negative) {
-                if (n->magnitude > std::uint64_t(-(signedMin(bits) + 1)) + 1)
-                    return fail(QStringLiteral("'%1' does not fit %2 (%3)").arg(rawText, typeName, typeRange(type)));
-                v = static_cast<std::int64_t>(0 - n->magnitude);
-            } else {
-                if (n->magnitude > std::uint64_t(signedMax(bits)))
-                    return fail(QStringLiteral("'%1' does not fit %2 (%3)").arg(rawText, typeName, typeRange(type)));
-                v = static_cast<std::int64_t>(n->magnitude);
-            }
-            r.value = Value::signedInt(v);
-        }
+        const auto v = integerValue(type, *n);
+        if (!v) return fail(QStringLiteral("'%1' does not fit %2 (%3)").arg(rawText, typeName, typeRange(type)));
+        r.value = *v;
         break;
     }
     case TypeClass::Real: {
@@ -379,6 +358,33 @@ ValueResult Value::parse(DataType type, const QString& rawText, const Limits& li
     QString why;
     if (!withinLimits(type, r.value, limits, &why)) return fail(QStringLiteral("'%1' is %2").arg(rawText, why));
     return r;
+}
+
+std::optional<Value> integerValue(DataType type, const ParsedInteger& n) {
+    const int bits = bitSize(type);
+    if (typeClass(type) == TypeClass::Unsigned) {
+        if (n.negative || n.magnitude > unsignedMax(bits)) return std::nullopt;
+        return Value::unsignedInt(n.magnitude);
+    }
+    if (typeClass(type) != TypeClass::Signed) return std::nullopt;
+    if (n.hex && !n.negative) {
+        // A hex number is the bit pattern of the type (0xFF as INTEGER8 is -1).
+        if (n.magnitude > unsignedMax(bits)) return std::nullopt;
+        std::uint64_t u = n.magnitude;
+        if (bits < 64 && (u >> (bits - 1)) & 1) u |= ~unsignedMax(bits);
+        return Value::signedInt(static_cast<std::int64_t>(u));
+    }
+    if (n.negative) {
+        if (n.magnitude > std::uint64_t(-(signedMin(bits) + 1)) + 1) return std::nullopt;
+        return Value::signedInt(static_cast<std::int64_t>(0 - n.magnitude));
+    }
+    if (n.magnitude > std::uint64_t(signedMax(bits))) return std::nullopt;
+    return Value::signedInt(static_cast<std::int64_t>(n.magnitude));
+}
+
+Value integerMin(DataType type) { return isSigned(type) ? Value::signedInt(signedMin(bitSize(type))) : Value::unsignedInt(0); }
+Value integerMax(DataType type) {
+    return isSigned(type) ? Value::signedInt(signedMax(bitSize(type))) : Value::unsignedInt(unsignedMax(bitSize(type)));
 }
 
 bool withinLimits(DataType type, const Value& value, const Limits& limits, QString* error) {

@@ -93,6 +93,14 @@ struct ValueResult {
     bool ok() const { return error.isEmpty(); }
 };
 
+// A parsed integer (parseIntegerText) as a value of integer `type` (INTEGERn, UNSIGNEDn);
+// nullopt when it does not fit the type. A hex number (0x1F, 1Fh) is the type's bit pattern:
+// FFh as INTEGER8 is -1 (two's complement, CiA 301 §7.1.4.5).
+std::optional<Value> integerValue(DataType type, const ParsedInteger& n);
+// The smallest and largest value of integer `type` (CiA 301 §7.1.4.4, §7.1.4.5).
+Value integerMin(DataType type);
+Value integerMax(DataType type);
+
 // Checks `value` against the limits; on failure sets *error ("above HighLimit 100").
 bool withinLimits(DataType type, const Value& value, const Limits& limits, QString* error = nullptr);
 

@@ -274,7 +274,7 @@ QList<Text> walkWizard(MainWindow& w, const QString& id) {
         if (ok && (ok = clickNext(nid))) {
             click(nid->findChild<QRadioButton*>(QStringLiteral("changeNodeId")));
             click(nid->findChild<QRadioButton*>(QStringLiteral("viaLss")));
-            QLineEdit* edit = nid->findChild<QSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>();
+            QLineEdit* edit = nid->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>();
             click(edit);
             QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
             QTest::keyClicks(edit, QStringLiteral("41"));

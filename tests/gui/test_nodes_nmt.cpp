@@ -116,6 +116,47 @@ private slots:
         QVERIFY2(asked.startsWith(QStringLiteral("Send NMT")), qPrintable(asked));
         QCOMPARE(finished.last().first().toBool(), true);
     }
+
+    // Issue 35: the NMT state and where it comes from, as the dock shows them. Nodes boot
+    // (Pre-operational, from their boot-up; the virtual drives have no heartbeat); Start of node 2
+    // (AIMOTOR: its TPDOs wait for SYNC) from its context menu shows Operational "after our NMT
+    // Start (not confirmed)"; node 4 (generic drive: event-driven TPDOs, sent on entering
+    // Operational) is shown Operational from its PDOs. Before, the dock kept "Pre-operational".
+    void startShowsTheStateAndWhereItComesFrom() {
+        coscope::testing::SimDriveRig rig;
+        QVERIFY(rig.open(QStringLiteral("sim://?nodes=2:aimotor,4:generic-cia402")));
+        NodesDock dock(&rig.ws);
+        dock.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dock));
+        NodesModel* m = dock.model();
+        auto cell = [&](int node, int column) {
+            dock.refresh();  // as the main window's update timer does
+            const int row = m->rowOfNode(node);
+            return row < 0 ? QString() : m->index(row, column).data().toString();
+        };
+        QVERIFY(QTest::qWaitFor([&] { return cell(2, NodesModel::StateSource) == u"boot-up" && cell(4, NodesModel::StateSource) == u"boot-up"; }, 5000));
+        QCOMPARE(cell(2, NodesModel::State), QStringLiteral("Pre-operational"));
+        QCOMPARE(m->headerData(NodesModel::StateSource, Qt::Horizontal, Qt::DisplayRole).toString(), QStringLiteral("State from"));
+        for (int node : {2, 4}) {
+            QString asked;
+            auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
+            QSignalSpy finished(&dock, &NodesDock::nmtFinished);
+            QVERIFY(nmtFromMenu(dock, m->rowOfNode(node), QStringLiteral("Start (Operational)")));
+            QVERIFY(QTest::qWaitFor([&] { return finished.count() > 0; }, 5000));
+            QVERIFY2(asked.contains(QStringLiteral("node %1").arg(node)), qPrintable(asked));
+        }
+        QVERIFY(QTest::qWaitFor([&] { return cell(2, NodesModel::State) == u"Operational"; }, 3000));
+        QCOMPARE(cell(2, NodesModel::StateSource), QStringLiteral("after our NMT Start (not confirmed)"));
+        const QModelIndex state2 = m->index(m->rowOfNode(2), NodesModel::State);
+        QVERIFY2(state2.data(Qt::ToolTipRole).toString().startsWith(QStringLiteral("CoScope sent NMT Start; the node has not confirmed it")),
+                 qPrintable(state2.data(Qt::ToolTipRole).toString()));
+        QVERIFY(state2.data(Qt::FontRole).value<QFont>().italic());
+        QVERIFY(QTest::qWaitFor([&] { return cell(4, NodesModel::StateSource) == u"its PDOs"; }, 3000));
+        QCOMPARE(cell(4, NodesModel::State), QStringLiteral("Operational"));
+        // And the view shows it: the cell as drawn is the model's text.
+        const QRect r = dock.view()->visualRect(m->index(m->rowOfNode(4), NodesModel::StateSource));
+        QVERIFY(r.isValid() && dock.view()->viewport()->rect().intersects(r));
+    }
 };
 
 QTEST_MAIN(TestNodesNmt)

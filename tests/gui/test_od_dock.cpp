@@ -7,6 +7,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/od/OdFilterModel.h"
 #include "app/gui/od/OdTreeModel.h"
@@ -23,7 +24,6 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QSettings>
-#include <QSpinBox>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QToolBar>
@@ -102,7 +102,7 @@ private slots:
         QVERIFY(m->actualValue(0x6041, 0).has_value());  // statusword
         QVERIFY2(dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
 
-        // Edit 1017h through the view's editor (a spin box with the UNSIGNED16 range): the
+        // Edit 1017h through the view's editor (the integer field, UNSIGNED16): the
         // confirmation is answered, the write goes out, the value is read back and marked as
         // changed from the default (0).
         dock->setAutoConfirm(true);
@@ -111,10 +111,10 @@ private slots:
         QVERIFY(valueCell.flags() & Qt::ItemIsEditable);
         dock->view()->setCurrentIndex(valueCell);
         dock->view()->edit(valueCell);
-        auto* spin = dock->view()->findChild<QSpinBox*>(QStringLiteral("odValueEditor"));
+        auto* spin = dock->view()->findChild<IntegerSpinBox*>(QStringLiteral("odValueEditor"));
         QVERIFY(spin);
-        QCOMPARE(spin->maximum(), 65535);
-        spin->setValue(750);
+        QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(spin, QStringLiteral("750"));
         QTest::keyClick(spin, Qt::Key_Return);
         QVERIFY(waitFor([&] { return deviceValue(w, 1, 0x1017, 0) && deviceValue(w, 1, 0x1017, 0)->toUInt64() == 750u; }));
         QVERIFY(waitFor([&] { return m->actualValue(0x1017, 0) && *m->actualValue(0x1017, 0)->toUInt64() == 750u; }));

@@ -332,7 +332,7 @@ private slots:
         shot(wiz, "wizard-nodeid-1-find");
         click(next);
         QCOMPARE(wiz->currentId(), int(NodeIdWizard::ChangePageId));
-        auto* newId = wiz->findChild<QSpinBox*>(QStringLiteral("newNodeId"));
+        auto* newId = wiz->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"));
         typeOver(newId->findChild<QLineEdit*>(), QStringLiteral("7"));
         QCOMPARE(newId->text(), QStringLiteral("7"));
         QVERIFY2(waitFor([&] { return next->isEnabled(); }, 3000), qPrintable(wiz->blockingProblem()));

@@ -138,7 +138,7 @@ struct Bench {
     // Second page.
     void pickChange(NodeIdWizard::Change c) { click(child<QRadioButton>(c == NodeIdWizard::Change::NodeId ? "changeNodeId" : "changeBitRate")); }
     void pickMethod(NodeIdWizard::Method m) { click(child<QRadioButton>(m == NodeIdWizard::Method::Lss ? "viaLss" : "viaVendor")); }
-    void typeNodeId(int id) { typeInto(child<QSpinBox>("newNodeId")->findChild<QLineEdit*>(), QString::number(id)); }
+    void typeNodeId(int id) { typeInto(child<QAbstractSpinBox>("newNodeId")->findChild<QLineEdit*>(), QString::number(id)); }
     bool pickBitRate(int rate) { return pickFromList(child<QComboBox>("newBitRate"), canopen::bitRateText(rate)); }
     sim::SimNetwork* net() const { return static_cast<SimBus*>(ws.bus())->network(); }
     int nodeIdOfSerial(uint8_t firstId) {
@@ -426,7 +426,7 @@ private slots:
         auto* page = w->changePage();
         auto* vendor = page->findChild<QRadioButton*>(QStringLiteral("viaVendor"));
         auto* lss = page->findChild<QRadioButton*>(QStringLiteral("viaLss"));
-        auto* spin = page->findChild<QSpinBox*>(QStringLiteral("newNodeId"));
+        auto* spin = page->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"));
         auto* edit = spin->findChild<QLineEdit*>();
         QVERIFY(vendor->isEnabled() && edit);
         click(vendor);
@@ -536,7 +536,7 @@ private slots:
         QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 3));
         QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 3")));
         clickNext(w);
-        typeInto(w->changePage()->findChild<QSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>(), QStringLiteral("7"));
+        typeInto(w->changePage()->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>(), QStringLiteral("7"));
         QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
         clickNext(w);
         QVERIFY(ready.count() > 0 || ready.wait(8000));

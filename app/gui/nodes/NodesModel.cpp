@@ -7,8 +7,51 @@
 
 #include <QBrush>
 #include <QColor>
+#include <QFont>
 
 namespace coscope::gui {
+
+namespace {
+
+// Where the node's NMT state comes from, short (the "State from" column).
+QString sourceText(const canopen::NodeInfo& n) {
+    using canopen::NmtSource;
+    const QString command = coreText(canopen::nmtCommandName(n.nmtCommand));
+    switch (n.nmtSource) {
+    case NmtSource::BootUp: return NodesModel::tr("boot-up");
+    case NmtSource::Heartbeat: return NodesModel::tr("heartbeat");
+    case NmtSource::Guarding: return NodesModel::tr("node guarding");
+    case NmtSource::OurCommand: return NodesModel::tr("after our NMT %1 (not confirmed)").arg(command);
+    case NmtSource::OtherCommand: return NodesModel::tr("after NMT %1 by another master (not confirmed)").arg(command);
+    case NmtSource::Pdo: return NodesModel::tr("its PDOs");
+    case NmtSource::Sdo: return NodesModel::tr("its SDO answers");
+    case NmtSource::Emcy: return NodesModel::tr("its EMCY");
+    case NmtSource::Unknown: break;
+    }
+    return {};
+}
+
+// The same as a sentence (tooltip of the state and its source), with the rule it rests on.
+QString sourceExplained(const canopen::NodeInfo& n) {
+    using canopen::NmtSource;
+    const QString command = coreText(canopen::nmtCommandName(n.nmtCommand));
+    switch (n.nmtSource) {
+    case NmtSource::BootUp: return NodesModel::tr("The node sent its boot-up message; after boot-up a node is Pre-operational.");
+    case NmtSource::Heartbeat: return NodesModel::tr("The node's heartbeat says so.");
+    case NmtSource::Guarding: return NodesModel::tr("The node's answer to node guarding says so.");
+    case NmtSource::OurCommand:
+        return NodesModel::tr("CoScope sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).").arg(command);
+    case NmtSource::OtherCommand:
+        return NodesModel::tr("Another master sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).").arg(command);
+    case NmtSource::Pdo: return NodesModel::tr("The node sends PDOs, which CiA 301 allows only in Operational.");
+    case NmtSource::Sdo: return NodesModel::tr("The node answers SDO, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).");
+    case NmtSource::Emcy: return NodesModel::tr("The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).");
+    case NmtSource::Unknown: break;
+    }
+    return NodesModel::tr("Nothing seen yet shows the node's state.");
+}
+
+}  // namespace
 
 NodesModel::NodesModel(QObject* parent) : QAbstractTableModel(parent) {}
 
@@ -62,6 +105,12 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
         default: return {};
         }
     }
+    if (role == Qt::FontRole && (index.column() == State || index.column() == StateSource) &&
+        (n.nmtSource == canopen::NmtSource::OurCommand || n.nmtSource == canopen::NmtSource::OtherCommand)) {
+        QFont italic;  // told, not confirmed by the node
+        italic.setItalic(true);
+        return italic;
+    }
     if (role == Qt::ForegroundRole && index.column() == Emcy && n.emcyCount) return QBrush(QColor(176, 0, 32));
     if (role == Qt::TextAlignmentRole && (index.column() == Node || index.column() == HeartbeatAge || index.column() == Emcy))
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
@@ -71,11 +120,15 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     case State:
         if (n.stateUnknownAfterGap) {  // issue 16: the bus was lost; the last state may be stale
             const QString last = n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
-            return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the next heartbeat (last known: %1)").arg(last)
+            return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)").arg(last)
                                            : tr("unknown (gap)");
         }
         if (late) return tr("No heartbeat");
+        if (role == Qt::ToolTipRole) return sourceExplained(n);
         return n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
+    case StateSource:
+        if (role == Qt::ToolTipRole) return sourceExplained(n);
+        return n.stateUnknownAfterGap ? QString() : sourceText(n);
     case HeartbeatAge:
         if (!n.seenHeartbeat) return tr("—");
         return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);
@@ -118,6 +171,7 @@ QVariant NodesModel::headerData(int section, Qt::Orientation orientation, int ro
     switch (section) {
     case Node: return tr("Node");
     case State: return tr("NMT state");
+    case StateSource: return tr("State from");
     case HeartbeatAge: return tr("Heartbeat age");
     case DeviceName: return tr("Device name");
     case Identity: return tr("Identity (1018h)");

@@ -116,11 +116,13 @@ void ObjectDictionaryDock::buildUi() {
     view_ = new QTreeView(root);
     view_->setObjectName(QStringLiteral("odTree"));
     view_->setModel(filter_);
-    view_->setItemDelegateForColumn(OdTreeModel::Value, new OdValueDelegate(model_, view_));
+    auto* delegate = new OdValueDelegate(model_, view_);
+    view_->setItemDelegateForColumn(OdTreeModel::Value, delegate);
+    connect(delegate, &OdValueDelegate::refused, this, [this](const QString& why) { showMessage(tr("Node %1: not written: %2").arg(node_).arg(why), true); });
     view_->setAlternatingRowColors(true);
     view_->setUniformRowHeights(true);
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
+    view_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked | QAbstractItemView::DoubleClicked);
     view_->setContextMenuPolicy(Qt::CustomContextMenu);
     view_->header()->setStretchLastSection(false);
     view_->setColumnWidth(OdTreeModel::Object, 78);
@@ -146,11 +148,13 @@ void ObjectDictionaryDock::buildUi() {
         if (i.isValid() && i.data(OdTreeModel::SubRole).toInt() >= 0)
             readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
     });
+    // F2 edits the value of the current row, whichever of its cells is current, while the focus
+    // is in this dock (the trace's F2 jumps to its bookmarks only there).
     writeSelected_ = new QAction(tr("Write value…"), this);
-    connect(writeSelected_, &QAction::triggered, this, [this] {
-        const QModelIndex i = view_->currentIndex();
-        if (i.isValid()) view_->edit(i.siblingAtColumn(OdTreeModel::Value));
-    });
+    writeSelected_->setShortcut(QKeySequence(Qt::Key_F2));
+    writeSelected_->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    view_->addAction(writeSelected_);
+    connect(writeSelected_, &QAction::triggered, this, [this] { editValue(view_->currentIndex()); });
 
     connect(search_, &QLineEdit::textChanged, this, [this](const QString& t) {
         filter_->setSearch(t);
@@ -160,12 +164,30 @@ void ObjectDictionaryDock::buildUi() {
         filter_->setOnlyChanged(on);
         if (on) view_->expandAll();
     });
+    // Double-click: a writable value is edited (where users look for editing), any other entry read.
     connect(view_, &QTreeView::doubleClicked, this, [this](const QModelIndex& i) {
         if (i.data(OdTreeModel::SubRole).toInt() < 0) return;  // an ARRAY/RECORD row expands
-        readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
+        if (i.siblingAtColumn(OdTreeModel::Value).flags() & Qt::ItemIsEditable) {
+            if (i.column() != OdTreeModel::Value) editValue(i);  // on the value itself the view edits
+        } else readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
     });
     connect(view_, &QWidget::customContextMenuRequested, this, &ObjectDictionaryDock::contextMenu);
     connect(model_, &OdTreeModel::writeRequested, this, [this](uint16_t index, uint8_t sub, const od::Value& v) { writeEntry(index, sub, v); });
+}
+
+void ObjectDictionaryDock::editValue(const QModelIndex& row) {
+    if (!row.isValid() || row.data(OdTreeModel::SubRole).toInt() < 0) return;
+    const QModelIndex value = row.siblingAtColumn(OdTreeModel::Value);
+    if (value.flags() & Qt::ItemIsEditable) {
+        view_->setCurrentIndex(value);
+        view_->edit(value);
+        return;
+    }
+    const auto index = static_cast<uint16_t>(row.data(OdTreeModel::IndexRole).toInt());
+    const auto sub = static_cast<uint8_t>(row.data(OdTreeModel::SubRole).toInt());
+    if (refuseIfOffline(tr("Write %1").arg(canopen::objectRef(index, sub)))) return;
+    if (const od::SubObject* e = model_->dictionary().entry(index, sub); e && !od::isWritable(e->access))
+        showMessage(tr("%1 %2 is %3: not writable").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), od::accessName(e->access)), true);
 }
 
 void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
@@ -192,6 +214,7 @@ void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
     menu.addAction(tr("Collapse all"), view_, &QTreeView::collapseAll);
     if (!canTransmit()) menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: SDO disabled") : tr("Not connected"));
     menu.exec(view_->viewport()->mapToGlobal(pos));
+    updateEnabled();  // the menu enabled Read/Write for its entry; F2 works on any row again
 }
 
 bool ObjectDictionaryDock::canTransmit() const { return workspace_->canTransmit() && workspace_->sdo() != nullptr; }

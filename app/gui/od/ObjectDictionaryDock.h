@@ -102,6 +102,8 @@ private:
     bool confirm(const QString& title, const QString& question);
     bool refuseIfOffline(const QString& what);
     void contextMenu(const QPoint& pos);
+    // Opens the value editor of `row`'s entry when it is writable, else says why not.
+    void editValue(const QModelIndex& row);
     void onReadAllDone(int failed, bool cancelled);
     void runApply(std::shared_ptr<PendingApply> pending);
     bool writeDcfFile(const QString& path);
@@ -122,7 +124,7 @@ private:
     QAction* readAll_ = nullptr;
     QAction* cancel_ = nullptr;
     QAction* readSelected_ = nullptr;
-    QAction* writeSelected_ = nullptr;
+    QAction* writeSelected_ = nullptr;  // F2 in the tree
     QAction* export_ = nullptr;
     QAction* apply_ = nullptr;
     canopen::DeviceConfiguration* config_ = nullptr;

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/od/OdValueDelegate.h"
 
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/od/OdTreeModel.h"
+#include "core/canopen/SdoClient.h"
+
+#include <QCoreApplication>
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QRegularExpressionValidator>
-#include <QSpinBox>
 
 #include <cmath>
 #include <limits>
@@ -20,24 +23,6 @@ const od::SubObject* entryOf(const OdTreeModel* model, const QModelIndex& index)
     const int sub = index.data(OdTreeModel::SubRole).toInt();
     if (sub < 0) return nullptr;
     return model->dictionary().entry(static_cast<uint16_t>(index.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(sub));
-}
-
-// The type's range, narrowed by the entry's limits; nullopt when it does not fit an int.
-std::optional<std::pair<qint64, qint64>> intRange(const od::SubObject& e) {
-    const int bits = od::bitSize(e.dataType);
-    qint64 lo = 0, hi = 0;
-    if (od::isSigned(e.dataType)) {
-        if (bits > 32) return std::nullopt;
-        lo = -(qint64(1) << (bits - 1));
-        hi = (qint64(1) << (bits - 1)) - 1;
-    } else {
-        if (bits >= 32) return std::nullopt;
-        hi = (qint64(1) << bits) - 1;
-    }
-    const od::Limits l = e.limits();
-    if (l.low && l.low->toInt64()) lo = std::max<qint64>(lo, *l.low->toInt64());
-    if (l.high && l.high->toInt64()) hi = std::min<qint64>(hi, *l.high->toInt64());
-    return std::make_pair(lo, hi);
 }
 
 }  // namespace
@@ -57,17 +42,16 @@ QWidget* OdValueDelegate::createEditor(QWidget* parent, const QStyleOptionViewIt
     }
     case od::TypeClass::Signed:
     case od::TypeClass::Unsigned: {
-        if (const auto range = intRange(*e)) {
-            auto* spin = new QSpinBox(parent);
-            spin->setRange(static_cast<int>(range->first), static_cast<int>(range->second));
-            spin->setAccelerated(true);
-            editor = spin;
-        } else {
-            auto* line = new QLineEdit(parent);
-            line->setPlaceholderText(od::isSigned(e->dataType) ? QStringLiteral("-5, 0x1F") : QStringLiteral("5, 0x1F"));
-            line->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("-?(0[xX][0-9a-fA-F]*|[0-9]*)")), line));
-            editor = line;
-        }
+        // Decimal, 0x1F or 1Fh, shown in the object's notation (README "Numbers").
+        auto* spin = new IntegerSpinBox(parent);
+        spin->setType(e->dataType, e->limits(), od::hexKindFor(e->index, e->sub));
+        spin->setAccelerated(true);
+        // Enter or leaving the field with text that does not read: the reason on the value's row.
+        connect(spin, &IntegerSpinBox::refused, this, [this, index = e->index, sub = e->sub](const QString& why) {
+            model_->setError(index, sub, QCoreApplication::translate("OdTreeModel", "node %1 %2: %3").arg(model_->node()).arg(canopen::objectRef(index, sub), why));
+            emit refused(why);
+        });
+        editor = spin;
         break;
     }
     case od::TypeClass::Real: {
@@ -101,23 +85,29 @@ void OdValueDelegate::setEditorData(QWidget* editor, const QModelIndex& index) c
     const QString text = index.data(Qt::EditRole).toString();
     const od::SubObject* e = entryOf(model_, index);
     if (auto* box = qobject_cast<QComboBox*>(editor)) box->setCurrentIndex(text == u"true" ? 1 : 0);
-    else if (auto* spin = qobject_cast<QSpinBox*>(editor)) {
+    else if (auto* spin = qobject_cast<IntegerSpinBox*>(editor)) {
         const auto r = e ? od::Value::parse(e->dataType, text) : od::ValueResult{};
-        spin->setValue(static_cast<int>(r.value.toInt64().value_or(0)));
+        spin->setValue(r.value);
+        spin->selectAll();
     } else if (auto* dspin = qobject_cast<QDoubleSpinBox*>(editor)) dspin->setValue(text.toDouble());
     else if (auto* line = qobject_cast<QLineEdit*>(editor)) line->setText(text);
 }
 
 void OdValueDelegate::setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const {
+    const auto objIndex = static_cast<uint16_t>(index.data(OdTreeModel::IndexRole).toInt());
+    const auto sub = static_cast<uint8_t>(index.data(OdTreeModel::SubRole).toInt());
     QString text;
     if (auto* box = qobject_cast<QComboBox*>(editor)) text = box->currentText();
-    else if (auto* spin = qobject_cast<QSpinBox*>(editor)) text = QString::number(spin->value());
-    else if (auto* dspin = qobject_cast<QDoubleSpinBox*>(editor)) text = QString::number(dspin->value(), 'g', 17);
+    else if (auto* spin = qobject_cast<IntegerSpinBox*>(editor)) {
+        // What does not read was refused when editing ended (refused()), not cut to what reads.
+        const od::IntegerInput in = spin->typed();
+        const od::SubObject* e = entryOf(model_, index);
+        if (spin->wasRefused() || !in.ok() || !e) return;
+        text = in.value.format(e->dataType);
+    } else if (auto* dspin = qobject_cast<QDoubleSpinBox*>(editor)) text = QString::number(dspin->value(), 'g', 17);
     else if (auto* line = qobject_cast<QLineEdit*>(editor)) text = line->text();
     // Unchanged: no write.
-    if (text == index.data(Qt::EditRole).toString() && model_->actualValue(static_cast<uint16_t>(index.data(OdTreeModel::IndexRole).toInt()),
-                                                                           static_cast<uint8_t>(index.data(OdTreeModel::SubRole).toInt())))
-        return;
+    if (text == index.data(Qt::EditRole).toString() && model_->actualValue(objIndex, sub)) return;
     model->setData(index, text, Qt::EditRole);
 }
 

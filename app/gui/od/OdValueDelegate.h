@@ -8,10 +8,11 @@ namespace coscope::gui {
 class OdTreeModel;
 
 // The editor of the Value column, fitting the entry's type and its LowLimit/HighLimit:
-// a spin box for integers that fit an int (limits as its range), a double spin box for REAL32/64,
-// a true/false box for BOOLEAN, a line edit for strings, one that accepts only hex bytes for
-// OCTET_STRING/DOMAIN, and one checked with od::Value::parse for wider integers. The text goes
-// to the model, which asks for the write (OdTreeModel::writeRequested).
+// the app's integer field for INTEGERn/UNSIGNEDn (decimal, 0x1F or 1Fh, shown in the object's
+// notation; IntegerSpinBox), a double spin box for REAL32/64, a true/false box for BOOLEAN, a
+// line edit for strings, one that accepts only hex bytes for OCTET_STRING/DOMAIN. The text goes
+// to the model, which asks for the write (OdTreeModel::writeRequested); an integer that does not
+// read is refused with the reason (the value's cell and refused()).
 class OdValueDelegate : public QStyledItemDelegate {
     Q_OBJECT
 public:
@@ -20,6 +21,9 @@ public:
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem& option, const QModelIndex& index) const override;
     void setEditorData(QWidget* editor, const QModelIndex& index) const override;
     void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override;
+
+signals:
+    void refused(const QString& why) const;
 
 private:
     OdTreeModel* model_;

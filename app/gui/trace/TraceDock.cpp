@@ -197,11 +197,14 @@ void TraceDock::buildToolbar(QWidget* host) {
                           QStringLiteral("bookmarkAction"));
     mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     mark->setToolTip(tr("Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump"));
+    // F2 / Shift+F2 only while the focus is in the trace: elsewhere F2 edits (the Object Dictionary).
     auto* nextMark = new QAction(this);
     nextMark->setShortcut(QKeySequence(Qt::Key_F2));
+    nextMark->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     connect(nextMark, &QAction::triggered, this, [this] { gotoBookmark(true); });
     auto* prevMark = new QAction(this);
     prevMark->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F2));
+    prevMark->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     connect(prevMark, &QAction::triggered, this, [this] { gotoBookmark(false); });
     addAction(nextMark);
     addAction(prevMark);

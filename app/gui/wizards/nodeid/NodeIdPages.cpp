@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
@@ -15,7 +16,6 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QSpinBox>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -197,7 +197,7 @@ NodeIdChangePage::NodeIdChangePage(NodeIdWizard* wizard) : QWizardPage(wizard), 
     auto* what = new QButtonGroup(this);
     what->addButton(nodeId_);
     what->addButton(bitRate_);
-    newId_ = new QSpinBox(this);
+    newId_ = new IntegerSpinBox(this);  // decimal, 0x1F or 1Fh (README "Numbers")
     newId_->setObjectName(QStringLiteral("newNodeId"));
     newId_->setRange(1, 127);
     newRate_ = new QComboBox(this);
@@ -231,8 +231,8 @@ NodeIdChangePage::NodeIdChangePage(NodeIdWizard* wizard) : QWizardPage(wizard), 
     connect(viaVendor_, &QRadioButton::toggled, this, [this](bool on) {
         if (!updating_ && on) wizard_->setMethod(NodeIdWizard::Method::Vendor);
     });
-    connect(newId_, &QSpinBox::valueChanged, this, [this](int id) {
-        if (!updating_) wizard_->setNewNodeId(id);
+    connect(newId_, &IntegerSpinBox::valueChanged, this, [this](qint64 id) {
+        if (!updating_) wizard_->setNewNodeId(static_cast<int>(id));
     });
     connect(newRate_, &QComboBox::currentIndexChanged, this, [this](int) {
         if (!updating_) wizard_->setNewBitRate(newRate_->currentData().toInt());
@@ -283,7 +283,7 @@ void NodeIdChangePage::refresh() {
     if (bitRate_->isChecked() != (r.change == NodeIdWizard::Change::BitRate)) bitRate_->setChecked(r.change == NodeIdWizard::Change::BitRate);
     bitRate_->setEnabled(!unconfigured);
     newId_->setEnabled(r.change == NodeIdWizard::Change::NodeId);
-    if (r.newNodeId >= 1 && newId_->value() != r.newNodeId) newId_->setValue(r.newNodeId);
+    if (r.newNodeId >= 1 && newId_->intValue() != r.newNodeId) newId_->setIntValue(r.newNodeId);
     newRate_->setEnabled(r.change == NodeIdWizard::Change::BitRate);
     if (const int i = newRate_->findData(r.newBitRate); i >= 0 && i != newRate_->currentIndex()) newRate_->setCurrentIndex(i);
     const bool vendor = wizard_->vendorMethodAvailable();

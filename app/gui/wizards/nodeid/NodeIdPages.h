@@ -8,11 +8,11 @@ class QComboBox;
 class QLabel;
 class QPushButton;
 class QRadioButton;
-class QSpinBox;
 class QTableWidget;
 
 namespace coscope::gui {
 
+class IntegerSpinBox;
 class NodeIdWizard;
 class ScriptPreview;
 
@@ -57,7 +57,7 @@ private:
     NodeIdWizard* wizard_;
     QRadioButton* nodeId_;
     QRadioButton* bitRate_;
-    QSpinBox* newId_;
+    IntegerSpinBox* newId_;
     QComboBox* newRate_;
     QRadioButton* viaLss_;
     QRadioButton* viaVendor_;

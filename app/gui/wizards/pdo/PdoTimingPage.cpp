@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/pdo/PdoTimingPage.h"
 
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/wizards/pdo/PdoVendorNotes.h"
 #include "app/gui/wizards/pdo/PdoWizard.h"
 
@@ -10,11 +11,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QPushButton>
-#include <QRegularExpression>
-#include <QRegularExpressionValidator>
-#include <QSpinBox>
 #include <QVBoxLayout>
 
 namespace coscope::gui {
@@ -34,24 +31,25 @@ PdoTimingPage::PdoTimingPage(PdoWizard* wizard) : wizard_(wizard) {
     mode_->addItem(tr("On change and/or by timer (event-driven, type 255: device profile)"), Event255);
     mode_->addItem(tr("On change and/or by timer (event-driven, type 254: manufacturer)"), Event254);
     mode_->addItem(tr("Other transmission type (e.g. 252/253: only on request, RTR)"), Other);
-    every_ = new QSpinBox(this);
+    // Integer fields take decimal, 0x1F or 1Fh (README "Numbers").
+    every_ = new IntegerSpinBox(this);
     every_->setRange(1, 240);
     every_->setPrefix(tr("every "));
     every_->setSuffix(tr(" SYNC(s)"));
-    other_ = new QSpinBox(this);
+    other_ = new IntegerSpinBox(this);
     other_->setRange(0, 255);
     inhibit_ = new QDoubleSpinBox(this);
     inhibit_->setRange(0, 6553.5);
     inhibit_->setDecimals(1);
     inhibit_->setSingleStep(0.1);
     inhibit_->setSuffix(tr(" ms"));
-    event_ = new QSpinBox(this);
+    event_ = new IntegerSpinBox(this);
     event_->setRange(0, 65535);
     event_->setSuffix(tr(" ms"));
     event_->setSpecialValueText(tr("off"));
-    cob_ = new QLineEdit(this);
+    cob_ = new IntegerSpinBox(this);
     cob_->setObjectName(QStringLiteral("pdoCobId"));
-    cob_->setValidator(new QRegularExpressionValidator(QRegularExpression(QStringLiteral("(0x)?[0-9A-Fa-f]{1,3}")), cob_));
+    cob_->setType(od::DataType::Unsigned32, od::Limits{od::Value::unsignedInt(1), od::Value::unsignedInt(0x7FF)}, od::HexKind::CobId);
     cob_->setMaximumWidth(120);
     valid_ = new QCheckBox(tr("Message switched on (COB-ID bit 31 = 0: PDO valid)"), this);
     auto* defaultCob = defaultCob_ = new QPushButton(tr("Default"), this);
@@ -75,7 +73,7 @@ PdoTimingPage::PdoTimingPage(PdoWizard* wizard) : wizard_(wizard) {
     eventLabel_ = new QLabel(tr("Timer (event timer):"), this);
     form->addRow(inhibitLabel_, inhibit_);
     form->addRow(eventLabel_, event_);
-    form->addRow(tr("CAN-ID (COB-ID, hex):"), cobRow);
+    form->addRow(tr("CAN-ID (COB-ID):"), cobRow);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(explain_);
@@ -89,11 +87,12 @@ PdoTimingPage::PdoTimingPage(PdoWizard* wizard) : wizard_(wizard) {
         toState();
     };
     connect(mode_, &QComboBox::currentIndexChanged, this, changed);
-    connect(every_, &QSpinBox::valueChanged, this, changed);
-    connect(other_, &QSpinBox::valueChanged, this, changed);
+    connect(every_, &IntegerSpinBox::valueChanged, this, changed);
+    connect(other_, &IntegerSpinBox::valueChanged, this, changed);
     connect(inhibit_, &QDoubleSpinBox::valueChanged, this, changed);
-    connect(event_, &QSpinBox::valueChanged, this, changed);
-    connect(cob_, &QLineEdit::textChanged, this, changed);
+    connect(event_, &IntegerSpinBox::valueChanged, this, changed);
+    connect(cob_, &IntegerSpinBox::valueChanged, this, changed);
+    connect(cob_, &IntegerSpinBox::textEdited, this, &PdoTimingPage::completeChanged);
     connect(valid_, &QCheckBox::toggled, this, changed);
     connect(defaultCob, &QPushButton::clicked, this, [this] {
         const PdoWizardState& s = wizard_->state();
@@ -107,7 +106,7 @@ void PdoTimingPage::initializePage() {
     loading_ = true;
     setTransmissionType(w.transmissionType);
     inhibit_->setValue(w.inhibitTime.value_or(0) / 10.0);
-    event_->setValue(w.eventTimer.value_or(0));
+    event_->setIntValue(w.eventTimer.value_or(0));
     setCobId(w.cobId & 0x1FFFFFFFu, w.valid());
     // Inhibit time (sub 3) is for TPDOs; timers the drive does not have are not offered.
     const bool hasInhibit = s.pdo.transmit && s.current.inhibitTime.has_value();
@@ -139,19 +138,19 @@ void PdoTimingPage::setTransmissionType(uint8_t type) {
     else if (type == 255) m = Event255;
     else if (type == 254) m = Event254;
     mode_->setCurrentIndex(mode_->findData(m));
-    if (m == SyncEvery) every_->setValue(type);
-    other_->setValue(type);
+    if (m == SyncEvery) every_->setIntValue(type);
+    other_->setIntValue(type);
     loading_ = was;
     if (!loading_) toState();
 }
 
-void PdoTimingPage::setEventTimerMs(int ms) { event_->setValue(ms); }
+void PdoTimingPage::setEventTimerMs(int ms) { event_->setIntValue(ms); }
 void PdoTimingPage::setInhibitMs(double ms) { inhibit_->setValue(ms); }
 
 void PdoTimingPage::setCobId(uint32_t canId, bool valid) {
     const bool was = loading_;
     loading_ = true;
-    cob_->setText(QStringLiteral("%1").arg(canId, 3, 16, QChar(u'0')).toUpper());
+    cob_->setIntValue(canId);
     valid_->setChecked(valid);
     loading_ = was;
     if (!loading_) toState();
@@ -164,19 +163,16 @@ void PdoTimingPage::toState() {
     every_->setVisible(m == SyncEvery);
     other_->setVisible(m == Other);
     switch (m) {
-    case SyncEvery: w.transmissionType = static_cast<uint8_t>(every_->value()); break;
+    case SyncEvery: w.transmissionType = static_cast<uint8_t>(every_->intValue()); break;
     case SyncOnChange: w.transmissionType = 0; break;
     case Event255: w.transmissionType = 255; break;
     case Event254: w.transmissionType = 254; break;
-    default: w.transmissionType = static_cast<uint8_t>(other_->value()); break;
+    default: w.transmissionType = static_cast<uint8_t>(other_->intValue()); break;
     }
     if (inhibit_->isEnabled()) w.inhibitTime = static_cast<uint16_t>(qRound(inhibit_->value() * 10));
-    if (event_->isEnabled()) w.eventTimer = static_cast<uint16_t>(event_->value());
-    bool ok = false;
-    QString text = cob_->text().trimmed();
-    if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) text = text.mid(2);
-    const uint32_t id = text.toUInt(&ok, 16);
-    if (ok && id > 0 && id <= 0x7FF) w.cobId = (s.current.cobId & 0x40000000u) | id | (valid_->isChecked() ? 0 : 0x80000000u);
+    if (event_->isEnabled()) w.eventTimer = static_cast<uint16_t>(event_->intValue());
+    const auto id = static_cast<uint32_t>(cob_->intValue());
+    if (cob_->hasAcceptableInput()) w.cobId = (s.current.cobId & 0x40000000u) | id | (valid_->isChecked() ? 0 : 0x80000000u);
     explain();
     emit completeChanged();
 }

@@ -9,11 +9,11 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
-class QLineEdit;
 class QPushButton;
-class QSpinBox;
 
 namespace coscope::gui {
+
+class IntegerSpinBox;
 
 class PdoWizard;
 
@@ -38,11 +38,11 @@ private:
 
     PdoWizard* wizard_;
     QComboBox* mode_;
-    QSpinBox* every_;
-    QSpinBox* other_;
+    IntegerSpinBox* every_;
+    IntegerSpinBox* other_;
     QDoubleSpinBox* inhibit_;
-    QSpinBox* event_;
-    QLineEdit* cob_;
+    IntegerSpinBox* event_;
+    IntegerSpinBox* cob_;  // the 11-bit CAN-ID, "182h"
     QCheckBox* valid_;
     QPushButton* defaultCob_;
     QLabel* explain_;
