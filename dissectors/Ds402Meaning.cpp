@@ -2,6 +2,7 @@
 #include "dissectors/Ds402Meaning.h"
 
 #include "core/canopen/Ds402.h"
+#include "dissectors/NetworkContext.h"
 
 namespace coscope::dissect {
 
@@ -19,7 +20,21 @@ QString ds402MeaningText(uint16_t index, uint8_t sub, uint64_t raw) {
     }
 }
 
-QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth, int byteOffset, int byteLength) {
+std::optional<int8_t> ds402ModeOf(const NodeState& n, uint16_t index) {
+    if (index < 0x6000 || index > 0x67FF) return std::nullopt;
+    const int axis = (index - 0x6000) / 0x800;
+    if (!(n.ds402ModeKnown & (1u << axis))) return std::nullopt;
+    return n.ds402Mode[static_cast<size_t>(axis)];
+}
+
+void ds402LearnMode(NodeState& n, uint16_t index, uint8_t sub, uint64_t raw) {
+    if (sub != 0 || index < 0x6000 || index > 0x67FF || (index & 0x7FE) != 0x060) return;
+    const int axis = (index - 0x6000) / 0x800;
+    n.ds402Mode[static_cast<size_t>(axis)] = static_cast<int8_t>(raw);
+    n.ds402ModeKnown = static_cast<uint8_t>(n.ds402ModeKnown | (1u << axis));
+}
+
+QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth, int byteOffset, int byteLength, std::optional<int8_t> mode) {
     const QString text = ds402MeaningText(index, sub, raw);
     if (text.isEmpty()) return {};
     const uint16_t v16 = static_cast<uint16_t>(raw);
@@ -36,7 +51,7 @@ QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out,
             out.item(depth, QStringLiteral("State (CiA 402)"), text, byteOffset, byteLength);
             for (int b = 0; b < 16; ++b)
                 if (v16 & (1u << b)) {
-                    const QString n = ds::statuswordBitName(b);
+                    const QString n = ds::statuswordBitName(b, mode);
                     out.item(depth + 1, QStringLiteral("Bit %1").arg(b), n.isEmpty() ? QStringLiteral("set") : n,
                              byteOffset + b / 8, 1, b % 8, 1);
                 }

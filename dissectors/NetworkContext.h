@@ -33,6 +33,11 @@ struct NodeState {
     std::vector<PdoConfig> rpdo, tpdo;  // index = PDO number - 1 (grown on demand)
     SdoChannel sdo;
     bool seen = false;
+    // Modes of operation 6060h/6061h (+ n x 800h) last seen per axis, for the mode-specific
+    // names of statusword bits 12/13 (ds402ModeOf, Ds402Meaning.h); bit n of ds402ModeKnown set
+    // once axis n's mode was seen.
+    std::array<int8_t, 8> ds402Mode{};
+    uint8_t ds402ModeKnown = 0;
 
     PdoConfig& pdo(bool tpdoDir, int number);  // creates
     const PdoConfig* findPdo(bool tpdoDir, int number) const;

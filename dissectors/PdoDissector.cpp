@@ -153,6 +153,7 @@ void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue
                 const int byteOff = at / 8;
                 ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, (at + e.bits + 7) / 8 - byteOff);  // the fields
             }
+            ds402LearnMode(c.ctx.nodeForEdit(c.node), e.index, e.sub, raw);
             const QString m = cachedDs402Text(e.index, raw);
             v.meaning = reinterpret_cast<const char16_t*>(m.constData());
             v.meaningLength = static_cast<uint16_t>(m.size());
@@ -200,7 +201,9 @@ void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg
                      byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
         if (hasDs402Meaning(e)) {
             const uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
-            const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen);
+            NodeState& node = c.ctx.nodeForEdit(c.node);
+            const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen, ds402ModeOf(node, e.index));
+            ds402LearnMode(node, e.index, e.sub, raw);
             if (!m.isEmpty()) {
                 w.put(u" (");
                 w.put(m);

@@ -217,7 +217,8 @@ void dissectSdo(DissectCall& c) {
     if (carriesValue && !f.data.isEmpty()) {
         uint64_t raw = 0;
         for (int i = 0; i < f.data.size() && i < 8; ++i) raw |= uint64_t(uint8_t(f.data[i])) << (8 * i);
-        meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()));
+        meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()), ds402ModeOf(n, f.index));
+        ds402LearnMode(n, f.index, f.sub, raw);
     }
 
     // The summary, written into the consumer's buffer (Dissection::summarySink) or a reused

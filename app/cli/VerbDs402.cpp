@@ -4,13 +4,12 @@
 //             ds402 jog BUS NODE VELOCITY --for MS [--yes]
 #include "app/cli/BusSession.h"
 #include "app/cli/CliVerb.h"
+#include "app/cli/Ds402Cli.h"
 #include "core/canopen/Ds402Controller.h"
 #include "core/canopen/ServiceWait.h"
 
 #include <QElapsedTimer>
 #include <QTextStream>
-
-#include <cstdio>
 
 namespace coscope::cli {
 
@@ -89,24 +88,6 @@ static int runDs402(const QStringList& args, const QString& action) {
     return Ok;
 }
 
-// Shared by `mode` and `jog`: the controller with its observer printing every write.
-static void observe(canopen::Ds402Controller& ctl, QTextStream& out) {
-    ctl.setSendObserver([&out](const QString& line) {
-        out << "send " << line << "\n";
-        out.flush();
-    });
-}
-
-static canopen::Ds402Result waitDs402(const std::function<void(canopen::Ds402Callback)>& start, int timeoutMs = 120000) {
-    auto r = canopen::waitForResult<canopen::Ds402Result>(start, timeoutMs);
-    if (!r) {
-        canopen::Ds402Result none;
-        none.error = QStringLiteral("no answer in time");
-        return none;
-    }
-    return *r;
-}
-
 static int runMode(const QStringList& args) {
     const QString verb = QStringLiteral("ds402 mode");
     QCommandLineParser p;
@@ -132,7 +113,7 @@ static int runMode(const QStringList& args) {
     if (!s.open(pos[0], &error)) return failure(verb, error);
     QTextStream out(stdout);
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
-    observe(ctl, out);
+    printSends(ctl, out);
     // 6502h: supported drive modes (CiA 402-2 §6.4.3); refuse a mode the drive does not list.
     auto sup = canopen::waitForResult<canopen::SdoResult>([&](canopen::SdoCallback cb) { s.sdo().upload(*node, ctl.objectIndex(0x6502), 0, cb); }, 5000);
     if (sup && sup->ok && sup->data.size() >= 4) {
@@ -185,31 +166,18 @@ static int runJog(const QStringList& args) {
     if (!bad.isEmpty()) return usageError(verb, bad);
 
     QTextStream out(stdout);
-    if (!p.isSet(yes)) {
-        out << "This enables node " << *node << " and turns its motor at " << move.velocity << " units/s for " << ms << " ms.\n"
-            << "Make sure the axis is free to move. Type yes to continue: ";
-        out.flush();
-        char line[64] = {};
-        if (!std::fgets(line, sizeof line, stdin) || QString::fromLatin1(line).trimmed().toLower() != u"yes") return failure(verb, QStringLiteral("not confirmed; nothing was sent (use --yes to skip the question)"));
-    }
+    QString why;
+    if (!confirmMotion(p.isSet(yes), QStringLiteral("This enables node %1 and turns its motor at %2 units/s for %3 ms.").arg(*node).arg(move.velocity).arg(ms), &why))
+        return failure(verb, why);
     BusSession s;
     QString error;
     if (!s.open(pos[0], &error)) return failure(verb, error);
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
-    observe(ctl, out);
+    printSends(ctl, out);
     // Whatever happens below, the drive ends disabled: also on Ctrl+C or SIGTERM, which stop the
     // move (halt, then disable) instead of ending the process with the motor turning.
     installInterruptHandler();
-    auto disableAtEnd = [&](const QString& failed) {
-        const auto d = waitDs402([&](auto cb) { ctl.disable(cb); }, 10000);
-        if (!d.ok) {
-            const auto v = waitDs402([&](auto cb) { ctl.disableVoltage(cb); }, 5000);
-            if (!v.ok) return failure(verb, (failed.isEmpty() ? QString() : failed + QStringLiteral("; ")) + QStringLiteral("DISABLING FAILED: ") + v.error);
-        }
-        if (!failed.isEmpty()) return failure(verb, failed + QStringLiteral("; drive disabled"));
-        out << "node " << *node << ": stopped and disabled\n";
-        return int(Ok);
-    };
+    auto disableAtEnd = [&](const QString& failed) { return endDisabled(ctl, verb, *node, failed, out); };
     const auto en = waitDs402([&](auto cb) { ctl.enable(cb); });
     if (!en.ok) return disableAtEnd(en.advice.isEmpty() ? en.error : en.error + QStringLiteral(" — ") + en.advice);
     out << "node " << *node << ": operation enabled\n";

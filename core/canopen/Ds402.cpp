@@ -60,6 +60,29 @@ QStringList statuswordBits(uint16_t s) {
     return out;
 }
 
+QString statuswordBitName(int bit, std::optional<int8_t> mode) {
+    if (!mode || (bit != 12 && bit != 13)) return statuswordBitName(bit);
+    // CiA 402-2 §12.1 (PP), §13.1 (HM), §14.1 (PV), §15 (IP), §16-18 (CSP, CSV, CST); the
+    // Delta and AIMOTOR manuals use the same meanings (extract-delta §4.2, extract-aimotor §4.2).
+    switch (*mode) {
+    case 1: return bit == 12 ? QStringLiteral("set-point acknowledge") : QStringLiteral("following error");
+    case 3: return bit == 12 ? QStringLiteral("zero speed") : QStringLiteral("max slippage error");
+    case 6: return bit == 12 ? QStringLiteral("homing attained") : QStringLiteral("homing error");
+    case 7: return bit == 12 ? QStringLiteral("ip mode active") : statuswordBitName(bit);
+    case 8: return bit == 12 ? QStringLiteral("drive follows the command value") : QStringLiteral("following error");
+    case 9:
+    case 10: return bit == 12 ? QStringLiteral("drive follows the command value") : statuswordBitName(bit);
+    default: return statuswordBitName(bit);
+    }
+}
+
+QStringList statuswordBits(uint16_t s, std::optional<int8_t> mode) {
+    QStringList out;
+    for (int b = 0; b < 16; ++b)
+        if (s & (1u << b)) out << statuswordBitName(b, mode);
+    return out;
+}
+
 uint16_t controlwordFor(Command c) {
     switch (c) {
     case Command::Shutdown: return 0x0006;

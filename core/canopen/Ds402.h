@@ -42,6 +42,12 @@ inline constexpr uint16_t InternalLimitActive = 1u << 11;
 // Names of the statusword bits that are set (e.g. "ready to switch on", "voltage enabled").
 QStringList statuswordBits(uint16_t sw);
 QString statuswordBitName(int bit);
+// The same in mode of operation `mode` (6061h): bits 12 and 13 are mode specific (CiA 402-2
+// §12-§16: PP "set-point acknowledge"/"following error", HM "homing attained"/"homing error",
+// PV "zero speed"/"max slippage error", IP "ip mode active", CSx "drive follows the command
+// value"/"following error"); nullopt = mode not known, the names without a mode.
+QStringList statuswordBits(uint16_t sw, std::optional<int8_t> mode);
+QString statuswordBitName(int bit, std::optional<int8_t> mode);
 // What a statusword bit being on (`set`) or off means for a technician, in plain words, e.g.
 // bit 4 off: "main power is not on". Empty when there is nothing useful to say.
 QString statuswordBitMeaning(int bit, bool set);

@@ -11,6 +11,8 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <vector>
 
 class QTimer;
 
@@ -58,6 +60,33 @@ struct Ds402MotionSample {
     uint16_t statusword = 0;
     int32_t position = 0;
     int32_t velocity = 0;
+};
+
+// Homing (CiA 402-2 §13; Delta extract §4.5.3, AIMOTOR extract §4.6 C): what home() writes.
+// Unset values are left as the drive has them. Units are the drive's (Delta: 6099h in 0.1 rpm,
+// 609Ah in ms from 0 to 3000 rpm; AIMOTOR: pulse/s, pulse/s²). canopen::homing lists the
+// methods of each drive.
+struct Ds402HomingRequest {
+    int8_t method = 35;                    // 6098h
+    std::optional<uint32_t> fastSpeed;     // 6099h:01 speed during search for switch
+    std::optional<uint32_t> slowSpeed;     // 6099h:02 speed during search for zero
+    std::optional<uint32_t> acceleration;  // 609Ah homing acceleration
+    std::optional<int32_t> offset;         // 607Ch home offset
+    // The drive takes a new 6098h only while not in Operation enabled (AIMOTOR): when it is
+    // enabled and the method differs, home() sends Shutdown first (homing::DriveHoming).
+    bool methodOnlyWhileDisabled = false;
+    int timeoutMs = 60000;                 // homing attained or error within this
+};
+
+// A profile position move (CiA 402-2 §12): what moveTo() writes and how it sets the set-point.
+struct Ds402PositionMove {
+    int32_t target = 0;                    // 607Ah
+    bool relative = false;                 // controlword bit 6
+    bool immediate = false;                // bit 5 change set immediately
+    std::optional<uint32_t> velocity;      // 6081h profile velocity
+    std::optional<uint32_t> acceleration;  // 6083h
+    std::optional<uint32_t> deceleration;  // 6084h
+    int timeoutMs = 60000;                 // target reached within this
 };
 
 // CiA 402 controller over SDO (CiA 402-2 §6.2): reads the state from 6041h, performs the
@@ -108,6 +137,23 @@ public:
     void stopTestMove(const QString& reason);
     bool testMoveActive() const { return move_ != nullptr; }
 
+    // Homing (Ds402Homing.cpp): 6060h = 6 verified in 6061h, the request's objects, Operation
+    // enabled (enable() when not), then 6040h 0Fh -> 1Fh; waits for homing attained (statusword
+    // bit 12 with target reached, bit 10) or homing error (bit 13) and ends with bit 4 low
+    // (0Fh): the drive stays enabled and homed. `progress` gets each monitoring read (about every
+    // 50 ms). A homing error, a fault, the drive leaving Operation enabled, silence or the
+    // timeout end with Quick stop and Disable voltage (not ok).
+    void home(const Ds402HomingRequest& request, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done);
+    // Profile position move (Ds402ProfileMove.cpp): 6060h = 1 verified, 6081h/6083h/6084h and
+    // 607Ah, Operation enabled, then the set-point handshake (bit 4 rising with bits 5/6, wait
+    // for set-point acknowledge bit 12, bit 4 low) and target reached (bit 10). Failures as home().
+    void moveTo(const Ds402PositionMove& move, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done);
+    // Stops a running home()/moveTo() at any time (Ds402Motion.cpp): halt (6040h = 010Fh: bit 8,
+    // bit 4 low, which also interrupts homing) and waits until it stands still, or Quick stop
+    // (0002h). `done` of the motion then reports not ok with stopReason = `reason`.
+    void stopMotion(bool quickStop, const QString& reason);
+    bool motionActive() const { return motion_ != nullptr; }
+
     // The steps enable() sends from state `from` (and the mode set first when given), for the
     // dry run: 6040h writes, each followed by the statusword 6041h it must lead to.
     static CommandScript enableScript(uint8_t node, int axis, ds402::State from, std::optional<int8_t> mode = std::nullopt);
@@ -138,6 +184,24 @@ private:
     void moveMonitor();
     void moveStopped(Ds402Result r);
     void moveFail(const QString& error);
+    // home()/moveTo() (Ds402Motion.cpp): a chain of steps, each calling its continuation with
+    // an empty text when it went well, else the error.
+    struct Motion;
+    using MotionStep = std::function<void(std::function<void(const QString&)>)>;
+    using MotionSteps = std::shared_ptr<std::vector<MotionStep>>;
+    // `check` decides after each monitoring read: empty = go on, "ok" = finished (then `finish`
+    // runs, e.g. bit 4 low), else the error. nullptr when refused (`done` was called).
+    std::shared_ptr<Motion> beginMotion(bool homing, int timeoutMs, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done,
+                                        std::function<QString(const Ds402MotionSample&)> check, MotionStep finish);
+    MotionStep writeStep(uint16_t base, uint8_t sub, QByteArray data, const QString& what);
+    MotionStep controlwordStep(uint16_t cw, const QString& why);
+    MotionStep modeStep(int8_t mode);
+    MotionStep enableStep();
+    void motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, size_t i);
+    void motionMonitor(std::shared_ptr<Motion> m);
+    void motionStopped(std::shared_ptr<Motion> m, const QString& why);
+    void motionEnd(std::shared_ptr<Motion> m, Ds402Result r);
+    void motionFail(std::shared_ptr<Motion> m, const QString& error);
 
     SdoClient& sdo_;
     uint8_t node_;
@@ -146,6 +210,7 @@ private:
     int pollMs_ = 10;
     std::function<void(const QString&)> onSend_;
     std::shared_ptr<Move> move_;
+    std::shared_ptr<Motion> motion_;
 };
 
 }  // namespace coscope::canopen

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/Ds402Drive.h"
 
+#include "core/canopen/HomingMethods.h"
+#include "core/canopen/SdoAbort.h"
 #include "core/sim/VirtualDevice.h"
 
 #include <algorithm>
@@ -57,8 +59,8 @@ void Ds402Drive::reset() {
     lastControlword_ = 0;
     velocity_ = torque_ = 0;
     demand_ = position_;
-    ppMoving_ = false;
-    homingActive_ = false;
+    stopMotion();
+    homingDone_ = homingError_ = false;
     modeDisplay_ = static_cast<int8_t>(readInt(0x6060, 0, 0));
     publish();
 }
@@ -68,7 +70,54 @@ void Ds402Drive::setState(State s) {
     if (s == State::OperationEnabled) {
         demand_ = ppTarget_ = position_;
         targetReached_ = true;
+    } else {
+        stopMotion();
+        homeFound_ = false;  // AIMOTOR: bit 15 cleared by disabling (extract-aimotor §4.2)
     }
+}
+
+void Ds402Drive::stopMotion() {
+    // A move or homing run ends with the state or mode it ran in; nothing resumes later.
+    ppMoving_ = ppBuffered_ = ppAck_ = false;
+    homingActive_ = false;
+    homingLegs_.clear();
+    stalled_ = false;
+}
+
+double Ds402Drive::countsPerRevolution() const {
+    const Personality& p = dev_.personality();
+    double rev = p.countsPerRevolution;
+    if (p.positionFactorScalesRevolution) {
+        // Delta: PUU per revolution = 1280000 x 6093h:02 / 6093h:01 (extract-delta §4.7).
+        const double num = double(readInt(0x6093, 1, 1)), feed = double(readInt(0x6093, 2, 1));
+        if (num > 0 && feed > 0) rev = rev * feed / num;
+    }
+    return rev;
+}
+
+double Ds402Drive::ramp(uint16_t base, double fallback) const {
+    const double raw = double(readInt(base, 0, 0));
+    if (raw <= 0) return fallback;
+    // Delta: time in ms from 0 to 3000 rpm (50 rev/s); others: units/s².
+    if (dev_.personality().rampsAsTimeTo3000Rpm) return 50.0 * countsPerRevolution() / (raw / 1000.0);
+    return raw;
+}
+
+uint32_t Ds402Drive::checkWrite(uint16_t base, uint8_t sub, int64_t value) const {
+    if (sub != 0) return 0;
+    if (base == 0x6060) {
+        // Modes of operation: only the modes the drive lists in 6502h (CiA 402-2 §6.4.3).
+        const auto modes = uint64_t(readInt(0x6502, 0, 0));
+        if (value != 0 && (value < 1 || value > 10 || !(modes & (uint64_t(1) << (value - 1))))) return canopen::sdoabort::InvalidValue;
+    }
+    if (base == 0x6098) {
+        const auto& table = canopen::homing::drive(dev_.personality().dictionaryName);
+        // AIMOTOR: "change 6098 only while disabled" (extract-aimotor §4.7).
+        if (table.changeOnlyWhileDisabled && state_ == State::OperationEnabled && value != readInt(0x6098)) return canopen::sdoabort::DeviceState;
+        // A method the drive lacks, where its refusal is on the write (Delta, generic).
+        if (table.refusal == canopen::homing::Refusal::SdoAbort && value != 0 && !table.supports(int(value))) return table.abortCode;
+    }
+    return 0;
 }
 
 void Ds402Drive::raiseFault(uint16_t errorCode) {
@@ -82,7 +131,11 @@ void Ds402Drive::raiseFault(uint16_t errorCode) {
 void Ds402Drive::onWrite(uint16_t index, uint8_t sub) {
     (void)sub;
     if (index == 0x6040) handleControlword(static_cast<uint16_t>(readInt(0x6040)));
-    else if (index == 0x6060) modeDisplay_ = static_cast<int8_t>(readInt(0x6060));
+    else if (index == 0x6060) {
+        const auto mode = static_cast<int8_t>(readInt(0x6060));
+        if (mode != modeDisplay_) stopMotion();
+        modeDisplay_ = mode;
+    }
     publish();
 }
 
@@ -132,7 +185,10 @@ void Ds402Drive::handleControlword(uint16_t cw) {
         if (switchOn) setState(State::SwitchedOn);  // 5
         else if (shutdown) setState(State::ReadyToSwitchOn);  // 8
         else if (disableVoltage) setState(State::SwitchOnDisabled);  // 9
-        else if (quickStop) state_ = State::QuickStopActive;  // 11
+        else if (quickStop) {  // 11
+            state_ = State::QuickStopActive;
+            stopMotion();
+        }
         break;
     case State::QuickStopActive:
         if (enableOp) state_ = State::OperationEnabled;  // 16
@@ -141,27 +197,46 @@ void Ds402Drive::handleControlword(uint16_t cw) {
     default: break;
     }
     if (state_ != State::OperationEnabled) return;
-    const int8_t mode = modeDisplay_;
-    const bool newSetPoint = (cw & 0x10) && !(prev & 0x10);
-    if (mode == kPP && newSetPoint) {
-        // Profile position: bit 4 rising = new set-point, bit 6 = relative (CiA 402-2 §12.2).
-        const double target = double(readInt(0x607A));
-        ppTarget_ = (cw & 0x40) ? ppTarget_ + target : target;
-        ppMoving_ = true;
-        targetReached_ = false;
+    const bool rise = (cw & 0x10) && !(prev & 0x10);
+    if (modeDisplay_ == kPP) handleSetPoint(cw, rise);
+    if (modeDisplay_ == kHM) {
+        // Homing operation start: 0 -> 1 starts, 1 -> 0 interrupts (CiA 402-2 §13.1; AIMOTOR
+        // "1F -> 0F aborts homing", extract-aimotor §4.6 C).
+        if (rise) startHoming();
+        else if (!(cw & 0x10) && homingActive_) interruptHoming();
     }
-    if (mode == kHM && newSetPoint) {
-        homingActive_ = true;
-        homingDone_ = false;
-        homingStart_ = position_;
-        targetReached_ = false;
+}
+
+void Ds402Drive::handleSetPoint(uint16_t cw, bool rise) {
+    // Set-point handshake (CiA 402-2 §12.2): bit 4 rising offers 607Ah, the drive answers with
+    // bit 12; bit 4 low lets bit 12 fall, unless a set-point still waits in the buffer.
+    if (!(cw & 0x10)) {
+        ppAck_ = ppBuffered_;
+        return;
     }
+    if (!rise) return;
+    const double target = double(readInt(0x607A));
+    const bool relative = cw & 0x40, immediate = cw & 0x20;
+    if (ppMoving_ && !immediate) {
+        if (ppBuffered_) return;  // buffer full: not acknowledged, the master must wait
+        ppNext_ = relative ? ppTarget_ + target : target;
+        ppBuffered_ = ppAck_ = true;
+        return;
+    }
+    ppTarget_ = relative ? ppTarget_ + target : target;
+    ppBuffered_ = false;
+    ppMoving_ = ppAck_ = true;
+    targetReached_ = false;
 }
 
 void Ds402Drive::stepVelocity(double dt, double target) {
     const double accel = std::max(double(readInt(0x6083, 0, 0)), std::abs(target) * 5.0 + 1000.0);
     const double decel = std::max(double(readInt(0x6084, 0, 0)), std::abs(velocity_) * 5.0 + 1000.0);
-    const double rate = std::abs(target) > std::abs(velocity_) ? accel : decel;
+    stepToward(dt, target, accel, decel);
+}
+
+void Ds402Drive::stepToward(double dt, double target, double accel, double decel) {
+    const double rate = std::abs(target) > std::abs(velocity_) && target * velocity_ >= 0 ? accel : decel;
     const double dv = rate * dt;
     velocity_ = velocity_ < target ? std::min(target, velocity_ + dv) : std::max(target, velocity_ - dv);
 }
@@ -169,30 +244,24 @@ void Ds402Drive::stepVelocity(double dt, double target) {
 void Ds402Drive::stepProfilePosition(double dt) {
     double vmax = std::abs(double(readInt(0x6081, 0, 0)));
     if (vmax <= 0) vmax = kDefaultVelocity;
-    const double decel = std::max(double(readInt(0x6084, 0, 0)), vmax * 5.0);
+    const double accel = ramp(0x6083, vmax * 5.0), decel = ramp(0x6084, vmax * 5.0);
     const double remaining = ppTarget_ - position_;
     // Trapezoid: the speed that still stops on the target, v = sqrt(2 a s).
     const double vStop = std::sqrt(2.0 * decel * std::abs(remaining));
-    stepVelocity(dt, std::copysign(std::min(vmax, vStop), remaining));
+    stepToward(dt, std::copysign(std::min(vmax, vStop), remaining), accel, decel);
     if (std::abs(remaining) <= std::abs(velocity_) * dt || std::abs(remaining) < 0.5) {
         position_ = ppTarget_;
         velocity_ = 0;
         ppMoving_ = false;
-    }
-}
-
-void Ds402Drive::stepHoming(double dt) {
-    double speed = std::abs(double(readInt(0x6099, 1, 0)));
-    if (speed <= 0) speed = kDefaultVelocity;
-    // The model finds its home switch after a quarter second of travel in the negative direction.
-    stepVelocity(dt, -speed);
-    if (std::abs(position_ - homingStart_) >= speed * 0.25 || speed * 0.25 < 1) {
-        velocity_ = 0;
-        position_ = double(readInt(0x607C));  // home offset becomes the position (§13.2)
-        demand_ = ppTarget_ = position_;
-        homingActive_ = false;
-        homingDone_ = true;
-        targetReached_ = true;
+        if (ppBuffered_) {
+            // Single set-point: the buffered one starts when the last is reached (§12.2).
+            ppTarget_ = ppNext_;
+            ppBuffered_ = false;
+            ppMoving_ = true;
+            ppAck_ = lastControlword_ & 0x10;
+        }
+    } else {
+        position_ += velocity_ * dt;
     }
 }
 
@@ -222,12 +291,18 @@ void Ds402Drive::step(int64_t dtNs) {
         const bool halt = lastControlword_ & 0x100;
         switch (modeDisplay_) {
         case kPP:
-            if (halt) stepVelocity(dt, 0);
-            else if (ppMoving_) stepProfilePosition(dt);
-            if (!ppMoving_ && !halt) velocity_ = 0;
-            position_ += ppMoving_ || halt ? velocity_ * dt : 0;
+            // Halt (bit 8) stops on the deceleration ramp; the move goes on when it is released (§12.2).
+            if (halt) {
+                stepToward(dt, 0, 0, ramp(0x6084, std::abs(velocity_) * 5.0 + 1000.0));
+                position_ += velocity_ * dt;
+            } else if (ppMoving_) {
+                stepProfilePosition(dt);
+            } else {
+                velocity_ = 0;
+            }
             demand_ = ppMoving_ ? position_ + velocity_ / kLagPerSecond : ppTarget_;
-            targetReached_ = !ppMoving_ && std::abs(ppTarget_ - position_) <= std::max(double(readInt(0x6067, 0, 0)), kDefaultWindow);
+            targetReached_ = halt ? std::abs(velocity_) < 1.0
+                                  : !ppMoving_ && std::abs(ppTarget_ - position_) <= std::max(double(readInt(0x6067, 0, 0)), kDefaultWindow);
             break;
         case kPV: {
             const double target = halt ? 0.0 : double(readInt(0x60FF));
@@ -249,9 +324,15 @@ void Ds402Drive::step(int64_t dtNs) {
             break;
         }
         case kHM:
-            if (homingActive_) stepHoming(dt);
-            else velocity_ = 0;
-            position_ += velocity_ * dt;
+            if (homingActive_ && halt && !dev_.personality().haltIgnoredInHoming) interruptHoming();
+            if (homingActive_) {
+                stepHoming(dt);
+            } else {
+                // Interrupted or ended: brake on the homing acceleration.
+                stepToward(dt, 0, 0, ramp(0x609A, std::abs(velocity_) * 5.0 + 1000.0));
+                position_ += velocity_ * dt;
+                targetReached_ = std::abs(velocity_) < 1.0;
+            }
             demand_ = position_;
             break;
         case kIP:
@@ -282,7 +363,7 @@ void Ds402Drive::step(int64_t dtNs) {
             demand_ = position_;
             break;
         }
-        if (modeDisplay_ != kPT && modeDisplay_ != kCST) {
+        if (modeDisplay_ != kPT && modeDisplay_ != kCST && !stalled_) {
             // Torque of the model: acceleration term plus a little friction (per mille of rated).
             const double accel = dt > 0 ? (velocity_ - before) / dt : 0;
             torque_ = std::clamp(accel / 2000.0 + (velocity_ > 1 ? 20.0 : velocity_ < -1 ? -20.0 : 0.0), -3000.0, 3000.0);
@@ -316,14 +397,18 @@ void Ds402Drive::publish() {
         if (targetReached_) s |= sw::TargetReached;
         switch (modeDisplay_) {
         case kPP:
-            if (lastControlword_ & 0x10) s |= kSetPointAck;
+            if (ppAck_) s |= kSetPointAck;
             if (followingError_) s |= kFollowingError;
             break;
         case kPV:
             if (std::abs(velocity_) < 1.0) s |= kSetPointAck;  // speed = 0
             break;
         case kHM:
+            // 13/12/10 (CiA 402-2 §13.1): 000 in progress, 001 interrupted or not started,
+            // 011 attained, 100/101 error with the motor moving/standing.
+            if (homingActive_) s &= uint16_t(~sw::TargetReached);
             if (homingDone_) s |= kSetPointAck;
+            if (homingError_) s |= kFollowingError;
             break;
         case kIP:
         case kCSP:
@@ -337,6 +422,7 @@ void Ds402Drive::publish() {
     } else if (state_ == State::SwitchOnDisabled || state_ == State::ReadyToSwitchOn || state_ == State::SwitchedOn) {
         s |= sw::TargetReached;
     }
+    if (homeFound_) s |= 0x8000;  // AIMOTOR "home found" (extract-aimotor §4.2)
     statusword_ = s;
     writeInt(0x6041, 0, s);
     writeInt(0x6061, 0, modeDisplay_);

@@ -26,6 +26,7 @@ constexpr NamedAlarm kAlarms[] = {
     {Vendor::Aimotor, "Er.201", 0x2312, 0x0201},
     {Vendor::Aimotor, "Er.601", 0x8610, 0x0601},
     {Vendor::Aimotor, "Er.620", 0x3230, 0x0620},
+    {Vendor::Aimotor, "Er.668", 0xFF00, 0x0668},  // homing method mismatch
     {Vendor::Aimotor, "Er.B00", 0x8611, 0x0B00},
     // Generic CiA 402 (CiA 402-2 error codes; no vendor number).
     {Vendor::GenericCia402, "overcurrent", 0x2310, 0},
@@ -59,6 +60,10 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
         p.alarmOnResetWhileEnabled = true;
         p.parametersStoredOnWrite = true;
         p.typicalFault = *p.alarm(QStringLiteral("AL011"));
+        p.countsPerRevolution = 1280000;
+        p.positionFactorScalesRevolution = true;
+        p.homingSpeedInDeciRpm = true;
+        p.rampsAsTimeTo3000Rpm = true;
     } else if (name == u"aimotor") {
         p.vendor = Vendor::Aimotor;
         p.supportedModes = PP | PV | PT | HM | CSP | CSV | CST;  // extract-aimotor §4
@@ -66,6 +71,13 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
         p.controlModeSub = 0x01;
         p.controlModeValue = 8;
         p.typicalFault = *p.alarm(QStringLiteral("Er.201"));
+        p.countsPerRevolution = 1000;
+        p.homeFoundBit15 = true;
+        p.homingTimeLimitIndex = 0x2005;  // H05-35
+        p.homingTimeLimitSub = 0x24;
+        p.homingTorqueLimitIndex = 0x2005;  // H05-58
+        p.homingTorqueLimitSub = 0x3B;
+        p.haltIgnoredInHoming = true;
     } else if (name == u"dexmart-dev") {
         p.vendor = Vendor::Dexmart;
         p.cia402 = false;

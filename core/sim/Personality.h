@@ -58,6 +58,27 @@ struct Personality {
     // event timer has no function (extract-dexmart §4.2-4.3, a deviation from CiA 301).
     bool tpdoFeAnswersRpdo = false;
 
+    // Motion units of the drive model (CiA 402 position units per motor revolution and how the
+    // vendor gives speeds and ramps). Delta: PUU, 1280000 x 6093h:02 / 6093h:01 per revolution,
+    // homing speeds 6099h in 0.1 rpm (P1-01 = 0Ch), ramps 6083h/6084h/6085h/609Ah as ms from 0
+    // to 3000 rpm (extract-delta §3.3, §4.7). AIMOTOR: pulses, 1000 per revolution at the
+    // factory gear, everything per second (extract-aimotor §2.5, §6). Generic: the simulator's
+    // own 10000 increments per revolution.
+    double countsPerRevolution = 10000;
+    bool positionFactorScalesRevolution = false;  // Delta: x 6093h:02 / 6093h:01
+    bool homingSpeedInDeciRpm = false;
+    bool rampsAsTimeTo3000Rpm = false;
+    // AIMOTOR homing (extract-aimotor §4.2, §4.7): statusword bit 15 "home found"; H05-35 homing
+    // time limit (2005h:24h, ER.601 when exceeded; unit not in the extract, the simulator reads
+    // ms, 0 = none); H05-58 homing torque limit of 37/38 (2005h:3Bh, read as 0.1 % like 6077h,
+    // 0 = 10 %); halt does not act in homing mode (§4.5 "quick stop and halt do not apply to HM").
+    bool homeFoundBit15 = false;
+    uint16_t homingTimeLimitIndex = 0;
+    uint8_t homingTimeLimitSub = 0;
+    uint16_t homingTorqueLimitIndex = 0;
+    uint8_t homingTorqueLimitSub = 0;
+    bool haltIgnoredInHoming = false;
+
     // The alarm a plain injectDriveFault() raises.
     VendorAlarm typicalFault;
     // A few documented alarms of the vendor, looked up by name ("AL011", "Er.601").

@@ -321,11 +321,11 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
         if (mode != personality_.controlModeValue && (index & 0x7FF) == 0x040) return abortcode::LocalControl;
     }
     if (personality_.nodeIdIndex == index && personality_.nodeIdSub == sub && (u < 1 || u > 127)) return abortcode::InvalidValue;
-    if (personality_.cia402 && index >= 0x6000 && (index & 0x7FF) == 0x060 && sub == 0) {
-        // Modes of operation: only the modes the drive lists in 6502h (CiA 402-2 §6.4.3).
-        const auto modes = value(static_cast<uint16_t>(index + 0x4A2), 0).value_or(od::Value{}).toUInt64().value_or(0);
-        const int64_t m = v.toInt64().value_or(0);
-        if (m != 0 && (m < 1 || m > 10 || !(modes & (uint64_t(1) << (m - 1))))) return abortcode::InvalidValue;
+    if (index >= 0x6000 && index <= 0x9FFF) {
+        // The drive's own checks (modes of operation, homing method).
+        const auto axis = static_cast<size_t>((index - 0x6000) / 0x800);
+        if (axis < drives_.size())
+            if (const uint32_t code = drives_[axis]->checkWrite(static_cast<uint16_t>(index - axis * 0x800), sub, v.toInt64().value_or(0))) return code;
     }
     if (personality_.vendor == Vendor::Delta && index == 0x2301 && ((u >> 8) & 0xF) > 4) return abortcode::ValueTooHigh;
     return 0;
