@@ -3,9 +3,11 @@
 // (or F2) on 6040h's value in the real main window on sim://, type "0x1F", "1Fh" or "31", Enter,
 // answer the confirmation by a click; the SDO download carries 1F 00 and the drive holds 001Fh,
 // which the editor shows when opened again. Text that does not read is refused with the reason,
-// nothing sent. F2 edits here and does not jump to the trace's bookmarks.
+// nothing sent. F2 edits here and does not jump to the trace's bookmarks. Values read stay with
+// their node when another node is shown.
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/od/OdFilterModel.h"
@@ -16,7 +18,11 @@
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
+#include <QAction>
+#include <QLabel>
 #include <QMessageBox>
+#include <QTableView>
+#include <QToolBar>
 #include <QSettings>
 #include <QTreeView>
 #include <QtTest>
@@ -154,6 +160,53 @@ private slots:
             else QVERIFY2(why.contains(QStringLiteral("“%1” is not a number").arg(QString::fromLatin1(bad))) && why.contains(QStringLiteral("0x1F or 1Fh")), qPrintable(why));
             QCOMPARE(controlword(), uint64_t(0x1F));
         }
+    }
+
+    // Values read are kept per node (issue 35, item 7): Read all on node 1 (its toolbar button),
+    // node 2 chosen in the Nodes dock shows node 2's header and status line, node 1 again shows
+    // its values, "n read" and its status line, not "0 read".
+    void valuesKeptPerNode() {
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.showView(QStringLiteral("od"));
+        QVERIFY(w.connectBus(QStringLiteral("sim://")));
+        QVERIFY(waitFor([&] { return w.workspace()->nodes().node(1).has_value() && w.workspace()->nodes().node(2).has_value(); }));
+        w.nodesDock()->assignDictionary(1, QStringLiteral("delta-asda-a2"));
+        w.nodesDock()->assignDictionary(2, QStringLiteral("aimotor"));
+        w.refresh();
+        ObjectDictionaryDock* dock = w.odDock();
+        auto choose = [&](int node) {
+            QTableView* nodes = w.nodesDock()->view();
+            const int row = w.nodesDock()->model()->rowOfNode(node);
+            QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {}, nodes->visualRect(nodes->model()->index(row, 1)).center());
+            w.refresh();
+            return dock->model()->node() == node;
+        };
+        auto header = [&] { return dock->findChild<QLabel*>(QStringLiteral("odHeader"))->text(); };
+        QVERIFY(choose(1));
+        QAction* readAll = dock->findChild<QAction*>(QStringLiteral("odReadAll"));
+        QVERIFY(readAll && readAll->isEnabled());
+        QTest::mouseClick(dock->findChild<QToolBar*>()->widgetForAction(readAll), Qt::LeftButton);
+        QVERIFY(waitFor([&] { return !dock->isBusy() && dock->model()->valuesRead() > 100; }, 30000));
+        const int read = dock->model()->valuesRead();
+        const auto statusword = dock->model()->actualValue(0x6041, 0);
+        QVERIFY(statusword);
+        QVERIFY2(dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
+        QVERIFY(header().contains(QStringLiteral("%1 read").arg(read)));
+
+        QVERIFY(choose(2));
+        QVERIFY2(header().contains(QStringLiteral("Node 2")) && header().contains(QStringLiteral("aimotor")), qPrintable(header()));
+        QCOMPARE(dock->model()->valuesRead(), 0);
+        QVERIFY2(!dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
+
+        QVERIFY(choose(1));
+        QVERIFY2(header().contains(QStringLiteral("Node 1")) && header().contains(QStringLiteral("%1 read").arg(read)), qPrintable(header()));
+        QCOMPARE(dock->model()->valuesRead(), read);
+        QCOMPARE(dock->model()->actualValue(0x6041, 0), statusword);
+        QVERIFY(!dock->model()->data(dock->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::DisplayRole).toString().isEmpty());
+        QVERIFY2(dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
     }
 };
 

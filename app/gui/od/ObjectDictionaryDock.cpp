@@ -227,6 +227,7 @@ void ObjectDictionaryDock::rebind() {
     readAllFinished_ = false;
     autoReadDone_ = false;
     resetProgress();
+    kept_.clear();  // values read over the bus before: start again
     if (store_.lock() != workspace_->store()) {
         // Another bus or log: nothing of the previous one stays on screen.
         store_ = workspace_->store();
@@ -234,8 +235,7 @@ void ObjectDictionaryDock::rebind() {
         autoPicked_ = false;
         dictName_.clear();
         model_->clear();
-        messageLine_->clear();
-        messageLine_->setToolTip({});
+        setMessageLine({}, false);
     } else if (model_->hasDictionary()) {
         // Disconnected: the node stays selected; its values were read over that bus: start again.
         model_->setDictionary(model_->dictionary(), model_->node());
@@ -247,19 +247,25 @@ void ObjectDictionaryDock::rebind() {
 void ObjectDictionaryDock::setNode(int node) {
     if (node == node_) return;
     const int previous = node_;
+    if (previous > 0 && model_->hasDictionary()) kept_[previous] = {dictName_, model_->values(), messageLine_->text(), messageIsError_};
     node_ = node;
     autoPicked_ = false;
     autoReadDone_ = false;
     readAllFinished_ = false;
     ++generation_;
-    if (config_ && config_->isRunning()) {
-        config_->cancel();
-        showMessage(tr("Reading node %1 stopped: another node was chosen").arg(previous));
-    }
+    const bool stopped = config_ && config_->isRunning();
+    if (stopped) config_->cancel();
     resetProgress();  // the bar counts this node's reads only
     dictName_.clear();
     model_->clear();
     loadDictionary();
+    // The status line is the shown node's: its last message, or none.
+    const auto kept = kept_.find(node_);
+    const bool restore = kept != kept_.end() && kept->second.dictionary == dictName_ && model_->hasDictionary();
+    if (restore) model_->setValues(kept->second.values);
+    setMessageLine(restore ? kept->second.message : QString(), restore && kept->second.messageIsError);
+    if (stopped) showMessage(tr("Reading node %1 stopped: another node was chosen").arg(previous));
+    updateHeader();
 }
 
 void ObjectDictionaryDock::resetProgress() {
@@ -378,10 +384,15 @@ void ObjectDictionaryDock::updateEnabled() {
     updateHeader();
 }
 
-void ObjectDictionaryDock::showMessage(const QString& text, bool error) {
+void ObjectDictionaryDock::setMessageLine(const QString& text, bool error) {
+    messageIsError_ = error;
     messageLine_->setStyleSheet(error ? QStringLiteral("color: #b00020;") : QString());
     messageLine_->setText(text);
     messageLine_->setToolTip(text);
+}
+
+void ObjectDictionaryDock::showMessage(const QString& text, bool error) {
+    setMessageLine(text, error);
     if (error) spdlog::warn("{}", text.toStdString());
     emit message(text);
 }

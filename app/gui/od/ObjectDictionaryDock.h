@@ -3,6 +3,7 @@
 // SDO read/write of values and applying a DCF.
 #pragma once
 
+#include "app/gui/od/OdTreeModel.h"
 #include "core/od/ObjectDictionary.h"
 
 #include <QDockWidget>
@@ -104,6 +105,7 @@ private:
     void contextMenu(const QPoint& pos);
     // Opens the value editor of `row`'s entry when it is writable, else says why not.
     void editValue(const QModelIndex& row);
+    void setMessageLine(const QString& text, bool error);
     void onReadAllDone(int failed, bool cancelled);
     void runApply(std::shared_ptr<PendingApply> pending);
     bool writeDcfFile(const QString& path);
@@ -131,6 +133,16 @@ private:
     QPointer<DcfApplyDialog> applyDialog_;
     std::vector<canopen::ConfigEntryResult> applyResults_;
     std::map<QString, od::ObjectDictionary> dictionaryCache_;
+    // Per node shown before: its values (with the dictionary they belong to) and its status line,
+    // put back when the node is shown again (issue 35: Read all, node 2, node 1 again).
+    struct KeptNode {
+        QString dictionary;
+        OdTreeModel::NodeValues values;
+        QString message;
+        bool messageIsError = false;
+    };
+    std::map<int, KeptNode> kept_;
+    bool messageIsError_ = false;
 
     std::weak_ptr<const TraceStore> store_;  // the trace the shown node belongs to
     int node_ = -1;

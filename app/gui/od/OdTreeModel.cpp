@@ -58,6 +58,20 @@ void OdTreeModel::clear() {
     endResetModel();
 }
 
+OdTreeModel::NodeValues OdTreeModel::values() const {
+    NodeValues out{states_, valuesRead_};
+    for (auto& [k, s] : out.states)
+        if (s.state == State::Reading || s.state == State::Writing) s.state = s.value ? State::Read : State::Unknown;
+    return out;
+}
+
+void OdTreeModel::setValues(const NodeValues& values) {
+    beginResetModel();  // right after setDictionary: nothing expanded to keep
+    states_ = values.states;
+    valuesRead_ = values.valuesRead;
+    endResetModel();
+}
+
 const od::Object* OdTreeModel::objectAt(const QModelIndex& index) const {
     if (!index.isValid()) return nullptr;
     const size_t row = index.internalId() == 0 ? static_cast<size_t>(index.row()) : static_cast<size_t>(index.internalId() - 1);

@@ -57,6 +57,22 @@ public:
     // The dictionary with ParameterValue = the values read (for a DCF), NodeID = node.
     od::ObjectDictionary actualValues() const;
 
+    // What was read from or written to the node, kept while another node is shown (issue 35):
+    // taken before the node changes, put back once its dictionary is shown again.
+    struct EntryState {
+        State state = State::Unknown;
+        std::optional<od::Value> value;
+        QString error;
+        bool changed = false;
+    };
+    struct NodeValues {
+        std::unordered_map<uint32_t, EntryState> states;
+        int valuesRead = 0;
+    };
+    // A read or write under way is not finished when taken: its entry keeps the value it had.
+    NodeValues values() const;
+    void setValues(const NodeValues& values);
+
     // When false (listen-only, no bus) the Value column is not editable.
     void setWritable(bool on) { writable_ = on; }
 
@@ -84,12 +100,6 @@ private:
     struct ObjectRow {
         uint16_t index = 0;
         bool composite = false;
-    };
-    struct EntryState {
-        State state = State::Unknown;
-        std::optional<od::Value> value;
-        QString error;
-        bool changed = false;
     };
     static uint32_t key(uint16_t index, uint8_t sub) { return (uint32_t(index) << 8) | sub; }
     const od::Object* objectAt(const QModelIndex& index) const;
