@@ -12,6 +12,7 @@
 #include "core/canopen/ServiceWait.h"
 
 #include <QElapsedTimer>
+#include <QRegularExpression>
 #include <QTextStream>
 
 #include <optional>
@@ -160,7 +161,7 @@ int runHome(const QStringList& args) {
         return Ok;
     }
     if (known && !table.supports(req.method))
-        return failure(verb, QStringLiteral("node %1 (%2) has no homing %3; nothing was sent").arg(*node).arg(table.title, table.describe(req.method)));
+        return failure(verb, QStringLiteral("node %1 (%2) has no homing method %3; its methods are %4 (%5); nothing was sent").arg(*node).arg(table.title).arg(req.method).arg(table.numbers(), table.source));
     req.methodOnlyWhileDisabled = known && table.changeOnlyWhileDisabled;
     if (!confirmMotion(p.isSet(common.yes), QStringLiteral("This enables node %1 and homes it with %2.").arg(*node).arg(table.describe(req.method)), &why))
         return failure(verb, why);
@@ -191,8 +192,16 @@ int runMove(const QStringList& args) {
     MotionOptions common;
     p.addOptions({relative, immediate, velocity, accel, decel});
     common.addTo(p);
+    // A negative TARGET is not an option: it goes after "--".
+    QStringList argv = args;
+    static const QRegularExpression negative(QStringLiteral("^-(0x[0-9a-fA-F]+|[0-9]+)$"));
+    for (qsizetype i = 1; i < argv.size() && !args.contains(QStringLiteral("--")); ++i)
+        if (negative.match(argv[i]).hasMatch()) {
+            argv << QStringLiteral("--") << argv.takeAt(i);
+            break;
+        }
     int code = 0;
-    if (!parseArgs(p, verb, args, &code)) return code;
+    if (!parseArgs(p, verb, argv, &code)) return code;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 3) return usageError(verb, QStringLiteral("expects BUS NODE TARGET"));
     const auto node = parseNodeId(pos[1]);

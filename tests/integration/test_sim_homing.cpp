@@ -55,7 +55,9 @@ private slots:
         QString err;
         QVERIFY2(h.open(QStringLiteral("1:aimotor"), &err), qPrintable(err));
         QCOMPARE(h.read(1, 0x6098, 0).value_or(0), 35u);  // default 35 (extract-aimotor §2.5)
-        // Away from zero first (profile position), so that "cleared to zero" shows.
+        // Away from zero first (profile position, extract-aimotor §4.6 A), so that "cleared to
+        // zero" shows.
+        QVERIFY(h.download(1, 0x6060, 0, SimHarness::u8(1)).ok());
         QVERIFY(h.download(1, 0x6081, 0, SimHarness::u32(5000)).ok());
         QVERIFY(h.download(1, 0x607A, 0, SimHarness::u32(500)).ok());
         QVERIFY(enable(h, 1));
@@ -206,11 +208,11 @@ private slots:
         QTest::addColumn<double>("home");     // machine position of home (HomingMachine conventions)
         QTest::addColumn<double>("farthest"); // a machine position passed on the way
         // Generic, 10000 inc/rev: 1 = negative limit switch (-1 rev), back to the index at -0.9 rev.
-        QTest::newRow("generic 1") << "generic-cia402" << 1 << -9000.0 << -9900.0;
+        QTest::newRow("generic 1") << "generic-cia402" << 1 << -9000.0 << -9500.0;
         // 9: home cam (+0.20..+0.35 rev) upper edge, index below it (+0.10 rev), via +0.35 rev.
         QTest::newRow("generic 9") << "generic-cia402" << 9 << 1000.0 << 3400.0;
         // 11: negative start, the negative limit switch reverses, index above the upper edge (+1.1 rev).
-        QTest::newRow("generic 11") << "generic-cia402" << 11 << 11000.0 << -9900.0;
+        QTest::newRow("generic 11") << "generic-cia402" << 11 << 11000.0 << -9500.0;
         // Delta, 1280000 PUU/rev: 19 = positive home switch edge (+0.2 rev) reached from below.
         QTest::newRow("delta 19") << "delta-asda-a2" << 19 << 256000.0 << 256000.0;
         // AIMOTOR, 1000 pulses/rev: 24 = through the home switch, back onto its far edge (+0.35 rev).

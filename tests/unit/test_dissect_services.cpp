@@ -366,6 +366,25 @@ private slots:
         QVERIFY(d.namesFrom.isEmpty());
         QCOMPARE(bundled, QStringLiteral("delta-asda-a2"));
     }
+
+    // Statusword bits 12/13 are named by the mode of operation the trace last showed for the
+    // axis (CiA 402-2 §13.1: homing attained / homing error; §12.1: set-point acknowledge).
+    void statuswordBitsByMode() {
+        NetworkContext ctx;
+        Dissection d;
+        auto bit12 = [&](const CanFrame& f) {
+            ctx.dissect(f, d, Dissection::Level::Tree);
+            for (const TreeItem& t : d.tree)
+                if (t.label == u"Bit 12") return t.value;
+            return QString();
+        };
+        const CanFrame sw = fr(0x581, {0x4B, 0x41, 0x60, 0x00, 0x37, 0x16, 0x00, 0x00});  // 1637h
+        QCOMPARE(bit12(sw), QStringLiteral("operation mode specific (bit 12)"));  // mode not seen yet
+        ctx.dissect(fr(0x601, {0x2F, 0x60, 0x60, 0x00, 0x06, 0, 0, 0}), d);     // 6060h = 6 (homing)
+        QCOMPARE(bit12(sw), QStringLiteral("homing attained"));
+        ctx.dissect(fr(0x581, {0x4F, 0x61, 0x60, 0x00, 0x01, 0, 0, 0}), d);     // 6061h = 1 (PP)
+        QCOMPARE(bit12(sw), QStringLiteral("set-point acknowledge"));
+    }
 };
 
 QTEST_GUILESS_MAIN(DissectServices)
