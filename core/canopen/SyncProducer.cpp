@@ -4,6 +4,8 @@
 #include "core/canopen/SdoClient.h"
 
 #include <atomic>
+#include <map>
+#include <mutex>
 
 namespace coscope::canopen {
 
@@ -37,6 +39,9 @@ struct SyncProducer::Shared {
     std::atomic<uint8_t> overflow{0};
     std::atomic<bool> restartCounter{false};
     uint8_t counter = 1;  // sender thread only (and start() while no job runs)
+    std::mutex afterMutex;  // held while the listeners run
+    std::map<AfterSyncId, PeriodicSender::AfterSend> after;
+    AfterSyncId nextAfter = 1;
 };
 
 SyncProducer::SyncProducer(MasterContext& context, QObject* parent) : QObject(parent), context_(context), shared_(std::make_shared<Shared>()) {}
@@ -86,6 +91,10 @@ bool SyncProducer::start(QString* error) {
     job.onStopped = [this](const QString& why) {
         if (!why.isEmpty()) QMetaObject::invokeMethod(this, [this, why] { emit stoppedOnError(why); }, Qt::QueuedConnection);
     };
+    job.afterSend = [s = shared_](const CanFrame& f, uint64_t sent) {
+        const std::lock_guard lock(s->afterMutex);
+        for (const auto& [id, after] : s->after) after(f, sent);
+    };
     job_ = context_.periodic().add(std::move(job), error);
     return job_ != 0;
 }
@@ -106,6 +115,18 @@ bool SyncProducer::isRunning() const { return job_ && context_.periodic().status
 uint64_t SyncProducer::sent() const { return sentBefore_ + (job_ ? context_.periodic().status(job_).sent : 0); }
 
 QString SyncProducer::lastError() const { return job_ ? context_.periodic().status(job_).error : lastError_; }
+
+SyncProducer::AfterSyncId SyncProducer::addAfterSync(PeriodicSender::AfterSend after) {
+    const std::lock_guard lock(shared_->afterMutex);
+    const AfterSyncId id = shared_->nextAfter++;
+    shared_->after.emplace(id, std::move(after));
+    return id;
+}
+
+void SyncProducer::removeAfterSync(AfterSyncId id) {
+    const std::lock_guard lock(shared_->afterMutex);
+    shared_->after.erase(id);
+}
 
 void SyncProducer::writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done) {
     QByteArray v(4, 0);

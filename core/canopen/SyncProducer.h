@@ -57,6 +57,13 @@ public:
     // for showing what will be sent.
     CanFrame frame(uint8_t counter) const;
 
+    // Things that go "with each SYNC" (the process data's RPDOs): `after` runs on the sender
+    // thread right after each SYNC frame went out, while registered, in every run. Register and
+    // remove from the owner's thread; once removeAfterSync() returns, `after` no longer runs.
+    using AfterSyncId = uint64_t;
+    AfterSyncId addAfterSync(PeriodicSender::AfterSend after);
+    void removeAfterSync(AfterSyncId id);
+
     // Writes the period to a node's 1006h (communication cycle period, µs) when asked.
     void writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done);
 
