@@ -104,6 +104,7 @@ struct ProcessData::Shared {
     std::vector<char> removeJob;                 // per pdo: its job sent the stop frame and ends
     std::vector<PeriodicSender::JobId> jobIds;   // per pdo, for the job removing itself
     int64_t holdUntilNs = 0;                     // 0 = not held
+    bool withSync = false;                       // the SYNC hook sends
     std::atomic<uint64_t> sent{0};
     QString lastError;
 
@@ -422,8 +423,13 @@ bool ProcessData::start(QString* error) {
         running_ = true;
         const std::shared_ptr<Shared> s = shared_;
         MasterContext* context = &context_;
-        afterSync_ = sync_.addAfterSync([s, context](const CanFrame&, uint64_t) {
+        {
             const std::lock_guard lock(s->mutex);
+            s->withSync = true;
+        }
+        sync_.setOnEachSync([s, context](const CanFrame&, uint64_t) {
+            const std::lock_guard lock(s->mutex);
+            if (!s->withSync) return;  // stopped while this SYNC went out
             const bool held = s->held(processDataNowNs());
             for (size_t i = 0; i < s->pdos.size(); ++i) {
                 if (!s->enabled[i]) continue;
@@ -441,8 +447,11 @@ bool ProcessData::start(QString* error) {
 }
 
 void ProcessData::stop() {
-    if (afterSync_) sync_.removeAfterSync(afterSync_);
-    afterSync_ = 0;
+    if (mode_ == Mode::WithSync && running_) sync_.setOnEachSync({});
+    {
+        const std::lock_guard lock(shared_->mutex);
+        shared_->withSync = false;
+    }
     stopJobs(false);
     running_ = false;
     // Whatever sent motion values last, they end with the stopped values.

@@ -53,7 +53,7 @@ std::vector<int64_t> stoppedValues(const ProcessDataPdo& pdo, const std::vector<
 
 // Process data (issue 35): the RPDOs of one node by name, with a value per mapped object, sent
 // once, on change, every N ms (a job of the bus's PeriodicSender) or right after each SYNC the
-// bus's SyncProducer sends. One per bus, beside the other master services.
+// bus's SyncProducer sends (its one setOnEachSync hook). One per bus, beside the other master services.
 //
 // Hold to run: an RPDO that carries a motion object (isMotionObject) goes out with its values
 // only while feedHold() is called at least every kHoldWatchdogMs; when it is not (released, the
@@ -141,7 +141,6 @@ private:
     int periodMs_ = 100;
     bool running_ = false;
     std::vector<PeriodicSender::JobId> jobs_;  // per pdo, 0 = none
-    SyncProducer::AfterSyncId afterSync_ = 0;
     QTimer* watchdog_ = nullptr;
 };
 

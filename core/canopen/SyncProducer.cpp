@@ -4,7 +4,6 @@
 #include "core/canopen/SdoClient.h"
 
 #include <atomic>
-#include <map>
 #include <mutex>
 
 namespace coscope::canopen {
@@ -39,9 +38,8 @@ struct SyncProducer::Shared {
     std::atomic<uint8_t> overflow{0};
     std::atomic<bool> restartCounter{false};
     uint8_t counter = 1;  // sender thread only (and start() while no job runs)
-    std::mutex afterMutex;  // held while the listeners run
-    std::map<AfterSyncId, PeriodicSender::AfterSend> after;
-    AfterSyncId nextAfter = 1;
+    std::mutex hookMutex;
+    PeriodicSender::AfterSend onEachSync;
 };
 
 SyncProducer::SyncProducer(MasterContext& context, QObject* parent) : QObject(parent), context_(context), shared_(std::make_shared<Shared>()) {}
@@ -68,9 +66,14 @@ bool SyncProducer::setCounterOverflow(uint8_t overflow) {
     return true;
 }
 
+void SyncProducer::setOnEachSync(PeriodicSender::AfterSend hook) {
+    std::lock_guard lock(shared_->hookMutex);
+    shared_->onEachSync = std::move(hook);
+}
+
 CanFrame SyncProducer::frame(uint8_t counter) const { return syncFrame(cobId_, counter); }
 
-bool SyncProducer::start(QString* error) {
+bool SyncProducer::start(QString* error, uint64_t count) {
     if (periodUs_ == 0) {
         if (error) *error = QStringLiteral("SYNC period is 0");
         return false;
@@ -80,6 +83,7 @@ bool SyncProducer::start(QString* error) {
     shared_->restartCounter = false;
     PeriodicSender::Job job;
     job.periodNs = int64_t{periodUs_} * 1000;
+    job.count = count;
     job.maker = [s = shared_] {
         if (s->restartCounter.exchange(false)) s->counter = 1;
         const uint8_t overflow = s->overflow;
@@ -88,12 +92,16 @@ bool SyncProducer::start(QString* error) {
         if (overflow) s->counter = s->counter >= overflow ? 1 : static_cast<uint8_t>(s->counter + 1);
         return f;
     };
+    job.afterSend = [s = shared_](const CanFrame& f, uint64_t sent) {
+        PeriodicSender::AfterSend hook;
+        {
+            std::lock_guard lock(s->hookMutex);
+            hook = s->onEachSync;
+        }
+        if (hook) hook(f, sent);
+    };
     job.onStopped = [this](const QString& why) {
         if (!why.isEmpty()) QMetaObject::invokeMethod(this, [this, why] { emit stoppedOnError(why); }, Qt::QueuedConnection);
-    };
-    job.afterSend = [s = shared_](const CanFrame& f, uint64_t sent) {
-        const std::lock_guard lock(s->afterMutex);
-        for (const auto& [id, after] : s->after) after(f, sent);
     };
     job_ = context_.periodic().add(std::move(job), error);
     return job_ != 0;
@@ -115,18 +123,6 @@ bool SyncProducer::isRunning() const { return job_ && context_.periodic().status
 uint64_t SyncProducer::sent() const { return sentBefore_ + (job_ ? context_.periodic().status(job_).sent : 0); }
 
 QString SyncProducer::lastError() const { return job_ ? context_.periodic().status(job_).error : lastError_; }
-
-SyncProducer::AfterSyncId SyncProducer::addAfterSync(PeriodicSender::AfterSend after) {
-    const std::lock_guard lock(shared_->afterMutex);
-    const AfterSyncId id = shared_->nextAfter++;
-    shared_->after.emplace(id, std::move(after));
-    return id;
-}
-
-void SyncProducer::removeAfterSync(AfterSyncId id) {
-    const std::lock_guard lock(shared_->afterMutex);
-    shared_->after.erase(id);
-}
 
 void SyncProducer::writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done) {
     QByteArray v(4, 0);
