@@ -2,6 +2,7 @@
 #include "core/canopen/ProcessData.h"
 
 #include "core/canopen/SdoClient.h"
+#include "core/od/NumberText.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -250,6 +251,58 @@ std::optional<int64_t> ProcessData::value(uint16_t index, uint8_t sub) const {
     return std::nullopt;
 }
 
+const ProcessDataObject* ProcessData::object(uint16_t index, uint8_t sub) const {
+    for (const ProcessDataPdo& p : pdos_)
+        for (const ProcessDataObject& o : p.objects)
+            if (!o.dummy && o.entry.index == index && o.entry.sub == sub) return &o;
+    return nullptr;
+}
+
+std::optional<int64_t> ProcessData::parseValue(const ProcessDataObject& o, const QString& text, QString* error) {
+    QString t = text.trimmed();
+    bool hexSuffix = false;
+    if (t.size() > 1 && (t.endsWith(u'h') || t.endsWith(u'H'))) {  // "1Fh", as the manuals write hex
+        t.chop(1);
+        hexSuffix = true;
+    }
+    std::optional<od::ParsedInteger> p;
+    if (hexSuffix) {
+        bool ok = false;
+        const uint64_t v = t.toULongLong(&ok, 16);
+        if (ok) p = od::ParsedInteger{v, false, true};
+    } else {
+        p = od::parseIntegerText(t, od::TextStyle::Person);
+    }
+    if (!p) {
+        if (error) *error = QStringLiteral("'%1' is not a number (decimal, 0x1F or 1Fh)").arg(text);
+        return std::nullopt;
+    }
+    int64_t v = 0;
+    const int bits = o.entry.bits;
+    if (p->hex && o.isSigned && bits < 64 && !p->negative && p->magnitude < (uint64_t{1} << bits)) {
+        uint64_t raw = p->magnitude;
+        if ((raw >> (bits - 1)) & 1) raw |= ~uint64_t{0} << bits;  // the bit pattern of a negative value
+        v = static_cast<int64_t>(raw);
+    } else {
+        v = p->negative ? -static_cast<int64_t>(p->magnitude) : static_cast<int64_t>(p->magnitude);
+    }
+    if (!fits(o, v)) {
+        if (error) *error = QStringLiteral("%1 does not fit %2's %3 mapped bits").arg(text, mappedObjectText(o.entry.index, o.entry.sub)).arg(bits);
+        return std::nullopt;
+    }
+    return v;
+}
+
+bool ProcessData::setValueText(uint16_t index, uint8_t sub, const QString& text, QString* error) {
+    const ProcessDataObject* o = object(index, sub);
+    if (!o) {
+        if (error) *error = QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
+        return false;
+    }
+    const auto v = parseValue(*o, text, error);
+    return v && setValue(index, sub, *v, error);
+}
+
 void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringList&)> done) {
     auto todo = std::make_shared<std::vector<ProcessDataObject>>();
     std::set<uint32_t> seen;
@@ -262,8 +315,11 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
     const uint8_t node = node_;
     *step = [self, &sdo, node, todo, failures, step, done](size_t i) {
         if (!self || i >= todo->size()) {
+            const auto finished = done;  // copies: clearing *step destroys this lambda
+            const QStringList failed = *failures;
+            const auto keep = step;
             *step = nullptr;  // ends the cycle step -> lambda -> step
-            if (done) done(*failures);
+            if (finished) finished(failed);
             return;
         }
         const ProcessDataObject o = (*todo)[i];

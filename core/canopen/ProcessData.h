@@ -88,6 +88,13 @@ public:
     // OnChange mode while running, the RPDOs that carry it go out at once.
     bool setValue(uint16_t index, uint8_t sub, int64_t value, QString* error = nullptr);
     std::optional<int64_t> value(uint16_t index, uint8_t sub) const;
+    // setValue() from text as people write it: decimal, "0x1F" or "1Fh" (hex of a signed object
+    // is its bit pattern in the mapped length: 0xFFFFFFFE is -2 for an INTEGER32).
+    bool setValueText(uint16_t index, uint8_t sub, const QString& text, QString* error = nullptr);
+    // The same reading without setting: the raw value for `object`, nullopt with *error.
+    static std::optional<int64_t> parseValue(const ProcessDataObject& object, const QString& text, QString* error = nullptr);
+    // The mapped object index:sub (non-dummy), null when no RPDO of the node maps it.
+    const ProcessDataObject* object(uint16_t index, uint8_t sub) const;
     // Reads every mapped object's value from the node over SDO (so that a first send repeats what
     // the drive has); `done` gets the objects that could not be read ("6060h:00: ..."), once.
     void readValues(SdoClient& sdo, std::function<void(const QStringList& failures)> done);
