@@ -6,7 +6,7 @@
 namespace coscope::canopen {
 
 bool isMotionObject(uint16_t index) {
-    if (index < 0x6000 || index > 0x9FFF) return false;  // axes 0-7: 6000h-9FFFh
+    if (index < 0x6000 || index >= 0xA000) return false;  // axes 0..7 (CiA 402-2 §5.2)
     const uint16_t base = static_cast<uint16_t>(0x6000 + ((index - 0x6000) % 0x800));  // axis 0 (CiA 402-2 §5.2)
     switch (base) {
     case 0x6040:  // controlword
@@ -26,29 +26,26 @@ bool isMotionObject(uint16_t index) {
     }
 }
 
-namespace {
-// The RPDO's COB-ID and mapping as the dictionary holds them for `node` (defaults with $NODEID
-// resolved, or a DCF's ParameterValue). False when the dictionary does not describe the PDO.
-bool readRpdo(const od::ObjectDictionary& d, uint8_t node, int number, uint32_t* cobId, std::vector<PdoMapEntry>* entries) {
+std::optional<RpdoLayout> rpdoLayout(const od::ObjectDictionary& d, uint8_t node, int number) {
     const PdoId id{false, number};
     const od::SubObject* cob = d.entry(id.communicationIndex(), 1);
-    if (!cob) return false;
+    if (!cob) return std::nullopt;
     const auto v = cob->resolvedValue(node);
-    if (!v || !v->toUInt64()) return false;
-    *cobId = static_cast<uint32_t>(*v->toUInt64());
-    entries->clear();
+    if (!v || !v->toUInt64()) return std::nullopt;
+    RpdoLayout layout;
+    layout.number = number;
+    layout.cobId = static_cast<uint32_t>(*v->toUInt64());
     const od::SubObject* count = d.entry(id.mappingIndex(), 0);
     const auto n = count ? count->resolvedValue(node) : std::nullopt;
-    if (!n || !n->toUInt64()) return true;
+    if (!n || !n->toUInt64()) return layout;
     for (uint64_t s = 1; s <= std::min<uint64_t>(*n->toUInt64(), 64); ++s) {
         const od::SubObject* e = d.entry(id.mappingIndex(), static_cast<uint8_t>(s));
         const auto m = e ? e->resolvedValue(node) : std::nullopt;
         const auto raw = m ? m->toUInt64() : std::nullopt;
-        if (raw && *raw != 0) entries->push_back(PdoMapEntry::decode(static_cast<uint32_t>(*raw)));  // 0 = unused entry
+        if (raw && *raw != 0) layout.entries.push_back(PdoMapEntry::decode(static_cast<uint32_t>(*raw)));  // 0 = unused entry
     }
-    return true;
+    return layout;
 }
-}  // namespace
 
 std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame, const std::function<const od::ObjectDictionary*(uint8_t)>& dictionaryOf,
                                          const std::function<bool(uint8_t)>& isDrive) {
@@ -58,17 +55,14 @@ std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame, const std::funct
         const od::ObjectDictionary* d = dictionaryOf(static_cast<uint8_t>(node));
         if (!d) continue;
         for (int number = 1; number <= 4; ++number) {
-            uint32_t cob = 0;
-            std::vector<PdoMapEntry> entries;
-            if (!readRpdo(*d, static_cast<uint8_t>(node), number, &cob, &entries)) continue;
-            if (cob & 0x80000000u) continue;  // not valid (bit 31)
-            const bool extended = cob & 0x20000000u;
-            if (extended != frame.isExtended() || (cob & (extended ? 0x1FFFFFFFu : 0x7FFu)) != id) continue;
+            const auto layout = rpdoLayout(*d, static_cast<uint8_t>(node), number);
+            if (!layout || !layout->valid()) continue;  // not valid (bit 31)
+            if (layout->extended() != frame.isExtended() || layout->canId() != id) continue;
             RpdoAddress a;
             a.node = static_cast<uint8_t>(node);
             a.number = number;
             a.mappingKnown = true;
-            for (const PdoMapEntry& e : entries)
+            for (const PdoMapEntry& e : layout->entries)
                 if (isMotionObject(e.index)) a.motion.push_back(e);
             return a;
         }

@@ -29,6 +29,19 @@ struct RpdoAddress {
     bool carriesMotion() const { return !mappingKnown || !motion.empty(); }
 };
 
+// An RPDO as a node's dictionary holds it: 140xh:01 COB-ID (defaults with $NODEID resolved, or
+// a DCF's ParameterValue) and the 160xh mapping (unused entries 0 left out).
+struct RpdoLayout {
+    int number = 0;      // RPDO 1..512
+    uint32_t cobId = 0;  // as 140xh:01: bit 31 not valid, bit 29 a 29-bit CAN-ID
+    std::vector<PdoMapEntry> entries;
+    bool valid() const { return !(cobId & 0x80000000u); }
+    bool extended() const { return cobId & 0x20000000u; }
+    uint32_t canId() const { return cobId & (extended() ? 0x1FFFFFFFu : 0x7FFu); }
+};
+// RPDO `number` of `node` from its dictionary; nullopt when the dictionary does not describe it.
+std::optional<RpdoLayout> rpdoLayout(const od::ObjectDictionary& dictionary, uint8_t node, int number);
+
 // Which RPDO `frame` addresses: first by the nodes' dictionaries (140xh:01 as the dictionary
 // holds it for that node-ID, 160xh the mapping; `dictionaryOf` returns null for a node without
 // one), then by the pre-defined connection set (200h/300h/400h/500h + node, CiA 301 §7.3.5) for
