@@ -12,6 +12,7 @@ namespace coscope::cli {
 BusSession::BusSession() = default;
 
 BusSession::~BusSession() {
+    master_.reset();  // its last frames go out before the bus closes
     sdo_.reset();
     if (session_) session_->stop();
     if (bus_) bus_->close();
@@ -31,6 +32,7 @@ bool BusSession::open(const QString& url, QString* error, int timeoutMs) {
     }
     session_->start(bus_.get());
     sdo_ = std::make_unique<canopen::SdoClient>(*context_);
+    master_ = std::make_unique<canopen::BusMaster>(*context_);
     return true;
 }
 

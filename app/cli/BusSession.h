@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/can/CanBus.h"
+#include "core/canopen/BusMaster.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
 #include "core/od/ObjectDictionary.h"
@@ -28,6 +29,9 @@ public:
     CanBus* bus() const { return bus_.get(); }
     canopen::MasterContext& context() { return *context_; }
     canopen::SdoClient& sdo() { return *sdo_; }
+    // The bus's periodic master services (SYNC, heartbeat, transmit list); stopped before the
+    // bus closes.
+    canopen::BusMaster& master() { return *master_; }
 
     // The dictionary of a node: `dictOption` (a file or a library name) when given, otherwise
     // the library's match for the node's 1018h identity (read over SDO). nullopt when none;
@@ -39,6 +43,7 @@ private:
     std::unique_ptr<CaptureSession> session_;
     std::unique_ptr<canopen::MasterContext> context_;
     std::unique_ptr<canopen::SdoClient> sdo_;
+    std::unique_ptr<canopen::BusMaster> master_;
 };
 
 // "5" / "0x05" -> 1..127; with allowAll "all" -> 0.

@@ -23,7 +23,8 @@ bool MasterContext::send(const CanFrame& frame, QString* error) {
     }
     QString why;
     if (bus_->send(frame, &why)) return true;
-    if (error) *error = QStringLiteral("cannot send on %1: %2").arg(bus_->url().toString(), why);
+    // CanBus::send names the bus in its own refusals (listen-only, not open).
+    if (error) *error = why.contains(bus_->url().toString()) ? why : QStringLiteral("cannot send on %1: %2").arg(bus_->url().toString(), why);
     return false;
 }
 

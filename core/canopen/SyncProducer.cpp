@@ -4,6 +4,7 @@
 #include "core/canopen/SdoClient.h"
 
 #include <atomic>
+#include <mutex>
 
 namespace coscope::canopen {
 
@@ -37,6 +38,8 @@ struct SyncProducer::Shared {
     std::atomic<uint8_t> overflow{0};
     std::atomic<bool> restartCounter{false};
     uint8_t counter = 1;  // sender thread only (and start() while no job runs)
+    std::mutex hookMutex;
+    PeriodicSender::AfterSend onEachSync;
 };
 
 SyncProducer::SyncProducer(MasterContext& context, QObject* parent) : QObject(parent), context_(context), shared_(std::make_shared<Shared>()) {}
@@ -63,9 +66,14 @@ bool SyncProducer::setCounterOverflow(uint8_t overflow) {
     return true;
 }
 
+void SyncProducer::setOnEachSync(PeriodicSender::AfterSend hook) {
+    std::lock_guard lock(shared_->hookMutex);
+    shared_->onEachSync = std::move(hook);
+}
+
 CanFrame SyncProducer::frame(uint8_t counter) const { return syncFrame(cobId_, counter); }
 
-bool SyncProducer::start(QString* error) {
+bool SyncProducer::start(QString* error, uint64_t count) {
     if (periodUs_ == 0) {
         if (error) *error = QStringLiteral("SYNC period is 0");
         return false;
@@ -75,6 +83,7 @@ bool SyncProducer::start(QString* error) {
     shared_->restartCounter = false;
     PeriodicSender::Job job;
     job.periodNs = int64_t{periodUs_} * 1000;
+    job.count = count;
     job.maker = [s = shared_] {
         if (s->restartCounter.exchange(false)) s->counter = 1;
         const uint8_t overflow = s->overflow;
@@ -82,6 +91,14 @@ bool SyncProducer::start(QString* error) {
         // Counter 1..overflow, then 1 again (CiA 301 §7.2.5.2.1).
         if (overflow) s->counter = s->counter >= overflow ? 1 : static_cast<uint8_t>(s->counter + 1);
         return f;
+    };
+    job.afterSend = [s = shared_](const CanFrame& f, uint64_t sent) {
+        PeriodicSender::AfterSend hook;
+        {
+            std::lock_guard lock(s->hookMutex);
+            hook = s->onEachSync;
+        }
+        if (hook) hook(f, sent);
     };
     job.onStopped = [this](const QString& why) {
         if (!why.isEmpty()) QMetaObject::invokeMethod(this, [this, why] { emit stoppedOnError(why); }, Qt::QueuedConnection);

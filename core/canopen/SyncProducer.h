@@ -43,15 +43,21 @@ public:
     bool setCounterOverflow(uint8_t overflow);
     uint8_t counterOverflow() const { return overflow_; }
 
-    // Starts sending: the first SYNC at once (counter 1). False with *error when the period is 0
-    // or the first frame was refused (listen-only bus, bus not open). Restarts when running.
-    bool start(QString* error = nullptr);
+    // Starts sending: the first SYNC at once (counter 1), `count` frames in all (0 = until
+    // stopped). False with *error when the period is 0 or the first frame was refused
+    // (listen-only bus, bus not open). Restarts when running.
+    bool start(QString* error = nullptr, uint64_t count = 0);
     void stop();
     bool isRunning() const;
     // SYNC frames sent since construction (all runs).
     uint64_t sent() const;
     // Why the last run stopped by itself (a send failed); empty otherwise.
     QString lastError() const;
+
+    // Runs `hook` on the sender thread right after each SYNC went out (things sent "with each
+    // SYNC": synchronous RPDOs of the process data panel); empty = none. May be set at any time
+    // from the owner's thread; the hook must not block on that thread.
+    void setOnEachSync(PeriodicSender::AfterSend hook);
 
     // The frame sent as SYNC with the given counter value (0 = no counter byte): for tests and
     // for showing what will be sent.

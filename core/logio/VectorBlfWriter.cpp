@@ -18,50 +18,50 @@ using namespace blf;
 constexpr uint32_t kFileHeaderSize = 144;
 constexpr qsizetype kContainerMax = 128 * 1024;
 
-void put16(QByteArray& b, uint16_t v) {
+void blfPut16(QByteArray& b, uint16_t v) {
     b.append(char(v & 0xFF));
     b.append(char(v >> 8));
 }
-void put32(QByteArray& b, uint32_t v) {
-    put16(b, uint16_t(v & 0xFFFF));
-    put16(b, uint16_t(v >> 16));
+void blfPut32(QByteArray& b, uint32_t v) {
+    blfPut16(b, uint16_t(v & 0xFFFF));
+    blfPut16(b, uint16_t(v >> 16));
 }
-void put64(QByteArray& b, uint64_t v) {
-    put32(b, uint32_t(v & 0xFFFFFFFFU));
-    put32(b, uint32_t(v >> 32));
+void blfPut64(QByteArray& b, uint64_t v) {
+    blfPut32(b, uint32_t(v & 0xFFFFFFFFU));
+    blfPut32(b, uint32_t(v >> 32));
 }
 // Windows SYSTEMTIME: year, month, day of week (0 = Sunday), day, hour, minute, second, ms.
 void putSystemTime(QByteArray& b, int64_t ns) {
     const QDateTime t = QDateTime::fromMSecsSinceEpoch(ns / 1000000);
     const QDate d = t.date();
     const QTime c = t.time();
-    for (int v : {d.year(), d.month(), d.dayOfWeek() % 7, d.day(), c.hour(), c.minute(), c.second(), c.msec()}) put16(b, uint16_t(v));
+    for (int v : {d.year(), d.month(), d.dayOfWeek() % 7, d.day(), c.hour(), c.minute(), c.second(), c.msec()}) blfPut16(b, uint16_t(v));
 }
 // "LOBJ" base header + object header v1 (flags 2 = 1 ns timestamps).
 void putObjectHeader(QByteArray& b, uint32_t type, uint32_t bodySize, uint64_t ts) {
     b.append("LOBJ", 4);
-    put16(b, 32);  // header size
-    put16(b, 1);   // header version
-    put32(b, 32 + bodySize);
-    put32(b, type);
-    put32(b, 2);  // timestamp unit: 1 ns
-    put16(b, 0);  // client index
-    put16(b, 0);  // object version
-    put64(b, ts);
+    blfPut16(b, 32);  // header size
+    blfPut16(b, 1);   // header version
+    blfPut32(b, 32 + bodySize);
+    blfPut32(b, type);
+    blfPut32(b, 2);  // timestamp unit: 1 ns
+    blfPut16(b, 0);  // client index
+    blfPut16(b, 0);  // object version
+    blfPut64(b, ts);
 }
 }  // namespace
 
 QByteArray BlfWriter::header() const {
     QByteArray h;
     h.append("LOGG", 4);
-    put32(h, kFileHeaderSize);
+    blfPut32(h, kFileHeaderSize);
     h.append(char(0));                    // application ID
     h.append("\x01\x00\x00", 3);          // application version
     h.append("\x02\x06\x08\x01", 4);      // binary log version
-    put64(h, fileSize_);
-    put64(h, uncompressed_);
-    put32(h, objects_);
-    put32(h, objects_);                   // objects read
+    blfPut64(h, fileSize_);
+    blfPut64(h, uncompressed_);
+    blfPut32(h, objects_);
+    blfPut32(h, objects_);                   // objects read
     putSystemTime(h, startNs_);
     putSystemTime(h, lastNs_);
     h.append(QByteArray(int(kFileHeaderSize) - int(h.size()), '\0'));
@@ -84,15 +84,15 @@ void BlfWriter::writeFrame(const CanFrame& f, const QString&) {
     QByteArray& c = container_;
     if (f.isError()) {
         putObjectHeader(c, kCanError, 4, ts);
-        put16(c, channel);
-        put16(c, 0);
+        blfPut16(c, channel);
+        blfPut16(c, 0);
     } else if (f.isFd()) {
         putObjectHeader(c, kCanFdMessage, 84, ts);
-        put16(c, channel);
+        blfPut16(c, channel);
         c.append(char(flags));
         c.append(char(fdLengthToDlc(f.len)));
-        put32(c, id);
-        put32(c, 0);  // frame length in ns: unknown
+        blfPut32(c, id);
+        blfPut32(c, 0);  // frame length in ns: unknown
         c.append(char(0));  // bit count
         c.append(char(0x1 | (f.flags & CanFrame::BitRateSwitch ? 0x2 : 0) | (f.flags & CanFrame::ErrorState ? 0x4 : 0)));
         c.append(char(f.payloadSize()));
@@ -100,10 +100,10 @@ void BlfWriter::writeFrame(const CanFrame& f, const QString&) {
         c.append(reinterpret_cast<const char*>(f.data.data()), 64);
     } else {
         putObjectHeader(c, kCanMessage, 16, ts);
-        put16(c, channel);
+        blfPut16(c, channel);
         c.append(char(flags));
         c.append(char(f.len));
-        put32(c, id);
+        blfPut32(c, id);
         c.append(reinterpret_cast<const char*>(f.data.data()), 8);
     }
     ++objects_;
@@ -121,13 +121,13 @@ void BlfWriter::closeContainer() {
     QByteArray& o = out();
     const qsizetype at = o.size();
     o.append("LOBJ", 4);
-    put16(o, 16);  // base header only
-    put16(o, 1);
-    put32(o, uint32_t(16 + 16 + packed.size()));
-    put32(o, kLogContainer);
-    put16(o, zipped ? 2 : 0);  // compression: 0 stored, 2 zlib
+    blfPut16(o, 16);  // base header only
+    blfPut16(o, 1);
+    blfPut32(o, uint32_t(16 + 16 + packed.size()));
+    blfPut32(o, kLogContainer);
+    blfPut16(o, zipped ? 2 : 0);  // compression: 0 stored, 2 zlib
     o.append(QByteArray(6, '\0'));
-    put32(o, uint32_t(container_.size()));
+    blfPut32(o, uint32_t(container_.size()));
     o.append(QByteArray(4, '\0'));
     o.append(packed);
     // Padding after a container is objectSize % 4 bytes (not up to the next multiple of 4): what
