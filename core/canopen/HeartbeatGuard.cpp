@@ -81,7 +81,9 @@ void HeartbeatGuard::finish(const HeartbeatGuardCallback& done, HeartbeatGuardRe
 }
 
 void HeartbeatGuard::write(uint16_t index, uint8_t sub, const QByteArray& data, const QString& what, SdoCallback then) {
-    if (onSend_) onSend_(QStringLiteral("%1 %2 = %3").arg(prefix(), objectRef(index, sub), what));
+    // As Ds402Controller reports its writes: "node 3: 1016h:01 = ...", "node 3: 6007h = ...".
+    const QString object = QStringLiteral("%1").arg(index, 4, 16, QChar(u'0')).toUpper() + u'h';
+    if (onSend_) onSend_(QStringLiteral("%1: %2 = %3").arg(prefix(), sub ? object + u':' + subText(sub) : object, what));
     sdo_.download(node_, index, sub, data, std::move(then));
 }
 
