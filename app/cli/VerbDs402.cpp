@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli ds402 state|enable|disable|quickstop BUS NODE [--mode M] [--axis N]
 //             ds402 mode BUS NODE MODE
-//             ds402 jog BUS NODE VELOCITY --for MS [--yes]
+//             ds402 jog BUS NODE VELOCITY --for MS [--yes] [--watchdog [--heartbeat-node N] [--heartbeat-ms MS]]
 #include "app/cli/BusSession.h"
 #include "app/cli/CliVerb.h"
 #include "app/cli/Ds402Cli.h"
+#include "app/cli/WatchdogRun.h"
 #include "core/canopen/Ds402Controller.h"
 #include "core/canopen/ServiceWait.h"
 
@@ -142,6 +143,8 @@ static int runJog(const QStringList& args) {
     const QCommandLineOption yes(QStringLiteral("yes"), QStringLiteral("Do not ask for confirmation."));
     const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7."), QStringLiteral("N"), QStringLiteral("0"));
     p.addOptions({forMs, accel, yes, axis});
+    WatchdogOptions watch;
+    watch.addTo(p);
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
     const QStringList pos = p.positionalArguments();
@@ -164,6 +167,7 @@ static int runJog(const QStringList& args) {
     if (!ok || ax < 0 || ax > 7) return usageError(verb, QStringLiteral("--axis must be 0-7"));
     const QString bad = move.check();
     if (!bad.isEmpty()) return usageError(verb, bad);
+    if (QString why; !watch.read(p, *node, &why)) return usageError(verb, why);
 
     QTextStream out(stdout);
     QString why;
@@ -172,6 +176,9 @@ static int runJog(const QStringList& args) {
     BusSession s;
     QString error;
     if (!s.open(pos[0], &error)) return failure(verb, error);
+    // --watchdog: armed before enabling; put back after the drive was disabled, on every return.
+    WatchdogRun watchdog(s, *node, ax, out);
+    if (watch.enabled && !watchdog.start(watch, &error)) return failure(verb, QStringLiteral("--watchdog: ") + error);
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
     printSends(ctl, out);
     // Whatever happens below, the drive ends disabled: also on Ctrl+C or SIGTERM, which stop the

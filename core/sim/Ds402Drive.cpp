@@ -435,4 +435,12 @@ void Ds402Drive::publish() {
     writeInt(0x60F4, 0, std::llround(demand_ - position_));
 }
 
+void Ds402Drive::abortConnection(int16_t optionCode) {
+    // As the controlword commands Disable voltage (xxxx xx0x) and Quick stop (xxxx x01x) would
+    // (CiA 402-2 Table 27); the master's next controlword starts from there.
+    if (optionCode == 2) handleControlword(0x0000);
+    else if (optionCode == 3) handleControlword(0x0002);
+    publish();
+}
+
 }  // namespace coscope::sim

@@ -39,6 +39,9 @@ public:
 
     // A fault happened: fault reaction active, then FAULT (the caller sends the EMCY).
     void raiseFault(uint16_t errorCode);
+    // The connection to the master was lost and 6007h (abort connection option code, CiA 402-2)
+    // asks for 2 "disable voltage" or 3 "quick stop": the drive runs that command itself.
+    void abortConnection(int16_t optionCode);
     bool faulted() const { return state_ == canopen::ds402::State::Fault || state_ == canopen::ds402::State::FaultReactionActive; }
     bool enabled() const { return state_ == canopen::ds402::State::OperationEnabled; }
     // NMT reset / power cycle: back to SWITCH ON DISABLED (fault kept if latched).

@@ -22,12 +22,15 @@ constexpr NamedAlarm kAlarms[] = {
     {Vendor::Delta, "AL011", 0x7305, 0x0011},
     {Vendor::Delta, "AL013", 0x5441, 0x0013},
     {Vendor::Delta, "AL401", 0x8100, 0x0401},
+    {Vendor::Delta, "AL170", 0x8130, 0x0170},  // heartbeat or node guarding error, servo on
+    {Vendor::Delta, "AL180", 0x8130, 0x0180},  // the same, servo off
     // AIMOTOR (extract-aimotor §6b): vendor code in the 1003h high word.
     {Vendor::Aimotor, "Er.201", 0x2312, 0x0201},
     {Vendor::Aimotor, "Er.601", 0x8610, 0x0601},
     {Vendor::Aimotor, "Er.620", 0x3230, 0x0620},
     {Vendor::Aimotor, "Er.668", 0xFF00, 0x0668},  // homing method mismatch
     {Vendor::Aimotor, "Er.B00", 0x8611, 0x0B00},
+    {Vendor::Aimotor, "Er.D03", 0x8130, 0x0D03},  // CAN communication interrupted (alarms/aimotor.json)
     // Generic CiA 402 (CiA 402-2 error codes; no vendor number).
     {Vendor::GenericCia402, "overcurrent", 0x2310, 0},
     {Vendor::GenericCia402, "following-error", 0x8611, 0},

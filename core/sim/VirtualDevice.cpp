@@ -6,6 +6,7 @@
 #include "core/sim/DexmartMotor.h"
 #include "core/sim/DictionaryProvider.h"
 #include "core/sim/Ds402Drive.h"
+#include "core/sim/HeartbeatConsumer.h"
 #include "core/sim/LssSlave.h"
 #include "core/sim/PdoEngine.h"
 #include "core/sim/SdoServer.h"
@@ -83,6 +84,7 @@ VirtualDevice::VirtualDevice(uint8_t nodeId, od::ObjectDictionary dictionary, Pe
     sdo_ = std::make_unique<SdoServer>(*this);
     pdo_ = std::make_unique<PdoEngine>(*this);
     lss_ = std::make_unique<LssSlave>(*this);
+    heartbeat_ = std::make_unique<HeartbeatConsumer>(*this);
     if (personality_.cia402)
         for (int a = 0; a < personality_.axes; ++a) drives_.push_back(std::make_unique<Ds402Drive>(*this, a));
     if (personality_.vendor == Vendor::Dexmart)
@@ -286,6 +288,7 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
         std::erase_if(stored_, [sub](const auto& kv) { return inStoreGroup(sub, static_cast<uint16_t>(kv.first >> 8)); });
         return 0;  // takes effect at the next reset
     }
+    if (index == 0x1016 && sub > 0) return heartbeat_->checkWrite(sub, static_cast<uint32_t>(u));
     if (index == 0x1003 && sub == 0 && u != 0) return abortcode::InvalidValue;  // only 0 clears the history
     if (index == 0x1019 && sub == 0) {
         // Synchronous counter overflow: 0 or 2..240, changed only while 1006h is 0 (CiA 301 §7.5.2.22).
@@ -402,6 +405,7 @@ void VirtualDevice::bootUp(int64_t nowNs) {
     nextHeartbeatNs_ = nowNs + hb * 1'000'000;
     guardToggle_ = false;
     guardingStarted_ = false;
+    heartbeat_->reset();
 }
 
 void VirtualDevice::setNmtState(NmtState s) {
@@ -487,6 +491,7 @@ void VirtualDevice::onFrame(const CanFrame& f, int64_t nowNs) {
         if (f.isRemote()) handleGuarding(nowNs);
         return;
     }
+    if (f.id > 0x700 && f.id < 0x780 && !f.isRemote()) heartbeat_->onHeartbeat(static_cast<uint8_t>(f.id - 0x700), nowNs);
     if (nmtState_ == NmtState::Stopped) return;
     if (f.id == 0x600u + nodeId_ && !f.isRemote()) {
         ++sdoRequests_;
@@ -503,6 +508,7 @@ void VirtualDevice::tick(int64_t nowNs) {
     lss_->tick(nowNs);
     if (nodeId_ == 0xFF) return;
     sdo_->tick(nowNs);
+    heartbeat_->tick(nowNs);
     const auto hbMs = int64_t(value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0));
     if (hbMs > 0 && nowNs >= nextHeartbeatNs_) {
         sendHeartbeat();
@@ -515,8 +521,7 @@ void VirtualDevice::tick(int64_t nowNs) {
         const auto factor = int64_t(value(0x100D, 0).value_or(od::Value{}).toUInt64().value_or(0));
         if (guard > 0 && factor > 0 && nowNs - lastGuardNs_ > guard * factor * 1'000'000) {
             guardingStarted_ = false;
-            const uint8_t none[5] = {};
-            sendEmcy(0x8130, none);  // life guard error or heartbeat error (CiA 301 Table 21)
+            heartbeat_->masterLost(0);  // life guarding event
         }
     }
     for (auto& d : drives_) d->step(dt > 0 && dt < 100'000'000 ? dt : 1'000'000);

@@ -22,6 +22,7 @@ namespace coscope::sim {
 class SdoServer;
 class PdoEngine;
 class LssSlave;
+class HeartbeatConsumer;
 class Ds402Drive;
 class DexmartMotor;
 
@@ -35,7 +36,7 @@ struct DriveFault {
 
 // A virtual CANopen device built from an object dictionary and a vendor personality:
 // SDO server (expedited, segmented, block; CiA 301 §7.2.4), NMT slave with boot-up, heartbeat
-// producer and node guarding (§7.2.8), SYNC consumer and PDO engine driven by the mapping in
+// producer, heartbeat consumer (HeartbeatConsumer) and node guarding (§7.2.8), SYNC consumer and PDO engine driven by the mapping in
 // its dictionary (§7.2.2), EMCY producer (§7.2.7), LSS slave (CiA 305), store/restore
 // (1010h/1011h, §7.5.2.13-14) and, for CiA 402 personalities, the drive model (Ds402Drive).
 //
@@ -125,6 +126,7 @@ public:
     DexmartMotor* motor(int m);
 
     uint32_t serialNumber() const { return serial_; }
+    HeartbeatConsumer& heartbeatConsumer() { return *heartbeat_; }
 
     // Counters for tests.
     uint64_t sdoRequests() const { return sdoRequests_; }
@@ -138,6 +140,7 @@ public:
 
 private:
     friend class LssSlave;
+    friend class HeartbeatConsumer;
     static uint32_t key(uint16_t index, uint8_t sub) { return (uint32_t(index) << 8) | sub; }
     void loadDefaults(bool communicationOnly);  // factory values for nodeId_
     void applyStored(bool communicationOnly);
@@ -178,6 +181,7 @@ private:
     std::unique_ptr<SdoServer> sdo_;
     std::unique_ptr<PdoEngine> pdo_;
     std::unique_ptr<LssSlave> lss_;
+    std::unique_ptr<HeartbeatConsumer> heartbeat_;  // 1016h
     std::vector<std::unique_ptr<Ds402Drive>> drives_;
     std::vector<std::unique_ptr<DexmartMotor>> motors_;
 };
