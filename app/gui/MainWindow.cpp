@@ -13,6 +13,7 @@
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
 #include "app/gui/master/MasterActions.h"
+#include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
@@ -109,6 +110,11 @@ void MainWindow::createDocks() {
     health_ = new HealthDock(workspace_, this);
     console_ = new ConsoleDock(this);
     transmit_ = new TransmitDock(workspace_, this);
+    processData_ = new ProcessDataDock(workspace_, this);
+    // Its ProcessData sends through the bus's master services: let go of them before they go.
+    processData_->setMaster(workspace_->busMaster());
+    connect(workspace_, &Workspace::aboutToDisconnect, processData_, [this] { processData_->setMaster(nullptr); });
+    connect(workspace_, &Workspace::sourceChanged, processData_, [this] { processData_->setMaster(workspace_->busMaster()); });
     // No central widget: every part is a dock the user can arrange.
     addDockWidget(Qt::LeftDockWidgetArea, trace_);
     addDockWidget(Qt::RightDockWidgetArea, nodes_);
@@ -120,6 +126,7 @@ void MainWindow::createDocks() {
     tabifyDockWidget(events_, console_);
     tabifyDockWidget(events_, health_);
     tabifyDockWidget(events_, transmit_);
+    tabifyDockWidget(events_, processData_);
     events_->raise();
     resizeDocks({trace_, nodes_}, {880, 480}, Qt::Horizontal);
     resizeDocks({trace_, events_}, {620, 200}, Qt::Vertical);
@@ -200,6 +207,7 @@ void MainWindow::buildMenus() {
     bus->addAction(masterActions_->syncAction());
     bus->addAction(masterActions_->settingsAction());
     bus->addAction(transmit_->toggleViewAction());
+    bus->addAction(processData_->toggleViewAction());
     rebuildRecentMenu();
 
     if (!busBar_) {
@@ -226,7 +234,8 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
                            static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(health_),
-                           static_cast<QDockWidget*>(console_), static_cast<QDockWidget*>(transmit_)})
+                           static_cast<QDockWidget*>(console_), static_cast<QDockWidget*>(transmit_),
+                           static_cast<QDockWidget*>(processData_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
     addLanguageMenu(view);
@@ -389,6 +398,7 @@ bool MainWindow::showView(const QString& name) {
     else if (name == u"health") d = health_;
     else if (name == u"console") d = console_;
     else if (name == u"transmit") d = transmit_;
+    else if (name == u"processdata") d = processData_;
     if (!d) return false;
     d->show();
     d->raise();

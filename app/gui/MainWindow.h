@@ -32,6 +32,7 @@ class NodesDock;
 class PdoDbcJob;
 class ObjectDictionaryDock;
 class PlotDock;
+class ProcessDataDock;
 class TraceDock;
 class TransmitDock;
 class Workspace;
@@ -69,6 +70,7 @@ public:
     EventsDock* eventsDock() const { return events_; }
     HealthDock* healthDock() const { return health_; }
     TransmitDock* transmitDock() const { return transmit_; }
+    ProcessDataDock* processDataDock() const { return processData_; }
     MasterActions* masterActions() const { return masterActions_; }
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
@@ -130,6 +132,7 @@ private:
     HealthDock* health_ = nullptr;
     ConsoleDock* console_ = nullptr;
     TransmitDock* transmit_ = nullptr;
+    ProcessDataDock* processData_ = nullptr;
     MasterActions* masterActions_ = nullptr;  // Bus ▸ SYNC producer, Master settings…
     QAction* disconnectAction_ = nullptr;
     BusStatusBar* status_ = nullptr;

@@ -9,6 +9,7 @@
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
+#include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
 #include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
@@ -77,7 +78,7 @@ void MainWindow::rebuildInLanguage() {
     const int node = od_->node() > 0 ? od_->node() : nodes_->selectedNode();
     // Menus first: they hold the docks' actions (View, Bus ▸ Scan).
     setMenuBar(new QMenuBar(this));
-    for (QDockWidget* d : std::initializer_list<QDockWidget*>{trace_, nodes_, od_, plot_, events_, health_, console_, transmit_}) {
+    for (QDockWidget* d : std::initializer_list<QDockWidget*>{trace_, nodes_, od_, plot_, events_, health_, console_, transmit_, processData_}) {
         removeDockWidget(d);
         delete d;
     }

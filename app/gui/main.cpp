@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
         level = *parsed;
     }
     const QString viewName = parser.value(view);
-    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit")};
+    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata")};
     for (const gui::WizardEntry& w : gui::wizardEntries()) views << QStringLiteral("wizard-") + w.id;
     if (!viewName.isEmpty() && !views.contains(viewName)) {
         std::fprintf(stderr, "coscope: invalid --view '%s' (%s)\n", qPrintable(viewName), qPrintable(views.join(QStringLiteral(", "))));

@@ -335,6 +335,13 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
 
 void ProcessData::setValueQuietly(const ProcessDataObject& object, int64_t value) {
     if (!fits(object, value)) return;
+    // A controlword that switches voltage on goes into the bus's record of drives CoScope enabled
+    // before it can be sent, so whatever closes the bus disables the drive first (EnabledDrives).
+    // A disabling one is not taken as proof: an RPDO is not confirmed by the drive.
+    const uint16_t index = object.entry.index;
+    if (index >= 0x6000 && index < 0xA000 && (index - 0x6000) % 0x800 == 0x40 && object.entry.sub == 0 &&
+        EnabledDrives::enablesVoltage(static_cast<uint16_t>(value)))
+        context_.enabledDrives().noteControlword(node_, (index - 0x6000) / 0x800, static_cast<uint16_t>(value));
     const std::lock_guard lock(shared_->mutex);
     for (size_t i = 0; i < pdos_.size(); ++i)
         for (size_t k = 0; k < pdos_[i].objects.size(); ++k)

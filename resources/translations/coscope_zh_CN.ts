@@ -1056,7 +1056,7 @@
         <translation>节点 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
+        <source>Reopen the adapter at %1, the device's new bit rate</source>
         <translation>以设备的新波特率 %1 重新打开适配器</translation>
     </message>
     <message>
@@ -1136,8 +1136,8 @@
         <translation>将新的节点 ID %1 写入 %2 [对象为推定]（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
+        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1212,8 +1212,8 @@
         <translation>写入 %1 = %2h：波特率 %3（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>保存参数（保存参数，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters (store parameters, 1010h "save")</source>
+        <translation>保存参数（保存参数，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1280,11 +1280,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
         <translation>没有设备以此识别数据响应 LSS。请确认驱动器支持 LSS（CiA 305）；若不支持，请改用它自己的参数（厂商方式）或厂商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
         <translation>设备拒绝了这个值。请确认它支持此值（见手册的节点 ID 范围／波特率）。</translation>
     </message>
     <message>
@@ -1308,7 +1308,7 @@
         <translation>无法全部恢复（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
         <translation>Delta ASDA-A2 手册 §1.3.1，P3-00（“●”：重新上电后生效）</translation>
     </message>
     <message>
@@ -2681,12 +2681,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
         <translation>——厂商报警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
         <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
     </message>
 </context>
@@ -2710,6 +2710,69 @@
     <message>
         <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
         <translation>DEXMART DEV 没有 CiA 402 状态机：它的两台电机是通过 Multi-Drive 对象（3051h/3052h）控制。请改用对象字典面板。</translation>
+    </message>
+</context>
+<context>
+    <name>EnabledDrivesQuestion</name>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and quit?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并退出吗？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and quit?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并退出吗？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and disconnect?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并断开连接吗？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and disconnect?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并断开连接吗？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and connect anew?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并重新连接吗？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and connect anew?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并重新连接吗？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and open the log?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并打开日志吗？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and open the log?</source>
+        <translation>节点 %1 由 CoScope 使能中：要将其停用并打开日志吗？</translation>
+    </message>
+    <message>
+        <source>%1 (axis %2)</source>
+        <translation>%1（轴 %2）</translation>
+    </message>
+    <message>
+        <source>Drive enabled</source>
+        <translation>驱动器使能中</translation>
+    </message>
+    <message>
+        <source>CoScope sends Disable voltage (6040h = 0000h; Quick stop first to a drive that may be moving) and waits to see it on the bus before the connection closes. Cancel leaves everything as it is.</source>
+        <translation>CoScope 会发送断开电压（Disable voltage，6040h = 0000h；可能在运动的驱动器先发送快速停止），并在连接关闭前等待在总线上看到该帧。取消则一切保持原样。</translation>
+    </message>
+    <message>
+        <source>Disable and quit</source>
+        <translation>停用并退出</translation>
+    </message>
+    <message>
+        <source>Disable and disconnect</source>
+        <translation>停用并断开连接</translation>
+    </message>
+    <message>
+        <source>Disable and connect</source>
+        <translation>停用并连接</translation>
+    </message>
+    <message>
+        <source>Disable and open the log</source>
+        <translation>停用并打开日志</translation>
     </message>
 </context>
 <context>
@@ -2989,7 +3052,7 @@
         <translation>%1：未知的日志文件格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
+        <source>%1: cannot write format '%2'</source>
         <translation>%1：无法写入格式“%2”</translation>
     </message>
 </context>
@@ -3078,7 +3141,7 @@ Differs from the default</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）时，CiA 402 对象才会生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的默认 PDO 为同步型（类型 1）：只有收到 SYNC 时才会发送或应用。请启动 SYNC 生产者，或改选事件触发类型。</translation>
     </message>
     <message>
@@ -3106,7 +3169,7 @@ Differs from the default</source>
         <translation>驱动器未及时响应。请确认它已通电、节点 ID 正确，并检查缆线、终端电阻与波特率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
         <translation>驱动器不允许将此对象放入 PDO。请改选其他对象，或查阅手册中该对象的“PDO”列。</translation>
     </message>
     <message>
@@ -3134,7 +3197,7 @@ Differs from the default</source>
         <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <source>Look up abort code 0x%1 in the drive's manual.</source>
         <translation>请在驱动器手册中查找中止码 0x%1。</translation>
     </message>
     <message>
@@ -3233,7 +3296,7 @@ Differs from the default</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
         <translation>SDO 读取 节点 %1 %2</translation>
     </message>
     <message>
@@ -3262,39 +3325,39 @@ Differs from the default</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
         <translation>（%1，%2 字节，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <source>filter: '%1' is not a node-ID (0-127)</source>
         <translation>筛选：“%1”不是节点 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
         <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
         <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -3309,7 +3372,7 @@ Differs from the default</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding &apos;%1&apos;</source>
+        <source>Finding '%1'</source>
         <translation>正在查找“%1”</translation>
     </message>
 </context>
@@ -3382,7 +3445,7 @@ Differs from the default</source>
         <translation>已停止：第 %2 步（共 %3 步）执行时总线中断（%1）。之前的步骤都已发送；这一步不一定已送达设备，之后的步骤都没有发送。设备可能只配置了一半（某个 PDO 仍被禁用，或新的节点 ID、波特率已保存但尚未生效）。总线恢复后，请先读回此脚本涉及的对象，再重新执行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：应用节点 %3 的 %2 时总线中断（%1）（最后已知：%4）。该 PDO 可能仍被禁用（COB-ID 第 31 位为 1），映射只写入一半，节点停在预操作状态。总线恢复后，请读回 %2（选择页）并重新应用；在此期间驱动器如何动作，取决于它自身的通信中断反应。</translation>
     </message>
     <message>
@@ -3890,7 +3953,7 @@ Differs from the default</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move&apos;s motion shows here</source>
+        <source>The test move's motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
     </message>
 </context>
@@ -4041,10 +4104,6 @@ Differs from the default</source>
         <translation>连接已更改。请重新选择驱动器。</translation>
     </message>
     <message>
-        <source>application quits</source>
-        <translation>应用程序结束</translation>
-    </message>
-    <message>
         <source>Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h).</source>
         <translation>仅监听连接：此向导必须发送（对 6040h/6041h 的 SDO），因此已停用。</translation>
     </message>
@@ -4077,7 +4136,7 @@ Differs from the default</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
         <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -4129,7 +4188,7 @@ Differs from the default</source>
         <translation>向导已关闭</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
         <translation>请检查主电源、使能与安全转矩关闭（STO）输入，以及驱动器本身的面板显示。</translation>
     </message>
     <message>
@@ -4329,7 +4388,7 @@ Arm the test move?</source>
         <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>无法读取驱动器状态：%1。请确认驱动器已通电并已连接，以及其节点 ID 是否正确。</translation>
     </message>
     <message>
@@ -4355,6 +4414,54 @@ Arm the test move?</source>
     <message>
         <source>%1 (statusword %2h)</source>
         <translation>%1（状态字 %2h）</translation>
+    </message>
+    <message>
+        <source>a state machine step</source>
+        <translation>状态机步骤</translation>
+    </message>
+    <message>
+        <source>the mode of operation is being changed</source>
+        <translation>正在更改运行模式</translation>
+    </message>
+    <message>
+        <source>The test move needs %1, which the drive does not list as supported (6502h): no test move in %2.</source>
+        <translation>测试运行需要%1，但驱动器未将其列为支持的模式（6502h）：在%2下不进行测试运行。</translation>
+    </message>
+    <message>
+        <source>Mode of operation</source>
+        <translation>运行模式</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; the test move needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驱动器当前为%1；测试运行需要%2：要切换运行模式（6060h = %3）吗？</translation>
+    </message>
+    <message>
+        <source>Test move not armed: the mode of operation stays %1.</source>
+        <translation>未准备测试运行：运行模式保持%1。</translation>
+    </message>
+    <message>
+        <source>Test move armed: holding the “Hold to run” button first switches the mode of operation to %1, then moves; release it to stop.</source>
+        <translation>测试运行已就绪：按住“按住运行”按钮时会先将运行模式切换为%1，然后移动；放开即停止。</translation>
+    </message>
+    <message>
+        <source>The test move is no longer armed (%1): arm it again to move.</source>
+        <translation>测试运行已不再就绪（%1）：需再次准备才能移动。</translation>
+    </message>
+    <message>
+        <source>the test move failed</source>
+        <translation>测试运行失败</translation>
+    </message>
+    <message>
+        <source>the drive faulted</source>
+        <translation>驱动器发生故障</translation>
+    </message>
+    <message>
+        <source>the drive left Operation enabled</source>
+        <translation>驱动器已离开伺服已使能（Operation enabled）</translation>
+    </message>
+    <message>
+        <source>the mode of operation changed</source>
+        <translation>运行模式已更改</translation>
     </message>
 </context>
 <context>
@@ -4742,6 +4849,25 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::IntegerSpinBox</name>
+    <message>
+        <source>Type a number: decimal (31), or hex as 0x1F or 1Fh</source>
+        <translation>请输入数字：十进制 (31)，或十六进制 0x1F 或 1Fh</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number: type it in decimal (31, -5), or in hex as 0x1F or 1Fh</source>
+        <translation>“%1”不是数字：请以十进制 (31, -5) 或十六进制 0x1F 或 1Fh 输入</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number: type it in decimal (31), or in hex as 0x1F or 1Fh</source>
+        <translation>“%1”不是数字：请以十进制 (31) 或十六进制 0x1F 或 1Fh 输入</translation>
+    </message>
+    <message>
+        <source>%1 is out of range: %2 … %3</source>
+        <translation>%1 超出范围：%2 … %3</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
@@ -4932,7 +5058,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
         <translation>系统语言（%1）</translation>
     </message>
     <message>
@@ -4955,13 +5081,174 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::MasterActions</name>
+    <message>
+        <source>&amp;SYNC producer</source>
+        <translation>SYNC 生产者(&amp;S)</translation>
+    </message>
+    <message>
+        <source>SYNC</source>
+        <translation>SYNC</translation>
+    </message>
+    <message>
+        <source>SYNC stopped</source>
+        <translation>SYNC 已停止</translation>
+    </message>
+    <message>
+        <source>Cannot start SYNC: %1</source>
+        <translation>无法启动 SYNC：%1</translation>
+    </message>
+    <message>
+        <source>&amp;Master settings…</source>
+        <translation>主站设置(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>the bus is listen-only</source>
+        <translation>总线为仅监听</translation>
+    </message>
+    <message>
+        <source>no bus is open</source>
+        <translation>没有已打开的总线</translation>
+    </message>
+    <message>
+        <source>SYNC every %1 on %2h</source>
+        <translation>SYNC 每 %1 一次，COB-ID %2h</translation>
+    </message>
+    <message>
+        <source>node %1 (%2)</source>
+        <translation>节点 %1（%2）</translation>
+    </message>
+    <message numerus="yes">
+        <source>1006h = %1 µs written to %n node(s)</source>
+        <translation><numerusform>已将 1006h = %1 µs 写入 %n 个节点</numerusform></translation>
+    </message>
+    <message>
+        <source>1006h not written to %1</source>
+        <translation>1006h 未写入：%1</translation>
+    </message>
+    <message>
+        <source>Cannot start CoScope's heartbeat: %1</source>
+        <translation>无法启动 CoScope 的心跳：%1</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first</source>
+        <translation>请先连接到总线</translation>
+    </message>
+    <message>
+        <source>Listen-only connection: CoScope sends nothing</source>
+        <translation>仅监听连接：CoScope 不发送任何帧</translation>
+    </message>
+    <message>
+        <source>The bus is not open</source>
+        <translation>总线未打开</translation>
+    </message>
+    <message>
+        <source>Start or stop the SYNC producer (Bus ▸ Master settings… sets its period)</source>
+        <translation>启动或停止 SYNC 生产者（周期在“总线 ▸ 主站设置…”中设置）</translation>
+    </message>
+    <message>
+        <source>SYNC stopped: %1</source>
+        <translation>SYNC 已停止：%1</translation>
+    </message>
+    <message>
+        <source>SYNC %1 (%L2)</source>
+        <translation>SYNC %1（%L2）</translation>
+    </message>
+    <message>
+        <source>heartbeat %1</source>
+        <translation>心跳 %1</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::MasterSettings</name>
+    <message>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::MasterSettingsDialog</name>
+    <message>
+        <source>Master settings</source>
+        <translation>主站设置</translation>
+    </message>
+    <message>
+        <source>SYNC producer</source>
+        <translation>SYNC 生产者</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Communication cycle period (1006h): the time between two SYNC messages, to the microsecond</source>
+        <translation>通信循环周期（1006h）：两个 SYNC 报文之间的时间，精确到微秒</translation>
+    </message>
+    <message>
+        <source>Period:</source>
+        <translation>周期：</translation>
+    </message>
+    <message>
+        <source>No counter</source>
+        <translation>无计数器</translation>
+    </message>
+    <message>
+        <source>Synchronous counter overflow value (1019h): 0 = SYNC without data; 2-240 = SYNC carries a counter 1…N</source>
+        <translation>同步计数器溢出值（1019h）：0 = SYNC 不带数据；2-240 = SYNC 带计数器 1…N</translation>
+    </message>
+    <message>
+        <source>Counter overflow (1019h):</source>
+        <translation>计数器溢出值（1019h）：</translation>
+    </message>
+    <message>
+        <source>COB-ID of the SYNC message (1005h), 80h by default; hex as 80h or 0x80</source>
+        <translation>SYNC 报文的 COB-ID（1005h），默认 80h；十六进制写成 80h 或 0x80</translation>
+    </message>
+    <message>
+        <source>COB-ID (1005h):</source>
+        <translation>COB-ID（1005h）：</translation>
+    </message>
+    <message>
+        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <translation>SYNC 启动时将周期写入各节点的 1006h</translation>
+    </message>
+    <message>
+        <source>CoScope's heartbeat</source>
+        <translation>CoScope 的心跳</translation>
+    </message>
+    <message>
+        <source>CoScope sends a heartbeat (700h + node-ID, state Operational) so that drives whose heartbeat consumer (1016h) watches it stop by themselves when CoScope or the cable goes away</source>
+        <translation>CoScope 发送心跳（700h + 节点 ID，状态为操作状态），让以心跳消费者（1016h）监视它的驱动器在 CoScope 或电缆断开时自行停止</translation>
+    </message>
+    <message>
+        <source>Node-ID:</source>
+        <translation>节点 ID：</translation>
+    </message>
+    <message>
+        <source>The counter overflow must be 0 (no counter) or 2-240 (CiA 301, 1019h).</source>
+        <translation>计数器溢出值必须为 0（无计数器）或 2-240（CiA 301，1019h）。</translation>
+    </message>
+    <message>
+        <source>The COB-ID “%1” is not a number (write 80h, 0x80 or 128).</source>
+        <translation>COB-ID“%1”不是数字（请写 80h、0x80 或 128）。</translation>
+    </message>
+    <message>
+        <source>The COB-ID %1h is not an 11-bit CAN-ID (set bit 29 for a 29-bit one).</source>
+        <translation>COB-ID %1h 不是 11 位 CAN-ID（29 位的请设置位 29）。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要更改的项目</translation>
     </message>
     <message>
-        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>节点 ID（设备在总线上的地址，1-127）或波特率（CAN 比特率）。</translation>
     </message>
     <message>
@@ -4993,11 +5280,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
         <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter — none documented for this device</source>
+        <source>The drive's own parameter — none documented for this device</source>
         <translation>驱动器自己的参数——此设备没有相关文档</translation>
     </message>
 </context>
@@ -5180,7 +5467,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
@@ -5192,8 +5479,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;关于此驱动器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
+        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -5212,8 +5499,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它没有重新出现：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;无法运行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style='color:#a40000'&gt;无法运行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -5343,7 +5630,7 @@ What to check: %3</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
         <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
@@ -5534,12 +5821,76 @@ Software version (100Ah): %3</source>
         <translation>检测来源</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the next heartbeat (last known: %1)</source>
-        <translation>总线曾中断：在下一次心跳之前状态未知（最后已知：%1）</translation>
-    </message>
-    <message>
         <source>unknown (gap)</source>
         <translation>未知（中断）</translation>
+    </message>
+    <message>
+        <source>node guarding</source>
+        <translation>节点保护</translation>
+    </message>
+    <message>
+        <source>after our NMT %1 (not confirmed)</source>
+        <translation>在我们发送 NMT %1 之后（未确认）</translation>
+    </message>
+    <message>
+        <source>after NMT %1 by another master (not confirmed)</source>
+        <translation>在另一个主站发送 NMT %1 之后（未确认）</translation>
+    </message>
+    <message>
+        <source>its PDOs</source>
+        <translation>其 PDO</translation>
+    </message>
+    <message>
+        <source>its SDO answers</source>
+        <translation>其 SDO 应答</translation>
+    </message>
+    <message>
+        <source>its EMCY</source>
+        <translation>其紧急报文 (EMCY)</translation>
+    </message>
+    <message>
+        <source>The node sent its boot-up message; after boot-up a node is Pre-operational.</source>
+        <translation>节点发送了启动报文；启动后节点处于预操作状态。</translation>
+    </message>
+    <message>
+        <source>The node's heartbeat says so.</source>
+        <translation>由节点的心跳得知。</translation>
+    </message>
+    <message>
+        <source>The node's answer to node guarding says so.</source>
+        <translation>由节点对节点保护的应答得知。</translation>
+    </message>
+    <message>
+        <source>CoScope sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).</source>
+        <translation>CoScope 发送了 NMT %1；节点尚未确认（没有心跳，也没有能显示其状态的自身帧）。</translation>
+    </message>
+    <message>
+        <source>Another master sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).</source>
+        <translation>另一个主站发送了 NMT %1；节点尚未确认（没有心跳，也没有能显示其状态的自身帧）。</translation>
+    </message>
+    <message>
+        <source>The node sends PDOs, which CiA 301 allows only in Operational.</source>
+        <translation>节点正在发送 PDO，而 CiA 301 只允许在操作状态下发送。</translation>
+    </message>
+    <message>
+        <source>The node answers SDO, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).</source>
+        <translation>节点应答 SDO，而 CiA 301 只允许在预操作状态和操作状态下应答（其 PDO 才能显示是否为操作状态）。</translation>
+    </message>
+    <message>
+        <source>The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).</source>
+        <translation>节点发送紧急报文 (EMCY)，而 CiA 301 只允许在预操作状态和操作状态下发送（其 PDO 才能显示是否为操作状态）。</translation>
+    </message>
+    <message>
+        <source>Nothing seen yet shows the node's state.</source>
+        <translation>目前所见的内容尚无法显示节点的状态。</translation>
+    </message>
+    <message>
+        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <translation>总线中断：在节点的心跳或其自身帧显示状态之前，状态未知（最后已知：%1）</translation>
+    </message>
+    <message>
+        <source>State from</source>
+        <translation>状态来源</translation>
     </message>
 </context>
 <context>
@@ -5557,7 +5908,7 @@ Software version (100Ah): %3</source>
         <translation>仅显示已更改</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
+        <source>Show only the values read from the node that differ from the dictionary's default</source>
         <translation>只显示从节点读取、且与字典默认值不同的值</translation>
     </message>
     <message>
@@ -5657,8 +6008,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;节点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;无字典&lt;/span&gt;</translation>
+        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style='color:#b00020'&gt;无字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -5795,7 +6146,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>没有任何对象可以读取</translation>
     </message>
     <message>
-        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
+        <source>Reading node %1's current values of the %2 candidates in %3…</source>
         <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
@@ -5825,6 +6176,10 @@ SDO 下载 %n 字节：%1</numerusform>
     <message>
         <source> (cancelled)</source>
         <translation> （已取消）</translation>
+    </message>
+    <message>
+        <source>Node %1: not written: %2</source>
+        <translation>节点 %1：未写入：%2</translation>
     </message>
 </context>
 <context>
@@ -5873,11 +6228,11 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
-        <translation>断电后保留：保存驱动器参数（1010h:01 = &quot;save&quot;）</translation>
+        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
+        <translation>断电后保留：保存驱动器参数（1010h:01 = "save"）</translation>
     </message>
     <message>
-        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
+        <source>Start the drive's process data afterwards (NMT start: operational)</source>
         <translation>完成后启动驱动器的过程数据（NMT 启动：操作状态）</translation>
     </message>
     <message>
@@ -5889,7 +6244,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
-        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
+        <source>This drive's dictionary has no 1010h (store parameters)</source>
         <translation>此驱动器的字典没有 1010h（保存参数）</translation>
     </message>
     <message>
@@ -5968,7 +6323,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation> （已关闭：COB-ID 位 31 已设置）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
         <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
@@ -6178,10 +6533,6 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>计时器（事件计时器）：</translation>
     </message>
     <message>
-        <source>CAN-ID (COB-ID, hex):</source>
-        <translation>CAN-ID（COB-ID，十六进制）：</translation>
-    </message>
-    <message>
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
         <translation>此驱动器的 CAN-ID 固定（COB-ID 只读）：无法更改，报文也无法关闭</translation>
     </message>
@@ -6233,6 +6584,10 @@ SDO 下载 %n 字节：%1</numerusform>
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
         <translation>AIMOTOR：同步 PDO 需要主站发送 SYNC。</translation>
     </message>
+    <message>
+        <source>CAN-ID (COB-ID):</source>
+        <translation>CAN-ID (COB-ID)：</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::PdoWizard</name>
@@ -6273,8 +6628,8 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>PDO 映射：节点 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
-        <translation>断电后保留设置：保存所有参数（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
+        <translation>断电后保留设置：保存所有参数（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -6540,7 +6895,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
@@ -6898,11 +7253,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found: the trace is empty</source>
+        <source>'%1' not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found</source>
+        <source>'%1' not found</source>
         <translation>找不到“%1”</translation>
     </message>
     <message>
@@ -6922,7 +7277,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>正在加载…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <source>Click to expand or collapse the transfer's frames</source>
         <translation>单击可展开或折叠此传输的帧</translation>
     </message>
     <message>
@@ -6978,6 +7333,236 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Bus lost at %1, back at %2 (%3 s without frames)</source>
         <translation>总线于 %1 中断，%2 恢复（%3 秒没有帧）</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::TransmitDock</name>
+    <message>
+        <source>Transmit</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>Frame in candump syntax, e.g. 601#4018100100000000, 123#R, 123##1AABB (CAN FD)</source>
+        <translation>candump 语法的帧，例如 601#4018100100000000、123#R、123##1AABB（CAN FD）</translation>
+    </message>
+    <message>
+        <source>every</source>
+        <translation>每</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>一次</translation>
+    </message>
+    <message>
+        <source>Period in ms, to the microsecond (0.5 = 500 µs); empty or 0 = sent once only</source>
+        <translation>周期（ms），精确到微秒（0.5 = 500 µs）；空白或 0 = 只发送一次</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
+        <source>Add the frame to the list without sending it</source>
+        <translation>将帧添加到列表，但不发送</translation>
+    </message>
+    <message>
+        <source>Add and send</source>
+        <translation>添加并发送</translation>
+    </message>
+    <message>
+        <source>Add the frame to the list and send it (Enter)</source>
+        <translation>将帧添加到列表并发送（Enter）</translation>
+    </message>
+    <message>
+        <source>Send selected</source>
+        <translation>发送所选项</translation>
+    </message>
+    <message>
+        <source>Send the selected rows once (Enter in the list)</source>
+        <translation>将所选的行各发送一次（在列表中按 Enter）</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Remove the selected rows (Delete)</source>
+        <translation>移除所选的行（Delete）</translation>
+    </message>
+    <message>
+        <source>Stop all</source>
+        <translation>全部停止</translation>
+    </message>
+    <message>
+        <source>Stop every periodic row</source>
+        <translation>停止所有周期发送的行</translation>
+    </message>
+    <message>
+        <source>Every periodic frame stopped</source>
+        <translation>所有周期帧已停止</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first: the frames below are kept and sent once a bus is open.</source>
+        <translation>请先连接到总线：下列帧会保留，总线打开后即可发送。</translation>
+    </message>
+    <message>
+        <source>Listen-only connection: CoScope sends nothing, so the transmit list is disabled.</source>
+        <translation>仅监听连接：CoScope 不发送任何帧，因此发送列表已停用。</translation>
+    </message>
+    <message>
+        <source>The bus is not open: nothing can be sent now.</source>
+        <translation>总线未打开：目前无法发送。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n periodic frame(s) running</source>
+        <translation><numerusform>%n 个周期帧正在发送</numerusform></translation>
+    </message>
+    <message>
+        <source>Cannot read “%1”: %2</source>
+        <translation>无法解读“%1”：%2</translation>
+    </message>
+    <message>
+        <source>“%1” is not a period in ms (0 = once only, at least 0.1 ms)</source>
+        <translation>“%1”不是以 ms 为单位的周期（0 = 只发送一次，至少 0.1 ms）</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>未发送：%1</translation>
+    </message>
+    <message>
+        <source>Give the row a period (Every, ms) to send it periodically</source>
+        <translation>请为此行设置周期（每，ms）才能周期发送</translation>
+    </message>
+    <message>
+        <source>Cannot send periodically: %1</source>
+        <translation>无法周期发送：%1</translation>
+    </message>
+    <message>
+        <source>It is RPDO%1 of node %2, which carries %3: it can make the motor move.</source>
+        <translation>这是节点 %2 的 RPDO%1，其中带有 %3：可能使电机运转。</translation>
+    </message>
+    <message>
+        <source>It is RPDO%1 of node %2, a drive whose mapping CoScope does not know: it can make the motor move.</source>
+        <translation>这是节点 %2 的 RPDO%1，此驱动器的映射 CoScope 不知道：可能使电机运转。</translation>
+    </message>
+    <message>
+        <source>Send a motion command?</source>
+        <translation>要发送运动命令吗？</translation>
+    </message>
+    <message>
+        <source>%1
+
+Send %2%3?</source>
+        <translation>%1
+
+要发送 %2%3 吗？</translation>
+    </message>
+    <message>
+        <source> every %1 ms</source>
+        <translation>（每 %1 ms）</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::TransmitModel</name>
+    <message>
+        <source>Send every %1 ms while checked</source>
+        <translation>勾选时每 %1 ms 发送一次</translation>
+    </message>
+    <message>
+        <source>(remote)</source>
+        <translation>（远程）</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>一次</translation>
+    </message>
+    <message>
+        <source>Periodic sending on or off</source>
+        <translation>开启或关闭周期发送</translation>
+    </message>
+    <message>
+        <source>CAN identifier in hex (601, 601h or 0x601)</source>
+        <translation>十六进制的 CAN 标识符（601、601h 或 0x601）</translation>
+    </message>
+    <message>
+        <source>Data bytes in hex (40 18 10 01)</source>
+        <translation>十六进制的数据字节（40 18 10 01）</translation>
+    </message>
+    <message>
+        <source>Period in ms, to the microsecond (0.5 = 500 µs); 0 = sent once only</source>
+        <translation>周期（ms），精确到微秒（0.5 = 500 µs）；0 = 只发送一次</translation>
+    </message>
+    <message>
+        <source>Periodic</source>
+        <translation>周期</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>29-bit</source>
+        <translation>29 位</translation>
+    </message>
+    <message>
+        <source>RTR</source>
+        <translation>RTR</translation>
+    </message>
+    <message>
+        <source>FD</source>
+        <translation>FD</translation>
+    </message>
+    <message>
+        <source>BRS</source>
+        <translation>BRS</translation>
+    </message>
+    <message>
+        <source>DLC</source>
+        <translation>DLC</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>数据</translation>
+    </message>
+    <message>
+        <source>Every (ms)</source>
+        <translation>每（ms）</translation>
+    </message>
+    <message>
+        <source>Sent</source>
+        <translation>已发送</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>ID %1h needs 29 bits</source>
+        <translation>ID %1h 需要 29 位</translation>
+    </message>
+    <message>
+        <source>CAN FD has no remote frames</source>
+        <translation>CAN FD 没有远程帧</translation>
+    </message>
+    <message>
+        <source>“%1” is not a CAN identifier (hex, up to 1FFFFFFFh)</source>
+        <translation>“%1”不是 CAN 标识符（十六进制，最大 1FFFFFFFh）</translation>
+    </message>
+    <message>
+        <source>DLC must be a valid length of 0-%1 bytes</source>
+        <translation>DLC 必须是 0-%1 字节的有效长度</translation>
+    </message>
+    <message>
+        <source>“%1” is not up to %2 hex bytes</source>
+        <translation>“%1”不是最多 %2 个十六进制字节</translation>
+    </message>
+    <message>
+        <source>“%1” is not a period in ms (0 = once only, at least 0.1 ms)</source>
+        <translation>“%1”不是以 ms 为单位的周期（0 = 只发送一次，至少 0.1 ms）</translation>
     </message>
 </context>
 <context>
@@ -7037,6 +7622,22 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>
             <numerusform>丢失 %n 帧（接收队列已满），累计 %1 帧</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>node %1 axis %2</source>
+        <translation>节点 %1 轴 %2</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Disable voltage (6040h = 0000h) sent to %1 before the bus closed, and seen on the bus</source>
+        <translation>总线关闭前已向%1发送断开电压（Disable voltage，6040h = 0000h），并在总线上看到该帧</translation>
+    </message>
+    <message>
+        <source>%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.</source>
+        <translation>%1 可能仍处于使能状态：总线关闭前未在总线上看到其断开电压（Disable voltage，6040h = 0000h）帧（%2）。请检查驱动器。</translation>
     </message>
 </context>
 </TS>

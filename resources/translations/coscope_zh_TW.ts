@@ -1056,7 +1056,7 @@
         <translation>節點 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
+        <source>Reopen the adapter at %1, the device's new bit rate</source>
         <translation>以裝置的新鮑率 %1 重新開啟轉接器</translation>
     </message>
     <message>
@@ -1136,8 +1136,8 @@
         <translation>將新的節點 ID %1 寫入 %2 [物件為推定]（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
+        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1212,8 +1212,8 @@
         <translation>寫入 %1 = %2h：鮑率 %3（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>儲存參數（儲存參數，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters (store parameters, 1010h "save")</source>
+        <translation>儲存參數（儲存參數，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1280,11 +1280,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
         <translation>沒有裝置以此識別資料回應 LSS。請確認驅動器支援 LSS（CiA 305）；若不支援，請改用它自己的參數（廠商方式）或廠商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
         <translation>裝置拒絕了這個值。請確認它支援此值（見手冊的節點 ID 範圍／鮑率）。</translation>
     </message>
     <message>
@@ -1308,7 +1308,7 @@
         <translation>無法全部恢復（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
         <translation>Delta ASDA-A2 手冊 §1.3.1，P3-00（「●」：重新上電後生效）</translation>
     </message>
     <message>
@@ -2681,12 +2681,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
         <translation>——廠商異警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
         <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
     </message>
 </context>
@@ -2710,6 +2710,69 @@
     <message>
         <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
         <translation>DEXMART DEV 沒有 CiA 402 狀態機：它的兩台馬達是透過 Multi-Drive 物件（3051h/3052h）控制。請改用物件字典面板。</translation>
+    </message>
+</context>
+<context>
+    <name>EnabledDrivesQuestion</name>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and quit?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並結束嗎？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and quit?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並結束嗎？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and disconnect?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並中斷連線嗎？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and disconnect?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並中斷連線嗎？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and connect anew?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並重新連線嗎？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and connect anew?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並重新連線嗎？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope: disable it and open the log?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並開啟記錄檔嗎？</translation>
+    </message>
+    <message>
+        <source>Nodes %1 are enabled by CoScope: disable them and open the log?</source>
+        <translation>節點 %1 由 CoScope 致能中：要將其停用並開啟記錄檔嗎？</translation>
+    </message>
+    <message>
+        <source>%1 (axis %2)</source>
+        <translation>%1（軸 %2）</translation>
+    </message>
+    <message>
+        <source>Drive enabled</source>
+        <translation>驅動器致能中</translation>
+    </message>
+    <message>
+        <source>CoScope sends Disable voltage (6040h = 0000h; Quick stop first to a drive that may be moving) and waits to see it on the bus before the connection closes. Cancel leaves everything as it is.</source>
+        <translation>CoScope 會送出切斷電壓（Disable voltage，6040h = 0000h；可能在移動的驅動器先送快速停止（Quick Stop）），並在連線關閉前等待在匯流排上看到該訊框。取消則一切維持原狀。</translation>
+    </message>
+    <message>
+        <source>Disable and quit</source>
+        <translation>停用並結束</translation>
+    </message>
+    <message>
+        <source>Disable and disconnect</source>
+        <translation>停用並中斷連線</translation>
+    </message>
+    <message>
+        <source>Disable and connect</source>
+        <translation>停用並連線</translation>
+    </message>
+    <message>
+        <source>Disable and open the log</source>
+        <translation>停用並開啟記錄檔</translation>
     </message>
 </context>
 <context>
@@ -2989,7 +3052,7 @@
         <translation>%1：未知的記錄檔格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
+        <source>%1: cannot write format '%2'</source>
         <translation>%1：無法寫入格式「%2」</translation>
     </message>
 </context>
@@ -3078,7 +3141,7 @@ Differs from the default</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
     </message>
     <message>
@@ -3106,7 +3169,7 @@ Differs from the default</source>
         <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
         <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
     </message>
     <message>
@@ -3134,7 +3197,7 @@ Differs from the default</source>
         <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <source>Look up abort code 0x%1 in the drive's manual.</source>
         <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
     </message>
     <message>
@@ -3233,7 +3296,7 @@ Differs from the default</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
         <translation>SDO 讀取 節點 %1 %2</translation>
     </message>
     <message>
@@ -3262,39 +3325,39 @@ Differs from the default</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
         <translation>（%1，%2 位元組，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <source>filter: '%1' is not a node-ID (0-127)</source>
         <translation>篩選：「%1」不是節點 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
         <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
         <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -3309,7 +3372,7 @@ Differs from the default</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding &apos;%1&apos;</source>
+        <source>Finding '%1'</source>
         <translation>正在尋找「%1」</translation>
     </message>
 </context>
@@ -3382,7 +3445,7 @@ Differs from the default</source>
         <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
     </message>
     <message>
@@ -3890,7 +3953,7 @@ Differs from the default</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move&apos;s motion shows here</source>
+        <source>The test move's motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
@@ -4041,10 +4104,6 @@ Differs from the default</source>
         <translation>連線已變更。請重新選擇驅動器。</translation>
     </message>
     <message>
-        <source>application quits</source>
-        <translation>應用程式結束</translation>
-    </message>
-    <message>
         <source>Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h).</source>
         <translation>僅監聽連線：此精靈必須傳送（對 6040h/6041h 的 SDO），因此已停用。</translation>
     </message>
@@ -4077,7 +4136,7 @@ Differs from the default</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
         <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -4129,7 +4188,7 @@ Differs from the default</source>
         <translation>精靈已關閉</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
         <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
@@ -4329,7 +4388,7 @@ Arm the test move?</source>
         <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
@@ -4355,6 +4414,54 @@ Arm the test move?</source>
     <message>
         <source>%1 (statusword %2h)</source>
         <translation>%1（狀態字元 %2h）</translation>
+    </message>
+    <message>
+        <source>a state machine step</source>
+        <translation>狀態機步驟</translation>
+    </message>
+    <message>
+        <source>the mode of operation is being changed</source>
+        <translation>正在變更操作模式</translation>
+    </message>
+    <message>
+        <source>The test move needs %1, which the drive does not list as supported (6502h): no test move in %2.</source>
+        <translation>測試運轉需要%1，但驅動器未將其列為支援的模式（6502h）：在%2下不進行測試運轉。</translation>
+    </message>
+    <message>
+        <source>Mode of operation</source>
+        <translation>操作模式</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; the test move needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驅動器目前為%1；測試運轉需要%2：要切換操作模式（6060h = %3）嗎？</translation>
+    </message>
+    <message>
+        <source>Test move not armed: the mode of operation stays %1.</source>
+        <translation>未準備測試運轉：操作模式維持%1。</translation>
+    </message>
+    <message>
+        <source>Test move armed: holding the “Hold to run” button first switches the mode of operation to %1, then moves; release it to stop.</source>
+        <translation>測試運轉已就緒：按住「按住運轉」按鈕時會先將操作模式切換為%1，然後移動；放開即停止。</translation>
+    </message>
+    <message>
+        <source>The test move is no longer armed (%1): arm it again to move.</source>
+        <translation>測試運轉已不再就緒（%1）：需再次準備才能移動。</translation>
+    </message>
+    <message>
+        <source>the test move failed</source>
+        <translation>測試運轉失敗</translation>
+    </message>
+    <message>
+        <source>the drive faulted</source>
+        <translation>驅動器發生故障</translation>
+    </message>
+    <message>
+        <source>the drive left Operation enabled</source>
+        <translation>驅動器已離開運轉致能（Operation enabled）</translation>
+    </message>
+    <message>
+        <source>the mode of operation changed</source>
+        <translation>操作模式已變更</translation>
     </message>
 </context>
 <context>
@@ -4742,6 +4849,25 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::IntegerSpinBox</name>
+    <message>
+        <source>Type a number: decimal (31), or hex as 0x1F or 1Fh</source>
+        <translation>請輸入數字：十進位 (31)，或十六進位 0x1F 或 1Fh</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number: type it in decimal (31, -5), or in hex as 0x1F or 1Fh</source>
+        <translation>「%1」不是數字：請以十進位 (31, -5) 或十六進位 0x1F 或 1Fh 輸入</translation>
+    </message>
+    <message>
+        <source>“%1” is not a number: type it in decimal (31), or in hex as 0x1F or 1Fh</source>
+        <translation>「%1」不是數字：請以十進位 (31) 或十六進位 0x1F 或 1Fh 輸入</translation>
+    </message>
+    <message>
+        <source>%1 is out of range: %2 … %3</source>
+        <translation>%1 超出範圍：%2 … %3</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::JournalOfferBar</name>
     <message>
         <source>Unclosed capture</source>
@@ -4932,7 +5058,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
         <translation>系統語言（%1）</translation>
     </message>
     <message>
@@ -4955,13 +5081,174 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::MasterActions</name>
+    <message>
+        <source>&amp;SYNC producer</source>
+        <translation>SYNC 生產者(&amp;S)</translation>
+    </message>
+    <message>
+        <source>SYNC</source>
+        <translation>SYNC</translation>
+    </message>
+    <message>
+        <source>SYNC stopped</source>
+        <translation>SYNC 已停止</translation>
+    </message>
+    <message>
+        <source>Cannot start SYNC: %1</source>
+        <translation>無法啟動 SYNC：%1</translation>
+    </message>
+    <message>
+        <source>&amp;Master settings…</source>
+        <translation>主站設定(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>the bus is listen-only</source>
+        <translation>總線為僅監聽</translation>
+    </message>
+    <message>
+        <source>no bus is open</source>
+        <translation>沒有已開啟的總線</translation>
+    </message>
+    <message>
+        <source>SYNC every %1 on %2h</source>
+        <translation>SYNC 每 %1 一次，COB-ID %2h</translation>
+    </message>
+    <message>
+        <source>node %1 (%2)</source>
+        <translation>節點 %1（%2）</translation>
+    </message>
+    <message numerus="yes">
+        <source>1006h = %1 µs written to %n node(s)</source>
+        <translation><numerusform>已將 1006h = %1 µs 寫入 %n 個節點</numerusform></translation>
+    </message>
+    <message>
+        <source>1006h not written to %1</source>
+        <translation>1006h 未寫入：%1</translation>
+    </message>
+    <message>
+        <source>Cannot start CoScope's heartbeat: %1</source>
+        <translation>無法啟動 CoScope 的心跳：%1</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first</source>
+        <translation>請先連線到總線</translation>
+    </message>
+    <message>
+        <source>Listen-only connection: CoScope sends nothing</source>
+        <translation>僅監聽連線：CoScope 不發送任何封包</translation>
+    </message>
+    <message>
+        <source>The bus is not open</source>
+        <translation>總線未開啟</translation>
+    </message>
+    <message>
+        <source>Start or stop the SYNC producer (Bus ▸ Master settings… sets its period)</source>
+        <translation>啟動或停止 SYNC 生產者（週期在「總線 ▸ 主站設定…」中設定）</translation>
+    </message>
+    <message>
+        <source>SYNC stopped: %1</source>
+        <translation>SYNC 已停止：%1</translation>
+    </message>
+    <message>
+        <source>SYNC %1 (%L2)</source>
+        <translation>SYNC %1（%L2）</translation>
+    </message>
+    <message>
+        <source>heartbeat %1</source>
+        <translation>心跳 %1</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::MasterSettings</name>
+    <message>
+        <source>%1 µs</source>
+        <translation>%1 µs</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::MasterSettingsDialog</name>
+    <message>
+        <source>Master settings</source>
+        <translation>主站設定</translation>
+    </message>
+    <message>
+        <source>SYNC producer</source>
+        <translation>SYNC 生產者</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Communication cycle period (1006h): the time between two SYNC messages, to the microsecond</source>
+        <translation>通訊循環週期（1006h）：兩個 SYNC 報文之間的時間，精確到微秒</translation>
+    </message>
+    <message>
+        <source>Period:</source>
+        <translation>週期：</translation>
+    </message>
+    <message>
+        <source>No counter</source>
+        <translation>無計數器</translation>
+    </message>
+    <message>
+        <source>Synchronous counter overflow value (1019h): 0 = SYNC without data; 2-240 = SYNC carries a counter 1…N</source>
+        <translation>同步計數器溢位值（1019h）：0 = SYNC 不帶資料；2-240 = SYNC 帶計數器 1…N</translation>
+    </message>
+    <message>
+        <source>Counter overflow (1019h):</source>
+        <translation>計數器溢位值（1019h）：</translation>
+    </message>
+    <message>
+        <source>COB-ID of the SYNC message (1005h), 80h by default; hex as 80h or 0x80</source>
+        <translation>SYNC 報文的 COB-ID（1005h），預設 80h；十六進位寫成 80h 或 0x80</translation>
+    </message>
+    <message>
+        <source>COB-ID (1005h):</source>
+        <translation>COB-ID（1005h）：</translation>
+    </message>
+    <message>
+        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <translation>SYNC 啟動時將週期寫入各節點的 1006h</translation>
+    </message>
+    <message>
+        <source>CoScope's heartbeat</source>
+        <translation>CoScope 的心跳</translation>
+    </message>
+    <message>
+        <source>CoScope sends a heartbeat (700h + node-ID, state Operational) so that drives whose heartbeat consumer (1016h) watches it stop by themselves when CoScope or the cable goes away</source>
+        <translation>CoScope 發送心跳（700h + 節點 ID，狀態為操作狀態），讓以心跳消費者（1016h）監看它的驅動器在 CoScope 或纜線中斷時自行停止</translation>
+    </message>
+    <message>
+        <source>Node-ID:</source>
+        <translation>節點 ID：</translation>
+    </message>
+    <message>
+        <source>The counter overflow must be 0 (no counter) or 2-240 (CiA 301, 1019h).</source>
+        <translation>計數器溢位值必須為 0（無計數器）或 2-240（CiA 301，1019h）。</translation>
+    </message>
+    <message>
+        <source>The COB-ID “%1” is not a number (write 80h, 0x80 or 128).</source>
+        <translation>COB-ID「%1」不是數字（請寫 80h、0x80 或 128）。</translation>
+    </message>
+    <message>
+        <source>The COB-ID %1h is not an 11-bit CAN-ID (set bit 29 for a 29-bit one).</source>
+        <translation>COB-ID %1h 不是 11 位元 CAN-ID（29 位元的請設定位元 29）。</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::NodeIdChangePage</name>
     <message>
         <source>What to change</source>
         <translation>要變更的項目</translation>
     </message>
     <message>
-        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
@@ -4993,11 +5280,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
         <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter — none documented for this device</source>
+        <source>The drive's own parameter — none documented for this device</source>
         <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
@@ -5180,7 +5467,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
@@ -5192,8 +5479,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style='color:#a40000'&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -5212,8 +5499,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style='color:#a40000'&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -5343,7 +5630,7 @@ What to check: %3</source>
         <translation>請先連線到總線</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
         <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
@@ -5534,12 +5821,76 @@ Software version (100Ah): %3</source>
         <translation>偵測來源</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the next heartbeat (last known: %1)</source>
-        <translation>總線曾中斷：在下一次心跳之前狀態未知（最後已知：%1）</translation>
-    </message>
-    <message>
         <source>unknown (gap)</source>
         <translation>未知（中斷）</translation>
+    </message>
+    <message>
+        <source>node guarding</source>
+        <translation>節點保護</translation>
+    </message>
+    <message>
+        <source>after our NMT %1 (not confirmed)</source>
+        <translation>在我們送出 NMT %1 之後（未確認）</translation>
+    </message>
+    <message>
+        <source>after NMT %1 by another master (not confirmed)</source>
+        <translation>在另一個主站送出 NMT %1 之後（未確認）</translation>
+    </message>
+    <message>
+        <source>its PDOs</source>
+        <translation>其 PDO</translation>
+    </message>
+    <message>
+        <source>its SDO answers</source>
+        <translation>其 SDO 回應</translation>
+    </message>
+    <message>
+        <source>its EMCY</source>
+        <translation>其緊急報文 (EMCY)</translation>
+    </message>
+    <message>
+        <source>The node sent its boot-up message; after boot-up a node is Pre-operational.</source>
+        <translation>節點送出了上線報文；上線後節點處於預操作狀態。</translation>
+    </message>
+    <message>
+        <source>The node's heartbeat says so.</source>
+        <translation>由節點的心跳得知。</translation>
+    </message>
+    <message>
+        <source>The node's answer to node guarding says so.</source>
+        <translation>由節點對節點保護的回應得知。</translation>
+    </message>
+    <message>
+        <source>CoScope sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).</source>
+        <translation>CoScope 送出了 NMT %1；節點尚未確認（沒有心跳，也沒有能顯示其狀態的自身封包）。</translation>
+    </message>
+    <message>
+        <source>Another master sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).</source>
+        <translation>另一個主站送出了 NMT %1；節點尚未確認（沒有心跳，也沒有能顯示其狀態的自身封包）。</translation>
+    </message>
+    <message>
+        <source>The node sends PDOs, which CiA 301 allows only in Operational.</source>
+        <translation>節點正在送出 PDO，而 CiA 301 只允許在操作狀態下送出。</translation>
+    </message>
+    <message>
+        <source>The node answers SDO, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).</source>
+        <translation>節點回應 SDO，而 CiA 301 只允許在預操作狀態與操作狀態下回應（其 PDO 才能顯示是否為操作狀態）。</translation>
+    </message>
+    <message>
+        <source>The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).</source>
+        <translation>節點送出緊急報文 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
+    </message>
+    <message>
+        <source>Nothing seen yet shows the node's state.</source>
+        <translation>目前所見的內容尚無法顯示節點的狀態。</translation>
+    </message>
+    <message>
+        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <translation>匯流排中斷：在節點的心跳或其自身封包顯示狀態之前，狀態未知（最後已知：%1）</translation>
+    </message>
+    <message>
+        <source>State from</source>
+        <translation>狀態來源</translation>
     </message>
 </context>
 <context>
@@ -5557,7 +5908,7 @@ Software version (100Ah): %3</source>
         <translation>僅顯示已變更</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
+        <source>Show only the values read from the node that differ from the dictionary's default</source>
         <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
@@ -5657,8 +6008,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
+        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style='color:#b00020'&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -5795,7 +6146,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
-        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
+        <source>Reading node %1's current values of the %2 candidates in %3…</source>
         <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
@@ -5825,6 +6176,10 @@ SDO 下載 %n 位元組：%1</numerusform>
     <message>
         <source> (cancelled)</source>
         <translation> （已取消）</translation>
+    </message>
+    <message>
+        <source>Node %1: not written: %2</source>
+        <translation>節點 %1：未寫入：%2</translation>
     </message>
 </context>
 <context>
@@ -5873,11 +6228,11 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
-        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
+        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = "save"）</translation>
     </message>
     <message>
-        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
+        <source>Start the drive's process data afterwards (NMT start: operational)</source>
         <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
@@ -5889,7 +6244,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
-        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
+        <source>This drive's dictionary has no 1010h (store parameters)</source>
         <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
@@ -5968,7 +6323,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
         <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
@@ -6178,10 +6533,6 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>計時器（事件計時器）：</translation>
     </message>
     <message>
-        <source>CAN-ID (COB-ID, hex):</source>
-        <translation>CAN-ID（COB-ID，十六進位）：</translation>
-    </message>
-    <message>
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
         <translation>此驅動器的 CAN-ID 固定（COB-ID 唯讀）：無法變更，報文也無法關閉</translation>
     </message>
@@ -6233,6 +6584,10 @@ SDO 下載 %n 位元組：%1</numerusform>
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
         <translation>AIMOTOR：同步 PDO 需要主站送出 SYNC。</translation>
     </message>
+    <message>
+        <source>CAN-ID (COB-ID):</source>
+        <translation>CAN-ID (COB-ID)：</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::PdoWizard</name>
@@ -6273,8 +6628,8 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
-        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -6540,7 +6895,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
@@ -6898,11 +7253,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found: the trace is empty</source>
+        <source>'%1' not found: the trace is empty</source>
         <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found</source>
+        <source>'%1' not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>
@@ -6922,7 +7277,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>載入中…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <source>Click to expand or collapse the transfer's frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
     </message>
     <message>
@@ -6978,6 +7333,236 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Bus lost at %1, back at %2 (%3 s without frames)</source>
         <translation>總線於 %1 中斷，%2 恢復（%3 秒沒有封包）</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::TransmitDock</name>
+    <message>
+        <source>Transmit</source>
+        <translation>發送</translation>
+    </message>
+    <message>
+        <source>Frame in candump syntax, e.g. 601#4018100100000000, 123#R, 123##1AABB (CAN FD)</source>
+        <translation>candump 語法的封包，例如 601#4018100100000000、123#R、123##1AABB（CAN FD）</translation>
+    </message>
+    <message>
+        <source>every</source>
+        <translation>每</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>一次</translation>
+    </message>
+    <message>
+        <source>Period in ms, to the microsecond (0.5 = 500 µs); empty or 0 = sent once only</source>
+        <translation>週期（ms），精確到微秒（0.5 = 500 µs）；空白或 0 = 只發送一次</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>加入</translation>
+    </message>
+    <message>
+        <source>Add the frame to the list without sending it</source>
+        <translation>將封包加入清單，但不發送</translation>
+    </message>
+    <message>
+        <source>Add and send</source>
+        <translation>加入並發送</translation>
+    </message>
+    <message>
+        <source>Add the frame to the list and send it (Enter)</source>
+        <translation>將封包加入清單並發送（Enter）</translation>
+    </message>
+    <message>
+        <source>Send selected</source>
+        <translation>發送選取項</translation>
+    </message>
+    <message>
+        <source>Send the selected rows once (Enter in the list)</source>
+        <translation>將選取的列各發送一次（在清單中按 Enter）</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>移除</translation>
+    </message>
+    <message>
+        <source>Remove the selected rows (Delete)</source>
+        <translation>移除選取的列（Delete）</translation>
+    </message>
+    <message>
+        <source>Stop all</source>
+        <translation>全部停止</translation>
+    </message>
+    <message>
+        <source>Stop every periodic row</source>
+        <translation>停止所有週期發送的列</translation>
+    </message>
+    <message>
+        <source>Every periodic frame stopped</source>
+        <translation>所有週期封包已停止</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first: the frames below are kept and sent once a bus is open.</source>
+        <translation>請先連線到總線：下列封包會保留，總線開啟後即可發送。</translation>
+    </message>
+    <message>
+        <source>Listen-only connection: CoScope sends nothing, so the transmit list is disabled.</source>
+        <translation>僅監聽連線：CoScope 不發送任何封包，因此發送清單已停用。</translation>
+    </message>
+    <message>
+        <source>The bus is not open: nothing can be sent now.</source>
+        <translation>總線未開啟：目前無法發送。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n periodic frame(s) running</source>
+        <translation><numerusform>%n 個週期封包正在發送</numerusform></translation>
+    </message>
+    <message>
+        <source>Cannot read “%1”: %2</source>
+        <translation>無法解讀「%1」：%2</translation>
+    </message>
+    <message>
+        <source>“%1” is not a period in ms (0 = once only, at least 0.1 ms)</source>
+        <translation>「%1」不是以 ms 為單位的週期（0 = 只發送一次，至少 0.1 ms）</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>未發送：%1</translation>
+    </message>
+    <message>
+        <source>Give the row a period (Every, ms) to send it periodically</source>
+        <translation>請為此列設定週期（每，ms）才能週期發送</translation>
+    </message>
+    <message>
+        <source>Cannot send periodically: %1</source>
+        <translation>無法週期發送：%1</translation>
+    </message>
+    <message>
+        <source>It is RPDO%1 of node %2, which carries %3: it can make the motor move.</source>
+        <translation>這是節點 %2 的 RPDO%1，其中帶有 %3：可能使馬達運轉。</translation>
+    </message>
+    <message>
+        <source>It is RPDO%1 of node %2, a drive whose mapping CoScope does not know: it can make the motor move.</source>
+        <translation>這是節點 %2 的 RPDO%1，此驅動器的映射 CoScope 不知道：可能使馬達運轉。</translation>
+    </message>
+    <message>
+        <source>Send a motion command?</source>
+        <translation>要發送運動命令嗎？</translation>
+    </message>
+    <message>
+        <source>%1
+
+Send %2%3?</source>
+        <translation>%1
+
+要發送 %2%3 嗎？</translation>
+    </message>
+    <message>
+        <source> every %1 ms</source>
+        <translation>（每 %1 ms）</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::TransmitModel</name>
+    <message>
+        <source>Send every %1 ms while checked</source>
+        <translation>勾選時每 %1 ms 發送一次</translation>
+    </message>
+    <message>
+        <source>(remote)</source>
+        <translation>（遠端）</translation>
+    </message>
+    <message>
+        <source>once</source>
+        <translation>一次</translation>
+    </message>
+    <message>
+        <source>Periodic sending on or off</source>
+        <translation>開啟或關閉週期發送</translation>
+    </message>
+    <message>
+        <source>CAN identifier in hex (601, 601h or 0x601)</source>
+        <translation>十六進位的 CAN 識別碼（601、601h 或 0x601）</translation>
+    </message>
+    <message>
+        <source>Data bytes in hex (40 18 10 01)</source>
+        <translation>十六進位的資料位元組（40 18 10 01）</translation>
+    </message>
+    <message>
+        <source>Period in ms, to the microsecond (0.5 = 500 µs); 0 = sent once only</source>
+        <translation>週期（ms），精確到微秒（0.5 = 500 µs）；0 = 只發送一次</translation>
+    </message>
+    <message>
+        <source>Periodic</source>
+        <translation>週期</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>29-bit</source>
+        <translation>29 位元</translation>
+    </message>
+    <message>
+        <source>RTR</source>
+        <translation>RTR</translation>
+    </message>
+    <message>
+        <source>FD</source>
+        <translation>FD</translation>
+    </message>
+    <message>
+        <source>BRS</source>
+        <translation>BRS</translation>
+    </message>
+    <message>
+        <source>DLC</source>
+        <translation>DLC</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>資料</translation>
+    </message>
+    <message>
+        <source>Every (ms)</source>
+        <translation>每（ms）</translation>
+    </message>
+    <message>
+        <source>Sent</source>
+        <translation>已發送</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>備註</translation>
+    </message>
+    <message>
+        <source>ID %1h needs 29 bits</source>
+        <translation>ID %1h 需要 29 位元</translation>
+    </message>
+    <message>
+        <source>CAN FD has no remote frames</source>
+        <translation>CAN FD 沒有遠端封包</translation>
+    </message>
+    <message>
+        <source>“%1” is not a CAN identifier (hex, up to 1FFFFFFFh)</source>
+        <translation>「%1」不是 CAN 識別碼（十六進位，最大 1FFFFFFFh）</translation>
+    </message>
+    <message>
+        <source>DLC must be a valid length of 0-%1 bytes</source>
+        <translation>DLC 必須是 0-%1 位元組的有效長度</translation>
+    </message>
+    <message>
+        <source>“%1” is not up to %2 hex bytes</source>
+        <translation>「%1」不是最多 %2 個十六進位位元組</translation>
+    </message>
+    <message>
+        <source>“%1” is not a period in ms (0 = once only, at least 0.1 ms)</source>
+        <translation>「%1」不是以 ms 為單位的週期（0 = 只發送一次，至少 0.1 ms）</translation>
     </message>
 </context>
 <context>
@@ -7037,6 +7622,22 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>
             <numerusform>丟失 %n 個封包（接收佇列已滿），累計 %1 個</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>node %1 axis %2</source>
+        <translation>節點 %1 軸 %2</translation>
+    </message>
+    <message>
+        <source>node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>Disable voltage (6040h = 0000h) sent to %1 before the bus closed, and seen on the bus</source>
+        <translation>匯流排關閉前已向%1送出切斷電壓（Disable voltage，6040h = 0000h），並在匯流排上看到該訊框</translation>
+    </message>
+    <message>
+        <source>%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.</source>
+        <translation>%1 可能仍在致能狀態：匯流排關閉前未在匯流排上看到其切斷電壓（Disable voltage，6040h = 0000h）訊框（%2）。請檢查驅動器。</translation>
     </message>
 </context>
 </TS>

@@ -5,6 +5,7 @@
 #include "app/gui/master/TransmitModel.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/BusMaster.h"
+#include "core/canopen/MasterContext.h"
 #include "core/canopen/RpdoMotion.h"
 #include "eds/DictionaryLibrary.h"
 
@@ -230,7 +231,28 @@ bool TransmitDock::confirmMotion(int row) {
     }
     spdlog::info("transmit: the user allowed {} (RPDO{} of node {}, motion)", key.toStdString(), aimed->number, aimed->node);
     confirmed_.insert(key);
+    noteControlword(e.frame, *aimed, dictionaries.count(aimed->node) ? dictionaries[aimed->node].get() : nullptr);
     return true;
+}
+
+// The controlword a frame carries to a drive goes into the bus's record of drives CoScope enabled
+// (EnabledDrives), so that whatever closes the bus disables the drive first. With the mapping
+// unknown the drive is taken as enabled (it may be).
+void TransmitDock::noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed, const od::ObjectDictionary* dictionary) {
+    canopen::MasterContext* master = workspace_->master();
+    if (!master) return;
+    if (!aimed.mappingKnown || !dictionary) return master->enabledDrives().noteControlword(aimed.node, 0, 0x000F);
+    const auto layout = canopen::rpdoLayout(*dictionary, aimed.node, aimed.number);
+    if (!layout) return;
+    int offset = 0;
+    for (const canopen::PdoMapEntry& m : layout->entries) {
+        const bool controlword = m.index >= 0x6000 && (m.index - 0x6000) % 0x800 == 0x40 && m.sub == 0 && m.bits == 16;
+        if (controlword && offset % 8 == 0 && offset / 8 + 2 <= frame.payloadSize()) {
+            const auto cw = static_cast<uint16_t>(frame.data[size_t(offset / 8)] | (frame.data[size_t(offset / 8 + 1)] << 8));
+            if (canopen::EnabledDrives::enablesVoltage(cw)) master->enabledDrives().noteControlword(aimed.node, (m.index - 0x6000) / 0x800, cw);
+        }
+        offset += m.bits;
+    }
 }
 
 void TransmitDock::showError(const QString& text) {

@@ -10,6 +10,16 @@ class QLineEdit;
 class QPushButton;
 class QTableView;
 
+namespace coscope {
+struct CanFrame;
+}
+namespace coscope::od {
+class ObjectDictionary;
+}
+namespace coscope::canopen {
+struct RpdoAddress;
+}
+
 namespace coscope::gui {
 
 class TransmitModel;
@@ -51,6 +61,7 @@ private:
     QList<int> selectedRows() const;
     // Motion (see class comment): true when the row may go out; asks once per row.
     bool confirmMotion(int row);
+    void noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed, const od::ObjectDictionary* dictionary);
     void showError(const QString& text);
 
     Workspace* workspace_;
