@@ -73,6 +73,10 @@ void SocketcandBus::fail(const QString& message) {
 
 void SocketcandBus::onConnected() {
     phase_ = Phase::WaitHi;
+    // Each "< send >" goes out at once (TCP_NODELAY): with Nagle a frame waits for the server's
+    // delayed ACK of the previous one, and periodic frames (SYNC at 10 ms) arrive in pairs,
+    // up to 40 ms late (issue 35, measured by tests/bench/bench_master_jitter).
+    socket_->setSocketOption(QAbstractSocket::LowDelayOption, 1);
     spdlog::debug("socketcand: connected to {}", where().toStdString());
 }
 
