@@ -4,8 +4,9 @@
 // --period 10ms --duration 3` produces and the frame `coscope-cli send ... --every 10ms
 // --duration 3` repeats (both at once, as two masters would), with the timestamps the server
 // gives each frame, and reports their mean period and p99 jitter. The mean must be within 2 % of
-// 10 ms; the p99 bound (4 ms) is loose for a loaded CI host (DESIGN.md's 1 ms budget on an idle
-// machine is checked by tests/bench/bench_master_jitter).
+// 10 ms; the p99 bound (6 ms) is loose for a loaded CI host, yet frames sent in pairs or skipped
+// exceed it (10 ms). DESIGN.md's 1 ms budget on an idle machine is for
+// tests/bench/bench_master_jitter.
 #include "tests/PythonCan.h"
 
 #include <QElapsedTimer>
@@ -93,6 +94,7 @@ private slots:
         script.close();
         QProcess observer;
         observer.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QStringLiteral("6"), QStringLiteral("080,321")});
+        QVERIFY2(observer.waitForStarted(10000), qPrintable(observer.errorString()));
         QString seen;
         t.restart();
         while (!seen.contains(QStringLiteral("READY")) && t.elapsed() < 15000 && observer.state() == QProcess::Running) {
@@ -130,7 +132,7 @@ private slots:
             qInfo("python-can saw %s: %d frames, mean period %.3f ms, p99 jitter %.3f ms, max %.3f ms", what, f.n, f.meanMs, f.p99Ms, f.maxMs);
             QVERIFY2(f.n >= 250, qPrintable(seen));
             QVERIFY2(std::abs(f.meanMs - 10.0) <= 0.2, qPrintable(seen));  // within 2 %
-            QVERIFY2(f.p99Ms <= 4.0, qPrintable(seen));
+            QVERIFY2(f.p99Ms <= 6.0, qPrintable(seen));  // bunched (Nagle) or skipped frames give 10 ms
         }
         // The SYNC counter starts at 1 (CiA 301 §7.2.5.2.1); the frame is sent as typed.
         QCOMPARE(figuresFor(seen, QStringLiteral("080")).first, QStringLiteral("01"));

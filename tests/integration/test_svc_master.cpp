@@ -23,10 +23,7 @@ constexpr int64_t kMs = 1'000'000;
 
 std::vector<CanFrame> framesOf(Rig& rig, uint32_t id, bool extended = false) {
     std::vector<CanFrame> out;
-    for (auto no : rig.session.store()->framesFor(id)) {
-        const CanFrame f = rig.session.store()->frame(no);
-        if (f.isExtended() == extended) out.push_back(f);
-    }
+    for (auto no : rig.session.store()->framesFor(TraceStore::keyOf(id, extended))) out.push_back(rig.session.store()->frame(no));
     return out;
 }
 
