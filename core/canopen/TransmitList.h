@@ -34,7 +34,8 @@ struct TransmitEntry {
 // through toJson()/fromJson() or toStringList()/fromStringList().
 //
 // Thread-safety: every function may be called from any thread (the GUI calls it from its thread
-// and polls the counts on its 30 Hz timer). Rows are indexes 0..size()-1 in the list's order.
+// and polls the counts on its 30 Hz timer), except from a PeriodicSender callback (start() waits
+// for the sender thread's first send while holding the list). Rows are indexes 0..size()-1.
 class TransmitList {
 public:
     // Sends with context.send() and context.periodic(); the context outlives the list.
