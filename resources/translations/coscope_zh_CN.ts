@@ -1056,7 +1056,7 @@
         <translation>节点 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device's new bit rate</source>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
         <translation>以设备的新波特率 %1 重新打开适配器</translation>
     </message>
     <message>
@@ -1136,8 +1136,8 @@
         <translation>将新的节点 ID %1 写入 %2 [对象为推定]（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
-        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h "save"）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1212,8 +1212,8 @@
         <translation>写入 %1 = %2h：波特率 %3（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h "save")</source>
-        <translation>保存参数（保存参数，1010h "save"）</translation>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数（保存参数，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1280,11 +1280,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
         <translation>没有设备以此识别数据响应 LSS。请确认驱动器支持 LSS（CiA 305）；若不支持，请改用它自己的参数（厂商方式）或厂商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
         <translation>设备拒绝了这个值。请确认它支持此值（见手册的节点 ID 范围／波特率）。</translation>
     </message>
     <message>
@@ -1308,7 +1308,7 @@
         <translation>无法全部恢复（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
         <translation>Delta ASDA-A2 手册 §1.3.1，P3-00（“●”：重新上电后生效）</translation>
     </message>
     <message>
@@ -2681,12 +2681,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
         <translation>——厂商报警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
         <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
     </message>
 </context>
@@ -3052,7 +3052,7 @@
         <translation>%1：未知的日志文件格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format '%2'</source>
+        <source>%1: cannot write format &apos;%2&apos;</source>
         <translation>%1：无法写入格式“%2”</translation>
     </message>
 </context>
@@ -3141,7 +3141,7 @@ Differs from the default</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）时，CiA 402 对象才会生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的默认 PDO 为同步型（类型 1）：只有收到 SYNC 时才会发送或应用。请启动 SYNC 生产者，或改选事件触发类型。</translation>
     </message>
     <message>
@@ -3169,7 +3169,7 @@ Differs from the default</source>
         <translation>驱动器未及时响应。请确认它已通电、节点 ID 正确，并检查缆线、终端电阻与波特率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
         <translation>驱动器不允许将此对象放入 PDO。请改选其他对象，或查阅手册中该对象的“PDO”列。</translation>
     </message>
     <message>
@@ -3197,7 +3197,7 @@ Differs from the default</source>
         <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive's manual.</source>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
         <translation>请在驱动器手册中查找中止码 0x%1。</translation>
     </message>
     <message>
@@ -3296,7 +3296,7 @@ Differs from the default</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
         <translation>SDO 读取 节点 %1 %2</translation>
     </message>
     <message>
@@ -3325,39 +3325,39 @@ Differs from the default</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
         <translation>（%1，%2 字节，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: '%1' is not a node-ID (0-127)</source>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
         <translation>筛选：“%1”不是节点 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
         <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
         <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -3372,7 +3372,7 @@ Differs from the default</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding '%1'</source>
+        <source>Finding &apos;%1&apos;</source>
         <translation>正在查找“%1”</translation>
     </message>
 </context>
@@ -3445,7 +3445,7 @@ Differs from the default</source>
         <translation>已停止：第 %2 步（共 %3 步）执行时总线中断（%1）。之前的步骤都已发送；这一步不一定已送达设备，之后的步骤都没有发送。设备可能只配置了一半（某个 PDO 仍被禁用，或新的节点 ID、波特率已保存但尚未生效）。总线恢复后，请先读回此脚本涉及的对象，再重新执行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：应用节点 %3 的 %2 时总线中断（%1）（最后已知：%4）。该 PDO 可能仍被禁用（COB-ID 第 31 位为 1），映射只写入一半，节点停在预操作状态。总线恢复后，请读回 %2（选择页）并重新应用；在此期间驱动器如何动作，取决于它自身的通信中断反应。</translation>
     </message>
     <message>
@@ -3953,7 +3953,7 @@ Differs from the default</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
     </message>
 </context>
@@ -4136,7 +4136,7 @@ Differs from the default</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -4188,7 +4188,7 @@ Differs from the default</source>
         <translation>向导已关闭</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>请检查主电源、使能与安全转矩关闭（STO）输入，以及驱动器本身的面板显示。</translation>
     </message>
     <message>
@@ -4388,7 +4388,7 @@ Arm the test move?</source>
         <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>无法读取驱动器状态：%1。请确认驱动器已通电并已连接，以及其节点 ID 是否正确。</translation>
     </message>
     <message>
@@ -5058,7 +5058,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系统语言（%1）</translation>
     </message>
     <message>
@@ -5120,14 +5120,16 @@ Arm the test move?</source>
     </message>
     <message numerus="yes">
         <source>1006h = %1 µs written to %n node(s)</source>
-        <translation><numerusform>已将 1006h = %1 µs 写入 %n 个节点</numerusform></translation>
+        <translation>
+            <numerusform>已将 1006h = %1 µs 写入 %n 个节点</numerusform>
+        </translation>
     </message>
     <message>
         <source>1006h not written to %1</source>
         <translation>1006h 未写入：%1</translation>
     </message>
     <message>
-        <source>Cannot start CoScope's heartbeat: %1</source>
+        <source>Cannot start CoScope&apos;s heartbeat: %1</source>
         <translation>无法启动 CoScope 的心跳：%1</translation>
     </message>
     <message>
@@ -5213,11 +5215,11 @@ Arm the test move?</source>
         <translation>COB-ID（1005h）：</translation>
     </message>
     <message>
-        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <source>Write the period to the nodes&apos; 1006h when SYNC starts</source>
         <translation>SYNC 启动时将周期写入各节点的 1006h</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat</source>
+        <source>CoScope&apos;s heartbeat</source>
         <translation>CoScope 的心跳</translation>
     </message>
     <message>
@@ -5248,7 +5250,7 @@ Arm the test move?</source>
         <translation>要更改的项目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>节点 ID（设备在总线上的地址，1-127）或波特率（CAN 比特率）。</translation>
     </message>
     <message>
@@ -5280,11 +5282,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驱动器自己的参数——此设备没有相关文档</translation>
     </message>
 </context>
@@ -5467,7 +5469,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
@@ -5479,8 +5481,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;关于此驱动器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -5499,8 +5501,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它没有重新出现：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;无法运行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;无法运行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -5630,7 +5632,7 @@ What to check: %3</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
@@ -5853,11 +5855,11 @@ Software version (100Ah): %3</source>
         <translation>节点发送了启动报文；启动后节点处于预操作状态。</translation>
     </message>
     <message>
-        <source>The node's heartbeat says so.</source>
+        <source>The node&apos;s heartbeat says so.</source>
         <translation>由节点的心跳得知。</translation>
     </message>
     <message>
-        <source>The node's answer to node guarding says so.</source>
+        <source>The node&apos;s answer to node guarding says so.</source>
         <translation>由节点对节点保护的应答得知。</translation>
     </message>
     <message>
@@ -5881,11 +5883,11 @@ Software version (100Ah): %3</source>
         <translation>节点发送紧急报文 (EMCY)，而 CiA 301 只允许在预操作状态和操作状态下发送（其 PDO 才能显示是否为操作状态）。</translation>
     </message>
     <message>
-        <source>Nothing seen yet shows the node's state.</source>
+        <source>Nothing seen yet shows the node&apos;s state.</source>
         <translation>目前所见的内容尚无法显示节点的状态。</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <source>The bus was lost: the state is unknown until the node&apos;s heartbeat or its own frames show it (last known: %1)</source>
         <translation>总线中断：在节点的心跳或其自身帧显示状态之前，状态未知（最后已知：%1）</translation>
     </message>
     <message>
@@ -5908,7 +5910,7 @@ Software version (100Ah): %3</source>
         <translation>仅显示已更改</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只显示从节点读取、且与字典默认值不同的值</translation>
     </message>
     <message>
@@ -6008,8 +6010,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;节点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;无字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;无字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -6146,7 +6148,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>没有任何对象可以读取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
@@ -6228,11 +6230,11 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>断电后保留：保存驱动器参数（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>断电后保留：保存驱动器参数（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成后启动驱动器的过程数据（NMT 启动：操作状态）</translation>
     </message>
     <message>
@@ -6244,7 +6246,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驱动器的字典没有 1010h（保存参数）</translation>
     </message>
     <message>
@@ -6323,7 +6325,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation> （已关闭：COB-ID 位 31 已设置）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
@@ -6628,8 +6630,8 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>PDO 映射：节点 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>断电后保留设置：保存所有参数（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>断电后保留设置：保存所有参数（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -6885,6 +6887,177 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProcessDataDock</name>
+    <message>
+        <source>Switch on</source>
+        <translation>接通主回路</translation>
+    </message>
+    <message>
+        <source>Enable voltage</source>
+        <translation>使能电压</translation>
+    </message>
+    <message>
+        <source>Quick stop (0 = active)</source>
+        <translation>快速停止（0 = 生效）</translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation>使能运行</translation>
+    </message>
+    <message>
+        <source>New set-point</source>
+        <translation>新设定点</translation>
+    </message>
+    <message>
+        <source>Change set immediately</source>
+        <translation>立即更新设定</translation>
+    </message>
+    <message>
+        <source>Relative</source>
+        <translation>相对</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation>故障复位</translation>
+    </message>
+    <message>
+        <source>Halt</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Process data</source>
+        <translation>过程数据</translation>
+    </message>
+    <message>
+        <source>Node:</source>
+        <translation>节点：</translation>
+    </message>
+    <message>
+        <source>Send once</source>
+        <translation>发送一次</translation>
+    </message>
+    <message>
+        <source>On change</source>
+        <translation>变化时发送</translation>
+    </message>
+    <message>
+        <source>Every N ms</source>
+        <translation>每 N ms</translation>
+    </message>
+    <message>
+        <source>With each SYNC</source>
+        <translation>随每个 SYNC</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>启动</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>Arm motion…</source>
+        <translation>准备运行…</translation>
+    </message>
+    <message>
+        <source>Hold to run</source>
+        <translation>按住运行</translation>
+    </message>
+    <message>
+        <source>RPDOs with motion objects are sent only while this button is held down; releasing it sends halt and velocity 0.</source>
+        <translation>含运动对象的 RPDO 仅在按住此按钮时发送；松开时发送暂停与速度 0。</translation>
+    </message>
+    <message>
+        <source>Hold to run was not fed: the drive was sent halt and velocity 0.</source>
+        <translation>“按住运行”未持续按住：已向驱动器发送暂停与速度 0。</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Node %1: its dictionary %2 could not be loaded: %3</source>
+        <translation>节点 %1：无法加载其对象字典 %2：%3</translation>
+    </message>
+    <message>
+        <source>Could not read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>RPDO%1 (%2h)</source>
+        <translation>RPDO%1（%2h）</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2)</source>
+        <translation>%1（bit %2）</translation>
+    </message>
+    <message>
+        <source>Decimal, 0x1F or 1Fh</source>
+        <translation>十进制、0x1F 或 1Fh</translation>
+    </message>
+    <message>
+        <source>In %1</source>
+        <translation>单位 %1</translation>
+    </message>
+    <message>
+        <source>TPDOs: no values seen yet (are they sent on SYNC?)</source>
+        <translation>TPDO：尚未收到数值（是否在 SYNC 时才发送？）</translation>
+    </message>
+    <message>
+        <source>TPDOs: %1</source>
+        <translation>TPDO：%1</translation>
+    </message>
+    <message>
+        <source>No bus is connected.</source>
+        <translation>未连接总线。</translation>
+    </message>
+    <message>
+        <source>The bus is listen-only or not open: nothing can be sent.</source>
+        <translation>总线为仅监听或未打开：无法发送。</translation>
+    </message>
+    <message>
+        <source>The bus&apos;s master services are not available.</source>
+        <translation>该总线的主站服务不可用。</translation>
+    </message>
+    <message>
+        <source>No node with a dictionary is known yet: scan the network or assign a dictionary.</source>
+        <translation>尚无已知且有对象字典的节点：请扫描网络或指定对象字典。</translation>
+    </message>
+    <message>
+        <source>This node&apos;s dictionary maps no RPDO.</source>
+        <translation>该节点的对象字典未映射任何 RPDO。</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Sent with each SYNC: start the SYNC producer (Bus menu) for frames to go out.</source>
+        <translation>随每个 SYNC 发送：请启动 SYNC 生产者（总线菜单）才会发出帧。</translation>
+    </message>
+    <message>
+        <source>Sent.</source>
+        <translation>已发送。</translation>
+    </message>
+    <message>
+        <source>Arm motion</source>
+        <translation>准备运行</translation>
+    </message>
+    <message>
+        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
+
+Make sure the axis is free to move. Arm?</source>
+        <translation>节点 %1 的 RPDO 含运动对象（控制字、模式、目标值）。按住“按住运行”时会以显示的数值发送，电机可能转动。松开按钮时发送暂停与速度 0。
+
+请确认轴可以自由移动。要准备运行吗？</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -6895,7 +7068,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
@@ -7253,11 +7426,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到“%1”</translation>
     </message>
     <message>
@@ -7277,7 +7450,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>正在加载…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer's frames</source>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>单击可展开或折叠此传输的帧</translation>
     </message>
     <message>
@@ -7419,7 +7592,9 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message numerus="yes">
         <source>%n periodic frame(s) running</source>
-        <translation><numerusform>%n 个周期帧正在发送</numerusform></translation>
+        <translation>
+            <numerusform>%n 个周期帧正在发送</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot read “%1”: %2</source>

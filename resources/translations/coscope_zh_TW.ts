@@ -1056,7 +1056,7 @@
         <translation>節點 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device's new bit rate</source>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
         <translation>以裝置的新鮑率 %1 重新開啟轉接器</translation>
     </message>
     <message>
@@ -1136,8 +1136,8 @@
         <translation>將新的節點 ID %1 寫入 %2 [物件為推定]（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
-        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h "save"）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1212,8 +1212,8 @@
         <translation>寫入 %1 = %2h：鮑率 %3（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h "save")</source>
-        <translation>儲存參數（儲存參數，1010h "save"）</translation>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數（儲存參數，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1280,11 +1280,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
         <translation>沒有裝置以此識別資料回應 LSS。請確認驅動器支援 LSS（CiA 305）；若不支援，請改用它自己的參數（廠商方式）或廠商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
         <translation>裝置拒絕了這個值。請確認它支援此值（見手冊的節點 ID 範圍／鮑率）。</translation>
     </message>
     <message>
@@ -1308,7 +1308,7 @@
         <translation>無法全部恢復（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
         <translation>Delta ASDA-A2 手冊 §1.3.1，P3-00（「●」：重新上電後生效）</translation>
     </message>
     <message>
@@ -2681,12 +2681,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
         <translation>——廠商異警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
         <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
     </message>
 </context>
@@ -3052,7 +3052,7 @@
         <translation>%1：未知的記錄檔格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format '%2'</source>
+        <source>%1: cannot write format &apos;%2&apos;</source>
         <translation>%1：無法寫入格式「%2」</translation>
     </message>
 </context>
@@ -3141,7 +3141,7 @@ Differs from the default</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
     </message>
     <message>
@@ -3169,7 +3169,7 @@ Differs from the default</source>
         <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
         <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
     </message>
     <message>
@@ -3197,7 +3197,7 @@ Differs from the default</source>
         <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive's manual.</source>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
         <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
     </message>
     <message>
@@ -3296,7 +3296,7 @@ Differs from the default</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
         <translation>SDO 讀取 節點 %1 %2</translation>
     </message>
     <message>
@@ -3325,39 +3325,39 @@ Differs from the default</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
         <translation>（%1，%2 位元組，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: '%1' is not a node-ID (0-127)</source>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
         <translation>篩選：「%1」不是節點 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
         <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
         <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -3372,7 +3372,7 @@ Differs from the default</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding '%1'</source>
+        <source>Finding &apos;%1&apos;</source>
         <translation>正在尋找「%1」</translation>
     </message>
 </context>
@@ -3445,7 +3445,7 @@ Differs from the default</source>
         <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
     </message>
     <message>
@@ -3953,7 +3953,7 @@ Differs from the default</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
@@ -4136,7 +4136,7 @@ Differs from the default</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -4188,7 +4188,7 @@ Differs from the default</source>
         <translation>精靈已關閉</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
@@ -4388,7 +4388,7 @@ Arm the test move?</source>
         <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
@@ -5058,7 +5058,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系統語言（%1）</translation>
     </message>
     <message>
@@ -5120,14 +5120,16 @@ Arm the test move?</source>
     </message>
     <message numerus="yes">
         <source>1006h = %1 µs written to %n node(s)</source>
-        <translation><numerusform>已將 1006h = %1 µs 寫入 %n 個節點</numerusform></translation>
+        <translation>
+            <numerusform>已將 1006h = %1 µs 寫入 %n 個節點</numerusform>
+        </translation>
     </message>
     <message>
         <source>1006h not written to %1</source>
         <translation>1006h 未寫入：%1</translation>
     </message>
     <message>
-        <source>Cannot start CoScope's heartbeat: %1</source>
+        <source>Cannot start CoScope&apos;s heartbeat: %1</source>
         <translation>無法啟動 CoScope 的心跳：%1</translation>
     </message>
     <message>
@@ -5213,11 +5215,11 @@ Arm the test move?</source>
         <translation>COB-ID（1005h）：</translation>
     </message>
     <message>
-        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <source>Write the period to the nodes&apos; 1006h when SYNC starts</source>
         <translation>SYNC 啟動時將週期寫入各節點的 1006h</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat</source>
+        <source>CoScope&apos;s heartbeat</source>
         <translation>CoScope 的心跳</translation>
     </message>
     <message>
@@ -5248,7 +5250,7 @@ Arm the test move?</source>
         <translation>要變更的項目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
@@ -5280,11 +5282,11 @@ Arm the test move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
@@ -5467,7 +5469,7 @@ Arm the test move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
@@ -5479,8 +5481,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -5499,8 +5501,8 @@ Arm the test move?</source>
         <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;無法執行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -5630,7 +5632,7 @@ What to check: %3</source>
         <translation>請先連線到總線</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
@@ -5853,11 +5855,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出了上線報文；上線後節點處於預操作狀態。</translation>
     </message>
     <message>
-        <source>The node's heartbeat says so.</source>
+        <source>The node&apos;s heartbeat says so.</source>
         <translation>由節點的心跳得知。</translation>
     </message>
     <message>
-        <source>The node's answer to node guarding says so.</source>
+        <source>The node&apos;s answer to node guarding says so.</source>
         <translation>由節點對節點保護的回應得知。</translation>
     </message>
     <message>
@@ -5881,11 +5883,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出緊急報文 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
     </message>
     <message>
-        <source>Nothing seen yet shows the node's state.</source>
+        <source>Nothing seen yet shows the node&apos;s state.</source>
         <translation>目前所見的內容尚無法顯示節點的狀態。</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <source>The bus was lost: the state is unknown until the node&apos;s heartbeat or its own frames show it (last known: %1)</source>
         <translation>匯流排中斷：在節點的心跳或其自身封包顯示狀態之前，狀態未知（最後已知：%1）</translation>
     </message>
     <message>
@@ -5908,7 +5910,7 @@ Software version (100Ah): %3</source>
         <translation>僅顯示已變更</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
@@ -6008,8 +6010,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;無字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -6146,7 +6148,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
@@ -6228,11 +6230,11 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>斷電後保留：儲存驅動器參數（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
@@ -6244,7 +6246,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
@@ -6323,7 +6325,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
@@ -6628,8 +6630,8 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>斷電後保留設定：儲存所有參數（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -6885,6 +6887,177 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProcessDataDock</name>
+    <message>
+        <source>Switch on</source>
+        <translation>啟動（Switch on）</translation>
+    </message>
+    <message>
+        <source>Enable voltage</source>
+        <translation>電壓致能（Enable voltage）</translation>
+    </message>
+    <message>
+        <source>Quick stop (0 = active)</source>
+        <translation>快速停止（Quick Stop，0 = 作用中）</translation>
+    </message>
+    <message>
+        <source>Enable operation</source>
+        <translation>運轉致能（Enable operation）</translation>
+    </message>
+    <message>
+        <source>New set-point</source>
+        <translation>新設定點（New set-point）</translation>
+    </message>
+    <message>
+        <source>Change set immediately</source>
+        <translation>立即變更設定（Change set immediately）</translation>
+    </message>
+    <message>
+        <source>Relative</source>
+        <translation>相對（Relative）</translation>
+    </message>
+    <message>
+        <source>Fault reset</source>
+        <translation>故障重置</translation>
+    </message>
+    <message>
+        <source>Halt</source>
+        <translation>暫停（Halt）</translation>
+    </message>
+    <message>
+        <source>Process data</source>
+        <translation>過程資料</translation>
+    </message>
+    <message>
+        <source>Node:</source>
+        <translation>節點：</translation>
+    </message>
+    <message>
+        <source>Send once</source>
+        <translation>傳送一次</translation>
+    </message>
+    <message>
+        <source>On change</source>
+        <translation>變更時傳送</translation>
+    </message>
+    <message>
+        <source>Every N ms</source>
+        <translation>每 N ms</translation>
+    </message>
+    <message>
+        <source>With each SYNC</source>
+        <translation>隨每個 SYNC</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>啟動</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>傳送</translation>
+    </message>
+    <message>
+        <source>Arm motion…</source>
+        <translation>準備運轉…</translation>
+    </message>
+    <message>
+        <source>Hold to run</source>
+        <translation>按住運轉</translation>
+    </message>
+    <message>
+        <source>RPDOs with motion objects are sent only while this button is held down; releasing it sends halt and velocity 0.</source>
+        <translation>含運動物件的 RPDO 只在按住此按鈕時傳送；放開時傳送暫停（Halt）與速度 0。</translation>
+    </message>
+    <message>
+        <source>Hold to run was not fed: the drive was sent halt and velocity 0.</source>
+        <translation>「按住運轉」未持續按住：已對驅動器傳送暫停（Halt）與速度 0。</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>Node %1: its dictionary %2 could not be loaded: %3</source>
+        <translation>節點 %1：無法載入其物件字典 %2：%3</translation>
+    </message>
+    <message>
+        <source>Could not read: %1</source>
+        <translation>無法讀取：%1</translation>
+    </message>
+    <message>
+        <source>RPDO%1 (%2h)</source>
+        <translation>RPDO%1（%2h）</translation>
+    </message>
+    <message>
+        <source>%1 (bit %2)</source>
+        <translation>%1（bit %2）</translation>
+    </message>
+    <message>
+        <source>Decimal, 0x1F or 1Fh</source>
+        <translation>十進位、0x1F 或 1Fh</translation>
+    </message>
+    <message>
+        <source>In %1</source>
+        <translation>單位 %1</translation>
+    </message>
+    <message>
+        <source>TPDOs: no values seen yet (are they sent on SYNC?)</source>
+        <translation>TPDO：尚未收到數值（是否在 SYNC 時才傳送？）</translation>
+    </message>
+    <message>
+        <source>TPDOs: %1</source>
+        <translation>TPDO：%1</translation>
+    </message>
+    <message>
+        <source>No bus is connected.</source>
+        <translation>未連線任何總線。</translation>
+    </message>
+    <message>
+        <source>The bus is listen-only or not open: nothing can be sent.</source>
+        <translation>總線為僅監聽或未開啟：無法傳送。</translation>
+    </message>
+    <message>
+        <source>The bus&apos;s master services are not available.</source>
+        <translation>此總線的主站服務無法使用。</translation>
+    </message>
+    <message>
+        <source>No node with a dictionary is known yet: scan the network or assign a dictionary.</source>
+        <translation>尚無已知且有物件字典的節點：請掃描網路或指定物件字典。</translation>
+    </message>
+    <message>
+        <source>This node&apos;s dictionary maps no RPDO.</source>
+        <translation>此節點的物件字典沒有映射任何 RPDO。</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Sent with each SYNC: start the SYNC producer (Bus menu) for frames to go out.</source>
+        <translation>隨每個 SYNC 傳送：請啟動 SYNC 產生器（總線選單）才會送出封包。</translation>
+    </message>
+    <message>
+        <source>Sent.</source>
+        <translation>已傳送。</translation>
+    </message>
+    <message>
+        <source>Arm motion</source>
+        <translation>準備運轉</translation>
+    </message>
+    <message>
+        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
+
+Make sure the axis is free to move. Arm?</source>
+        <translation>節點 %1 的 RPDO 含運動物件（控制字元、模式、目標值）。按住「按住運轉」時會以顯示的數值傳送，馬達可能轉動。放開按鈕時傳送暫停（Halt）與速度 0。
+
+請確認軸可以自由移動。要準備運轉嗎？</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -6895,7 +7068,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
@@ -7253,11 +7426,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>
@@ -7277,7 +7450,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>載入中…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer's frames</source>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
     </message>
     <message>
@@ -7419,7 +7592,9 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message numerus="yes">
         <source>%n periodic frame(s) running</source>
-        <translation><numerusform>%n 個週期封包正在發送</numerusform></translation>
+        <translation>
+            <numerusform>%n 個週期封包正在發送</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot read “%1”: %2</source>
