@@ -64,6 +64,8 @@ uint16_t emcyCode(const CanFrame& f) { return uint16_t(f.data[0] | (f.data[1] <<
 class TestSimHeartbeatConsumer : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() { eds::installSimulatorDictionaries(); }
+
     // The brief's case on the generic CiA 402 drive with 6007h = 3 (quick stop).
     void lostHeartbeatQuickStopsTheDrive() {
         SimHarness h;
