@@ -115,6 +115,7 @@ TransmitDock::TransmitDock(Workspace* workspace, QWidget* parent) : QDockWidget(
     });
     connect(workspace_, &Workspace::sourceChanged, this, &TransmitDock::rebind);
     rebind();
+    refresh();
 }
 
 void TransmitDock::rebind() {
