@@ -169,6 +169,7 @@ bool ProcessData::setNode(uint8_t node, const od::ObjectDictionary& dictionary, 
         pdos.push_back(std::move(p));
     }
     node_ = node;
+    ++generation_;
     pdos_ = std::move(pdos);
     {
         const std::lock_guard lock(shared_->mutex);
@@ -313,9 +314,15 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
     auto step = std::make_shared<std::function<void(size_t)>>();
     const QPointer<ProcessData> self(this);
     const uint8_t node = node_;
-    *step = [self, &sdo, node, todo, failures, step, done](size_t i) {
+    const uint64_t generation = generation_;
+    *step = [self, &sdo, node, todo, failures, step, done, generation](size_t i) {
+        if (self && self->generation_ != generation && i < todo->size()) {
+            *failures << QStringLiteral("node %1 was replaced while reading").arg(node);
+            i = todo->size();
+        }
         if (!self || i >= todo->size()) {
-            const auto finished = done;  // copies: clearing *step destroys this lambda
+            // Copies: clearing *step destroys this lambda and what it captured.
+            const auto finished = self ? done : nullptr;  // nobody waits for a ProcessData that is gone
             const QStringList failed = *failures;
             const auto keep = step;
             *step = nullptr;  // ends the cycle step -> lambda -> step

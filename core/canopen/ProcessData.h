@@ -96,7 +96,9 @@ public:
     // The mapped object index:sub (non-dummy), null when no RPDO of the node maps it.
     const ProcessDataObject* object(uint16_t index, uint8_t sub) const;
     // Reads every mapped object's value from the node over SDO (so that a first send repeats what
-    // the drive has); `done` gets the objects that could not be read ("6060h:00: ..."), once.
+    // the drive has); `done` gets the objects that could not be read ("6060h:00: ..."), once
+    // (not at all when this ProcessData is destroyed first; a read for a node replaced by setNode
+    // stops and reports it as not read).
     void readValues(SdoClient& sdo, std::function<void(const QStringList& failures)> done);
 
     // The frame of RPDO `number` with the values set (held = true) or as sent while not held.
@@ -143,6 +145,7 @@ private:
     SyncProducer& sync_;
     std::shared_ptr<Shared> shared_;
     uint8_t node_ = 0;
+    uint64_t generation_ = 0;  // setNode() count: a read for another node stops
     std::vector<ProcessDataPdo> pdos_;
     Mode mode_ = Mode::Once;
     int periodMs_ = 100;

@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSpinBox>
@@ -193,7 +194,8 @@ void ProcessDataDock::showNode() {
         if (!data_->setNode(static_cast<uint8_t>(node), *dictionary_, &error)) showError(error);
         data_->setMode(canopen::ProcessData::Mode(mode_->currentData().toInt()), period_->value());
         if (workspace_->sdo() && workspace_->canTransmit())
-            data_->readValues(*workspace_->sdo(), [this](const QStringList& failed) {
+            data_->readValues(*workspace_->sdo(), [this, self = QPointer<ProcessDataDock>(this)](const QStringList& failed) {
+                if (!self) return;
                 showValues();
                 if (!failed.isEmpty()) showError(tr("Could not read: %1").arg(failed.join(QStringLiteral("; "))));
             });
