@@ -224,7 +224,7 @@ private slots:
         w.showView(QStringLiteral("od"));
         QVERIFY(w.connectBus(QStringLiteral("sim://"), true));  // identified by the scan on connect
         QVERIFY(waitFor([&] {
-            const auto a = w.workspace()->nodes().node(1), b = w.workspace()->nodes().node(3);
+            const auto a = w.workspace()->nodes().node(1), b = w.workspace()->nodes().node(2);
             return a && b && !a->dictionary.isEmpty() && !b->dictionary.isEmpty();
         }));
         auto clickNode = [&](int node) {
@@ -244,10 +244,10 @@ private slots:
         QTest::mouseClick(readAll, Qt::LeftButton);
         QVERIFY(waitFor([&] { return bar->value() > 5; }));
         const int nodeOneTotal = bar->maximum();
-        QVERIFY(clickNode(3));
+        QVERIFY(clickNode(2));  // the AIMOTOR: another count than the Delta's
         QVERIFY2(bar->text().isEmpty(), qPrintable(bar->text()));
         QVERIFY2(!w.odDock()->messageText().contains(QStringLiteral("objects of node 1")), qPrintable(w.odDock()->messageText()));
-        // Node 3's own read: its own count.
+        // Node 2's own read: its own count.
         QVERIFY(waitFor([&] { return readAll->isEnabled(); }));
         QTest::mouseClick(readAll, Qt::LeftButton);
         QVERIFY(waitFor([&] { return bar->value() > 0; }));
