@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/master/ProcessDataDock.h"
+#include "core/canopen/RpdoMotion.h"
 
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/ds402/Ds402Units.h"
@@ -174,7 +175,14 @@ void ProcessDataDock::refreshNodes() {
     const int current = node_->currentData().toInt();
     node_->clear();
     for (int id : ids) node_->addItem(tr("Node %1").arg(id), id);
-    const int at = node_->findData(current);
+    int at = node_->findData(current);
+    // No choice yet: the first node whose dictionary maps an RPDO (a Delta maps none by default).
+    for (int i = 0; at < 0 && i < node_->count(); ++i) {
+        const auto info = workspace_->nodes().node(node_->itemData(i).toInt());
+        const eds::DictionaryPtr d = info ? eds::DictionaryLibrary::shared().loadShared(info->dictionary) : nullptr;
+        for (int n = 1; d && at < 0 && n <= 4; ++n)
+            if (const auto l = canopen::rpdoLayout(*d, static_cast<uint8_t>(info->node), n); l && l->valid() && !l->entries.empty()) at = i;
+    }
     node_->setCurrentIndex(at >= 0 ? at : 0);
     if (node_->currentData().toInt() != current || !current) showNode();
 }
