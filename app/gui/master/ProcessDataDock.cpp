@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/master/ProcessDataDock.h"
 #include "core/canopen/RpdoMotion.h"
+#include "core/od/NumberNotation.h"
 
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/ds402/Ds402Units.h"
@@ -320,7 +321,9 @@ void ProcessDataDock::refreshLive() {
         if (!last) continue;
         const double raw = last->value;
         const od::Unit unit{s.rawUnit, s.rawFactor};
-        parts << QStringLiteral("%1: %2").arg(s.name, s.rawUnit.isEmpty() ? QString::number(raw, 'g', 10) : inUnit(raw, unit));
+        // Statusword, error codes and other bit patterns in hex as CiA 301 writes them (README "Numbers").
+        const QString hex = raw >= 0 ? od::hexValueText(s.key.index, s.key.sub, static_cast<uint64_t>(raw), 16) : QString();
+        parts << QStringLiteral("%1: %2").arg(s.name, !hex.isEmpty() ? hex : s.rawUnit.isEmpty() ? QString::number(raw, 'g', 10) : inUnit(raw, unit));
     }
     live_->setText(parts.isEmpty() ? tr("TPDOs: no values seen yet (are they sent on SYNC?)") : tr("TPDOs: %1").arg(parts.join(QStringLiteral(" · "))));
 }
