@@ -14,6 +14,7 @@
 #include <QTableView>
 #include <QtTest>
 
+#include "tests/gui/ContextMenuClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/SimDriveRig.h"
 
@@ -31,24 +32,7 @@ bool nmtFromMenu(NodesDock& dock, int row, const QString& text) {
         pos = view->visualRect(view->model()->index(row, 0)).center();
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, pos);
     }
-    bool clicked = false;
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, [&] {
-        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
-        if (!menu) return;
-        poll.stop();
-        for (QAction* a : menu->actions())
-            if (a->text() == text && a->isEnabled()) {
-                clicked = true;
-                QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(a).center());
-                return;
-            }
-        QTest::keyClick(menu, Qt::Key_Escape);
-    });
-    poll.start(20);
-    QContextMenuEvent click(QContextMenuEvent::Mouse, pos, view->viewport()->mapToGlobal(pos));
-    QCoreApplication::sendEvent(view->viewport(), &click);
-    return clicked;
+    return coscope::testing::contextMenuClick(view, pos, text);
 }
 }  // namespace
 
