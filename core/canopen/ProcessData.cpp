@@ -315,22 +315,19 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
     const QPointer<ProcessData> self(this);
     const uint8_t node = node_;
     const uint64_t generation = generation_;
-    *step = [self, &sdo, node, todo, failures, step, done, generation](size_t i) {
+    // The chain holds itself only through the pending upload's callback: an SDO client that drops
+    // its callbacks (bus closed) frees the chain instead of leaking a step -> lambda -> step cycle.
+    *step = [self, &sdo, node, todo, failures, weakStep = std::weak_ptr(step), done, generation](size_t i) {
         if (self && self->generation_ != generation && i < todo->size()) {
             *failures << QStringLiteral("node %1 was replaced while reading").arg(node);
             i = todo->size();
         }
         if (!self || i >= todo->size()) {
-            // Copies: clearing *step destroys this lambda and what it captured.
-            const auto finished = self ? done : nullptr;  // nobody waits for a ProcessData that is gone
-            const QStringList failed = *failures;
-            const auto keep = step;
-            *step = nullptr;  // ends the cycle step -> lambda -> step
-            if (finished) finished(failed);
+            if (self && done) done(*failures);  // nobody waits for a ProcessData that is gone
             return;
         }
         const ProcessDataObject o = (*todo)[i];
-        sdo.upload(node, o.entry.index, o.entry.sub, [self, o, failures, step, i](const SdoResult& r) {
+        sdo.upload(node, o.entry.index, o.entry.sub, [self, o, failures, step = weakStep.lock(), i](const SdoResult& r) {
             if (!self) return;
             if (r.ok) self->setValueQuietly(o, fromBytes(o, r.data));
             else *failures << QStringLiteral("%1: %2").arg(mappedObjectText(o.entry.index, o.entry.sub), r.error);

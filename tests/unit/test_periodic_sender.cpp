@@ -86,13 +86,15 @@ private slots:
         QVERIFY(s.error.isEmpty());
         QCOMPARE(stopped.load(), 1);
         QVERIFY(stopError.isEmpty());
-        // Every frame k goes out at or after start + k x period (absolute due times: never
-        // early, never a burst); a late one skips due times, counted.
+        // Every frame k goes out at or after the grid's origin + k x period (absolute due times:
+        // never early, never a burst); a late one skips due times, counted. The origin is at or
+        // after `before`; the first frame's own time may be late (a loaded machine), so frame 1
+        // less than a period after frame 0 is right when frame 0 was late.
         const auto t = sink.times(0x181);
         QCOMPARE(t.size(), size_t(20));
         QVERIFY(t[0] >= before);
         for (size_t k = 1; k < t.size(); ++k)
-            QVERIFY2(t[k] - t[0] >= static_cast<int64_t>(k) * 5 * kMs - 100'000, qPrintable(QStringLiteral("frame %1 early: %2 us after the first").arg(k).arg((t[k] - t[0]) / 1000)));
+            QVERIFY2(t[k] - before >= static_cast<int64_t>(k) * 5 * kMs, qPrintable(QStringLiteral("frame %1 early: %2 us after the start").arg(k).arg((t[k] - before) / 1000)));
         // No drift: on an idle machine the 20th frame is due at 95 ms; late only by skips.
         const auto st = sender.status(id);
         QVERIFY2(t.back() - t[0] < static_cast<int64_t>(19 + st.skipped + 1) * 5 * kMs, qPrintable(QString::number((t.back() - t[0]) / 1000)));
@@ -153,9 +155,13 @@ private slots:
         QVERIFY(sender.setPeriod(id, 20 * kMs));
         QCOMPARE(sender.status(id).periodNs, 20 * kMs);
         const size_t before = sink.times(0x400).size();
+        const int64_t start = monoNs();
         QTest::qWait(110);
         const size_t during = sink.times(0x400).size() - before;
-        QVERIFY2(during >= 3 && during <= 7, qPrintable(QString::number(during)));  // about 5 in 110 ms
+        // About 5 in 110 ms; a loaded machine may wait longer, never more than one per 20 ms
+        // (at 1 µs it would be thousands).
+        const auto most = static_cast<size_t>((monoNs() - start) / (20 * kMs) + 1);
+        QVERIFY2(during >= 1 && during <= most, qPrintable(QStringLiteral("%1, at most %2").arg(during).arg(most)));
         QVERIFY(!sender.setPeriod(id, 0));
         QVERIFY(!sender.setPeriod(9999, kMs));
         sender.removeAll();
