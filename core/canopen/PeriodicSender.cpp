@@ -3,6 +3,8 @@
 
 #include "core/can/CanBus.h"
 
+#include <QtGlobal>
+
 #include <spdlog/spdlog.h>
 
 #include <atomic>
@@ -162,6 +164,17 @@ void PeriodicSender::run() {
     pthread_setname_np(pthread_self(), "periodic-send");
     // Wake-ups as close to the due time as the kernel allows (the default slack is 50 µs).
     prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
+    // A low real-time priority where the system allows it (CAP_SYS_NICE or RLIMIT_RTPRIO, e.g.
+    // limits.conf "@canusers - rtprio 10"): a busy desktop then delays SYNC by microseconds, not
+    // by a time slice. The thread only sleeps and sends, so it cannot starve the others.
+    // COSCOPE_NO_REALTIME=1 keeps the normal policy.
+    if (!qEnvironmentVariableIsSet("COSCOPE_NO_REALTIME")) {
+        sched_param param{};
+        param.sched_priority = 10;
+        const int rc = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param);
+        if (rc == 0) spdlog::debug("periodic sends run at real-time priority (SCHED_FIFO 10)");
+        else spdlog::debug("periodic sends run at normal priority (no real-time permission: {})", rc);
+    }
 #endif
     std::unique_lock lock(mutex_);
     while (!stopping_) {

@@ -7,6 +7,7 @@
 #include <QString>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace coscope::sim {
@@ -58,6 +59,9 @@ public:
     uint32_t checkWrite(uint16_t base, uint8_t sub, int64_t value) const;
     // Machine position (before homing offsets) for tests of the homing model.
     double machinePosition() const { return position_ + machineOffset_; }
+    // The lowest and highest machine position since homing last started (tests of where a
+    // switch method travels, without sampling it from outside).
+    std::pair<double, double> homingTravel() const { return {travelLow_, travelHigh_}; }
 
     // Fault injection for enable tests (network thread). mainPowerOff: voltage enabled (bit 4)
     // stays off and Switch on is not accepted (the drive stays in Ready to switch on), as a drive
@@ -110,6 +114,7 @@ private:
     bool followingError_ = false;
     bool homingDone_ = false;    // bit 12 in HM: homing attained
     bool homingActive_ = false;
+    double travelLow_ = 0, travelHigh_ = 0;  // homingTravel()
     bool homingError_ = false;   // bit 13 in HM
     bool homeFound_ = false;     // AIMOTOR bit 15
     bool stalled_ = false;       // hard-stop homing: against the end stop, torque at the limit

@@ -47,6 +47,7 @@ void Ds402Drive::startHoming() {
         targetReached_ = true;
         return;
     }
+    travelLow_ = travelHigh_ = machinePosition();
     homingLegs_ = homingPath(*method, machinePosition(), HomingMachine::forRevolution(countsPerRevolution()));
     homingLeg_ = 0;
     homingElapsed_ = stallTime_ = 0;
@@ -78,6 +79,8 @@ void Ds402Drive::finishHoming() {
 
 void Ds402Drive::stepHoming(double dt) {
     const Personality& p = dev_.personality();
+    travelLow_ = std::min(travelLow_, machinePosition());
+    travelHigh_ = std::max(travelHigh_, machinePosition());
     homingElapsed_ += dt;
     if (p.homingTimeLimitIndex) {
         // AIMOTOR H05-35: home not found in time -> ER.601 homing timeout (extract-aimotor §4.7).

@@ -38,6 +38,7 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
@@ -77,12 +78,6 @@ bool openLoaded(MainWindow& w, const QString& path) {
 void clickRow(QTableView* view, int row) {
     view->scrollTo(view->model()->index(row, 0));
     QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(row, 1)).center());
-}
-// Brings a tabbed dock to the front by a click on its tab, as a user does.
-void clickDockTab(MainWindow& w, const QString& title) {
-    for (QTabBar* bar : w.findChildren<QTabBar*>())
-        for (int i = 0; i < bar->count(); ++i)
-            if (bar->tabText(i) == title && bar->isVisible()) QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
 }
 // Opens a log by File ▸ Open log… and its file dialog; waits until it is read.
 bool openByMenu(MainWindow& w, const QString& path) {
@@ -316,7 +311,7 @@ private slots:
         QVERIFY(openByMenu(w, writeJumpLog(dir_.filePath(QStringLiteral("jump.log")))));
         QVERIFY(waitFor([&] { return w.eventsDock()->model()->rowCount() == 1; }));
         // Enter on the event (chosen by a click) selects its frame in the trace.
-        clickDockTab(w, QStringLiteral("Events"));
+        QVERIFY(coscope::testing::clickDockTab(w, QStringLiteral("Events")));
         auto* events = w.eventsDock()->findChild<QTableView*>();
         QVERIFY(events);
         QVERIFY(waitFor([&] { return events->isVisible(); }));

@@ -34,12 +34,16 @@
 #include <vector>
 
 #include "tests/gui/ContextMenuClick.h"
+#include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
 using namespace coscope::gui;
+using coscope::testing::clickCheckBox;
+using coscope::testing::clickDockTab;
+using coscope::testing::signalItem;
 using coscope::testing::waitFor;
 
 namespace {
@@ -71,37 +75,6 @@ size_t countTx(const TraceStore& store, uint32_t id) {
     return n;
 }
 
-// Clicks the tab of the dock titled `title` (docks tabified together).
-bool clickDockTab(QMainWindow& w, const QString& title) {
-    for (QTabBar* bar : w.findChildren<QTabBar*>())
-        for (int i = 0; i < bar->count(); ++i)
-            if (bar->tabText(i) == title) {
-                QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
-                return true;
-            }
-    return false;
-}
-
-// Clicks the check box of a table cell where the style draws it.
-void clickCheckBox(QTableView* view, const QModelIndex& index) {
-    QStyleOptionViewItem option;
-    option.initFrom(view->viewport());
-    option.rect = view->visualRect(index);
-    option.features = QStyleOptionViewItem::HasCheckIndicator;
-    const QRect box = view->style()->subElementRect(QStyle::SE_ItemViewItemCheckIndicator, &option, view);
-    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, box.center());
-}
-
-QTreeWidgetItem* signalItem(QTreeWidget* tree, int node, const QString& name) {
-    const QString group = QStringLiteral("Node %1").arg(node);
-    for (int i = 0; i < tree->topLevelItemCount(); ++i) {
-        QTreeWidgetItem* g = tree->topLevelItem(i);
-        if (!g->text(0).startsWith(group)) continue;
-        for (int k = 0; k < g->childCount(); ++k)
-            if (g->child(k)->text(0) == name) return g->child(k);
-    }
-    return nullptr;
-}
 }  // namespace
 
 class TestMasterTransmit : public QObject {

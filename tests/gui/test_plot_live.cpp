@@ -27,6 +27,7 @@
 
 #include <set>
 
+#include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/TypeText.h"
@@ -40,6 +41,8 @@ using dissect::SignalKey;
 
 namespace {
 using coscope::testing::answerFileDialog;
+using coscope::testing::clickCheckBox;
+using coscope::testing::signalItem;
 using coscope::testing::menuItem;
 using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
@@ -64,39 +67,6 @@ std::optional<double> decoded(Workspace* ws, FrameNo n, uint16_t index) {
         }
     }
     return std::nullopt;
-}
-
-// The picker's row named `name` under node `node`'s group (in a word's bits too), or null.
-QTreeWidgetItem* signalItem(QTreeWidget* tree, int node, const QString& name) {
-    const QString group = QStringLiteral("Node %1").arg(node);
-    for (int i = 0; i < tree->topLevelItemCount(); ++i) {
-        QTreeWidgetItem* g = tree->topLevelItem(i);
-        if (g->text(0) != group && !g->text(0).startsWith(group + QStringLiteral(" ("))) continue;
-        for (int k = 0; k < g->childCount(); ++k) {
-            QTreeWidgetItem* word = g->child(k);
-            if (word->text(0) == name) return word;
-            for (int b = 0; b < word->childCount(); ++b)
-                if (word->child(b)->text(0) == name) return word->child(b);
-        }
-    }
-    return nullptr;
-}
-
-// Clicks the check box of `item` where the tree's style draws it; false when it is not on screen.
-bool clickCheckBox(QTreeWidget* tree, QTreeWidgetItem* item) {
-    const QRect row = tree->visualItemRect(item);
-    if (!row.isValid() || !tree->viewport()->rect().contains(row.topLeft())) return false;
-    QStyleOptionViewItem option;
-    option.initFrom(tree->viewport());
-    option.rect = QRect(row.left(), row.top(), tree->columnWidth(0) - (row.left() + tree->header()->offset()), row.height());
-    option.features = QStyleOptionViewItem::HasCheckIndicator | QStyleOptionViewItem::HasDisplay;
-    option.text = item->text(0);
-    option.checkState = item->checkState(0);
-    const QRect box = tree->style()->subElementRect(QStyle::SE_ItemViewItemCheckIndicator, &option, tree);
-    if (!box.isValid()) return false;
-    const Qt::CheckState was = item->checkState(0);
-    QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, box.center());
-    return item->checkState(0) != was;
 }
 
 // Export ▸ `item`… as a user does: a click on the Export button, one on the menu item, the file
