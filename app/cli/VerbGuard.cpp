@@ -83,9 +83,12 @@ static int runGuard(const QStringList& args) {
     BusSession session;
     if (!session.open(pos[0], &error)) return failure(kVerb, error);
     canopen::HeartbeatMonitor monitor(session.context());
+    auto shown = canopen::ErrorControlWatch::Status::Waiting;
     QObject::connect(&monitor, &canopen::HeartbeatMonitor::nodeChanged, [&](int n) {
         if (n != *node) return;
         const canopen::ErrorControlWatch w = monitor.watch(*node);
+        if (w.status == shown) return;  // the watch's changes only, not each NMT state
+        shown = w.status;
         const auto info = monitor.table().node(n);
         const QString state = info && info->nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(info->nmtState)) : QStringLiteral("unknown");
         std::printf("node %d: %s (NMT state %s)\n", n, qPrintable(statusName(w.status)), qPrintable(state));

@@ -95,6 +95,7 @@ uint64_t HeartbeatMonitor::guardRequests(uint8_t node) const {
 
 void HeartbeatMonitor::setStatus(uint8_t node, Watch& w, Status status, int addErrors) {
     const Status was = w.shown.status;
+    // Unchanged: only the last answer's time (Ok) or the error count moved; no signal.
     if (was == status && !addErrors && status != Status::Ok) return;
     w.shown.status = status;
     if (status == Status::Lost && was != Status::Lost) ++w.shown.lost;
@@ -104,7 +105,7 @@ void HeartbeatMonitor::setStatus(uint8_t node, Watch& w, Status status, int addE
         info.heartbeatLost = status == Status::Lost;
         info.guardingErrors += addErrors;
     });
-    if (was == status && status == Status::Ok && !addErrors) return;  // only lastNs moved
+    if (was == status) return;
     if (status == Status::Lost && was != Status::Lost) emit nodeLost(node);
     if (was == Status::Lost && status == Status::Ok) emit nodeBack(node);
     emit nodeChanged(node);

@@ -130,6 +130,7 @@ class TestHeartbeatGuard : public QObject {
 
     bool step(Command c, State expect) {
         QPushButton* b = wiz_->stepButton(c);
+        if (!b) return false;
         if (!waitFor([&] { return b->isEnabled(); }, 6000)) return false;
         click(b);
         return waitFor([&] { return driveState() == expect && wiz_->shownState() == expect; }, 6000);
@@ -188,8 +189,10 @@ private slots:
         checkArmed();
         if (QTest::currentTestFailed()) return;
         QVERIFY(step(Command::SwitchOn, State::SwitchedOn));
-        // Disable voltage: the drive leaves the record; the old values come back.
-        QVERIFY(step(Command::DisableVoltage, State::SwitchOnDisabled));
+        // Disable (the wizard's always-visible button): the drive leaves the record; the old values come back.
+        QVERIFY(waitFor([&] { return wiz_->disableButton()->isEnabled(); }, 3000));
+        click(wiz_->disableButton());
+        QVERIFY(waitFor([&] { return driveState() == State::SwitchOnDisabled && wiz_->shownState() == State::SwitchOnDisabled; }, 6000));
         QVERIFY2(waitFor([&] { return driveValue(0x1016, 1) == 0 && abortOption() == kOldAbortOption; }, 5000),
                  qPrintable(QStringLiteral("1016h:01 = %1, 6007h = %2").arg(driveValue(0x1016, 1), 0, 16).arg(abortOption())));
         QVERIFY(waitFor([&] { return !ws()->heartbeatProducer()->isRunning() && !masterStatus().contains(QStringLiteral("guarding")); }, 3000));

@@ -17,7 +17,6 @@
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 
-#include <QLineEdit>
 #include <QDialogButtonBox>
 #include <QPushButton>
 #include <QRadioButton>
@@ -40,8 +39,8 @@ using coscope::testing::waitFor;
 namespace {
 void typeInto(QSpinBox* box, int value) {
     QTest::mouseClick(box, Qt::LeftButton);
-    box->lineEdit()->selectAll();
-    QTest::keyClicks(box->lineEdit(), QString::number(value));
+    QTest::keyClick(box, Qt::Key_A, Qt::ControlModifier);  // typing replaces what is there
+    QTest::keyClicks(box, QString::number(value));
 }
 
 // Answers the node's "Heartbeat and guarding" dialog: the radio button `choice`, the values typed.
@@ -150,12 +149,16 @@ private slots:
         QCOMPARE(ws()->nodes().node(3)->guardingErrors, 0);
 
         // The node falls silent: lost after 300 ms, an event in the Events.
-        net()->runOnNetworkThread([&] { net()->device(3)->makeUnconfigured(); });
+        sim::VirtualDevice* device = nullptr;  // found by its node-ID, which it loses now
+        net()->runOnNetworkThread([&] {
+            device = net()->device(3);
+            device->makeUnconfigured();
+        });
         QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": lost")); }, 2000), qPrintable(watchCell(dock(), 3)));
         QVERIFY(waitFor([&] { return hasEvent(ws(), 3, QStringLiteral("Node guarding lost")); }, 2000));
         QVERIFY(ws()->nodes().node(3)->heartbeatLost);
         // Back (power cycle: boot-up, the toggle starts at 0 again): ok, and an event says so.
-        net()->runOnNetworkThread([&] { net()->device(3)->powerCycle(); });
+        net()->runOnNetworkThread([&] { device->powerCycle(); });
         QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": ok")); }, 3000), qPrintable(watchCell(dock(), 3)));
         QVERIFY(waitFor([&] { return hasEvent(ws(), 3, QStringLiteral("Node guarding answers again")); }, 2000));
 
