@@ -18,7 +18,7 @@ HeartbeatMonitor::HeartbeatMonitor(MasterContext& context, QObject* parent)
     }
     subscription_ = context_.dispatcher().subscribe(this, std::move(ids), [this](const std::vector<CanFrame>& f) { onFrames(f); });
     connect(timer_, &QTimer::timeout, this, &HeartbeatMonitor::onCheck);
-    timer_->start(20);
+    timer_->setInterval(20);  // runs while a node is watched
 }
 
 HeartbeatMonitor::~HeartbeatMonitor() {
@@ -39,6 +39,7 @@ void HeartbeatMonitor::setConsumerTime(uint8_t node, int timeMs) {
     w.startNs = nowNs();
     w.shown.consumerTimeMs = timeMs;
     setStatus(node, w, Status::Waiting);
+    timer_->start();
 }
 
 bool HeartbeatMonitor::setGuarding(uint8_t node, int guardTimeMs, int lifeTimeFactor, QString* error) {
@@ -63,11 +64,12 @@ bool HeartbeatMonitor::setGuarding(uint8_t node, int guardTimeMs, int lifeTimeFa
     QString why;
     w.job = context_.periodic().add(std::move(job), &why);
     if (!w.job) {
-        watches_.erase(node);
+        unwatch(node);  // nothing watched: not the node's former watch either
         if (error) *error = why;
         return false;
     }
     setStatus(node, w, Status::Waiting);
+    timer_->start();
     return true;
 }
 
@@ -76,6 +78,7 @@ void HeartbeatMonitor::unwatch(uint8_t node) {
     if (it == watches_.end()) return;
     stopGuarding(it->second);
     watches_.erase(it);
+    if (watches_.empty()) timer_->stop();
     table().update(node, [](NodeInfo& info) {
         info.watch = {};
         info.heartbeatLost = false;
