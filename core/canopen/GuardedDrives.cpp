@@ -69,6 +69,9 @@ void GuardedDrives::poll() {
     for (const Key& key : gone) {
         Entry& e = entries_[key];
         if (e.state == State::Armed) release(key);
+        // A put-back that failed leaves the guard armed: kept (the heartbeat goes on) and put
+        // back when the bus closes; never retried by itself.
+        else if (e.guard && e.guard->armed()) continue;
         else if (e.state != State::Arming && e.state != State::Releasing) entries_.erase(key);
     }
 }
@@ -164,7 +167,7 @@ std::vector<GuardedDrives::Drive> GuardedDrives::drives() const {
 std::vector<uint8_t> GuardedDrives::guardedNodes() const {
     std::vector<uint8_t> out;
     for (const auto& [key, e] : entries_)
-        if (e.state == State::Armed && (out.empty() || out.back() != key.first)) out.push_back(key.first);
+        if (e.guard && e.guard->armed() && (out.empty() || out.back() != key.first)) out.push_back(key.first);
     return out;
 }
 

@@ -30,7 +30,7 @@ class SdoClient;
 //    the heartbeat this service started stops once no guard is left;
 //  - when the bus closes: takePutBack() before the SDO client goes, the drives disabled
 //    (DriveDisable.h), then putBackDirect(), then the heartbeat stops, then the bus closes.
-// Listen-only never transmits: no heartbeat, no guard (stateText says why). Lives on the SDO
+// Listen-only never transmits: no heartbeat, no guard (the drive's text says why). Lives on the SDO
 // client's thread; writes through the guards, each reported to the send observer.
 class GuardedDrives : public QObject {
     Q_OBJECT
@@ -72,7 +72,7 @@ public:
     void consent(uint8_t node, bool yes);
 
     std::vector<Drive> drives() const;
-    std::vector<uint8_t> guardedNodes() const;  // armed
+    std::vector<uint8_t> guardedNodes() const;  // whose guard is armed (also one whose put-back failed)
     // A guard is armed or being armed or released: CoScope's heartbeat must go on.
     bool holdsHeartbeat() const;
 
