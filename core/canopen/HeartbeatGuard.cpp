@@ -75,6 +75,7 @@ uint16_t HeartbeatGuard::consumerTimeFor(uint16_t periodMs) {
 
 void HeartbeatGuard::finish(const HeartbeatGuardCallback& done, HeartbeatGuardResult r) {
     busy_ = false;
+    changing_ = false;
     if (!done) return;
     // Always later, never from inside arm()/release().
     QMetaObject::invokeMethod(this, [done, r] { done(r); }, Qt::QueuedConnection);
@@ -177,10 +178,23 @@ void HeartbeatGuard::readAbortOption(std::shared_ptr<Arming> a) {
     });
 }
 
+std::vector<DirectDownload> HeartbeatGuard::putBackWrites() const {
+    std::vector<DirectDownload> out;
+    if (!armed_ && !changing_) return out;
+    out.push_back(DirectDownload::of(node_, 0x1016, sub_, le(oldEntry_, 4)));
+    if (oldAbortOption_) out.push_back(DirectDownload::of(node_, abortIndex(), 0, le(uint16_t(*oldAbortOption_), 2)));
+    return out;
+}
+
 void HeartbeatGuard::writeAll(std::shared_ptr<Arming> a) {
     QPointer<HeartbeatGuard> self(this);
     const uint32_t entry = (uint32_t(a->producer) << 16) | a->timeMs;
     const uint32_t old = a->entries[a->sub - 1];
+    // Known from here on, for a put-back while the writes are under way (putBackWrites()).
+    changing_ = true;
+    sub_ = a->sub;
+    oldEntry_ = old;
+    oldAbortOption_ = a->oldOption;
     auto writeConsumer = [self, a, entry, old]() {
         self->write(0x1016, a->sub, le(entry, 4),
                     QStringLiteral("%1 (watch node %2's heartbeat, %3 ms)").arg(hex32(entry)).arg(a->producer).arg(a->timeMs),

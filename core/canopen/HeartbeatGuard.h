@@ -3,6 +3,7 @@
 
 #include "core/canopen/HeartbeatProducer.h"
 #include "core/canopen/SdoClient.h"
+#include "core/canopen/SdoDirect.h"
 
 #include <QObject>
 #include <QString>
@@ -10,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace coscope::canopen {
 
@@ -70,6 +72,14 @@ public:
     // armed (release() may be called again; nothing is retried by itself).
     void release(HeartbeatGuardCallback done);
 
+    // What release() writes, for putting the old values back straight on the bus while it closes
+    // (SdoDirect.h, GuardedDrives): the 1016h entry first, then 6007h. Also while arming, once
+    // the old values are read (writing them back is harmless if the new ones never went out).
+    // Empty when nothing was or is being changed.
+    std::vector<DirectDownload> putBackWrites() const;
+    // The old values were put back by other means (putBackWrites() confirmed): no longer armed.
+    void markPutBack() { armed_ = changing_ = false; }
+
     // "quick stop" for 3, and so on (CiA 402-2 6007h value names).
     static QString abortOptionName(int16_t code);
     // The consumer time used for a producer period (3 x, at most 65535 ms); 0 when it does not fit.
@@ -93,6 +103,7 @@ private:
     std::function<void(const QString&)> onSend_;
     bool busy_ = false;
     bool armed_ = false;
+    bool changing_ = false;  // arming's writes are under way (the old values below are known)
     // What arm() changed, for release().
     uint8_t sub_ = 0;
     uint32_t oldEntry_ = 0;

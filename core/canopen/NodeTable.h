@@ -32,6 +32,26 @@ enum class NmtSource : uint8_t {
     Emcy,          // the node sends EMCY: at least Pre-operational
 };
 
+// CoScope's watch over a node's error control (HeartbeatMonitor, CiA 301 §7.2.8.3.2): the
+// heartbeat the user expects from it (a consumer time, as 1016h would hold) or node guarding
+// (guard time 100Ch, life time factor 100Dh), and what the watch finds.
+struct ErrorControlWatch {
+    enum class Status : uint8_t {
+        Off,      // not watched
+        Waiting,  // watched, nothing received yet
+        Ok,       // heartbeat in time / the last guarding request answered with the right toggle
+        Late,     // a heartbeat overdue / a guarding request unanswered or a wrong toggle, life time not over
+        Lost,     // no heartbeat within the consumer time / no answer within the node life time
+    };
+    int consumerTimeMs = 0;  // heartbeat watched when > 0
+    int guardTimeMs = 0;     // node guarding when > 0: an RTR on 700h + node every guard time
+    int lifeTimeFactor = 0;  // node life time = guard time x factor
+    Status status = Status::Off;
+    int64_t lastNs = 0;      // the last heartbeat or guarding answer (0 = none yet)
+    uint32_t lost = 0;       // times it was lost
+    bool guarding() const { return guardTimeMs > 0; }
+};
+
 // What is known about one node 1..127: from the traffic seen (boot-up, heartbeat, EMCY, SDO
 // responses; CiA 301 §7.2.8.3.2), from the master's heartbeat consumer / node guarding, and
 // from what was asked (scan, identity reads), with the dictionary matched or assigned to it.
@@ -59,6 +79,7 @@ struct NodeInfo {
     bool stateUnknownAfterGap = false;
     FrameNo gapFrame = 0;
     int guardingErrors = 0;          // missing or wrong-toggle guarding answers
+    ErrorControlWatch watch;         // CoScope's heartbeat consumer / node guarding of the node
     std::optional<uint32_t> deviceType;                               // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
     QString deviceName;                                               // 1008h, empty = unknown

@@ -155,7 +155,7 @@ void EventLog::checkHeartbeats(int64_t nowNs) {
 void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
     for (size_t id = 1; id < watch_.size(); ++id) {
         NodeWatch& w = watch_[id];
-        if (!w.lastNs || !w.periodNs || w.timedOut) continue;
+        if (!w.lastNs || !w.periodNs || w.timedOut || w.watched) continue;
         const int64_t limit = std::max<int64_t>(3 * w.periodNs, 1'500'000'000);
         if (nowNs - w.lastNs > limit) {
             w.timedOut = true;
@@ -176,6 +176,12 @@ void EventLog::restartHeartbeatWaits(int64_t backNs) {
     std::lock_guard lock(mutex_);
     for (NodeWatch& w : watch_)
         if (w.lastNs && !w.timedOut) w.lastNs = backNs;
+}
+
+void EventLog::setWatched(int node, bool watched) {
+    if (node < 1 || node > 127) return;
+    std::lock_guard lock(mutex_);
+    watch_[static_cast<size_t>(node)].watched = watched;
 }
 
 void EventLog::forgetNode(int node) {

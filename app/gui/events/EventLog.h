@@ -54,6 +54,9 @@ public:
     void restartHeartbeatWaits(int64_t backNs);
     // Stops expecting heartbeats from `node` (its device moved to another node-ID).
     void forgetNode(int node);
+    // CoScope watches the node's heartbeat or guards it (HeartbeatMonitor, with the times the
+    // user set): its losses are told from there, not guessed here from the heartbeat period.
+    void setWatched(int node, bool watched);
 
     uint64_t generation() const { return generation_.load(std::memory_order_acquire); }  // bumps on clear()
     size_t size() const;
@@ -71,6 +74,7 @@ private:
         int64_t lastNs = 0;
         int64_t periodNs = 0;
         bool timedOut = false;
+        bool watched = false;  // setWatched()
     };
     std::array<NodeWatch, 128> watch_{};
     std::atomic<uint64_t> generation_{0};

@@ -124,6 +124,19 @@ const char* const kBusTexts[] = {
     QT_TRANSLATE_NOOP("CoreText", "AIMOTOR fault code"),
     QT_TRANSLATE_NOOP("CoreText", "M1 alarm code"),
     QT_TRANSLATE_NOOP("CoreText", "M2 alarm code"),
+    // CoScope's heartbeat guard of the drives it enabled (core/canopen/GuardedDrives.cpp,
+    // HeartbeatGuard.cpp) and its watch over the nodes' error control (HeartbeatMonitor.cpp).
+    QT_TRANSLATE_NOOP("CoreText", "%1: the bus is listen-only: CoScope sends nothing, so no heartbeat and no guard"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: CoScope's heartbeat cannot start: %2"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: the old 1016h/6007h could not be put back (the bus is closed); check them"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: heartbeat consumer 1016h and 6007h put back before the bus closed"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: the old 1016h/6007h were not all put back (%2); check them"),
+    QT_TRANSLATE_NOOP("CoreText", "%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5"),
+    QT_TRANSLATE_NOOP("CoreText", "%1: heartbeat consumer 1016h:%2 = %3%4 put back"),
+    QT_TRANSLATE_NOOP("CoreText", "node %1: node guarding answer with toggle bit %2, %3 expected"),
+    QT_TRANSLATE_NOOP("CoreText", "node %1: no answer to a node guarding request within the guard time %2 ms"),
 };
 
 // A list the lower layers join with ", " or "; " (the problems of one CAN error frame, the

@@ -2,15 +2,18 @@
 #include "app/gui/master/MasterActions.h"
 
 #include "app/gui/language/CoreText.h"
+#include "app/gui/master/HeartbeatGuardQuestion.h"
 #include "app/gui/master/MasterSettings.h"
 #include "app/gui/master/MasterSettingsDialog.h"
 #include "app/gui/session/Workspace.h"
+#include "core/canopen/GuardedDrives.h"
 #include "core/canopen/HeartbeatProducer.h"
 #include "core/canopen/SdoClient.h"
 #include "core/canopen/SyncProducer.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QLocale>
 #include <QPointer>
 #include <QStyle>
 #include <QWidget>
@@ -42,6 +45,10 @@ MasterActions::MasterActions(Workspace* workspace, QWidget* window) : QObject(wi
     settings_ = new QAction(tr("&Master settings…"), this);
     settings_->setObjectName(QStringLiteral("masterSettingsAction"));
     connect(settings_, &QAction::triggered, this, &MasterActions::showSettings);
+    guardQuestion_ = new HeartbeatGuardQuestion(workspace, window);
+    guardQuestion_->setParent(this);  // the window rebuilds its actions when the language changes
+    connect(guardQuestion_, &HeartbeatGuardQuestion::message, this, &MasterActions::message);
+    connect(guardQuestion_, &HeartbeatGuardQuestion::error, this, &MasterActions::error);
     refresh();
 }
 
@@ -109,6 +116,7 @@ void MasterActions::showSettings() {
         }
         heartbeatFor_ = nullptr;  // set up again with the new settings
         applyHeartbeat();
+        guardQuestion_->applySettings();
     });
     dialog->open();
 }
@@ -118,6 +126,14 @@ void MasterActions::applyHeartbeat() {
     canopen::HeartbeatProducer* hb = workspace_->heartbeatProducer();
     if (!hb || !workspace_->canTransmit()) return;
     if (heartbeatFor_ == hb) return;
+    // A drive watches it (GuardedDrives): stopping it or changing its node-ID would make the
+    // drive stop. The new settings apply once no drive watches it any more.
+    if (canopen::GuardedDrives* guards = workspace_->guardedDrives(); guards && guards->holdsHeartbeat()) {
+        if (!heartbeatHeld_) emit message(tr("CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released"));
+        heartbeatHeld_ = true;
+        return;
+    }
+    heartbeatHeld_ = false;
     heartbeatFor_ = hb;
     const MasterSettings m = MasterSettings::load();
     hb->stop();
@@ -145,6 +161,7 @@ void MasterActions::refresh() {
     }
     if (!workspace_->heartbeatProducer()) heartbeatFor_ = nullptr;
     applyHeartbeat();
+    guardQuestion_->refresh();
 }
 
 QString MasterActions::statusText() const {
@@ -152,7 +169,12 @@ QString MasterActions::statusText() const {
     if (canopen::SyncProducer* sync = workspace_->syncProducer(); sync && sync->isRunning())
         parts << tr("SYNC %1 (%L2)").arg(MasterSettings::periodText(sync->periodUs())).arg(sync->sent());
     if (canopen::HeartbeatProducer* hb = workspace_->heartbeatProducer(); hb && hb->isRunning())
-        parts << tr("heartbeat %1").arg(hb->nodeId());
+        parts << tr("Heartbeat %1 ms").arg(hb->periodMs());
+    if (canopen::GuardedDrives* guards = workspace_->guardedDrives()) {
+        QStringList nodes;
+        for (uint8_t n : guards->guardedNodes()) nodes << QString::number(n);
+        if (!nodes.isEmpty()) parts << tr("guarding node %1", nullptr, int(nodes.size())).arg(QLocale().createSeparatedList(nodes));
+    }
     return parts.join(QStringLiteral(" · "));
 }
 

@@ -9,6 +9,7 @@ class QWidget;
 
 namespace coscope::gui {
 
+class HeartbeatGuardQuestion;
 class Workspace;
 
 // The Bus menu's and the toolbar's master actions: SYNC on/off (checkable; the SYNC producer of
@@ -23,11 +24,14 @@ public:
 
     QAction* syncAction() const { return sync_; }
     QAction* settingsAction() const { return settings_; }
+    // Asks whether a drive CoScope enabled may watch CoScope's heartbeat (GuardedDrives).
+    HeartbeatGuardQuestion* guardQuestion() const { return guardQuestion_; }
 
     // The window's refresh tick (≤ 30 Hz): enabled and checked states, the heartbeat started
     // once the bus can transmit.
     void refresh();
-    // "SYNC 10 ms (1,234)" while SYNC runs, "heartbeat 127" while CoScope's heartbeat runs.
+    // "SYNC 10 ms (1,234)" while SYNC runs, "Heartbeat 100 ms" while CoScope's heartbeat runs,
+    // "guarding node 3" while node 3 watches it (GuardedDrives).
     QString statusText() const;
 
     // What the SYNC action does; false with *error when it cannot start.
@@ -47,6 +51,8 @@ private:
     QWidget* window_;
     QAction* sync_ = nullptr;
     QAction* settings_ = nullptr;
+    HeartbeatGuardQuestion* guardQuestion_ = nullptr;
+    bool heartbeatHeld_ = false;  // new heartbeat settings wait until no drive watches it
     const void* heartbeatFor_ = nullptr;  // the bus whose heartbeat was set up
 };
 

@@ -3,10 +3,12 @@
 
 #include "app/gui/language/CoreText.h"
 
+#include "app/gui/nodes/ErrorControlDialog.h"
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/MenuTitle.h"
 #include "app/gui/session/Workspace.h"
+#include "core/canopen/HeartbeatMonitor.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/Nmt.h"
 #include "eds/DictionaryLibrary.h"
@@ -76,6 +78,10 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         if (ok) assignDictionary(node, name);
     });
 
+    errorControl_ = new QAction(tr("Heartbeat and guarding…"), this);
+    errorControl_->setObjectName(QStringLiteral("errorControlAction"));
+    connect(errorControl_, &QAction::triggered, this, &NodesDock::editErrorControl);
+
     connect(view_, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
         updateEnabled();
         QMenu menu(this);
@@ -86,6 +92,7 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         menu.addSeparator();
         menu.addAction(identify_);
         menu.addAction(assign_);
+        menu.addAction(errorControl_);
         menu.addSeparator();
         menu.addAction(scan_);
         if (!workspace_->canTransmit())
@@ -135,6 +142,47 @@ void NodesDock::updateEnabled() {
         scan_->setToolTip(why);
     }
     assign_->setEnabled(selectedNode() > 0);
+    errorControl_->setEnabled(selectedNode() > 0 && workspace_->heartbeatMonitor());
+}
+
+void NodesDock::editErrorControl() {
+    const int node = selectedNode();
+    canopen::HeartbeatMonitor* monitor = workspace_->heartbeatMonitor();
+    if (node <= 0 || !monitor) return;
+    canopen::NodeInfo info = workspace_->nodes().node(node).value_or(canopen::NodeInfo{});
+    info.node = node;
+    // Node guarding sends an RTR each guard time; listen-only never transmits.
+    const QString off = workspace_->canTransmit() ? QString()
+                        : workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: node guarding would transmit (an RTR each guard time); "
+                                                                                      "a heartbeat can still be watched.")
+                                                                                   : tr("The bus is not open: node guarding cannot send its requests.");
+    ErrorControlDialog dialog(info, off, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const ErrorControlDialog::Choice c = dialog.choice();
+    watchNode(node, c.kind == ErrorControlDialog::Kind::Heartbeat ? c.consumerTimeMs : 0, c.kind == ErrorControlDialog::Kind::Guarding ? c.guardTimeMs : 0,
+              c.lifeTimeFactor);
+}
+
+bool NodesDock::watchNode(int node, int consumerTimeMs, int guardTimeMs, int lifeTimeFactor) {
+    canopen::HeartbeatMonitor* monitor = workspace_->heartbeatMonitor();
+    if (!monitor) return false;
+    const auto id = static_cast<uint8_t>(node);
+    if (guardTimeMs > 0) {
+        QString error;
+        if (!monitor->setGuarding(id, guardTimeMs, lifeTimeFactor, &error)) {
+            emit message(tr("Node guarding of node %1 not started: %2").arg(node).arg(coreText(error)));
+            QMessageBox::warning(this, tr("Node guarding"), tr("Node guarding of node %1 not started: %2").arg(node).arg(coreText(error)));
+            return false;
+        }
+        emit message(tr("Node %1: node guarding every %2 ms, lost after %3 ms without an answer").arg(node).arg(guardTimeMs).arg(guardTimeMs * lifeTimeFactor));
+    } else if (consumerTimeMs > 0) {
+        monitor->setConsumerTime(id, consumerTimeMs);
+        emit message(tr("Node %1: heartbeat expected within %2 ms").arg(node).arg(consumerTimeMs));
+    } else {
+        monitor->unwatch(id);
+        emit message(tr("Node %1 is no longer watched").arg(node));
+    }
+    return true;
 }
 
 int NodesDock::selectedNode() const {

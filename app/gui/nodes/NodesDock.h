@@ -35,6 +35,11 @@ public:
     // The actions (for tests and menus); enabled only when the bus can transmit.
     QList<QAction*> commandActions() const { return commands_; }
     QAction* scanAction() const { return scan_; }
+    // Context menu ▸ Heartbeat and guarding…: how CoScope watches the selected node.
+    QAction* errorControlAction() const { return errorControl_; }
+    // Applies a choice of the dialog to `node` (canopen::HeartbeatMonitor); false with a message
+    // when it cannot (node guarding on a listen-only bus).
+    bool watchNode(int node, int consumerTimeMs, int guardTimeMs, int lifeTimeFactor);
 
     // Sends an NMT command (CiA 301 §7.2.8.3.1) after confirmation; `node` 0 = all nodes. A
     // command that stops a node's application first reads the drives' statusword 6041h, without
@@ -60,6 +65,7 @@ signals:
 private:
     bool confirm(const QString& title, const QString& what);
     void updateEnabled();
+    void editErrorControl();
     // Asks (the question box opens without blocking) and sends when the answer is yes.
     bool askNmt(uint8_t command, int node, const QString& warning);
     bool transmitNmt(uint8_t command, int node);
@@ -78,6 +84,7 @@ private:
     QAction* scan_ = nullptr;
     QAction* identify_ = nullptr;
     QAction* assign_ = nullptr;
+    QAction* errorControl_ = nullptr;
     bool autoConfirm_ = false;
     bool asking_ = false;  // an NMT question is being prepared or shown
     QString lastConfirmation_;

@@ -51,6 +51,40 @@ QString sourceExplained(const canopen::NodeInfo& n) {
     return NodesModel::tr("Nothing seen yet shows the node's state.");
 }
 
+// CoScope's watch over the node (HeartbeatMonitor): "heartbeat 300 ms: ok, 0.1 s ago".
+QString watchText(const canopen::NodeInfo& n, int64_t now) {
+    using Status = canopen::ErrorControlWatch::Status;
+    const canopen::ErrorControlWatch& w = n.watch;
+    if (w.status == Status::Off) return {};
+    const QString what = w.guarding() ? NodesModel::tr("guarding %1 ms × %2").arg(w.guardTimeMs).arg(w.lifeTimeFactor)
+                                      : NodesModel::tr("heartbeat %1 ms").arg(w.consumerTimeMs);
+    QString status;
+    switch (w.status) {
+    case Status::Waiting: status = NodesModel::tr("waiting"); break;
+    case Status::Ok: status = NodesModel::tr("ok"); break;
+    case Status::Late: status = NodesModel::tr("late"); break;
+    case Status::Lost: status = NodesModel::tr("lost"); break;
+    case Status::Off: break;
+    }
+    if (w.lastNs) status = NodesModel::tr("%1, %2 s ago").arg(status).arg(double(std::max<int64_t>(0, now - w.lastNs)) / 1e9, 0, 'f', 1);
+    return NodesModel::tr("%1: %2").arg(what, status);
+}
+
+QString watchExplained(const canopen::NodeInfo& n) {
+    const canopen::ErrorControlWatch& w = n.watch;
+    if (w.status == canopen::ErrorControlWatch::Status::Off) return NodesModel::tr("Not watched by CoScope (Heartbeat and guarding… in the context menu)");
+    if (w.guarding())
+        return NodesModel::tr("Node guarding (CiA 301): CoScope asks every %1 ms; the node is late when a request goes unanswered or the toggle bit is "
+                              "wrong, lost after %2 ms without a right answer. Guarding errors: %3, lost %4 time(s).")
+            .arg(w.guardTimeMs)
+            .arg(w.guardTimeMs * w.lifeTimeFactor)
+            .arg(n.guardingErrors)
+            .arg(w.lost);
+    return NodesModel::tr("Heartbeat consumer (CiA 301): late when a heartbeat is overdue, lost when none comes within %1 ms. Lost %2 time(s).")
+        .arg(w.consumerTimeMs)
+        .arg(w.lost);
+}
+
 }  // namespace
 
 NodesModel::NodesModel(QObject* parent) : QAbstractTableModel(parent) {}
@@ -111,6 +145,15 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
         italic.setItalic(true);
         return italic;
     }
+    if (role == Qt::BackgroundRole && index.column() == ErrorControl) {
+        using Status = canopen::ErrorControlWatch::Status;
+        switch (n.watch.status) {
+        case Status::Ok: return QBrush(QColor(200, 240, 200));
+        case Status::Late: return QBrush(QColor(255, 225, 170));
+        case Status::Lost: return QBrush(QColor(255, 205, 205));
+        default: return {};
+        }
+    }
     if (role == Qt::ForegroundRole && index.column() == Emcy && n.emcyCount) return QBrush(QColor(176, 0, 32));
     if (role == Qt::TextAlignmentRole && (index.column() == Node || index.column() == HeartbeatAge || index.column() == Emcy))
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
@@ -132,6 +175,7 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
     case HeartbeatAge:
         if (!n.seenHeartbeat) return tr("—");
         return QStringLiteral("%1 s").arg(double(std::max<int64_t>(0, now - n.lastHeartbeatNs)) / 1e9, 0, 'f', 1);
+    case ErrorControl: return role == Qt::ToolTipRole ? watchExplained(n) : watchText(n, now);
     case DeviceName: {
         const QString name = n.notPresent & canopen::NodeInfo::kNoDeviceName ? tr("not present") : n.deviceName;
         if (role == Qt::DisplayRole) return name;
@@ -173,6 +217,7 @@ QVariant NodesModel::headerData(int section, Qt::Orientation orientation, int ro
     case State: return tr("NMT state");
     case StateSource: return tr("State from");
     case HeartbeatAge: return tr("Heartbeat age");
+    case ErrorControl: return tr("Heartbeat / guarding");
     case DeviceName: return tr("Device name");
     case Identity: return tr("Identity (1018h)");
     case Dictionary: return tr("Dictionary");

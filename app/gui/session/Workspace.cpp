@@ -4,6 +4,8 @@
 
 #include "core/canopen/BusMaster.h"
 #include "core/canopen/DriveDisable.h"
+#include "core/canopen/GuardedDrives.h"
+#include "core/canopen/HeartbeatMonitor.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
 #include "core/can/BusInterfaceName.h"
@@ -50,9 +52,7 @@ void Workspace::reset() {
     }
     loadJob_.reset();
     if (bus_) emit aboutToDisconnect();
-    busMaster_.reset();  // periodic sends stop before the bus closes
-    sdo_.reset();
-    disableEnabledDrives();
+    closeMaster();
     if (bus_) bus_->close();
     if (session_) session_->stop();
     session_.reset();
@@ -120,6 +120,8 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     session_->addConsumer(master_->dispatcher().consumer());
     sdo_ = std::make_unique<canopen::SdoClient>(*master_);
     busMaster_ = std::make_unique<canopen::BusMaster>(*master_);
+    guards_ = std::make_unique<canopen::GuardedDrives>(*master_, *sdo_, busMaster_->heartbeat());
+    watchErrorControl();
     session_->start(bus_.get());
     spdlog::info("connecting to {}", sourceName_.toStdString());
     bus_->open();
@@ -158,9 +160,7 @@ void Workspace::disconnectBus() {
     // bus and the SDO client are still there.
     emit aboutToDisconnect();
     // Keep the trace: stop the bus and the ingest thread, leave the store for review.
-    busMaster_.reset();  // periodic sends stop before the bus closes
-    sdo_.reset();
-    disableEnabledDrives();
+    closeMaster();
     bus_->close();
     lostSinceNs_ = 0;
     if (session_) session_->stop();
@@ -179,10 +179,62 @@ void Workspace::disconnectBus() {
     emit sourceChanged();
 }
 
+// The heartbeat consumer / node guarding the user sets per node (Nodes dock): its findings in
+// the node table, its losses and returns in the Events.
+void Workspace::watchErrorControl() {
+    monitor_ = std::make_unique<canopen::HeartbeatMonitor>(*master_);
+    monitor_->setTableFedByTrace(true);
+    canopen::HeartbeatMonitor* m = monitor_.get();
+    connect(m, &canopen::HeartbeatMonitor::nodeChanged, this, [this, m](int node) {
+        events_.setWatched(node, m->watch(static_cast<uint8_t>(node)).status != canopen::ErrorControlWatch::Status::Off);
+    });
+    connect(m, &canopen::HeartbeatMonitor::nodeLost, this, [this, m](int node) {
+        const canopen::ErrorControlWatch w = m->watch(static_cast<uint8_t>(node));
+        events_.add(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs(), kNoFrame, node, [w] {
+            return w.guarding() ? tr("Node guarding lost: no answer within the node life time of %1 ms (guard time %2 ms × %3)")
+                                      .arg(w.guardTimeMs * w.lifeTimeFactor)
+                                      .arg(w.guardTimeMs)
+                                      .arg(w.lifeTimeFactor)
+                                : tr("Heartbeat lost: none within the consumer time of %1 ms").arg(w.consumerTimeMs);
+        }));
+    });
+    connect(m, &canopen::HeartbeatMonitor::nodeBack, this, [this, m](int node) {
+        const bool guarding = m->watch(static_cast<uint8_t>(node)).guarding();
+        events_.add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, node,
+                                  [guarding] { return guarding ? tr("Node guarding answers again") : tr("Heartbeat back"); }));
+    });
+    connect(m, &canopen::HeartbeatMonitor::guardingError, this, [this](int node, const QString& what) {
+        events_.add(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs(), kNoFrame, node, [what] { return coreText(what); }));
+    });
+}
+
+void Workspace::closeMaster() {
+    monitor_.reset();  // its guarding requests stop
+    std::vector<canopen::GuardedDrives::PutBack> putBack = guards_ ? guards_->takePutBack() : std::vector<canopen::GuardedDrives::PutBack>{};
+    guards_.reset();
+    // Nothing periodic may counter the Disable (a transmit row with a controlword, process data
+    // with each SYNC); CoScope's heartbeat goes on while drives watch it.
+    if (busMaster_) {
+        busMaster_->sync().stop();
+        busMaster_->transmit().stopAll();
+    }
+    sdo_.reset();
+    const canopen::DriveDisableOutcome disabled = disableEnabledDrives();
+    if (master_ && !putBack.empty()) {
+        for (const canopen::PutBackOutcome& o : canopen::putBackDirect(*master_, std::move(putBack), disabled, kDisableWaitMs)) {
+            const int node = o.node;
+            const bool ok = o.putBack;
+            events_.add(renderedEvent(ok ? TraceEvent::Kind::Info : TraceEvent::Kind::BusError, nowNs(), kNoFrame, node, [text = o.text] { return coreText(text); }));
+            if (!ok) emit errorOccurred(coreText(o.text));
+        }
+    }
+    busMaster_.reset();  // CoScope's heartbeat stops last, before the bus closes
+}
+
 // The frames go straight on the bus and the wait is bounded (500 ms): nothing of the window's
 // (no SDO client, no event loop) is needed, so it also runs from the destructor.
-void Workspace::disableEnabledDrives() {
-    if (!master_ || master_->enabledDrives().isEmpty()) return;
+canopen::DriveDisableOutcome Workspace::disableEnabledDrives() {
+    if (!master_ || master_->enabledDrives().isEmpty()) return {};
     const canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*master_, kDisableWaitMs);
     for (const auto& d : outcome.drives) {
         const int node = d.drive.node, axis = d.drive.axis;
@@ -200,6 +252,7 @@ void Workspace::disableEnabledDrives() {
         events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, node, text));
         emit errorOccurred(text());
     }
+    return outcome;
 }
 
 QString Workspace::journalFolder() const { return journals::defaultFolder(); }

@@ -10,6 +10,7 @@
 #include "app/gui/trace/LogLoadJob.h"
 #include "app/gui/trace/TraceDecoder.h"
 #include "core/can/CanBus.h"
+#include "core/canopen/DriveDisable.h"
 #include "core/canopen/NodeTable.h"
 #include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
@@ -22,6 +23,8 @@
 
 namespace coscope::canopen {
 class BusMaster;
+class GuardedDrives;
+class HeartbeatMonitor;
 class HeartbeatProducer;
 class MasterContext;
 class SdoClient;
@@ -70,6 +73,15 @@ public:
     canopen::BusMaster* busMaster() const { return busMaster_.get(); }
     canopen::SyncProducer* syncProducer() const;
     canopen::HeartbeatProducer* heartbeatProducer() const;
+    // The drives CoScope enabled on the open bus, each watching CoScope's heartbeat with the
+    // user's consent (1016h/6007h), or null. When the bus closes, whatever closes it: the drives
+    // are disabled, then their old 1016h/6007h put back, then the heartbeat stops, then the bus
+    // closes (closeMaster()).
+    canopen::GuardedDrives* guardedDrives() const { return guards_.get(); }
+    // CoScope's heartbeat consumer and node guarding of the open bus (the times the user set
+    // per node in the Nodes dock), writing into nodes(); its losses go to the Events. Null
+    // without a bus.
+    canopen::HeartbeatMonitor* heartbeatMonitor() const { return monitor_.get(); }
     LogLoadJob* loadJob() const { return loadJob_.get(); }
 
     // The capture journal of the live capture (DESIGN.md "Reliability"): every frame of a bus
@@ -114,7 +126,13 @@ private:
     // Before the bus closes, whatever closes it: the last word to each drive CoScope enabled
     // (canopen::disableEnabledDrives), after the SDO client is gone; said in the log, the Events
     // and, when a Disable was not seen on the bus, as an error.
-    void disableEnabledDrives();
+    canopen::DriveDisableOutcome disableEnabledDrives();
+    // The master services' end, in this order: no more guarding, SYNC and periodic transmits
+    // stop, the SDO client goes, the drives CoScope enabled are disabled, the guards' old values
+    // are put back (a drive whose Disable was not confirmed keeps watching, and stops by itself
+    // when the heartbeat stops), then CoScope's heartbeat stops. The bus is still open.
+    void closeMaster();
+    void watchErrorControl();
     void openJournal();
     void closeJournal();
     void noteLostAdapter(CanBus::State state);
@@ -134,6 +152,8 @@ private:
     std::unique_ptr<canopen::MasterContext> master_;
     std::unique_ptr<canopen::SdoClient> sdo_;
     std::unique_ptr<canopen::BusMaster> busMaster_;
+    std::unique_ptr<canopen::GuardedDrives> guards_;
+    std::unique_ptr<canopen::HeartbeatMonitor> monitor_;
     std::unique_ptr<LogLoadJob> loadJob_;
     QString sourceName_;
     QString journalPath_;
