@@ -100,6 +100,9 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("CoreText", "opening"),
     QT_TRANSLATE_NOOP("CoreText", "open"),
     QT_TRANSLATE_NOOP("CoreText", "error"),
+    // core/od/NumberNotation.cpp: the PDO transmission types with a name (CiA 301 §7.2.2.2).
+    QT_TRANSLATE_NOOP("CoreText", "FFh (event)"),
+    QT_TRANSLATE_NOOP("CoreText", "FEh (event, manufacturer)"),
 };
 }  // namespace
 

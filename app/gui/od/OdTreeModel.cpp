@@ -141,6 +141,7 @@ QString OdTreeModel::valueText(const od::SubObject& e, const od::Value& v, bool 
         const auto raw = v.toInt64();
         const uint64_t bits = raw ? static_cast<uint64_t>(*raw) : v.toUInt64().value_or(0);
         if (QString hex = od::hexValueText(e.index, e.sub, bits, od::bitSize(e.dataType)); !hex.isEmpty()) return hex;
+        if (QString named = od::namedValueText(e.index, e.sub, bits); !named.isEmpty()) return coreText(named);
     }
     return v.format(e.dataType, o);
 }
