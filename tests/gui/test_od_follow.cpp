@@ -4,7 +4,7 @@
 // wizard's Shutdown and, for a node shown before, 0000h after its Disable when that node is shown
 // again (never the value read before); a node moved from node-ID 3 to 7 by the node-ID wizard is
 // followed to 7 with its dictionary, and node 3's values are gone. A PDO's transmission type 255
-// reads "FFh (event)".
+// reads "FFh (event)"; the statusword's bits are named by the mode of operation.
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
@@ -17,6 +17,7 @@
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
 #include "eds/SimulatorDictionaries.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -138,6 +139,49 @@ private slots:
         QVERIFY(waitFor([&] { return wizard.shownState() == State::SwitchOnDisabled && !wizard.isBusy(); }));
         QVERIFY(win.choose(1));
         QVERIFY2(waitFor([&] { return win.shown(0x6040, 0) == u"0000h"; }), qPrintable(win.shown(0x6040, 0)));
+        wizard.close();
+    }
+
+    // The statusword's bits in the dock, 12/13 named by the mode of operation read with it, as
+    // the trace and the plot name them (CiA 402-2 §14.1: PV bit 12 "zero speed").
+    void statuswordBitsByMode() {
+        Window win;
+        QVERIFY(win.open());
+        win.w.nodesDock()->assignDictionary(4, QStringLiteral("generic-cia402"));
+        win.w.refresh();
+        Ds402Wizard wizard(win.w.workspace(), 4);
+        wizard.setAutoConfirm(true);
+        QSignalSpy read(&wizard, &Ds402Wizard::stateRead);
+        wizard.show();
+        QVERIFY(waitReady(wizard, read));
+        // Profile velocity chosen in the wizard's list and set, then enabled step by step.
+        QComboBox* modes = wizard.modeCombo();
+        const int pv = modes->findData(3);
+        QVERIFY(pv >= 0);
+        modes->setFocus();
+        QTest::keyClick(modes, Qt::Key_Home);
+        for (int i = 0; i < pv; ++i) QTest::keyClick(modes, Qt::Key_Down);
+        QSignalSpy moded(&wizard, &Ds402Wizard::modeFinished);
+        for (QPushButton* b : wizard.findChildren<QPushButton*>())
+            if (b->text() == u"Set and verify") click(b);
+        QVERIFY(moded.count() > 0 || moded.wait(6000));
+        QCOMPARE(wizard.modeDisplay(), int8_t(3));
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) {
+            QSignalSpy stepped(&wizard, &Ds402Wizard::stepFinished);
+            QVERIFY(wizard.stepButton(c) && wizard.stepButton(c)->isEnabled());
+            click(wizard.stepButton(c));
+            QVERIFY(stepped.count() > 0 || stepped.wait(6000));
+        }
+        QVERIFY(waitFor([&] { return wizard.shownState() == State::OperationEnabled; }));
+
+        QVERIFY(win.choose(4));
+        QVERIFY(win.read(0x6061, 0));
+        QVERIFY(win.read(0x6041, 0));
+        const QString tip = win.dock()->model()->data(win.dock()->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::ToolTipRole).toString();
+        QVERIFY2(tip.contains(QStringLiteral("Bits on:")) && tip.contains(QStringLiteral("operation enabled")) && tip.contains(QStringLiteral("zero speed")), qPrintable(tip));
+        QVERIFY2(!tip.contains(QStringLiteral("operation mode specific")), qPrintable(tip));
+        click(wizard.disableButton());
+        QVERIFY(waitFor([&] { return wizard.shownState() == State::SwitchOnDisabled && !wizard.isBusy(); }));
         wizard.close();
     }
 
