@@ -54,6 +54,7 @@ QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub
     if ((v.kind == FlatField::Kind::UInt || v.kind == FlatField::Kind::Int) && len <= 8) {
         const uint64_t raw = v.kind == FlatField::Kind::Int ? static_cast<uint64_t>(v.i) : v.u;
         if (QString hex = od::hexValueText(index, sub, raw, len * 8); !hex.isEmpty()) return hex;
+        if (QString named = od::namedValueText(index, sub, raw); !named.isEmpty()) return named;
     }
     return text;
 }

@@ -21,9 +21,9 @@ bool hasDigitalBits(uint16_t index, uint8_t sub) {
     return base == 0x040 || base == 0x041;
 }
 
-QString digitalBitName(uint16_t index, int bit) {
+QString digitalBitName(uint16_t index, int bit, std::optional<int8_t> mode) {
     if (bit < 0 || bit > 15) return {};
-    if (index % 0x800 == 0x041) return canopen::ds402::statuswordBitName(bit);
+    if (index % 0x800 == 0x041) return canopen::ds402::statuswordBitName(bit, mode);
     // Controlword 6040h, CiA 402-2 §6.3.1 (extract-delta-asda-a2 §4.1).
     switch (bit) {
     case 0: return QStringLiteral("switch on");

@@ -50,7 +50,9 @@ struct SignalInfo {
 // statusword 6041h of any axis (+ n x 800h, CiA 402-1 §5).
 bool hasDigitalBits(uint16_t index, uint8_t sub);
 // Short name of bit `bit` of 6040h/6041h (CiA 402-2 §6.3.1 / §6.3.2; extract-delta §4.1/4.2).
-QString digitalBitName(uint16_t index, int bit);
+// Statusword bits 12/13 are named by the axis' mode of operation `mode` (6061h) when known, as
+// canopen::ds402::statuswordBitName() names them for the trace (HM: "homing attained"/"homing error").
+QString digitalBitName(uint16_t index, int bit, std::optional<int8_t> mode = std::nullopt);
 
 // The value of a mapped object in a PDO payload, starting at bit `bitOffset` (CiA 301 §7.2.2:
 // least significant bit first), typed by the mapping (signed integers sign-extended, REAL32/64

@@ -184,6 +184,28 @@ void SignalRecorder::learnParameter(int bus, int node, const SdoTransferRecord& 
     revision_.fetch_add(1, std::memory_order_acq_rel);
 }
 
+namespace {
+uint64_t modeKey(int bus, int node, uint16_t index) { return uint64_t(bus) << 32 | uint64_t(node) << 8 | uint64_t((index - 0x6000) / 0x800); }
+}  // namespace
+
+void SignalRecorder::learnMode(int bus, int node, uint16_t index, uint8_t sub, uint64_t raw) {
+    // 6060h/6061h sub 0 of an axis (CiA 402-1 §5: + n x 800h).
+    if (sub != 0 || index < 0x6000 || index > 0x67FF || (index & 0x7FE) != 0x060) return;
+    const uint64_t key = modeKey(bus, node, index);
+    const auto mode = static_cast<int8_t>(raw);
+    std::lock_guard lock(mutex_);
+    const auto it = modes_.find(key);
+    if (it != modes_.end() && it->second == mode) return;
+    modes_[key] = mode;
+    revision_.fetch_add(1, std::memory_order_acq_rel);  // the bit names follow
+}
+
+std::optional<int8_t> SignalRecorder::modeOf(const SignalKey& word) const {
+    if (word.index < 0x6000 || word.index > 0x67FF) return std::nullopt;
+    const auto it = modes_.find(modeKey(word.bus, word.node, word.index));
+    return it == modes_.end() ? std::nullopt : std::optional<int8_t>(it->second);
+}
+
 // A PDO's first frame: true once per bus and COB-ID (a flat table for 11-bit identifiers, no
 // tree lookup per PDO frame).
 bool SignalRecorder::notePdoSeen(int bus, uint32_t id, bool extended) {
@@ -206,7 +228,12 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
         const auto n = static_cast<FrameNo>(first + i);
         const CanFrame f = store.frame(n);
         context_.dissect(f, scratch_, Dissection::Level::Stats);
-        if (scratch_.hasTransfer) learnParameter(f.bus, scratch_.transfer.node >= 0 ? scratch_.transfer.node : scratch_.node, scratch_.transfer);
+        if (scratch_.hasTransfer) {
+            const SdoTransferRecord& t = scratch_.transfer;
+            const int node = t.node >= 0 ? t.node : scratch_.node;
+            learnParameter(f.bus, node, t);
+            if (t.status == QLatin1String("ok") && t.data.size() == 1) learnMode(f.bus, node, t.index, t.sub, uint8_t(t.data[0]));
+        }
         if (!raw_.empty()) recordRaw(f, n);
         const int pdoIndex = canopen::pdoNumber(scratch_.service);
         if (pdoIndex < 0 || f.isRemote() || scratch_.node < 1 || scratch_.node > 127) continue;
@@ -225,6 +252,7 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
             if (e.dummy) continue;
             const std::optional<double> v = pdoValue(e, f.data.data(), f.payloadSize(), at);
             if (!v) continue;
+            if ((e.index & 0x7FE) == 0x060) learnMode(f.bus, scratch_.node, e.index, e.sub, static_cast<uint64_t>(static_cast<int64_t>(*v)));
             Slot& s = slotFor(f.bus, scratch_.node, e, tpdo, scratch_.pdoNumber);
             if (s.pending.empty()) dirty_.push_back(&s);
             s.pending.push_back({f.timestampNs, *v, n});
@@ -261,7 +289,7 @@ std::vector<SignalInfo> SignalRecorder::catalog() const {
         for (int b = 0; b < 16; ++b) {
             SignalInfo bi = w;
             bi.key.bit = static_cast<int8_t>(b);
-            bi.name = QStringLiteral("%1: %2").arg(w.name, digitalBitName(w.key.index, b));
+            bi.name = QStringLiteral("%1: %2").arg(w.name, digitalBitName(w.key.index, b, modeOf(w.key)));
             bi.object = QStringLiteral("%1 bit %2").arg(w.object).arg(b);
             bi.rawUnit.clear();
             bi.rawFactor = 1.0;

@@ -81,6 +81,10 @@ private:
     void ensureCatalogue();
     void applyDictionaries();
     void learnParameter(int bus, int node, const SdoTransferRecord& t);
+    // Modes of operation 6061h (6060h) seen in PDOs or SDO transfers, for the names of the
+    // statusword's mode-specific bits; ingest thread, modes_ under mutex_.
+    void learnMode(int bus, int node, uint16_t index, uint8_t sub, uint64_t raw);
+    std::optional<int8_t> modeOf(const SignalKey& word) const;  // mutex_ held
     SignalScale scaleFor(int bus, int node, const QString& dictionary, const QString& unit, double factor) const;
 
     const size_t capacity_;
@@ -97,6 +101,7 @@ private:
     std::vector<std::bitset<2048>> pdoSeenStd_;  // ingest thread: [bus][11-bit COB-ID] in pdos_
     std::set<uint64_t> pdoKeysExtended_;         // ingest thread: bus << 32 | 29-bit COB-ID in pdos_
     std::vector<PdoSeen> pdos_;   // guarded by mutex_
+    std::map<uint64_t, int8_t> modes_;       // bus << 32 | node << 8 | axis -> mode (guarded by mutex_)
     std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value
     std::atomic<uint64_t> revision_{1};
     std::atomic<int64_t> originNs_{0};

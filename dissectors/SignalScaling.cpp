@@ -5,6 +5,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <cmath>
+
 #include <map>
 #include <mutex>
 
@@ -76,8 +78,31 @@ SignalScale engineeringScale(const QString& dictionaryName, const QString& unit,
     };
     const double perRev = rule->countsPerRevolution * param(rule->multiplyIndex, rule->multiplySub) / param(rule->divideIndex, rule->divideSub);
     if (!(perRev > 0)) return s;
-    if (position) return {factor / perRev, 0.0, QStringLiteral("rev")};
-    return {factor * 60.0 / perRev, 0.0, QStringLiteral("rpm")};
+    // Written as the fraction it is: 1/1280000 rev per PUU, 60/1280000 rpm per PUU/s.
+    const double top = position ? factor : factor * 60.0;
+    const QString written = QStringLiteral("%1/%2").arg(QString::number(top, 'g', 15), QString::number(perRev, 'g', 15));
+    return {top / perRev, 0.0, position ? QStringLiteral("rev") : QStringLiteral("rpm"), written};
+}
+
+QString factorText(const SignalScale& scale) {
+    if (!scale.factorWritten.isEmpty() && parseFactor(scale.factorWritten) == scale.factor) return scale.factorWritten;
+    return QString::number(scale.factor, 'g', 10);
+}
+
+std::optional<double> parseFactor(const QString& text) {
+    const QString t = text.trimmed();
+    bool ok = false;
+    double v = 0;
+    if (const qsizetype slash = t.indexOf(u'/'); slash > 0) {
+        bool okDen = false;
+        const double num = t.left(slash).trimmed().toDouble(&ok), den = t.mid(slash + 1).trimmed().toDouble(&okDen);
+        ok = ok && okDen && den != 0;
+        if (ok) v = num / den;
+    } else {
+        v = t.toDouble(&ok);
+    }
+    if (!ok || v == 0 || !std::isfinite(v)) return std::nullopt;
+    return v;
 }
 
 }  // namespace coscope::dissect

@@ -6,18 +6,30 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <utility>
 
 namespace coscope::dissect {
 
 // How a raw PDO value becomes an engineering value: value = raw * factor + offset, in `unit`.
 struct SignalScale {
+    SignalScale() = default;
+    SignalScale(double f, double o, QString u, QString written = {}) : factor(f), offset(o), unit(std::move(u)), factorWritten(std::move(written)) {}
+
     double factor = 1.0;
     double offset = 0.0;
     QString unit;
+    // The factor as the dictionary or the vendor's rule writes it ("1/1280000" rev per PUU), when
+    // that is not the plain number; see factorText().
+    QString factorWritten;
 
     double apply(double raw) const { return raw * factor + offset; }
     bool operator==(const SignalScale&) const = default;
 };
+
+// The factor as written ("1/1280000", "0.1", "60/1280000"), never "7.8125e-07".
+QString factorText(const SignalScale& scale);
+// A factor typed as a number or a fraction ("0.1", "1/1280000"); nullopt when it is neither or 0.
+std::optional<double> parseFactor(const QString& text);
 
 // A vendor's counts-per-revolution rule, from the "scaling"."revolution" block of a bundled
 // dictionary's sidecar (resources/dictionaries/NAME.json):

@@ -5,6 +5,7 @@
 #include "core/canopen/NmtMaster.h"
 #include "core/canopen/PdoConfigurator.h"
 #include "core/canopen/ServiceWait.h"
+#include "core/od/NumberNotation.h"
 #include "eds/StandardDictionary.h"
 
 #include <QTextStream>
@@ -15,7 +16,7 @@ namespace {
 
 void printPdo(QTextStream& out, const canopen::PdoReadResult& r, const od::ObjectDictionary* dict) {
     const auto& c = r.config;
-    out << r.pdo.name() << "  COB-ID 0x" << QString::number(c.cobId & 0x7FFFFFFF, 16).toUpper() << (c.valid() ? "" : " (not valid)") << "  type " << c.transmissionType;
+    out << r.pdo.name() << "  COB-ID 0x" << QString::number(c.cobId & 0x7FFFFFFF, 16).toUpper() << (c.valid() ? "" : " (not valid)") << "  type " << od::transmissionTypeText(c.transmissionType);
     if (c.inhibitTime) out << "  inhibit " << *c.inhibitTime << " x100us";
     if (c.eventTimer) out << "  event timer " << *c.eventTimer << " ms";
     out << "  " << c.totalBits() << " bits\n";

@@ -168,7 +168,13 @@ void NodeTable::markGap(FrameNo from) {
 void NodeTable::clear() {
     std::lock_guard lock(mutex_);
     for (auto& n : nodes_) n.reset();
+    moves_.clear();
     bump();
+}
+
+std::vector<NodeTable::Move> NodeTable::moves() const {
+    std::lock_guard lock(mutex_);
+    return moves_;
 }
 
 std::vector<NodeInfo> NodeTable::snapshot() const {
@@ -272,6 +278,7 @@ void NodeTable::moveNode(int from, int to) {
         if (old->softwareVersion) e.softwareVersion = old->softwareVersion;
         old.reset();
     }
+    moves_.push_back({from, to});
     bump();
 }
 

@@ -121,6 +121,11 @@ public:
     // The device at `from` now has node-ID `to` (LSS or its own parameter): what was learned by
     // asking it (identity, name, dictionary) goes to `to`; `from` is dropped, nothing is there.
     void moveNode(int from, int to);
+    // The moves since clear(), oldest first: a view showing `from` follows the device to `to`.
+    struct Move {
+        int from = 0, to = 0;
+    };
+    std::vector<Move> moves() const;
     // The bus was lost: every node's state is unknown from frame `from` on, until a frame shows
     // it again (NodeInfo::stateUnknownAfterGap).
     void markGap(FrameNo from);
@@ -131,6 +136,7 @@ private:
 
     mutable std::mutex mutex_;
     std::array<std::optional<NodeInfo>, 128> nodes_;
+    std::vector<Move> moves_;
     std::atomic<uint64_t> revision_{0};
 };
 

@@ -2,6 +2,7 @@
 #include "core/canopen/PdoConfigurator.h"
 
 #include "core/canopen/SdoAbort.h"
+#include "core/od/NumberNotation.h"
 
 #include <QPointer>
 
@@ -135,7 +136,7 @@ std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, con
         ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
                        QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
     ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type"),
-                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(c.transmissionType)});
+                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(od::transmissionTypeText(c.transmissionType))});
     if (c.inhibitTime)
         ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time"),
                        *c.inhibitTime ? QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)").arg(*c.inhibitTime / 10.0)
@@ -277,7 +278,7 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
                 QString diff;
                 if (!after.ok) diff = QStringLiteral("read-back failed: ") + after.error;
                 else if ((after.config.cobId & 0x7FFFFFFFu) != (w.cobId & 0x7FFFFFFFu) || after.config.valid() != w.valid()) diff = QStringLiteral("COB-ID reads back as %1").arg(hex(after.config.cobId, 8));
-                else if (after.config.transmissionType != w.transmissionType) diff = QStringLiteral("transmission type reads back as %1").arg(after.config.transmissionType);
+                else if (after.config.transmissionType != w.transmissionType) diff = QStringLiteral("transmission type reads back as %1").arg(od::transmissionTypeText(after.config.transmissionType));
                 else if (after.config.entries != w.entries) diff = QStringLiteral("the mapping reads back differently (%1 entries)").arg(after.config.entries.size());
                 else if (w.inhibitTime && after.config.inhibitTime != w.inhibitTime) diff = QStringLiteral("inhibit time reads back differently");
                 else if (w.eventTimer && after.config.eventTimer != w.eventTimer) diff = QStringLiteral("event timer reads back differently");

@@ -470,6 +470,7 @@ void SdoClient::finish(NodeQueue& q, bool ok, const QString& error) {
     }
     updateSubscription();
     const uint8_t node = q.node;
+    if (ok && !t->result.upload) emit written(node, t->result.index, t->result.sub, t->data);
     if (t->done) t->done(t->result);
     pump(node);
 }

@@ -81,6 +81,11 @@ public:
 
     MasterContext& context() const { return context_; }
 
+signals:
+    // A download the server confirmed, whoever asked for it (a wizard, a dock, a script): views
+    // holding values read before show the new one (issue 35: 6040h after the wizard's Disable).
+    void written(quint8 node, quint16 index, quint8 sub, const QByteArray& data);
+
 private:
     struct Transfer;
     struct NodeQueue;

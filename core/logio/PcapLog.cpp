@@ -21,6 +21,10 @@ constexpr uint32_t kByteOrderMagic = 0x1A2B3C4D;
 constexpr uint32_t kCanEff = 0x80000000U, kCanRtr = 0x40000000U, kCanErr = 0x20000000U;
 constexpr uint8_t kCanfdBrs = 0x01, kCanfdEsi = 0x02, kCanfdFdf = 0x04;
 constexpr uint32_t kMaxBlock = 16 * 1024 * 1024;
+// epb_flags (pcapng section 4.3.1, option 2): bits 0-1 direction, 01 inbound, 10 outbound.
+// CoScope marks the frames it sent (CanFrame::Tx) outbound, as Wireshark shows them.
+constexpr uint16_t kOptEpbFlags = 2;
+constexpr uint32_t kEpbDirectionMask = 0x3, kEpbOutbound = 0x2;
 }  // namespace
 
 uint32_t PcapReader::u32(const unsigned char* p) const { return swapped_ ? be32(p) : le32(p); }
@@ -271,8 +275,11 @@ int PcapReader::readPcapngBlock(CanFrame& f) {
         const Interface& itf = interfaces_[itfId];
         f.timestampNs = toNs(ticks, itf.unitsPerSecond);
         const uint32_t padded = (capLen + 3) & ~3U;
-        if (type == kEpb && bodyLen > 20 + padded) parsePacketOptions(b + 20 + padded, bodyLen - 20 - padded);
-        return decodePacket(b + 20, capLen, itf, f) ? 1 : 0;
+        uint32_t epbFlags = 0;
+        if (type == kEpb && bodyLen > 20 + padded) epbFlags = parsePacketOptions(b + 20 + padded, bodyLen - 20 - padded);
+        if (!decodePacket(b + 20, capLen, itf, f)) return 0;
+        if ((epbFlags & kEpbDirectionMask) == kEpbOutbound) f.flags |= CanFrame::Tx;
+        return 1;
     }
     if (type == kSpb) {
         ++packet_;
@@ -302,8 +309,17 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
             if (type == kEpb && total >= 32 && total % 4 == 0 && total <= kMaxBlock && qint64(total) <= end_ - pos_) {
                 const unsigned char* b = h + 8;
                 const uint32_t itfId = rd(b), capLen = rd(b + 12);
-                // Blocks with options (a packet comment) take the general path, which reads them.
-                if (itfId < interfaces_.size() && capLen <= total - 32 && total <= 36 + ((capLen + 3) & ~3U)) {
+                // Blocks with options other than a lone epb_flags (a packet comment) take the
+                // general path, which reads them.
+                const uint32_t padded = (capLen + 3) & ~3U;
+                const uint32_t optLen = capLen <= total - 32 ? total - 32 - padded : 0;
+                bool outbound = false;
+                bool plain = optLen <= 4;
+                if ((optLen == 8 || optLen == 12) && u16(b + 20 + padded) == kOptEpbFlags && u16(b + 22 + padded) == 4) {
+                    plain = true;
+                    outbound = (rd(b + 24 + padded) & kEpbDirectionMask) == kEpbOutbound;
+                }
+                if (itfId < interfaces_.size() && capLen <= total - 32 && plain) {
                     pos_ += qsizetype(total);
                     ++packet_;
                     const Interface& itf = interfaces_[itfId];
@@ -329,6 +345,7 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
                     } else {
                         r = decodePacket(p, capLen, itf, f) ? 1 : 0;
                     }
+                    if (outbound) f.flags |= CanFrame::Tx;
                 }
             }
         }
@@ -350,16 +367,19 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
 }
 
 // Options: code u16, length u16, value padded to 4 (pcapng section 3.5); opt_comment is 1.
-void PcapReader::parsePacketOptions(const unsigned char* p, uint32_t len) {
+uint32_t PcapReader::parsePacketOptions(const unsigned char* p, uint32_t len) {
+    uint32_t epbFlags = 0;
     for (uint32_t off = 0; off + 4 <= len;) {
         const uint16_t code = u16(p + off), n = u16(p + off + 2);
         off += 4;
         if (code == 0 || off + n > len) break;
+        if (code == kOptEpbFlags && n == 4) epbFlags = u32(p + off);
         int64_t lost = 0, back = 0;
         if (code == 1 && parseCaptureGapText(std::string_view(reinterpret_cast<const char*>(p + off), n), &lost, &back))
             pendingGaps_.push_back({0, lost, back});  // one comment a gap, in the order written
         off += (uint32_t(n) + 3) & ~3U;
     }
+    return epbFlags;
 }
 
 // ---- writer
@@ -447,6 +467,7 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     QByteArray& o = out();
     uint32_t options = 0;
     for (const QByteArray& c : comments_) options += 4 + ((uint32_t(c.size()) + 3) & ~3U);
+    if (f.isTx()) options += 8;  // epb_flags: outbound
     const uint32_t total = 12 + 20 + capLen + options + 4;  // capLen is a multiple of 4
     put32(o, kEpb);
     put32(o, total);
@@ -464,6 +485,11 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
         pad4(o);
     }
     comments_.clear();
+    if (f.isTx()) {
+        put16(o, kOptEpbFlags);
+        put16(o, 4);
+        put32(o, kEpbOutbound);
+    }
     put16(o, 0);  // opt_endofopt
     put16(o, 0);
     put32(o, total);

@@ -40,7 +40,7 @@ private:
     bool parseSectionHeader(const unsigned char* first8);
     void parseInterface(const QByteArray& body);
     bool decodePacket(const unsigned char* p, uint32_t capLen, const Interface& itf, CanFrame& frame);
-    void parsePacketOptions(const unsigned char* p, uint32_t len);
+    uint32_t parsePacketOptions(const unsigned char* p, uint32_t len);  // returns epb_flags
     uint32_t u32(const unsigned char* p) const;
     uint16_t u16(const unsigned char* p) const;
     int64_t toNs(uint64_t ticks, uint64_t unitsPerSecond) const;

@@ -95,9 +95,21 @@ QString hexValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, i
     return n ? QString::fromUtf16(buf, n) : QString();
 }
 
+QString transmissionTypeText(std::uint64_t type) {
+    if (type == 0xFF) return QStringLiteral("FFh (event)");
+    if (type == 0xFE) return QStringLiteral("FEh (event, manufacturer)");
+    return QString::number(type);
+}
+
+QString namedValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw) {
+    const bool pdoCommunication = between(index, 0x1400, 0x15FF) || between(index, 0x1800, 0x19FF);
+    return pdoCommunication && sub == 2 && raw >= 0xFE && raw <= 0xFF ? transmissionTypeText(raw) : QString();
+}
+
 QString valueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw, int bits) {
     if (bits <= 0 || bits > 64) return {};
     if (bits < 64) raw &= (std::uint64_t(1) << bits) - 1;
+    if (QString named = namedValueText(index, sub, raw); !named.isEmpty()) return named;
     if (QString hex = hexValueText(index, sub, raw, bits); !hex.isEmpty()) return hex;
     const std::uint64_t top = std::uint64_t(1) << (bits - 1);
     if (!(raw & top)) return QString::number(raw);

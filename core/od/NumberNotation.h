@@ -49,6 +49,12 @@ int hexValueTextTo(char16_t* out, std::uint16_t index, std::uint8_t sub, std::ui
 // The same with hexKindFor(index, sub) already known.
 int hexValueTextTo(char16_t* out, HexKind kind, std::uint64_t raw, int bits);
 
+// The PDO transmission types with a name (CiA 301 §7.2.2.2, 1400h..15FFh / 1800h..19FFh sub 02):
+// 255 "FFh (event)", 254 "FEh (event, manufacturer)"; the others decimal (0, a SYNC count, 252…).
+QString transmissionTypeText(std::uint64_t type);
+// transmissionTypeText() of 254/255 for index:sub when it is a PDO's transmission type, else empty.
+QString namedValueText(std::uint16_t index, std::uint8_t sub, std::uint64_t raw);
+
 // Same for a value whose data type is not known (a script step, an SDO without a dictionary):
 // the hex text when the rule says hex, else decimal; a value whose top bit is set may be negative,
 // so it reads "-100 (FFFFFF9Ch)".

@@ -15,6 +15,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
+#include <QRegularExpression>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -99,6 +101,14 @@ private slots:
         typeInto(d->memoryBudget(), QStringLiteral("64"));
         typeInto(d->keepDays(), QStringLiteral("3"));
         typeInto(d->keepMegabytes(), QStringLiteral("4"));
+        // One unit system for sizes (issue 35): binary units, named so (MiB, GiB), never "MB".
+        QCOMPARE(d->memoryBudget()->text(), QStringLiteral("64 MiB"));
+        QCOMPARE(d->keepMegabytes()->text(), QStringLiteral("4 MiB"));
+        const QRegularExpression decimalUnit(QStringLiteral("\\d ?[KMGT]B\\b| [KMGT]B\\b"));
+        for (const QWidget* c : d->findChildren<QWidget*>()) {
+            QVERIFY2(!decimalUnit.match(c->toolTip()).hasMatch(), qPrintable(c->toolTip()));
+            if (const auto* l = qobject_cast<const QLabel*>(c)) QVERIFY2(!decimalUnit.match(l->text()).hasMatch(), qPrintable(l->text()));
+        }
         QTest::mouseClick(d->buttons()->button(QDialogButtonBox::Ok), Qt::LeftButton);
         QVERIFY(waitFor([&] { return !w.findChild<CaptureSettingsDialog*>(); }));
 

@@ -181,7 +181,7 @@ private slots:
     void pdoShowNamesMappedObjects() {
         const Run r = cli({QStringLiteral("pdo"), QStringLiteral("show"), bus_, QStringLiteral("42")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("TPDO1  COB-ID 0x1AA")) && r.out.contains(QStringLiteral("type 254")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("TPDO1  COB-ID 0x1AA")) && r.out.contains(QStringLiteral("type FEh (event, manufacturer)")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("6041:00/16  Statusword (UNSIGNED16)")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("6064:00/32  Position actual value (INTEGER32)")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("RPDO1  COB-ID 0x22A")) && r.out.contains(QStringLiteral("6040:00/16  Controlword (UNSIGNED16)")), qPrintable(r.out));

@@ -63,6 +63,12 @@ private slots:
         QCOMPARE(valueText(0x607A, 0, 0xFFFFFF9Cu, 32), QStringLiteral("-100 (FFFFFF9Ch)"));
         QCOMPARE(objectText(0x1A00, 1), QStringLiteral("1A00h:01"));
         QCOMPARE(hexText(0x650, 4), QStringLiteral("0650h"));
+        // PDO transmission types 254/255 by name, never "-1 (FFh)" (CiA 301 §7.2.2.2).
+        QCOMPARE(valueText(0x1800, 2, 0xFF, 8), QStringLiteral("FFh (event)"));
+        QCOMPARE(valueText(0x1401, 2, 0xFE, 8), QStringLiteral("FEh (event, manufacturer)"));
+        QCOMPARE(valueText(0x2000, 2, 0xFF, 8), QStringLiteral("-1 (FFh)"));  // not a transmission type: no name
+        QCOMPARE(valueText(0x1800, 2, 1, 8), QStringLiteral("1"));
+        QCOMPARE(transmissionTypeText(240), QStringLiteral("240"));
     }
 
     // The trace and the wizards' frames panes: SDO summaries decoded by the dissectors.
@@ -80,6 +86,9 @@ private slots:
         // Producer heartbeat time stays decimal.
         s = sdoSummary(ctx, 0x602, {0x2B, 0x17, 0x10, 0x00, 0xE8, 0x03, 0x00, 0x00});
         QVERIFY2(s.contains(QStringLiteral("= 1000")), qPrintable(s));
+        // Write 1800h:02 = 255: the transmission type by name.
+        s = sdoSummary(ctx, 0x602, {0x2F, 0x00, 0x18, 0x02, 0xFF, 0x00, 0x00, 0x00});
+        QVERIFY2(s.contains(QStringLiteral("= FFh (event)")), qPrintable(s));
     }
 
     // Step tables: what a step does, in the same notation.
@@ -89,6 +98,7 @@ private slots:
         QCOMPARE(write(0x6040, 0, QByteArray::fromHex("0600")).describe(), QStringLiteral("Write 6040h:00 = 0006h on node 2"));
         QCOMPARE(write(0x1017, 0, QByteArray::fromHex("e803")).describe(), QStringLiteral("Write 1017h:00 = 1000 on node 2"));
         QCOMPARE(write(0x1A00, 0, QByteArray::fromHex("02")).describe(), QStringLiteral("Write 1A00h:00 = 2 on node 2"));
+        QCOMPARE(write(0x1800, 2, QByteArray::fromHex("ff")).describe(), QStringLiteral("Write 1800h:02 = FFh (event) on node 2"));
     }
 };
 

@@ -216,6 +216,8 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     connect(listenOnly_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
     connect(replayLoop_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
     onBackendChanged();
+    // Opens on the last connection used (its backend and settings), as the user left it.
+    if (const QStringList recent = RecentConnections::list(); !recent.isEmpty() && BusUrl::parse(recent.first(), nullptr)) setUrl(recent.first());
     resize(520, 480);
 }
 

@@ -100,6 +100,18 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("CoreText", "opening"),
     QT_TRANSLATE_NOOP("CoreText", "open"),
     QT_TRANSLATE_NOOP("CoreText", "error"),
+    // core/canopen/Ds402.cpp: statusword bits 12/13 by mode of operation (CiA 402-2 §12-§16).
+    QT_TRANSLATE_NOOP("CoreText", "set-point acknowledge"),
+    QT_TRANSLATE_NOOP("CoreText", "following error"),
+    QT_TRANSLATE_NOOP("CoreText", "zero speed"),
+    QT_TRANSLATE_NOOP("CoreText", "max slippage error"),
+    QT_TRANSLATE_NOOP("CoreText", "homing attained"),
+    QT_TRANSLATE_NOOP("CoreText", "homing error"),
+    QT_TRANSLATE_NOOP("CoreText", "ip mode active"),
+    QT_TRANSLATE_NOOP("CoreText", "drive follows the command value"),
+    // core/od/NumberNotation.cpp: the PDO transmission types with a name (CiA 301 §7.2.2.2).
+    QT_TRANSLATE_NOOP("CoreText", "FFh (event)"),
+    QT_TRANSLATE_NOOP("CoreText", "FEh (event, manufacturer)"),
 };
 }  // namespace
 

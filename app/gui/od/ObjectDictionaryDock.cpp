@@ -228,6 +228,7 @@ void ObjectDictionaryDock::rebind() {
     autoReadDone_ = false;
     resetProgress();
     kept_.clear();  // values read over the bus before: start again
+    watchSdo();
     if (store_.lock() != workspace_->store()) {
         // Another bus or log: nothing of the previous one stays on screen.
         store_ = workspace_->store();
@@ -247,7 +248,7 @@ void ObjectDictionaryDock::rebind() {
 void ObjectDictionaryDock::setNode(int node) {
     if (node == node_) return;
     const int previous = node_;
-    if (previous > 0 && model_->hasDictionary()) kept_[previous] = {dictName_, model_->values(), messageLine_->text(), messageIsError_};
+    if (previous > 0 && model_->hasDictionary()) kept_[previous] = {dictName_, model_->values(), messageLine_->text(), messageIsError_, {}};
     node_ = node;
     autoPicked_ = false;
     autoReadDone_ = false;
@@ -262,7 +263,10 @@ void ObjectDictionaryDock::setNode(int node) {
     // The status line is the shown node's: its last message, or none.
     const auto kept = kept_.find(node_);
     const bool restore = kept != kept_.end() && kept->second.dictionary == dictName_ && model_->hasDictionary();
-    if (restore) model_->setValues(kept->second.values);
+    if (restore) {
+        model_->setValues(kept->second.values);
+        applyWritten(kept->second);
+    }
     setMessageLine(restore ? kept->second.message : QString(), restore && kept->second.messageIsError);
     if (stopped) showMessage(tr("Reading node %1 stopped: another node was chosen").arg(previous));
     updateHeader();
@@ -327,6 +331,7 @@ void ObjectDictionaryDock::refresh() {
                 break;
             }
     }
+    followMoves();
     if (node_ > 0) {
         const auto info = workspace_->nodes().node(node_);
         if (info && info->dictionary != dictName_) loadDictionary();

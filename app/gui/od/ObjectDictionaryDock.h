@@ -140,7 +140,15 @@ private:
         OdTreeModel::NodeValues values;
         QString message;
         bool messageIsError = false;
+        std::map<uint32_t, QByteArray> written;  // confirmed SDO downloads since (index << 8 | sub)
     };
+    // ObjectDictionaryDockFollow.cpp: values and node-IDs the rest of the app changed.
+    void watchSdo();
+    void onWritten(quint8 node, quint16 index, quint8 sub, const QByteArray& data);
+    void applyWritten(const KeptNode& kept);
+    void followMoves();
+    QMetaObject::Connection sdoWritten_;
+    size_t movesSeen_ = 0;  // NodeTable::moves() followed
     std::map<int, KeptNode> kept_;
     bool messageIsError_ = false;
 

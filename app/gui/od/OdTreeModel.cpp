@@ -141,8 +141,22 @@ QString OdTreeModel::valueText(const od::SubObject& e, const od::Value& v, bool 
         const auto raw = v.toInt64();
         const uint64_t bits = raw ? static_cast<uint64_t>(*raw) : v.toUInt64().value_or(0);
         if (QString hex = od::hexValueText(e.index, e.sub, bits, od::bitSize(e.dataType)); !hex.isEmpty()) return hex;
+        if (QString named = od::namedValueText(e.index, e.sub, bits); !named.isEmpty()) return coreText(named);
     }
     return v.format(e.dataType, o);
+}
+
+QString OdTreeModel::statuswordBitsText(const od::SubObject& e, const od::Value& v) const {
+    // 6041h of an axis (CiA 402-1 §5: + n x 800h): the bits that are on, 12/13 named by the
+    // axis' mode of operation 6061h as read here (CiA 402-2 §6.3.2; the trace's names, one source).
+    if (e.sub != 0 || e.index < 0x6000 || e.index > 0x67FF || (e.index - 0x6000) % 0x800 != 0x41) return {};
+    const auto sw = v.toUInt64();
+    if (!sw) return {};
+    std::optional<int8_t> mode;
+    if (const auto m = actualValue(static_cast<uint16_t>(e.index + 0x20), 0)) mode = static_cast<int8_t>(m->toInt64().value_or(0));
+    QStringList bits;
+    for (const QString& b : canopen::ds402::statuswordBits(static_cast<uint16_t>(*sw), mode)) bits << coreText(b);
+    return QCoreApplication::translate("OdTreeModel", "\nBits on: %1").arg(bits.isEmpty() ? QStringLiteral("—") : bits.join(QStringLiteral(", ")));
 }
 
 QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
@@ -235,6 +249,7 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
                                e->pdoMappable ? QCoreApplication::translate("OdTreeModel", ", PDO-mappable") : QString());
         if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty()) tip += QCoreApplication::translate("OdTreeModel", "\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
         if (st && st->changed) tip += QCoreApplication::translate("OdTreeModel", "\nDiffers from the default");
+        if (st && st->value) tip += statuswordBitsText(*e, *st->value);
         return tip;
     }
     if (role == Qt::ForegroundRole) {

@@ -82,6 +82,9 @@ public:
     // The name the view shows for an object (sub -1) or entry: in the UI language for a bundled
     // dictionary's standard objects and vendor parameters, else the EDS name.
     QString localName(uint16_t index, int sub, const QString& edsName) const;
+    // "\nBits on: ready to switch on, …, homing attained" for a statusword 6041h (bits 12/13 by
+    // the mode of operation 6061h read from the node), else empty.
+    QString statuswordBitsText(const od::SubObject& entry, const od::Value& value) const;
 
     QModelIndex index(int row, int column, const QModelIndex& parent = {}) const override;
     QModelIndex parent(const QModelIndex& child) const override;

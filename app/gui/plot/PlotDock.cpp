@@ -199,6 +199,7 @@ void PlotDock::updatePlotted() {
         if (key.bus) s.label = QStringLiteral("bus%1 ").arg(key.bus) + s.label;
         s.scale = picker_->scale(key);
         s.digital = info->digital;
+        s.hex = !s.digital && !key.raw && od::hexKindFor(key.index, key.sub) == od::HexKind::Pattern && s.scale.factor == 1.0 && s.scale.offset == 0.0;
         s.color = plotColor(colour++);
         s.buffer = recorder_ ? recorder_->buffer(key) : nullptr;
         plotted.push_back(std::move(s));

@@ -7,7 +7,12 @@
 namespace coscope::gui {
 
 void PlotLegend::addEntry(QCPAbstractPlottable* plottable) {
-    if (plottable && !hasItemWithPlottable(plottable)) addItem(new PlotLegendEntry(this, plottable));
+    if (!plottable || hasItemWithPlottable(plottable)) return;
+    auto* entry = new PlotLegendEntry(this, plottable);
+    // An entry is as high as its font and layers draw clipped one pixel up (QCPLayer::draw):
+    // without room below, the font's lowest row goes, and "Pos_Cmd" reads "Pos Cmd".
+    entry->setMargins(QMargins(0, 0, 0, 2));
+    addItem(entry);
 }
 
 PlotLegend::Look PlotLegend::currentLook(qreal pixelRatio) const {

@@ -6,6 +6,7 @@
 #include "app/gui/plot/PlotTicks.h"
 #include "app/gui/plot/PlotLegend.h"
 #include "app/gui/plot/PlotSurface.h"
+#include "core/od/NumberNotation.h"
 
 #include <QVBoxLayout>
 
@@ -30,7 +31,26 @@ QString number(double v) {
     if (std::abs(v) >= 1e7 || (v != 0 && std::abs(v) < 1e-3)) return QString::number(v, 'g', 6);
     return QString::number(v, 'f', std::abs(v) >= 1000 ? 1 : 3);
 }
+
+// Value axis of a bit pattern: ticks on whole powers of two, labelled in hex ("0400h").
+class HexTicker : public QCPAxisTicker {
+protected:
+    double getTickStep(const QCPRange& range) override {
+        const double step = QCPAxisTicker::getTickStep(range);
+        double p = 1;
+        while (p < step && p < 0x1p62) p *= 2;
+        return p;
+    }
+    QString getTickLabel(double tick, const QLocale&, QChar, int) override {
+        return tick < 0 ? QString() : od::hexText(static_cast<uint64_t>(std::llround(tick)), 4);
+    }
+};
 }  // namespace
+
+QString PlotSignal::valueText(double v) const {
+    if (hex && v >= 0) return od::hexText(static_cast<uint64_t>(std::llround(v)), 4);
+    return number(v);
+}
 
 PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)), ticks_(new PlotTicks(plot_)) {
     auto* layout = new QVBoxLayout(this);
@@ -103,6 +123,7 @@ void PlotView::rebuild() {
         g->setLineStyle(s.digital ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
         g->setAdaptiveSampling(false);  // the buffer decimates already
         tracks_[i] = Track{rect, y, g};
+        if (s.hex) y->setTicker(QSharedPointer<HexTicker>::create());
         if (s.digital) {
             y->setRange(-0.2, 1.2);
             y->setTicker(QSharedPointer<QCPAxisTickerFixed>::create());
@@ -168,6 +189,8 @@ void PlotView::rebuild() {
     // One legend in the top rect; a click on an entry hides or shows its trace.
     auto* legend = new PlotLegend;
     rects_.front()->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignLeft);
+    // Clear of the value axes: past their inward tick marks, off the top edge.
+    rects_.front()->insetLayout()->setMargins(QMargins(10, 6, 10, 6));
     legend->setLayer(QStringLiteral("legend"));
     legend->setFont(small);
     legend->setBrush(QBrush(QColor(255, 255, 255, 215)));
@@ -406,9 +429,10 @@ QString PlotView::readoutHtml() const {
         std::optional<double> v[2];
         for (int c = 0; c < 2; ++c) {
             if (cursors_[c]) v[c] = valueAt(i, *cursors_[c]);
-            html += QStringLiteral("<td align=right>%1</td>").arg(v[c] ? number(*v[c]) : QString());
+            html += QStringLiteral("<td align=right>%1</td>").arg(v[c] ? s.valueText(*v[c]) : QString());
         }
-        html += QStringLiteral("<td align=right>%1</td></tr>").arg(v[0] && v[1] ? QStringLiteral("&Delta; %1").arg(number(*v[1] - *v[0])) : QString());
+        // A difference of two bit patterns means nothing: none for hex.
+        html += QStringLiteral("<td align=right>%1</td></tr>").arg(v[0] && v[1] && !s.hex ? QStringLiteral("&Delta; %1").arg(number(*v[1] - *v[0])) : QString());
     }
     return html + QStringLiteral("</table>");
 }

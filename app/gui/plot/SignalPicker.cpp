@@ -163,7 +163,7 @@ void SignalPicker::rebuildTree() {
         if (!s.digital) {
             const SignalScale sc = scale(s.key);
             item->setText(ColUnit, sc.unit);
-            item->setText(ColFactor, QString::number(sc.factor, 'g', 10));
+            item->setText(ColFactor, dissect::factorText(sc));
             item->setToolTip(ColFactor, s.key.raw ? tr("value = raw × factor + %1 (defined: × %2 %3)").arg(sc.offset).arg(s.rawFactor).arg(s.rawUnit)
                                                   : tr("value = raw × factor (dictionary: %1 %2)").arg(s.rawFactor).arg(s.rawUnit));
             flags |= Qt::ItemIsEditable;
@@ -223,12 +223,14 @@ void SignalPicker::onItemChanged(QTreeWidgetItem* item, int column) {
     } else if (column == ColUnit || column == ColFactor) {
         SignalScale sc = scale(key);
         if (column == ColUnit) sc.unit = item->text(ColUnit).trimmed();
-        bool ok = true;
-        const double f = item->text(ColFactor).toDouble(&ok);
-        if (ok && f != 0) sc.factor = f;
+        // A number or a fraction as a manual writes it ("1/1280000"); kept as typed.
+        if (const auto f = dissect::parseFactor(item->text(ColFactor)); f && *f != sc.factor) {
+            sc.factor = *f;
+            sc.factorWritten = item->text(ColFactor).trimmed();
+        }
         userScale_[key] = sc;
         updating_ = true;
-        item->setText(ColFactor, QString::number(sc.factor, 'g', 10));
+        item->setText(ColFactor, dissect::factorText(sc));
         updating_ = false;
         emit scaleChanged();
     }

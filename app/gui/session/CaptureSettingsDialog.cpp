@@ -41,12 +41,12 @@ CaptureSettingsDialog::CaptureSettingsDialog(QWidget* parent) : QDialog(parent) 
     budget_ = new QSpinBox(this);
     budget_->setObjectName(QStringLiteral("memoryBudget"));
     budget_->setRange(0, physicalMegabytes());
-    budget_->setSuffix(tr(" MB"));
+    budget_->setSuffix(tr(" MiB"));
     budget_->setSingleStep(256);
     budget_->setSpecialValueText(tr("Automatic (%1)").arg(QLocale().formattedDataSize(qint64(defaultTraceMemoryBudget()))));
     budget_->setValue(int(std::clamp<qlonglong>(s.value(kMemoryBudgetKey, 0).toLongLong(), 0, budget_->maximum())));
     budget_->setToolTip(tr("The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. "
-                           "0 = automatic: a quarter of the memory, at most 4 GB."));
+                           "0 = automatic: a quarter of the memory, at most 4 GiB."));
 
     keepDays_ = new QSpinBox(this);
     keepDays_->setObjectName(QStringLiteral("keepDays"));
@@ -57,7 +57,7 @@ CaptureSettingsDialog::CaptureSettingsDialog(QWidget* parent) : QDialog(parent) 
     keepMegabytes_ = new QSpinBox(this);
     keepMegabytes_->setObjectName(QStringLiteral("keepMegabytes"));
     keepMegabytes_->setRange(1, kMaxKeepMegabytes);
-    keepMegabytes_->setSuffix(tr(" MB"));
+    keepMegabytes_->setSuffix(tr(" MiB"));
     keepMegabytes_->setSingleStep(256);
     keepMegabytes_->setValue(int(std::min<qint64>(policy.maxTotalBytes >> 20, kMaxKeepMegabytes)));
 

@@ -23,15 +23,22 @@ struct WizardEntry {
     QString titleText() const;  // the title in the UI language
     // Creates the wizard window (top-level, not shown); `node` preselects a node (-1 = none).
     std::function<QWidget*(Workspace* workspace, int node, QWidget* parent)> create;
+    // The node the wizard window is on (0 or -1: none), remembered when it closes.
+    std::function<int(QWidget* wizard)> nodeOf;
 };
 
 const std::vector<WizardEntry>& wizardEntries();
 
 // Fills `menu` with one action per wizard; each opens its wizard (non-modal) for the node
-// `currentNode()` returns.
+// `currentNode()` returns (the Nodes dock's selection), or on the node the wizard was last
+// closed on while that selection is the one it was opened with (QSettings, issue 35).
 void fillCommissionMenu(QMenu* menu, Workspace* workspace, QWidget* parent, std::function<int()> currentNode);
 
-// Creates and shows the wizard `id`; nullptr when there is no such wizard.
+// The node the wizard `id` opens on when `selected` is chosen in the Nodes dock (see above).
+int wizardStartNode(const QString& id, Workspace* workspace, int selected);
+
+// Creates and shows the wizard `id`; nullptr when there is no such wizard. The node it is
+// closed on is remembered for wizardStartNode().
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent);
 
 }  // namespace coscope::gui

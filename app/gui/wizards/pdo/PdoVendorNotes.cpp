@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/pdo/PdoVendorNotes.h"
 
+#include "core/od/NumberNotation.h"
+
 #include <QCoreApplication>
 
 namespace coscope::gui {
@@ -78,8 +80,8 @@ QString transmissionTypeText(uint8_t type, bool transmit) {
     if (type == 252) return QCoreApplication::translate("PdoVendorNotes", "Sampled at SYNC, sent only when asked for (RTR-only synchronous, type 252)");
     if (type == 253) return QCoreApplication::translate("PdoVendorNotes", "Sent only when asked for (RTR-only event-driven, type 253)");
     if (type == 254 || type == 255)
-        return transmit ? QCoreApplication::translate("PdoVendorNotes", "Sent when a value changes and/or every event-timer period (event-driven, type %1)").arg(type)
-                        : QCoreApplication::translate("PdoVendorNotes", "Applied as soon as it arrives (event-driven, type %1)").arg(type);
+        return transmit ? QCoreApplication::translate("PdoVendorNotes", "Sent when a value changes and/or every event-timer period (event-driven, type %1)").arg(od::hexText(type, 2))
+                        : QCoreApplication::translate("PdoVendorNotes", "Applied as soon as it arrives (event-driven, type %1)").arg(od::hexText(type, 2));
     return QCoreApplication::translate("PdoVendorNotes", "Reserved transmission type %1").arg(type);
 }
 
