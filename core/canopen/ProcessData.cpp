@@ -231,6 +231,7 @@ bool ProcessData::setValue(uint16_t index, uint8_t sub, int64_t value, QString* 
             }
         }
     }
+    if (const ProcessDataObject* o = mapped ? object(index, sub) : nullptr) noteIfEnabling(*o, value);
     if (!mapped) {
         if (error) *error = QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
         return false;
@@ -337,8 +338,7 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
     (*step)(0);
 }
 
-void ProcessData::setValueQuietly(const ProcessDataObject& object, int64_t value) {
-    if (!fits(object, value)) return;
+void ProcessData::noteIfEnabling(const ProcessDataObject& object, int64_t value) {
     // A controlword that switches voltage on goes into the bus's record of drives CoScope enabled
     // before it can be sent, so whatever closes the bus disables the drive first (EnabledDrives).
     // A disabling one is not taken as proof: an RPDO is not confirmed by the drive.
@@ -346,6 +346,11 @@ void ProcessData::setValueQuietly(const ProcessDataObject& object, int64_t value
     if (index >= 0x6000 && index < 0xA000 && (index - 0x6000) % 0x800 == 0x40 && object.entry.sub == 0 &&
         EnabledDrives::enablesVoltage(static_cast<uint16_t>(value)))
         context_.enabledDrives().noteControlword(node_, (index - 0x6000) / 0x800, static_cast<uint16_t>(value));
+}
+
+void ProcessData::setValueQuietly(const ProcessDataObject& object, int64_t value) {
+    if (!fits(object, value)) return;
+    noteIfEnabling(object, value);
     const std::lock_guard lock(shared_->mutex);
     for (size_t i = 0; i < pdos_.size(); ++i)
         for (size_t k = 0; k < pdos_[i].objects.size(); ++k)

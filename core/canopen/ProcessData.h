@@ -137,6 +137,8 @@ private:
     void stopJobs(bool motionOnly);
     void startJob(size_t pdoIndex);
     bool sendNow(size_t pdoIndex, QString* error);
+    // Notes a controlword value that enables voltage in the bus's EnabledDrives.
+    void noteIfEnabling(const ProcessDataObject& object, int64_t value);
     void setValueQuietly(const ProcessDataObject& object, int64_t value);
     void endHold(bool expired);
     void checkWatchdog();

@@ -2671,6 +2671,90 @@
         <source>%1, %2</source>
         <translation>%1、%2</translation>
     </message>
+    <message>
+        <source>%1: the bus is listen-only: CoScope sends nothing, so no heartbeat and no guard</source>
+        <translation>%1：总线为只听：CoScope 不发送任何帧，因此没有心跳也没有保护</translation>
+    </message>
+    <message>
+        <source>%1: CoScope&apos;s heartbeat node-ID %2 is the drive&apos;s own; choose another in the master settings</source>
+        <translation>%1：CoScope 的心跳节点 ID %2 与驱动器相同；请在主站设置中另选</translation>
+    </message>
+    <message>
+        <source>%1: CoScope&apos;s heartbeat cannot start: %2</source>
+        <translation>%1：CoScope 的心跳无法启动：%2</translation>
+    </message>
+    <message>
+        <source>%1 may still be enabled: it keeps watching CoScope&apos;s heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
+        <translation>%1 可能仍为使能：它继续监视 CoScope 的心跳（1016h、6007h 未写回），心跳停止时会自行停止</translation>
+    </message>
+    <message>
+        <source>%1: the old 1016h/6007h could not be put back (the bus is closed); check them</source>
+        <translation>%1：原来的 1016h/6007h 无法写回（总线已关闭）；请检查</translation>
+    </message>
+    <message>
+        <source>%1: heartbeat consumer 1016h and 6007h put back before the bus closed</source>
+        <translation>%1：总线关闭前已写回消费者心跳时间 1016h 与 6007h</translation>
+    </message>
+    <message>
+        <source>%1: the old 1016h/6007h were not all put back (%2); check them</source>
+        <translation>%1：原来的 1016h/6007h 未全部写回（%2）；请检查</translation>
+    </message>
+    <message>
+        <source>%1 watches CoScope&apos;s heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
+        <translation>%1 以 1016h:%3 监视 CoScope 的心跳（节点 %2），%4 ms；心跳停止时：%5</translation>
+    </message>
+    <message>
+        <source>%1: heartbeat consumer 1016h:%2 = %3%4 put back</source>
+        <translation>%1：已写回消费者心跳时间 1016h:%2 = %3%4</translation>
+    </message>
+    <message>
+        <source>node %1: node guarding answer with toggle bit %2, %3 expected</source>
+        <translation>节点 %1：节点保护应答的翻转位为 %2，应为 %3</translation>
+    </message>
+    <message>
+        <source>node %1: no answer to a node guarding request within the guard time %2 ms</source>
+        <translation>节点 %1：节点保护请求在节点守护时间 %2 ms 内无应答</translation>
+    </message>
+    <message>
+        <source>set-point acknowledge</source>
+        <translation>设定点确认</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>位置跟随超差</translation>
+    </message>
+    <message>
+        <source>zero speed</source>
+        <translation>零速</translation>
+    </message>
+    <message>
+        <source>max slippage error</source>
+        <translation>最大滑差错误</translation>
+    </message>
+    <message>
+        <source>homing attained</source>
+        <translation>回原点完成</translation>
+    </message>
+    <message>
+        <source>homing error</source>
+        <translation>回原点错误</translation>
+    </message>
+    <message>
+        <source>ip mode active</source>
+        <translation>IP 模式激活</translation>
+    </message>
+    <message>
+        <source>drive follows the command value</source>
+        <translation>驱动器跟随指令值</translation>
+    </message>
+    <message>
+        <source>FFh (event)</source>
+        <translation>FFh（事件触发）</translation>
+    </message>
+    <message>
+        <source>FEh (event, manufacturer)</source>
+        <translation>FEh（事件触发，制造商定义）</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3093,6 +3177,12 @@ Differs from the default</source>
     <message>
         <source>node %1 %2: %3 (bytes %4)</source>
         <translation>节点 %1 %2：%3（字节 %4）</translation>
+    </message>
+    <message>
+        <source>
+Bits on: %1</source>
+        <translation>
+已置位的位：%1</translation>
     </message>
 </context>
 <context>
@@ -3579,16 +3669,8 @@ Differs from the default</source>
         <translation>捕获设置</translation>
     </message>
     <message>
-        <source> MB</source>
-        <translation> MB</translation>
-    </message>
-    <message>
         <source>Automatic (%1)</source>
         <translation>自动（%1）</translation>
-    </message>
-    <message>
-        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GB.</source>
-        <translation>跟踪在内存中最多保留这么多；较旧的帧在需要时从捕获日志读回。0 = 自动：内存的四分之一，最多 4 GB。</translation>
     </message>
     <message>
         <source> days</source>
@@ -3609,6 +3691,14 @@ Differs from the default</source>
     <message>
         <source>Capture journals are kept in %1. Older ones are removed at start and when these settings change; a journal being written or not yet offered for reopening is never removed.</source>
         <translation>捕获日志保存在 %1。较旧的日志会在启动时及这些设置更改时删除；正在写入或尚未提供重新打开的日志绝不会被删除。</translation>
+    </message>
+    <message>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GiB.</source>
+        <translation>跟踪在内存中最多保留这么多；较旧的帧在需要时从捕获日志读回。0 = 自动：内存的四分之一，最多 4 GiB。</translation>
     </message>
 </context>
 <context>
@@ -4465,6 +4555,57 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ErrorControlDialog</name>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Heartbeat and guarding of node %1</source>
+        <translation>节点 %1 的心跳与节点保护</translation>
+    </message>
+    <message>
+        <source>How CoScope watches that node %1 is there (CiA 301 error control). A lost node is raised in the Events.</source>
+        <translation>CoScope 如何监视节点 %1 是否在线（CiA 301 错误控制）。节点丢失时会记入事件。</translation>
+    </message>
+    <message>
+        <source>Not watched</source>
+        <translation>不监视</translation>
+    </message>
+    <message>
+        <source>Heartbeat: the node sends it (1017h); lost when none comes within</source>
+        <translation>心跳：由节点发送（1017h）；在以下时间内未收到即视为丢失</translation>
+    </message>
+    <message>
+        <source>Consumer time:</source>
+        <translation>消费者时间：</translation>
+    </message>
+    <message>
+        <source>Node guarding, for a node without heartbeat: CoScope asks (RTR on %1h) every guard time</source>
+        <translation>节点保护，用于没有心跳的节点：CoScope 每个节点守护时间询问一次（%1h 上的 RTR）</translation>
+    </message>
+    <message>
+        <source>Guard time (100Ch):</source>
+        <translation>节点守护时间（100Ch）：</translation>
+    </message>
+    <message>
+        <source>Life time factor (100Dh):</source>
+        <translation>寿命因子（100Dh）：</translation>
+    </message>
+    <message>
+        <source>Lost after:</source>
+        <translation>丢失判定：</translation>
+    </message>
+    <message>
+        <source>Node %1 sends a heartbeat. CiA 301 guards only nodes without one (1017h = 0): while it sends both, its heartbeats can be taken for guarding answers.</source>
+        <translation>节点 %1 会发送心跳。CiA 301 只对没有心跳的节点（1017h = 0）做节点保护：两者同时存在时，其心跳可能被当作保护应答。</translation>
+    </message>
+    <message>
+        <source>%L1 ms without an answer</source>
+        <translation>%L1 ms 无应答</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
@@ -4849,6 +4990,41 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::HeartbeatGuardQuestion</name>
+    <message>
+        <source>Stop the drive if CoScope dies?</source>
+        <translation>CoScope 崩溃时让驱动器停止？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope. Should it stop by itself if CoScope or the cable dies?</source>
+        <translation>节点 %1 已由 CoScope 使能。若 CoScope 崩溃或线缆断开，是否让它自行停止？</translation>
+    </message>
+    <message>
+        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3&apos;s heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
+        <translation>CoScope 将每 %2 ms 发送自己的心跳（节点 %1），并设置节点 %3 的消费者心跳时间 1016h 与中止连接选项 6007h（快速停止，若驱动器有此对象），使 CoScope 崩溃或线缆断开时驱动器在 %4 ms 内自行停止。驱动器去使能或总线关闭时会写回原值。</translation>
+    </message>
+    <message>
+        <source>Guard the drive</source>
+        <translation>保护驱动器</translation>
+    </message>
+    <message>
+        <source>Not now</source>
+        <translation>暂不</translation>
+    </message>
+    <message>
+        <source>Remember my answer</source>
+        <translation>记住我的选择</translation>
+    </message>
+    <message>
+        <source>Node %1 does not watch CoScope&apos;s heartbeat: if CoScope or the cable dies, it keeps its last command</source>
+        <translation>节点 %1 不监视 CoScope 的心跳：若 CoScope 崩溃或线缆断开，它会保持最后的命令</translation>
+    </message>
+    <message>
+        <source>Heartbeat guard: %1</source>
+        <translation>心跳保护：%1</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::IntegerSpinBox</name>
     <message>
         <source>Type a number: decimal (31), or hex as 0x1F or 1Fh</source>
@@ -5157,8 +5333,18 @@ Arm the test move?</source>
         <translation>SYNC %1（%L2）</translation>
     </message>
     <message>
-        <source>heartbeat %1</source>
-        <translation>心跳 %1</translation>
+        <source>CoScope&apos;s heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
+        <translation>有驱动器监视 CoScope 的心跳时，心跳保持原样；新设置在释放后才生效</translation>
+    </message>
+    <message>
+        <source>Heartbeat %1 ms</source>
+        <translation>心跳 %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>guarding node %1</source>
+        <translation>
+            <numerusform>保护节点 %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5719,6 +5905,38 @@ Frame: %3</source>
         <source>Node %1 uses dictionary %2</source>
         <translation>节点 %1 使用字典 %2</translation>
     </message>
+    <message>
+        <source>Heartbeat and guarding…</source>
+        <translation>心跳与节点保护…</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: node guarding would transmit (an RTR each guard time); a heartbeat can still be watched.</source>
+        <translation>只听总线：节点保护需要发送（每个节点守护时间一个 RTR）；仍可监视心跳。</translation>
+    </message>
+    <message>
+        <source>The bus is not open: node guarding cannot send its requests.</source>
+        <translation>总线未打开：节点保护无法发送请求。</translation>
+    </message>
+    <message>
+        <source>Node guarding of node %1 not started: %2</source>
+        <translation>节点 %1 的节点保护未启动：%2</translation>
+    </message>
+    <message>
+        <source>Node guarding</source>
+        <translation>节点保护</translation>
+    </message>
+    <message>
+        <source>Node %1: node guarding every %2 ms, lost after %3 ms without an answer</source>
+        <translation>节点 %1：每 %2 ms 节点保护一次，%3 ms 无应答即视为丢失</translation>
+    </message>
+    <message>
+        <source>Node %1: heartbeat expected within %2 ms</source>
+        <translation>节点 %1：预期 %2 ms 内收到心跳</translation>
+    </message>
+    <message>
+        <source>Node %1 is no longer watched</source>
+        <translation>节点 %1 不再监视</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodesModel</name>
@@ -5893,6 +6111,54 @@ Software version (100Ah): %3</source>
     <message>
         <source>State from</source>
         <translation>状态来源</translation>
+    </message>
+    <message>
+        <source>guarding %1 ms × %2</source>
+        <translation>节点保护 %1 ms × %2</translation>
+    </message>
+    <message>
+        <source>heartbeat %1 ms</source>
+        <translation>心跳 %1 ms</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <source>late</source>
+        <translation>延迟</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>丢失</translation>
+    </message>
+    <message>
+        <source>%1, %2 s ago</source>
+        <translation>%1，%2 秒前</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Not watched by CoScope (Heartbeat and guarding… in the context menu)</source>
+        <translation>CoScope 未监视（右键菜单中的“心跳与节点保护…”）</translation>
+    </message>
+    <message>
+        <source>Node guarding (CiA 301): CoScope asks every %1 ms; the node is late when a request goes unanswered or the toggle bit is wrong, lost after %2 ms without a right answer. Guarding errors: %3, lost %4 time(s).</source>
+        <translation>节点保护（CiA 301）：CoScope 每 %1 ms 询问一次；请求无应答或翻转位错误时视为延迟，%2 ms 内无正确应答即视为丢失。保护错误：%3，丢失 %4 次。</translation>
+    </message>
+    <message>
+        <source>Heartbeat consumer (CiA 301): late when a heartbeat is overdue, lost when none comes within %1 ms. Lost %2 time(s).</source>
+        <translation>心跳消费者（CiA 301）：心跳超时视为延迟，%1 ms 内未收到即视为丢失。丢失 %2 次。</translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation>心跳 / 节点保护</translation>
     </message>
 </context>
 <context>
@@ -6182,6 +6448,10 @@ SDO 下载 %n 字节：%1</numerusform>
     <message>
         <source>Node %1: not written: %2</source>
         <translation>节点 %1：未写入：%2</translation>
+    </message>
+    <message>
+        <source>Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; read them again.</source>
+        <translation>节点 %1 现在以节点 ID %2 应答：显示节点 %2。在节点 %1 读取的值已丢弃；请重新读取。</translation>
     </message>
 </context>
 <context>
@@ -7813,6 +8083,22 @@ Send %2%3?</source>
     <message>
         <source>%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.</source>
         <translation>%1 可能仍处于使能状态：总线关闭前未在总线上看到其断开电压（Disable voltage，6040h = 0000h）帧（%2）。请检查驱动器。</translation>
+    </message>
+    <message>
+        <source>Node guarding lost: no answer within the node life time of %1 ms (guard time %2 ms × %3)</source>
+        <translation>节点保护丢失：在节点寿命时间 %1 ms 内无应答（节点守护时间 %2 ms × %3）</translation>
+    </message>
+    <message>
+        <source>Heartbeat lost: none within the consumer time of %1 ms</source>
+        <translation>心跳丢失：在消费者时间 %1 ms 内未收到</translation>
+    </message>
+    <message>
+        <source>Node guarding answers again</source>
+        <translation>节点保护恢复应答</translation>
+    </message>
+    <message>
+        <source>Heartbeat back</source>
+        <translation>心跳恢复</translation>
     </message>
 </context>
 </TS>

@@ -2671,6 +2671,90 @@
         <source>%1, %2</source>
         <translation>%1、%2</translation>
     </message>
+    <message>
+        <source>%1: the bus is listen-only: CoScope sends nothing, so no heartbeat and no guard</source>
+        <translation>%1：匯流排為僅監聽：CoScope 不發送任何訊框，因此沒有心跳也沒有保護</translation>
+    </message>
+    <message>
+        <source>%1: CoScope&apos;s heartbeat node-ID %2 is the drive&apos;s own; choose another in the master settings</source>
+        <translation>%1：CoScope 的心跳節點 ID %2 與驅動器相同；請在主站設定中另選</translation>
+    </message>
+    <message>
+        <source>%1: CoScope&apos;s heartbeat cannot start: %2</source>
+        <translation>%1：CoScope 的心跳無法啟動：%2</translation>
+    </message>
+    <message>
+        <source>%1 may still be enabled: it keeps watching CoScope&apos;s heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
+        <translation>%1 可能仍為致能：它繼續監看 CoScope 的心跳（1016h、6007h 未寫回），心跳停止時會自行停止</translation>
+    </message>
+    <message>
+        <source>%1: the old 1016h/6007h could not be put back (the bus is closed); check them</source>
+        <translation>%1：原本的 1016h/6007h 無法寫回（匯流排已關閉）；請檢查</translation>
+    </message>
+    <message>
+        <source>%1: heartbeat consumer 1016h and 6007h put back before the bus closed</source>
+        <translation>%1：匯流排關閉前已寫回消費者心跳時間 1016h 與 6007h</translation>
+    </message>
+    <message>
+        <source>%1: the old 1016h/6007h were not all put back (%2); check them</source>
+        <translation>%1：原本的 1016h/6007h 未全部寫回（%2）；請檢查</translation>
+    </message>
+    <message>
+        <source>%1 watches CoScope&apos;s heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
+        <translation>%1 以 1016h:%3 監看 CoScope 的心跳（節點 %2），%4 ms；心跳停止時：%5</translation>
+    </message>
+    <message>
+        <source>%1: heartbeat consumer 1016h:%2 = %3%4 put back</source>
+        <translation>%1：已寫回消費者心跳時間 1016h:%2 = %3%4</translation>
+    </message>
+    <message>
+        <source>node %1: node guarding answer with toggle bit %2, %3 expected</source>
+        <translation>節點 %1：節點保護回應的切換位元為 %2，應為 %3</translation>
+    </message>
+    <message>
+        <source>node %1: no answer to a node guarding request within the guard time %2 ms</source>
+        <translation>節點 %1：節點保護請求在守護時間 %2 ms 內無回應</translation>
+    </message>
+    <message>
+        <source>set-point acknowledge</source>
+        <translation>設定點確認</translation>
+    </message>
+    <message>
+        <source>following error</source>
+        <translation>追隨誤差</translation>
+    </message>
+    <message>
+        <source>zero speed</source>
+        <translation>零速度</translation>
+    </message>
+    <message>
+        <source>max slippage error</source>
+        <translation>最大滑差錯誤</translation>
+    </message>
+    <message>
+        <source>homing attained</source>
+        <translation>原點復歸完成</translation>
+    </message>
+    <message>
+        <source>homing error</source>
+        <translation>原點復歸錯誤</translation>
+    </message>
+    <message>
+        <source>ip mode active</source>
+        <translation>IP 模式啟用中</translation>
+    </message>
+    <message>
+        <source>drive follows the command value</source>
+        <translation>驅動器跟隨命令值</translation>
+    </message>
+    <message>
+        <source>FFh (event)</source>
+        <translation>FFh（事件觸發）</translation>
+    </message>
+    <message>
+        <source>FEh (event, manufacturer)</source>
+        <translation>FEh（事件觸發，製造商定義）</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3093,6 +3177,12 @@ Differs from the default</source>
     <message>
         <source>node %1 %2: %3 (bytes %4)</source>
         <translation>節點 %1 %2：%3（位元組 %4）</translation>
+    </message>
+    <message>
+        <source>
+Bits on: %1</source>
+        <translation>
+已設定的位元：%1</translation>
     </message>
 </context>
 <context>
@@ -3579,16 +3669,8 @@ Differs from the default</source>
         <translation>擷取設定</translation>
     </message>
     <message>
-        <source> MB</source>
-        <translation> MB</translation>
-    </message>
-    <message>
         <source>Automatic (%1)</source>
         <translation>自動（%1）</translation>
-    </message>
-    <message>
-        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GB.</source>
-        <translation>追蹤在記憶體中最多保留這麼多；較舊的封包在需要時從擷取日誌讀回。0 = 自動：記憶體的四分之一，最多 4 GB。</translation>
     </message>
     <message>
         <source> days</source>
@@ -3609,6 +3691,14 @@ Differs from the default</source>
     <message>
         <source>Capture journals are kept in %1. Older ones are removed at start and when these settings change; a journal being written or not yet offered for reopening is never removed.</source>
         <translation>擷取日誌保存在 %1。較舊的日誌會在啟動時及這些設定變更時移除；正在寫入或尚未提供重新開啟的日誌絕不會被移除。</translation>
+    </message>
+    <message>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GiB.</source>
+        <translation>追蹤在記憶體中最多保留這麼多；較舊的封包在需要時從擷取日誌讀回。0 = 自動：記憶體的四分之一，最多 4 GiB。</translation>
     </message>
 </context>
 <context>
@@ -4465,6 +4555,57 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ErrorControlDialog</name>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>Heartbeat and guarding of node %1</source>
+        <translation>節點 %1 的心跳與節點保護</translation>
+    </message>
+    <message>
+        <source>How CoScope watches that node %1 is there (CiA 301 error control). A lost node is raised in the Events.</source>
+        <translation>CoScope 如何監看節點 %1 是否在線（CiA 301 錯誤控制）。節點失去時會記入事件。</translation>
+    </message>
+    <message>
+        <source>Not watched</source>
+        <translation>不監看</translation>
+    </message>
+    <message>
+        <source>Heartbeat: the node sends it (1017h); lost when none comes within</source>
+        <translation>心跳：由節點發送（1017h）；在以下時間內未收到即視為失去</translation>
+    </message>
+    <message>
+        <source>Consumer time:</source>
+        <translation>消費者時間：</translation>
+    </message>
+    <message>
+        <source>Node guarding, for a node without heartbeat: CoScope asks (RTR on %1h) every guard time</source>
+        <translation>節點保護，用於沒有心跳的節點：CoScope 每個守護時間詢問一次（%1h 上的 RTR）</translation>
+    </message>
+    <message>
+        <source>Guard time (100Ch):</source>
+        <translation>守護時間（100Ch）：</translation>
+    </message>
+    <message>
+        <source>Life time factor (100Dh):</source>
+        <translation>壽命因子（100Dh）：</translation>
+    </message>
+    <message>
+        <source>Lost after:</source>
+        <translation>失去判定：</translation>
+    </message>
+    <message>
+        <source>Node %1 sends a heartbeat. CiA 301 guards only nodes without one (1017h = 0): while it sends both, its heartbeats can be taken for guarding answers.</source>
+        <translation>節點 %1 會發送心跳。CiA 301 只對沒有心跳的節點（1017h = 0）做節點保護：兩者同時存在時，其心跳可能被當作保護回應。</translation>
+    </message>
+    <message>
+        <source>%L1 ms without an answer</source>
+        <translation>%L1 ms 無回應</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::EventsDock</name>
     <message>
         <source>Events</source>
@@ -4849,6 +4990,41 @@ Arm the test move?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::HeartbeatGuardQuestion</name>
+    <message>
+        <source>Stop the drive if CoScope dies?</source>
+        <translation>CoScope 當掉時讓驅動器停止？</translation>
+    </message>
+    <message>
+        <source>Node %1 is enabled by CoScope. Should it stop by itself if CoScope or the cable dies?</source>
+        <translation>節點 %1 已由 CoScope 致能。若 CoScope 當掉或線纜斷開，是否讓它自行停止？</translation>
+    </message>
+    <message>
+        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3&apos;s heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
+        <translation>CoScope 將每 %2 ms 發送自己的心跳（節點 %1），並設定節點 %3 的消費者心跳時間 1016h 與中止連線選項 6007h（快速停止，若驅動器有此物件），使 CoScope 當掉或線纜斷開時驅動器在 %4 ms 內自行停止。驅動器禁能或匯流排關閉時會寫回原值。</translation>
+    </message>
+    <message>
+        <source>Guard the drive</source>
+        <translation>保護驅動器</translation>
+    </message>
+    <message>
+        <source>Not now</source>
+        <translation>暫不</translation>
+    </message>
+    <message>
+        <source>Remember my answer</source>
+        <translation>記住我的選擇</translation>
+    </message>
+    <message>
+        <source>Node %1 does not watch CoScope&apos;s heartbeat: if CoScope or the cable dies, it keeps its last command</source>
+        <translation>節點 %1 不監看 CoScope 的心跳：若 CoScope 當掉或線纜斷開，它會維持最後的命令</translation>
+    </message>
+    <message>
+        <source>Heartbeat guard: %1</source>
+        <translation>心跳保護：%1</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::IntegerSpinBox</name>
     <message>
         <source>Type a number: decimal (31), or hex as 0x1F or 1Fh</source>
@@ -5157,8 +5333,18 @@ Arm the test move?</source>
         <translation>SYNC %1（%L2）</translation>
     </message>
     <message>
-        <source>heartbeat %1</source>
-        <translation>心跳 %1</translation>
+        <source>CoScope&apos;s heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
+        <translation>有驅動器監看 CoScope 的心跳時，心跳維持原樣；新設定在釋放後才生效</translation>
+    </message>
+    <message>
+        <source>Heartbeat %1 ms</source>
+        <translation>心跳 %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>guarding node %1</source>
+        <translation>
+            <numerusform>保護節點 %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5719,6 +5905,38 @@ Frame: %3</source>
         <source>Node %1 uses dictionary %2</source>
         <translation>節點 %1 使用字典 %2</translation>
     </message>
+    <message>
+        <source>Heartbeat and guarding…</source>
+        <translation>心跳與節點保護…</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: node guarding would transmit (an RTR each guard time); a heartbeat can still be watched.</source>
+        <translation>僅監聽匯流排：節點保護需要發送（每個守護時間一個 RTR）；仍可監看心跳。</translation>
+    </message>
+    <message>
+        <source>The bus is not open: node guarding cannot send its requests.</source>
+        <translation>匯流排未開啟：節點保護無法發送請求。</translation>
+    </message>
+    <message>
+        <source>Node guarding of node %1 not started: %2</source>
+        <translation>節點 %1 的節點保護未啟動：%2</translation>
+    </message>
+    <message>
+        <source>Node guarding</source>
+        <translation>節點保護</translation>
+    </message>
+    <message>
+        <source>Node %1: node guarding every %2 ms, lost after %3 ms without an answer</source>
+        <translation>節點 %1：每 %2 ms 節點保護一次，%3 ms 無回應即視為失去</translation>
+    </message>
+    <message>
+        <source>Node %1: heartbeat expected within %2 ms</source>
+        <translation>節點 %1：預期 %2 ms 內收到心跳</translation>
+    </message>
+    <message>
+        <source>Node %1 is no longer watched</source>
+        <translation>節點 %1 不再監看</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodesModel</name>
@@ -5893,6 +6111,54 @@ Software version (100Ah): %3</source>
     <message>
         <source>State from</source>
         <translation>狀態來源</translation>
+    </message>
+    <message>
+        <source>guarding %1 ms × %2</source>
+        <translation>節點保護 %1 ms × %2</translation>
+    </message>
+    <message>
+        <source>heartbeat %1 ms</source>
+        <translation>心跳 %1 ms</translation>
+    </message>
+    <message>
+        <source>waiting</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <source>late</source>
+        <translation>延遲</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>失去</translation>
+    </message>
+    <message>
+        <source>%1, %2 s ago</source>
+        <translation>%1，%2 秒前</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Not watched by CoScope (Heartbeat and guarding… in the context menu)</source>
+        <translation>CoScope 未監看（右鍵選單中的「心跳與節點保護…」）</translation>
+    </message>
+    <message>
+        <source>Node guarding (CiA 301): CoScope asks every %1 ms; the node is late when a request goes unanswered or the toggle bit is wrong, lost after %2 ms without a right answer. Guarding errors: %3, lost %4 time(s).</source>
+        <translation>節點保護（CiA 301）：CoScope 每 %1 ms 詢問一次；請求無回應或切換位元錯誤時視為延遲，%2 ms 內無正確回應即視為失去。保護錯誤：%3，失去 %4 次。</translation>
+    </message>
+    <message>
+        <source>Heartbeat consumer (CiA 301): late when a heartbeat is overdue, lost when none comes within %1 ms. Lost %2 time(s).</source>
+        <translation>心跳消費者（CiA 301）：心跳逾時視為延遲，%1 ms 內未收到即視為失去。失去 %2 次。</translation>
+    </message>
+    <message>
+        <source>Heartbeat / guarding</source>
+        <translation>心跳 / 節點保護</translation>
     </message>
 </context>
 <context>
@@ -6182,6 +6448,10 @@ SDO 下載 %n 位元組：%1</numerusform>
     <message>
         <source>Node %1: not written: %2</source>
         <translation>節點 %1：未寫入：%2</translation>
+    </message>
+    <message>
+        <source>Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; read them again.</source>
+        <translation>節點 %1 現在以節點 ID %2 回應：顯示節點 %2。在節點 %1 讀取的值已捨棄；請重新讀取。</translation>
     </message>
 </context>
 <context>
@@ -7813,6 +8083,22 @@ Send %2%3?</source>
     <message>
         <source>%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.</source>
         <translation>%1 可能仍在致能狀態：匯流排關閉前未在匯流排上看到其切斷電壓（Disable voltage，6040h = 0000h）訊框（%2）。請檢查驅動器。</translation>
+    </message>
+    <message>
+        <source>Node guarding lost: no answer within the node life time of %1 ms (guard time %2 ms × %3)</source>
+        <translation>節點保護失去：在節點壽命時間 %1 ms 內無回應（守護時間 %2 ms × %3）</translation>
+    </message>
+    <message>
+        <source>Heartbeat lost: none within the consumer time of %1 ms</source>
+        <translation>心跳失去：在消費者時間 %1 ms 內未收到</translation>
+    </message>
+    <message>
+        <source>Node guarding answers again</source>
+        <translation>節點保護恢復回應</translation>
+    </message>
+    <message>
+        <source>Heartbeat back</source>
+        <translation>心跳恢復</translation>
     </message>
 </context>
 </TS>

@@ -25,6 +25,7 @@
 #include "eds/SimulatorDictionaries.h"
 
 #include <QCheckBox>
+#include <QStyleOptionButton>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -190,7 +191,14 @@ class TestMasterMachine : public QObject {
     void turnAimotorByProcessData() {
         QVERIFY(clickDockTab(*w_, QStringLiteral("Process data")));
         ProcessDataDock* dock = w_->processDataDock();
-        QVERIFY(waitFor([&] { return dock->nodeBox()->currentText().startsWith(QStringLiteral("Node 2")) && dock->editor(0x6060, 0); }, kPatienceMs));
+        // Node 2 chosen by keys in the node box (the dock may have started on another node).
+        QComboBox* nodeBox = dock->nodeBox();
+        QVERIFY(waitFor([&] { return nodeBox->findText(QStringLiteral("Node 2")) >= 0; }, kPatienceMs));
+        nodeBox->setFocus();
+        QTest::keyClick(nodeBox, Qt::Key_Home);
+        for (int i = 0; i < nodeBox->count() && nodeBox->currentText() != QStringLiteral("Node 2"); ++i) QTest::keyClick(nodeBox, Qt::Key_Down);
+        QVERIFY(waitFor([&] { return nodeBox->currentText() == QStringLiteral("Node 2") && dock->editor(0x6060, 0) && dock->controlwordBit(3); }, kPatienceMs));
+        QTest::qWait(300);  // the values read from the drive
         typeAndEnter(dock->editor(0x6060, 0), QStringLiteral("3"));
         typeAndEnter(dock->editor(0x60FF, 0), QStringLiteral("20000"));
         auto* modeBox = dock->findChild<QComboBox*>(QStringLiteral("processDataMode"));
@@ -213,7 +221,12 @@ class TestMasterMachine : public QObject {
             for (int b : bits) {
                 QCheckBox* box = dock->controlwordBit(b);
                 QVERIFY(box);
-                if (!box->isChecked()) click(box);
+                // On its indicator: a check box stretched by the layout takes clicks on its
+                // indicator and text only.
+                QStyleOptionButton option;
+                option.initFrom(box);
+                if (!box->isChecked()) QTest::mouseClick(box, Qt::LeftButton, {}, box->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, box).center());
+                QVERIFY(box->isChecked());
             }
         };
         setBits({1, 2});  // Shutdown
@@ -295,13 +308,15 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(w_.get()));
         QTest::keyClick(w_.get(), Qt::Key_Q, Qt::ControlModifier);
         QVERIFY2(waitFor([&] { return !asked.isEmpty(); }, 5000), "no question about the enabled drives");
-        QVERIFY2(asked.contains(QStringLiteral("Node 3")) && asked.contains(QStringLiteral("quit")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("Nodes 2, 3 are enabled")) && asked.contains(QStringLiteral("quit")), qPrintable(asked));
         QVERIFY(waitFor([&] { return !w_->isVisible(); }, 5000));
         logio::PcapReader r;
         QVERIFY(r.open(journal));
         const auto read = r.readAll();
         QVERIFY2(std::any_of(read.begin(), read.end(), isDisableVoltage), "the journal lacks node 3's Disable voltage frame");
-        QVERIFY(waitFor([&] { return driveState(3) == State::SwitchOnDisabled && driveState(2) != State::OperationEnabled; }, 3000));
+        waitFor([&] { return driveState(3) == State::SwitchOnDisabled && driveState(2) != State::OperationEnabled; }, 3000);
+        QCOMPARE(driveState(3), State::SwitchOnDisabled);
+        QVERIFY(driveState(2) != State::OperationEnabled);
     }
 
     void cleanup() {

@@ -84,7 +84,12 @@ private slots:
     void composesRpdo1Bytes() {
         ProcessRig r;
         QVERIFY(r.open());
+        QVERIFY(r.rig.context->enabledDrives().isEmpty());
         QVERIFY(r.data->setValue(0x6040, 0, 0x000F));
+        // A controlword that enables voltage is in the bus's record before it can be sent: the
+        // bus does not close with the drive left enabled.
+        QCOMPARE(r.rig.context->enabledDrives().drives().size(), size_t(1));
+        QCOMPARE(int(r.rig.context->enabledDrives().drives()[0].node), 2);
         QVERIFY(r.data->setValue(0x6060, 0, 3));
         QVERIFY(r.data->setValue(0x607A, 0, 1000));
         CanFrame f = r.data->frame(1);
