@@ -8,6 +8,7 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QMenu>
+#include <QMetaObject>
 #include <QWidget>
 
 namespace coscope::gui {
@@ -16,7 +17,8 @@ const std::vector<WizardEntry>& wizardEntries() {
     // One line per wizard.
     static const std::vector<WizardEntry> entries = {
         {QStringLiteral("nodeid"), QT_TRANSLATE_NOOP("WizardMenu", "Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); }},
-        {QStringLiteral("ds402"), QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); }},
+        {QStringLiteral("ds402"), QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); },
+         {QStringLiteral("homing"), QStringLiteral("position")}},
         {QStringLiteral("pdo"), QT_TRANSLATE_NOOP("WizardMenu", "PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); }},
     };
     return entries;
@@ -26,9 +28,11 @@ QString WizardEntry::titleText() const { return QCoreApplication::translate("Wiz
 
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent) {
     for (const WizardEntry& e : wizardEntries()) {
-        if (e.id != id) continue;
+        const QString page = id.startsWith(e.id + u'-') ? id.mid(e.id.size() + 1) : QString();
+        if (e.id != id && !e.pages.contains(page)) continue;
         QWidget* w = e.create(workspace, node, parent);
         if (!w) return nullptr;
+        if (!page.isEmpty()) QMetaObject::invokeMethod(w, "showPage", Q_ARG(QString, page));
         w->setAttribute(Qt::WA_DeleteOnClose);
         w->show();
         w->raise();

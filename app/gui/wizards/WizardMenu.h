@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <vector>
@@ -23,6 +24,9 @@ struct WizardEntry {
     QString titleText() const;  // the title in the UI language
     // Creates the wizard window (top-level, not shown); `node` preselects a node (-1 = none).
     std::function<QWidget*(Workspace* workspace, int node, QWidget* parent)> create;
+    // Pages a view may open the wizard on (`--view wizard-ds402-homing`); the window shows one by
+    // its Q_INVOKABLE showPage(QString).
+    QStringList pages = {};
 };
 
 const std::vector<WizardEntry>& wizardEntries();
@@ -31,7 +35,8 @@ const std::vector<WizardEntry>& wizardEntries();
 // `currentNode()` returns.
 void fillCommissionMenu(QMenu* menu, Workspace* workspace, QWidget* parent, std::function<int()> currentNode);
 
-// Creates and shows the wizard `id`; nullptr when there is no such wizard.
+// Creates and shows the wizard `id` ("ds402", or "ds402-homing" for one of its pages); nullptr
+// when there is no such wizard.
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent);
 
 }  // namespace coscope::gui
