@@ -17,7 +17,6 @@
 #include <QLineEdit>
 #include <QLocale>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -104,6 +103,7 @@ Ds402HomingBox::Ds402HomingBox(QWidget* parent) : QWidget(parent) {
     result_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     right->addWidget(result_);
     plot_ = new Ds402MotionPlot(this);
+    plot_->setPlaceholder(tr("The homing's motion shows here"));
     right->addWidget(plot_, 1);
     layout->addLayout(right, 2);
     setButtons(false, false);
@@ -121,6 +121,7 @@ void Ds402HomingBox::setDrive(const canopen::homing::DriveHoming& table, bool kn
     for (const canopen::homing::Method& m : table.methods) method_->addItem(QStringLiteral("%1 — %2").arg(m.number).arg(coreText(m.description)), int(m.number));
     const int pick = method_->findData(before && table.supports(*before) ? *before : int(table.defaultMethod ? table.defaultMethod : 35));
     method_->setCurrentIndex(std::max(0, pick));
+    method_->lineEdit()->setCursorPosition(0);  // the number first, not the end of a long text
     // Types and limits as the drive's dictionary gives them; units as its sidecar says.
     const eds::DictionaryPtr od = dictionary.isEmpty() ? nullptr : eds::DictionaryLibrary::shared().loadShared(dictionary);
     const od::Unit* unitOf[] = {&units.homingSpeed, &units.homingSpeed, &units.homingAcceleration, &units.homeOffset};
@@ -142,6 +143,7 @@ void Ds402HomingBox::showDriveValue(uint16_t index, uint8_t sub, int64_t value) 
         if (methodTyped_) return;
         const int i = method_->findData(int(value));
         if (i >= 0) method_->setCurrentIndex(i);
+        method_->lineEdit()->setCursorPosition(0);
         return;
     }
     for (size_t i = 0; i < fields_.size(); ++i)

@@ -96,6 +96,7 @@ Ds402PositionMoveBox::Ds402PositionMoveBox(QWidget* parent) : QWidget(parent) {
     result_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     right->addWidget(result_);
     plot_ = new Ds402MotionPlot(this);
+    plot_->setPlaceholder(tr("The move's motion shows here"));
     right->addWidget(plot_, 1);
     layout->addLayout(right, 2);
     showHandshake();

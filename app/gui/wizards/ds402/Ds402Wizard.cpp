@@ -139,7 +139,7 @@ void Ds402Wizard::buildUi() {
         QString why;
         if (!chooseMode(mode, &why)) setMessage(why, true);
     });
-    lower->addWidget(mode_, 1);
+    lower->addWidget(mode_, 1, Qt::AlignTop);
     // The motions, one page each: the test move, homing, a profile position move.
     pages_ = new QTabWidget(this);
     pages_->setObjectName(QStringLiteral("motionPages"));
