@@ -197,7 +197,9 @@ private:
     MotionStep controlwordStep(uint16_t cw, const QString& why);
     MotionStep modeStep(int8_t mode);
     MotionStep enableStep();
-    void motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, size_t i);
+    // `liveFrom`: the step that starts the motion (bit 4 rising); a stop asked for after it
+    // halts the drive and waits as during the motion (the set-point may already be moving it).
+    void motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, size_t i, size_t liveFrom);
     void motionMonitor(std::shared_ptr<Motion> m);
     void motionStopped(std::shared_ptr<Motion> m, const QString& why);
     void motionEnd(std::shared_ptr<Motion> m, Ds402Result r);

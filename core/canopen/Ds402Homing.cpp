@@ -61,8 +61,9 @@ void Ds402Controller::home(const Ds402HomingRequest& req, std::function<void(con
     steps->push_back(enableStep());
     // Bit 4 low first so that 1Fh is a rising edge whatever was sent before.
     steps->push_back(controlwordStep(0x000F, QStringLiteral("Enable operation, homing start (bit 4) low")));
+    const size_t start = steps->size();
     steps->push_back(controlwordStep(0x001F, QStringLiteral("Homing operation start (bit 4 rising)")));
-    motionSteps(m, steps, 0);
+    motionSteps(m, steps, 0, start);
 }
 
 }  // namespace coscope::canopen

@@ -100,8 +100,15 @@ Ds402Controller::MotionStep Ds402Controller::enableStep() {
     };
 }
 
-void Ds402Controller::motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, size_t i) {
+void Ds402Controller::motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, size_t i, size_t liveFrom) {
     if (motion_ != m) return;
+    if (m->stopping && i > liveFrom) {
+        // The start went out (a hold-to-run released during the set-point handshake): stop it
+        // as a running motion, halt and wait for standstill.
+        m->running = true;
+        m->started.start();
+        return stopMotion(m->quickSent, m->stopReason);
+    }
     if (m->stopping) return motionStopped(m, QStringLiteral("stopped before the motion started (%1)").arg(m->stopReason));
     if (i >= steps->size()) {
         m->running = true;
@@ -109,10 +116,10 @@ void Ds402Controller::motionSteps(std::shared_ptr<Motion> m, MotionSteps steps, 
         return motionMonitor(m);
     }
     QPointer<Ds402Controller> self(this);
-    (*steps)[i]([self, m, steps, i](const QString& error) {
+    (*steps)[i]([self, m, steps, i, liveFrom](const QString& error) {
         if (!self || self->motion_ != m) return;
         if (!error.isEmpty()) return self->motionFail(m, error);
-        self->motionSteps(m, steps, i + 1);
+        self->motionSteps(m, steps, i + 1, liveFrom);
     });
 }
 

@@ -40,6 +40,7 @@ void Ds402Controller::moveTo(const Ds402PositionMove& move, std::function<void(c
     steps->push_back(writeStep(0x607A, 0, moveLe32(uint32_t(move.target)), QStringLiteral("%1 (target position, %2)").arg(move.target).arg(how)));
     steps->push_back(enableStep());
     steps->push_back(controlwordStep(uint16_t(0x000F | bits), QStringLiteral("Enable operation, new set-point (bit 4) low")));
+    const size_t start = steps->size();
     steps->push_back(controlwordStep(uint16_t(0x001F | bits), QStringLiteral("New set-point (bit 4 rising), %1").arg(how)));
     // Wait for set-point acknowledge (bit 12), then bit 4 low (the handshake, §12.2).
     steps->push_back([self, m](std::function<void(const QString&)> next) {
@@ -70,7 +71,7 @@ void Ds402Controller::moveTo(const Ds402PositionMove& move, std::function<void(c
         (*poll)();
     });
     steps->push_back(controlwordStep(uint16_t(0x000F | bits), QStringLiteral("Set-point acknowledged: new set-point (bit 4) low")));
-    motionSteps(m, steps, 0);
+    motionSteps(m, steps, 0, start);
 }
 
 }  // namespace coscope::canopen

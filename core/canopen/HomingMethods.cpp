@@ -163,6 +163,7 @@ DriveHoming makeAimotor() {
     d.refusal = Refusal::AlarmAtStart;
     d.alarm = QStringLiteral("Er.668");
     d.changeOnlyWhileDisabled = true;
+    d.homeFoundBit = 15;  // statusword bit 15 "home found" (extract-aimotor §4.2)
     d.source = QStringLiteral("AIMOTOR manual §4.7, 6098h (extract-aimotor §2.5, §4.7, §6b)");
     return d;
 }

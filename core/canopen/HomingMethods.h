@@ -52,6 +52,7 @@ struct DriveHoming {
     uint32_t abortCode = 0;      // SdoAbort: the abort code for a method in range the drive lacks
     QString alarm;               // AlarmAtStart: vendor alarm name, e.g. "Er.668"
     bool changeOnlyWhileDisabled = false;  // 6098h is refused in Operation enabled
+    int homeFoundBit = -1;       // statusword bit set once home was found (AIMOTOR 15); -1 = none
     QString source;              // manual section
 
     const Method* method(int number) const;

@@ -67,6 +67,18 @@ inline std::unique_ptr<ModalAnswerer> answerBox(QMessageBox::StandardButton butt
     });
 }
 
+// Clicks `button` in the next message box whose text holds `says`; its text goes to `*asked`.
+// Boxes that say something else are left to other answerers.
+inline std::unique_ptr<ModalAnswerer> answerBoxSaying(const QString& says, QMessageBox::StandardButton button, QString* asked) {
+    return std::make_unique<ModalAnswerer>([=](QWidget* w) {
+        auto* box = qobject_cast<QMessageBox*>(w);
+        if (!box || !box->text().contains(says) || !box->button(button)) return false;
+        *asked = box->text();
+        QTest::mouseClick(box->button(button), Qt::LeftButton);
+        return true;
+    });
+}
+
 // Presses Escape in the next modal dialog (the "no" of a confirmation).
 inline std::unique_ptr<ModalAnswerer> answerEscape(QString* asked = nullptr) {
     return std::make_unique<ModalAnswerer>([=](QWidget* w) {

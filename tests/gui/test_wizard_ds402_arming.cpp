@@ -20,23 +20,12 @@ using namespace coscope;
 using namespace coscope::gui;
 using canopen::ds402::Command;
 using canopen::ds402::State;
-using coscope::testing::ModalAnswerer;
+using coscope::testing::answerBoxSaying;
 using coscope::testing::waitFor;
 
 namespace {
 constexpr int kNode = 3;
 const QString kUrl = QStringLiteral("sim://?nodes=3:generic-cia402");
-
-// Clicks `button` of the next message box whose text holds `says`; its text goes to *asked.
-std::unique_ptr<ModalAnswerer> answerIf(const QString& says, QMessageBox::StandardButton button, QString* asked) {
-    return std::make_unique<ModalAnswerer>([=](QWidget* w) {
-        auto* box = qobject_cast<QMessageBox*>(w);
-        if (!box || !box->text().contains(says) || !box->button(button)) return false;
-        *asked = box->text();
-        QTest::mouseClick(box->button(button), Qt::LeftButton);
-        return true;
-    });
-}
 
 QPushButton* buttonNamed(QWidget* w, const QString& text) {
     for (QPushButton* b : w->findChildren<QPushButton*>())
@@ -65,7 +54,7 @@ class TestWizardDs402Arming : public QObject {
     // "Enable operation energises…").
     void enableByClicks() {
         QString asked;
-        auto yes = answerIf(QStringLiteral("energises"), QMessageBox::Yes, &asked);
+        auto yes = answerBoxSaying(QStringLiteral("energises"), QMessageBox::Yes, &asked);
         for (int i = 0; i < 6 && rig_->driveState(kNode) != State::OperationEnabled; ++i) {
             QPushButton* next = nullptr;
             QVERIFY(waitFor([&] {
@@ -81,8 +70,8 @@ class TestWizardDs402Arming : public QObject {
     // Arm… with Yes to the questions; `modeAsked` gets the mode question (empty: none came).
     void armByClicks(QString* modeAsked = nullptr) {
         QString mode, arm;
-        auto yesMode = answerIf(QStringLiteral("the test move needs"), QMessageBox::Yes, &mode);
-        auto yesArm = answerIf(QStringLiteral("Arm the test move?"), QMessageBox::Yes, &arm);
+        auto yesMode = answerBoxSaying(QStringLiteral("the test move needs"), QMessageBox::Yes, &mode);
+        auto yesArm = answerBoxSaying(QStringLiteral("Arm the test move?"), QMessageBox::Yes, &arm);
         QTest::mouseClick(buttonNamed(w_.get(), QStringLiteral("Arm test move…")), Qt::LeftButton);
         QVERIFY(waitFor([&] { return !arm.isEmpty(); }, 5000));
         QVERIFY(waitFor([&] { return w_->holdToRunButton()->isEnabled(); }, 5000));
@@ -166,8 +155,8 @@ private slots:
         setModeByClicks(QStringLiteral("Homing"), 6);
         QString asked, armAsked;
         {
-            auto cancel = answerIf(QStringLiteral("the test move needs"), QMessageBox::Cancel, &asked);
-            auto arm = answerIf(QStringLiteral("Arm the test move?"), QMessageBox::Yes, &armAsked);
+            auto cancel = answerBoxSaying(QStringLiteral("the test move needs"), QMessageBox::Cancel, &asked);
+            auto arm = answerBoxSaying(QStringLiteral("Arm the test move?"), QMessageBox::Yes, &armAsked);
             QTest::mouseClick(buttonNamed(w_.get(), QStringLiteral("Arm test move…")), Qt::LeftButton);
             QVERIFY2(waitFor([&] { return !asked.isEmpty(); }, 3000), "no question before switching from Homing");
             QTest::qWait(300);

@@ -220,7 +220,7 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
 
 namespace coretext {
 std::span<const std::span<const char* const>> all() {
-    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details(), bus()};
+    static const std::span<const char* const> lists[] = {names(), wizards(), trace(), details(), bus(), homing()};
     return lists;
 }
 }  // namespace coretext

@@ -13,6 +13,7 @@ std::span<const char* const> wizards();    // CoreTextWizards.cpp: script steps,
 std::span<const char* const> trace();      // CoreTextTrace.cpp: dissector summaries, health findings
 std::span<const char* const> details();    // CoreTextDetails.cpp: the details pane's field names
 std::span<const char* const> bus();        // CoreTextBus.cpp: CAN error frames, LSS, vendor EMCY
+std::span<const char* const> homing();     // CoreTextHoming.cpp: homing methods, mode-specific statusword bits
 
 // "%1 (%2)": how a value and its meaning are joined. Tried after every listed text, at each place
 // of the separator; used only when a part is translated.

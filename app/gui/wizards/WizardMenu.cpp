@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 #include <QEvent>
 #include <QMenu>
+#include <QMetaObject>
 #include <QSettings>
 #include <QWidget>
 
@@ -21,7 +22,7 @@ const std::vector<WizardEntry>& wizardEntries() {
         {QStringLiteral("nodeid"), QT_TRANSLATE_NOOP("WizardMenu", "Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); },
          [](QWidget* w) { return static_cast<NodeIdWizard*>(w)->node(); }},
         {QStringLiteral("ds402"), QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); },
-         [](QWidget* w) { return static_cast<Ds402Wizard*>(w)->node(); }},
+         [](QWidget* w) { return static_cast<Ds402Wizard*>(w)->node(); }, {QStringLiteral("homing"), QStringLiteral("position")}},
         {QStringLiteral("pdo"), QT_TRANSLATE_NOOP("WizardMenu", "PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); },
          [](QWidget* w) { return static_cast<PdoWizard*>(w)->state().node; }},
     };
@@ -61,10 +62,12 @@ int wizardStartNode(const QString& id, Workspace* workspace, int selected) {
 
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent) {
     for (const WizardEntry& e : wizardEntries()) {
-        if (e.id != id) continue;
+        const QString page = id.startsWith(e.id + u'-') ? id.mid(e.id.size() + 1) : QString();
+        if (e.id != id && !e.pages.contains(page)) continue;
         QWidget* w = e.create(workspace, node, parent);
         if (!w) return nullptr;
-        if (e.nodeOf) w->installEventFilter(new RememberNode(id, e.nodeOf, w));
+        if (e.nodeOf) w->installEventFilter(new RememberNode(e.id, e.nodeOf, w));
+        if (!page.isEmpty()) QMetaObject::invokeMethod(w, "showPage", Q_ARG(QString, page));
         w->setAttribute(Qt::WA_DeleteOnClose);
         w->show();
         w->raise();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <vector>
@@ -24,7 +25,10 @@ struct WizardEntry {
     // Creates the wizard window (top-level, not shown); `node` preselects a node (-1 = none).
     std::function<QWidget*(Workspace* workspace, int node, QWidget* parent)> create;
     // The node the wizard window is on (0 or -1: none), remembered when it closes.
-    std::function<int(QWidget* wizard)> nodeOf;
+    std::function<int(QWidget* wizard)> nodeOf = {};
+    // Pages a view may open the wizard on (`--view wizard-ds402-homing`); the window shows one by
+    // its Q_INVOKABLE showPage(QString).
+    QStringList pages = {};
 };
 
 const std::vector<WizardEntry>& wizardEntries();
@@ -37,8 +41,8 @@ void fillCommissionMenu(QMenu* menu, Workspace* workspace, QWidget* parent, std:
 // The node the wizard `id` opens on when `selected` is chosen in the Nodes dock (see above).
 int wizardStartNode(const QString& id, Workspace* workspace, int selected);
 
-// Creates and shows the wizard `id`; nullptr when there is no such wizard. The node it is
-// closed on is remembered for wizardStartNode().
+// Creates and shows the wizard `id` ("ds402", or "ds402-homing" for one of its pages); nullptr
+// when there is no such wizard. The node it is closed on is remembered for wizardStartNode().
 QWidget* openWizard(const QString& id, Workspace* workspace, int node, QWidget* parent);
 
 }  // namespace coscope::gui

@@ -64,7 +64,7 @@ void Ds402MotionPlot::paintEvent(QPaintEvent*) {
     p.drawText(QPointF(6, 2 * line + 2), velocityText());
     if (t_.size() < 2) {
         p.setPen(palette().placeholderText().color());
-        p.drawText(area, Qt::AlignCenter, tr("The test move's motion shows here"));
+        p.drawText(area, Qt::AlignCenter, placeholder_.isEmpty() ? tr("The test move's motion shows here") : placeholder_);
         return;
     }
     const double t0 = t_.front(), t1 = std::max(t_.back(), t0 + 1);
@@ -82,6 +82,11 @@ void Ds402MotionPlot::paintEvent(QPaintEvent*) {
     };
     draw(pos_, QColor(30, 90, 200));
     draw(vel_, QColor(220, 110, 20));
+}
+
+void Ds402MotionPlot::setPlaceholder(const QString& text) {
+    placeholder_ = text;
+    update();
 }
 
 }  // namespace coscope::gui

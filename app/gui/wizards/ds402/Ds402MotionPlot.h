@@ -21,6 +21,8 @@ public:
     void clear();
     int sampleCount() const { return static_cast<int>(t_.size()); }
     void setUnits(const od::Unit& position, const od::Unit& velocity);
+    // What the empty plot says (the test move's motion by default).
+    void setPlaceholder(const QString& text);
     // The legend as shown: "velocity 606Ch: 150 rpm" (the name alone before the first sample).
     QString positionText() const;
     QString velocityText() const;
@@ -32,6 +34,7 @@ protected:
 private:
     std::vector<double> t_, pos_, vel_;
     od::Unit posUnit_, velUnit_;
+    QString placeholder_;
 };
 
 }  // namespace coscope::gui

@@ -27,7 +27,8 @@ Ds402StatusPanel::Ds402StatusPanel(QWidget* parent) : QWidget(parent) {
     grid->setVerticalSpacing(1);
     for (int bit = 0; bit < 16; ++bit) {
         lamps_[bit] = new QLabel(QStringLiteral("●"), this);
-        names_[bit] = new QLabel(QStringLiteral("%1  %2").arg(bit, 2).arg(coreText(canopen::ds402::statuswordBitName(bit))), this);
+        names_[bit] = new QLabel(this);
+        name(bit);
         const QString meaningOn = coreText(canopen::ds402::statuswordBitMeaning(bit, true)), meaningOff = coreText(canopen::ds402::statuswordBitMeaning(bit, false));
         names_[bit]->setToolTip(QStringLiteral("%1%2").arg(meaningOn.isEmpty() ? QString() : tr("On: ") + meaningOn + QStringLiteral("\n"),
                                                            meaningOff.isEmpty() ? QString() : tr("Off: ") + meaningOff));
@@ -39,9 +40,9 @@ Ds402StatusPanel::Ds402StatusPanel(QWidget* parent) : QWidget(parent) {
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(3, 1);
     v->addLayout(grid);
-    mode_ = new QLabel(this);
-    mode_->setObjectName(QStringLiteral("modeDisplay"));
-    v->addWidget(mode_);
+    modeLabel_ = new QLabel(this);
+    modeLabel_->setObjectName(QStringLiteral("modeDisplay"));
+    v->addWidget(modeLabel_);
     fault_ = new QLabel(this);
     fault_->setObjectName(QStringLiteral("faultText"));
     fault_->setWordWrap(true);
@@ -75,10 +76,22 @@ void Ds402StatusPanel::clear() {
     word_->setText(tr("Statusword (6041h): not read"));
     for (int b = 0; b < 16; ++b) update(b);
     setFaultText({});
-    mode_->clear();
+    modeLabel_->clear();
+    setMode(std::nullopt);
 }
 
-void Ds402StatusPanel::setModeText(const QString& text) { mode_->setText(text); }
+void Ds402StatusPanel::setModeText(const QString& text) { modeLabel_->setText(text); }
+
+void Ds402StatusPanel::setMode(std::optional<int8_t> mode) {
+    if (mode == mode_) return;
+    mode_ = mode;
+    name(12);
+    name(13);
+}
+
+void Ds402StatusPanel::name(int bit) {
+    names_[bit]->setText(QStringLiteral("%1  %2").arg(bit, 2).arg(coreText(canopen::ds402::statuswordBitName(bit, mode_))));
+}
 
 void Ds402StatusPanel::setFaultText(const QString& text) {
     fault_->setText(text);
@@ -87,7 +100,7 @@ void Ds402StatusPanel::setFaultText(const QString& text) {
 
 QString Ds402StatusPanel::bitText(int bit) const {
     if (bit < 0 || bit > 15) return {};
-    return QStringLiteral("%1 %2: %3").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit)), !known_ ? QStringLiteral("?") : (sw_ & (1u << bit)) ? QStringLiteral("on") : QStringLiteral("off"));
+    return QStringLiteral("%1 %2: %3").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit, mode_)), !known_ ? QStringLiteral("?") : (sw_ & (1u << bit)) ? QStringLiteral("on") : QStringLiteral("off"));
 }
 
 QString Ds402StatusPanel::faultText() const { return fault_->text(); }

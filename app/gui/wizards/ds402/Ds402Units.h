@@ -17,12 +17,19 @@ struct Ds402Units {
     od::Unit distance;         // 607Ah target position
     od::Unit position;         // 6064h position actual value
     od::Unit velocity;         // 606Ch velocity actual value
+    od::Unit profileAcceleration;  // 6083h (6084h the same; Delta: ms from 0 to 3000 rpm)
+    od::Unit homingSpeed;          // 6099h:01 and :02 (Delta: 0.1 rpm)
+    od::Unit homingAcceleration;   // 609Ah
+    od::Unit homeOffset;           // 607Ch
 
     static Ds402Units forDictionary(const QString& dictionaryName);
 };
 
 // "150 rpm" for raw 1500 in 0.1 rpm: the app's one number format (od::Value::format).
 QString inUnit(double raw, const od::Unit& unit);
+// A raw number's unit after an integer field: " inc/s", or " × 0.1 rpm" when one raw step is
+// not one unit.
+QString rawUnitSuffix(const od::Unit& unit);
 // Decimals a display value needs to show one raw step (0.1 rpm: 1).
 int unitDecimals(const od::Unit& unit);
 

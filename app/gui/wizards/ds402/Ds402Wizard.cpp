@@ -8,6 +8,8 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/ds402/Ds402FramesTabs.h"
+#include "app/gui/wizards/ds402/Ds402HomingBox.h"
+#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402ModeBox.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
@@ -21,6 +23,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -44,7 +47,7 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
     poll_ = new QTimer(this);
     poll_->setInterval(kPollMs);
     connect(poll_, &QTimer::timeout, this, [this] {
-        if (!busy_ && !reading_ && ctl_ && !ctl_->testMoveActive()) refresh();
+        if (!busy_ && !reading_ && ctl_ && !ctl_->testMoveActive() && !ctl_->motionActive()) refresh();
     });
     feed_ = new QTimer(this);
     feed_->setInterval(kFeedMs);
@@ -136,7 +139,10 @@ void Ds402Wizard::buildUi() {
         QString why;
         if (!chooseMode(mode, &why)) setMessage(why, true);
     });
-    lower->addWidget(mode_, 2);
+    lower->addWidget(mode_, 1, Qt::AlignTop);
+    // The motions, one page each: the test move, homing, a profile position move.
+    pages_ = new QTabWidget(this);
+    pages_->setObjectName(QStringLiteral("motionPages"));
     move_ = new Ds402TestMoveBox(this);
     connect(move_, &Ds402TestMoveBox::armClicked, this, [this] {
         QString why;
@@ -147,8 +153,29 @@ void Ds402Wizard::buildUi() {
         if (!pressHoldToRun(&why) && !why.isEmpty()) setMessage(why, true);
     });
     connect(move_, &Ds402TestMoveBox::holdReleased, this, &Ds402Wizard::releaseHoldToRun);
-    lower->addWidget(move_, 3);
-    root->addLayout(lower);
+    pages_->addTab(move_, tr("Test move"));
+    homing_ = new Ds402HomingBox(this);
+    connect(homing_, &Ds402HomingBox::startClicked, this, [this] {
+        QString why;
+        if (!startHoming(&why) && !why.isEmpty()) setMessage(why, true);
+    });
+    connect(homing_, &Ds402HomingBox::stopClicked, this, &Ds402Wizard::stopHoming);
+    pages_->addTab(homing_, tr("Homing"));
+    position_ = new Ds402PositionMoveBox(this);
+    connect(position_, &Ds402PositionMoveBox::armClicked, this, [this] {
+        QString why;
+        if (!armPositionMove(&why) && !why.isEmpty()) setMessage(why, true);
+    });
+    connect(position_, &Ds402PositionMoveBox::holdPressed, this, [this] {
+        QString why;
+        if (!pressHoldToMove(&why) && !why.isEmpty()) setMessage(why, true);
+    });
+    connect(position_, &Ds402PositionMoveBox::holdReleased, this, &Ds402Wizard::releaseHoldToMove);
+    pages_->addTab(position_, tr("Position move"));
+    // Homing and position values are read from the drive when their page is first shown.
+    connect(pages_, &QTabWidget::currentChanged, this, [this] { readMotionSettings(); });
+    lower->addWidget(pages_, 3);
+    root->addLayout(lower, 2);
 
     message_ = new QLabel(this);
     message_->setObjectName(QStringLiteral("message"));
@@ -198,7 +225,7 @@ void Ds402Wizard::buildUi() {
     bar->addWidget(dryRun_);
     bar->addWidget(close);
     root->addLayout(bar);
-    resize(1080, 880);
+    resize(1120, 960);
 }
 
 QString Ds402Wizard::sendRefusal() const {
@@ -257,12 +284,16 @@ QPushButton* Ds402Wizard::stepButton(Command c) const { return steps_->button(c)
 
 void Ds402Wizard::updateButtons() {
     const bool canSend = sendRefusal().isEmpty();
-    const bool moving = ctl_ && ctl_->testMoveActive();
+    const bool testing = ctl_ && ctl_->testMoveActive();
+    const bool moving = testing || (ctl_ && ctl_->motionActive());
     const auto next = canopen::ds402::nextEnableCommand(state_);
     steps_->enableNext(next, canSend && !busy_ && !moving);
     mode_->setChoosable(canSend && !busy_ && !moving);
-    move_->setButtons(canSend && !busy_ && !moving && state_ == State::OperationEnabled,
-                      canSend && (moving || (armed_ && !busy_ && state_ == State::OperationEnabled)));
+    const bool enabled = canSend && !busy_ && state_ == State::OperationEnabled;
+    move_->setButtons(enabled && !moving, canSend && (testing || (enabled && !moving && armed_ && armedKind_ == Armed::TestMove)));
+    homing_->setButtons(canSend && !busy_ && !moving, canSend && motion_ == Motion::Homing);
+    position_->setButtons(enabled && !moving,
+                          canSend && (motion_ == Motion::Position || (enabled && !moving && armed_ && armedKind_ == Armed::PositionMove)));
     // Always there while connected (DESIGN.md "quick stop / disable always visible").
     const bool connected = workspace_->canTransmit() && workspace_->sdo() && node_ > 0 && cia402_ && !closing_;
     quickStop_->setEnabled(connected);

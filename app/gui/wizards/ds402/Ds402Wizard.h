@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Folder app/gui/wizards/ds402/ owns the CiA 402 enable step-through: the wizard and its parts
-// (state picture, statusword panel, step bar, mode box, test move with its plot, frames and dry-run
-// tabs), drive units, fault texts and vendor notes.
+// (state picture, statusword panel, step bar, mode box, test move with its plot, homing and profile
+// position pages, frames and dry-run tabs), drive units, fault texts and vendor notes.
 #pragma once
 
 #include "core/canopen/CommandScript.h"
@@ -13,10 +13,12 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 
 class QComboBox;
 class QLabel;
 class QPushButton;
+class QTabWidget;
 class QTimer;
 
 namespace coscope::gui {
@@ -30,6 +32,8 @@ class Ds402MotionPlot;
 class Ds402StepBar;
 class Ds402ModeBox;
 class Ds402TestMoveBox;
+class Ds402HomingBox;
+class Ds402PositionMoveBox;
 class Ds402FramesTabs;
 
 // The CiA 402 enable step-through (Commission ▸ CiA 402 enable step-through…): shows the
@@ -37,13 +41,17 @@ class Ds402FramesTabs;
 // next step (fault reset → shutdown → switch on → enable operation) that writes 6040h and waits
 // for the statusword it must lead to, explaining a missing bit in plain words; chooses and
 // verifies the mode of operation (6060h/6061h) among those 6502h lists; an optional test move
-// on a hold-to-run button with a live plot. Quick stop and Disable are always there.
+// on a hold-to-run button with a live plot; homing with the drive's own methods and a profile
+// position move on a hold-to-run button (Ds402WizardMotion.cpp). Quick stop and Disable are
+// always there.
 // Made of: the state picture (Ds402StateDiagram), the statusword panel (Ds402StatusPanel), the
-// step bar (Ds402StepBar), the mode box (Ds402ModeBox), the test move (Ds402TestMoveBox) and the
-// frames and dry-run tabs (Ds402FramesTabs); this class runs the drive through them.
+// step bar (Ds402StepBar), the mode box (Ds402ModeBox), the pages Test move (Ds402TestMoveBox),
+// Homing (Ds402HomingBox) and Position move (Ds402PositionMoveBox), and the frames and dry-run
+// tabs (Ds402FramesTabs); this class runs the drive through them.
 //
-// Safety (DESIGN.md): asks before Enable operation and before arming a test move (and before the
-// move switches the mode of operation); any stop, fault, step or mode change ends the arming; a failed step
+// Safety (DESIGN.md): asks before Enable operation, before homing and before arming a test or
+// position move (and before either switches the mode of operation); any stop, fault, step or mode
+// change ends the arming; a failed step
 // sends Disable voltage; closing the wizard (Close, Esc, the window's ✕), losing the bus or
 // quitting the app disables a drive the wizard left switched on. What it shows is what it last
 // read from the drive: nothing once the connection is gone. The test move speaks the drive's
@@ -78,6 +86,16 @@ public:
     canopen::Ds402TestMove testMove() const;
     void quickStop();
     void disableDrive();
+    // Homing and the profile position move (Ds402WizardMotion.cpp). False + *why when refused
+    // before anything is sent (or asked).
+    bool startHoming(QString* why = nullptr);
+    void stopHoming();
+    bool armPositionMove(QString* why = nullptr);
+    bool pressHoldToMove(QString* why = nullptr);
+    void releaseHoldToMove();
+    bool motionRunning() const;
+    // Shows a page of the lower tabs by name: "test", "homing", "position".
+    Q_INVOKABLE void showPage(const QString& name);
     // The dry run: the exact enable sequence from the current state (with the chosen mode),
     // shown in the preview; nothing is sent.
     canopen::CommandScript dryRun();
@@ -104,12 +122,17 @@ public:
     QPushButton* quickStopButton() const { return quickStop_; }
     QPushButton* disableButton() const { return disable_; }
     QComboBox* modeCombo() const;
+    QTabWidget* pages() const { return pages_; }
+    Ds402HomingBox* homingBox() const { return homing_; }
+    Ds402PositionMoveBox* positionBox() const { return position_; }
 
 signals:
     void stateRead(bool ok);
     void stepFinished(bool ok);
     void modeFinished(bool ok);
     void testMoveFinished(bool ok);
+    void homingFinished(bool ok);
+    void positionMoveFinished(bool ok);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -142,6 +165,21 @@ private:
     void disarm(const QString& why);
     // Confirmed, with the drive in `driveMode` (6061h): the move switches to its own mode, as agreed.
     void arm(const canopen::Ds402TestMove& move, int8_t driveMode);
+    // Asks before a motion that needs mode `needed` switches from the drive's mode (`question`
+    // has %1 the drive's mode, %2 the needed one, %3 its number); *why says why not when refused
+    // (6502h lacks it) or not confirmed (`notDone` with %1 the drive's mode).
+    bool agreeMode(int8_t needed, const QString& question, const QString& notDone, QString* why);
+    // The homing and position pages: the drive's methods, units and values (when first shown for
+    // the node), the motion's progress and end.
+    void setUpMotionPages();
+    void readMotionSettings();
+    void onMotionSample(const canopen::Ds402MotionSample& s);
+    void homingDone(const canopen::Ds402Result& r);
+    void positionDone(const canopen::Ds402Result& r);
+    void armPosition(int32_t position);  // after the reads of arming
+    // A failed motion: the state and the drive's fault text, then `show` with the whole text.
+    void afterMotionFailure(const QString& text, std::function<void(const QString&)> show);
+    QString limitsText() const;
     // Disables a drive the wizard may have left switched on, without waiting (close, quit,
     // bus lost). Returns whether something was sent.
     bool safeDisable(const QString& why);
@@ -157,6 +195,15 @@ private:
     bool reading_ = false;
     bool cia402_ = true;
     bool armed_ = false;
+    enum class Armed : uint8_t { TestMove, PositionMove };
+    Armed armedKind_ = Armed::TestMove;  // what is armed
+    enum class Motion : uint8_t { None, Homing, Position };
+    Motion motion_ = Motion::None;       // the home()/moveTo() running
+    int motionSettingsFor_ = -1;         // selection_ whose homing/position values were read
+    std::optional<int32_t> position_6064_;                   // position actual, as last read
+    std::optional<std::pair<int32_t, int32_t>> softLimits_;  // 607Dh:01/02 when the drive has them
+    int32_t moveTarget_ = 0;             // where the running position move goes
+    canopen::Ds402PositionMove armedMove_;  // the position move the user agreed to
     int8_t armedMode_ = 0;      // the mode of operation (6061h) the armed test move runs in
     int8_t armedFromMode_ = 0;  // ... and the one the drive showed when it was armed (until it switched)
     bool holding_ = false;
@@ -179,6 +226,9 @@ private:
     Ds402StepBar* steps_ = nullptr;
     Ds402ModeBox* mode_ = nullptr;
     Ds402TestMoveBox* move_ = nullptr;
+    Ds402HomingBox* homing_ = nullptr;
+    Ds402PositionMoveBox* position_ = nullptr;
+    QTabWidget* pages_ = nullptr;
     Ds402FramesTabs* tabs_ = nullptr;
     QComboBox* nodeCombo_ = nullptr;
     QLabel* banner_ = nullptr;

@@ -185,18 +185,15 @@ bool Ds402Wizard::armTestMove(QString* why) {
     // the drive's mode silently: refused when the drive lacks that mode (6502h), asked otherwise.
     const int8_t needed = m.kind == Ds402TestMove::Kind::Jog ? 3 : 1;
     const int8_t current = mode_->driveMode();
-    const QString neededName = coreText(canopen::ds402::modeName(needed));
     if (supported_ && !canopen::ds402::modeSupported(*supported_, needed)) {
-        if (why) *why = tr("The test move needs %1, which the drive does not list as supported (6502h): no test move in %2.").arg(neededName, coreText(canopen::ds402::modeName(current)));
+        if (why)
+            *why = tr("The test move needs %1, which the drive does not list as supported (6502h): no test move in %2.")
+                       .arg(coreText(canopen::ds402::modeName(needed)), coreText(canopen::ds402::modeName(current)));
         return false;
     }
-    if (current != needed &&
-        !confirm(tr("Mode of operation"), tr("The drive is in %1; the test move needs %2: switch the mode of operation (6060h = %3)?")
-                                               .arg(coreText(canopen::ds402::modeName(current)), neededName)
-                                               .arg(needed))) {
-        if (why) *why = tr("Test move not armed: the mode of operation stays %1.").arg(coreText(canopen::ds402::modeName(current)));
+    if (!agreeMode(needed, tr("The drive is in %1; the test move needs %2: switch the mode of operation (6060h = %3)?"),
+                   tr("Test move not armed: the mode of operation stays %1."), why))
         return false;
-    }
     const QString what = move_->describe(m);
     if (!confirm(tr("Test move"), tr("While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.\n"
                                      "Releasing the button stops it. Make sure the axis is free to move.\n\nArm the test move?")
@@ -211,6 +208,7 @@ bool Ds402Wizard::armTestMove(QString* why) {
 
 void Ds402Wizard::arm(const Ds402TestMove& m, int8_t driveMode) {
     armed_ = true;
+    armedKind_ = Armed::TestMove;
     armedMode_ = m.kind == Ds402TestMove::Kind::Jog ? 3 : 1;
     armedFromMode_ = driveMode;
     setMessage(armedMode_ == driveMode ? tr("Test move armed: hold the “Hold to run” button to move, release it to stop.")
@@ -223,7 +221,8 @@ void Ds402Wizard::disarm(const QString& why) {
     if (!armed_) return;
     armed_ = false;
     spdlog::info("ds402 wizard: test move of node {} no longer armed ({})", node_, why.toStdString());
-    setMessage(tr("The test move is no longer armed (%1): arm it again to move.").arg(why));
+    setMessage(armedKind_ == Armed::TestMove ? tr("The test move is no longer armed (%1): arm it again to move.").arg(why)
+                                             : tr("The position move is no longer armed (%1): arm it again to move.").arg(why));
     updateButtons();
 }
 
@@ -232,11 +231,11 @@ bool Ds402Wizard::pressHoldToRun(QString* why) {
         if (why) *why = r;
         return false;
     }
-    if (!armed_) {
+    if (!armed_ || armedKind_ != Armed::TestMove) {
         if (why) *why = tr("Arm the test move first.");
         return false;
     }
-    if (busy_ || ctl_->testMoveActive()) {
+    if (busy_ || ctl_->testMoveActive() || ctl_->motionActive()) {
         if (why) *why = tr("Wait for the current step to finish.");
         return false;
     }
@@ -292,6 +291,7 @@ void Ds402Wizard::quickStop() {
     disarm(tr("Quick stop"));
     sentCommands_ = true;
     setMessage(tr("Quick stop: sending 6040h = 0002h…"));
+    if (ctl_->motionActive()) return ctl_->stopMotion(true, tr("Quick stop"));  // homing or a position move: its end is shown
     QPointer<Ds402Wizard> self(this);
     ctl_->quickStop([self](const Ds402Result& r) {
         if (self) self->showStopped(r, tr("Quick stop done: the drive is in %1."), tr("Quick stop"));
@@ -308,8 +308,10 @@ void Ds402Wizard::disableDrive() {
     auto done = [self](const Ds402Result& r) {
         if (self) self->showStopped(r, tr("The drive is disabled (%1): the motor has no power."), tr("Disable"));
     };
-    // During a test move: no power at once (the move's monitor sees it and stops too).
-    if (ctl_->testMoveActive()) ctl_->disableVoltage(done);
+    // During a test move: no power at once (the move's monitor sees it and stops too); homing or
+    // a position move is quick-stopped first.
+    if (ctl_->motionActive()) ctl_->stopMotion(true, tr("Disable"));
+    if (ctl_->testMoveActive() || ctl_->motionActive()) ctl_->disableVoltage(done);
     else ctl_->disable(done);
 }
 
@@ -336,7 +338,7 @@ canopen::CommandScript Ds402Wizard::dryRun() {
 
 bool Ds402Wizard::safeDisable(const QString& why) {
     if (!ctlSdo_ || ctlSdo_ != workspace_->sdo() || !workspace_->canTransmit() || node_ <= 0 || !cia402_) return false;
-    const bool moving = ctl_ && ctl_->testMoveActive();
+    const bool moving = ctl_ && (ctl_->testMoveActive() || ctl_->motionActive());
     const bool powered = state_ == State::OperationEnabled || state_ == State::SwitchedOn || state_ == State::QuickStopActive ||
                          (sentCommands_ && state_ == State::ReadyToSwitchOn);
     if (!moving && !powered) return false;

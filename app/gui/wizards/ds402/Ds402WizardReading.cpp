@@ -12,6 +12,7 @@
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/ds402/Ds402FaultText.h"
 #include "app/gui/wizards/ds402/Ds402FramesTabs.h"
+#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402ModeBox.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
@@ -22,6 +23,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QPointer>
+#include <QRegularExpression>
 #include <QTimer>
 
 #include <spdlog/spdlog.h>
@@ -88,6 +90,8 @@ void Ds402Wizard::findFirstDrive(int attempt) {
 
 void Ds402Wizard::selectNode(int node) {
     if (ctl_ && ctl_->testMoveActive()) ctl_->stopTestMove(tr("another drive was chosen"));
+    if (ctl_ && ctl_->motionActive()) ctl_->stopMotion(true, tr("another drive was chosen"));
+    motion_ = Motion::None;
     if (node != node_) safeDisable(tr("another drive was chosen"));
     node_ = node;
     sentCommands_ = false;
@@ -147,6 +151,7 @@ void Ds402Wizard::selectNode(int node) {
 
 void Ds402Wizard::startReading() {
     move_->setUnits(Ds402Units::forDictionary(dictionary_));
+    setUpMotionPages();
     const auto notes = ds402VendorNotes(dictionary_);
     vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped()) : QString());
     if (notes && notes->notCia402) {
@@ -169,7 +174,14 @@ void Ds402Wizard::makeController() {
     ctlSdo_ = workspace_->sdo();
     ctl_ = std::make_unique<canopen::Ds402Controller>(*ctlSdo_, static_cast<uint8_t>(node_));
     ctl_->setTimeout(1000);
-    ctl_->setSendObserver([](const QString& line) { spdlog::info("ds402 wizard: {}", line.toStdString()); });
+    motion_ = Motion::None;
+    ctl_->setSendObserver([this](const QString& line) {
+        spdlog::info("ds402 wizard: {}", line.toStdString());
+        // The set-point handshake of a position move, as the controller sends it.
+        static const QRegularExpression controlword(QStringLiteral("6040h = 0x([0-9A-F]{4})"));
+        if (const auto m = controlword.match(line); m.hasMatch() && motion_ == Motion::Position)
+            position_->showControlword(static_cast<uint16_t>(m.captured(1).toUInt(nullptr, 16)));
+    });
 }
 
 void Ds402Wizard::stopOnBusLoss() {
@@ -177,7 +189,7 @@ void Ds402Wizard::stopOnBusLoss() {
         dropController(tr("Bus lost. CoScope reconnects by itself; press “Read state” when the bus is back."));
         return;
     }
-    const bool moving = ctl_ && ctl_->testMoveActive();
+    const bool moving = ctl_ && (ctl_->testMoveActive() || ctl_->motionActive());
     const bool mayBeEnabled = moving || state_ == State::OperationEnabled || state_ == State::SwitchedOn ||
                               state_ == State::QuickStopActive || state_ == State::FaultReactionActive || sentCommands_;
     const QString last = state_ == State::Unknown ? tr("CiA 402 state unknown")
@@ -196,6 +208,7 @@ void Ds402Wizard::dropController(const QString& why) {
     busy_ = reading_ = false;
     ctl_.reset();
     ctlSdo_ = nullptr;
+    motion_ = Motion::None;
     // Nothing read any more: show no state rather than the last one (it may be long gone).
     ++selection_;  // answers still under way are dropped
     state_ = State::Unknown;
@@ -344,6 +357,7 @@ void Ds402Wizard::showDriveMode(int8_t mode) {
     if (mode == armedMode_) armedFromMode_ = mode;
     else if (mode != armedFromMode_) disarm(tr("the mode of operation changed"));
     status_->setModeText(tr("Mode of operation (6061h): %1").arg(coreText(canopen::ds402::modeName(mode))));
+    status_->setMode(mode);
     if (!mode_->showDriveMode(mode)) return;
     // The test move follows the kind the drive's mode runs (PV: jog, PP: short move).
     if (mode == 3) move_->setKind(Ds402TestMove::Kind::Jog);
