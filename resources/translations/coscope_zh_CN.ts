@@ -2755,6 +2755,270 @@
         <source>FEh (event, manufacturer)</source>
         <translation>FEh（事件触发，制造商定义）</translation>
     </message>
+    <message>
+        <source>Current position is home (no movement)</source>
+        <translation>当前位置即为原点（不移动）</translation>
+    </message>
+    <message>
+        <source>Current position is home (no movement; the default)</source>
+        <translation>当前位置即为原点（不移动；默认）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the negative direction (stops on its edge)</source>
+        <translation>负向搜索原点开关（停在其边沿）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the negative direction, then the Z pulse</source>
+        <translation>负向搜索原点开关，再找 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the positive direction (stops on its edge)</source>
+        <translation>正向搜索原点开关（停在其边沿）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the positive direction, then the Z pulse</source>
+        <translation>正向搜索原点开关，再找 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: Z pulse above the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: Z pulse below the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: index pulse above the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: index pulse below the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from above</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from above (the same as 29, Delta manual §4.6)</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：其边沿，从上方到达（与 29 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from below</source>
+        <translation>原点开关，负向起始（负向限位开关换向），下边沿：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: Z pulse above the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: Z pulse below the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: index pulse above the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: index pulse below the edge</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from above</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from above (the same as 27, Delta manual §4.6)</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：其边沿，从上方到达（与 27 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from below</source>
+        <translation>原点开关，负向起始（负向限位开关换向），上边沿：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: Z pulse above the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: Z pulse below the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: index pulse above the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: index pulse below the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from above</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from below</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from below (the same as 23, Delta manual §4.6)</source>
+        <translation>原点开关，正向起始（正向限位开关换向），下边沿：其边沿，从下方到达（与 23 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: Z pulse above the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: Z pulse below the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: index pulse above the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: index pulse below the edge</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from above</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from below</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from below (the same as 25, Delta manual §4.6)</source>
+        <translation>原点开关，正向起始（正向限位开关换向），上边沿：其边沿，从下方到达（与 25 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Mechanical end stop in the negative direction, at low speed with the homing torque limit H05-58</source>
+        <translation>负向低速搜索机械极限位，转矩限制为回原点转矩限制 H05-58</translation>
+    </message>
+    <message>
+        <source>Mechanical end stop in the positive direction, at low speed with the homing torque limit H05-58</source>
+        <translation>正向低速搜索机械极限位，转矩限制为回原点转矩限制 H05-58</translation>
+    </message>
+    <message>
+        <source>Negative home switch: Z pulse above the edge</source>
+        <translation>负向原点开关：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Negative home switch: Z pulse below the edge</source>
+        <translation>负向原点开关：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Negative home switch: index pulse above the edge</source>
+        <translation>负向原点开关：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Negative home switch: index pulse below the edge</source>
+        <translation>负向原点开关：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from above</source>
+        <translation>负向原点开关：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from above (the same as 21, Delta manual §4.6)</source>
+        <translation>负向原点开关：其边沿，从上方到达（与 21 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from below</source>
+        <translation>负向原点开关：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Negative limit switch, then back to the first Z pulse</source>
+        <translation>负向限位开关，再回到第一个 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Negative limit switch, then back to the first index pulse</source>
+        <translation>负向限位开关，再回到第一个索引脉冲</translation>
+    </message>
+    <message>
+        <source>Negative limit switch: its edge, backing off the switch</source>
+        <translation>负向限位开关：脱离开关时的边沿</translation>
+    </message>
+    <message>
+        <source>Negative overtravel switch (stops on its edge)</source>
+        <translation>反向超程开关（停在其边沿）</translation>
+    </message>
+    <message>
+        <source>Negative overtravel switch, then the Z pulse</source>
+        <translation>反向超程开关，再找 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Next Z pulse in the negative direction</source>
+        <translation>负向的下一个 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Next Z pulse in the positive direction</source>
+        <translation>正向的下一个 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Next index pulse in the negative direction</source>
+        <translation>负向的下一个索引脉冲</translation>
+    </message>
+    <message>
+        <source>Next index pulse in the positive direction</source>
+        <translation>正向的下一个索引脉冲</translation>
+    </message>
+    <message>
+        <source>Positive home switch: Z pulse above the edge</source>
+        <translation>正向原点开关：边沿上方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Positive home switch: Z pulse below the edge</source>
+        <translation>正向原点开关：边沿下方的 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Positive home switch: index pulse above the edge</source>
+        <translation>正向原点开关：边沿上方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Positive home switch: index pulse below the edge</source>
+        <translation>正向原点开关：边沿下方的索引脉冲</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from above</source>
+        <translation>正向原点开关：其边沿，从上方到达</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from below</source>
+        <translation>正向原点开关：其边沿，从下方到达</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from below (the same as 19, Delta manual §4.6)</source>
+        <translation>正向原点开关：其边沿，从下方到达（与 19 相同，台达手册 §4.6）</translation>
+    </message>
+    <message>
+        <source>Positive limit switch, then back to the first Z pulse</source>
+        <translation>正向限位开关，再回到第一个 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Positive limit switch, then back to the first index pulse</source>
+        <translation>正向限位开关，再回到第一个索引脉冲</translation>
+    </message>
+    <message>
+        <source>Positive limit switch: its edge, backing off the switch</source>
+        <translation>正向限位开关：脱离开关时的边沿</translation>
+    </message>
+    <message>
+        <source>Positive overtravel switch (stops on its edge)</source>
+        <translation>正向超程开关（停在其边沿）</translation>
+    </message>
+    <message>
+        <source>Positive overtravel switch, then the Z pulse</source>
+        <translation>正向超程开关，再找 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Z pulse searched in the negative direction</source>
+        <translation>负向搜索 Z 相信号</translation>
+    </message>
+    <message>
+        <source>Z pulse searched in the positive direction</source>
+        <translation>正向搜索 Z 相信号</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3994,6 +4258,81 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::Ds402HomingBox</name>
+    <message>
+        <source>Method (6098h):</source>
+        <translation>方式（6098h）：</translation>
+    </message>
+    <message>
+        <source>Speed, search for switch (6099h:01):</source>
+        <translation>速度，搜索开关（6099h:01）：</translation>
+    </message>
+    <message>
+        <source>Speed, search for zero (6099h:02):</source>
+        <translation>速度，搜索零点（6099h:02）：</translation>
+    </message>
+    <message>
+        <source>Acceleration (609Ah):</source>
+        <translation>加减速度（609Ah）：</translation>
+    </message>
+    <message>
+        <source>Home offset (607Ch):</source>
+        <translation>原点偏移（607Ch）：</translation>
+    </message>
+    <message>
+        <source>Start homing…</source>
+        <translation>开始原点回零…</translation>
+    </message>
+    <message>
+        <source>Asks first. Then sets homing mode (6060h = 6), writes the values above, enables the drive and starts homing (6040h = 001Fh).</source>
+        <translation>先询问。然后设置原点回零模式（6060h = 6）、写入上方的值、使能驱动器并开始原点回零（6040h = 001Fh）。</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Halts the homing on the drive&apos;s ramp (6040h = 010Fh); the drive stays enabled.</source>
+        <translation>按驱动器的斜坡暂停原点回零（6040h = 010Fh）；驱动器保持使能。</translation>
+    </message>
+    <message>
+        <source>home found</source>
+        <translation>原点已找到</translation>
+    </message>
+    <message>
+        <source>Not started.</source>
+        <translation>尚未开始。</translation>
+    </message>
+    <message>
+        <source>The homing&apos;s motion shows here</source>
+        <translation>原点回零的运动显示在这里</translation>
+    </message>
+    <message>
+        <source>Type a method number (-128 to 127) or choose one.</source>
+        <translation>输入方式编号（-128 至 127）或从列表选择。</translation>
+    </message>
+    <message>
+        <source>Not a homing method of the %1 (it has %2): it would be refused.</source>
+        <translation>不是 %1 的回原点方式（它有 %2）：会被拒绝。</translation>
+    </message>
+    <message>
+        <source>Not a CiA 402-2 homing method; the drive&apos;s own manual may define it.</source>
+        <translation>不是 CiA 402-2 的回原点方式；驱动器自己的手册可能有定义。</translation>
+    </message>
+    <message>
+        <source>(The drive&apos;s dictionary is not known: CiA 402-2&apos;s methods are listed.)</source>
+        <translation>（不知道驱动器的字典：列出的是 CiA 402-2 的方式。）</translation>
+    </message>
+    <message>
+        <source>Starting: homing mode, values, enable…</source>
+        <translation>启动中：原点回零模式、数值、使能…</translation>
+    </message>
+    <message>
+        <source>%1 s: statusword %2, position %3, velocity %4</source>
+        <translation>%1 秒：状态字 %2，位置 %3，速度 %4</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
@@ -4045,6 +4384,81 @@ Bits on: %1</source>
     <message>
         <source>The test move&apos;s motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::Ds402PositionMoveBox</name>
+    <message>
+        <source>Relative (6040h bit 6)</source>
+        <translation>相对（6040h 位 6）</translation>
+    </message>
+    <message>
+        <source>Target (607Ah):</source>
+        <translation>目标（607Ah）：</translation>
+    </message>
+    <message>
+        <source>Profile velocity (6081h):</source>
+        <translation>轮廓速度（6081h）：</translation>
+    </message>
+    <message>
+        <source>Acceleration (6083h):</source>
+        <translation>轮廓加速度（6083h）：</translation>
+    </message>
+    <message>
+        <source>Deceleration (6084h):</source>
+        <translation>轮廓减速度（6084h）：</translation>
+    </message>
+    <message>
+        <source>Arm position move…</source>
+        <translation>准备位置移动…</translation>
+    </message>
+    <message>
+        <source>Hold to move</source>
+        <translation>按住移动</translation>
+    </message>
+    <message>
+        <source>The motor moves only while this button is held down; releasing it halts the motor (6040h bit 8).</source>
+        <translation>只有按住此按钮时电机才会移动；松开即暂停电机（6040h 位 8）。</translation>
+    </message>
+    <message>
+        <source>6040h bit 4: new set-point</source>
+        <translation>6040h 位 4：新设定点</translation>
+    </message>
+    <message>
+        <source>6041h bit 12: set-point acknowledge</source>
+        <translation>6041h 位 12：设定点确认</translation>
+    </message>
+    <message>
+        <source>6041h bit 10: target reached</source>
+        <translation>6041h 位 10：到达目标</translation>
+    </message>
+    <message>
+        <source>6041h bit 13: following error</source>
+        <translation>6041h 位 13：位置跟随超差</translation>
+    </message>
+    <message>
+        <source>The move&apos;s motion shows here</source>
+        <translation>移动的运动显示在这里</translation>
+    </message>
+    <message>
+        <source>move by %1 (relative, 607Ah = %2) at up to %3 (6081h)</source>
+        <translation>移动 %1（相对，607Ah = %2），速度最高 %3（6081h）</translation>
+    </message>
+    <message>
+        <source>move to position %1 (absolute, 607Ah = %2) at up to %3 (6081h)</source>
+        <translation>移动到位置 %1（绝对，607Ah = %2），速度最高 %3（6081h）</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 → %3</source>
+        <translation>%1（%2 → %3）</translation>
+    </message>
+    <message>
+        <source>Set-point handshake: %1 new set-point (bit 4 = 1) → %2 acknowledged (bit 12), bit 4 = 0 → %3 target reached (bit 10)</source>
+        <translation>设定点握手：%1 新设定点（位 4 = 1）→ %2 已确认（位 12），位 4 = 0 → %3 到达目标（位 10）</translation>
     </message>
 </context>
 <context>
@@ -4552,6 +4966,208 @@ Arm the test move?</source>
     <message>
         <source>the mode of operation changed</source>
         <translation>运行模式已更改</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>原点回零</translation>
+    </message>
+    <message>
+        <source>Position move</source>
+        <translation>位置移动</translation>
+    </message>
+    <message>
+        <source>The position move is no longer armed (%1): arm it again to move.</source>
+        <translation>位置移动已不再就绪（%1）：需再次准备才能移动。</translation>
+    </message>
+    <message>
+        <source>Test move limits: at most %1 per move, at most %2.</source>
+        <translation>测试运行限制：每次最多 %1，速度最高 %2。</translation>
+    </message>
+    <message>
+        <source>Software position limits (607Dh): %1 to %2.</source>
+        <translation>软件限位（607Dh）：%1 至 %2。</translation>
+    </message>
+    <message>
+        <source>No software position limits (607Dh) read.</source>
+        <translation>未读到软件限位（607Dh）。</translation>
+    </message>
+    <message>
+        <source>Type a homing method number (6098h) or choose one from the list.</source>
+        <translation>输入回原点方式编号（6098h）或从列表选择。</translation>
+    </message>
+    <message>
+        <source>Node %1 (%2) has no homing method %3: its methods are %4. Nothing was sent.</source>
+        <translation>节点 %1（%2）没有回原点方式 %3：它的方式为 %4。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The drive does not list Homing as supported (6502h): it cannot home.</source>
+        <translation>驱动器未列出支持原点回零（6502h）：无法回原点。</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; homing needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驱动器当前为 %1；原点回零需要 %2：要切换运行模式（6060h = %3）吗？</translation>
+    </message>
+    <message>
+        <source>Homing not started: the mode of operation stays %1.</source>
+        <translation>未开始原点回零：运行模式保持 %1。</translation>
+    </message>
+    <message>
+        <source>not a CiA 402-2 method</source>
+        <translation>不是 CiA 402-2 的方式</translation>
+    </message>
+    <message>
+        <source>The drive is enabled first (Operation enabled): the motor gets power.
+
+</source>
+        <translation>会先使能驱动器（Operation enabled）：电机将通电。
+
+</translation>
+    </message>
+    <message>
+        <source>Node %1 will home with method %2: %3.
+
+%4The axis may travel to a limit switch, the home switch or an end stop: make sure it is free to move. Stop halts it at any time.
+
+Start homing?</source>
+        <translation>节点 %1 将以方式 %2 回原点：%3。
+
+%4轴可能移动到限位开关、原点开关或机械极限位：请确认它可以自由移动。随时可按“停止”暂停。
+
+开始原点回零？</translation>
+    </message>
+    <message>
+        <source>Homing was not confirmed; nothing was sent.</source>
+        <translation>未确认原点回零；未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>homing started</source>
+        <translation>已开始原点回零</translation>
+    </message>
+    <message>
+        <source>Homing node %1 with method %2…</source>
+        <translation>节点 %1 以方式 %2 回原点中…</translation>
+    </message>
+    <message>
+        <source>Stopping the homing: halt (6040h = 010Fh)…</source>
+        <translation>正在停止原点回零：暂停（6040h = 010Fh）…</translation>
+    </message>
+    <message>
+        <source>Stop pressed</source>
+        <translation>已按下“停止”</translation>
+    </message>
+    <message>
+        <source>not read (%1)</source>
+        <translation>未读取（%1）</translation>
+    </message>
+    <message>
+        <source>Homing attained (statusword %1): position actual 6064h = %2. The drive stays enabled.</source>
+        <translation>原点回零完成（状态字 %1）：实际位置 6064h = %2。驱动器保持使能。</translation>
+    </message>
+    <message>
+        <source>Homing stopped (%1) before home was set.</source>
+        <translation>原点回零在设定原点前已停止（%1）。</translation>
+    </message>
+    <message>
+        <source>Homing failed: %1</source>
+        <translation>原点回零失败：%1</translation>
+    </message>
+    <message>
+        <source>Enable the drive first (Operation enabled), then arm the position move.</source>
+        <translation>请先让驱动器使能（Operation enabled），再准备位置移动。</translation>
+    </message>
+    <message>
+        <source>Set a profile velocity (6081h) above 0.</source>
+        <translation>请设置大于 0 的轮廓速度（6081h）。</translation>
+    </message>
+    <message>
+        <source>The profile velocity is above the test move&apos;s limit of %1.</source>
+        <translation>轮廓速度超过测试运行的限制 %1。</translation>
+    </message>
+    <message>
+        <source>The drive does not list Profile position as supported (6502h): no position move.</source>
+        <translation>驱动器未列出支持轮廓位置模式（6502h）：无法位置移动。</translation>
+    </message>
+    <message>
+        <source>Reading the position (6064h) and the software limits (607Dh)…</source>
+        <translation>正在读取位置（6064h）和软件限位（607Dh）…</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the position 6064h could not be read (%1).</source>
+        <translation>位置移动未就绪：无法读取位置 6064h（%1）。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the drive is no longer in Operation enabled.</source>
+        <translation>位置移动未就绪：驱动器已不在 Operation enabled。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: %1 from the position now is more than the test move&apos;s limit of %2.</source>
+        <translation>位置移动未就绪：距当前位置 %1，超过测试运行的限制 %2。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: it would end at %1, outside the software position limits 607Dh (%2 to %3).</source>
+        <translation>位置移动未就绪：会停在 %1，超出软件限位 607Dh（%2 至 %3）。</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; the position move needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驱动器当前为 %1；位置移动需要 %2：要切换运行模式（6060h = %3）吗？</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the mode of operation stays %1.</source>
+        <translation>位置移动未就绪：运行模式保持 %1。</translation>
+    </message>
+    <message>
+        <source>While you hold “Hold to move”, the motor of node %1 will %2.
+Releasing the button halts it. Make sure the axis is free to move.
+
+Arm the position move?</source>
+        <translation>按住“按住移动”期间，节点 %1 的电机将%2。
+松开按钮即暂停。请确认轴可以自由移动。
+
+准备位置移动？</translation>
+    </message>
+    <message>
+        <source>Position move not armed.</source>
+        <translation>位置移动未就绪。</translation>
+    </message>
+    <message>
+        <source>Position move armed: hold the “Hold to move” button to move, release it to halt.</source>
+        <translation>位置移动已就绪：按住“按住移动”按钮即移动，松开即暂停。</translation>
+    </message>
+    <message>
+        <source>Arm the position move first.</source>
+        <translation>请先准备位置移动。</translation>
+    </message>
+    <message>
+        <source>the move was changed after arming</source>
+        <translation>准备后移动设置已更改</translation>
+    </message>
+    <message>
+        <source>The position move was changed after it was armed: arm it again.</source>
+        <translation>位置移动在准备后已更改：请再次准备。</translation>
+    </message>
+    <message>
+        <source>The move would end outside the software position limits 607Dh: not started.</source>
+        <translation>移动会停在软件限位 607Dh 之外：未开始。</translation>
+    </message>
+    <message>
+        <source>Halted before the target (%1): position actual 6064h = %2, target %3. The drive stays enabled.</source>
+        <translation>在到达目标前暂停（%1）：实际位置 6064h = %2，目标 %3。驱动器保持使能。</translation>
+    </message>
+    <message>
+        <source>Target reached (statusword %1): position actual 6064h = %2.</source>
+        <translation>已到达目标（状态字 %1）：实际位置 6064h = %2。</translation>
+    </message>
+    <message>
+        <source>the position move failed</source>
+        <translation>位置移动失败</translation>
+    </message>
+    <message>
+        <source>Position move stopped (%1).</source>
+        <translation>位置移动已停止（%1）。</translation>
+    </message>
+    <message>
+        <source>Position move failed: %1</source>
+        <translation>位置移动失败：%1</translation>
     </message>
 </context>
 <context>

@@ -2755,6 +2755,270 @@
         <source>FEh (event, manufacturer)</source>
         <translation>FEh（事件觸發，製造商定義）</translation>
     </message>
+    <message>
+        <source>Current position is home (no movement)</source>
+        <translation>目前位置即為原點（不移動）</translation>
+    </message>
+    <message>
+        <source>Current position is home (no movement; the default)</source>
+        <translation>目前位置即為原點（不移動；預設）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the negative direction (stops on its edge)</source>
+        <translation>負方向搜尋原點開關（停在其邊緣）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the negative direction, then the Z pulse</source>
+        <translation>負方向搜尋原點開關，再找 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the positive direction (stops on its edge)</source>
+        <translation>正方向搜尋原點開關（停在其邊緣）</translation>
+    </message>
+    <message>
+        <source>Home switch searched in the positive direction, then the Z pulse</source>
+        <translation>正方向搜尋原點開關，再找 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: Z pulse above the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: Z pulse below the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: index pulse above the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: index pulse below the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from above</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from above (the same as 29, Delta manual §4.6)</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：其邊緣，從上方到達（與 29 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), lower edge: its edge, reached from below</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），下緣：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: Z pulse above the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: Z pulse below the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: index pulse above the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: index pulse below the edge</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from above</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from above (the same as 27, Delta manual §4.6)</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：其邊緣，從上方到達（與 27 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, negative start (negative limit switch reverses), upper edge: its edge, reached from below</source>
+        <translation>原點開關，負方向起始（負方向極限開關反向），上緣：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: Z pulse above the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: Z pulse below the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: index pulse above the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: index pulse below the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from above</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from below</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), lower edge: its edge, reached from below (the same as 23, Delta manual §4.6)</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），下緣：其邊緣，從下方到達（與 23 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: Z pulse above the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: Z pulse below the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: index pulse above the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: index pulse below the edge</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from above</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from below</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Home switch, positive start (positive limit switch reverses), upper edge: its edge, reached from below (the same as 25, Delta manual §4.6)</source>
+        <translation>原點開關，正方向起始（正方向極限開關反向），上緣：其邊緣，從下方到達（與 25 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Mechanical end stop in the negative direction, at low speed with the homing torque limit H05-58</source>
+        <translation>負方向低速搜尋機械極限位置，扭矩限制為原點復歸扭矩限制 H05-58</translation>
+    </message>
+    <message>
+        <source>Mechanical end stop in the positive direction, at low speed with the homing torque limit H05-58</source>
+        <translation>正方向低速搜尋機械極限位置，扭矩限制為原點復歸扭矩限制 H05-58</translation>
+    </message>
+    <message>
+        <source>Negative home switch: Z pulse above the edge</source>
+        <translation>負方向原點開關：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Negative home switch: Z pulse below the edge</source>
+        <translation>負方向原點開關：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Negative home switch: index pulse above the edge</source>
+        <translation>負方向原點開關：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Negative home switch: index pulse below the edge</source>
+        <translation>負方向原點開關：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from above</source>
+        <translation>負方向原點開關：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from above (the same as 21, Delta manual §4.6)</source>
+        <translation>負方向原點開關：其邊緣，從上方到達（與 21 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Negative home switch: its edge, reached from below</source>
+        <translation>負方向原點開關：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Negative limit switch, then back to the first Z pulse</source>
+        <translation>負方向極限開關，再回到第一個 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Negative limit switch, then back to the first index pulse</source>
+        <translation>負方向極限開關，再回到第一個索引脈波</translation>
+    </message>
+    <message>
+        <source>Negative limit switch: its edge, backing off the switch</source>
+        <translation>負方向極限開關：離開開關時的邊緣</translation>
+    </message>
+    <message>
+        <source>Negative overtravel switch (stops on its edge)</source>
+        <translation>反向超程開關（停在其邊緣）</translation>
+    </message>
+    <message>
+        <source>Negative overtravel switch, then the Z pulse</source>
+        <translation>反向超程開關，再找 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Next Z pulse in the negative direction</source>
+        <translation>負方向的下一個 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Next Z pulse in the positive direction</source>
+        <translation>正方向的下一個 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Next index pulse in the negative direction</source>
+        <translation>負方向的下一個索引脈波</translation>
+    </message>
+    <message>
+        <source>Next index pulse in the positive direction</source>
+        <translation>正方向的下一個索引脈波</translation>
+    </message>
+    <message>
+        <source>Positive home switch: Z pulse above the edge</source>
+        <translation>正方向原點開關：邊緣上方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Positive home switch: Z pulse below the edge</source>
+        <translation>正方向原點開關：邊緣下方的 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Positive home switch: index pulse above the edge</source>
+        <translation>正方向原點開關：邊緣上方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Positive home switch: index pulse below the edge</source>
+        <translation>正方向原點開關：邊緣下方的索引脈波</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from above</source>
+        <translation>正方向原點開關：其邊緣，從上方到達</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from below</source>
+        <translation>正方向原點開關：其邊緣，從下方到達</translation>
+    </message>
+    <message>
+        <source>Positive home switch: its edge, reached from below (the same as 19, Delta manual §4.6)</source>
+        <translation>正方向原點開關：其邊緣，從下方到達（與 19 相同，台達手冊 §4.6）</translation>
+    </message>
+    <message>
+        <source>Positive limit switch, then back to the first Z pulse</source>
+        <translation>正方向極限開關，再回到第一個 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Positive limit switch, then back to the first index pulse</source>
+        <translation>正方向極限開關，再回到第一個索引脈波</translation>
+    </message>
+    <message>
+        <source>Positive limit switch: its edge, backing off the switch</source>
+        <translation>正方向極限開關：離開開關時的邊緣</translation>
+    </message>
+    <message>
+        <source>Positive overtravel switch (stops on its edge)</source>
+        <translation>正向超程開關（停在其邊緣）</translation>
+    </message>
+    <message>
+        <source>Positive overtravel switch, then the Z pulse</source>
+        <translation>正向超程開關，再找 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Z pulse searched in the negative direction</source>
+        <translation>負方向搜尋 Z 脈波</translation>
+    </message>
+    <message>
+        <source>Z pulse searched in the positive direction</source>
+        <translation>正方向搜尋 Z 脈波</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3994,6 +4258,81 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::Ds402HomingBox</name>
+    <message>
+        <source>Method (6098h):</source>
+        <translation>方式（6098h）：</translation>
+    </message>
+    <message>
+        <source>Speed, search for switch (6099h:01):</source>
+        <translation>速度，搜尋開關（6099h:01）：</translation>
+    </message>
+    <message>
+        <source>Speed, search for zero (6099h:02):</source>
+        <translation>速度，搜尋零點（6099h:02）：</translation>
+    </message>
+    <message>
+        <source>Acceleration (609Ah):</source>
+        <translation>加減速度（609Ah）：</translation>
+    </message>
+    <message>
+        <source>Home offset (607Ch):</source>
+        <translation>原點偏移（607Ch）：</translation>
+    </message>
+    <message>
+        <source>Start homing…</source>
+        <translation>開始原點復歸…</translation>
+    </message>
+    <message>
+        <source>Asks first. Then sets homing mode (6060h = 6), writes the values above, enables the drive and starts homing (6040h = 001Fh).</source>
+        <translation>先詢問。接著設定原點復歸模式（6060h = 6）、寫入上方的值、讓驅動器致能並開始原點復歸（6040h = 001Fh）。</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Halts the homing on the drive&apos;s ramp (6040h = 010Fh); the drive stays enabled.</source>
+        <translation>依驅動器的斜坡暫停原點復歸（6040h = 010Fh）；驅動器保持致能。</translation>
+    </message>
+    <message>
+        <source>home found</source>
+        <translation>已找到原點</translation>
+    </message>
+    <message>
+        <source>Not started.</source>
+        <translation>尚未開始。</translation>
+    </message>
+    <message>
+        <source>The homing&apos;s motion shows here</source>
+        <translation>原點復歸的運動顯示於此</translation>
+    </message>
+    <message>
+        <source>Type a method number (-128 to 127) or choose one.</source>
+        <translation>輸入方式編號（-128 至 127）或從清單選擇。</translation>
+    </message>
+    <message>
+        <source>Not a homing method of the %1 (it has %2): it would be refused.</source>
+        <translation>不是 %1 的原點復歸方式（它有 %2）：會被拒絕。</translation>
+    </message>
+    <message>
+        <source>Not a CiA 402-2 homing method; the drive&apos;s own manual may define it.</source>
+        <translation>不是 CiA 402-2 的原點復歸方式；驅動器自己的手冊可能有定義。</translation>
+    </message>
+    <message>
+        <source>(The drive&apos;s dictionary is not known: CiA 402-2&apos;s methods are listed.)</source>
+        <translation>（不知道驅動器的字典：列出的是 CiA 402-2 的方式。）</translation>
+    </message>
+    <message>
+        <source>Starting: homing mode, values, enable…</source>
+        <translation>啟動中：原點復歸模式、數值、致能…</translation>
+    </message>
+    <message>
+        <source>%1 s: statusword %2, position %3, velocity %4</source>
+        <translation>%1 秒：狀態字元 %2，位置 %3，速度 %4</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::Ds402ModeBox</name>
     <message>
         <source>Mode of operation (6060h / 6061h)</source>
@@ -4045,6 +4384,81 @@ Bits on: %1</source>
     <message>
         <source>The test move&apos;s motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::Ds402PositionMoveBox</name>
+    <message>
+        <source>Relative (6040h bit 6)</source>
+        <translation>相對（6040h 位元 6）</translation>
+    </message>
+    <message>
+        <source>Target (607Ah):</source>
+        <translation>目標（607Ah）：</translation>
+    </message>
+    <message>
+        <source>Profile velocity (6081h):</source>
+        <translation>輪廓速度（6081h）：</translation>
+    </message>
+    <message>
+        <source>Acceleration (6083h):</source>
+        <translation>輪廓加速度（6083h）：</translation>
+    </message>
+    <message>
+        <source>Deceleration (6084h):</source>
+        <translation>輪廓減速度（6084h）：</translation>
+    </message>
+    <message>
+        <source>Arm position move…</source>
+        <translation>準備位置移動…</translation>
+    </message>
+    <message>
+        <source>Hold to move</source>
+        <translation>按住移動</translation>
+    </message>
+    <message>
+        <source>The motor moves only while this button is held down; releasing it halts the motor (6040h bit 8).</source>
+        <translation>只有按住此按鈕時馬達才會移動；放開即暫停馬達（6040h 位元 8）。</translation>
+    </message>
+    <message>
+        <source>6040h bit 4: new set-point</source>
+        <translation>6040h 位元 4：新設定點</translation>
+    </message>
+    <message>
+        <source>6041h bit 12: set-point acknowledge</source>
+        <translation>6041h 位元 12：設定點確認</translation>
+    </message>
+    <message>
+        <source>6041h bit 10: target reached</source>
+        <translation>6041h 位元 10：到達目標</translation>
+    </message>
+    <message>
+        <source>6041h bit 13: following error</source>
+        <translation>6041h 位元 13：追隨誤差</translation>
+    </message>
+    <message>
+        <source>The move&apos;s motion shows here</source>
+        <translation>移動的運動顯示於此</translation>
+    </message>
+    <message>
+        <source>move by %1 (relative, 607Ah = %2) at up to %3 (6081h)</source>
+        <translation>移動 %1（相對，607Ah = %2），速度最高 %3（6081h）</translation>
+    </message>
+    <message>
+        <source>move to position %1 (absolute, 607Ah = %2) at up to %3 (6081h)</source>
+        <translation>移動到位置 %1（絕對，607Ah = %2），速度最高 %3（6081h）</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 of %2 → %3</source>
+        <translation>%1（%2 → %3）</translation>
+    </message>
+    <message>
+        <source>Set-point handshake: %1 new set-point (bit 4 = 1) → %2 acknowledged (bit 12), bit 4 = 0 → %3 target reached (bit 10)</source>
+        <translation>設定點交握：%1 新設定點（位元 4 = 1）→ %2 已確認（位元 12），位元 4 = 0 → %3 到達目標（位元 10）</translation>
     </message>
 </context>
 <context>
@@ -4552,6 +4966,208 @@ Arm the test move?</source>
     <message>
         <source>the mode of operation changed</source>
         <translation>操作模式已變更</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>原點復歸</translation>
+    </message>
+    <message>
+        <source>Position move</source>
+        <translation>位置移動</translation>
+    </message>
+    <message>
+        <source>The position move is no longer armed (%1): arm it again to move.</source>
+        <translation>位置移動已不再就緒（%1）：需再次準備才能移動。</translation>
+    </message>
+    <message>
+        <source>Test move limits: at most %1 per move, at most %2.</source>
+        <translation>測試運轉限制：每次最多 %1，速度最高 %2。</translation>
+    </message>
+    <message>
+        <source>Software position limits (607Dh): %1 to %2.</source>
+        <translation>軟體限位（607Dh）：%1 至 %2。</translation>
+    </message>
+    <message>
+        <source>No software position limits (607Dh) read.</source>
+        <translation>未讀到軟體限位（607Dh）。</translation>
+    </message>
+    <message>
+        <source>Type a homing method number (6098h) or choose one from the list.</source>
+        <translation>輸入原點復歸方式編號（6098h）或從清單選擇。</translation>
+    </message>
+    <message>
+        <source>Node %1 (%2) has no homing method %3: its methods are %4. Nothing was sent.</source>
+        <translation>節點 %1（%2）沒有原點復歸方式 %3：它的方式為 %4。未發送任何內容。</translation>
+    </message>
+    <message>
+        <source>The drive does not list Homing as supported (6502h): it cannot home.</source>
+        <translation>驅動器未列出支援原點復歸（6502h）：無法原點復歸。</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; homing needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驅動器目前為 %1；原點復歸需要 %2：要切換操作模式（6060h = %3）嗎？</translation>
+    </message>
+    <message>
+        <source>Homing not started: the mode of operation stays %1.</source>
+        <translation>未開始原點復歸：操作模式維持 %1。</translation>
+    </message>
+    <message>
+        <source>not a CiA 402-2 method</source>
+        <translation>不是 CiA 402-2 的方式</translation>
+    </message>
+    <message>
+        <source>The drive is enabled first (Operation enabled): the motor gets power.
+
+</source>
+        <translation>會先讓驅動器致能（Operation enabled）：馬達將通電。
+
+</translation>
+    </message>
+    <message>
+        <source>Node %1 will home with method %2: %3.
+
+%4The axis may travel to a limit switch, the home switch or an end stop: make sure it is free to move. Stop halts it at any time.
+
+Start homing?</source>
+        <translation>節點 %1 將以方式 %2 進行原點復歸：%3。
+
+%4軸可能移動到極限開關、原點開關或機械極限：請確認它可以自由移動。隨時可按「停止」暫停。
+
+開始原點復歸？</translation>
+    </message>
+    <message>
+        <source>Homing was not confirmed; nothing was sent.</source>
+        <translation>未確認原點復歸；未發送任何內容。</translation>
+    </message>
+    <message>
+        <source>homing started</source>
+        <translation>已開始原點復歸</translation>
+    </message>
+    <message>
+        <source>Homing node %1 with method %2…</source>
+        <translation>節點 %1 以方式 %2 原點復歸中…</translation>
+    </message>
+    <message>
+        <source>Stopping the homing: halt (6040h = 010Fh)…</source>
+        <translation>正在停止原點復歸：暫停（6040h = 010Fh）…</translation>
+    </message>
+    <message>
+        <source>Stop pressed</source>
+        <translation>已按下「停止」</translation>
+    </message>
+    <message>
+        <source>not read (%1)</source>
+        <translation>未讀取（%1）</translation>
+    </message>
+    <message>
+        <source>Homing attained (statusword %1): position actual 6064h = %2. The drive stays enabled.</source>
+        <translation>原點復歸完成（狀態字元 %1）：實際位置 6064h = %2。驅動器保持致能。</translation>
+    </message>
+    <message>
+        <source>Homing stopped (%1) before home was set.</source>
+        <translation>原點復歸在設定原點前已停止（%1）。</translation>
+    </message>
+    <message>
+        <source>Homing failed: %1</source>
+        <translation>原點復歸失敗：%1</translation>
+    </message>
+    <message>
+        <source>Enable the drive first (Operation enabled), then arm the position move.</source>
+        <translation>請先讓驅動器致能（Operation enabled），再準備位置移動。</translation>
+    </message>
+    <message>
+        <source>Set a profile velocity (6081h) above 0.</source>
+        <translation>請設定大於 0 的輪廓速度（6081h）。</translation>
+    </message>
+    <message>
+        <source>The profile velocity is above the test move&apos;s limit of %1.</source>
+        <translation>輪廓速度超過測試運轉的限制 %1。</translation>
+    </message>
+    <message>
+        <source>The drive does not list Profile position as supported (6502h): no position move.</source>
+        <translation>驅動器未列出支援輪廓位置模式（6502h）：無法位置移動。</translation>
+    </message>
+    <message>
+        <source>Reading the position (6064h) and the software limits (607Dh)…</source>
+        <translation>正在讀取位置（6064h）與軟體限位（607Dh）…</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the position 6064h could not be read (%1).</source>
+        <translation>位置移動未就緒：無法讀取位置 6064h（%1）。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the drive is no longer in Operation enabled.</source>
+        <translation>位置移動未就緒：驅動器已不在 Operation enabled。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: %1 from the position now is more than the test move&apos;s limit of %2.</source>
+        <translation>位置移動未就緒：距目前位置 %1，超過測試運轉的限制 %2。</translation>
+    </message>
+    <message>
+        <source>Position move not armed: it would end at %1, outside the software position limits 607Dh (%2 to %3).</source>
+        <translation>位置移動未就緒：會停在 %1，超出軟體限位 607Dh（%2 至 %3）。</translation>
+    </message>
+    <message>
+        <source>The drive is in %1; the position move needs %2: switch the mode of operation (6060h = %3)?</source>
+        <translation>驅動器目前為 %1；位置移動需要 %2：要切換操作模式（6060h = %3）嗎？</translation>
+    </message>
+    <message>
+        <source>Position move not armed: the mode of operation stays %1.</source>
+        <translation>位置移動未就緒：操作模式維持 %1。</translation>
+    </message>
+    <message>
+        <source>While you hold “Hold to move”, the motor of node %1 will %2.
+Releasing the button halts it. Make sure the axis is free to move.
+
+Arm the position move?</source>
+        <translation>按住「按住移動」期間，節點 %1 的馬達將%2。
+放開按鈕即暫停。請確認軸可以自由移動。
+
+準備位置移動？</translation>
+    </message>
+    <message>
+        <source>Position move not armed.</source>
+        <translation>位置移動未就緒。</translation>
+    </message>
+    <message>
+        <source>Position move armed: hold the “Hold to move” button to move, release it to halt.</source>
+        <translation>位置移動已就緒：按住「按住移動」按鈕即移動，放開即暫停。</translation>
+    </message>
+    <message>
+        <source>Arm the position move first.</source>
+        <translation>請先準備位置移動。</translation>
+    </message>
+    <message>
+        <source>the move was changed after arming</source>
+        <translation>準備後移動設定已變更</translation>
+    </message>
+    <message>
+        <source>The position move was changed after it was armed: arm it again.</source>
+        <translation>位置移動在準備後已變更：請再次準備。</translation>
+    </message>
+    <message>
+        <source>The move would end outside the software position limits 607Dh: not started.</source>
+        <translation>移動會停在軟體限位 607Dh 之外：未開始。</translation>
+    </message>
+    <message>
+        <source>Halted before the target (%1): position actual 6064h = %2, target %3. The drive stays enabled.</source>
+        <translation>在到達目標前暫停（%1）：實際位置 6064h = %2，目標 %3。驅動器保持致能。</translation>
+    </message>
+    <message>
+        <source>Target reached (statusword %1): position actual 6064h = %2.</source>
+        <translation>已到達目標（狀態字元 %1）：實際位置 6064h = %2。</translation>
+    </message>
+    <message>
+        <source>the position move failed</source>
+        <translation>位置移動失敗</translation>
+    </message>
+    <message>
+        <source>Position move stopped (%1).</source>
+        <translation>位置移動已停止（%1）。</translation>
+    </message>
+    <message>
+        <source>Position move failed: %1</source>
+        <translation>位置移動失敗：%1</translation>
     </message>
 </context>
 <context>

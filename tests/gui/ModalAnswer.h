@@ -69,11 +69,11 @@ inline std::unique_ptr<ModalAnswerer> answerBox(QMessageBox::StandardButton butt
 
 // Clicks `button` in the next message box whose text holds `says`; its text goes to `*asked`.
 // Boxes that say something else are left to other answerers.
-inline std::unique_ptr<ModalAnswerer> answerBoxSaying(const QString& says, QMessageBox::StandardButton button, QString* asked) {
+inline std::unique_ptr<ModalAnswerer> answerBoxSaying(const QString& says, QMessageBox::StandardButton button, QString* asked = nullptr) {
     return std::make_unique<ModalAnswerer>([=](QWidget* w) {
         auto* box = qobject_cast<QMessageBox*>(w);
         if (!box || !box->text().contains(says) || !box->button(button)) return false;
-        *asked = box->text();
+        if (asked) *asked = box->text();
         QTest::mouseClick(box->button(button), Qt::LeftButton);
         return true;
     });

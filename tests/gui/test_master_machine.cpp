@@ -9,6 +9,7 @@
 // with node 3 enabled asks, and the Disable voltage frame is in the capture journal.
 #include "app/gui/MainWindow.h"
 #include "app/gui/master/MasterActions.h"
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
 #include "app/gui/master/TransmitModel.h"
@@ -16,6 +17,8 @@
 #include "app/gui/plot/PlotDock.h"
 #include "app/gui/plot/PlotView.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/ds402/Ds402HomingBox.h"
+#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
 #include "core/logio/PcapLog.h"
 #include "core/sim/Ds402Drive.h"
@@ -35,6 +38,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QToolBar>
 #include <QtTest>
 
@@ -53,6 +59,7 @@ using namespace coscope::gui;
 using canopen::ds402::Command;
 using canopen::ds402::State;
 using coscope::testing::answerBox;
+using coscope::testing::answerBoxSaying;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
@@ -82,6 +89,18 @@ double median(std::vector<double> v) {
 }
 
 void click(QWidget* w) { QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center()); }
+
+// Clicks the tab titled `title` of `tabs`; false when there is none.
+bool clickTab(QTabWidget* tabs, const QString& title) {
+    QTabBar* bar = tabs->tabBar();
+    for (int i = 0; i < bar->count(); ++i)
+        if (bar->tabText(i) == title) {
+            QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
+            return true;
+        }
+    return false;
+}
+QLineEdit* editOf(QWidget* field) { return field->findChild<QLineEdit*>(); }
 
 // The SDO download of 6040h = 0000h (Disable voltage) to node 3 (CiA 301 §7.2.4.3.3, expedited).
 bool isDisableVoltage(const CanFrame& f) {
@@ -272,6 +291,51 @@ class TestMasterMachine : public QObject {
         return stepTo(Command::EnableOperation, State::OperationEnabled) ? wiz : nullptr;
     }
 
+    // The wizard's Homing page: method 35 (the current position is home, CiA 402-2 §13) with
+    // home offset 0; Start asks to switch to Homing and to start; "homing attained".
+    void homeNode3(Ds402Wizard* wiz) {
+        QVERIFY(clickTab(wiz->pages(), QStringLiteral("Homing")));
+        Ds402HomingBox* page = wiz->homingBox();
+        QVERIFY(waitFor([&] { return page->isVisible(); }, 3000));
+        typeAndEnter(page->methodCombo()->lineEdit(), QStringLiteral("35"));
+        typeAndEnter(editOf(page->offsetField()), QStringLiteral("0"));
+        auto yesMode = answerBoxSaying(QStringLiteral("homing needs"), QMessageBox::Yes);
+        auto yesStart = answerBoxSaying(QStringLiteral("Start homing?"), QMessageBox::Yes);
+        QSignalSpy finished(wiz, &Ds402Wizard::homingFinished);
+        click(page->startButton());
+        QVERIFY2(waitFor([&] { return !finished.isEmpty(); }, 10000), qPrintable(wiz->message()));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(page->resultText()));
+        QVERIFY2(page->resultText().contains(QStringLiteral("Homing attained")), qPrintable(page->resultText()));
+        QVERIFY(std::abs(onDrive(3, [](sim::Ds402Drive* d) { return d->position(); })) < 1.0);
+    }
+
+    // The wizard's Position move page: relative 1000, armed (two questions), held to the end.
+    void moveNode3(Ds402Wizard* wiz) {
+        QVERIFY(clickTab(wiz->pages(), QStringLiteral("Position move")));
+        Ds402PositionMoveBox* page = wiz->positionBox();
+        QVERIFY(waitFor([&] { return page->isVisible(); }, 3000));
+        QVERIFY(page->relativeBox()->isChecked());
+        typeAndEnter(editOf(page->targetField()), QStringLiteral("1000"));
+        typeAndEnter(editOf(page->velocityField()), QStringLiteral("1000"));
+        QVERIFY(waitFor([&] { return wiz->shownState() == State::OperationEnabled && !wiz->isBusy(); }, 5000));
+        {
+            auto yesMode = answerBoxSaying(QStringLiteral("position move needs"), QMessageBox::Yes);
+            auto yesArm = answerBoxSaying(QStringLiteral("Arm the position move?"), QMessageBox::Yes);
+            click(page->armButton());
+            QVERIFY2(waitFor([&] { return page->holdButton()->isEnabled(); }, 5000), qPrintable(wiz->message()));
+        }
+        const double start = onDrive(3, [](sim::Ds402Drive* d) { return d->position(); });
+        QSignalSpy finished(wiz, &Ds402Wizard::positionMoveFinished);
+        QTest::mousePress(page->holdButton(), Qt::LeftButton);
+        const bool done = waitFor([&] { return !finished.isEmpty(); }, 8000);
+        QTest::mouseRelease(page->holdButton(), Qt::LeftButton);
+        QVERIFY2(done, qPrintable(wiz->message()));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(page->resultText()));
+        const double end = onDrive(3, [](sim::Ds402Drive* d) { return d->position(); });
+        QVERIFY2(std::abs(end - (start + 1000)) <= 2, qPrintable(QString::number(end)));
+        QCOMPARE(driveState(3), State::OperationEnabled);
+    }
+
 private slots:
     void initTestCase() {
         QCoreApplication::setOrganizationName(QStringLiteral("CoScopeTest"));
@@ -297,6 +361,10 @@ private slots:
         if (QTest::currentTestFailed()) return;
         Ds402Wizard* wiz = enableNode3InWizard();
         QVERIFY(wiz);
+        homeNode3(wiz);
+        if (QTest::currentTestFailed()) return;
+        moveNode3(wiz);
+        if (QTest::currentTestFailed()) return;
 
         // Ctrl+Q with drives enabled: "save first?" (Discard), then the question naming node 3;
         // Disable and quit: the Disable voltage frame is in the journal, the drive disabled.
