@@ -130,12 +130,16 @@ private slots:
         Ds402Wizard wiz(&w, 3);
         wiz.show();
         QVERIFY(QTest::qWaitForWindowExposed(&wiz));
-        auto* tabs = wiz.findChild<QTabWidget*>();
-        QVERIFY(tabs);
+        // The wizard has two tab sets (frames / dry run, and its pages): the one with Dry run.
+        QTabWidget* tabs = nullptr;
         int dry = -1;
-        for (int i = 0; i < tabs->count(); ++i)
-            if (tabs->tabText(i).startsWith(QStringLiteral("Dry run"))) dry = i;
-        QVERIFY(dry >= 0);
+        for (QTabWidget* t : wiz.findChildren<QTabWidget*>())
+            for (int i = 0; i < t->count(); ++i)
+                if (t->tabText(i).startsWith(QStringLiteral("Dry run"))) {
+                    tabs = t;
+                    dry = i;
+                }
+        QVERIFY(tabs && dry >= 0);
         QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, {}, tabs->tabBar()->tabRect(dry).center());
         QTRY_COMPARE(tabs->currentIndex(), dry);
         int visible = 0;
