@@ -198,12 +198,14 @@ void HeartbeatMonitor::onCheck() {
             else if (w.shown.status == Status::Ok && w.periodNs && now - since > w.periodNs * 3 / 2) setStatus(node, w, Status::Late);
             continue;
         }
-        // A request sent before the last one and still unanswered: missed (a guarding error).
+        // A request sent two before the last one and still unanswered: missed (a guarding
+        // error). The requests go out on the sender thread while the answers are read here, so
+        // the one before the last may be answered in a frame this thread has not read yet.
         const uint64_t sent = w.requests->load(std::memory_order_acquire);
         int missed = 0;
-        if (sent > w.answeredUpTo + 1) {
-            missed = static_cast<int>(sent - w.answeredUpTo - 1);
-            w.answeredUpTo = sent - 1;
+        if (sent > w.answeredUpTo + 2) {
+            missed = static_cast<int>(sent - w.answeredUpTo - 2);
+            w.answeredUpTo = sent - 2;
             if (!w.errorReported) emit guardingError(node, QStringLiteral("node %1: no answer to a node guarding request within the guard time %2 ms").arg(node).arg(w.shown.guardTimeMs));
             w.errorReported = true;
         }

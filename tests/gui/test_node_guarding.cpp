@@ -137,7 +137,9 @@ private slots:
             if (f.isTx() && f.isRemote()) requests.push_back(f.timestampNs);
             else if (!f.isTx() && !f.isRemote() && f.len == 1) answers.push_back(f.data[0]);
         }
-        QVERIFY2(requests.size() >= 8 && requests.size() <= 13, qPrintable(QString::number(requests.size())));
+        // At least 8 in the second waited (more when a loaded machine waited longer); their
+        // rate is checked by the mean interval below.
+        QVERIFY2(requests.size() >= 8, qPrintable(QString::number(requests.size())));
         const int64_t spanMs = (requests.back() - requests.front()) / 1'000'000;
         QVERIFY2(spanMs / int64_t(requests.size() - 1) >= 80 && spanMs / int64_t(requests.size() - 1) <= 130, qPrintable(QString::number(spanMs)));
         QVERIFY(answers.size() + 1 >= requests.size());

@@ -210,7 +210,10 @@ private slots:
         }
         if (const QString grab = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !grab.isEmpty()) cp->savePng(grab + QStringLiteral("/plot_words.png"));
 
-        // The legend is inside the plot, clear of the value axis and its tick marks.
+        // The legend is inside the plot, clear of the value axis and its tick marks (the axis
+        // rect and axis of now: adding a signal rebuilt them).
+        rect = cp->axisRect(0);
+        y = rect->axis(QCPAxis::atLeft);
         QVERIFY(cp->legend && cp->legend->visible());
         QVERIFY2(cp->legend->outerRect().left() >= rect->left() + y->tickLengthIn() + 2,
                  qPrintable(QStringLiteral("legend at %1, axis at %2").arg(cp->legend->outerRect().left()).arg(rect->left())));
