@@ -52,6 +52,7 @@
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/TypeText.h"
+#include "tests/gui/TxFrames.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -65,28 +66,12 @@ using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
 using coscope::testing::signalItem;
 using coscope::testing::typeAndEnter;
+using coscope::testing::median;
+using coscope::testing::txIntervalsMs;
 using coscope::testing::waitFor;
 
 namespace {
 constexpr int kPatienceMs = 30000;
-
-// The intervals (ms) between the frames we sent with identifier `id`, from frame `from` on.
-std::vector<double> txIntervalsMs(const TraceStore& store, uint32_t id, size_t from = 0) {
-    std::vector<double> out;
-    int64_t last = 0;
-    for (size_t n = from; n < store.size(); ++n) {
-        const CanFrame f = store.frame(static_cast<FrameNo>(n));
-        if (f.id != id || !f.isTx() || f.isExtended()) continue;
-        if (last) out.push_back(double(f.timestampNs - last) / 1e6);
-        last = f.timestampNs;
-    }
-    return out;
-}
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 void click(QWidget* w) { QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center()); }
 

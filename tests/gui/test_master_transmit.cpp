@@ -37,6 +37,7 @@
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/TxFrames.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -44,36 +45,13 @@ using namespace coscope::gui;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::signalItem;
+using coscope::testing::countTx;
+using coscope::testing::median;
+using coscope::testing::txIntervalsMs;
 using coscope::testing::waitFor;
 
 namespace {
 constexpr int kPatienceMs = 30000;
-
-// The intervals (ms) between the frames we sent with identifier `id`, from frame `from` on.
-std::vector<double> txIntervalsMs(const TraceStore& store, uint32_t id, size_t from = 0) {
-    std::vector<double> out;
-    int64_t last = 0;
-    for (size_t n = from; n < store.size(); ++n) {
-        const CanFrame f = store.frame(static_cast<FrameNo>(n));
-        if (f.id != id || !f.isTx() || f.isExtended()) continue;
-        if (last) out.push_back(double(f.timestampNs - last) / 1e6);
-        last = f.timestampNs;
-    }
-    return out;
-}
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-size_t countTx(const TraceStore& store, uint32_t id) {
-    size_t n = 0;
-    for (size_t i = 0; i < store.size(); ++i) {
-        const CanFrame f = store.frame(static_cast<FrameNo>(i));
-        n += f.id == id && f.isTx();
-    }
-    return n;
-}
 
 }  // namespace
 
