@@ -225,6 +225,9 @@ bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
             why = QStringLiteral("cannot write to socketcand at %1: %2").arg(where(), socket_->errorString());
             return;
         }
+        // QTcpSocket only buffers a write until its event loop turns again: push it to the
+        // kernel now, so a periodic frame leaves when it is due, not one loop turn later.
+        socket_->flush();
         ok = true;
         // socketcand's raw socket does not echo our own frames: record the Tx copy here.
         deliverTxEcho(frame);
