@@ -7,6 +7,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cerrno>
+#include <cstring>
+#include <sys/socket.h>
+
 namespace coscope {
 
 using socketcand::Message;
@@ -32,6 +36,7 @@ void SocketcandBus::startOnThread() {
     QObject::connect(socket_, &QTcpSocket::readyRead, context_, [this] { onReadyRead(); });
     QObject::connect(socket_, &QTcpSocket::errorOccurred, context_, [this] { onSocketError(); });
     QObject::connect(socket_, &QTcpSocket::disconnected, context_, [this] { onDisconnected(); });
+    QObject::connect(socket_, &QTcpSocket::bytesWritten, context_, [this] { onBytesWritten(); });
     phase_ = Phase::Connecting;
     handshakeTimer_->start(kHandshakeTimeoutMs);
     spdlog::debug("socketcand: connecting to {} channel {}", where().toStdString(), url().channel.toStdString());
@@ -41,6 +46,7 @@ void SocketcandBus::startOnThread() {
 void SocketcandBus::stopOnThread() {
     phase_ = Phase::Closing;
     if (handshakeTimer_) handshakeTimer_->stop();
+    stopDirectSends();
     if (socket_) {
         QObject::disconnect(socket_, nullptr, context_, nullptr);
         // Let queued "< send >" commands leave before the connection goes.
@@ -60,6 +66,11 @@ void SocketcandBus::fail(const QString& message) {
     const bool wasOpen = phase_ == Phase::Raw;
     phase_ = Phase::Idle;
     if (handshakeTimer_) handshakeTimer_->stop();
+    {
+        std::lock_guard lock(sendMutex_);
+        directFd_ = -1;
+        backlog_.clear();  // the connection is gone: nothing of it can leave any more
+    }
     if (socket_) {
         QObject::disconnect(socket_, nullptr, context_, nullptr);
         socket_->abort();
@@ -131,6 +142,7 @@ void SocketcandBus::handle(const Message& m) {
         if (m.kind == Message::Kind::Ok) {
             phase_ = Phase::Raw;
             handshakeTimer_->stop();
+            startDirectSends();
             reachedOpen();
         } else if (m.kind == Message::Kind::Error) {
             fail(QStringLiteral("socketcand at %1 refused raw mode: %2").arg(where(), m.text));
@@ -140,9 +152,7 @@ void SocketcandBus::handle(const Message& m) {
         return;
     case Phase::Raw:
         if (m.kind == Message::Kind::Frame) {
-            CanFrame f = m.frame;
-            if (f.timestampNs == 0) f.timestampNs = nowNs();
-            deliver(f);
+            deliverFrame(m.frame, false);
         } else if (m.kind == Message::Kind::Error) {
             // e.g. "< error unknown command >" after a command the server does not support
             countError();
@@ -205,36 +215,87 @@ void SocketcandBus::onHandshakeTimeout() {
     }
 }
 
+void SocketcandBus::deliverFrame(CanFrame frame, bool ours) {
+    std::lock_guard lock(deliverMutex_);
+    if (ours) frame.flags |= CanFrame::Tx;
+    // Stamped under the lock, so the ring's times never go backwards between producers.
+    if (ours || frame.timestampNs == 0) frame.timestampNs = nowNs();
+    deliver(frame);
+}
+
+void SocketcandBus::startDirectSends() {
+    socket_->flush();  // the handshake's commands are out
+    std::lock_guard lock(sendMutex_);
+    directFd_ = static_cast<int>(socket_->socketDescriptor());
+    backlog_.clear();
+    queuedInSocket_ = socket_->bytesToWrite() > 0;
+}
+
+void SocketcandBus::stopDirectSends() {
+    QByteArray rest;
+    {
+        std::lock_guard lock(sendMutex_);
+        directFd_ = -1;
+        rest.swap(backlog_);
+    }
+    if (socket_ && !rest.isEmpty() && socket_->state() == QAbstractSocket::ConnectedState) socket_->write(rest);
+}
+
+void SocketcandBus::drainBacklog() {
+    QByteArray rest;
+    {
+        std::lock_guard lock(sendMutex_);
+        drainPosted_ = false;
+        if (directFd_ < 0) return;  // closed meanwhile; stopOnThread() took the backlog
+        rest.swap(backlog_);
+        if (!rest.isEmpty()) queuedInSocket_ = true;
+    }
+    if (socket_ && !rest.isEmpty()) {
+        socket_->write(rest);
+        socket_->flush();
+    }
+    onBytesWritten();
+}
+
+void SocketcandBus::onBytesWritten() {
+    if (!socket_ || socket_->bytesToWrite() > 0) return;
+    std::lock_guard lock(sendMutex_);
+    if (backlog_.isEmpty()) queuedInSocket_ = false;  // nothing left to overtake
+}
+
 bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
     if (frame.isError()) {
         if (error) *error = QStringLiteral("error frames cannot be sent");
         return false;
     }
-    if (!thread_ || !context_) {
-        if (error) *error = QStringLiteral("socketcand bus is not open");
-        return false;
+    const QByteArray line = socketcand::encodeSend(frame);
+    {
+        std::unique_lock lock(sendMutex_);
+        if (directFd_ >= 0) {
+            if (!queuedInSocket_ && backlog_.isEmpty()) {
+                const ssize_t n = ::send(directFd_, line.constData(), size_t(line.size()), MSG_NOSIGNAL | MSG_DONTWAIT);
+                if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
+                    const int e = errno;
+                    lock.unlock();
+                    if (error) *error = QStringLiteral("cannot write to socketcand at %1: %2").arg(where(), QString::fromLocal8Bit(std::strerror(e)));
+                    return false;
+                }
+                if (n < line.size()) backlog_ = line.mid(n < 0 ? 0 : n);
+            } else {
+                backlog_ += line;
+            }
+            // socketcand's raw socket does not echo our own frames: record the Tx copy here.
+            deliverFrame(frame, true);
+            if (!backlog_.isEmpty() && !drainPosted_) {
+                drainPosted_ = true;  // context_ lives while directFd_ is set (stopOnThread clears it first)
+                QMetaObject::invokeMethod(context_, [this] { drainBacklog(); }, Qt::QueuedConnection);
+            }
+            return true;
+        }
     }
-    bool ok = false;
-    QString why;
-    auto doSend = [&] {
-        if (phase_ != Phase::Raw || !socket_) {
-            why = QStringLiteral("socketcand connection to %1 is not open").arg(where());
-            return;
-        }
-        if (socket_->write(socketcand::encodeSend(frame)) < 0) {
-            why = QStringLiteral("cannot write to socketcand at %1: %2").arg(where(), socket_->errorString());
-            return;
-        }
-        // QTcpSocket only buffers a write until its event loop turns again: push it to the
-        // kernel now, so a periodic frame leaves when it is due, not one loop turn later.
-        socket_->flush();
-        ok = true;
-        // socketcand's raw socket does not echo our own frames: record the Tx copy here.
-        deliverTxEcho(frame);
-    };
-    runOnBusThread(doSend);
-    if (!ok && error) *error = why;
-    return ok;
+    // Raw mode is reached before the bus reports Open, and left before it reports anything else.
+    if (error) *error = QStringLiteral("socketcand connection to %1 is not open").arg(where());
+    return false;
 }
 
 }  // namespace coscope

@@ -17,6 +17,7 @@ public:
     QByteArray received;             // everything the client sent
     QByteArray afterHandshake;       // client bytes after "< rawmode >" was answered
     bool handshakeDone = false;
+    int receiveBufferBytes = 0;      // > 0: a small kernel receive buffer (a slow server)
 
     // port 0: chosen by the system; a port of a server that went away: "the server restarted".
     bool listen(quint16 port = 0) {
@@ -49,6 +50,7 @@ private:
             return;
         }
         client_ = s;
+        if (receiveBufferBytes > 0) client_->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, receiveBufferBytes);
         QObject::connect(client_, &QTcpSocket::readyRead, client_, [this] { onData(); });
         if (greet) write("< hi >");
     }
