@@ -29,6 +29,8 @@ HeartbeatMonitor::~HeartbeatMonitor() {
 void HeartbeatMonitor::stopGuarding(Watch& w) {
     if (w.job) context_.periodic().remove(w.job);
     w.job = 0;
+    if (w.orderWatch) context_.dispatcher().removeWatch(w.orderWatch);
+    w.orderWatch = 0;
 }
 
 void HeartbeatMonitor::setConsumerTime(uint8_t node, int timeMs) {
@@ -54,6 +56,17 @@ bool HeartbeatMonitor::setGuarding(uint8_t node, int guardTimeMs, int lifeTimeFa
     w.shown.guardTimeMs = guardTimeMs;
     w.shown.lifeTimeFactor = std::max(1, lifeTimeFactor);
     w.requests = std::make_shared<std::atomic<uint64_t>>(0);
+    w.missed = std::make_shared<std::atomic<uint64_t>>(0);
+    // Each request is answered before the next goes out (the guard time is the period; CiA 301
+    // §7.2.8.3.2.1): a request of ours followed by another without an answer between was missed.
+    w.orderWatch = context_.dispatcher().addWatch({0x700u + node}, [missed = w.missed, pending = false](const CanFrame& f) mutable {
+        if (f.isTx() && f.isRemote()) {
+            if (pending) missed->fetch_add(1, std::memory_order_relaxed);
+            pending = true;
+        } else if (!f.isTx() && !f.isRemote() && f.len >= 1) {
+            pending = false;
+        }
+    });
     // The request: RTR on 700h + node-ID (CiA 301 §7.2.8.3.2.1; DLC 1 as most masters send it).
     PeriodicSender::Job job;
     job.frame.id = 0x700u + node;
@@ -198,14 +211,11 @@ void HeartbeatMonitor::onCheck() {
             else if (w.shown.status == Status::Ok && w.periodNs && now - since > w.periodNs * 3 / 2) setStatus(node, w, Status::Late);
             continue;
         }
-        // A request sent two before the last one and still unanswered: missed (a guarding
-        // error). The requests go out on the sender thread while the answers are read here, so
-        // the one before the last may be answered in a frame this thread has not read yet.
-        const uint64_t sent = w.requests->load(std::memory_order_acquire);
-        int missed = 0;
-        if (sent > w.answeredUpTo + 2) {
-            missed = static_cast<int>(sent - w.answeredUpTo - 2);
-            w.answeredUpTo = sent - 2;
+        // Requests missed (a guarding error), as the ingest thread saw them in bus order.
+        const uint64_t missedNow = w.missed->load(std::memory_order_relaxed);
+        const int missed = static_cast<int>(missedNow - w.missedCounted);
+        w.missedCounted = missedNow;
+        if (missed > 0) {
             if (!w.errorReported) emit guardingError(node, QStringLiteral("node %1: no answer to a node guarding request within the guard time %2 ms").arg(node).arg(w.shown.guardTimeMs));
             w.errorReported = true;
         }

@@ -78,6 +78,12 @@ private:
         PeriodicSender::JobId job = 0;
         std::shared_ptr<std::atomic<uint64_t>> requests;  // RTRs sent (sender thread)
         uint64_t answeredUpTo = 0;                         // requests answered or given up
+        // Requests left unanswered until the next one, counted on the ingest thread in the
+        // bus's own order (our RTR's Tx copy, then the answer or the next RTR): how late this
+        // thread reads the answers does not matter.
+        std::shared_ptr<std::atomic<uint64_t>> missed;
+        uint64_t missedCounted = 0;
+        int orderWatch = 0;  // FrameDispatcher::addWatch id
         bool expectToggle = false;
         bool firstAnswer = true;
         bool errorReported = false;
