@@ -232,6 +232,7 @@ bool ProcessData::setValue(uint16_t index, uint8_t sub, int64_t value, QString* 
         }
     }
     if (const ProcessDataObject* o = mapped ? object(index, sub) : nullptr) noteIfEnabling(*o, value);
+    if (mapped) setByUser_.insert(uint32_t(index) << 8 | sub);
     if (!mapped) {
         if (error) *error = QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
         return false;
@@ -312,6 +313,7 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
         for (const ProcessDataObject& o : p.objects)
             if (!o.dummy && seen.insert(o.entry.encode() & 0xFFFFFF00u).second) todo->push_back(o);
     auto failures = std::make_shared<QStringList>();
+    setByUser_.clear();
     auto step = std::make_shared<std::function<void(size_t)>>();
     const QPointer<ProcessData> self(this);
     const uint8_t node = node_;
@@ -330,8 +332,8 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
         const ProcessDataObject o = (*todo)[i];
         sdo.upload(node, o.entry.index, o.entry.sub, [self, o, failures, step = weakStep.lock(), i](const SdoResult& r) {
             if (!self) return;
-            if (r.ok) self->setValueQuietly(o, fromBytes(o, r.data));
-            else *failures << QStringLiteral("%1: %2").arg(mappedObjectText(o.entry.index, o.entry.sub), r.error);
+            if (!r.ok) *failures << QStringLiteral("%1: %2").arg(mappedObjectText(o.entry.index, o.entry.sub), r.error);
+            else if (!self->setByUser_.count(uint32_t(o.entry.index) << 8 | o.entry.sub)) self->setValueQuietly(o, fromBytes(o, r.data));
             (*step)(i + 1);
         });
     };

@@ -14,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <vector>
 
 class QTimer;
@@ -148,6 +149,9 @@ private:
     std::shared_ptr<Shared> shared_;
     uint8_t node_ = 0;
     uint64_t generation_ = 0;  // setNode() count: a read for another node stops
+    // Objects the user set (setValue) since the last readValues() began: the drive's value read
+    // after that does not overwrite what the user chose (a bit ticked while the read runs).
+    std::set<uint32_t> setByUser_;
     std::vector<ProcessDataPdo> pdos_;
     Mode mode_ = Mode::Once;
     int periodMs_ = 100;

@@ -110,6 +110,29 @@ private slots:
         QVERIFY(error.contains(QStringLiteral("not mapped")));
     }
 
+    // The drive's present values fill the RPDO objects (readValues), but a value the user set
+    // while that read was still running stays as the user set it.
+    void readValuesKeepsWhatTheUserSetMeanwhile() {
+        ProcessRig r;
+        QVERIFY(r.open());
+        r.rig.onDevice(kAimotor, [](sim::VirtualDevice& d) {
+            QVERIFY(d.setValue(0x6060, 0, od::Value::signedInt(1)));  // profile position
+            QVERIFY(d.setValue(0x607A, 0, od::Value::signedInt(1234)));
+        });
+        SdoClient sdo(*r.rig.context);
+        bool done = false;
+        QStringList failed;
+        r.data->readValues(sdo, [&](const QStringList& f) {
+            failed = f;
+            done = true;
+        });
+        QVERIFY(r.data->setValue(0x607A, 0, -7));  // typed before the read's answers came
+        QTRY_VERIFY_WITH_TIMEOUT(done, 5000);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed.join(u'\n')));
+        QCOMPARE(r.data->value(0x6060, 0).value_or(0), int64_t(1));    // read from the drive
+        QCOMPARE(r.data->value(0x607A, 0).value_or(0), int64_t(-7));   // the user's, not 1234
+    }
+
     void motionOnlyWhileHeld() {
         ProcessRig r;
         QVERIFY(r.open());
