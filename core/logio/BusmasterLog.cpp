@@ -40,11 +40,13 @@ void BusmasterReader::headerLine(std::string_view t) {
         // "d:m:yyyy h:m:s:ms" (SavvyCAN's sample "8:8:2014 11:49:7:965").
         Tokens tok(t.substr(20));
         uint32_t d[3], tm[4];
-        if (!splitColon(tok.next(), d, 3) || !splitColon(tok.next(), tm, 4)) {
+        const std::string_view dateText = tok.next(), timeText = tok.next();
+        if (!splitColon(dateText, d, 3) || !splitColon(timeText, tm, 4)) {
             warn(lineNumber(), QStringLiteral("cannot read the start date; times are relative to midnight"));
             return;
         }
         const QDate date{int(d[2]), int(d[1]), int(d[0])};
+        if (timeText.size() - timeText.rfind(':') - 1 >= 4) tm[3] /= 10;  // tenths of a millisecond
         const QTime time{int(tm[0]), int(tm[1]), int(tm[2]), int(tm[3])};
         if (!date.isValid() || !time.isValid() || d[2] < 1970 || d[2] > 2200) {
             warn(lineNumber(), QStringLiteral("start date or time out of range; times are relative to midnight"));
@@ -80,7 +82,12 @@ BusmasterReader::LineResult BusmasterReader::parseLine(std::string_view line, Ca
     uint32_t tm[4];
     if (!splitColon(timeText, tm, 4) || tm[0] > 999999 || tm[1] > 59 || tm[2] > 59 || tm[3] > 9999)
         return bad(QStringLiteral("bad time %1, expected h:m:s:tttt").arg(quoted(timeText)));
-    const int64_t timeNs = ((int64_t(tm[0]) * 60 + tm[1]) * 60 + tm[2]) * 1000 * kNsPerMs + int64_t(tm[3]) * 100000;
+    // The last field is milliseconds when it has up to three digits ("22:20:14:992", BUSMASTER
+    // 3.x and SavvyCAN's export), tenths of a millisecond when it has four ("11:49:28:3010").
+    const size_t lastColon = timeText.rfind(':');
+    const bool tenths = timeText.size() - lastColon - 1 >= 4;
+    if (!tenths && tm[3] > 999) return bad(QStringLiteral("bad time %1, expected h:m:s:ms").arg(quoted(timeText)));
+    const int64_t timeNs = ((int64_t(tm[0]) * 60 + tm[1]) * 60 + tm[2]) * 1000 * kNsPerMs + int64_t(tm[3]) * (tenths ? 100000 : kNsPerMs);
     const std::string_view dir = tok.next();
     if (equalsNoCase(dir, "tx")) f.flags |= CanFrame::Tx;
     else if (!equalsNoCase(dir, "rx")) return bad(QStringLiteral("direction %1 is not Tx or Rx").arg(quoted(dir)));

@@ -153,6 +153,23 @@ private slots:
         QCOMPARE(f[2].timestampNs, start + 1020000000);
     }
 
+    // "22:20:14:992" counts milliseconds (three digits; issue 37: read as tenths, 30 ms showed as
+    // 0.903 s); four digits count tenths of a millisecond.
+    void busmasterThreeDigitTimeIsMilliseconds() {
+        const QByteArray text =
+            "***BUSMASTER Ver 3.2.2***\n***START DATE AND TIME 28:11:2026 22:20:14:000***\n***HEX***\n***SYSTEM MODE***\n"
+            "22:20:14:992 Rx 1 0x701 s 1 05\n22:20:15:022 Rx 1 0x701 s 1 05\n22:20:15:0300 Rx 1 0x701 s 1 05\n"
+            "22:20:15:1000 Rx 1 0x701 s 1 05\n";
+        BusmasterReader r;
+        const auto f = readBytes(r, text);
+        QCOMPARE(f.size(), size_t(4));
+        QVERIFY(r.diagnostics().empty());
+        QCOMPARE(f[1].timestampNs - f[0].timestampNs, int64_t(30000000));  // 30 ms
+        QCOMPARE(f[0].timestampNs, localNs(2026, 11, 28, 22, 20, 14, 992));
+        QCOMPARE(f[2].timestampNs, localNs(2026, 11, 28, 22, 20, 15, 30));   // 0300 = 30.0 ms
+        QCOMPARE(f[3].timestampNs, localNs(2026, 11, 28, 22, 20, 15, 100));  // 1000 = 100.0 ms
+    }
+
     void ixxatMiniMon() {
         const Read r = readFixture("ixxat_minimon_v3.csv");
         QCOMPARE(r.format, QStringLiteral("ixxat"));
