@@ -37,6 +37,8 @@ QString sdoAbortText(uint32_t code) {
     case DeviceState: return QStringLiteral("Data cannot be transferred or stored to the application because of the present device state");
     case NoDictionary: return QStringLiteral("Object dictionary dynamic generation fails or no object dictionary is present");
     case NoData: return QStringLiteral("No data available");
+    // Not in CiA 301's table (§7.2.4.3.17): some devices abort with 0, which names no reason.
+    case 0: return QStringLiteral("No reason given");
     default: return {};
     }
 }

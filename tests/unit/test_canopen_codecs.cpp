@@ -127,6 +127,7 @@ private slots:
         QCOMPARE(sdoAbortText(a.abortCode), QStringLiteral("Object does not exist in the object dictionary"));
         QCOMPARE(sdoAbortText(0x05030000), QStringLiteral("Toggle bit not alternated"));
         QVERIFY(sdoAbortText(0x12345678).isEmpty());
+        QCOMPARE(sdoAbortText(0), QStringLiteral("No reason given"));  // issue 37: not "unknown"
         QCOMPARE(payload(sdo::abortFromClient(2, 0x1018, 1, 0x05040000)), hex("80 18 10 01 00 00 04 05"));
     }
 

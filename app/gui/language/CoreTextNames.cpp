@@ -96,6 +96,7 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("CoreText", "Data cannot be transferred or stored to the application because of the present device state"),
     QT_TRANSLATE_NOOP("CoreText", "Object dictionary dynamic generation fails or no object dictionary is present"),
     QT_TRANSLATE_NOOP("CoreText", "No data available"),
+    QT_TRANSLATE_NOOP("CoreText", "No reason given"),
     QT_TRANSLATE_NOOP("CoreText", "closed"),
     QT_TRANSLATE_NOOP("CoreText", "opening"),
     QT_TRANSLATE_NOOP("CoreText", "open"),
