@@ -104,9 +104,22 @@ QString formatForExtension(const QString& path) {
     return {};
 }
 
+namespace {
+// Text with at least one line that is not blank: every text format CoScope reads is recognised
+// by its lines (detectContent), so such a file that was not is none of them, whatever its name.
+bool isUnrecognisedText(const QByteArray& head) {
+    if (head.isEmpty() || head.contains('\0')) return false;
+    for (char c : head)
+        if (!isSpace(c)) return true;
+    return false;
+}
+}  // namespace
+
 QString detect(QIODevice* device, const QString& fileName) {
-    const QString byContent = device ? detectContent(device->peek(8192)) : QString();
-    return byContent.isEmpty() ? formatForExtension(fileName) : byContent;
+    const QByteArray head = device ? device->peek(8192) : QByteArray();
+    const QString byContent = detectContent(head);
+    if (!byContent.isEmpty()) return byContent;
+    return isUnrecognisedText(head) ? QString() : formatForExtension(fileName);
 }
 
 std::unique_ptr<LogReader> createReader(const QString& format) {
@@ -133,7 +146,9 @@ std::unique_ptr<LogReader> openReader(const QString& path, QString* error) {
     const QString format = detect(&probe, path);
     probe.close();
     if (format.isEmpty()) {
-        if (error) *error = QStringLiteral("%1: unknown log format (not candump, ASC, BLF, PEAK TRC, pcap, CSV, GVRET, BUSMASTER, IXXAT or Kvaser)").arg(path);
+        if (error)
+            *error = QStringLiteral("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser)")
+                         .arg(path);
         return nullptr;
     }
     auto reader = createReader(format);

@@ -13,6 +13,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
@@ -82,8 +83,9 @@ private slots:
         QVERIFY(!report(w)->isVisible());
     }
 
-    // A text file that is no log gives an empty trace and says why, instead of nothing.
-    void noFramesIsExplained() {
+    // A text file that is no log is refused and says so, naming the formats tried (issue 37),
+    // instead of being read as a candump log of skipped lines.
+    void noLogIsRefusedWithTheFormatsTried() {
         const QString path = dir_.filePath(QStringLiteral("notes.log"));
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));
@@ -94,10 +96,8 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(openByMenu(w, path));
-        QVERIFY(waitFor([&] { return report(w) && report(w)->isVisible(); }));
-        const QString text = reportText(w);
-        QVERIFY2(text.contains(QStringLiteral("No frames were found")), qPrintable(text));
-        QVERIFY2(text.contains(QStringLiteral("line 1:")) && text.contains(QStringLiteral("line 2:")), qPrintable(text));
+        QVERIFY(waitFor([&] { return w.statusBar()->currentMessage().contains(QStringLiteral("not a format CoScope reads")); }));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("BUSMASTER")), qPrintable(w.statusBar()->currentMessage()));
         QCOMPARE(w.traceDock()->model()->rowCount(), 0);
     }
 };
