@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/logio/PeakTrc.h"
 
+#include <linux/can/error.h>
+
+#include <algorithm>
+#include <iterator>
+
 #include "core/logio/CaptureGapText.h"
 
 #include <QDateTime>
@@ -88,6 +93,38 @@ TrcReader::LineResult TrcReader::readData(Tokens& tokens, CanFrame& f, uint32_t 
     return LineResult::Frame;
 }
 
+// An "error warning" record (PEAK CAN TRC File Format, version 1.0 "Error Warnings"; 1.1 to 1.3
+// type "Warng"): ID FFFFFFFF, length 4, the driver's status as four bytes, most significant
+// first, then its name ("00 00 00 08 ------BUSHEAVY"). Kept as the SocketCAN error frame the
+// state means (linux/can/error.h), so the trace and the Events show it as they show a
+// controller's report, instead of dropping it. Status bits of the PCAN drivers of that time
+// (SJA1000 controllers): 01h transmit queue full, 02h/40h receive overrun, 04h BUSLIGHT (an
+// error counter reached the warning limit), 08h BUSHEAVY (error passive), 10h BUSOFF.
+TrcReader::LineResult TrcReader::readStatus(Tokens& tokens, CanFrame& f) {
+    const auto len = parseDec(tokens.next());
+    if (!len || *len != 4) return bad(QStringLiteral("an error warning needs length 4"));
+    uint32_t status = 0;
+    for (int i = 0; i < 4; ++i) {
+        const auto b = parseHexByte(tokens.next());
+        if (!b) return bad(QStringLiteral("error warning byte %1 is not hexadecimal").arg(i + 1));
+        status = status << 8 | *b;
+    }
+    f.flags = CanFrame::Error;
+    f.len = 8;
+    std::fill(std::begin(f.data), std::end(f.data), uint8_t(0));
+    if (status & 0x10) {
+        f.id = CAN_ERR_BUSOFF;
+        return LineResult::Frame;
+    }
+    f.id = CAN_ERR_CRTL;
+    if (status & 0x08) f.data[1] |= CAN_ERR_CRTL_RX_PASSIVE | CAN_ERR_CRTL_TX_PASSIVE;
+    else if (status & 0x04) f.data[1] |= CAN_ERR_CRTL_RX_WARNING | CAN_ERR_CRTL_TX_WARNING;
+    if (status & 0x42) f.data[1] |= CAN_ERR_CRTL_RX_OVERFLOW;
+    if (status & 0x01) f.data[1] |= CAN_ERR_CRTL_TX_OVERFLOW;
+    if (status == 0) f.data[1] = CAN_ERR_CRTL_ACTIVE;  // "OK": back to error active
+    return LineResult::Frame;
+}
+
 TrcReader::LineResult TrcReader::parseLine(std::string_view line, CanFrame& f) {
     line = trimmed(line);
     if (line.empty()) return LineResult::Skip;
@@ -135,10 +172,15 @@ TrcReader::LineResult TrcReader::parseV1(Tokens& tokens, CanFrame& f) {
     if (minor_ >= 1) {  // 1.1+: message type column
         if (t == "Tx") f.flags |= CanFrame::Tx;
         else if (t == "Error") f.flags |= CanFrame::Error;
-        else if (t != "Rx") return LineResult::Skip;  // Warng, Overrun, ... status lines
+        else if (t == "Warng") {
+            tokens.next();                            // ID FFFFFFFF
+            if (tokens.peek() == "-") tokens.next();  // 1.3 reserved column
+            return readStatus(tokens, f);
+        }
+        else if (t != "Rx") return LineResult::Skip;  // Overrun, ... other records
         t = tokens.next();
     }
-    if (t == "FFFFFFFF" && minor_ == 0) return LineResult::Skip;  // 1.0 bus information line
+    if (t == "FFFFFFFF" && minor_ == 0) return readStatus(tokens, f);  // 1.0 error warning
     if (!parseId(t, f)) return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(t.data(), qsizetype(t.size()))));
     if (tokens.peek() == "-") tokens.next();  // 1.3 reserved column
     const auto len = parseDec(tokens.next());

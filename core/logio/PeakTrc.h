@@ -29,6 +29,7 @@ private:
     LineResult parseV2(Tokens& tokens, CanFrame& frame);
     bool parseId(std::string_view t, CanFrame& frame);
     LineResult readData(Tokens& tokens, CanFrame& frame, uint32_t len);
+    LineResult readStatus(Tokens& tokens, CanFrame& frame);
 
     int major_ = 1;
     int minor_ = 0;

@@ -14,6 +14,8 @@
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include "core/can/CanErrorFrame.h"
+
 #include <QtTest>
 
 #include <zlib.h>
@@ -287,6 +289,34 @@ private slots:
         QCOMPARE(f[2].id, 0x702u);
         QCOMPARE(r.diagnostics().size(), size_t(1));
         QCOMPARE(r.diagnostics()[0].where, 5);
+    }
+
+    // Error warnings (PEAK CAN TRC File Format 1.0 "Error Warnings", 1.1+ type Warng) are the bus
+    // state the driver saw: kept as error frames the Events show, not dropped (issue 37).
+    void trcErrorWarningsBecomeErrorFrames() {
+        const QByteArray v10 = ";   Start time: 1.1.2020\n"
+                               "     1)      1841  0001  8  00 01 02 03 04 05 06 07\n"
+                               "     2)      1843  FFFFFFFF  4  00 00 00 04 ------BUSLIGHT\n"
+                               "     3)      1844  FFFFFFFF  4  00 00 00 08 ------BUSHEAVY\n"
+                               "     4)      1845  FFFFFFFF  4  00 00 00 10 ------BUSOFF\n";
+        TrcReader r;
+        const auto f = readBytes(r, v10);
+        QVERIFY2(r.diagnostics().empty(), r.diagnostics().empty() ? "" : qPrintable(r.diagnostics()[0].message));
+        QCOMPARE(f.size(), size_t(4));
+        QVERIFY(f[1].isError() && f[2].isError() && f[3].isError());
+        QCOMPARE(decodeCanError(f[1]).state, CanErrorReport::BusState::Warning);
+        QCOMPARE(decodeCanError(f[2]).state, CanErrorReport::BusState::Passive);
+        QCOMPARE(decodeCanError(f[3]).state, CanErrorReport::BusState::BusOff);
+        QCOMPARE(f[3].timestampNs - f[0].timestampNs, 4000000LL);
+
+        const QByteArray v11 = ";$FILEVERSION=1.1\n;$STARTTIME=44964.5725134375\n"
+                               "     1)      1841.0  Rx         0001  8  00 01 02 03 04 05 06 07 \n"
+                               "     2)      1842.0  Warng  FFFFFFFF  4  00 00 00 08 BUSHEAVY \n";
+        TrcReader r11;
+        const auto g = readBytes(r11, v11);
+        QVERIFY(r11.diagnostics().empty());
+        QCOMPARE(g.size(), size_t(2));
+        QCOMPARE(decodeCanError(g[1]).state, CanErrorReport::BusState::Passive);
     }
 
     void oleDate() {
