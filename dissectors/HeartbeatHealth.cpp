@@ -45,9 +45,12 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     t.present = true;
     ++t.frames;
     const int state = f.data[0] & 0x7F;  // bit 7 is the guarding toggle
-    if (t.beats && f.timestampNs >= t.lastBeatNs && t.beatGapsNs.size() < kMaxSamples) t.beatGapsNs.push_back(f.timestampNs - t.lastBeatNs);
+    // The time from a boot-up to the first heartbeat is no heartbeat period: a producer starts
+    // when its 1017h is set, often seconds later (issue 37: such a start is not "lost").
+    if (t.beats && !t.lastWasBootUp && f.timestampNs >= t.lastBeatNs && t.beatGapsNs.size() < kMaxSamples) t.beatGapsNs.push_back(f.timestampNs - t.lastBeatNs);
     ++t.beats;
     t.lastBeatNs = f.timestampNs;
+    t.lastWasBootUp = state == 0;
     const bool commanded = t.lastCommand >= 0 && f.timestampNs - t.lastCommandNs <= kCommandWindowNs;
     auto commandText = [&] {
         return QStringLiteral("NMT %1 (%2)").arg(canopen::nmtCommandName(static_cast<uint8_t>(t.lastCommand)),
@@ -123,13 +126,21 @@ void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const Netwo
     }
     if (h.expectedPeriodMs <= 0) return;
     const double lateNs = 1.5e6 * h.expectedPeriodMs, lostNs = 3e6 * h.expectedPeriodMs;
+    // "Lost" is a stop after regular beats: a long gap before the first regular interval is a
+    // heartbeat that started late (or was set up later), not a lost one.
+    bool regular = false;
     for (int64_t g : t.beatGapsNs) {
         const double gd = static_cast<double>(g);
-        if (gd > lostNs) ++h.timeouts;
-        else if (gd > lateNs) ++h.late;
+        if (gd > lostNs) {
+            if (regular) ++h.timeouts;
+        } else if (gd > lateNs) {
+            if (regular) ++h.late;
+        } else {
+            regular = true;
+        }
     }
     // Silent since the last beat: the heartbeat stopped (a timeout that has not ended).
-    if (t.beats && static_cast<double>(nowNs - t.lastBeatNs) > lostNs) {
+    if (regular && !t.lastWasBootUp && static_cast<double>(nowNs - t.lastBeatNs) > lostNs) {
         h.silentNow = true;
         h.silentForMs = static_cast<double>(nowNs - t.lastBeatNs) / 1e6;
         ++h.timeouts;

@@ -107,7 +107,8 @@ private:
         bool guarding = false;
         uint64_t beats = 0;
         int64_t lastBeatNs = 0;
-        std::vector<int64_t> beatGapsNs;
+        bool lastWasBootUp = false;        // the frame at lastBeatNs was a boot-up, not a beat
+        std::vector<int64_t> beatGapsNs;   // between beats; none from a boot-up to the first beat
         int state = -1;
         uint64_t bootUps = 0, resets = 0, nmtCommands = 0;
         int64_t lastCommandNs = 0;

@@ -84,6 +84,36 @@ private slots:
         QCOMPARE(r.findings.front().kind, QStringLiteral("heartbeat_stopped"));
     }
 
+    // A heartbeat that starts late (boot-up, then 1017h set seconds later) is not lost; "lost"
+    // is a stop after regular beats (issue 37). Node 6 boots at 0, beats at 100 ms from 4 s.
+    void heartbeatThatStartsLateIsNotLost() {
+        Feed f;
+        f.at(0, 0x706, {0x00});
+        // Before its producer runs, one stray state answer at 1 s, then regular beats from 4 s.
+        f.at(1000, 0x706, {0x7F});
+        for (int i = 0; i < 10; ++i) f.at(4000 + 100.0 * i, 0x706, {0x7F});
+        HealthReport r = f.report(4950);
+        const NodeHealth* n = nodeOf(r, 6);
+        QVERIFY(n);
+        QCOMPARE(n->expectedPeriodMs, 100.0);
+        QCOMPARE(n->timeouts, 0u);
+        QCOMPARE(n->late, 0u);
+        QVERIFY(!n->silentNow);
+        QVERIFY2(!hasFinding(r, QStringLiteral("node 6 heartbeat lost")), qPrintable(findings(r)));
+        // Then it stops after those regular beats: that is lost.
+        r = f.report(5500);
+        n = nodeOf(r, 6);
+        QVERIFY(n->silentNow);
+        QCOMPARE(n->timeouts, 1u);
+        // A node that booted and never beat is not "lost" either (no heartbeat configured).
+        Feed g;
+        g.at(0, 0x707, {0x00});
+        r = g.report(10000);
+        QVERIFY(nodeOf(r, 7));
+        QCOMPARE(nodeOf(r, 7)->timeouts, 0u);
+        QVERIFY(!nodeOf(r, 7)->silentNow);
+    }
+
     void heartbeatPeriodFrom1017h() {
         Feed f;
         // Expedited download of 1017h:00 = 200 ms (2Bh: 2 bytes), then the server's answer.
