@@ -87,7 +87,7 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
     for (const PdoHealth& p : r.pdos) {
         if (!p.consumerSeen)
             add(HealthFinding::Warning, "rpdo_no_consumer", p.node, QStringLiteral("%1 (%2) sent to node %3, which never answers").arg(p.service, hx(p.cobId, 3)).arg(p.node));
-        if (p.frames > 10 && p.periodAvgMs > 0 && p.jitterMs > kJitterShare * p.periodAvgMs)
+        if (p.cyclic && p.frames > 10 && p.periodAvgMs > 0 && p.jitterMs > kJitterShare * p.periodAvgMs)
             add(HealthFinding::Info, "pdo_jitter", p.node,
                 QStringLiteral("%1 of node %2 (%3) every %4 jitters by %5").arg(p.service).arg(p.node).arg(hx(p.cobId, 3), ms(p.periodAvgMs), ms(p.jitterMs)));
     }

@@ -78,7 +78,8 @@ QJsonObject healthJson(const HealthReport& r) {
                                 {QStringLiteral("period_avg_ms"), r3(p.periodAvgMs)},
                                 {QStringLiteral("period_min_ms"), r3(p.periodMinMs)},
                                 {QStringLiteral("period_max_ms"), r3(p.periodMaxMs)},
-                                {QStringLiteral("jitter_ms"), r3(p.jitterMs)},
+                                {QStringLiteral("cyclic"), p.cyclic},
+                                {QStringLiteral("jitter_ms"), p.cyclic ? QJsonValue(r3(p.jitterMs)) : QJsonValue()},
                                 {QStringLiteral("consumer_seen"), p.consumerSeen}});
     const BusHealth& b = r.bus;
     QJsonArray buckets, perSecond, noProducer;

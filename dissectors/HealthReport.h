@@ -87,6 +87,9 @@ struct PdoHealth {
     double rateHz = 0;
     double periodAvgMs = 0, periodMinMs = 0, periodMaxMs = 0;
     double jitterMs = 0;   // standard deviation of the period
+    // Sent in a cycle (SYNC or event timer): most intervals (80 %) within ±25 % of the median.
+    // Jitter means something only then; an event-driven PDO's intervals are the events'.
+    bool cyclic = false;
     bool consumerSeen = true;  // RPDO: the addressed node sent anything at all
 };
 

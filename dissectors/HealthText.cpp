@@ -88,7 +88,9 @@ QByteArray healthText(const HealthReport& r, bool perSecond) {
     for (const PdoHealth& p : r.pdos) {
         char period[64] = "-";
         if (p.frames > 1) std::snprintf(period, sizeof period, "%.2f/%.2f/%.2f", p.periodMinMs, p.periodAvgMs, p.periodMaxMs);
-        o.put("  0x%03X   %-6s %-5d %9llu %9.1f %24s %10.3f%s\n", p.cobId, qPrintable(p.service), p.node, u(p.frames), p.rateHz, period, p.jitterMs,
+        char jitter[32] = "event";  // no cycle: the intervals are the events'
+        if (p.cyclic) std::snprintf(jitter, sizeof jitter, "%.3f", p.jitterMs);
+        o.put("  0x%03X   %-6s %-5d %9llu %9.1f %24s %10s%s\n", p.cobId, qPrintable(p.service), p.node, u(p.frames), p.rateHz, period, jitter,
               p.consumerSeen ? "" : "  (consumer never seen)");
     }
     if (r.pdos.empty()) o.o.append("  (none)\n");

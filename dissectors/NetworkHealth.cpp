@@ -41,6 +41,17 @@ double IntervalStats::medianMs() const {
     return 0;
 }
 
+double IntervalStats::shareNear(double periodMs, double tolerance) const {
+    if (count == 0 || periodMs <= 0) return 0;
+    uint64_t near = 0;
+    for (const Bucket& b : buckets) {
+        if (!b.count) continue;
+        const double mid = static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;
+        if (std::abs(mid - periodMs) <= tolerance * periodMs) near += b.count;
+    }
+    return static_cast<double>(near) / static_cast<double>(count);
+}
+
 uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* missingPeriods) const {
     uint64_t n = 0, missing = 0;
     if (periodMs <= 0) return 0;

@@ -53,6 +53,8 @@ struct IntervalStats {
     double averageMs() const { return count ? (static_cast<double>(shiftNs) + static_cast<double>(sumDevNs) / static_cast<double>(count)) / 1e6 : 0; }
     double jitterMs() const;  // standard deviation; 0 when empty
     double medianMs() const;  // 0 when empty
+    // The share (0..1) of intervals within `tolerance` (0.25 = ±25 %) of `periodMs`.
+    double shareNear(double periodMs, double tolerance) const;
     // Gaps over `factor` x `periodMs`: how many, and how many whole periods they leave out.
     uint64_t countOver(double periodMs, double factor, uint64_t* missingPeriods = nullptr) const;
     // The bucket of an interval: the top bits of its double (exponent and 5 bits of mantissa).

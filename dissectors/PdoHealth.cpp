@@ -64,6 +64,7 @@ void NetworkHealth::fillPdos(HealthReport& r, const NetworkContext* ctx) const {
             h.periodMaxMs = static_cast<double>(s.maxNs) / 1e6;
             h.periodAvgMs = s.averageMs();
             h.jitterMs = s.jitterMs();
+            h.cyclic = s.count >= 3 && s.shareNear(s.medianMs(), 0.25) >= 0.8;
             const double span = static_cast<double>(p.lastNs - p.firstNs) / 1e9;
             h.rateHz = span > 0 ? static_cast<double>(s.count) / span : 0;
         }

@@ -261,6 +261,33 @@ private slots:
         QVERIFY2(hasFinding(r, QStringLiteral("sent to node 5, which never answers")), qPrintable(findings(r)));
     }
 
+    // Jitter is a cyclic PDO's (issue 37): a PDO sent on events, at irregular times, has no
+    // period to jitter around, so no "every 35.9 s jitters by 104.3 s" finding; a cyclic one
+    // whose period wanders by more than 20 % gets one.
+    void pdoJitterOnlyForCyclicPdos() {
+        Feed f;
+        // TPDO1 of node 2 on events: 12 sends at irregular times over 7 minutes.
+        double t = 0;
+        for (double gap : {1000.0, 90000.0, 300.0, 35000.0, 120000.0, 5000.0, 800.0, 60000.0, 2000.0, 100000.0, 40.0, 15000.0}) {
+            t += gap;
+            f.at(t, 0x182, {1, 2});
+        }
+        // TPDO1 of node 3 cyclic at 10 ms, every tenth interval 30 ms (a stall): 90 % on the
+        // period, standard deviation 6 ms of a 12 ms mean.
+        double c = 0;
+        for (int i = 0; i < 50; ++i) f.at(c += (i % 10 == 9 ? 30.0 : 10.0), 0x183, {1});
+        const HealthReport r = f.report();
+        QCOMPARE(r.pdos.size(), size_t(2));
+        QVERIFY(!r.pdos[0].cyclic);
+        QVERIFY(r.pdos[1].cyclic);
+        QVERIFY2(!hasFinding(r, QStringLiteral("of node 2 (0x182) every")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("TPDO1 of node 3 (0x183) every")), qPrintable(findings(r)));
+        const QList<QByteArray> lines = healthText(r, false).split('\n');
+        const auto line = std::find_if(lines.begin(), lines.end(), [](const QByteArray& l) { return l.contains("0x182"); });
+        QVERIFY(line != lines.end());
+        QVERIFY2(line->contains("event"), line->constData());
+    }
+
     void busLoadErrorsAndOtherFrames() {
         Feed f;
         // 100 classic 8-byte frames in the first second: (34 + 64) x 1.1 + 13 bits each.

@@ -148,7 +148,7 @@ QVariant HealthModel::pdoData(int row, int column, int role) const {
     case Rate: return QString::number(p.rateHz, 'f', 1);
     case PdoPeriod:
         return p.frames > 1 ? QStringLiteral("%1 / %2 / %3").arg(p.periodMinMs, 0, 'f', 2).arg(p.periodAvgMs, 0, 'f', 2).arg(p.periodMaxMs, 0, 'f', 2) : QString();
-    case Jitter: return QString::number(p.jitterMs, 'f', 3);
+    case Jitter: return p.cyclic ? QString::number(p.jitterMs, 'f', 3) : tr("event-driven");
     }
     return {};
 }
