@@ -82,7 +82,8 @@ private slots:
         QVERIFY(!report(w)->isVisible());
     }
 
-    // A text file that is no log gives an empty trace and says why, instead of nothing.
+    // A text file that is no log is refused (what was shown stays, issue 36) and the Trace dock
+    // says why, with the lines, instead of nothing.
     void noFramesIsExplained() {
         const QString path = dir_.filePath(QStringLiteral("notes.log"));
         QFile f(path);
@@ -93,10 +94,13 @@ private slots:
         w.setQuiet(true);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openByMenu(w, path));
+        auto name = answerFileDialog(path);
+        QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")));
+        QVERIFY(waitFor([&] { return name->answered(); }));
         QVERIFY(waitFor([&] { return report(w) && report(w)->isVisible(); }));
+        QVERIFY(!w.workspace()->loadJob());  // refused before anything was thrown away
         const QString text = reportText(w);
-        QVERIFY2(text.contains(QStringLiteral("No frames were found")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("notes.log: no CAN frame found")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("line 1:")) && text.contains(QStringLiteral("line 2:")), qPrintable(text));
         QCOMPARE(w.traceDock()->model()->rowCount(), 0);
     }
