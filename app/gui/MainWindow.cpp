@@ -12,6 +12,8 @@
 #include "app/gui/files/LastFolders.h"
 #include "app/gui/files/OpenFailure.h"
 #include "app/gui/files/RecentFiles.h"
+#include "app/gui/help/HelpMenu.h"
+#include "app/gui/help/HelpWindow.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
@@ -246,6 +248,7 @@ void MainWindow::buildMenus() {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));
     });
+    help::addHelpMenu(this);
 }
 
 void MainWindow::offerAndCleanJournals() {
@@ -390,6 +393,7 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
 }
 
 bool MainWindow::showView(const QString& name) {
+    if (name == u"help") return help::HelpWindow::open(this) != nullptr;
     if (name.startsWith(QLatin1String("wizard-"))) {
         wizard_ = openWizard(name.mid(7), workspace_, nodes_->selectedNode(), this);
         return wizard_ != nullptr;
