@@ -22,9 +22,11 @@ struct HelpMenu {
 }  // namespace
 
 void openGuideForFocus(QMainWindow* window) {
-    // The widget with the focus, or the active window (a wizard whose buttons have none).
-    const QWidget* where = QApplication::focusWidget();
-    if (!where) where = QApplication::activeWindow();
+    // Where the key went: the focus of the active window (a wizard is a window of its own), or
+    // that window when nothing in it has the focus.
+    const QWidget* where = QApplication::activeWindow();
+    if (where && where->focusWidget()) where = where->focusWidget();
+    if (!where) where = QApplication::focusWidget();
     HelpWindow::open(window, where && where != HelpWindow::of(window) ? sectionFor(where) : QString());
 }
 

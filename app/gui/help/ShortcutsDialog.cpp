@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QHeaderView>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -16,7 +17,11 @@
 namespace coscope::gui::help {
 
 namespace {
-QString shortcutText(QString text) { return text.remove(u'&').remove(QStringLiteral("…")).trimmed(); }
+// A menu text as read: without its accelerator ("&Quit", "結束(&Q)") and ellipsis.
+QString shortcutText(QString text) {
+    static const QRegularExpression accelerator(QStringLiteral("\\(&[^)]\\)"));
+    return text.remove(accelerator).remove(u'&').remove(QStringLiteral("…")).trimmed();
+}
 
 // The menu or dock an action is shown in (or belongs to).
 QString shortcutWhere(const QAction* a) {
@@ -38,7 +43,8 @@ QList<ShortcutsDialog::Entry> ShortcutsDialog::collect(const QWidget* window) {
         seen.insert(a);
         QStringList keys;
         for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
-        out.push_back({keys.join(QStringLiteral(", ")), shortcutText(a->text()), shortcutWhere(a)});
+        const QString text = shortcutText(a->text());
+        out.push_back({keys.join(QStringLiteral(", ")), text.isEmpty() ? shortcutText(a->toolTip()) : text, shortcutWhere(a)});
     }
     std::sort(out.begin(), out.end(), [](const Entry& x, const Entry& y) { return std::tie(x.where, x.action) < std::tie(y.where, y.action); });
     return out;
