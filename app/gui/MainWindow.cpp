@@ -9,6 +9,11 @@
 
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
+#include "app/gui/files/LastFolders.h"
+#include "app/gui/files/OpenFailure.h"
+#include "app/gui/files/RecentFiles.h"
+#include "app/gui/help/HelpMenu.h"
+#include "app/gui/help/HelpWindow.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
@@ -30,7 +35,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDragEnterEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -158,15 +162,16 @@ void MainWindow::buildMenus() {
     QStyle* st = style();
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->addAction(st->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open log…"), QKeySequence::Open, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open CAN log"), {}, readFilters());
+        const QString path = files::askOpenFile(this, files::kLogs, tr("Open CAN log"), readFilters());
         if (!path.isEmpty()) openLog(path);
     });
+    new RecentFilesMenu(file, tr("Recent &logs"), QLatin1String(RecentFilesMenu::kLogs), [this](const QString& path) { openLog(path); });
     file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save trace as…"), QKeySequence::Save, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters(true));
+        const QString path = files::askSaveFile(this, files::kLogs, tr("Save trace"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path);
     });
     file->addAction(tr("&Export filtered rows…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export filtered rows"), {}, readFilters(true));
+        const QString path = files::askSaveFile(this, files::kExports, tr("Export filtered rows"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
     file->addAction(tr("Export PDO layout as &DBC…"), this, [this] {
@@ -243,6 +248,7 @@ void MainWindow::buildMenus() {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));
     });
+    help::addHelpMenu(this);
 }
 
 void MainWindow::offerAndCleanJournals() {
@@ -358,12 +364,14 @@ bool MainWindow::openLog(const QString& path) {
     if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::OpenLog, quiet_)) return false;
     QString error;
     if (!workspace_->openLog(path, &error)) {
-        showError(error);
-        if (!quiet_) QMessageBox::warning(this, tr("Open log"), error);
+        showError(error.section(u'\n', 0, 0));
+        trace_->showLoadReport(error, true);  // stays in the Trace dock once the box is gone
+        if (!quiet_) showOpenFailed(this, path, error);
         return false;
     }
     loadReported_ = false;
     openedLogPath_ = QFileInfo(path).absoluteFilePath();
+    RecentList(QLatin1String(RecentFilesMenu::kLogs)).add(openedLogPath_);
     updateKeptJournals();
     return true;
 }
@@ -385,6 +393,7 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
 }
 
 bool MainWindow::showView(const QString& name) {
+    if (name == u"help") return help::HelpWindow::open(this) != nullptr;
     if (name.startsWith(QLatin1String("wizard-"))) {
         wizard_ = openWizard(name.mid(7), workspace_, nodes_->selectedNode(), this);
         return wizard_ != nullptr;
@@ -457,7 +466,7 @@ bool MainWindow::maybeSaveCapture(std::function<void()> then) {
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save: {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save trace"), {}, readFilters(true));
+        const QString path = files::askSaveFile(this, files::kLogs, tr("Save trace"), {}, readFilters(true));
         if (!path.isEmpty() && saveLog(path)) afterSave_ = std::move(then);
         return false;
     }
@@ -491,7 +500,10 @@ void MainWindow::refresh() {
         else if (!loadReported_) {
             loadReported_ = true;
             reportLoad(*load);
-            if (load->hasError()) showError(load->errorString());
+            if (load->hasError()) {
+                showError(load->errorString());
+                if (!quiet_) showReadFailed(this, load->path(), load->errorString(), workspace_->store() ? workspace_->store()->size() : 0);
+            }
             else if (load->diagnosticCount())
                 showError(tr("%1: %L2 frames, %L3 lines not understood — first: %4")
                               .arg(workspace_->sourceName())

@@ -4,6 +4,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/events/EventsModel.h"
+#include "app/gui/help/HelpWindow.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
@@ -32,6 +33,7 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"events") return w->eventsDock()->model()->rowCount() > 0;
     if (view == u"od") return w->odDock()->hasContent();
     if (view == u"plot") return w->plotDock()->hasContent();
+    if (view == u"help") return help::HelpWindow::of(w) && help::HelpWindow::of(w)->isVisible();
     if (view.startsWith(QLatin1String("wizard-"))) {
         // Opened by showStartView once nodes are known; ready when the wizard says so (property
         // "screenshotReady").
@@ -73,7 +75,9 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
             }
         }
         QApplication::processEvents();
-        QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard() : window;
+        QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard()
+                         : view == u"help" && help::HelpWindow::of(window)                  ? help::HelpWindow::of(window)
+                                                                                            : static_cast<QWidget*>(window);
         const bool ok = shown->grab().save(file, "PNG");
         std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
         QApplication::exit(ok ? 0 : 1);

@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
     const QCommandLineOption connectTo(QStringLiteral("connect"), QStringLiteral("Connect to a bus URL."), QStringLiteral("URL"));
     const QCommandLineOption logLevel(QStringLiteral("log-level"), QStringLiteral("trace, debug, info, warn, error, critical, off."), QStringLiteral("LEVEL"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Render the window to a PNG once the view has content, then exit."), QStringLiteral("FILE"));
-    const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, plot, events, console, or wizard-ID (a commissioning wizard: pdo, nodeid, ds402, ds402-homing, ds402-position)."), QStringLiteral("VIEW"));
+    const QCommandLineOption view(QStringLiteral("view"), QStringLiteral("The view to show first: trace, nodes, od, plot, events, console, help (the guide), or wizard-ID (a commissioning wizard: pdo, nodeid, ds402, ds402-homing, ds402-position)."), QStringLiteral("VIEW"));
     const QCommandLineOption lang(QStringLiteral("lang"), QStringLiteral("The UI language for this run: en, zh_TW or zh_CN (default: View > Language, else the system's)."), QStringLiteral("LANG"));
     parser.addOptions({simulate, connectTo, logLevel, screenshot, view, lang});
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("A CAN log to open (candump, ASC, BLF, TRC, pcap, CSV)."), QStringLiteral("[FILE]"));
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
         level = *parsed;
     }
     const QString viewName = parser.value(view);
-    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata")};
+    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata"), QStringLiteral("help")};
     for (const gui::WizardEntry& w : gui::wizardEntries()) {
         views << QStringLiteral("wizard-") + w.id;
         for (const QString& page : w.pages) views << QStringLiteral("wizard-%1-%2").arg(w.id, page);

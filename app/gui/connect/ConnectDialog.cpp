@@ -2,6 +2,7 @@
 #include "app/gui/connect/ConnectDialog.h"
 
 #include "app/gui/connect/RecentConnections.h"
+#include "app/gui/files/LastFolders.h"
 #include "core/can/BusUrl.h"
 #include "core/sim/SimNetwork.h"
 #include "core/sim/Personality.h"
@@ -10,7 +11,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -145,7 +145,7 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         replayPath_->setObjectName(QStringLiteral("replayPath"));
         auto* browse = new QPushButton(tr("Browse…"), w);
         connect(browse, &QPushButton::clicked, this, [this] {
-            const QString f = QFileDialog::getOpenFileName(this, tr("Log to replay"));
+            const QString f = files::askOpenFile(this, files::kLogs, tr("Log to replay"));
             if (!f.isEmpty()) replayPath_->setText(f);
         });
         h->addWidget(replayPath_, 1);

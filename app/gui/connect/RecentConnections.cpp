@@ -1,25 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/connect/RecentConnections.h"
 
-#include <QSettings>
+#include "app/gui/files/RecentFiles.h"
 
 namespace coscope::gui::RecentConnections {
 
 namespace {
-constexpr int kMax = 10;
-const char* const kKey = "connect/recent";
+// The same list model as recent logs and projects, under the key it always had.
+RecentList recent() { return RecentList(QStringLiteral("connect/recent"), 10); }
 }  // namespace
 
-QStringList list() { return QSettings().value(QLatin1String(kKey)).toStringList(); }
+QStringList list() { return recent().list(); }
 
-void add(const QString& url) {
-    QStringList l = list();
-    l.removeAll(url);
-    l.prepend(url);
-    while (l.size() > kMax) l.removeLast();
-    QSettings().setValue(QLatin1String(kKey), l);
-}
+void add(const QString& url) { recent().add(url); }
 
-void clear() { QSettings().remove(QLatin1String(kKey)); }
+void clear() { recent().clear(); }
 
 }  // namespace coscope::gui::RecentConnections

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/od/ObjectDictionaryDock.h"
 
+#include "app/gui/files/LastFolders.h"
 #include "app/gui/od/OdFilterModel.h"
 #include "app/gui/od/OdTreeModel.h"
 #include "app/gui/od/OdValueDelegate.h"
@@ -19,7 +20,6 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -83,12 +83,12 @@ void ObjectDictionaryDock::buildUi() {
     bar->addWidget(progress_);
     bar->addSeparator();
     export_ = bar->addAction(tr("Export DCF…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Export node %1 as DCF").arg(node_),
-                                                          QStringLiteral("node%1.dcf").arg(node_), tr("Device configuration (*.dcf)"));
+        const QString path = files::askSaveFile(this, files::kDictionaries, tr("Export node %1 as DCF").arg(node_),
+                                                       QStringLiteral("node%1.dcf").arg(node_), tr("Device configuration (*.dcf)"));
         if (!path.isEmpty()) exportDcf(path);
     });
     apply_ = bar->addAction(tr("Apply DCF…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Apply a DCF to node %1").arg(node_), {}, tr("Device configuration (*.dcf *.eds);;All files (*)"));
+        const QString path = files::askOpenFile(this, files::kDictionaries, tr("Apply a DCF to node %1").arg(node_), tr("Device configuration (*.dcf *.eds);;All files (*)"));
         if (!path.isEmpty()) applyDcf(path);
     });
     layout->addWidget(bar);

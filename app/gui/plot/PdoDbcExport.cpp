@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PdoDbcExport.h"
 
+#include "app/gui/files/LastFolders.h"
 #include "app/gui/session/Workspace.h"
 #include "dissectors/DbcExport.h"
 
 #include <QCoreApplication>
-#include <QFileDialog>
 #include <QSaveFile>
 
 #include <spdlog/spdlog.h>
@@ -52,7 +52,7 @@ void PdoDbcJob::run() {
 }
 
 QString askPdoDbcPath(QWidget* parent) {
-    QString path = QFileDialog::getSaveFileName(parent, PdoDbcExport::tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
+    QString path = files::askSaveFile(parent, files::kDbc, PdoDbcExport::tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
     if (!path.isEmpty() && !path.endsWith(QStringLiteral(".dbc"), Qt::CaseInsensitive)) path += QStringLiteral(".dbc");
     return path;
 }

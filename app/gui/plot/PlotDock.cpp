@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotDock.h"
 
+#include "app/gui/files/LastFolders.h"
 #include "app/gui/language/ObjectNameText.h"
 
 #include "app/gui/plot/PlotCsv.h"
@@ -13,7 +14,6 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QSplitter>
@@ -364,7 +364,7 @@ bool PlotDock::exportCsv(const QString& path, QString* error) {
 
 void PlotDock::exportDialog(const QString& kind) {
     const QString filter = kind == u"png" ? tr("PNG image (*.png)") : kind == u"pdf" ? tr("PDF document (*.pdf)") : tr("CSV (*.csv)");
-    QString path = QFileDialog::getSaveFileName(this, tr("Export plot"), QStringLiteral("plot.%1").arg(kind), filter);
+    QString path = files::askSaveFile(this, kind == u"csv" ? files::kExports : files::kPlotImages, tr("Export plot"), QStringLiteral("plot.%1").arg(kind), filter);
     if (path.isEmpty()) return;
     if (!path.endsWith(u'.' + kind, Qt::CaseInsensitive)) path += u'.' + kind;
     QString error;

@@ -3,6 +3,7 @@
 #include "app/gui/language/CoreText.h"
 
 #include "core/canopen/BusMaster.h"
+#include "core/logio/LogProbe.h"
 #include "core/canopen/DriveDisable.h"
 #include "core/canopen/GuardedDrives.h"
 #include "core/canopen/HeartbeatMonitor.h"
@@ -280,9 +281,26 @@ void Workspace::closeJournal() {
     journal_.reset();
 }
 
+namespace {
+// Why a file was not opened, naming it and where it failed (line or record numbers).
+QString probeErrorText(const QString& path, const logio::LogProbe& probe) {
+    if (!probe.error.isEmpty()) return probe.error;
+    QStringList lines{Workspace::tr("%1: no CAN frame found (read as %2)").arg(QFileInfo(path).fileName(), probe.format)};
+    for (const auto& d : probe.problems) lines << Workspace::tr("line %1: %2").arg(d.where).arg(d.message);
+    return lines.join(u'\n');
+}
+}  // namespace
+
 bool Workspace::openLog(const QString& path, QString* error) {
     if (!QFileInfo(path).isReadable()) {
-        if (error) *error = QStringLiteral("%1: cannot read the file").arg(path);
+        if (error) *error = tr("%1: cannot read the file").arg(path);
+        return false;
+    }
+    // Nothing is thrown away for a file that cannot be read as a log at all: the trace, nodes
+    // and signals shown stay until the new file's format, header and first frames are known good.
+    const logio::LogProbe probe = logio::probeLog(path);
+    if (!probe.usable) {
+        if (error) *error = probeErrorText(path, probe);
         return false;
     }
     reset();

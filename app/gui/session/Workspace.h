@@ -47,7 +47,9 @@ public:
     // Opening itself is asynchronous: see busStateChanged / errorOccurred.
     bool connectBus(const QString& url, QString* error);
     void disconnectBus();
-    // Starts loading a log file; progress via loadJob().
+    // Starts loading a log file; progress via loadJob(). A file that cannot be read as a log
+    // (unknown format, bad header, no frame but bad lines in its first part) is refused with the
+    // reason, naming the file and the lines, and what is shown stays (logio::probeLog).
     bool openLog(const QString& path, QString* error);
     // Empty trace, no source.
     void clear();

@@ -198,30 +198,31 @@ void TraceDock::buildToolbar(QWidget* host) {
     mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     mark->setToolTip(tr("Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump"));
     // F2 / Shift+F2 only while the focus is in the trace: elsewhere F2 edits (the Object Dictionary).
-    auto* nextMark = new QAction(this);
+    // Named, for Help ▸ Keyboard shortcuts.
+    auto* nextMark = new QAction(tr("Next bookmark"), this);
     nextMark->setShortcut(QKeySequence(Qt::Key_F2));
     nextMark->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     connect(nextMark, &QAction::triggered, this, [this] { gotoBookmark(true); });
-    auto* prevMark = new QAction(this);
+    auto* prevMark = new QAction(tr("Previous bookmark"), this);
     prevMark->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F2));
     prevMark->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     connect(prevMark, &QAction::triggered, this, [this] { gotoBookmark(false); });
     addAction(nextMark);
     addAction(prevMark);
     // Ctrl+F: to the find field; F3 / Shift+F3: find next / previous, while the focus is in this trace.
-    const auto shortcut = [this](QKeySequence::StandardKey key, auto slot) {
-        auto* a = new QAction(this);
+    const auto shortcut = [this](const QString& text, QKeySequence::StandardKey key, auto slot) {
+        auto* a = new QAction(text, this);
         a->setShortcuts(key);
         a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         connect(a, &QAction::triggered, this, slot);
         addAction(a);
     };
-    shortcut(QKeySequence::Find, [this] {
+    shortcut(tr("Find"), QKeySequence::Find, [this] {
         findEdit_->setFocus(Qt::ShortcutFocusReason);
         findEdit_->selectAll();
     });
-    shortcut(QKeySequence::FindNext, [this] { find(findEdit_->text(), true); });
-    shortcut(QKeySequence::FindPrevious, [this] { find(findEdit_->text(), false); });
+    shortcut(tr("Find next"), QKeySequence::FindNext, [this] { find(findEdit_->text(), true); });
+    shortcut(tr("Find previous"), QKeySequence::FindPrevious, [this] { find(findEdit_->text(), false); });
     row->addWidget(tb, 1);
     countLabel_ = new QLabel(host);
     countLabel_->setObjectName(QStringLiteral("traceCount"));

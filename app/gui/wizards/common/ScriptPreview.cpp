@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/wizards/common/ScriptPreview.h"
+#include "app/gui/files/LastFolders.h"
 #include "app/gui/language/CoreText.h"
 
-#include <QFileDialog>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -127,8 +127,8 @@ int ScriptPreview::rowCount() const { return table_->rowCount(); }
 void ScriptPreview::saveInteractively() {
     QString suggested = script_.title.isEmpty() ? QStringLiteral("commissioning") : script_.title;
     suggested.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("-"));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save as script"), suggested + QStringLiteral(".txt"),
-                                                      tr("Command scripts (*.txt);;All files (*)"));
+    const QString path = files::askSaveFile(this, files::kScripts, tr("Save as script"), suggested + QStringLiteral(".txt"),
+                                                   tr("Command scripts (*.txt);;All files (*)"));
     if (path.isEmpty()) return;
     QString error;
     if (!saveTo(path, &error)) {
