@@ -29,7 +29,7 @@
 namespace coscope::gui {
 
 namespace {
-// "program-download": the dialog of node 1's program download frozen mid-transfer (a 4 MiB
+// "program-download": the dialog of node 1's program download frozen mid-transfer (a 1 MiB
 // image of the virtual drives' format, block SDO). Opened once node 1 is known; ready while the
 // progress is between 35 % and 65 %.
 bool programDownloadMidway(MainWindow* w) {
@@ -39,7 +39,7 @@ bool programDownloadMidway(MainWindow* w) {
         const QString path = QDir::temp().filePath(QStringLiteral("coscope-drive-firmware-2.0.img"));
         QFile f(path);
         if (!f.open(QIODevice::WriteOnly)) return false;
-        QByteArray payload(4 * 1024 * 1024, Qt::Uninitialized);
+        QByteArray payload(1024 * 1024, Qt::Uninitialized);
         for (qsizetype i = 0; i < payload.size(); ++i) payload[i] = static_cast<char>((i * 7919) >> 3);
         f.write(sim::makeProgramImage(payload, QStringLiteral("2.0.0")));
         f.close();

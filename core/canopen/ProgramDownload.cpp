@@ -4,10 +4,14 @@
 #include "core/canopen/SdoAbort.h"
 
 #include <QPointer>
+#include <QStringList>
 #include <QTimer>
 #include <QtEndian>
 
 #include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
 
 namespace coscope::canopen {
 
@@ -15,6 +19,7 @@ namespace {
 // 1F51h program control values (CiA 302-3): 0 stop, 1 start, 2 reset, 3 clear.
 constexpr uint8_t kStop = 0, kStart = 1, kClear = 3;
 constexpr int kProgressEveryMs = 100;
+constexpr qint64 kSettleMs = 300;  // quiet time after a broken transfer before the next run
 
 QByteArray u8(uint8_t v) { return QByteArray(1, static_cast<char>(v)); }
 
@@ -143,10 +148,13 @@ void ProgramDownload::run(const ProgramDownloadRequest& request, StepCallback st
     spdlog::info("program download: node {} program {}, {} bytes", request.node, request.program, request.image.size());
     auto run = run_;
     QPointer<ProgramDownload> self(this);
-    // From the event loop: the caller returns from run() before any callback.
-    QMetaObject::invokeMethod(this, [self, run] {
+    // From the event loop: the caller returns from run() before any callback. Right after a
+    // broken transfer, answers the node still sends to the rest of it (a sub-block's ack after
+    // our abort) are let go by first, so none is taken for the answer to a new request.
+    const qint64 settle = sinceBrokenTransfer_.isValid() ? std::max<qint64>(0, kSettleMs - sinceBrokenTransfer_.elapsed()) : 0;
+    QTimer::singleShot(std::chrono::milliseconds(settle), this, [self, run] {
         if (self && self->run_ == run) self->next(run->req.readBefore ? ProgramStep::ReadBefore : ProgramStep::DisableDrive);
-    }, Qt::QueuedConnection);
+    });
 }
 
 void ProgramDownload::retry() {
@@ -230,6 +238,7 @@ void ProgramDownload::next(ProgramStep step) {
             r->out.seconds = double(r->clock.nsecsElapsed()) / 1e9;
             r->out.fellBackToSegmented = res.fellBackToSegmented;
             if (!res.ok) {
+                self->sinceBrokenTransfer_.start();
                 r->out.cancelled = r->cancelRequested;
                 return self->fail(ProgramStep::Download, res);
             }

@@ -112,6 +112,7 @@ private:
     StepCallback lastStep_;
     ProgressCallback lastProgress_;
     Done lastDone_;
+    QElapsedTimer sinceBrokenTransfer_;  // a 1F50h transfer ended by an abort (ours or the node's)
 };
 
 }  // namespace coscope::canopen

@@ -64,7 +64,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
         QVERIFY(waitForNodes(dock, 1));
 
-        QByteArray payload(1024 * 1024, Qt::Uninitialized);
+        QByteArray payload(256 * 1024, Qt::Uninitialized);
         for (qsizetype i = 0; i < payload.size(); ++i) payload[i] = static_cast<char>(i * 31 + (i >> 9));
         const QString path = dir_.filePath(QStringLiteral("drive-2.0.0.img"));
         QFile f(path);

@@ -104,11 +104,10 @@ private slots:
         QVERIFY2(r.err.contains(QStringLiteral("start program (1F51h:01 = 1)")), qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral("08000020")), qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral("nothing claimed")), qPrintable(r.err));
-        QCOMPARE(r.err.count(u'\n') >= 1, true);
         // The drive says why in 1F57h: data format unknown (2 << 1).
-        const auto st = cli({QStringLiteral("sdo"), QStringLiteral("read"), bus_, QStringLiteral("3"), QStringLiteral("0x1F57"), QStringLiteral("1")});
+        const auto st = cli({QStringLiteral("sdo"), QStringLiteral("read"), bus_, QStringLiteral("3"), QStringLiteral("1F57:01")});
         QVERIFY2(st.code == 0, qPrintable(st.err));
-        QVERIFY2(st.out.contains(QStringLiteral("0x00000004")) || st.out.contains(QStringLiteral(" 4")), qPrintable(st.out));
+        QVERIFY2(st.out.contains(QStringLiteral("04 00 00 00")), qPrintable(st.out));
     }
 };
 
