@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // coscope-cli dcf export / dcf apply: a node's actual values as a CiA 306 DCF (ParameterValue),
 // and a DCF written back to a node: plan first, write only with --yes, every entry reported.
+// dcf concise: a DCF as the concise DCF of CiA 302-3 (1F22h), offline.
 #include "app/cli/BusSession.h"
 #include "app/cli/CliVerb.h"
+#include "core/canopen/ConciseDcf.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/canopen/ServiceWait.h"
 #include "eds/DcfWriter.h"
 #include "eds/EdsReader.h"
 
 #include <QDateTime>
+#include <QFile>
 #include <QFileInfo>
 #include <QTextStream>
 
@@ -184,8 +187,50 @@ int runApply(const QStringList& args) {
     return Ok;
 }
 
+int runConcise(const QStringList& args) {
+    const QString verb = QStringLiteral("dcf concise");
+    QCommandLineParser p;
+    p.setApplicationDescription(QStringLiteral(
+        "Write the ParameterValue entries of a DCF as a concise DCF (CiA 302-3, the value of object 1F22h that a master writes to the node at "
+        "boot): UNSIGNED32 number of entries, then per entry UNSIGNED16 index, UNSIGNED8 sub-index, UNSIGNED32 size and the data, "
+        "little-endian. Holds what 'dcf apply --all' writes, in the same order. Sends nothing."));
+    p.addPositionalArgument(QStringLiteral("IN.dcf"), QStringLiteral("The DCF"));
+    p.addPositionalArgument(QStringLiteral("OUT.bin"), QStringLiteral("The concise DCF to write"));
+    const QCommandLineOption nodeOption{QStringLiteral("node"), QStringLiteral("Node-ID for $NODEID values (default: the DCF's [DeviceCommissioning] NodeID)."), QStringLiteral("NODE")};
+    const QCommandLineOption verbose{QStringLiteral("verbose"), QStringLiteral("List the entries and those left out, and why.")};
+    p.addOptions({nodeOption, verbose});
+    int code = 0;
+    if (!parseArgs(p, verb, args, &code)) return code;
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2) return usageError(verb, QStringLiteral("expects IN.dcf OUT.bin"));
+    eds::ReadResult dcf = eds::readDictionaryFile(pos[0]);
+    if (!dcf.usable) {
+        const QString first = dcf.diagnostics.empty() ? QStringLiteral("no object could be read") : dcf.diagnostics.front().toString();
+        return failure(verb, QStringLiteral("%1: not a usable DCF: %2").arg(pos[0], first));
+    }
+    std::optional<uint8_t> node;
+    if (p.isSet(nodeOption)) {
+        node = parseNodeId(p.value(nodeOption));
+        if (!node) return usageError(verb, QStringLiteral("node-ID '%1' must be 1-127").arg(p.value(nodeOption)));
+    } else if (dcf.dictionary.nodeId() >= 1 && dcf.dictionary.nodeId() <= 127) {
+        node = static_cast<uint8_t>(dcf.dictionary.nodeId());
+    } else {
+        return usageError(verb, QStringLiteral("%1 names no node-ID: give --node").arg(pos[0]));
+    }
+    const ApplyPlan plan = DeviceConfiguration::plan(*node, dcf.dictionary, nullptr, ApplyScope::AllValues);
+    const QByteArray bytes = canopen::conciseDcf(plan);
+    QFile f(pos[1]);
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) return failure(verb, QStringLiteral("%1: %2").arg(pos[1], f.errorString()));
+    QTextStream out(stdout);
+    if (p.isSet(verbose)) printPlan(out, plan, true);
+    out << pos[1] << ": " << plan.writes.size() << " entries, " << bytes.size() << " bytes for node " << *node << " (" << plan.skipped.size()
+        << " entries of the DCF left out" << (p.isSet(verbose) ? "" : "; --verbose lists them") << ")\n";
+    return Ok;
+}
+
 }  // namespace
 
+COSCOPE_CLI_VERB({QStringLiteral("dcf concise"), QStringLiteral("Write a DCF as a concise DCF (CiA 302-3, 1F22h)."), runConcise});
 COSCOPE_CLI_VERB({QStringLiteral("dcf export"), QStringLiteral("Save a node's actual values as a DCF."), runExport});
 COSCOPE_CLI_VERB({QStringLiteral("dcf apply"), QStringLiteral("Write a DCF's values to a node (plan, --dry-run, --yes)."), runApply});
 

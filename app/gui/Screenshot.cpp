@@ -9,12 +9,17 @@
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PlotDock.h"
+#include "app/gui/program/ProgramDownloadDialog.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
 #include "app/gui/trace/TraceView.h"
+#include "core/sim/ProgramImage.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QPointer>
 #include <QElapsedTimer>
 #include <QTableView>
 #include <QTimer>
@@ -23,6 +28,31 @@
 #include <memory>
 
 namespace coscope::gui {
+
+namespace {
+// "program-download": the dialog of node 1's program download frozen mid-transfer (a 1 MiB
+// image of the virtual drives' format, block SDO). Opened once node 1 is known; ready while the
+// progress is between 35 % and 65 %.
+bool programDownloadMidway(MainWindow* w) {
+    static QPointer<ProgramDownloadDialog> dialog;
+    if (!dialog) {
+        if (w->nodesDock()->model()->rowOfNode(1) < 0 || !w->workspace()->canTransmit()) return false;
+        const QString path = QDir::temp().filePath(QStringLiteral("coscope-drive-firmware-2.0.img"));
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly)) return false;
+        QByteArray payload(1024 * 1024, Qt::Uninitialized);
+        for (qsizetype i = 0; i < payload.size(); ++i) payload[i] = static_cast<char>((i * 7919) >> 3);
+        f.write(sim::makeProgramImage(payload, QStringLiteral("2.0.0")));
+        f.close();
+        dialog = w->nodesDock()->openProgramDownload(1);
+        if (!dialog) return false;
+        dialog->setImageFile(path);
+        dialog->startDownload(false);
+        return false;
+    }
+    return dialog->progressPermille() >= 350 && dialog->progressPermille() <= 650;
+}
+}  // namespace
 
 bool viewHasContent(MainWindow* w, const QString& view) {
     Workspace* ws = w->workspace();
@@ -34,6 +64,7 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"od") return w->odDock()->hasContent();
     if (view == u"plot") return w->plotDock()->hasContent();
     if (view == u"help") return help::HelpWindow::of(w) && help::HelpWindow::of(w)->isVisible();
+    if (view == u"program-download") return programDownloadMidway(w);
     if (view.startsWith(QLatin1String("wizard-"))) {
         // Opened by showStartView once nodes are known; ready when the wizard says so (property
         // "screenshotReady").
@@ -54,7 +85,9 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
         const bool ready = viewHasContent(window, view);
         if (ready && *readySince < 0) *readySince = clock->elapsed();
         // Settle 1.5 s after content appeared (more rows, nodes identified), or give up at 20 s.
-        if (!(ready && clock->elapsed() - *readySince > 1500) && clock->elapsed() < 20000) return;
+        // A transfer in progress is taken at once (it would be over after the settling).
+        const bool midway = view == u"program-download";
+        if (!(ready && (midway || clock->elapsed() - *readySince > 1500)) && clock->elapsed() < 20000) return;
         timer->stop();
         window->refresh();
         if (view == u"trace") {  // show a decoded frame in the details pane
@@ -78,6 +111,8 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
         QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard()
                          : view == u"help" && help::HelpWindow::of(window)                  ? help::HelpWindow::of(window)
                                                                                             : static_cast<QWidget*>(window);
+        if (midway)
+            if (auto* d = window->nodesDock()->findChild<ProgramDownloadDialog*>()) shown = d;
         const bool ok = shown->grab().save(file, "PNG");
         std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
         QApplication::exit(ok ? 0 : 1);

@@ -129,6 +129,24 @@ void SdoClient::cancelAll() {
     }
 }
 
+bool SdoClient::cancel(quint64 id) {
+    for (auto& [node, q] : queues_) {
+        if (q->active && q->active->result.id == id) {
+            abortTransfer(*q, sdoabort::GeneralError, QStringLiteral("cancelled"));
+            return true;
+        }
+        for (auto it = q->waiting.begin(); it != q->waiting.end(); ++it) {
+            if ((*it)->result.id != id) continue;
+            std::unique_ptr<Transfer> t = std::move(*it);
+            q->waiting.erase(it);
+            t->result.error = QStringLiteral("node %1 %2 %3: cancelled").arg(t->result.node).arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"), objectRef(t->result.index, t->result.sub));
+            if (t->done) t->done(t->result);
+            return true;
+        }
+    }
+    return false;
+}
+
 void SdoClient::pump(uint8_t node) {
     auto it = queues_.find(node);
     if (it == queues_.end()) return;
@@ -262,6 +280,7 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
     case Phase::DownloadSegment:
         if (f.command != SdoCommand::DownloadSegmentResponse) break;
         if (f.toggle != t.toggle) return abortTransfer(q, sdoabort::ToggleBit, QStringLiteral("toggle bit not alternated in a download segment response"));
+        if (t.options.progress) t.options.progress(std::min(t.offset, t.data.size()), t.data.size());
         if (t.offset >= t.data.size()) return finish(q, true);
         t.toggle = !t.toggle;
         sendNextDownloadSegment(q);
@@ -398,6 +417,7 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
         if (f.ackSeq > t.seq) return abortTransfer(q, sdoabort::InvalidSequence, QStringLiteral("acknowledged segment %1 of %2 sent").arg(f.ackSeq).arg(t.seq));
         const bool allAcked = t.lastSent && f.ackSeq == t.seq;
         t.offset = std::min<qsizetype>(t.offset + qsizetype(f.ackSeq) * kSegment, t.data.size());
+        if (t.options.progress) t.options.progress(t.offset, t.data.size());
         if (allAcked) {
             const qsizetype size = t.data.size();
             const int lastLen = size == 0 ? 0 : static_cast<int>((size - 1) % kSegment) + 1;

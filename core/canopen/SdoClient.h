@@ -26,6 +26,9 @@ struct SdoOptions {
     Protocol protocol = Protocol::Auto;
     int timeoutMs = 0;        // per response; 0 = the client's default (1 s)
     uint8_t blockSize = 127;  // segments per sub-block the client accepts (block upload)
+    // Download: called with the bytes the server confirmed so far and the total, after each
+    // confirmed segment or sub-block (on the client's thread; throttle in the caller).
+    std::function<void(qint64 done, qint64 total)> progress;
 };
 
 // The outcome of one transfer. `error` is one line naming the node and object, e.g.
@@ -77,6 +80,10 @@ public:
     // Aborts every active and queued transfer (active ones with abort code 08000000h to the
     // server); each callback reports "cancelled".
     void cancelAll();
+    // Cancels one transfer: an active one is aborted with 08000000h (general error: CiA 301
+    // §7.2.4.3.17 has no code of its own for a client that gives up), a queued one is dropped;
+    // its callback reports "cancelled". False when the id is not pending.
+    bool cancel(quint64 id);
     int pendingCount() const;
 
     MasterContext& context() const { return context_; }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 namespace coscope::sim {
 
@@ -24,6 +25,9 @@ struct SdoFaults {
     // While set, block transfers are refused with abort 05040001h (command specifier not valid
     // or unknown, CiA 301 §7.2.4.3.17): the server behaves like one without block support.
     bool declineBlock = false;
+    // While set, a segmented or block download (of any object) is aborted by the server with
+    // the code once it holds at least `bytes` of it: a device that gives up half-way.
+    std::optional<std::pair<int, uint32_t>> abortDownloadAfter;
     // While set, any request for (index, sub) is aborted with the code.
     std::optional<std::tuple<uint16_t, uint8_t, uint32_t>> abortOn;
 };

@@ -14,6 +14,7 @@ using namespace canopen;
 namespace {
 constexpr int64_t kTransferTimeoutNs = 2'000'000'000;  // server gives up on a silent client
 constexpr uint8_t kServerBlockSize = 127;              // segments per sub-block (CiA 301: 1-127)
+constexpr int kMaxDownload = 16 * 1024 * 1024;         // the largest value taken (a program image)
 }  // namespace
 
 SdoServer::SdoServer(VirtualDevice& device) : dev_(device) {}
@@ -129,8 +130,12 @@ void SdoServer::onRequest(const CanFrame& f, int64_t nowNs) {
             return;
         }
         buffer_.append(r.data);
-        if (buffer_.size() > VirtualDevice::kTestDomainSize * 4) {
+        if (buffer_.size() > kMaxDownload) {
             abort(sdoabort::OutOfMemory);
+            return;
+        }
+        if (faults.abortDownloadAfter && buffer_.size() >= faults.abortDownloadAfter->first) {
+            abort(faults.abortDownloadAfter->second);
             return;
         }
         bool t = toggle_;
@@ -212,6 +217,10 @@ void SdoServer::onRequest(const CanFrame& f, int64_t nowNs) {
             ++seq_;
             buffer_.append(r.data.left(7));
             if (r.last) lastSegmentSeen_ = true;
+            if (faults.abortDownloadAfter && buffer_.size() >= faults.abortDownloadAfter->first) {
+                abort(faults.abortDownloadAfter->second);
+                return;
+            }
         }
         // End of the sub-block: blksize segments or the last one; ackseq = last in-order segment.
         if (r.seqno >= blockSize_ || r.last) {

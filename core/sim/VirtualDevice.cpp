@@ -9,6 +9,7 @@
 #include "core/sim/HeartbeatConsumer.h"
 #include "core/sim/LssSlave.h"
 #include "core/sim/PdoEngine.h"
+#include "core/sim/ProgramFlash.h"
 #include "core/sim/SdoServer.h"
 
 #include <spdlog/spdlog.h>
@@ -81,6 +82,8 @@ VirtualDevice::VirtualDevice(uint8_t nodeId, od::ObjectDictionary dictionary, Pe
     bitRate_ = pendingBitRate_ = storedBitRate_ = personality_.defaultBitRate;
     serial_ = 0x51000000u + nodeId;
     addTestDomain();
+    program_ = std::make_unique<ProgramFlash>(*this);
+    program_->addObjects(dictionary_);
     sdo_ = std::make_unique<SdoServer>(*this);
     pdo_ = std::make_unique<PdoEngine>(*this);
     lss_ = std::make_unique<LssSlave>(*this);
@@ -142,6 +145,7 @@ void VirtualDevice::loadDefaults(bool communicationOnly) {
         }
     }
     if (auto* serial = valueSlot(0x1018, 4); serial && serial->toUInt64().value_or(0) == 0) *serial = od::Value::unsignedInt(serial_);
+    program_->publish();  // the program is in flash: no reset changes it
 }
 
 void VirtualDevice::applyStored(bool communicationOnly) {
@@ -230,6 +234,7 @@ uint32_t VirtualDevice::writeFromSdo(uint16_t index, uint8_t sub, const QByteArr
     const int size = od::byteSize(e->dataType);
     if (size > 0 && bytes.size() > size) return abortcode::LengthTooHigh;
     if (size > 0 && bytes.size() < size) return abortcode::LengthTooLow;
+    if (ProgramFlash::handles(index)) return program_->write(index, sub, bytes);
     od::ValueResult r = od::Value::decode(e->dataType, bytes);
     if (!r.ok()) return abortcode::TypeMismatch;
     const od::Limits limits = e->limits();
@@ -508,6 +513,10 @@ void VirtualDevice::tick(int64_t nowNs) {
     lss_->tick(nowNs);
     if (nodeId_ == 0xFF) return;
     sdo_->tick(nowNs);
+    if (program_->takeResetRequest()) {
+        resetNode(nowNs);  // into the program just started (CiA 302-3): boot-up follows
+        return;
+    }
     heartbeat_->tick(nowNs);
     const auto hbMs = int64_t(value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0));
     if (hbMs > 0 && nowNs >= nextHeartbeatNs_) {

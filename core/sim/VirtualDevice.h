@@ -25,6 +25,7 @@ class LssSlave;
 class HeartbeatConsumer;
 class Ds402Drive;
 class DexmartMotor;
+class ProgramFlash;
 
 // A fault injected into a drive: EMCY error code (also put in 603Fh) and vendor alarm number
 // (EMCY manufacturer bytes per the vendor's layout). axis: 0 = first axis/motor M1, 1 = M2.
@@ -56,6 +57,8 @@ struct DriveFault {
 //    A vendor parameter survives a power cycle when the vendor saves it on write or after a
 //    1010h "save". A node that was LSS-unconfigured boots with its new node-ID when switched
 //    back to LSS waiting state (CiA 305 §6.3.2).
+//  - Program download (CiA 302-3): 1F50h/1F51h/1F56h/1F57h and 100Ah as ProgramFlash.h says,
+//    with the image format of ProgramImage.h; a started program resets the node.
 //  - 1018h:04 serial number is 0 in the bundled dictionaries; a virtual device uses
 //    0x51000000 + its first node-ID so LSS can tell devices apart.
 class VirtualDevice : public SimNode {
@@ -125,6 +128,9 @@ public:
     // DEXMART DEV motor M1 (0) / M2 (1) driven by the Multi-Drive objects (nullptr otherwise).
     DexmartMotor* motor(int m);
 
+    // The program download objects (CiA 302-3) and the running program.
+    ProgramFlash& programFlash() { return *program_; }
+
     uint32_t serialNumber() const { return serial_; }
     HeartbeatConsumer& heartbeatConsumer() { return *heartbeat_; }
 
@@ -182,6 +188,7 @@ private:
     std::unique_ptr<PdoEngine> pdo_;
     std::unique_ptr<LssSlave> lss_;
     std::unique_ptr<HeartbeatConsumer> heartbeat_;  // 1016h
+    std::unique_ptr<ProgramFlash> program_;         // 1F50h-1F57h
     std::vector<std::unique_ptr<Ds402Drive>> drives_;
     std::vector<std::unique_ptr<DexmartMotor>> motors_;
 };

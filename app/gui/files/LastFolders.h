@@ -17,6 +17,7 @@ inline constexpr char kDictionaries[] = "dictionaries";  // DCF/EDS exported or 
 inline constexpr char kPlotImages[] = "plot-images";     // plot PNG/PDF
 inline constexpr char kScripts[] = "scripts";            // wizard command scripts
 inline constexpr char kDbc[] = "dbc";                    // PDO layouts as DBC
+inline constexpr char kPrograms[] = "programs";          // program (firmware) images
 
 // Where a dialog for `kind` starts: the folder of the last file of that kind, while it exists;
 // else the user's Documents folder, else home (never the process's working folder).
@@ -27,7 +28,8 @@ void rememberFolder(const QString& kind, const QString& chosenPath);
 // QFileDialog::getOpenFileName / getSaveFileName starting in startFolder(kind) (a save proposes
 // `suggestedName` there); the chosen file's folder is remembered. Empty when cancelled.
 QString askOpenFile(QWidget* parent, const QString& kind, const QString& caption, const QString& filter = {});
+// `selectedFilter`, when given, receives the filter the user chose.
 QString askSaveFile(QWidget* parent, const QString& kind, const QString& caption, const QString& suggestedName = {},
-                    const QString& filter = {});
+                    const QString& filter = {}, QString* selectedFilter = nullptr);
 
 }  // namespace coscope::gui::files

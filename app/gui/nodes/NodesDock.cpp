@@ -7,6 +7,7 @@
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/MenuTitle.h"
+#include "app/gui/program/ProgramDownloadDialog.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/HeartbeatMonitor.h"
 #include "core/canopen/MasterContext.h"
@@ -81,10 +82,16 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
     errorControl_ = new QAction(tr("Heartbeat and guarding…"), this);
     errorControl_->setObjectName(QStringLiteral("errorControlAction"));
     connect(errorControl_, &QAction::triggered, this, &NodesDock::editErrorControl);
+    program_ = new QAction(tr("Download program…"), this);
+    program_->setObjectName(QStringLiteral("programDownloadAction"));
+    connect(program_, &QAction::triggered, this, [this] {
+        if (selectedNode() > 0) openProgramDownload(selectedNode());
+    });
 
     connect(view_, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
         updateEnabled();
         QMenu menu(this);
+        menu.setToolTipsVisible(true);  // why an entry is disabled
         const int node = selectedNode();
         addMenuTitle(menu, node > 0 ? tr("Node %1").arg(node) : tr("All nodes"));
         for (QAction* a : commands_)
@@ -93,6 +100,7 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         menu.addAction(identify_);
         menu.addAction(assign_);
         menu.addAction(errorControl_);
+        menu.addAction(program_);
         menu.addSeparator();
         menu.addAction(scan_);
         if (!workspace_->canTransmit())
@@ -143,6 +151,27 @@ void NodesDock::updateEnabled() {
     }
     assign_->setEnabled(selectedNode() > 0);
     errorControl_->setEnabled(selectedNode() > 0 && workspace_->heartbeatMonitor());
+    program_->setEnabled(can && selectedNode() > 0);
+    const QString programWhy = workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a program download would transmit")
+                               : !can                                                 ? tr("Connect to a bus first")
+                               : selectedNode() <= 0                                  ? tr("Select a node first")
+                                                                                      : tr("Load a new program (firmware) into the node: CiA 302-3 program download");
+    program_->setStatusTip(programWhy);
+    program_->setToolTip(programWhy);
+}
+
+ProgramDownloadDialog* NodesDock::openProgramDownload(int node) {
+    if (node <= 0 || !workspace_->canTransmit()) return nullptr;
+    if (programDialog_ && (programDialog_->node() == node || programDialog_->isDownloading())) {
+        programDialog_->raise();
+        programDialog_->activateWindow();
+        return programDialog_;
+    }
+    delete programDialog_;
+    programDialog_ = new ProgramDownloadDialog(workspace_, node, this);
+    programDialog_->setAttribute(Qt::WA_DeleteOnClose);
+    programDialog_->open();
+    return programDialog_;
 }
 
 void NodesDock::editErrorControl() {

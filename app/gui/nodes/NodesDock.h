@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QDockWidget>
+#include <QPointer>
 
 #include <functional>
 #include <map>
@@ -15,6 +16,7 @@ namespace coscope::gui {
 
 class NodeScanner;
 class NodesModel;
+class ProgramDownloadDialog;
 class Workspace;
 
 // The Nodes dock: nodes seen (boot-up, heartbeat, EMCY, SDO) or scanned, with a context menu
@@ -37,6 +39,11 @@ public:
     QAction* scanAction() const { return scan_; }
     // Context menu ▸ Heartbeat and guarding…: how CoScope watches the selected node.
     QAction* errorControlAction() const { return errorControl_; }
+    // Context menu ▸ Download program…: the program download dialog (CiA 302-3) for the
+    // selected node; disabled with the reason on a listen-only bus.
+    QAction* programDownloadAction() const { return program_; }
+    // Opens the dialog for `node` (window-modal, not blocking); the one open dialog is reused.
+    ProgramDownloadDialog* openProgramDownload(int node);
     // Applies a choice of the dialog to `node` (canopen::HeartbeatMonitor); false with a message
     // when it cannot (node guarding on a listen-only bus).
     bool watchNode(int node, int consumerTimeMs, int guardTimeMs, int lifeTimeFactor);
@@ -85,6 +92,8 @@ private:
     QAction* identify_ = nullptr;
     QAction* assign_ = nullptr;
     QAction* errorControl_ = nullptr;
+    QAction* program_ = nullptr;
+    QPointer<ProgramDownloadDialog> programDialog_;
     bool autoConfirm_ = false;
     bool asking_ = false;  // an NMT question is being prepared or shown
     QString lastConfirmation_;

@@ -83,8 +83,13 @@ void ObjectDictionaryDock::buildUi() {
     bar->addWidget(progress_);
     bar->addSeparator();
     export_ = bar->addAction(tr("Export DCF…"), this, [this] {
-        const QString path = files::askSaveFile(this, files::kDictionaries, tr("Export node %1 as DCF").arg(node_),
-                                                       QStringLiteral("node%1.dcf").arg(node_), tr("Device configuration (*.dcf)"));
+        // The format by the filter: a DCF (CiA 306) or a concise DCF (CiA 302-3, 1F22h) as *.bin.
+        const QString concise = tr("Concise DCF, CiA 302-3 (*.bin)");
+        QString filter;
+        QString path = files::askSaveFile(this, files::kDictionaries, tr("Export node %1 as DCF").arg(node_), QStringLiteral("node%1.dcf").arg(node_),
+                                          tr("Device configuration (*.dcf)") + QStringLiteral(";;") + concise, &filter);
+        if (filter == concise && !path.isEmpty() && !path.endsWith(QStringLiteral(".bin"), Qt::CaseInsensitive))
+            path = (path.endsWith(QStringLiteral(".dcf"), Qt::CaseInsensitive) ? path.chopped(4) : path) + QStringLiteral(".bin");
         if (!path.isEmpty()) exportDcf(path);
     });
     apply_ = bar->addAction(tr("Apply DCF…"), this, [this] {

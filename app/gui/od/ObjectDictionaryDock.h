@@ -78,6 +78,7 @@ public:
     bool isBusy() const;
     bool writeEntry(uint16_t index, uint8_t sub, const od::Value& value);
     bool writeEntryText(uint16_t index, uint8_t sub, const QString& text);
+    // A path ending in .bin gets the concise DCF (CiA 302-3, 1F22h) of the values instead.
     bool exportDcf(const QString& path);
     bool applyDcf(const QString& path);
     void assignDictionary(const QString& name);

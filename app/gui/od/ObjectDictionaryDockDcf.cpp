@@ -5,11 +5,13 @@
 
 #include "app/gui/od/DcfApplyDialog.h"
 #include "app/gui/od/OdTreeModel.h"
+#include "core/canopen/ConciseDcf.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "eds/DcfWriter.h"
 #include "eds/EdsReader.h"
 
 #include <QDateTime>
+#include <QFile>
 #include <QFileInfo>
 #include <QProgressBar>
 
@@ -34,6 +36,18 @@ bool ObjectDictionaryDock::writeDcfFile(const QString& path) {
     out.fileInfo.modifiedBy = QStringLiteral("CoScope");
     out.fileInfo.description = QStringLiteral("Actual values of node %1 (%2)").arg(node_).arg(dictName_);
     QString error;
+    if (path.endsWith(QStringLiteral(".bin"), Qt::CaseInsensitive)) {
+        // Concise DCF (CiA 302-3, 1F22h) of the values read: what "Apply DCF" would write.
+        const canopen::ApplyPlan plan = canopen::DeviceConfiguration::plan(static_cast<uint8_t>(node_), out, nullptr, canopen::ApplyScope::AllValues);
+        const QByteArray bytes = canopen::conciseDcf(plan);
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) {
+            showMessage(tr("Export of node %1 failed: %2").arg(node_).arg(f.errorString()), true);
+            return false;
+        }
+        showMessage(tr("Node %1: concise DCF with %2 entries (%3 bytes) exported to %4").arg(node_).arg(plan.writes.size()).arg(bytes.size()).arg(QFileInfo(path).fileName()));
+        return true;
+    }
     if (!eds::DcfWriter::writeFile(out, path, &error)) {
         showMessage(tr("Export of node %1 failed: %2").arg(node_).arg(error), true);
         return false;
