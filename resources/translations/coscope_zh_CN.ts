@@ -2,6 +2,41 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>AboutBox</name>
+    <message>
+        <source>CANopen bus analyzer and servo-drive commissioning tool.</source>
+        <translation>CANopen 总线分析与伺服驱动器调试工具。</translation>
+    </message>
+    <message>
+        <source>Version %1, source revision %2, built with Qt %3 (running on Qt %4).</source>
+        <translation>版本 %1，源代码修订 %2，使用 Qt %3 构建（运行于 Qt %4）。</translation>
+    </message>
+    <message>
+        <source>CoScope is free software under the GNU General Public License, version 3 or later (GPL-3.0-or-later), and comes with no warranty.</source>
+        <translation>CoScope 是按 GNU 通用公共许可证第 3 版或更高版本（GPL-3.0-or-later）发布的自由软件，不提供任何担保。</translation>
+    </message>
+    <message>
+        <source>It is built on:</source>
+        <translation>它基于以下软件构建：</translation>
+    </message>
+    <message>
+        <source>Qt, under the GNU Lesser General Public License version 3 (LGPLv3)</source>
+        <translation>Qt，按 GNU 宽通用公共许可证第 3 版（LGPLv3）</translation>
+    </message>
+    <message>
+        <source>QCustomPlot, under the GNU General Public License version 3 (GPLv3)</source>
+        <translation>QCustomPlot，按 GNU 通用公共许可证第 3 版（GPLv3）</translation>
+    </message>
+    <message>
+        <source>spdlog and fmt, under the MIT license</source>
+        <translation>spdlog 与 fmt，按 MIT 许可证</translation>
+    </message>
+    <message>
+        <source>About CoScope</source>
+        <translation>关于 CoScope</translation>
+    </message>
+</context>
+<context>
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
@@ -3019,6 +3054,10 @@
         <source>Z pulse searched in the positive direction</source>
         <translation>正向搜索 Z 相信号</translation>
     </message>
+    <message>
+        <source>No reason given</source>
+        <translation>未说明原因</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3379,6 +3418,29 @@
     </message>
 </context>
 <context>
+    <name>HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>CoScope &amp;guide</source>
+        <translation>CoScope 使用指南(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;About CoScope</source>
+        <translation>关于 CoScope(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+</context>
+<context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
@@ -3447,6 +3509,29 @@ Differs from the default</source>
 Bits on: %1</source>
         <translation>
 已置位的位：%1</translation>
+    </message>
+</context>
+<context>
+    <name>OpenFailure</name>
+    <message>
+        <source>Open log</source>
+        <translation>打开日志文件</translation>
+    </message>
+    <message>
+        <source>%1 could not be opened as a CAN log.</source>
+        <translation>无法将 %1 作为 CAN 日志文件打开。</translation>
+    </message>
+    <message>
+        <source>Nothing was changed: the trace, nodes and signals shown are kept.</source>
+        <translation>没有任何更改：当前显示的跟踪、节点与信号都保留。</translation>
+    </message>
+    <message>
+        <source>Reading %1 stopped at an error.</source>
+        <translation>读取 %1 时因错误而停止。</translation>
+    </message>
+    <message>
+        <source>The %L1 frames read before it are shown.</source>
+        <translation>显示错误之前读到的 %L1 帧。</translation>
     </message>
 </context>
 <context>
@@ -5604,6 +5689,10 @@ Arm the position move?</source>
         <source>%1 (no consumer)</source>
         <translation>%1（无消费者）</translation>
     </message>
+    <message>
+        <source>event-driven</source>
+        <translation>事件驱动</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HeartbeatGuardQuestion</name>
@@ -5773,10 +5862,6 @@ Arm the position move?</source>
         <translation>无法连接到 %1：%2</translation>
     </message>
     <message>
-        <source>Open log</source>
-        <translation>打开日志文件</translation>
-    </message>
-    <message>
         <source>A save is already running</source>
         <translation>已有一个保存作业在运行</translation>
     </message>
@@ -5870,6 +5955,10 @@ Arm the position move?</source>
     <message>
         <source>An export is already running</source>
         <translation>已有一项导出正在进行</translation>
+    </message>
+    <message>
+        <source>Recent &amp;logs</source>
+        <translation>最近的日志文件(&amp;L)</translation>
     </message>
 </context>
 <context>
@@ -6553,6 +6642,22 @@ Frame: %3</source>
         <source>Node %1 is no longer watched</source>
         <translation>节点 %1 不再监视</translation>
     </message>
+    <message>
+        <source>Download program…</source>
+        <translation>下载程序…</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: a program download would transmit</source>
+        <translation>仅监听总线：程序下载需要发送报文</translation>
+    </message>
+    <message>
+        <source>Select a node first</source>
+        <translation>请先选择节点</translation>
+    </message>
+    <message>
+        <source>Load a new program (firmware) into the node: CiA 302-3 program download</source>
+        <translation>将新程序（固件）载入节点：CiA 302-3 程序下载</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodesModel</name>
@@ -7068,6 +7173,14 @@ SDO 下载 %n 字节：%1</numerusform>
     <message>
         <source>Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; read them again.</source>
         <translation>节点 %1 现在以节点 ID %2 应答：显示节点 %2。在节点 %1 读取的值已丢弃；请重新读取。</translation>
+    </message>
+    <message>
+        <source>Concise DCF, CiA 302-3 (*.bin)</source>
+        <translation>精简 DCF，CiA 302-3 (*.bin)</translation>
+    </message>
+    <message>
+        <source>Node %1: concise DCF with %2 entries (%3 bytes) exported to %4</source>
+        <translation>节点 %1：含 %2 个条目（%3 字节）的精简 DCF 已导出至 %4</translation>
     </message>
 </context>
 <context>
@@ -7944,6 +8057,213 @@ Make sure the axis is free to move. Arm?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProgramDownloadDialog</name>
+    <message>
+        <source>Download program to node %1</source>
+        <translation>下载程序到节点 %1</translation>
+    </message>
+    <message>
+        <source>Program image file</source>
+        <translation>程序映像文件</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>浏览…</translation>
+    </message>
+    <message>
+        <source>Program file:</source>
+        <translation>程序文件：</translation>
+    </message>
+    <message>
+        <source>The program number: sub-index of 1F50h program data and 1F51h program control (CiA 302-3)</source>
+        <translation>程序编号：1F50h 程序数据与 1F51h 程序控制的子索引（CiA 302-3）</translation>
+    </message>
+    <message>
+        <source>Program number:</source>
+        <translation>程序编号：</translation>
+    </message>
+    <message>
+        <source>Block transfer (segmented when the node declines it)</source>
+        <translation>块传输（节点不支持时改用分段传输）</translation>
+    </message>
+    <message>
+        <source>Start the program after the download (the node resets)</source>
+        <translation>下载后启动程序（节点会复位）</translation>
+    </message>
+    <message>
+        <source>What the node reports now</source>
+        <translation>节点当前报告的内容</translation>
+    </message>
+    <message>
+        <source>Software version (100Ah):</source>
+        <translation>软件版本（100Ah）：</translation>
+    </message>
+    <message>
+        <source>Software identification (1F56h):</source>
+        <translation>软件识别码（1F56h）：</translation>
+    </message>
+    <message>
+        <source>Flash status (1F57h):</source>
+        <translation>闪存状态（1F57h）：</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>重新读取</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>下载</translation>
+    </message>
+    <message>
+        <source>Cancel download</source>
+        <translation>取消下载</translation>
+    </message>
+    <message>
+        <source>Program image for node %1</source>
+        <translation>节点 %1 的程序映像文件</translation>
+    </message>
+    <message>
+        <source>Program images (*.img *.bin *.hex);;All files (*)</source>
+        <translation>程序映像文件 (*.img *.bin *.hex);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
+        <translation>总线已关闭：不对节点的程序做任何保证。</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: a program download would transmit</source>
+        <translation>仅监听总线：程序下载需要发送报文</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first</source>
+        <translation>请先连接到总线</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>未读取</translation>
+    </message>
+    <message>
+        <source>Download again (from the start)</source>
+        <translation>重新下载（从头开始）</translation>
+    </message>
+    <message>
+        <source>Node %1 stops its application for the download (1F51h = 0): a motor it drives is not controlled until the new program has started.</source>
+        <translation>节点 %1 下载期间会停止其应用程序（1F51h = 0）：在新程序启动前，它所驱动的电机不受控制。</translation>
+    </message>
+    <message>
+        <source>CoScope enabled %1: it is disabled first (6040h = 0).</source>
+        <translation>CoScope 已使能 %1：会先将其断开电压（6040h = 0）。</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>读取中…</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Reading the program state (1F56h, 1F57h, 100Ah)</source>
+        <translation>读取程序状态（1F56h、1F57h、100Ah）</translation>
+    </message>
+    <message>
+        <source>Disabling the drive (6040h = 0)</source>
+        <translation>断开驱动器电压（6040h = 0）</translation>
+    </message>
+    <message>
+        <source>Stopping the program (1F51h:%1 = 0)</source>
+        <translation>停止程序（1F51h:%1 = 0）</translation>
+    </message>
+    <message>
+        <source>Clearing the program (1F51h:%1 = 3)</source>
+        <translation>清除程序（1F51h:%1 = 3）</translation>
+    </message>
+    <message>
+        <source>Downloading the program data (1F50h:%1)</source>
+        <translation>下载程序数据（1F50h:%1）</translation>
+    </message>
+    <message>
+        <source>Starting the program (1F51h:%1 = 1)</source>
+        <translation>启动程序（1F51h:%1 = 1）</translation>
+    </message>
+    <message>
+        <source>Waiting for the node&apos;s boot-up</source>
+        <translation>等待节点的启动报文</translation>
+    </message>
+    <message>
+        <source>Reading the new program state</source>
+        <translation>读取新程序状态</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>larger than 16 MiB</source>
+        <translation>大于 16 MiB</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 为空。</translation>
+    </message>
+    <message>
+        <source>Download %1 (%2 bytes) into program %3 of node %4?</source>
+        <translation>要将 %1（%2 字节）下载到节点 %4 的程序 %3 吗？</translation>
+    </message>
+    <message>
+        <source>The node stops its application (1F51h = 0) and its program is replaced. If the download fails, the node may have no valid program until a download succeeds.</source>
+        <translation>节点会停止其应用程序（1F51h = 0），其程序将被替换。若下载失败，在下载成功之前节点可能没有有效的程序。</translation>
+    </message>
+    <message>
+        <source>CoScope disables %1 first (6040h = 0).</source>
+        <translation>CoScope 会先断开 %1 的电压（6040h = 0）。</translation>
+    </message>
+    <message>
+        <source>Then the node starts the new program and resets (boot-up).</source>
+        <translation>接着节点会启动新程序并复位（启动报文）。</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 bytes, %L3 KiB/s</source>
+        <translation>%L1 / %L2 字节，%L3 KiB/s</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Done: node %1 runs the new program. Software version %2 → %3, software identification %4 → %5.</source>
+        <translation>完成：节点 %1 正在运行新程序。软件版本 %2 → %3，软件识别码 %4 → %5。</translation>
+    </message>
+    <message>
+        <source>Downloaded; the program was not started (node %1 stays stopped).</source>
+        <translation>已下载；程序未启动（节点 %1 保持停止）。</translation>
+    </message>
+    <message>
+        <source>%L1 bytes in %L2 s.</source>
+        <translation>%L1 字节，耗时 %L2 秒。</translation>
+    </message>
+    <message>
+        <source>The node&apos;s program was not touched.</source>
+        <translation>节点的程序未被改动。</translation>
+    </message>
+    <message>
+        <source>Nothing is claimed: the node may hold no valid program. Download again to start over from the beginning.</source>
+        <translation>不做任何保证：节点可能没有有效的程序。请重新下载，从头开始。</translation>
+    </message>
+    <message>
+        <source>Cancelled at “%1”: %2</source>
+        <translation>已在“%1”取消：%2</translation>
+    </message>
+    <message>
+        <source>Failed at “%1”: %2</source>
+        <translation>在“%1”失败：%2</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -8056,6 +8376,21 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>This signal cannot be read: %1.</source>
         <translation>无法读取此信号：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::RecentFilesMenu</name>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1（找不到）</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists</source>
+        <translation>%1 已不存在</translation>
+    </message>
+    <message>
+        <source>Clear recent</source>
+        <translation>清除最近记录</translation>
     </message>
 </context>
 <context>
@@ -8326,6 +8661,14 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>No bookmarks (Ctrl+B sets one)</source>
         <translation>没有书签（按 Ctrl+B 设置）</translation>
+    </message>
+    <message>
+        <source>Next bookmark</source>
+        <translation>下一个书签</translation>
+    </message>
+    <message>
+        <source>Previous bookmark</source>
+        <translation>上一个书签</translation>
     </message>
 </context>
 <context>
@@ -8715,6 +9058,56 @@ Send %2%3?</source>
     <message>
         <source>Heartbeat back</source>
         <translation>心跳恢复</translation>
+    </message>
+    <message>
+        <source>%1: no CAN frame found (read as %2)</source>
+        <translation>%1：找不到任何 CAN 帧（以 %2 格式读取）</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file</source>
+        <translation>%1：无法读取文件</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::help::HelpWindow</name>
+    <message>
+        <source>CoScope guide</source>
+        <translation>CoScope 使用指南</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>后退</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>前进</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>目录</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::help::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>位置</translation>
     </message>
 </context>
 </TS>

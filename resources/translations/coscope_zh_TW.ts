@@ -2,6 +2,41 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_TW">
 <context>
+    <name>AboutBox</name>
+    <message>
+        <source>CANopen bus analyzer and servo-drive commissioning tool.</source>
+        <translation>CANopen 總線分析與伺服驅動器調機工具。</translation>
+    </message>
+    <message>
+        <source>Version %1, source revision %2, built with Qt %3 (running on Qt %4).</source>
+        <translation>版本 %1，原始碼修訂 %2，以 Qt %3 建置（執行於 Qt %4）。</translation>
+    </message>
+    <message>
+        <source>CoScope is free software under the GNU General Public License, version 3 or later (GPL-3.0-or-later), and comes with no warranty.</source>
+        <translation>CoScope 是依 GNU 通用公共授權條款第 3 版或更新版本（GPL-3.0-or-later）發布的自由軟體，不提供任何擔保。</translation>
+    </message>
+    <message>
+        <source>It is built on:</source>
+        <translation>它建立在以下軟體之上：</translation>
+    </message>
+    <message>
+        <source>Qt, under the GNU Lesser General Public License version 3 (LGPLv3)</source>
+        <translation>Qt，依 GNU 較寬鬆通用公共授權條款第 3 版（LGPLv3）</translation>
+    </message>
+    <message>
+        <source>QCustomPlot, under the GNU General Public License version 3 (GPLv3)</source>
+        <translation>QCustomPlot，依 GNU 通用公共授權條款第 3 版（GPLv3）</translation>
+    </message>
+    <message>
+        <source>spdlog and fmt, under the MIT license</source>
+        <translation>spdlog 與 fmt，依 MIT 授權條款</translation>
+    </message>
+    <message>
+        <source>About CoScope</source>
+        <translation>關於 CoScope</translation>
+    </message>
+</context>
+<context>
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
@@ -3019,6 +3054,10 @@
         <source>Z pulse searched in the positive direction</source>
         <translation>正方向搜尋 Z 脈波</translation>
     </message>
+    <message>
+        <source>No reason given</source>
+        <translation>未說明原因</translation>
+    </message>
 </context>
 <context>
     <name>Ds402Fault</name>
@@ -3379,6 +3418,29 @@
     </message>
 </context>
 <context>
+    <name>HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>說明(&amp;H)</translation>
+    </message>
+    <message>
+        <source>CoScope &amp;guide</source>
+        <translation>CoScope 使用指南(&amp;G)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>鍵盤快捷鍵(&amp;K)</translation>
+    </message>
+    <message>
+        <source>&amp;About CoScope</source>
+        <translation>關於 CoScope(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>關於 Qt(&amp;Q)</translation>
+    </message>
+</context>
+<context>
     <name>LogLoadJob</name>
     <message>
         <source>Opening %1</source>
@@ -3447,6 +3509,29 @@ Differs from the default</source>
 Bits on: %1</source>
         <translation>
 已設定的位元：%1</translation>
+    </message>
+</context>
+<context>
+    <name>OpenFailure</name>
+    <message>
+        <source>Open log</source>
+        <translation>開啟記錄檔</translation>
+    </message>
+    <message>
+        <source>%1 could not be opened as a CAN log.</source>
+        <translation>無法將 %1 當作 CAN 記錄檔開啟。</translation>
+    </message>
+    <message>
+        <source>Nothing was changed: the trace, nodes and signals shown are kept.</source>
+        <translation>沒有任何變更：目前顯示的追蹤、節點與訊號都保留。</translation>
+    </message>
+    <message>
+        <source>Reading %1 stopped at an error.</source>
+        <translation>讀取 %1 時因錯誤而停止。</translation>
+    </message>
+    <message>
+        <source>The %L1 frames read before it are shown.</source>
+        <translation>顯示錯誤之前讀到的 %L1 個封包。</translation>
     </message>
 </context>
 <context>
@@ -5604,6 +5689,10 @@ Arm the position move?</source>
         <source>%1 (no consumer)</source>
         <translation>%1（無消費者）</translation>
     </message>
+    <message>
+        <source>event-driven</source>
+        <translation>事件驅動</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HeartbeatGuardQuestion</name>
@@ -5773,10 +5862,6 @@ Arm the position move?</source>
         <translation>無法連線到 %1：%2</translation>
     </message>
     <message>
-        <source>Open log</source>
-        <translation>開啟記錄檔</translation>
-    </message>
-    <message>
         <source>A save is already running</source>
         <translation>已有一個儲存作業在執行</translation>
     </message>
@@ -5870,6 +5955,10 @@ Arm the position move?</source>
     <message>
         <source>An export is already running</source>
         <translation>已有一項匯出正在進行</translation>
+    </message>
+    <message>
+        <source>Recent &amp;logs</source>
+        <translation>最近的記錄檔(&amp;L)</translation>
     </message>
 </context>
 <context>
@@ -6553,6 +6642,22 @@ Frame: %3</source>
         <source>Node %1 is no longer watched</source>
         <translation>節點 %1 不再監看</translation>
     </message>
+    <message>
+        <source>Download program…</source>
+        <translation>下載程式…</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: a program download would transmit</source>
+        <translation>僅監聽總線：程式下載需要發送報文</translation>
+    </message>
+    <message>
+        <source>Select a node first</source>
+        <translation>請先選擇節點</translation>
+    </message>
+    <message>
+        <source>Load a new program (firmware) into the node: CiA 302-3 program download</source>
+        <translation>將新程式（韌體）載入節點：CiA 302-3 程式下載</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::NodesModel</name>
@@ -7068,6 +7173,14 @@ SDO 下載 %n 位元組：%1</numerusform>
     <message>
         <source>Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; read them again.</source>
         <translation>節點 %1 現在以節點 ID %2 回應：顯示節點 %2。在節點 %1 讀取的值已捨棄；請重新讀取。</translation>
+    </message>
+    <message>
+        <source>Concise DCF, CiA 302-3 (*.bin)</source>
+        <translation>精簡 DCF，CiA 302-3 (*.bin)</translation>
+    </message>
+    <message>
+        <source>Node %1: concise DCF with %2 entries (%3 bytes) exported to %4</source>
+        <translation>節點 %1：含 %2 個項目（%3 位元組）的精簡 DCF 已匯出至 %4</translation>
     </message>
 </context>
 <context>
@@ -7944,6 +8057,213 @@ Make sure the axis is free to move. Arm?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProgramDownloadDialog</name>
+    <message>
+        <source>Download program to node %1</source>
+        <translation>下載程式到節點 %1</translation>
+    </message>
+    <message>
+        <source>Program image file</source>
+        <translation>程式映像檔</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>瀏覽…</translation>
+    </message>
+    <message>
+        <source>Program file:</source>
+        <translation>程式檔案：</translation>
+    </message>
+    <message>
+        <source>The program number: sub-index of 1F50h program data and 1F51h program control (CiA 302-3)</source>
+        <translation>程式編號：1F50h 程式資料與 1F51h 程式控制的子索引（CiA 302-3）</translation>
+    </message>
+    <message>
+        <source>Program number:</source>
+        <translation>程式編號：</translation>
+    </message>
+    <message>
+        <source>Block transfer (segmented when the node declines it)</source>
+        <translation>區塊傳輸（節點不支援時改用分段傳輸）</translation>
+    </message>
+    <message>
+        <source>Start the program after the download (the node resets)</source>
+        <translation>下載後啟動程式（節點會重置）</translation>
+    </message>
+    <message>
+        <source>What the node reports now</source>
+        <translation>節點目前回報的內容</translation>
+    </message>
+    <message>
+        <source>Software version (100Ah):</source>
+        <translation>軟體版本（100Ah）：</translation>
+    </message>
+    <message>
+        <source>Software identification (1F56h):</source>
+        <translation>軟體識別碼（1F56h）：</translation>
+    </message>
+    <message>
+        <source>Flash status (1F57h):</source>
+        <translation>快閃記憶體狀態（1F57h）：</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>重新讀取</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>下載</translation>
+    </message>
+    <message>
+        <source>Cancel download</source>
+        <translation>取消下載</translation>
+    </message>
+    <message>
+        <source>Program image for node %1</source>
+        <translation>節點 %1 的程式映像檔</translation>
+    </message>
+    <message>
+        <source>Program images (*.img *.bin *.hex);;All files (*)</source>
+        <translation>程式映像檔 (*.img *.bin *.hex);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
+        <translation>總線已關閉：不對節點的程式做任何保證。</translation>
+    </message>
+    <message>
+        <source>Listen-only bus: a program download would transmit</source>
+        <translation>僅監聽總線：程式下載需要發送報文</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first</source>
+        <translation>請先連線到匯流排</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>未讀取</translation>
+    </message>
+    <message>
+        <source>Download again (from the start)</source>
+        <translation>重新下載（從頭開始）</translation>
+    </message>
+    <message>
+        <source>Node %1 stops its application for the download (1F51h = 0): a motor it drives is not controlled until the new program has started.</source>
+        <translation>節點 %1 下載期間會停止其應用程式（1F51h = 0）：在新程式啟動前，它所驅動的馬達不受控制。</translation>
+    </message>
+    <message>
+        <source>CoScope enabled %1: it is disabled first (6040h = 0).</source>
+        <translation>CoScope 已致能 %1：會先將其切斷電壓（6040h = 0）。</translation>
+    </message>
+    <message>
+        <source>reading…</source>
+        <translation>讀取中…</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>無回應</translation>
+    </message>
+    <message>
+        <source>Reading the program state (1F56h, 1F57h, 100Ah)</source>
+        <translation>讀取程式狀態（1F56h、1F57h、100Ah）</translation>
+    </message>
+    <message>
+        <source>Disabling the drive (6040h = 0)</source>
+        <translation>切斷驅動器電壓（6040h = 0）</translation>
+    </message>
+    <message>
+        <source>Stopping the program (1F51h:%1 = 0)</source>
+        <translation>停止程式（1F51h:%1 = 0）</translation>
+    </message>
+    <message>
+        <source>Clearing the program (1F51h:%1 = 3)</source>
+        <translation>清除程式（1F51h:%1 = 3）</translation>
+    </message>
+    <message>
+        <source>Downloading the program data (1F50h:%1)</source>
+        <translation>下載程式資料（1F50h:%1）</translation>
+    </message>
+    <message>
+        <source>Starting the program (1F51h:%1 = 1)</source>
+        <translation>啟動程式（1F51h:%1 = 1）</translation>
+    </message>
+    <message>
+        <source>Waiting for the node&apos;s boot-up</source>
+        <translation>等待節點的上線報文</translation>
+    </message>
+    <message>
+        <source>Reading the new program state</source>
+        <translation>讀取新程式狀態</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>larger than 16 MiB</source>
+        <translation>大於 16 MiB</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>無法讀取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is empty.</source>
+        <translation>%1 是空的。</translation>
+    </message>
+    <message>
+        <source>Download %1 (%2 bytes) into program %3 of node %4?</source>
+        <translation>要將 %1（%2 位元組）下載到節點 %4 的程式 %3 嗎？</translation>
+    </message>
+    <message>
+        <source>The node stops its application (1F51h = 0) and its program is replaced. If the download fails, the node may have no valid program until a download succeeds.</source>
+        <translation>節點會停止其應用程式（1F51h = 0），其程式將被取代。若下載失敗，在下載成功之前節點可能沒有有效的程式。</translation>
+    </message>
+    <message>
+        <source>CoScope disables %1 first (6040h = 0).</source>
+        <translation>CoScope 會先切斷 %1 的電壓（6040h = 0）。</translation>
+    </message>
+    <message>
+        <source>Then the node starts the new program and resets (boot-up).</source>
+        <translation>接著節點會啟動新程式並重置（上線報文）。</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 bytes, %L3 KiB/s</source>
+        <translation>%L1 / %L2 位元組，%L3 KiB/s</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Done: node %1 runs the new program. Software version %2 → %3, software identification %4 → %5.</source>
+        <translation>完成：節點 %1 正在執行新程式。軟體版本 %2 → %3，軟體識別碼 %4 → %5。</translation>
+    </message>
+    <message>
+        <source>Downloaded; the program was not started (node %1 stays stopped).</source>
+        <translation>已下載；程式未啟動（節點 %1 保持停止）。</translation>
+    </message>
+    <message>
+        <source>%L1 bytes in %L2 s.</source>
+        <translation>%L1 位元組，耗時 %L2 秒。</translation>
+    </message>
+    <message>
+        <source>The node&apos;s program was not touched.</source>
+        <translation>節點的程式未被更動。</translation>
+    </message>
+    <message>
+        <source>Nothing is claimed: the node may hold no valid program. Download again to start over from the beginning.</source>
+        <translation>不做任何保證：節點可能沒有有效的程式。請重新下載，從頭開始。</translation>
+    </message>
+    <message>
+        <source>Cancelled at “%1”: %2</source>
+        <translation>已在「%1」取消：%2</translation>
+    </message>
+    <message>
+        <source>Failed at “%1”: %2</source>
+        <translation>在「%1」失敗：%2</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -8056,6 +8376,21 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>This signal cannot be read: %1.</source>
         <translation>無法讀取此訊號：%1。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::RecentFilesMenu</name>
+    <message>
+        <source>%1 (not found)</source>
+        <translation>%1（找不到）</translation>
+    </message>
+    <message>
+        <source>%1 no longer exists</source>
+        <translation>%1 已不存在</translation>
+    </message>
+    <message>
+        <source>Clear recent</source>
+        <translation>清除最近項目</translation>
     </message>
 </context>
 <context>
@@ -8326,6 +8661,14 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>No bookmarks (Ctrl+B sets one)</source>
         <translation>沒有書籤（按 Ctrl+B 設定）</translation>
+    </message>
+    <message>
+        <source>Next bookmark</source>
+        <translation>下一個書籤</translation>
+    </message>
+    <message>
+        <source>Previous bookmark</source>
+        <translation>上一個書籤</translation>
     </message>
 </context>
 <context>
@@ -8715,6 +9058,56 @@ Send %2%3?</source>
     <message>
         <source>Heartbeat back</source>
         <translation>心跳恢復</translation>
+    </message>
+    <message>
+        <source>%1: no CAN frame found (read as %2)</source>
+        <translation>%1：找不到任何 CAN 封包（以 %2 格式讀取）</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>第 %1 行：%2</translation>
+    </message>
+    <message>
+        <source>%1: cannot read the file</source>
+        <translation>%1：無法讀取檔案</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::help::HelpWindow</name>
+    <message>
+        <source>CoScope guide</source>
+        <translation>CoScope 使用指南</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>上一頁</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>下一頁</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>目錄</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::help::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>鍵盤快捷鍵</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按鍵</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>動作</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>位置</translation>
     </message>
 </context>
 </TS>
