@@ -104,22 +104,9 @@ QString formatForExtension(const QString& path) {
     return {};
 }
 
-namespace {
-// Text with at least one line that is not blank: every text format CoScope reads is recognised
-// by its lines (detectContent), so such a file that was not is none of them, whatever its name.
-bool isUnrecognisedText(const QByteArray& head) {
-    if (head.isEmpty() || head.contains('\0')) return false;
-    for (char c : head)
-        if (!isSpace(c)) return true;
-    return false;
-}
-}  // namespace
-
 QString detect(QIODevice* device, const QString& fileName) {
-    const QByteArray head = device ? device->peek(8192) : QByteArray();
-    const QString byContent = detectContent(head);
-    if (!byContent.isEmpty()) return byContent;
-    return isUnrecognisedText(head) ? QString() : formatForExtension(fileName);
+    const QString byContent = device ? detectContent(device->peek(8192)) : QString();
+    return byContent.isEmpty() ? formatForExtension(fileName) : byContent;
 }
 
 std::unique_ptr<LogReader> createReader(const QString& format) {

@@ -23,6 +23,7 @@ LogProbe probeLog(const QString& path) {
         return probe;
     }
     probe.format = LogFormats::detect(&file, path);
+    probe.formatByName = LogFormats::detectContent(file.peek(8192)).isEmpty();
     QByteArray head = file.read(LogProbe::kProbeBytes);
     const bool whole = file.atEnd();
     // A text log cut at the last whole line, so that the cut is no bad line.

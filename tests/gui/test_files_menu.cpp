@@ -258,7 +258,7 @@ private slots:
         auto name2 = answerFileDialog(bin);
         QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")));
         QVERIFY(waitFor([&] { return box2.answered(); }));
-        QVERIFY2(said.contains(QStringLiteral("junk.bin")) && said.contains(QStringLiteral("unknown log format")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("junk.bin")) && said.contains(QStringLiteral("not a format CoScope reads")), qPrintable(said));
         QCOMPARE(w.workspace()->store(), store);
         QCOMPARE(w.traceDock()->model()->rowCount(), 32);
     }

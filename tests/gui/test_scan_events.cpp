@@ -124,7 +124,7 @@ private slots:
         QTest::qWait(500);
         w.refresh();
 
-        // The trace has the Delta's aborts: 581h, command 80h, 1008h:00 and 1018h:04.
+        // The trace has the Delta's aborts: 581h, command 80h, 1008h:00, 1009h:00 and 1018h:04.
         const auto& store = *w.workspace()->store();
         auto abortIn = [&](uint16_t index, uint8_t sub) {
             for (size_t n = 0; n < store.size(); ++n) {
@@ -135,7 +135,7 @@ private slots:
         };
         QVERIFY(abortIn(0x1008, 0));
         QVERIFY(abortIn(0x1009, 0));
-        QVERIFY(abortIn(0x100A, 0));
+        // (100Ah is there: every virtual drive takes a program download and shows its version, issue 36.)
         QVERIFY(abortIn(0x1018, 4));
 
         // The Events dock lists no SDO abort.

@@ -42,7 +42,7 @@ private slots:
     void anUnknownFormatIsRefusedWithTheFileName() {
         const LogProbe p = probeLog(write(QStringLiteral("junk.bin"), QByteArray(64, '\xff')));
         QVERIFY(!p.usable);
-        QVERIFY2(p.error.contains(QStringLiteral("junk.bin")) && p.error.contains(QStringLiteral("unknown log format")), qPrintable(p.error));
+        QVERIFY2(p.error.contains(QStringLiteral("junk.bin")) && p.error.contains(QStringLiteral("not a format CoScope reads")), qPrintable(p.error));
     }
 
     void aMissingFileIsRefused() {

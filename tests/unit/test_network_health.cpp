@@ -280,8 +280,8 @@ private slots:
         QCOMPARE(r.pdos.size(), size_t(2));
         QVERIFY(!r.pdos[0].cyclic);
         QVERIFY(r.pdos[1].cyclic);
-        QVERIFY2(!hasFinding(r, QStringLiteral("of node 2 (0x182) every")), qPrintable(findings(r)));
-        QVERIFY2(hasFinding(r, QStringLiteral("TPDO1 of node 3 (0x183) every")), qPrintable(findings(r)));
+        QVERIFY2(!hasFinding(r, QStringLiteral("of node 2 (182h) every")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("TPDO1 of node 3 (183h) every")), qPrintable(findings(r)));
         const QList<QByteArray> lines = healthText(r, false).split('\n');
         const auto line = std::find_if(lines.begin(), lines.end(), [](const QByteArray& l) { return l.contains("0x182"); });
         QVERIFY(line != lines.end());
