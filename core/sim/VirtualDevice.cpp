@@ -144,6 +144,11 @@ void VirtualDevice::loadDefaults(bool communicationOnly) {
     if (auto* serial = valueSlot(0x1018, 4); serial && serial->toUInt64().value_or(0) == 0) *serial = od::Value::unsignedInt(serial_);
 }
 
+void VirtualDevice::setSerialNumber(uint32_t serial) {
+    serial_ = serial;
+    if (auto* slot = valueSlot(0x1018, 4)) *slot = od::Value::unsignedInt(serial);
+}
+
 void VirtualDevice::applyStored(bool communicationOnly) {
     for (const auto& [k, v] : stored_) {
         const auto index = static_cast<uint16_t>(k >> 8);
