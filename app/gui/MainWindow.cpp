@@ -9,6 +9,7 @@
 
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
+#include "app/gui/project/ProjectActions.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
@@ -78,6 +79,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     createDocks();
     status_ = new BusStatusBar(statusBar(), workspace_);
+    projectActions_ = new ProjectActions(workspace_, this, [this](const QString& url) { return connectBus(url, true); });
+    connect(projectActions_, &ProjectActions::message, this, &MainWindow::showMessage);
     buildMenus();
     restoreLayout();
     offerAndCleanJournals();
@@ -243,6 +246,7 @@ void MainWindow::buildMenus() {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));
     });
+    projectActions_->addTo(file, menuBar());
 }
 
 void MainWindow::offerAndCleanJournals() {
@@ -309,7 +313,7 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSaveCapture([this] { close(); }) || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
+    if (!maybeSaveCapture([this] { close(); }) || !projectActions_->maybeSave() || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
         event->ignore();
         return;
     }
@@ -414,8 +418,7 @@ void MainWindow::onSourceChanged() {
     plot_->rebind();
     events_->rebind();
     health_->rebind();
-    const QString name = workspace_->sourceName();
-    setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
+    projectActions_->updateTitle();  // "project* — source — CoScope"
 }
 
 void MainWindow::updateCommissionMenu() {

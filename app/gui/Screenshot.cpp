@@ -8,6 +8,8 @@
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PlotDock.h"
+#include "app/gui/project/CompareDialog.h"
+#include "app/gui/project/ProjectActions.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
@@ -32,6 +34,7 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"events") return w->eventsDock()->model()->rowCount() > 0;
     if (view == u"od") return w->odDock()->hasContent();
     if (view == u"plot") return w->plotDock()->hasContent();
+    if (view == u"project-compare") return w->projectActions()->compareDialog() && w->projectActions()->compareDialog()->hasResult();
     if (view.startsWith(QLatin1String("wizard-"))) {
         // Opened by showStartView once nodes are known; ready when the wizard says so (property
         // "screenshotReady").
@@ -74,6 +77,7 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
         }
         QApplication::processEvents();
         QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard() : window;
+        if (view == u"project-compare" && window->projectActions()->compareDialog()) shown = window->projectActions()->compareDialog();
         const bool ok = shown->grab().save(file, "PNG");
         std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
         QApplication::exit(ok ? 0 : 1);
