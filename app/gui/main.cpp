@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
         level = *parsed;
     }
     const QString viewName = parser.value(view);
-    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata")};
+    QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata"), QStringLiteral("project-compare")};
     for (const gui::WizardEntry& w : gui::wizardEntries()) {
         views << QStringLiteral("wizard-") + w.id;
         for (const QString& page : w.pages) views << QStringLiteral("wizard-%1-%2").arg(w.id, page);

@@ -54,7 +54,7 @@ QJsonArray pdoLayouts(const ProjectNode& node) {
         const bool tx = p.index >= 0x1800;
         const int n = (p.index & 0x1FF) + 1;
         const bool mapping = (p.index & 0x200) != 0;
-        out.append(QStringLiteral("%1PDO%2 %3 %4 = %5").arg(tx ? u'T' : u'R').arg(n).arg(mapping ? QStringLiteral("mapping") : QStringLiteral("communication"),
+        out.append(QStringLiteral("%1PDO%2 %3 %4 = %5").arg(tx ? QStringLiteral("T") : QStringLiteral("R")).arg(n).arg(mapping ? QStringLiteral("mapping") : QStringLiteral("communication"),
                                                                                      objectKey(p.index, p.sub), p.value));
     }
     return out;

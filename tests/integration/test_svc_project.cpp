@@ -153,7 +153,9 @@ private slots:
         const ProjectNode* n1 = p.node(1);
         QVERIFY(n1);
         QCOMPARE(n1->dictionary, QStringLiteral("delta-asda-a2"));
-        QCOMPARE(n1->identity.serial, std::optional<uint32_t>(0x51000001));
+        QCOMPARE(n1->identity.vendorId, std::optional<uint32_t>(0x1DD));
+        QCOMPARE(n1->identity.serial, std::optional<uint32_t>());  // the Delta dictionary has no 1018h:04
+        QCOMPARE(p.node(3)->identity.serial, std::optional<uint32_t>(0x51000003));
         QVERIFY(n1->parameter(0x1017, 0));
         QCOMPARE(n1->parameter(0x1017, 0)->value, QStringLiteral("0x00FA"));
         QVERIFY(!n1->parameter(0x6081, 0));   // at its default: not configured

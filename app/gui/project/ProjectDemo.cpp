@@ -43,7 +43,7 @@ void startProjectCompareDemo(MainWindow* window) {
                 sim::SimNetwork* net = sim->network();
                 net->runOnNetworkThread([net] {
                     if (auto* d = net->device(1)) {
-                        d->setValue(0x1017, 0, od::Value::unsignedInt(0));
+                        d->setValue(0x1017, 0, od::Value::unsignedInt(500));
                         d->setValue(0x6081, 0, od::Value::unsignedInt(5000));
                     }
                 });
