@@ -90,6 +90,7 @@ int runCompare(const QStringList& args) {
     if (!openBus(verb, s, pos[0], &code)) return code;
     ProjectCompare compare(s.sdo(), eds::projectDictionaryResolver(folderOf(pos[1])));
     compare.setScanRange(first, last);
+    compare.setMatcher(eds::scanMatcher());
     std::optional<CompareReport> report;
     compare.start(*project, {}, [&report](const CompareReport& r) { report = r; });
     canopen::waitUntil([&] { return report.has_value(); }, kWaitMs);
@@ -176,6 +177,7 @@ int runApply(const QStringList& args) {
     if (!openBus(verb, s, pos[0], &code)) return code;
     ProjectApply apply(s.sdo(), eds::projectDictionaryResolver(folderOf(pos[1])));
     apply.setNodes(only);
+    apply.setMatcher(eds::scanMatcher());
     std::optional<std::vector<NodeApplyPlan>> plans;
     apply.prepare(*project, {}, [&plans](std::vector<NodeApplyPlan> pl) { plans = std::move(pl); });
     canopen::waitUntil([&] { return plans.has_value(); }, kWaitMs);

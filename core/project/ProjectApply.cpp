@@ -79,7 +79,7 @@ void ProjectApply::prepare(const Project& project, Progress progress, std::funct
     if (project.nodes.empty()) first = last = 1;
     if (prep->progress) prep->progress(QStringLiteral("scanning nodes %1-%2").arg(first).arg(last), 0, 0);
     QPointer<ProjectApply> self(this);
-    scanMachine(sdo_, prep->project, first, last, scanTimeoutMs_, [self, prep](std::vector<MatchedNode> matches) {
+    scanMachine(sdo_, prep->project, first, last, scanTimeoutMs_, matcher_, [self, prep](std::vector<MatchedNode> matches) {
         if (!self) return;
         for (MatchedNode& m : matches)
             if (m.project && (self->only_.empty() || std::find(self->only_.begin(), self->only_.end(), m.node) != self->only_.end()))

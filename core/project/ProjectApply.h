@@ -55,6 +55,8 @@ public:
 
     ProjectApply(canopen::SdoClient& sdo, DictionaryResolver resolver, QObject* parent = nullptr);
     void setScanTimeout(int ms) { scanTimeoutMs_ = ms; }
+    // Names the dictionaries the scan writes into the node table (eds::scanMatcher()).
+    void setMatcher(canopen::NetworkScan::Matcher m) { matcher_ = std::move(m); }
     // Only these nodes (empty: all of the project's).
     void setNodes(std::vector<uint8_t> nodes) { only_ = std::move(nodes); }
 
@@ -77,6 +79,7 @@ private:
     DictionaryResolver resolver_;
     std::vector<uint8_t> only_;
     int scanTimeoutMs_ = 0;
+    canopen::NetworkScan::Matcher matcher_;
 };
 
 // The project expects the drives that replaced its own and now hold its values (their serial

@@ -45,7 +45,7 @@ void ProjectBackup::start(const Project& project, Progress progress, Done done) 
     run->config = std::make_unique<canopen::DeviceConfiguration>(sdo_);
     if (run->progress) run->progress(QStringLiteral("scanning nodes %1-%2").arg(first_).arg(last_), 0, 0);
     QPointer<ProjectBackup> self(this);
-    scanMachine(sdo_, run->scanned, first_, last_, scanTimeoutMs_, [self, run](std::vector<MatchedNode> matches) {
+    scanMachine(sdo_, run->scanned, first_, last_, scanTimeoutMs_, matcher_, [self, run](std::vector<MatchedNode> matches) {
         if (!self) return;
         run->matches = std::move(matches);
         self->backupNext(run);

@@ -49,7 +49,7 @@ void ProjectCompare::start(const Project& project, Progress progress, Done done)
     running_ = true;
     if (run->progress) run->progress(QStringLiteral("scanning nodes %1-%2").arg(first_).arg(last_), 0, 0);
     QPointer<ProjectCompare> self(this);
-    scanMachine(sdo_, run->project, first_, last_, scanTimeoutMs_, [self, run](std::vector<MatchedNode> matches) {
+    scanMachine(sdo_, run->project, first_, last_, scanTimeoutMs_, matcher_, [self, run](std::vector<MatchedNode> matches) {
         if (!self) return;
         run->matches = std::move(matches);
         for (const MatchedNode& m : run->matches) {

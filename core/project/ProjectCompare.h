@@ -59,6 +59,8 @@ public:
 
     void setScanRange(uint8_t first, uint8_t last) { first_ = first; last_ = last; }
     void setScanTimeout(int ms) { scanTimeoutMs_ = ms; }
+    // Names the dictionaries the scan writes into the node table (eds::scanMatcher()).
+    void setMatcher(canopen::NetworkScan::Matcher m) { matcher_ = std::move(m); }
 
     void start(const Project& project, Progress progress, Done done);
     bool isRunning() const { return running_; }
@@ -71,6 +73,7 @@ private:
     DictionaryResolver resolver_;
     uint8_t first_ = 1, last_ = 127;
     int scanTimeoutMs_ = 0;
+    canopen::NetworkScan::Matcher matcher_;
     bool running_ = false;
 };
 

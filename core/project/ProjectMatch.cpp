@@ -95,9 +95,10 @@ QString defaultText(const od::SubObject& entry, uint8_t node) {
     return v ? canopen::DeviceConfiguration::edsText(entry.dataType, *v) : QString();
 }
 
-void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs,
+void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs, canopen::NetworkScan::Matcher matcher,
                  std::function<void(std::vector<MatchedNode>)> done, QObject* owner) {
     auto* scan = new canopen::NetworkScan(sdo, owner);
+    if (matcher) scan->setMatcher(std::move(matcher));
     scan->setRange(first, last);
     if (timeoutMs > 0) scan->setTimeout(timeoutMs);
     scan->start([scan, &project, done = std::move(done)](const std::vector<canopen::ScannedNode>& found) {

@@ -57,8 +57,10 @@ struct ExpectedValue {
 };
 std::vector<ExpectedValue> expectedValues(const od::ObjectDictionary& dictionary, const ProjectNode& node);
 
-// Scans nodes `first..last` (NetworkScan, 1000h and 1018h) and hands back the matches.
-void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs,
+// Scans nodes `first..last` (NetworkScan, 1000h and 1018h) and hands back the matches. The scan
+// writes what it found into the bus's node table: `matcher` (eds::scanMatcher()) names the
+// dictionaries there, as any scan does.
+void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs, canopen::NetworkScan::Matcher matcher,
                  std::function<void(std::vector<MatchedNode>)> done, QObject* owner);
 
 }  // namespace coscope::project

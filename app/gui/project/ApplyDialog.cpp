@@ -4,6 +4,7 @@
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
 #include "eds/ProjectDictionaries.h"
+#include "eds/ScanMatcher.h"
 
 #include <QDialogButtonBox>
 #include <QFile>
@@ -53,6 +54,7 @@ ApplyDialog::ApplyDialog(const ProjectSession& session, Workspace* workspace, st
     }
     apply_ = new project::ProjectApply(*workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session.path()).absolutePath()), this);
     apply_->setNodes(std::move(nodes));
+    apply_->setMatcher(eds::scanMatcher());
     setStatus(tr("Reading the drives' values (dry run)…"));
     QPointer<ApplyDialog> self(this);
     apply_->prepare(session.project(), {}, [self](std::vector<project::NodeApplyPlan> plans) {

@@ -8,6 +8,7 @@
 #include "app/gui/wizards/WizardMenu.h"
 #include "core/project/CompareReportFormat.h"
 #include "eds/ProjectDictionaries.h"
+#include "eds/ScanMatcher.h"
 
 #include <QCheckBox>
 #include <QFile>
@@ -89,6 +90,7 @@ void CompareDialog::compare() {
     updateButtons();
     status_->setText(tr("Scanning the bus and reading the drives…"));
     auto* run = new project::ProjectCompare(*workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_.path()).absolutePath()), this);
+    run->setMatcher(eds::scanMatcher());
     QPointer<CompareDialog> self(this);
     run->start(session_.project(), {}, [self, run](const project::CompareReport& report) {
         run->deleteLater();
