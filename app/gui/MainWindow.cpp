@@ -14,6 +14,7 @@
 #include "app/gui/files/RecentFiles.h"
 #include "app/gui/help/HelpMenu.h"
 #include "app/gui/help/HelpWindow.h"
+#include "app/gui/project/ProjectActions.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
@@ -82,6 +83,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     createDocks();
     status_ = new BusStatusBar(statusBar(), workspace_);
+    projectActions_ = new ProjectActions(workspace_, this, [this](const QString& url) { return connectBus(url, true); });
+    connect(projectActions_, &ProjectActions::message, this, &MainWindow::showMessage);
     buildMenus();
     restoreLayout();
     offerAndCleanJournals();
@@ -248,6 +251,7 @@ void MainWindow::buildMenus() {
         QSettings().remove(QStringLiteral("window"));
         showMessage(tr("The default layout applies at the next start"));
     });
+    projectActions_->addTo(file, menuBar());
     help::addHelpMenu(this);
 }
 
@@ -315,7 +319,7 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSaveCapture([this] { close(); }) || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
+    if (!maybeSaveCapture([this] { close(); }) || !projectActions_->maybeSave() || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
         event->ignore();
         return;
     }
@@ -423,8 +427,7 @@ void MainWindow::onSourceChanged() {
     plot_->rebind();
     events_->rebind();
     health_->rebind();
-    const QString name = workspace_->sourceName();
-    setWindowTitle(name.isEmpty() ? QStringLiteral("CoScope") : QStringLiteral("%1 — CoScope").arg(name));
+    projectActions_->updateTitle();  // "project* — source — CoScope"
 }
 
 void MainWindow::updateCommissionMenu() {

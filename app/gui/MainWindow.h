@@ -33,6 +33,7 @@ class PdoDbcJob;
 class ObjectDictionaryDock;
 class PlotDock;
 class ProcessDataDock;
+class ProjectActions;
 class TraceDock;
 class TransmitDock;
 class Workspace;
@@ -72,6 +73,7 @@ public:
     TransmitDock* transmitDock() const { return transmit_; }
     ProcessDataDock* processDataDock() const { return processData_; }
     MasterActions* masterActions() const { return masterActions_; }
+    ProjectActions* projectActions() const { return projectActions_; }
     QWidget* openedWizard() const { return wizard_; }
     ConsoleDock* consoleDock() const { return console_; }
     BusStatusBar* busStatus() const { return status_; }
@@ -133,6 +135,7 @@ private:
     ConsoleDock* console_ = nullptr;
     TransmitDock* transmit_ = nullptr;
     ProcessDataDock* processData_ = nullptr;
+    ProjectActions* projectActions_ = nullptr;  // File ▸ projects, the Project menu (app/gui/project)
     MasterActions* masterActions_ = nullptr;  // Bus ▸ SYNC producer, Master settings…
     QAction* disconnectAction_ = nullptr;
     BusStatusBar* status_ = nullptr;

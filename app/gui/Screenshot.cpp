@@ -10,6 +10,8 @@
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PlotDock.h"
 #include "app/gui/program/ProgramDownloadDialog.h"
+#include "app/gui/project/CompareDialog.h"
+#include "app/gui/project/ProjectActions.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
@@ -65,6 +67,7 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"plot") return w->plotDock()->hasContent();
     if (view == u"help") return help::HelpWindow::of(w) && help::HelpWindow::of(w)->isVisible();
     if (view == u"program-download") return programDownloadMidway(w);
+    if (view == u"project-compare") return w->projectActions()->compareDialog() && w->projectActions()->compareDialog()->hasResult();
     if (view.startsWith(QLatin1String("wizard-"))) {
         // Opened by showStartView once nodes are known; ready when the wizard says so (property
         // "screenshotReady").
@@ -113,6 +116,7 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
                                                                                             : static_cast<QWidget*>(window);
         if (midway)
             if (auto* d = window->nodesDock()->findChild<ProgramDownloadDialog*>()) shown = d;
+        if (view == u"project-compare" && window->projectActions()->compareDialog()) shown = window->projectActions()->compareDialog();
         const bool ok = shown->grab().save(file, "PNG");
         std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
         QApplication::exit(ok ? 0 : 1);

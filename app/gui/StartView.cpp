@@ -4,6 +4,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
+#include "app/gui/project/ProjectDemo.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
@@ -20,6 +21,7 @@ constexpr int kWaitForNodesMs = 10000;
 }
 
 void showStartView(MainWindow* window, const QString& view) {
+    if (view == u"project-compare") return startProjectCompareDemo(window);
     if (!view.startsWith(QLatin1String("wizard-"))) {
         window->showView(view);
         return;

@@ -68,7 +68,8 @@ int main(int argc, char** argv) {
     }
     const QString viewName = parser.value(view);
     QStringList views{QStringLiteral("trace"), QStringLiteral("nodes"), QStringLiteral("od"), QStringLiteral("plot"), QStringLiteral("events"), QStringLiteral("health"), QStringLiteral("console"), QStringLiteral("transmit"), QStringLiteral("processdata"), QStringLiteral("help"),
-                      QStringLiteral("program-download")};  // the program download dialog mid-transfer (Screenshot.cpp)
+                      QStringLiteral("program-download"),  // the program download dialog mid-transfer (Screenshot.cpp)
+                      QStringLiteral("project-compare")};
     for (const gui::WizardEntry& w : gui::wizardEntries()) {
         views << QStringLiteral("wizard-") + w.id;
         for (const QString& page : w.pages) views << QStringLiteral("wizard-%1-%2").arg(w.id, page);

@@ -15,7 +15,7 @@ const QStringList kQtPluginNames = {QStringLiteral("socketcan"), QStringLiteral(
 const QStringList kOwnSchemes = {QStringLiteral("socketcand"), QStringLiteral("sim"), QStringLiteral("replay")};
 const QStringList kKnownOptions = {QStringLiteral("bitrate"), QStringLiteral("data-bitrate"), QStringLiteral("fd"),
                                    QStringLiteral("listen-only"), QStringLiteral("speed"), QStringLiteral("loop"),
-                                   QStringLiteral("nodes"), QStringLiteral("bus")};
+                                   QStringLiteral("nodes"), QStringLiteral("serials"), QStringLiteral("bus")};
 
 bool parseBool(const QString& v, bool fallback) {
     const QString s = v.trimmed().toLower();

@@ -316,6 +316,7 @@ void DeviceConfiguration::step(std::shared_ptr<Run> run) {
             e.abortCode = r.ok ? 0 : r.abortCode;
             e.error = r.error;
             run->applied.push_back(e);
+            if (!r.ok && self->stopOnRefusal_) run->next = run->writes.size();
             if (run->progress) run->progress(e, static_cast<int>(run->next), run->total());
             if (self) self->step(run);
         }, options);

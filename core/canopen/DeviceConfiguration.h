@@ -110,7 +110,9 @@ public:
     // The entries of a plan's writes (to read them first for OnlyDifferent).
     static std::vector<std::pair<uint16_t, uint8_t>> planEntries(const ApplyPlan& plan);
 
-    // Writes the plan, in order, each once; a refused entry does not stop the others.
+    // Writes the plan, in order, each once; a refused entry does not stop the others unless
+    // setStopOnRefusal(true): then the write after a refusal is not sent (the results end with it).
+    void setStopOnRefusal(bool stop) { stopOnRefusal_ = stop; }
     void apply(const ApplyPlan& plan, Progress progress, ApplyDone done, int timeoutMs = 0);
 
     // Stops after the transfer in progress; the result says cancelled.
@@ -137,6 +139,7 @@ private:
     SdoClient& sdo_;
     bool running_ = false;
     bool cancelRequested_ = false;
+    bool stopOnRefusal_ = false;
 };
 
 }  // namespace coscope::canopen

@@ -177,7 +177,28 @@ VirtualDevice* SimNetwork::device(uint8_t nodeId) const {
 
 QString SimNetwork::defaultSpec() { return QStringLiteral("1:delta-asda-a2,2:aimotor,3:generic-cia402"); }
 
-std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString* error) {
+bool SimNetwork::replaceDevice(uint8_t nodeId, uint32_t serial, QString* error) {
+    bool done = false;
+    runOnNetworkThread([&] {
+        for (auto& n : nodes_) {
+            auto* old = dynamic_cast<VirtualDevice*>(n.get());
+            if (!old || old->nodeId() != nodeId) continue;
+            auto fresh = VirtualDevice::create(nodeId, old->dictionaryName(), error);
+            if (!fresh) return;
+            fresh->setSerialNumber(serial);
+            SimNode* raw = fresh.get();
+            raw->setTransmitter([this, raw](const CanFrame& f) { broadcast(f, raw, nullptr); });
+            n = std::move(fresh);
+            if (powered_) raw->powerOn(clockNs_ ? clockNs_ : nowNs());
+            done = true;
+            return;
+        }
+        if (error) *error = QStringLiteral("no virtual device answers on node %1").arg(nodeId);
+    });
+    return done;
+}
+
+std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString* error, const QString& serials) {
     const QString spec = specIn.trimmed().isEmpty() ? defaultSpec() : specIn;
     auto net = std::make_unique<SimNetwork>();
     std::vector<int> used;
@@ -198,6 +219,18 @@ std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString*
         auto node = VirtualDevice::create(static_cast<uint8_t>(id), dict, error);
         if (!node) return nullptr;
         net->addNode(std::move(node));
+    }
+    for (const QString& part : serials.split(u',', Qt::SkipEmptyParts)) {
+        const QStringList idSerial = part.split(u':');
+        bool okId = false, okSerial = false;
+        const int id = idSerial.value(0).trimmed().toInt(&okId);
+        const qulonglong serial = idSerial.value(1).trimmed().toULongLong(&okSerial, 0);
+        VirtualDevice* d = okId && id >= 1 && id <= 127 ? net->device(static_cast<uint8_t>(id)) : nullptr;
+        if (idSerial.size() != 2 || !okSerial || serial > 0xFFFFFFFFull || !d) {
+            if (error) *error = QStringLiteral("sim serials '%1': expects NODE:SERIAL of a node on the network, e.g. 3:0x51000099").arg(part);
+            return nullptr;
+        }
+        d->setSerialNumber(static_cast<uint32_t>(serial));
     }
     return net;
 }

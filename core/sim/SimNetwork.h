@@ -49,6 +49,12 @@ public:
     // parameters), nullptr if none. Use on the network thread once the network runs.
     VirtualDevice* device(uint8_t nodeId) const;
 
+    // A technician's replacement: the device answering on `nodeId` is taken off the bus and a new
+    // one of the same type (dictionary) put in its place, at factory defaults (nothing stored),
+    // node-ID `nodeId`, with 1018h:04 serial number `serial`; it boots (sends its boot-up) on the
+    // next tick. Any thread. False with *error when no device answers on `nodeId`.
+    bool replaceDevice(uint8_t nodeId, uint32_t serial, QString* error = nullptr);
+
     void start();
     void stop();
     bool isRunning() const;
@@ -63,7 +69,9 @@ public:
 
     // Parses "1:delta-asda-a2,2:aimotor" (empty = the default network) and builds VirtualDevices
     // from the dictionaries sim::loadDictionary gives (eds::installSimulatorDictionaries()).
-    static std::unique_ptr<SimNetwork> fromSpec(const QString& spec, QString* error);
+    // `serials` ("3:0x51000099,4:77", the sim:// option serials=) gives devices another 1018h:04
+    // serial number than the default 0x51000000 + node-ID (a replaced drive).
+    static std::unique_ptr<SimNetwork> fromSpec(const QString& spec, QString* error, const QString& serials = {});
     static QString defaultSpec();
 
     // The bit rate a virtual device starts at (its personality's default).

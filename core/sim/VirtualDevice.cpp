@@ -148,6 +148,11 @@ void VirtualDevice::loadDefaults(bool communicationOnly) {
     program_->publish();  // the program is in flash: no reset changes it
 }
 
+void VirtualDevice::setSerialNumber(uint32_t serial) {
+    serial_ = serial;
+    if (auto* slot = valueSlot(0x1018, 4)) *slot = od::Value::unsignedInt(serial);
+}
+
 void VirtualDevice::applyStored(bool communicationOnly) {
     for (const auto& [k, v] : stored_) {
         const auto index = static_cast<uint16_t>(k >> 8);

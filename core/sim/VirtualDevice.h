@@ -132,6 +132,8 @@ public:
     ProgramFlash& programFlash() { return *program_; }
 
     uint32_t serialNumber() const { return serial_; }
+    // Another serial number in 1018h:04 (a drive of the same type that replaced this one).
+    void setSerialNumber(uint32_t serial);
     HeartbeatConsumer& heartbeatConsumer() { return *heartbeat_; }
 
     // Counters for tests.

@@ -18,6 +18,7 @@ inline constexpr char kPlotImages[] = "plot-images";     // plot PNG/PDF
 inline constexpr char kScripts[] = "scripts";            // wizard command scripts
 inline constexpr char kDbc[] = "dbc";                    // PDO layouts as DBC
 inline constexpr char kPrograms[] = "programs";          // program (firmware) images
+inline constexpr char kProjects[] = "projects";          // project files
 
 // Where a dialog for `kind` starts: the folder of the last file of that kind, while it exists;
 // else the user's Documents folder, else home (never the process's working folder).

@@ -35,6 +35,7 @@ class RecentFilesMenu : public QObject {
 public:
     // QSettings keys of the app's recent file lists.
     static constexpr const char* kLogs = "files/recent/logs";
+    static constexpr const char* kProjects = "files/recent/projects";
 
     RecentFilesMenu(QMenu* parent, const QString& title, const QString& settingsKey, std::function<void(const QString&)> open);
     QMenu* menu() const { return menu_; }
