@@ -3850,6 +3850,115 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ApplyDialog</name>
+    <message>
+        <source>Apply the project</source>
+        <translation>应用项目</translation>
+    </message>
+    <message>
+        <source>&amp;Apply</source>
+        <translation>应用(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Store in the drives…</source>
+        <translation>保存到驱动器(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save &amp;report…</source>
+        <translation>保存报告(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only).</source>
+        <translation>请先连接到机器的总线（非仅监听）。</translation>
+    </message>
+    <message>
+        <source>Reading the drives&apos; values (dry run)…</source>
+        <translation>正在读取驱动器的值（模拟运行）…</translation>
+    </message>
+    <message>
+        <source>Dry run: the SDO writes per node</source>
+        <translation>模拟运行：各节点的 SDO 写入</translation>
+    </message>
+    <message>
+        <source>The drives already hold the project&apos;s values: nothing to write.</source>
+        <translation>驱动器已是项目的值：无需写入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) to write to %1 node(s). Check the writes below, then Apply.</source>
+        <translation>
+            <numerusform>要写入 %1 个节点的 %n 个对象。请检查下列写入，再按“应用”。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node&apos;s old values are put back.</source>
+        <translation>
+            <numerusform>要按列表把 %n 个对象写入驱动器吗？第一个被拒绝的写入会停止，该节点的旧值会写回。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>Node %1 is a new drive (serial number 0x%2): the project now expects it.</source>
+        <translation>节点 %1 是新的驱动器（序列号 0x%2）：项目现在以它为准。</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>The project was applied. The drives lose these values at power off unless they are stored.</source>
+        <translation>项目已应用。除非保存，驱动器断电后会丢失这些值。</translation>
+    </message>
+    <message>
+        <source>The project was not applied in full: see the result below.</source>
+        <translation>项目未完整应用：请见下方结果。</translation>
+    </message>
+    <message>
+        <source>Store in the drives</source>
+        <translation>保存到驱动器</translation>
+    </message>
+    <message numerus="yes">
+        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = &quot;save&quot;)?</source>
+        <translation>
+            <numerusform>要把全部参数保存到 %n 台驱动器的非易失性存储器吗（1010h:01 = &quot;save&quot;）？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stored: %1</source>
+        <translation>已保存：%1</translation>
+    </message>
+    <message>
+        <source>NOT stored: %1</source>
+        <translation>未保存：%1</translation>
+    </message>
+    <message>
+        <source>The parameters are stored in the drives.</source>
+        <translation>参数已保存在驱动器中。</translation>
+    </message>
+    <message>
+        <source>A drive did not store its parameters: see below.</source>
+        <translation>有驱动器未保存参数：请见下方。</translation>
+    </message>
+    <message>
+        <source>Save report</source>
+        <translation>保存报告</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt);;All files (*)</source>
+        <translation>文本文件 (*.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Report saved to %1</source>
+        <translation>报告已保存到 %1</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::BusLossAdvice</name>
     <message>
         <source>NMT state unknown</source>
@@ -4048,6 +4157,162 @@ Bits on: %1</source>
     <message>
         <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GiB.</source>
         <translation>跟踪在内存中最多保留这么多；较旧的帧在需要时从捕获日志读回。0 = 自动：内存的四分之一，最多 4 GiB。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::CompareDialog</name>
+    <message>
+        <source>Machine and project</source>
+        <translation>机器与项目</translation>
+    </message>
+    <message>
+        <source>&amp;Only differences</source>
+        <translation>只显示差异(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Compare again</source>
+        <translation>再次比较(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Export &amp;HTML…</source>
+        <translation>导出 &amp;HTML…</translation>
+    </message>
+    <message>
+        <source>Export CS&amp;V…</source>
+        <translation>导出 CS&amp;V…</translation>
+    </message>
+    <message>
+        <source>&amp;Replace drive…</source>
+        <translation>更换驱动器(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>&amp;Apply the project…</source>
+        <translation>应用项目(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
+        <translation>请先连接到机器的总线（非仅监听）：比较会读取驱动器。</translation>
+    </message>
+    <message>
+        <source>Scanning the bus and reading the drives…</source>
+        <translation>正在扫描总线并读取驱动器…</translation>
+    </message>
+    <message>
+        <source>The machine is as in the project.</source>
+        <translation>机器与项目一致。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) differ; %1 node(s) not as in the project.</source>
+        <translation>
+            <numerusform>%n 个对象不同；%1 个节点与项目不符。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export comparison as HTML</source>
+        <translation>将比较结果导出为 HTML</translation>
+    </message>
+    <message>
+        <source>Export comparison as CSV</source>
+        <translation>将比较结果导出为 CSV</translation>
+    </message>
+    <message>
+        <source>HTML files (*.html)</source>
+        <translation>HTML 文件 (*.html)</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>已导出到 %1</translation>
+    </message>
+    <message>
+        <source>Replace drive</source>
+        <translation>更换驱动器</translation>
+    </message>
+    <message>
+        <source>Node %1 is another drive of the same type. Write the project&apos;s configuration of node %1 to it? The writes are shown first.</source>
+        <translation>节点 %1 是另一台同型驱动器。要把项目中节点 %1 的配置写入它吗？会先列出写入内容。</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus&apos;s bit rate with the node-ID wizard, then compare again and replace it.</source>
+        <translation>节点 %1 没有响应。新驱动器会以出厂节点 ID 响应：请用节点 ID 向导设置节点 ID %1 与总线波特率，再重新比较并更换。</translation>
+    </message>
+    <message>
+        <source>Open the node-ID wizard</source>
+        <translation>打开节点 ID 向导</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::CompareModel</name>
+    <message>
+        <source>same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>replaced (another serial number)</source>
+        <translation>已更换（序列号不同）</translation>
+    </message>
+    <message>
+        <source>different device</source>
+        <translation>不同的设备</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>not in project</source>
+        <translation>不在项目中</translation>
+    </message>
+    <message>
+        <source>differs</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>unreadable</source>
+        <translation>无法读取</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>节点</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
     </message>
 </context>
 <context>
@@ -8264,6 +8529,122 @@ Make sure the axis is free to move. Arm?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProjectActions</name>
+    <message>
+        <source>CoScope projects (*.coscope *.coscope.json);;All files (*)</source>
+        <translation>CoScope 项目 (*.coscope *.coscope.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New project</source>
+        <translation>新建项目(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Open &amp;project…</source>
+        <translation>打开项目(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <source>Save pro&amp;ject</source>
+        <translation>保存项目(&amp;J)</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation>项目另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Recent pro&amp;jects</source>
+        <translation>最近的项目(&amp;J)</translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation>项目(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Compare with the machine…</source>
+        <translation>与机器比较(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>&amp;Back up the machine</source>
+        <translation>备份机器(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Apply the project…</source>
+        <translation>应用项目(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Unsaved project</source>
+        <translation>项目未保存</translation>
+    </message>
+    <message>
+        <source>The project &quot;%1&quot; has changes that are not saved. Save the project first?</source>
+        <translation>项目“%1”有尚未保存的更改。要先保存项目吗？</translation>
+    </message>
+    <message>
+        <source>New project: Project ▸ Back up the machine reads the drives into it</source>
+        <translation>新项目：项目 ▸ 备份机器 会把驱动器读入项目</translation>
+    </message>
+    <message>
+        <source>Project %1 opened</source>
+        <translation>已打开项目 %1</translation>
+    </message>
+    <message>
+        <source>Connect to the project&apos;s bus %1?</source>
+        <translation>要连接到项目的总线 %1 吗？</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>Project saved to %1</source>
+        <translation>项目已保存到 %1</translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation>备份机器</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
+        <translation>请先连接到机器的总线（非仅监听）：备份会读取驱动器。</translation>
+    </message>
+    <message>
+        <source>Backing up the machine: reading every drive…</source>
+        <translation>正在备份机器：读取每台驱动器…</translation>
+    </message>
+    <message>
+        <source>Backing up the machine: %1</source>
+        <translation>正在备份机器：%1</translation>
+    </message>
+    <message>
+        <source>Node %1: %2</source>
+        <translation>节点 %1：%2</translation>
+    </message>
+    <message>
+        <source>Node %1: NOT backed up: %2</source>
+        <translation>节点 %1：未备份：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Backup done: %n node(s)</source>
+        <translation>
+            <numerusform>备份完成：%n 个节点</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drives&apos; configuration is in the project; save the project to keep it.</source>
+        <translation>驱动器的配置已在项目中；请保存项目以保留。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::ProjectSession</name>
+    <message>
+        <source>Untitled project</source>
+        <translation>未命名项目</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -9070,6 +9451,10 @@ Send %2%3?</source>
     <message>
         <source>%1: cannot read the file</source>
         <translation>%1：无法读取文件</translation>
+    </message>
+    <message>
+        <source>%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser); read as %2 by its name, no CAN frame was found</source>
+        <translation>%1：不是 CoScope 可读取的格式（已尝试 candump、Vector ASC 和 BLF、PEAK TRC、pcap/pcapng、CoScope CSV、SavvyCAN GVRET、BUSMASTER、IXXAT 和 Kvaser）；按文件名作为 %2 读取，未找到 CAN 报文</translation>
     </message>
 </context>
 <context>

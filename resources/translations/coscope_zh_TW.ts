@@ -3850,6 +3850,115 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ApplyDialog</name>
+    <message>
+        <source>Apply the project</source>
+        <translation>套用專案</translation>
+    </message>
+    <message>
+        <source>&amp;Apply</source>
+        <translation>套用(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Store in the drives…</source>
+        <translation>儲存到驅動器(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save &amp;report…</source>
+        <translation>儲存報告(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only).</source>
+        <translation>請先連線到機台的總線（非僅監聽）。</translation>
+    </message>
+    <message>
+        <source>Reading the drives&apos; values (dry run)…</source>
+        <translation>正在讀取驅動器的值（模擬執行）…</translation>
+    </message>
+    <message>
+        <source>Dry run: the SDO writes per node</source>
+        <translation>模擬執行：各節點的 SDO 寫入</translation>
+    </message>
+    <message>
+        <source>The drives already hold the project&apos;s values: nothing to write.</source>
+        <translation>驅動器已是專案的值：不需寫入。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) to write to %1 node(s). Check the writes below, then Apply.</source>
+        <translation>
+            <numerusform>要寫入 %1 個節點的 %n 個物件。請檢查下列寫入，再按「套用」。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node&apos;s old values are put back.</source>
+        <translation>
+            <numerusform>要依清單把 %n 個物件寫入驅動器嗎？第一個被拒絕的寫入會停止，該節點的舊值會寫回。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在寫入…</translation>
+    </message>
+    <message>
+        <source>Node %1 is a new drive (serial number 0x%2): the project now expects it.</source>
+        <translation>節點 %1 是新的驅動器（序號 0x%2）：專案現在以它為準。</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>結果</translation>
+    </message>
+    <message>
+        <source>The project was applied. The drives lose these values at power off unless they are stored.</source>
+        <translation>專案已套用。除非儲存，驅動器斷電後會失去這些值。</translation>
+    </message>
+    <message>
+        <source>The project was not applied in full: see the result below.</source>
+        <translation>專案未完整套用：請見下方結果。</translation>
+    </message>
+    <message>
+        <source>Store in the drives</source>
+        <translation>儲存到驅動器</translation>
+    </message>
+    <message numerus="yes">
+        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = &quot;save&quot;)?</source>
+        <translation>
+            <numerusform>要把全部參數儲存到 %n 台驅動器的非揮發性記憶體嗎（1010h:01 = &quot;save&quot;）？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stored: %1</source>
+        <translation>已儲存：%1</translation>
+    </message>
+    <message>
+        <source>NOT stored: %1</source>
+        <translation>未儲存：%1</translation>
+    </message>
+    <message>
+        <source>The parameters are stored in the drives.</source>
+        <translation>參數已儲存在驅動器中。</translation>
+    </message>
+    <message>
+        <source>A drive did not store its parameters: see below.</source>
+        <translation>有驅動器未儲存參數：請見下方。</translation>
+    </message>
+    <message>
+        <source>Save report</source>
+        <translation>儲存報告</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt);;All files (*)</source>
+        <translation>文字檔 (*.txt);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Report saved to %1</source>
+        <translation>報告已儲存到 %1</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::BusLossAdvice</name>
     <message>
         <source>NMT state unknown</source>
@@ -4048,6 +4157,162 @@ Bits on: %1</source>
     <message>
         <source>The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. 0 = automatic: a quarter of the memory, at most 4 GiB.</source>
         <translation>追蹤在記憶體中最多保留這麼多；較舊的封包在需要時從擷取日誌讀回。0 = 自動：記憶體的四分之一，最多 4 GiB。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::CompareDialog</name>
+    <message>
+        <source>Machine and project</source>
+        <translation>機台與專案</translation>
+    </message>
+    <message>
+        <source>&amp;Only differences</source>
+        <translation>只顯示差異(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Compare again</source>
+        <translation>再次比較(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Export &amp;HTML…</source>
+        <translation>匯出 &amp;HTML…</translation>
+    </message>
+    <message>
+        <source>Export CS&amp;V…</source>
+        <translation>匯出 CS&amp;V…</translation>
+    </message>
+    <message>
+        <source>&amp;Replace drive…</source>
+        <translation>更換驅動器(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>&amp;Apply the project…</source>
+        <translation>套用專案(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>關閉</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
+        <translation>請先連線到機台的總線（非僅監聽）：比較會讀取驅動器。</translation>
+    </message>
+    <message>
+        <source>Scanning the bus and reading the drives…</source>
+        <translation>正在掃描總線並讀取驅動器…</translation>
+    </message>
+    <message>
+        <source>The machine is as in the project.</source>
+        <translation>機台與專案一致。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n object(s) differ; %1 node(s) not as in the project.</source>
+        <translation>
+            <numerusform>%n 個物件不同；%1 個節點與專案不符。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export comparison as HTML</source>
+        <translation>將比較結果匯出為 HTML</translation>
+    </message>
+    <message>
+        <source>Export comparison as CSV</source>
+        <translation>將比較結果匯出為 CSV</translation>
+    </message>
+    <message>
+        <source>HTML files (*.html)</source>
+        <translation>HTML 檔案 (*.html)</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 檔案 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>匯出</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>無法寫入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>已匯出到 %1</translation>
+    </message>
+    <message>
+        <source>Replace drive</source>
+        <translation>更換驅動器</translation>
+    </message>
+    <message>
+        <source>Node %1 is another drive of the same type. Write the project&apos;s configuration of node %1 to it? The writes are shown first.</source>
+        <translation>節點 %1 是另一台同型驅動器。要把專案中節點 %1 的設定寫入它嗎？會先列出寫入內容。</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus&apos;s bit rate with the node-ID wizard, then compare again and replace it.</source>
+        <translation>節點 %1 沒有回應。新驅動器會以出廠節點 ID 回應：請用節點 ID 精靈設定節點 ID %1 與總線鮑率，再重新比較並更換。</translation>
+    </message>
+    <message>
+        <source>Open the node-ID wizard</source>
+        <translation>開啟節點 ID 精靈</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::CompareModel</name>
+    <message>
+        <source>same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>replaced (another serial number)</source>
+        <translation>已更換（序號不同）</translation>
+    </message>
+    <message>
+        <source>different device</source>
+        <translation>不同的裝置</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺少</translation>
+    </message>
+    <message>
+        <source>not in project</source>
+        <translation>不在專案中</translation>
+    </message>
+    <message>
+        <source>differs</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>unreadable</source>
+        <translation>無法讀取</translation>
+    </message>
+    <message>
+        <source>Node</source>
+        <translation>節點</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>物件</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名稱</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>專案</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驅動器</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>預設值</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>狀態</translation>
     </message>
 </context>
 <context>
@@ -8264,6 +8529,122 @@ Make sure the axis is free to move. Arm?</source>
     </message>
 </context>
 <context>
+    <name>coscope::gui::ProjectActions</name>
+    <message>
+        <source>CoScope projects (*.coscope *.coscope.json);;All files (*)</source>
+        <translation>CoScope 專案 (*.coscope *.coscope.json);;所有檔案 (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New project</source>
+        <translation>新增專案(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Open &amp;project…</source>
+        <translation>開啟專案(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>開啟專案</translation>
+    </message>
+    <message>
+        <source>Save pro&amp;ject</source>
+        <translation>儲存專案(&amp;J)</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation>專案另存為(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Recent pro&amp;jects</source>
+        <translation>最近的專案(&amp;J)</translation>
+    </message>
+    <message>
+        <source>&amp;Project</source>
+        <translation>專案(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Compare with the machine…</source>
+        <translation>與機台比較(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>&amp;Back up the machine</source>
+        <translation>備份機台(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Apply the project…</source>
+        <translation>套用專案(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Unsaved project</source>
+        <translation>專案未儲存</translation>
+    </message>
+    <message>
+        <source>The project &quot;%1&quot; has changes that are not saved. Save the project first?</source>
+        <translation>專案「%1」有尚未儲存的變更。要先儲存專案嗎？</translation>
+    </message>
+    <message>
+        <source>New project: Project ▸ Back up the machine reads the drives into it</source>
+        <translation>新專案：專案 ▸ 備份機台 會把驅動器讀入專案</translation>
+    </message>
+    <message>
+        <source>Project %1 opened</source>
+        <translation>已開啟專案 %1</translation>
+    </message>
+    <message>
+        <source>Connect to the project&apos;s bus %1?</source>
+        <translation>要連線到專案的總線 %1 嗎？</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>儲存專案</translation>
+    </message>
+    <message>
+        <source>Project saved to %1</source>
+        <translation>專案已儲存到 %1</translation>
+    </message>
+    <message>
+        <source>Back up the machine</source>
+        <translation>備份機台</translation>
+    </message>
+    <message>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
+        <translation>請先連線到機台的總線（非僅監聽）：備份會讀取驅動器。</translation>
+    </message>
+    <message>
+        <source>Backing up the machine: reading every drive…</source>
+        <translation>正在備份機台：讀取每台驅動器…</translation>
+    </message>
+    <message>
+        <source>Backing up the machine: %1</source>
+        <translation>正在備份機台：%1</translation>
+    </message>
+    <message>
+        <source>Node %1: %2</source>
+        <translation>節點 %1：%2</translation>
+    </message>
+    <message>
+        <source>Node %1: NOT backed up: %2</source>
+        <translation>節點 %1：未備份：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Backup done: %n node(s)</source>
+        <translation>
+            <numerusform>備份完成：%n 個節點</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drives&apos; configuration is in the project; save the project to keep it.</source>
+        <translation>驅動器的設定已在專案中；請儲存專案以保留。</translation>
+    </message>
+</context>
+<context>
+    <name>coscope::gui::ProjectSession</name>
+    <message>
+        <source>Untitled project</source>
+        <translation>未命名專案</translation>
+    </message>
+</context>
+<context>
     <name>coscope::gui::RawSignalDialog</name>
     <message>
         <source>Add raw signal</source>
@@ -9070,6 +9451,10 @@ Send %2%3?</source>
     <message>
         <source>%1: cannot read the file</source>
         <translation>%1：無法讀取檔案</translation>
+    </message>
+    <message>
+        <source>%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser); read as %2 by its name, no CAN frame was found</source>
+        <translation>%1：不是 CoScope 可讀取的格式（已嘗試 candump、Vector ASC 與 BLF、PEAK TRC、pcap/pcapng、CoScope CSV、SavvyCAN GVRET、BUSMASTER、IXXAT 與 Kvaser）；依檔名當作 %2 讀取，找不到 CAN 訊息</translation>
     </message>
 </context>
 <context>
