@@ -8,6 +8,7 @@
 #include "core/sim/VirtualDevice.h"
 #include "core/project/ProjectFile.h"
 #include "eds/SimulatorDictionaries.h"
+#include "tests/CliRun.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -19,33 +20,8 @@
 using namespace coscope;
 
 namespace {
-struct Run {
-    int code = -1;
-    QString out, err;
-};
-
 // Runs coscope-cli while this thread keeps serving the socketcand clients.
-Run cli(const QStringList& args, int timeoutMs = 60000) {
-    QProcess p;
-    p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
-    QElapsedTimer t;
-    t.start();
-    while (p.state() != QProcess::NotRunning && t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        p.waitForFinished(5);
-    }
-    Run r;
-    if (p.state() != QProcess::NotRunning) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("timed out");
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
-}
+Run cliServed(const QStringList& args) { return cli(args, 60000, true); }
 }  // namespace
 
 class TestCliProject : public QObject {
@@ -80,7 +56,7 @@ private slots:
     void backupCompareApply() {
         const QString file = dir_.filePath(QStringLiteral("line.coscope"));
         set(1, 0x1017, 0, 250);
-        const Run backup = cli({QStringLiteral("project"), QStringLiteral("backup"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        const Run backup = cliServed({QStringLiteral("project"), QStringLiteral("backup"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
         QVERIFY2(backup.code == 0, qPrintable(backup.out + backup.err));
         QVERIFY2(backup.out.contains(QStringLiteral("node 1 (")) && backup.out.contains(QStringLiteral("node 3 (")), qPrintable(backup.out));
         const auto read = project::ProjectFile::read(file);
@@ -89,38 +65,38 @@ private slots:
         QCOMPARE(read.project->busUrl, url_);
         QCOMPARE(read.project->node(1)->parameter(0x1017, 0)->value, QStringLiteral("0x00FA"));
 
-        const Run same = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        const Run same = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
         QVERIFY2(same.code == 0, qPrintable(same.out + same.err));
         QVERIFY(same.out.contains(QStringLiteral("the machine is as in the project")));
 
         set(1, 0x1017, 0, 100);
         QVERIFY(net_->replaceDevice(3, 0x51000077));
-        const Run differs = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        const Run differs = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
         QVERIFY2(differs.code == 3, qPrintable(differs.out + differs.err));
         QVERIFY2(differs.out.contains(QStringLiteral("differs    1017:00")), qPrintable(differs.out));
         QVERIFY2(differs.out.contains(QStringLiteral("node 3")) && differs.out.contains(QStringLiteral("replaced - serial 0x51000077")), qPrintable(differs.out));
-        const Run json = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4"), QStringLiteral("--format"), QStringLiteral("json")});
+        const Run json = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4"), QStringLiteral("--format"), QStringLiteral("json")});
         QCOMPARE(json.code, 3);
         const QJsonObject o = QJsonDocument::fromJson(json.out.toUtf8()).object();
         QCOMPARE(o.value(QStringLiteral("differences")).toInt(), 2);
-        const Run html = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4"), QStringLiteral("--format"), QStringLiteral("html")});
+        const Run html = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4"), QStringLiteral("--format"), QStringLiteral("html")});
         QVERIFY(html.out.startsWith(QStringLiteral("<!DOCTYPE html>")));
 
-        const Run dry = cli({QStringLiteral("project"), QStringLiteral("apply"), url_, file, QStringLiteral("--dry-run")});
+        const Run dry = cliServed({QStringLiteral("project"), QStringLiteral("apply"), url_, file, QStringLiteral("--dry-run")});
         QVERIFY2(dry.code == 0, qPrintable(dry.out + dry.err));
         QVERIFY2(dry.out.contains(QStringLiteral("write 1017:00 Producer heartbeat time = 0x00FA  (now 0x0064)")), qPrintable(dry.out));
         QCOMPARE(value(1, 0x1017, 0), std::optional<uint64_t>(100));
-        const Run ask = cli({QStringLiteral("project"), QStringLiteral("apply"), url_, file});
+        const Run ask = cliServed({QStringLiteral("project"), QStringLiteral("apply"), url_, file});
         QCOMPARE(ask.code, 1);
         QVERIFY2(ask.err.contains(QStringLiteral("--yes")), qPrintable(ask.err));
         QCOMPARE(value(1, 0x1017, 0), std::optional<uint64_t>(100));
         const QString report = dir_.filePath(QStringLiteral("report.txt"));
-        const Run yes = cli({QStringLiteral("project"), QStringLiteral("apply"), url_, file, QStringLiteral("--yes"), QStringLiteral("--store"), QStringLiteral("--report"), report});
+        const Run yes = cliServed({QStringLiteral("project"), QStringLiteral("apply"), url_, file, QStringLiteral("--yes"), QStringLiteral("--store"), QStringLiteral("--report"), report});
         QVERIFY2(yes.code == 0, qPrintable(yes.out + yes.err));
         QVERIFY2(yes.out.contains(QStringLiteral("stored ")), qPrintable(yes.out));
         QCOMPARE(value(1, 0x1017, 0), std::optional<uint64_t>(250));
         QVERIFY(QFile::exists(report));
-        const Run again = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        const Run again = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
         QCOMPARE(again.code, 3);  // node 3 is still another drive (its serial), its objects are the same
         QVERIFY2(!again.out.contains(QStringLiteral("differs ")), qPrintable(again.out));
     }
@@ -131,7 +107,7 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write("{\n \"format\": 1,\n \"nodes\": [ }\n");
         f.close();
-        const Run r = cli({QStringLiteral("project"), QStringLiteral("compare"), url_, file});
+        const Run r = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(file + QStringLiteral(":3: error:")), qPrintable(r.err));
     }
