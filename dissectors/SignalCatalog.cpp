@@ -3,6 +3,8 @@
 
 #include "core/canopen/Ds402.h"
 
+#include <QRegularExpression>
+
 #include <cstring>
 
 namespace coscope::dissect {
@@ -10,9 +12,34 @@ namespace coscope::dissect {
 QString SignalKey::text() const {
     QString t = bus ? QStringLiteral("bus%1 ").arg(bus) : QString();
     if (raw) return t + QStringLiteral("raw%1").arg(raw);
-    t += QStringLiteral("n%1 %2:%3").arg(node).arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
+    t += QStringLiteral("n%1 ").arg(node) + QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
     if (bit >= 0) t += QStringLiteral(".%1").arg(bit);
     return t;
+}
+
+std::optional<SignalKey> SignalKey::parse(const QString& text) {
+    static const QRegularExpression re(QStringLiteral(R"(^\s*(?:bus(\d+)\s+)?(?:raw(\d+)|n(\d+)\s+([0-9A-Fa-f]{1,4}):([0-9A-Fa-f]{1,2})(?:\.(\d+))?)\s*$)"),
+                                        QRegularExpression::CaseInsensitiveOption);
+    const QRegularExpressionMatch m = re.match(text);
+    if (!m.hasMatch()) return std::nullopt;
+    SignalKey k;
+    const uint bus = m.captured(1).isEmpty() ? 0 : m.captured(1).toUInt();
+    if (bus > 255) return std::nullopt;
+    k.bus = static_cast<uint8_t>(bus);
+    if (!m.captured(2).isEmpty()) {
+        const uint raw = m.captured(2).toUInt();
+        if (raw == 0 || raw > 0xFFFF) return std::nullopt;
+        k.raw = static_cast<uint16_t>(raw);
+        return k;
+    }
+    const uint node = m.captured(3).toUInt();
+    const int bit = m.captured(6).isEmpty() ? -1 : m.captured(6).toInt();
+    if (node > 127 || bit > 63) return std::nullopt;
+    k.node = static_cast<uint8_t>(node);
+    k.index = static_cast<uint16_t>(m.captured(4).toUInt(nullptr, 16));
+    k.sub = static_cast<uint8_t>(m.captured(5).toUInt(nullptr, 16));
+    k.bit = static_cast<int8_t>(bit);
+    return k;
 }
 
 bool hasDigitalBits(uint16_t index, uint8_t sub) {

@@ -30,6 +30,8 @@ struct SignalKey {
     }
     // "n2 6064:00", "n2 6041:00.10" (with "bus1 " in front for buses other than the first).
     QString text() const;
+    // Reads text() back ("raw3" too); nullopt for anything else.
+    static std::optional<SignalKey> parse(const QString& text);
 };
 
 // What the catalogue says about a signal.

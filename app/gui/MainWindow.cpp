@@ -15,12 +15,14 @@
 #include "app/gui/help/HelpMenu.h"
 #include "app/gui/help/HelpWindow.h"
 #include "app/gui/project/ProjectActions.h"
+#include "app/gui/project/ProjectSession.h"
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
 #include "app/gui/master/MasterActions.h"
 #include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
+#include "app/gui/master/TransmitModel.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PdoDbcExport.h"
@@ -85,6 +87,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     status_ = new BusStatusBar(statusBar(), workspace_);
     projectActions_ = new ProjectActions(workspace_, this, [this](const QString& url) { return connectBus(url, true); });
     connect(projectActions_, &ProjectActions::message, this, &MainWindow::showMessage);
+    ProjectSession* project = projectActions_->session();
+    project->bindPlots({[this] { return plot_->layoutJson(); }, [this](const QJsonObject& o) { plot_->setLayoutJson(o); }});
+    project->bindTraceFilters({[this] { return trace_->filtersJson(); }, [this](const QJsonObject& o) { trace_->setFiltersJson(o); }});
+    connect(project, &ProjectSession::settingsRestored, transmit_->model(), &TransmitModel::reloadSaved);
     buildMenus();
     restoreLayout();
     offerAndCleanJournals();

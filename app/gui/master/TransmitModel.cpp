@@ -69,6 +69,8 @@ void TransmitModel::rebind(canopen::TransmitList* list) {
     endResetModel();
 }
 
+void TransmitModel::reloadSaved() { rebind(hasBus() ? list_ : nullptr); }
+
 void TransmitModel::refresh() {
     if (list_->revision() != revision_) {
         beginResetModel();

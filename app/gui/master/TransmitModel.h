@@ -34,6 +34,9 @@ public:
     canopen::TransmitList* list() const { return list_; }
     bool hasBus() const { return list_ != offlineList_.get(); }
     void refresh();
+    // The rows kept in the settings again (a project was opened): the list is replaced, its
+    // periodic rows stopped.
+    void reloadSaved();
 
     canopen::TransmitEntry entry(int row) const;
     bool setEntry(int row, const canopen::TransmitEntry& e);

@@ -14,6 +14,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QJsonArray>
 #include <QLabel>
 #include <QMenu>
 #include <QSplitter>
@@ -23,6 +24,8 @@
 
 #include <algorithm>
 #include <map>
+
+#include <spdlog/spdlog.h>
 
 namespace coscope::gui {
 
@@ -211,7 +214,7 @@ void PlotDock::updatePlotted() {
 // With nothing picked: position actual 6064h and velocity actual 606Ch of the first node
 // whose TPDOs carry both.
 void PlotDock::autoPick() {
-    if (autoPicked_ || !picker_->picked().empty()) return;
+    if (autoPicked_ || !picker_->picked().empty() || !wanted_.empty()) return;
     const auto& cat = picker_->catalog();
     for (const SignalInfo& p : cat) {
         if (p.key.index != 0x6064 || p.key.sub != 0 || p.digital || !p.pdo.startsWith(QLatin1String("TPDO"))) continue;
@@ -228,6 +231,39 @@ void PlotDock::autoPick() {
     }
 }
 
+QJsonObject PlotDock::layoutJson() const {
+    QJsonArray keys;
+    for (const SignalKey& k : picker_->picked()) keys.append(k.text());
+    for (const SignalKey& k : wanted_) keys.append(k.text());
+    return {{QStringLiteral("signals"), keys},
+            {QStringLiteral("layout"), view_->layoutMode() == PlotView::Layout::Overlay ? QStringLiteral("overlay") : QStringLiteral("stacked")},
+            {QStringLiteral("windowSeconds"), window_->value()}};
+}
+
+void PlotDock::setLayoutJson(const QJsonObject& layout) {
+    if (layout.isEmpty()) return;
+    wanted_.clear();
+    for (const QJsonValue& v : layout.value(QStringLiteral("signals")).toArray()) {
+        if (const auto key = SignalKey::parse(v.toString())) wanted_.push_back(*key);
+        else spdlog::warn("project plot layout: '{}' is not a signal", v.toString().toStdString());
+    }
+    for (const SignalKey& k : picker_->picked()) picker_->setPicked(k, false);
+    const bool overlay = layout.value(QStringLiteral("layout")).toString() == QLatin1String("overlay");
+    layout_->setCurrentIndex(overlay ? 1 : 0);
+    if (const double w = layout.value(QStringLiteral("windowSeconds")).toDouble(); w > 0) window_->setValue(w);
+    pickWanted();
+}
+
+void PlotDock::pickWanted() {
+    if (wanted_.empty()) return;
+    autoPicked_ = true;  // the project chose
+    std::erase_if(wanted_, [&](const SignalKey& k) {
+        if (!picker_->info(k)) return false;
+        picker_->setPicked(k, true);
+        return true;
+    });
+}
+
 void PlotDock::refresh() {
     if (workspace_->signalRecorder() != recorder_ && recorder_) {
         // The same trace recorded again (dictionaries assigned to a log): keep picks and view.
@@ -242,6 +278,7 @@ void PlotDock::refresh() {
             picker_->setPicked(*pendingPick_, true);
             pendingPick_.reset();
         }
+        pickWanted();
         autoPick();
         updatePlotted();  // default scales may have changed (vendor parameters seen)
     }

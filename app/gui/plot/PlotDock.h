@@ -7,6 +7,7 @@
 #include "dissectors/SignalCatalog.h"
 
 #include <QDockWidget>
+#include <QJsonObject>
 
 #include <cstdint>
 #include <memory>
@@ -54,6 +55,11 @@ public:
     void setWindowSeconds(double seconds);
     double windowSeconds() const;
     void setLayoutMode(PlotView::Layout layout);
+    // The plot layout a project keeps (ProjectSession): the picked signals (SignalKey::text),
+    // stacked or overlaid, the rolling window's seconds. Signals not in the catalogue yet are
+    // picked as soon as the trace shows them, on this source or the next.
+    QJsonObject layoutJson() const;
+    void setLayoutJson(const QJsonObject& layout);
     bool exportPng(const QString& path, QString* error = nullptr);
     bool exportPdf(const QString& path, QString* error = nullptr);
     bool exportCsv(const QString& path, QString* error = nullptr);  // the visible window
@@ -68,6 +74,7 @@ private:
     void buildToolbar(QWidget* host);
     void updatePlotted();
     void autoPick();
+    void pickWanted();  // wanted_ signals the catalogue now has
     void exportDialog(const QString& kind);
     // "Add raw signal…": a signal of any frame defined by hand, kept by the workspace and
     // picked once the trace shows it.
@@ -91,6 +98,7 @@ private:
     QAction* legend_ = nullptr;
     uint64_t catalogRevision_ = 0;
     std::optional<dissect::SignalKey> pendingPick_;  // a raw signal just added
+    std::vector<dissect::SignalKey> wanted_;         // a project's picks the catalogue lacks yet
     bool autoPicked_ = false;
     bool paused_ = false;
     bool whole_ = false;

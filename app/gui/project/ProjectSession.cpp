@@ -80,14 +80,20 @@ void ProjectSession::captureSettings() {
     if (workspace_)
         for (const auto& signal : workspace_->rawSignals()) raw.append(signal.spec());
     project_.rawSignals = raw;
+    if (plots_.capture) project_.plots = plots_.capture();
+    if (traceFilters_.capture) project_.traceFilters = traceFilters_.capture();
 }
 
-// SYNC/heartbeat and the transmit list are read from the settings when their dock or dialog is
-// made; raw signals are added to the workspace at once.
+// SYNC/heartbeat settings are read from QSettings each time they are used, the transmit list when
+// settingsRestored() reloads it; raw signals are added to the workspace, plot layouts and trace
+// filters given to their docks at once.
 void ProjectSession::restoreSettings() {
     QSettings s;
     for (auto it = project_.master.begin(); it != project_.master.end(); ++it) s.setValue(QStringLiteral("master/") + it.key(), it.value().toVariant());
-    if (!project_.transmit.isEmpty()) s.setValue(kTransmitKey, QJsonDocument(project_.transmit).toJson(QJsonDocument::Compact));
+    s.setValue(kTransmitKey, QJsonDocument(project_.transmit).toJson(QJsonDocument::Compact));  // a project without rows has none
+    emit settingsRestored();
+    if (plots_.restore) plots_.restore(project_.plots);
+    if (traceFilters_.restore) traceFilters_.restore(project_.traceFilters);
     if (!workspace_) return;
     for (const QJsonValue& v : project_.rawSignals) {
         const auto signal = dissect::RawSignal::parse(v.toString());

@@ -9,6 +9,8 @@
 #include <QObject>
 #include <QStringList>
 
+#include <functional>
+
 namespace coscope::gui {
 
 class Workspace;
@@ -35,12 +37,24 @@ public:
     // A backup's result, or any change made to the project: marks it modified.
     void setProject(const project::Project& project);
 
+    // A part of the window a project keeps that does not live in QSettings: read when the project
+    // is saved, given back when it is opened (MainWindow binds the Plot and Trace docks).
+    struct Part {
+        std::function<QJsonObject()> capture;
+        std::function<void(const QJsonObject&)> restore;
+    };
+    void bindPlots(Part part) { plots_ = std::move(part); }
+    void bindTraceFilters(Part part) { traceFilters_ = std::move(part); }
+
     // Recent project files, newest first (RecentList "files/recent/projects").
     static QStringList recent();
     static void addRecent(const QString& path);
 
 signals:
     void changed();  // opened, saved, modified
+    // A project was opened: the transmit list and SYNC/heartbeat settings in QSettings are the
+    // project's now (the Transmit dock reloads its rows).
+    void settingsRestored();
 
 private:
     void captureSettings();   // the window's settings into project_
@@ -50,6 +64,7 @@ private:
     QString path_;
     bool open_ = false;
     bool modified_ = false;
+    Part plots_, traceFilters_;
 };
 
 }  // namespace coscope::gui

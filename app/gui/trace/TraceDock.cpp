@@ -325,6 +325,20 @@ bool TraceDock::applyFilter(const QString& query, QString* error) {
 
 void TraceDock::clearFilter() { applyFilter(QString()); }
 
+QJsonObject TraceDock::filtersJson() const {
+    return {{QStringLiteral("filter"), filterEdit_->text().trimmed()}, {QStringLiteral("groupSdo"), groupSdo_->isChecked()}};
+}
+
+void TraceDock::setFiltersJson(const QJsonObject& filters) {
+    if (filters.isEmpty()) return;
+    {
+        const QSignalBlocker block(groupSdo_);  // one filter run, below
+        groupSdo_->setChecked(filters.value(QStringLiteral("groupSdo")).toBool());
+    }
+    QString error;
+    if (!applyFilter(filters.value(QStringLiteral("filter")).toString(), &error)) emit message(tr("The project's trace filter is not valid: %1").arg(error));
+}
+
 void TraceDock::setGroupSdo(bool on) { groupSdo_->setChecked(on); }
 bool TraceDock::groupsSdo() const { return groupSdo_->isChecked(); }
 

@@ -7,6 +7,7 @@
 #include "core/trace/TraceStore.h"
 
 #include <QDockWidget>
+#include <QJsonObject>
 
 #include <memory>
 
@@ -45,6 +46,9 @@ public:
     // Starts filtering with a query (see TraceFilter); false + message on a bad query.
     bool applyFilter(const QString& query, QString* error = nullptr);
     void clearFilter();
+    // The trace filters a project keeps (ProjectSession): the filter words and Group SDO.
+    QJsonObject filtersJson() const;
+    void setFiltersJson(const QJsonObject& filters);
     bool isFiltering() const { return filterJob_ != nullptr; }
     // "Group SDO transfers": each reassembled transfer as one expandable row (computed off-thread).
     void setGroupSdo(bool on);
