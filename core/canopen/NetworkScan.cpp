@@ -16,7 +16,7 @@ uint32_t u32(const QByteArray& b) {
 }
 }  // namespace
 
-NetworkScan::NetworkScan(SdoClient& sdo, QObject* parent) : QObject(parent), sdo_(sdo), pacer_(new QTimer(this)) {
+NetworkScan::NetworkScan(SdoClient& sdo, QObject* parent) : QObject(parent), sdo_(&sdo), pacer_(new QTimer(this)) {
     pacer_->setSingleShot(true);
     connect(pacer_, &QTimer::timeout, this, &NetworkScan::launchMore);
 }
@@ -33,6 +33,10 @@ void NetworkScan::start(Done done) {
 
 void NetworkScan::launchMore() {
     if (!running_) return;
+    if (!sdo_) {
+        running_ = false;
+        return;
+    }
     if (next_ > std::min<int>(127, last_)) {
         if (outstanding_ == 0) {
             running_ = false;
@@ -52,7 +56,7 @@ void NetworkScan::probe(uint8_t node) {
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_.upload(node, 0x1000, 0, [self, node](const SdoResult& r) {
+    sdo_->upload(node, 0x1000, 0, [self, node](const SdoResult& r) {
         if (!self) return;
         ++self->probed_;
         // Any answer, even an abort, means a node is there.
@@ -65,11 +69,12 @@ void NetworkScan::probe(uint8_t node) {
 }
 
 void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) {
+    if (!sdo_) return;
     if (sub > 4) return readStrings(found, 0);
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_.upload(found->node, 0x1018, sub, [self, found, sub](const SdoResult& r) {
+    sdo_->upload(found->node, 0x1018, sub, [self, found, sub](const SdoResult& r) {
         if (!self) return;
         if (r.ok) {
             const uint32_t v = u32(r.data);
@@ -89,15 +94,19 @@ void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) 
 // 1008h device name, 1009h hardware version, 100Ah software version: VISIBLE_STRING, optional.
 void NetworkScan::readStrings(std::shared_ptr<ScannedNode> found, int which) {
     static constexpr uint16_t kIndex[] = {0x1008, 0x1009, 0x100A};
+    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion, NodeInfo::kNoSoftwareVersion};
+    if (!sdo_) return;
     if (which >= 3) return finishNode(found);
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_.upload(found->node, kIndex[which], 0, [self, found, which](const SdoResult& r) {
+    sdo_->upload(found->node, kIndex[which], 0, [self, found, which](const SdoResult& r) {
         if (!self) return;
         if (r.ok) {
-            const QString text = QString::fromUtf8(r.data).section(QChar(0), 0, 0);  // some devices pad with NULs
+            const QString text = QString::fromUtf8(r.data).section(QChar(0), 0, 0).trimmed();  // some devices pad with NULs
             (which == 0 ? found->deviceName : which == 1 ? found->hardwareVersion : found->softwareVersion) = text;
+        } else if (r.serverAborted) {
+            found->notPresent |= kBit[which];
         }
         self->readStrings(found, which + 1);
     }, o);
@@ -105,19 +114,21 @@ void NetworkScan::readStrings(std::shared_ptr<ScannedNode> found, int which) {
 
 void NetworkScan::finishNode(std::shared_ptr<ScannedNode> found) {
     if (matcher_) found->dictionary = matcher_(*found);
-    sdo_.context().nodes().update(found->node, [&](NodeInfo& info) {
-        info.scanned = true;
-        info.deviceType = found->deviceType;
-        info.vendorId = found->vendorId;
-        info.productCode = found->productCode;
-        info.revision = found->revision;
-        info.serial = found->serial;
-        info.deviceName = found->deviceName.value_or(QString());
-        info.hardwareVersion = found->hardwareVersion;
-        info.softwareVersion = found->softwareVersion;
-        info.dictionary = found->dictionary;
-    });
-    if (!found->dictionary.isEmpty()) sdo_.context().setNodeDictionary(found->node, found->dictionary);
+    NodeTable& table = sdo_->context().nodes();
+    const int id = found->node;
+    table.markScanned(id);
+    table.update(id, [&](NodeInfo& info) { info.deviceType = found->deviceType; });
+    table.setIdentity(id, found->vendorId, found->productCode, found->revision, found->serial);
+    // An optional string read or refused is written; one not answered leaves what was known.
+    static constexpr uint16_t kIndex[] = {0x1008, 0x1009, 0x100A};
+    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion, NodeInfo::kNoSoftwareVersion};
+    const std::optional<QString>* texts[] = {&found->deviceName, &found->hardwareVersion, &found->softwareVersion};
+    for (int i = 0; i < 3; ++i)
+        if (*texts[i] || (found->notPresent & kBit[i])) table.setOptionalText(id, kIndex[i], *texts[i]);
+    if (!found->dictionary.isEmpty()) {
+        table.setDictionary(id, found->dictionary);
+        sdo_->context().setNodeDictionary(found->node, found->dictionary);
+    }
     found_.push_back(*found);
     nodeDone();
 }

@@ -5,6 +5,7 @@
 #include "core/canopen/SdoClient.h"
 
 #include <QObject>
+#include <QPointer>
 
 #include <functional>
 #include <optional>
@@ -22,6 +23,9 @@ struct ScannedNode {
     // Optional CiA 301 objects (§7.5.2.9-11), read quietly: nullopt = the node does not have it
     // (aborted or no answer), which is normal and not an error.
     std::optional<QString> deviceName, hardwareVersion, softwareVersion;  // 1008h, 1009h, 100Ah
+    // Which of them the node refused (SDO abort): "not present", as opposed to not answered;
+    // NodeInfo::kNoDeviceName, kNoHardwareVersion, kNoSoftwareVersion.
+    uint8_t notPresent = 0;
     QString dictionary;  // empty when nothing matched
     QString error;       // 1018h could not be read (the node answered 1000h)
 };
@@ -32,7 +36,8 @@ struct ScannedNode {
 // `maxOutstanding` requests in flight and at least `intervalMs` between two new requests, so a
 // scan never floods a production bus. No request is retried. The dictionary is matched by a
 // function the caller gives (the eds layer's library; core cannot see it). Found nodes are
-// written into the bus's node table (MasterContext::nodes()).
+// written into the bus's node table (MasterContext::nodes()). The one scanner of CoScope: the
+// CLI's `scan`, the project's backup and compare, the Nodes dock and the wizards (NodeScanner).
 class NetworkScan : public QObject {
     Q_OBJECT
 public:
@@ -60,7 +65,9 @@ private:
     void finishNode(std::shared_ptr<ScannedNode> found);
     void nodeDone();
 
-    SdoClient& sdo_;
+    // The bus's client; a scan whose bus closed (the client gone) stops quietly, as its pending
+    // transfers do.
+    QPointer<SdoClient> sdo_;
     QTimer* pacer_;
     uint8_t first_ = 1, last_ = 127;
     int timeoutMs_ = 200;

@@ -2,41 +2,42 @@
 #pragma once
 
 #include <QObject>
+#include <QPointer>
 
-#include <functional>
 #include <set>
 
 namespace coscope::canopen {
-class MasterContext;
 class SdoClient;
-class NodeTable;
 }  // namespace coscope::canopen
 
 namespace coscope::gui {
 
-// Network scan and identification through the SDO client (never blocks): reads 1000h (device
-// type) from nodes 1..127 — a node that answers (even with an abort) exists — then its device
-// type, name 1008h, versions 1009h/100Ah ("not present" when the node lacks one) and identity
-// 1018h:01..04, and matches a dictionary (DictionaryLibrary::match).
+// The window's side of the network scan: core's NetworkScan (the one scanner, also the CLI's
+// `scan` and the project's), with the bundled dictionaries as its matcher, run by the Nodes dock
+// and the wizards. The results go into the bus's node table (the NodeTable of the SDO client's
+// MasterContext). Never blocks.
 class NodeScanner : public QObject {
     Q_OBJECT
 public:
-    NodeScanner(canopen::SdoClient* sdo, canopen::NodeTable* table, QObject* parent = nullptr);
+    explicit NodeScanner(canopen::SdoClient* sdo, QObject* parent = nullptr);
 
+    // Nodes first..last; a technician waits for this one, so it asks more node-IDs at a time
+    // (kOutstanding) than NetworkScan's default.
     void scan(int firstNode = 1, int lastNode = 127, int timeoutMs = 300);
+    // One node again (its identity and strings), e.g. when it is selected.
     void identify(int node);
-    bool isRunning() const { return outstanding_ > 0; }
+    bool isRunning() const { return running_ > 0; }
     int found() const { return static_cast<int>(found_.size()); }
+
+    static constexpr int kOutstanding = 32;
 
 signals:
     void finished(int nodesFound);
 
 private:
-    void identifyThen(int node, std::function<void()> then);
-    void done();
-    canopen::SdoClient* sdo_;
-    canopen::NodeTable* table_;
-    int outstanding_ = 0;
+    void run(int first, int last, int timeoutMs, bool report);
+    QPointer<canopen::SdoClient> sdo_;  // null once its bus closed
+    int running_ = 0;
     std::set<int> found_;
 };
 

@@ -121,7 +121,7 @@ void NodesDock::rebind() {
         return s && !s->empty() ? s->record(static_cast<FrameNo>(s->size() - 1)).timestampNs : 0;
     });
     delete scanner_;
-    scanner_ = workspace_->sdo() ? new NodeScanner(workspace_->sdo(), &workspace_->nodes(), this) : nullptr;
+    scanner_ = workspace_->sdo() ? new NodeScanner(workspace_->sdo(), this) : nullptr;
     if (scanner_)
         connect(scanner_, &NodeScanner::finished, this, [this](int n) { emit message(tr("Scan finished: %1 node(s) answered").arg(n)); });
     updateEnabled();

@@ -108,7 +108,7 @@ void startSimulationDemo(Workspace* ws) {
         if (!ws->canTransmit() || !ws->sdo()) return;  // still opening
         poll->stop();
         poll->deleteLater();
-        auto* scanner = new NodeScanner(ws->sdo(), &ws->nodes(), ws);
+        auto* scanner = new NodeScanner(ws->sdo(), ws);
         // The scanner's identity reads may still be under way when it reports finished: it
         // lives until the source changes (its SDO client is gone by then).
         QObject::connect(ws, &Workspace::sourceChanged, scanner, &QObject::deleteLater);

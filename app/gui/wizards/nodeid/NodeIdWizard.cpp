@@ -139,7 +139,7 @@ void NodeIdWizard::setDictionary(const QString& name) {
 void NodeIdWizard::scan() {
     if (!sendRefusal().isEmpty() || isScanning()) return;
     delete scanner_;
-    scanner_ = new NodeScanner(workspace_->sdo(), &workspace_->nodes(), this);
+    scanner_ = new NodeScanner(workspace_->sdo(), this);
     connect(scanner_, &NodeScanner::finished, this, [this](int) {
         workspace_->syncDictionaries();
         if (request_.node == 0) {
@@ -403,7 +403,7 @@ void NodeIdWizard::followChange(int from, int to) {
     // Ask the device at its new ID (or rate) who it is (1018h): confirms the entry, and gives a
     // device that had no node-ID its dictionary.
     if (!workspace_->sdo() || !workspace_->canTransmit()) return;
-    auto* identify = new NodeScanner(workspace_->sdo(), &nodes, workspace_);
+    auto* identify = new NodeScanner(workspace_->sdo(), workspace_);
     connect(workspace_, &Workspace::sourceChanged, identify, &QObject::deleteLater);
     connect(identify, &NodeScanner::finished, workspace_, [ws = workspace_, identify] {
         ws->syncDictionaries();
