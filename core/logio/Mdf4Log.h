@@ -33,7 +33,7 @@ public:
     ~Mdf4Reader() override;
     QString formatName() const override { return QStringLiteral("mf4"); }
     // Start of the recording from the HD block (UTC; invalid before open()).
-    QDateTime startTime() const { return QDateTime::fromMSecsSinceEpoch(startNs_ / 1000000, QTimeZone::utc()); }
+    QDateTime startTime() const { return QDateTime::fromMSecsSinceEpoch(startNs_ / 1000000).toUTC(); }
     int64_t startNs() const { return startNs_; }
 
 protected:
