@@ -15,7 +15,7 @@ namespace coscope::logio::mdf4 {
 
 namespace {
 constexpr uint64_t kMaxLinks = 1 << 20;
-constexpr uint64_t kMaxInflated = 256ULL << 20;  // a DZ block larger than this is refused
+constexpr uint64_t kMaxInflated = 64ULL << 20;  // a DZ block larger than this is refused
 constexpr qint64 kChunk = 1 << 20;
 
 QString tagText(const char* t) { return QString::fromLatin1(t, 2); }

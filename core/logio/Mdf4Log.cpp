@@ -25,6 +25,7 @@ constexpr uint16_t kCgVlsd = 0x0001;
 constexpr uint16_t kUnfinCycleCounts = 0x0001;  // id_unfin_flags bit 0: cycle counts not updated
 constexpr size_t kMaxPendingVlsd = 1 << 16;     // VLSD samples waiting for their record
 constexpr uint32_t kMaxVlsdLength = 16 << 20;
+constexpr size_t kReorderFrames = 1 << 16;  // 5.8 MB of frames
 
 // CAN_ErrorFrame.ErrorType (ASAM MDF bus logging, as asammdf names the values): 1 bit error,
 // 2 form error, 3 bit stuffing error, 4 CRC error, 5 acknowledgment error; 0 and others:
@@ -211,6 +212,11 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
         cg = c.link(0);
     }
     if (!anyCan) return false;
+    for (const auto& g : dg->groups)
+        if (dg->idSize == 0 && g.size == 0) {
+            warn(0, QStringLiteral("DG block at byte %1 (data group %2): records of 0 bytes; skipped").arg(at).arg(number));
+            return false;
+        }
     if (dg->idSize == 0 && dg->groups.size() != 1) {
         warn(0, QStringLiteral("DG block at byte %1 (data group %2) has %3 channel groups but no record ids; skipped").arg(at).arg(number).arg(dg->groups.size()));
         return false;
@@ -424,19 +430,30 @@ bool Mdf4Reader::decode(DataGroup& dg, Group& g, const unsigned char* rec, CanFr
     return true;
 }
 
+// The data groups merged by time, then through a window of kReorderFrames frames ordered by
+// time (equal times keep their order): one data group's channel groups are written in blocks
+// (CANedge writes its Tx and Rx groups apart, up to a second out of step).
 size_t Mdf4Reader::readFrames(CanFrame* out, size_t max) {
+    auto later = [](const Pending& a, const Pending& b) { return a.frame.timestampNs != b.frame.timestampNs ? a.frame.timestampNs > b.frame.timestampNs : a.sequence > b.sequence; };
     size_t n = 0;
     while (n < max) {
         if ((n & 0x3FF) == 0x3FF && isCancelled()) break;
         DataGroup* best = nullptr;
         for (auto& g : groups_)
             if (g->hasNext && (!best || g->next.timestampNs < best->next.timestampNs)) best = g.get();
-        if (!best) {
+        if (best) {
+            window_.push_back({best->next, sequence_++});
+            std::push_heap(window_.begin(), window_.end(), later);
+            advance(*best);
+            if (window_.size() < kReorderFrames) continue;
+        }
+        if (window_.empty()) {
             finish();
             break;
         }
-        out[n++] = best->next;
-        advance(*best);
+        std::pop_heap(window_.begin(), window_.end(), later);
+        out[n++] = window_.back().frame;
+        window_.pop_back();
     }
     return n;
 }

@@ -23,8 +23,9 @@ namespace coscope::logio {
 // data groups; DT, DL, DZ (deflate, transposition + deflate) and HL data (Mdf4Blocks.h);
 // VLSD data bytes in SD blocks or in VLSD channel groups. Unfinalised files (a power loss):
 // cycle counts are not trusted, the last DT block's data runs to the end of the file, a cut
-// record at the end is reported. Frames of several data groups are merged by time; within one
-// data group they come in file order. Timestamps are the HD start time plus the master time
+// record at the end is reported. Frames come in time order: the data groups merged, then a
+// window of 65536 frames sorted by time (a CANedge writes its Tx and Rx groups up to a second
+// apart; equal times keep the file's order). Timestamps are the HD start time plus the master time
 // channel (converted to seconds). Bus = CAN_DataFrame.BusChannel (1-based, as BLF).
 // Diagnostics count records from 1 and name the byte offset of the block.
 class Mdf4Reader : public LogReader {
@@ -52,6 +53,12 @@ private:
     bool decode(DataGroup& dg, Group& g, const unsigned char* record, CanFrame& f);
     void endGroup(DataGroup& dg, const QString& why);
 
+    struct Pending {
+        CanFrame frame;
+        uint64_t sequence = 0;
+    };
+    std::vector<Pending> window_;  // a heap, earliest first
+    uint64_t sequence_ = 0;
     std::unique_ptr<mdf4::BlockFile> file_;
     std::vector<std::unique_ptr<DataGroup>> groups_;
     int64_t startNs_ = 0;

@@ -6,7 +6,8 @@ Written separately from core/logio/Mdf4*.cpp, as the cross-check of tests/corpus
 walks HD -> DG -> CG -> CN by their links, takes the CAN_DataFrame / CAN_RemoteFrame /
 CAN_ErrorFrame channel groups, and counts their records in the DT data (DL/DZ/HL too) by record
 id. Prints one JSON object per file: frames, per bus, 29-bit, Tx, and the channel groups' own
-cycle counts (meaningful in finalised files only).
+cycle counts (meaningful in finalised files only), and the earliest frame [us after the HD
+start time, BusChannel, ID].
 """
 import json
 import struct
@@ -56,20 +57,20 @@ class Mdf:
 
 
 def channels(mdf, first):
-    """name -> (cn_type, byte offset, bit offset, bit count, conversion values)."""
+    """name -> (cn_type, byte offset, bit offset, bit count, conversion values, data type)."""
     found, todo = {}, [first]
     while todo:
         at = todo.pop()
         if not at:
             continue
         tag, _, links, data = mdf.block(at)
-        ctype, _, _, bit, byte, bits = struct.unpack_from("<BBBBII", mdf.raw, data)
+        ctype, _, dtype, bit, byte, bits = struct.unpack_from("<BBBBII", mdf.raw, data)
         conv = ()
         if links[4]:
             _, _, _, cdata = mdf.block(links[4])
             count = struct.unpack_from("<H", mdf.raw, cdata + 6)[0]
             conv = struct.unpack_from("<%dd" % count, mdf.raw, cdata + 24)
-        found[mdf.text(links[2])] = (ctype, byte, bit, bits, conv)
+        found[mdf.text(links[2])] = (ctype, byte, bit, bits, conv, dtype)
         todo += [links[0], links[1]]
     return found
 
@@ -78,11 +79,19 @@ def field(chans, kind, name, record):
     ch = chans.get(kind + "." + name)
     if ch is None:
         return None
-    ctype, byte, bit, bits, conv = ch
+    ctype, byte, bit, bits, conv, _ = ch
     if ctype == 6:  # virtual: a constant through a factor-0 linear conversion
         return int(conv[0])
     value = int.from_bytes(record[byte:byte + (bit + bits + 7) // 8], "little") >> bit
     return value & ((1 << bits) - 1)
+
+
+def timestamp(chans, record):
+    """Seconds after the HD start time: the master channel (cn_type 2) through its conversion."""
+    ctype, byte, bit, bits, conv, dtype = next(c for c in chans.values() if c[0] == 2)
+    raw = record[byte:byte + bits // 8]
+    value = struct.unpack("<d", raw)[0] if dtype == 4 else int.from_bytes(raw, "little")
+    return conv[0] + conv[1] * value if conv else value
 
 
 def count(path):
@@ -91,6 +100,7 @@ def count(path):
     stale = raw[:8] == b"UnFinMF " and (struct.unpack_from("<H", raw, 60)[0] & 4)
     hd = mdf.block(64)
     result = {"frames": 0, "bus": {}, "extended": 0, "tx": 0, "cycles": 0}
+    earliest = None
     dg = hd[2][0]
     while dg:
         _, _, dlinks, ddata = mdf.block(dg)
@@ -120,6 +130,9 @@ def count(path):
             if not kind:
                 continue
             result["frames"] += 1
+            seconds = timestamp(chans, record)
+            if earliest is None or seconds < earliest[0]:
+                earliest = (seconds, field(chans, kind, "BusChannel", record), field(chans, kind, "ID", record))
             bus = str(field(chans, kind, "BusChannel", record))
             result["bus"][bus] = result["bus"].get(bus, 0) + 1
             if field(chans, kind, "IDE", record):
@@ -127,6 +140,8 @@ def count(path):
             if field(chans, kind, "Dir", record):
                 result["tx"] += 1
         dg = dlinks[0]
+    if earliest:
+        result["first"] = [round(earliest[0] * 1e6), earliest[1], earliest[2]]
     return result
 
 

@@ -164,6 +164,23 @@ private slots:
         QVERIFY2(problemText(wrong).contains(QStringLiteral("declares 4 records, 3 were read")), qPrintable(problemText(wrong)));
     }
 
+    // Channel groups of one data group written apart (CANedge's Tx and Rx groups) come out in
+    // time order; equal times keep the file's order.
+    void oneDataGroupComesInTimeOrder() {
+        File m;
+        const uint64_t rx = m.group(1, 3, 0, 80, m.canChannels("CAN_DataFrame"));
+        const uint64_t tx = m.group(2, 2, 0, 80, m.canChannels("CAN_DataFrame"));
+        m.chain({rx, tx});
+        QByteArray r;
+        for (uint64_t t : {10, 30, 50}) r += File::record(1, 1, frame(t * 1000, uint32_t(t), {}));
+        for (uint64_t t : {20, 30}) r += File::record(1, 2, frame(t * 1000, uint32_t(t + 1), {}));
+        const Result res = readBytes(m.finish(m.dataGroup(1, rx, m.dt(r)), kStart));
+        QVERIFY2(res.problems.empty(), qPrintable(problemText(res)));
+        QList<uint32_t> ids;
+        for (const auto& f : res.frames) ids << f.id;
+        QCOMPARE(ids, (QList<uint32_t>{10, 21, 30, 31, 50}));
+    }
+
     // The same records stored plainly, in a DZ block, transposed in a DZ under an HL, and in a
     // DL of two DT blocks that splits a record read the same frames.
     void compressedAndListedDataReadTheSame() {
