@@ -157,15 +157,12 @@ bool Mdf4Reader::readHeader() {
     }
     uint64_t lastData = 0;
     for (const auto& d : dgs) lastData = std::max(lastData, d.second);
-    QString firstError;
-    for (size_t i = 0; i < dgs.size(); ++i) {
-        const size_t before = diagnostics().size();
-        readDataGroup(dgs[i].first, int(i + 1), staleLastDt && dgs[i].second == lastData);
-        if (firstError.isEmpty() && diagnostics().size() > before) firstError = diagnostics()[before].message;
-    }
+    for (size_t i = 0; i < dgs.size(); ++i) readDataGroup(dgs[i].first, int(i + 1), staleLastDt && dgs[i].second == lastData);
     for (auto& g : groups_) g->checkCycles = !(unfin & kUnfinCycleCounts) && finalisedTag;
     if (groups_.empty()) {
-        fail(firstError.isEmpty() ? QStringLiteral("no CAN bus-logging channel group (CAN_DataFrame, CAN_RemoteFrame, CAN_ErrorFrame) in the file") : firstError);
+        // Why: the first problem met, else there is no CAN group at all.
+        fail(diagnostics().empty() ? QStringLiteral("no CAN bus-logging channel group (CAN_DataFrame, CAN_RemoteFrame, CAN_ErrorFrame) in the file")
+                                   : diagnostics().front().message);
         return false;
     }
     for (auto& g : groups_) advance(*g);

@@ -160,6 +160,24 @@ private slots:
         QVERIFY(!reader->diagnostics().empty());
         QVERIFY2(reader->diagnostics().back().message.contains(QStringLiteral("cut short")), qPrintable(reader->diagnostics().back().message));
     }
+
+    // Cut before its first data group: the error names the block and where the file ends.
+    void fileCutInItsMetadataSaysWhere() {
+        QFile in(mdfDir() + QStringLiteral("/canedge_unfin_fw0104_uds_gps_11bit_00000001.mf4"));
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("head.mf4"));
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(in.read(5000));
+        out.close();
+        QString error;
+        QVERIFY(!LogFormats::openReader(path, &error));
+        QCOMPARE(error, path + QStringLiteral(": DG block at byte 5288: past the end of the file (5000 bytes); the data groups after it are lost"));
+        const LogProbe probe = probeLog(path);
+        QVERIFY(!probe.usable);
+        QCOMPARE(probe.error, error);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestMdf4Corpus)
