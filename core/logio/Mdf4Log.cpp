@@ -369,7 +369,8 @@ bool Mdf4Reader::decode(DataGroup& dg, Group& g, const unsigned char* rec, CanFr
     const int dlc = l.dlc.present ? int(l.dlc.integer(rec, i) & 15) : -1;
     if (l.kind == FrameKind::Remote) {
         f.flags |= CanFrame::Remote;
-        f.len = uint8_t(l.dataLength.present ? std::min<uint64_t>(l.dataLength.integer(rec, i), 8) : std::max(0, std::min(dlc, 8)));
+        // The requested length: the DLC (a remote frame's DataLength may say 0 bytes carried).
+        f.len = uint8_t(dlc >= 0 ? std::min(dlc, 8) : l.dataLength.present ? int(std::min<uint64_t>(l.dataLength.integer(rec, i), 8)) : 0);
         return true;
     }
     bool fd = l.edl.present && l.edl.integer(rec, i) != 0;

@@ -101,7 +101,7 @@ private slots:
         fd.dlc = 13;  // 32 bytes (ISO 11898-1)
         r += File::record(1, 1, fd);
         Frame rtr = frame(4000000, 0x701, {});
-        rtr.dlc = rtr.len = 1;
+        rtr.dlc = 1;  // DataLength 0: the DLC is the requested length
         r += File::record(1, 2, rtr, -1, true);
         r += File::errorRecord(1, 3, 5000000, 1, 3);  // bit stuffing error
         r += File::errorRecord(1, 3, 6000000, 2, 5);  // acknowledgment error
