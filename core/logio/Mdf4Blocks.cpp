@@ -256,6 +256,14 @@ bool DataStream::next(QByteArray& out) {
     return false;
 }
 
+QString DataStream::where(uint64_t logical) const {
+    auto it = std::upper_bound(fragments_.begin(), fragments_.end(), logical, [](uint64_t o, const Fragment& f) { return o < f.logical; });
+    if (it == fragments_.begin()) return QStringLiteral("byte %1 of the data").arg(logical);
+    const Fragment& f = *(it - 1);
+    if (f.zip != 0xFF) return QStringLiteral("byte %1 of the DZ block at byte %2").arg(logical - f.logical).arg(f.block);
+    return QStringLiteral("byte %1 of the file").arg(f.dataAt + (logical - f.logical));
+}
+
 bool DataStream::readAt(uint64_t offset, qint64 n, QByteArray& out) {
     out.clear();
     if (n < 0 || offset + uint64_t(n) > total_) return false;

@@ -74,8 +74,9 @@ public:
 
     uint64_t totalLength() const { return total_; }
     QString error() const { return error_; }
-    // File offset of the fragment the last bytes came from (for messages).
-    uint64_t currentBlock() const { return current_ < fragments_.size() ? fragments_[current_].block : 0; }
+    // Where byte `logical` of the stream is, for messages: "byte N of the file", or "the DZ
+    // block at byte N" for compressed data.
+    QString where(uint64_t logical) const;
 
 private:
     struct Fragment {

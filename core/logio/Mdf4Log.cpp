@@ -271,8 +271,8 @@ bool Mdf4Reader::advance(DataGroup& dg) {
             const qsizetype left = dg.buf.size() - dg.pos;
             QString why = dg.data.error();
             if (why.isEmpty() && left > 0)
-                why = QStringLiteral("data group %1: the last record (at byte %2 of its data, %3 of %4 bytes) is cut short; the file ends inside it")
-                          .arg(dg.number).arg(start).arg(left).arg(need);
+                why = QStringLiteral("data group %1: the last record (at %2, %3 of %4 bytes) is cut short; the file ends inside it")
+                          .arg(dg.number).arg(dg.data.where(start)).arg(left).arg(need);
             if (dg.checkCycles && why.isEmpty()) {
                 for (const auto& g : dg.groups)
                     if (!g.vlsd && g.index != g.cycles)
@@ -290,8 +290,8 @@ bool Mdf4Reader::advance(DataGroup& dg) {
                 if (c.recordId == rid) g = &c;
         ++record_;
         if (!g) {
-            endGroup(dg, QStringLiteral("data group %1: record id %2 at byte %3 of its data (block at byte %4) belongs to no channel group; the rest of this data group cannot be read")
-                             .arg(dg.number).arg(rid).arg(start).arg(dg.data.currentBlock()));
+            endGroup(dg, QStringLiteral("data group %1: record id %2 at %3 belongs to no channel group; the rest of this data group cannot be read")
+                             .arg(dg.number).arg(rid).arg(dg.data.where(start)));
             return false;
         }
         if (g->vlsd) {
@@ -337,8 +337,8 @@ qsizetype Mdf4Reader::storeVlsd(DataGroup& dg, Group& g) {
     if (!dg.ensure(dg.idSize + 4)) return dg.idSize + 4;
     const uint32_t len = le32(reinterpret_cast<const unsigned char*>(dg.buf.constData()) + dg.pos + dg.idSize);
     if (len > kMaxVlsdLength) {
-        endGroup(dg, QStringLiteral("data group %1: VLSD record at byte %2 of its data claims %3 bytes; the rest of this data group cannot be read")
-                         .arg(dg.number).arg(dg.offset()).arg(len));
+        endGroup(dg, QStringLiteral("data group %1: VLSD record at %2 claims %3 bytes; the rest of this data group cannot be read")
+                         .arg(dg.number).arg(dg.data.where(dg.offset())).arg(len));
         return -1;
     }
     const qsizetype need = dg.idSize + 4 + qsizetype(len);
