@@ -14,10 +14,10 @@ static int runConvert(const QStringList& args) {
     const QString verb = QStringLiteral("convert");
     QCommandLineParser parser;
     parser.setApplicationDescription(
-        QStringLiteral("Convert a CAN log. Reads candump (-L and text), Vector ASC/BLF, PEAK TRC 1.0-2.1, pcap/pcapng\n"
+        QStringLiteral("Convert a CAN log. Reads candump (-L and text), Vector ASC/BLF, PEAK TRC 1.0-2.1, pcap/pcapng, ASAM MDF4\n"
                        "(detected from the content); writes candump -L (.log), ASC (.asc), TRC 2.1 (.trc),\n"
                        "pcapng (.pcapng) or CSV (.csv), chosen by OUT's extension or --to."));
-    parser.addPositionalArgument(QStringLiteral("IN"), QStringLiteral("Input log file: candump, asc, blf, trc, pcap, csv, gvret, busmaster, ixxat or kvaser, found by its content."));
+    parser.addPositionalArgument(QStringLiteral("IN"), QStringLiteral("Input log file: candump, asc, blf, trc, pcap, csv, gvret, busmaster, ixxat, kvaser or mf4, found by its content."));
     parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Output file."));
     parser.addOption({QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv."), QStringLiteral("FORMAT")});
     int code = 0;

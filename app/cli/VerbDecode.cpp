@@ -48,7 +48,7 @@ bool applyDicts(dissect::NetworkContext& ctx, const QStringList& dicts, int* cod
 int runDecode(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Decode a CAN log with the CANopen dissectors."));
-    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv)."));
+    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4)."));
     parser.addOption({QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."), QStringLiteral("NODE=NAME|FILE")});
     parser.addOption({QStringLiteral("format"), QStringLiteral("Output format: text (default), jsonl, csv."), QStringLiteral("FORMAT"), QStringLiteral("text")});
     parser.addOption({QStringLiteral("filter"), QStringLiteral("Only frames matching: node=N, service=NAME, id=0x181 or 0x180-0x1FF, warnings; terms ANDed (repeatable)."), QStringLiteral("EXPR")});

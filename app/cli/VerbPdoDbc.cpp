@@ -77,7 +77,7 @@ int runDbc(const QStringList& args) {
         "Export the PDO layout in force at the end of a log (dictionary defaults plus what SDO writes in the log changed) as a DBC "
         "file: one message per TPDO/RPDO, the mapped objects as Intel signals with the dictionary's scaling, the object index:sub "
         "as comments. Raw signals given with --signal are exported too."));
-    p.addPositionalArgument(QStringLiteral("LOG|BUS"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv), or a bus URL whose nodes (--node, --dict) are read over SDO."));
+    p.addPositionalArgument(QStringLiteral("LOG|BUS"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4), or a bus URL whose nodes (--node, --dict) are read over SDO."));
     p.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("DBC file to write."));
     const QCommandLineOption dictOpt(QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."),
                                      QStringLiteral("NODE=NAME|FILE"));

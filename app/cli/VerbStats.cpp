@@ -25,7 +25,7 @@ const QString kVerb = QStringLiteral("stats");
 int runStats(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Network health report of a CAN log decoded as CANopen: findings, heartbeat/NMT, SDO, EMCY, PDO and bus load."));
-    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv)."));
+    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4)."));
     parser.addOption({QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."), QStringLiteral("NODE=NAME|FILE")});
     parser.addOption({QStringLiteral("bitrate"), QStringLiteral("Bit rate for the bus load estimate (default 500000)."), QStringLiteral("BIT/S"), QStringLiteral("500000")});
     parser.addOption({QStringLiteral("format"), QStringLiteral("text (default), json or html (one self-contained page)."), QStringLiteral("FORMAT"), QStringLiteral("text")});

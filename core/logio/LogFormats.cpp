@@ -8,6 +8,7 @@
 #include "core/logio/GvretCsv.h"
 #include "core/logio/IxxatTrace.h"
 #include "core/logio/KvaserText.h"
+#include "core/logio/Mdf4Log.h"
 #include "core/logio/PcapLog.h"
 #include "core/logio/PeakTrc.h"
 #include "core/logio/TextScan.h"
@@ -35,6 +36,7 @@ const std::vector<LogFormatInfo>& all() {
         {QStringLiteral("ixxat"), QStringLiteral("IXXAT MiniMon / canAnalyser text export (read only)"),
          {QStringLiteral("csv"), QStringLiteral("trc")}, true, false},
         {QStringLiteral("kvaser"), QStringLiteral("Kvaser CanKing / Memorator text export, hex (read only)"), {QStringLiteral("txt")}, true, false},
+        {QStringLiteral("mf4"), QStringLiteral("ASAM MDF4 bus logging (CANedge, Vector, PEAK, Kvaser loggers; read only)"), {QStringLiteral("mf4")}, true, false},
     };
     return formats;
 }
@@ -47,6 +49,7 @@ QString detectContent(const QByteArray& head) {
     if (head.size() >= 4) {
         const auto* p = reinterpret_cast<const unsigned char*>(head.constData());
         if (std::memcmp(p, "LOGG", 4) == 0) return QStringLiteral("blf");
+        if (head.size() >= 8 && (std::memcmp(p, "MDF     ", 8) == 0 || std::memcmp(p, "UnFinMF ", 8) == 0)) return QStringLiteral("mf4");
         const uint32_t le = le32(p), be = be32(p);
         if (le == 0x0A0D0D0A || le == 0xA1B2C3D4 || le == 0xA1B23C4D || be == 0xA1B2C3D4 || be == 0xA1B23C4D)
             return QStringLiteral("pcap");
@@ -121,6 +124,7 @@ std::unique_ptr<LogReader> createReader(const QString& format) {
     if (f == u"busmaster") return std::make_unique<BusmasterReader>();
     if (f == u"ixxat") return std::make_unique<IxxatReader>();
     if (f == u"kvaser") return std::make_unique<KvaserReader>();
+    if (f == u"mf4" || f == u"mdf4" || f == u"mdf") return std::make_unique<Mdf4Reader>();
     return nullptr;
 }
 
@@ -134,7 +138,7 @@ std::unique_ptr<LogReader> openReader(const QString& path, QString* error) {
     probe.close();
     if (format.isEmpty()) {
         if (error)
-            *error = QStringLiteral("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser)")
+            *error = QStringLiteral("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4)")
                          .arg(path);
         return nullptr;
     }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Folder core/logio/ owns log files: one reader/writer per format (candump, CSV, pcap/pcapng, PEAK
-// trc, Vector asc/blf; readers for SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser exports) and the
+// trc, Vector asc/blf; readers for SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser exports, ASAM MDF4 bus logging) and the
 // registry that sniffs content.
 #pragma once
 
@@ -18,7 +18,7 @@ class QIODevice;
 namespace coscope::logio {
 
 // The log formats CoScope knows, by name: candump, asc, blf, trc, pcap (pcap and pcapng), csv,
-// and read only: gvret (SavvyCAN), busmaster, ixxat, kvaser.
+// and read only: gvret (SavvyCAN), busmaster, ixxat, kvaser, mf4 (ASAM MDF4 bus logging).
 struct LogFormatInfo {
     QString name;
     QString description;

@@ -11,6 +11,9 @@ namespace coscope::logio {
 namespace {
 constexpr size_t kProbeProblems = 5;
 bool isBinaryLog(const QString& format) { return format == u"blf" || format == u"pcap"; }
+// Formats whose blocks link to any place in the file (MDF4): the first part alone says
+// nothing, the reader seeks in the whole file for its first frame.
+bool needsWholeFile(const QString& format) { return format == u"mf4"; }
 }  // namespace
 
 LogProbe probeLog(const QString& path) {
@@ -24,8 +27,8 @@ LogProbe probeLog(const QString& path) {
     }
     probe.format = LogFormats::detect(&file, path);
     probe.formatByName = LogFormats::detectContent(file.peek(8192)).isEmpty();
-    QByteArray head = file.read(LogProbe::kProbeBytes);
-    const bool whole = file.atEnd();
+    QByteArray head = needsWholeFile(probe.format) ? QByteArray() : file.read(LogProbe::kProbeBytes);
+    const bool whole = needsWholeFile(probe.format) || file.atEnd();
     // A text log cut at the last whole line, so that the cut is no bad line.
     if (!whole && !isBinaryLog(probe.format)) {
         const qsizetype nl = head.lastIndexOf('\n');
@@ -34,7 +37,8 @@ LogProbe probeLog(const QString& path) {
     auto reader = LogFormats::createReader(probe.format);
     QBuffer buffer(&head);
     buffer.open(QIODevice::ReadOnly);
-    if (!reader || !reader->open(&buffer, path)) {
+    file.seek(0);
+    if (!reader || !reader->open(needsWholeFile(probe.format) ? static_cast<QIODevice*>(&file) : &buffer, path)) {
         probe.error = reader ? QStringLiteral("%1: %2").arg(path, reader->errorString()) : QStringLiteral("%1: cannot be read").arg(path);
         return probe;
     }
