@@ -288,7 +288,7 @@ QString probeErrorText(const QString& path, const logio::LogProbe& probe) {
     // Recognised by no format, only guessed by the file's name: say so rather than blame the
     // guessed format's syntax (issue 37).
     QStringList lines{probe.formatByName ? Workspace::tr("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, "
-                                                         "SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser); read as %2 by its name, no CAN frame was found")
+                                                         "SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4); read as %2 by its name, no CAN frame was found")
                                                .arg(QFileInfo(path).fileName(), probe.format)
                                          : Workspace::tr("%1: no CAN frame found (read as %2)").arg(QFileInfo(path).fileName(), probe.format)};
     for (const auto& d : probe.problems) lines << Workspace::tr("line %1: %2").arg(d.where).arg(d.message);
