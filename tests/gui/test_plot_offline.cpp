@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "tests/gui/DriveLog.h"
 #include "tests/gui/WaitFor.h"
 
 #include <qcustomplot.h>
@@ -21,12 +22,9 @@ using namespace coscope::gui;
 using dissect::SignalKey;
 
 namespace {
+using coscope::testing::DriveLog;
 using coscope::testing::waitFor;
-QString le32(int32_t v) {
-    QString s;
-    for (int i = 0; i < 4; ++i) s += QStringLiteral("%1").arg((uint32_t(v) >> (8 * i)) & 0xFF, 2, 16, QLatin1Char('0')).toUpper();
-    return s;
-}
+QString le32(int32_t v) { return DriveLog::le(uint32_t(v), 4); }
 constexpr int kFrames = 200;
 int32_t position5(int i) { return -5000 + 100 * i; }
 int32_t velocity5(int i) { return (i % 50) * 10 - 200; }
@@ -34,42 +32,18 @@ int32_t velocity5(int i) { return (i % 50) * 10 - 200; }
 // A candump -L log: node 5 (no dictionary) and node 7 (a Delta ASDA-A2 by its 1018h) get
 // TPDO1 = 6064h + 606Ch by SDO writes, then TPDO1s every 10 ms (8 ms + the 1 ms each line adds).
 QString writeLog(const QString& path) {
-    QStringList lines;
-    double t = 1700000000.0;
-    auto line = [&](const QString& idData) {
-        lines << QStringLiteral("(%1) can0 %2").arg(t, 0, 'f', 6).arg(idData);
-        t += 0.001;
-    };
-    line(QStringLiteral("607#4018100100000000"));
-    line(QStringLiteral("587#43181001DD010000"));  // vendor-ID 000001DDh (Delta)
-    line(QStringLiteral("607#4018100200000000"));
-    line(QStringLiteral("587#4318100200600000"));  // product code 00006000h (ASDA-A2)
-    for (const char* node : {"5", "7"}) {
-        const QString req = QStringLiteral("60%1#").arg(QLatin1String(node)), resp = QStringLiteral("58%1#").arg(QLatin1String(node));
-        line(req + QStringLiteral("2F001A0000000000"));
-        line(resp + QStringLiteral("60001A0000000000"));
-        line(req + QStringLiteral("23001A0120006460"));  // 1A00h:01 = 60640020h
-        line(resp + QStringLiteral("60001A0100000000"));
-        line(req + QStringLiteral("23001A0220006C60"));  // 1A00h:02 = 606C0020h
-        line(resp + QStringLiteral("60001A0200000000"));
-        line(req + QStringLiteral("2F001A0002000000"));
-        line(resp + QStringLiteral("60001A0000000000"));
-    }
-    line(QStringLiteral("607#2393600101000000"));  // 6093h:01 = 1
-    line(QStringLiteral("587#6093600100000000"));
-    line(QStringLiteral("607#239360020A000000"));  // 6093h:02 = 10 -> 12 800 000 PUU/rev
-    line(QStringLiteral("587#6093600200000000"));
-    line(QStringLiteral("000#0100"));
-    t = 1700000001.0;
+    DriveLog log(1700000000.0);
+    log.identifyDeltaAsda(7);
+    for (int node : {5, 7}) log.mapTpdo(node, 1, {0x60640020, 0x606C0020});
+    log.sdoWrite(7, 0x6093, 1, 1, 4);   // 6093h:01 = 1
+    log.sdoWrite(7, 0x6093, 2, 10, 4);  // 6093h:02 = 10 -> 12 800 000 PUU/rev
+    log.line(QStringLiteral("000#0100"));
+    log.setTime(1700000001.0);
     for (int i = 0; i < kFrames; ++i) {
-        line(QStringLiteral("185#") + le32(position5(i)) + le32(velocity5(i)));
-        line(QStringLiteral("187#") + le32(1280000 + 6400 * i) + le32(1500));
-        t += 0.008;
+        log.line(QStringLiteral("185#") + le32(position5(i)) + le32(velocity5(i)));
+        log.line(QStringLiteral("187#") + le32(1280000 + 6400 * i) + le32(1500), 0.009);
     }
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return {};
-    f.write(lines.join(u'\n').toUtf8() + "\n");
-    return path;
+    return log.write(path) ? path : QString();
 }
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include "tests/gui/DriveLog.h"
 #include "tests/gui/WaitFor.h"
 
 #include <qcustomplot.h>
@@ -33,55 +34,24 @@ using namespace coscope::gui;
 using dissect::SignalKey;
 
 namespace {
+using coscope::testing::DriveLog;
 using coscope::testing::waitFor;
 constexpr int kFrames = 100;
 uint16_t statusword(int i) { return i < 50 ? 0x0637 : 0x1637; }  // bit 12 on from frame 50: homing attained
 
-QString le(uint32_t v, int bytes) {
-    QString s;
-    for (int i = 0; i < bytes; ++i) s += QStringLiteral("%1").arg((v >> (8 * i)) & 0xFF, 2, 16, QLatin1Char('0')).toUpper();
-    return s;
-}
-
 // candump -L: node 7 says it is a Delta ASDA-A2 (1018h), gets TPDO1 = 6041h/16, 6061h/8,
 // 6064h/32 by SDO, then sends TPDO1 every 10 ms in homing mode (6061h = 6).
 QString writeLog(const QString& path) {
-    QStringList lines;
-    double t = 100.0;
-    auto line = [&](const QString& idData) {
-        lines << QStringLiteral("(%1) can0 %2").arg(t, 0, 'f', 6).arg(idData);
-        t += 0.001;
-    };
-    line(QStringLiteral("607#4018100100000000"));
-    line(QStringLiteral("587#43181001DD010000"));  // vendor-ID 000001DDh (Delta)
-    line(QStringLiteral("607#4018100200000000"));
-    line(QStringLiteral("587#4318100200600000"));  // product code 00006000h (ASDA-A2)
-    line(QStringLiteral("607#2F001A0000000000"));
-    line(QStringLiteral("587#60001A0000000000"));
-    line(QStringLiteral("607#23001A0110004160"));  // 1A00h:01 = 60410010h
-    line(QStringLiteral("587#60001A0100000000"));
-    line(QStringLiteral("607#23001A0208006160"));  // 1A00h:02 = 60610008h
-    line(QStringLiteral("587#60001A0200000000"));
-    line(QStringLiteral("607#23001A0320006460"));  // 1A00h:03 = 60640020h
-    line(QStringLiteral("587#60001A0300000000"));
-    line(QStringLiteral("607#2F001A0003000000"));
-    line(QStringLiteral("587#60001A0000000000"));
-    line(QStringLiteral("607#2F011A0000000000"));
-    line(QStringLiteral("587#60011A0000000000"));
-    line(QStringLiteral("607#23011A012001C160"));  // 1A01h:01 = 60C10120h "Position command (Pos_Cmd)"
-    line(QStringLiteral("587#60011A0100000000"));
-    line(QStringLiteral("607#2F011A0001000000"));
-    line(QStringLiteral("587#60011A0000000000"));
-    t = 101.0;
+    DriveLog log(100.0);
+    log.identifyDeltaAsda(7);
+    log.mapTpdo(7, 1, {0x60410010, 0x60610008, 0x60640020});
+    log.mapTpdo(7, 2, {0x60C10120});  // 60C1h:01 "Position command (Pos_Cmd)"
+    log.setTime(101.0);
     for (int i = 0; i < kFrames; ++i) {
-        line(QStringLiteral("187#") + le(statusword(i), 2) + le(6, 1) + le(uint32_t(1280 * i), 4));
-        line(QStringLiteral("287#") + le(uint32_t(640 * i), 4));
-        t += 0.009;
+        log.line(QStringLiteral("187#") + DriveLog::le(statusword(i), 2) + DriveLog::le(6, 1) + DriveLog::le(uint32_t(1280 * i), 4));
+        log.line(QStringLiteral("287#") + DriveLog::le(uint32_t(640 * i), 4), 0.01);
     }
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return {};
-    f.write(lines.join(u'\n').toUtf8() + "\n");
-    return path;
+    return log.write(path) ? path : QString();
 }
 
 // The picker's row of `object` ("6041:00") or of bit `bit` of it under node 7.

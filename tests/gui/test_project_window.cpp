@@ -27,6 +27,7 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include "tests/gui/DriveLog.h"
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
@@ -36,6 +37,7 @@
 using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerFileDialog;
+using coscope::testing::DriveLog;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
@@ -46,30 +48,11 @@ using coscope::testing::waitFor;
 namespace {
 // A Delta ASDA-A2 (node 5, identified by its 1018h answers) whose TPDO1 carries 6064h and 606Ch.
 QString writeLog(const QString& path) {
-    QStringList lines;
-    double t = 1700000000.0;
-    auto line = [&](const QString& idData) {
-        lines << QStringLiteral("(%1) can0 %2").arg(t, 0, 'f', 6).arg(idData);
-        t += 0.001;
-    };
-    line(QStringLiteral("605#4018100100000000"));
-    line(QStringLiteral("585#43181001DD010000"));  // vendor-ID 000001DDh (Delta)
-    line(QStringLiteral("605#4018100200000000"));
-    line(QStringLiteral("585#4318100200600000"));  // product code 00006000h (ASDA-A2)
-    line(QStringLiteral("605#23001A0120006460"));  // 1A00h:01 = 60640020h
-    line(QStringLiteral("585#60001A0100000000"));
-    line(QStringLiteral("605#23001A0220006C60"));  // 1A00h:02 = 606C0020h
-    line(QStringLiteral("585#60001A0200000000"));
-    line(QStringLiteral("605#2F001A0002000000"));
-    line(QStringLiteral("585#60001A0000000000"));
-    for (int i = 0; i < 200; ++i) {
-        line(QStringLiteral("185#%1000000%2000000").arg(i % 256, 2, 16, QLatin1Char('0')).arg((i * 3) % 256, 2, 16, QLatin1Char('0')));
-        t += 0.009;
-    }
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return {};
-    f.write(lines.join(u'\n').toUtf8() + "\n");
-    return path;
+    DriveLog log(1700000000.0);
+    log.identifyDeltaAsda(5);
+    log.mapTpdo(5, 1, {0x60640020, 0x606C0020});
+    for (uint32_t i = 0; i < 200; ++i) log.line(QStringLiteral("185#") + DriveLog::le(i % 256, 4) + DriveLog::le(i * 3 % 256, 4), 0.01);
+    return log.write(path) ? path : QString();
 }
 
 // Ticks or unticks a signal in the Plot dock's tree as a user does.
