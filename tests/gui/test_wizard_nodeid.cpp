@@ -164,6 +164,17 @@ struct Bench {
         }
         return (ready.count() > 0 || ready.wait(8000)) && ready.last().at(0).toBool();
     }
+    // The dry run's "Save as script…", the file name typed into its dialog; true once saved.
+    bool saveScript(const QString& file) {
+        QSignalSpy saved(wizard->preview(), &ScriptPreview::saved);
+        auto answer = coscope::testing::answerFileDialog(file);
+        QPushButton* save = nullptr;
+        for (auto* p : wizard->preview()->findChildren<QPushButton*>())
+            if (p->text().startsWith(QStringLiteral("Save as script"))) save = p;
+        if (!save) return false;
+        click(save);
+        return saved.count() > 0 || saved.wait(5000);
+    }
     // Clicks "Change it now" and waits for the outcome.
     bool run(int timeoutMs = 30000) {
         QSignalSpy done(wizard.get(), &NodeIdWizard::finished);
@@ -357,14 +368,7 @@ private slots:
         // "Save as script…", a file name typed into the dialog.
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("nodeid.txt"));
-        QSignalSpy saved(b.wizard->preview(), &ScriptPreview::saved);
-        auto answer = coscope::testing::answerFileDialog(file);
-        QPushButton* save = nullptr;
-        for (auto* p : b.wizard->preview()->findChildren<QPushButton*>())
-            if (p->text().startsWith(QStringLiteral("Save as script"))) save = p;
-        QVERIFY(save);
-        click(save);
-        QVERIFY(saved.count() > 0 || saved.wait(5000));
+        QVERIFY(b.saveScript(file));
         QString error;
         const auto script = canopen::CommandScript::load(file, &error);
         QVERIFY2(script, qPrintable(error));
@@ -386,14 +390,7 @@ private slots:
         QVERIFY(b.toRunPage());
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("bitrate.txt"));
-        QSignalSpy saved(b.wizard->preview(), &ScriptPreview::saved);
-        auto answer = coscope::testing::answerFileDialog(file);
-        QPushButton* save = nullptr;
-        for (auto* p : b.wizard->preview()->findChildren<QPushButton*>())
-            if (p->text().startsWith(QStringLiteral("Save as script"))) save = p;
-        QVERIFY(save);
-        click(save);
-        QVERIFY(saved.count() > 0 || saved.wait(5000));
+        QVERIFY(b.saveScript(file));
         QCOMPARE(b.ws.bus()->url().bitrate() > 0 ? b.ws.bus()->url().bitrate() : 500000, 500000);  // nothing was run here
         // The node answers SDO at the new rate after the replay's reconnect.
         QFile f(file);
