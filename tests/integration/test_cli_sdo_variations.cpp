@@ -11,6 +11,7 @@
 //          silent after the first segment (the client must time out, not hang)
 #include "tests/CliRun.h"
 #include "tests/PythonCan.h"
+#include "tests/integration/SimSocketcand.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -110,45 +111,20 @@ private slots:
     void initTestCase() {
         const QString py = pythonWithCan();
         if (py.isEmpty()) QSKIP("python3-can is not installed (Debian package python3-can)");
-        sim_.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0")});
-        QVERIFY2(sim_.waitForStarted(5000), qPrintable(sim_.errorString()));
-        QString banner;
-        QElapsedTimer t;
-        t.start();
-        while (!banner.contains(u'\n') && t.elapsed() < 15000) {
-            sim_.waitForReadyRead(200);
-            banner += QString::fromUtf8(sim_.readAllStandardOutput());
-            QVERIFY2(sim_.state() == QProcess::Running, qPrintable(QString::fromUtf8(sim_.readAllStandardError())));
-        }
-        const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
-        QVERIFY2(m.hasMatch(), qPrintable(banner));
-        bus_ = QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(m.captured(1));
+        QString simError;
+        const QString port = startSimSocketcand(sim_, QString(), &simError);
+        QVERIFY2(!port.isEmpty(), qPrintable(simError));
+        bus_ = QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port);
 
         QFile script(dir_.filePath(QStringLiteral("server.py")));
         QVERIFY(script.open(QIODevice::WriteOnly));
         script.write(kServer);
         script.close();
-        peer_.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), m.captured(1), QStringLiteral("43")});
-        t.restart();
-        while (!peerOut_.contains(QStringLiteral("READY")) && t.elapsed() < 20000) {
-            peer_.waitForReadyRead(200);
-            peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput());
-            QVERIFY2(peer_.state() == QProcess::Running, qPrintable(QString::fromUtf8(peer_.readAllStandardError())));
-        }
-        QVERIFY2(peerOut_.contains(QStringLiteral("READY")), qPrintable(peerOut_));
+        QVERIFY2(startPythonPeer(peer_, py, script.fileName(), {QStringLiteral("127.0.0.1"), port, QStringLiteral("43")}, &peerOut_), qPrintable(peerOut_));
         QTest::qWait(300);  // python-can's socketcand client takes frames 50 ms after "< ok >"
     }
 
-    void cleanupTestCase() {
-        for (QProcess* p : {&peer_, &sim_}) {
-            if (p->state() == QProcess::NotRunning) continue;
-            p->terminate();
-            if (!p->waitForFinished(5000)) {
-                p->kill();
-                p->waitForFinished();
-            }
-        }
-    }
+    void cleanupTestCase() { stopProcesses({&peer_, &sim_}); }
 
     // §7.2.4.3.6: e = 1, s = 0: the data bytes hold the value, their count is not given. 1017h
     // is UNSIGNED16 (CiA 301 §7.5.2.24): the value is the first two bytes.

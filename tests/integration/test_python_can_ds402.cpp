@@ -7,6 +7,7 @@
 // disabled on Delta ASDA-A2 (no default mapping, extract-delta §5), AIMOTOR (synchronous type 1
 // PDOs, extract-aimotor §3.6) and the generic CiA 402 drive (event-driven type FFh).
 #include "tests/PythonCan.h"
+#include "tests/integration/SimSocketcand.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -170,19 +171,9 @@ private slots:
         if (py.isEmpty()) QSKIP("python3-can is not installed (Debian package python3-can)");
 
         QProcess sim;
-        sim.setProcessChannelMode(QProcess::SeparateChannels);
-        sim.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0")});
-        QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-        QString banner;
-        QElapsedTimer t;
-        t.start();
-        while (!banner.contains(u'\n') && t.elapsed() < 15000) {
-            sim.waitForReadyRead(200);
-            banner += QString::fromUtf8(sim.readAllStandardOutput());
-            QVERIFY2(sim.state() == QProcess::Running, qPrintable(QString::fromUtf8(sim.readAllStandardError())));
-        }
-        const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
-        QVERIFY2(m.hasMatch(), qPrintable(banner));
+        QString simError;
+        const QString port = startSimSocketcand(sim, QString(), &simError);
+        QVERIFY2(!port.isEmpty(), qPrintable(simError));
 
         QTemporaryDir dir;
         QFile script(dir.filePath(QStringLiteral("master402.py")));
@@ -192,7 +183,7 @@ private slots:
 
         // Default virtual network: 1 Delta ASDA-A2, 2 AIMOTOR, 3 generic CiA 402.
         QProcess master;
-        master.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), m.captured(1), QStringLiteral("1,2,3")});
+        master.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QStringLiteral("1,2,3")});
         QVERIFY(master.waitForFinished(120000));
         const QString out = QString::fromUtf8(master.readAllStandardOutput());
         const QString err = QString::fromUtf8(master.readAllStandardError());

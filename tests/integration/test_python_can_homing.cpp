@@ -7,6 +7,7 @@
 // out to the negative limit switch and back), and PP moves with the set-point handshake
 // (CiA 402-2 §12.2: bit 4 rising, wait for bit 12, bit 4 low, wait for bit 10).
 #include "tests/PythonCan.h"
+#include "tests/integration/SimSocketcand.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -120,19 +121,9 @@ private slots:
         if (py.isEmpty()) QSKIP("python3-can is not installed (Debian package python3-can)");
 
         QProcess sim;
-        sim.setProcessChannelMode(QProcess::SeparateChannels);
-        sim.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0")});
-        QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-        QString banner;
-        QElapsedTimer t;
-        t.start();
-        while (!banner.contains(u'\n') && t.elapsed() < 15000) {
-            sim.waitForReadyRead(200);
-            banner += QString::fromUtf8(sim.readAllStandardOutput());
-            QVERIFY2(sim.state() == QProcess::Running, qPrintable(QString::fromUtf8(sim.readAllStandardError())));
-        }
-        const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
-        QVERIFY2(m.hasMatch(), qPrintable(banner));
+        QString simError;
+        const QString port = startSimSocketcand(sim, QString(), &simError);
+        QVERIFY2(!port.isEmpty(), qPrintable(simError));
 
         QTemporaryDir dir;
         QFile script(dir.filePath(QStringLiteral("plc_homing.py")));
@@ -142,7 +133,7 @@ private slots:
 
         // Default virtual network: 1 Delta ASDA-A2, 2 AIMOTOR, 3 generic CiA 402.
         QProcess plc;
-        plc.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), m.captured(1)});
+        plc.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port});
         QVERIFY(plc.waitForFinished(120000));
         const QString out = QString::fromUtf8(plc.readAllStandardOutput());
         const QString err = QString::fromUtf8(plc.readAllStandardError());

@@ -2,6 +2,7 @@
 // python-can (Debian python3-can) talks to `coscope-cli sim` through its socketcand interface:
 // it reads 1018h with raw SDO frames and receives TPDOs.
 #include "tests/PythonCan.h"
+#include "tests/integration/SimSocketcand.h"
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -62,21 +63,9 @@ private slots:
         if (py.isEmpty()) QSKIP("python3-can is not installed (Debian package python3-can)");
 
         QProcess sim;
-        sim.setProcessChannelMode(QProcess::SeparateChannels);
-        sim.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0")});
-        QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-        // "serving 3 virtual nodes (...) on socketcand://127.0.0.1:PORT/can0"
-        QString banner;
-        QElapsedTimer t;
-        t.start();
-        while (!banner.contains(u'\n') && t.elapsed() < 15000) {
-            sim.waitForReadyRead(200);
-            banner += QString::fromUtf8(sim.readAllStandardOutput());
-            QVERIFY2(sim.state() == QProcess::Running, qPrintable(QString::fromUtf8(sim.readAllStandardError())));
-        }
-        const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
-        QVERIFY2(m.hasMatch(), qPrintable(banner));
-        const QString port = m.captured(1);
+        QString simError;
+        const QString port = startSimSocketcand(sim, QString(), &simError);
+        QVERIFY2(!port.isEmpty(), qPrintable(simError));
 
         QTemporaryDir dir;
         QFile script(dir.filePath(QStringLiteral("interop.py")));

@@ -8,6 +8,7 @@
 // exceed it (10 ms). DESIGN.md's 1 ms budget on an idle machine is for
 // tests/bench/bench_master_jitter.
 #include "tests/PythonCan.h"
+#include "tests/integration/SimSocketcand.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -71,20 +72,9 @@ private slots:
 
         // A small virtual network: one drive, pre-operational (no PDOs on our SYNC).
         QProcess sim;
-        sim.setProcessChannelMode(QProcess::SeparateChannels);
-        sim.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0"), QStringLiteral("--nodes"), QStringLiteral("3:generic-cia402")});
-        QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
-        QString banner;
-        QElapsedTimer t;
-        t.start();
-        while (!banner.contains(u'\n') && t.elapsed() < 15000) {
-            sim.waitForReadyRead(200);
-            banner += QString::fromUtf8(sim.readAllStandardOutput());
-            QVERIFY2(sim.state() == QProcess::Running, qPrintable(QString::fromUtf8(sim.readAllStandardError())));
-        }
-        const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
-        QVERIFY2(m.hasMatch(), qPrintable(banner));
-        const QString port = m.captured(1);
+        QString simError;
+        const QString port = startSimSocketcand(sim, QStringLiteral("3:generic-cia402"), &simError);
+        QVERIFY2(!port.isEmpty(), qPrintable(simError));
         const QString url = QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port);
 
         QTemporaryDir dir;
@@ -93,15 +83,8 @@ private slots:
         script.write(kObserver);
         script.close();
         QProcess observer;
-        observer.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QStringLiteral("6"), QStringLiteral("080,321")});
-        QVERIFY2(observer.waitForStarted(10000), qPrintable(observer.errorString()));
         QString seen;
-        t.restart();
-        while (!seen.contains(QStringLiteral("READY")) && t.elapsed() < 15000 && observer.state() == QProcess::Running) {
-            observer.waitForReadyRead(200);
-            seen += QString::fromUtf8(observer.readAllStandardOutput());
-        }
-        QVERIFY2(seen.contains(QStringLiteral("READY")), qPrintable(QString::fromUtf8(observer.readAllStandardError())));
+        QVERIFY2(startPythonPeer(observer, py, script.fileName(), {QStringLiteral("127.0.0.1"), port, QStringLiteral("6"), QStringLiteral("080,321")}, &seen), qPrintable(seen));
 
         // Two masters at once, each ending by itself after 3 s.
         QProcess sync, send;
