@@ -120,6 +120,10 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
                 {id, n.errorControl, num(n.late), ms(n.expectedPeriodMs)}, n.lateAt, false, "heartbeat_late");
     }
     const BusHealth& b = r.bus;
+    for (const BusHealth::Unanswered& u : b.unanswered)
+        if (u.timeouts)
+            add("sdo.timeout", u.node, QStringLiteral("node %1 left %2 SDO request%3 unanswered (it never sent anything)").arg(u.node).arg(u.timeouts).arg(u.timeouts == 1 ? "" : "s"),
+                {QString::number(u.node), num(u.timeouts)}, u.at, false, "sdo_timeout");
     if (b.errorFrames) add("bus.error_frames", -1, QStringLiteral("%1 CAN error frame%2").arg(b.errorFrames).arg(b.errorFrames == 1 ? "" : "s"), {num(b.errorFrames)}, b.errorFrameAt, false, "error_frames");
     if (b.syncMissing)
         add("sync.missing", -1, QStringLiteral("%1 SYNC cycle%2 missing (period %3)").arg(b.syncMissing).arg(b.syncMissing == 1 ? "" : "s").arg(ms(b.syncPeriodMs)), {num(b.syncMissing), ms(b.syncPeriodMs)},

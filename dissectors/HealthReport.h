@@ -173,6 +173,14 @@ struct BusHealth {
     // 1-127, or a device missing): summarised here, not listed as nodes.
     std::vector<int> silentAddressed;
     Occurrences silentAt;                  // the requests to them (other masters')
+    // A node-ID another master asked again and again (over 2 requests) that never answered: a
+    // device missing. Not a node row (never seen), but its unanswered requests are a finding.
+    struct Unanswered {
+        int node = 0;
+        uint64_t requests = 0, timeouts = 0;
+        Occurrences at;  // the requests that timed out
+    };
+    std::vector<Unanswered> unanswered;
     std::vector<int> ownSilentAddressed;   // the same for requests the recording side sent (Tx)
     Occurrences ownSilentAt;
     Occurrences errorFrameAt, syncMissingAt, notCanopenAt;

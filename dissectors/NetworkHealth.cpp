@@ -174,7 +174,12 @@ HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) con
             // Only nodes seen are listed (issue 37): an NMT command or an SDO request to a
             // node-ID that never sent anything (a scan's probe, a device missing) is summarised.
             if (!t->present) {
-                if (t->sdoRequests > t->ownSdoRequests) {
+                if (t->sdoRequests > t->ownSdoRequests + 2) {
+                    NodeHealth h;
+                    h.node = id;
+                    fillSdo(h, *t, now);
+                    r.bus.unanswered.push_back({id, t->sdoRequests - t->ownSdoRequests, h.sdoTimeouts - h.ownSdoTimeouts, h.sdoTimeoutAt});
+                } else if (t->sdoRequests > t->ownSdoRequests) {
                     r.bus.silentAddressed.push_back(id);
                     merge(r.bus.silentAt, t->sdoRequestAt);
                 }

@@ -52,15 +52,26 @@ private slots:
         const Run r = cli({QStringLiteral("stats"), log_});
         QCOMPARE(r.code, 0);
         const QString& o = r.out;
-        QVERIFY2(o.startsWith(QStringLiteral("Findings:\n  [critical]")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 15 rebooted 2 times")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 2 heartbeat stopped")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("EMCY 2310h")) && o.contains(QStringLiteral("from node 1 at 5.000 s")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 42 answered SDO in 180 ms p99")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 42 left 1 SDO request unanswered")), qPrintable(o));
-        // Findings come before the tables, the worst first.
-        QVERIFY(o.indexOf(QStringLiteral("rebooted")) < o.indexOf(QStringLiteral("answered SDO")));
-        QVERIFY(o.indexOf(QStringLiteral("answered SDO")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
+        // The verdict first (issue 37), then the findings, the worst first.
+        QVERIFY2(o.startsWith(QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning\n\nFindings:\n  [critical]")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("[critical] nmt.reset, node 15: Node 15 booted up 2 time(s) without an NMT reset command before it.")), qPrintable(o));
+        // Where: count, first and last time, the frames as the trace numbers them (No., in the
+        // log's line order): 5 lines at 0 s, then per 100 ms step i 701, 702 (i < 30), 72A, 70F,
+        // 080, 181; 70F 00h of step 40 is line 5 + 39 * 5 + 29 + 4 = 233, of step 70 line 383.
+        QVERIFY2(o.contains(QStringLiteral("2 times, 4.000 s .. 7.000 s; frames 233, 383\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("heartbeat.stopped, node 2: Node 2's heartbeat stopped")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("emcy.fault, node 1: Node 1 reported EMCY 2310h (Continuous over-current) 1 time(s).")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("once, at 5.000 s; frame ")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("sdo.slow, node 42: Node 42 answered SDO requests slowly: 180 ms at the 99th percentile")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("sdo.timeout, node 42: Node 42 left 1 SDO request(s) unanswered")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("      Why: ")) && o.contains(QStringLiteral(" Check: ")), qPrintable(o));
+        QVERIFY(o.indexOf(QStringLiteral("nmt.reset")) < o.indexOf(QStringLiteral("sdo.slow")));
+        QVERIFY(o.indexOf(QStringLiteral("sdo.slow")) < o.indexOf(QStringLiteral("Nodes (only those seen)")));
+        // Each node's story after the findings: node 1 faulted (EMCY) and was reset.
+        QVERIFY2(o.contains(QStringLiteral("  node 1: heartbeat 100 ms, Operational; recovered\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("  node 2: heartbeat 100 ms, Operational; not recovered (heartbeat stopped)\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("EMCY 2310h Continuous over-current")), qPrintable(o));
+        QVERIFY(o.indexOf(QStringLiteral("Nodes (only those seen)")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
         QVERIFY(o.contains(QStringLiteral("load over time")));
         QVERIFY(!o.contains(QStringLiteral("second      1")));
     }
@@ -95,6 +106,19 @@ private slots:
         QVERIFY(bus[QStringLiteral("load_over_time")].toArray().size() <= 60);
         QVERIFY(bus[QStringLiteral("load_peak_pct")].toDouble() > 0);
         QCOMPARE(o[QStringLiteral("findings")].toArray().at(0).toObject()[QStringLiteral("severity")].toString(), QStringLiteral("critical"));
+        // Issue 37: the verdict, and per finding its rule, count, times, frames and sentences.
+        QCOMPARE(o[QStringLiteral("verdict")].toString(), QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning"));
+        QJsonObject reset;
+        for (const auto& v : o[QStringLiteral("findings")].toArray())
+            if (v.toObject()[QStringLiteral("rule")].toString() == QLatin1String("nmt.reset")) reset = v.toObject();
+        QCOMPARE(reset[QStringLiteral("node")].toInt(), 15);
+        QCOMPARE(reset[QStringLiteral("count")].toInt(), 2);
+        QCOMPARE(reset[QStringLiteral("first")].toDouble(), 4.0);
+        QCOMPARE(reset[QStringLiteral("last")].toDouble(), 7.0);
+        QCOMPARE(reset[QStringLiteral("frames")].toArray().size(), 2);
+        for (const char* k : {"what", "why", "check"}) QVERIFY2(!reset[QLatin1String(k)].toString().isEmpty(), k);
+        QVERIFY(!n1[QStringLiteral("story")].toArray().isEmpty());
+        QCOMPARE(n1[QStringLiteral("outcome")].toString(), QStringLiteral("recovered"));
     }
 
     void html() {
@@ -103,7 +127,10 @@ private slots:
         const QString& h = r.out;
         QVERIFY(h.startsWith(QStringLiteral("<!DOCTYPE html>")));
         QVERIFY(h.contains(QStringLiteral("<svg")));
-        QVERIFY(h.contains(QStringLiteral("node 15 rebooted 2 times")));
+        QVERIFY2(h.contains(QStringLiteral("<b>Problems found: 2 critical, 2 errors, 1 warning</b>")), qPrintable(h));
+        QVERIFY(h.contains(QStringLiteral("Node 15 booted up 2 time(s) without an NMT reset command before it.")));
+        QVERIFY(h.contains(QStringLiteral("Why: ")) && h.contains(QStringLiteral("Check: ")));
+        QVERIFY(h.contains(QStringLiteral("<a class='fr' id='fnmt.reset-0'>#")));
         QVERIFY(h.trimmed().endsWith(QStringLiteral("</html>")));
         // Self-contained: nothing to fetch.
         QVERIFY(!h.contains(QStringLiteral("src=")));
