@@ -82,13 +82,14 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
                 {id, n.errorControl, num(pastTimeouts), ms(n.longestGapMs), ms(n.expectedPeriodMs)}, n.lostAt, false, "heartbeat_timeout");
         // EMCY per code: how often, when, with the vendor's alarm text where the dictionary has one.
         std::vector<std::pair<uint16_t, Occurrences>> codes;
-        std::vector<QString> codeText;
+        std::vector<QString> codeText, headline;
         for (const EmcyEntry& e : n.emcyList) {
             if (e.reset) continue;
             auto it = std::find_if(codes.begin(), codes.end(), [&](const auto& c) { return c.first == e.code; });
             if (it == codes.end()) {
                 codes.push_back({e.code, {}});
                 codeText.push_back(e.vendor.isEmpty() ? e.text : QStringLiteral("%1; %2").arg(e.text, e.vendor));
+                headline.push_back(QStringLiteral("EMCY %1 %2").arg(hx(e.code, 4), e.text.toLower()) + (e.vendor.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(e.vendor)));
                 it = codes.end() - 1;
             }
             it->second.add(e.timeNs, e.frame);
@@ -96,7 +97,7 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
         for (size_t i = 0; i < codes.size(); ++i) {
             const auto& [code, at] = codes[i];
             const QString c = hx(code, 4);
-            add("emcy.fault", n.node, QStringLiteral("EMCY %1 %2 from %3 at %4%5").arg(c, codeText[i].toLower(), who, healthTime(at.firstNs, r.startNs), at.count > 1 ? QStringLiteral(" (%1 times)").arg(at.count) : QString()),
+            add("emcy.fault", n.node, QStringLiteral("%1 from %2 at %3").arg(headline[i], who, healthTime(at.firstNs, r.startNs)),
                 {id, c, codeText[i], num(at.count)}, at, false, "emcy");
         }
         const uint64_t otherTimeouts = n.sdoTimeouts - n.ownSdoTimeouts;
@@ -122,7 +123,7 @@ std::vector<HealthFinding> healthFindings(const HealthReport& r) {
     const BusHealth& b = r.bus;
     for (const BusHealth::Unanswered& u : b.unanswered)
         if (u.timeouts)
-            add("sdo.timeout", u.node, QStringLiteral("node %1 left %2 SDO request%3 unanswered (it never sent anything)").arg(u.node).arg(u.timeouts).arg(u.timeouts == 1 ? "" : "s"),
+            add("sdo.timeout", u.node, QStringLiteral("node %1 left %2 SDO request%3 unanswered").arg(u.node).arg(u.timeouts).arg(u.timeouts == 1 ? "" : "s"),
                 {QString::number(u.node), num(u.timeouts)}, u.at, false, "sdo_timeout");
     if (b.errorFrames) add("bus.error_frames", -1, QStringLiteral("%1 CAN error frame%2").arg(b.errorFrames).arg(b.errorFrames == 1 ? "" : "s"), {num(b.errorFrames)}, b.errorFrameAt, false, "error_frames");
     if (b.syncMissing)

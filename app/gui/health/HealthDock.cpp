@@ -54,6 +54,7 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     findingsView_ = makeTable(findings_, QStringLiteral("healthFindingsView"));
     findingsView_->horizontalHeader()->setSectionResizeMode(HealthModel::Text, QHeaderView::Stretch);
     findingsView_->setToolTip(tr("What to look at first, the worst at the top"));
+    findingsView_->setMinimumHeight(findingsView_->verticalHeader()->defaultSectionSize() * 7);  // a header and six findings
     // The findings with, under them, the current one explained and its occurrences to step through.
     auto* findingsBox = new QWidget(split);
     auto* findingsLayout = new QVBoxLayout(findingsBox);
@@ -138,7 +139,7 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     plot_->setMinimumHeight(120);
     tabs_->addTab(plot_, tr("Bus load"));
     split->addWidget(tabs_);
-    split->setStretchFactor(0, 1);
+    split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
     layout->addWidget(split, 1);
     setWidget(body);
@@ -245,8 +246,8 @@ void HealthDock::showFinding(int row) {
         where = at.count == 1 ? tr("Once, at %1.").arg(first) : tr("%1 times, from %2 to %3.").arg(at.count).arg(first, last);
     }
     if (!at.frames.empty()) {
-        const int shown = occurrence_ >= 0 ? occurrence_ + 1 : 0;
-        where += QLatin1Char(' ') + tr("Frame %1 of %2 shown in the trace.").arg(shown).arg(at.frames.size());
+        where += QLatin1Char(' ') + (occurrence_ >= 0 ? tr("Frame %1 of %2 shown in the trace.").arg(occurrence_ + 1).arg(at.frames.size())
+                                                      : tr("Click the finding to show its first frame in the trace."));
     }
     auto esc = [](const QString& t) { return t.toHtmlEscaped(); };
     detail_->setText(QStringLiteral("<b>%1</b><br>%2 %3<br>%4 %5<br><span style='color:#555'>%6%7</span>")

@@ -107,7 +107,9 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
         }
     case Time: return f.hasTime ? dissect::healthTime(f.timeNs, report_.startNs) : QString();
     case Node: return f.node >= 0 ? QString::number(f.node) : tr("bus");
-    case Text: return coreLines(f.text);  // built by dissectors/ in English, like the CLI report; shown in the UI language
+    // The headline built by dissectors/ in English, like the CLI report, shown in the UI language;
+    // CoScope's own traffic by its rule's sentence (issue 37).
+    case Text: return f.own ? healthRuleText(f, RulePart::What) : coreLines(f.text);
     }
     return {};
 }

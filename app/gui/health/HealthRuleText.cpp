@@ -72,6 +72,16 @@ const char* const kRuleTexts[] = {
     QT_TRANSLATE_NOOP("HealthRules", "Nothing to fix unless node %1 should have answered."),
 };
 // clang-format on
+// The words the findings put into those sentences (HealthFindings.cpp: the kind of error control).
+const char* const kRuleWords[] = {
+    QT_TRANSLATE_NOOP("HealthRules", "heartbeat"),
+    QT_TRANSLATE_NOOP("HealthRules", "guarding"),
+};
+QString argText(const QString& a) {
+    for (const char* w : kRuleWords)
+        if (a == QLatin1String(w)) return QCoreApplication::translate("HealthRules", w);
+    return coreText(a);
+}
 }  // namespace
 
 std::span<const char* const> healthRuleTexts() { return kRuleTexts; }
@@ -82,7 +92,7 @@ QString healthRuleText(const dissect::HealthFinding& f, RulePart part) {
     const char* english = part == RulePart::What ? rule->what : part == RulePart::Why ? rule->why : rule->check;
     // The values in the UI language too where they are words ("heartbeat", an EMCY text).
     QStringList args;
-    for (const QString& a : f.args) args << coreText(a);
+    for (const QString& a : f.args) args << argText(a);
     return dissect::fillRule(QCoreApplication::translate("HealthRules", english), args);
 }
 
