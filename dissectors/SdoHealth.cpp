@@ -69,8 +69,8 @@ void NetworkHealth::addSdo(const CanFrame& f, const Dissection& d, const Network
             a.own = own;
             const VendorTable* vt = ctx.node(d.node).vendor;
             a.text = vt && vt->aborts.contains(x.abortCode) ? vt->aborts.value(x.abortCode) : canopen::sdoAbortText(x.abortCode);
-            // Abort code 0 or one no table knows (issue 37): say so, not an empty text.
-            if (a.text.isEmpty()) a.text = x.abortCode == 0 ? QStringLiteral("no reason given") : QStringLiteral("abort code not in CiA 301");
+            // A code no table knows (issue 37): say so, not an empty text (code 0 reads "No reason given").
+            if (a.text.isEmpty()) a.text = QStringLiteral("Abort code not in CiA 301");
         }
         a.at.add(now, frameNo_);
     } else {
