@@ -138,6 +138,44 @@ private slots:
         QVERIFY(!h.contains(QStringLiteral("<script")));
     }
 
+    // Issue 37: a 17-minute log of 5 drives (heartbeat 1 s, TPDO1 every 100 ms, SDO reads now
+    // and then, two with an abort, node 3 faults and is reset twice, node 4 reboots once) reads
+    // as a short report: under 150 lines of text, the verdict first, and each node's story.
+    void longLogStaysShort() {
+        const QString path = dir_.filePath(QStringLiteral("17min.log"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray out;
+        auto put = [&](double t, const char* id, const char* data) { out += line(t, id, data).toUtf8(); };
+        for (int n = 1; n <= 5; ++n) put(0.001 * n, QStringLiteral("70%1").arg(n).toLatin1().constData(), "00");
+        put(0.5, "000", "0100");
+        for (int step = 1; step <= 10200; ++step) {  // 1020 s in 100 ms steps
+            const double t = step * 0.1;
+            for (int n = 1; n <= 5; ++n) {
+                const QByteArray cob = QByteArray::number(0x180 + n, 16).toUpper();
+                put(t + 0.001 * n, cob.constData(), "3706000000000000");
+                if (step % 10 == 0) put(t + 0.0005 * n, QByteArray::number(0x700 + n, 16).toUpper().constData(), (n == 4 && step == 6000) ? "00" : "05");
+            }
+            if (step % 600 == 0) {  // an SDO read of node 2 every minute; two of them aborted
+                put(t + 0.02, "602", "4018100100000000");
+                put(t + 0.022, "582", step == 1200 || step == 4800 ? "8018100100000206" : "4318100192010000");
+            }
+            if (step == 3000 || step == 7000) put(t + 0.03, "083", "1023020000000000");  // over-current
+            if (step == 3100 || step == 7100) put(t + 0.03, "083", "0000000000000000");  // reset
+        }
+        f.write(out);
+        f.close();
+        const Run r = cli({QStringLiteral("stats"), path});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = r.out.split(u'\n');
+        QVERIFY2(lines.size() < 150, qPrintable(QStringLiteral("%1 lines:\n%2").arg(lines.size()).arg(r.out)));
+        QVERIFY2(lines.front().startsWith(QStringLiteral("Problems found: 1 critical, 1 error, 1 warning")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 3: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 4: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("emcy.fault, node 3: Node 3 reported EMCY 2310h (Continuous over-current) 2 time(s).")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("sdo.abort, node 2: Node 2 aborted 2 SDO transfer(s) with 06020000h")), qPrintable(r.out));
+    }
+
     void usage() {
         QCOMPARE(cli({QStringLiteral("stats"), log_, QStringLiteral("--format"), QStringLiteral("xml")}).code, 2);
     }
