@@ -76,10 +76,12 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     h += QStringLiteral("<p class='verdict'><b>%1</b></p>\n").arg(esc(r.verdict));
     // Each finding: what, why, what to check, and where, every frame number visible (the
     // trace's No.), so a reviewer finds them in CoScope or any tool that numbers frames.
+    int shown = 0;  // findings written: each frame reference has its own id, f<finding>-<n>
     auto finding = [&](const HealthFinding& f) {
         QString frames;
+        ++shown;
         for (size_t i = 0; i < f.at.frames.size() && i < 50; ++i)
-            frames += QStringLiteral("%1<a class='fr' id='f%2-%3'>#%4</a>").arg(i ? QStringLiteral(", ") : QString()).arg(f.rule).arg(i).arg(f.at.frames[i] + 1);
+            frames += QStringLiteral("%1<a class='fr' id='f%2-%3'>#%4</a>").arg(i ? QStringLiteral(", ") : QString()).arg(shown).arg(i).arg(f.at.frames[i] + 1);
         if (f.at.count > std::min<uint64_t>(f.at.frames.size(), 50)) frames += QStringLiteral(", … (+%1)").arg(f.at.count - std::min<uint64_t>(f.at.frames.size(), 50));
         QString when;
         if (f.at.count)
@@ -87,7 +89,7 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
                                    : QStringLiteral("%1 times, %2 .. %3").arg(f.at.count).arg(healthTime(f.at.firstNs, r.startNs), healthTime(f.at.lastNs, r.startNs));
         h += QStringLiteral("<li class='%1'><span class='sev'>%1</span><b>%2</b>%3 %4<br><span class='muted'>%5%6</span><br>Why: %7<br>Check: %8</li>\n")
                  .arg(severityName(f.severity), esc(f.rule), f.node >= 0 ? QStringLiteral(", node %1:").arg(f.node) : QStringLiteral(":"), esc(f.what), esc(when),
-                      frames.isEmpty() ? QString() : QStringLiteral("; frames ") + frames, esc(f.why), esc(f.check));
+                      frames.isEmpty() ? QString() : (f.at.count == 1 ? QStringLiteral("; frame ") : QStringLiteral("; frames ")) + frames, esc(f.why), esc(f.check));
     };
     h += QStringLiteral("<h2>Findings</h2>\n<ul class='f'>\n");
     bool any = false, anyOwn = false;
