@@ -69,14 +69,50 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
         "body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1000px}h1{font-size:20px}h2{font-size:16px;margin-top:24px;border-bottom:1px solid #ddd}"
         "table{border-collapse:collapse;font-size:13px;margin:8px 0}td,th{border:1px solid #ddd;padding:3px 8px;text-align:right}th{background:#f2f2f2}"
         "td:first-child,th:first-child{text-align:left}.f li{margin:3px 0}.critical{color:#b00020;font-weight:bold}.error{color:#c0392b}.warning{color:#b8860b}.info{color:#555}"
+        ".fr{font-family:monospace;color:#1a5fb4}.verdict{font-size:16px}h3{font-size:14px;margin:12px 0 4px}.story{font-size:13px}"
         ".sev{display:inline-block;width:70px;font-size:11px;text-transform:uppercase}.muted{color:#777;font-size:12px}\n</style></head><body>\n");
     const BusHealth& b = r.bus;
     h += QStringLiteral("<h1>%1</h1>\n<p class='muted'>%2 frames over %3 s at %4 bit/s</p>\n").arg(esc(title)).arg(b.frames).arg(num(b.durationS)).arg(b.bitRate);
+    h += QStringLiteral("<p class='verdict'><b>%1</b></p>\n").arg(esc(r.verdict));
+    // Each finding: what, why, what to check, and where, every frame number visible (the
+    // trace's No.), so a reviewer finds them in CoScope or any tool that numbers frames.
+    int shown = 0;  // findings written: each frame reference has its own id, f<finding>-<n>
+    auto finding = [&](const HealthFinding& f) {
+        QString frames;
+        ++shown;
+        for (size_t i = 0; i < f.at.frames.size() && i < 50; ++i)
+            frames += QStringLiteral("%1<a class='fr' id='f%2-%3'>#%4</a>").arg(i ? QStringLiteral(", ") : QString()).arg(shown).arg(i).arg(f.at.frames[i] + 1);
+        if (f.at.count > std::min<uint64_t>(f.at.frames.size(), 50)) frames += QStringLiteral(", … (+%1)").arg(f.at.count - std::min<uint64_t>(f.at.frames.size(), 50));
+        QString when;
+        if (f.at.count)
+            when = f.at.count == 1 ? QStringLiteral("once, at %1").arg(healthTime(f.at.firstNs, r.startNs))
+                                   : QStringLiteral("%1 times, %2 .. %3").arg(f.at.count).arg(healthTime(f.at.firstNs, r.startNs), healthTime(f.at.lastNs, r.startNs));
+        h += QStringLiteral("<li class='%1'><span class='sev'>%1</span><b>%2</b>%3 %4<br><span class='muted'>%5%6</span><br>Why: %7<br>Check: %8</li>\n")
+                 .arg(severityName(f.severity), esc(f.rule), f.node >= 0 ? QStringLiteral(", node %1:").arg(f.node) : QStringLiteral(":"), esc(f.what), esc(when),
+                      frames.isEmpty() ? QString() : (f.at.count == 1 ? QStringLiteral("; frame ") : QStringLiteral("; frames ")) + frames, esc(f.why), esc(f.check));
+    };
     h += QStringLiteral("<h2>Findings</h2>\n<ul class='f'>\n");
-    if (r.findings.empty()) h += QStringLiteral("<li class='info'>No problems found</li>\n");
-    for (const HealthFinding& f : r.findings)
-        h += QStringLiteral("<li class='%1'><span class='sev'>%1</span>%2</li>\n").arg(severityName(f.severity), esc(f.text));
-    h += QStringLiteral("</ul>\n<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
+    bool any = false, anyOwn = false;
+    for (const HealthFinding& f : r.findings) {
+        (f.own ? anyOwn : any) = true;
+        if (!f.own) finding(f);
+    }
+    if (!any) h += QStringLiteral("<li class='info'>No problems found</li>\n");
+    h += QStringLiteral("</ul>\n");
+    if (anyOwn) {
+        h += QStringLiteral("<h2>CoScope's own traffic (info, not counted)</h2>\n<ul class='f'>\n");
+        for (const HealthFinding& f : r.findings)
+            if (f.own) finding(f);
+        h += QStringLiteral("</ul>\n");
+    }
+    h += QStringLiteral("<h2>Nodes</h2>\n");
+    for (const NodeHealth& n : r.nodes) {
+        h += QStringLiteral("<h3>Node %1: %2</h3>\n<ul class='story'>\n").arg(n.node).arg(esc(n.outcome));
+        for (const StoryEntry& e : n.story) h += QStringLiteral("<li>%1 <a class='fr'>#%2</a> %3</li>\n").arg(healthTime(e.timeNs, r.startNs)).arg(e.frame + 1).arg(esc(e.text));
+        if (n.storyMore) h += QStringLiteral("<li class='muted'>… %1 more</li>\n").arg(n.storyMore);
+        h += QStringLiteral("</ul>\n");
+    }
+    h += QStringLiteral("<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
              .arg(num(b.loadAvgPct), num(b.loadPeakPct), num(b.peakAtS, 0))
              .arg(b.errorFrames)
              .arg(b.nonCanopen);

@@ -51,20 +51,37 @@ QJsonObject nodeJson(const NodeHealth& n, int64_t start) {
         list.append(QJsonObject{{QStringLiteral("t"), sec(e.timeNs, start)}, {QStringLiteral("code"), e.code}, {QStringLiteral("reg"), e.reg},
                                 {QStringLiteral("text"), e.text}, {QStringLiteral("vendor"), e.vendor}, {QStringLiteral("reset"), e.reset}});
     QJsonObject emcy{{QStringLiteral("count"), double(n.emcys)}, {QStringLiteral("resets"), double(n.emcyResets)}, {QStringLiteral("list"), list}};
+    QJsonArray story;
+    for (const StoryEntry& e : n.story)
+        story.append(QJsonObject{{QStringLiteral("t"), sec(e.timeNs, start)}, {QStringLiteral("frame"), double(e.frame + 1)}, {QStringLiteral("text"), e.text}});
     return QJsonObject{{QStringLiteral("bus"), n.bus},   {QStringLiteral("node"), n.node}, {QStringLiteral("frames"), double(n.frames)},
                        {QStringLiteral("heartbeat"), hb}, {QStringLiteral("nmt"), nmt},   {QStringLiteral("sdo"), sdo},
-                       {QStringLiteral("emcy"), emcy}};
+                       {QStringLiteral("emcy"), emcy},    {QStringLiteral("story"), story}, {QStringLiteral("story_more"), double(n.storyMore)},
+                       {QStringLiteral("outcome"), n.outcome}};
 }
 }  // namespace
 
 QJsonObject healthJson(const HealthReport& r) {
     QJsonArray findings;
-    for (const HealthFinding& f : r.findings)
+    for (const HealthFinding& f : r.findings) {
+        // Frame numbers as the trace's "No." shows them (index + 1); the first 1000, `count` all.
+        QJsonArray frames;
+        for (uint64_t fr : f.at.frames) frames.append(double(fr + 1));
         findings.append(QJsonObject{{QStringLiteral("severity"), severityName(f.severity)},
                                     {QStringLiteral("kind"), f.kind},
+                                    {QStringLiteral("rule"), f.rule},
+                                    {QStringLiteral("own"), f.own},
                                     {QStringLiteral("node"), f.node < 0 ? QJsonValue() : QJsonValue(f.node)},
                                     {QStringLiteral("t"), f.hasTime ? QJsonValue(sec(f.timeNs, r.startNs)) : QJsonValue()},
-                                    {QStringLiteral("text"), f.text}});
+                                    {QStringLiteral("count"), double(f.at.count)},
+                                    {QStringLiteral("first"), f.at.count ? QJsonValue(sec(f.at.firstNs, r.startNs)) : QJsonValue()},
+                                    {QStringLiteral("last"), f.at.count ? QJsonValue(sec(f.at.lastNs, r.startNs)) : QJsonValue()},
+                                    {QStringLiteral("frames"), frames},
+                                    {QStringLiteral("text"), f.text},
+                                    {QStringLiteral("what"), f.what},
+                                    {QStringLiteral("why"), f.why},
+                                    {QStringLiteral("check"), f.check}});
+    }
     QJsonArray nodes;
     for (const NodeHealth& n : r.nodes) nodes.append(nodeJson(n, r.startNs));
     QJsonArray pdos;
@@ -88,10 +105,12 @@ QJsonObject healthJson(const HealthReport& r) {
     for (double v : b.perSecondPct) perSecond.append(r3(v));
     for (const RpdoNoProducer& p : b.rpdosNoProducer)
         noProducer.append(QJsonObject{{QStringLiteral("bus"), p.bus}, {QStringLiteral("node"), p.node}, {QStringLiteral("rpdo"), p.number}, {QStringLiteral("cob_id"), double(p.cobId)}});
-    QJsonArray silent;
+    QJsonArray silent, ownSilent;
     for (int id : b.silentAddressed) silent.append(id);
+    for (int id : b.ownSilentAddressed) ownSilent.append(id);
     QJsonObject bus{{QStringLiteral("bit_rate"), b.bitRate},
                     {QStringLiteral("silent_addressed_nodes"), silent},
+                    {QStringLiteral("own_scan_silent_nodes"), ownSilent},
                     {QStringLiteral("frames"), double(b.frames)},
                     {QStringLiteral("duration_s"), r3(b.durationS)},
                     {QStringLiteral("error_frames"), double(b.errorFrames)},
@@ -106,7 +125,7 @@ QJsonObject healthJson(const HealthReport& r) {
                                                          {QStringLiteral("period_source"), b.syncPeriodSource.isEmpty() ? QJsonValue() : QJsonValue(b.syncPeriodSource)},
                                                          {QStringLiteral("missing"), double(b.syncMissing)}}},
                     {QStringLiteral("rpdos_no_producer"), noProducer}};
-    return QJsonObject{{QStringLiteral("findings"), findings}, {QStringLiteral("nodes"), nodes}, {QStringLiteral("pdos"), pdos}, {QStringLiteral("bus"), bus}};
+    return QJsonObject{{QStringLiteral("verdict"), r.verdict}, {QStringLiteral("findings"), findings}, {QStringLiteral("nodes"), nodes}, {QStringLiteral("pdos"), pdos}, {QStringLiteral("bus"), bus}};
 }
 
 }  // namespace coscope::dissect

@@ -5,6 +5,8 @@
 
 #include "core/canopen/Nmt.h"
 
+#include <QSet>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -32,11 +34,75 @@ unsigned long long u(uint64_t v) { return static_cast<unsigned long long>(v); }
 QByteArray state(int s) { return s < 0 ? QByteArray("-") : canopen::nmtStateName(static_cast<uint8_t>(s)).toUtf8(); }
 }  // namespace
 
+QString healthFrames(const Occurrences& at, int shown) {
+    if (at.frames.empty()) return {};
+    QStringList l;
+    for (size_t i = 0; i < std::min<size_t>(at.frames.size(), static_cast<size_t>(shown)); ++i) l << QString::number(at.frames[i] + 1);
+    const uint64_t more = at.count - std::min<uint64_t>(at.count, static_cast<uint64_t>(l.size()));
+    QString s = QStringLiteral("%1 %2").arg(at.count == 1 ? QStringLiteral("frame") : QStringLiteral("frames"), l.join(QStringLiteral(", ")));
+    if (more) s += QStringLiteral(", … (+%1)").arg(more);
+    return s;
+}
+
+QString healthWhere(const HealthFinding& f, int64_t startNs) {
+    const Occurrences& at = f.at;
+    if (!at.count) return {};
+    QString s = at.count == 1 ? QStringLiteral("once, at %1").arg(healthTime(at.firstNs, startNs))
+                              : QStringLiteral("%1 times, %2 .. %3").arg(at.count).arg(healthTime(at.firstNs, startNs), healthTime(at.lastNs, startNs));
+    const QString frames = healthFrames(at, 5);
+    if (!frames.isEmpty()) s += QStringLiteral("; ") + frames;
+    return s;
+}
+
 QByteArray healthText(const HealthReport& r, bool perSecond) {
     Out o;
-    o.o.append("Findings:\n");
-    if (r.findings.empty()) o.o.append("  no problems found\n");
-    for (const HealthFinding& f : r.findings) o.put("  [%s] %s\n", qPrintable(severityName(f.severity)), f.text.toUtf8().constData());
+    // The verdict first (issue 37), then the findings with where they are, then each node's story.
+    o.put("%s\n", r.verdict.toUtf8().constData());
+    QSet<QString> explained;
+    auto finding = [&](const HealthFinding& f) {
+        o.put("  [%s] %s%s %s\n", qPrintable(severityName(f.severity)), qPrintable(f.rule), f.node >= 0 ? qPrintable(QStringLiteral(", node %1:").arg(f.node)) : ":",
+              f.what.toUtf8().constData());
+        const QString where = healthWhere(f, r.startNs);
+        if (!where.isEmpty()) o.put("      %s\n", where.toUtf8().constData());
+        // Why and what to check once per rule: the same words for every node.
+        if (!explained.contains(f.rule)) o.put("      Why: %s Check: %s\n", f.why.toUtf8().constData(), f.check.toUtf8().constData());
+        explained << f.rule;
+    };
+    o.o.append("\nFindings:\n");
+    bool any = false, anyOwn = false;
+    for (const HealthFinding& f : r.findings) {
+        if (f.own) {
+            anyOwn = true;
+            continue;
+        }
+        any = true;
+        finding(f);
+    }
+    if (!any) o.o.append("  no problems found\n");
+    if (anyOwn) {
+        o.o.append("\nCoScope's own traffic (info, not counted in the verdict):\n");
+        for (const HealthFinding& f : r.findings)
+            if (f.own) finding(f);
+    }
+
+    o.o.append("\nNodes (only those seen):\n");
+    if (r.nodes.empty()) o.o.append("  (none)\n");
+    for (const NodeHealth& n : r.nodes) {
+        QStringList facts;
+        if (!n.errorControl.isEmpty()) facts << QStringLiteral("%1 %2 ms").arg(n.errorControl).arg(n.expectedPeriodMs, 0, 'f', 0);
+        if (n.state >= 0) facts << canopen::nmtStateName(static_cast<uint8_t>(n.state));
+        o.put("  node %d: %s%s%s\n", n.node, qPrintable(facts.join(QStringLiteral(", "))), facts.isEmpty() ? "" : "; ", qPrintable(n.outcome));
+        // At most 8 lines: all, or the first 4, how many left out, the last 3.
+        const size_t all = n.story.size();
+        const size_t head = all <= 8 ? all : 4, tail = all <= 8 ? 0 : 3;
+        auto line = [&](const StoryEntry& e) {
+            o.put("    %12s  #%-7llu %s\n", qPrintable(healthTime(e.timeNs, r.startNs)), u(e.frame + 1), e.text.toUtf8().constData());
+        };
+        for (size_t i = 0; i < head; ++i) line(n.story[i]);
+        const uint64_t leftOut = all - head - tail + n.storyMore;
+        if (leftOut) o.put("    %12s  … %llu more\n", "", u(leftOut));
+        for (size_t i = all - tail; i < all; ++i) line(n.story[i]);
+    }
 
     o.o.append("\nHeartbeat / guarding and NMT per node:\n");
     o.put("  %-5s %-16s %-9s %7s %24s %10s %5s %8s %8s %6s %5s\n", "node", "state", "kind", "beats", "period min/avg/max ms", "expected", "late", "timeouts", "boot-ups", "resets", "NMT");
@@ -48,16 +114,6 @@ QByteArray healthText(const HealthReport& r, bool perSecond) {
         o.put("  %-5d %-16s %-9s %7llu %24s %10s %5llu %8llu %8llu %6llu %5llu\n", n.node, state(n.state).constData(), c(n.errorControl).constData(), u(n.beats), period, expected,
               u(n.late), u(n.timeouts), u(n.bootUps), u(n.resets), u(n.nmtCommands));
     }
-    bool anyChange = false;
-    for (const NodeHealth& n : r.nodes) {
-        const size_t shown = std::min<size_t>(n.nmtChanges.size(), 10);
-        for (size_t i = 0; i < shown; ++i) {
-            if (!anyChange) o.o.append("\nNMT state changes (first 10 per node):\n");
-            anyChange = true;
-            const NmtChange& ch = n.nmtChanges[i];
-            o.put("  node %-3d %12s  %s -> %s  (%s)\n", n.node, qPrintable(healthTime(ch.timeNs, r.startNs)), state(ch.from).constData(), state(ch.to).constData(), qPrintable(ch.cause));
-        }
-    }
 
     o.o.append("\nSDO per node:\n");
     o.put("  %-5s %9s %6s %7s %6s %8s %8s %30s\n", "node", "transfers", "ok", "aborted", "failed", "requests", "timeouts", "response min/avg/p99/max ms");
@@ -66,22 +122,7 @@ QByteArray healthText(const HealthReport& r, bool perSecond) {
         char rt[80] = "-";
         if (n.sdoResponses) std::snprintf(rt, sizeof rt, "%.2f/%.2f/%.2f/%.2f", n.sdoRtMinMs, n.sdoRtAvgMs, n.sdoRtP99Ms, n.sdoRtMaxMs);
         o.put("  %-5d %9llu %6llu %7llu %6llu %8llu %8llu %30s\n", n.node, u(n.sdoTransfers), u(n.sdoOk), u(n.sdoAborted), u(n.sdoFailed), u(n.sdoRequests), u(n.sdoTimeouts), rt);
-        for (const AbortCount& a : n.sdoAborts) o.put("        abort 0x%08X x%llu  %s\n", a.code, u(a.count), qPrintable(a.text));
     }
-
-    o.o.append("\nEMCY per node:\n");
-    bool anyEmcy = false;
-    for (const NodeHealth& n : r.nodes) {
-        if (!n.emcys) continue;
-        anyEmcy = true;
-        o.put("  node %-3d %llu EMCY, %llu error resets\n", n.node, u(n.emcys), u(n.emcyResets));
-        for (size_t i = 0; i < std::min<size_t>(n.emcyList.size(), 20); ++i) {
-            const EmcyEntry& e = n.emcyList[i];
-            o.put("    %12s  %04Xh reg %02Xh  %s%s%s\n", qPrintable(healthTime(e.timeNs, r.startNs)), e.code, e.reg, e.text.toUtf8().constData(),
-                  e.vendor.isEmpty() ? "" : "  ", e.vendor.toUtf8().constData());
-        }
-    }
-    if (!anyEmcy) o.o.append("  (none)\n");
 
     o.o.append("\nPDOs per COB-ID:\n");
     o.put("  %-7s %-6s %-5s %9s %9s %24s %10s\n", "COB-ID", "PDO", "node", "frames", "rate Hz", "period min/avg/max ms", "jitter ms");
@@ -102,11 +143,11 @@ QByteArray healthText(const HealthReport& r, bool perSecond) {
     o.put("  load average %.1f %%, peak %.1f %% at %.0f s\n", b.loadAvgPct, b.loadPeakPct, b.peakAtS);
     if (!b.silentAddressed.empty())
         o.put("  %zu node-IDs addressed by SDO never answered (%d..%d)\n", b.silentAddressed.size(), b.silentAddressed.front(), b.silentAddressed.back());
+    if (!b.ownSilentAddressed.empty())
+        o.put("  %zu node-IDs CoScope's scan asked never answered (%d..%d)\n", b.ownSilentAddressed.size(), b.ownSilentAddressed.front(), b.ownSilentAddressed.back());
     if (b.syncs) o.put("  SYNC %llu, period %.3f ms (%s), missing cycles %llu\n", u(b.syncs), b.syncPeriodMs, c(b.syncPeriodSource).constData(), u(b.syncMissing));
     if (!b.loadOverTime.empty()) {
         o.put("  load over time (%zu buckets of %.0f s, 0..100 %%): %s\n", b.loadOverTime.size(), b.loadOverTime.front().seconds, loadSparkline(r).toUtf8().constData());
-        o.o.append("  from s     avg %    peak %\n");
-        for (const LoadBucket& l : b.loadOverTime) o.put("  %6.0f   %6.1f   %6.1f\n", l.startS, l.avgPct, l.peakPct);
     }
     if (perSecond) {
         o.o.append("\nBus load per second:\n");

@@ -47,9 +47,14 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     const int state = f.data[0] & 0x7F;  // bit 7 is the guarding toggle
     // The time from a boot-up to the first heartbeat is no heartbeat period: a producer starts
     // when its 1017h is set, often seconds later (issue 37: such a start is not "lost").
-    if (t.beats && !t.lastWasBootUp && f.timestampNs >= t.lastBeatNs && t.beatGapsNs.size() < kMaxSamples) t.beatGapsNs.push_back(f.timestampNs - t.lastBeatNs);
+    if (t.beats && !t.lastWasBootUp && f.timestampNs >= t.lastBeatNs && t.beatGapsNs.size() < kMaxSamples) {
+        t.beatGapsNs.push_back(f.timestampNs - t.lastBeatNs);
+        t.beatGapFrames.push_back(frameNo_);
+        t.beatGapEndNs.push_back(f.timestampNs);
+    }
     ++t.beats;
     t.lastBeatNs = f.timestampNs;
+    t.lastBeatFrame = frameNo_;
     t.lastWasBootUp = state == 0;
     const bool commanded = t.lastCommand >= 0 && f.timestampNs - t.lastCommandNs <= kCommandWindowNs;
     auto commandText = [&] {
@@ -60,10 +65,13 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
         ++t.bootUps;
         const bool resetCommanded = commanded && (t.lastCommand == kResetNode || t.lastCommand == kResetComm);
         // A node seen before that boots without being told to has reset itself (power, watchdog).
-        if (wasPresent && !resetCommanded) ++t.resets;
-        if (t.nmtChanges.size() < 1000)
-            t.nmtChanges.push_back({f.timestampNs, t.state, 0,
-                                    resetCommanded ? commandText() : wasPresent ? QStringLiteral("node itself (unexpected reset)") : QStringLiteral("power-on")});
+        if (wasPresent && !resetCommanded) {
+            ++t.resets;
+            t.resetAt.add(f.timestampNs, frameNo_);
+        }
+        const QString cause = resetCommanded ? commandText() : wasPresent ? QStringLiteral("node itself (unexpected reset)") : QStringLiteral("power-on");
+        if (t.nmtChanges.size() < 1000) t.nmtChanges.push_back({f.timestampNs, t.state, 0, cause});
+        t.tell(f.timestampNs, frameNo_, QStringLiteral("boot-up (%1)").arg(cause));
         if (resetCommanded) t.lastCommand = -1;
         t.state = 0;
         return;
@@ -81,6 +89,12 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
         cause = QStringLiteral("node itself");
     }
     if (t.nmtChanges.size() < 1000) t.nmtChanges.push_back({f.timestampNs, t.state, state, cause});
+    // The first state seen after a boot-up is the boot-up's own (CiA 301 §7.3.2.1): not news.
+    if (!(t.state == 0 && state == 127 && !commanded))
+        t.tell(f.timestampNs, frameNo_,
+               QStringLiteral("NMT %1%2 (%3)")
+                   .arg(t.state < 0 ? QString() : canopen::nmtStateName(static_cast<uint8_t>(t.state)) + QStringLiteral(" -> "),
+                        canopen::nmtStateName(static_cast<uint8_t>(state)), cause));
     t.state = state;
 }
 
@@ -93,6 +107,9 @@ void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const Netwo
     h.nmtCommands = t.nmtCommands;
     h.nmtChanges = t.nmtChanges;
     h.heartbeatDisabled = t.heartbeatMs == 0;
+    h.resetAt = t.resetAt;
+    h.lastBeatNs = t.lastBeatNs;
+    h.lastBeatFrame = t.lastBeatFrame;
     if (!t.beatGapsNs.empty()) {
         const auto [mn, mx] = std::minmax_element(t.beatGapsNs.begin(), t.beatGapsNs.end());
         double sum = 0;
@@ -129,12 +146,19 @@ void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const Netwo
     // "Lost" is a stop after regular beats: a long gap before the first regular interval is a
     // heartbeat that started late (or was set up later), not a lost one.
     bool regular = false;
-    for (int64_t g : t.beatGapsNs) {
-        const double gd = static_cast<double>(g);
+    const std::vector<int64_t>& ends = t.beatGapEndNs;
+    for (size_t i = 0; i < t.beatGapsNs.size(); ++i) {
+        const double gd = static_cast<double>(t.beatGapsNs[i]);
         if (gd > lostNs) {
-            if (regular) ++h.timeouts;
+            if (regular) {
+                ++h.timeouts;
+                h.lostAt.add(ends[i], t.beatGapFrames[i]);
+            }
         } else if (gd > lateNs) {
-            if (regular) ++h.late;
+            if (regular) {
+                ++h.late;
+                h.lateAt.add(ends[i], t.beatGapFrames[i]);
+            }
         } else {
             regular = true;
         }

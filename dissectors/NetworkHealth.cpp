@@ -73,7 +73,20 @@ NetworkHealth::NodeTrack& NetworkHealth::node(int bus, int id) {
     return *slot;
 }
 
-void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx) {
+Occurrences NetworkHealth::IntervalMarks::select(double periodMs, double over, bool onlyLonger) const {
+    Occurrences o;
+    if (periodMs <= 0) return o;
+    const double periodNs = periodMs * 1e6;
+    for (const Mark& m : marks) {
+        const double iv = static_cast<double>(m.intervalNs);
+        const bool off = onlyLonger ? iv > (1 + over) * periodNs : std::abs(iv - periodNs) > over * periodNs;
+        if (off) o.add(m.ns, m.frame);
+    }
+    return o;
+}
+
+void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx, int64_t frameNo) {
+    frameNo_ = frameNo >= 0 ? static_cast<uint64_t>(frameNo) : frames_;
     if (!haveFirst_) {
         firstNs_ = f.timestampNs;
         haveFirst_ = true;
@@ -83,10 +96,12 @@ void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkCon
     if (!sharedLoad_) ownLoad_.add(f);
     if (f.isError()) {
         ++errorFrames_;
+        errorFrameAt_.add(f.timestampNs, frameNo_);
         return;
     }
     if (d.service == Service::Unknown || (f.isExtended() && d.pdoNumber == 0)) {
         ++nonCanopen_;  // a 29-bit PDO the context routes is CANopen
+        notCanopenAt_.add(f.timestampNs, frameNo_);
         return;
     }
     BusTrack& b = busTrack(f.bus);
@@ -105,7 +120,7 @@ void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkCon
         break;
     case Service::Tpdo1: case Service::Tpdo2: case Service::Tpdo3: case Service::Tpdo4:
     case Service::Rpdo1: case Service::Rpdo2: case Service::Rpdo3: case Service::Rpdo4:
-        addPdo(f, d, b);
+        addPdo(f, d, b, ctx);
         break;
     default: break;
     }
@@ -119,6 +134,7 @@ void NetworkHealth::addEmcy(const CanFrame& f, int id, const NetworkContext& ctx
     ++t.emcys;
     EmcyEntry e;
     e.timeNs = f.timestampNs;
+    e.frame = frameNo_;
     e.code = static_cast<uint16_t>(f.data[0] | (f.data[1] << 8));
     e.reg = f.len >= 3 ? f.data[2] : 0;
     e.reset = e.code == 0;  // CiA 301 §7.2.7.1: error reset or no error
@@ -127,8 +143,24 @@ void NetworkHealth::addEmcy(const CanFrame& f, int id, const NetworkContext& ctx
     e.text = e.reset ? QStringLiteral("error reset") : canopen::emcyCodeText(e.code);
     t.vendor = ctx.node(id).vendor;
     if (t.vendor && !e.reset) e.vendor = t.vendor->decodeEmcy(f.data.data(), f.len, e.code);
+    t.tell(e.timeNs, e.frame,
+           e.reset ? QStringLiteral("EMCY error reset")
+                   : QStringLiteral("EMCY %1h %2%3").arg(e.code, 4, 16, QLatin1Char('0')).arg(e.text, e.vendor.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(e.vendor)));
     t.emcyList.push_back(std::move(e));
 }
+
+namespace {
+// Adds `from` to `into` (the frames of several nodes: sorted again).
+void merge(Occurrences& into, const Occurrences& from) {
+    if (!from.count) return;
+    into.firstNs = into.count ? std::min(into.firstNs, from.firstNs) : from.firstNs;
+    into.lastNs = into.count ? std::max(into.lastNs, from.lastNs) : from.lastNs;
+    into.count += from.count;
+    into.frames.insert(into.frames.end(), from.frames.begin(), from.frames.end());
+    std::sort(into.frames.begin(), into.frames.end());
+    if (into.frames.size() > Occurrences::kMaxFrames) into.frames.resize(Occurrences::kMaxFrames);
+}
+}  // namespace
 
 HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) const {
     HealthReport r;
@@ -138,10 +170,23 @@ HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) con
     for (size_t bus = 0; bus < buses_.size(); ++bus)
         for (int id = 1; id < 128; ++id) {
             const NodeTrack* t = buses_[bus].nodes[static_cast<size_t>(id)].get();
-            if (!t || (!t->present && !t->sdoRequests && !t->nmtCommands)) continue;
-            // A probe (request, then the client's abort) to a node that never answers.
-            if (!t->present && t->sdoRequests <= 2 && (!t->nmtCommands || t->lastCommandAll)) {
-                if (t->sdoRequests) r.bus.silentAddressed.push_back(id);
+            if (!t) continue;
+            // Only nodes seen are listed (issue 37): an NMT command or an SDO request to a
+            // node-ID that never sent anything (a scan's probe, a device missing) is summarised.
+            if (!t->present) {
+                if (t->sdoRequests > t->ownSdoRequests + 2) {
+                    NodeHealth h;
+                    h.node = id;
+                    fillSdo(h, *t, now);
+                    r.bus.unanswered.push_back({id, t->sdoRequests - t->ownSdoRequests, h.sdoTimeouts - h.ownSdoTimeouts, h.sdoTimeoutAt});
+                } else if (t->sdoRequests > t->ownSdoRequests) {
+                    r.bus.silentAddressed.push_back(id);
+                    merge(r.bus.silentAt, t->sdoRequestAt);
+                }
+                if (t->ownSdoRequests) {
+                    r.bus.ownSilentAddressed.push_back(id);
+                    merge(r.bus.ownSilentAt, t->ownSdoRequestAt);
+                }
                 continue;
             }
             NodeHealth h;
@@ -153,11 +198,13 @@ HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) con
             h.emcys = t->emcys;
             h.emcyResets = t->emcyResets;
             h.emcyList = t->emcyList;
+            fillStory(h, *t);
             r.nodes.push_back(std::move(h));
         }
     fillPdos(r, ctx);
     fillBus(r, ctx);
     r.findings = healthFindings(r);
+    r.verdict = healthVerdict(r.findings);
     return r;
 }
 
@@ -167,6 +214,8 @@ void NetworkHealth::fillBus(HealthReport& r, const NetworkContext* ctx) const {
     b.frames = frames_;
     b.errorFrames = errorFrames_;
     b.nonCanopen = nonCanopen_;
+    b.errorFrameAt = errorFrameAt_;
+    b.notCanopenAt = notCanopenAt_;
     b.durationS = static_cast<double>(lastNs_ - firstNs_) / 1e9;
     const std::vector<double>& bitsPerSecond = load().bitsPerSecond();
     const size_t n = bitsPerSecond.size();
@@ -220,7 +269,10 @@ void NetworkHealth::fillBus(HealthReport& r, const NetworkContext* ctx) const {
         b.syncPeriodMs = syncPeriods_.medianMs();
         b.syncPeriodSource = QStringLiteral("observed");
     }
-    if (b.syncPeriodMs > 0) syncPeriods_.countOver(b.syncPeriodMs, 1.5, &b.syncMissing);
+    if (b.syncPeriodMs > 0) {
+        syncPeriods_.countOver(b.syncPeriodMs, 1.5, &b.syncMissing);
+        b.syncMissingAt = syncMarks_.select(b.syncPeriodMs, 0.5, true);
+    }
 }
 
 }  // namespace coscope::dissect

@@ -80,8 +80,9 @@ public:
     int bitRate() const { return bitRate_; }
 
     // Feeds one frame after `ctx` dissected it into `d` (any level). Error frames are counted
-    // without looking at `d`.
-    void add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);
+    // without looking at `d`. `frameNo`: the frame's index in the trace, for the findings' frame
+    // numbers; -1 = the count of frames added before it (a log read from its first frame).
+    void add(const CanFrame& f, const Dissection& d, const NetworkContext& ctx, int64_t frameNo = -1);
 
     // The report as of `nowNs` (a silence up to then counts as a heartbeat or SDO timeout;
     // default: the last frame). `ctx` (may be null) adds the RPDOs configured with no producer.
@@ -101,6 +102,24 @@ public:
     static constexpr size_t kMaxSamples = 1'000'000;  // per node, for heartbeats and SDO times
 
 private:
+    // Intervals that differ from the one before by over 25 %: the candidates for the frames of a
+    // jitter or missing-SYNC finding, sorted out against the median at report() (bounded).
+    struct IntervalMarks {
+        struct Mark {
+            uint64_t frame;
+            int64_t ns, intervalNs;
+        };
+        int64_t prevNs = 0;
+        std::vector<Mark> marks;
+        void add(int64_t interval, int64_t ns, uint64_t frame) {
+            if (prevNs > 0 && (interval * 4 > prevNs * 5 || interval * 4 < prevNs * 3) && marks.size() < 4 * Occurrences::kMaxFrames) [[unlikely]]
+                marks.push_back({frame, ns, interval});
+            prevNs = interval;
+        }
+        // The marks off `periodMs` by more than the share `over` (0.25: outside ±25 %; for a
+        // gap, `onlyLonger`: longer than (1 + over) x the period).
+        Occurrences select(double periodMs, double over, bool onlyLonger) const;
+    };
     struct NodeTrack {
         bool present = false;   // the node sent something (heartbeat, TPDO, SDO response, EMCY)
         uint64_t frames = 0;
@@ -110,7 +129,11 @@ private:
         uint64_t beats = 0;
         int64_t lastBeatNs = 0;
         bool lastWasBootUp = false;        // the frame at lastBeatNs was a boot-up, not a beat
+        uint64_t lastBeatFrame = 0;
         std::vector<int64_t> beatGapsNs;   // between beats; none from a boot-up to the first beat
+        std::vector<uint64_t> beatGapFrames;  // the frame that ended each gap, and its time
+        std::vector<int64_t> beatGapEndNs;
+        Occurrences resetAt;
         int state = -1;
         uint64_t bootUps = 0, resets = 0, nmtCommands = 0;
         int64_t lastCommandNs = 0;
@@ -121,14 +144,31 @@ private:
         int64_t heartbeatSetNs = 0;
         // SDO
         bool sdoPending = false;
+        bool sdoPendingOwn = false;        // the waiting request was sent by the recording side (Tx)
+        uint64_t sdoRequestFrame = 0;
         int64_t sdoRequestNs = 0;
+        uint64_t ownSdoRequests = 0;
+        Occurrences sdoTimeoutAt, ownSdoTimeoutAt;
+        Occurrences sdoRequestAt, ownSdoRequestAt;  // kept for a node that never answers
+        float sdoRtMaxMs = -1;
+        int64_t sdoRtMaxNs = 0;
+        uint64_t sdoRtMaxFrame = 0;
         uint64_t sdoRequests = 0, sdoResponses = 0, sdoTimeouts = 0;
         uint64_t sdoOk = 0, sdoAborted = 0, sdoFailed = 0;
         std::vector<float> sdoRtMs;
-        std::map<uint32_t, AbortCount> aborts;
+        std::map<uint64_t, AbortCount> aborts;  // by code, own ones (bit 32) apart
         // EMCY
         uint64_t emcys = 0, emcyResets = 0;
         std::vector<EmcyEntry> emcyList;
+        // the story (NodeHealth::story) and the CiA 402 state from the statusword
+        std::vector<StoryEntry> story;
+        uint64_t storyMore = 0;
+        int ds402State = -1;
+        bool ds402Fault = false;  // was in Fault (or fault reaction) at some time
+        void tell(int64_t ns, uint64_t frame, QString text) {
+            if (story.size() < NodeHealth::kStory) story.push_back({ns, frame, std::move(text)});
+            else ++storyMore;
+        }
     };
     struct PdoTrack {
         uint32_t cobId = 0;
@@ -138,7 +178,14 @@ private:
         int number = 0;
         uint64_t frames = 0;
         int64_t firstNs = 0, lastNs = 0;
+        uint64_t firstFrame = 0;
         IntervalStats periods;
+        IntervalMarks marks;
+        // Where the statusword 6041h sits in this TPDO (CiA 402-2 §8.4.1), for the node's story:
+        // looked up again when the node's mapping changes.
+        const void* swConfig = nullptr;
+        int swMapCount = -1;
+        int swBit = -1;  // -1 = not mapped
     };
     struct BusTrack {
         std::array<std::unique_ptr<NodeTrack>, 128> nodes;
@@ -160,15 +207,21 @@ private:
     void addNmtCommand(const CanFrame& f, BusTrack& b);                // HeartbeatHealth.cpp
     void addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);  // SdoHealth.cpp
     void addEmcy(const CanFrame& f, int node, const NetworkContext& ctx);
-    void addPdo(const CanFrame& f, const Dissection& d, BusTrack& b);  // PdoHealth.cpp
+    void addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, const NetworkContext& ctx);  // PdoHealth.cpp
+    void addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw);                     // Ds402Story.cpp
+    void fillStory(NodeHealth& h, const NodeTrack& t) const;                              // Ds402Story.cpp
     void addSync(const CanFrame& f, BusTrack& b);                      // PdoHealth.cpp
     void fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus, int64_t nowNs) const;
     void fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) const;
+    static void timedOut(NodeTrack& t);  // SdoHealth.cpp: the waiting request got no answer
     void fillPdos(HealthReport& r, const NetworkContext* ctx) const;
     void fillBus(HealthReport& r, const NetworkContext* ctx) const;
 
     int bitRate_;
     uint64_t frames_ = 0, errorFrames_ = 0, nonCanopen_ = 0;
+    uint64_t frameNo_ = 0;  // of the frame add() handles
+    Occurrences errorFrameAt_, notCanopenAt_;
+    IntervalMarks syncMarks_;
     int64_t firstNs_ = 0, lastNs_ = 0;
     bool haveFirst_ = false;
     std::vector<BusTrack> buses_;
@@ -181,8 +234,10 @@ private:
     const BusLoad& load() const { return sharedLoad_ ? *sharedLoad_ : ownLoad_; }
 };
 
-// Findings in plain words, worst first (HealthFindings.cpp).
+// Findings in plain words, worst first, own-traffic ones last (HealthFindings.cpp).
 std::vector<HealthFinding> healthFindings(const HealthReport& r);
+// "Problems found: 1 critical, 2 errors, 5 warnings" or "No problems found" (HealthFindings.cpp).
+QString healthVerdict(const std::vector<HealthFinding>& findings);
 // "12:03:11" for wall-clock timestamps, else "12.345 s" from the start of the trace.
 QString healthTime(int64_t ns, int64_t startNs);
 

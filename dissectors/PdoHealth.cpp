@@ -13,7 +13,7 @@ namespace coscope::dissect {
 using canopen::Service;
 
 
-void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b) {
+void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, const NetworkContext& ctx) {
     int32_t* slot;
     if (f.isExtended()) {
         auto it = b.extPdoIndex.try_emplace(f.id, -1).first;
@@ -30,22 +30,48 @@ void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b) 
         p.tpdo = isTpdo(d.service);
         p.number = d.pdoNumber;
         p.firstNs = f.timestampNs;
+        p.firstFrame = frameNo_;
         pdos_.push_back(std::move(p));
     }
     PdoTrack& p = pdos_[static_cast<size_t>(*slot)];
-    if (p.frames && f.timestampNs >= p.lastNs) p.periods.add(f.timestampNs - p.lastNs);
+    if (p.frames && f.timestampNs >= p.lastNs) {
+        p.periods.add(f.timestampNs - p.lastNs);
+        p.marks.add(f.timestampNs - p.lastNs, f.timestampNs, frameNo_);
+    }
     ++p.frames;
     p.lastNs = f.timestampNs;
     if (p.tpdo && d.node >= 1 && d.node < 128) {
         NodeTrack& t = node(f.bus, d.node);
         t.present = true;
         ++t.frames;
+        // The statusword, where the node's mapping carries it (CiA 402-2 §8.4.1, 6041h).
+        const PdoConfig* cfg = ctx.node(f.bus, d.node).findPdo(true, d.pdoNumber);
+        const int count = cfg && cfg->mappingKnown ? cfg->count : -1;
+        if (cfg != p.swConfig || count != p.swMapCount) [[unlikely]] {
+            p.swConfig = cfg;
+            p.swMapCount = count;
+            p.swBit = -1;
+            for (int i = 0, bit = 0; i < count && static_cast<size_t>(i) < cfg->entries.size(); bit += cfg->entries[static_cast<size_t>(i)].bits, ++i) {
+                const PdoMapEntry& e = cfg->entries[static_cast<size_t>(i)];
+                if (!e.dummy && e.index == 0x6041 && e.sub == 0 && e.bits == 16) {
+                    p.swBit = bit;
+                    break;
+                }
+            }
+        }
+        if (p.swBit >= 0 && p.swBit % 8 == 0 && p.swBit / 8 + 2 <= f.len) {
+            const int at = p.swBit / 8;
+            addStatusword(t, f, static_cast<uint16_t>(f.data[static_cast<size_t>(at)] | f.data[static_cast<size_t>(at) + 1] << 8));
+        }
     }
 }
 
 void NetworkHealth::addSync(const CanFrame& f, BusTrack& b) {
     ++syncs_;
-    if (b.syncSeen && f.timestampNs >= b.lastSyncNs) syncPeriods_.add(f.timestampNs - b.lastSyncNs);
+    if (b.syncSeen && f.timestampNs >= b.lastSyncNs) {
+        syncPeriods_.add(f.timestampNs - b.lastSyncNs);
+        syncMarks_.add(f.timestampNs - b.lastSyncNs, f.timestampNs, frameNo_);
+    }
     b.syncSeen = true;
     b.lastSyncNs = f.timestampNs;
 }
@@ -58,6 +84,8 @@ void NetworkHealth::fillPdos(HealthReport& r, const NetworkContext* ctx) const {
         h.node = p.node;
         h.service = QStringLiteral("%1%2").arg(p.tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")).arg(p.number);
         h.frames = p.frames;
+        h.firstFrame = p.firstFrame;
+        h.firstNs = p.firstNs;
         const IntervalStats& s = p.periods;
         if (s.count) {
             h.periodMinMs = static_cast<double>(s.minNs) / 1e6;
@@ -65,6 +93,7 @@ void NetworkHealth::fillPdos(HealthReport& r, const NetworkContext* ctx) const {
             h.periodAvgMs = s.averageMs();
             h.jitterMs = s.jitterMs();
             h.cyclic = s.count >= 3 && s.shareNear(s.medianMs(), 0.25) >= 0.8;
+            if (h.cyclic) h.irregularAt = p.marks.select(s.medianMs(), 0.25, false);
             const double span = static_cast<double>(p.lastNs - p.firstNs) / 1e9;
             h.rateHz = span > 0 ? static_cast<double>(s.count) / span : 0;
         }

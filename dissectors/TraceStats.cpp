@@ -5,6 +5,7 @@
 #include "core/canopen/SdoAbort.h"
 
 #include <algorithm>
+#include <functional>
 #include <cstdio>
 
 namespace coscope::dissect {
@@ -56,11 +57,31 @@ QByteArray TraceStats::report(bool perSecond) const {
     for (int s = 0; s < 32; ++s)
         if (perService_[s]) put("  %-10s %12llu\n", qPrintable(canopen::serviceName(static_cast<canopen::Service>(s))), (unsigned long long)perService_[s]);
     o.append("\nFrames per COB-ID:\n");
+    // The busiest kCobIdRows in COB-ID order, the rest summed (a short report, issue 37).
+    constexpr size_t kCobIdRows = 12;
+    std::vector<uint64_t> counts;
+    for (uint64_t n : perStdId_)
+        if (n) counts.push_back(n);
+    uint64_t least = 0;  // a COB-ID with fewer frames is left out
+    if (counts.size() > kCobIdRows) {
+        std::nth_element(counts.begin(), counts.begin() + kCobIdRows - 1, counts.end(), std::greater<>());
+        least = counts[kCobIdRows - 1];
+    }
+    size_t rows = 0, leftIds = 0;
+    uint64_t leftFrames = 0;
     for (int id = 0; id < 2048; ++id) {
-        if (!perStdId_[static_cast<size_t>(id)]) continue;
+        const uint64_t n = perStdId_[static_cast<size_t>(id)];
+        if (!n) continue;
+        if (n < least || rows >= kCobIdRows) {
+            ++leftIds;
+            leftFrames += n;
+            continue;
+        }
+        ++rows;
         const canopen::CobIdInfo info = canopen::classifyCobId(static_cast<uint32_t>(id));
         put("  0x%03X  %-10s %12llu\n", id, qPrintable(canopen::serviceName(info.service)), (unsigned long long)perStdId_[static_cast<size_t>(id)]);
     }
+    if (leftIds) put("  ... %zu more COB-IDs with %llu frames\n", leftIds, (unsigned long long)leftFrames);
     for (const auto& [id, n] : perExtId_) put("  0x%08X (29-bit) %12llu\n", id, (unsigned long long)n);
     o.append("\nNodes:\n");
     bool anyNode = false;
@@ -69,7 +90,12 @@ QByteArray TraceStats::report(bool perSecond) const {
     for (size_t bus = 0; bus < nodeFrames_.size(); ++bus)
         for (int n = 1; n < 128; ++n) {
             const uint64_t count = nodeFrames_[bus][static_cast<size_t>(n)];
-            if (!count) continue;
+            // Only nodes that sent something (issue 37): a broadcast NMT or an SDO request to a
+            // node-ID is no sign of a node. Its own COB-IDs of the predefined set (CiA 301 §7.3.5):
+            // EMCY, TPDO1-4, SDO response, error control.
+            uint64_t sent = 0;
+            for (int base : {0x080, 0x180, 0x280, 0x380, 0x480, 0x580, 0x700}) sent += perStdId_[static_cast<size_t>(base + n)];
+            if (!count || !sent) continue;
             const NodeState& s = ctx_.node(static_cast<int>(bus), n);
             anyNode = true;
             const QString state = s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");

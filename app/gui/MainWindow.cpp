@@ -159,6 +159,10 @@ void MainWindow::createDocks() {
         trace_->raise();
         trace_->showFrame(n);
     });
+    connect(health_, &HealthDock::frameActivated, this, [this](FrameNo n) {
+        trace_->raise();
+        trace_->showFrame(n);
+    });
 }
 
 MainWindow::~MainWindow() {

@@ -216,7 +216,6 @@ private slots:
         QVERIFY(p.lines.size() > 100);
         // The report has the EMCY and the stopped heartbeat (the sample must stay meaningful).
         QVERIFY(!p.lines.filter(QStringLiteral("EMCY 2310h")).isEmpty());
-        QVERIFY(!p.lines.filter(QStringLiteral("more EMCY")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("heartbeat stopped")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("(Switch on disabled)")).isEmpty());
         QVERIFY(!p.lines.filter(QStringLiteral("(Operation enabled), ")).isEmpty());

@@ -52,15 +52,26 @@ private slots:
         const Run r = cli({QStringLiteral("stats"), log_});
         QCOMPARE(r.code, 0);
         const QString& o = r.out;
-        QVERIFY2(o.startsWith(QStringLiteral("Findings:\n  [critical]")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 15 rebooted 2 times")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 2 heartbeat stopped")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("EMCY 2310h")) && o.contains(QStringLiteral("from node 1 at 5.000 s")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 42 answered SDO in 180 ms p99")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("node 42 left 1 SDO request unanswered")), qPrintable(o));
-        // Findings come before the tables, the worst first.
-        QVERIFY(o.indexOf(QStringLiteral("rebooted")) < o.indexOf(QStringLiteral("answered SDO")));
-        QVERIFY(o.indexOf(QStringLiteral("answered SDO")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
+        // The verdict first (issue 37), then the findings, the worst first.
+        QVERIFY2(o.startsWith(QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning\n\nFindings:\n  [critical]")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("[critical] nmt.reset, node 15: Node 15 booted up 2 time(s) without an NMT reset command before it.")), qPrintable(o));
+        // Where: count, first and last time, the frames as the trace numbers them (No., in the
+        // log's line order): 5 lines at 0 s, then per 100 ms step i 701, 702 (i < 30), 72A, 70F,
+        // 080, 181; 70F 00h of step 40 is line 5 + 39 * 5 + 29 + 4 = 233, of step 70 line 383.
+        QVERIFY2(o.contains(QStringLiteral("2 times, 4.000 s .. 7.000 s; frames 233, 383\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("heartbeat.stopped, node 2: Node 2's heartbeat stopped")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("emcy.fault, node 1: Node 1 reported EMCY 2310h (Continuous over-current) 1 time(s).")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("once, at 5.000 s; frame ")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("sdo.slow, node 42: Node 42 answered SDO requests slowly: 180 ms at the 99th percentile")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("sdo.timeout, node 42: Node 42 left 1 SDO request(s) unanswered")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("      Why: ")) && o.contains(QStringLiteral(" Check: ")), qPrintable(o));
+        QVERIFY(o.indexOf(QStringLiteral("nmt.reset")) < o.indexOf(QStringLiteral("sdo.slow")));
+        QVERIFY(o.indexOf(QStringLiteral("sdo.slow")) < o.indexOf(QStringLiteral("Nodes (only those seen)")));
+        // Each node's story after the findings: node 1 faulted (EMCY) and was reset.
+        QVERIFY2(o.contains(QStringLiteral("  node 1: heartbeat 100 ms, Operational; recovered\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("  node 2: heartbeat 100 ms, Operational; not recovered (heartbeat stopped)\n")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("EMCY 2310h Continuous over-current")), qPrintable(o));
+        QVERIFY(o.indexOf(QStringLiteral("Nodes (only those seen)")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
         QVERIFY(o.contains(QStringLiteral("load over time")));
         QVERIFY(!o.contains(QStringLiteral("second      1")));
     }
@@ -95,6 +106,19 @@ private slots:
         QVERIFY(bus[QStringLiteral("load_over_time")].toArray().size() <= 60);
         QVERIFY(bus[QStringLiteral("load_peak_pct")].toDouble() > 0);
         QCOMPARE(o[QStringLiteral("findings")].toArray().at(0).toObject()[QStringLiteral("severity")].toString(), QStringLiteral("critical"));
+        // Issue 37: the verdict, and per finding its rule, count, times, frames and sentences.
+        QCOMPARE(o[QStringLiteral("verdict")].toString(), QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning"));
+        QJsonObject reset;
+        for (const auto& v : o[QStringLiteral("findings")].toArray())
+            if (v.toObject()[QStringLiteral("rule")].toString() == QLatin1String("nmt.reset")) reset = v.toObject();
+        QCOMPARE(reset[QStringLiteral("node")].toInt(), 15);
+        QCOMPARE(reset[QStringLiteral("count")].toInt(), 2);
+        QCOMPARE(reset[QStringLiteral("first")].toDouble(), 4.0);
+        QCOMPARE(reset[QStringLiteral("last")].toDouble(), 7.0);
+        QCOMPARE(reset[QStringLiteral("frames")].toArray().size(), 2);
+        for (const char* k : {"what", "why", "check"}) QVERIFY2(!reset[QLatin1String(k)].toString().isEmpty(), k);
+        QVERIFY(!n1[QStringLiteral("story")].toArray().isEmpty());
+        QCOMPARE(n1[QStringLiteral("outcome")].toString(), QStringLiteral("recovered"));
     }
 
     void html() {
@@ -103,12 +127,54 @@ private slots:
         const QString& h = r.out;
         QVERIFY(h.startsWith(QStringLiteral("<!DOCTYPE html>")));
         QVERIFY(h.contains(QStringLiteral("<svg")));
-        QVERIFY(h.contains(QStringLiteral("node 15 rebooted 2 times")));
+        QVERIFY2(h.contains(QStringLiteral("<b>Problems found: 2 critical, 2 errors, 1 warning</b>")), qPrintable(h));
+        QVERIFY(h.contains(QStringLiteral("Node 15 booted up 2 time(s) without an NMT reset command before it.")));
+        QVERIFY(h.contains(QStringLiteral("Why: ")) && h.contains(QStringLiteral("Check: ")));
+        // Node 15's boot-ups as visible frame references, each with its own id.
+        QVERIFY2(h.contains(QRegularExpression(QStringLiteral("frames <a class='fr' id='f(\\d+)-0'>#233</a>, <a class='fr' id='f\\1-1'>#383</a>"))), qPrintable(h));
         QVERIFY(h.trimmed().endsWith(QStringLiteral("</html>")));
         // Self-contained: nothing to fetch.
         QVERIFY(!h.contains(QStringLiteral("src=")));
         QVERIFY(!h.contains(QStringLiteral("href=")));
         QVERIFY(!h.contains(QStringLiteral("<script")));
+    }
+
+    // Issue 37: a 17-minute log of 5 drives (heartbeat 1 s, TPDO1 every 100 ms, SDO reads now
+    // and then, two with an abort, node 3 faults and is reset twice, node 4 reboots once) reads
+    // as a short report: under 150 lines of text, the verdict first, and each node's story.
+    void longLogStaysShort() {
+        const QString path = dir_.filePath(QStringLiteral("17min.log"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray out;
+        auto put = [&](double t, const char* id, const char* data) { out += line(t, id, data).toUtf8(); };
+        for (int n = 1; n <= 5; ++n) put(0.001 * n, QStringLiteral("70%1").arg(n).toLatin1().constData(), "00");
+        put(0.5, "000", "0100");
+        for (int step = 1; step <= 10200; ++step) {  // 1020 s in 100 ms steps
+            const double t = step * 0.1;
+            for (int n = 1; n <= 5; ++n) {
+                const QByteArray cob = QByteArray::number(0x180 + n, 16).toUpper();
+                put(t + 0.001 * n, cob.constData(), "3706000000000000");
+                if (step % 10 == 0) put(t + 0.0005 * n, QByteArray::number(0x700 + n, 16).toUpper().constData(), (n == 4 && step == 6000) ? "00" : "05");
+            }
+            if (step % 600 == 0) {  // an SDO read of node 2 every minute; two of them aborted
+                put(t + 0.02, "602", "4018100100000000");
+                put(t + 0.022, "582", step == 1200 || step == 4800 ? "8018100100000206" : "4318100192010000");
+            }
+            if (step == 3000 || step == 7000) put(t + 0.03, "083", "1023020000000000");  // over-current
+            if (step == 3100 || step == 7100) put(t + 0.03, "083", "0000000000000000");  // reset
+        }
+        f.write(out);
+        f.close();
+        const Run r = cli({QStringLiteral("stats"), path});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = r.out.split(u'\n');
+        QVERIFY2(lines.size() < 150, qPrintable(QStringLiteral("%1 lines:\n%2").arg(lines.size()).arg(r.out)));
+        QVERIFY2(lines.front().startsWith(QStringLiteral("Problems found: 1 critical, 1 error, 1 warning")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 3: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 4: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("emcy.fault, node 3: Node 3 reported EMCY 2310h (Continuous over-current) 2 time(s).")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("sdo.abort, node 2: Node 2 aborted 2 SDO transfer(s) with 06020000h")), qPrintable(r.out));
     }
 
     void usage() {

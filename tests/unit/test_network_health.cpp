@@ -4,6 +4,7 @@
 // with figures worked out by hand.
 #include "core/can/CanFrame.h"
 #include "dissectors/HealthOutput.h"
+#include "dissectors/HealthRules.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/NetworkHealth.h"
 #include "dissectors/TraceStats.h"
@@ -194,7 +195,7 @@ private slots:
 
     // A scan probes node-IDs with one upload of 1000h each and aborts (client abort 80h,
     // 05040000h timeout, CiA 301 §7.2.4.3.17) where nothing answers: those IDs are one finding,
-    // not a table row each. A node asked again and again without an answer stays a node.
+    // not a table row each. A node-ID asked again and again without an answer is a finding.
     void scanProbesAreSummarisedNotListed() {
         Feed f;
         double t = 0;
@@ -210,11 +211,73 @@ private slots:
         for (int id = 5; id <= 9; ++id) QVERIFY2(!nodeOf(r, id), qPrintable(QString::number(id)));
         QCOMPARE(r.bus.silentAddressed, (std::vector<int>{5, 6, 7, 8, 9}));
         QVERIFY2(hasFinding(r, QStringLiteral("5 node-IDs (5..9) got an SDO request and never answered")), qPrintable(findings(r)));
-        const NodeHealth* missing = nodeOf(r, 12);
-        QVERIFY(missing);
-        QVERIFY(missing->sdoTimeouts >= 4);
+        // Node 12, asked again and again, never sent anything: no node row (issue 37: only nodes
+        // seen are listed), but its unanswered requests are an error finding with their frames.
+        QVERIFY(!nodeOf(r, 12));
+        const HealthFinding* missing = nullptr;
+        for (const HealthFinding& x : r.findings)
+            if (x.rule == QLatin1String("sdo.timeout") && x.node == 12) missing = &x;
+        QVERIFY2(missing, qPrintable(findings(r)));
+        QCOMPARE(missing->severity, int(HealthFinding::Error));
+        QVERIFY(missing->at.count >= 4);
+        QCOMPARE(missing->at.frames.front(), uint64_t{11});  // frames 0..10: heartbeat and 5 probes of 2, then node 12
         const QJsonObject json = healthJson(r);
         QCOMPARE(json.value(QStringLiteral("bus")).toObject().value(QStringLiteral("silent_addressed_nodes")).toArray().size(), 5);
+    }
+
+    // Issue 37: CoScope's own scan (requests marked Tx, CanFrame::Tx) is no device's fault. It
+    // reads 1000h of node-IDs 1..20 (only node 1 answers), then an optional object node 1 does
+    // not have (abort 06020000h, CiA 301 §7.2.4.3.17), and a last request to node 30 times out.
+    void ownScanGivesNoErrorOrWarning() {
+        Feed f;
+        double t = 0;
+        f.at(t, 0x701, {0x05});
+        for (int id = 1; id <= 20; ++id, t += 120) {
+            f.at(t, 0x600u + id, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, CanFrame::Tx);
+            if (id == 1) f.at(t + 1, 0x581, {0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00});
+            else f.at(t + 100, 0x600u + id, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05}, CanFrame::Tx);  // our abort: timed out
+        }
+        f.at(t, 0x601, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0}, CanFrame::Tx);
+        f.at(t + 2, 0x581, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x02, 0x06});
+        t += 10;
+        f.at(t, 0x61E, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, CanFrame::Tx);
+        for (int i = 0; i < 30; ++i) f.at(t += 100, 0x701, {0x05});
+        const HealthReport r = f.report();
+        for (const HealthFinding& x : r.findings) {
+            QVERIFY2(x.severity == HealthFinding::Info, qPrintable(x.rule + QStringLiteral(": ") + x.what));
+            if (x.rule.startsWith(QLatin1String("coscope."))) QVERIFY(x.own);
+        }
+        QCOMPARE(r.verdict, QStringLiteral("No problems found"));
+        QCOMPARE(r.nodes.size(), size_t(1));  // only node 1 was seen
+        QStringList rules;
+        for (const HealthFinding& x : r.findings) rules << x.rule;
+        QVERIFY2(rules.contains(QStringLiteral("coscope.scan")) && rules.contains(QStringLiteral("coscope.sdo_abort")), qPrintable(rules.join(u' ')));
+        QVERIFY(!rules.contains(QStringLiteral("sdo.abort")) && !rules.contains(QStringLiteral("sdo.timeout")) && !rules.contains(QStringLiteral("sdo.silent_nodes")));
+        // The same requests from another master (not Tx) are the device's findings.
+        Feed other;
+        other.at(0, 0x701, {0x05});
+        other.at(10, 0x601, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0});
+        other.at(12, 0x581, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x02, 0x06});
+        const HealthReport o = other.report();
+        QVERIFY2(!o.findings.empty() && o.findings.front().rule == QLatin1String("sdo.abort") && o.findings.front().severity == HealthFinding::Warning, qPrintable(findings(o)));
+        QCOMPARE(o.findings.front().at.frames, (std::vector<uint64_t>{2}));
+        QCOMPARE(o.verdict, QStringLiteral("Problems found: 1 warning"));
+    }
+
+    // Issue 37: every finding has its rule's three sentences with the values filled in.
+    void findingsExplainThemselves() {
+        Feed f;
+        for (double t : {0.0, 100.0, 200.0, 300.0, 400.0, 500.0, 900.0, 1000.0}) f.at(t, 0x705, {0x05});
+        const HealthReport r = f.report();
+        QVERIFY(!r.findings.empty());
+        const HealthFinding& lost = r.findings.front();
+        QCOMPARE(lost.rule, QStringLiteral("heartbeat.lost"));
+        QCOMPARE(lost.what, QStringLiteral("Node 5's heartbeat was missing 1 time(s) after regular beats (longest gap 400 ms, period 100 ms)."));
+        QVERIFY(!lost.why.isEmpty() && !lost.check.isEmpty() && !lost.check.contains(u'%'));
+        QCOMPARE(lost.at.count, uint64_t{1});
+        QCOMPARE(lost.at.frames, (std::vector<uint64_t>{6}));  // the beat at 900 ms ends the gap
+        QCOMPARE(lost.at.firstNs, 900 * kMs);
+        for (const HealthRule& rule : healthRules()) QVERIFY2(rule.what && rule.why && rule.check, rule.id);
     }
 
     void emcyListAndResets() {

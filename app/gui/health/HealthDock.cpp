@@ -4,8 +4,16 @@
 #include "app/gui/health/HealthModel.h"
 #include "app/gui/session/Workspace.h"
 
+#include "app/gui/health/HealthRuleText.h"
+#include "dissectors/NetworkHealth.h"
+
+#include <QAction>
+#include <QHBoxLayout>
 #include <QHeaderView>
+#include <QItemSelectionModel>
 #include <QLabel>
+#include <QStyle>
+#include <QToolButton>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableView>
@@ -30,6 +38,13 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(2, 2, 2, 2);
+    verdict_ = new QLabel(body);
+    verdict_->setObjectName(QStringLiteral("healthVerdict"));
+    QFont bold = verdict_->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.15);
+    verdict_->setFont(bold);
+    layout->addWidget(verdict_);
     summary_ = new QLabel(body);
     summary_->setObjectName(QStringLiteral("healthSummary"));
     summary_->setText(tr("No frames yet"));
@@ -39,7 +54,67 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     findingsView_ = makeTable(findings_, QStringLiteral("healthFindingsView"));
     findingsView_->horizontalHeader()->setSectionResizeMode(HealthModel::Text, QHeaderView::Stretch);
     findingsView_->setToolTip(tr("What to look at first, the worst at the top"));
-    split->addWidget(findingsView_);
+    findingsView_->setMinimumHeight(findingsView_->verticalHeader()->defaultSectionSize() * 7);  // a header and six findings
+    // The findings with, under them, the current one explained and its occurrences to step through.
+    auto* findingsBox = new QWidget(split);
+    auto* findingsLayout = new QVBoxLayout(findingsBox);
+    findingsLayout->setContentsMargins(0, 0, 0, 0);
+    findingsLayout->addWidget(findingsView_, 1);
+    auto* detailRow = new QHBoxLayout;
+    detail_ = new QLabel(findingsBox);
+    detail_->setObjectName(QStringLiteral("healthFindingDetail"));
+    detail_->setWordWrap(true);
+    detail_->setTextFormat(Qt::RichText);
+    detail_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    detail_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    detail_->setText(tr("Click a finding to see what happened, why it matters and what to check, and its first frame in the trace."));
+    detailRow->addWidget(detail_, 1);
+    auto* steps = new QVBoxLayout;
+    previous_ = new QAction(style()->standardIcon(QStyle::SP_ArrowUp), tr("Previous occurrence"), this);
+    previous_->setObjectName(QStringLiteral("healthPreviousOccurrence"));
+    previous_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F8));
+    previous_->setToolTip(tr("Show the finding's previous frame in the trace (Shift+F8)"));
+    next_ = new QAction(style()->standardIcon(QStyle::SP_ArrowDown), tr("Next occurrence"), this);
+    next_->setObjectName(QStringLiteral("healthNextOccurrence"));
+    next_->setShortcut(QKeySequence(Qt::Key_F8));
+    next_->setToolTip(tr("Show the finding's next frame in the trace (F8)"));
+    for (QAction* a : {previous_, next_}) {
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        a->setEnabled(false);
+        addAction(a);
+    }
+    connect(previous_, &QAction::triggered, this, [this] { goToOccurrence(occurrence_ - 1); });
+    connect(next_, &QAction::triggered, this, [this] { goToOccurrence(occurrence_ + 1); });
+    previousButton_ = new QToolButton(findingsBox);
+    previousButton_->setObjectName(QStringLiteral("healthPreviousButton"));
+    previousButton_->setDefaultAction(previous_);
+    previousButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    nextButton_ = new QToolButton(findingsBox);
+    nextButton_->setObjectName(QStringLiteral("healthNextButton"));
+    nextButton_->setDefaultAction(next_);
+    nextButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    for (QToolButton* b : {previousButton_, nextButton_}) {
+        b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        steps->addWidget(b);
+    }
+    steps->addStretch(1);
+    detailRow->addLayout(steps);
+    findingsLayout->addLayout(detailRow);
+    split->addWidget(findingsBox);
+    // A click (or Enter) on a finding: its first frame in the trace; moving through the list
+    // explains the finding under the cursor.
+    connect(findingsView_, &QTableView::clicked, this, [this](const QModelIndex& i) {
+        showFinding(i.row());
+        goToOccurrence(0);
+    });
+    connect(findingsView_, &QTableView::activated, this, [this](const QModelIndex& i) {
+        showFinding(i.row());
+        goToOccurrence(0);
+    });
+    connect(findingsView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this](const QModelIndex& i) {
+        occurrence_ = -1;
+        showFinding(i.row());
+    });
 
     tabs_ = new QTabWidget(split);
     tabs_->setObjectName(QStringLiteral("healthTabs"));
@@ -64,7 +139,7 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     plot_->setMinimumHeight(120);
     tabs_->addTab(plot_, tr("Bus load"));
     split->addWidget(tabs_);
-    split->setStretchFactor(0, 1);
+    split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
     layout->addWidget(split, 1);
     setWidget(body);
@@ -109,6 +184,21 @@ void HealthDock::update() {
     findings_->setReport(r);
     nodes_->setReport(r);
     pdos_->setReport(r);
+    // The verdict (issue 37): errors and warnings, CoScope's own traffic not counted.
+    int counts[4] = {0, 0, 0, 0};
+    for (const dissect::HealthFinding& f : r.findings)
+        if (!f.own) ++counts[std::clamp(f.severity, 0, 3)];
+    QStringList parts;
+    // English has no plural table here (no coscope_en.ts): one and many as two texts.
+    const int crit = counts[dissect::HealthFinding::Critical], err = counts[dissect::HealthFinding::Error], warn = counts[dissect::HealthFinding::Warning];
+    if (crit) parts << tr("%1 critical").arg(crit);
+    if (err) parts << (err == 1 ? tr("1 error") : tr("%1 errors").arg(err));
+    if (warn) parts << (warn == 1 ? tr("1 warning") : tr("%1 warnings").arg(warn));
+    verdict_->setText(r.bus.frames == 0 ? QString() : parts.isEmpty() ? tr("No problems found") : tr("Problems found: %1").arg(parts.join(tr(", "))));
+    verdict_->setStyleSheet(parts.isEmpty() ? QStringLiteral("color:#2e7d32") : QStringLiteral("color:#b00020"));
+    // The worst finding explained at once; a click still leads to its frames.
+    if (currentFinding() < 0 && findings_->rowCount() > 0) findingsView_->setCurrentIndex(findings_->index(0, HealthModel::Text));
+    showFinding(currentFinding());
     const dissect::BusHealth& b = r.bus;
     if (b.frames == 0) summary_->setText(tr("No frames yet"));
     else
@@ -134,6 +224,47 @@ void HealthDock::update() {
     plot_->xAxis->setRange(0, x.isEmpty() ? 1.0 : std::max(1.0, x.back()));
     plot_->yAxis->setRange(0, std::max(100.0, b.loadPeakPct));
     if (plot_->isVisible()) plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+int HealthDock::currentFinding() const {
+    const QModelIndex i = findingsView_->currentIndex();
+    return i.isValid() && i.row() < findings_->rowCount() ? i.row() : -1;
+}
+
+void HealthDock::showFinding(int row) {
+    const auto& findings = findings_->report().findings;
+    if (row < 0 || row >= static_cast<int>(findings.size())) {
+        previous_->setEnabled(false);
+        next_->setEnabled(false);
+        return;
+    }
+    const dissect::HealthFinding& f = findings[static_cast<size_t>(row)];
+    const dissect::Occurrences& at = f.at;
+    QString where;
+    if (at.count) {
+        const QString first = dissect::healthTime(at.firstNs, findings_->report().startNs), last = dissect::healthTime(at.lastNs, findings_->report().startNs);
+        where = at.count == 1 ? tr("Once, at %1.").arg(first) : tr("%1 times, from %2 to %3.").arg(at.count).arg(first, last);
+    }
+    if (!at.frames.empty()) {
+        where += QLatin1Char(' ') + (occurrence_ >= 0 ? tr("Frame %1 of %2 shown in the trace.").arg(occurrence_ + 1).arg(at.frames.size())
+                                                      : tr("Click the finding to show its first frame in the trace."));
+    }
+    auto esc = [](const QString& t) { return t.toHtmlEscaped(); };
+    detail_->setText(QStringLiteral("<b>%1</b><br>%2 %3<br>%4 %5<br><span style='color:#555'>%6%7</span>")
+                         .arg(esc(healthRuleText(f, RulePart::What)), tr("<b>Why:</b>"), esc(healthRuleText(f, RulePart::Why)), tr("<b>Check:</b>"),
+                              esc(healthRuleText(f, RulePart::Check)), esc(where), f.own ? QStringLiteral(" ") + esc(tr("CoScope's own traffic: not counted in the verdict.")) : QString()));
+    previous_->setEnabled(occurrence_ > 0);
+    next_->setEnabled(!at.frames.empty() && occurrence_ + 1 < static_cast<int>(at.frames.size()));
+}
+
+void HealthDock::goToOccurrence(int index) {
+    const int row = currentFinding();
+    if (row < 0) return;
+    const dissect::HealthFinding& f = findings_->report().findings[static_cast<size_t>(row)];
+    if (index < 0 || index >= static_cast<int>(f.at.frames.size())) return;
+    occurrence_ = index;
+    showFinding(row);
+    emit frameActivated(static_cast<FrameNo>(f.at.frames[static_cast<size_t>(index)]));
 }
 
 }  // namespace coscope::gui

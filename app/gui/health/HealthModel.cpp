@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/health/HealthModel.h"
 
+#include "app/gui/health/HealthRuleText.h"
 #include "app/gui/language/CoreText.h"
 
 #include "core/canopen/Nmt.h"
@@ -92,7 +93,10 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
         default: return {};
         }
     }
-    if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
+    if (role == Qt::ToolTipRole)  // the rule's three sentences (issue 37)
+        return QStringLiteral("%1\n%2 %3\n%4 %5")
+            .arg(healthRuleText(f, RulePart::What), tr("Why:"), healthRuleText(f, RulePart::Why), tr("Check:"), healthRuleText(f, RulePart::Check));
+    if (role != Qt::DisplayRole) return {};
     switch (column) {
     case Severity:
         switch (f.severity) {
@@ -103,7 +107,9 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
         }
     case Time: return f.hasTime ? dissect::healthTime(f.timeNs, report_.startNs) : QString();
     case Node: return f.node >= 0 ? QString::number(f.node) : tr("bus");
-    case Text: return coreLines(f.text);  // built by dissectors/ in English, like the CLI report; shown in the UI language
+    // The headline built by dissectors/ in English, like the CLI report, shown in the UI language;
+    // CoScope's own traffic by its rule's sentence (issue 37).
+    case Text: return f.own ? healthRuleText(f, RulePart::What) : coreLines(f.text);
     }
     return {};
 }

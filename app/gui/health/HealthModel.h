@@ -26,6 +26,7 @@ public:
     explicit HealthModel(Table table, QObject* parent = nullptr);
 
     void setReport(const dissect::HealthReport& report);
+    const dissect::HealthReport& report() const { return report_; }
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;

@@ -34,7 +34,7 @@ void HealthMonitor::addLocked(const TraceStore& store, FrameNo first, size_t cou
     for (size_t i = 0; i < count; ++i) {
         const CanFrame f = store.frame(first + static_cast<FrameNo>(i));
         if (!f.isError()) ctx_.dissect(f, d_, dissect::Dissection::Level::Stats);
-        health_.add(f, d_, ctx_);
+        health_.add(f, d_, ctx_, static_cast<int64_t>(first) + static_cast<int64_t>(i));  // the trace's frame number
     }
 }
 
