@@ -15,7 +15,7 @@ const QStringList kQtPluginNames = {QStringLiteral("socketcan"), QStringLiteral(
 const QStringList kOwnSchemes = {QStringLiteral("socketcand"), QStringLiteral("sim"), QStringLiteral("replay")};
 const QStringList kKnownOptions = {QStringLiteral("bitrate"), QStringLiteral("data-bitrate"), QStringLiteral("fd"),
                                    QStringLiteral("listen-only"), QStringLiteral("speed"), QStringLiteral("loop"),
-                                   QStringLiteral("nodes"), QStringLiteral("serials"), QStringLiteral("bus")};
+                                   QStringLiteral("nodes"), QStringLiteral("serials"), QStringLiteral("bus"), QStringLiteral("demo")};
 
 bool parseBool(const QString& v, bool fallback) {
     const QString s = v.trimmed().toLower();
@@ -39,6 +39,7 @@ int BusUrl::bitrate() const { return options.value(QStringLiteral("bitrate")).to
 int BusUrl::dataBitrate() const { return options.value(QStringLiteral("data-bitrate")).toInt(); }
 bool BusUrl::canFd() const { return parseBool(options.value(QStringLiteral("fd")), false); }
 bool BusUrl::listenOnly() const { return parseBool(options.value(QStringLiteral("listen-only")), false); }
+bool BusUrl::demo() const { return parseBool(options.value(QStringLiteral("demo")), false); }
 bool BusUrl::loop() const { return parseBool(options.value(QStringLiteral("loop")), false); }
 double BusUrl::speed() const {
     bool ok = false;

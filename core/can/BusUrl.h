@@ -32,6 +32,7 @@ struct BusUrl {
     bool listenOnly() const;
     double speed() const;         // replay speed factor, default 1.0
     bool loop() const;            // replay loop
+    bool demo() const;            // sim: a virtual PLC runs the network (sim::DemoMaster)
     QString option(const QString& key, const QString& fallback = {}) const { return options.value(key, fallback); }
 
     bool isQtPlugin() const;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/sim/SimBus.h"
 
+#include "core/sim/DemoMaster.h"
+
 namespace coscope {
 
 SimBus::SimBus(const BusUrl& url, QObject* parent) : CanBus(url, parent) {
@@ -26,6 +28,7 @@ void SimBus::open() {
             setState(State::Error, error);
             return;
         }
+        if (url().demo()) net->addNode(std::make_unique<sim::DemoMaster>(*net));
         network_ = std::move(net);
         if (!name.isEmpty()) sim::SimNetwork::publish(name, network_);
     }

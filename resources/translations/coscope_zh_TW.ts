@@ -1091,7 +1091,7 @@
         <translation>節點 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
+        <source>Reopen the adapter at %1, the device's new bit rate</source>
         <translation>以裝置的新鮑率 %1 重新開啟轉接器</translation>
     </message>
     <message>
@@ -1171,8 +1171,8 @@
         <translation>將新的節點 ID %1 寫入 %2 [物件為推定]（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
+        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1247,8 +1247,8 @@
         <translation>寫入 %1 = %2h：鮑率 %3（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
-        <translation>儲存參數（儲存參數，1010h &quot;save&quot;）</translation>
+        <source>Save the parameters (store parameters, 1010h "save")</source>
+        <translation>儲存參數（儲存參數，1010h "save"）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1315,11 +1315,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
         <translation>沒有裝置以此識別資料回應 LSS。請確認驅動器支援 LSS（CiA 305）；若不支援，請改用它自己的參數（廠商方式）或廠商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
         <translation>裝置拒絕了這個值。請確認它支援此值（見手冊的節點 ID 範圍／鮑率）。</translation>
     </message>
     <message>
@@ -1343,7 +1343,7 @@
         <translation>無法全部恢復（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
         <translation>Delta ASDA-A2 手冊 §1.3.1，P3-00（「●」：重新上電後生效）</translation>
     </message>
     <message>
@@ -2711,15 +2711,15 @@
         <translation>%1：匯流排為僅監聽：CoScope 不發送任何訊框，因此沒有心跳也沒有保護</translation>
     </message>
     <message>
-        <source>%1: CoScope&apos;s heartbeat node-ID %2 is the drive&apos;s own; choose another in the master settings</source>
+        <source>%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings</source>
         <translation>%1：CoScope 的心跳節點 ID %2 與驅動器相同；請在主站設定中另選</translation>
     </message>
     <message>
-        <source>%1: CoScope&apos;s heartbeat cannot start: %2</source>
+        <source>%1: CoScope's heartbeat cannot start: %2</source>
         <translation>%1：CoScope 的心跳無法啟動：%2</translation>
     </message>
     <message>
-        <source>%1 may still be enabled: it keeps watching CoScope&apos;s heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
+        <source>%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
         <translation>%1 可能仍為致能：它繼續監看 CoScope 的心跳（1016h、6007h 未寫回），心跳停止時會自行停止</translation>
     </message>
     <message>
@@ -2735,7 +2735,7 @@
         <translation>%1：原本的 1016h/6007h 未全部寫回（%2）；請檢查</translation>
     </message>
     <message>
-        <source>%1 watches CoScope&apos;s heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
+        <source>%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
         <translation>%1 以 1016h:%3 監看 CoScope 的心跳（節點 %2），%4 ms；心跳停止時：%5</translation>
     </message>
     <message>
@@ -3068,12 +3068,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
         <translation>——廠商異警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
         <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
     </message>
 </context>
@@ -3418,6 +3418,245 @@
     </message>
 </context>
 <context>
+    <name>HealthRules</name>
+    <message>
+        <source>Node %1 booted up %2 time(s) without an NMT reset command before it.</source>
+        <translation>節點 %1 在沒有 NMT 重置命令的情況下上線了 %2 次。</translation>
+    </message>
+    <message>
+        <source>A device that restarts on its own loses its state: a drive drops its enable and the machine stops.</source>
+        <translation>設備自行重新啟動會失去原有狀態：驅動器失去致能，機台隨之停止。</translation>
+    </message>
+    <message>
+        <source>Check the node's supply voltage and wiring, its watchdog and error history, and the frames just before each boot-up.</source>
+        <translation>請檢查該節點的電源電壓與配線、看門狗與錯誤紀錄，以及每次上線前的封包。</translation>
+    </message>
+    <message>
+        <source>Node %1's %2 stopped: nothing for %3 at the end of the log (period %4).</source>
+        <translation>節點 %1 的%2已停止：記錄結尾有 %3 沒有任何訊息（週期 %4）。</translation>
+    </message>
+    <message>
+        <source>The master's heartbeat consumer sees the node as lost and the application stops using it.</source>
+        <translation>主站的心跳消費者會判定此節點遺失，應用程式便停止使用它。</translation>
+    </message>
+    <message>
+        <source>Check that node %1 still has power and is on the bus (cable, connector, termination), and whether its 1017h was set to 0.</source>
+        <translation>請確認節點 %1 仍有電源且連在匯流排上（電纜、接頭、終端電阻），並檢查其 1017h 是否被設為 0。</translation>
+    </message>
+    <message>
+        <source>Node %1's %2 was missing %3 time(s) after regular beats (longest gap %4, period %5).</source>
+        <translation>節點 %1 的%2在規律發送後中斷了 %3 次（最長間隔 %4，週期 %5）。</translation>
+    </message>
+    <message>
+        <source>A consumer whose heartbeat time (1016h) is shorter than the gap raises a heartbeat error and may stop the machine.</source>
+        <translation>消費者心跳時間（1016h）短於此間隔時，會產生心跳錯誤並可能使機台停止。</translation>
+    </message>
+    <message>
+        <source>Look at the frames around each gap: error frames, bus load, a reset of node %1, a loose connection.</source>
+        <translation>請查看每個間隔前後的封包：錯誤封包、匯流排負載、節點 %1 是否重置、接線是否鬆脫。</translation>
+    </message>
+    <message>
+        <source>Node %1's %2 came late %3 time(s) (over 1.5 times the %4 period).</source>
+        <translation>節點 %1 的%2延遲了 %3 次（超過週期 %4 的 1.5 倍）。</translation>
+    </message>
+    <message>
+        <source>Late beats eat the consumer's margin: a little more delay becomes a heartbeat error.</source>
+        <translation>延遲的心跳會吃掉消費者的裕度：再多一點延遲就會變成心跳錯誤。</translation>
+    </message>
+    <message>
+        <source>Compare with the bus load at those times, and check that the consumer time (1016h) leaves margin over %4.</source>
+        <translation>請對照當時的匯流排負載，並確認消費者時間（1016h）比 %4 留有裕度。</translation>
+    </message>
+    <message>
+        <source>Node %1 reported EMCY %2 (%3) %4 time(s).</source>
+        <translation>節點 %1 回報了 EMCY %2（%3）共 %4 次。</translation>
+    </message>
+    <message>
+        <source>The device signals a fault; a drive in Fault stops its motor until the fault is reset.</source>
+        <translation>設備發出故障訊號；驅動器處於故障狀態時會停止馬達，直到故障重置。</translation>
+    </message>
+    <message>
+        <source>Look up %2 in the device's alarm list, remove the cause, then reset the fault (controlword bit 7).</source>
+        <translation>請在設備的異警表中查詢 %2，排除原因後再重置故障（控制字 bit 7）。</translation>
+    </message>
+    <message>
+        <source>Node %1 left %2 SDO request(s) unanswered (no response within 1 s).</source>
+        <translation>節點 %1 有 %2 個 SDO 請求未回應（1 秒內沒有回覆）。</translation>
+    </message>
+    <message>
+        <source>The master's parameter access fails: a configuration step may have been skipped.</source>
+        <translation>主站的參數存取失敗：可能有設定步驟被略過。</translation>
+    </message>
+    <message>
+        <source>Check node %1's node-ID, power and NMT state (a stopped node serves no SDO), and the bus load at those times.</source>
+        <translation>請檢查節點 %1 的節點 ID、電源與 NMT 狀態（停止狀態的節點不處理 SDO），以及當時的匯流排負載。</translation>
+    </message>
+    <message>
+        <source>Node %1 aborted %4 SDO transfer(s) with %2 (%3).</source>
+        <translation>節點 %1 以 %2（%3）中止了 %4 次 SDO 傳輸。</translation>
+    </message>
+    <message>
+        <source>The value was not read or written: a configuration that relies on it is incomplete.</source>
+        <translation>該值沒有被讀取或寫入：依賴它的設定並不完整。</translation>
+    </message>
+    <message>
+        <source>Look at the object of each frame: does node %1 have it (its EDS), is it writable, is the value in range?</source>
+        <translation>請查看每個封包的物件：節點 %1 是否有此物件（見其 EDS）、是否可寫、數值是否在範圍內？</translation>
+    </message>
+    <message>
+        <source>Node %1 answered SDO requests slowly: %2 at the 99th percentile, the slowest %3.</source>
+        <translation>節點 %1 回應 SDO 請求很慢：第 99 百分位數為 %2，最慢 %3。</translation>
+    </message>
+    <message>
+        <source>A master with a short SDO timeout aborts such transfers, and start-up configuration takes longer.</source>
+        <translation>SDO 逾時設定較短的主站會中止這類傳輸，開機時的設定也會花更久。</translation>
+    </message>
+    <message>
+        <source>Check what node %1 does meanwhile (storing parameters, 1010h) and the bus load; raise the master's SDO timeout if needed.</source>
+        <translation>請檢查節點 %1 當時在做什麼（儲存參數，1010h）以及匯流排負載；必要時加長主站的 SDO 逾時。</translation>
+    </message>
+    <message>
+        <source>%1 CAN error frame(s) were recorded.</source>
+        <translation>記錄到 %1 個 CAN 錯誤封包。</translation>
+    </message>
+    <message>
+        <source>Error frames destroy frames and delay others; many of them take nodes to error passive or bus-off.</source>
+        <translation>錯誤封包會破壞封包並延遲其他封包；數量一多，節點就會進入錯誤被動或匯流排關閉狀態。</translation>
+    </message>
+    <message>
+        <source>Check the termination (120 ohm at both ends), cable, shield and ground, and that every node uses the same bit rate.</source>
+        <translation>請檢查終端電阻（兩端各 120 歐姆）、電纜、屏蔽與接地，並確認所有節點使用相同的鮑率。</translation>
+    </message>
+    <message>
+        <source>%1 SYNC cycle(s) were missing (period %2).</source>
+        <translation>缺少了 %1 個 SYNC 週期（週期 %2）。</translation>
+    </message>
+    <message>
+        <source>Synchronous PDOs are not sent or applied in those cycles; axes in a cyclic synchronous mode miss set-points.</source>
+        <translation>這些週期內同步 PDO 不會送出或套用；處於週期同步模式的軸會漏掉命令值。</translation>
+    </message>
+    <message>
+        <source>Check the SYNC producer's timing and load, and the bus load at those times.</source>
+        <translation>請檢查 SYNC 生產者的時序與負載，以及當時的匯流排負載。</translation>
+    </message>
+    <message>
+        <source>The bus load peaks at %1 % (average %2 %) at %3 bit/s.</source>
+        <translation>匯流排負載峰值為 %1 %（平均 %2 %），鮑率 %3 bit/s。</translation>
+    </message>
+    <message>
+        <source>Above about 70 % the low-priority frames (SDO, heartbeat) wait and may time out.</source>
+        <translation>負載超過約 70 % 時，低優先權的封包（SDO、心跳）會等待並可能逾時。</translation>
+    </message>
+    <message>
+        <source>Lower PDO rates or mapped data, use inhibit times or event timers, or raise the bit rate.</source>
+        <translation>請降低 PDO 頻率或映射的資料量、使用禁止時間或事件計時器，或提高鮑率。</translation>
+    </message>
+    <message>
+        <source>%1 (%2) is sent to node %3, which never sent anything.</source>
+        <translation>%1（%2）送往節點 %3，但該節點從未送出任何訊息。</translation>
+    </message>
+    <message>
+        <source>The data goes nowhere: node %3 is missing or has another node-ID.</source>
+        <translation>資料沒有接收者：節點 %3 不存在或使用了其他節點 ID。</translation>
+    </message>
+    <message>
+        <source>Check that node %3 is powered and on the bus, and its node-ID.</source>
+        <translation>請確認節點 %3 有電源且連在匯流排上，並檢查其節點 ID。</translation>
+    </message>
+    <message>
+        <source>%1 of node %2 (%3) comes every %4 with a jitter of %5.</source>
+        <translation>節點 %2 的 %1（%3）每 %4 一次，抖動為 %5。</translation>
+    </message>
+    <message>
+        <source>Cyclic data that arrives unevenly makes control and plots uneven.</source>
+        <translation>週期資料到達不均勻，會使控制與圖表也不均勻。</translation>
+    </message>
+    <message>
+        <source>Check the producer's timing (SYNC or event timer) and the bus load; the frames listed end the most irregular intervals.</source>
+        <translation>請檢查生產者的時序（SYNC 或事件計時器）與匯流排負載；列出的封包是最不規律間隔的結尾。</translation>
+    </message>
+    <message>
+        <source>RPDO%1 of node %2 (%3) is valid but nobody sends it.</source>
+        <translation>節點 %2 的 RPDO%1（%3）已啟用，但沒有人送出它。</translation>
+    </message>
+    <message>
+        <source>Node %2 waits for data that never comes; with an RPDO timeout it may fault.</source>
+        <translation>節點 %2 在等待永遠不會來的資料；若設有 RPDO 逾時，可能會進入故障。</translation>
+    </message>
+    <message>
+        <source>Map and enable the matching TPDO on the producer, or make this RPDO invalid (COB-ID bit 31).</source>
+        <translation>請在生產者上映射並啟用對應的 TPDO，或將此 RPDO 設為無效（COB-ID bit 31）。</translation>
+    </message>
+    <message>
+        <source>%1 node-ID(s) (%2..%3) got an SDO request from a master and never answered.</source>
+        <translation>有 %1 個節點 ID（%2..%3）收到主站的 SDO 請求但從未回應。</translation>
+    </message>
+    <message>
+        <source>A device the master expects may be missing, or the master scanned the network.</source>
+        <translation>主站預期的設備可能不存在，或主站正在掃描網路。</translation>
+    </message>
+    <message>
+        <source>Compare with the devices the machine should have, and their node-IDs.</source>
+        <translation>請對照機台應有的設備及其節點 ID。</translation>
+    </message>
+    <message>
+        <source>%1 frame(s) are not CANopen.</source>
+        <translation>有 %1 個封包不是 CANopen。</translation>
+    </message>
+    <message>
+        <source>They come from another protocol on the same bus (such as J1939) or from a device set up wrongly.</source>
+        <translation>它們來自同一匯流排上的其他協定（例如 J1939），或來自設定錯誤的設備。</translation>
+    </message>
+    <message>
+        <source>Look at their identifiers in the trace.</source>
+        <translation>請在追蹤中查看它們的識別碼。</translation>
+    </message>
+    <message>
+        <source>CoScope's scan (frames sent by the recording side) asked %1 node-ID(s) (%2..%3) that did not answer.</source>
+        <translation>CoScope 的掃描（記錄端送出的封包）詢問了 %1 個沒有回應的節點 ID（%2..%3）。</translation>
+    </message>
+    <message>
+        <source>This is how a scan finds devices: no device is at fault.</source>
+        <translation>掃描就是這樣找出設備的：沒有任何設備有問題。</translation>
+    </message>
+    <message>
+        <source>Nothing to fix: these requests are CoScope's own.</source>
+        <translation>無需處理：這些請求是 CoScope 自己送出的。</translation>
+    </message>
+    <message>
+        <source>Node %1 aborted %4 SDO request(s) that CoScope sent, with %2 (%3).</source>
+        <translation>節點 %1 以 %2（%3）中止了 CoScope 送出的 %4 個 SDO 請求。</translation>
+    </message>
+    <message>
+        <source>CoScope's own requests (a scan reading optional objects, a read or write of the user) caused them: not a device fault.</source>
+        <translation>這是 CoScope 自己的請求（掃描讀取選用物件、使用者的讀寫）所造成：不是設備故障。</translation>
+    </message>
+    <message>
+        <source>Nothing to fix unless you expected node %1 to have that object.</source>
+        <translation>除非您預期節點 %1 應有該物件，否則無需處理。</translation>
+    </message>
+    <message>
+        <source>Node %1 did not answer %2 SDO request(s) that CoScope sent.</source>
+        <translation>節點 %1 沒有回應 CoScope 送出的 %2 個 SDO 請求。</translation>
+    </message>
+    <message>
+        <source>CoScope's own requests went unanswered (a scan probing, or the node was busy): not counted as a device fault.</source>
+        <translation>CoScope 自己的請求沒有得到回應（掃描探測，或節點忙碌）：不算設備故障。</translation>
+    </message>
+    <message>
+        <source>Nothing to fix unless node %1 should have answered.</source>
+        <translation>除非節點 %1 應該回應，否則無需處理。</translation>
+    </message>
+    <message>
+        <source>heartbeat</source>
+        <translation>心跳</translation>
+    </message>
+    <message>
+        <source>guarding</source>
+        <translation>節點保護</translation>
+    </message>
+</context>
+<context>
     <name>HelpMenu</name>
     <message>
         <source>&amp;Help</source>
@@ -3462,7 +3701,7 @@
         <translation>%1：未知的記錄檔格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format &apos;%2&apos;</source>
+        <source>%1: cannot write format '%2'</source>
         <translation>%1：無法寫入格式「%2」</translation>
     </message>
 </context>
@@ -3580,7 +3819,7 @@ Bits on: %1</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
     </message>
     <message>
@@ -3608,7 +3847,7 @@ Bits on: %1</source>
         <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
         <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
     </message>
     <message>
@@ -3636,7 +3875,7 @@ Bits on: %1</source>
         <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
+        <source>Look up abort code 0x%1 in the drive's manual.</source>
         <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
     </message>
     <message>
@@ -3735,7 +3974,7 @@ Bits on: %1</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
         <translation>SDO 讀取 節點 %1 %2</translation>
     </message>
     <message>
@@ -3764,39 +4003,39 @@ Bits on: %1</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
         <translation>（%1，%2 位元組，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
+        <source>filter: '%1' is not a node-ID (0-127)</source>
         <translation>篩選：「%1」不是節點 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
+        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
         <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
         <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -3811,7 +4050,7 @@ Bits on: %1</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding &apos;%1&apos;</source>
+        <source>Finding '%1'</source>
         <translation>正在尋找「%1」</translation>
     </message>
 </context>
@@ -3868,11 +4107,11 @@ Bits on: %1</source>
         <translation>儲存報告(&amp;R)…</translation>
     </message>
     <message>
-        <source>Connect to the machine&apos;s bus first (not listen-only).</source>
+        <source>Connect to the machine's bus first (not listen-only).</source>
         <translation>請先連線到機台的總線（非僅監聽）。</translation>
     </message>
     <message>
-        <source>Reading the drives&apos; values (dry run)…</source>
+        <source>Reading the drives' values (dry run)…</source>
         <translation>正在讀取驅動器的值（模擬執行）…</translation>
     </message>
     <message>
@@ -3880,7 +4119,7 @@ Bits on: %1</source>
         <translation>模擬執行：各節點的 SDO 寫入</translation>
     </message>
     <message>
-        <source>The drives already hold the project&apos;s values: nothing to write.</source>
+        <source>The drives already hold the project's values: nothing to write.</source>
         <translation>驅動器已是專案的值：不需寫入。</translation>
     </message>
     <message numerus="yes">
@@ -3890,7 +4129,7 @@ Bits on: %1</source>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node&apos;s old values are put back.</source>
+        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node's old values are put back.</source>
         <translation>
             <numerusform>要依清單把 %n 個物件寫入驅動器嗎？第一個被拒絕的寫入會停止，該節點的舊值會寫回。</numerusform>
         </translation>
@@ -3920,9 +4159,9 @@ Bits on: %1</source>
         <translation>儲存到驅動器</translation>
     </message>
     <message numerus="yes">
-        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = &quot;save&quot;)?</source>
+        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = "save")?</source>
         <translation>
-            <numerusform>要把全部參數儲存到 %n 台驅動器的非揮發性記憶體嗎（1010h:01 = &quot;save&quot;）？</numerusform>
+            <numerusform>要把全部參數儲存到 %n 台驅動器的非揮發性記憶體嗎（1010h:01 = "save"）？</numerusform>
         </translation>
     </message>
     <message>
@@ -3993,7 +4232,7 @@ Bits on: %1</source>
         <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
     </message>
     <message>
@@ -4194,7 +4433,7 @@ Bits on: %1</source>
         <translation>關閉</translation>
     </message>
     <message>
-        <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
+        <source>Connect to the machine's bus first (not listen-only): the comparison reads the drives.</source>
         <translation>請先連線到機台的總線（非僅監聽）：比較會讀取驅動器。</translation>
     </message>
     <message>
@@ -4244,11 +4483,11 @@ Bits on: %1</source>
         <translation>更換驅動器</translation>
     </message>
     <message>
-        <source>Node %1 is another drive of the same type. Write the project&apos;s configuration of node %1 to it? The writes are shown first.</source>
+        <source>Node %1 is another drive of the same type. Write the project's configuration of node %1 to it? The writes are shown first.</source>
         <translation>節點 %1 是另一台同型驅動器。要把專案中節點 %1 的設定寫入它嗎？會先列出寫入內容。</translation>
     </message>
     <message>
-        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus&apos;s bit rate with the node-ID wizard, then compare again and replace it.</source>
+        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus's bit rate with the node-ID wizard, then compare again and replace it.</source>
         <translation>節點 %1 沒有回應。新驅動器會以出廠節點 ID 回應：請用節點 ID 精靈設定節點 ID %1 與總線鮑率，再重新比較並更換。</translation>
     </message>
     <message>
@@ -4642,7 +4881,7 @@ Bits on: %1</source>
         <translation>停止</translation>
     </message>
     <message>
-        <source>Halts the homing on the drive&apos;s ramp (6040h = 010Fh); the drive stays enabled.</source>
+        <source>Halts the homing on the drive's ramp (6040h = 010Fh); the drive stays enabled.</source>
         <translation>依驅動器的斜坡暫停原點復歸（6040h = 010Fh）；驅動器保持致能。</translation>
     </message>
     <message>
@@ -4654,7 +4893,7 @@ Bits on: %1</source>
         <translation>尚未開始。</translation>
     </message>
     <message>
-        <source>The homing&apos;s motion shows here</source>
+        <source>The homing's motion shows here</source>
         <translation>原點復歸的運動顯示於此</translation>
     </message>
     <message>
@@ -4666,11 +4905,11 @@ Bits on: %1</source>
         <translation>不是 %1 的原點復歸方式（它有 %2）：會被拒絕。</translation>
     </message>
     <message>
-        <source>Not a CiA 402-2 homing method; the drive&apos;s own manual may define it.</source>
+        <source>Not a CiA 402-2 homing method; the drive's own manual may define it.</source>
         <translation>不是 CiA 402-2 的原點復歸方式；驅動器自己的手冊可能有定義。</translation>
     </message>
     <message>
-        <source>(The drive&apos;s dictionary is not known: CiA 402-2&apos;s methods are listed.)</source>
+        <source>(The drive's dictionary is not known: CiA 402-2's methods are listed.)</source>
         <translation>（不知道驅動器的字典：列出的是 CiA 402-2 的方式。）</translation>
     </message>
     <message>
@@ -4732,7 +4971,7 @@ Bits on: %1</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move&apos;s motion shows here</source>
+        <source>The test move's motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
@@ -4787,7 +5026,7 @@ Bits on: %1</source>
         <translation>6041h 位元 13：追隨誤差</translation>
     </message>
     <message>
-        <source>The move&apos;s motion shows here</source>
+        <source>The move's motion shows here</source>
         <translation>移動的運動顯示於此</translation>
     </message>
     <message>
@@ -4990,7 +5229,7 @@ Bits on: %1</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
         <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -5042,7 +5281,7 @@ Bits on: %1</source>
         <translation>精靈已關閉</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
         <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
@@ -5242,7 +5481,7 @@ Arm the test move?</source>
         <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
@@ -5430,7 +5669,7 @@ Start homing?</source>
         <translation>請設定大於 0 的輪廓速度（6081h）。</translation>
     </message>
     <message>
-        <source>The profile velocity is above the test move&apos;s limit of %1.</source>
+        <source>The profile velocity is above the test move's limit of %1.</source>
         <translation>輪廓速度超過測試運轉的限制 %1。</translation>
     </message>
     <message>
@@ -5450,7 +5689,7 @@ Start homing?</source>
         <translation>位置移動未就緒：驅動器已不在 Operation enabled。</translation>
     </message>
     <message>
-        <source>Position move not armed: %1 from the position now is more than the test move&apos;s limit of %2.</source>
+        <source>Position move not armed: %1 from the position now is more than the test move's limit of %2.</source>
         <translation>位置移動未就緒：距目前位置 %1，超過測試運轉的限制 %2。</translation>
     </message>
     <message>
@@ -5819,6 +6058,86 @@ Arm the position move?</source>
             <numerusform>%1 秒內共 %n 個封包；總線負載平均 %2 %，峰值 %3 %，鮑率 %4 bit/s；%5 個錯誤封包</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Click a finding to see what happened, why it matters and what to check, and its first frame in the trace.</source>
+        <translation>點選發現項目，查看發生了什麼、為何重要、該檢查什麼，並在追蹤中顯示其第一個封包。</translation>
+    </message>
+    <message>
+        <source>Previous occurrence</source>
+        <translation>上一次出現</translation>
+    </message>
+    <message>
+        <source>Show the finding's previous frame in the trace (Shift+F8)</source>
+        <translation>在追蹤中顯示此發現項目的上一個封包（Shift+F8）</translation>
+    </message>
+    <message>
+        <source>Next occurrence</source>
+        <translation>下一次出現</translation>
+    </message>
+    <message>
+        <source>Show the finding's next frame in the trace (F8)</source>
+        <translation>在追蹤中顯示此發現項目的下一個封包（F8）</translation>
+    </message>
+    <message>
+        <source>%1 critical</source>
+        <translation>%1 個嚴重</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 個錯誤</translation>
+    </message>
+    <message>
+        <source>%1 errors</source>
+        <translation>%1 個錯誤</translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 個警告</translation>
+    </message>
+    <message>
+        <source>%1 warnings</source>
+        <translation>%1 個警告</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>未發現問題</translation>
+    </message>
+    <message>
+        <source>Problems found: %1</source>
+        <translation>發現問題：%1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>Once, at %1.</source>
+        <translation>發生一次，於 %1。</translation>
+    </message>
+    <message>
+        <source>%1 times, from %2 to %3.</source>
+        <translation>共 %1 次，從 %2 到 %3。</translation>
+    </message>
+    <message>
+        <source>Frame %1 of %2 shown in the trace.</source>
+        <translation>追蹤中顯示第 %1 個封包（共 %2 個）。</translation>
+    </message>
+    <message>
+        <source>Click the finding to show its first frame in the trace.</source>
+        <translation>點選此發現項目，即可在追蹤中顯示其第一個封包。</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Why:&lt;/b&gt;</source>
+        <translation>&lt;b&gt;為何重要：&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Check:&lt;/b&gt;</source>
+        <translation>&lt;b&gt;檢查：&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>CoScope's own traffic: not counted in the verdict.</source>
+        <translation>CoScope 自己的通訊：不計入結論。</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HealthModel</name>
@@ -5958,6 +6277,14 @@ Arm the position move?</source>
         <source>event-driven</source>
         <translation>事件驅動</translation>
     </message>
+    <message>
+        <source>Why:</source>
+        <translation>為何重要：</translation>
+    </message>
+    <message>
+        <source>Check:</source>
+        <translation>檢查：</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HeartbeatGuardQuestion</name>
@@ -5970,7 +6297,7 @@ Arm the position move?</source>
         <translation>節點 %1 已由 CoScope 致能。若 CoScope 當掉或線纜斷開，是否讓它自行停止？</translation>
     </message>
     <message>
-        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3&apos;s heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
+        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3's heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
         <translation>CoScope 將每 %2 ms 發送自己的心跳（節點 %1），並設定節點 %3 的消費者心跳時間 1016h 與中止連線選項 6007h（快速停止，若驅動器有此物件），使 CoScope 當掉或線纜斷開時驅動器在 %4 ms 內自行停止。驅動器禁能或匯流排關閉時會寫回原值。</translation>
     </message>
     <message>
@@ -5986,7 +6313,7 @@ Arm the position move?</source>
         <translation>記住我的選擇</translation>
     </message>
     <message>
-        <source>Node %1 does not watch CoScope&apos;s heartbeat: if CoScope or the cable dies, it keeps its last command</source>
+        <source>Node %1 does not watch CoScope's heartbeat: if CoScope or the cable dies, it keeps its last command</source>
         <translation>節點 %1 不監看 CoScope 的心跳：若 CoScope 當掉或線纜斷開，它會維持最後的命令</translation>
     </message>
     <message>
@@ -6200,7 +6527,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
         <translation>系統語言（%1）</translation>
     </message>
     <message>
@@ -6275,7 +6602,7 @@ Arm the position move?</source>
         <translation>1006h 未寫入：%1</translation>
     </message>
     <message>
-        <source>Cannot start CoScope&apos;s heartbeat: %1</source>
+        <source>Cannot start CoScope's heartbeat: %1</source>
         <translation>無法啟動 CoScope 的心跳：%1</translation>
     </message>
     <message>
@@ -6303,7 +6630,7 @@ Arm the position move?</source>
         <translation>SYNC %1（%L2）</translation>
     </message>
     <message>
-        <source>CoScope&apos;s heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
+        <source>CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
         <translation>有驅動器監看 CoScope 的心跳時，心跳維持原樣；新設定在釋放後才生效</translation>
     </message>
     <message>
@@ -6371,11 +6698,11 @@ Arm the position move?</source>
         <translation>COB-ID（1005h）：</translation>
     </message>
     <message>
-        <source>Write the period to the nodes&apos; 1006h when SYNC starts</source>
+        <source>Write the period to the nodes' 1006h when SYNC starts</source>
         <translation>SYNC 啟動時將週期寫入各節點的 1006h</translation>
     </message>
     <message>
-        <source>CoScope&apos;s heartbeat</source>
+        <source>CoScope's heartbeat</source>
         <translation>CoScope 的心跳</translation>
     </message>
     <message>
@@ -6406,7 +6733,7 @@ Arm the position move?</source>
         <translation>要變更的項目</translation>
     </message>
     <message>
-        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
@@ -6438,11 +6765,11 @@ Arm the position move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
         <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
-        <source>The drive&apos;s own parameter — none documented for this device</source>
+        <source>The drive's own parameter — none documented for this device</source>
         <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
@@ -6625,7 +6952,7 @@ Arm the position move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
@@ -6637,8 +6964,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style='color:#a40000'&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -6657,8 +6984,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style='color:#a40000'&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -6788,7 +7115,7 @@ What to check: %3</source>
         <translation>請先連線到總線</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
         <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
@@ -7059,11 +7386,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出了上線報文；上線後節點處於預操作狀態。</translation>
     </message>
     <message>
-        <source>The node&apos;s heartbeat says so.</source>
+        <source>The node's heartbeat says so.</source>
         <translation>由節點的心跳得知。</translation>
     </message>
     <message>
-        <source>The node&apos;s answer to node guarding says so.</source>
+        <source>The node's answer to node guarding says so.</source>
         <translation>由節點對節點保護的回應得知。</translation>
     </message>
     <message>
@@ -7087,11 +7414,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出緊急報文 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
     </message>
     <message>
-        <source>Nothing seen yet shows the node&apos;s state.</source>
+        <source>Nothing seen yet shows the node's state.</source>
         <translation>目前所見的內容尚無法顯示節點的狀態。</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the node&apos;s heartbeat or its own frames show it (last known: %1)</source>
+        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
         <translation>匯流排中斷：在節點的心跳或其自身封包顯示狀態之前，狀態未知（最後已知：%1）</translation>
     </message>
     <message>
@@ -7162,7 +7489,7 @@ Software version (100Ah): %3</source>
         <translation>僅顯示已變更</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
+        <source>Show only the values read from the node that differ from the dictionary's default</source>
         <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
@@ -7262,8 +7589,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
+        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style='color:#b00020'&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -7400,7 +7727,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
-        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
+        <source>Reading node %1's current values of the %2 candidates in %3…</source>
         <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
@@ -7494,11 +7821,11 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
-        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
+        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = "save"）</translation>
     </message>
     <message>
-        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
+        <source>Start the drive's process data afterwards (NMT start: operational)</source>
         <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
@@ -7510,7 +7837,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
-        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
+        <source>This drive's dictionary has no 1010h (store parameters)</source>
         <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
@@ -7589,7 +7916,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
         <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
@@ -7894,8 +8221,8 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
-        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -8285,7 +8612,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>總線為僅監聽或未開啟：無法傳送。</translation>
     </message>
     <message>
-        <source>The bus&apos;s master services are not available.</source>
+        <source>The bus's master services are not available.</source>
         <translation>此總線的主站服務無法使用。</translation>
     </message>
     <message>
@@ -8293,7 +8620,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>尚無已知且有物件字典的節點：請掃描網路或指定物件字典。</translation>
     </message>
     <message>
-        <source>This node&apos;s dictionary maps no RPDO.</source>
+        <source>This node's dictionary maps no RPDO.</source>
         <translation>此節點的物件字典沒有映射任何 RPDO。</translation>
     </message>
     <message>
@@ -8313,7 +8640,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>準備運轉</translation>
     </message>
     <message>
-        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
+        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While "Hold to run" is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
 
 Make sure the axis is free to move. Arm?</source>
         <translation>節點 %1 的 RPDO 含運動物件（控制字元、模式、目標值）。按住「按住運轉」時會以顯示的數值傳送，馬達可能轉動。放開按鈕時傳送暫停（Halt）與速度 0。
@@ -8392,7 +8719,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>程式映像檔 (*.img *.bin *.hex);;所有檔案 (*)</translation>
     </message>
     <message>
-        <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
+        <source>The bus was closed: nothing is claimed about the node's program.</source>
         <translation>總線已關閉：不對節點的程式做任何保證。</translation>
     </message>
     <message>
@@ -8452,7 +8779,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>啟動程式（1F51h:%1 = 1）</translation>
     </message>
     <message>
-        <source>Waiting for the node&apos;s boot-up</source>
+        <source>Waiting for the node's boot-up</source>
         <translation>等待節點的上線報文</translation>
     </message>
     <message>
@@ -8512,7 +8839,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 位元組，耗時 %L2 秒。</translation>
     </message>
     <message>
-        <source>The node&apos;s program was not touched.</source>
+        <source>The node's program was not touched.</source>
         <translation>節點的程式未被更動。</translation>
     </message>
     <message>
@@ -8579,7 +8906,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>專案未儲存</translation>
     </message>
     <message>
-        <source>The project &quot;%1&quot; has changes that are not saved. Save the project first?</source>
+        <source>The project "%1" has changes that are not saved. Save the project first?</source>
         <translation>專案「%1」有尚未儲存的變更。要先儲存專案嗎？</translation>
     </message>
     <message>
@@ -8591,7 +8918,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>已開啟專案 %1</translation>
     </message>
     <message>
-        <source>Connect to the project&apos;s bus %1?</source>
+        <source>Connect to the project's bus %1?</source>
         <translation>要連線到專案的總線 %1 嗎？</translation>
     </message>
     <message>
@@ -8607,7 +8934,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>備份機台</translation>
     </message>
     <message>
-        <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
+        <source>Connect to the machine's bus first (not listen-only): the backup reads the drives.</source>
         <translation>請先連線到機台的總線（非僅監聽）：備份會讀取驅動器。</translation>
     </message>
     <message>
@@ -8633,7 +8960,7 @@ Make sure the axis is free to move. Arm?</source>
         </translation>
     </message>
     <message>
-        <source>The drives&apos; configuration is in the project; save the project to keep it.</source>
+        <source>The drives' configuration is in the project; save the project to keep it.</source>
         <translation>驅動器的設定已在專案中；請儲存專案以保留。</translation>
     </message>
 </context>
@@ -8655,7 +8982,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
@@ -9028,11 +9355,11 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found: the trace is empty</source>
+        <source>'%1' not found: the trace is empty</source>
         <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; not found</source>
+        <source>'%1' not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>
@@ -9051,6 +9378,10 @@ Make sure the axis is free to move. Arm?</source>
         <source>Previous bookmark</source>
         <translation>上一個書籤</translation>
     </message>
+    <message>
+        <source>The project's trace filter is not valid: %1</source>
+        <translation>專案的追蹤篩選條件無效：%1</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::TraceModel</name>
@@ -9060,7 +9391,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>載入中…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer&apos;s frames</source>
+        <source>Click to expand or collapse the transfer's frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
     </message>
     <message>
@@ -9453,8 +9784,8 @@ Send %2%3?</source>
         <translation>%1：無法讀取檔案</translation>
     </message>
     <message>
-        <source>%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT and Kvaser); read as %2 by its name, no CAN frame was found</source>
-        <translation>%1：不是 CoScope 可讀取的格式（已嘗試 candump、Vector ASC 與 BLF、PEAK TRC、pcap/pcapng、CoScope CSV、SavvyCAN GVRET、BUSMASTER、IXXAT 與 Kvaser）；依檔名當作 %2 讀取，找不到 CAN 訊息</translation>
+        <source>%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4); read as %2 by its name, no CAN frame was found</source>
+        <translation>%1：不是 CoScope 可讀取的格式（已嘗試 candump、Vector ASC 與 BLF、PEAK TRC、pcap/pcapng、CoScope CSV、SavvyCAN GVRET、BUSMASTER、IXXAT、Kvaser 與 ASAM MDF4）；依檔名當作 %2 讀取，找不到 CAN 訊息</translation>
     </message>
 </context>
 <context>
