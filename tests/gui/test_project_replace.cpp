@@ -136,7 +136,7 @@ private slots:
         click(wizard->findChild<QRadioButton*>(QStringLiteral("viaLss")));
         QSignalSpy ready(wizard, &NodeIdWizard::dryRunReady);
         click(wizard->button(QWizard::NextButton));
-        QVERIFY(waitFor([&] { return wizard->currentId() == NodeIdWizard::RunPageId; }, 3000));
+        QVERIFY2(waitFor([&] { return wizard->currentId() == NodeIdWizard::RunPageId; }, 3000), qPrintable(wizard->blockingProblem() + QStringLiteral(" | ") + wizard->explanation()));
         QVERIFY(ready.count() > 0 || ready.wait(8000));
         QVERIFY2(ready.last().at(0).toBool(), qPrintable(wizard->planError() + wizard->blockingProblem()));
         click(wizard->runPage()->runButton());
