@@ -4,23 +4,20 @@
 // binary into the virtual drives' image format (sim/ProgramImage.h).
 #include "app/cli/BusSession.h"
 #include "app/cli/CliVerb.h"
+#include "app/cli/ProgramRun.h"
 #include "core/canopen/ProgramDownload.h"
-#include "core/canopen/ServiceWait.h"
 #include "core/sim/ProgramImage.h"
 
 #include <QFile>
 #include <QTextStream>
 
-#include <cstdio>
 
 namespace coscope::cli {
 
 namespace {
 
-using canopen::ProgramDownload;
 using canopen::ProgramDownloadOutcome;
 using canopen::ProgramDownloadRequest;
-using canopen::ProgramStep;
 
 bool readFile(const QString& path, QByteArray* data, QString* error) {
     QFile f(path);
@@ -76,46 +73,14 @@ int runProgram(const QStringList& args) {
     if (req.image.isEmpty()) return failure(verb, QStringLiteral("%1 is empty").arg(pos[2]));
 
     QTextStream out(stdout);
-    const QString sub = QStringLiteral("%1").arg(req.program, 2, 16, QChar(u'0')).toUpper();
-    out << "node " << *node << ": program download of " << pos[2] << " (" << req.image.size() << " bytes), program " << req.program << ":\n"
-        << "  1F51h:" << sub << " = 0  stop program (the node stops its application; a drive CoScope enabled is disabled first)\n";
-    if (req.clear) out << "  1F51h:" << sub << " = 3  clear program (skipped if the node does not take it)\n";
-    out << "  1F50h:" << sub << " <- " << req.image.size() << " bytes by " << (req.block ? "block" : "segmented") << " SDO\n";
-    if (req.start) out << "  1F51h:" << sub << " = 1  start program, then wait for the boot-up and read 1F56h, 1F57h, 100Ah\n";
-    out.flush();
+    printProgramPlan(out, req, pos[2]);
     if (!p.isSet(yes)) return failure(verb, QStringLiteral("nothing sent: give --yes to download the program to node %1").arg(*node));
 
     BusSession s;
     if (!s.open(pos[0], &error)) return failure(verb, error);
-    ProgramDownload download(s.context(), s.sdo());
-    std::optional<ProgramDownloadOutcome> result;
-    auto step = [&](ProgramStep st) {
-        if (st == ProgramStep::Done) return;
-        std::fprintf(stderr, "%s\n", qPrintable(canopen::programStepName(st, req.program)));
-    };
-    auto progress = [](qint64 done, qint64 total, double rate) {
-        std::fprintf(stderr, "  %lld / %lld bytes (%.0f%%), %.1f KiB/s\n", static_cast<long long>(done), static_cast<long long>(total),
-                     total > 0 ? 100.0 * double(done) / double(total) : 0.0, rate / 1024.0);
-    };
-    installInterruptHandler();
-    download.run(req, step, progress, [&](const ProgramDownloadOutcome& o) { result = o; });
-    bool cancelAsked = false;
-    canopen::waitUntil([&] {
-        if (interrupted() && !cancelAsked) {
-            cancelAsked = true;
-            download.cancel();
-        }
-        return result.has_value();
-    }, 24 * 3600 * 1000);
+    const std::optional<ProgramDownloadOutcome> result = runProgramDownload(s, req, out);
     if (!result) return failure(verb, QStringLiteral("node %1: the download did not end").arg(*node));
-    out << "before: " << result->before.summary() << "\n";
-    if (result->ok) {
-        if (!result->notes.isEmpty()) out << "note: " << result->notes << "\n";
-        if (result->started) out << "after:  " << result->after.summary() << "\n";
-        out << "node " << *node << ": " << result->summary() << "\n";
-        return Ok;
-    }
-    out.flush();
+    if (result->ok) return Ok;
     return failure(verb, QStringLiteral("node %1: %2").arg(*node).arg(result->summary()));
 }
 

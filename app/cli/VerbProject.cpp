@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// coscope-cli project compare|backup|apply BUS FILE: the machine against its project file
+// coscope-cli project compare|backup|apply|program BUS FILE: the machine against its project file
 // (README "Projects"): compare (exit 3 when the machine differs), back up into the file, apply the
-// file (dry run first, --yes to write, --store to save in the nodes).
+// file (dry run first, --yes to write, --store to save in the nodes), load the project's programs
+// into the nodes whose software differs (CiA 302-3, through the `program` verb's download).
 #include "app/cli/BusSession.h"
 #include "app/cli/CliVerb.h"
+#include "app/cli/ProgramRun.h"
 #include "core/canopen/ServiceWait.h"
 #include "core/project/CompareReportFormat.h"
 #include "core/project/ProjectApply.h"
 #include "core/project/ProjectBackup.h"
 #include "core/project/ProjectCompare.h"
 #include "core/project/ProjectFile.h"
+#include "core/project/ProjectSoftware.h"
 #include "eds/ProjectDictionaries.h"
 #include "eds/ScanMatcher.h"
 
@@ -22,6 +25,7 @@ namespace coscope::cli {
 namespace {
 
 using namespace coscope::project;
+using canopen::ProgramDownloadRequest;
 
 constexpr int kDifferences = 3;  // compare: the machine is not as in the project
 constexpr int kWaitMs = 3600000;
@@ -224,10 +228,85 @@ int runApply(const QStringList& args) {
     return Ok;
 }
 
+QString softwareLine(const CompareRow& r) {
+    return QStringLiteral("  %1 %2 %3: project %4, node %5").arg(rowStateName(r.state).leftJustified(10), objectKey(r.index, r.sub), r.name, r.projectValue,
+                                                                 r.driveValue.isEmpty() ? QStringLiteral("-") : r.driveValue);
+}
+
+int runProgramProject(const QStringList& args) {
+    const QString verb = QStringLiteral("project program");
+    QCommandLineParser p;
+    addCommon(p, QStringLiteral("Load the project's programs (CiA 302-3 program download): reads 1F56h and 100Ah of every node whose project names a program, "
+                                "and downloads the project's image (nodes[].firmware.file) to each node whose software differs, as `program` does. "
+                                "Nothing is sent without --yes."));
+    const QCommandLineOption node{QStringLiteral("node"), QStringLiteral("Only this node, downloaded whatever its software says."), QStringLiteral("ID")};
+    const QCommandLineOption yes{QStringLiteral("yes"), QStringLiteral("Download without asking (required to download).")};
+    p.addOptions({node, yes});
+    int code = 0;
+    if (!parseArgs(p, verb, args, &code)) return code;
+    const QStringList pos = p.positionalArguments();
+    if (pos.size() != 2) return usageError(verb, QStringLiteral("expects BUS FILE"));
+    std::vector<uint8_t> only;
+    if (p.isSet(node)) {
+        const auto id = parseNodeId(p.value(node));
+        if (!id) return usageError(verb, QStringLiteral("--node '%1' must be 1-127").arg(p.value(node)));
+        only.push_back(*id);
+    }
+    const auto project = readProject(verb, pos[1], &code);
+    if (!project) return code;
+    for (uint8_t id : only) {
+        const ProjectNode* n = project->node(id);
+        if (!n || !n->firmware || n->firmware->file.isEmpty()) return failure(verb, QStringLiteral("node %1 has no program in %2 (nodes[].firmware.file)").arg(id).arg(pos[1]));
+    }
+    BusSession s;
+    if (!openBus(verb, s, pos[0], &code)) return code;
+    std::optional<std::vector<SoftwareCheck>> checks;
+    checkSoftware(s.sdo(), *project, only, [&checks](std::vector<SoftwareCheck> c) { checks = std::move(c); });
+    canopen::waitUntil([&] { return checks.has_value(); }, kWaitMs);
+    if (!checks) return failure(verb, QStringLiteral("reading the nodes' software did not finish"));
+    QTextStream out(stdout);
+    std::vector<ProgramDownloadRequest> downloads;
+    for (const SoftwareCheck& c : *checks) {
+        const ProjectNode& n = *project->node(c.node);
+        out << "node " << c.node << ": " << c.state.summary() << "\n";
+        for (const CompareRow& r : c.rows) out << softwareLine(r) << "\n";
+        if (!only.empty() || c.differs()) {
+            const QString file = n.firmware ? firmwareFile(*n.firmware, folderOf(pos[1])) : QString();
+            if (file.isEmpty()) return failure(verb, QStringLiteral("node %1: its software differs and the project names no image (nodes[].firmware.file)").arg(c.node));
+            QFile f(file);
+            if (!f.open(QIODevice::ReadOnly)) return failure(verb, QStringLiteral("node %1: %2: %3").arg(c.node).arg(file, f.errorString()));
+            ProgramDownloadRequest req;
+            req.node = c.node;
+            req.program = n.firmware->program;
+            req.image = f.readAll();
+            if (req.image.isEmpty()) return failure(verb, QStringLiteral("%1 is empty").arg(file));
+            printProgramPlan(out, req, file);
+            downloads.push_back(std::move(req));
+        }
+    }
+    if (downloads.empty()) {
+        out << "every node runs the project's program\n";
+        return Ok;
+    }
+    if (!p.isSet(yes)) return failure(verb, QStringLiteral("nothing sent: give --yes to download the project's program to %1 node(s)").arg(downloads.size()));
+    for (const ProgramDownloadRequest& req : downloads) {
+        const auto result = runProgramDownload(s, req, out);
+        if (!result) return failure(verb, QStringLiteral("node %1: the download did not end").arg(req.node));
+        if (!result->ok) return failure(verb, QStringLiteral("node %1: %2").arg(req.node).arg(result->summary()));
+        // The node runs the new program: it must now answer what the project expects.
+        for (const CompareRow& r : softwareRows(*project->node(req.node), result->after))
+            if (r.state != RowState::Same)
+                return failure(verb, QStringLiteral("node %1 took the program but answers %2 %3, the project expects %4").arg(req.node).arg(r.name, r.driveValue.isEmpty() ? QStringLiteral("nothing") : r.driveValue, r.projectValue));
+    }
+    out << downloads.size() << " node(s) run the project's program\n";
+    return Ok;
+}
+
 }  // namespace
 
 COSCOPE_CLI_VERB({QStringLiteral("project compare"), QStringLiteral("Compare the machine with its project file (exit 3: differs)."), runCompare});
 COSCOPE_CLI_VERB({QStringLiteral("project backup"), QStringLiteral("Read every node's configuration into a project file."), runBackup});
+COSCOPE_CLI_VERB({QStringLiteral("project program"), QStringLiteral("Download the project's programs to the nodes whose software differs (--node, --yes)."), runProgramProject});
 COSCOPE_CLI_VERB({QStringLiteral("project apply"), QStringLiteral("Write a project's configuration to the machine (--dry-run, --yes, --store)."), runApply});
 
 }  // namespace coscope::cli

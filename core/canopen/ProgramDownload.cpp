@@ -16,7 +16,7 @@
 namespace coscope::canopen {
 
 namespace {
-// 1F51h program control values (CiA 302-3): 0 stop, 1 start, 2 reset, 3 clear.
+// 1F51h program control values (CiA 302-3 §4): 0 stop, 1 start, 2 reset, 3 clear.
 constexpr uint8_t kStop = 0, kStart = 1, kClear = 3;
 constexpr int kProgressEveryMs = 100;
 constexpr qint64 kSettleMs = 300;  // quiet time after a broken transfer before the next run
@@ -33,7 +33,7 @@ bool clearNotSupported(uint32_t code) {
 }  // namespace
 
 QString flashStatusText(uint32_t status) {
-    // 1F57h: bit 0 in progress, bits 1-7 error code (CiA 302-3).
+    // 1F57h flash status identification: bit 0 in progress, bits 1-7 error code (CiA 302-3 §4).
     static const char* const errors[] = {"ok", "no valid program", "data format unknown", "data format error", "flash not cleared before write",
                                          "flash write error", "general address error", "flash secured (write access denied)"};
     const uint32_t code = (status >> 1) & 0x7F;
@@ -119,17 +119,24 @@ void ProgramDownload::readInto(ProgramState* state, std::function<void()> then) 
 }
 
 void ProgramDownload::readState(uint8_t node, uint8_t program, std::function<void(const ProgramState&)> done) {
+    readProgramState(sdo_, node, program, std::move(done));
+}
+
+void readProgramState(SdoClient& sdo, uint8_t node, uint8_t program, std::function<void(const ProgramState&)> done) {
     auto state = std::make_shared<ProgramState>();
     SdoOptions options;
     options.timeoutMs = 1000;
     // Three reads queued in order on the node; the last answer hands the state over.
-    sdo_.upload(node, 0x1F56, program, [state](const SdoResult& r) {
+    // 1F56h program software identification, UNSIGNED32 (CiA 302-3 §4).
+    sdo.upload(node, 0x1F56, program, [state](const SdoResult& r) {
         if (r.ok && r.data.size() >= 4) state->softwareId = qFromLittleEndian<uint32_t>(r.data.constData());
     }, options);
-    sdo_.upload(node, 0x1F57, program, [state](const SdoResult& r) {
+    // 1F57h flash status identification, UNSIGNED32 (CiA 302-3 §4).
+    sdo.upload(node, 0x1F57, program, [state](const SdoResult& r) {
         if (r.ok && r.data.size() >= 4) state->flashStatus = qFromLittleEndian<uint32_t>(r.data.constData());
     }, options);
-    sdo_.upload(node, 0x100A, 0, [state, done](const SdoResult& r) {
+    // 100Ah manufacturer software version, VISIBLE_STRING (CiA 301 7.5.2.8).
+    sdo.upload(node, 0x100A, 0, [state, done](const SdoResult& r) {
         if (r.ok) state->version = QString::fromLatin1(r.data).section(QChar(u'\0'), 0, 0).trimmed();
         if (done) done(*state);
     }, options);
@@ -232,6 +239,7 @@ void ProgramDownload::next(ProgramStep step) {
         };
         run.clock.start();
         if (run.progress) run.progress(0, run.req.image.size(), 0);
+        // 1F50h program data, DOMAIN (CiA 302-3 §4).
         run.transfer = sdo_.download(node, 0x1F50, program, run.req.image, [self, r](const SdoResult& res) {
             if (!self || self->run_ != r) return;
             r->transfer = 0;

@@ -26,6 +26,11 @@ struct ProgramState {
     QString summary() const;
 };
 
+// Reads what `node` says about program `program`: 1F56h program software identification, 1F57h
+// flash status identification (CiA 302-3 §4) and 100Ah manufacturer software version (CiA 301
+// 7.5.2.8), queued in order on the node. Never fails: a field the node does not answer stays empty.
+void readProgramState(SdoClient& sdo, uint8_t node, uint8_t program, std::function<void(const ProgramState&)> done);
+
 // 1F57h in words: bit 0 "in progress", bits 1-7 the error code (CiA 302-3): "ok",
 // "no valid program", "data format unknown", ... "unspecified error".
 QString flashStatusText(uint32_t status);

@@ -19,6 +19,8 @@ ProjectNode* Project::node(uint8_t id) {
 
 const ProjectNode* Project::node(uint8_t id) const { return const_cast<Project*>(this)->node(id); }
 
+QString hex32Text(uint32_t v) { return QStringLiteral("0x") + QStringLiteral("%1").arg(v, 8, 16, QChar(u'0')).toUpper(); }
+
 QString objectKey(uint16_t index, uint8_t sub) {
     return QStringLiteral("%1:%2").arg(index, 4, 16, QChar(u'0')).arg(sub, 2, 16, QChar(u'0')).toUpper();
 }

@@ -30,6 +30,18 @@ struct ProjectIdentity {
     std::optional<uint32_t> vendorId, productCode, revision, serial;
 };
 
+// The program a node is expected to run (CiA 302-3 program download). `file` is the image sent to
+// 1F50h program data, relative to the project file's folder or absolute; `softwareId` is what the
+// node answers in 1F56h program software identification and `version` in 100Ah manufacturer
+// software version (CiA 302-3 §4, CiA 301 7.5.2.8) once it runs that program. Empty = not checked.
+struct ProjectFirmware {
+    QString file;
+    uint8_t program = 1;  // the sub-index of 1F50h/1F51h/1F56h/1F57h
+    std::optional<uint32_t> softwareId;
+    QString version;
+    bool expectsSomething() const { return softwareId.has_value() || !version.isEmpty(); }
+};
+
 // One node of the machine.
 struct ProjectNode {
     uint8_t id = 0;
@@ -40,8 +52,7 @@ struct ProjectNode {
     ProjectIdentity identity;
     // Writable objects whose value differs from the dictionary's default, in index order.
     std::vector<ProjectParameter> parameters;
-    // Reserved: the node's program (CiA 302-3 firmware download), written by another part.
-    QJsonValue firmware;
+    std::optional<ProjectFirmware> firmware;
     QJsonObject unknown;  // keys this version does not know, kept as they were
 
     const ProjectParameter* parameter(uint16_t index, uint8_t sub) const;
@@ -68,6 +79,8 @@ struct Project {
     const ProjectNode* node(uint8_t id) const;
 };
 
+// "0x000001DD" for people and files (1018h identity, 1F56h software identification).
+QString hex32Text(uint32_t value);
 // "6081:00" for people and files.
 QString objectKey(uint16_t index, uint8_t sub);
 // Reads "6081:00" / "0x6081:0" / "6081sub0".

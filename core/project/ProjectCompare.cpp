@@ -2,6 +2,7 @@
 #include "core/project/ProjectCompare.h"
 
 #include "core/canopen/DeviceConfiguration.h"
+#include "core/project/ProjectSoftware.h"
 
 #include <QPointer>
 
@@ -119,6 +120,22 @@ void ProjectCompare::compareNext(std::shared_ptr<Run> run) {
                 row.driveValue = it->valueText;
                 row.state = sameValue(*entry, want.value, it->valueText, node.id) ? RowState::Same : RowState::Differs;
             }
+            if (row.state == RowState::Differs) ++summary.differences;
+            if (row.state == RowState::Unreadable) ++summary.unreadable;
+            run->report.rows.push_back(std::move(row));
+        }
+        self->compareSoftware(run, at);
+    });
+}
+
+void ProjectCompare::compareSoftware(std::shared_ptr<Run> run, size_t at) {
+    const ProjectNode& node = *run->matches[at].project;
+    if (!node.firmware || !node.firmware->expectsSomething()) return compareNext(run);
+    QPointer<ProjectCompare> self(this);
+    canopen::readProgramState(sdo_, node.id, node.firmware->program, [self, run, at](const canopen::ProgramState& state) {
+        if (!self) return;
+        NodeComparison& summary = run->report.nodes[at];
+        for (CompareRow& row : softwareRows(*run->matches[at].project, state)) {
             if (row.state == RowState::Differs) ++summary.differences;
             if (row.state == RowState::Unreadable) ++summary.unreadable;
             run->report.rows.push_back(std::move(row));

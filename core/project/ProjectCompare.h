@@ -48,7 +48,8 @@ struct CompareReport {
 // Compares the machine with the project: scans the bus (NetworkScan), matches each node by
 // node-ID and identity (matchNodes), then reads what the project expects of each project node that
 // answers with the same vendor and product (expectedValues: its parameters, and every other
-// configuration entry at its default), one node after the other (DeviceConfiguration).
+// configuration entry at its default), one node after the other (DeviceConfiguration), and the
+// program it runs where the project names one (softwareRows: 1F56h, 100Ah).
 class ProjectCompare : public QObject {
     Q_OBJECT
 public:
@@ -68,6 +69,8 @@ public:
 private:
     struct Run;
     void compareNext(std::shared_ptr<Run> run);
+    // The node's program against the project's (ProjectFirmware): the "software" rows.
+    void compareSoftware(std::shared_ptr<Run> run, size_t at);
 
     canopen::SdoClient& sdo_;
     DictionaryResolver resolver_;

@@ -18,8 +18,6 @@ const QStringList kTopKeys = {QStringLiteral("format"), QStringLiteral("generato
 const QStringList kNodeKeys = {QStringLiteral("id"), QStringLiteral("name"), QStringLiteral("dictionary"), QStringLiteral("identity"),
                                QStringLiteral("parameters"), QStringLiteral("pdoLayouts"), QStringLiteral("firmware")};
 
-QString hex32(uint32_t v) { return QStringLiteral("0x") + QStringLiteral("%1").arg(v, 8, 16, QChar(u'0')).toUpper(); }
-
 // A number written as JSON number or as text ("0x1DD", "477").
 std::optional<uint32_t> readU32(const QJsonValue& v) {
     if (v.isDouble()) {
@@ -132,7 +130,25 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
             pp.name = po.value(QStringLiteral("name")).toString();
             n.parameters.push_back(std::move(pp));
         }
-        n.firmware = o.value(QStringLiteral("firmware"));
+        const QJsonValue fw = o.value(QStringLiteral("firmware"));
+        if (!fw.isUndefined() && !fw.isNull()) {
+            if (!fw.isObject()) return fail(key + QStringLiteral(".firmware"), QStringLiteral("must be an object, e.g. {\"file\": \"drive-2.0.img\", \"version\": \"2.0\"}"));
+            const QJsonObject fo = fw.toObject();
+            ProjectFirmware f;
+            f.file = fo.value(QStringLiteral("file")).toString();
+            if (fo.contains(QStringLiteral("program"))) {
+                const auto program = readU32(fo.value(QStringLiteral("program")));
+                if (!program || *program < 1 || *program > 254) return fail(key + QStringLiteral(".firmware.program"), QStringLiteral("must be a program number 1-254"));
+                f.program = static_cast<uint8_t>(*program);
+            }
+            const QJsonValue id = fo.value(QStringLiteral("softwareId"));
+            if (!id.isUndefined() && !id.isNull()) {
+                f.softwareId = readU32(id);
+                if (!f.softwareId) return fail(key + QStringLiteral(".firmware.softwareId"), QStringLiteral("must be a 32-bit number"));
+            }
+            f.version = fo.value(QStringLiteral("version")).toString();
+            n.firmware = std::move(f);
+        }
         n.unknown = unknownKeys(o, kNodeKeys);
         p.nodes.push_back(std::move(n));
     }
@@ -162,10 +178,10 @@ QByteArray ProjectFile::serialize(const Project& p) {
         if (!n.name.isEmpty()) o.insert(QStringLiteral("name"), n.name);
         o.insert(QStringLiteral("dictionary"), n.dictionary);
         QJsonObject identity;
-        if (n.identity.vendorId) identity.insert(QStringLiteral("vendorId"), hex32(*n.identity.vendorId));
-        if (n.identity.productCode) identity.insert(QStringLiteral("productCode"), hex32(*n.identity.productCode));
-        if (n.identity.revision) identity.insert(QStringLiteral("revision"), hex32(*n.identity.revision));
-        if (n.identity.serial) identity.insert(QStringLiteral("serial"), hex32(*n.identity.serial));
+        if (n.identity.vendorId) identity.insert(QStringLiteral("vendorId"), hex32Text(*n.identity.vendorId));
+        if (n.identity.productCode) identity.insert(QStringLiteral("productCode"), hex32Text(*n.identity.productCode));
+        if (n.identity.revision) identity.insert(QStringLiteral("revision"), hex32Text(*n.identity.revision));
+        if (n.identity.serial) identity.insert(QStringLiteral("serial"), hex32Text(*n.identity.serial));
         o.insert(QStringLiteral("identity"), identity);
         QJsonArray params;
         for (const ProjectParameter& pp : n.parameters) {
@@ -178,7 +194,14 @@ QByteArray ProjectFile::serialize(const Project& p) {
         o.insert(QStringLiteral("parameters"), params);
         const QJsonArray pdos = pdoLayouts(n);
         if (!pdos.isEmpty()) o.insert(QStringLiteral("pdoLayouts"), pdos);
-        if (!n.firmware.isUndefined() && !n.firmware.isNull()) o.insert(QStringLiteral("firmware"), n.firmware);
+        if (n.firmware) {
+            QJsonObject fo;
+            if (!n.firmware->file.isEmpty()) fo.insert(QStringLiteral("file"), n.firmware->file);
+            if (n.firmware->program != 1) fo.insert(QStringLiteral("program"), n.firmware->program);
+            if (n.firmware->softwareId) fo.insert(QStringLiteral("softwareId"), hex32Text(*n.firmware->softwareId));
+            if (!n.firmware->version.isEmpty()) fo.insert(QStringLiteral("version"), n.firmware->version);
+            o.insert(QStringLiteral("firmware"), fo);
+        }
         nodes.append(o);
     }
     top.insert(QStringLiteral("nodes"), nodes);

@@ -11,9 +11,9 @@ namespace coscope::sim {
 namespace abortcode = canopen::sdoabort;
 
 namespace {
-// 1F51h program control values (CiA 302-3).
+// 1F51h program control values (CiA 302-3 §4).
 enum Control : uint8_t { Stop = 0, Start = 1, Reset = 2, Clear = 3 };
-// 1F57h error codes, bits 1-7 (CiA 302-3).
+// 1F57h flash status identification error codes, bits 1-7 (CiA 302-3 §4).
 constexpr uint32_t kNoValidProgram = 1u << 1;
 
 void addArray(od::ObjectDictionary& dict, uint16_t index, const QString& name, od::DataType type, od::Access access) {

@@ -177,13 +177,13 @@ VirtualDevice* SimNetwork::device(uint8_t nodeId) const {
 
 QString SimNetwork::defaultSpec() { return QStringLiteral("1:delta-asda-a2,2:aimotor,3:generic-cia402"); }
 
-bool SimNetwork::replaceDevice(uint8_t nodeId, uint32_t serial, QString* error) {
+bool SimNetwork::replaceDevice(uint8_t nodeId, uint32_t serial, QString* error, uint8_t factoryNodeId) {
     bool done = false;
     runOnNetworkThread([&] {
         for (auto& n : nodes_) {
             auto* old = dynamic_cast<VirtualDevice*>(n.get());
             if (!old || old->nodeId() != nodeId) continue;
-            auto fresh = VirtualDevice::create(nodeId, old->dictionaryName(), error);
+            auto fresh = VirtualDevice::create(factoryNodeId ? factoryNodeId : nodeId, old->dictionaryName(), error);
             if (!fresh) return;
             fresh->setSerialNumber(serial);
             SimNode* raw = fresh.get();

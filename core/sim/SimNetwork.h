@@ -53,7 +53,9 @@ public:
     // one of the same type (dictionary) put in its place, at factory defaults (nothing stored),
     // node-ID `nodeId`, with 1018h:04 serial number `serial`; it boots (sends its boot-up) on the
     // next tick. Any thread. False with *error when no device answers on `nodeId`.
-    bool replaceDevice(uint8_t nodeId, uint32_t serial, QString* error = nullptr);
+    // `factoryNodeId` (1-127, or 255 = none, LSS only): the new drive comes at that node-ID
+    // instead, as a new drive out of its box does (0 = `nodeId`).
+    bool replaceDevice(uint8_t nodeId, uint32_t serial, QString* error = nullptr, uint8_t factoryNodeId = 0);
 
     void start();
     void stop();

@@ -2,8 +2,8 @@
 // The machine kept as a project (issue 36, "Done when"), through input events on the real window:
 // connect to the virtual drives, Project ▸ Back up the machine, File ▸ Save project as… (the
 // file dialog answered), change two parameters of node 1 in the Object Dictionary dock's editor,
-// put another drive of the same type (another serial number) at node 3, Project ▸ Compare with
-// the machine: exactly those two objects differ and node 3 is "replaced"; Apply the project (dry
+// put another drive of the same type (another serial number) at node 3, File ▸ Open project… (the
+// file dialog answered), Project ▸ Compare with the machine: exactly those two objects differ and node 3 is "replaced"; Apply the project (dry
 // run shown, one confirmation) puts them back, and the comparison run again is clean.
 #include "app/gui/MainWindow.h"
 #include "app/gui/nodes/NodesDock.h"
@@ -33,6 +33,7 @@
 #include <QTreeView>
 #include <QtTest>
 
+#include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/WaitFor.h"
@@ -41,6 +42,7 @@ using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
+using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
 using coscope::testing::waitFor;
 
@@ -136,13 +138,17 @@ private slots:
         const uint64_t velocity = driveValue(w, 1, 0x6081, 0);
 
         // Two parameters of node 1 changed as a technician does: the OD dock's editor.
+        // Node 1 chosen as a user does: its row clicked in the Nodes dock (its tab first when the
+        // dock sits behind another), which shows it in the Object Dictionary dock.
         w.showView(QStringLiteral("od"));
         const int row = w.nodesDock()->model()->rowOfNode(1);
         QVERIFY(row >= 0);
         QTableView* nodesView = w.nodesDock()->view();
+        if (!nodesView->isVisible()) QVERIFY(clickDockTab(w, w.nodesDock()->windowTitle()));
+        QVERIFY(waitFor([&] { return nodesView->isVisible(); }, 3000));
         QTest::mouseClick(nodesView->viewport(), Qt::LeftButton, {}, nodesView->visualRect(w.nodesDock()->model()->index(row, 0)).center());
-        // Offscreen the Nodes dock may sit behind a tab: then show node 1 as the OD dock tests do.
-        if (!waitFor([&] { return w.odDock()->node() == 1; }, 1000)) w.odDock()->setNode(1);
+        QVERIFY(waitFor([&] { return w.odDock()->node() == 1; }, 3000));
+        if (!w.odDock()->isVisible() || w.odDock()->visibleRegion().isEmpty()) clickDockTab(w, w.odDock()->windowTitle());
         QVERIFY(waitFor([&] { w.refresh(); return w.odDock()->node() == 1 && w.odDock()->model()->hasDictionary(); }, 5000));
         QVERIFY(editValue(w, 0x1017, 0, QStringLiteral("700")));
         QVERIFY(editValue(w, 0x6081, 0, QStringLiteral("4321")));
@@ -151,6 +157,19 @@ private slots:
         // Node 3: another drive of the same type, another serial number, factory values.
         QString error;
         QVERIFY2(net(w)->replaceDevice(3, 0x51000099, &error), qPrintable(error));
+
+        // The technician opens the project (File ▸ Open project…, the file dialog answered),
+        // then compares: the machine against what was saved.
+        // (File ▸ New project first: what the comparison uses then comes from the file.)
+        QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("New project")));
+        QVERIFY(waitFor([&] { return session->path().isEmpty() && session->project().nodes.empty(); }, 3000));
+        {
+            auto name = answerFileDialog(path);
+            QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open project")));
+            QVERIFY(waitFor([&] { return name->answered() && session->path() == path; }, 10000));
+        }
+        QCOMPARE(session->project().nodes.size(), size_t(3));
+        QVERIFY2(w.windowTitle().startsWith(QStringLiteral("line[*]")), qPrintable(w.windowTitle()));
 
         QVERIFY(clickMenuItem(w, QStringLiteral("Project"), QStringLiteral("Compare with the machine")));
         CompareDialog* compare = w.projectActions()->compareDialog();

@@ -3,6 +3,10 @@
 // user would (QProcess): the backup writes the project file; compare exits 0 on the same machine,
 // 3 with the changed object and the replaced drive named (text and json); apply --dry-run writes
 // nothing, apply without --yes refuses, apply --yes puts the value back; every run ends by itself.
+// project program: a node whose project names a program (nodes[].firmware) and whose 1F56h/100Ah
+// differ is listed as "software" differences by compare, gets the image with --yes (nothing
+// without), and a second compare shows no software difference.
+#include "core/sim/ProgramImage.h"
 #include "core/sim/SimNetwork.h"
 #include "core/sim/SocketcandServer.h"
 #include "core/sim/VirtualDevice.h"
@@ -99,6 +103,50 @@ private slots:
         const Run again = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
         QCOMPARE(again.code, 3);  // node 3 is still another drive (its serial), its objects are the same
         QVERIFY2(!again.out.contains(QStringLiteral("differs ")), qPrintable(again.out));
+    }
+
+    void programOfTheProject() {
+        const QString file = dir_.filePath(QStringLiteral("programs.coscope"));
+        const Run backup = cliServed({QStringLiteral("project"), QStringLiteral("backup"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        QVERIFY2(backup.code == 0, qPrintable(backup.out + backup.err));
+        // Node 3 is to run "2.0": the image beside the project, its CRC-32 as 1F56h (ProgramImage.h).
+        const QByteArray payload = QByteArray(8192, '\x5A') + QByteArray("node 3 program");
+        QFile img(dir_.filePath(QStringLiteral("drive-2.0.img")));
+        QVERIFY(img.open(QIODevice::WriteOnly));
+        img.write(sim::makeProgramImage(payload, QStringLiteral("2.0")));
+        img.close();
+        auto read = project::ProjectFile::read(file);
+        QVERIFY2(read.project, qPrintable(read.error));
+        project::ProjectFirmware fw;
+        fw.file = QStringLiteral("drive-2.0.img");
+        fw.softwareId = sim::crc32(payload);
+        fw.version = QStringLiteral("2.0");
+        read.project->node(3)->firmware = fw;
+        QString error;
+        QVERIFY2(project::ProjectFile::write(*read.project, file, &error), qPrintable(error));
+        const auto back = project::ProjectFile::read(file);
+        QVERIFY(back.project && back.project->node(3)->firmware && back.project->node(3)->firmware->softwareId == fw.softwareId);
+
+        const Run before = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        QVERIFY2(before.code == 3, qPrintable(before.out + before.err));
+        const QString idRow = QStringLiteral("differs    1F56:01 software identification: project 0x%1").arg(QStringLiteral("%1").arg(*fw.softwareId, 8, 16, QChar(u'0')).toUpper());
+        QVERIFY2(before.out.contains(idRow), qPrintable(before.out));
+        QVERIFY2(before.out.contains(QStringLiteral("differs    100A:00 software version: project 2.0")), qPrintable(before.out));
+
+        const Run ask = cliServed({QStringLiteral("project"), QStringLiteral("program"), url_, file});
+        QCOMPARE(ask.code, 1);
+        QVERIFY2(ask.err.contains(QStringLiteral("--yes")) && ask.out.contains(QStringLiteral("node 3: program download of")), qPrintable(ask.out + ask.err));
+        QVERIFY2(!ask.out.contains(QStringLiteral("node 1: program download")), qPrintable(ask.out));
+        const Run load = cliServed({QStringLiteral("project"), QStringLiteral("program"), url_, file, QStringLiteral("--yes")});
+        QVERIFY2(load.code == 0, qPrintable(load.out + load.err));
+        QString version;
+        net_->runOnNetworkThread([&] { version = QString::fromLatin1(net_->device(3)->value(0x100A, 0).value_or(od::Value{}).toBytes()); });
+        QVERIFY2(version.startsWith(QStringLiteral("2.0")), qPrintable(version));
+
+        const Run after = cliServed({QStringLiteral("project"), QStringLiteral("compare"), url_, file, QStringLiteral("--nodes"), QStringLiteral("1-4")});
+        QVERIFY2(!after.out.contains(QStringLiteral("1F56:01")) && !after.out.contains(QStringLiteral("100A:00")), qPrintable(after.out));
+        const Run none = cliServed({QStringLiteral("project"), QStringLiteral("program"), url_, file});
+        QVERIFY2(none.code == 0 && none.out.contains(QStringLiteral("every node runs the project's program")), qPrintable(none.out + none.err));
     }
 
     void badFileNamed() {

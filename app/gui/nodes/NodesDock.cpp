@@ -101,6 +101,8 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         menu.addAction(assign_);
         menu.addAction(errorControl_);
         menu.addAction(program_);
+        for (const QPointer<QAction>& a : extra_)
+            if (a) menu.addAction(a);
         menu.addSeparator();
         menu.addAction(scan_);
         if (!workspace_->canTransmit())

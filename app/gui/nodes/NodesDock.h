@@ -44,6 +44,9 @@ public:
     QAction* programDownloadAction() const { return program_; }
     // Opens the dialog for `node` (window-modal, not blocking); the one open dialog is reused.
     ProgramDownloadDialog* openProgramDownload(int node);
+    // An entry another part of the window adds to the node's context menu, after "Download
+    // program…" (the project's program); it keeps its own enabled state.
+    void addNodeAction(QAction* action) { extra_.append(action); }
     // Applies a choice of the dialog to `node` (canopen::HeartbeatMonitor); false with a message
     // when it cannot (node guarding on a listen-only bus).
     bool watchNode(int node, int consumerTimeMs, int guardTimeMs, int lifeTimeFactor);
@@ -94,6 +97,7 @@ private:
     QAction* errorControl_ = nullptr;
     QAction* program_ = nullptr;
     QPointer<ProgramDownloadDialog> programDialog_;
+    QList<QPointer<QAction>> extra_;
     bool autoConfirm_ = false;
     bool asking_ = false;  // an NMT question is being prepared or shown
     QString lastConfirmation_;

@@ -125,6 +125,8 @@ ProgramDownloadDialog::~ProgramDownloadDialog() = default;
 
 void ProgramDownloadDialog::setImageFile(const QString& path) { file_->setText(path); }
 
+void ProgramDownloadDialog::setProgramNumber(int program) { program_->setValue(program); }
+
 int ProgramDownloadDialog::progressPermille() const { return progress_->value(); }
 
 void ProgramDownloadDialog::reject() {

@@ -39,6 +39,8 @@ public:
     bool startDownload(bool confirm = true);
     // The file field, as if typed (the screenshot view).
     void setImageFile(const QString& path);
+    // The program number field (the sub-index of 1F50h/1F51h), as if typed (a project's program).
+    void setProgramNumber(int program);
     int progressPermille() const;
     // Not while a download runs (Cancel first): closing would leave the node half-written.
     void reject() override;

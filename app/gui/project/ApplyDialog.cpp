@@ -3,6 +3,7 @@
 
 #include "app/gui/files/LastFolders.h"
 
+#include "app/gui/project/ApplyText.h"
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
 #include "eds/ProjectDictionaries.h"
@@ -75,13 +76,17 @@ void ApplyDialog::prepared(std::vector<project::NodeApplyPlan> plans) {
             writes += static_cast<int>(p.plan.writes.size());
             ++nodes;
         }
-    text_->setPlainText(tr("Dry run: the SDO writes per node") + QStringLiteral("\n") + project::applyPlanText(plans_));
+    text_->setPlainText(tr("Dry run: the SDO writes per node") + QStringLiteral("\n") + ApplyText::plan(plans_));
     if (writes == 0) {
-        setStatus(tr("The drives already hold the project's values: nothing to write."));
-        finished_ = true;
-        storeButton_->setEnabled(true);
-        for (const auto& p : plans_)
-            if (p.writable()) written_.push_back(p.node);
+        // Nothing is sent; the run only makes the report (a replaced drive that already holds
+        // the project's values is then expected by the project, and the comparison runs again).
+        QPointer<ApplyDialog> self(this);
+        apply_->run(plans_, {}, [self](project::ApplyReport report) {
+            if (!self) return;
+            self->finish(std::move(report));
+            self->setStatus(tr("The drives already hold the project's values: nothing to write."));
+            self->storeButton_->setEnabled(!self->written_.empty());
+        });
         return;
     }
     setStatus(tr("%n object(s) to write to %1 node(s). Check the writes below, then Apply.", nullptr, writes).arg(nodes));
@@ -101,20 +106,22 @@ void ApplyDialog::runApply() {
     setStatus(tr("Writing…"));
     QPointer<ApplyDialog> self(this);
     apply_->run(plans_, {}, [self](project::ApplyReport report) {
-        if (!self) return;
-        for (const auto& n : report.nodes)
-            if (n.newSerial)
-                self->text_->appendPlainText(tr("Node %1 is a new drive (serial number 0x%2): the project now expects it.").arg(n.node).arg(*n.newSerial, 8, 16, QChar(u'0')));
-        self->text_->appendPlainText(QStringLiteral("\n") + tr("Result") + QStringLiteral("\n") + project::applyReportText(report));
-        self->finished_ = true;
-        self->report_ = report;
-        for (const auto& n : report.nodes)
-            if (n.state == project::NodeApplyState::Written || n.state == project::NodeApplyState::NothingToWrite) self->written_.push_back(n.node);
-        self->setStatus(report.ok() ? tr("The project was applied. The drives lose these values at power off unless they are stored.")
-                                    : tr("The project was not applied in full: see the result below."));
-        self->storeButton_->setEnabled(report.ok() && !self->written_.empty());
-        emit self->applied(report.ok());
+        if (self) self->finish(std::move(report));
     });
+}
+
+void ApplyDialog::finish(project::ApplyReport report) {
+    for (const auto& n : report.nodes)
+        if (n.newSerial) text_->appendPlainText(tr("Node %1 is a new drive (serial number 0x%2): the project now expects it.").arg(n.node).arg(*n.newSerial, 8, 16, QChar(u'0')));
+    text_->appendPlainText(QStringLiteral("\n") + tr("Result") + QStringLiteral("\n") + ApplyText::report(report, plans_));
+    finished_ = true;
+    report_ = report;
+    for (const auto& n : report.nodes)
+        if (n.state == project::NodeApplyState::Written || n.state == project::NodeApplyState::NothingToWrite) written_.push_back(n.node);
+    setStatus(report.ok() ? tr("The project was applied. The drives lose these values at power off unless they are stored.")
+                          : tr("The project was not applied in full: see the result below."));
+    storeButton_->setEnabled(report.ok() && !written_.empty());
+    emit applied(report.ok());
 }
 
 void ApplyDialog::runStore() {

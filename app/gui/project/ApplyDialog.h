@@ -37,6 +37,7 @@ signals:
 private:
     void prepared(std::vector<project::NodeApplyPlan> plans);
     void runApply();
+    void finish(project::ApplyReport report);  // the result shown; applied() emitted
     void runStore();
     void saveReport();
     void setStatus(const QString& text);

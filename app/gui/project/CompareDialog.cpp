@@ -5,9 +5,12 @@
 
 #include "app/gui/project/ApplyDialog.h"
 #include "app/gui/project/CompareModel.h"
+#include "app/gui/program/ProgramDownloadDialog.h"
+#include "app/gui/project/ProjectProgram.h"
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/WizardMenu.h"
+#include "app/gui/wizards/nodeid/NodeIdWizard.h"
 #include "core/project/CompareReportFormat.h"
 #include "eds/ProjectDictionaries.h"
 #include "eds/ScanMatcher.h"
@@ -50,11 +53,15 @@ CompareDialog::CompareDialog(ProjectSession& session, Workspace* workspace, QWid
     htmlButton_ = new QPushButton(tr("Export &HTML…"), this);
     csvButton_ = new QPushButton(tr("Export CS&V…"), this);
     replaceButton_ = new QPushButton(tr("&Replace drive…"), this);
+    replaceButton_->setObjectName(QStringLiteral("replaceDriveButton"));
+    programButton_ = new QPushButton(tr("Download the project's &program…"), this);
+    programButton_->setObjectName(QStringLiteral("projectProgramButton"));
+    programButton_->setToolTip(tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
     applyButton_ = new QPushButton(tr("&Apply the project…"), this);
     auto* close = new QPushButton(tr("Close"), this);
     row->addWidget(only_);
     row->addStretch(1);
-    for (QPushButton* b : {compareButton_, htmlButton_, csvButton_, replaceButton_, applyButton_, close}) row->addWidget(b);
+    for (QPushButton* b : {compareButton_, htmlButton_, csvButton_, replaceButton_, programButton_, applyButton_, close}) row->addWidget(b);
     layout->addLayout(row);
     connect(only_, &QCheckBox::toggled, model_, &CompareModel::setOnlyDifferences);
     connect(compareButton_, &QPushButton::clicked, this, &CompareDialog::compare);
@@ -62,6 +69,7 @@ CompareDialog::CompareDialog(ProjectSession& session, Workspace* workspace, QWid
     connect(csvButton_, &QPushButton::clicked, this, [this] { exportAs(false); });
     connect(applyButton_, &QPushButton::clicked, this, [this] { openApply({}); });
     connect(replaceButton_, &QPushButton::clicked, this, &CompareDialog::replaceDrive);
+    connect(programButton_, &QPushButton::clicked, this, &CompareDialog::downloadProgram);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
     connect(table_->selectionModel(), &QItemSelectionModel::selectionChanged, this, &CompareDialog::updateButtons);
     connect(model_, &QAbstractItemModel::modelReset, this, &CompareDialog::updateButtons);
@@ -79,6 +87,12 @@ void CompareDialog::updateButtons() {
     const auto rows = table_->selectionModel()->selectedRows();
     const auto match = rows.isEmpty() ? std::nullopt : model_->nodeMatchAt(rows.first().row());
     replaceButton_->setEnabled(idle && match && (*match == project::NodeMatch::Replaced || *match == project::NodeMatch::Missing));
+    programButton_->setEnabled(idle && hasResult_ && !ProjectProgram::imageFile(session_, selectedNode()).isEmpty() && workspace_ && workspace_->canTransmit());
+}
+
+uint8_t CompareDialog::selectedNode() const {
+    const auto rows = table_->selectionModel()->selectedRows();
+    return rows.isEmpty() ? 0 : model_->nodeAt(rows.first().row());
 }
 
 void CompareDialog::compare() {
@@ -157,12 +171,70 @@ void CompareDialog::replaceDrive() {
         if (box.exec() == QMessageBox::Yes) openApply({node});
         return;
     }
-    QMessageBox box(QMessageBox::Question, tr("Replace drive"),
-                    tr("Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus's bit rate with the "
-                       "node-ID wizard, then compare again and replace it.").arg(node),
-                    QMessageBox::Ok | QMessageBox::Cancel, this);
+    replaceMissing(node);
+}
+
+std::optional<uint8_t> CompareDialog::sameTypeNotInProject(uint8_t node) const {
+    const project::ProjectNode* want = session_.project().node(node);
+    if (!want || !workspace_ || !want->identity.vendorId || !want->identity.productCode) return std::nullopt;
+    for (const project::NodeComparison& n : model_->report().nodes) {
+        if (n.match != project::NodeMatch::NotInProject) continue;
+        const auto info = workspace_->nodes().node(n.node);
+        // Same vendor and product in 1018h:01/02 (CiA 301 7.5.2.24): a drive of the same type.
+        if (info && info->vendorId == want->identity.vendorId && info->productCode == want->identity.productCode) return n.node;
+    }
+    return std::nullopt;
+}
+
+// A project node that does not answer, replaced by a new drive: at its factory node-ID (found by
+// the comparison's scan as a drive of the same type the project does not have) or without one
+// (the wizard's LSS Fastscan finds it). The node-ID wizard sets node-ID `node` (LSS or the
+// drive's vendor parameter); once it succeeded, the project's configuration of `node` is written
+// (ApplyDialog: dry run, confirmation) and the machine compared again.
+void CompareDialog::replaceMissing(uint8_t node) {
+    const auto found = sameTypeNotInProject(node);
+    const QString text = found ? tr("Node %1 does not answer, and node %2 is a drive of the same type that the project does not have (a new drive at its "
+                                    "factory node-ID?). Give it node-ID %1 with the node-ID wizard, then write the project's configuration of node %1 "
+                                    "to it and compare again?").arg(node).arg(*found)
+                               : tr("Node %1 does not answer. If a new drive of the same type is on the bus at another node-ID or without one, find it "
+                                    "in the node-ID wizard (scan, or find a device without node-ID by LSS) and give it node-ID %1; then the project's "
+                                    "configuration of node %1 is written to it and the machine compared again.").arg(node);
+    QMessageBox box(QMessageBox::Question, tr("Replace drive"), text, QMessageBox::Ok | QMessageBox::Cancel, this);
     box.button(QMessageBox::Ok)->setText(tr("Open the node-ID wizard"));
-    if (box.exec() == QMessageBox::Ok) openWizard(QStringLiteral("nodeid"), workspace_, node, parentWidget());
+    if (box.exec() != QMessageBox::Ok) return;
+    auto* wizard = qobject_cast<NodeIdWizard*>(openWizard(QStringLiteral("nodeid"), workspace_, found ? *found : -1, parentWidget()));
+    if (!wizard) return;
+    wizard->setChange(NodeIdWizard::Change::NodeId);
+    wizard->setNewNodeId(node);
+    status_->setText(tr("Replacing node %1: give the new drive node-ID %1 in the node-ID wizard.").arg(node));
+    QPointer<CompareDialog> self(this);
+    connect(wizard, &NodeIdWizard::finished, this, [self, wizard, node](bool ok) {
+        if (!self || !ok || wizard->request().newNodeId != node) return;
+        self->status_->setText(tr("The new drive answers at node %1: the project's configuration of node %1 is written to it next.").arg(node));
+        // Once the wizard's own handling of its result is over.
+        QMetaObject::invokeMethod(self, [self, node] {
+            if (!self) return;
+            self->raise();
+            self->openApply({node});
+        }, Qt::QueuedConnection);
+    });
+}
+
+void CompareDialog::downloadProgram() {
+    const uint8_t node = selectedNode();
+    if (ProjectProgram::imageFile(session_, node).isEmpty()) return;
+    // The program download dialog asks before anything is sent (CiA 302-3: the node stops its
+    // application); once the node runs the new program the machine is compared again.
+    auto* dialog = new ProgramDownloadDialog(workspace_, node, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    if (!ProjectProgram::preset(dialog, session_, node, this)) {
+        delete dialog;
+        return;
+    }
+    connect(dialog, &ProgramDownloadDialog::finished, this, [this](bool ok) {
+        if (ok) compare();
+    });
+    dialog->open();
 }
 
 }  // namespace coscope::gui

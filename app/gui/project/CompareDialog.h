@@ -18,8 +18,9 @@ class Workspace;
 
 // The machine compared with the project (ProjectCompare): a table of the nodes that are not as
 // in the project and of the configured objects (project, drive, dictionary default, state),
-// "Only differences", export as HTML and CSV, "Apply the project…", and the guided replacement of
-// a drive (a node replaced or missing).
+// "Only differences", export as HTML and CSV, "Apply the project…", the guided replacement of a
+// drive (a node replaced or missing: node-ID wizard, then that node's project applied and
+// compared again) and "Download the project's program…" for a node whose project names one.
 class CompareDialog : public QDialog {
     Q_OBJECT
 public:
@@ -34,6 +35,7 @@ public:
     QPushButton* compareButton() const { return compareButton_; }
     QPushButton* applyButton() const { return applyButton_; }
     QPushButton* replaceButton() const { return replaceButton_; }
+    QPushButton* programButton() const { return programButton_; }
     // The apply dialog last opened from here (tests), or null.
     QDialog* applyDialog() const;
 
@@ -45,6 +47,14 @@ public:
 private:
     void exportAs(bool html);
     void replaceDrive();
+    // A missing node: the node-ID wizard gives a new drive of the same type its node-ID (LSS or
+    // vendor parameters), then the node's project is applied and the machine compared again.
+    void replaceMissing(uint8_t node);
+    // The node of a drive of the project node's type that the project does not have, if the last
+    // comparison found one (a new drive at its factory node-ID).
+    std::optional<uint8_t> sameTypeNotInProject(uint8_t node) const;
+    void downloadProgram();
+    uint8_t selectedNode() const;  // 0 = none
     void updateButtons();
 
     ProjectSession& session_;
@@ -56,6 +66,7 @@ private:
     QPushButton* compareButton_;
     QPushButton* applyButton_;
     QPushButton* replaceButton_;
+    QPushButton* programButton_;
     QPushButton* htmlButton_;
     QPushButton* csvButton_;
     QObject* applyDialog_ = nullptr;

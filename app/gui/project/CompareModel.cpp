@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/project/CompareModel.h"
 
+#include "core/project/ProjectSoftware.h"
+
 #include <QBrush>
 #include <QColor>
 
@@ -98,7 +100,10 @@ QVariant CompareModel::data(const QModelIndex& index, int role) const {
     switch (index.column()) {
     case Node: return o.node;
     case Object: return project::objectKey(o.index, o.sub);
-    case Name: return o.name;
+    case Name:
+        // The node's program (CiA 302-3 §4 1F56h, CiA 301 100Ah) against the project's.
+        if (project::isSoftwareRow(o)) return o.index == 0x100A ? tr("Software version") : tr("Software identification");
+        return o.name;
     case ProjectValue: return o.projectValue;
     case DriveValue: return o.state == RowState::Unreadable ? o.error : o.driveValue;
     case DefaultValue: return o.defaultValue;

@@ -5,6 +5,8 @@
 
 #include "app/gui/project/ApplyDialog.h"
 #include "app/gui/project/CompareDialog.h"
+#include "app/gui/nodes/NodesDock.h"
+#include "app/gui/project/ProjectProgram.h"
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
 #include "core/project/ProjectBackup.h"
@@ -60,7 +62,32 @@ void ProjectActions::addTo(QMenu* file, QMenuBar* bar) {
     menu->addAction(tr("&Compare with the machine…"), this, [this] { showCompare(); });
     menu->addAction(tr("&Back up the machine"), this, &ProjectActions::backUpMachine);
     menu->addAction(tr("&Apply the project…"), this, [this] { showCompare(false)->openApply({}); });
+    addProgramToNodes();
     updateTitle();
+}
+
+// The Nodes dock's context menu ▸ "Download the project's program…": the program download dialog
+// (CiA 302-3, its own confirmations) with the image and program number the project names for the
+// selected node; enabled only for such a node.
+void ProjectActions::addProgramToNodes() {
+    auto* nodes = window_->findChild<NodesDock*>();
+    if (!nodes) return;
+    auto* action = new QAction(tr("Download the project's program…"), this);
+    action->setObjectName(QStringLiteral("projectProgramAction"));
+    action->setToolTip(tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
+    QPointer<NodesDock> dock(nodes);
+    auto update = [this, action, dock] {
+        action->setEnabled(dock && !ProjectProgram::imageFile(*session_, dock->selectedNode()).isEmpty() && workspace_ && workspace_->canTransmit());
+    };
+    connect(nodes, &NodesDock::nodeSelected, action, update);
+    connect(session_, &ProjectSession::changed, action, update);
+    update();
+    connect(action, &QAction::triggered, this, [this, dock] {
+        if (!dock || dock->selectedNode() < 1) return;
+        const int node = dock->selectedNode();
+        ProjectProgram::preset(dock->openProgramDownload(node), *session_, node, window_);
+    });
+    nodes->addNodeAction(action);
 }
 
 void ProjectActions::rebuildRecent() {

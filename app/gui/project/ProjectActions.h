@@ -47,6 +47,7 @@ signals:
 
 private:
     void rebuildRecent();
+    void addProgramToNodes();
     void showProblem(const QString& title, const QString& text);
     Workspace* workspace_;
     QMainWindow* window_;
