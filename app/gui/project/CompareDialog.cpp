@@ -205,6 +205,7 @@ void CompareDialog::replaceMissing(uint8_t node) {
     auto* wizard = qobject_cast<NodeIdWizard*>(openWizard(QStringLiteral("nodeid"), workspace_, found ? *found : -1, parentWidget()));
     if (!wizard) return;
     wizard->setChange(NodeIdWizard::Change::NodeId);
+    wizard->setVacated(node);  // the comparison found no device answering there
     wizard->setNewNodeId(node);
     status_->setText(tr("Replacing node %1: give the new drive node-ID %1 in the node-ID wizard.").arg(node));
     QPointer<CompareDialog> self(this);

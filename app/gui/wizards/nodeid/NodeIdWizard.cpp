@@ -231,7 +231,7 @@ QString NodeIdWizard::blockingProblem() const {
         if (request_.newNodeId < 1) return tr("Choose the new node-ID.");
         if (request_.newNodeId == request_.node) return tr("The device already has node-ID %1.").arg(request_.node);
         const auto nodes = knownNodes();
-        if (std::find(nodes.begin(), nodes.end(), int(request_.newNodeId)) != nodes.end())
+        if (request_.newNodeId != vacated_ && std::find(nodes.begin(), nodes.end(), int(request_.newNodeId)) != nodes.end())
             return tr("Node-ID %1 is already used by another device on this bus: two devices with one node-ID break communication.").arg(request_.newNodeId);
     } else if (request_.newBitRate <= 0 || request_.newBitRate == busBitRate()) {
         return tr("Choose a bit rate other than the one the bus runs at now (%1).").arg(bitRateText(busBitRate()));

@@ -60,6 +60,9 @@ public:
     void setChange(Change c);
     void setMethod(Method m);
     void setNewNodeId(int id);
+    // A node-ID the node table still lists but no device answers on any more (a project
+    // comparison found it missing: the drive was taken off the bus): free to give to another.
+    void setVacated(int id) { vacated_ = id; }
     void setNewBitRate(int bitRate);
     int busBitRate() const;  // the rate the bus is open at now
     const canopen::NodeSettingsRequest& request() const { return request_; }
@@ -122,6 +125,7 @@ private:
     NodeIdFindPage* find_ = nullptr;
     NodeIdChangePage* change_ = nullptr;
     NodeIdRunPage* run_ = nullptr;
+    int vacated_ = 0;
 };
 
 }  // namespace coscope::gui
