@@ -37,6 +37,101 @@
     </message>
 </context>
 <context>
+    <name>ApplyText</name>
+    <message>
+        <source>Node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>Node %1 (%2)</source>
+        <translation>节点 %1（%2）</translation>
+    </message>
+    <message>
+        <source>the node does not answer</source>
+        <translation>节点没有响应</translation>
+    </message>
+    <message>
+        <source>another device answers at this node-ID</source>
+        <translation>此节点 ID 由其他设备响应</translation>
+    </message>
+    <message>
+        <source>not in the project</source>
+        <translation>不在项目中</translation>
+    </message>
+    <message>
+        <source>no dictionary for the node (%1)</source>
+        <translation>此节点没有字典（%1）</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已写入</translation>
+    </message>
+    <message>
+        <source>nothing to write, already as in the project</source>
+        <translation>无需写入，已与项目相同</translation>
+    </message>
+    <message>
+        <source>refused, old values put back</source>
+        <translation>被拒绝，已写回旧值</translation>
+    </message>
+    <message>
+        <source>refused, old values NOT all put back</source>
+        <translation>被拒绝，旧值“未”全部写回</translation>
+    </message>
+    <message>
+        <source>not written: a node before refused</source>
+        <translation>未写入：之前的节点拒绝了写入</translation>
+    </message>
+    <message>
+        <source>skipped</source>
+        <translation>已跳过</translation>
+    </message>
+    <message>
+        <source>%1: not written: %2</source>
+        <translation>%1：未写入：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n SDO write(s)</source>
+        <translation>
+            <numerusform>%1：%n 次 SDO 写入</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>write %1 %2 = %3</source>
+        <translation>写入 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>%1  (now %2)</source>
+        <translation>%1  （当前 %2）</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source> - %n object(s) written</source>
+        <translation>
+            <numerusform> - 已写入 %n 个对象</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>written: %1</source>
+        <translation>已写入：%1</translation>
+    </message>
+    <message>
+        <source>REFUSED: %1: %2</source>
+        <translation>被拒绝：%1：%2</translation>
+    </message>
+    <message>
+        <source>put back: %1</source>
+        <translation>已写回：%1</translation>
+    </message>
+    <message>
+        <source>NOT put back: %1: %2</source>
+        <translation>未写回：%1：%2</translation>
+    </message>
+</context>
+<context>
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
@@ -1091,7 +1186,7 @@
         <translation>节点 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device's new bit rate</source>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
         <translation>以设备的新波特率 %1 重新打开适配器</translation>
     </message>
     <message>
@@ -1171,8 +1266,8 @@
         <translation>将新的节点 ID %1 写入 %2 [对象为推定]（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
-        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h "save"）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数，让节点 ID 在断电后仍保留（保存参数，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1247,8 +1342,8 @@
         <translation>写入 %1 = %2h：波特率 %3（SDO 下载）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h "save")</source>
-        <translation>保存参数（保存参数，1010h "save"）</translation>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>保存参数（保存参数，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1315,11 +1410,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
         <translation>没有设备以此识别数据响应 LSS。请确认驱动器支持 LSS（CiA 305）；若不支持，请改用它自己的参数（厂商方式）或厂商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
         <translation>设备拒绝了这个值。请确认它支持此值（见手册的节点 ID 范围／波特率）。</translation>
     </message>
     <message>
@@ -1343,7 +1438,7 @@
         <translation>无法全部恢复（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
         <translation>Delta ASDA-A2 手册 §1.3.1，P3-00（“●”：重新上电后生效）</translation>
     </message>
     <message>
@@ -2711,15 +2806,15 @@
         <translation>%1：总线为只听：CoScope 不发送任何帧，因此没有心跳也没有保护</translation>
     </message>
     <message>
-        <source>%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings</source>
+        <source>%1: CoScope&apos;s heartbeat node-ID %2 is the drive&apos;s own; choose another in the master settings</source>
         <translation>%1：CoScope 的心跳节点 ID %2 与驱动器相同；请在主站设置中另选</translation>
     </message>
     <message>
-        <source>%1: CoScope's heartbeat cannot start: %2</source>
+        <source>%1: CoScope&apos;s heartbeat cannot start: %2</source>
         <translation>%1：CoScope 的心跳无法启动：%2</translation>
     </message>
     <message>
-        <source>%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
+        <source>%1 may still be enabled: it keeps watching CoScope&apos;s heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
         <translation>%1 可能仍为使能：它继续监视 CoScope 的心跳（1016h、6007h 未写回），心跳停止时会自行停止</translation>
     </message>
     <message>
@@ -2735,7 +2830,7 @@
         <translation>%1：原来的 1016h/6007h 未全部写回（%2）；请检查</translation>
     </message>
     <message>
-        <source>%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
+        <source>%1 watches CoScope&apos;s heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
         <translation>%1 以 1016h:%3 监视 CoScope 的心跳（节点 %2），%4 ms；心跳停止时：%5</translation>
     </message>
     <message>
@@ -3068,12 +3163,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
         <translation>——厂商报警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
         <translation>报警编号 0x%1（不在 %2 报警表中）</translation>
     </message>
 </context>
@@ -3428,15 +3523,15 @@
         <translation>设备自行重启会丢失原有状态：驱动器失去使能，机器随之停止。</translation>
     </message>
     <message>
-        <source>Check the node's supply voltage and wiring, its watchdog and error history, and the frames just before each boot-up.</source>
+        <source>Check the node&apos;s supply voltage and wiring, its watchdog and error history, and the frames just before each boot-up.</source>
         <translation>请检查该节点的电源电压与接线、看门狗与错误记录，以及每次启动前的帧。</translation>
     </message>
     <message>
-        <source>Node %1's %2 stopped: nothing for %3 at the end of the log (period %4).</source>
+        <source>Node %1&apos;s %2 stopped: nothing for %3 at the end of the log (period %4).</source>
         <translation>节点 %1 的%2已停止：记录末尾有 %3 没有任何报文（周期 %4）。</translation>
     </message>
     <message>
-        <source>The master's heartbeat consumer sees the node as lost and the application stops using it.</source>
+        <source>The master&apos;s heartbeat consumer sees the node as lost and the application stops using it.</source>
         <translation>主站的心跳消费者会判定该节点丢失，应用程序便停止使用它。</translation>
     </message>
     <message>
@@ -3444,7 +3539,7 @@
         <translation>请确认节点 %1 仍有电源且连在总线上（电缆、接头、终端电阻），并检查其 1017h 是否被设为 0。</translation>
     </message>
     <message>
-        <source>Node %1's %2 was missing %3 time(s) after regular beats (longest gap %4, period %5).</source>
+        <source>Node %1&apos;s %2 was missing %3 time(s) after regular beats (longest gap %4, period %5).</source>
         <translation>节点 %1 的%2在规律发送后中断了 %3 次（最长间隔 %4，周期 %5）。</translation>
     </message>
     <message>
@@ -3456,11 +3551,11 @@
         <translation>请查看每个间隔前后的帧：错误帧、总线负载、节点 %1 是否复位、接线是否松动。</translation>
     </message>
     <message>
-        <source>Node %1's %2 came late %3 time(s) (over 1.5 times the %4 period).</source>
+        <source>Node %1&apos;s %2 came late %3 time(s) (over 1.5 times the %4 period).</source>
         <translation>节点 %1 的%2延迟了 %3 次（超过周期 %4 的 1.5 倍）。</translation>
     </message>
     <message>
-        <source>Late beats eat the consumer's margin: a little more delay becomes a heartbeat error.</source>
+        <source>Late beats eat the consumer&apos;s margin: a little more delay becomes a heartbeat error.</source>
         <translation>延迟的心跳会耗尽消费者的裕量：再多一点延迟就会变成心跳错误。</translation>
     </message>
     <message>
@@ -3476,7 +3571,7 @@
         <translation>设备发出故障信号；驱动器处于故障状态时会停止电机，直到故障复位。</translation>
     </message>
     <message>
-        <source>Look up %2 in the device's alarm list, remove the cause, then reset the fault (controlword bit 7).</source>
+        <source>Look up %2 in the device&apos;s alarm list, remove the cause, then reset the fault (controlword bit 7).</source>
         <translation>请在设备的故障码表中查询 %2，排除原因后再复位故障（控制字 bit 7）。</translation>
     </message>
     <message>
@@ -3484,11 +3579,11 @@
         <translation>节点 %1 有 %2 个 SDO 请求未响应（1 秒内没有回复）。</translation>
     </message>
     <message>
-        <source>The master's parameter access fails: a configuration step may have been skipped.</source>
+        <source>The master&apos;s parameter access fails: a configuration step may have been skipped.</source>
         <translation>主站的参数访问失败：可能有配置步骤被跳过。</translation>
     </message>
     <message>
-        <source>Check node %1's node-ID, power and NMT state (a stopped node serves no SDO), and the bus load at those times.</source>
+        <source>Check node %1&apos;s node-ID, power and NMT state (a stopped node serves no SDO), and the bus load at those times.</source>
         <translation>请检查节点 %1 的节点 ID、电源与 NMT 状态（停止状态的节点不处理 SDO），以及当时的总线负载。</translation>
     </message>
     <message>
@@ -3512,7 +3607,7 @@
         <translation>SDO 超时设置较短的主站会中止这类传输，启动时的配置也会更久。</translation>
     </message>
     <message>
-        <source>Check what node %1 does meanwhile (storing parameters, 1010h) and the bus load; raise the master's SDO timeout if needed.</source>
+        <source>Check what node %1 does meanwhile (storing parameters, 1010h) and the bus load; raise the master&apos;s SDO timeout if needed.</source>
         <translation>请检查节点 %1 当时在做什么（保存参数，1010h）以及总线负载；必要时加长主站的 SDO 超时。</translation>
     </message>
     <message>
@@ -3536,7 +3631,7 @@
         <translation>这些周期内同步 PDO 不会发送或生效；处于周期同步模式的轴会丢失设定值。</translation>
     </message>
     <message>
-        <source>Check the SYNC producer's timing and load, and the bus load at those times.</source>
+        <source>Check the SYNC producer&apos;s timing and load, and the bus load at those times.</source>
         <translation>请检查 SYNC 生产者的时序与负载，以及当时的总线负载。</translation>
     </message>
     <message>
@@ -3572,7 +3667,7 @@
         <translation>周期数据到达不均匀，会使控制与曲线也不均匀。</translation>
     </message>
     <message>
-        <source>Check the producer's timing (SYNC or event timer) and the bus load; the frames listed end the most irregular intervals.</source>
+        <source>Check the producer&apos;s timing (SYNC or event timer) and the bus load; the frames listed end the most irregular intervals.</source>
         <translation>请检查生产者的时序（SYNC 或事件定时器）与总线负载；列出的帧是最不规律间隔的结尾。</translation>
     </message>
     <message>
@@ -3612,7 +3707,7 @@
         <translation>请在跟踪中查看它们的标识符。</translation>
     </message>
     <message>
-        <source>CoScope's scan (frames sent by the recording side) asked %1 node-ID(s) (%2..%3) that did not answer.</source>
+        <source>CoScope&apos;s scan (frames sent by the recording side) asked %1 node-ID(s) (%2..%3) that did not answer.</source>
         <translation>CoScope 的扫描（记录端发送的帧）询问了 %1 个没有响应的节点 ID（%2..%3）。</translation>
     </message>
     <message>
@@ -3620,7 +3715,7 @@
         <translation>扫描就是这样找出设备的：没有任何设备有问题。</translation>
     </message>
     <message>
-        <source>Nothing to fix: these requests are CoScope's own.</source>
+        <source>Nothing to fix: these requests are CoScope&apos;s own.</source>
         <translation>无需处理：这些请求是 CoScope 自己发送的。</translation>
     </message>
     <message>
@@ -3628,7 +3723,7 @@
         <translation>节点 %1 以 %2（%3）中止了 CoScope 发送的 %4 个 SDO 请求。</translation>
     </message>
     <message>
-        <source>CoScope's own requests (a scan reading optional objects, a read or write of the user) caused them: not a device fault.</source>
+        <source>CoScope&apos;s own requests (a scan reading optional objects, a read or write of the user) caused them: not a device fault.</source>
         <translation>这是 CoScope 自己的请求（扫描读取可选对象、用户的读写）所造成：不是设备故障。</translation>
     </message>
     <message>
@@ -3640,7 +3735,7 @@
         <translation>节点 %1 没有响应 CoScope 发送的 %2 个 SDO 请求。</translation>
     </message>
     <message>
-        <source>CoScope's own requests went unanswered (a scan probing, or the node was busy): not counted as a device fault.</source>
+        <source>CoScope&apos;s own requests went unanswered (a scan probing, or the node was busy): not counted as a device fault.</source>
         <translation>CoScope 自己的请求没有得到响应（扫描探测，或节点忙碌）：不算设备故障。</translation>
     </message>
     <message>
@@ -3701,7 +3796,7 @@
         <translation>%1：未知的日志文件格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format '%2'</source>
+        <source>%1: cannot write format &apos;%2&apos;</source>
         <translation>%1：无法写入格式“%2”</translation>
     </message>
 </context>
@@ -3819,7 +3914,7 @@ Bits on: %1</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）时，CiA 402 对象才会生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的默认 PDO 为同步型（类型 1）：只有收到 SYNC 时才会发送或应用。请启动 SYNC 生产者，或改选事件触发类型。</translation>
     </message>
     <message>
@@ -3847,7 +3942,7 @@ Bits on: %1</source>
         <translation>驱动器未及时响应。请确认它已通电、节点 ID 正确，并检查缆线、终端电阻与波特率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
         <translation>驱动器不允许将此对象放入 PDO。请改选其他对象，或查阅手册中该对象的“PDO”列。</translation>
     </message>
     <message>
@@ -3875,7 +3970,7 @@ Bits on: %1</source>
         <translation>驱动器在当前状态下不接受此操作。它必须处于预操作状态（向导会先发送此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive's manual.</source>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
         <translation>请在驱动器手册中查找中止码 0x%1。</translation>
     </message>
     <message>
@@ -3928,6 +4023,17 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>ProjectProgram</name>
+    <message>
+        <source>Download the project&apos;s program</source>
+        <translation>下载项目的程序</translation>
+    </message>
+    <message>
+        <source>The project&apos;s program of node %1 is not there: %2</source>
+        <translation>找不到项目中节点 %1 的程序：%2</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Decoding the PDOs with the assigned dictionaries</source>
@@ -3974,7 +4080,7 @@ Bits on: %1</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
         <translation>SDO 读取 节点 %1 %2</translation>
     </message>
     <message>
@@ -4003,39 +4109,39 @@ Bits on: %1</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
         <translation>（%1，%2 字节，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: '%1' is not a node-ID (0-127)</source>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
         <translation>筛选：“%1”不是节点 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
         <translation>筛选：“node:”需要节点 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>筛选：未知的服务“%1”（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
         <translation>筛选：“svc:”需要服务名称，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>筛选：“%1”不是十六进制的 COB-ID 或范围（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>筛选：“id:”需要十六进制的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -4050,7 +4156,7 @@ Bits on: %1</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding '%1'</source>
+        <source>Finding &apos;%1&apos;</source>
         <translation>正在查找“%1”</translation>
     </message>
 </context>
@@ -4107,11 +4213,11 @@ Bits on: %1</source>
         <translation>保存报告(&amp;R)…</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only).</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only).</source>
         <translation>请先连接到机器的总线（非仅监听）。</translation>
     </message>
     <message>
-        <source>Reading the drives' values (dry run)…</source>
+        <source>Reading the drives&apos; values (dry run)…</source>
         <translation>正在读取驱动器的值（模拟运行）…</translation>
     </message>
     <message>
@@ -4119,7 +4225,7 @@ Bits on: %1</source>
         <translation>模拟运行：各节点的 SDO 写入</translation>
     </message>
     <message>
-        <source>The drives already hold the project's values: nothing to write.</source>
+        <source>The drives already hold the project&apos;s values: nothing to write.</source>
         <translation>驱动器已是项目的值：无需写入。</translation>
     </message>
     <message numerus="yes">
@@ -4129,7 +4235,7 @@ Bits on: %1</source>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node's old values are put back.</source>
+        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node&apos;s old values are put back.</source>
         <translation>
             <numerusform>要按列表把 %n 个对象写入驱动器吗？第一个被拒绝的写入会停止，该节点的旧值会写回。</numerusform>
         </translation>
@@ -4159,9 +4265,9 @@ Bits on: %1</source>
         <translation>保存到驱动器</translation>
     </message>
     <message numerus="yes">
-        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = "save")?</source>
+        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = &quot;save&quot;)?</source>
         <translation>
-            <numerusform>要把全部参数保存到 %n 台驱动器的非易失性存储器吗（1010h:01 = "save"）？</numerusform>
+            <numerusform>要把全部参数保存到 %n 台驱动器的非易失性存储器吗（1010h:01 = &quot;save&quot;）？</numerusform>
         </translation>
     </message>
     <message>
@@ -4232,7 +4338,7 @@ Bits on: %1</source>
         <translation>已停止：第 %2 步（共 %3 步）执行时总线中断（%1）。之前的步骤都已发送；这一步不一定已送达设备，之后的步骤都没有发送。设备可能只配置了一半（某个 PDO 仍被禁用，或新的节点 ID、波特率已保存但尚未生效）。总线恢复后，请先读回此脚本涉及的对象，再重新执行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：应用节点 %3 的 %2 时总线中断（%1）（最后已知：%4）。该 PDO 可能仍被禁用（COB-ID 第 31 位为 1），映射只写入一半，节点停在预操作状态。总线恢复后，请读回 %2（选择页）并重新应用；在此期间驱动器如何动作，取决于它自身的通信中断反应。</translation>
     </message>
     <message>
@@ -4433,7 +4539,7 @@ Bits on: %1</source>
         <translation>关闭</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only): the comparison reads the drives.</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
         <translation>请先连接到机器的总线（非仅监听）：比较会读取驱动器。</translation>
     </message>
     <message>
@@ -4483,16 +4589,36 @@ Bits on: %1</source>
         <translation>更换驱动器</translation>
     </message>
     <message>
-        <source>Node %1 is another drive of the same type. Write the project's configuration of node %1 to it? The writes are shown first.</source>
+        <source>Node %1 is another drive of the same type. Write the project&apos;s configuration of node %1 to it? The writes are shown first.</source>
         <translation>节点 %1 是另一台同型驱动器。要把项目中节点 %1 的配置写入它吗？会先列出写入内容。</translation>
-    </message>
-    <message>
-        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus's bit rate with the node-ID wizard, then compare again and replace it.</source>
-        <translation>节点 %1 没有响应。新驱动器会以出厂节点 ID 响应：请用节点 ID 向导设置节点 ID %1 与总线波特率，再重新比较并更换。</translation>
     </message>
     <message>
         <source>Open the node-ID wizard</source>
         <translation>打开节点 ID 向导</translation>
+    </message>
+    <message>
+        <source>Download the project&apos;s &amp;program…</source>
+        <translation>下载项目的程序(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
+        <translation>为选中的节点载入项目指定的程序（固件）：CiA 302-3 程序下载</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer, and node %2 is a drive of the same type that the project does not have (a new drive at its factory node-ID?). Give it node-ID %1 with the node-ID wizard, then write the project&apos;s configuration of node %1 to it and compare again?</source>
+        <translation>节点 %1 没有响应，而节点 %2 是项目中没有的同型驱动器（出厂节点 ID 的新驱动器？）。要用节点 ID 向导将它设为节点 ID %1，再写入项目中节点 %1 的配置并重新比较吗？</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer. If a new drive of the same type is on the bus at another node-ID or without one, find it in the node-ID wizard (scan, or find a device without node-ID by LSS) and give it node-ID %1; then the project&apos;s configuration of node %1 is written to it and the machine compared again.</source>
+        <translation>节点 %1 没有响应。若总线上有一台使用其他节点 ID 或没有节点 ID 的同型新驱动器，请在节点 ID 向导中找到它（扫描，或用 LSS 查找没有节点 ID 的设备）并设为节点 ID %1；之后会写入项目中节点 %1 的配置并重新比较机器。</translation>
+    </message>
+    <message>
+        <source>Replacing node %1: give the new drive node-ID %1 in the node-ID wizard.</source>
+        <translation>正在更换节点 %1：请在节点 ID 向导中将新驱动器设为节点 ID %1。</translation>
+    </message>
+    <message>
+        <source>The new drive answers at node %1: the project&apos;s configuration of node %1 is written to it next.</source>
+        <translation>新驱动器已在节点 %1 响应：接着将写入项目中节点 %1 的配置。</translation>
     </message>
 </context>
 <context>
@@ -4552,6 +4678,14 @@ Bits on: %1</source>
     <message>
         <source>State</source>
         <translation>状态</translation>
+    </message>
+    <message>
+        <source>Software version</source>
+        <translation>软件版本</translation>
+    </message>
+    <message>
+        <source>Software identification</source>
+        <translation>软件标识</translation>
     </message>
 </context>
 <context>
@@ -4881,7 +5015,7 @@ Bits on: %1</source>
         <translation>停止</translation>
     </message>
     <message>
-        <source>Halts the homing on the drive's ramp (6040h = 010Fh); the drive stays enabled.</source>
+        <source>Halts the homing on the drive&apos;s ramp (6040h = 010Fh); the drive stays enabled.</source>
         <translation>按驱动器的斜坡暂停原点回零（6040h = 010Fh）；驱动器保持使能。</translation>
     </message>
     <message>
@@ -4893,7 +5027,7 @@ Bits on: %1</source>
         <translation>尚未开始。</translation>
     </message>
     <message>
-        <source>The homing's motion shows here</source>
+        <source>The homing&apos;s motion shows here</source>
         <translation>原点回零的运动显示在这里</translation>
     </message>
     <message>
@@ -4905,11 +5039,11 @@ Bits on: %1</source>
         <translation>不是 %1 的回原点方式（它有 %2）：会被拒绝。</translation>
     </message>
     <message>
-        <source>Not a CiA 402-2 homing method; the drive's own manual may define it.</source>
+        <source>Not a CiA 402-2 homing method; the drive&apos;s own manual may define it.</source>
         <translation>不是 CiA 402-2 的回原点方式；驱动器自己的手册可能有定义。</translation>
     </message>
     <message>
-        <source>(The drive's dictionary is not known: CiA 402-2's methods are listed.)</source>
+        <source>(The drive&apos;s dictionary is not known: CiA 402-2&apos;s methods are listed.)</source>
         <translation>（不知道驱动器的字典：列出的是 CiA 402-2 的方式。）</translation>
     </message>
     <message>
@@ -4971,7 +5105,7 @@ Bits on: %1</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>测试运行的运动曲线显示于此</translation>
     </message>
 </context>
@@ -5026,7 +5160,7 @@ Bits on: %1</source>
         <translation>6041h 位 13：位置跟随超差</translation>
     </message>
     <message>
-        <source>The move's motion shows here</source>
+        <source>The move&apos;s motion shows here</source>
         <translation>移动的运动显示在这里</translation>
     </message>
     <message>
@@ -5229,7 +5363,7 @@ Bits on: %1</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>按驱动器的 Quick Stop 减速曲线制动停止（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -5281,7 +5415,7 @@ Bits on: %1</source>
         <translation>向导已关闭</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>请检查主电源、使能与安全转矩关闭（STO）输入，以及驱动器本身的面板显示。</translation>
     </message>
     <message>
@@ -5481,7 +5615,7 @@ Arm the test move?</source>
         <translation>节点 %1 没有状态字 6041h：它不是 CiA 402 驱动器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>无法读取驱动器状态：%1。请确认驱动器已通电并已连接，以及其节点 ID 是否正确。</translation>
     </message>
     <message>
@@ -5669,7 +5803,7 @@ Start homing?</source>
         <translation>请设置大于 0 的轮廓速度（6081h）。</translation>
     </message>
     <message>
-        <source>The profile velocity is above the test move's limit of %1.</source>
+        <source>The profile velocity is above the test move&apos;s limit of %1.</source>
         <translation>轮廓速度超过测试运行的限制 %1。</translation>
     </message>
     <message>
@@ -5689,7 +5823,7 @@ Start homing?</source>
         <translation>位置移动未就绪：驱动器已不在 Operation enabled。</translation>
     </message>
     <message>
-        <source>Position move not armed: %1 from the position now is more than the test move's limit of %2.</source>
+        <source>Position move not armed: %1 from the position now is more than the test move&apos;s limit of %2.</source>
         <translation>位置移动未就绪：距当前位置 %1，超过测试运行的限制 %2。</translation>
     </message>
     <message>
@@ -6067,7 +6201,7 @@ Arm the position move?</source>
         <translation>上一次出现</translation>
     </message>
     <message>
-        <source>Show the finding's previous frame in the trace (Shift+F8)</source>
+        <source>Show the finding&apos;s previous frame in the trace (Shift+F8)</source>
         <translation>在跟踪中显示此发现项的上一帧（Shift+F8）</translation>
     </message>
     <message>
@@ -6075,7 +6209,7 @@ Arm the position move?</source>
         <translation>下一次出现</translation>
     </message>
     <message>
-        <source>Show the finding's next frame in the trace (F8)</source>
+        <source>Show the finding&apos;s next frame in the trace (F8)</source>
         <translation>在跟踪中显示此发现项的下一帧（F8）</translation>
     </message>
     <message>
@@ -6135,7 +6269,7 @@ Arm the position move?</source>
         <translation>&lt;b&gt;检查：&lt;/b&gt;</translation>
     </message>
     <message>
-        <source>CoScope's own traffic: not counted in the verdict.</source>
+        <source>CoScope&apos;s own traffic: not counted in the verdict.</source>
         <translation>CoScope 自己的通信：不计入结论。</translation>
     </message>
 </context>
@@ -6297,7 +6431,7 @@ Arm the position move?</source>
         <translation>节点 %1 已由 CoScope 使能。若 CoScope 崩溃或线缆断开，是否让它自行停止？</translation>
     </message>
     <message>
-        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3's heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
+        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3&apos;s heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
         <translation>CoScope 将每 %2 ms 发送自己的心跳（节点 %1），并设置节点 %3 的消费者心跳时间 1016h 与中止连接选项 6007h（快速停止，若驱动器有此对象），使 CoScope 崩溃或线缆断开时驱动器在 %4 ms 内自行停止。驱动器去使能或总线关闭时会写回原值。</translation>
     </message>
     <message>
@@ -6313,7 +6447,7 @@ Arm the position move?</source>
         <translation>记住我的选择</translation>
     </message>
     <message>
-        <source>Node %1 does not watch CoScope's heartbeat: if CoScope or the cable dies, it keeps its last command</source>
+        <source>Node %1 does not watch CoScope&apos;s heartbeat: if CoScope or the cable dies, it keeps its last command</source>
         <translation>节点 %1 不监视 CoScope 的心跳：若 CoScope 崩溃或线缆断开，它会保持最后的命令</translation>
     </message>
     <message>
@@ -6527,7 +6661,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系统语言（%1）</translation>
     </message>
     <message>
@@ -6602,7 +6736,7 @@ Arm the position move?</source>
         <translation>1006h 未写入：%1</translation>
     </message>
     <message>
-        <source>Cannot start CoScope's heartbeat: %1</source>
+        <source>Cannot start CoScope&apos;s heartbeat: %1</source>
         <translation>无法启动 CoScope 的心跳：%1</translation>
     </message>
     <message>
@@ -6630,7 +6764,7 @@ Arm the position move?</source>
         <translation>SYNC %1（%L2）</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
+        <source>CoScope&apos;s heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
         <translation>有驱动器监视 CoScope 的心跳时，心跳保持原样；新设置在释放后才生效</translation>
     </message>
     <message>
@@ -6698,11 +6832,11 @@ Arm the position move?</source>
         <translation>COB-ID（1005h）：</translation>
     </message>
     <message>
-        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <source>Write the period to the nodes&apos; 1006h when SYNC starts</source>
         <translation>SYNC 启动时将周期写入各节点的 1006h</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat</source>
+        <source>CoScope&apos;s heartbeat</source>
         <translation>CoScope 的心跳</translation>
     </message>
     <message>
@@ -6733,7 +6867,7 @@ Arm the position move?</source>
         <translation>要更改的项目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>节点 ID（设备在总线上的地址，1-127）或波特率（CAN 比特率）。</translation>
     </message>
     <message>
@@ -6765,11 +6899,11 @@ Arm the position move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>通过 SDO 写入驱动器自己的参数 %1——按其手册所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驱动器自己的参数——此设备没有相关文档</translation>
     </message>
 </context>
@@ -6952,7 +7086,7 @@ Arm the position move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（层设置服务，CiA 305）按识别信息（1018h）选中 %1 并给予新设置；设备会自行保存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 通过 SDO 写入驱动器自己的参数 %1（按其手册所述的方式）。</translation>
     </message>
     <message>
@@ -6964,8 +7098,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;关于此驱动器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此总线上的其他所有节点&lt;/b&gt;（%1）仍维持 %2。更改后，%3 只会以 %4 通信：其他节点在更改之前都无法与它通信。请逐一更改所有节点，之后总线就会以 %4 运作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -6984,8 +7118,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;如果它没有重新出现：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;无法运行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;无法运行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -7115,7 +7249,7 @@ What to check: %3</source>
         <translation>请先连接到总线</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>读取节点 ID 1–127 每个节点的设备类型 1000h，再读取每个有响应节点的识别信息</translation>
     </message>
     <message>
@@ -7386,11 +7520,11 @@ Software version (100Ah): %3</source>
         <translation>节点发送了启动报文；启动后节点处于预操作状态。</translation>
     </message>
     <message>
-        <source>The node's heartbeat says so.</source>
+        <source>The node&apos;s heartbeat says so.</source>
         <translation>由节点的心跳得知。</translation>
     </message>
     <message>
-        <source>The node's answer to node guarding says so.</source>
+        <source>The node&apos;s answer to node guarding says so.</source>
         <translation>由节点对节点保护的应答得知。</translation>
     </message>
     <message>
@@ -7414,11 +7548,11 @@ Software version (100Ah): %3</source>
         <translation>节点发送紧急报文 (EMCY)，而 CiA 301 只允许在预操作状态和操作状态下发送（其 PDO 才能显示是否为操作状态）。</translation>
     </message>
     <message>
-        <source>Nothing seen yet shows the node's state.</source>
+        <source>Nothing seen yet shows the node&apos;s state.</source>
         <translation>目前所见的内容尚无法显示节点的状态。</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <source>The bus was lost: the state is unknown until the node&apos;s heartbeat or its own frames show it (last known: %1)</source>
         <translation>总线中断：在节点的心跳或其自身帧显示状态之前，状态未知（最后已知：%1）</translation>
     </message>
     <message>
@@ -7489,7 +7623,7 @@ Software version (100Ah): %3</source>
         <translation>仅显示已更改</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只显示从节点读取、且与字典默认值不同的值</translation>
     </message>
     <message>
@@ -7589,8 +7723,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;节点 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;无字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;无字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -7727,7 +7861,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>没有任何对象可以读取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在读取节点 %1 在 %3 中 %2 个候选项目的当前值…</translation>
     </message>
     <message>
@@ -7821,11 +7955,11 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>以下正是将逐步发送的内容（模拟运行：尚未发送任何内容）。若驱动器拒绝某个步骤，向导会停止、说明原因，并写回原本的设置。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>断电后保留：保存驱动器参数（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>断电后保留：保存驱动器参数（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成后启动驱动器的过程数据（NMT 启动：操作状态）</translation>
     </message>
     <message>
@@ -7837,7 +7971,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>若不勾选，驱动器断电或重置后新的映射就会丢失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驱动器的字典没有 1010h（保存参数）</translation>
     </message>
     <message>
@@ -7916,7 +8050,7 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation> （已关闭：COB-ID 位 31 已设置）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模拟运行（总线为仅监听，不会发送任何内容）：以字典默认值为起点，而非从驱动器读取：%1</translation>
     </message>
     <message>
@@ -8221,8 +8355,8 @@ SDO 下载 %n 字节：%1</numerusform>
         <translation>PDO 映射：节点 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>断电后保留设置：保存所有参数（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>断电后保留设置：保存所有参数（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -8612,7 +8746,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>总线为仅监听或未打开：无法发送。</translation>
     </message>
     <message>
-        <source>The bus's master services are not available.</source>
+        <source>The bus&apos;s master services are not available.</source>
         <translation>该总线的主站服务不可用。</translation>
     </message>
     <message>
@@ -8620,7 +8754,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>尚无已知且有对象字典的节点：请扫描网络或指定对象字典。</translation>
     </message>
     <message>
-        <source>This node's dictionary maps no RPDO.</source>
+        <source>This node&apos;s dictionary maps no RPDO.</source>
         <translation>该节点的对象字典未映射任何 RPDO。</translation>
     </message>
     <message>
@@ -8640,7 +8774,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>准备运行</translation>
     </message>
     <message>
-        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While "Hold to run" is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
+        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
 
 Make sure the axis is free to move. Arm?</source>
         <translation>节点 %1 的 RPDO 含运动对象（控制字、模式、目标值）。按住“按住运行”时会以显示的数值发送，电机可能转动。松开按钮时发送暂停与速度 0。
@@ -8719,7 +8853,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>程序映像文件 (*.img *.bin *.hex);;所有文件 (*)</translation>
     </message>
     <message>
-        <source>The bus was closed: nothing is claimed about the node's program.</source>
+        <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
         <translation>总线已关闭：不对节点的程序做任何保证。</translation>
     </message>
     <message>
@@ -8779,7 +8913,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>启动程序（1F51h:%1 = 1）</translation>
     </message>
     <message>
-        <source>Waiting for the node's boot-up</source>
+        <source>Waiting for the node&apos;s boot-up</source>
         <translation>等待节点的启动报文</translation>
     </message>
     <message>
@@ -8839,7 +8973,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 字节，耗时 %L2 秒。</translation>
     </message>
     <message>
-        <source>The node's program was not touched.</source>
+        <source>The node&apos;s program was not touched.</source>
         <translation>节点的程序未被改动。</translation>
     </message>
     <message>
@@ -8906,7 +9040,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>项目未保存</translation>
     </message>
     <message>
-        <source>The project "%1" has changes that are not saved. Save the project first?</source>
+        <source>The project &quot;%1&quot; has changes that are not saved. Save the project first?</source>
         <translation>项目“%1”有尚未保存的更改。要先保存项目吗？</translation>
     </message>
     <message>
@@ -8918,7 +9052,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>已打开项目 %1</translation>
     </message>
     <message>
-        <source>Connect to the project's bus %1?</source>
+        <source>Connect to the project&apos;s bus %1?</source>
         <translation>要连接到项目的总线 %1 吗？</translation>
     </message>
     <message>
@@ -8934,7 +9068,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>备份机器</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only): the backup reads the drives.</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
         <translation>请先连接到机器的总线（非仅监听）：备份会读取驱动器。</translation>
     </message>
     <message>
@@ -8960,8 +9094,16 @@ Make sure the axis is free to move. Arm?</source>
         </translation>
     </message>
     <message>
-        <source>The drives' configuration is in the project; save the project to keep it.</source>
+        <source>The drives&apos; configuration is in the project; save the project to keep it.</source>
         <translation>驱动器的配置已在项目中；请保存项目以保留。</translation>
+    </message>
+    <message>
+        <source>Download the project&apos;s program…</source>
+        <translation>下载项目的程序…</translation>
+    </message>
+    <message>
+        <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
+        <translation>为选中的节点载入项目指定的程序（固件）：CiA 302-3 程序下载</translation>
     </message>
 </context>
 <context>
@@ -8982,7 +9124,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>帧的标识符：十进制或 0x 十六进制；大于 7FFh 为 29 位标识符</translation>
     </message>
     <message>
@@ -9355,11 +9497,11 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 帧</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到“%1”：跟踪为空</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到“%1”</translation>
     </message>
     <message>
@@ -9379,7 +9521,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>上一个书签</translation>
     </message>
     <message>
-        <source>The project's trace filter is not valid: %1</source>
+        <source>The project&apos;s trace filter is not valid: %1</source>
         <translation>项目的跟踪过滤条件无效：%1</translation>
     </message>
 </context>
@@ -9391,7 +9533,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>正在加载…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer's frames</source>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>单击可展开或折叠此传输的帧</translation>
     </message>
     <message>

@@ -37,6 +37,101 @@
     </message>
 </context>
 <context>
+    <name>ApplyText</name>
+    <message>
+        <source>Node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>Node %1 (%2)</source>
+        <translation>節點 %1（%2）</translation>
+    </message>
+    <message>
+        <source>the node does not answer</source>
+        <translation>節點沒有回應</translation>
+    </message>
+    <message>
+        <source>another device answers at this node-ID</source>
+        <translation>此節點 ID 由其他裝置回應</translation>
+    </message>
+    <message>
+        <source>not in the project</source>
+        <translation>不在專案中</translation>
+    </message>
+    <message>
+        <source>no dictionary for the node (%1)</source>
+        <translation>此節點沒有字典（%1）</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>已寫入</translation>
+    </message>
+    <message>
+        <source>nothing to write, already as in the project</source>
+        <translation>無需寫入，已與專案相同</translation>
+    </message>
+    <message>
+        <source>refused, old values put back</source>
+        <translation>被拒絕，已寫回舊值</translation>
+    </message>
+    <message>
+        <source>refused, old values NOT all put back</source>
+        <translation>被拒絕，舊值「未」全部寫回</translation>
+    </message>
+    <message>
+        <source>not written: a node before refused</source>
+        <translation>未寫入：先前的節點拒絕了寫入</translation>
+    </message>
+    <message>
+        <source>skipped</source>
+        <translation>已略過</translation>
+    </message>
+    <message>
+        <source>%1: not written: %2</source>
+        <translation>%1：未寫入：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n SDO write(s)</source>
+        <translation>
+            <numerusform>%1：%n 筆 SDO 寫入</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>write %1 %2 = %3</source>
+        <translation>寫入 %1 %2 = %3</translation>
+    </message>
+    <message>
+        <source>%1  (now %2)</source>
+        <translation>%1  （目前 %2）</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source> - %n object(s) written</source>
+        <translation>
+            <numerusform> - 已寫入 %n 個物件</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>written: %1</source>
+        <translation>已寫入：%1</translation>
+    </message>
+    <message>
+        <source>REFUSED: %1: %2</source>
+        <translation>被拒絕：%1：%2</translation>
+    </message>
+    <message>
+        <source>put back: %1</source>
+        <translation>已寫回：%1</translation>
+    </message>
+    <message>
+        <source>NOT put back: %1: %2</source>
+        <translation>未寫回：%1：%2</translation>
+    </message>
+</context>
+<context>
     <name>CoreText</name>
     <message>
         <source>Not ready to switch on</source>
@@ -1091,7 +1186,7 @@
         <translation>節點 %1</translation>
     </message>
     <message>
-        <source>Reopen the adapter at %1, the device's new bit rate</source>
+        <source>Reopen the adapter at %1, the device&apos;s new bit rate</source>
         <translation>以裝置的新鮑率 %1 重新開啟轉接器</translation>
     </message>
     <message>
@@ -1171,8 +1266,8 @@
         <translation>將新的節點 ID %1 寫入 %2 [物件為推定]（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h "save")</source>
-        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h "save"）</translation>
+        <source>Save the parameters so the node-ID survives power-off (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數，讓節點 ID 在斷電後仍保留（儲存參數，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it takes node-ID %1 (NMT reset node)</source>
@@ -1247,8 +1342,8 @@
         <translation>寫入 %1 = %2h：鮑率 %3（SDO 下載）</translation>
     </message>
     <message>
-        <source>Save the parameters (store parameters, 1010h "save")</source>
-        <translation>儲存參數（儲存參數，1010h "save"）</translation>
+        <source>Save the parameters (store parameters, 1010h &quot;save&quot;)</source>
+        <translation>儲存參數（儲存參數，1010h &quot;save&quot;）</translation>
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
@@ -1315,11 +1410,11 @@
         <translation>第 %1 步：%2</translation>
     </message>
     <message>
-        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor's tool.</source>
+        <source>No device answered LSS with this identity. Check that the drive supports LSS (CiA 305); if not, use its own parameter (vendor method) or the vendor&apos;s tool.</source>
         <translation>沒有裝置以此識別資料回應 LSS。請確認驅動器支援 LSS（CiA 305）；若不支援，請改用它自己的參數（廠商方式）或廠商的工具。</translation>
     </message>
     <message>
-        <source>The device refused the value. Check that it supports it (its manual's node-ID range / bit rates).</source>
+        <source>The device refused the value. Check that it supports it (its manual&apos;s node-ID range / bit rates).</source>
         <translation>裝置拒絕了這個值。請確認它支援此值（見手冊的節點 ID 範圍／鮑率）。</translation>
     </message>
     <message>
@@ -1343,7 +1438,7 @@
         <translation>無法全部恢復（%1：%2）。</translation>
     </message>
     <message>
-        <source>Delta ASDA-A2 manual §1.3.1, P3-00 ("●": after power cycle)</source>
+        <source>Delta ASDA-A2 manual §1.3.1, P3-00 (&quot;●&quot;: after power cycle)</source>
         <translation>Delta ASDA-A2 手冊 §1.3.1，P3-00（「●」：重新上電後生效）</translation>
     </message>
     <message>
@@ -2711,15 +2806,15 @@
         <translation>%1：匯流排為僅監聽：CoScope 不發送任何訊框，因此沒有心跳也沒有保護</translation>
     </message>
     <message>
-        <source>%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings</source>
+        <source>%1: CoScope&apos;s heartbeat node-ID %2 is the drive&apos;s own; choose another in the master settings</source>
         <translation>%1：CoScope 的心跳節點 ID %2 與驅動器相同；請在主站設定中另選</translation>
     </message>
     <message>
-        <source>%1: CoScope's heartbeat cannot start: %2</source>
+        <source>%1: CoScope&apos;s heartbeat cannot start: %2</source>
         <translation>%1：CoScope 的心跳無法啟動：%2</translation>
     </message>
     <message>
-        <source>%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
+        <source>%1 may still be enabled: it keeps watching CoScope&apos;s heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops</source>
         <translation>%1 可能仍為致能：它繼續監看 CoScope 的心跳（1016h、6007h 未寫回），心跳停止時會自行停止</translation>
     </message>
     <message>
@@ -2735,7 +2830,7 @@
         <translation>%1：原本的 1016h/6007h 未全部寫回（%2）；請檢查</translation>
     </message>
     <message>
-        <source>%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
+        <source>%1 watches CoScope&apos;s heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5</source>
         <translation>%1 以 1016h:%3 監看 CoScope 的心跳（節點 %2），%4 ms；心跳停止時：%5</translation>
     </message>
     <message>
@@ -3068,12 +3163,12 @@
     </message>
     <message>
         <source> — vendor alarm %1</source>
-        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")</extracomment>
+        <extracomment>CiA 402 wizard, after the error code: %1 = the vendor&apos;s alarm code and name (&quot;AL013 Emergency stop&quot;)</extracomment>
         <translation>——廠商異警 %1</translation>
     </message>
     <message>
         <source>alarm number 0x%1 (not in the %2 table)</source>
-        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)</extracomment>
+        <extracomment>%1 = the vendor alarm number in hex, %2 = the alarm table&apos;s name (e.g. delta-asda-a2)</extracomment>
         <translation>異警編號 0x%1（不在 %2 異警表中）</translation>
     </message>
 </context>
@@ -3428,15 +3523,15 @@
         <translation>設備自行重新啟動會失去原有狀態：驅動器失去致能，機台隨之停止。</translation>
     </message>
     <message>
-        <source>Check the node's supply voltage and wiring, its watchdog and error history, and the frames just before each boot-up.</source>
+        <source>Check the node&apos;s supply voltage and wiring, its watchdog and error history, and the frames just before each boot-up.</source>
         <translation>請檢查該節點的電源電壓與配線、看門狗與錯誤紀錄，以及每次上線前的封包。</translation>
     </message>
     <message>
-        <source>Node %1's %2 stopped: nothing for %3 at the end of the log (period %4).</source>
+        <source>Node %1&apos;s %2 stopped: nothing for %3 at the end of the log (period %4).</source>
         <translation>節點 %1 的%2已停止：記錄結尾有 %3 沒有任何訊息（週期 %4）。</translation>
     </message>
     <message>
-        <source>The master's heartbeat consumer sees the node as lost and the application stops using it.</source>
+        <source>The master&apos;s heartbeat consumer sees the node as lost and the application stops using it.</source>
         <translation>主站的心跳消費者會判定此節點遺失，應用程式便停止使用它。</translation>
     </message>
     <message>
@@ -3444,7 +3539,7 @@
         <translation>請確認節點 %1 仍有電源且連在匯流排上（電纜、接頭、終端電阻），並檢查其 1017h 是否被設為 0。</translation>
     </message>
     <message>
-        <source>Node %1's %2 was missing %3 time(s) after regular beats (longest gap %4, period %5).</source>
+        <source>Node %1&apos;s %2 was missing %3 time(s) after regular beats (longest gap %4, period %5).</source>
         <translation>節點 %1 的%2在規律發送後中斷了 %3 次（最長間隔 %4，週期 %5）。</translation>
     </message>
     <message>
@@ -3456,11 +3551,11 @@
         <translation>請查看每個間隔前後的封包：錯誤封包、匯流排負載、節點 %1 是否重置、接線是否鬆脫。</translation>
     </message>
     <message>
-        <source>Node %1's %2 came late %3 time(s) (over 1.5 times the %4 period).</source>
+        <source>Node %1&apos;s %2 came late %3 time(s) (over 1.5 times the %4 period).</source>
         <translation>節點 %1 的%2延遲了 %3 次（超過週期 %4 的 1.5 倍）。</translation>
     </message>
     <message>
-        <source>Late beats eat the consumer's margin: a little more delay becomes a heartbeat error.</source>
+        <source>Late beats eat the consumer&apos;s margin: a little more delay becomes a heartbeat error.</source>
         <translation>延遲的心跳會吃掉消費者的裕度：再多一點延遲就會變成心跳錯誤。</translation>
     </message>
     <message>
@@ -3476,7 +3571,7 @@
         <translation>設備發出故障訊號；驅動器處於故障狀態時會停止馬達，直到故障重置。</translation>
     </message>
     <message>
-        <source>Look up %2 in the device's alarm list, remove the cause, then reset the fault (controlword bit 7).</source>
+        <source>Look up %2 in the device&apos;s alarm list, remove the cause, then reset the fault (controlword bit 7).</source>
         <translation>請在設備的異警表中查詢 %2，排除原因後再重置故障（控制字 bit 7）。</translation>
     </message>
     <message>
@@ -3484,11 +3579,11 @@
         <translation>節點 %1 有 %2 個 SDO 請求未回應（1 秒內沒有回覆）。</translation>
     </message>
     <message>
-        <source>The master's parameter access fails: a configuration step may have been skipped.</source>
+        <source>The master&apos;s parameter access fails: a configuration step may have been skipped.</source>
         <translation>主站的參數存取失敗：可能有設定步驟被略過。</translation>
     </message>
     <message>
-        <source>Check node %1's node-ID, power and NMT state (a stopped node serves no SDO), and the bus load at those times.</source>
+        <source>Check node %1&apos;s node-ID, power and NMT state (a stopped node serves no SDO), and the bus load at those times.</source>
         <translation>請檢查節點 %1 的節點 ID、電源與 NMT 狀態（停止狀態的節點不處理 SDO），以及當時的匯流排負載。</translation>
     </message>
     <message>
@@ -3512,7 +3607,7 @@
         <translation>SDO 逾時設定較短的主站會中止這類傳輸，開機時的設定也會花更久。</translation>
     </message>
     <message>
-        <source>Check what node %1 does meanwhile (storing parameters, 1010h) and the bus load; raise the master's SDO timeout if needed.</source>
+        <source>Check what node %1 does meanwhile (storing parameters, 1010h) and the bus load; raise the master&apos;s SDO timeout if needed.</source>
         <translation>請檢查節點 %1 當時在做什麼（儲存參數，1010h）以及匯流排負載；必要時加長主站的 SDO 逾時。</translation>
     </message>
     <message>
@@ -3536,7 +3631,7 @@
         <translation>這些週期內同步 PDO 不會送出或套用；處於週期同步模式的軸會漏掉命令值。</translation>
     </message>
     <message>
-        <source>Check the SYNC producer's timing and load, and the bus load at those times.</source>
+        <source>Check the SYNC producer&apos;s timing and load, and the bus load at those times.</source>
         <translation>請檢查 SYNC 生產者的時序與負載，以及當時的匯流排負載。</translation>
     </message>
     <message>
@@ -3572,7 +3667,7 @@
         <translation>週期資料到達不均勻，會使控制與圖表也不均勻。</translation>
     </message>
     <message>
-        <source>Check the producer's timing (SYNC or event timer) and the bus load; the frames listed end the most irregular intervals.</source>
+        <source>Check the producer&apos;s timing (SYNC or event timer) and the bus load; the frames listed end the most irregular intervals.</source>
         <translation>請檢查生產者的時序（SYNC 或事件計時器）與匯流排負載；列出的封包是最不規律間隔的結尾。</translation>
     </message>
     <message>
@@ -3612,7 +3707,7 @@
         <translation>請在追蹤中查看它們的識別碼。</translation>
     </message>
     <message>
-        <source>CoScope's scan (frames sent by the recording side) asked %1 node-ID(s) (%2..%3) that did not answer.</source>
+        <source>CoScope&apos;s scan (frames sent by the recording side) asked %1 node-ID(s) (%2..%3) that did not answer.</source>
         <translation>CoScope 的掃描（記錄端送出的封包）詢問了 %1 個沒有回應的節點 ID（%2..%3）。</translation>
     </message>
     <message>
@@ -3620,7 +3715,7 @@
         <translation>掃描就是這樣找出設備的：沒有任何設備有問題。</translation>
     </message>
     <message>
-        <source>Nothing to fix: these requests are CoScope's own.</source>
+        <source>Nothing to fix: these requests are CoScope&apos;s own.</source>
         <translation>無需處理：這些請求是 CoScope 自己送出的。</translation>
     </message>
     <message>
@@ -3628,7 +3723,7 @@
         <translation>節點 %1 以 %2（%3）中止了 CoScope 送出的 %4 個 SDO 請求。</translation>
     </message>
     <message>
-        <source>CoScope's own requests (a scan reading optional objects, a read or write of the user) caused them: not a device fault.</source>
+        <source>CoScope&apos;s own requests (a scan reading optional objects, a read or write of the user) caused them: not a device fault.</source>
         <translation>這是 CoScope 自己的請求（掃描讀取選用物件、使用者的讀寫）所造成：不是設備故障。</translation>
     </message>
     <message>
@@ -3640,7 +3735,7 @@
         <translation>節點 %1 沒有回應 CoScope 送出的 %2 個 SDO 請求。</translation>
     </message>
     <message>
-        <source>CoScope's own requests went unanswered (a scan probing, or the node was busy): not counted as a device fault.</source>
+        <source>CoScope&apos;s own requests went unanswered (a scan probing, or the node was busy): not counted as a device fault.</source>
         <translation>CoScope 自己的請求沒有得到回應（掃描探測，或節點忙碌）：不算設備故障。</translation>
     </message>
     <message>
@@ -3701,7 +3796,7 @@
         <translation>%1：未知的記錄檔格式</translation>
     </message>
     <message>
-        <source>%1: cannot write format '%2'</source>
+        <source>%1: cannot write format &apos;%2&apos;</source>
         <translation>%1：無法寫入格式「%2」</translation>
     </message>
 </context>
@@ -3819,7 +3914,7 @@ Bits on: %1</source>
         <translation>AIMOTOR：只有在 H02-00（2002h:01）= 8（CANopen 控制）時，CiA 402 物件才會生效。</translation>
     </message>
     <message>
-        <source>AIMOTOR's default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
+        <source>AIMOTOR&apos;s default PDOs are synchronous (type 1): they are sent or applied only when a SYNC arrives. Start a SYNC producer, or choose an event-driven type.</source>
         <translation>AIMOTOR 的預設 PDO 為同步型（類型 1）：只有收到 SYNC 時才會送出或套用。請啟動 SYNC 產生者，或改選事件觸發類型。</translation>
     </message>
     <message>
@@ -3847,7 +3942,7 @@ Bits on: %1</source>
         <translation>驅動器未及時回應。請確認它已通電、節點 ID 正確，並檢查纜線、終端電阻與鮑率。</translation>
     </message>
     <message>
-        <source>The drive does not allow this object in a PDO. Take another object, or check the manual's "PDO" column for it.</source>
+        <source>The drive does not allow this object in a PDO. Take another object, or check the manual&apos;s &quot;PDO&quot; column for it.</source>
         <translation>驅動器不允許將此物件放入 PDO。請改選其他物件，或查閱手冊中該物件的「PDO」欄。</translation>
     </message>
     <message>
@@ -3875,7 +3970,7 @@ Bits on: %1</source>
         <translation>驅動器在目前狀態下不接受此操作。它必須處於預操作狀態（精靈會先送出此命令）</translation>
     </message>
     <message>
-        <source>Look up abort code 0x%1 in the drive's manual.</source>
+        <source>Look up abort code 0x%1 in the drive&apos;s manual.</source>
         <translation>請在驅動器手冊中查詢中止碼 0x%1。</translation>
     </message>
     <message>
@@ -3928,6 +4023,17 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>ProjectProgram</name>
+    <message>
+        <source>Download the project&apos;s program</source>
+        <translation>下載專案的程式</translation>
+    </message>
+    <message>
+        <source>The project&apos;s program of node %1 is not there: %2</source>
+        <translation>找不到專案中節點 %1 的程式：%2</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>Decoding the PDOs with the assigned dictionaries</source>
@@ -3974,7 +4080,7 @@ Bits on: %1</source>
     <name>SdoGroupIndex</name>
     <message>
         <source>SDO read node %1 %2</source>
-        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")</extracomment>
+        <extracomment>Trace, one row per SDO transfer: %1 = node, %2 = object (&quot;6041:00 Statusword&quot;)</extracomment>
         <translation>SDO 讀取 節點 %1 %2</translation>
     </message>
     <message>
@@ -4003,39 +4109,39 @@ Bits on: %1</source>
     </message>
     <message>
         <source>: aborted 0x%1 %2 (%3, %4)</source>
-        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"</extracomment>
+        <extracomment>%1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = &quot;3 frames&quot;</extracomment>
         <translation>：已中止 0x%1 %2（%3，%4）</translation>
     </message>
     <message>
         <source> (%1, %2 bytes, %3)</source>
-        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = "3 frames"</extracomment>
+        <extracomment>%1 = expedited/segmented/block, %2 = size, %3 = &quot;3 frames&quot;</extracomment>
         <translation>（%1，%2 位元組，%3）</translation>
     </message>
 </context>
 <context>
     <name>TraceFilter</name>
     <message>
-        <source>filter: '%1' is not a node-ID (0-127)</source>
+        <source>filter: &apos;%1&apos; is not a node-ID (0-127)</source>
         <translation>篩選：「%1」不是節點 ID（0-127）</translation>
     </message>
     <message>
-        <source>filter: 'node:' needs node-IDs, e.g. node:5,6</source>
+        <source>filter: &apos;node:&apos; needs node-IDs, e.g. node:5,6</source>
         <translation>篩選：「node:」需要節點 ID，例如 node:5,6</translation>
     </message>
     <message>
-        <source>filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
+        <source>filter: unknown service &apos;%1&apos; (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)</source>
         <translation>篩選：未知的服務「%1」（NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP，或 sdo、pdo）</translation>
     </message>
     <message>
-        <source>filter: 'svc:' needs service names, e.g. svc:sdo,emcy</source>
+        <source>filter: &apos;svc:&apos; needs service names, e.g. svc:sdo,emcy</source>
         <translation>篩選：「svc:」需要服務名稱，例如 svc:sdo,emcy</translation>
     </message>
     <message>
-        <source>filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)</source>
+        <source>filter: &apos;%1&apos; is not a COB-ID or range in hex (e.g. 580-5FF)</source>
         <translation>篩選：「%1」不是十六進位的 COB-ID 或範圍（例如 580-5FF）</translation>
     </message>
     <message>
-        <source>filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF</source>
+        <source>filter: &apos;id:&apos; needs COB-IDs in hex, e.g. id:580-5FF</source>
         <translation>篩選：「id:」需要十六進位的 COB-ID，例如 id:580-5FF</translation>
     </message>
     <message>
@@ -4050,7 +4156,7 @@ Bits on: %1</source>
 <context>
     <name>TraceFind</name>
     <message>
-        <source>Finding '%1'</source>
+        <source>Finding &apos;%1&apos;</source>
         <translation>正在尋找「%1」</translation>
     </message>
 </context>
@@ -4107,11 +4213,11 @@ Bits on: %1</source>
         <translation>儲存報告(&amp;R)…</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only).</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only).</source>
         <translation>請先連線到機台的總線（非僅監聽）。</translation>
     </message>
     <message>
-        <source>Reading the drives' values (dry run)…</source>
+        <source>Reading the drives&apos; values (dry run)…</source>
         <translation>正在讀取驅動器的值（模擬執行）…</translation>
     </message>
     <message>
@@ -4119,7 +4225,7 @@ Bits on: %1</source>
         <translation>模擬執行：各節點的 SDO 寫入</translation>
     </message>
     <message>
-        <source>The drives already hold the project's values: nothing to write.</source>
+        <source>The drives already hold the project&apos;s values: nothing to write.</source>
         <translation>驅動器已是專案的值：不需寫入。</translation>
     </message>
     <message numerus="yes">
@@ -4129,7 +4235,7 @@ Bits on: %1</source>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node's old values are put back.</source>
+        <source>Write %n object(s) to the drives as listed? The first refused write stops; that node&apos;s old values are put back.</source>
         <translation>
             <numerusform>要依清單把 %n 個物件寫入驅動器嗎？第一個被拒絕的寫入會停止，該節點的舊值會寫回。</numerusform>
         </translation>
@@ -4159,9 +4265,9 @@ Bits on: %1</source>
         <translation>儲存到驅動器</translation>
     </message>
     <message numerus="yes">
-        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = "save")?</source>
+        <source>Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = &quot;save&quot;)?</source>
         <translation>
-            <numerusform>要把全部參數儲存到 %n 台驅動器的非揮發性記憶體嗎（1010h:01 = "save"）？</numerusform>
+            <numerusform>要把全部參數儲存到 %n 台驅動器的非揮發性記憶體嗎（1010h:01 = &quot;save&quot;）？</numerusform>
         </translation>
     </message>
     <message>
@@ -4232,7 +4338,7 @@ Bits on: %1</source>
         <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
     </message>
     <message>
-        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive's own communication-loss reaction decides what it does meanwhile.</source>
+        <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
         <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
     </message>
     <message>
@@ -4433,7 +4539,7 @@ Bits on: %1</source>
         <translation>關閉</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only): the comparison reads the drives.</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
         <translation>請先連線到機台的總線（非僅監聽）：比較會讀取驅動器。</translation>
     </message>
     <message>
@@ -4483,16 +4589,36 @@ Bits on: %1</source>
         <translation>更換驅動器</translation>
     </message>
     <message>
-        <source>Node %1 is another drive of the same type. Write the project's configuration of node %1 to it? The writes are shown first.</source>
+        <source>Node %1 is another drive of the same type. Write the project&apos;s configuration of node %1 to it? The writes are shown first.</source>
         <translation>節點 %1 是另一台同型驅動器。要把專案中節點 %1 的設定寫入它嗎？會先列出寫入內容。</translation>
-    </message>
-    <message>
-        <source>Node %1 does not answer. A new drive answers at its factory node-ID: set node-ID %1 and the bus's bit rate with the node-ID wizard, then compare again and replace it.</source>
-        <translation>節點 %1 沒有回應。新驅動器會以出廠節點 ID 回應：請用節點 ID 精靈設定節點 ID %1 與總線鮑率，再重新比較並更換。</translation>
     </message>
     <message>
         <source>Open the node-ID wizard</source>
         <translation>開啟節點 ID 精靈</translation>
+    </message>
+    <message>
+        <source>Download the project&apos;s &amp;program…</source>
+        <translation>下載專案的程式(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
+        <translation>為選取的節點載入專案指定的程式（韌體）：CiA 302-3 程式下載</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer, and node %2 is a drive of the same type that the project does not have (a new drive at its factory node-ID?). Give it node-ID %1 with the node-ID wizard, then write the project&apos;s configuration of node %1 to it and compare again?</source>
+        <translation>節點 %1 沒有回應，而節點 %2 是專案中沒有的同型驅動器（出廠節點 ID 的新驅動器？）。要以節點 ID 精靈將它設為節點 ID %1，再寫入專案中節點 %1 的設定並重新比較嗎？</translation>
+    </message>
+    <message>
+        <source>Node %1 does not answer. If a new drive of the same type is on the bus at another node-ID or without one, find it in the node-ID wizard (scan, or find a device without node-ID by LSS) and give it node-ID %1; then the project&apos;s configuration of node %1 is written to it and the machine compared again.</source>
+        <translation>節點 %1 沒有回應。若匯流排上有一台使用其他節點 ID 或沒有節點 ID 的同型新驅動器，請在節點 ID 精靈中找到它（掃描，或以 LSS 尋找沒有節點 ID 的裝置）並設為節點 ID %1；之後會寫入專案中節點 %1 的設定並重新比較機台。</translation>
+    </message>
+    <message>
+        <source>Replacing node %1: give the new drive node-ID %1 in the node-ID wizard.</source>
+        <translation>正在更換節點 %1：請在節點 ID 精靈中將新驅動器設為節點 ID %1。</translation>
+    </message>
+    <message>
+        <source>The new drive answers at node %1: the project&apos;s configuration of node %1 is written to it next.</source>
+        <translation>新驅動器已在節點 %1 回應：接著將寫入專案中節點 %1 的設定。</translation>
     </message>
 </context>
 <context>
@@ -4552,6 +4678,14 @@ Bits on: %1</source>
     <message>
         <source>State</source>
         <translation>狀態</translation>
+    </message>
+    <message>
+        <source>Software version</source>
+        <translation>軟體版本</translation>
+    </message>
+    <message>
+        <source>Software identification</source>
+        <translation>軟體識別碼</translation>
     </message>
 </context>
 <context>
@@ -4881,7 +5015,7 @@ Bits on: %1</source>
         <translation>停止</translation>
     </message>
     <message>
-        <source>Halts the homing on the drive's ramp (6040h = 010Fh); the drive stays enabled.</source>
+        <source>Halts the homing on the drive&apos;s ramp (6040h = 010Fh); the drive stays enabled.</source>
         <translation>依驅動器的斜坡暫停原點復歸（6040h = 010Fh）；驅動器保持致能。</translation>
     </message>
     <message>
@@ -4893,7 +5027,7 @@ Bits on: %1</source>
         <translation>尚未開始。</translation>
     </message>
     <message>
-        <source>The homing's motion shows here</source>
+        <source>The homing&apos;s motion shows here</source>
         <translation>原點復歸的運動顯示於此</translation>
     </message>
     <message>
@@ -4905,11 +5039,11 @@ Bits on: %1</source>
         <translation>不是 %1 的原點復歸方式（它有 %2）：會被拒絕。</translation>
     </message>
     <message>
-        <source>Not a CiA 402-2 homing method; the drive's own manual may define it.</source>
+        <source>Not a CiA 402-2 homing method; the drive&apos;s own manual may define it.</source>
         <translation>不是 CiA 402-2 的原點復歸方式；驅動器自己的手冊可能有定義。</translation>
     </message>
     <message>
-        <source>(The drive's dictionary is not known: CiA 402-2's methods are listed.)</source>
+        <source>(The drive&apos;s dictionary is not known: CiA 402-2&apos;s methods are listed.)</source>
         <translation>（不知道驅動器的字典：列出的是 CiA 402-2 的方式。）</translation>
     </message>
     <message>
@@ -4971,7 +5105,7 @@ Bits on: %1</source>
         <translation>速度 606Ch：%1</translation>
     </message>
     <message>
-        <source>The test move's motion shows here</source>
+        <source>The test move&apos;s motion shows here</source>
         <translation>測試運轉的運動曲線顯示於此</translation>
     </message>
 </context>
@@ -5026,7 +5160,7 @@ Bits on: %1</source>
         <translation>6041h 位元 13：追隨誤差</translation>
     </message>
     <message>
-        <source>The move's motion shows here</source>
+        <source>The move&apos;s motion shows here</source>
         <translation>移動的運動顯示於此</translation>
     </message>
     <message>
@@ -5229,7 +5363,7 @@ Bits on: %1</source>
         <translation>快速停止</translation>
     </message>
     <message>
-        <source>Brakes on the drive's quick stop ramp (6040h = 0002h).</source>
+        <source>Brakes on the drive&apos;s quick stop ramp (6040h = 0002h).</source>
         <translation>依驅動器的 Quick Stop 減速曲線煞停（6040h = 0002h）。</translation>
     </message>
     <message>
@@ -5281,7 +5415,7 @@ Bits on: %1</source>
         <translation>精靈已關閉</translation>
     </message>
     <message>
-        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive's own display.</source>
+        <source>Check main power, the enable and safe torque off (STO) inputs, and the drive&apos;s own display.</source>
         <translation>請檢查主電源、致能與安全扭矩關閉（STO）輸入，以及驅動器本身的面板顯示。</translation>
     </message>
     <message>
@@ -5481,7 +5615,7 @@ Arm the test move?</source>
         <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
-        <source>Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.</source>
+        <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
         <translation>無法讀取驅動器狀態：%1。請確認驅動器已通電並已連接，以及其節點 ID 是否正確。</translation>
     </message>
     <message>
@@ -5669,7 +5803,7 @@ Start homing?</source>
         <translation>請設定大於 0 的輪廓速度（6081h）。</translation>
     </message>
     <message>
-        <source>The profile velocity is above the test move's limit of %1.</source>
+        <source>The profile velocity is above the test move&apos;s limit of %1.</source>
         <translation>輪廓速度超過測試運轉的限制 %1。</translation>
     </message>
     <message>
@@ -5689,7 +5823,7 @@ Start homing?</source>
         <translation>位置移動未就緒：驅動器已不在 Operation enabled。</translation>
     </message>
     <message>
-        <source>Position move not armed: %1 from the position now is more than the test move's limit of %2.</source>
+        <source>Position move not armed: %1 from the position now is more than the test move&apos;s limit of %2.</source>
         <translation>位置移動未就緒：距目前位置 %1，超過測試運轉的限制 %2。</translation>
     </message>
     <message>
@@ -6067,7 +6201,7 @@ Arm the position move?</source>
         <translation>上一次出現</translation>
     </message>
     <message>
-        <source>Show the finding's previous frame in the trace (Shift+F8)</source>
+        <source>Show the finding&apos;s previous frame in the trace (Shift+F8)</source>
         <translation>在追蹤中顯示此發現項目的上一個封包（Shift+F8）</translation>
     </message>
     <message>
@@ -6075,7 +6209,7 @@ Arm the position move?</source>
         <translation>下一次出現</translation>
     </message>
     <message>
-        <source>Show the finding's next frame in the trace (F8)</source>
+        <source>Show the finding&apos;s next frame in the trace (F8)</source>
         <translation>在追蹤中顯示此發現項目的下一個封包（F8）</translation>
     </message>
     <message>
@@ -6135,7 +6269,7 @@ Arm the position move?</source>
         <translation>&lt;b&gt;檢查：&lt;/b&gt;</translation>
     </message>
     <message>
-        <source>CoScope's own traffic: not counted in the verdict.</source>
+        <source>CoScope&apos;s own traffic: not counted in the verdict.</source>
         <translation>CoScope 自己的通訊：不計入結論。</translation>
     </message>
 </context>
@@ -6297,7 +6431,7 @@ Arm the position move?</source>
         <translation>節點 %1 已由 CoScope 致能。若 CoScope 當掉或線纜斷開，是否讓它自行停止？</translation>
     </message>
     <message>
-        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3's heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
+        <source>CoScope will produce its heartbeat (node %1) every %2 ms and set node %3&apos;s heartbeat consumer 1016h and its abort connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.</source>
         <translation>CoScope 將每 %2 ms 發送自己的心跳（節點 %1），並設定節點 %3 的消費者心跳時間 1016h 與中止連線選項 6007h（快速停止，若驅動器有此物件），使 CoScope 當掉或線纜斷開時驅動器在 %4 ms 內自行停止。驅動器禁能或匯流排關閉時會寫回原值。</translation>
     </message>
     <message>
@@ -6313,7 +6447,7 @@ Arm the position move?</source>
         <translation>記住我的選擇</translation>
     </message>
     <message>
-        <source>Node %1 does not watch CoScope's heartbeat: if CoScope or the cable dies, it keeps its last command</source>
+        <source>Node %1 does not watch CoScope&apos;s heartbeat: if CoScope or the cable dies, it keeps its last command</source>
         <translation>節點 %1 不監看 CoScope 的心跳：若 CoScope 當掉或線纜斷開，它會維持最後的命令</translation>
     </message>
     <message>
@@ -6527,7 +6661,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>System language (%1)</source>
-        <extracomment>View ▸ Language: follow the operating system's language; %1 = that language's own name</extracomment>
+        <extracomment>View ▸ Language: follow the operating system&apos;s language; %1 = that language&apos;s own name</extracomment>
         <translation>系統語言（%1）</translation>
     </message>
     <message>
@@ -6602,7 +6736,7 @@ Arm the position move?</source>
         <translation>1006h 未寫入：%1</translation>
     </message>
     <message>
-        <source>Cannot start CoScope's heartbeat: %1</source>
+        <source>Cannot start CoScope&apos;s heartbeat: %1</source>
         <translation>無法啟動 CoScope 的心跳：%1</translation>
     </message>
     <message>
@@ -6630,7 +6764,7 @@ Arm the position move?</source>
         <translation>SYNC %1（%L2）</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
+        <source>CoScope&apos;s heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released</source>
         <translation>有驅動器監看 CoScope 的心跳時，心跳維持原樣；新設定在釋放後才生效</translation>
     </message>
     <message>
@@ -6698,11 +6832,11 @@ Arm the position move?</source>
         <translation>COB-ID（1005h）：</translation>
     </message>
     <message>
-        <source>Write the period to the nodes' 1006h when SYNC starts</source>
+        <source>Write the period to the nodes&apos; 1006h when SYNC starts</source>
         <translation>SYNC 啟動時將週期寫入各節點的 1006h</translation>
     </message>
     <message>
-        <source>CoScope's heartbeat</source>
+        <source>CoScope&apos;s heartbeat</source>
         <translation>CoScope 的心跳</translation>
     </message>
     <message>
@@ -6733,7 +6867,7 @@ Arm the position move?</source>
         <translation>要變更的項目</translation>
     </message>
     <message>
-        <source>The node-ID (the device's address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
+        <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
         <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
@@ -6765,11 +6899,11 @@ Arm the position move?</source>
         <translation>方式：</translation>
     </message>
     <message>
-        <source>The drive's own parameter %1 over SDO — as its manual describes</source>
+        <source>The drive&apos;s own parameter %1 over SDO — as its manual describes</source>
         <translation>透過 SDO 寫入驅動器自己的參數 %1——依其手冊所述</translation>
     </message>
     <message>
-        <source>The drive's own parameter — none documented for this device</source>
+        <source>The drive&apos;s own parameter — none documented for this device</source>
         <translation>驅動器自己的參數——此裝置沒有相關文件</translation>
     </message>
 </context>
@@ -6952,7 +7086,7 @@ Arm the position move?</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;LSS（層設定服務，CiA 305）依識別資訊（1018h）選中 %1 並給予新設定；裝置會自行儲存。</translation>
     </message>
     <message>
-        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).</source>
+        <source>&lt;b&gt;How:&lt;/b&gt; CoScope writes the drive&apos;s own parameter %1 over SDO (the way its manual describes).</source>
         <translation>&lt;b&gt;方式：&lt;/b&gt;CoScope 透過 SDO 寫入驅動器自己的參數 %1（依其手冊所述的方式）。</translation>
     </message>
     <message>
@@ -6964,8 +7098,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;關於此驅動器：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style='color:#a40000'&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -6984,8 +7118,8 @@ Arm the position move?</source>
         <translation>&lt;b&gt;如果它沒有重新出現：&lt;/b&gt;%1</translation>
     </message>
     <message>
-        <source>&lt;b style='color:#a40000'&gt;Cannot do this:&lt;/b&gt; %1</source>
-        <translation>&lt;b style='color:#a40000'&gt;無法執行：&lt;/b&gt;%1</translation>
+        <source>&lt;b style=&apos;color:#a40000&apos;&gt;Cannot do this:&lt;/b&gt; %1</source>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;無法執行：&lt;/b&gt;%1</translation>
     </message>
     <message>
         <source>The change is already running.</source>
@@ -7115,7 +7249,7 @@ What to check: %3</source>
         <translation>請先連線到總線</translation>
     </message>
     <message>
-        <source>Read the device type 1000h of every node-ID 1–127, then each answering node's identity</source>
+        <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
         <translation>讀取節點 ID 1–127 每個節點的裝置類型 1000h，再讀取每個有回應節點的識別資訊</translation>
     </message>
     <message>
@@ -7386,11 +7520,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出了上線報文；上線後節點處於預操作狀態。</translation>
     </message>
     <message>
-        <source>The node's heartbeat says so.</source>
+        <source>The node&apos;s heartbeat says so.</source>
         <translation>由節點的心跳得知。</translation>
     </message>
     <message>
-        <source>The node's answer to node guarding says so.</source>
+        <source>The node&apos;s answer to node guarding says so.</source>
         <translation>由節點對節點保護的回應得知。</translation>
     </message>
     <message>
@@ -7414,11 +7548,11 @@ Software version (100Ah): %3</source>
         <translation>節點送出緊急報文 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
     </message>
     <message>
-        <source>Nothing seen yet shows the node's state.</source>
+        <source>Nothing seen yet shows the node&apos;s state.</source>
         <translation>目前所見的內容尚無法顯示節點的狀態。</translation>
     </message>
     <message>
-        <source>The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)</source>
+        <source>The bus was lost: the state is unknown until the node&apos;s heartbeat or its own frames show it (last known: %1)</source>
         <translation>匯流排中斷：在節點的心跳或其自身封包顯示狀態之前，狀態未知（最後已知：%1）</translation>
     </message>
     <message>
@@ -7489,7 +7623,7 @@ Software version (100Ah): %3</source>
         <translation>僅顯示已變更</translation>
     </message>
     <message>
-        <source>Show only the values read from the node that differ from the dictionary's default</source>
+        <source>Show only the values read from the node that differ from the dictionary&apos;s default</source>
         <translation>只顯示從節點讀取、且與字典預設值不同的值</translation>
     </message>
     <message>
@@ -7589,8 +7723,8 @@ Software version (100Ah): %3</source>
         <translation>&lt;b&gt;節點 %1&lt;/b&gt;</translation>
     </message>
     <message>
-        <source> · &lt;span style='color:#b00020'&gt;no dictionary&lt;/span&gt;</source>
-        <translation> · &lt;span style='color:#b00020'&gt;無字典&lt;/span&gt;</translation>
+        <source> · &lt;span style=&apos;color:#b00020&apos;&gt;no dictionary&lt;/span&gt;</source>
+        <translation> · &lt;span style=&apos;color:#b00020&apos;&gt;無字典&lt;/span&gt;</translation>
     </message>
     <message>
         <source> · %1 entries, %2 read</source>
@@ -7727,7 +7861,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>沒有任何物件可以讀取</translation>
     </message>
     <message>
-        <source>Reading node %1's current values of the %2 candidates in %3…</source>
+        <source>Reading node %1&apos;s current values of the %2 candidates in %3…</source>
         <translation>正在讀取節點 %1 在 %3 中 %2 個候選項目的目前值…</translation>
     </message>
     <message>
@@ -7821,11 +7955,11 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>以下正是將逐步送出的內容（模擬執行：尚未送出任何內容）。若驅動器拒絕某個步驟，精靈會停止、說明原因，並寫回原本的設定。</translation>
     </message>
     <message>
-        <source>Keep after power-off: store the drive's parameters (1010h:01 = "save")</source>
-        <translation>斷電後保留：儲存驅動器參數（1010h:01 = "save"）</translation>
+        <source>Keep after power-off: store the drive&apos;s parameters (1010h:01 = &quot;save&quot;)</source>
+        <translation>斷電後保留：儲存驅動器參數（1010h:01 = &quot;save&quot;）</translation>
     </message>
     <message>
-        <source>Start the drive's process data afterwards (NMT start: operational)</source>
+        <source>Start the drive&apos;s process data afterwards (NMT start: operational)</source>
         <translation>完成後啟動驅動器的過程資料（NMT 啟動：操作狀態）</translation>
     </message>
     <message>
@@ -7837,7 +7971,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>若不勾選，驅動器斷電或重置後新的映射就會遺失</translation>
     </message>
     <message>
-        <source>This drive's dictionary has no 1010h (store parameters)</source>
+        <source>This drive&apos;s dictionary has no 1010h (store parameters)</source>
         <translation>此驅動器的字典沒有 1010h（儲存參數）</translation>
     </message>
     <message>
@@ -7916,7 +8050,7 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation> （已關閉：COB-ID 位元 31 已設定）</translation>
     </message>
     <message>
-        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1</source>
+        <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
         <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
@@ -8221,8 +8355,8 @@ SDO 下載 %n 位元組：%1</numerusform>
         <translation>PDO 映射：節點 %2 的 %1</translation>
     </message>
     <message>
-        <source>Keep the settings after power-off: store all parameters (1010h:01 = "save", CiA 301 §7.5.2.13)</source>
-        <translation>斷電後保留設定：儲存所有參數（1010h:01 = "save"，CiA 301 §7.5.2.13）</translation>
+        <source>Keep the settings after power-off: store all parameters (1010h:01 = &quot;save&quot;, CiA 301 §7.5.2.13)</source>
+        <translation>斷電後保留設定：儲存所有參數（1010h:01 = &quot;save&quot;，CiA 301 §7.5.2.13）</translation>
     </message>
     <message>
         <source>Start process data: the drive goes operational and sends/uses its PDOs (NMT start)</source>
@@ -8612,7 +8746,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>總線為僅監聽或未開啟：無法傳送。</translation>
     </message>
     <message>
-        <source>The bus's master services are not available.</source>
+        <source>The bus&apos;s master services are not available.</source>
         <translation>此總線的主站服務無法使用。</translation>
     </message>
     <message>
@@ -8620,7 +8754,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>尚無已知且有物件字典的節點：請掃描網路或指定物件字典。</translation>
     </message>
     <message>
-        <source>This node's dictionary maps no RPDO.</source>
+        <source>This node&apos;s dictionary maps no RPDO.</source>
         <translation>此節點的物件字典沒有映射任何 RPDO。</translation>
     </message>
     <message>
@@ -8640,7 +8774,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <translation>準備運轉</translation>
     </message>
     <message>
-        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While "Hold to run" is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
+        <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
 
 Make sure the axis is free to move. Arm?</source>
         <translation>節點 %1 的 RPDO 含運動物件（控制字元、模式、目標值）。按住「按住運轉」時會以顯示的數值傳送，馬達可能轉動。放開按鈕時傳送暫停（Halt）與速度 0。
@@ -8719,7 +8853,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>程式映像檔 (*.img *.bin *.hex);;所有檔案 (*)</translation>
     </message>
     <message>
-        <source>The bus was closed: nothing is claimed about the node's program.</source>
+        <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
         <translation>總線已關閉：不對節點的程式做任何保證。</translation>
     </message>
     <message>
@@ -8779,7 +8913,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>啟動程式（1F51h:%1 = 1）</translation>
     </message>
     <message>
-        <source>Waiting for the node's boot-up</source>
+        <source>Waiting for the node&apos;s boot-up</source>
         <translation>等待節點的上線報文</translation>
     </message>
     <message>
@@ -8839,7 +8973,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 位元組，耗時 %L2 秒。</translation>
     </message>
     <message>
-        <source>The node's program was not touched.</source>
+        <source>The node&apos;s program was not touched.</source>
         <translation>節點的程式未被更動。</translation>
     </message>
     <message>
@@ -8906,7 +9040,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>專案未儲存</translation>
     </message>
     <message>
-        <source>The project "%1" has changes that are not saved. Save the project first?</source>
+        <source>The project &quot;%1&quot; has changes that are not saved. Save the project first?</source>
         <translation>專案「%1」有尚未儲存的變更。要先儲存專案嗎？</translation>
     </message>
     <message>
@@ -8918,7 +9052,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>已開啟專案 %1</translation>
     </message>
     <message>
-        <source>Connect to the project's bus %1?</source>
+        <source>Connect to the project&apos;s bus %1?</source>
         <translation>要連線到專案的總線 %1 嗎？</translation>
     </message>
     <message>
@@ -8934,7 +9068,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>備份機台</translation>
     </message>
     <message>
-        <source>Connect to the machine's bus first (not listen-only): the backup reads the drives.</source>
+        <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
         <translation>請先連線到機台的總線（非僅監聽）：備份會讀取驅動器。</translation>
     </message>
     <message>
@@ -8960,8 +9094,16 @@ Make sure the axis is free to move. Arm?</source>
         </translation>
     </message>
     <message>
-        <source>The drives' configuration is in the project; save the project to keep it.</source>
+        <source>The drives&apos; configuration is in the project; save the project to keep it.</source>
         <translation>驅動器的設定已在專案中；請儲存專案以保留。</translation>
+    </message>
+    <message>
+        <source>Download the project&apos;s program…</source>
+        <translation>下載專案的程式…</translation>
+    </message>
+    <message>
+        <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
+        <translation>為選取的節點載入專案指定的程式（韌體）：CiA 302-3 程式下載</translation>
     </message>
 </context>
 <context>
@@ -8982,7 +9124,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>0x181</translation>
     </message>
     <message>
-        <source>The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
+        <source>The frame&apos;s identifier: decimal or 0x hex; over 7FFh a 29-bit identifier</source>
         <translation>封包的識別碼：十進位或 0x 十六進位；大於 7FFh 為 29 位元識別碼</translation>
     </message>
     <message>
@@ -9355,11 +9497,11 @@ Make sure the axis is free to move. Arm?</source>
         <translation>%L1 個封包</translation>
     </message>
     <message>
-        <source>'%1' not found: the trace is empty</source>
+        <source>&apos;%1&apos; not found: the trace is empty</source>
         <translation>找不到「%1」：追蹤為空</translation>
     </message>
     <message>
-        <source>'%1' not found</source>
+        <source>&apos;%1&apos; not found</source>
         <translation>找不到「%1」</translation>
     </message>
     <message>
@@ -9379,7 +9521,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>上一個書籤</translation>
     </message>
     <message>
-        <source>The project's trace filter is not valid: %1</source>
+        <source>The project&apos;s trace filter is not valid: %1</source>
         <translation>專案的追蹤篩選條件無效：%1</translation>
     </message>
 </context>
@@ -9391,7 +9533,7 @@ Make sure the axis is free to move. Arm?</source>
         <translation>載入中…</translation>
     </message>
     <message>
-        <source>Click to expand or collapse the transfer's frames</source>
+        <source>Click to expand or collapse the transfer&apos;s frames</source>
         <translation>按一下可展開或收合此傳輸的封包</translation>
     </message>
     <message>
