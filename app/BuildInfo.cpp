@@ -9,7 +9,9 @@ QString version() { return QStringLiteral(COSCOPE_VERSION); }
 
 QString revision() { return QStringLiteral(COSCOPE_REVISION); }
 
-QString versionLine(const QString& program) { return QStringLiteral("%1 %2 (revision %3)").arg(program, version(), revision()); }
+QString versionLine(const QString& program) {
+    return QStringLiteral("%1 %2 (revision %3)").arg(program, version(), revision());
+}
 
 QString applicationId() { return QStringLiteral(COSCOPE_APP_ID); }
 

@@ -4,7 +4,7 @@
 namespace coscope::dissect {
 
 bool BusLoad::enterSecond(int64_t delta) {
-    const int64_t sec = delta / 1000000000;  // truncates toward zero
+    const int64_t sec = delta / 1000000000;           // truncates toward zero
     if (sec < 0 || sec >= kMaxSeconds) return false;  // out of order or absurd
     sec_ = sec;
     secLo_ = sec == 0 ? -999999999 : sec * 1000000000;

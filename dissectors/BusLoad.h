@@ -19,7 +19,8 @@ constexpr FrameBitsTable makeFrameBitsTable() {
     FrameBitsTable t{};
     for (int ext = 0; ext < 2; ++ext)
         for (int fd = 0; fd < 2; ++fd)
-            for (int n = 0; n <= 64; ++n) t.bits[ext][fd][n] = ((ext ? 54.0 : 34.0) + 8.0 * n + (fd ? 21.0 : 0.0)) * 1.1 + 13.0;
+            for (int n = 0; n <= 64; ++n)
+                t.bits[ext][fd][n] = ((ext ? 54.0 : 34.0) + 8.0 * n + (fd ? 21.0 : 0.0)) * 1.1 + 13.0;
     return t;
 }
 inline constexpr FrameBitsTable kFrameBits = makeFrameBitsTable();

@@ -100,7 +100,11 @@ QByteArray pdoLayoutDbc(const NetworkContext& ctx, const std::vector<RawSignal>&
                 m.id = can | (ext ? 0x80000000u : 0);
                 const QString kind = (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number);
                 m.name = kind.toLatin1() + "_node" + QByteArray::number(node);
-                m.comment = QStringLiteral("%1 of node %2%3").arg(kind).arg(node).arg(ns.dictionaryName.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(ns.dictionaryName));
+                m.comment =
+                    QStringLiteral("%1 of node %2%3")
+                        .arg(kind)
+                        .arg(node)
+                        .arg(ns.dictionaryName.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(ns.dictionaryName));
                 m.dlc = (cfg.mappedBits() + 7) / 8;
                 if (tpdo) m.transmitter = nodeName(node);
                 nodes.insert(node);
@@ -125,7 +129,11 @@ QByteArray pdoLayoutDbc(const NetworkContext& ctx, const std::vector<RawSignal>&
                         s.unit = u->unit;
                     }
                     if (!tpdo) s.receiver = nodeName(node);
-                    s.comment = QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).toUpper().arg(e.name);
+                    s.comment = QStringLiteral("%1:%2 %3")
+                                    .arg(e.index, 4, 16, QLatin1Char('0'))
+                                    .arg(e.sub, 2, 16, QLatin1Char('0'))
+                                    .toUpper()
+                                    .arg(e.name);
                     addSignal(m, std::move(s));
                 }
                 if (m.sigs.empty()) continue;
@@ -163,31 +171,45 @@ QByteArray pdoLayoutDbc(const NetworkContext& ctx, const std::vector<RawSignal>&
 
     QByteArray out;
     out += "VERSION \"\"\n\n\nNS_ :\n";
-    for (const char* ns : {"NS_DESC_", "CM_", "BA_DEF_", "BA_", "VAL_", "CAT_DEF_", "CAT_", "FILTER", "BA_DEF_DEF_", "EV_DATA_", "ENVVAR_DATA_",
-                           "SGTYPE_", "SGTYPE_VAL_", "BA_DEF_SGTYPE_", "BA_SGTYPE_", "SIG_TYPE_REF_", "VAL_TABLE_", "SIG_GROUP_", "SIG_VALTYPE_",
-                           "SIGTYPE_VALTYPE_", "BO_TX_BU_", "BA_DEF_REL_", "BA_REL_", "BA_DEF_DEF_REL_", "BU_SG_REL_", "BU_EV_REL_", "BU_BO_REL_",
-                           "SG_MUL_VAL_"})
+    for (const char* ns : {"NS_DESC_",     "CM_",
+                           "BA_DEF_",      "BA_",
+                           "VAL_",         "CAT_DEF_",
+                           "CAT_",         "FILTER",
+                           "BA_DEF_DEF_",  "EV_DATA_",
+                           "ENVVAR_DATA_", "SGTYPE_",
+                           "SGTYPE_VAL_",  "BA_DEF_SGTYPE_",
+                           "BA_SGTYPE_",   "SIG_TYPE_REF_",
+                           "VAL_TABLE_",   "SIG_GROUP_",
+                           "SIG_VALTYPE_", "SIGTYPE_VALTYPE_",
+                           "BO_TX_BU_",    "BA_DEF_REL_",
+                           "BA_REL_",      "BA_DEF_DEF_REL_",
+                           "BU_SG_REL_",   "BU_EV_REL_",
+                           "BU_BO_REL_",   "SG_MUL_VAL_"})
         out += QByteArray("\t") + ns + '\n';
     out += "\nBS_:\n\nBU_:";
     for (int n : nodes) out += ' ' + nodeName(n);
     out += "\n\n";
     for (const auto& [id, m] : messages) {
-        out += "BO_ " + QByteArray::number(id) + ' ' + m.name + ": " + QByteArray::number(m.dlc) + ' ' + m.transmitter + '\n';
+        out += "BO_ " + QByteArray::number(id) + ' ' + m.name + ": " + QByteArray::number(m.dlc) + ' ' + m.transmitter +
+               '\n';
         for (const DbcSignal& s : m.sigs) {
             const auto [lo, hi] = range(s);
-            out += " SG_ " + s.name + " : " + QByteArray::number(s.start) + '|' + QByteArray::number(s.length) + '@' + (s.motorola ? '0' : '1') +
-                   (s.isSigned || s.floatBits ? '-' : '+') + " (" + num(s.factor) + ',' + num(s.offset) + ") [" + num(lo) + '|' + num(hi) + "] " +
-                   quoted(s.unit) + ' ' + s.receiver + '\n';
+            out += " SG_ " + s.name + " : " + QByteArray::number(s.start) + '|' + QByteArray::number(s.length) + '@' +
+                   (s.motorola ? '0' : '1') + (s.isSigned || s.floatBits ? '-' : '+') + " (" + num(s.factor) + ',' +
+                   num(s.offset) + ") [" + num(lo) + '|' + num(hi) + "] " + quoted(s.unit) + ' ' + s.receiver + '\n';
         }
         out += '\n';
     }
     for (const auto& [id, m] : messages) {
         out += "CM_ BO_ " + QByteArray::number(id) + ' ' + quoted(m.comment) + ";\n";
-        for (const DbcSignal& s : m.sigs) out += "CM_ SG_ " + QByteArray::number(id) + ' ' + s.name + ' ' + quoted(s.comment) + ";\n";
+        for (const DbcSignal& s : m.sigs)
+            out += "CM_ SG_ " + QByteArray::number(id) + ' ' + s.name + ' ' + quoted(s.comment) + ";\n";
     }
     for (const auto& [id, m] : messages)
         for (const DbcSignal& s : m.sigs)
-            if (s.floatBits) out += "SIG_VALTYPE_ " + QByteArray::number(id) + ' ' + s.name + " : " + (s.floatBits == 64 ? '2' : '1') + ";\n";
+            if (s.floatBits)
+                out += "SIG_VALTYPE_ " + QByteArray::number(id) + ' ' + s.name + " : " +
+                       (s.floatBits == 64 ? '2' : '1') + ";\n";
     return out;
 }
 

@@ -20,7 +20,8 @@ namespace coscope::dissect {
 // signals join the message of their COB-ID, or get one of their own.
 // Nodes: those seen in the trace or given a dictionary. `pdos`, when given, counts the PDO
 // messages written.
-QByteArray pdoLayoutDbc(const NetworkContext& ctx, const std::vector<RawSignal>& raw = {}, int bus = 0, int* pdos = nullptr);
+QByteArray pdoLayoutDbc(const NetworkContext& ctx, const std::vector<RawSignal>& raw = {}, int bus = 0,
+                        int* pdos = nullptr);
 
 // A DBC identifier (C identifier) from a display name: "Position actual value" -> Position_actual_value.
 QByteArray dbcIdentifier(const QString& name);

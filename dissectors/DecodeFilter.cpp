@@ -27,7 +27,8 @@ bool DecodeFilter::parse(const QString& expr, QString* error) {
         }
         const qsizetype eq = w.indexOf(u'=');
         if (eq <= 0) {
-            if (error) *error = QStringLiteral("filter term '%1' is not KEY=VALUE (keys: node, service, id, warnings)").arg(w);
+            if (error)
+                *error = QStringLiteral("filter term '%1' is not KEY=VALUE (keys: node, service, id, warnings)").arg(w);
             return false;
         }
         t.negate = w[eq - 1] == u'!';
@@ -40,7 +41,8 @@ bool DecodeFilter::parse(const QString& expr, QString* error) {
         if (key == QLatin1String("service")) {
             t.key = Term::Key::Service;
             for (const QString& v : values) t.services << v.toUpper();
-        } else if (key == QLatin1String("node") || key == QLatin1String("id") || key == QLatin1String("cob-id") || key == QLatin1String("cobid")) {
+        } else if (key == QLatin1String("node") || key == QLatin1String("id") || key == QLatin1String("cob-id") ||
+                   key == QLatin1String("cobid")) {
             t.key = key == QLatin1String("node") ? Term::Key::Node : Term::Key::Id;
             for (const QString& v : values) {
                 const QStringList lh = v.split(u'-');

@@ -23,7 +23,10 @@ char* putNumber(char* o, int64_t v) {
     char* const e = buf + sizeof buf;
     char* p = e;
     uint64_t u = v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-    do { *--p = char('0' + u % 10); u /= 10; } while (u);
+    do {
+        *--p = char('0' + u % 10);
+        u /= 10;
+    } while (u);
     if (v < 0) *--p = '-';
     std::memcpy(o, p, static_cast<size_t>(e - p));
     return o + (e - p);
@@ -40,7 +43,8 @@ void appendUNumber(QByteArray& out, uint64_t v) {
 void appendSeconds(QByteArray& out, int64_t ns) {
     char buf[40];
     const int64_t us = ns / 1000;
-    const int n = std::snprintf(buf, sizeof buf, "%lld.%06lld", static_cast<long long>(us / 1000000), static_cast<long long>(us < 0 ? -(us % 1000000) : us % 1000000));
+    const int n = std::snprintf(buf, sizeof buf, "%lld.%06lld", static_cast<long long>(us / 1000000),
+                                static_cast<long long>(us < 0 ? -(us % 1000000) : us % 1000000));
     out.append(buf, n);
 }
 void appendDataHex(QByteArray& out, const CanFrame& f, bool spaced, bool upper) {
@@ -225,7 +229,8 @@ char* putUtf8(char* p, const char16_t* src, qsizetype n) {
     for (; i + 16 <= n; i += 16) {  // 16 at a time while the text is ASCII
         const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i));
         const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + i + 8));
-        if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_and_si128(_mm_or_si128(a, b), high), _mm_setzero_si128())) != 0xFFFF) break;
+        if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_and_si128(_mm_or_si128(a, b), high), _mm_setzero_si128())) != 0xFFFF)
+            break;
         _mm_storeu_si128(reinterpret_cast<__m128i*>(p + i), _mm_packus_epi16(a, b));
     }
     for (; i + 8 <= n; i += 8) {
@@ -246,15 +251,20 @@ char* putUtf8(char* p, const char16_t* src, qsizetype n) {
     }
     return p + n;
 }
-char* putUtf8(char* p, const QString& s) { return putUtf8(p, reinterpret_cast<const char16_t*>(s.constData()), s.size()); }
+char* putUtf8(char* p, const QString& s) {
+    return putUtf8(p, reinterpret_cast<const char16_t*>(s.constData()), s.size());
+}
 }  // namespace
 
 void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus) {
-    appendText(out, f, std::u16string_view(reinterpret_cast<const char16_t*>(d.summary.constData()), static_cast<size_t>(d.summary.size())),
+    appendText(out, f,
+               std::u16string_view(reinterpret_cast<const char16_t*>(d.summary.constData()),
+                                   static_cast<size_t>(d.summary.size())),
                d.warnings.constData(), d.warnings.size(), bus);
 }
 
-void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
+void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings,
+                qsizetype warningCount, const QString& bus) {
     // Hand-formatted straight into the output buffer: this runs for every line of a
     // million-frame decode. The space reserved is an upper bound; the rest is cut after.
     const qsizetype at = out.size();
@@ -263,8 +273,10 @@ void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary,
     out.resize(at + (writeTextLine(start, f, summary, warnings, warningCount, bus) - start));
 }
 
-qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
-    qsizetype bound = 18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * static_cast<qsizetype>(summary.size()) + 1;
+qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qsizetype warningCount,
+                        const QString& bus) {
+    qsizetype bound =
+        18 + 2 + 3 * bus.size() + 2 + 8 + 2 + 4 + 2 + 3 * 64 + 28 + 3 * static_cast<qsizetype>(summary.size()) + 1;
     for (qsizetype i = 0; i < warningCount; ++i) bound += 4 + 3 * warnings[i].size();
     return bound;
 }
@@ -277,7 +289,8 @@ constexpr char kDigitPairs[] =
     "8081828384858687888990919293949596979899";
 }  // namespace
 
-char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus) {
+char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, const QString* warnings,
+                    qsizetype warningCount, const QString& bus) {
     {
         // The seconds (and sign) change rarely: their text is kept from the previous line.
         thread_local int64_t lastSec = -1;
@@ -293,7 +306,10 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
             char* e = secText + sizeof secText;
             char* p = e;
             int64_t v = sec;
-            do { *--p = char('0' + v % 10); v /= 10; } while (v);
+            do {
+                *--p = char('0' + v % 10);
+                v /= 10;
+            } while (v);
             if (neg) *--p = '-';
             while (e - p < 11) *--p = ' ';  // 18 columns with the 7 of ".ffffff"
             secLen = static_cast<int>(e - p);
@@ -358,7 +374,8 @@ void appendTransferText(QByteArray& out, const Dissection& d) {
     // One per SDO transfer: written in place after one resize, without temporary strings.
     const SdoTransferRecord& t = d.transfer;
     const bool aborted = t.status == QLatin1String("aborted");
-    const QString abort = aborted ? QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText) : QString();
+    const QString abort =
+        aborted ? QStringLiteral(" 0x%1 %2").arg(t.abortCode, 8, 16, QLatin1Char('0')).arg(t.abortText) : QString();
     const qsizetype at = out.size();
     // Fixed text and numbers fit in 96 bytes; a UTF-16 unit is at most 3 bytes of UTF-8.
     out.resize(at + 96 + 3 * (t.name.size() + t.status.size() + abort.size() + t.valueText.size()));
@@ -372,8 +389,9 @@ void appendTransferText(QByteArray& out, const Dissection& d) {
     put(" node ");
     o = putNumber(o, t.node);
     static const char kUpper[] = "0123456789ABCDEF";
-    const char obj[8] = {' ', kUpper[t.index >> 12], kUpper[(t.index >> 8) & 15], kUpper[(t.index >> 4) & 15], kUpper[t.index & 15],
-                         ':', kUpper[t.sub >> 4], kUpper[t.sub & 15]};
+    const char obj[8] = {
+        ' ', kUpper[t.index >> 12], kUpper[(t.index >> 8) & 15], kUpper[(t.index >> 4) & 15], kUpper[t.index & 15],
+        ':', kUpper[t.sub >> 4],    kUpper[t.sub & 15]};
     put(std::string_view(obj, 8));
     if (!t.name.isEmpty()) {
         *o++ = ' ';

@@ -29,10 +29,13 @@ void appendTransferJson(QByteArray& out, const CanFrame& f, const Dissection& d,
 void appendText(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
 // The same line from its parts (the summary as UTF-16, `warningCount` warnings), for a
 // formatting thread that holds the texts in buffers of its own (app/cli/TextWriter).
-void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus);
+void appendText(QByteArray& out, const CanFrame& f, std::u16string_view summary, const QString* warnings,
+                qsizetype warningCount, const QString& bus);
 // The same line written at `o`, which has room for textLineBound() bytes; returns its end.
-qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus);
-char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, const QString* warnings, qsizetype warningCount, const QString& bus);
+qsizetype textLineBound(std::u16string_view summary, const QString* warnings, qsizetype warningCount,
+                        const QString& bus);
+char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, const QString* warnings,
+                    qsizetype warningCount, const QString& bus);
 void appendCsv(QByteArray& out, const CanFrame& f, const Dissection& d, const QString& bus);
 QByteArray csvHeader();
 // The transfer record as a text line (for text/csv output).

@@ -55,7 +55,7 @@ namespace coscope::dissect {
 //   can.err.tx_errors, can.err.rx_errors integer  the controller's error counters (when reported)
 //   can.err.text   string    what the error frame reports, in words
 class SummaryBuffer;  // dissectors/SummaryBuffer.h
-struct PdoTextSink;  // dissectors/PdoText.h
+struct PdoTextSink;   // dissectors/PdoText.h
 
 struct FlatField {
     enum class Kind : uint8_t { Int, UInt, Real, Bool, Text };
@@ -74,9 +74,9 @@ struct PdoSignal {
     uint8_t bitOffset = 0;
     uint8_t bitLength = 0;
     QString name;
-    FlatField value;  // key unused; Int/UInt/Real/Text
-    QString unit;     // empty = none
-    bool raw = false; // a raw signal (RawSignal.h): no object, index/sub unused
+    FlatField value;   // key unused; Int/UInt/Real/Text
+    QString unit;      // empty = none
+    bool raw = false;  // a raw signal (RawSignal.h): no object, index/sub unused
 };
 
 // One node of the field tree: pre-order list, `depth` 0 for top-level items. Byte/bit
@@ -94,19 +94,19 @@ struct TreeItem {
 // A finished (or aborted) SDO transfer, reassembled from its frames.
 struct SdoTransferRecord {
     int node = -1;
-    bool upload = false;     // server -> client data
+    bool upload = false;  // server -> client data
     bool block = false;
     bool segmented = false;
     uint16_t index = 0;
     uint8_t sub = 0;
-    uint32_t size = 0;       // bytes carried
+    uint32_t size = 0;  // bytes carried
     QByteArray data;
-    QString status;          // "ok", "aborted", "crc error", "size mismatch"
+    QString status;  // "ok", "aborted", "crc error", "size mismatch"
     uint32_t abortCode = 0;
     QString abortText;
-    QString name;            // object name from the dictionary
-    QString namesFrom;       // that dictionary's bundledName (Dissection::namesFrom)
-    QString valueText;       // typed value text ("" when not decodable)
+    QString name;       // object name from the dictionary
+    QString namesFrom;  // that dictionary's bundledName (Dissection::namesFrom)
+    QString valueText;  // typed value text ("" when not decodable)
     int64_t startNs = 0;
     int64_t endNs = 0;
 };
@@ -123,8 +123,8 @@ public:
     bool wantTree() const { return level_ == Level::Tree; }
 
     canopen::Service service = canopen::Service::Unknown;
-    int node = -1;         // -1 = none
-    int pdoNumber = 0;     // 1-based PDO number for PDO frames (may exceed 4 for custom COB-IDs)
+    int node = -1;      // -1 = none
+    int pdoNumber = 0;  // 1-based PDO number for PDO frames (may exceed 4 for custom COB-IDs)
     QString summary;
     QStringList warnings;
     std::vector<PdoSignal> pdoSignals;  // valid [0, signalCount); not "signals": a Qt macro

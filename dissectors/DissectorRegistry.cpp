@@ -16,8 +16,8 @@ Dissector dissectorFor(Service s) {
         set(Service::Sync, &dissectSync);
         set(Service::Time, &dissectTime);
         set(Service::Emcy, &dissectEmcy);
-        for (Service p : {Service::Tpdo1, Service::Tpdo2, Service::Tpdo3, Service::Tpdo4, Service::Rpdo1, Service::Rpdo2,
-                          Service::Rpdo3, Service::Rpdo4})
+        for (Service p : {Service::Tpdo1, Service::Tpdo2, Service::Tpdo3, Service::Tpdo4, Service::Rpdo1,
+                          Service::Rpdo2, Service::Rpdo3, Service::Rpdo4})
             set(p, &dissectPdo);
         set(Service::SdoRequest, &dissectSdo);
         set(Service::SdoResponse, &dissectSdo);
@@ -33,7 +33,8 @@ Dissector dissectorFor(Service s) {
 void dissectUnknown(DissectCall& c) {
     if (c.frame.isError()) return dissectCanError(c);
     if (!c.out.wantText()) return;
-    c.out.summary = c.frame.isExtended() ? QStringLiteral("not CANopen (29-bit identifier)") : QStringLiteral("unknown COB-ID");
+    c.out.summary =
+        c.frame.isExtended() ? QStringLiteral("not CANopen (29-bit identifier)") : QStringLiteral("unknown COB-ID");
     if (c.out.wantTree()) c.out.item(0, QStringLiteral("Data"), hexBytes(c.data, c.len, true), 0, c.len);
 }
 

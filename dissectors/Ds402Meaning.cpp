@@ -34,7 +34,8 @@ void ds402LearnMode(NodeState& n, uint16_t index, uint8_t sub, uint64_t raw) {
     n.ds402ModeKnown = static_cast<uint8_t>(n.ds402ModeKnown | (1u << axis));
 }
 
-QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth, int byteOffset, int byteLength, std::optional<int8_t> mode) {
+QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth, int byteOffset,
+                     int byteLength, std::optional<int8_t> mode) {
     const QString text = ds402MeaningText(index, sub, raw);
     if (text.isEmpty()) return {};
     const uint16_t v16 = static_cast<uint16_t>(raw);
@@ -60,7 +61,8 @@ QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out,
     default:  // 6060h, 6061h
         out.addInt("ds402.mode", static_cast<int8_t>(raw));
         out.addText("ds402.mode_text", text);
-        if (out.wantTree()) out.item(depth, QStringLiteral("Mode of operation (CiA 402)"), text, byteOffset, byteLength);
+        if (out.wantTree())
+            out.item(depth, QStringLiteral("Mode of operation (CiA 402)"), text, byteOffset, byteLength);
         break;
     }
     return text;

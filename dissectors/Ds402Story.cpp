@@ -15,9 +15,12 @@ void NetworkHealth::addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw) 
     if (state == t.ds402State) return;
     const auto s = static_cast<ds402::State>(state);
     if (s == ds402::State::Fault || s == ds402::State::FaultReactionActive) t.ds402Fault = true;
-    t.tell(f.timestampNs, frameNo_,
-           QStringLiteral("CiA 402 %1%2")
-               .arg(t.ds402State < 0 ? QString() : ds402::stateName(static_cast<ds402::State>(t.ds402State)) + QStringLiteral(" -> "), ds402::stateName(s)));
+    t.tell(
+        f.timestampNs, frameNo_,
+        QStringLiteral("CiA 402 %1%2")
+            .arg(t.ds402State < 0 ? QString()
+                                  : ds402::stateName(static_cast<ds402::State>(t.ds402State)) + QStringLiteral(" -> "),
+                 ds402::stateName(s)));
     t.ds402State = state;
 }
 
@@ -31,7 +34,8 @@ void NetworkHealth::fillStory(NodeHealth& h, const NodeTrack& t) const {
     QStringList still;
     if (h.silentNow) still << QStringLiteral("%1 stopped").arg(h.errorControl);
     const auto s = static_cast<ds402::State>(t.ds402State);
-    if (t.ds402State >= 0 && (s == ds402::State::Fault || s == ds402::State::FaultReactionActive)) still << QStringLiteral("still in %1").arg(ds402::stateName(s));
+    if (t.ds402State >= 0 && (s == ds402::State::Fault || s == ds402::State::FaultReactionActive))
+        still << QStringLiteral("still in %1").arg(ds402::stateName(s));
     // Without a statusword, an EMCY not followed by its error reset (code 0000h) still stands.
     else if (t.ds402State < 0 && lastEmcyFault) still << QStringLiteral("last EMCY not reset");
     if (!still.isEmpty()) h.outcome = QStringLiteral("not recovered (%1)").arg(still.join(QStringLiteral(", ")));

@@ -38,8 +38,11 @@ void dissectEmcy(DissectCall& c) {
         out.item(0, QStringLiteral("Error code"), QStringLiteral("%1 %2").arg(hex(m.code, 4), text), 0, 2);
         out.item(0, QStringLiteral("Error register"), hex(m.errorRegister, 2), 2, 1);
         for (int b = 0; b < 8; ++b)
-            if (m.errorRegister & (1 << b)) out.item(1, QStringLiteral("Bit %1").arg(b), canopen::errorRegisterBits(uint8_t(1u << b)).value(0), 2, 1, b, 1);
-        out.item(0, QStringLiteral("Manufacturer-specific error field"), hexBytes(c.data + 3, vendorLen, true), 3, vendorLen);
+            if (m.errorRegister & (1 << b))
+                out.item(1, QStringLiteral("Bit %1").arg(b), canopen::errorRegisterBits(uint8_t(1u << b)).value(0), 2,
+                         1, b, 1);
+        out.item(0, QStringLiteral("Manufacturer-specific error field"), hexBytes(c.data + 3, vendorLen, true), 3,
+                 vendorLen);
         if (!vendor.isEmpty()) out.item(1, QStringLiteral("Vendor alarm"), vendor, 3, vendorLen);
     }
 }

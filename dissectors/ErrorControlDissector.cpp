@@ -30,8 +30,7 @@ void dissectErrorControl(DissectCall& c) {
     const bool guarding = n.guardRequested || ((b & 0x80) && isState(b & 0x7F));
     const int toggle = guarding ? (b >> 7) : -1;
     const uint8_t state = guarding ? (b & 0x7F) : b;
-    if (!isState(state))
-        out.warn(QStringLiteral("unknown NMT state 0x%1").arg(state, 2, 16, QLatin1Char('0')));
+    if (!isState(state)) out.warn(QStringLiteral("unknown NMT state 0x%1").arg(state, 2, 16, QLatin1Char('0')));
     if (guarding) {
         if (n.guardToggle >= 0 && toggle == n.guardToggle)
             out.warn(QStringLiteral("node guarding toggle bit did not alternate (still %1)").arg(toggle));
@@ -45,16 +44,14 @@ void dissectErrorControl(DissectCall& c) {
     out.addInt("nmt.state", state);
     if (guarding) out.addInt("nmt.toggle", toggle);
     const QString name = canopen::nmtStateName(state);
-    if (state == 0)
-        out.summary = QStringLiteral("Boot-up, node %1").arg(c.node);
+    if (state == 0) out.summary = QStringLiteral("Boot-up, node %1").arg(c.node);
     else if (guarding)
         out.summary = QStringLiteral("Node guarding, node %1: %2, toggle %3").arg(c.node).arg(name).arg(toggle);
-    else
-        out.summary = QStringLiteral("Heartbeat, node %1: %2").arg(c.node).arg(name);
+    else out.summary = QStringLiteral("Heartbeat, node %1: %2").arg(c.node).arg(name);
     if (out.wantTree()) {
         if (guarding) out.item(0, QStringLiteral("Toggle bit"), QString::number(toggle), 0, 1, 7, 1);
-        out.item(0, QStringLiteral("State"), QStringLiteral("%1 (0x%2)").arg(name).arg(state, 2, 16, QLatin1Char('0')), 0, 1,
-                 guarding ? 0 : -1, guarding ? 7 : 0);
+        out.item(0, QStringLiteral("State"), QStringLiteral("%1 (0x%2)").arg(name).arg(state, 2, 16, QLatin1Char('0')),
+                 0, 1, guarding ? 0 : -1, guarding ? 7 : 0);
     }
 }
 

@@ -14,18 +14,35 @@ namespace {
 QString esc(const QString& s) { return s.toHtmlEscaped(); }
 QString num(double v, int decimals = 1) { return QString::number(v, 'f', decimals); }
 QString st(int s) { return s < 0 ? QStringLiteral("-") : canopen::nmtStateName(static_cast<uint8_t>(s)); }
-QString hexId(uint32_t v, int w) { return QStringLiteral("%1h").arg(v, w, 16, QLatin1Char('0')).toUpper().replace(u'H', u'h'); }
+QString hexId(uint32_t v, int w) {
+    return QStringLiteral("%1h").arg(v, w, 16, QLatin1Char('0')).toUpper().replace(u'H', u'h');
+}
 
 // The load over time: one bar per second (or per bucket when long), peak line per bucket.
 QString loadSvg(const BusHealth& b) {
     const int w = 720, h = 180, left = 40, bottom = 24, top = 8;
     const int plotW = w - left - 8, plotH = h - top - bottom;
-    QString s = QStringLiteral("<svg xmlns='http://www.w3.org/2000/svg' width='%1' height='%2' viewBox='0 0 %1 %2' role='img' aria-label='bus load over time'>").arg(w).arg(h);
-    s += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='#fafafa' stroke='#ccc'/>").arg(left).arg(top).arg(plotW).arg(plotH);
+    QString s = QStringLiteral(
+                    "<svg xmlns='http://www.w3.org/2000/svg' width='%1' height='%2' viewBox='0 0 %1 %2' role='img' "
+                    "aria-label='bus load over time'>")
+                    .arg(w)
+                    .arg(h);
+    s += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='#fafafa' stroke='#ccc'/>")
+             .arg(left)
+             .arg(top)
+             .arg(plotW)
+             .arg(plotH);
     for (int pct : {25, 50, 75, 100}) {
         const double y = top + plotH * (1.0 - pct / 100.0);
-        s += QStringLiteral("<line x1='%1' x2='%2' y1='%3' y2='%3' stroke='#e0e0e0'/><text x='%4' y='%5' font-size='10' text-anchor='end' fill='#666'>%6 %</text>")
-                 .arg(left).arg(left + plotW).arg(num(y)).arg(left - 4).arg(num(y + 3)).arg(pct);
+        s += QStringLiteral(
+                 "<line x1='%1' x2='%2' y1='%3' y2='%3' stroke='#e0e0e0'/><text x='%4' y='%5' font-size='10' "
+                 "text-anchor='end' fill='#666'>%6 %</text>")
+                 .arg(left)
+                 .arg(left + plotW)
+                 .arg(num(y))
+                 .arg(left - 4)
+                 .arg(num(y + 3))
+                 .arg(pct);
     }
     const auto& buckets = b.loadOverTime;
     if (!buckets.empty()) {
@@ -35,16 +52,33 @@ QString loadSvg(const BusHealth& b) {
             const double avg = std::min(100.0, buckets[i].avgPct), pk = std::min(100.0, buckets[i].peakPct);
             const double x = left + bw * static_cast<double>(i);
             const double y = top + plotH * (1.0 - avg / 100.0);
-            s += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='%5'><title>%6 s: %7 % (peak %8 %)</title></rect>")
-                     .arg(num(x + 0.5)).arg(num(y)).arg(num(std::max(1.0, bw - 1.0))).arg(num(top + plotH - y))
-                     .arg(avg > 70 ? QStringLiteral("#d9534f") : avg > 50 ? QStringLiteral("#f0ad4e") : QStringLiteral("#4a90d9"))
-                     .arg(num(buckets[i].startS, 0), num(avg), num(pk));
-            peak += QStringLiteral("%1%2,%3 %4,%3").arg(i ? QStringLiteral(" ") : QString()).arg(num(x)).arg(num(top + plotH * (1.0 - pk / 100.0))).arg(num(x + bw));
+            s +=
+                QStringLiteral(
+                    "<rect x='%1' y='%2' width='%3' height='%4' fill='%5'><title>%6 s: %7 % (peak %8 %)</title></rect>")
+                    .arg(num(x + 0.5))
+                    .arg(num(y))
+                    .arg(num(std::max(1.0, bw - 1.0)))
+                    .arg(num(top + plotH - y))
+                    .arg(avg > 70   ? QStringLiteral("#d9534f")
+                         : avg > 50 ? QStringLiteral("#f0ad4e")
+                                    : QStringLiteral("#4a90d9"))
+                    .arg(num(buckets[i].startS, 0), num(avg), num(pk));
+            peak += QStringLiteral("%1%2,%3 %4,%3")
+                        .arg(i ? QStringLiteral(" ") : QString())
+                        .arg(num(x))
+                        .arg(num(top + plotH * (1.0 - pk / 100.0)))
+                        .arg(num(x + bw));
         }
-        s += QStringLiteral("<polyline points='%1' fill='none' stroke='#333' stroke-width='1' stroke-dasharray='3,2'/>").arg(peak);
+        s += QStringLiteral("<polyline points='%1' fill='none' stroke='#333' stroke-width='1' stroke-dasharray='3,2'/>")
+                 .arg(peak);
         const double endS = buckets.back().startS + buckets.back().seconds;
-        s += QStringLiteral("<text x='%1' y='%2' font-size='10' fill='#666'>0 s</text><text x='%3' y='%2' font-size='10' text-anchor='end' fill='#666'>%4 s</text>")
-                 .arg(left).arg(h - 8).arg(left + plotW).arg(num(endS, 0));
+        s += QStringLiteral(
+                 "<text x='%1' y='%2' font-size='10' fill='#666'>0 s</text><text x='%3' y='%2' font-size='10' "
+                 "text-anchor='end' fill='#666'>%4 s</text>")
+                 .arg(left)
+                 .arg(h - 8)
+                 .arg(left + plotW)
+                 .arg(num(endS, 0));
     }
     s += QStringLiteral("</svg>");
     return s;
@@ -64,15 +98,25 @@ QString head(std::initializer_list<const char*> cells) {
 
 QByteArray healthHtml(const HealthReport& r, const QString& title) {
     QString h;
-    h += QStringLiteral("<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>%1</title>\n<style>\n").arg(esc(title));
+    h += QStringLiteral("<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>%1</title>\n<style>\n")
+             .arg(esc(title));
     h += QStringLiteral(
-        "body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1000px}h1{font-size:20px}h2{font-size:16px;margin-top:24px;border-bottom:1px solid #ddd}"
-        "table{border-collapse:collapse;font-size:13px;margin:8px 0}td,th{border:1px solid #ddd;padding:3px 8px;text-align:right}th{background:#f2f2f2}"
-        "td:first-child,th:first-child{text-align:left}.f li{margin:3px 0}.critical{color:#b00020;font-weight:bold}.error{color:#c0392b}.warning{color:#b8860b}.info{color:#555}"
-        ".fr{font-family:monospace;color:#1a5fb4}.verdict{font-size:16px}h3{font-size:14px;margin:12px 0 4px}.story{font-size:13px}"
-        ".sev{display:inline-block;width:70px;font-size:11px;text-transform:uppercase}.muted{color:#777;font-size:12px}\n</style></head><body>\n");
+        "body{font-family:system-ui,sans-serif;margin:24px;color:#222;max-width:1000px}h1{font-size:20px}h2{font-size:"
+        "16px;margin-top:24px;border-bottom:1px solid #ddd}"
+        "table{border-collapse:collapse;font-size:13px;margin:8px 0}td,th{border:1px solid #ddd;padding:3px "
+        "8px;text-align:right}th{background:#f2f2f2}"
+        "td:first-child,th:first-child{text-align:left}.f li{margin:3px "
+        "0}.critical{color:#b00020;font-weight:bold}.error{color:#c0392b}.warning{color:#b8860b}.info{color:#555}"
+        ".fr{font-family:monospace;color:#1a5fb4}.verdict{font-size:16px}h3{font-size:14px;margin:12px 0 "
+        "4px}.story{font-size:13px}"
+        ".sev{display:inline-block;width:70px;font-size:11px;text-transform:uppercase}.muted{color:#777;font-size:12px}"
+        "\n</style></head><body>\n");
     const BusHealth& b = r.bus;
-    h += QStringLiteral("<h1>%1</h1>\n<p class='muted'>%2 frames over %3 s at %4 bit/s</p>\n").arg(esc(title)).arg(b.frames).arg(num(b.durationS)).arg(b.bitRate);
+    h += QStringLiteral("<h1>%1</h1>\n<p class='muted'>%2 frames over %3 s at %4 bit/s</p>\n")
+             .arg(esc(title))
+             .arg(b.frames)
+             .arg(num(b.durationS))
+             .arg(b.bitRate);
     h += QStringLiteral("<p class='verdict'><b>%1</b></p>\n").arg(esc(r.verdict));
     // Each finding: what, why, what to check, and where, every frame number visible (the
     // trace's No.), so a reviewer finds them in CoScope or any tool that numbers frames.
@@ -81,15 +125,29 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
         QString frames;
         ++shown;
         for (size_t i = 0; i < f.at.frames.size() && i < 50; ++i)
-            frames += QStringLiteral("%1<a class='fr' id='f%2-%3'>#%4</a>").arg(i ? QStringLiteral(", ") : QString()).arg(shown).arg(i).arg(f.at.frames[i] + 1);
-        if (f.at.count > std::min<uint64_t>(f.at.frames.size(), 50)) frames += QStringLiteral(", … (+%1)").arg(f.at.count - std::min<uint64_t>(f.at.frames.size(), 50));
+            frames += QStringLiteral("%1<a class='fr' id='f%2-%3'>#%4</a>")
+                          .arg(i ? QStringLiteral(", ") : QString())
+                          .arg(shown)
+                          .arg(i)
+                          .arg(f.at.frames[i] + 1);
+        if (f.at.count > std::min<uint64_t>(f.at.frames.size(), 50))
+            frames += QStringLiteral(", … (+%1)").arg(f.at.count - std::min<uint64_t>(f.at.frames.size(), 50));
         QString when;
         if (f.at.count)
             when = f.at.count == 1 ? QStringLiteral("once, at %1").arg(healthTime(f.at.firstNs, r.startNs))
-                                   : QStringLiteral("%1 times, %2 .. %3").arg(f.at.count).arg(healthTime(f.at.firstNs, r.startNs), healthTime(f.at.lastNs, r.startNs));
-        h += QStringLiteral("<li class='%1'><span class='sev'>%1</span><b>%2</b>%3 %4<br><span class='muted'>%5%6</span><br>Why: %7<br>Check: %8</li>\n")
-                 .arg(severityName(f.severity), esc(f.rule), f.node >= 0 ? QStringLiteral(", node %1:").arg(f.node) : QStringLiteral(":"), esc(f.what), esc(when),
-                      frames.isEmpty() ? QString() : (f.at.count == 1 ? QStringLiteral("; frame ") : QStringLiteral("; frames ")) + frames, esc(f.why), esc(f.check));
+                                   : QStringLiteral("%1 times, %2 .. %3")
+                                         .arg(f.at.count)
+                                         .arg(healthTime(f.at.firstNs, r.startNs), healthTime(f.at.lastNs, r.startNs));
+        h += QStringLiteral(
+                 "<li class='%1'><span class='sev'>%1</span><b>%2</b>%3 %4<br><span class='muted'>%5%6</span><br>Why: "
+                 "%7<br>Check: %8</li>\n")
+                 .arg(severityName(f.severity), esc(f.rule),
+                      f.node >= 0 ? QStringLiteral(", node %1:").arg(f.node) : QStringLiteral(":"), esc(f.what),
+                      esc(when),
+                      frames.isEmpty()
+                          ? QString()
+                          : (f.at.count == 1 ? QStringLiteral("; frame ") : QStringLiteral("; frames ")) + frames,
+                      esc(f.why), esc(f.check));
     };
     h += QStringLiteral("<h2>Findings</h2>\n<ul class='f'>\n");
     bool any = false, anyOwn = false;
@@ -108,32 +166,52 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     h += QStringLiteral("<h2>Nodes</h2>\n");
     for (const NodeHealth& n : r.nodes) {
         h += QStringLiteral("<h3>Node %1: %2</h3>\n<ul class='story'>\n").arg(n.node).arg(esc(n.outcome));
-        for (const StoryEntry& e : n.story) h += QStringLiteral("<li>%1 <a class='fr'>#%2</a> %3</li>\n").arg(healthTime(e.timeNs, r.startNs)).arg(e.frame + 1).arg(esc(e.text));
+        for (const StoryEntry& e : n.story)
+            h += QStringLiteral("<li>%1 <a class='fr'>#%2</a> %3</li>\n")
+                     .arg(healthTime(e.timeNs, r.startNs))
+                     .arg(e.frame + 1)
+                     .arg(esc(e.text));
         if (n.storyMore) h += QStringLiteral("<li class='muted'>… %1 more</li>\n").arg(n.storyMore);
         h += QStringLiteral("</ul>\n");
     }
-    h += QStringLiteral("<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
+    h += QStringLiteral(
+             "<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
              .arg(num(b.loadAvgPct), num(b.loadPeakPct), num(b.peakAtS, 0))
              .arg(b.errorFrames)
              .arg(b.nonCanopen);
     h += loadSvg(b);
-    if (b.syncs) h += QStringLiteral("<p>SYNC: %1 frames, period %2 ms (%3), %4 cycles missing</p>\n").arg(b.syncs).arg(num(b.syncPeriodMs, 3), esc(b.syncPeriodSource)).arg(b.syncMissing);
+    if (b.syncs)
+        h += QStringLiteral("<p>SYNC: %1 frames, period %2 ms (%3), %4 cycles missing</p>\n")
+                 .arg(b.syncs)
+                 .arg(num(b.syncPeriodMs, 3), esc(b.syncPeriodSource))
+                 .arg(b.syncMissing);
 
     h += QStringLiteral("<h2>Heartbeat and NMT</h2>\n<table>\n");
-    h += head({"node", "state", "kind", "beats", "period min / avg / max ms", "expected ms", "late", "timeouts", "boot-ups", "resets", "NMT commands"});
+    h += head({"node", "state", "kind", "beats", "period min / avg / max ms", "expected ms", "late", "timeouts",
+               "boot-ups", "resets", "NMT commands"});
     for (const NodeHealth& n : r.nodes)
-        h += row({QString::number(n.node), esc(st(n.state)), n.errorControl.isEmpty() ? QStringLiteral("-") : n.errorControl, QString::number(n.beats),
-                  n.beats > 1 ? QStringLiteral("%1 / %2 / %3").arg(num(n.periodMinMs), num(n.periodAvgMs), num(n.periodMaxMs)) : QStringLiteral("-"),
-                  n.expectedPeriodMs > 0 ? QStringLiteral("%1 (%2)").arg(num(n.expectedPeriodMs, 0), n.periodSource) : QStringLiteral("-"), QString::number(n.late),
-                  QString::number(n.timeouts), QString::number(n.bootUps), QString::number(n.resets), QString::number(n.nmtCommands)});
+        h += row({QString::number(n.node), esc(st(n.state)),
+                  n.errorControl.isEmpty() ? QStringLiteral("-") : n.errorControl, QString::number(n.beats),
+                  n.beats > 1
+                      ? QStringLiteral("%1 / %2 / %3").arg(num(n.periodMinMs), num(n.periodAvgMs), num(n.periodMaxMs))
+                      : QStringLiteral("-"),
+                  n.expectedPeriodMs > 0 ? QStringLiteral("%1 (%2)").arg(num(n.expectedPeriodMs, 0), n.periodSource)
+                                         : QStringLiteral("-"),
+                  QString::number(n.late), QString::number(n.timeouts), QString::number(n.bootUps),
+                  QString::number(n.resets), QString::number(n.nmtCommands)});
     h += QStringLiteral("</table>\n<h2>SDO</h2>\n<table>\n");
     h += head({"node", "transfers", "ok", "aborted", "timeouts", "response min / avg / p99 / max ms", "aborts"});
     for (const NodeHealth& n : r.nodes) {
         if (!n.sdoRequests && !n.sdoTransfers) continue;
         QStringList aborts;
-        for (const AbortCount& a : n.sdoAborts) aborts << QStringLiteral("%1 ×%2 %3").arg(hexId(a.code, 8)).arg(a.count).arg(esc(a.text));
-        h += row({QString::number(n.node), QString::number(n.sdoTransfers), QString::number(n.sdoOk), QString::number(n.sdoAborted), QString::number(n.sdoTimeouts),
-                  n.sdoResponses ? QStringLiteral("%1 / %2 / %3 / %4").arg(num(n.sdoRtMinMs, 2), num(n.sdoRtAvgMs, 2), num(n.sdoRtP99Ms, 2), num(n.sdoRtMaxMs, 2)) : QStringLiteral("-"),
+        for (const AbortCount& a : n.sdoAborts)
+            aborts << QStringLiteral("%1 ×%2 %3").arg(hexId(a.code, 8)).arg(a.count).arg(esc(a.text));
+        h += row({QString::number(n.node), QString::number(n.sdoTransfers), QString::number(n.sdoOk),
+                  QString::number(n.sdoAborted), QString::number(n.sdoTimeouts),
+                  n.sdoResponses
+                      ? QStringLiteral("%1 / %2 / %3 / %4")
+                            .arg(num(n.sdoRtMinMs, 2), num(n.sdoRtAvgMs, 2), num(n.sdoRtP99Ms, 2), num(n.sdoRtMaxMs, 2))
+                      : QStringLiteral("-"),
                   aborts.isEmpty() ? QStringLiteral("-") : aborts.join(QStringLiteral("<br>"))});
     }
     h += QStringLiteral("</table>\n<h2>EMCY</h2>\n<table>\n");
@@ -141,14 +219,21 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     for (const NodeHealth& n : r.nodes)
         for (size_t i = 0; i < std::min<size_t>(n.emcyList.size(), 200); ++i) {
             const EmcyEntry& e = n.emcyList[i];
-            h += row({QString::number(n.node), healthTime(e.timeNs, r.startNs), hexId(e.code, 4), hexId(e.reg, 2), esc(e.text), esc(e.vendor)});
+            h += row({QString::number(n.node), healthTime(e.timeNs, r.startNs), hexId(e.code, 4), hexId(e.reg, 2),
+                      esc(e.text), esc(e.vendor)});
         }
     h += QStringLiteral("</table>\n<h2>PDOs</h2>\n<table>\n");
     h += head({"COB-ID", "PDO", "node", "frames", "rate Hz", "period min / avg / max ms", "jitter ms"});
     for (const PdoHealth& p : r.pdos)
-        h += row({hexId(p.cobId, 3), p.service + (p.consumerSeen ? QString() : QStringLiteral(" (no consumer)")), QString::number(p.node), QString::number(p.frames), num(p.rateHz),
-                  p.frames > 1 ? QStringLiteral("%1 / %2 / %3").arg(num(p.periodMinMs, 2), num(p.periodAvgMs, 2), num(p.periodMaxMs, 2)) : QStringLiteral("-"), p.cyclic ? num(p.jitterMs, 3) : QStringLiteral("event")});
-    h += QStringLiteral("</table>\n<p class='muted'>Generated by CoScope. Load is estimated from frame lengths (nominal bit stuffing).</p>\n</body></html>\n");
+        h += row({hexId(p.cobId, 3), p.service + (p.consumerSeen ? QString() : QStringLiteral(" (no consumer)")),
+                  QString::number(p.node), QString::number(p.frames), num(p.rateHz),
+                  p.frames > 1 ? QStringLiteral("%1 / %2 / %3")
+                                     .arg(num(p.periodMinMs, 2), num(p.periodAvgMs, 2), num(p.periodMaxMs, 2))
+                               : QStringLiteral("-"),
+                  p.cyclic ? num(p.jitterMs, 3) : QStringLiteral("event")});
+    h += QStringLiteral(
+        "</table>\n<p class='muted'>Generated by CoScope. Load is estimated from frame lengths (nominal bit "
+        "stuffing).</p>\n</body></html>\n");
     return h.toUtf8();
 }
 

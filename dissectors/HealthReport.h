@@ -32,11 +32,11 @@ struct Occurrences {
 struct HealthFinding {
     enum Severity : int { Info = 0, Warning = 1, Error = 2, Critical = 3 };
     int severity = Info;
-    QString kind;     // stable key: "reset", "heartbeat_timeout", "emcy", "sdo_abort", ...
-    int node = -1;    // -1 = the bus
+    QString kind;   // stable key: "reset", "heartbeat_timeout", "emcy", "sdo_abort", ...
+    int node = -1;  // -1 = the bus
     int64_t timeNs = 0;
     bool hasTime = false;
-    QString text;     // plain words, English (the CLI language)
+    QString text;  // plain words, English (the CLI language)
     // Issue 37: the rule (HealthRules.h, "heartbeat.lost", "sdo.abort", ...), the values its
     // sentences are filled with (%1.. of what/why/check), those sentences in English, and where
     // it happened. `own`: caused by the recording side's own requests (frames marked Tx, e.g.
@@ -52,9 +52,9 @@ QString severityName(int severity);  // "critical", "error", "warning", "info"
 // An NMT state change seen in the node's heartbeat/guarding/boot-up, and what caused it.
 struct NmtChange {
     int64_t timeNs = 0;
-    int from = -1;    // NMT state (0, 4, 5, 127), -1 = unknown
+    int from = -1;  // NMT state (0, 4, 5, 127), -1 = unknown
     int to = -1;
-    QString cause;    // "NMT Start (all nodes) at ...", "node itself", "reset (boot-up)"
+    QString cause;  // "NMT Start (all nodes) at ...", "node itself", "reset (boot-up)"
 };
 
 struct EmcyEntry {
@@ -62,8 +62,8 @@ struct EmcyEntry {
     uint64_t frame = 0;
     uint16_t code = 0;
     uint8_t reg = 0;
-    QString text;     // CiA 301/402 text of the code
-    QString vendor;   // vendor alarm text, else empty
+    QString text;        // CiA 301/402 text of the code
+    QString vendor;      // vendor alarm text, else empty
     bool reset = false;  // code 0000h: error reset / no error
 };
 
@@ -71,15 +71,15 @@ struct AbortCount {
     uint32_t code = 0;
     uint64_t count = 0;
     QString text;
-    bool own = false;   // answers to the recording side's own requests (frames marked Tx)
-    Occurrences at;     // the frames of the aborts
+    bool own = false;  // answers to the recording side's own requests (frames marked Tx)
+    Occurrences at;    // the frames of the aborts
 };
 
 // One line of a node's story (issue 37): a boot-up, an NMT or CiA 402 state change, an EMCY.
 struct StoryEntry {
     int64_t timeNs = 0;
     uint64_t frame = 0;
-    QString text;      // English, e.g. "CiA 402 state Operation enabled -> Fault"
+    QString text;  // English, e.g. "CiA 402 state Operation enabled -> Fault"
 };
 
 struct NodeHealth {
@@ -87,21 +87,21 @@ struct NodeHealth {
     int node = 0;
     uint64_t frames = 0;
     // Heartbeat / node guarding (CiA 301 §7.2.8.3)
-    QString errorControl;          // "heartbeat", "guarding" or "" (none seen)
+    QString errorControl;  // "heartbeat", "guarding" or "" (none seen)
     uint64_t beats = 0;
     double periodMinMs = 0, periodAvgMs = 0, periodMaxMs = 0;
-    double expectedPeriodMs = 0;   // 1017h when known, else the observed median
-    QString periodSource;          // "1017h", "observed" or ""
-    uint64_t late = 0;             // beats later than 1.5x the period
-    uint64_t timeouts = 0;         // gaps over 3x the period (including a silence at the end)
+    double expectedPeriodMs = 0;  // 1017h when known, else the observed median
+    QString periodSource;         // "1017h", "observed" or ""
+    uint64_t late = 0;            // beats later than 1.5x the period
+    uint64_t timeouts = 0;        // gaps over 3x the period (including a silence at the end)
     double longestGapMs = 0;
-    bool silentNow = false;        // nothing for over 3 periods at the end of the trace / now
+    bool silentNow = false;  // nothing for over 3 periods at the end of the trace / now
     double silentForMs = 0;
     bool heartbeatDisabled = false;  // 1017h written 0 in the trace
     uint64_t bootUps = 0;
-    uint64_t resets = 0;           // boot-ups without an NMT reset command: the node rebooted
-    int state = -1;                // last NMT state
-    uint64_t nmtCommands = 0;      // NMT commands addressed to the node (or to all)
+    uint64_t resets = 0;       // boot-ups without an NMT reset command: the node rebooted
+    int state = -1;            // last NMT state
+    uint64_t nmtCommands = 0;  // NMT commands addressed to the node (or to all)
     std::vector<NmtChange> nmtChanges;
     // SDO (CiA 301 §7.2.4)
     uint64_t sdoTransfers = 0, sdoOk = 0, sdoAborted = 0, sdoFailed = 0;
@@ -113,7 +113,7 @@ struct NodeHealth {
     std::vector<EmcyEntry> emcyList;  // the first 1000
     // Occurrences of the findings that rest on this node's frames (frame numbers).
     Occurrences resetAt, lostAt, lateAt, sdoTimeoutAt, ownSdoTimeoutAt, slowSdoAt;
-    uint64_t ownSdoTimeouts = 0;       // of sdoTimeouts: requests sent by the recording side
+    uint64_t ownSdoTimeouts = 0;  // of sdoTimeouts: requests sent by the recording side
     int64_t lastBeatNs = 0;
     uint64_t lastBeatFrame = 0;
     // The story: boot-ups, NMT and CiA 402 state changes, EMCY (the first kStory; storyMore left
@@ -121,26 +121,26 @@ struct NodeHealth {
     static constexpr size_t kStory = 200;
     std::vector<StoryEntry> story;
     uint64_t storyMore = 0;
-    int ds402State = -1;               // canopen::ds402::State as last seen, -1 = no statusword seen
+    int ds402State = -1;  // canopen::ds402::State as last seen, -1 = no statusword seen
     QString outcome;
 };
 
 struct PdoHealth {
     int bus = 0;
     uint32_t cobId = 0;
-    QString service;       // "TPDO1", "RPDO2", ...
+    QString service;  // "TPDO1", "RPDO2", ...
     int node = -1;
     uint64_t frames = 0;
     double rateHz = 0;
     double periodAvgMs = 0, periodMinMs = 0, periodMaxMs = 0;
-    double jitterMs = 0;   // standard deviation of the period
+    double jitterMs = 0;  // standard deviation of the period
     // Sent in a cycle (SYNC or event timer): most intervals (80 %) within ±25 % of the median.
     // Jitter means something only then; an event-driven PDO's intervals are the events'.
     bool cyclic = false;
     bool consumerSeen = true;  // RPDO: the addressed node sent anything at all
     uint64_t firstFrame = 0;
     int64_t firstNs = 0;
-    Occurrences irregularAt;   // cyclic: intervals off the median by over 25 %
+    Occurrences irregularAt;  // cyclic: intervals off the median by over 25 %
 };
 
 struct RpdoNoProducer {
@@ -166,13 +166,13 @@ struct BusHealth {
     std::vector<double> perSecondPct;      // one per second since the first frame
     uint64_t syncs = 0;
     double syncPeriodMs = 0;
-    QString syncPeriodSource;              // "1006h", "observed" or ""
-    uint64_t syncMissing = 0;              // SYNC cycles missing (gaps over 1.5x the period)
+    QString syncPeriodSource;  // "1006h", "observed" or ""
+    uint64_t syncMissing = 0;  // SYNC cycles missing (gaps over 1.5x the period)
     std::vector<RpdoNoProducer> rpdosNoProducer;
     // Node-IDs that got an SDO request or two and never sent anything (a network scan probing
     // 1-127, or a device missing): summarised here, not listed as nodes.
     std::vector<int> silentAddressed;
-    Occurrences silentAt;                  // the requests to them (other masters')
+    Occurrences silentAt;  // the requests to them (other masters')
     // A node-ID another master asked again and again (over 2 requests) that never answered: a
     // device missing. Not a node row (never seen), but its unanswered requests are a finding.
     struct Unanswered {
@@ -181,7 +181,7 @@ struct BusHealth {
         Occurrences at;  // the requests that timed out
     };
     std::vector<Unanswered> unanswered;
-    std::vector<int> ownSilentAddressed;   // the same for requests the recording side sent (Tx)
+    std::vector<int> ownSilentAddressed;  // the same for requests the recording side sent (Tx)
     Occurrences ownSilentAt;
     Occurrences errorFrameAt, syncMissingAt, notCanopenAt;
 };

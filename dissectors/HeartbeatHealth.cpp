@@ -58,8 +58,9 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     t.lastWasBootUp = state == 0;
     const bool commanded = t.lastCommand >= 0 && f.timestampNs - t.lastCommandNs <= kCommandWindowNs;
     auto commandText = [&] {
-        return QStringLiteral("NMT %1 (%2)").arg(canopen::nmtCommandName(static_cast<uint8_t>(t.lastCommand)),
-                                                 t.lastCommandAll ? QStringLiteral("all nodes") : QStringLiteral("node %1").arg(id));
+        return QStringLiteral("NMT %1 (%2)")
+            .arg(canopen::nmtCommandName(static_cast<uint8_t>(t.lastCommand)),
+                 t.lastCommandAll ? QStringLiteral("all nodes") : QStringLiteral("node %1").arg(id));
     };
     if (state == 0) {  // boot-up
         ++t.bootUps;
@@ -69,7 +70,9 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
             ++t.resets;
             t.resetAt.add(f.timestampNs, frameNo_);
         }
-        const QString cause = resetCommanded ? commandText() : wasPresent ? QStringLiteral("node itself (unexpected reset)") : QStringLiteral("power-on");
+        const QString cause = resetCommanded ? commandText()
+                              : wasPresent   ? QStringLiteral("node itself (unexpected reset)")
+                                             : QStringLiteral("power-on");
         if (t.nmtChanges.size() < 1000) t.nmtChanges.push_back({f.timestampNs, t.state, 0, cause});
         t.tell(f.timestampNs, frameNo_, QStringLiteral("boot-up (%1)").arg(cause));
         if (resetCommanded) t.lastCommand = -1;
@@ -93,12 +96,14 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     if (!(t.state == 0 && state == 127 && !commanded))
         t.tell(f.timestampNs, frameNo_,
                QStringLiteral("NMT %1%2 (%3)")
-                   .arg(t.state < 0 ? QString() : canopen::nmtStateName(static_cast<uint8_t>(t.state)) + QStringLiteral(" -> "),
+                   .arg(t.state < 0 ? QString()
+                                    : canopen::nmtStateName(static_cast<uint8_t>(t.state)) + QStringLiteral(" -> "),
                         canopen::nmtStateName(static_cast<uint8_t>(state)), cause));
     t.state = state;
 }
 
-void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus, int64_t nowNs) const {
+void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus,
+                                  int64_t nowNs) const {
     h.errorControl = t.beats == 0 ? QString() : t.guarding ? QStringLiteral("guarding") : QStringLiteral("heartbeat");
     h.beats = t.beats;
     h.bootUps = t.bootUps;

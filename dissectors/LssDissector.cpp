@@ -40,7 +40,8 @@ void dissectLss(DissectCall& c) {
     case l::ConfigureBitTiming:
         if (fromMaster) {
             const int rate = d[1] == 0 ? canopen::lssBitRate(d[2]) : -1;
-            out.summary += rate > 0 ? QStringLiteral(": %1 kbit/s").arg(rate / 1000) : QStringLiteral(": table %1 index %2").arg(d[1]).arg(d[2]);
+            out.summary += rate > 0 ? QStringLiteral(": %1 kbit/s").arg(rate / 1000)
+                                    : QStringLiteral(": table %1 index %2").arg(d[1]).arg(d[2]);
         } else {
             out.summary += d[1] ? QStringLiteral(": error %1").arg(d[1]) : QStringLiteral(": ok");
         }
@@ -55,15 +56,25 @@ void dissectLss(DissectCall& c) {
             out.summary += QStringLiteral(": %1").arg(d[1]);
         }
         break;
-    case l::SwitchSelectiveVendor: case l::SwitchSelectiveProduct: case l::SwitchSelectiveRevision:
-    case l::SwitchSelectiveSerial: case l::IdentifyVendor: case l::IdentifyProduct: case l::IdentifyRevisionLow:
-    case l::IdentifyRevisionHigh: case l::IdentifySerialLow: case l::IdentifySerialHigh:
+    case l::SwitchSelectiveVendor:
+    case l::SwitchSelectiveProduct:
+    case l::SwitchSelectiveRevision:
+    case l::SwitchSelectiveSerial:
+    case l::IdentifyVendor:
+    case l::IdentifyProduct:
+    case l::IdentifyRevisionLow:
+    case l::IdentifyRevisionHigh:
+    case l::IdentifySerialLow:
+    case l::IdentifySerialHigh:
         if (fromMaster) {
             out.addInt("lss.value", value);
             out.summary += QStringLiteral(": %1").arg(hex(value, 8));
         }
         break;
-    case l::InquireVendor: case l::InquireProduct: case l::InquireRevision: case l::InquireSerial:
+    case l::InquireVendor:
+    case l::InquireProduct:
+    case l::InquireRevision:
+    case l::InquireSerial:
         if (!fromMaster) {
             out.addInt("lss.value", value);
             out.summary += QStringLiteral(": %1").arg(hex(value, 8));
@@ -72,14 +83,20 @@ void dissectLss(DissectCall& c) {
     case l::Fastscan:
         if (fromMaster) {
             out.addInt("lss.value", value);
-            out.summary += QStringLiteral(": IDNumber %1, bit %2, sub %3, next %4").arg(hex(value, 8)).arg(d[5]).arg(d[6]).arg(d[7]);
+            out.summary += QStringLiteral(": IDNumber %1, bit %2, sub %3, next %4")
+                               .arg(hex(value, 8))
+                               .arg(d[5])
+                               .arg(d[6])
+                               .arg(d[7]);
         }
         break;
     default: break;
     }
     if (out.wantTree()) {
-        out.item(0, QStringLiteral("Command specifier"), QStringLiteral("%1 (0x%2)").arg(name).arg(cs, 2, 16, QLatin1Char('0')), 0, 1);
-        out.item(0, QStringLiteral("Data"), hexBytes(d + 1, std::max(0, std::min(c.len, 8) - 1), true), 1, std::max(0, std::min(c.len, 8) - 1));
+        out.item(0, QStringLiteral("Command specifier"),
+                 QStringLiteral("%1 (0x%2)").arg(name).arg(cs, 2, 16, QLatin1Char('0')), 0, 1);
+        out.item(0, QStringLiteral("Data"), hexBytes(d + 1, std::max(0, std::min(c.len, 8) - 1), true), 1,
+                 std::max(0, std::min(c.len, 8) - 1));
     }
 }
 

@@ -94,7 +94,8 @@ void NetworkContext::loadDefaults(Bus& bus, int node) {
                 for (int i = 1; i <= cfg.count; ++i) {
                     const od::SubObject* s = it->second.sub(static_cast<uint8_t>(i));
                     auto v = s ? s->resolvedValue(nid) : std::nullopt;
-                    cfg.entries.push_back(makeMapEntry(v && v->toUInt64() ? static_cast<uint32_t>(*v->toUInt64()) : 0, &d));
+                    cfg.entries.push_back(
+                        makeMapEntry(v && v->toUInt64() ? static_cast<uint32_t>(*v->toUInt64()) : 0, &d));
                 }
                 cfg.mappingKnown = true;
             }
@@ -122,13 +123,16 @@ void NetworkContext::pdoCobIdChanged(int, bool, int) { rebuildRoutes(); }
 
 const od::ObjectDictionary* NetworkContext::namesFor(int node) const {
     const auto& nodes = buses_[current_].nodes;
-    if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary) return nodes[static_cast<size_t>(node)].dictionary.get();
+    if (node >= 1 && node < 128 && nodes[static_cast<size_t>(node)].dictionary)
+        return nodes[static_cast<size_t>(node)].dictionary.get();
     if (!genericNames_) return nullptr;
     if (!generic_) const_cast<NetworkContext*>(this)->generic_ = genericDictionary();
     return generic_.get();
 }
 
-DictionaryPtr NetworkContext::genericDictionary() { return eds::DictionaryLibrary::shared().loadShared(QStringLiteral("generic-cia402")); }
+DictionaryPtr NetworkContext::genericDictionary() {
+    return eds::DictionaryLibrary::shared().loadShared(QStringLiteral("generic-cia402"));
+}
 
 namespace {
 uint32_t littleEndian(const QByteArray& b) {
@@ -166,7 +170,8 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
     // The text only for the two string objects: this runs for every confirmed transfer.
     auto text = [&] { return QString::fromLatin1(t.data).section(QChar(0), 0, 0); };
     if (t.index == 0x1000 && t.sub == 0) id.deviceType = v;
-    else if (t.index == 0x1018 && t.sub >= 1 && t.sub <= 3) (t.sub == 1 ? id.vendorId : t.sub == 2 ? id.productCode : id.revision) = v;
+    else if (t.index == 0x1018 && t.sub >= 1 && t.sub <= 3)
+        (t.sub == 1 ? id.vendorId : t.sub == 2 ? id.productCode : id.revision) = v;
     else if (t.index == 0x1008 && t.sub == 0) id.deviceName = text();
     else if (t.index == 0x100A && t.sub == 0) id.softwareVersion = text();
     else return;
@@ -176,7 +181,8 @@ void NetworkContext::applySdoTransfer(int node, const SdoTransferRecord& t) {
         // Keep PDO parameters learned so far: they describe the device better than defaults.
         auto rp = n.rpdo, tp = n.tpdo;
         const bool learned = !rp.empty() || !tp.empty();
-        if (DictionaryPtr d = eds::DictionaryLibrary::shared().loadShared(match)) assignDictionary(node, d, match, false);
+        if (DictionaryPtr d = eds::DictionaryLibrary::shared().loadShared(match))
+            assignDictionary(node, d, match, false);
         if (learned) {
             n.rpdo = std::move(rp);
             n.tpdo = std::move(tp);

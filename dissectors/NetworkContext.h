@@ -21,15 +21,15 @@ struct VendorTable;
 
 // What the context knows about one node, as of the frame being decoded.
 struct NodeState {
-    DictionaryPtr dictionary;     // null = unknown device
+    DictionaryPtr dictionary;  // null = unknown device
     QString dictionaryName;
-    bool userAssigned = false;    // set by the user (never replaced by identity matching)
+    bool userAssigned = false;  // set by the user (never replaced by identity matching)
     const VendorTable* vendor = nullptr;
-    int nmtState = -1;            // last NMT state: 0, 4, 5, 127; -1 = not seen
+    int nmtState = -1;  // last NMT state: 0, 4, 5, 127; -1 = not seen
     int64_t lastNmtNs = 0;
-    int guardToggle = -1;         // last node-guarding toggle bit, -1 = none
+    int guardToggle = -1;  // last node-guarding toggle bit, -1 = none
     bool guardRequested = false;
-    eds::DeviceIdentity identity;  // 1000h, 1018h:01..03, 1008h, 100Ah seen in the trace
+    eds::DeviceIdentity identity;       // 1000h, 1018h:01..03, 1008h, 100Ah seen in the trace
     std::vector<PdoConfig> rpdo, tpdo;  // index = PDO number - 1 (grown on demand)
     SdoChannel sdo;
     bool seen = false;
@@ -101,16 +101,18 @@ private:
     // What the context knows about one bus.
     struct Bus {
         std::array<NodeState, 128> nodes;
-        std::vector<int32_t> routes = std::vector<int32_t>(2048, -1);  // standard id -> node << 12 | tpdo << 11 | (number - 1); -1 = default
+        std::vector<int32_t> routes =
+            std::vector<int32_t>(2048, -1);  // standard id -> node << 12 | tpdo << 11 | (number - 1); -1 = default
     };
     void loadDefaults(Bus& bus, int node);
     static void rebuildRoutes(Bus& bus);
     void rebuildRoutes() { rebuildRoutes(buses_[current_]); }
     void selectBus(int bus);
 
-    std::shared_ptr<const Bus> template_;  // the assigned dictionaries, no frames seen: a new bus starts here (shared by snapshots)
-    std::vector<Bus> buses_;   // index = CanFrame::bus
-    size_t current_ = 0;       // the bus of the frame being dissected
+    std::shared_ptr<const Bus>
+        template_;            // the assigned dictionaries, no frames seen: a new bus starts here (shared by snapshots)
+    std::vector<Bus> buses_;  // index = CanFrame::bus
+    size_t current_ = 0;      // the bus of the frame being dissected
     DictionaryPtr generic_;
     bool genericNames_ = true;
     bool identityMatching_ = true;

@@ -36,7 +36,8 @@ double IntervalStats::medianMs() const {
     uint64_t seen = 0;
     for (const Bucket& b : buckets) {
         seen += b.count;
-        if (seen * 2 >= count) return static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;  // the mean of the median bucket
+        if (seen * 2 >= count)
+            return static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;  // the mean of the median bucket
     }
     return 0;
 }
@@ -118,10 +119,14 @@ void NetworkHealth::add(const CanFrame& f, const Dissection& d, const NetworkCon
     case Service::SdoResponse:
         if (d.node >= 1 && d.node < 128) addSdo(f, d, ctx);
         break;
-    case Service::Tpdo1: case Service::Tpdo2: case Service::Tpdo3: case Service::Tpdo4:
-    case Service::Rpdo1: case Service::Rpdo2: case Service::Rpdo3: case Service::Rpdo4:
-        addPdo(f, d, b, ctx);
-        break;
+    case Service::Tpdo1:
+    case Service::Tpdo2:
+    case Service::Tpdo3:
+    case Service::Tpdo4:
+    case Service::Rpdo1:
+    case Service::Rpdo2:
+    case Service::Rpdo3:
+    case Service::Rpdo4: addPdo(f, d, b, ctx); break;
     default: break;
     }
 }
@@ -145,7 +150,9 @@ void NetworkHealth::addEmcy(const CanFrame& f, int id, const NetworkContext& ctx
     if (t.vendor && !e.reset) e.vendor = t.vendor->decodeEmcy(f.data.data(), f.len, e.code);
     t.tell(e.timeNs, e.frame,
            e.reset ? QStringLiteral("EMCY error reset")
-                   : QStringLiteral("EMCY %1h %2%3").arg(e.code, 4, 16, QLatin1Char('0')).arg(e.text, e.vendor.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(e.vendor)));
+                   : QStringLiteral("EMCY %1h %2%3")
+                         .arg(e.code, 4, 16, QLatin1Char('0'))
+                         .arg(e.text, e.vendor.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(e.vendor)));
     t.emcyList.push_back(std::move(e));
 }
 
@@ -178,7 +185,8 @@ HealthReport NetworkHealth::report(const NetworkContext* ctx, int64_t nowNs) con
                     NodeHealth h;
                     h.node = id;
                     fillSdo(h, *t, now);
-                    r.bus.unanswered.push_back({id, t->sdoRequests - t->ownSdoRequests, h.sdoTimeouts - h.ownSdoTimeouts, h.sdoTimeoutAt});
+                    r.bus.unanswered.push_back(
+                        {id, t->sdoRequests - t->ownSdoRequests, h.sdoTimeouts - h.ownSdoTimeouts, h.sdoTimeoutAt});
                 } else if (t->sdoRequests > t->ownSdoRequests) {
                     r.bus.silentAddressed.push_back(id);
                     merge(r.bus.silentAt, t->sdoRequestAt);

@@ -30,9 +30,9 @@ struct IntervalStats {
     };
     uint64_t count = 0;
     int64_t minNs = 0, maxNs = 0;
-    int64_t shiftNs = 0;      // the first interval
-    int64_t sumDevNs = 0;     // of (interval - shiftNs)
-    double sumSqDevNs = 0;    // of (interval - shiftNs) squared
+    int64_t shiftNs = 0;          // the first interval
+    int64_t sumDevNs = 0;         // of (interval - shiftNs)
+    double sumSqDevNs = 0;        // of (interval - shiftNs) squared
     std::vector<Bucket> buckets;  // by bucketOf(ns)
 
     // Inline: every PDO and SYNC frame adds one.
@@ -50,7 +50,10 @@ struct IntervalStats {
         ++buckets[b].count;
         buckets[b].sumNs += ns;
     }
-    double averageMs() const { return count ? (static_cast<double>(shiftNs) + static_cast<double>(sumDevNs) / static_cast<double>(count)) / 1e6 : 0; }
+    double averageMs() const {
+        return count ? (static_cast<double>(shiftNs) + static_cast<double>(sumDevNs) / static_cast<double>(count)) / 1e6
+                     : 0;
+    }
     double jitterMs() const;  // standard deviation; 0 when empty
     double medianMs() const;  // 0 when empty
     // The share (0..1) of intervals within `tolerance` (0.25 = ±25 %) of `periodMs`.
@@ -112,7 +115,8 @@ private:
         int64_t prevNs = 0;
         std::vector<Mark> marks;
         void add(int64_t interval, int64_t ns, uint64_t frame) {
-            if (prevNs > 0 && (interval * 4 > prevNs * 5 || interval * 4 < prevNs * 3) && marks.size() < 4 * Occurrences::kMaxFrames) [[unlikely]]
+            if (prevNs > 0 && (interval * 4 > prevNs * 5 || interval * 4 < prevNs * 3) &&
+                marks.size() < 4 * Occurrences::kMaxFrames) [[unlikely]]
                 marks.push_back({frame, ns, interval});
             prevNs = interval;
         }
@@ -121,30 +125,30 @@ private:
         Occurrences select(double periodMs, double over, bool onlyLonger) const;
     };
     struct NodeTrack {
-        bool present = false;   // the node sent something (heartbeat, TPDO, SDO response, EMCY)
+        bool present = false;  // the node sent something (heartbeat, TPDO, SDO response, EMCY)
         uint64_t frames = 0;
         const VendorTable* vendor = nullptr;
         // heartbeat / guarding
         bool guarding = false;
         uint64_t beats = 0;
         int64_t lastBeatNs = 0;
-        bool lastWasBootUp = false;        // the frame at lastBeatNs was a boot-up, not a beat
+        bool lastWasBootUp = false;  // the frame at lastBeatNs was a boot-up, not a beat
         uint64_t lastBeatFrame = 0;
-        std::vector<int64_t> beatGapsNs;   // between beats; none from a boot-up to the first beat
+        std::vector<int64_t> beatGapsNs;      // between beats; none from a boot-up to the first beat
         std::vector<uint64_t> beatGapFrames;  // the frame that ended each gap, and its time
         std::vector<int64_t> beatGapEndNs;
         Occurrences resetAt;
         int state = -1;
         uint64_t bootUps = 0, resets = 0, nmtCommands = 0;
         int64_t lastCommandNs = 0;
-        int lastCommand = -1;   // NMT command specifier addressed to the node or all
+        int lastCommand = -1;  // NMT command specifier addressed to the node or all
         bool lastCommandAll = false;
         std::vector<NmtChange> nmtChanges;
-        int heartbeatMs = -1;   // 1017h written or read in the trace, -1 = not seen
+        int heartbeatMs = -1;  // 1017h written or read in the trace, -1 = not seen
         int64_t heartbeatSetNs = 0;
         // SDO
         bool sdoPending = false;
-        bool sdoPendingOwn = false;        // the waiting request was sent by the recording side (Tx)
+        bool sdoPendingOwn = false;  // the waiting request was sent by the recording side (Tx)
         uint64_t sdoRequestFrame = 0;
         int64_t sdoRequestNs = 0;
         uint64_t ownSdoRequests = 0;
@@ -203,14 +207,14 @@ private:
             buses_.resize(static_cast<size_t>(bus) + 1);
         return buses_[static_cast<size_t>(bus)];
     }
-    void addErrorControl(const CanFrame& f, int node, BusTrack& b);   // HeartbeatHealth.cpp
-    void addNmtCommand(const CanFrame& f, BusTrack& b);                // HeartbeatHealth.cpp
+    void addErrorControl(const CanFrame& f, int node, BusTrack& b);                  // HeartbeatHealth.cpp
+    void addNmtCommand(const CanFrame& f, BusTrack& b);                              // HeartbeatHealth.cpp
     void addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);  // SdoHealth.cpp
     void addEmcy(const CanFrame& f, int node, const NetworkContext& ctx);
     void addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, const NetworkContext& ctx);  // PdoHealth.cpp
-    void addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw);                     // Ds402Story.cpp
-    void fillStory(NodeHealth& h, const NodeTrack& t) const;                              // Ds402Story.cpp
-    void addSync(const CanFrame& f, BusTrack& b);                      // PdoHealth.cpp
+    void addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw);                             // Ds402Story.cpp
+    void fillStory(NodeHealth& h, const NodeTrack& t) const;                                      // Ds402Story.cpp
+    void addSync(const CanFrame& f, BusTrack& b);                                                 // PdoHealth.cpp
     void fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus, int64_t nowNs) const;
     void fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) const;
     static void timedOut(NodeTrack& t);  // SdoHealth.cpp: the waiting request got no answer

@@ -47,10 +47,13 @@ void dissectNmt(DissectCall& c) {
     out.addInt("nmt.cs", cs);
     out.addInt("nmt.node", target);
     const QString name = canopen::nmtCommandName(cs);
-    out.summary = QStringLiteral("NMT %1, %2").arg(name, target ? QStringLiteral("node %1").arg(target) : QStringLiteral("all nodes"));
+    out.summary = QStringLiteral("NMT %1, %2")
+                      .arg(name, target ? QStringLiteral("node %1").arg(target) : QStringLiteral("all nodes"));
     if (out.wantTree()) {
-        out.item(0, QStringLiteral("Command specifier"), QStringLiteral("%1 (0x%2)").arg(name).arg(cs, 2, 16, QLatin1Char('0')), 0, 1);
-        out.item(0, QStringLiteral("Node-ID"), target ? QString::number(target) : QStringLiteral("0 (all nodes)"), 1, 1);
+        out.item(0, QStringLiteral("Command specifier"),
+                 QStringLiteral("%1 (0x%2)").arg(name).arg(cs, 2, 16, QLatin1Char('0')), 0, 1);
+        out.item(0, QStringLiteral("Node-ID"), target ? QString::number(target) : QStringLiteral("0 (all nodes)"), 1,
+                 1);
     }
 }
 

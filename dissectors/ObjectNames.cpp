@@ -18,7 +18,8 @@ QString key(std::uint16_t index, int sub) {
 
 }  // namespace
 
-QString localObjectName(const QString& bundledName, std::uint16_t index, int sub, const QString& edsName, const QString& lang) {
+QString localObjectName(const QString& bundledName, std::uint16_t index, int sub, const QString& edsName,
+                        const QString& lang) {
     if (bundledName.isEmpty() || (lang != u"zh_TW" && lang != u"zh_CN")) return edsName;
     const SidecarSections& all = sidecarSections(QStringLiteral("objectNames"));
     const auto table = all.constFind(bundledName);
@@ -42,7 +43,9 @@ QString localDisplayName(const od::ObjectDictionary& dict, std::uint16_t index, 
     const QString name = localParameterName(localObjectName(dict.bundledName, index, -1, o->name, lang), lang);
     if (!o->isComposite()) return name;
     const od::SubObject* s = o->sub(sub);
-    return s ? name + QStringLiteral(": ") + localParameterName(localObjectName(dict.bundledName, index, sub, s->name, lang), lang) : name;
+    return s ? name + QStringLiteral(": ") +
+                   localParameterName(localObjectName(dict.bundledName, index, sub, s->name, lang), lang)
+             : name;
 }
 
 }  // namespace coscope::dissect

@@ -19,7 +19,8 @@ namespace coscope::dissect {
 // name's axis suffix "(axis 2)" becomes "（第 2 軸）". `edsName` is returned unchanged for
 // "en", for a dictionary a user loaded (bundledName empty: his file's words stay as written) and
 // for objects no name is known for. `sub` -1 names the object itself.
-QString localObjectName(const QString& bundledName, std::uint16_t index, int sub, const QString& edsName, const QString& lang);
+QString localObjectName(const QString& bundledName, std::uint16_t index, int sub, const QString& edsName,
+                        const QString& lang);
 
 // ObjectDictionary::displayName() in `lang`: "Object" or "Object: sub" with both parts
 // through localObjectName(), vendor parameter names through localParameterName().

@@ -10,7 +10,8 @@ namespace coscope::dissect {
 QString localParameterName(const QString& edsName, const QString& lang) {
     if (lang != u"zh_TW" && lang != u"zh_CN") return edsName;
     // "P3-00 ADR Node-ID …" (Delta: code, mnemonic in capitals, text) or "H02-00 Control mode …".
-    static const QRegularExpression code(QStringLiteral(R"(^((?:P\d-\d\d|H[0-9A-F]{2}-\d\d)(?: [A-Z][A-Z0-9]+(?= ))?) )"));
+    static const QRegularExpression code(
+        QStringLiteral(R"(^((?:P\d-\d\d|H[0-9A-F]{2}-\d\d)(?: [A-Z][A-Z0-9]+(?= ))?) )"));
     const QRegularExpressionMatch m = code.match(edsName);
     if (!m.hasMatch()) return edsName;
     const QString key = edsName.left(edsName.indexOf(u' '));

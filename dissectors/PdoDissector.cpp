@@ -54,7 +54,8 @@ QString cachedDs402Text(uint16_t index, uint64_t raw) {
 
 // Only 6040h/6041h/6060h/6061h (any axis) have a CiA 402 meaning (Ds402Meaning.h).
 bool hasDs402Meaning(const PdoMapEntry& e) {
-    return e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 && ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60);
+    return e.index >= 0x6000 && e.index <= 0x67FF && e.sub == 0 &&
+           ((e.index & 0x7FE) == 0x40 || (e.index & 0x7FE) == 0x60);
 }
 
 // An integer without a scale factor (nearly every PDO signal): its value exactly as
@@ -105,7 +106,8 @@ void decodeInteger(const PdoMapEntry& e, const uint8_t* data, int at, PdoSignal&
 // Calls f(entry, bit offset, signal) for each mapped object of the frame, dummies and what lies
 // past the payload left out; the signal (Dissection::addSignal) carries its place.
 template <typename F>
-void forEachSignal(DissectCall& c, const PdoConfig& cfg, F&& f) {  // by reference: a capture block passed by value on the stack stalls its reload
+void forEachSignal(DissectCall& c, const PdoConfig& cfg,
+                   F&& f) {  // by reference: a capture block passed by value on the stack stalls its reload
     int bit = 0;
     for (int i = 0; i < cfg.count; ++i) {
         const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
@@ -131,7 +133,9 @@ bool isInteger(const PdoMapEntry& e) {
 bool onlyIntegers(const PdoConfig& cfg) {
     for (int i = 0; i < cfg.count; ++i) {
         const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
-        if (!e.dummy && e.bits != 0 && (!isInteger(e) || e.label.isEmpty() || e.label.size() > 0xFFFF || e.unitText.size() > 0xFFFF)) return false;
+        if (!e.dummy && e.bits != 0 &&
+            (!isInteger(e) || e.label.isEmpty() || e.label.size() > 0xFFFF || e.unitText.size() > 0xFFFF))
+            return false;
     }
     return true;
 }
@@ -148,7 +152,8 @@ void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue
         v.unitLength = static_cast<uint16_t>(e.unitText.size());
         decodeInteger(e, c.data, at, sig, v);
         if (hasDs402Meaning(e)) {
-            const uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
+            const uint64_t raw =
+                sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             if (out.wantFields) {
                 const int byteOff = at / 8;
                 ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, (at + e.bits + 7) / 8 - byteOff);  // the fields
@@ -169,7 +174,8 @@ void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg
     if (!mapped) {
         w.put(u' ');
         w.put(hexBytes(c.data, c.len, true));
-        if (out.wantTree()) out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
+        if (out.wantTree())
+            out.item(0, QStringLiteral("Data (mapping not known)"), hexBytes(c.data, c.len, true), 0, c.len);
         return;
     }
     bool first = true;
@@ -191,16 +197,23 @@ void writePdoText(SummaryBuffer::Cursor& w, DissectCall& c, const PdoConfig* cfg
         } else {
             text = decodeBits(e.type, e.typeKnown, c.data, at, e.bits, sig.value, e.unit, e.factor);
             if (e.hex && (sig.value.kind == FlatField::Kind::UInt || sig.value.kind == FlatField::Kind::Int))
-                text = od::hexValueText(e.index, e.sub, sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u, e.bits);
+                text = od::hexValueText(
+                    e.index, e.sub,
+                    sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u, e.bits);
             w.put(text);
         }
         const int byteOff = at / 8;
         const int byteLen = (at + e.bits + 7) / 8 - byteOff;
         if (out.wantTree())
-            out.item(0, QStringLiteral("%1:%2 %3").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).arg(e.name), text,
-                     byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
+            out.item(0,
+                     QStringLiteral("%1:%2 %3")
+                         .arg(e.index, 4, 16, QLatin1Char('0'))
+                         .arg(e.sub, 2, 16, QLatin1Char('0'))
+                         .arg(e.name),
+                     text, byteOff, byteLen, (at % 8 || e.bits % 8) ? at % 8 : -1, (at % 8 || e.bits % 8) ? e.bits : 0);
         if (hasDs402Meaning(e)) {
-            const uint64_t raw = sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
+            const uint64_t raw =
+                sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             NodeState& node = c.ctx.nodeForEdit(c.node);
             const QString m = ds402Meaning(e.index, e.sub, raw, out, 1, byteOff, byteLen, ds402ModeOf(node, e.index));
             ds402LearnMode(node, e.index, e.sub, raw);
@@ -224,13 +237,20 @@ void dissectPdo(DissectCall& c) {
         return;
     }
     const PdoConfig* cfg = c.ctx.node(c.node).findPdo(tpdo, out.pdoNumber);
-    const bool mapped = cfg && cfg->mappingKnown && cfg->count > 0 && static_cast<int>(cfg->entries.size()) >= cfg->count;
+    const bool mapped =
+        cfg && cfg->mappingKnown && cfg->count > 0 && static_cast<int>(cfg->entries.size()) >= cfg->count;
     if (cfg && cfg->cobIdKnown && !cfg->valid() && !mapped)
-        out.warn(QStringLiteral("%1 of node %2 is not valid (COB-ID 0x%3) but was seen on the bus").arg(kindText()).arg(c.node).arg(cfg->cobId, 8, 16, QLatin1Char('0')));
+        out.warn(QStringLiteral("%1 of node %2 is not valid (COB-ID 0x%3) but was seen on the bus")
+                     .arg(kindText())
+                     .arg(c.node)
+                     .arg(cfg->cobId, 8, 16, QLatin1Char('0')));
     if (mapped) {
         const int bits = cfg->mappedBits();
         if ((bits + 7) / 8 > c.len)
-            out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3").arg(kindText()).arg(c.len).arg((bits + 7) / 8));
+            out.warn(QStringLiteral("%1 has %2 bytes but its mapping needs %3")
+                         .arg(kindText())
+                         .arg(c.len)
+                         .arg((bits + 7) / 8));
     }
     if (!out.wantText()) return;
     // namesFrom goes with the fields: the GUI names the signals by it.

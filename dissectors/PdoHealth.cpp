@@ -12,7 +12,6 @@ namespace coscope::dissect {
 
 using canopen::Service;
 
-
 void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, const NetworkContext& ctx) {
     int32_t* slot;
     if (f.isExtended()) {
@@ -51,7 +50,8 @@ void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, 
             p.swConfig = cfg;
             p.swMapCount = count;
             p.swBit = -1;
-            for (int i = 0, bit = 0; i < count && static_cast<size_t>(i) < cfg->entries.size(); bit += cfg->entries[static_cast<size_t>(i)].bits, ++i) {
+            for (int i = 0, bit = 0; i < count && static_cast<size_t>(i) < cfg->entries.size();
+                 bit += cfg->entries[static_cast<size_t>(i)].bits, ++i) {
                 const PdoMapEntry& e = cfg->entries[static_cast<size_t>(i)];
                 if (!e.dummy && e.index == 0x6041 && e.sub == 0 && e.bits == 16) {
                     p.swBit = bit;
@@ -61,7 +61,9 @@ void NetworkHealth::addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, 
         }
         if (p.swBit >= 0 && p.swBit % 8 == 0 && p.swBit / 8 + 2 <= f.len) {
             const int at = p.swBit / 8;
-            addStatusword(t, f, static_cast<uint16_t>(f.data[static_cast<size_t>(at)] | f.data[static_cast<size_t>(at) + 1] << 8));
+            addStatusword(
+                t, f,
+                static_cast<uint16_t>(f.data[static_cast<size_t>(at)] | f.data[static_cast<size_t>(at) + 1] << 8));
         }
     }
 }
@@ -103,7 +105,9 @@ void NetworkHealth::fillPdos(HealthReport& r, const NetworkContext* ctx) const {
         }
         r.pdos.push_back(std::move(h));
     }
-    std::sort(r.pdos.begin(), r.pdos.end(), [](const PdoHealth& a, const PdoHealth& b) { return a.bus != b.bus ? a.bus < b.bus : a.cobId < b.cobId; });
+    std::sort(r.pdos.begin(), r.pdos.end(), [](const PdoHealth& a, const PdoHealth& b) {
+        return a.bus != b.bus ? a.bus < b.bus : a.cobId < b.cobId;
+    });
     if (!ctx) return;
     // RPDOs a present node has valid in its mapping (dictionary defaults or what the trace wrote)
     // that no frame on the bus carries: the node waits for data nobody produces.

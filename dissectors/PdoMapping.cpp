@@ -34,7 +34,8 @@ PdoMapEntry makeMapEntry(uint32_t raw, const od::ObjectDictionary* dict) {
     e.hex = e.hexKind != od::HexKind::None;
     e.cls = e.typeKnown ? od::typeClass(e.type) : od::TypeClass::Unsigned;
     if (e.name.isEmpty())
-        e.name = QStringLiteral("%1:%2").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).toUpper();
+        e.name =
+            QStringLiteral("%1:%2").arg(e.index, 4, 16, QLatin1Char('0')).arg(e.sub, 2, 16, QLatin1Char('0')).toUpper();
     // Copied into every decoded signal of every frame: without reference counting.
     e.name = od::permanentText(e.name);
     e.unit = od::permanentText(e.unit);

@@ -22,10 +22,10 @@ struct PdoMapEntry {
     uint8_t sub = 0;
     uint8_t bits = 0;
     od::DataType type = od::DataType::Unsigned32;
-    bool typeKnown = false;  // from the dictionary; otherwise unsigned of `bits`
-    bool dummy = false;      // index 0001h..0007h: a gap (CiA 301 §7.4.7.1 dummy mapping)
-    bool hex = false;        // written in hex (controlword, statusword…: od/NumberNotation.h)
-    od::HexKind hexKind = od::HexKind::None;       // od::hexKindFor(index, sub); hex = not None
+    bool typeKnown = false;                       // from the dictionary; otherwise unsigned of `bits`
+    bool dummy = false;                           // index 0001h..0007h: a gap (CiA 301 §7.4.7.1 dummy mapping)
+    bool hex = false;                             // written in hex (controlword, statusword…: od/NumberNotation.h)
+    od::HexKind hexKind = od::HexKind::None;      // od::hexKindFor(index, sub); hex = not None
     od::TypeClass cls = od::TypeClass::Unsigned;  // od::typeClass(type) when typeKnown, else Unsigned
     QString name;
     QString unit;
@@ -39,9 +39,9 @@ struct PdoMapEntry {
 // Communication and mapping parameters of one PDO (1400h/1600h for RPDOs, 1800h/1A00h for TPDOs).
 struct PdoConfig {
     bool cobIdKnown = false;
-    uint32_t cobId = 0;        // 1400h/1800h sub 1 as written (bit 31 = not valid, bit 29 = 29-bit id)
+    uint32_t cobId = 0;  // 1400h/1800h sub 1 as written (bit 31 = not valid, bit 29 = 29-bit id)
     bool mappingKnown = false;
-    uint8_t count = 0;         // sub 0 of the mapping object
+    uint8_t count = 0;                 // sub 0 of the mapping object
     std::vector<PdoMapEntry> entries;  // subs 1..64 as known (index 0 = sub 1)
 
     bool valid() const { return cobIdKnown && !(cobId & 0x80000000u); }

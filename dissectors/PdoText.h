@@ -16,8 +16,8 @@ namespace coscope::dissect {
 // it points to are permanent (od::permanentText), so a record outlives any change of mapping.
 struct PdoTextValue {
     enum class Form : uint8_t { Hex, Signed, Unsigned };
-    const char16_t* label = nullptr;  // ", " name " = " (PdoMapEntry::label; the first value drops the comma)
-    const char16_t* unit = nullptr;   // " " unit (PdoMapEntry::unitText), or none
+    const char16_t* label = nullptr;    // ", " name " = " (PdoMapEntry::label; the first value drops the comma)
+    const char16_t* unit = nullptr;     // " " unit (PdoMapEntry::unitText), or none
     const char16_t* meaning = nullptr;  // CiA 402 meaning ("Operation enabled"), or none
     uint16_t labelLength = 0, unitLength = 0, meaningLength = 0;
     Form form = Form::Unsigned;

@@ -40,7 +40,8 @@ QString RawSignal::problem() const {
     if (type == Type::Float && length != 32 && length != 64) return QStringLiteral("a float is 32 or 64 bits");
     if (startBit < 0 || startBit > 511) return QStringLiteral("start bit must be 0..511");
     if (bytesNeeded() > 64) return QStringLiteral("the signal does not fit in 64 bytes");
-    if (factor == 0 || !std::isfinite(factor) || !std::isfinite(offset)) return QStringLiteral("factor must be a non-zero number");
+    if (factor == 0 || !std::isfinite(factor) || !std::isfinite(offset))
+        return QStringLiteral("factor must be a non-zero number");
     return {};
 }
 
@@ -76,8 +77,7 @@ std::optional<double> RawSignal::rawValue(const uint8_t* data, int len) const {
             return d;
         }
         return std::nullopt;
-    default:
-        return double(raw);
+    default: return double(raw);
     }
 }
 
@@ -97,7 +97,8 @@ std::optional<RawSignal> RawSignal::parse(const QString& spec, QString* error) {
     RawSignal s;
     s.name = spec.left(eq).trimmed();
     const QStringList f = spec.mid(eq + 1).split(u':');
-    if (f.size() < 4 || f.size() > 7) return fail(QStringLiteral("expected NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]"));
+    if (f.size() < 4 || f.size() > 7)
+        return fail(QStringLiteral("expected NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]"));
     QString cob = f[0].trimmed().toLower();
     if (cob.size() > 2 && cob.endsWith(u'x') && cob.startsWith(QStringLiteral("0x"))) {
         s.extended = true;
@@ -132,8 +133,12 @@ std::optional<RawSignal> RawSignal::parse(const QString& spec, QString* error) {
 }
 
 QString RawSignal::spec() const {
-    QString t = QStringLiteral("%1=0x%2%3:%4:%5:%6%7").arg(name, QString::number(cobId, 16).toUpper(), extended && cobId <= 0x7FF ? QStringLiteral("x") : QString())
-                    .arg(startBit).arg(length).arg(typeLetter(type), order == Order::Motorola ? QStringLiteral("@0") : QString());
+    QString t = QStringLiteral("%1=0x%2%3:%4:%5:%6%7")
+                    .arg(name, QString::number(cobId, 16).toUpper(),
+                         extended && cobId <= 0x7FF ? QStringLiteral("x") : QString())
+                    .arg(startBit)
+                    .arg(length)
+                    .arg(typeLetter(type), order == Order::Motorola ? QStringLiteral("@0") : QString());
     if (factor != 1.0 || offset != 0.0 || !unit.isEmpty()) t += u':' + number(factor);
     if (offset != 0.0 || !unit.isEmpty()) t += u':' + number(offset);
     if (!unit.isEmpty()) t += u':' + unit;

@@ -30,8 +30,9 @@ QString abortText(const NodeState& n, uint32_t code) {
 // "6041:00 Statusword": index and sub-index in upper-case hex, then the name if any.
 void putObjectLabel(SummaryBuffer::Cursor& w, uint16_t index, uint8_t sub, const QString& name) {
     static const char16_t digits[] = u"0123456789ABCDEF";
-    const char16_t label[7] = {digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15],
-                               u':', digits[sub >> 4], digits[sub & 15]};
+    const char16_t label[7] = {
+        digits[index >> 12], digits[(index >> 8) & 15], digits[(index >> 4) & 15], digits[index & 15], u':',
+        digits[sub >> 4],    digits[sub & 15]};
     w.put(label, 7);
     if (!name.isEmpty()) {
         w.put(u' ');
@@ -41,7 +42,8 @@ void putObjectLabel(SummaryBuffer::Cursor& w, uint16_t index, uint8_t sub, const
 
 // Types the value of an object with the dictionary, when the entry is known.
 // COB-IDs, mapping entries, control/statuswords… in hex (od/NumberNotation.h), the rest decimal.
-QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub, const uint8_t* data, int len, FlatField& v) {
+QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub, const uint8_t* data, int len,
+                   FlatField& v) {
     const od::SubObject* e = dict ? dict->entry(index, sub) : nullptr;
     QString text;
     if (e) {
@@ -60,8 +62,8 @@ QString typedValue(const od::ObjectDictionary* dict, uint16_t index, uint8_t sub
 }
 
 // The line of a frame by its command: "SDO read node 1 6041:00 Statusword = 1637h", etc.
-void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node, const QString& cs, const QString& name,
-                  const QString& valueText, const NodeState& n) {
+void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node, const QString& cs,
+                  const QString& name, const QString& valueText, const NodeState& n) {
     // "VERB node N OBJECT NAME" for the initiate lines, then the value or the announced size.
     const auto initiate = [&](const auto& verb, bool data) {
         w.put(verb);
@@ -97,10 +99,18 @@ void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node
         break;
     case SdoCommand::DownloadSegmentRequest:
     case SdoCommand::UploadSegmentResponse:
-        w.put(QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5").arg(cs, who()).arg(int(f.toggle)).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        w.put(QStringLiteral("SDO %1 %2, toggle %3, %4 bytes%5")
+                  .arg(cs, who())
+                  .arg(int(f.toggle))
+                  .arg(f.data.size())
+                  .arg(f.last ? QStringLiteral(", last") : QString()));
         break;
     case SdoCommand::BlockSegment:
-        w.put(QStringLiteral("SDO block segment %1 %2, %3 bytes%4").arg(f.seqno).arg(who()).arg(f.data.size()).arg(f.last ? QStringLiteral(", last") : QString()));
+        w.put(QStringLiteral("SDO block segment %1 %2, %3 bytes%4")
+                  .arg(f.seqno)
+                  .arg(who())
+                  .arg(f.data.size())
+                  .arg(f.last ? QStringLiteral(", last") : QString()));
         break;
     case SdoCommand::BlockDownloadInitiate:
     case SdoCommand::BlockUploadInitiate:
@@ -112,10 +122,15 @@ void writeSummary(SummaryBuffer::Cursor& w, const canopen::SdoFrame& f, int node
         if (f.sizeIndicated) w.put(QStringLiteral(", %1 bytes").arg(f.size));
         break;
     case SdoCommand::BlockDownloadAck:
-    case SdoCommand::BlockUploadAck: w.put(QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who()).arg(f.ackSeq).arg(f.blockSize)); break;
+    case SdoCommand::BlockUploadAck:
+        w.put(QStringLiteral("SDO %1 %2, ackseq %3, block size %4").arg(cs, who()).arg(f.ackSeq).arg(f.blockSize));
+        break;
     case SdoCommand::BlockDownloadEnd:
     case SdoCommand::BlockUploadEnd:
-        w.put(QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4").arg(cs, who()).arg(f.unusedBytes).arg(f.crc, 4, 16, QLatin1Char('0')));
+        w.put(QStringLiteral("SDO %1 %2, %3 unused bytes, CRC 0x%4")
+                  .arg(cs, who())
+                  .arg(f.unusedBytes)
+                  .arg(f.crc, 4, 16, QLatin1Char('0')));
         break;
     case SdoCommand::Invalid: w.put(QStringLiteral("SDO %1 (invalid)").arg(who())); break;
     default: w.put(QStringLiteral("SDO %1 %2").arg(cs, who())); break;
@@ -149,12 +164,14 @@ void dissectSdo(DissectCall& c) {
     if (dict) out.namesFrom = dict->bundledName;
     // The value an expedited initiate frame carries, typed once: an expedited upload ends its
     // transfer on this frame with the same bytes, so the transfer's text is the same.
-    const bool carriesValue = f.expedited && (f.command == SdoCommand::InitiateDownloadRequest || f.command == SdoCommand::InitiateUploadResponse);
+    const bool carriesValue = f.expedited && (f.command == SdoCommand::InitiateDownloadRequest ||
+                                              f.command == SdoCommand::InitiateUploadResponse);
     const bool haveValue = carriesValue && !f.data.isEmpty() && out.wantText();
     QString valueTextOut;
     FlatField value;
     if (haveValue)
-        valueTextOut = typedValue(dict, f.index, f.sub, reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), value);
+        valueTextOut = typedValue(dict, f.index, f.sub, reinterpret_cast<const uint8_t*>(f.data.constData()),
+                                  static_cast<int>(f.data.size()), value);
     if (out.hasTransfer) {
         SdoTransferRecord& t = out.transfer;
         if (t.status == QLatin1String("aborted")) t.abortText = abortText(n, t.abortCode);
@@ -167,7 +184,8 @@ void dissectSdo(DissectCall& c) {
                 t.valueText = valueTextOut;
             } else {
                 FlatField v;
-                t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<int>(t.data.size()), v);
+                t.valueText = typedValue(dict, t.index, t.sub, reinterpret_cast<const uint8_t*>(t.data.constData()),
+                                         static_cast<int>(t.data.size()), v);
             }
         }
         c.ctx.applySdoTransfer(c.node, t);
@@ -176,7 +194,8 @@ void dissectSdo(DissectCall& c) {
 
     const QString cs = canopen::sdoCommandName(f.command);
     out.addText("sdo.cs", cs);
-    const QString name = f.hasMux && dict && dict->entry(f.index, f.sub) ? dict->displayName(f.index, f.sub) : QString();
+    const QString name =
+        f.hasMux && dict && dict->entry(f.index, f.sub) ? dict->displayName(f.index, f.sub) : QString();
     if (f.hasMux) {
         out.addInt("sdo.index", f.index);
         out.addInt("sdo.sub", f.sub);
@@ -204,21 +223,29 @@ void dissectSdo(DissectCall& c) {
     default: break;
     }
     if (out.wantTree()) {
-        out.item(0, QStringLiteral("Command"), QStringLiteral("%1 (0x%2)").arg(cs).arg(c.len ? c.data[0] : 0, 2, 16, QLatin1Char('0')), 0, 1);
+        out.item(0, QStringLiteral("Command"),
+                 QStringLiteral("%1 (0x%2)").arg(cs).arg(c.len ? c.data[0] : 0, 2, 16, QLatin1Char('0')), 0, 1);
         if (f.hasMux) {
-            out.item(0, QStringLiteral("Index"), hex(f.index, 4) + (name.isEmpty() ? QString() : QStringLiteral(" ") + name), 1, 2);
+            out.item(0, QStringLiteral("Index"),
+                     hex(f.index, 4) + (name.isEmpty() ? QString() : QStringLiteral(" ") + name), 1, 2);
             out.item(0, QStringLiteral("Sub-index"), hex(f.sub, 2), 3, 1);
         }
-        if (f.command == SdoCommand::Abort) out.item(0, QStringLiteral("Abort code"), hex(f.abortCode, 8) + u' ' + abortText(n, f.abortCode), 4, 4);
+        if (f.command == SdoCommand::Abort)
+            out.item(0, QStringLiteral("Abort code"), hex(f.abortCode, 8) + u' ' + abortText(n, f.abortCode), 4, 4);
         else if (carriesValue) out.item(0, QStringLiteral("Value"), valueTextOut, 4, static_cast<int>(f.data.size()));
-        else if (!f.data.isEmpty()) out.item(0, QStringLiteral("Data"), hexBytes(reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), true), 1, static_cast<int>(f.data.size()));
+        else if (!f.data.isEmpty())
+            out.item(
+                0, QStringLiteral("Data"),
+                hexBytes(reinterpret_cast<const uint8_t*>(f.data.constData()), static_cast<int>(f.data.size()), true),
+                1, static_cast<int>(f.data.size()));
     }
     // The CiA 402 meaning of a control- or statusword value (adds its fields).
     QString meaning;
     if (carriesValue && !f.data.isEmpty()) {
         uint64_t raw = 0;
         for (int i = 0; i < f.data.size() && i < 8; ++i) raw |= uint64_t(uint8_t(f.data[i])) << (8 * i);
-        meaning = ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()), ds402ModeOf(n, f.index));
+        meaning =
+            ds402Meaning(f.index, f.sub, raw, out, 1, 4, static_cast<int>(f.data.size()), ds402ModeOf(n, f.index));
         ds402LearnMode(n, f.index, f.sub, raw);
     }
 

@@ -54,9 +54,11 @@ void NetworkHealth::addSdo(const CanFrame& f, const Dissection& d, const Network
             t.heartbeatSetNs = now;
         }
         // The statusword read (or written by a test tool): the node's CiA 402 state.
-        if (x.index == 0x6041 && x.sub == 0 && x.data.size() >= 2) addStatusword(t, f, static_cast<uint16_t>(uint8_t(x.data[0]) | uint8_t(x.data[1]) << 8));
+        if (x.index == 0x6041 && x.sub == 0 && x.data.size() >= 2)
+            addStatusword(t, f, static_cast<uint16_t>(uint8_t(x.data[0]) | uint8_t(x.data[1]) << 8));
         if (x.index == 0x1006 && x.sub == 0 && x.data.size() >= 4) {
-            const uint32_t us = uint32_t(uint8_t(x.data[0])) | uint32_t(uint8_t(x.data[1])) << 8 | uint32_t(uint8_t(x.data[2])) << 16 | uint32_t(uint8_t(x.data[3])) << 24;
+            const uint32_t us = uint32_t(uint8_t(x.data[0])) | uint32_t(uint8_t(x.data[1])) << 8 |
+                                uint32_t(uint8_t(x.data[2])) << 16 | uint32_t(uint8_t(x.data[3])) << 24;
             if (us > 0 && us < 100000000) syncPeriodUs_ = static_cast<int>(us);
         }
     } else if (x.status == QLatin1String("aborted")) {
@@ -68,7 +70,8 @@ void NetworkHealth::addSdo(const CanFrame& f, const Dissection& d, const Network
             a.code = x.abortCode;
             a.own = own;
             const VendorTable* vt = ctx.node(d.node).vendor;
-            a.text = vt && vt->aborts.contains(x.abortCode) ? vt->aborts.value(x.abortCode) : canopen::sdoAbortText(x.abortCode);
+            a.text = vt && vt->aborts.contains(x.abortCode) ? vt->aborts.value(x.abortCode)
+                                                            : canopen::sdoAbortText(x.abortCode);
             // A code no table knows (issue 37): say so, not an empty text (code 0 reads "No reason given").
             if (a.text.isEmpty()) a.text = QStringLiteral("Abort code not in CiA 301");
         }
@@ -100,7 +103,8 @@ void NetworkHealth::fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) co
     h.ownSdoTimeouts = h.ownSdoTimeoutAt.count;
     if (t.sdoRtMaxMs >= 0) h.slowSdoAt.add(t.sdoRtMaxNs, t.sdoRtMaxFrame);
     for (const auto& [code, a] : t.aborts) h.sdoAborts.push_back(a);
-    std::sort(h.sdoAborts.begin(), h.sdoAborts.end(), [](const AbortCount& a, const AbortCount& b) { return a.count > b.count; });
+    std::sort(h.sdoAborts.begin(), h.sdoAborts.end(),
+              [](const AbortCount& a, const AbortCount& b) { return a.count > b.count; });
     if (t.sdoRtMs.empty()) return;
     std::vector<float> rt = t.sdoRtMs;
     std::sort(rt.begin(), rt.end());

@@ -17,7 +17,8 @@ QString obj(uint16_t index, uint8_t sub) {
 
 void begin(SdoChannel& ch, Phase phase, const canopen::SdoFrame& f, int64_t tNs, Dissection& out) {
     if (ch.phase != Phase::Idle)
-        out.warn(QStringLiteral("new SDO request for %1 while the transfer of %2 was unfinished (abandoned)").arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
+        out.warn(QStringLiteral("new SDO request for %1 while the transfer of %2 was unfinished (abandoned)")
+                     .arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
     ch = SdoChannel{};
     ch.phase = phase;
     ch.index = f.index;
@@ -29,7 +30,8 @@ void begin(SdoChannel& ch, Phase phase, const canopen::SdoFrame& f, int64_t tNs,
 
 void checkMux(const SdoChannel& ch, const canopen::SdoFrame& f, Dissection& out) {
     if (f.hasMux && (f.index != ch.index || f.sub != ch.sub))
-        out.warn(QStringLiteral("response for %1 but the request was for %2").arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
+        out.warn(QStringLiteral("response for %1 but the request was for %2")
+                     .arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
 }
 
 void finish(SdoChannel& ch, bool upload, bool block, int node, int64_t tNs, Dissection& out, const QString& status) {
@@ -50,7 +52,10 @@ void finish(SdoChannel& ch, bool upload, bool block, int node, int64_t tNs, Diss
     r.startNs = ch.startNs;
     r.endNs = tNs;
     if (status == QLatin1String("ok") && ch.sizeIndicated && !ch.expedited && ch.size != r.size) {
-        out.warn(QStringLiteral("SDO transfer of %1 carried %2 bytes but announced %3").arg(obj(ch.index, ch.sub)).arg(r.size).arg(ch.size));
+        out.warn(QStringLiteral("SDO transfer of %1 carried %2 bytes but announced %3")
+                     .arg(obj(ch.index, ch.sub))
+                     .arg(r.size)
+                     .arg(ch.size));
         r.status = QStringLiteral("size mismatch");
     }
     out.hasTransfer = true;
@@ -74,9 +79,12 @@ void commitSubBlock(SdoChannel& ch, const canopen::SdoFrame& f, Dissection& out)
 void finishBlock(SdoChannel& ch, bool upload, int node, int64_t tNs, Dissection& out) {
     QString status = QStringLiteral("ok");
     if (ch.crcSupported) {
-        const uint16_t crc = canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(ch.data.constData()), static_cast<size_t>(ch.data.size()));
+        const uint16_t crc = canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(ch.data.constData()),
+                                                  static_cast<size_t>(ch.data.size()));
         if (crc != ch.endCrc) {
-            out.warn(QStringLiteral("SDO block CRC 0x%1 does not match the data (0x%2)").arg(ch.endCrc, 4, 16, QLatin1Char('0')).arg(crc, 4, 16, QLatin1Char('0')));
+            out.warn(QStringLiteral("SDO block CRC 0x%1 does not match the data (0x%2)")
+                         .arg(ch.endCrc, 4, 16, QLatin1Char('0'))
+                         .arg(crc, 4, 16, QLatin1Char('0')));
             status = QStringLiteral("crc error");
         }
     }
@@ -94,23 +102,28 @@ void sdoTrack(SdoChannel& ch, const canopen::SdoFrame& f, bool fromClient, int n
     auto unexpected = [&] {
         out.warn(QStringLiteral("unexpected SDO %1 (%2)")
                      .arg(canopen::sdoCommandName(f.command),
-                          ch.phase == Phase::Idle ? QStringLiteral("no transfer in progress") : QStringLiteral("transfer of %1 in progress").arg(obj(ch.index, ch.sub))));
+                          ch.phase == Phase::Idle
+                              ? QStringLiteral("no transfer in progress")
+                              : QStringLiteral("transfer of %1 in progress").arg(obj(ch.index, ch.sub))));
     };
     auto toggleCheck = [&](bool expected) {
-        if (f.toggle != expected) out.warn(QStringLiteral("SDO toggle bit %1, expected %2").arg(int(f.toggle)).arg(int(expected)));
+        if (f.toggle != expected)
+            out.warn(QStringLiteral("SDO toggle bit %1, expected %2").arg(int(f.toggle)).arg(int(expected)));
     };
     switch (f.command) {
     case SdoCommand::Invalid: return;
     case SdoCommand::Abort: {
-        const bool upload = ch.phase == Phase::UploadInitiated || ch.phase == Phase::UploadSegments || ch.phase == Phase::BlockUploadInitiated ||
-                            ch.phase == Phase::BlockUploadStarted || ch.phase == Phase::BlockUploadEnd;
+        const bool upload = ch.phase == Phase::UploadInitiated || ch.phase == Phase::UploadSegments ||
+                            ch.phase == Phase::BlockUploadInitiated || ch.phase == Phase::BlockUploadStarted ||
+                            ch.phase == Phase::BlockUploadEnd;
         const bool block = ch.phase >= Phase::BlockDownloadInitiated;
         if (ch.phase == Phase::Idle) {
             ch.index = f.index;
             ch.sub = f.sub;
             ch.startNs = tNs;
         } else if (f.index != ch.index || f.sub != ch.sub) {
-            out.warn(QStringLiteral("abort names %1 but the transfer in progress is %2").arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
+            out.warn(QStringLiteral("abort names %1 but the transfer in progress is %2")
+                         .arg(obj(f.index, f.sub), obj(ch.index, ch.sub)));
         }
         ch.data.clear();
         finish(ch, upload, block, node, tNs, out, QStringLiteral("aborted"));
@@ -142,9 +155,7 @@ void sdoTrack(SdoChannel& ch, const canopen::SdoFrame& f, bool fromClient, int n
         ch.toggle = !ch.toggle;
         if (ch.lastSent) finish(ch, false, false, node, tNs, out, QStringLiteral("ok"));
         return;
-    case SdoCommand::InitiateUploadRequest:
-        begin(ch, Phase::UploadInitiated, f, tNs, out);
-        return;
+    case SdoCommand::InitiateUploadRequest: begin(ch, Phase::UploadInitiated, f, tNs, out); return;
     case SdoCommand::InitiateUploadResponse:
         if (ch.phase != Phase::UploadInitiated && ch.phase != Phase::BlockUploadInitiated) return unexpected();
         checkMux(ch, f, out);
@@ -186,7 +197,8 @@ void sdoTrack(SdoChannel& ch, const canopen::SdoFrame& f, bool fromClient, int n
             out.warn(QStringLiteral("block segment %1, expected %2").arg(f.seqno).arg(ch.expectedSeq));
             return;
         }
-        if (ch.blockSize && f.seqno > ch.blockSize) out.warn(QStringLiteral("block segment %1 beyond the block size %2").arg(f.seqno).arg(ch.blockSize));
+        if (ch.blockSize && f.seqno > ch.blockSize)
+            out.warn(QStringLiteral("block segment %1 beyond the block size %2").arg(f.seqno).arg(ch.blockSize));
         ch.subBlock.append(f.data);
         ++ch.expectedSeq;
         if (f.last) ch.lastSent = true;

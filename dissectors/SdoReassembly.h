@@ -16,16 +16,16 @@ namespace coscope::dissect {
 struct SdoChannel {
     enum class Phase : uint8_t {
         Idle,
-        DownloadInitiated,   // initiate download request seen, response awaited
-        DownloadSegments,    // segments client -> server
-        UploadInitiated,     // initiate upload request seen
-        UploadSegments,      // segments server -> client
+        DownloadInitiated,  // initiate download request seen, response awaited
+        DownloadSegments,   // segments client -> server
+        UploadInitiated,    // initiate upload request seen
+        UploadSegments,     // segments server -> client
         BlockDownloadInitiated,
         BlockDownloadSubBlock,  // client sends segments
         BlockDownloadEnd,       // end request seen, end response awaited
         BlockUploadInitiated,
-        BlockUploadStarted,     // server sends segments
-        BlockUploadEnd,         // server's end seen, client's end response awaited
+        BlockUploadStarted,  // server sends segments
+        BlockUploadEnd,      // server's end seen, client's end response awaited
     };
     Phase phase = Phase::Idle;
     uint16_t index = 0;
@@ -34,8 +34,8 @@ struct SdoChannel {
     bool sizeIndicated = false;
     uint32_t size = 0;
     QByteArray data;
-    bool toggle = false;        // toggle expected in the next segment request
-    bool lastSent = false;      // the c bit was seen: the next response ends the transfer
+    bool toggle = false;    // toggle expected in the next segment request
+    bool lastSent = false;  // the c bit was seen: the next response ends the transfer
     uint8_t blockSize = 0;
     uint8_t expectedSeq = 1;
     bool crcSupported = false;

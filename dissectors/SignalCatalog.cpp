@@ -12,14 +12,17 @@ namespace coscope::dissect {
 QString SignalKey::text() const {
     QString t = bus ? QStringLiteral("bus%1 ").arg(bus) : QString();
     if (raw) return t + QStringLiteral("raw%1").arg(raw);
-    t += QStringLiteral("n%1 ").arg(node) + QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
+    t += QStringLiteral("n%1 ").arg(node) +
+         QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
     if (bit >= 0) t += QStringLiteral(".%1").arg(bit);
     return t;
 }
 
 std::optional<SignalKey> SignalKey::parse(const QString& text) {
-    static const QRegularExpression re(QStringLiteral(R"(^\s*(?:bus(\d+)\s+)?(?:raw(\d+)|n(\d+)\s+([0-9A-Fa-f]{1,4}):([0-9A-Fa-f]{1,2})(?:\.(\d+))?)\s*$)"),
-                                        QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression re(
+        QStringLiteral(
+            R"(^\s*(?:bus(\d+)\s+)?(?:raw(\d+)|n(\d+)\s+([0-9A-Fa-f]{1,4}):([0-9A-Fa-f]{1,2})(?:\.(\d+))?)\s*$)"),
+        QRegularExpression::CaseInsensitiveOption);
     const QRegularExpressionMatch m = re.match(text);
     if (!m.hasMatch()) return std::nullopt;
     SignalKey k;
@@ -88,8 +91,7 @@ std::optional<double> pdoValue(const PdoMapEntry& e, const uint8_t* data, int le
         }
         return double(static_cast<int64_t>(raw));
     case od::TypeClass::Unsigned:
-    case od::TypeClass::Boolean:
-        return double(raw);
+    case od::TypeClass::Boolean: return double(raw);
     case od::TypeClass::Real:
         if (e.bits == 32) {
             float f;
@@ -103,8 +105,7 @@ std::optional<double> pdoValue(const PdoMapEntry& e, const uint8_t* data, int le
             return d;
         }
         return std::nullopt;
-    default:
-        return std::nullopt;
+    default: return std::nullopt;
     }
 }
 

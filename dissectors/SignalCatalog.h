@@ -26,7 +26,8 @@ struct SignalKey {
     auto operator<=>(const SignalKey&) const = default;
     SignalKey word() const { return {bus, node, index, sub, -1, raw}; }
     uint64_t packed() const {
-        return uint64_t(raw) << 48 | uint64_t(bus) << 40 | uint64_t(node) << 32 | uint64_t(index) << 16 | uint64_t(sub) << 8 | uint64_t(uint8_t(bit + 1));
+        return uint64_t(raw) << 48 | uint64_t(bus) << 40 | uint64_t(node) << 32 | uint64_t(index) << 16 |
+               uint64_t(sub) << 8 | uint64_t(uint8_t(bit + 1));
     }
     // "n2 6064:00", "n2 6041:00.10" (with "bus1 " in front for buses other than the first).
     QString text() const;
@@ -43,7 +44,7 @@ struct SignalInfo {
     QString dictionary;  // the node's dictionary name ("" = unknown device)
     QString rawUnit;     // as the dictionary states it ("0.1 rpm" is rawUnit "rpm", rawFactor 0.1)
     double rawFactor = 1.0;
-    SignalScale scale;   // the default engineering scale
+    SignalScale scale;  // the default engineering scale
     bool digital = false;
     uint32_t cobId = 0;  // raw signals: the COB-ID they are read from
 };

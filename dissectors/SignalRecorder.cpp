@@ -16,7 +16,9 @@ namespace {
 QString objectText(uint16_t index, uint8_t sub) {
     return QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
 }
-QString pdoText(bool tpdo, int number) { return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number); }
+QString pdoText(bool tpdo, int number) {
+    return (tpdo ? QStringLiteral("TPDO") : QStringLiteral("RPDO")) + QString::number(number);
+}
 // The entry's unit, else the bundled sidecar's (dictionaries loaded without it).
 std::pair<QString, double> unitOf(const PdoMapEntry& e, const QString& dictionary) {
     if (!e.unit.isEmpty()) return {e.unit, e.factor};
@@ -55,8 +57,13 @@ SignalRecorder::Slot& SignalRecorder::rawSlot(int bus, size_t number) {
     SignalInfo& i = slot->info;
     i.key = key;
     i.name = r.name;
-    i.object = QStringLiteral("%1|%2@%3%4").arg(r.startBit).arg(r.length).arg(r.order == RawSignal::Order::Intel ? 1 : 0)
-                   .arg(r.type == RawSignal::Type::Unsigned ? QStringLiteral("u") : r.type == RawSignal::Type::Signed ? QStringLiteral("s") : QStringLiteral("f"));
+    i.object = QStringLiteral("%1|%2@%3%4")
+                   .arg(r.startBit)
+                   .arg(r.length)
+                   .arg(r.order == RawSignal::Order::Intel ? 1 : 0)
+                   .arg(r.type == RawSignal::Type::Unsigned ? QStringLiteral("u")
+                        : r.type == RawSignal::Type::Signed ? QStringLiteral("s")
+                                                            : QStringLiteral("f"));
     i.pdo = QStringLiteral("COB-ID %1h").arg(QString::number(r.cobId, 16).toUpper());
     i.rawUnit = r.unit;
     i.rawFactor = r.factor;
@@ -99,13 +106,17 @@ void SignalRecorder::applyDictionaries() {
         if (node < 1 || node > 127 || name.isEmpty() || appliedNames_[node] == name) continue;
         appliedNames_[node] = name;
         // Already decoding with it (matched by identity): keep the mappings learned so far.
-        if (context_.node(node).dictionaryName == QFileInfo(name).completeBaseName() || context_.node(node).dictionaryName == name) continue;
+        if (context_.node(node).dictionaryName == QFileInfo(name).completeBaseName() ||
+            context_.node(node).dictionaryName == name)
+            continue;
         QString error;
-        if (!context_.assignDictionary(node, name, &error)) spdlog::warn("plot: node {}: {}", node, error.toStdString());
+        if (!context_.assignDictionary(node, name, &error))
+            spdlog::warn("plot: node {}: {}", node, error.toStdString());
     }
 }
 
-SignalScale SignalRecorder::scaleFor(int bus, int node, const QString& dictionary, const QString& unit, double factor) const {
+SignalScale SignalRecorder::scaleFor(int bus, int node, const QString& dictionary, const QString& unit,
+                                     double factor) const {
     return engineeringScale(dictionary, unit, factor, [&](uint16_t index, uint8_t sub) -> std::optional<double> {
         const auto it = parameters_.find(parameterKey(bus, node, index, sub));
         if (it == parameters_.end()) return std::nullopt;
@@ -153,7 +164,9 @@ void SignalRecorder::ensureCatalogue() {
                         if (e.dummy || e.bits == 0) continue;
                         Slot& s = slotFor(bus, node, e, dir == 1, static_cast<int>(p) + 1);
                         const auto [unit, factor] = unitOf(e, ns.dictionaryName);
-                        if (s.info.dictionary == ns.dictionaryName && s.info.name == e.name && s.info.rawUnit == unit && s.info.rawFactor == factor) continue;
+                        if (s.info.dictionary == ns.dictionaryName && s.info.name == e.name && s.info.rawUnit == unit &&
+                            s.info.rawFactor == factor)
+                            continue;
                         std::lock_guard lock(mutex_);
                         s.info.dictionary = ns.dictionaryName;
                         s.info.name = e.name;
@@ -185,7 +198,9 @@ void SignalRecorder::learnParameter(int bus, int node, const SdoTransferRecord& 
 }
 
 namespace {
-uint64_t modeKey(int bus, int node, uint16_t index) { return uint64_t(bus) << 32 | uint64_t(node) << 8 | uint64_t((index - 0x6000) / 0x800); }
+uint64_t modeKey(int bus, int node, uint16_t index) {
+    return uint64_t(bus) << 32 | uint64_t(node) << 8 | uint64_t((index - 0x6000) / 0x800);
+}
 }  // namespace
 
 void SignalRecorder::learnMode(int bus, int node, uint16_t index, uint8_t sub, uint64_t raw) {
@@ -232,7 +247,8 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
             const SdoTransferRecord& t = scratch_.transfer;
             const int node = t.node >= 0 ? t.node : scratch_.node;
             learnParameter(f.bus, node, t);
-            if (t.status == QLatin1String("ok") && t.data.size() == 1) learnMode(f.bus, node, t.index, t.sub, uint8_t(t.data[0]));
+            if (t.status == QLatin1String("ok") && t.data.size() == 1)
+                learnMode(f.bus, node, t.index, t.sub, uint8_t(t.data[0]));
         }
         if (!raw_.empty()) recordRaw(f, n);
         const int pdoIndex = canopen::pdoNumber(scratch_.service);
@@ -252,7 +268,8 @@ void SignalRecorder::consume(const TraceStore& store, FrameNo first, size_t coun
             if (e.dummy) continue;
             const std::optional<double> v = pdoValue(e, f.data.data(), f.payloadSize(), at);
             if (!v) continue;
-            if ((e.index & 0x7FE) == 0x060) learnMode(f.bus, scratch_.node, e.index, e.sub, static_cast<uint64_t>(static_cast<int64_t>(*v)));
+            if ((e.index & 0x7FE) == 0x060)
+                learnMode(f.bus, scratch_.node, e.index, e.sub, static_cast<uint64_t>(static_cast<int64_t>(*v)));
             Slot& s = slotFor(f.bus, scratch_.node, e, tpdo, scratch_.pdoNumber);
             if (s.pending.empty()) dirty_.push_back(&s);
             s.pending.push_back({f.timestampNs, *v, n});

@@ -100,9 +100,9 @@ private:
     bool rawChanged_ = false;
     std::vector<std::bitset<2048>> pdoSeenStd_;  // ingest thread: [bus][11-bit COB-ID] in pdos_
     std::set<uint64_t> pdoKeysExtended_;         // ingest thread: bus << 32 | 29-bit COB-ID in pdos_
-    std::vector<PdoSeen> pdos_;   // guarded by mutex_
-    std::map<uint64_t, int8_t> modes_;       // bus << 32 | node << 8 | axis -> mode (guarded by mutex_)
-    std::map<uint64_t, double> parameters_;  // bus << 32 | node << 24 | index << 8 | sub -> value
+    std::vector<PdoSeen> pdos_;                  // guarded by mutex_
+    std::map<uint64_t, int8_t> modes_;           // bus << 32 | node << 8 | axis -> mode (guarded by mutex_)
+    std::map<uint64_t, double> parameters_;      // bus << 32 | node << 24 | index << 8 | sub -> value
     std::atomic<uint64_t> revision_{1};
     std::atomic<int64_t> originNs_{0};
     std::atomic<bool> haveOrigin_{false};

@@ -32,13 +32,16 @@ QJsonObject sidecar(const QString& name) {
 }
 
 std::optional<RevolutionRule> readRule(const QString& name) {
-    const QJsonObject r = sidecar(name).value(QStringLiteral("scaling")).toObject().value(QStringLiteral("revolution")).toObject();
+    const QJsonObject r =
+        sidecar(name).value(QStringLiteral("scaling")).toObject().value(QStringLiteral("revolution")).toObject();
     RevolutionRule rule;
     rule.countUnit = r.value(QStringLiteral("countUnit")).toString();
     rule.countsPerRevolution = r.value(QStringLiteral("countsPerRevolution")).toDouble();
     if (rule.countUnit.isEmpty() || !(rule.countsPerRevolution > 0)) return std::nullopt;
-    if (!parseObject(r.value(QStringLiteral("multiplyBy")).toString(), rule.multiplyIndex, rule.multiplySub)) rule.multiplyIndex = 0;
-    if (!parseObject(r.value(QStringLiteral("divideBy")).toString(), rule.divideIndex, rule.divideSub)) rule.divideIndex = 0;
+    if (!parseObject(r.value(QStringLiteral("multiplyBy")).toString(), rule.multiplyIndex, rule.multiplySub))
+        rule.multiplyIndex = 0;
+    if (!parseObject(r.value(QStringLiteral("divideBy")).toString(), rule.divideIndex, rule.divideSub))
+        rule.divideIndex = 0;
     return rule;
 }
 }  // namespace
@@ -57,14 +60,18 @@ std::optional<SignalScale> sidecarUnit(const QString& dictionaryName, uint16_t i
     static std::map<QString, QJsonObject> cache;
     std::lock_guard lock(mutex);
     auto it = cache.find(dictionaryName);
-    if (it == cache.end()) it = cache.emplace(dictionaryName, sidecar(dictionaryName).value(QStringLiteral("units")).toObject()).first;
-    const QString key = QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
+    if (it == cache.end())
+        it = cache.emplace(dictionaryName, sidecar(dictionaryName).value(QStringLiteral("units")).toObject()).first;
+    const QString key =
+        QStringLiteral("%1:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper();
     const QJsonObject u = it->second.value(key).toObject();
     if (u.isEmpty()) return std::nullopt;
-    return SignalScale{u.value(QStringLiteral("factor")).toDouble(1.0), 0.0, u.value(QStringLiteral("unit")).toString()};
+    return SignalScale{u.value(QStringLiteral("factor")).toDouble(1.0), 0.0,
+                       u.value(QStringLiteral("unit")).toString()};
 }
 
-SignalScale engineeringScale(const QString& dictionaryName, const QString& unit, double factor, const ParameterLookup& params) {
+SignalScale engineeringScale(const QString& dictionaryName, const QString& unit, double factor,
+                             const ParameterLookup& params) {
     SignalScale s{factor, 0.0, unit};
     const std::optional<RevolutionRule> rule = revolutionRule(dictionaryName);
     if (!rule || unit.isEmpty()) return s;
@@ -76,11 +83,13 @@ SignalScale engineeringScale(const QString& dictionaryName, const QString& unit,
         const std::optional<double> v = params(index, sub);
         return v && *v != 0 ? *v : 1.0;  // a zero gear would divide by zero: keep the default
     };
-    const double perRev = rule->countsPerRevolution * param(rule->multiplyIndex, rule->multiplySub) / param(rule->divideIndex, rule->divideSub);
+    const double perRev = rule->countsPerRevolution * param(rule->multiplyIndex, rule->multiplySub) /
+                          param(rule->divideIndex, rule->divideSub);
     if (!(perRev > 0)) return s;
     // Written as the fraction it is: 1/1280000 rev per PUU, 60/1280000 rpm per PUU/s.
     const double top = position ? factor : factor * 60.0;
-    const QString written = QStringLiteral("%1/%2").arg(QString::number(top, 'g', 15), QString::number(perRev, 'g', 15));
+    const QString written =
+        QStringLiteral("%1/%2").arg(QString::number(top, 'g', 15), QString::number(perRev, 'g', 15));
     return {top / perRev, 0.0, position ? QStringLiteral("rev") : QStringLiteral("rpm"), written};
 }
 

@@ -13,7 +13,8 @@ namespace coscope::dissect {
 // How a raw PDO value becomes an engineering value: value = raw * factor + offset, in `unit`.
 struct SignalScale {
     SignalScale() = default;
-    SignalScale(double f, double o, QString u, QString written = {}) : factor(f), offset(o), unit(std::move(u)), factorWritten(std::move(written)) {}
+    SignalScale(double f, double o, QString u, QString written = {})
+        : factor(f), offset(o), unit(std::move(u)), factorWritten(std::move(written)) {}
 
     double factor = 1.0;
     double offset = 0.0;
@@ -61,6 +62,7 @@ using ParameterLookup = std::function<std::optional<double>(uint16_t index, uint
 // The engineering scale of an object whose dictionary gives `unit` and `factor` (the sidecar's
 // "units"): that scale, except that positions and speeds in a vendor's counts become
 // revolutions and rpm when the vendor's rule says how (Delta ASDA-A2: PUU, extract §4.7).
-SignalScale engineeringScale(const QString& dictionaryName, const QString& unit, double factor, const ParameterLookup& params = {});
+SignalScale engineeringScale(const QString& dictionaryName, const QString& unit, double factor,
+                             const ParameterLookup& params = {});
 
 }  // namespace coscope::dissect

@@ -78,7 +78,9 @@ public:
             copyUnits(p_, t, k);
             p_ += k;
         }
-        [[gnu::always_inline]] void put(const QString& t) { put(reinterpret_cast<const char16_t*>(t.constData()), static_cast<size_t>(t.size())); }
+        [[gnu::always_inline]] void put(const QString& t) {
+            put(reinterpret_cast<const char16_t*>(t.constData()), static_cast<size_t>(t.size()));
+        }
         template <size_t N>
         [[gnu::always_inline]] void put(const char16_t (&t)[N]) {
             need(N - 1);
@@ -93,7 +95,9 @@ public:
             need(kDecimalRoom);
             p_ = writeDecimal(p_, u, negative);
         }
-        void putDecimal(int64_t v) { putDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0); }
+        void putDecimal(int64_t v) {
+            putDecimal(v < 0 ? 0 - static_cast<uint64_t>(v) : static_cast<uint64_t>(v), v < 0);
+        }
 
     private:
         [[gnu::noinline]] void regrow(size_t k) {
@@ -109,7 +113,9 @@ public:
 private:
     static constexpr size_t kDecimalRoom = 21;  // sign and 20 digits
     // Names, units and meanings are short: copied inline (ShortCopy.h).
-    [[gnu::always_inline]] static void copyUnits(char16_t* d, const char16_t* t, size_t k) { copyShort(d, t, k * sizeof(char16_t)); }
+    [[gnu::always_inline]] static void copyUnits(char16_t* d, const char16_t* t, size_t k) {
+        copyShort(d, t, k * sizeof(char16_t));
+    }
     // The decimal text of u (after '-' when negative) at p, digits counted first (no temporary
     // to copy) and written two at a time; returns the end.
     [[gnu::always_inline]] static char16_t* writeDecimal(char16_t* p, uint64_t u, bool negative) {
@@ -131,9 +137,25 @@ private:
         }
         return p + k;
     }
-    static constexpr uint64_t kPowersOf10[20] = {1u, 10u, 100u, 1000u, 10000u, 100000u, 1000000u, 10000000u, 100000000u, 1000000000u,
-                                                 10000000000u, 100000000000u, 1000000000000u, 10000000000000u, 100000000000000u,
-                                                 1000000000000000u, 10000000000000000u, 100000000000000000u, 1000000000000000000u,
+    static constexpr uint64_t kPowersOf10[20] = {1u,
+                                                 10u,
+                                                 100u,
+                                                 1000u,
+                                                 10000u,
+                                                 100000u,
+                                                 1000000u,
+                                                 10000000u,
+                                                 100000000u,
+                                                 1000000000u,
+                                                 10000000000u,
+                                                 100000000000u,
+                                                 1000000000000u,
+                                                 10000000000000u,
+                                                 100000000000000u,
+                                                 1000000000000000u,
+                                                 10000000000000000u,
+                                                 100000000000000000u,
+                                                 1000000000000000000u,
                                                  10000000000000000000u};
     static constexpr char kDecimalPairs[] =
         "00010203040506070809101112131415161718192021222324252627282930313233343536373839"

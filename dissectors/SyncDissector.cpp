@@ -9,7 +9,8 @@ void dissectSync(DissectCall& c) {
     out.node = -1;
     const bool hasCounter = c.len >= 1;
     if (c.len > 1) out.warn(QStringLiteral("SYNC with %1 bytes; CiA 301 allows 0 or 1").arg(c.len));
-    if (hasCounter && (c.data[0] < 1 || c.data[0] > 240)) out.warn(QStringLiteral("SYNC counter %1 is outside 1..240").arg(c.data[0]));
+    if (hasCounter && (c.data[0] < 1 || c.data[0] > 240))
+        out.warn(QStringLiteral("SYNC counter %1 is outside 1..240").arg(c.data[0]));
     if (!out.wantText()) return;
     if (hasCounter) {
         out.addInt("sync.counter", c.data[0]);

@@ -5,8 +5,8 @@
 #include "core/canopen/SdoAbort.h"
 
 #include <algorithm>
-#include <functional>
 #include <cstdio>
+#include <functional>
 
 namespace coscope::dissect {
 
@@ -32,7 +32,10 @@ void TraceStats::add(const CanFrame& f) {
     if (!d_.warnings.isEmpty()) {
         warnings_ += static_cast<uint64_t>(d_.warnings.size());
         if (warningSamples_.size() < 10)
-            warningSamples_.push_back(QStringLiteral("frame %1 (COB-ID 0x%2): %3").arg(frames_).arg(f.id, 3, 16, QLatin1Char('0')).arg(d_.warnings.first()));
+            warningSamples_.push_back(QStringLiteral("frame %1 (COB-ID 0x%2): %3")
+                                          .arg(frames_)
+                                          .arg(f.id, 3, 16, QLatin1Char('0'))
+                                          .arg(d_.warnings.first()));
     }
     if (d_.hasTransfer) {
         const QString& s = d_.transfer.status;
@@ -55,7 +58,9 @@ QByteArray TraceStats::report(bool perSecond) const {
     put("Frames: %llu (%llu error frames)\n", (unsigned long long)frames_, (unsigned long long)errorFrames_);
     o.append("\nFrames per service:\n");
     for (int s = 0; s < 32; ++s)
-        if (perService_[s]) put("  %-10s %12llu\n", qPrintable(canopen::serviceName(static_cast<canopen::Service>(s))), (unsigned long long)perService_[s]);
+        if (perService_[s])
+            put("  %-10s %12llu\n", qPrintable(canopen::serviceName(static_cast<canopen::Service>(s))),
+                (unsigned long long)perService_[s]);
     o.append("\nFrames per COB-ID:\n");
     // The busiest kCobIdRows in COB-ID order, the rest summed (a short report, issue 37).
     constexpr size_t kCobIdRows = 12;
@@ -79,7 +84,8 @@ QByteArray TraceStats::report(bool perSecond) const {
         }
         ++rows;
         const canopen::CobIdInfo info = canopen::classifyCobId(static_cast<uint32_t>(id));
-        put("  0x%03X  %-10s %12llu\n", id, qPrintable(canopen::serviceName(info.service)), (unsigned long long)perStdId_[static_cast<size_t>(id)]);
+        put("  0x%03X  %-10s %12llu\n", id, qPrintable(canopen::serviceName(info.service)),
+            (unsigned long long)perStdId_[static_cast<size_t>(id)]);
     }
     if (leftIds) put("  ... %zu more COB-IDs with %llu frames\n", leftIds, (unsigned long long)leftFrames);
     for (const auto& [id, n] : perExtId_) put("  0x%08X (29-bit) %12llu\n", id, (unsigned long long)n);
@@ -94,14 +100,19 @@ QByteArray TraceStats::report(bool perSecond) const {
             // node-ID is no sign of a node. Its own COB-IDs of the predefined set (CiA 301 §7.3.5):
             // EMCY, TPDO1-4, SDO response, error control.
             uint64_t sent = 0;
-            for (int base : {0x080, 0x180, 0x280, 0x380, 0x480, 0x580, 0x700}) sent += perStdId_[static_cast<size_t>(base + n)];
+            for (int base : {0x080, 0x180, 0x280, 0x380, 0x480, 0x580, 0x700})
+                sent += perStdId_[static_cast<size_t>(base + n)];
             if (!count || !sent) continue;
             const NodeState& s = ctx_.node(static_cast<int>(bus), n);
             anyNode = true;
-            const QString state = s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");
-            const QString where = !severalBuses ? QString() : (bus < size_t(busNames_.size()) ? busNames_[int(bus)] : QStringLiteral("bus %1").arg(bus)) + u' ';
-            put("  %snode %3d  %-16s frames %10llu  dictionary %s\n", qPrintable(where), n, qPrintable(state), (unsigned long long)count,
-                s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
+            const QString state =
+                s.nmtState >= 0 ? canopen::nmtStateName(static_cast<uint8_t>(s.nmtState)) : QStringLiteral("unknown");
+            const QString where =
+                !severalBuses
+                    ? QString()
+                    : (bus < size_t(busNames_.size()) ? busNames_[int(bus)] : QStringLiteral("bus %1").arg(bus)) + u' ';
+            put("  %snode %3d  %-16s frames %10llu  dictionary %s\n", qPrintable(where), n, qPrintable(state),
+                (unsigned long long)count, s.dictionaryName.isEmpty() ? "-" : qPrintable(s.dictionaryName));
         }
     if (!anyNode) o.append("  (none)\n");
     double peak = 0, total = 0;
@@ -115,12 +126,15 @@ QByteArray TraceStats::report(bool perSecond) const {
         o.append("\nBus load (estimated, ");
         put("%d bit/s):\n", bitRate_);
     }
-    if (perSecond && seconds > 0) put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_, 100.0 * peak / bitRate_, seconds);
+    if (perSecond && seconds > 0)
+        put("  average %.1f %%, peak %.1f %% over %.0f s\n", 100.0 * total / seconds / bitRate_,
+            100.0 * peak / bitRate_, seconds);
     const size_t shown = perSecond ? std::min<size_t>(bitsPerSecond.size(), 3600) : 0;
     for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond[i] / bitRate_);
     if (perSecond && shown < bitsPerSecond.size()) put("  ... %zu more seconds\n", bitsPerSecond.size() - shown);
-    put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n", (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_),
-        (unsigned long long)sdoOk_, (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
+    put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n",
+        (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_), (unsigned long long)sdoOk_,
+        (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
     for (const auto& [code, n] : abortCodes_)
         put("  abort 0x%08X x%llu  %s\n", code, (unsigned long long)n, qPrintable(canopen::sdoAbortText(code)));
     put("\nEMCY: %llu\n", (unsigned long long)emcys_);

@@ -17,8 +17,11 @@ bool printable(const uint8_t* d, int len) {
 }
 
 QString withUnit(const FlatField& v, const QString& unit, double factor, FlatField& out) {
-    if (factor != 1.0 && (v.kind == FlatField::Kind::Int || v.kind == FlatField::Kind::UInt || v.kind == FlatField::Kind::Real)) {
-        const double raw = v.kind == FlatField::Kind::Int ? double(v.i) : v.kind == FlatField::Kind::UInt ? double(v.u) : v.d;
+    if (factor != 1.0 &&
+        (v.kind == FlatField::Kind::Int || v.kind == FlatField::Kind::UInt || v.kind == FlatField::Kind::Real)) {
+        const double raw = v.kind == FlatField::Kind::Int    ? double(v.i)
+                           : v.kind == FlatField::Kind::UInt ? double(v.u)
+                                                             : v.d;
         out.kind = FlatField::Kind::Real;
         out.d = raw * factor;
     }
@@ -68,7 +71,10 @@ QString decimalText(uint64_t u, bool negative) {
     char16_t buf[24];
     char16_t* e = buf + 24;
     char16_t* p = e;
-    do { *--p = char16_t(u'0' + u % 10); u /= 10; } while (u);
+    do {
+        *--p = char16_t(u'0' + u % 10);
+        u /= 10;
+    } while (u);
     if (negative) *--p = u'-';
     return QString(reinterpret_cast<const QChar*>(p), e - p);
 }
@@ -77,7 +83,9 @@ QString decimalText(uint64_t u, bool negative) {
 
 QString valueText(const FlatField& v) {
     switch (v.kind) {
-    case FlatField::Kind::Int: return v.i < 0 ? decimalText(0 - static_cast<uint64_t>(v.i), true) : decimalText(static_cast<uint64_t>(v.i), false);
+    case FlatField::Kind::Int:
+        return v.i < 0 ? decimalText(0 - static_cast<uint64_t>(v.i), true)
+                       : decimalText(static_cast<uint64_t>(v.i), false);
     case FlatField::Kind::UInt: return decimalText(v.u, false);
     case FlatField::Kind::Real: return QString::number(v.d, 'g', 9);
     case FlatField::Kind::Bool: return v.i ? QStringLiteral("true") : QStringLiteral("false");
@@ -86,11 +94,12 @@ QString valueText(const FlatField& v) {
     return {};
 }
 
-QString decodeValue(od::DataType type, bool typeKnown, const uint8_t* data, int len, FlatField& value, const QString& unit,
-                    double factor) {
+QString decodeValue(od::DataType type, bool typeKnown, const uint8_t* data, int len, FlatField& value,
+                    const QString& unit, double factor) {
     const bool stringType = typeKnown && (type == od::DataType::VisibleString || type == od::DataType::UnicodeString);
-    const bool bytesType = typeKnown && (type == od::DataType::OctetString || type == od::DataType::Domain ||
-                                         od::typeClass(type) == od::TypeClass::Domain || od::typeClass(type) == od::TypeClass::Time);
+    const bool bytesType =
+        typeKnown && (type == od::DataType::OctetString || type == od::DataType::Domain ||
+                      od::typeClass(type) == od::TypeClass::Domain || od::typeClass(type) == od::TypeClass::Time);
     const int size = typeKnown ? od::byteSize(type) : 0;
     if (stringType || (!typeKnown && len > 8 && printable(data, len))) {
         int n = len;
@@ -124,10 +133,11 @@ QString decodeBits(od::DataType type, bool typeKnown, const uint8_t* data, int b
     uint64_t raw = 0;
     if (bitOffset % 8 == 0 && bits % 8 == 0) {  // byte-aligned: the common case
         for (int i = 0; i < bits / 8; ++i) raw |= uint64_t(data[bitOffset / 8 + i]) << (8 * i);
-    } else for (int i = 0; i < bits; ++i) {
-        const int b = bitOffset + i;
-        if (data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << i;
-    }
+    } else
+        for (int i = 0; i < bits; ++i) {
+            const int b = bitOffset + i;
+            if (data[b >> 3] & (1u << (b & 7))) raw |= uint64_t(1) << i;
+        }
     if (typeKnown && type == od::DataType::Boolean) {
         value.kind = FlatField::Kind::Bool;
         value.i = raw ? 1 : 0;

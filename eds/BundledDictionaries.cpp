@@ -8,7 +8,8 @@ namespace coscope::eds {
 
 QStringList bundledDictionaryNames() {
     QStringList names;
-    const auto entries = QDir(QStringLiteral(":/dictionaries")).entryInfoList({QStringLiteral("*.eds")}, QDir::Files, QDir::Name);
+    const auto entries =
+        QDir(QStringLiteral(":/dictionaries")).entryInfoList({QStringLiteral("*.eds")}, QDir::Files, QDir::Name);
     for (const QFileInfo& fi : entries) names << fi.completeBaseName();
     return names;
 }

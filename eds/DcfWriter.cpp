@@ -29,7 +29,9 @@ private:
     QString text_;
 };
 
-QString hex(std::uint64_t v, int width) { return QStringLiteral("0x") + QString::number(v, 16).toUpper().rightJustified(width, QLatin1Char('0')); }
+QString hex(std::uint64_t v, int width) {
+    return QStringLiteral("0x") + QString::number(v, 16).toUpper().rightJustified(width, QLatin1Char('0'));
+}
 QString hex4(std::uint16_t v) { return QString::number(v, 16).toUpper().rightJustified(4, QLatin1Char('0')); }
 
 void entryKeys(Out& o, const SubObject& s, ObjectType type = ObjectType::Var) {
@@ -77,7 +79,8 @@ QByteArray DcfWriter::write(const ObjectDictionary& od, std::uint8_t nodeId, int
     if (d.revisionNumber) o.key(QStringLiteral("RevisionNumber"), hex(*d.revisionNumber, 8));
     o.keyIf(QStringLiteral("OrderCode"), d.orderCode);
     for (int rate : {10, 20, 50, 125, 250, 500, 800, 1000})
-        o.key(QStringLiteral("BaudRate_%1").arg(rate), d.baudRates.contains(rate) ? QStringLiteral("1") : QStringLiteral("0"));
+        o.key(QStringLiteral("BaudRate_%1").arg(rate),
+              d.baudRates.contains(rate) ? QStringLiteral("1") : QStringLiteral("0"));
     o.key(QStringLiteral("SimpleBootUpMaster"), QString::number(d.simpleBootUpMaster));
     o.key(QStringLiteral("SimpleBootUpSlave"), QString::number(d.simpleBootUpSlave));
     o.key(QStringLiteral("Granularity"), QString::number(d.granularity));
@@ -103,7 +106,9 @@ QByteArray DcfWriter::write(const ObjectDictionary& od, std::uint8_t nodeId, int
     o.extra(c.extraKeys);
 
     o.section(QStringLiteral("DummyUsage"));
-    for (int i = 1; i <= 7; ++i) o.key(QStringLiteral("Dummy000%1").arg(i), od.dummyUsage[static_cast<size_t>(i)] ? QStringLiteral("1") : QStringLiteral("0"));
+    for (int i = 1; i <= 7; ++i)
+        o.key(QStringLiteral("Dummy000%1").arg(i),
+              od.dummyUsage[static_cast<size_t>(i)] ? QStringLiteral("1") : QStringLiteral("0"));
 
     if (!od.dynamicChannels.empty()) {
         o.section(QStringLiteral("DynamicChannels"));
@@ -166,7 +171,8 @@ QByteArray DcfWriter::write(const ObjectDictionary& od, std::uint8_t nodeId, int
         if (!obj.objectLinks.empty()) {
             o.section(hex4(index) + QStringLiteral("ObjectLinks"));
             o.key(QStringLiteral("ObjectLinks"), QString::number(obj.objectLinks.size()));
-            for (size_t i = 0; i < obj.objectLinks.size(); ++i) o.key(QString::number(i + 1), hex(obj.objectLinks[i], 4));
+            for (size_t i = 0; i < obj.objectLinks.size(); ++i)
+                o.key(QString::number(i + 1), hex(obj.objectLinks[i], 4));
         }
     }
     for (const ExtraSection& x : od.extraSections) {

@@ -48,20 +48,22 @@ const DictionaryLibrary& DictionaryLibrary::shared() {
     return library;
 }
 
-DictionaryLibrary::DictionaryLibrary(const QString& userFolder) : userFolder_(userFolder.isEmpty() ? defaultUserFolder() : userFolder) {
+DictionaryLibrary::DictionaryLibrary(const QString& userFolder)
+    : userFolder_(userFolder.isEmpty() ? defaultUserFolder() : userFolder) {
     scan(QStringLiteral(":/dictionaries"), true);
     scan(userFolder_, false);
 }
 
 QString DictionaryLibrary::defaultUserFolder() {
-    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) + QStringLiteral("/CoScope/dictionaries");
+    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation) +
+           QStringLiteral("/CoScope/dictionaries");
 }
 
 void DictionaryLibrary::scan(const QString& folder, bool bundled) {
     const QDir dir(folder);
     if (!dir.exists()) return;
-    const auto files = dir.entryInfoList({QStringLiteral("*.eds"), QStringLiteral("*.dcf"), QStringLiteral("*.xdd"), QStringLiteral("*.EDS"),
-                                          QStringLiteral("*.DCF"), QStringLiteral("*.XDD")},
+    const auto files = dir.entryInfoList({QStringLiteral("*.eds"), QStringLiteral("*.dcf"), QStringLiteral("*.xdd"),
+                                          QStringLiteral("*.EDS"), QStringLiteral("*.DCF"), QStringLiteral("*.XDD")},
                                          QDir::Files, QDir::Name);
     for (const QFileInfo& fi : files) {
         Entry e;
@@ -95,7 +97,8 @@ bool DictionaryLibrary::readIdentity(Entry& e) {
 void DictionaryLibrary::readBundledIdentities() const {
     std::call_once(*bundledIdentitiesRead_, [this] {
         for (Entry& e : entries_)
-            if (e.bundled && !readIdentity(e)) spdlog::warn("dictionary library: {} is not usable", e.path.toStdString());
+            if (e.bundled && !readIdentity(e))
+                spdlog::warn("dictionary library: {} is not usable", e.path.toStdString());
     });
 }
 
@@ -112,7 +115,8 @@ void DictionaryLibrary::readSidecarIdentity(Entry& e) {
     for (const char* key : {"softwareVersion", "deviceName"}) {
         const QJsonObject s = id.value(QLatin1String(key)).toObject();
         if (s.isEmpty()) continue;
-        e.stringIndex = static_cast<std::uint16_t>(s.value(QStringLiteral("object")).toString().left(4).toUInt(nullptr, 16));
+        e.stringIndex =
+            static_cast<std::uint16_t>(s.value(QStringLiteral("object")).toString().left(4).toUInt(nullptr, 16));
         e.stringValue = s.value(QStringLiteral("value")).toString();
     }
 }
@@ -132,19 +136,22 @@ const DictionaryLibrary::Entry* DictionaryLibrary::find(const QString& name) con
 ReadResult DictionaryLibrary::load(const QString& name) const {
     if (const Entry* e = find(name)) return loadFile(e->path);
     ReadResult r;
-    r.diagnostics.push_back({name, 0, Diagnostic::Severity::Error,
-                             QStringLiteral("no such file or dictionary (known: %1)").arg(names().join(QStringLiteral(", ")))});
+    r.diagnostics.push_back(
+        {name, 0, Diagnostic::Severity::Error,
+         QStringLiteral("no such file or dictionary (known: %1)").arg(names().join(QStringLiteral(", ")))});
     return r;
 }
 
-const DictionaryLibrary::Entry* DictionaryLibrary::findByIdentity(std::uint32_t vendorId, std::uint32_t productCode, std::optional<std::uint32_t> revision) const {
+const DictionaryLibrary::Entry* DictionaryLibrary::findByIdentity(std::uint32_t vendorId, std::uint32_t productCode,
+                                                                  std::optional<std::uint32_t> revision) const {
     if (vendorId == 0 && productCode == 0) return nullptr;  // no identity (see match())
     readBundledIdentities();
     const Entry* best = nullptr;
     int bestRank = -1;
     std::uint32_t bestRev = 0;
     for (const Entry& e : entries_) {
-        const bool variant = e.vendorId == vendorId && std::find(e.variantProducts.begin(), e.variantProducts.end(), productCode) != e.variantProducts.end();
+        const bool variant = e.vendorId == vendorId && std::find(e.variantProducts.begin(), e.variantProducts.end(),
+                                                                 productCode) != e.variantProducts.end();
         if (e.vendorId != vendorId || (e.productCode != productCode && !variant)) continue;
         const std::uint32_t rev = e.revision.value_or(0);
         int rank = 0;
@@ -166,7 +173,8 @@ const DictionaryLibrary::Entry* DictionaryLibrary::match(const DeviceIdentity& d
     // No usable 1018h (CiA 301 §7.5.2.21 makes it mandatory, but AIMOTOR and DEXMART answer 0 or
     // abort): only what the device and the dictionary both document can tell them apart.
     auto startsWith = [](const std::optional<QString>& read, const QString& documented) {
-        return read && !documented.isEmpty() && read->trimmed().remove(QChar(0)).startsWith(documented, Qt::CaseInsensitive);
+        return read && !documented.isEmpty() &&
+               read->trimmed().remove(QChar(0)).startsWith(documented, Qt::CaseInsensitive);
     };
     // The device type alone (many drives say 0192h) is evidence only once 1018h was read as 0/0.
     const int minimum = device.vendorId && device.productCode ? 2 : 4;
@@ -195,7 +203,9 @@ DictionaryPtr DictionaryLibrary::loadShared(const QString& nameOrFile, QString* 
     static QHash<QString, DictionaryPtr> cache;  // by path: library dictionaries only
     const Entry* e = QFileInfo::exists(nameOrFile) && !nameOrFile.startsWith(u':') ? nullptr : find(nameOrFile);
     if (!e && !QFileInfo::exists(nameOrFile)) {
-        if (error) *error = QStringLiteral("'%1' is neither a known dictionary (%2) nor a file").arg(nameOrFile, names().join(QStringLiteral(", ")));
+        if (error)
+            *error = QStringLiteral("'%1' is neither a known dictionary (%2) nor a file")
+                         .arg(nameOrFile, names().join(QStringLiteral(", ")));
         return nullptr;
     }
     const QString path = e ? e->path : nameOrFile;
@@ -215,11 +225,15 @@ DictionaryPtr DictionaryLibrary::loadShared(const QString& nameOrFile, QString* 
     return d;
 }
 
-void DictionaryLibrary::applyUnits(od::ObjectDictionary& od, const QByteArray& json, const QString& jsonName, Diagnostics& diagnostics) {
+void DictionaryLibrary::applyUnits(od::ObjectDictionary& od, const QByteArray& json, const QString& jsonName,
+                                   Diagnostics& diagnostics) {
     QJsonParseError err{};
     const QJsonDocument doc = QJsonDocument::fromJson(json, &err);
     if (err.error != QJsonParseError::NoError || !doc.isObject()) {
-        diagnostics.push_back({jsonName, 0, Diagnostic::Severity::Warning, QStringLiteral("not a JSON object (%1 at offset %2); units ignored").arg(err.errorString()).arg(err.offset)});
+        diagnostics.push_back({jsonName, 0, Diagnostic::Severity::Warning,
+                               QStringLiteral("not a JSON object (%1 at offset %2); units ignored")
+                                   .arg(err.errorString())
+                                   .arg(err.offset)});
         return;
     }
     const QJsonObject units = doc.object().value(QStringLiteral("units")).toObject();
@@ -228,9 +242,12 @@ void DictionaryLibrary::applyUnits(od::ObjectDictionary& od, const QByteArray& j
         bool ok1 = false, ok2 = false;
         const uint index = key.section(u':', 0, 0).toUInt(&ok1, 16);
         const uint sub = key.section(u':', 1, 1).toUInt(&ok2, 16);
-        od::SubObject* s = (ok1 && ok2 && index <= 0xFFFF && sub <= 0xFF) ? od.entryForEdit(static_cast<std::uint16_t>(index), static_cast<std::uint8_t>(sub)) : nullptr;
+        od::SubObject* s = (ok1 && ok2 && index <= 0xFFFF && sub <= 0xFF)
+                               ? od.entryForEdit(static_cast<std::uint16_t>(index), static_cast<std::uint8_t>(sub))
+                               : nullptr;
         if (!s) {
-            diagnostics.push_back({jsonName, 0, Diagnostic::Severity::Warning, QStringLiteral("units: '%1' is not an entry of the dictionary").arg(key)});
+            diagnostics.push_back({jsonName, 0, Diagnostic::Severity::Warning,
+                                   QStringLiteral("units: '%1' is not an entry of the dictionary").arg(key)});
             continue;
         }
         const QJsonObject u = it.value().toObject();
@@ -245,8 +262,11 @@ ReadResult DictionaryLibrary::loadFile(const QString& path) {
     ReadResult r = readDictionaryFile(path);
     const QString sidecar = sidecarPath(path);
     QFile f(sidecar);
-    if (r.usable && f.exists() && f.open(QIODevice::ReadOnly)) applyUnits(r.dictionary, f.readAll(), sidecar, r.diagnostics);
-    if (r.usable && path.startsWith(QLatin1String(":/dictionaries/"))) r.dictionary.bundledName = od::permanentText(QFileInfo(path).completeBaseName());  // copied per frame (Dissection::namesFrom)
+    if (r.usable && f.exists() && f.open(QIODevice::ReadOnly))
+        applyUnits(r.dictionary, f.readAll(), sidecar, r.diagnostics);
+    if (r.usable && path.startsWith(QLatin1String(":/dictionaries/")))
+        r.dictionary.bundledName =
+            od::permanentText(QFileInfo(path).completeBaseName());  // copied per frame (Dissection::namesFrom)
     return r;
 }
 

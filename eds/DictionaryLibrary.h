@@ -19,9 +19,9 @@ using DictionaryPtr = std::shared_ptr<const od::ObjectDictionary>;
 // What a node tells about itself (CiA 301 §7.5.2), the objects a dictionary is matched by.
 // nullopt = not read (or the node does not have the object).
 struct DeviceIdentity {
-    std::optional<std::uint32_t> deviceType;                        // 1000h
-    std::optional<std::uint32_t> vendorId, productCode, revision;   // 1018h:01..03
-    std::optional<QString> deviceName, softwareVersion;             // 1008h, 100Ah
+    std::optional<std::uint32_t> deviceType;                       // 1000h
+    std::optional<std::uint32_t> vendorId, productCode, revision;  // 1018h:01..03
+    std::optional<QString> deviceName, softwareVersion;            // 1008h, 100Ah
     // Vendor-ID and product code both read and not both 0 (drives without 1018h answer 0/0).
     bool hasIdentity() const { return vendorId && productCode && (*vendorId != 0 || *productCode != 0); }
 };
@@ -41,12 +41,12 @@ public:
         QString path;  // file or resource path
         bool bundled = false;
         std::optional<std::uint32_t> vendorId, productCode, revision;  // identity (1018h)
-        std::vector<std::uint32_t> variantProducts;  // sidecar: more product codes of the vendor
-        bool placeholder = false;                    // sidecar: a stand-in identity (generic-cia402)
-        std::optional<std::uint32_t> deviceType;     // 1000h default
-        QString deviceName;                          // 1008h default
-        std::uint16_t stringIndex = 0;               // sidecar: 1008h or 100Ah names the device
-        QString stringValue;                         //   by this text (prefix, case-insensitive)
+        std::vector<std::uint32_t> variantProducts;                    // sidecar: more product codes of the vendor
+        bool placeholder = false;                                      // sidecar: a stand-in identity (generic-cia402)
+        std::optional<std::uint32_t> deviceType;                       // 1000h default
+        QString deviceName;                                            // 1008h default
+        std::uint16_t stringIndex = 0;                                 // sidecar: 1008h or 100Ah names the device
+        QString stringValue;                                           //   by this text (prefix, case-insensitive)
         // Vendor-ID and product code described and not both 0.
         bool hasIdentity() const { return vendorId && productCode && (*vendorId != 0 || *productCode != 0); }
     };
@@ -75,7 +75,8 @@ public:
     // wins, then the highest revision with the same major revision (bits 16..31; CiA 301
     // 7.5.2.21: same major = same CANopen behaviour), then the highest revision overall.
     // On a tie a user dictionary beats a bundled one. 0/0 is no identity: nullptr.
-    const Entry* findByIdentity(std::uint32_t vendorId, std::uint32_t productCode, std::optional<std::uint32_t> revision = std::nullopt) const;
+    const Entry* findByIdentity(std::uint32_t vendorId, std::uint32_t productCode,
+                                std::optional<std::uint32_t> revision = std::nullopt) const;
 
     // The dictionary for what a node answered, or nullptr. With a real identity (1018h, not
     // 0/0): findByIdentity, the sidecar's product variants included. Identity 0/0 or unknown
@@ -93,7 +94,8 @@ public:
     // Reads a file (EDS/DCF/XDD) and applies NAME.json next to it when present.
     static ReadResult loadFile(const QString& path);
     // Applies a units sidecar (JSON bytes) to `od`; problems are reported to `diagnostics`.
-    static void applyUnits(od::ObjectDictionary& od, const QByteArray& json, const QString& jsonName, Diagnostics& diagnostics);
+    static void applyUnits(od::ObjectDictionary& od, const QByteArray& json, const QString& jsonName,
+                           Diagnostics& diagnostics);
 
 private:
     void scan(const QString& folder, bool bundled);

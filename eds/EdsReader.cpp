@@ -58,7 +58,8 @@ Kind classify(const QString& lower, std::uint16_t* index, int* sub) {
     if (rest.startsWith(QLatin1String("sub"))) {
         const QString s = rest.mid(3);
         const uint v = s.toUInt(&ok, 16);
-        if (!ok || s.size() > 3 || s.isEmpty() || v > 0xFF || s.startsWith(u'+') || s.startsWith(u'-')) return Kind::Other;
+        if (!ok || s.size() > 3 || s.isEmpty() || v > 0xFF || s.startsWith(u'+') || s.startsWith(u'-'))
+            return Kind::Other;
         *sub = static_cast<int>(v);
         return Kind::Sub;
     }
@@ -98,7 +99,8 @@ private:
                 return n->magnitude;
             }
         }
-        sink_.warning(e->line, QStringLiteral("%1='%2' in [%3] is not a number; ignored").arg(e->key, e->value, section));
+        sink_.warning(e->line,
+                      QStringLiteral("%1='%2' in [%3] is not a number; ignored").arg(e->key, e->value, section));
         return std::nullopt;
     }
     std::optional<std::uint64_t> number(const IniSection* s, const char* lowerKey) {
@@ -118,8 +120,10 @@ private:
 
     // ---- sections ----
     void classifySections() {
-        static const char* special[] = {"fileinfo", "deviceinfo", "dummyusage", "mandatoryobjects", "optionalobjects", "manufacturerobjects",
-                                        "devicecommissioning", "devicecomissioning", "comments", "dynamicchannels"};
+        static const char* special[] = {
+            "fileinfo",        "deviceinfo",          "dummyusage",          "mandatoryobjects",
+            "optionalobjects", "manufacturerobjects", "devicecommissioning", "devicecomissioning",
+            "comments",        "dynamicchannels"};
         for (const IniSection& s : doc_.sections()) {
             const QString lower = s.name.toLower();
             std::uint16_t index = 0;
@@ -128,7 +132,12 @@ private:
             case Kind::Object: objects_[index] = &s; continue;
             case Kind::Sub:
                 if (!subs_[index].emplace(sub, &s).second)
-                    sink_.warning(s.line, QStringLiteral("[%1] repeats sub-index %2 of [%3] (first at line %4); ignored").arg(s.name).arg(sub).arg(hex4(index)).arg(subs_[index][sub]->line));
+                    sink_.warning(s.line,
+                                  QStringLiteral("[%1] repeats sub-index %2 of [%3] (first at line %4); ignored")
+                                      .arg(s.name)
+                                      .arg(sub)
+                                      .arg(hex4(index))
+                                      .arg(subs_[index][sub]->line));
                 continue;
             case Kind::Name: names_[index] = &s; continue;
             case Kind::Value: values_[index] = &s; continue;
@@ -163,8 +172,9 @@ private:
         f.modificationTime = s->value(QStringLiteral("modificationtime"));
         f.modificationDate = s->value(QStringLiteral("modificationdate"));
         f.modifiedBy = s->value(QStringLiteral("modifiedby"));
-        keepExtra(*s, f.extraKeys, {"filename", "fileversion", "filerevision", "edsversion", "description", "creationtime", "creationdate",
-                                    "createdby", "modificationtime", "modificationdate", "modifiedby"});
+        keepExtra(*s, f.extraKeys,
+                  {"filename", "fileversion", "filerevision", "edsversion", "description", "creationtime",
+                   "creationdate", "createdby", "modificationtime", "modificationdate", "modifiedby"});
     }
 
     void readDeviceInfo() {
@@ -177,7 +187,8 @@ private:
         auto u32 = [&](const char* k) -> std::optional<std::uint32_t> {
             const auto v = number(s, k);
             if (v && *v > 0xFFFFFFFFu) {
-                sink_.warning(s->find(QString::fromLatin1(k))->line, QStringLiteral("%1 does not fit 32 bits; ignored").arg(QString::fromLatin1(k)));
+                sink_.warning(s->find(QString::fromLatin1(k))->line,
+                              QStringLiteral("%1 does not fit 32 bits; ignored").arg(QString::fromLatin1(k)));
                 return std::nullopt;
             }
             return v ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(*v)) : std::nullopt;
@@ -201,10 +212,14 @@ private:
         d.nrOfTxPdo = static_cast<int>(std::min<std::uint64_t>(number(s, "nroftxpdo").value_or(0), 512));
         d.lssSupported = flag(s, "lss_supported");
         d.compactPdo = static_cast<int>(number(s, "compactpdo").value_or(0) & 0xFF);
-        keepExtra(*s, d.extraKeys, {"vendorname", "vendornumber", "productname", "productnumber", "revisionnumber", "ordercode", "baudrate_10",
-                                    "baudrate_20", "baudrate_50", "baudrate_125", "baudrate_250", "baudrate_500", "baudrate_800", "baudrate_1000",
-                                    "simplebootupmaster", "simplebootupslave", "granularity", "dynamicchannelssupported", "groupmessaging",
-                                    "nrofrxpdo", "nroftxpdo", "lss_supported", "compactpdo"});
+        keepExtra(*s, d.extraKeys, {"vendorname",        "vendornumber",   "productname",
+                                    "productnumber",     "revisionnumber", "ordercode",
+                                    "baudrate_10",       "baudrate_20",    "baudrate_50",
+                                    "baudrate_125",      "baudrate_250",   "baudrate_500",
+                                    "baudrate_800",      "baudrate_1000",  "simplebootupmaster",
+                                    "simplebootupslave", "granularity",    "dynamicchannelssupported",
+                                    "groupmessaging",    "nrofrxpdo",      "nroftxpdo",
+                                    "lss_supported",     "compactpdo"});
     }
 
     void readCommissioning() {
@@ -212,11 +227,17 @@ private:
         const IniSection* old = doc_.section(QStringLiteral("devicecomissioning"));
         const IniSection* s = good ? good : old;
         if (good && old)
-            sink_.warning(old->line, QStringLiteral("both [DeviceCommissioning] and [DeviceComissioning]; the first spelling at line %1 is used").arg(good->line));
+            sink_.warning(
+                old->line,
+                QStringLiteral(
+                    "both [DeviceCommissioning] and [DeviceComissioning]; the first spelling at line %1 is used")
+                    .arg(good->line));
         if (!s) return;
         Commissioning& c = od_.commissioning;
         if (const auto id = number(s, "nodeid")) {
-            if (*id < 1 || *id > 127) sink_.warning(s->find(QStringLiteral("nodeid"))->line, QStringLiteral("NodeID %1 is outside 1..127; ignored").arg(*id));
+            if (*id < 1 || *id > 127)
+                sink_.warning(s->find(QStringLiteral("nodeid"))->line,
+                              QStringLiteral("NodeID %1 is outside 1..127; ignored").arg(*id));
             else c.nodeId = static_cast<std::uint8_t>(*id);
         }
         c.nodeName = s->value(QStringLiteral("nodename"));
@@ -225,7 +246,8 @@ private:
         c.networkName = s->value(QStringLiteral("networkname"));
         c.canopenManager = flag(s, "canopenmanager");
         if (const auto v = number(s, "lss_serialnumber")) c.lssSerialNumber = static_cast<std::uint32_t>(*v);
-        keepExtra(*s, c.extraKeys, {"nodeid", "nodename", "baudrate", "netnumber", "networkname", "canopenmanager", "lss_serialnumber"});
+        keepExtra(*s, c.extraKeys,
+                  {"nodeid", "nodename", "baudrate", "netnumber", "networkname", "canopenmanager", "lss_serialnumber"});
     }
 
     void readDummyUsage() {
@@ -257,7 +279,8 @@ private:
                     sink_.warning(range->line, QStringLiteral("Range%1='%2' is not FIRST-LAST").arg(si, range->value));
                 }
             }
-            ch.ppOffset = static_cast<std::uint32_t>(number(s->find(QStringLiteral("ppoffset") + si), s->name).value_or(0));
+            ch.ppOffset =
+                static_cast<std::uint32_t>(number(s->find(QStringLiteral("ppoffset") + si), s->name).value_or(0));
             od_.dynamicChannels.push_back(ch);
         }
     }
@@ -294,29 +317,40 @@ private:
             }
             if (count && static_cast<int>(*count) != found)
                 sink_.warning(s->find(QStringLiteral("supportedobjects"))->line,
-                              QStringLiteral("[%1] SupportedObjects=%2 but %3 entries are listed").arg(s->name).arg(*count).arg(found));
+                              QStringLiteral("[%1] SupportedObjects=%2 but %3 entries are listed")
+                                  .arg(s->name)
+                                  .arg(*count)
+                                  .arg(found));
         }
         std::set<std::uint16_t> result;
         if (!anyList) {
             if (!objects_.empty())
-                sink_.warning(0, QStringLiteral("no object lists ([MandatoryObjects], [OptionalObjects], [ManufacturerObjects]); every [XXXX] section is read as an object"));
+                sink_.warning(0, QStringLiteral("no object lists ([MandatoryObjects], [OptionalObjects], "
+                                                "[ManufacturerObjects]); every [XXXX] section is read as an object"));
             for (const auto& [i, s] : objects_) result.insert(i);
             return result;
         }
         for (const auto& [i, line] : listed) {
             if (objects_.count(i)) result.insert(i);
-            else sink_.warning(line, QStringLiteral("object 0x%1 is listed but has no section [%2]; skipped").arg(hex4(i), hex4(i)));
+            else
+                sink_.warning(
+                    line,
+                    QStringLiteral("object 0x%1 is listed but has no section [%2]; skipped").arg(hex4(i), hex4(i)));
         }
         for (const auto& [i, s] : objects_) {
             if (listed.count(i)) continue;
             // Data type definitions (index < 0x1000, e.g. dummies for [DummyUsage]) are not listed.
-            if (i >= 0x1000) sink_.warning(s->line, QStringLiteral("section [%1] is not in any object list; read anyway").arg(s->name));
+            if (i >= 0x1000)
+                sink_.warning(s->line,
+                              QStringLiteral("section [%1] is not in any object list; read anyway").arg(s->name));
             result.insert(i);
         }
         return result;
     }
 
-    static QString hex4(std::uint16_t i) { return QString::number(i, 16).toUpper().rightJustified(4, QLatin1Char('0')); }
+    static QString hex4(std::uint16_t i) {
+        return QString::number(i, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+    }
 
     // Validates value text of a key against the entry's type; drops an inline comment if that helps.
     void checkValue(SubObject& s, QString SubObject::*field, const IniEntry* e, const QString& section) {
@@ -344,10 +378,14 @@ private:
             s.name = sec.name;
         }
         if (const auto t = number(&sec, "datatype")) {
-            if (*t > 0xFFFF) sink_.warning(sec.find(QStringLiteral("datatype"))->line, QStringLiteral("DataType %1 is not a data type index").arg(*t));
+            if (*t > 0xFFFF)
+                sink_.warning(sec.find(QStringLiteral("datatype"))->line,
+                              QStringLiteral("DataType %1 is not a data type index").arg(*t));
             else s.dataType = static_cast<DataType>(*t);
             if (!isKnownBasicType(s.dataType) && !objects_.count(static_cast<std::uint16_t>(s.dataType)) && *t < 0x20)
-                sink_.warning(sec.find(QStringLiteral("datatype"))->line, QStringLiteral("DataType 0x%1 is not defined; handled as DOMAIN").arg(hex4(static_cast<std::uint16_t>(*t))));
+                sink_.warning(sec.find(QStringLiteral("datatype"))->line,
+                              QStringLiteral("DataType 0x%1 is not defined; handled as DOMAIN")
+                                  .arg(hex4(static_cast<std::uint16_t>(*t))));
         } else if (requireType) {
             sink_.warning(sec.line, QStringLiteral("[%1] has no DataType; UNSIGNED8 assumed").arg(sec.name));
         }
@@ -356,10 +394,15 @@ private:
             auto acc = accessFromString(a->value);
             if (!acc) {
                 acc = accessFromString(stripInlineComment(a->value, &stripped));
-                if (acc) sink_.warning(a->line, QStringLiteral("inline comment after AccessType in [%1] ignored").arg(sec.name));
+                if (acc)
+                    sink_.warning(a->line,
+                                  QStringLiteral("inline comment after AccessType in [%1] ignored").arg(sec.name));
             }
             if (acc) s.access = *acc;
-            else sink_.warning(a->line, QStringLiteral("AccessType='%1' in [%2] is not ro, wo, rw, rwr, rww or const; ro assumed").arg(a->value, sec.name));
+            else
+                sink_.warning(a->line,
+                              QStringLiteral("AccessType='%1' in [%2] is not ro, wo, rw, rwr, rww or const; ro assumed")
+                                  .arg(a->value, sec.name));
         } else if (requireType) {
             sink_.warning(sec.line, QStringLiteral("[%1] has no AccessType; ro assumed").arg(sec.name));
         }
@@ -371,11 +414,14 @@ private:
         checkValue(s, &SubObject::highLimit, sec.find(QStringLiteral("highlimit")), sec.name);
         s.denotation = sec.value(QStringLiteral("denotation"));
         s.line = sec.line;
-        keepExtra(sec, s.extraKeys, {"parametername", "objecttype", "datatype", "accesstype", "pdomapping", "objflags", "defaultvalue",
-                                     "parametervalue", "lowlimit", "highlimit", "denotation", "subnumber", "compactsubobj"});
+        keepExtra(sec, s.extraKeys,
+                  {"parametername", "objecttype", "datatype", "accesstype", "pdomapping", "objflags", "defaultvalue",
+                   "parametervalue", "lowlimit", "highlimit", "denotation", "subnumber", "compactsubobj"});
     }
 
-    std::optional<std::uint64_t> number(const IniSection* s, const QString& lowerKey) { return number(s->find(lowerKey), s->name); }
+    std::optional<std::uint64_t> number(const IniSection* s, const QString& lowerKey) {
+        return number(s->find(lowerKey), s->name);
+    }
 
     void readObjects() {
         for (std::uint16_t index : objectSet()) {
@@ -394,22 +440,34 @@ private:
             ObjectType type = ObjectType::Var;
             if (ot) {
                 switch (*ot) {
-                case 0x0: case 0x2: case 0x5: case 0x6: case 0x7: case 0x8: case 0x9: type = static_cast<ObjectType>(*ot); break;
+                case 0x0:
+                case 0x2:
+                case 0x5:
+                case 0x6:
+                case 0x7:
+                case 0x8:
+                case 0x9: type = static_cast<ObjectType>(*ot); break;
                 default:
-                    sink_.warning(sec.find(QStringLiteral("objecttype"))->line, QStringLiteral("ObjectType=%1 in [%2] is not a CiA 301 object code").arg(*ot).arg(sec.name));
+                    sink_.warning(
+                        sec.find(QStringLiteral("objecttype"))->line,
+                        QStringLiteral("ObjectType=%1 in [%2] is not a CiA 301 object code").arg(*ot).arg(sec.name));
                     type = hasSubs ? ObjectType::Record : ObjectType::Var;
                 }
             } else if (hasSubs || (compact && *compact)) {
                 type = ObjectType::Record;
-                sink_.warning(sec.line, QStringLiteral("[%1] has sub-objects but no ObjectType; RECORD assumed").arg(sec.name));
+                sink_.warning(sec.line,
+                              QStringLiteral("[%1] has sub-objects but no ObjectType; RECORD assumed").arg(sec.name));
             }
             o.objectType = type;
             if (const auto t = number(&sec, "datatype"); t && *t <= 0xFFFF) o.dataType = static_cast<DataType>(*t);
             else if (type == ObjectType::Domain) o.dataType = DataType::Domain;
             o.objFlags = static_cast<std::uint32_t>(number(&sec, "objflags").value_or(0));
-            keepExtra(sec, o.extraKeys, {"parametername", "objecttype", "datatype", "accesstype", "pdomapping", "objflags", "defaultvalue",
-                                         "parametervalue", "lowlimit", "highlimit", "denotation", "subnumber", "compactsubobj"});
-            const bool composite = type == ObjectType::Array || type == ObjectType::Record || type == ObjectType::DefStruct;
+            keepExtra(
+                sec, o.extraKeys,
+                {"parametername", "objecttype", "datatype", "accesstype", "pdomapping", "objflags", "defaultvalue",
+                 "parametervalue", "lowlimit", "highlimit", "denotation", "subnumber", "compactsubobj"});
+            const bool composite =
+                type == ObjectType::Array || type == ObjectType::Record || type == ObjectType::DefStruct;
             if (!composite) {
                 SubObject s;
                 s.index = index;
@@ -419,7 +477,9 @@ private:
                 if (type == ObjectType::Domain && !sec.find(QStringLiteral("accesstype"))) s.access = Access::ReadWrite;
                 o.subs.push_back(std::move(s));
                 o.extraKeys.clear();  // kept on the entry
-                if (hasSubs) sink_.warning(sec.line, QStringLiteral("[%1] is a %2 but has sub-object sections; they are ignored").arg(sec.name, objectTypeName(type)));
+                if (hasSubs)
+                    sink_.warning(sec.line, QStringLiteral("[%1] is a %2 but has sub-object sections; they are ignored")
+                                                .arg(sec.name, objectTypeName(type)));
             } else if (compact && *compact > 0) {
                 readCompact(o, sec, static_cast<int>(std::min<std::uint64_t>(*compact, 254)));
             } else {
@@ -430,17 +490,24 @@ private:
                     fillEntry(s, *subSec, true);
                     o.subs.push_back(std::move(s));
                 }
-                if (o.subs.empty()) sink_.warning(sec.line, QStringLiteral("[%1] is a %2 without sub-objects").arg(sec.name, objectTypeName(type)));
+                if (o.subs.empty())
+                    sink_.warning(
+                        sec.line,
+                        QStringLiteral("[%1] is a %2 without sub-objects").arg(sec.name, objectTypeName(type)));
                 if (const auto n = number(&sec, "subnumber"); n && static_cast<size_t>(*n) != o.subs.size())
                     sink_.warning(sec.find(QStringLiteral("subnumber"))->line,
-                                  QStringLiteral("[%1] SubNumber=%2 but %3 sub-object sections were found").arg(sec.name).arg(*n).arg(o.subs.size()));
+                                  QStringLiteral("[%1] SubNumber=%2 but %3 sub-object sections were found")
+                                      .arg(sec.name)
+                                      .arg(*n)
+                                      .arg(o.subs.size()));
             }
             if (const IniSection* l = links_.count(index) ? links_[index] : nullptr) {
                 for (const IniEntry& e : l->entries) {
                     bool isIndexKey = false;
                     e.key.toUInt(&isIndexKey, 10);
                     if (!isIndexKey) continue;
-                    if (const auto v = number(&e, l->name); v && *v <= 0xFFFF) o.objectLinks.push_back(static_cast<std::uint16_t>(*v));
+                    if (const auto v = number(&e, l->name); v && *v <= 0xFFFF)
+                        o.objectLinks.push_back(static_cast<std::uint16_t>(*v));
                 }
             }
             od_.insert(std::move(o));
@@ -448,7 +515,8 @@ private:
         for (const auto& [index, m] : subs_) {
             if (od_.object(index) || m.empty()) continue;
             const IniSection* first = m.begin()->second;
-            sink_.warning(first->line, QStringLiteral("[%1] has no object section [%2]; ignored").arg(first->name, hex4(index)));
+            sink_.warning(first->line,
+                          QStringLiteral("[%1] has no object section [%2]; ignored").arg(first->name, hex4(index)));
         }
     }
 
@@ -514,13 +582,27 @@ private:
                     o.subs.push_back(s);
                 };
                 int highest = 0;
-                const QString cob = n < 4 ? QStringLiteral("$NODEID+0x%1").arg((tx ? 0x180 : 0x200) + 0x100 * n, 0, 16) : QStringLiteral("0x80000000");
-                if (mask & 0x01) add(1, QStringLiteral("COB-ID"), DataType::Unsigned32, Access::ReadWrite, cob), highest = 1;
-                if (mask & 0x02) add(2, QStringLiteral("Transmission type"), DataType::Unsigned8, Access::ReadWrite, QStringLiteral("0xFF")), highest = 2;
-                if (mask & 0x04) add(3, QStringLiteral("Inhibit time"), DataType::Unsigned16, Access::ReadWrite, QStringLiteral("0")), highest = 3;
-                if (mask & 0x10) add(5, QStringLiteral("Event timer"), DataType::Unsigned16, Access::ReadWrite, QStringLiteral("0")), highest = 5;
-                if (tx && (mask & 0x20)) add(6, QStringLiteral("SYNC start value"), DataType::Unsigned8, Access::ReadWrite, QStringLiteral("0")), highest = 6;
-                add(0, QStringLiteral("Highest sub-index supported"), DataType::Unsigned8, Access::Const, QString::number(highest));
+                const QString cob = n < 4 ? QStringLiteral("$NODEID+0x%1").arg((tx ? 0x180 : 0x200) + 0x100 * n, 0, 16)
+                                          : QStringLiteral("0x80000000");
+                if (mask & 0x01)
+                    add(1, QStringLiteral("COB-ID"), DataType::Unsigned32, Access::ReadWrite, cob), highest = 1;
+                if (mask & 0x02)
+                    add(2, QStringLiteral("Transmission type"), DataType::Unsigned8, Access::ReadWrite,
+                        QStringLiteral("0xFF")),
+                        highest = 2;
+                if (mask & 0x04)
+                    add(3, QStringLiteral("Inhibit time"), DataType::Unsigned16, Access::ReadWrite,
+                        QStringLiteral("0")),
+                        highest = 3;
+                if (mask & 0x10)
+                    add(5, QStringLiteral("Event timer"), DataType::Unsigned16, Access::ReadWrite, QStringLiteral("0")),
+                        highest = 5;
+                if (tx && (mask & 0x20))
+                    add(6, QStringLiteral("SYNC start value"), DataType::Unsigned8, Access::ReadWrite,
+                        QStringLiteral("0")),
+                        highest = 6;
+                add(0, QStringLiteral("Highest sub-index supported"), DataType::Unsigned8, Access::Const,
+                    QString::number(highest));
                 od_.insert(std::move(o));
             }
             if (!od_.object(map)) {
@@ -547,8 +629,10 @@ private:
                 od_.insert(std::move(o));
             }
         };
-        for (int i = 0; i < od_.device.nrOfRxPdo; ++i) make(static_cast<std::uint16_t>(0x1400 + i), static_cast<std::uint16_t>(0x1600 + i), i, false);
-        for (int i = 0; i < od_.device.nrOfTxPdo; ++i) make(static_cast<std::uint16_t>(0x1800 + i), static_cast<std::uint16_t>(0x1A00 + i), i, true);
+        for (int i = 0; i < od_.device.nrOfRxPdo; ++i)
+            make(static_cast<std::uint16_t>(0x1400 + i), static_cast<std::uint16_t>(0x1600 + i), i, false);
+        for (int i = 0; i < od_.device.nrOfTxPdo; ++i)
+            make(static_cast<std::uint16_t>(0x1800 + i), static_cast<std::uint16_t>(0x1A00 + i), i, true);
     }
 
     const IniDocument& doc_;
@@ -568,7 +652,9 @@ ReadResult EdsReader::read(const QByteArray& bytes, const QString& fileName) {
     const IniDocument doc = IniDocument::parse(text, sink);
     Builder(doc, sink, r.dictionary).run();
     r.usable = r.dictionary.objectCount() > 0;
-    if (!r.usable) sink.error(0, bytes.isEmpty() ? QStringLiteral("file is empty") : QStringLiteral("no object could be read; not a usable EDS/DCF"));
+    if (!r.usable)
+        sink.error(0, bytes.isEmpty() ? QStringLiteral("file is empty")
+                                      : QStringLiteral("no object could be read; not a usable EDS/DCF"));
     r.diagnostics = sink.take();
     return r;
 }
@@ -577,7 +663,8 @@ ReadResult EdsReader::readFile(const QString& path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         ReadResult r;
-        r.diagnostics.push_back({path, 0, Diagnostic::Severity::Error, QStringLiteral("cannot open: %1").arg(f.errorString())});
+        r.diagnostics.push_back(
+            {path, 0, Diagnostic::Severity::Error, QStringLiteral("cannot open: %1").arg(f.errorString())});
         return r;
     }
     return read(f.readAll(), path);
@@ -586,7 +673,8 @@ ReadResult EdsReader::readFile(const QString& path) {
 ReadResult readDictionary(const QByteArray& bytes, const QString& fileName) {
     qsizetype i = bytes.startsWith("\xEF\xBB\xBF") ? 3 : 0;
     while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\r' || bytes[i] == '\n')) ++i;
-    if (i < bytes.size() && bytes[i] == '<') return XddReader::read(bytes.mid(i), fileName);  // an XML declaration must come first
+    if (i < bytes.size() && bytes[i] == '<')
+        return XddReader::read(bytes.mid(i), fileName);  // an XML declaration must come first
     return EdsReader::read(bytes, fileName);
 }
 
@@ -594,7 +682,8 @@ ReadResult readDictionaryFile(const QString& path) {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         ReadResult r;
-        r.diagnostics.push_back({path, 0, Diagnostic::Severity::Error, QStringLiteral("cannot open: %1").arg(f.errorString())});
+        r.diagnostics.push_back(
+            {path, 0, Diagnostic::Severity::Error, QStringLiteral("cannot open: %1").arg(f.errorString())});
         return r;
     }
     return readDictionary(f.readAll(), path);

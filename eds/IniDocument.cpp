@@ -36,9 +36,11 @@ IniDocument IniDocument::parse(const QString& text, DiagnosticSink& sink) {
             auto it = doc.byName_.constFind(lower);
             if (it != doc.byName_.constEnd()) {
                 current = *it;
-                sink.warning(lineNo, QStringLiteral("section [%1] appears again (first at line %2); merged, first value of each key wins")
-                                         .arg(name)
-                                         .arg(doc.sections_[static_cast<size_t>(current)].line));
+                sink.warning(lineNo,
+                             QStringLiteral(
+                                 "section [%1] appears again (first at line %2); merged, first value of each key wins")
+                                 .arg(name)
+                                 .arg(doc.sections_[static_cast<size_t>(current)].line));
             } else {
                 current = static_cast<int>(doc.sections_.size());
                 doc.byName_.insert(lower, current);
@@ -61,9 +63,10 @@ IniDocument IniDocument::parse(const QString& text, DiagnosticSink& sink) {
             const QString lower = e.key.toLower();
             auto it = s.byKey.constFind(lower);
             if (it != s.byKey.constEnd()) {
-                sink.warning(lineNo, QStringLiteral("duplicate key %1 in [%2] (first at line %3); the first value is used")
-                                         .arg(e.key, s.name)
-                                         .arg(s.entries[static_cast<size_t>(*it)].line));
+                sink.warning(lineNo,
+                             QStringLiteral("duplicate key %1 in [%2] (first at line %3); the first value is used")
+                                 .arg(e.key, s.name)
+                                 .arg(s.entries[static_cast<size_t>(*it)].line));
             } else {
                 s.byKey.insert(lower, static_cast<int>(s.entries.size()));
                 s.entries.push_back(std::move(e));

@@ -17,11 +17,14 @@ void installSimulatorDictionaries() {
         }
         ReadResult result = library.load(name);
         if (!result.usable) {
-            if (error) *error = QStringLiteral("dictionary '%1' could not be read (%2 errors)").arg(name).arg(result.errorCount());
+            if (error)
+                *error =
+                    QStringLiteral("dictionary '%1' could not be read (%2 errors)").arg(name).arg(result.errorCount());
             return std::nullopt;
         }
         if (result.errorCount() > 0)
-            spdlog::warn("simulator dictionary {}: {} errors, {} warnings", name.toStdString(), result.errorCount(), result.warningCount());
+            spdlog::warn("simulator dictionary {}: {} errors, {} warnings", name.toStdString(), result.errorCount(),
+                         result.warningCount());
         return std::move(result.dictionary);
     });
 }

@@ -34,14 +34,16 @@ od::Object simple(std::uint16_t index, const QString& name, DataType type, Acces
 }
 
 // ARRAY of `count` entries named "<entry> n" after sub 0 "Highest sub-index supported".
-od::Object array(std::uint16_t index, const QString& name, const QString& entry, DataType type, Access access, int count) {
+od::Object array(std::uint16_t index, const QString& name, const QString& entry, DataType type, Access access,
+                 int count) {
     od::Object o;
     o.index = index;
     o.name = name;
     o.objectType = ObjectType::Array;
     o.dataType = type;
     o.subs.push_back(var(0, QStringLiteral("Highest sub-index supported"), DataType::Unsigned8, Access::ReadOnly));
-    for (int i = 1; i <= count; ++i) o.subs.push_back(var(static_cast<std::uint8_t>(i), QStringLiteral("%1 %2").arg(entry).arg(i), type, access));
+    for (int i = 1; i <= count; ++i)
+        o.subs.push_back(var(static_cast<std::uint8_t>(i), QStringLiteral("%1 %2").arg(entry).arg(i), type, access));
     return o;
 }
 
@@ -61,9 +63,12 @@ void addIfMissing(od::ObjectDictionary& d, od::Object o) {
 
 // CiA 301 v4.2 7.5.2: the communication objects 1000h-1029h the generic drive leaves out.
 void addCommunicationObjects(od::ObjectDictionary& d) {
-    addIfMissing(d, simple(0x1002, QStringLiteral("Manufacturer status register"), DataType::Unsigned32, Access::ReadOnly));
-    addIfMissing(d, simple(0x1012, QStringLiteral("COB-ID time stamp object"), DataType::Unsigned32, Access::ReadWrite));
-    addIfMissing(d, simple(0x1013, QStringLiteral("High resolution time stamp"), DataType::Unsigned32, Access::ReadWrite));
+    addIfMissing(
+        d, simple(0x1002, QStringLiteral("Manufacturer status register"), DataType::Unsigned32, Access::ReadOnly));
+    addIfMissing(d,
+                 simple(0x1012, QStringLiteral("COB-ID time stamp object"), DataType::Unsigned32, Access::ReadWrite));
+    addIfMissing(d,
+                 simple(0x1013, QStringLiteral("High resolution time stamp"), DataType::Unsigned32, Access::ReadWrite));
     addIfMissing(d, record(0x1020, QStringLiteral("Verify configuration"),
                            {var(1, QStringLiteral("Configuration date"), DataType::Unsigned32, Access::ReadWrite),
                             var(2, QStringLiteral("Configuration time"), DataType::Unsigned32, Access::ReadWrite)}));
@@ -82,21 +87,25 @@ void addCommunicationObjects(od::ObjectDictionary& d) {
                            {var(1, QStringLiteral("StdIn"), DataType::Unsigned8, Access::WriteOnly),
                             var(2, QStringLiteral("StdOut"), DataType::Unsigned8, Access::ReadOnly),
                             var(3, QStringLiteral("StdErr"), DataType::Unsigned8, Access::ReadOnly)}));
-    addIfMissing(d, array(0x1027, QStringLiteral("Module list"), QStringLiteral("Module"), DataType::Unsigned16, Access::ReadOnly, 0xFE));
-    addIfMissing(d, array(0x1028, QStringLiteral("Emergency consumer object"), QStringLiteral("Emergency consumer"), DataType::Unsigned32, Access::ReadWrite, 0x7F));
+    addIfMissing(d, array(0x1027, QStringLiteral("Module list"), QStringLiteral("Module"), DataType::Unsigned16,
+                          Access::ReadOnly, 0xFE));
+    addIfMissing(d, array(0x1028, QStringLiteral("Emergency consumer object"), QStringLiteral("Emergency consumer"),
+                          DataType::Unsigned32, Access::ReadWrite, 0x7F));
 }
 
 // CiA 301 v4.2 7.5.2.33/34: SDO server parameter 1200h-127Fh, SDO client parameter 1280h-12FFh.
 void addSdoParameters(od::ObjectDictionary& d) {
     for (int n = 0; n < 128; ++n) {
-        addIfMissing(d, record(static_cast<std::uint16_t>(0x1200 + n), QStringLiteral("SDO server parameter %1").arg(n + 1),
-                               {var(1, QStringLiteral("COB-ID client to server (rx)"), DataType::Unsigned32, Access::ReadWrite),
-                                var(2, QStringLiteral("COB-ID server to client (tx)"), DataType::Unsigned32, Access::ReadWrite),
-                                var(3, QStringLiteral("Node-ID of the SDO client"), DataType::Unsigned8, Access::ReadWrite)}));
-        addIfMissing(d, record(static_cast<std::uint16_t>(0x1280 + n), QStringLiteral("SDO client parameter %1").arg(n + 1),
-                               {var(1, QStringLiteral("COB-ID client to server (tx)"), DataType::Unsigned32, Access::ReadWrite),
-                                var(2, QStringLiteral("COB-ID server to client (rx)"), DataType::Unsigned32, Access::ReadWrite),
-                                var(3, QStringLiteral("Node-ID of the SDO server"), DataType::Unsigned8, Access::ReadWrite)}));
+        addIfMissing(
+            d, record(static_cast<std::uint16_t>(0x1200 + n), QStringLiteral("SDO server parameter %1").arg(n + 1),
+                      {var(1, QStringLiteral("COB-ID client to server (rx)"), DataType::Unsigned32, Access::ReadWrite),
+                       var(2, QStringLiteral("COB-ID server to client (tx)"), DataType::Unsigned32, Access::ReadWrite),
+                       var(3, QStringLiteral("Node-ID of the SDO client"), DataType::Unsigned8, Access::ReadWrite)}));
+        addIfMissing(
+            d, record(static_cast<std::uint16_t>(0x1280 + n), QStringLiteral("SDO client parameter %1").arg(n + 1),
+                      {var(1, QStringLiteral("COB-ID client to server (tx)"), DataType::Unsigned32, Access::ReadWrite),
+                       var(2, QStringLiteral("COB-ID server to client (rx)"), DataType::Unsigned32, Access::ReadWrite),
+                       var(3, QStringLiteral("Node-ID of the SDO server"), DataType::Unsigned8, Access::ReadWrite)}));
     }
 }
 
@@ -114,22 +123,26 @@ void addPdoParameters(od::ObjectDictionary& d) {
                 var(3, QStringLiteral("Inhibit time"), DataType::Unsigned16, Access::ReadWrite),
                 var(4, QStringLiteral("Compatibility entry"), DataType::Unsigned8, Access::ReadWrite),
                 var(5, QStringLiteral("Event timer"), DataType::Unsigned16, Access::ReadWrite)};
-            if (tpdo) comm.push_back(var(6, QStringLiteral("SYNC start value"), DataType::Unsigned8, Access::ReadWrite));
+            if (tpdo)
+                comm.push_back(var(6, QStringLiteral("SYNC start value"), DataType::Unsigned8, Access::ReadWrite));
             const auto commIndex = static_cast<std::uint16_t>(commBase + n);
             const auto mapIndex = static_cast<std::uint16_t>(commBase + 0x200 + n);
-            addIfMissing(d, record(commIndex, QStringLiteral("%1%2 communication parameter").arg(kind).arg(n + 1), std::move(comm)));
+            addIfMissing(d, record(commIndex, QStringLiteral("%1%2 communication parameter").arg(kind).arg(n + 1),
+                                   std::move(comm)));
             od::Object map;
             if (const od::Object* have = d.object(mapIndex)) map = *have;
             else {
                 map.index = mapIndex;
                 map.name = QStringLiteral("%1%2 mapping parameter").arg(kind).arg(n + 1);
                 map.objectType = ObjectType::Record;
-                map.subs.push_back(var(0, QStringLiteral("Number of mapped objects"), DataType::Unsigned8, Access::ReadWrite));
+                map.subs.push_back(
+                    var(0, QStringLiteral("Number of mapped objects"), DataType::Unsigned8, Access::ReadWrite));
             }
             // Mapping entries up to 40h (64 one-bit objects fill a classic CAN PDO).
             for (int i = 1; i <= 0x40; ++i)
                 if (!map.sub(static_cast<std::uint8_t>(i)))
-                    map.subs.push_back(var(static_cast<std::uint8_t>(i), QStringLiteral("Mapped object %1").arg(i), DataType::Unsigned32, Access::ReadWrite));
+                    map.subs.push_back(var(static_cast<std::uint8_t>(i), QStringLiteral("Mapped object %1").arg(i),
+                                           DataType::Unsigned32, Access::ReadWrite));
             d.insert(std::move(map));
         }
     }
@@ -157,7 +170,8 @@ const od::ObjectDictionary& standardDictionary() {
     return dictionary;
 }
 
-const od::SubObject* entryWithStandard(const od::ObjectDictionary* device, std::uint16_t index, std::uint8_t sub, const od::ObjectDictionary** names) {
+const od::SubObject* entryWithStandard(const od::ObjectDictionary* device, std::uint16_t index, std::uint8_t sub,
+                                       const od::ObjectDictionary** names) {
     if (device)
         if (const od::SubObject* e = device->entry(index, sub)) {
             if (names) *names = device;

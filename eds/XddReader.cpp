@@ -29,16 +29,16 @@ struct XObject {
 // IEC 61131-3 elementary types used by CiA 311 (7.3) and their CiA 301 equivalents.
 std::optional<DataType> iecType(QStringView n) {
     static const QHash<QString, DataType> map{
-        {QStringLiteral("BOOL"), DataType::Boolean},       {QStringLiteral("SINT"), DataType::Integer8},
-        {QStringLiteral("INT"), DataType::Integer16},      {QStringLiteral("DINT"), DataType::Integer32},
-        {QStringLiteral("LINT"), DataType::Integer64},     {QStringLiteral("USINT"), DataType::Unsigned8},
-        {QStringLiteral("UINT"), DataType::Unsigned16},    {QStringLiteral("UDINT"), DataType::Unsigned32},
-        {QStringLiteral("ULINT"), DataType::Unsigned64},   {QStringLiteral("REAL"), DataType::Real32},
-        {QStringLiteral("LREAL"), DataType::Real64},       {QStringLiteral("STRING"), DataType::VisibleString},
+        {QStringLiteral("BOOL"), DataType::Boolean},          {QStringLiteral("SINT"), DataType::Integer8},
+        {QStringLiteral("INT"), DataType::Integer16},         {QStringLiteral("DINT"), DataType::Integer32},
+        {QStringLiteral("LINT"), DataType::Integer64},        {QStringLiteral("USINT"), DataType::Unsigned8},
+        {QStringLiteral("UINT"), DataType::Unsigned16},       {QStringLiteral("UDINT"), DataType::Unsigned32},
+        {QStringLiteral("ULINT"), DataType::Unsigned64},      {QStringLiteral("REAL"), DataType::Real32},
+        {QStringLiteral("LREAL"), DataType::Real64},          {QStringLiteral("STRING"), DataType::VisibleString},
         {QStringLiteral("WSTRING"), DataType::UnicodeString}, {QStringLiteral("BITSTRING"), DataType::OctetString},
-        {QStringLiteral("BYTE"), DataType::Unsigned8},     {QStringLiteral("WORD"), DataType::Unsigned16},
-        {QStringLiteral("DWORD"), DataType::Unsigned32},   {QStringLiteral("LWORD"), DataType::Unsigned64},
-        {QStringLiteral("CHAR"), DataType::Unsigned8},     {QStringLiteral("WCHAR"), DataType::Unsigned16},
+        {QStringLiteral("BYTE"), DataType::Unsigned8},        {QStringLiteral("WORD"), DataType::Unsigned16},
+        {QStringLiteral("DWORD"), DataType::Unsigned32},      {QStringLiteral("LWORD"), DataType::Unsigned64},
+        {QStringLiteral("CHAR"), DataType::Unsigned8},        {QStringLiteral("WCHAR"), DataType::Unsigned16},
     };
     auto it = map.constFind(n.toString());
     if (it == map.constEnd()) return std::nullopt;
@@ -98,7 +98,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
         const int line = static_cast<int>(xml.lineNumber());
         if (name == u"DeviceIdentity") {
             inDeviceIdentity = true;
-        } else if (inDeviceIdentity && (name == u"vendorName" || name == u"vendorID" || name == u"productName" || name == u"productID")) {
+        } else if (inDeviceIdentity &&
+                   (name == u"vendorName" || name == u"vendorID" || name == u"productName" || name == u"productID")) {
             const QString text = xml.readElementText(QXmlStreamReader::IncludeChildElements).trimmed();
             auto number = [&]() -> std::optional<std::uint32_t> {
                 // vendorID/productID are hex in CiA 311 (xsd:hexBinary), "0x" tolerated.
@@ -106,7 +107,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
                 if (t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) t = t.mid(2);
                 const auto v = hexNum(t);
                 if (!v || *v > 0xFFFFFFFFu) {
-                    if (!text.isEmpty()) sink.warning(line, QStringLiteral("%1 '%2' is not a hex number").arg(name, text));
+                    if (!text.isEmpty())
+                        sink.warning(line, QStringLiteral("%1 '%2' is not a hex number").arg(name, text));
                     return std::nullopt;
                 }
                 return static_cast<std::uint32_t>(*v);
@@ -117,12 +119,15 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
             else od.device.productNumber = number();
         } else if (name == u"ProfileBody") {
             if (od.fileInfo.fileName.isEmpty()) od.fileInfo.fileName = a.value(QLatin1String("fileName")).toString();
-            if (od.fileInfo.createdBy.isEmpty()) od.fileInfo.createdBy = a.value(QLatin1String("fileCreator")).toString();
-            if (od.fileInfo.fileVersion.isEmpty()) od.fileInfo.fileVersion = a.value(QLatin1String("fileVersion")).toString();
+            if (od.fileInfo.createdBy.isEmpty())
+                od.fileInfo.createdBy = a.value(QLatin1String("fileCreator")).toString();
+            if (od.fileInfo.fileVersion.isEmpty())
+                od.fileInfo.fileVersion = a.value(QLatin1String("fileVersion")).toString();
         } else if (name == u"parameter") {
             currentParam = a.value(QLatin1String("uniqueID")).toString();
             Parameter& p = params[currentParam];
-            p.access = a.hasAttribute(QLatin1String("access")) ? a.value(QLatin1String("access")).toString() : QStringLiteral("read");
+            p.access = a.hasAttribute(QLatin1String("access")) ? a.value(QLatin1String("access")).toString()
+                                                               : QStringLiteral("read");
         } else if (!currentParam.isEmpty() && (name == u"defaultValue" || name == u"actualValue")) {
             Parameter& p = params[currentParam];
             (name == u"defaultValue" ? p.defaultValue : p.actualValue) = a.value(QLatin1String("value")).toString();
@@ -133,7 +138,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
         } else if (name == u"CANopenObject") {
             objects.push_back({a, line, {}});
         } else if (name == u"CANopenSubObject") {
-            if (objects.empty()) sink.warning(line, QStringLiteral("CANopenSubObject outside a CANopenObject; ignored"));
+            if (objects.empty())
+                sink.warning(line, QStringLiteral("CANopenSubObject outside a CANopenObject; ignored"));
             else objects.back().subs.push_back({a, line});
         } else if (name == u"supportedBaudRate") {
             const QString v = a.value(QLatin1String("value")).toString();
@@ -145,7 +151,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
             od.device.nrOfRxPdo = a.value(QLatin1String("nrOfRxPDO")).toInt();
             od.device.nrOfTxPdo = a.value(QLatin1String("nrOfTxPDO")).toInt();
             od.device.lssSupported = a.value(QLatin1String("layerSettingServiceSlave")) == u"true";
-            if (a.hasAttribute(QLatin1String("granularity"))) od.device.granularity = a.value(QLatin1String("granularity")).toInt();
+            if (a.hasAttribute(QLatin1String("granularity")))
+                od.device.granularity = a.value(QLatin1String("granularity")).toInt();
             od.device.groupMessaging = a.value(QLatin1String("groupMessaging")) == u"true";
             od.device.dynamicChannelsSupported = a.value(QLatin1String("dynamicChannels")).toInt() > 0;
         } else if (name == u"dummy") {
@@ -163,18 +170,22 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
         }
     }
     if (xml.hasError())
-        sink.error(static_cast<int>(xml.lineNumber()), QStringLiteral("XML: %1 (what was read before is kept)").arg(xml.errorString()));
+        sink.error(static_cast<int>(xml.lineNumber()),
+                   QStringLiteral("XML: %1 (what was read before is kept)").arg(xml.errorString()));
 
     auto fill = [&](SubObject& s, const QXmlStreamAttributes& a, int line) {
         const Parameter p = params.value(a.value(QLatin1String("uniqueIDRef")).toString());
         s.name = a.value(QLatin1String("name")).toString();
         s.line = line;
-        if (const auto t = hexNum(a.value(QLatin1String("dataType"))); t && *t <= 0xFFFF) s.dataType = static_cast<DataType>(*t);
+        if (const auto t = hexNum(a.value(QLatin1String("dataType"))); t && *t <= 0xFFFF)
+            s.dataType = static_cast<DataType>(*t);
         else if (p.type) s.dataType = *p.type;
         if (a.hasAttribute(QLatin1String("accessType"))) {
             const auto acc = accessFromString(a.value(QLatin1String("accessType")).toString());
             if (acc) s.access = *acc;
-            else sink.warning(line, QStringLiteral("accessType '%1' is not ro, wo, rw, rwr, rww or const").arg(a.value(QLatin1String("accessType"))));
+            else
+                sink.warning(line, QStringLiteral("accessType '%1' is not ro, wo, rw, rwr, rww or const")
+                                       .arg(a.value(QLatin1String("accessType"))));
         } else if (const auto acc = parameterAccess(p.access)) {
             s.access = *acc;
         }
@@ -190,7 +201,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
         s.denotation = a.value(QLatin1String("denotation")).toString();
         if (!s.defaultValue.isEmpty() && typeClass(s.dataType) != TypeClass::Domain) {
             QString why;
-            if (!s.interpret(s.defaultValue, 1, &why)) sink.warning(line, QStringLiteral("defaultValue of %1: %2; kept as text").arg(s.name, why));
+            if (!s.interpret(s.defaultValue, 1, &why))
+                sink.warning(line, QStringLiteral("defaultValue of %1: %2; kept as text").arg(s.name, why));
         }
     };
 
@@ -198,14 +210,17 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
         Object o;
         const auto index = hexNum(xo.attrs.value(QLatin1String("index")));
         if (!index || *index > 0xFFFF) {
-            sink.warning(xo.line, QStringLiteral("CANopenObject index '%1' is not a hex index; skipped").arg(xo.attrs.value(QLatin1String("index"))));
+            sink.warning(xo.line, QStringLiteral("CANopenObject index '%1' is not a hex index; skipped")
+                                      .arg(xo.attrs.value(QLatin1String("index"))));
             continue;
         }
         o.index = static_cast<std::uint16_t>(*index);
         o.line = xo.line;
         o.name = xo.attrs.value(QLatin1String("name")).toString();
         const auto ot = num(xo.attrs.value(QLatin1String("objectType")), TextStyle::Person).value_or(7);
-        o.objectType = (ot == 0 || ot == 2 || ot == 5 || ot == 6 || ot == 7 || ot == 8 || ot == 9) ? static_cast<ObjectType>(ot) : ObjectType::Var;
+        o.objectType = (ot == 0 || ot == 2 || ot == 5 || ot == 6 || ot == 7 || ot == 8 || ot == 9)
+                           ? static_cast<ObjectType>(ot)
+                           : ObjectType::Var;
         if (!o.isComposite()) {
             SubObject s;
             s.index = o.index;
@@ -216,7 +231,8 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
             for (const auto& [sa, sl] : xo.subs) {
                 const auto sub = hexNum(sa.value(QLatin1String("subIndex")));
                 if (!sub || *sub > 0xFF) {
-                    sink.warning(sl, QStringLiteral("subIndex '%1' is not a hex sub-index; skipped").arg(sa.value(QLatin1String("subIndex"))));
+                    sink.warning(sl, QStringLiteral("subIndex '%1' is not a hex sub-index; skipped")
+                                         .arg(sa.value(QLatin1String("subIndex"))));
                     continue;
                 }
                 SubObject s;
@@ -226,7 +242,9 @@ ReadResult XddReader::read(const QByteArray& bytes, const QString& fileName) {
                 o.subs.push_back(s);
             }
         }
-        if (od.object(o.index)) sink.warning(xo.line, QStringLiteral("object %1 appears again; the first is kept").arg(xo.attrs.value(QLatin1String("index"))));
+        if (od.object(o.index))
+            sink.warning(xo.line, QStringLiteral("object %1 appears again; the first is kept")
+                                      .arg(xo.attrs.value(QLatin1String("index"))));
         else od.insert(std::move(o));
     }
     r.usable = od.objectCount() > 0;

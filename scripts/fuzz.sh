@@ -3,7 +3,7 @@
 # Builds the libFuzzer targets alone (clang, ASan+UBSan; not the rest of the tree) and runs each
 # for SECONDS (default 300) from its seed corpus in tests/fuzz/corpus/<target>/; what a run finds
 # new stays in build/fuzz/corpus/<target>/. Usage: scripts/fuzz.sh [SECONDS] [NAME-FILTER]
-# CI (.ci/run) runs every target for 30 s so fuzzing cannot rot unseen.
+# CI (.ci/run) runs every target for 10 s so fuzzing cannot rot unseen.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh test

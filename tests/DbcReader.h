@@ -51,7 +51,9 @@ inline File parse(const QByteArray& text) {
     const QString ident = QStringLiteral("[A-Za-z_][A-Za-z0-9_]*");
     const QString numRe = QStringLiteral("[-+]?[0-9.]+(?:[eE][-+]?[0-9]+)?");
     const QRegularExpression bo(QStringLiteral("^BO_ ([0-9]+) (%1): ([0-9]+) (%1)$").arg(ident));
-    const QRegularExpression sg(QStringLiteral("^ SG_ (%1) : ([0-9]+)\\|([0-9]+)@([01])([+-]) \\((%2),(%2)\\) \\[(%2)\\|(%2)\\] \"([^\"]*)\" (%1(?:,%1)*)$").arg(ident, numRe));
+    const QRegularExpression sg(QStringLiteral("^ SG_ (%1) : ([0-9]+)\\|([0-9]+)@([01])([+-]) \\((%2),(%2)\\) "
+                                               "\\[(%2)\\|(%2)\\] \"([^\"]*)\" (%1(?:,%1)*)$")
+                                    .arg(ident, numRe));
     const QRegularExpression cmBo(QStringLiteral("^CM_ BO_ ([0-9]+) \"([^\"]*)\";$"));
     const QRegularExpression cmSg(QStringLiteral("^CM_ SG_ ([0-9]+) (%1) \"([^\"]*)\";$").arg(ident));
     const QRegularExpression valType(QStringLiteral("^SIG_VALTYPE_ ([0-9]+) (%1) : ([12]);$").arg(ident));
@@ -88,7 +90,8 @@ inline File parse(const QByteArray& text) {
             msg.name = m.captured(2);
             msg.dlc = m.captured(3).toInt();
             msg.transmitter = m.captured(4);
-            if (msg.transmitter != QStringLiteral("Vector__XXX") && !f.nodes.contains(msg.transmitter)) err(QStringLiteral("transmitter not in BU_"));
+            if (msg.transmitter != QStringLiteral("Vector__XXX") && !f.nodes.contains(msg.transmitter))
+                err(QStringLiteral("transmitter not in BU_"));
             if (f.messages.count(msg.id)) err(QStringLiteral("duplicate message id"));
             current = &(f.messages[msg.id] = msg);
         } else if ((m = sg.match(l)).hasMatch()) {

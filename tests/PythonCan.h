@@ -24,7 +24,8 @@ namespace {
 
 // Starts a python-can peer script (`py script args...`) and waits until it prints READY (it has
 // joined the bus); false with what it printed in *out when it did not within 20 s.
-[[maybe_unused]] bool startPythonPeer(QProcess& peer, const QString& py, const QString& script, const QStringList& args, QString* out) {
+[[maybe_unused]] bool startPythonPeer(QProcess& peer, const QString& py, const QString& script, const QStringList& args,
+                                      QString* out) {
     peer.setProcessChannelMode(QProcess::SeparateChannels);
     peer.start(py, QStringList{script} + args);
     QElapsedTimer t;

@@ -17,16 +17,19 @@ void BusOffWatch::poll() {
     seen_ = n;
     const QString name = bus_->url().toString();
     if (!restart_) {
-        std::fprintf(stderr, "coscope-cli %s: %s is bus-off; the controller sends nothing until it is restarted "
-                             "(--restart-on-bus-off, or the adapter's restart-ms)\n",
+        std::fprintf(stderr,
+                     "coscope-cli %s: %s is bus-off; the controller sends nothing until it is restarted "
+                     "(--restart-on-bus-off, or the adapter's restart-ms)\n",
                      qPrintable(verb_), qPrintable(name));
         return;
     }
     QString why;
     if (bus_->restartController(&why))
-        std::fprintf(stderr, "coscope-cli %s: %s was bus-off: controller restarted\n", qPrintable(verb_), qPrintable(name));
+        std::fprintf(stderr, "coscope-cli %s: %s was bus-off: controller restarted\n", qPrintable(verb_),
+                     qPrintable(name));
     else
-        std::fprintf(stderr, "coscope-cli %s: %s is bus-off and could not be restarted: %s\n", qPrintable(verb_), qPrintable(name), qPrintable(why));
+        std::fprintf(stderr, "coscope-cli %s: %s is bus-off and could not be restarted: %s\n", qPrintable(verb_),
+                     qPrintable(name), qPrintable(why));
 }
 
 }  // namespace coscope::cli

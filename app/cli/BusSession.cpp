@@ -22,7 +22,9 @@ BusSession::~BusSession() {
     // on purpose (ds402 enable) take it off the record first.
     if (context_ && bus_ && !context_->enabledDrives().isEmpty()) {
         const canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*context_);
-        if (!outcome.drives.empty()) std::fprintf(stderr, "coscope-cli: before closing the bus: %s\n", qPrintable(outcome.summary().replace(u'\n', QStringLiteral("; "))));
+        if (!outcome.drives.empty())
+            std::fprintf(stderr, "coscope-cli: before closing the bus: %s\n",
+                         qPrintable(outcome.summary().replace(u'\n', QStringLiteral("; "))));
     }
     if (session_) session_->stop();
     if (bus_) bus_->close();
@@ -37,7 +39,9 @@ bool BusSession::open(const QString& url, QString* error, int timeoutMs) {
     session_->addConsumer(context_->dispatcher().consumer());
     bus_->open();
     if (!bus_->waitForOpen(timeoutMs)) {
-        if (error) *error = QStringLiteral("cannot open %1: %2").arg(url, bus_->errorString().isEmpty() ? QStringLiteral("timed out") : bus_->errorString());
+        if (error)
+            *error = QStringLiteral("cannot open %1: %2")
+                         .arg(url, bus_->errorString().isEmpty() ? QStringLiteral("timed out") : bus_->errorString());
         return false;
     }
     session_->start(bus_.get());
@@ -46,15 +50,20 @@ bool BusSession::open(const QString& url, QString* error, int timeoutMs) {
     return true;
 }
 
-std::optional<od::ObjectDictionary> BusSession::nodeDictionary(uint8_t node, const QString& dictOption, QString* name, QString* error) {
+std::optional<od::ObjectDictionary> BusSession::nodeDictionary(uint8_t node, const QString& dictOption, QString* name,
+                                                               QString* error) {
     QString dictName = dictOption;
     if (dictName.isEmpty()) {
         // Match by identity: 1018h:01 vendor-ID, :02 product code, :03 revision; without one
         // (0/0), by 1000h device type, 1008h device name and 100Ah software version.
-        auto read = [&](uint16_t index, uint8_t sub) { return canopen::waitForResult<canopen::SdoResult>([&](auto cb) { sdo_->upload(node, index, sub, cb); }, 10000); };
+        auto read = [&](uint16_t index, uint8_t sub) {
+            return canopen::waitForResult<canopen::SdoResult>([&](auto cb) { sdo_->upload(node, index, sub, cb); },
+                                                              10000);
+        };
         auto u32 = [](const QByteArray& d) {
             uint32_t v = 0;
-            for (int i = 0; i < std::min<int>(4, static_cast<int>(d.size())); ++i) v |= uint32_t(uint8_t(d[i])) << (8 * i);
+            for (int i = 0; i < std::min<int>(4, static_cast<int>(d.size())); ++i)
+                v |= uint32_t(uint8_t(d[i])) << (8 * i);
             return v;
         };
         eds::DeviceIdentity device;
@@ -71,12 +80,18 @@ std::optional<od::ObjectDictionary> BusSession::nodeDictionary(uint8_t node, con
         }
         if (!device.hasIdentity()) {
             if (auto r = read(0x1000, 0); r && r->ok) device.deviceType = u32(r->data);
-            if (auto r = read(0x1008, 0); r && r->ok) device.deviceName = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
-            if (auto r = read(0x100A, 0); r && r->ok) device.softwareVersion = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
+            if (auto r = read(0x1008, 0); r && r->ok)
+                device.deviceName = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
+            if (auto r = read(0x100A, 0); r && r->ok)
+                device.softwareVersion = QString::fromUtf8(r->data).section(QChar(0), 0, 0);
         }
         const auto* entry = eds::DictionaryLibrary::shared().match(device);
         if (!entry) {
-            if (error) *error = QStringLiteral("no dictionary matches node %1's identity (vendor 0x%2, product 0x%3)").arg(node).arg(device.vendorId.value_or(0), 8, 16, QChar(u'0')).arg(device.productCode.value_or(0), 8, 16, QChar(u'0'));
+            if (error)
+                *error = QStringLiteral("no dictionary matches node %1's identity (vendor 0x%2, product 0x%3)")
+                             .arg(node)
+                             .arg(device.vendorId.value_or(0), 8, 16, QChar(u'0'))
+                             .arg(device.productCode.value_or(0), 8, 16, QChar(u'0'));
             return std::nullopt;
         }
         dictName = entry->name;
@@ -101,7 +116,9 @@ std::optional<uint8_t> parseNodeId(const QString& text, bool allowAll) {
 }
 
 bool parseObjectRef(const QString& text, uint16_t* index, uint8_t* sub) {
-    static const QRegularExpression re(QStringLiteral("^(?:0x)?([0-9a-f]{1,4})(?:(?::|sub|\\.)(?:0x)?([0-9a-f]{1,2}))?$"), QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression re(
+        QStringLiteral("^(?:0x)?([0-9a-f]{1,4})(?:(?::|sub|\\.)(?:0x)?([0-9a-f]{1,2}))?$"),
+        QRegularExpression::CaseInsensitiveOption);
     const auto m = re.match(text.trimmed());
     if (!m.hasMatch()) return false;
     *index = static_cast<uint16_t>(m.captured(1).toUInt(nullptr, 16));

@@ -36,7 +36,8 @@ public:
     // The dictionary of a node: `dictOption` (a file or a library name) when given, otherwise
     // the library's match for the node's 1018h identity (read over SDO). nullopt when none;
     // *name gets the dictionary name, *error why nothing matched (not fatal for callers).
-    std::optional<od::ObjectDictionary> nodeDictionary(uint8_t node, const QString& dictOption, QString* name, QString* error);
+    std::optional<od::ObjectDictionary> nodeDictionary(uint8_t node, const QString& dictOption, QString* name,
+                                                       QString* error);
 
 private:
     std::unique_ptr<CanBus> bus_;

@@ -4,8 +4,8 @@
 #include "app/cli/CliVerb.h"
 #include "core/canopen/ServiceWait.h"
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 namespace coscope::cli {
 
@@ -28,7 +28,9 @@ canopen::Ds402Result waitDs402(const std::function<void(canopen::Ds402Callback)>
 
 bool mayConfirmMotion(bool yes, QString* why) {
     if (yes || isatty(fileno(stdin))) return true;
-    *why = QStringLiteral("this can move a motor and there is no terminal to ask for confirmation on: refused, nothing was sent (add --yes to confirm)");
+    *why = QStringLiteral(
+        "this can move a motor and there is no terminal to ask for confirmation on: refused, nothing was sent (add "
+        "--yes to confirm)");
     return false;
 }
 
@@ -46,11 +48,14 @@ bool confirmMotion(bool yes, const QString& question, QString* why) {
     return true;
 }
 
-int endDisabled(canopen::Ds402Controller& ctl, const QString& verb, uint8_t node, const QString& failed, QTextStream& out) {
+int endDisabled(canopen::Ds402Controller& ctl, const QString& verb, uint8_t node, const QString& failed,
+                QTextStream& out) {
     const auto d = waitDs402([&](auto cb) { ctl.disable(cb); }, 10000);
     if (!d.ok) {
         const auto v = waitDs402([&](auto cb) { ctl.disableVoltage(cb); }, 5000);
-        if (!v.ok) return failure(verb, (failed.isEmpty() ? QString() : failed + QStringLiteral("; ")) + QStringLiteral("DISABLING FAILED: ") + v.error);
+        if (!v.ok)
+            return failure(verb, (failed.isEmpty() ? QString() : failed + QStringLiteral("; ")) +
+                                     QStringLiteral("DISABLING FAILED: ") + v.error);
     }
     if (!failed.isEmpty()) return failure(verb, failed + QStringLiteral("; drive disabled"));
     out << "node " << node << ": disabled\n";

@@ -24,6 +24,7 @@ bool mayConfirmMotion(bool yes, QString* why);
 bool confirmMotion(bool yes, const QString& question, QString* why);
 // Ends a motion verb with the drive disabled, whatever happened: disable(), else Disable
 // voltage. `failed` empty = success. Returns the exit code (one line on stderr on failure).
-int endDisabled(canopen::Ds402Controller& ctl, const QString& verb, uint8_t node, const QString& failed, QTextStream& out);
+int endDisabled(canopen::Ds402Controller& ctl, const QString& verb, uint8_t node, const QString& failed,
+                QTextStream& out);
 
 }  // namespace coscope::cli

@@ -12,8 +12,10 @@ void LostWatch::poll() {
     if (s == CanBus::State::Lost && lostSinceNs_ == 0) {
         lostSinceNs_ = bus_->lostSinceNs() ? bus_->lostSinceNs() : nowNs();
         const int retryMs = bus_->nextRetryInMs();
-        std::fprintf(stderr, "coscope-cli %s: bus lost (%s); retrying in %s s, with back-off up to 8 s, until it is back\n", qPrintable(verb_),
-                     qPrintable(bus_->errorString()), qPrintable(QString::number(retryMs < 0 ? 0.5 : retryMs / 1000.0, 'f', 1)));
+        std::fprintf(stderr,
+                     "coscope-cli %s: bus lost (%s); retrying in %s s, with back-off up to 8 s, until it is back\n",
+                     qPrintable(verb_), qPrintable(bus_->errorString()),
+                     qPrintable(QString::number(retryMs < 0 ? 0.5 : retryMs / 1000.0, 'f', 1)));
         std::fflush(stderr);
     } else if (s == CanBus::State::Open && lostSinceNs_ != 0) {
         const int64_t back = nowNs();

@@ -15,10 +15,13 @@
 namespace coscope::cli {
 
 std::optional<uint32_t> parsePeriodUs(const QString& text, QString* error) {
-    static const QRegularExpression re(QStringLiteral("^\\s*([0-9]+(?:\\.[0-9]+)?)\\s*(us|µs|ms|s)?\\s*$"), QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression re(QStringLiteral("^\\s*([0-9]+(?:\\.[0-9]+)?)\\s*(us|µs|ms|s)?\\s*$"),
+                                       QRegularExpression::CaseInsensitiveOption);
     const auto m = re.match(text);
     const auto fail = [&]() -> std::optional<uint32_t> {
-        if (error) *error = QStringLiteral("invalid period '%1': expected e.g. 10ms, 500us, 1s (a plain number is ms)").arg(text);
+        if (error)
+            *error =
+                QStringLiteral("invalid period '%1': expected e.g. 10ms, 500us, 1s (a plain number is ms)").arg(text);
         return std::nullopt;
     };
     if (!m.hasMatch()) return fail();
@@ -39,13 +42,16 @@ void PeriodicRunOptions::addTo(QCommandLineParser& parser) const {
     parser.addOption(duration);
 }
 
-bool PeriodicRunOptions::read(const QCommandLineParser& parser, uint64_t* frames, double* seconds, QString* error) const {
+bool PeriodicRunOptions::read(const QCommandLineParser& parser, uint64_t* frames, double* seconds,
+                              QString* error) const {
     *frames = 0;
     if (parser.isSet(count)) {
         bool ok = false;
         *frames = parser.value(count).toULongLong(&ok);
         if (!ok || *frames == 0) {
-            if (error) *error = QStringLiteral("--count must be a positive number of frames, not '%1'").arg(parser.value(count));
+            if (error)
+                *error =
+                    QStringLiteral("--count must be a positive number of frames, not '%1'").arg(parser.value(count));
             return false;
         }
     }
@@ -55,7 +61,9 @@ bool PeriodicRunOptions::read(const QCommandLineParser& parser, uint64_t* frames
         bool ok = false;
         *seconds = parser.value(duration).toDouble(&ok);
         if (!ok || *seconds < 0 || !std::isfinite(*seconds)) {
-            if (error) *error = QStringLiteral("--duration must be a number of seconds (0 = until Ctrl+C), not '%1'").arg(parser.value(duration));
+            if (error)
+                *error = QStringLiteral("--duration must be a number of seconds (0 = until Ctrl+C), not '%1'")
+                             .arg(parser.value(duration));
             return false;
         }
     }
@@ -64,7 +72,8 @@ bool PeriodicRunOptions::read(const QCommandLineParser& parser, uint64_t* frames
 
 RunEnd waitWhileRunning(CanBus* bus, const std::function<bool()>& running, double seconds, QString* error) {
     installInterruptHandler();
-    const QDeadlineTimer deadline = seconds > 0 ? QDeadlineTimer(static_cast<qint64>(std::llround(seconds * 1000))) : QDeadlineTimer(QDeadlineTimer::Forever);
+    const QDeadlineTimer deadline = seconds > 0 ? QDeadlineTimer(static_cast<qint64>(std::llround(seconds * 1000)))
+                                                : QDeadlineTimer(QDeadlineTimer::Forever);
     for (;;) {
         if (!running()) return RunEnd::Stopped;
         if (interrupted()) return RunEnd::Interrupted;

@@ -30,7 +30,8 @@ QString formatPeriodUs(uint32_t us);
 struct PeriodicRunOptions {
     QCommandLineOption count{QStringLiteral("count"), QStringLiteral("Send N frames, then stop."), QStringLiteral("N")};
     QCommandLineOption duration{QStringLiteral("duration"),
-                                QStringLiteral("Stop after S seconds (default %1 s without --count; 0 = until Ctrl+C).").arg(kDefaultRunSeconds),
+                                QStringLiteral("Stop after S seconds (default %1 s without --count; 0 = until Ctrl+C).")
+                                    .arg(kDefaultRunSeconds),
                                 QStringLiteral("S")};
     void addTo(QCommandLineParser& parser) const;
     // Reads them: *frames (0 = no limit) and *seconds (0 = no limit). False with *error on a bad value.

@@ -16,6 +16,8 @@ void printProgramPlan(QTextStream& out, const canopen::ProgramDownloadRequest& r
 
 // Runs the download on `session` with the steps and progress on stderr; Ctrl+C cancels it. Prints
 // the node's program before and after (or the failure) to `out`. nullopt when it did not end.
-std::optional<canopen::ProgramDownloadOutcome> runProgramDownload(BusSession& session, const canopen::ProgramDownloadRequest& request, QTextStream& out);
+std::optional<canopen::ProgramDownloadOutcome> runProgramDownload(BusSession& session,
+                                                                  const canopen::ProgramDownloadRequest& request,
+                                                                  QTextStream& out);
 
 }  // namespace coscope::cli

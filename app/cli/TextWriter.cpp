@@ -44,7 +44,8 @@ void TextWriter::run() {
                 summary = std::u16string_view(pdoText.data(), pdoText.size());
             }
             const QString* warnings = l.warningCount ? job->warnings.constData() + l.warningAt : nullptr;
-            const size_t need = static_cast<size_t>(dissect::textLineBound(summary, warnings, l.warningCount, bus)) + static_cast<size_t>(l.transferLength);
+            const size_t need = static_cast<size_t>(dissect::textLineBound(summary, warnings, l.warningCount, bus)) +
+                                static_cast<size_t>(l.transferLength);
             if (used + need > out.size()) {
                 flush();
                 if (need > out.size()) out.resize(need);

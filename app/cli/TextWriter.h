@@ -24,11 +24,11 @@ namespace coscope::cli {
 class TextWriter {
 public:
     struct Line {
-        uint32_t frame = 0;           // index in Job::frames
+        uint32_t frame = 0;                         // index in Job::frames
         uint32_t summaryAt = 0, summaryLength = 0;  // in Job::summaries
         int warningAt = 0, warningCount = 0;        // in Job::warnings
         int transferAt = 0, transferLength = 0;     // in Job::transfers (appendTransferText)
-        int pdoRecord = -1;  // >= 0: the summary is this record of Job::pdo, written here
+        int pdoRecord = -1;                         // >= 0: the summary is this record of Job::pdo, written here
     };
     struct Job {
         std::vector<CanFrame> frames;  // the batch (logio::ReadAhead::keepBatch), lines index it

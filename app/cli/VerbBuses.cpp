@@ -14,31 +14,47 @@ namespace coscope::cli {
 
 static int runBuses(const QStringList& args) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("List bus schemes and the CAN interfaces the Qt CAN plugins find."));
-    const QCommandLineOption bringUp(QStringLiteral("bring-up"), QStringLiteral("Bring the SocketCAN interface IFACE up (needs CAP_NET_ADMIN, e.g. root); set down first when up."), QStringLiteral("IFACE"));
-    const QCommandLineOption bitrate(QStringLiteral("bitrate"), QStringLiteral("With --bring-up: the bit rate (default 500000)."), QStringLiteral("BPS"), QStringLiteral("500000"));
-    const QCommandLineOption dataBitrate(QStringLiteral("data-bitrate"), QStringLiteral("With --bring-up: CAN FD data bit rate (turns FD on)."), QStringLiteral("BPS"));
+    parser.setApplicationDescription(
+        QStringLiteral("List bus schemes and the CAN interfaces the Qt CAN plugins find."));
+    const QCommandLineOption bringUp(
+        QStringLiteral("bring-up"),
+        QStringLiteral(
+            "Bring the SocketCAN interface IFACE up (needs CAP_NET_ADMIN, e.g. root); set down first when up."),
+        QStringLiteral("IFACE"));
+    const QCommandLineOption bitrate(QStringLiteral("bitrate"),
+                                     QStringLiteral("With --bring-up: the bit rate (default 500000)."),
+                                     QStringLiteral("BPS"), QStringLiteral("500000"));
+    const QCommandLineOption dataBitrate(QStringLiteral("data-bitrate"),
+                                         QStringLiteral("With --bring-up: CAN FD data bit rate (turns FD on)."),
+                                         QStringLiteral("BPS"));
     parser.addOptions({bringUp, bitrate, dataBitrate});
     int code = 0;
     if (!parseArgs(parser, QStringLiteral("buses"), args, &code)) return code;
-    if (!parser.positionalArguments().isEmpty()) return usageError(QStringLiteral("buses"), QStringLiteral("takes no arguments"));
+    if (!parser.positionalArguments().isEmpty())
+        return usageError(QStringLiteral("buses"), QStringLiteral("takes no arguments"));
     if (parser.isSet(bringUp)) {
         bool okRate = false, okData = true;
         const int rate = parser.value(bitrate).toInt(&okRate);
         const int data = parser.isSet(dataBitrate) ? parser.value(dataBitrate).toInt(&okData) : 0;
-        if (!okRate || rate <= 0 || !okData || data < 0) return usageError(QStringLiteral("buses"), QStringLiteral("--bitrate and --data-bitrate take a positive number of bit/s"));
+        if (!okRate || rate <= 0 || !okData || data < 0)
+            return usageError(QStringLiteral("buses"),
+                              QStringLiteral("--bitrate and --data-bitrate take a positive number of bit/s"));
         QString error;
         const QList<SocketCanLink> links = listSocketCanLinks(&error);
         const QString name = parser.value(bringUp);
         for (const SocketCanLink& l : links) {
             if (l.name != name) continue;
-            if (!mayConfigureLinks()) return failure(QStringLiteral("buses"), QStringLiteral("no permission to configure %1 (needs CAP_NET_ADMIN); run: %2").arg(name, bringUpCommand(l, rate, data)));
+            if (!mayConfigureLinks())
+                return failure(QStringLiteral("buses"),
+                               QStringLiteral("no permission to configure %1 (needs CAP_NET_ADMIN); run: %2")
+                                   .arg(name, bringUpCommand(l, rate, data)));
             if (!bringUpLink(l, rate, data, &error)) return failure(QStringLiteral("buses"), error);
             for (const SocketCanLink& now : listSocketCanLinks(&error))
                 if (now.name == name) QTextStream(stdout) << name << ": " << describeLink(now) << "\n";
             return Ok;
         }
-        return failure(QStringLiteral("buses"), error.isEmpty() ? QStringLiteral("there is no CAN interface named '%1'").arg(name) : error);
+        return failure(QStringLiteral("buses"),
+                       error.isEmpty() ? QStringLiteral("there is no CAN interface named '%1'").arg(name) : error);
     }
 
     QTextStream out(stdout);
@@ -47,7 +63,8 @@ static int runBuses(const QStringList& args) {
     out << "  sim://?nodes=1:delta-asda-a2,...  in-process virtual drives\n";
     out << "  replay://PATH?speed=1.0&loop=1     play a log file with its timing\n";
     const QStringList plugins = qtCanPlugins();
-    for (const QString& p : plugins) out << "  " << (p + QStringLiteral("://DEVICE")).leftJustified(33) << "Qt CAN plugin\n";
+    for (const QString& p : plugins)
+        out << "  " << (p + QStringLiteral("://DEVICE")).leftJustified(33) << "Qt CAN plugin\n";
     out << "\nDevices:\n";
     int found = 0;
     for (const QString& p : plugins) {
@@ -74,8 +91,8 @@ static int runBuses(const QStringList& args) {
     for (const auto& f : logio::LogFormats::all()) {
         QStringList ext;
         for (const QString& e : f.extensions) ext << QStringLiteral("*.") + e;
-        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  " << f.description << "  ("
-            << ext.join(QLatin1Char(' ')) << ")\n";
+        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  "
+            << f.description << "  (" << ext.join(QLatin1Char(' ')) << ")\n";
     }
     return Ok;
 }

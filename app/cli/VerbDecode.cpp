@@ -4,13 +4,13 @@
 // Decodes every frame of a log with the CANopen dissectors (formats in dissectors/DecodeOutput.h);
 // raw signals (dissectors/RawSignal.h) join the PDO signals of their frames.
 #include "app/cli/CliVerb.h"
+#include "app/cli/TextWriter.h"
 #include "core/logio/LogFormats.h"
 #include "core/logio/ReadAhead.h"
 #include "dissectors/DecodeFilter.h"
 #include "dissectors/DecodeOutput.h"
 #include "dissectors/NetworkContext.h"
 #include "dissectors/RawSignal.h"
-#include "app/cli/TextWriter.h"
 
 #include <cstdio>
 #include <cstring>
@@ -33,7 +33,8 @@ bool applyDicts(dissect::NetworkContext& ctx, const QStringList& dicts, int* cod
         bool ok = false;
         const int node = eq > 0 ? spec.left(eq).toInt(&ok, 0) : 0;
         if (!ok || node < 1 || node > 127) {
-            *code = usageError(kVerb, QStringLiteral("--dict '%1': expected NODE=NAME|FILE with NODE 1..127").arg(spec));
+            *code =
+                usageError(kVerb, QStringLiteral("--dict '%1': expected NODE=NAME|FILE with NODE 1..127").arg(spec));
             return false;
         }
         QString error;
@@ -48,16 +49,26 @@ bool applyDicts(dissect::NetworkContext& ctx, const QStringList& dicts, int* cod
 int runDecode(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Decode a CAN log with the CANopen dissectors."));
-    parser.addPositionalArgument(QStringLiteral("LOG"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4)."));
-    parser.addOption({QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."), QStringLiteral("NODE=NAME|FILE")});
-    parser.addOption({QStringLiteral("format"), QStringLiteral("Output format: text (default), jsonl, csv."), QStringLiteral("FORMAT"), QStringLiteral("text")});
-    parser.addOption({QStringLiteral("filter"), QStringLiteral("Only frames matching: node=N, service=NAME, id=0x181 or 0x180-0x1FF, warnings; terms ANDed (repeatable)."), QStringLiteral("EXPR")});
-    parser.addOption({QStringLiteral("signal"),
-                      QStringLiteral("Raw signal of any frame, for devices without a dictionary (repeatable): TYPE u (unsigned), s (signed) "
-                                     "or f (float 32/64) in Intel byte order, with @0 after it for Motorola (DBC start bit: the MSB), e.g. "
-                                     "speed=0x181:16:16:s:0.1:0:rpm or temp=0x281:7:16:u@0:0.5:-40. COBID over 7FFh is a 29-bit id."),
-                      QStringLiteral("NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]")});
-    parser.addOption({QStringLiteral("no-identity"), QStringLiteral("Do not pick dictionaries by the identity read in the log.")});
+    parser.addPositionalArgument(QStringLiteral("LOG"),
+                                 QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4)."));
+    parser.addOption({QStringLiteral("dict"),
+                      QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."),
+                      QStringLiteral("NODE=NAME|FILE")});
+    parser.addOption({QStringLiteral("format"), QStringLiteral("Output format: text (default), jsonl, csv."),
+                      QStringLiteral("FORMAT"), QStringLiteral("text")});
+    parser.addOption({QStringLiteral("filter"),
+                      QStringLiteral("Only frames matching: node=N, service=NAME, id=0x181 or 0x180-0x1FF, warnings; "
+                                     "terms ANDed (repeatable)."),
+                      QStringLiteral("EXPR")});
+    parser.addOption(
+        {QStringLiteral("signal"),
+         QStringLiteral(
+             "Raw signal of any frame, for devices without a dictionary (repeatable): TYPE u (unsigned), s (signed) "
+             "or f (float 32/64) in Intel byte order, with @0 after it for Motorola (DBC start bit: the MSB), e.g. "
+             "speed=0x181:16:16:s:0.1:0:rpm or temp=0x281:7:16:u@0:0.5:-40. COBID over 7FFh is a 29-bit id."),
+         QStringLiteral("NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]")});
+    parser.addOption(
+        {QStringLiteral("no-identity"), QStringLiteral("Do not pick dictionaries by the identity read in the log.")});
     int code = 0;
     if (!parseArgs(parser, kVerb, args, &code)) return code;
     const QStringList pos = parser.positionalArguments();
@@ -149,7 +160,8 @@ int runDecode(const QStringList& args) {
         }
     }  // the writer has written everything
     // jsonl and csv: formatted here.
-    for (auto batch = (json || csv) ? ahead->next() : std::span<const CanFrame>(); !batch.empty(); batch = ahead->next()) {
+    for (auto batch = (json || csv) ? ahead->next() : std::span<const CanFrame>(); !batch.empty();
+         batch = ahead->next()) {
         if (busNames.size() != ahead->busNames().size()) busNames = ahead->busNames();
         for (const CanFrame& f : batch) {
             ctx.dissect(f, d, dissect::Dissection::Level::Flat);
@@ -174,7 +186,8 @@ int runDecode(const QStringList& args) {
     int shown = 0;
     for (const auto& diag : reader->diagnostics()) {
         if (++shown > 20) break;
-        std::fprintf(stderr, "%s:%lld: warning: %s\n", qPrintable(pos[0]), static_cast<long long>(diag.where), qPrintable(diag.message));
+        std::fprintf(stderr, "%s:%lld: warning: %s\n", qPrintable(pos[0]), static_cast<long long>(diag.where),
+                     qPrintable(diag.message));
     }
     if (reader->hasError()) return failure(kVerb, QStringLiteral("%1: %2").arg(pos[0], reader->errorString()));
     return Ok;
@@ -182,6 +195,7 @@ int runDecode(const QStringList& args) {
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("decode"), QStringLiteral("Decode a CAN log as CANopen (text, jsonl, csv)."), runDecode});
+COSCOPE_CLI_VERB({QStringLiteral("decode"), QStringLiteral("Decode a CAN log as CANopen (text, jsonl, csv)."),
+                  runDecode});
 
 }  // namespace coscope::cli

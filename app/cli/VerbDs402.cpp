@@ -17,17 +17,31 @@ namespace coscope::cli {
 static int runDs402(const QStringList& args, const QString& action) {
     const QString verb = QStringLiteral("ds402 ") + action;
     QCommandLineParser p;
-    if (action == u"state") p.setApplicationDescription(QStringLiteral("Read a CiA 402 drive's state from its statusword 6041h."));
-    else if (action == u"enable") p.setApplicationDescription(QStringLiteral("Step a CiA 402 drive to Operation enabled (fault reset, shutdown, switch on, enable operation). "
-                                                                           "THIS CAN MOVE A MOTOR: running it is the confirmation. Every controlword sent is printed; "
-                                                                           "if a step fails the drive is sent Disable voltage."));
-    else if (action == u"quickstop") p.setApplicationDescription(QStringLiteral("Quick stop a CiA 402 drive (6040h = 0002h): it brakes on its quick stop ramp."));
-    else p.setApplicationDescription(QStringLiteral("Bring a CiA 402 drive to Switch on disabled (shutdown, disable voltage)."));
+    if (action == u"state")
+        p.setApplicationDescription(QStringLiteral("Read a CiA 402 drive's state from its statusword 6041h."));
+    else if (action == u"enable")
+        p.setApplicationDescription(QStringLiteral(
+            "Step a CiA 402 drive to Operation enabled (fault reset, shutdown, switch on, enable operation). "
+            "THIS CAN MOVE A MOTOR: running it is the confirmation. Every controlword sent is printed; "
+            "if a step fails the drive is sent Disable voltage."));
+    else if (action == u"quickstop")
+        p.setApplicationDescription(
+            QStringLiteral("Quick stop a CiA 402 drive (6040h = 0002h): it brakes on its quick stop ramp."));
+    else
+        p.setApplicationDescription(
+            QStringLiteral("Bring a CiA 402 drive to Switch on disabled (shutdown, disable voltage)."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
-    const QCommandLineOption mode(QStringLiteral("mode"), QStringLiteral("Set the mode of operation first (pp, pv, pt, hm, ip, csp, csv, cst) and verify 6061h."), QStringLiteral("M"));
-    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7 (objects at +N*800h; default 0)."), QStringLiteral("N"), QStringLiteral("0"));
-    const QCommandLineOption timeout(QStringLiteral("timeout"), QStringLiteral("Time to wait for each state in ms (default 1000)."), QStringLiteral("MS"), QStringLiteral("1000"));
+    const QCommandLineOption mode(
+        QStringLiteral("mode"),
+        QStringLiteral("Set the mode of operation first (pp, pv, pt, hm, ip, csp, csv, cst) and verify 6061h."),
+        QStringLiteral("M"));
+    const QCommandLineOption axis(QStringLiteral("axis"),
+                                  QStringLiteral("Axis of a multi-axis device, 0-7 (objects at +N*800h; default 0)."),
+                                  QStringLiteral("N"), QStringLiteral("0"));
+    const QCommandLineOption timeout(QStringLiteral("timeout"),
+                                     QStringLiteral("Time to wait for each state in ms (default 1000)."),
+                                     QStringLiteral("MS"), QStringLiteral("1000"));
     p.addOptions({mode, axis, timeout});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -43,7 +57,9 @@ static int runDs402(const QStringList& args, const QString& action) {
     std::optional<int8_t> m;
     if (p.isSet(mode)) {
         m = canopen::ds402::modeFromShortName(p.value(mode).toLower());
-        if (!m) return usageError(verb, QStringLiteral("unknown mode '%1'; use pp, pv, pt, hm, ip, csp, csv or cst").arg(p.value(mode)));
+        if (!m)
+            return usageError(
+                verb, QStringLiteral("unknown mode '%1'; use pp, pv, pt, hm, ip, csp, csv or cst").arg(p.value(mode)));
     }
 
     BusSession s;
@@ -68,7 +84,8 @@ static int runDs402(const QStringList& args, const QString& action) {
     auto show = [&](const canopen::Ds402Result& r) {
         out << "node " << *node;
         if (ax) out << " axis " << ax;
-        out << ": " << canopen::ds402::stateName(r.state) << " (statusword 0x" << QStringLiteral("%1").arg(r.statusword, 4, 16, QChar(u'0')).toUpper() << ": "
+        out << ": " << canopen::ds402::stateName(r.state) << " (statusword 0x"
+            << QStringLiteral("%1").arg(r.statusword, 4, 16, QChar(u'0')).toUpper() << ": "
             << canopen::ds402::statuswordBits(r.statusword).join(QStringLiteral(", ")) << ")\n";
     };
     if (m) {
@@ -92,11 +109,14 @@ static int runDs402(const QStringList& args, const QString& action) {
 static int runMode(const QStringList& args) {
     const QString verb = QStringLiteral("ds402 mode");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral("Set a CiA 402 drive's mode of operation (6060h) and verify it in 6061h. The mode must be one 6502h lists as supported."));
+    p.setApplicationDescription(
+        QStringLiteral("Set a CiA 402 drive's mode of operation (6060h) and verify it in 6061h. The mode must be one "
+                       "6502h lists as supported."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("MODE"), QStringLiteral("pp, pv, pt, hm, ip, csp, csv or cst"));
-    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7."), QStringLiteral("N"), QStringLiteral("0"));
+    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7."),
+                                  QStringLiteral("N"), QStringLiteral("0"));
     p.addOption(axis);
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -105,7 +125,9 @@ static int runMode(const QStringList& args) {
     const auto node = parseNodeId(pos[1]);
     if (!node) return usageError(verb, QStringLiteral("node-ID '%1' must be 1-127").arg(pos[1]));
     const auto mode = canopen::ds402::modeFromShortName(pos[2]);
-    if (!mode) return usageError(verb, QStringLiteral("unknown mode '%1'; use pp, pv, pt, hm, ip, csp, csv or cst").arg(pos[2]));
+    if (!mode)
+        return usageError(verb,
+                          QStringLiteral("unknown mode '%1'; use pp, pv, pt, hm, ip, csp, csv or cst").arg(pos[2]));
     bool ok = false;
     const int ax = p.value(axis).toInt(&ok);
     if (!ok || ax < 0 || ax > 7) return usageError(verb, QStringLiteral("--axis must be 0-7"));
@@ -116,32 +138,43 @@ static int runMode(const QStringList& args) {
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
     printSends(ctl, out);
     // 6502h: supported drive modes (CiA 402-2 §6.4.3); refuse a mode the drive does not list.
-    auto sup = canopen::waitForResult<canopen::SdoResult>([&](canopen::SdoCallback cb) { s.sdo().upload(*node, ctl.objectIndex(0x6502), 0, cb); }, 5000);
+    auto sup = canopen::waitForResult<canopen::SdoResult>(
+        [&](canopen::SdoCallback cb) { s.sdo().upload(*node, ctl.objectIndex(0x6502), 0, cb); }, 5000);
     if (sup && sup->ok && sup->data.size() >= 4) {
         uint32_t bits = 0;
         for (int i = 0; i < 4; ++i) bits |= uint32_t(uint8_t(sup->data[i])) << (8 * i);
         if (!canopen::ds402::modeSupported(bits, *mode))
-            return failure(verb, QStringLiteral("node %1 does not support %2 (supported drive modes 6502h = 0x%3)").arg(*node).arg(canopen::ds402::modeName(*mode)).arg(bits, 8, 16, QChar(u'0')));
+            return failure(verb, QStringLiteral("node %1 does not support %2 (supported drive modes 6502h = 0x%3)")
+                                     .arg(*node)
+                                     .arg(canopen::ds402::modeName(*mode))
+                                     .arg(bits, 8, 16, QChar(u'0')));
     }
     const auto r = waitDs402([&](auto cb) { ctl.setMode(*mode, cb); });
     if (!r.ok) return failure(verb, r.error);
-    out << "node " << *node << ": mode of operation " << canopen::ds402::modeName(r.mode) << " (6061h = " << r.mode << ")\n";
+    out << "node " << *node << ": mode of operation " << canopen::ds402::modeName(r.mode) << " (6061h = " << r.mode
+        << ")\n";
     return Ok;
 }
 
 static int runJog(const QStringList& args) {
     const QString verb = QStringLiteral("ds402 jog");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral("Jog a CiA 402 drive in profile velocity mode for a short time: enable, 6060h = 3, 6083h/6084h ramps, "
-                                               "60FFh = VELOCITY, stop (halt, 60FFh = 0), disable. THIS MOVES A MOTOR: asks for confirmation "
-                                               "unless --yes. Always ends stopped and disabled, also when a step fails."));
+    p.setApplicationDescription(QStringLiteral(
+        "Jog a CiA 402 drive in profile velocity mode for a short time: enable, 6060h = 3, 6083h/6084h ramps, "
+        "60FFh = VELOCITY, stop (halt, 60FFh = 0), disable. THIS MOVES A MOTOR: asks for confirmation "
+        "unless --yes. Always ends stopped and disabled, also when a step fails."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
-    p.addPositionalArgument(QStringLiteral("VELOCITY"), QStringLiteral("Target velocity 60FFh in the drive's velocity units (signed, small)"));
-    const QCommandLineOption forMs(QStringLiteral("for"), QStringLiteral("How long to run, in ms (1-30000)."), QStringLiteral("MS"));
-    const QCommandLineOption accel(QStringLiteral("accel"), QStringLiteral("Acceleration and deceleration 6083h/6084h (default 10000)."), QStringLiteral("A"), QStringLiteral("10000"));
+    p.addPositionalArgument(QStringLiteral("VELOCITY"),
+                            QStringLiteral("Target velocity 60FFh in the drive's velocity units (signed, small)"));
+    const QCommandLineOption forMs(QStringLiteral("for"), QStringLiteral("How long to run, in ms (1-30000)."),
+                                   QStringLiteral("MS"));
+    const QCommandLineOption accel(QStringLiteral("accel"),
+                                   QStringLiteral("Acceleration and deceleration 6083h/6084h (default 10000)."),
+                                   QStringLiteral("A"), QStringLiteral("10000"));
     const QCommandLineOption yes(QStringLiteral("yes"), QStringLiteral("Do not ask for confirmation."));
-    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7."), QStringLiteral("N"), QStringLiteral("0"));
+    const QCommandLineOption axis(QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7."),
+                                  QStringLiteral("N"), QStringLiteral("0"));
     p.addOptions({forMs, accel, yes, axis});
     WatchdogOptions watch;
     watch.addTo(p);
@@ -158,7 +191,8 @@ static int runJog(const QStringList& args) {
     if (!ok) return usageError(verb, QStringLiteral("VELOCITY '%1' is not a number").arg(pos[2]));
     if (!p.isSet(forMs)) return usageError(verb, QStringLiteral("--for MS is required"));
     const int ms = p.value(forMs).toInt(&ok);
-    if (!ok || ms <= 0 || ms > canopen::Ds402TestMove::kMaxDurationMs) return usageError(verb, QStringLiteral("--for must be 1-%1 ms").arg(canopen::Ds402TestMove::kMaxDurationMs));
+    if (!ok || ms <= 0 || ms > canopen::Ds402TestMove::kMaxDurationMs)
+        return usageError(verb, QStringLiteral("--for must be 1-%1 ms").arg(canopen::Ds402TestMove::kMaxDurationMs));
     const uint a = p.value(accel).toUInt(&ok);
     if (!ok || a == 0) return usageError(verb, QStringLiteral("--accel must be a positive number"));
     move.acceleration = move.deceleration = a;
@@ -171,7 +205,12 @@ static int runJog(const QStringList& args) {
 
     QTextStream out(stdout);
     QString why;
-    if (!confirmMotion(p.isSet(yes), QStringLiteral("This enables node %1 and turns its motor at %2 units/s for %3 ms.").arg(*node).arg(move.velocity).arg(ms), &why))
+    if (!confirmMotion(p.isSet(yes),
+                       QStringLiteral("This enables node %1 and turns its motor at %2 units/s for %3 ms.")
+                           .arg(*node)
+                           .arg(move.velocity)
+                           .arg(ms),
+                       &why))
         return failure(verb, why);
     BusSession s;
     QString error;
@@ -193,36 +232,51 @@ static int runJog(const QStringList& args) {
     canopen::Ds402Result moved;
     int32_t lastPos = 0, firstPos = 0;
     bool havePos = false;
-    if (!ctl.startTestMove(move, [&](const canopen::Ds402MotionSample& smp) {
-            if (!havePos) firstPos = smp.position, havePos = true;
-            lastPos = smp.position;
-        }, [&](const canopen::Ds402Result& r) { moved = r, finished = true; }, &error))
+    if (!ctl.startTestMove(
+            move,
+            [&](const canopen::Ds402MotionSample& smp) {
+                if (!havePos) firstPos = smp.position, havePos = true;
+                lastPos = smp.position;
+            },
+            [&](const canopen::Ds402Result& r) { moved = r, finished = true; }, &error))
         return disableAtEnd(error);
     QElapsedTimer t;
     t.start();
     // The CLI holds the "button" for --for ms, feeding the controller's watchdog.
-    canopen::waitUntil([&] {
-        if (finished) return true;
-        if (interrupted()) ctl.stopTestMove(QStringLiteral("interrupted"));
-        else if (t.elapsed() < ms) ctl.feedWatchdog();
-        else ctl.stopTestMove(QStringLiteral("--for %1 ms elapsed").arg(ms));
-        return false;
-    }, ms + 10000);
+    canopen::waitUntil(
+        [&] {
+            if (finished) return true;
+            if (interrupted()) ctl.stopTestMove(QStringLiteral("interrupted"));
+            else if (t.elapsed() < ms) ctl.feedWatchdog();
+            else ctl.stopTestMove(QStringLiteral("--for %1 ms elapsed").arg(ms));
+            return false;
+        },
+        ms + 10000);
     if (!finished) {
         ctl.stopTestMove(QStringLiteral("timeout"));
         return disableAtEnd(QStringLiteral("the test move did not finish"));
     }
     if (!moved.ok) return disableAtEnd(moved.error);
-    if (interrupted()) return disableAtEnd(QStringLiteral("interrupted after moving from %1 to %2 (position actual 6064h)").arg(firstPos).arg(lastPos));
-    out << "node " << *node << ": moved from " << firstPos << " to " << lastPos << " (position actual 6064h), stopped: " << moved.stopReason << "\n";
+    if (interrupted())
+        return disableAtEnd(QStringLiteral("interrupted after moving from %1 to %2 (position actual 6064h)")
+                                .arg(firstPos)
+                                .arg(lastPos));
+    out << "node " << *node << ": moved from " << firstPos << " to " << lastPos
+        << " (position actual 6064h), stopped: " << moved.stopReason << "\n";
     return disableAtEnd({});
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("ds402 state"), QStringLiteral("Read a CiA 402 drive's state."), [](const QStringList& a) { return runDs402(a, QStringLiteral("state")); }});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 enable"), QStringLiteral("Enable a CiA 402 drive (prints every controlword)."), [](const QStringList& a) { return runDs402(a, QStringLiteral("enable")); }});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 disable"), QStringLiteral("Disable a CiA 402 drive."), [](const QStringList& a) { return runDs402(a, QStringLiteral("disable")); }});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 quickstop"), QStringLiteral("Quick stop a CiA 402 drive."), [](const QStringList& a) { return runDs402(a, QStringLiteral("quickstop")); }});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 mode"), QStringLiteral("Set and verify a CiA 402 drive's mode of operation."), runMode});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 jog"), QStringLiteral("Jog a CiA 402 drive briefly (asks first; ends disabled)."), runJog});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 state"), QStringLiteral("Read a CiA 402 drive's state."),
+                  [](const QStringList& a) { return runDs402(a, QStringLiteral("state")); }});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 enable"), QStringLiteral("Enable a CiA 402 drive (prints every controlword)."),
+                  [](const QStringList& a) { return runDs402(a, QStringLiteral("enable")); }});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 disable"), QStringLiteral("Disable a CiA 402 drive."),
+                  [](const QStringList& a) { return runDs402(a, QStringLiteral("disable")); }});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 quickstop"), QStringLiteral("Quick stop a CiA 402 drive."),
+                  [](const QStringList& a) { return runDs402(a, QStringLiteral("quickstop")); }});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 mode"), QStringLiteral("Set and verify a CiA 402 drive's mode of operation."),
+                  runMode});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 jog"),
+                  QStringLiteral("Jog a CiA 402 drive briefly (asks first; ends disabled)."), runJog});
 
 }  // namespace coscope::cli

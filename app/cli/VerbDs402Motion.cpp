@@ -25,9 +25,14 @@ using SampleFn = std::function<void(const canopen::Ds402MotionSample&)>;
 
 // Options both verbs have.
 struct MotionOptions {
-    QCommandLineOption axis{QStringLiteral("axis"), QStringLiteral("Axis of a multi-axis device, 0-7 (objects at +N*800h; default 0)."), QStringLiteral("N"), QStringLiteral("0")};
-    QCommandLineOption timeout{QStringLiteral("timeout"), QStringLiteral("Time allowed for the whole motion in ms (default 60000)."), QStringLiteral("MS"), QStringLiteral("60000")};
-    QCommandLineOption yes{QStringLiteral("yes"), QStringLiteral("Do not ask for confirmation (needed without a terminal)."), QString()};
+    QCommandLineOption axis{QStringLiteral("axis"),
+                            QStringLiteral("Axis of a multi-axis device, 0-7 (objects at +N*800h; default 0)."),
+                            QStringLiteral("N"), QStringLiteral("0")};
+    QCommandLineOption timeout{QStringLiteral("timeout"),
+                               QStringLiteral("Time allowed for the whole motion in ms (default 60000)."),
+                               QStringLiteral("MS"), QStringLiteral("60000")};
+    QCommandLineOption yes{QStringLiteral("yes"),
+                           QStringLiteral("Do not ask for confirmation (needed without a terminal)."), QString()};
     void addTo(QCommandLineParser& p) const { p.addOptions({axis, timeout, yes}); }
 };
 
@@ -41,8 +46,9 @@ std::optional<uint32_t> unsignedOption(const QCommandLineParser& p, const QComma
 
 // Runs one motion on `ctl` and ends with the drive disabled. `start` begins it with the
 // progress and result callbacks; `mode` names the statusword bits in the progress lines.
-int runMotion(const QString& verb, canopen::SdoClient& sdo, canopen::Ds402Controller& ctl, uint8_t node, int8_t mode, int timeoutMs,
-              const std::function<void(SampleFn, canopen::Ds402Callback)>& start, const QString& doneText, QTextStream& out) {
+int runMotion(const QString& verb, canopen::SdoClient& sdo, canopen::Ds402Controller& ctl, uint8_t node, int8_t mode,
+              int timeoutMs, const std::function<void(SampleFn, canopen::Ds402Callback)>& start,
+              const QString& doneText, QTextStream& out) {
     installInterruptHandler();
     bool finished = false, stopAsked = false;
     canopen::Ds402Result result;
@@ -86,9 +92,11 @@ int runMotion(const QString& verb, canopen::SdoClient& sdo, canopen::Ds402Contro
     }
     if (!result.ok) return endDisabled(ctl, verb, node, result.error, out);
     // The last position, read after the end.
-    auto pos = canopen::waitForResult<canopen::SdoResult>([&](canopen::SdoCallback cb) { sdo.upload(node, ctl.objectIndex(0x6064), 0, cb); }, 5000);
+    auto pos = canopen::waitForResult<canopen::SdoResult>(
+        [&](canopen::SdoCallback cb) { sdo.upload(node, ctl.objectIndex(0x6064), 0, cb); }, 5000);
     if (pos && pos->ok && pos->data.size() >= 4)
-        last.position = int32_t(uint32_t(uint8_t(pos->data[0])) | uint32_t(uint8_t(pos->data[1])) << 8 | uint32_t(uint8_t(pos->data[2])) << 16 | uint32_t(uint8_t(pos->data[3])) << 24);
+        last.position = int32_t(uint32_t(uint8_t(pos->data[0])) | uint32_t(uint8_t(pos->data[1])) << 8 |
+                                uint32_t(uint8_t(pos->data[2])) << 16 | uint32_t(uint8_t(pos->data[3])) << 24);
     out << QStringLiteral("node %1: %2, position actual 6064h = %3 (statusword 0x%4: %5)\n")
                .arg(node)
                .arg(doneText)
@@ -101,21 +109,39 @@ int runMotion(const QString& verb, canopen::SdoClient& sdo, canopen::Ds402Contro
 int runHome(const QStringList& args) {
     const QString verb = QStringLiteral("ds402 home");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Home a CiA 402 drive (homing mode 6060h = 6): writes 607Ch, 6098h, 6099h:01/02 and 609Ah, enables the drive, starts homing "
-        "(6040h 0Fh -> 1Fh) and waits for homing attained (statusword bit 12) or homing error (bit 13). THIS CAN MOVE A MOTOR: asks "
-        "for confirmation unless --yes (without a terminal it refuses). Prints every object and controlword sent and the progress; "
-        "always ends with the drive disabled, also on failure, timeout or Ctrl+C. Values are in the drive's units (Delta: speeds in "
-        "0.1 rpm, acceleration in ms from 0 to 3000 rpm; AIMOTOR: pulse/s and pulse/s^2). --methods lists the drive's methods."));
+    p.setApplicationDescription(
+        QStringLiteral("Home a CiA 402 drive (homing mode 6060h = 6): writes 607Ch, 6098h, 6099h:01/02 and 609Ah, "
+                       "enables the drive, starts homing "
+                       "(6040h 0Fh -> 1Fh) and waits for homing attained (statusword bit 12) or homing error (bit 13). "
+                       "THIS CAN MOVE A MOTOR: asks "
+                       "for confirmation unless --yes (without a terminal it refuses). Prints every object and "
+                       "controlword sent and the progress; "
+                       "always ends with the drive disabled, also on failure, timeout or Ctrl+C. Values are in the "
+                       "drive's units (Delta: speeds in "
+                       "0.1 rpm, acceleration in ms from 0 to 3000 rpm; AIMOTOR: pulse/s and pulse/s^2). --methods "
+                       "lists the drive's methods."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
-    const QCommandLineOption method(QStringLiteral("method"), QStringLiteral("Homing method 6098h (default 35: the current position is home, no movement)."), QStringLiteral("N"), QStringLiteral("35"));
-    const QCommandLineOption fast(QStringLiteral("fast"), QStringLiteral("Speed during search for switch 6099h:01."), QStringLiteral("V"));
-    const QCommandLineOption slow(QStringLiteral("slow"), QStringLiteral("Speed during search for zero 6099h:02."), QStringLiteral("V"));
-    const QCommandLineOption accel(QStringLiteral("acceleration"), QStringLiteral("Homing acceleration 609Ah."), QStringLiteral("A"));
-    const QCommandLineOption offset(QStringLiteral("offset"), QStringLiteral("Home offset 607Ch (signed): the position the drive shows at home."), QStringLiteral("O"));
-    const QCommandLineOption methods(QStringLiteral("methods"), QStringLiteral("List the drive's homing methods and exit (nothing moves)."));
-    const QCommandLineOption dict(QStringLiteral("dict"), QStringLiteral("The drive's dictionary (name or file) for its list of methods; default: matched by its identity 1018h."), QStringLiteral("NAME"));
+    const QCommandLineOption method(
+        QStringLiteral("method"),
+        QStringLiteral("Homing method 6098h (default 35: the current position is home, no movement)."),
+        QStringLiteral("N"), QStringLiteral("35"));
+    const QCommandLineOption fast(QStringLiteral("fast"), QStringLiteral("Speed during search for switch 6099h:01."),
+                                  QStringLiteral("V"));
+    const QCommandLineOption slow(QStringLiteral("slow"), QStringLiteral("Speed during search for zero 6099h:02."),
+                                  QStringLiteral("V"));
+    const QCommandLineOption accel(QStringLiteral("acceleration"), QStringLiteral("Homing acceleration 609Ah."),
+                                   QStringLiteral("A"));
+    const QCommandLineOption offset(QStringLiteral("offset"),
+                                    QStringLiteral("Home offset 607Ch (signed): the position the drive shows at home."),
+                                    QStringLiteral("O"));
+    const QCommandLineOption methods(QStringLiteral("methods"),
+                                     QStringLiteral("List the drive's homing methods and exit (nothing moves)."));
+    const QCommandLineOption dict(
+        QStringLiteral("dict"),
+        QStringLiteral(
+            "The drive's dictionary (name or file) for its list of methods; default: matched by its identity 1018h."),
+        QStringLiteral("NAME"));
     MotionOptions common;
     p.addOptions({method, fast, slow, accel, offset, methods, dict});
     common.addTo(p);
@@ -156,39 +182,60 @@ int runHome(const QStringList& args) {
     const auto& table = canopen::homing::drive(dictName);
     const bool known = table.dictionary == dictName;
     if (p.isSet(methods)) {
-        out << "node " << *node << " (" << (known ? table.title : QStringLiteral("dictionary not known: CiA 402-2 methods")) << "), homing methods 6098h, " << table.source << ":\n";
+        out << "node " << *node << " ("
+            << (known ? table.title : QStringLiteral("dictionary not known: CiA 402-2 methods"))
+            << "), homing methods 6098h, " << table.source << ":\n";
         for (const auto& hm : table.methods) out << QStringLiteral("%1  %2\n").arg(hm.number, 3).arg(hm.description);
         return Ok;
     }
     if (known && !table.supports(req.method))
-        return failure(verb, QStringLiteral("node %1 (%2) has no homing method %3; its methods are %4 (%5); nothing was sent").arg(*node).arg(table.title).arg(req.method).arg(table.numbers(), table.source));
+        return failure(verb,
+                       QStringLiteral("node %1 (%2) has no homing method %3; its methods are %4 (%5); nothing was sent")
+                           .arg(*node)
+                           .arg(table.title)
+                           .arg(req.method)
+                           .arg(table.numbers(), table.source));
     req.methodOnlyWhileDisabled = known && table.changeOnlyWhileDisabled;
-    if (!confirmMotion(p.isSet(common.yes), QStringLiteral("This enables node %1 and homes it with %2.").arg(*node).arg(table.describe(req.method)), &why))
+    if (!confirmMotion(
+            p.isSet(common.yes),
+            QStringLiteral("This enables node %1 and homes it with %2.").arg(*node).arg(table.describe(req.method)),
+            &why))
         return failure(verb, why);
     out << "node " << *node << ": homing with " << table.describe(req.method) << "\n";
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
     printSends(ctl, out);
-    return runMotion(verb, s.sdo(), ctl, *node, 6, req.timeoutMs, [&](SampleFn progress, canopen::Ds402Callback done) { ctl.home(req, progress, done); },
-                     QStringLiteral("homing attained"), out);
+    return runMotion(
+        verb, s.sdo(), ctl, *node, 6, req.timeoutMs,
+        [&](SampleFn progress, canopen::Ds402Callback done) { ctl.home(req, progress, done); },
+        QStringLiteral("homing attained"), out);
 }
 
 int runMove(const QStringList& args) {
     const QString verb = QStringLiteral("ds402 move");
     QCommandLineParser p;
     p.setApplicationDescription(QStringLiteral(
-        "Move a CiA 402 drive to a position in profile position mode (6060h = 1): writes 6081h/6083h/6084h and 607Ah, enables the "
-        "drive, gives the set-point (6040h bit 4 rising, bit 6 relative, bit 5 change set immediately), waits for set-point "
-        "acknowledge (statusword bit 12), clears bit 4 and waits for target reached (bit 10). THIS MOVES A MOTOR: asks for "
-        "confirmation unless --yes (without a terminal it refuses). Prints every object and controlword sent and the progress; "
+        "Move a CiA 402 drive to a position in profile position mode (6060h = 1): writes 6081h/6083h/6084h and 607Ah, "
+        "enables the "
+        "drive, gives the set-point (6040h bit 4 rising, bit 6 relative, bit 5 change set immediately), waits for "
+        "set-point "
+        "acknowledge (statusword bit 12), clears bit 4 and waits for target reached (bit 10). THIS MOVES A MOTOR: asks "
+        "for "
+        "confirmation unless --yes (without a terminal it refuses). Prints every object and controlword sent and the "
+        "progress; "
         "always ends with the drive disabled, also on failure, timeout or Ctrl+C. Values are in the drive's units."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("TARGET"), QStringLiteral("Target position 607Ah (signed, position units)"));
-    const QCommandLineOption relative(QStringLiteral("relative"), QStringLiteral("TARGET is relative to the last target (controlword bit 6)."));
-    const QCommandLineOption immediate(QStringLiteral("immediate"), QStringLiteral("Change set immediately (controlword bit 5)."));
-    const QCommandLineOption velocity(QStringLiteral("velocity"), QStringLiteral("Profile velocity 6081h."), QStringLiteral("V"));
-    const QCommandLineOption accel(QStringLiteral("acceleration"), QStringLiteral("Profile acceleration 6083h."), QStringLiteral("A"));
-    const QCommandLineOption decel(QStringLiteral("deceleration"), QStringLiteral("Profile deceleration 6084h."), QStringLiteral("D"));
+    const QCommandLineOption relative(QStringLiteral("relative"),
+                                      QStringLiteral("TARGET is relative to the last target (controlword bit 6)."));
+    const QCommandLineOption immediate(QStringLiteral("immediate"),
+                                       QStringLiteral("Change set immediately (controlword bit 5)."));
+    const QCommandLineOption velocity(QStringLiteral("velocity"), QStringLiteral("Profile velocity 6081h."),
+                                      QStringLiteral("V"));
+    const QCommandLineOption accel(QStringLiteral("acceleration"), QStringLiteral("Profile acceleration 6083h."),
+                                   QStringLiteral("A"));
+    const QCommandLineOption decel(QStringLiteral("deceleration"), QStringLiteral("Profile deceleration 6084h."),
+                                   QStringLiteral("D"));
     MotionOptions common;
     p.addOptions({relative, immediate, velocity, accel, decel});
     common.addTo(p);
@@ -215,15 +262,21 @@ int runMove(const QStringList& args) {
     move.velocity = unsignedOption(p, velocity, &bad);
     move.acceleration = unsignedOption(p, accel, &bad);
     move.deceleration = unsignedOption(p, decel, &bad);
-    if (bad) return usageError(verb, QStringLiteral("--velocity, --acceleration and --deceleration must be unsigned numbers"));
+    if (bad)
+        return usageError(verb,
+                          QStringLiteral("--velocity, --acceleration and --deceleration must be unsigned numbers"));
     const int ax = p.value(common.axis).toInt(&ok);
     if (!ok || ax < 0 || ax > 7) return usageError(verb, QStringLiteral("--axis must be 0-7"));
     move.timeoutMs = p.value(common.timeout).toInt(&ok);
-    if (!ok || move.timeoutMs <= 0) return usageError(verb, QStringLiteral("--timeout must be a positive number of ms"));
+    if (!ok || move.timeoutMs <= 0)
+        return usageError(verb, QStringLiteral("--timeout must be a positive number of ms"));
     QString why;
     if (!mayConfirmMotion(p.isSet(common.yes), &why)) return failure(verb, why);
-    const QString what = move.relative ? QStringLiteral("by %1 (relative)").arg(move.target) : QStringLiteral("to position %1").arg(move.target);
-    if (!confirmMotion(p.isSet(common.yes), QStringLiteral("This enables node %1 and moves it %2.").arg(*node).arg(what), &why)) return failure(verb, why);
+    const QString what = move.relative ? QStringLiteral("by %1 (relative)").arg(move.target)
+                                       : QStringLiteral("to position %1").arg(move.target);
+    if (!confirmMotion(p.isSet(common.yes),
+                       QStringLiteral("This enables node %1 and moves it %2.").arg(*node).arg(what), &why))
+        return failure(verb, why);
 
     BusSession s;
     QString error;
@@ -232,13 +285,17 @@ int runMove(const QStringList& args) {
     out << "node " << *node << ": moving " << what << "\n";
     canopen::Ds402Controller ctl(s.sdo(), *node, ax);
     printSends(ctl, out);
-    return runMotion(verb, s.sdo(), ctl, *node, 1, move.timeoutMs, [&](SampleFn progress, canopen::Ds402Callback done) { ctl.moveTo(move, progress, done); },
-                     QStringLiteral("target reached"), out);
+    return runMotion(
+        verb, s.sdo(), ctl, *node, 1, move.timeoutMs,
+        [&](SampleFn progress, canopen::Ds402Callback done) { ctl.moveTo(move, progress, done); },
+        QStringLiteral("target reached"), out);
 }
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("ds402 home"), QStringLiteral("Home a CiA 402 drive (asks first; ends disabled)."), runHome});
-COSCOPE_CLI_VERB({QStringLiteral("ds402 move"), QStringLiteral("Profile position move of a CiA 402 drive (asks first; ends disabled)."), runMove});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 home"), QStringLiteral("Home a CiA 402 drive (asks first; ends disabled)."),
+                  runHome});
+COSCOPE_CLI_VERB({QStringLiteral("ds402 move"),
+                  QStringLiteral("Profile position move of a CiA 402 drive (asks first; ends disabled)."), runMove});
 
 }  // namespace coscope::cli

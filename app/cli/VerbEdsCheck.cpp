@@ -11,7 +11,8 @@ namespace coscope::cli {
 static int runEdsCheck(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Check EDS/DCF/XDD files; FILE may be a bundled dictionary name."));
-    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Dictionary files or names."), QStringLiteral("FILE..."));
+    parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Dictionary files or names."),
+                                 QStringLiteral("FILE..."));
     parser.addOption({QStringLiteral("quiet"), QStringLiteral("Print only errors and the summary.")});
     int code = 0;
     if (!parseArgs(parser, QStringLiteral("eds check"), args, &code)) return code;
@@ -27,7 +28,8 @@ static int runEdsCheck(const QStringList& args) {
             out << d.toString() << "\n";
         }
         out << file << ": " << (r.usable ? "ok" : "NOT USABLE") << ", " << r.dictionary.objectCount() << " objects, "
-            << r.dictionary.subObjectCount() << " sub-objects, " << r.warningCount() << " warnings, " << r.errorCount() << " errors\n";
+            << r.dictionary.subObjectCount() << " sub-objects, " << r.warningCount() << " warnings, " << r.errorCount()
+            << " errors\n";
         if (!r.usable) ++unusable;
     }
     out.flush();

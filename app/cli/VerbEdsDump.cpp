@@ -38,20 +38,26 @@ static int runEdsDump(const QStringList& args) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Print the entries of a dictionary (file or bundled name)."));
     parser.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("EDS/DCF/XDD file or dictionary name."));
-    parser.addOption({QStringLiteral("node-id"), QStringLiteral("Resolve $NODEID with N (1..127)."), QStringLiteral("N")});
-    parser.addOption({QStringLiteral("format"), QStringLiteral("text (default) or json."), QStringLiteral("FORMAT"), QStringLiteral("text")});
+    parser.addOption(
+        {QStringLiteral("node-id"), QStringLiteral("Resolve $NODEID with N (1..127)."), QStringLiteral("N")});
+    parser.addOption({QStringLiteral("format"), QStringLiteral("text (default) or json."), QStringLiteral("FORMAT"),
+                      QStringLiteral("text")});
     int code = 0;
     const QString verb = QStringLiteral("eds dump");
     if (!parseArgs(parser, verb, args, &code)) return code;
     const QStringList pos = parser.positionalArguments();
     if (pos.size() != 1) return usageError(verb, QStringLiteral("needs exactly one FILE"));
     const QString format = parser.value(QStringLiteral("format"));
-    if (format != u"text" && format != u"json") return usageError(verb, QStringLiteral("--format must be text or json, not '%1'").arg(format));
+    if (format != u"text" && format != u"json")
+        return usageError(verb, QStringLiteral("--format must be text or json, not '%1'").arg(format));
     int node = -1;
     if (parser.isSet(QStringLiteral("node-id"))) {
         bool ok = false;
         node = parser.value(QStringLiteral("node-id")).toInt(&ok, 0);
-        if (!ok || node < 1 || node > 127) return usageError(verb, QStringLiteral("--node-id must be 1..127, not '%1'").arg(parser.value(QStringLiteral("node-id"))));
+        if (!ok || node < 1 || node > 127)
+            return usageError(
+                verb,
+                QStringLiteral("--node-id must be 1..127, not '%1'").arg(parser.value(QStringLiteral("node-id"))));
     }
     const eds::ReadResult r = eds::loadDictionaryByPathOrName(pos.front());
     if (!r.usable) {
@@ -88,12 +94,15 @@ static int runEdsDump(const QStringList& args) {
     if (od.vendorId()) out << QStringLiteral(" (0x%1)").arg(*od.vendorId(), 8, 16, QLatin1Char('0'));
     out << "\nProduct: " << d.productName;
     if (od.productCode()) out << QStringLiteral(" (0x%1)").arg(*od.productCode(), 8, 16, QLatin1Char('0'));
-    if (od.revisionNumber()) out << QStringLiteral(", revision 0x%1").arg(*od.revisionNumber(), 8, 16, QLatin1Char('0'));
+    if (od.revisionNumber())
+        out << QStringLiteral(", revision 0x%1").arg(*od.revisionNumber(), 8, 16, QLatin1Char('0'));
     out << "\nObjects: " << od.objectCount() << ", sub-objects: " << od.subObjectCount();
     if (nodeId) out << ", node-ID " << nodeId;
     out << "\n\n";
     for (const auto& [index, obj] : od.objects()) {
-        out << QStringLiteral("%1     %2 %3\n").arg(index, 4, 16, QLatin1Char('0')).arg(od::objectTypeName(obj.objectType).leftJustified(9), obj.name);
+        out << QStringLiteral("%1     %2 %3\n")
+                   .arg(index, 4, 16, QLatin1Char('0'))
+                   .arg(od::objectTypeName(obj.objectType).leftJustified(9), obj.name);
         for (const od::SubObject& s : obj.subs) {
             const auto v = s.resolvedValue(nodeId);
             QString val = v ? v->format(s.dataType) : s.parameterValue.isEmpty() ? s.defaultValue : s.parameterValue;
@@ -106,13 +115,15 @@ static int runEdsDump(const QStringList& args) {
             out << QStringLiteral("%1:%2  %3 %4 %5 %6  %7\n")
                        .arg(index, 4, 16, QLatin1Char('0'))
                        .arg(s.sub, 2, 16, QLatin1Char('0'))
-                       .arg(od::dataTypeName(s.dataType).leftJustified(15), od::accessName(s.access).leftJustified(5), s.pdoMappable ? QStringLiteral("pdo") : QStringLiteral("   "),
+                       .arg(od::dataTypeName(s.dataType).leftJustified(15), od::accessName(s.access).leftJustified(5),
+                            s.pdoMappable ? QStringLiteral("pdo") : QStringLiteral("   "),
                             (obj.isComposite() ? s.name : QString()).leftJustified(obj.isComposite() ? 32 : 0), val);
         }
     }
     return Ok;
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("eds dump"), QStringLiteral("Print a dictionary's entries (text or JSON)."), runEdsDump});
+COSCOPE_CLI_VERB({QStringLiteral("eds dump"), QStringLiteral("Print a dictionary's entries (text or JSON)."),
+                  runEdsDump});
 
 }  // namespace coscope::cli

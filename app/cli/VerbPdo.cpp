@@ -16,7 +16,8 @@ namespace {
 
 void printPdo(QTextStream& out, const canopen::PdoReadResult& r, const od::ObjectDictionary* dict) {
     const auto& c = r.config;
-    out << r.pdo.name() << "  COB-ID 0x" << QString::number(c.cobId & 0x7FFFFFFF, 16).toUpper() << (c.valid() ? "" : " (not valid)") << "  type " << od::transmissionTypeText(c.transmissionType);
+    out << r.pdo.name() << "  COB-ID 0x" << QString::number(c.cobId & 0x7FFFFFFF, 16).toUpper()
+        << (c.valid() ? "" : " (not valid)") << "  type " << od::transmissionTypeText(c.transmissionType);
     if (c.inhibitTime) out << "  inhibit " << *c.inhibitTime << " x100us";
     if (c.eventTimer) out << "  event timer " << *c.eventTimer << " ms";
     out << "  " << c.totalBits() << " bits\n";
@@ -33,10 +34,13 @@ void printPdo(QTextStream& out, const canopen::PdoReadResult& r, const od::Objec
 int runShow(const QStringList& args) {
     const QString verb = QStringLiteral("pdo show");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral("Read a node's TPDO1-4 and RPDO1-4: COB-ID, transmission type, timers and mapping."));
+    p.setApplicationDescription(
+        QStringLiteral("Read a node's TPDO1-4 and RPDO1-4: COB-ID, transmission type, timers and mapping."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
-    const QCommandLineOption dictOpt(QStringLiteral("dict"), QStringLiteral("Dictionary file or name (default: matched by identity)."), QStringLiteral("FILE|NAME"));
+    const QCommandLineOption dictOpt(QStringLiteral("dict"),
+                                     QStringLiteral("Dictionary file or name (default: matched by identity)."),
+                                     QStringLiteral("FILE|NAME"));
     p.addOption(dictOpt);
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -72,18 +76,27 @@ int runShow(const QStringList& args) {
 int runMap(const QStringList& args) {
     const QString verb = QStringLiteral("pdo map");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Write a PDO mapping in the CiA 301 order (pre-operational, COB-ID invalid, transmission type, inhibit time, event timer, "
-        "sub0 = 0, entries, sub0 = n, COB-ID valid), verify it by reading back, and restore the previous mapping if a step fails."));
+    p.setApplicationDescription(
+        QStringLiteral("Write a PDO mapping in the CiA 301 order (pre-operational, COB-ID invalid, transmission type, "
+                       "inhibit time, event timer, "
+                       "sub0 = 0, entries, sub0 = n, COB-ID valid), verify it by reading back, and restore the "
+                       "previous mapping if a step fails."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("PDO"), QStringLiteral("tpdo1..tpdo512 or rpdo1..rpdo512"));
     p.addPositionalArgument(QStringLiteral("OBJECTS"), QStringLiteral("IIII:SS[/BITS],... e.g. 6041:00,6064:00"));
-    const QCommandLineOption type(QStringLiteral("type"), QStringLiteral("Transmission type 0-255 (default: keep)."), QStringLiteral("N"));
-    const QCommandLineOption inhibit(QStringLiteral("inhibit"), QStringLiteral("Inhibit time in ms (TPDO; written in 100 us units)."), QStringLiteral("MS"));
-    const QCommandLineOption event(QStringLiteral("event-timer"), QStringLiteral("Event timer in ms."), QStringLiteral("MS"));
-    const QCommandLineOption cob(QStringLiteral("cob-id"), QStringLiteral("COB-ID (default: keep)."), QStringLiteral("ID"));
-    const QCommandLineOption dictOpt(QStringLiteral("dict"), QStringLiteral("Dictionary file or name (default: matched by identity)."), QStringLiteral("FILE|NAME"));
+    const QCommandLineOption type(QStringLiteral("type"), QStringLiteral("Transmission type 0-255 (default: keep)."),
+                                  QStringLiteral("N"));
+    const QCommandLineOption inhibit(QStringLiteral("inhibit"),
+                                     QStringLiteral("Inhibit time in ms (TPDO; written in 100 us units)."),
+                                     QStringLiteral("MS"));
+    const QCommandLineOption event(QStringLiteral("event-timer"), QStringLiteral("Event timer in ms."),
+                                   QStringLiteral("MS"));
+    const QCommandLineOption cob(QStringLiteral("cob-id"), QStringLiteral("COB-ID (default: keep)."),
+                                 QStringLiteral("ID"));
+    const QCommandLineOption dictOpt(QStringLiteral("dict"),
+                                     QStringLiteral("Dictionary file or name (default: matched by identity)."),
+                                     QStringLiteral("FILE|NAME"));
     p.addOptions({type, inhibit, event, cob, dictOpt});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -110,7 +123,9 @@ int runMap(const QStringList& args) {
     const auto inh = number(inhibit, 6553);
     const auto ev = number(event, 65535);
     const auto c = number(cob, 0x7FF);
-    if (!ok) return usageError(verb, QStringLiteral("--type 0-255, --inhibit 0-6553 ms, --event-timer 0-65535 ms, --cob-id up to 0x7FF"));
+    if (!ok)
+        return usageError(
+            verb, QStringLiteral("--type 0-255, --inhibit 0-6553 ms, --event-timer 0-65535 ms, --cob-id up to 0x7FF"));
     if (inh && !pdoId->transmit) return usageError(verb, QStringLiteral("--inhibit applies to TPDOs only"));
     if (inh) wanted.inhibitTime = static_cast<uint16_t>(*inh * 10);
     if (ev) wanted.eventTimer = static_cast<uint16_t>(*ev);
@@ -142,14 +157,18 @@ int runMap(const QStringList& args) {
     for (const QString& step : res->steps) out << "  " << step << "\n";
     out.flush();
     if (!res->ok)
-        return failure(verb, res->error.startsWith(QStringLiteral("node ")) ? res->error : QStringLiteral("node %1 %2: %3").arg(*node).arg(pdoId->name(), res->error));
-    out << pdoId->name() << " of node " << *node << " mapped and verified (" << res->written.totalBits() << " bits); node left pre-operational\n";
+        return failure(verb, res->error.startsWith(QStringLiteral("node "))
+                                 ? res->error
+                                 : QStringLiteral("node %1 %2: %3").arg(*node).arg(pdoId->name(), res->error));
+    out << pdoId->name() << " of node " << *node << " mapped and verified (" << res->written.totalBits()
+        << " bits); node left pre-operational\n";
     return Ok;
 }
 
 }  // namespace
 
 COSCOPE_CLI_VERB({QStringLiteral("pdo show"), QStringLiteral("Show a node's PDO configuration and mapping."), runShow});
-COSCOPE_CLI_VERB({QStringLiteral("pdo map"), QStringLiteral("Write, verify (and on failure roll back) a PDO mapping."), runMap});
+COSCOPE_CLI_VERB({QStringLiteral("pdo map"), QStringLiteral("Write, verify (and on failure roll back) a PDO mapping."),
+                  runMap});
 
 }  // namespace coscope::cli

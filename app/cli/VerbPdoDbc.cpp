@@ -22,7 +22,8 @@ namespace coscope::cli {
 
 namespace {
 
-int writeDbc(const QString& verb, const dissect::NetworkContext& ctx, const std::vector<dissect::RawSignal>& raw, const QString& path) {
+int writeDbc(const QString& verb, const dissect::NetworkContext& ctx, const std::vector<dissect::RawSignal>& raw,
+             const QString& path) {
     int pdos = 0;
     const QByteArray dbc = dissect::pdoLayoutDbc(ctx, raw, 0, &pdos);
     QFile out(path);
@@ -30,7 +31,9 @@ int writeDbc(const QString& verb, const dissect::NetworkContext& ctx, const std:
         return failure(verb, QStringLiteral("%1: %2").arg(path, out.errorString()));
     std::printf("%s: %d PDO messages, %zu raw signals\n", qPrintable(path), pdos, raw.size());
     if (!pdos && raw.empty())
-        std::fprintf(stderr, "coscope-cli pdo dbc: warning: no PDO mapping is known (give --dict NODE=NAME, or a log with the mapping's SDO writes)\n");
+        std::fprintf(stderr,
+                     "coscope-cli pdo dbc: warning: no PDO mapping is known (give --dict NODE=NAME, or a log with the "
+                     "mapping's SDO writes)\n");
     return Ok;
 }
 
@@ -62,7 +65,8 @@ bool readBus(const QString& url, const std::map<int, QString>& nodes, dissect::N
             cfg.cobId = r.config.cobId;
             cfg.cobIdKnown = true;
             cfg.entries.clear();
-            for (const canopen::PdoMapEntry& e : r.config.entries) cfg.entries.push_back(dissect::makeMapEntry(e.encode(), ctx.namesFor(node)));
+            for (const canopen::PdoMapEntry& e : r.config.entries)
+                cfg.entries.push_back(dissect::makeMapEntry(e.encode(), ctx.namesFor(node)));
             cfg.count = static_cast<uint8_t>(cfg.entries.size());
             cfg.mappingKnown = true;
         }
@@ -73,19 +77,30 @@ bool readBus(const QString& url, const std::map<int, QString>& nodes, dissect::N
 int runDbc(const QStringList& args) {
     const QString verb = QStringLiteral("pdo dbc");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Export the PDO layout in force at the end of a log (dictionary defaults plus what SDO writes in the log changed) as a DBC "
-        "file: one message per TPDO/RPDO, the mapped objects as Intel signals with the dictionary's scaling, the object index:sub "
-        "as comments. Raw signals given with --signal are exported too."));
-    p.addPositionalArgument(QStringLiteral("LOG|BUS"), QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4), or a bus URL whose nodes (--node, --dict) are read over SDO."));
+    p.setApplicationDescription(
+        QStringLiteral("Export the PDO layout in force at the end of a log (dictionary defaults plus what SDO writes "
+                       "in the log changed) as a DBC "
+                       "file: one message per TPDO/RPDO, the mapped objects as Intel signals with the dictionary's "
+                       "scaling, the object index:sub "
+                       "as comments. Raw signals given with --signal are exported too."));
+    p.addPositionalArgument(QStringLiteral("LOG|BUS"),
+                            QStringLiteral("Log file (candump, asc, blf, trc, pcap/pcapng, csv, mf4), or a bus URL "
+                                           "whose nodes (--node, --dict) are read over SDO."));
     p.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("DBC file to write."));
-    const QCommandLineOption dictOpt(QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."),
-                                     QStringLiteral("NODE=NAME|FILE"));
-    const QCommandLineOption sigOpt(QStringLiteral("signal"),
-                                    QStringLiteral("Raw signal to export too (repeatable), as for decode: TYPE u, s or f, @0 after it for Motorola."),
-                                    QStringLiteral("NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]"));
-    const QCommandLineOption nodeOpt(QStringLiteral("node"), QStringLiteral("BUS: a node to read the PDOs of (repeatable; the --dict nodes are read too)."), QStringLiteral("N"));
-    const QCommandLineOption noIdentity(QStringLiteral("no-identity"), QStringLiteral("Do not pick dictionaries by the identity read in the log."));
+    const QCommandLineOption dictOpt(
+        QStringLiteral("dict"), QStringLiteral("Dictionary of a node: bundled name or EDS/DCF/XDD file (repeatable)."),
+        QStringLiteral("NODE=NAME|FILE"));
+    const QCommandLineOption sigOpt(
+        QStringLiteral("signal"),
+        QStringLiteral(
+            "Raw signal to export too (repeatable), as for decode: TYPE u, s or f, @0 after it for Motorola."),
+        QStringLiteral("NAME=COBID:START:LEN:TYPE[:FACTOR[:OFFSET[:UNIT]]]"));
+    const QCommandLineOption nodeOpt(
+        QStringLiteral("node"),
+        QStringLiteral("BUS: a node to read the PDOs of (repeatable; the --dict nodes are read too)."),
+        QStringLiteral("N"));
+    const QCommandLineOption noIdentity(QStringLiteral("no-identity"),
+                                        QStringLiteral("Do not pick dictionaries by the identity read in the log."));
     p.addOptions({dictOpt, sigOpt, nodeOpt, noIdentity});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -105,7 +120,8 @@ int runDbc(const QStringList& args) {
         const qsizetype eq = spec.indexOf(u'=');
         bool ok = false;
         const int node = eq > 0 ? spec.left(eq).toInt(&ok, 0) : 0;
-        if (!ok || node < 1 || node > 127) return usageError(verb, QStringLiteral("--dict '%1': expected NODE=NAME|FILE with NODE 1..127").arg(spec));
+        if (!ok || node < 1 || node > 127)
+            return usageError(verb, QStringLiteral("--dict '%1': expected NODE=NAME|FILE with NODE 1..127").arg(spec));
         dicts[node] = spec.mid(eq + 1);
     }
     QString error;
@@ -116,12 +132,14 @@ int runDbc(const QStringList& args) {
             if (!node) return usageError(verb, QStringLiteral("--node '%1' must be 1-127").arg(n));
             dicts.emplace(*node, QString());
         }
-        if (dicts.empty()) return usageError(verb, QStringLiteral("a bus needs the nodes to read: --node N or --dict NODE=NAME"));
+        if (dicts.empty())
+            return usageError(verb, QStringLiteral("a bus needs the nodes to read: --node N or --dict NODE=NAME"));
         if (!readBus(pos[0], dicts, ctx, &error)) return failure(verb, error);
         return writeDbc(verb, ctx, raw, pos[1]);
     }
     for (const auto& [node, name] : dicts)
-        if (!ctx.assignDictionary(node, name, &error)) return failure(verb, QStringLiteral("--dict %1=%2: %3").arg(node).arg(name, error));
+        if (!ctx.assignDictionary(node, name, &error))
+            return failure(verb, QStringLiteral("--dict %1=%2: %3").arg(node).arg(name, error));
     if (!QFileInfo(pos[0]).isFile()) return failure(verb, QStringLiteral("%1: no such log file").arg(pos[0]));
     auto reader = logio::LogFormats::openReader(pos[0], &error);
     if (!reader) return failure(verb, error);
@@ -135,6 +153,7 @@ int runDbc(const QStringList& args) {
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("pdo dbc"), QStringLiteral("Export the PDO layout in force (and raw signals) as a DBC file."), runDbc});
+COSCOPE_CLI_VERB({QStringLiteral("pdo dbc"),
+                  QStringLiteral("Export the PDO layout in force (and raw signals) as a DBC file."), runDbc});
 
 }  // namespace coscope::cli

@@ -37,16 +37,24 @@ static int runPdoSend(const QStringList& args) {
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("RPDO"), QStringLiteral("RPDO1..RPDO4 (or any the dictionary maps)"));
-    p.addPositionalArgument(QStringLiteral("VALUES"), QStringLiteral("INDEX[:SUB]=VALUE, e.g. 6040=0x000F 607A=1000 60FF=-500 (decimal, 0x1F or 1Fh)"));
-    const QCommandLineOption every(QStringLiteral("every"), QStringLiteral("Send every period (10ms, 500us, 1s)."), QStringLiteral("PERIOD"));
-    const QCommandLineOption withSync(QStringLiteral("with-sync"), QStringLiteral("Send right after each SYNC; runs the SYNC producer."));
-    const QCommandLineOption syncPeriod(QStringLiteral("sync-period"), QStringLiteral("SYNC period with --with-sync (default 10ms)."), QStringLiteral("PERIOD"),
-                                        QStringLiteral("10ms"));
-    const QCommandLineOption duration(QStringLiteral("duration"), QStringLiteral("How long to send, in seconds (default 1, at most 30)."), QStringLiteral("S"),
-                                      QStringLiteral("1"));
+    p.addPositionalArgument(
+        QStringLiteral("VALUES"),
+        QStringLiteral("INDEX[:SUB]=VALUE, e.g. 6040=0x000F 607A=1000 60FF=-500 (decimal, 0x1F or 1Fh)"));
+    const QCommandLineOption every(QStringLiteral("every"), QStringLiteral("Send every period (10ms, 500us, 1s)."),
+                                   QStringLiteral("PERIOD"));
+    const QCommandLineOption withSync(QStringLiteral("with-sync"),
+                                      QStringLiteral("Send right after each SYNC; runs the SYNC producer."));
+    const QCommandLineOption syncPeriod(QStringLiteral("sync-period"),
+                                        QStringLiteral("SYNC period with --with-sync (default 10ms)."),
+                                        QStringLiteral("PERIOD"), QStringLiteral("10ms"));
+    const QCommandLineOption duration(QStringLiteral("duration"),
+                                      QStringLiteral("How long to send, in seconds (default 1, at most 30)."),
+                                      QStringLiteral("S"), QStringLiteral("1"));
     const QCommandLineOption yes(QStringLiteral("yes"), QStringLiteral("Do not ask for confirmation of motion."));
-    const QCommandLineOption dict(QStringLiteral("dict"), QStringLiteral("Dictionary file or library name (default: matched by the node's identity)."),
-                                  QStringLiteral("D"));
+    const QCommandLineOption dict(
+        QStringLiteral("dict"),
+        QStringLiteral("Dictionary file or library name (default: matched by the node's identity)."),
+        QStringLiteral("D"));
     p.addOptions({every, withSync, syncPeriod, duration, yes, dict});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -55,8 +63,10 @@ static int runPdoSend(const QStringList& args) {
     const auto node = parseNodeId(pos[1]);
     if (!node) return usageError(verb, QStringLiteral("node-ID '%1' must be 1-127").arg(pos[1]));
     const auto pdoId = canopen::parsePdoName(pos[2]);
-    if (!pdoId || pdoId->transmit) return usageError(verb, QStringLiteral("'%1' is not an RPDO (RPDO1..RPDO4)").arg(pos[2]));
-    if (p.isSet(every) && p.isSet(withSync)) return usageError(verb, QStringLiteral("--every and --with-sync exclude each other"));
+    if (!pdoId || pdoId->transmit)
+        return usageError(verb, QStringLiteral("'%1' is not an RPDO (RPDO1..RPDO4)").arg(pos[2]));
+    if (p.isSet(every) && p.isSet(withSync))
+        return usageError(verb, QStringLiteral("--every and --with-sync exclude each other"));
     QString error;
     uint32_t periodUs = 0, syncUs = 0;
     if (p.isSet(every)) {
@@ -81,7 +91,8 @@ static int runPdoSend(const QStringList& args) {
     for (int i = 3; i < pos.size(); ++i) {
         const int eq = static_cast<int>(pos[i].indexOf(u'='));
         Assignment a{};
-        if (eq <= 0 || !parseObjectRef(pos[i].left(eq), &a.index, &a.sub)) return usageError(verb, QStringLiteral("'%1' is not INDEX[:SUB]=VALUE").arg(pos[i]));
+        if (eq <= 0 || !parseObjectRef(pos[i].left(eq), &a.index, &a.sub))
+            return usageError(verb, QStringLiteral("'%1' is not INDEX[:SUB]=VALUE").arg(pos[i]));
         a.value = pos[i].mid(eq + 1);
         assignments.push_back(a);
     }
@@ -90,15 +101,23 @@ static int runPdoSend(const QStringList& args) {
     if (!s.open(pos[0], &error)) return failure(verb, error);
     QString dictName;
     const auto dictionary = s.nodeDictionary(*node, p.value(dict), &dictName, &error);
-    if (!dictionary) return failure(verb, QStringLiteral("no dictionary for node %1 (%2); give one with --dict").arg(*node).arg(error));
+    if (!dictionary)
+        return failure(verb,
+                       QStringLiteral("no dictionary for node %1 (%2); give one with --dict").arg(*node).arg(error));
     canopen::ProcessData data(s.context(), s.master().sync());
     if (!data.setNode(*node, *dictionary, &error)) return failure(verb, error);
     const canopen::ProcessDataPdo* pdo = data.pdo(pdoId->number);
-    if (!pdo) return failure(verb, QStringLiteral("%1 of node %2 is not valid or not mapped in %3").arg(pdoId->name()).arg(*node).arg(dictName));
-    for (const canopen::ProcessDataPdo& other : data.pdos()) data.setEnabled(other.layout.number, other.layout.number == pdoId->number);
+    if (!pdo)
+        return failure(verb, QStringLiteral("%1 of node %2 is not valid or not mapped in %3")
+                                 .arg(pdoId->name())
+                                 .arg(*node)
+                                 .arg(dictName));
+    for (const canopen::ProcessDataPdo& other : data.pdos())
+        data.setEnabled(other.layout.number, other.layout.number == pdoId->number);
     // The objects not given repeat what the node has now.
     QStringList unread;
-    auto read = canopen::waitForResult<QStringList>([&](std::function<void(const QStringList&)> cb) { data.readValues(s.sdo(), cb); }, 20000);
+    auto read = canopen::waitForResult<QStringList>(
+        [&](std::function<void(const QStringList&)> cb) { data.readValues(s.sdo(), cb); }, 20000);
     if (!read) unread << QStringLiteral("no answer");
     else unread = *read;
     QTextStream out(stdout);
@@ -106,19 +125,29 @@ static int runPdoSend(const QStringList& args) {
     bool controlword = false;
     for (const Assignment& a : assignments) {
         bool inPdo = false;
-        for (const canopen::ProcessDataObject& o : pdo->objects) inPdo |= !o.dummy && o.entry.index == a.index && o.entry.sub == a.sub;
-        if (!inPdo) return failure(verb, QStringLiteral("%1h:%2 is not mapped in %3 of node %4").arg(a.index, 4, 16, QChar(u'0')).arg(a.sub).arg(pdoId->name()).arg(*node));
+        for (const canopen::ProcessDataObject& o : pdo->objects)
+            inPdo |= !o.dummy && o.entry.index == a.index && o.entry.sub == a.sub;
+        if (!inPdo)
+            return failure(verb, QStringLiteral("%1h:%2 is not mapped in %3 of node %4")
+                                     .arg(a.index, 4, 16, QChar(u'0'))
+                                     .arg(a.sub)
+                                     .arg(pdoId->name())
+                                     .arg(*node));
         if (!data.setValueText(a.index, a.sub, a.value, &error)) return failure(verb, error);
         controlword |= (a.index - 0x6000) % 0x800 == 0x40 && a.index >= 0x6000 && a.index < 0xA000;
     }
     out << pdoId->name() << " of node " << *node << ":";
     for (const canopen::ProcessDataObject& o : pdo->objects)
-        if (!o.dummy) out << " " << QStringLiteral("%1").arg(o.entry.index, 4, 16, QChar(u'0')).toUpper() << "h " << (o.name.isEmpty() ? QStringLiteral("?") : o.name) << " = " << *data.value(o.entry.index, o.entry.sub) << ";";
+        if (!o.dummy)
+            out << " " << QStringLiteral("%1").arg(o.entry.index, 4, 16, QChar(u'0')).toUpper() << "h "
+                << (o.name.isEmpty() ? QStringLiteral("?") : o.name) << " = " << *data.value(o.entry.index, o.entry.sub)
+                << ";";
     out << "\nframe " << frameText(data.frame(pdoId->number)) << "\n";
     out.flush();
     const bool motion = pdo->carriesMotion();
     if (motion && !p.isSet(yes)) {
-        out << pdoId->name() << " maps motion objects: this can move node " << *node << "'s motor for " << seconds << " s.\n"
+        out << pdoId->name() << " maps motion objects: this can move node " << *node << "'s motor for " << seconds
+            << " s.\n"
             << "Make sure the axis is free to move. Type yes to continue: ";
         out.flush();
         char line[64] = {};
@@ -141,8 +170,11 @@ static int runPdoSend(const QStringList& args) {
         QString end = failed;
         if (controlword) {
             canopen::Ds402Controller ctl(s.sdo(), *node);
-            auto r = canopen::waitForResult<canopen::Ds402Result>([&](canopen::Ds402Callback cb) { ctl.disableVoltage(cb); }, 5000);
-            if (!r || !r->ok) end += (end.isEmpty() ? QString() : QStringLiteral("; ")) + QStringLiteral("DISABLING FAILED: ") + (r ? r->error : QStringLiteral("no answer"));
+            auto r = canopen::waitForResult<canopen::Ds402Result>(
+                [&](canopen::Ds402Callback cb) { ctl.disableVoltage(cb); }, 5000);
+            if (!r || !r->ok)
+                end += (end.isEmpty() ? QString() : QStringLiteral("; ")) + QStringLiteral("DISABLING FAILED: ") +
+                       (r ? r->error : QStringLiteral("no answer"));
             else out << "node " << *node << ": controlword 6040h = 0000h (Disable voltage)\n";
         }
         out << "sent " << data.sent() << " frame(s)\n";
@@ -155,15 +187,20 @@ static int runPdoSend(const QStringList& args) {
     if (data.mode() == canopen::ProcessData::Mode::Once && !motion) return finish({});
     QElapsedTimer t;
     t.start();
-    const RunEnd e = waitWhileRunning(s.bus(), [&] {
-        if (motion) data.feedHold();  // the CLI holds the "button" for --duration
-        return data.lastError().isEmpty();
-    }, seconds > 0 ? seconds : 0.001, &error);
+    const RunEnd e = waitWhileRunning(
+        s.bus(),
+        [&] {
+            if (motion) data.feedHold();  // the CLI holds the "button" for --duration
+            return data.lastError().isEmpty();
+        },
+        seconds > 0 ? seconds : 0.001, &error);
     if (e == RunEnd::BusFailed) return finish(error);
     if (!data.lastError().isEmpty()) return finish(data.lastError());
     return finish({});
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("pdo send"), QStringLiteral("Send a node's RPDO with values by object (asks before motion; ends stopped)."), runPdoSend});
+COSCOPE_CLI_VERB({QStringLiteral("pdo send"),
+                  QStringLiteral("Send a node's RPDO with values by object (asks before motion; ends stopped)."),
+                  runPdoSend});
 
 }  // namespace coscope::cli

@@ -11,7 +11,6 @@
 #include <QFile>
 #include <QTextStream>
 
-
 namespace coscope::cli {
 
 namespace {
@@ -32,21 +31,34 @@ bool readFile(const QString& path, QByteArray* data, QString* error) {
 int runProgram(const QStringList& args) {
     const QString verb = QStringLiteral("program");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Download a program (firmware) to a node (CiA 302-3): 1F51h = 0 stop program, 1F51h = 3 clear program (where the node takes it), "
-        "FILE into 1F50h program data (block SDO, segmented when the node declines), 1F51h = 1 start program, wait for the node's boot-up, "
-        "then read 1F56h, 1F57h and 100Ah. The node stops its application for the download. Nothing is sent without --yes."));
+    p.setApplicationDescription(
+        QStringLiteral("Download a program (firmware) to a node (CiA 302-3): 1F51h = 0 stop program, 1F51h = 3 clear "
+                       "program (where the node takes it), "
+                       "FILE into 1F50h program data (block SDO, segmented when the node declines), 1F51h = 1 start "
+                       "program, wait for the node's boot-up, "
+                       "then read 1F56h, 1F57h and 100Ah. The node stops its application for the download. Nothing is "
+                       "sent without --yes."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0 or sim://"));
     p.addPositionalArgument(QStringLiteral("NODE"), QStringLiteral("Node-ID 1-127"));
     p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("The program image, sent as it is"));
-    const QCommandLineOption program{QStringLiteral("program"), QStringLiteral("Program number: the sub-index of 1F50h/1F51h (default 1)."), QStringLiteral("N"), QStringLiteral("1")};
-    const QCommandLineOption noStart{QStringLiteral("no-start"), QStringLiteral("Download only; do not write 1F51h = 1 (the node stays stopped).")};
-    const QCommandLineOption noClear{QStringLiteral("no-clear"), QStringLiteral("Do not write 1F51h = 3 before the download.")};
+    const QCommandLineOption program{QStringLiteral("program"),
+                                     QStringLiteral("Program number: the sub-index of 1F50h/1F51h (default 1)."),
+                                     QStringLiteral("N"), QStringLiteral("1")};
+    const QCommandLineOption noStart{QStringLiteral("no-start"),
+                                     QStringLiteral("Download only; do not write 1F51h = 1 (the node stays stopped).")};
+    const QCommandLineOption noClear{QStringLiteral("no-clear"),
+                                     QStringLiteral("Do not write 1F51h = 3 before the download.")};
     const QCommandLineOption yes{QStringLiteral("yes"), QStringLiteral("Download without asking (required).")};
-    const QCommandLineOption block{QStringLiteral("block"), QStringLiteral("Block SDO transfer, segmented when the node declines it (default).")};
+    const QCommandLineOption block{
+        QStringLiteral("block"), QStringLiteral("Block SDO transfer, segmented when the node declines it (default).")};
     const QCommandLineOption segmented{QStringLiteral("segmented"), QStringLiteral("Segmented SDO transfer.")};
-    const QCommandLineOption timeout{QStringLiteral("timeout"), QStringLiteral("SDO timeout per response in ms (default 5000)."), QStringLiteral("MS"), QStringLiteral("5000")};
-    const QCommandLineOption bootTimeout{QStringLiteral("boot-timeout"), QStringLiteral("How long to wait for the boot-up after the start, in ms (default 10000)."), QStringLiteral("MS"), QStringLiteral("10000")};
+    const QCommandLineOption timeout{QStringLiteral("timeout"),
+                                     QStringLiteral("SDO timeout per response in ms (default 5000)."),
+                                     QStringLiteral("MS"), QStringLiteral("5000")};
+    const QCommandLineOption bootTimeout{
+        QStringLiteral("boot-timeout"),
+        QStringLiteral("How long to wait for the boot-up after the start, in ms (default 10000)."),
+        QStringLiteral("MS"), QStringLiteral("10000")};
     p.addOptions({program, noStart, noClear, yes, block, segmented, timeout, bootTimeout});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -57,7 +69,8 @@ int runProgram(const QStringList& args) {
     bool ok = false;
     const int number = p.value(program).toInt(&ok, 0);
     if (!ok || number < 1 || number > 254) return usageError(verb, QStringLiteral("--program must be 1-254"));
-    if (p.isSet(block) && p.isSet(segmented)) return usageError(verb, QStringLiteral("--block and --segmented exclude each other"));
+    if (p.isSet(block) && p.isSet(segmented))
+        return usageError(verb, QStringLiteral("--block and --segmented exclude each other"));
     ProgramDownloadRequest req;
     req.node = *node;
     req.program = static_cast<uint8_t>(number);
@@ -67,14 +80,16 @@ int runProgram(const QStringList& args) {
     bool okT = false, okB = false;
     req.sdoTimeoutMs = p.value(timeout).toInt(&okT);
     req.bootTimeoutMs = p.value(bootTimeout).toInt(&okB);
-    if (!okT || !okB || req.sdoTimeoutMs <= 0 || req.bootTimeoutMs <= 0) return usageError(verb, QStringLiteral("--timeout and --boot-timeout must be positive numbers of ms"));
+    if (!okT || !okB || req.sdoTimeoutMs <= 0 || req.bootTimeoutMs <= 0)
+        return usageError(verb, QStringLiteral("--timeout and --boot-timeout must be positive numbers of ms"));
     QString error;
     if (!readFile(pos[2], &req.image, &error)) return failure(verb, error);
     if (req.image.isEmpty()) return failure(verb, QStringLiteral("%1 is empty").arg(pos[2]));
 
     QTextStream out(stdout);
     printProgramPlan(out, req, pos[2]);
-    if (!p.isSet(yes)) return failure(verb, QStringLiteral("nothing sent: give --yes to download the program to node %1").arg(*node));
+    if (!p.isSet(yes))
+        return failure(verb, QStringLiteral("nothing sent: give --yes to download the program to node %1").arg(*node));
 
     BusSession s;
     if (!s.open(pos[0], &error)) return failure(verb, error);
@@ -87,33 +102,43 @@ int runProgram(const QStringList& args) {
 int runMakeImage(const QStringList& args) {
     const QString verb = QStringLiteral("program make-image");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Wrap a binary into the program image format the virtual drives of sim:// accept: a 32-byte header (\"CSPI\", payload length, "
-        "CRC-32 of the payload, 16-byte version string for 100Ah, reserved) and the payload; see README \"Program download\"."));
+    p.setApplicationDescription(
+        QStringLiteral("Wrap a binary into the program image format the virtual drives of sim:// accept: a 32-byte "
+                       "header (\"CSPI\", payload length, "
+                       "CRC-32 of the payload, 16-byte version string for 100Ah, reserved) and the payload; see README "
+                       "\"Program download\"."));
     p.addPositionalArgument(QStringLiteral("IN"), QStringLiteral("The payload (any file)"));
     p.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("The image to write"));
-    const QCommandLineOption version{QStringLiteral("version"), QStringLiteral("Software version the drive reports in 100Ah after the start (at most 16 ASCII characters)."), QStringLiteral("TEXT")};
+    const QCommandLineOption version{
+        QStringLiteral("version"),
+        QStringLiteral("Software version the drive reports in 100Ah after the start (at most 16 ASCII characters)."),
+        QStringLiteral("TEXT")};
     p.addOption(version);
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) return usageError(verb, QStringLiteral("expects IN OUT"));
     const QString v = p.value(version);
-    if (v.isEmpty() || v.size() > sim::programimage::kVersionSize) return usageError(verb, QStringLiteral("--version must be 1-16 characters"));
+    if (v.isEmpty() || v.size() > sim::programimage::kVersionSize)
+        return usageError(verb, QStringLiteral("--version must be 1-16 characters"));
     QByteArray payload;
     QString error;
     if (!readFile(pos[0], &payload, &error)) return failure(verb, error);
     const QByteArray image = sim::makeProgramImage(payload, v);
     QFile f(pos[1]);
-    if (!f.open(QIODevice::WriteOnly) || f.write(image) != image.size()) return failure(verb, QStringLiteral("%1: %2").arg(pos[1], f.errorString()));
-    QTextStream(stdout) << pos[1] << ": " << image.size() << " bytes, version " << v << ", CRC-32 0x" << QStringLiteral("%1").arg(sim::crc32(payload), 8, 16, QChar(u'0')).toUpper()
+    if (!f.open(QIODevice::WriteOnly) || f.write(image) != image.size())
+        return failure(verb, QStringLiteral("%1: %2").arg(pos[1], f.errorString()));
+    QTextStream(stdout) << pos[1] << ": " << image.size() << " bytes, version " << v << ", CRC-32 0x"
+                        << QStringLiteral("%1").arg(sim::crc32(payload), 8, 16, QChar(u'0')).toUpper()
                         << " (the drive's 1F56h after the start)\n";
     return Ok;
 }
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("program"), QStringLiteral("Download a program (firmware) to a node, CiA 302-3 (--yes)."), runProgram});
-COSCOPE_CLI_VERB({QStringLiteral("program make-image"), QStringLiteral("Make a program image for the virtual drives."), runMakeImage});
+COSCOPE_CLI_VERB({QStringLiteral("program"),
+                  QStringLiteral("Download a program (firmware) to a node, CiA 302-3 (--yes)."), runProgram});
+COSCOPE_CLI_VERB({QStringLiteral("program make-image"), QStringLiteral("Make a program image for the virtual drives."),
+                  runMakeImage});
 
 }  // namespace coscope::cli

@@ -31,7 +31,8 @@ constexpr int kDifferences = 3;  // compare: the machine is not as in the projec
 constexpr int kWaitMs = 3600000;
 
 QCommandLineOption rangeOption() {
-    return {QStringLiteral("nodes"), QStringLiteral("Node range scanned, FIRST-LAST (default 1-127)."), QStringLiteral("RANGE"), QStringLiteral("1-127")};
+    return {QStringLiteral("nodes"), QStringLiteral("Node range scanned, FIRST-LAST (default 1-127)."),
+            QStringLiteral("RANGE"), QStringLiteral("1-127")};
 }
 
 bool parseRange(const QString& text, uint8_t* first, uint8_t* last) {
@@ -74,10 +75,14 @@ QString folderOf(const QString& path) { return QFileInfo(path).absolutePath(); }
 int runCompare(const QStringList& args) {
     const QString verb = QStringLiteral("project compare");
     QCommandLineParser p;
-    addCommon(p, QStringLiteral("Compare the machine with its project: scan the bus, match each node by node-ID and identity (1018h), read every configured "
-                                "object. Exit 0 when the machine is as in the project, 3 when it differs, 1 on failure."));
-    const QCommandLineOption format{QStringLiteral("format"), QStringLiteral("text (default), json or html."), QStringLiteral("FORMAT"), QStringLiteral("text")};
-    const QCommandLineOption all{QStringLiteral("all"), QStringLiteral("text and html: also list the objects that are the same.")};
+    addCommon(p,
+              QStringLiteral("Compare the machine with its project: scan the bus, match each node by node-ID and "
+                             "identity (1018h), read every configured "
+                             "object. Exit 0 when the machine is as in the project, 3 when it differs, 1 on failure."));
+    const QCommandLineOption format{QStringLiteral("format"), QStringLiteral("text (default), json or html."),
+                                    QStringLiteral("FORMAT"), QStringLiteral("text")};
+    const QCommandLineOption all{QStringLiteral("all"),
+                                 QStringLiteral("text and html: also list the objects that are the same.")};
     const QCommandLineOption range = rangeOption();
     p.addOptions({format, all, range});
     int code = 0;
@@ -85,9 +90,11 @@ int runCompare(const QStringList& args) {
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) return usageError(verb, QStringLiteral("expects BUS FILE"));
     const QString fmt = p.value(format);
-    if (fmt != QLatin1String("text") && fmt != QLatin1String("json") && fmt != QLatin1String("html")) return usageError(verb, QStringLiteral("--format must be text, json or html"));
+    if (fmt != QLatin1String("text") && fmt != QLatin1String("json") && fmt != QLatin1String("html"))
+        return usageError(verb, QStringLiteral("--format must be text, json or html"));
     uint8_t first = 1, last = 127;
-    if (!parseRange(p.value(range), &first, &last)) return usageError(verb, QStringLiteral("--nodes must be FIRST-LAST within 1-127"));
+    if (!parseRange(p.value(range), &first, &last))
+        return usageError(verb, QStringLiteral("--nodes must be FIRST-LAST within 1-127"));
     const auto project = readProject(verb, pos[1], &code);
     if (!project) return code;
     BusSession s;
@@ -110,8 +117,12 @@ int runCompare(const QStringList& args) {
 int runBackup(const QStringList& args) {
     const QString verb = QStringLiteral("project backup");
     QCommandLineParser p;
-    addCommon(p, QStringLiteral("Back up the machine into its project: scan the bus, read every node's objects and keep those that differ from the "
-                                "dictionary's defaults. A FILE that does not exist is made (nodes added with their matched dictionary)."));
+    addCommon(
+        p,
+        QStringLiteral(
+            "Back up the machine into its project: scan the bus, read every node's objects and keep those that differ "
+            "from the "
+            "dictionary's defaults. A FILE that does not exist is made (nodes added with their matched dictionary)."));
     const QCommandLineOption range = rangeOption();
     p.addOptions({range});
     int code = 0;
@@ -119,7 +130,8 @@ int runBackup(const QStringList& args) {
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) return usageError(verb, QStringLiteral("expects BUS FILE"));
     uint8_t first = 1, last = 127;
-    if (!parseRange(p.value(range), &first, &last)) return usageError(verb, QStringLiteral("--nodes must be FIRST-LAST within 1-127"));
+    if (!parseRange(p.value(range), &first, &last))
+        return usageError(verb, QStringLiteral("--nodes must be FIRST-LAST within 1-127"));
     Project project;
     project.busUrl = pos[0];
     project.name = QFileInfo(pos[1]).completeBaseName();
@@ -131,44 +143,56 @@ int runBackup(const QStringList& args) {
     BusSession s;
     if (!openBus(verb, s, pos[0], &code)) return code;
     if (project.busUrl.isEmpty()) project.busUrl = pos[0];
-    if (!project.bitRate && s.bus()->url().bitrate() > 0) project.bitRate = static_cast<uint32_t>(s.bus()->url().bitrate());
+    if (!project.bitRate && s.bus()->url().bitrate() > 0)
+        project.bitRate = static_cast<uint32_t>(s.bus()->url().bitrate());
     ProjectBackup backup(s.sdo(), eds::projectDictionaryResolver(folderOf(pos[1])));
     backup.setScanRange(first, last);
     backup.setMatcher(eds::scanMatcher());
     std::optional<std::pair<Project, std::vector<BackupNodeResult>>> done;
-    backup.start(project, {}, [&done](const Project& pr, const std::vector<BackupNodeResult>& r) { done.emplace(pr, r); });
+    backup.start(project, {},
+                 [&done](const Project& pr, const std::vector<BackupNodeResult>& r) { done.emplace(pr, r); });
     canopen::waitUntil([&] { return done.has_value(); }, kWaitMs);
     if (!done) return failure(verb, QStringLiteral("the backup did not finish"));
     QTextStream out(stdout);
     int failed = 0;
     for (const BackupNodeResult& r : done->second) {
-        out << "node " << r.node << (r.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(r.name)) << ": " << (r.ok ? "ok" : "NOT BACKED UP") << " - " << r.message << "\n";
+        out << "node " << r.node << (r.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(r.name)) << ": "
+            << (r.ok ? "ok" : "NOT BACKED UP") << " - " << r.message << "\n";
         failed += r.ok ? 0 : 1;
     }
     out.flush();
     QString error;
     if (!ProjectFile::write(done->first, pos[1], &error)) return failure(verb, error);
     out << done->first.nodes.size() << " node(s) in " << pos[1] << "\n";
-    if (failed) return failure(verb, QStringLiteral("%1 node(s) not backed up (their entries were kept as they were)").arg(failed));
+    if (failed)
+        return failure(verb,
+                       QStringLiteral("%1 node(s) not backed up (their entries were kept as they were)").arg(failed));
     return Ok;
 }
 
 int runApply(const QStringList& args) {
     const QString verb = QStringLiteral("project apply");
     QCommandLineParser p;
-    addCommon(p, QStringLiteral("Write the project's configuration to the machine: shows the SDO writes per node first (only objects that differ), "
-                                "writes only with --yes; the first refused write stops, that node's old values are put back."));
+    addCommon(p, QStringLiteral(
+                     "Write the project's configuration to the machine: shows the SDO writes per node first (only "
+                     "objects that differ), "
+                     "writes only with --yes; the first refused write stops, that node's old values are put back."));
     const QCommandLineOption dryRun{QStringLiteral("dry-run"), QStringLiteral("Show the writes; write nothing.")};
     const QCommandLineOption yes{QStringLiteral("yes"), QStringLiteral("Write without asking (required to write).")};
-    const QCommandLineOption store{QStringLiteral("store"), QStringLiteral("Then save the parameters in each written node (1010h:01 = \"save\").")};
-    const QCommandLineOption report{QStringLiteral("report"), QStringLiteral("Also write the report to this file."), QStringLiteral("FILE")};
-    const QCommandLineOption node{QStringLiteral("node"), QStringLiteral("Only this node (repeatable)."), QStringLiteral("ID")};
+    const QCommandLineOption store{
+        QStringLiteral("store"),
+        QStringLiteral("Then save the parameters in each written node (1010h:01 = \"save\").")};
+    const QCommandLineOption report{QStringLiteral("report"), QStringLiteral("Also write the report to this file."),
+                                    QStringLiteral("FILE")};
+    const QCommandLineOption node{QStringLiteral("node"), QStringLiteral("Only this node (repeatable)."),
+                                  QStringLiteral("ID")};
     p.addOptions({dryRun, yes, store, report, node});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
     const QStringList pos = p.positionalArguments();
     if (pos.size() != 2) return usageError(verb, QStringLiteral("expects BUS FILE"));
-    if (p.isSet(dryRun) && (p.isSet(yes) || p.isSet(store))) return usageError(verb, QStringLiteral("--dry-run excludes --yes and --store"));
+    if (p.isSet(dryRun) && (p.isSet(yes) || p.isSet(store)))
+        return usageError(verb, QStringLiteral("--dry-run excludes --yes and --store"));
     std::vector<uint8_t> only;
     for (const QString& n : p.values(node)) {
         const auto id = parseNodeId(n);
@@ -194,7 +218,11 @@ int runApply(const QStringList& args) {
     for (const NodeApplyPlan& pl : *plans) writes += pl.writable() ? static_cast<int>(pl.plan.writes.size()) : 0;
     if (p.isSet(dryRun)) return Ok;
     if (writes > 0 && !p.isSet(yes))
-        return failure(verb, QStringLiteral("would write %1 object(s); nothing written: give --yes to write them (or --dry-run to only list them)").arg(writes));
+        return failure(
+            verb,
+            QStringLiteral(
+                "would write %1 object(s); nothing written: give --yes to write them (or --dry-run to only list them)")
+                .arg(writes));
     std::optional<ApplyReport> result;
     apply.run(*plans, {}, [&result](ApplyReport r) { result = std::move(r); });
     canopen::waitUntil([&] { return result.has_value(); }, kWaitMs);
@@ -206,12 +234,15 @@ int runApply(const QStringList& args) {
     if (result->ok() && p.isSet(store)) {
         std::vector<uint8_t> written;
         for (const NodeApplyResult& n : result->nodes)
-            if (n.state == NodeApplyState::Written || n.state == NodeApplyState::NothingToWrite) written.push_back(n.node);
+            if (n.state == NodeApplyState::Written || n.state == NodeApplyState::NothingToWrite)
+                written.push_back(n.node);
         std::optional<std::vector<canopen::ConfigEntryResult>> stored;
         apply.store(written, [&stored](std::vector<canopen::ConfigEntryResult> r) { stored = std::move(r); });
         canopen::waitUntil([&] { return stored.has_value(); }, kWaitMs);
         for (const auto& e : stored.value_or(std::vector<canopen::ConfigEntryResult>{})) {
-            const QString line = QStringLiteral("%1 %2%3\n").arg(e.ok ? QStringLiteral("stored ") : QStringLiteral("NOT STORED"), e.name, e.ok ? QString() : QStringLiteral(": ") + e.error);
+            const QString line = QStringLiteral("%1 %2%3\n")
+                                     .arg(e.ok ? QStringLiteral("stored ") : QStringLiteral("NOT STORED"), e.name,
+                                          e.ok ? QString() : QStringLiteral(": ") + e.error);
             out << line;
             text += line;
             storeFailed |= !e.ok;
@@ -220,7 +251,8 @@ int runApply(const QStringList& args) {
     out.flush();
     if (p.isSet(report)) {
         QFile f(p.value(report));
-        if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) return failure(verb, QStringLiteral("%1: cannot write: %2").arg(f.fileName(), f.errorString()));
+        if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            return failure(verb, QStringLiteral("%1: cannot write: %2").arg(f.fileName(), f.errorString()));
         f.write(text.toUtf8());
     }
     if (!result->ok()) return failure(verb, QStringLiteral("the project was not applied in full (see above)"));
@@ -229,18 +261,24 @@ int runApply(const QStringList& args) {
 }
 
 QString softwareLine(const CompareRow& r) {
-    return QStringLiteral("  %1 %2 %3: project %4, node %5").arg(rowStateName(r.state).leftJustified(10), objectKey(r.index, r.sub), r.name, r.projectValue,
-                                                                 r.driveValue.isEmpty() ? QStringLiteral("-") : r.driveValue);
+    return QStringLiteral("  %1 %2 %3: project %4, node %5")
+        .arg(rowStateName(r.state).leftJustified(10), objectKey(r.index, r.sub), r.name, r.projectValue,
+             r.driveValue.isEmpty() ? QStringLiteral("-") : r.driveValue);
 }
 
 int runProgramProject(const QStringList& args) {
     const QString verb = QStringLiteral("project program");
     QCommandLineParser p;
-    addCommon(p, QStringLiteral("Load the project's programs (CiA 302-3 program download): reads 1F56h and 100Ah of every node whose project names a program, "
-                                "and downloads the project's image (nodes[].firmware.file) to each node whose software differs, as `program` does. "
+    addCommon(p, QStringLiteral("Load the project's programs (CiA 302-3 program download): reads 1F56h and 100Ah of "
+                                "every node whose project names a program, "
+                                "and downloads the project's image (nodes[].firmware.file) to each node whose software "
+                                "differs, as `program` does. "
                                 "Nothing is sent without --yes."));
-    const QCommandLineOption node{QStringLiteral("node"), QStringLiteral("Only this node, downloaded whatever its software says."), QStringLiteral("ID")};
-    const QCommandLineOption yes{QStringLiteral("yes"), QStringLiteral("Download without asking (required to download).")};
+    const QCommandLineOption node{QStringLiteral("node"),
+                                  QStringLiteral("Only this node, downloaded whatever its software says."),
+                                  QStringLiteral("ID")};
+    const QCommandLineOption yes{QStringLiteral("yes"),
+                                 QStringLiteral("Download without asking (required to download).")};
     p.addOptions({node, yes});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -256,7 +294,9 @@ int runProgramProject(const QStringList& args) {
     if (!project) return code;
     for (uint8_t id : only) {
         const ProjectNode* n = project->node(id);
-        if (!n || !n->firmware || n->firmware->file.isEmpty()) return failure(verb, QStringLiteral("node %1 has no program in %2 (nodes[].firmware.file)").arg(id).arg(pos[1]));
+        if (!n || !n->firmware || n->firmware->file.isEmpty())
+            return failure(verb,
+                           QStringLiteral("node %1 has no program in %2 (nodes[].firmware.file)").arg(id).arg(pos[1]));
     }
     BusSession s;
     if (!openBus(verb, s, pos[0], &code)) return code;
@@ -272,9 +312,14 @@ int runProgramProject(const QStringList& args) {
         for (const CompareRow& r : c.rows) out << softwareLine(r) << "\n";
         if (!only.empty() || c.differs()) {
             const QString file = n.firmware ? firmwareFile(*n.firmware, folderOf(pos[1])) : QString();
-            if (file.isEmpty()) return failure(verb, QStringLiteral("node %1: its software differs and the project names no image (nodes[].firmware.file)").arg(c.node));
+            if (file.isEmpty())
+                return failure(
+                    verb, QStringLiteral(
+                              "node %1: its software differs and the project names no image (nodes[].firmware.file)")
+                              .arg(c.node));
             QFile f(file);
-            if (!f.open(QIODevice::ReadOnly)) return failure(verb, QStringLiteral("node %1: %2: %3").arg(c.node).arg(file, f.errorString()));
+            if (!f.open(QIODevice::ReadOnly))
+                return failure(verb, QStringLiteral("node %1: %2: %3").arg(c.node).arg(file, f.errorString()));
             ProgramDownloadRequest req;
             req.node = c.node;
             req.program = n.firmware->program;
@@ -288,7 +333,9 @@ int runProgramProject(const QStringList& args) {
         out << "every node runs the project's program\n";
         return Ok;
     }
-    if (!p.isSet(yes)) return failure(verb, QStringLiteral("nothing sent: give --yes to download the project's program to %1 node(s)").arg(downloads.size()));
+    if (!p.isSet(yes))
+        return failure(verb, QStringLiteral("nothing sent: give --yes to download the project's program to %1 node(s)")
+                                 .arg(downloads.size()));
     for (const ProgramDownloadRequest& req : downloads) {
         const auto result = runProgramDownload(s, req, out);
         if (!result) return failure(verb, QStringLiteral("node %1: the download did not end").arg(req.node));
@@ -296,7 +343,11 @@ int runProgramProject(const QStringList& args) {
         // The node runs the new program: it must now answer what the project expects.
         for (const CompareRow& r : softwareRows(*project->node(req.node), result->after))
             if (r.state != RowState::Same)
-                return failure(verb, QStringLiteral("node %1 took the program but answers %2 %3, the project expects %4").arg(req.node).arg(r.name, r.driveValue.isEmpty() ? QStringLiteral("nothing") : r.driveValue, r.projectValue));
+                return failure(verb,
+                               QStringLiteral("node %1 took the program but answers %2 %3, the project expects %4")
+                                   .arg(req.node)
+                                   .arg(r.name, r.driveValue.isEmpty() ? QStringLiteral("nothing") : r.driveValue,
+                                        r.projectValue));
     }
     out << downloads.size() << " node(s) run the project's program\n";
     return Ok;
@@ -304,9 +355,16 @@ int runProgramProject(const QStringList& args) {
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("project compare"), QStringLiteral("Compare the machine with its project file (exit 3: differs)."), runCompare});
-COSCOPE_CLI_VERB({QStringLiteral("project backup"), QStringLiteral("Read every node's configuration into a project file."), runBackup});
-COSCOPE_CLI_VERB({QStringLiteral("project program"), QStringLiteral("Download the project's programs to the nodes whose software differs (--node, --yes)."), runProgramProject});
-COSCOPE_CLI_VERB({QStringLiteral("project apply"), QStringLiteral("Write a project's configuration to the machine (--dry-run, --yes, --store)."), runApply});
+COSCOPE_CLI_VERB({QStringLiteral("project compare"),
+                  QStringLiteral("Compare the machine with its project file (exit 3: differs)."), runCompare});
+COSCOPE_CLI_VERB({QStringLiteral("project backup"),
+                  QStringLiteral("Read every node's configuration into a project file."), runBackup});
+COSCOPE_CLI_VERB(
+    {QStringLiteral("project program"),
+     QStringLiteral("Download the project's programs to the nodes whose software differs (--node, --yes)."),
+     runProgramProject});
+COSCOPE_CLI_VERB({QStringLiteral("project apply"),
+                  QStringLiteral("Write a project's configuration to the machine (--dry-run, --yes, --store)."),
+                  runApply});
 
 }  // namespace coscope::cli

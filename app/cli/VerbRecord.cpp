@@ -7,8 +7,8 @@
 // the end); Ctrl-C / SIGTERM close the file cleanly. A write error (full disk) stops the
 // recording with the frames written so far kept.
 #include "app/cli/BusOffWatch.h"
-#include "app/cli/LostWatch.h"
 #include "app/cli/CliVerb.h"
+#include "app/cli/LostWatch.h"
 #include "core/can/BusInterfaceName.h"
 #include "core/can/CanBus.h"
 #include "core/logio/LogFormats.h"
@@ -34,13 +34,20 @@ static int runRecord(const QStringList& args) {
     // the same failure through the bus error, in one line.
     QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Record a bus to a log file until --count, --duration, Ctrl-C or SIGTERM. The format is the one OUT's "
-                                                                 "extension names: .log (candump -L), .asc, .blf, .trc, .pcapng, .csv."));
+    parser.setApplicationDescription(QStringLiteral(
+        "Record a bus to a log file until --count, --duration, Ctrl-C or SIGTERM. The format is the one OUT's "
+        "extension names: .log (candump -L), .asc, .blf, .trc, .pcapng, .csv."));
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://"));
-    parser.addPositionalArgument(QStringLiteral("OUT"), QStringLiteral("Log file to write: .log, .asc, .blf, .trc, .pcapng or .csv"));
-    const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."), QStringLiteral("N"));
-    const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."), QStringLiteral("S"));
-    const QCommandLineOption toOpt(QStringLiteral("to"), QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv (default: from OUT's extension)."), QStringLiteral("FORMAT"));
+    parser.addPositionalArgument(QStringLiteral("OUT"),
+                                 QStringLiteral("Log file to write: .log, .asc, .blf, .trc, .pcapng or .csv"));
+    const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N frames."),
+                                      QStringLiteral("N"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"), QStringLiteral("Stop after S seconds."),
+                                         QStringLiteral("S"));
+    const QCommandLineOption toOpt(
+        QStringLiteral("to"),
+        QStringLiteral("Output format: candump, asc, blf, trc, pcapng, csv (default: from OUT's extension)."),
+        QStringLiteral("FORMAT"));
     const QCommandLineOption restartOpt(QStringLiteral("restart-on-bus-off"), BusOffWatch::optionHelp());
     parser.addOption(countOpt);
     parser.addOption(durationOpt);
@@ -55,13 +62,17 @@ static int runRecord(const QStringList& args) {
     if (parser.isSet(countOpt)) {
         bool ok = false;
         count = parser.value(countOpt).toLongLong(&ok);
-        if (!ok || count <= 0) return usageError(kVerb, QStringLiteral("--count must be a positive number, not '%1'").arg(parser.value(countOpt)));
+        if (!ok || count <= 0)
+            return usageError(
+                kVerb, QStringLiteral("--count must be a positive number, not '%1'").arg(parser.value(countOpt)));
     }
     double duration = -1;
     if (parser.isSet(durationOpt)) {
         bool ok = false;
         duration = parser.value(durationOpt).toDouble(&ok);
-        if (!ok || duration <= 0) return usageError(kVerb, QStringLiteral("--duration must be a positive number of seconds, not '%1'").arg(parser.value(durationOpt)));
+        if (!ok || duration <= 0)
+            return usageError(kVerb, QStringLiteral("--duration must be a positive number of seconds, not '%1'")
+                                         .arg(parser.value(durationOpt)));
     }
 
     QString error;
@@ -79,20 +90,25 @@ static int runRecord(const QStringList& args) {
     installInterruptHandler();
     bus->open();
     if (!bus->waitForOpen(kOpenWaitMs)) {
-        const QString why = bus->errorString().isEmpty() ? QStringLiteral("cannot open %1: no answer").arg(url->toString()) : bus->errorString();
+        const QString why = bus->errorString().isEmpty()
+                                ? QStringLiteral("cannot open %1: no answer").arg(url->toString())
+                                : bus->errorString();
         bus->close();
         out->close();
         return failure(kVerb, why);
     }
 
-    QDeadlineTimer deadline = duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
+    QDeadlineTimer deadline =
+        duration > 0 ? QDeadlineTimer(static_cast<qint64>(duration * 1000)) : QDeadlineTimer(QDeadlineTimer::Forever);
     std::vector<CanFrame> batch(512);
     BusOffWatch busOff(bus.get(), kVerb, parser.isSet(restartOpt));
     LostWatch lost(bus.get(), kVerb);  // a lost adapter reconnects by itself: capturing goes on
     lost.setOnBack([&](int64_t lostNs, int64_t backNs) {
         out->markGap(lostNs, backNs);  // on the next frame written
         if (!out->keepsGaps())
-            std::fprintf(stderr, "coscope-cli record: warning: the %s format cannot hold the gap in the capture (adapter lost for %.1f s); "
+            std::fprintf(stderr,
+                         "coscope-cli record: warning: the %s format cannot hold the gap in the capture (adapter lost "
+                         "for %.1f s); "
                          "%s will not show it (pcapng, asc, trc and csv keep gaps)\n",
                          qPrintable(format), double(backNs - lostNs) / 1e9, qPrintable(pos[1]));
     });
@@ -120,9 +136,11 @@ static int runRecord(const QStringList& args) {
         drain();
         if (!out->close()) writeFailed = true;
         bus->close();
-        if (exitCode == Ok && writeFailed) return failure(kVerb, QStringLiteral("cannot write %1: %2").arg(pos[1], out->errorString()));
+        if (exitCode == Ok && writeFailed)
+            return failure(kVerb, QStringLiteral("cannot write %1: %2").arg(pos[1], out->errorString()));
         if (exitCode != Ok) return failure(kVerb, why);
-        std::fprintf(stderr, "coscope-cli record: %lld frames written to %s\n", static_cast<long long>(written), qPrintable(pos[1]));
+        std::fprintf(stderr, "coscope-cli record: %lld frames written to %s\n", static_cast<long long>(written),
+                     qPrintable(pos[1]));
         return exitCode;
     };
 
@@ -132,7 +150,9 @@ static int runRecord(const QStringList& args) {
         busOff.poll();
         lost.poll();
         if (writeFailed)
-            return finish(Failure, QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out->errorString()).arg(written));
+            return finish(
+                Failure,
+                QStringLiteral("cannot write %1: %2; %3 frames kept").arg(pos[1], out->errorString()).arg(written));
         if (bus->state() == CanBus::State::Closed) {  // the input ended (replay finished)
             drain();
             break;
@@ -140,12 +160,14 @@ static int runRecord(const QStringList& args) {
         if (bus->state() == CanBus::State::Error) {
             drain();
             if (count >= 0 && written >= count) break;  // e.g. a replay that ended with its last frame
-            return finish(Failure, QStringLiteral("%1; %2 frames kept in %3").arg(bus->errorString()).arg(written).arg(pos[1]));
+            return finish(Failure,
+                          QStringLiteral("%1; %2 frames kept in %3").arg(bus->errorString()).arg(written).arg(pos[1]));
         }
     }
     return finish(Ok, {});
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("record"), QStringLiteral("Record a bus to a log file (.log, .asc, .blf, .trc, .pcapng, .csv)."), runRecord});
+COSCOPE_CLI_VERB({QStringLiteral("record"),
+                  QStringLiteral("Record a bus to a log file (.log, .asc, .blf, .trc, .pcapng, .csv)."), runRecord});
 
 }  // namespace coscope::cli

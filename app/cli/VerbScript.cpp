@@ -22,14 +22,16 @@ void printPlan(QTextStream& out, const canopen::CommandScript& script) {
         const auto& s = script.steps[static_cast<size_t>(i)];
         out << QStringLiteral("%1/%2  %3").arg(i + 1).arg(n).arg(s.toLine()) << "\n";
         out << "      " << s.describe() << "\n";
-        if (!s.why.isEmpty()) out << "      why: " << QString(s.why).replace(u'\n', QStringLiteral("\n           ")) << "\n";
+        if (!s.why.isEmpty())
+            out << "      why: " << QString(s.why).replace(u'\n', QStringLiteral("\n           ")) << "\n";
     }
 }
 
 int runCheck(const QStringList& args) {
     const QString verb = QStringLiteral("script check");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral("Check a command script (parse only, nothing is sent); prints FILE:LINE: error for each bad line."));
+    p.setApplicationDescription(QStringLiteral(
+        "Check a command script (parse only, nothing is sent); prints FILE:LINE: error for each bad line."));
     p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Command script"));
     QCommandLineOption list(QStringLiteral("list"), QStringLiteral("Also print the steps with their reasons."));
     p.addOption(list);
@@ -54,12 +56,16 @@ int runCheck(const QStringList& args) {
 int runRun(const QStringList& args) {
     const QString verb = QStringLiteral("script run");
     QCommandLineParser p;
-    p.setApplicationDescription(QStringLiteral(
-        "Run a command script on a bus, step by step; stops at the first failure and names the step. Writes are never retried."));
+    p.setApplicationDescription(
+        QStringLiteral("Run a command script on a bus, step by step; stops at the first failure and names the step. "
+                       "Writes are never retried."));
     p.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0 or sim://"));
     p.addPositionalArgument(QStringLiteral("FILE"), QStringLiteral("Command script"));
-    QCommandLineOption dry(QStringLiteral("dry-run"), QStringLiteral("Print the steps and their reasons; open nothing, send nothing."));
-    QCommandLineOption timeout(QStringLiteral("timeout"), QStringLiteral("SDO timeout per response in ms (default 1000)."), QStringLiteral("MS"), QStringLiteral("1000"));
+    QCommandLineOption dry(QStringLiteral("dry-run"),
+                           QStringLiteral("Print the steps and their reasons; open nothing, send nothing."));
+    QCommandLineOption timeout(QStringLiteral("timeout"),
+                               QStringLiteral("SDO timeout per response in ms (default 1000)."), QStringLiteral("MS"),
+                               QStringLiteral("1000"));
     p.addOptions({dry, timeout});
     int code = 0;
     if (!parseArgs(p, verb, args, &code)) return code;
@@ -67,7 +73,8 @@ int runRun(const QStringList& args) {
     if (pos.size() != 2) return usageError(verb, QStringLiteral("expects BUS FILE"));
     bool numOk = false;
     const int timeoutMs = p.value(timeout).toInt(&numOk);
-    if (!numOk || timeoutMs <= 0) return usageError(verb, QStringLiteral("--timeout '%1' must be a positive number of ms").arg(p.value(timeout)));
+    if (!numOk || timeoutMs <= 0)
+        return usageError(verb, QStringLiteral("--timeout '%1' must be a positive number of ms").arg(p.value(timeout)));
     QString error;
     if (!BusUrl::parse(pos[0], &error)) return usageError(verb, error);
     const auto script = canopen::CommandScript::load(pos[1], &error);
@@ -94,19 +101,25 @@ int runRun(const QStringList& args) {
         s.reset();
         s = std::make_unique<BusSession>();
         QString why;
-        if (!s->open(url, &why)) return opened(nullptr, nullptr, QStringLiteral("cannot reopen at %1 bit/s: %2").arg(bitRate).arg(why));
+        if (!s->open(url, &why))
+            return opened(nullptr, nullptr, QStringLiteral("cannot reopen at %1 bit/s: %2").arg(bitRate).arg(why));
         s->sdo().setDefaultTimeout(timeoutMs);
         opened(&s->context(), &s->sdo(), {});
     });
     const int total = static_cast<int>(script->steps.size());
-    QObject::connect(&runner, &canopen::ScriptRunner::stepFinished, &runner, [&](int step, bool ok, const QString& detail) {
-        out << QStringLiteral("%1/%2 %3 %4  %5").arg(step + 1).arg(total).arg(ok ? QStringLiteral("ok  ") : QStringLiteral("FAIL"),
-                                                                               script->steps[static_cast<size_t>(step)].toLine(), detail)
-            << "\n";
-        out.flush();
-    });
+    QObject::connect(&runner, &canopen::ScriptRunner::stepFinished, &runner,
+                     [&](int step, bool ok, const QString& detail) {
+                         out << QStringLiteral("%1/%2 %3 %4  %5")
+                                    .arg(step + 1)
+                                    .arg(total)
+                                    .arg(ok ? QStringLiteral("ok  ") : QStringLiteral("FAIL"),
+                                         script->steps[static_cast<size_t>(step)].toLine(), detail)
+                             << "\n";
+                         out.flush();
+                     });
     std::optional<canopen::ScriptRunResult> result;
-    if (!runner.run(*script, [&](const canopen::ScriptRunResult& r) { result = r; })) return failure(verb, QStringLiteral("could not start"));
+    if (!runner.run(*script, [&](const canopen::ScriptRunResult& r) { result = r; }))
+        return failure(verb, QStringLiteral("could not start"));
     while (!result) {
         canopen::waitUntil([&] { return result.has_value() || interrupted(); }, 200);
         if (!result && interrupted()) runner.cancel();
@@ -120,7 +133,10 @@ int runRun(const QStringList& args) {
 
 }  // namespace
 
-COSCOPE_CLI_VERB({QStringLiteral("script run"), QStringLiteral("Run a command script (saved by a wizard) on a bus; --dry-run only prints it."), runRun});
-COSCOPE_CLI_VERB({QStringLiteral("script check"), QStringLiteral("Check a command script's syntax (nothing is sent)."), runCheck});
+COSCOPE_CLI_VERB({QStringLiteral("script run"),
+                  QStringLiteral("Run a command script (saved by a wizard) on a bus; --dry-run only prints it."),
+                  runRun});
+COSCOPE_CLI_VERB({QStringLiteral("script check"), QStringLiteral("Check a command script's syntax (nothing is sent)."),
+                  runCheck});
 
 }  // namespace coscope::cli

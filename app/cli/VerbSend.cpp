@@ -20,18 +20,21 @@ constexpr int kOpenWaitMs = 8000;
 }  // namespace
 
 // --every: the frame as row 1 of the bus's transmit list, started on its periodic sender.
-static int sendPeriodically(const QString& url, const CanFrame& frame, uint32_t periodUs, uint64_t count, double seconds) {
+static int sendPeriodically(const QString& url, const CanFrame& frame, uint32_t periodUs, uint64_t count,
+                            double seconds) {
     QString error;
     BusSession session;
     if (!session.open(url, &error)) return failure(kVerb, error);
     canopen::TransmitList& list = session.master().transmit();
     const int row = list.add({frame, periodUs, {}});
     if (!list.start(row, &error, count)) return failure(kVerb, error);  // listen-only is refused here
-    const RunEnd end = waitWhileRunning(session.bus(), [&] { return list.isRunning(row); }, seconds, &error);
+    const RunEnd end = waitWhileRunning(
+        session.bus(), [&] { return list.isRunning(row); }, seconds, &error);
     const QString why = list.lastError(row);
     list.stop(row);
-    std::printf("%llu frames %s sent on %s every %s\n", static_cast<unsigned long long>(list.sentCount(row)), qPrintable(formatCansend(frame)),
-                qPrintable(session.bus()->url().toString()), qPrintable(formatPeriodUs(periodUs)));
+    std::printf("%llu frames %s sent on %s every %s\n", static_cast<unsigned long long>(list.sentCount(row)),
+                qPrintable(formatCansend(frame)), qPrintable(session.bus()->url().toString()),
+                qPrintable(formatPeriodUs(periodUs)));
     std::fflush(stdout);
     if (end == RunEnd::BusFailed) return failure(kVerb, error);
     if (!why.isEmpty()) return failure(kVerb, why);
@@ -43,13 +46,16 @@ static int runSend(const QStringList& args) {
     // the same failure through the bus error, in one line.
     QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Send one frame, or with --every one every PERIOD until --count or --duration is reached (default %1 s) or Ctrl+C. "
-        "FRAME uses cansend syntax: 123#DEADBEEF, 1F334455#11.22, 123#R, 123#R4, 123##1AABBCC (CAN FD).")
-                                         .arg(kDefaultRunSeconds));
+    parser.setApplicationDescription(
+        QStringLiteral("Send one frame, or with --every one every PERIOD until --count or --duration is reached "
+                       "(default %1 s) or Ctrl+C. "
+                       "FRAME uses cansend syntax: 123#DEADBEEF, 1F334455#11.22, 123#R, 123#R4, 123##1AABBCC (CAN FD).")
+            .arg(kDefaultRunSeconds));
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0"));
     parser.addPositionalArgument(QStringLiteral("FRAME"), QStringLiteral("ID#DATA"));
-    const QCommandLineOption everyOpt(QStringLiteral("every"), QStringLiteral("Send periodically: 100ms, 500us, 1s; a plain number is ms."), QStringLiteral("PERIOD"));
+    const QCommandLineOption everyOpt(QStringLiteral("every"),
+                                      QStringLiteral("Send periodically: 100ms, 500us, 1s; a plain number is ms."),
+                                      QStringLiteral("PERIOD"));
     parser.addOption(everyOpt);
     const PeriodicRunOptions runOpts;
     runOpts.addTo(parser);
@@ -71,13 +77,16 @@ static int runSend(const QStringList& args) {
         if (!runOpts.read(parser, &count, &seconds, &error)) return usageError(kVerb, error);
         return sendPeriodically(pos[0], *frame, *periodUs, count, seconds);
     }
-    if (parser.isSet(runOpts.count) || parser.isSet(runOpts.duration)) return usageError(kVerb, QStringLiteral("--count and --duration go with --every"));
+    if (parser.isSet(runOpts.count) || parser.isSet(runOpts.duration))
+        return usageError(kVerb, QStringLiteral("--count and --duration go with --every"));
     auto bus = createBus(*url, &error);
     if (!bus) return failure(kVerb, error);
 
     bus->open();
     if (!bus->waitForOpen(kOpenWaitMs)) {
-        const QString why = bus->errorString().isEmpty() ? QStringLiteral("cannot open %1: no answer").arg(url->toString()) : bus->errorString();
+        const QString why = bus->errorString().isEmpty()
+                                ? QStringLiteral("cannot open %1: no answer").arg(url->toString())
+                                : bus->errorString();
         bus->close();
         return failure(kVerb, why);
     }
@@ -101,6 +110,7 @@ static int runSend(const QStringList& args) {
     return Ok;
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("send"), QStringLiteral("Send one frame (cansend syntax), or one every PERIOD with --every."), runSend});
+COSCOPE_CLI_VERB({QStringLiteral("send"),
+                  QStringLiteral("Send one frame (cansend syntax), or one every PERIOD with --every."), runSend});
 
 }  // namespace coscope::cli

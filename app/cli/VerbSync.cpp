@@ -30,14 +30,23 @@ std::optional<uint32_t> parseCobId(QString text) {
 static int runSync(const QStringList& args) {
     QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*=false"));
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Produce SYNC (CiA 301 7.2.5) every PERIOD until --count or --duration is reached (default %1 s) or Ctrl+C; "
-        "prints how many SYNC frames were sent.")
+    parser.setApplicationDescription(QStringLiteral("Produce SYNC (CiA 301 7.2.5) every PERIOD until --count or "
+                                                    "--duration is reached (default %1 s) or Ctrl+C; "
+                                                    "prints how many SYNC frames were sent.")
                                          .arg(kDefaultRunSeconds));
     parser.addPositionalArgument(QStringLiteral("BUS"), QStringLiteral("Bus URL, e.g. socketcan://can0, sim://"));
-    const QCommandLineOption periodOpt(QStringLiteral("period"), QStringLiteral("Communication cycle period (1006h): 10ms, 500us, 1s; a plain number is ms."), QStringLiteral("PERIOD"));
-    const QCommandLineOption counterOpt(QStringLiteral("counter"), QStringLiteral("Synchronous counter overflow value (1019h): 2..240 adds a counter byte 1..N; 0 = none (default)."), QStringLiteral("N"));
-    const QCommandLineOption cobOpt(QStringLiteral("cob-id"), QStringLiteral("COB-ID of SYNC (1005h, default 80h); bit 29 set = 29-bit identifier."), QStringLiteral("ID"));
+    const QCommandLineOption periodOpt(
+        QStringLiteral("period"),
+        QStringLiteral("Communication cycle period (1006h): 10ms, 500us, 1s; a plain number is ms."),
+        QStringLiteral("PERIOD"));
+    const QCommandLineOption counterOpt(
+        QStringLiteral("counter"),
+        QStringLiteral(
+            "Synchronous counter overflow value (1019h): 2..240 adds a counter byte 1..N; 0 = none (default)."),
+        QStringLiteral("N"));
+    const QCommandLineOption cobOpt(
+        QStringLiteral("cob-id"),
+        QStringLiteral("COB-ID of SYNC (1005h, default 80h); bit 29 set = 29-bit identifier."), QStringLiteral("ID"));
     parser.addOption(periodOpt);
     parser.addOption(counterOpt);
     parser.addOption(cobOpt);
@@ -64,26 +73,34 @@ static int runSync(const QStringList& args) {
         bool ok = false;
         const uint n = parser.value(counterOpt).toUInt(&ok);
         if (!ok || n > 255 || !sync.setCounterOverflow(static_cast<uint8_t>(n)))
-            return usageError(kVerb, QStringLiteral("--counter must be 0 or 2..240 (1019h), not '%1'").arg(parser.value(counterOpt)));
+            return usageError(
+                kVerb, QStringLiteral("--counter must be 0 or 2..240 (1019h), not '%1'").arg(parser.value(counterOpt)));
     }
     if (parser.isSet(cobOpt)) {
         const auto cob = parseCobId(parser.value(cobOpt));
         if (!cob || !sync.setCobId(*cob))
-            return usageError(kVerb, QStringLiteral("--cob-id must be an 11-bit CAN-ID (e.g. 80h) or a 1005h value with bit 29 for 29 bits, not '%1'").arg(parser.value(cobOpt)));
+            return usageError(
+                kVerb,
+                QStringLiteral(
+                    "--cob-id must be an 11-bit CAN-ID (e.g. 80h) or a 1005h value with bit 29 for 29 bits, not '%1'")
+                    .arg(parser.value(cobOpt)));
     }
     if (!sync.start(&error, count)) return failure(kVerb, error);  // listen-only is refused here
 
     // A count limit ends the job on the sender thread; otherwise the duration or Ctrl+C does.
-    const RunEnd end = waitWhileRunning(session.bus(), [&] { return sync.isRunning(); }, seconds, &error);
+    const RunEnd end = waitWhileRunning(
+        session.bus(), [&] { return sync.isRunning(); }, seconds, &error);
     const QString why = sync.lastError();
     sync.stop();
-    std::printf("%llu SYNC frames sent on %s every %s\n", static_cast<unsigned long long>(sync.sent()), qPrintable(session.bus()->url().toString()), qPrintable(formatPeriodUs(*periodUs)));
+    std::printf("%llu SYNC frames sent on %s every %s\n", static_cast<unsigned long long>(sync.sent()),
+                qPrintable(session.bus()->url().toString()), qPrintable(formatPeriodUs(*periodUs)));
     std::fflush(stdout);
     if (end == RunEnd::BusFailed) return failure(kVerb, error);
     if (!why.isEmpty()) return failure(kVerb, why);
     return Ok;
 }
 
-COSCOPE_CLI_VERB({QStringLiteral("sync"), QStringLiteral("Produce SYNC every period (--period 10ms) until --count/--duration."), runSync});
+COSCOPE_CLI_VERB({QStringLiteral("sync"),
+                  QStringLiteral("Produce SYNC every period (--period 10ms) until --count/--duration."), runSync});
 
 }  // namespace coscope::cli

@@ -17,7 +17,9 @@ bool WatchdogOptions::read(const QCommandLineParser& parser, uint8_t driveNode, 
         return false;
     }
     if (*n == driveNode) {
-        *error = QStringLiteral("--heartbeat-node %1 is the drive's own node-ID; CoScope's heartbeat needs a node-ID of its own").arg(*n);
+        *error = QStringLiteral(
+                     "--heartbeat-node %1 is the drive's own node-ID; CoScope's heartbeat needs a node-ID of its own")
+                     .arg(*n);
         return false;
     }
     heartbeatNode = *n;
@@ -61,10 +63,11 @@ bool WatchdogRun::start(const WatchdogOptions& options, QString* error) {
     if (!hb.start(error)) return false;
     running_ = true;
     canopen::waitUntil([&hb] { return hb.sent() > 0; }, 1000);
-    out_ << "heartbeat: node " << options.heartbeatNode << " every " << options.periodMs << " ms (COB-ID 0x" << QString::number(0x700 + options.heartbeatNode, 16).toUpper()
-         << ")\n";
+    out_ << "heartbeat: node " << options.heartbeatNode << " every " << options.periodMs << " ms (COB-ID 0x"
+         << QString::number(0x700 + options.heartbeatNode, 16).toUpper() << ")\n";
     guard_->setAbortOption(options.abortOption);
-    auto r = canopen::waitForResult<canopen::HeartbeatGuardResult>([this, &hb](auto cb) { guard_->arm(hb, cb); }, 30000);
+    auto r =
+        canopen::waitForResult<canopen::HeartbeatGuardResult>([this, &hb](auto cb) { guard_->arm(hb, cb); }, 30000);
     if (!r || !r->ok) {
         *error = r ? r->error : QStringLiteral("arming the heartbeat guard gave no answer");
         finish();

@@ -18,17 +18,21 @@ namespace coscope::cli {
 // dies or the cable is pulled the drive stops by itself. The old 1016h/6007h are put back at
 // the end, before the heartbeat stops.
 struct WatchdogOptions {
-    QCommandLineOption watchdog{QStringLiteral("watchdog"),
-                                QStringLiteral("While this runs, send CoScope's heartbeat and have the drive watch it (1016h, 3 x the period) "
-                                               "with 6007h = --watchdog-reaction: if coscope-cli dies or the cable is pulled, the drive stops "
-                                               "by itself. The old 1016h/6007h values are put back at the end.")};
-    QCommandLineOption node{QStringLiteral("heartbeat-node"), QStringLiteral("CoScope's heartbeat node-ID, 1-127 (default 127)."), QStringLiteral("N"),
+    QCommandLineOption watchdog{
+        QStringLiteral("watchdog"),
+        QStringLiteral("While this runs, send CoScope's heartbeat and have the drive watch it (1016h, 3 x the period) "
+                       "with 6007h = --watchdog-reaction: if coscope-cli dies or the cable is pulled, the drive stops "
+                       "by itself. The old 1016h/6007h values are put back at the end.")};
+    QCommandLineOption node{QStringLiteral("heartbeat-node"),
+                            QStringLiteral("CoScope's heartbeat node-ID, 1-127 (default 127)."), QStringLiteral("N"),
                             QStringLiteral("127")};
-    QCommandLineOption period{QStringLiteral("heartbeat-ms"), QStringLiteral("CoScope's heartbeat period in ms (default 100; the drive waits 3 x)."),
+    QCommandLineOption period{QStringLiteral("heartbeat-ms"),
+                              QStringLiteral("CoScope's heartbeat period in ms (default 100; the drive waits 3 x)."),
                               QStringLiteral("MS"), QStringLiteral("100")};
-    QCommandLineOption reaction{QStringLiteral("watchdog-reaction"),
-                                QStringLiteral("6007h when the heartbeat stops: quick-stop (default), disable-voltage, fault or none."),
-                                QStringLiteral("R"), QStringLiteral("quick-stop")};
+    QCommandLineOption reaction{
+        QStringLiteral("watchdog-reaction"),
+        QStringLiteral("6007h when the heartbeat stops: quick-stop (default), disable-voltage, fault or none."),
+        QStringLiteral("R"), QStringLiteral("quick-stop")};
     void addTo(QCommandLineParser& parser) const;
 
     // Read by read():

@@ -20,7 +20,8 @@ namespace {
 void printHelp() {
     QTextStream out(stdout);
     out << "Usage: coscope-cli [--log-level LEVEL] VERB [ARGS...]\n\n"
-           "CoScope " COSCOPE_VERSION " - CANopen bus analyzer and servo-drive commissioning tool.\n\n"
+           "CoScope " COSCOPE_VERSION
+           " - CANopen bus analyzer and servo-drive commissioning tool.\n\n"
            "Verbs:\n";
     auto sorted = cli::verbs();
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
@@ -35,7 +36,8 @@ void printHelp() {
            "Exit status: 0 success, 1 failure (one line on stderr), 2 usage error.\n";
     out << "\nLog formats (detected from the content; r = read, w = write):\n";
     for (const auto& f : logio::LogFormats::all())
-        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  " << f.description << "\n";
+        out << "  " << f.name.leftJustified(10) << (f.canRead ? "r" : "-") << (f.canWrite ? "w" : "-") << "  "
+            << f.description << "\n";
 }
 
 }  // namespace
@@ -64,10 +66,14 @@ int main(int argc, char** argv) {
             return cli::Ok;
         }
         if (a == u"--log-level" || a.startsWith(QStringLiteral("--log-level="))) {
-            const QString value = a.contains(u'=') ? a.section(u'=', 1) : (args.isEmpty() ? QString() : args.takeFirst());
+            const QString value =
+                a.contains(u'=') ? a.section(u'=', 1) : (args.isEmpty() ? QString() : args.takeFirst());
             auto parsed = logging::parseLevel(value);
             if (!parsed) {
-                std::fprintf(stderr, "coscope-cli: invalid --log-level '%s'; use trace, debug, info, warn, error, critical or off\n", qPrintable(value));
+                std::fprintf(
+                    stderr,
+                    "coscope-cli: invalid --log-level '%s'; use trace, debug, info, warn, error, critical or off\n",
+                    qPrintable(value));
                 return cli::Usage;
             }
             level = *parsed;
@@ -98,7 +104,8 @@ int main(int argc, char** argv) {
         QStringList names;
         for (const auto& v : cli::verbs()) names << v.name;
         names.sort();
-        std::fprintf(stderr, "coscope-cli: unknown verb '%s'; verbs: %s\n", qPrintable(args.front()), qPrintable(names.join(QStringLiteral(", "))));
+        std::fprintf(stderr, "coscope-cli: unknown verb '%s'; verbs: %s\n", qPrintable(args.front()),
+                     qPrintable(names.join(QStringLiteral(", "))));
         return cli::Usage;
     }
     QStringList verbArgs = args.mid(words);

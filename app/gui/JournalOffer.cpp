@@ -14,7 +14,9 @@ journals::CleanupPolicy journalCleanupPolicy() {
     QSettings s;
     journals::CleanupPolicy p;
     p.maxAgeDays = std::max(1, s.value(QStringLiteral("captures/keepDays"), p.maxAgeDays).toInt());
-    p.maxTotalBytes = std::max<qint64>(1, s.value(QStringLiteral("captures/keepMegabytes"), p.maxTotalBytes >> 20).toLongLong()) << 20;
+    p.maxTotalBytes =
+        std::max<qint64>(1, s.value(QStringLiteral("captures/keepMegabytes"), p.maxTotalBytes >> 20).toLongLong())
+        << 20;
     return p;
 }
 
@@ -73,9 +75,11 @@ void JournalOfferBar::retranslate() {
     dismiss_->setText(tr("Dismiss"));
     if (path_.isEmpty()) return;
     const QFileInfo fi(path_);
-    text_->setText(tr("A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). "
-                      "Its journal %1 (%2, last written %3) holds everything received up to about a second before.")
-                       .arg(fi.fileName(), QLocale().formattedDataSize(fi.size()), QLocale().toString(fi.lastModified(), QLocale::ShortFormat)));
+    text_->setText(
+        tr("A capture was not closed: CoScope ended without closing it (killed, crashed or the power went out). "
+           "Its journal %1 (%2, last written %3) holds everything received up to about a second before.")
+            .arg(fi.fileName(), QLocale().formattedDataSize(fi.size()),
+                 QLocale().toString(fi.lastModified(), QLocale::ShortFormat)));
     text_->setToolTip(path_);
 }
 

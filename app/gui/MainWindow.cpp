@@ -9,16 +9,14 @@
 
 #include "app/gui/connect/ConnectDialog.h"
 #include "app/gui/connect/RecentConnections.h"
+#include "app/gui/console/ConsoleDock.h"
+#include "app/gui/events/EventsDock.h"
 #include "app/gui/files/LastFolders.h"
 #include "app/gui/files/OpenFailure.h"
 #include "app/gui/files/RecentFiles.h"
+#include "app/gui/health/HealthDock.h"
 #include "app/gui/help/HelpMenu.h"
 #include "app/gui/help/HelpWindow.h"
-#include "app/gui/project/ProjectActions.h"
-#include "app/gui/project/ProjectSession.h"
-#include "app/gui/console/ConsoleDock.h"
-#include "app/gui/events/EventsDock.h"
-#include "app/gui/health/HealthDock.h"
 #include "app/gui/master/MasterActions.h"
 #include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
@@ -27,6 +25,8 @@
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PdoDbcExport.h"
 #include "app/gui/plot/PlotDock.h"
+#include "app/gui/project/ProjectActions.h"
+#include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/status/BusStatusBar.h"
 #include "app/gui/trace/LogSaveJob.h"
@@ -81,15 +81,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     workspace_ = new Workspace(this);
     journalCleaner_ = new JournalCleaner(this);
     connect(journalCleaner_, &JournalCleaner::cleaned, this, [this](const QStringList& removed, bool report) {
-        if (report && !removed.isEmpty()) showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
+        if (report && !removed.isEmpty())
+            showMessage(tr("Removed %n old capture journal(s)", nullptr, int(removed.size())));
     });
     createDocks();
     status_ = new BusStatusBar(statusBar(), workspace_);
-    projectActions_ = new ProjectActions(workspace_, this, [this](const QString& url) { return connectBus(url, true); });
+    projectActions_ =
+        new ProjectActions(workspace_, this, [this](const QString& url) { return connectBus(url, true); });
     connect(projectActions_, &ProjectActions::message, this, &MainWindow::showMessage);
     ProjectSession* project = projectActions_->session();
-    project->bindPlots({[this] { return plot_->layoutJson(); }, [this](const QJsonObject& o) { plot_->setLayoutJson(o); }});
-    project->bindTraceFilters({[this] { return trace_->filtersJson(); }, [this](const QJsonObject& o) { trace_->setFiltersJson(o); }});
+    project->bindPlots(
+        {[this] { return plot_->layoutJson(); }, [this](const QJsonObject& o) { plot_->setLayoutJson(o); }});
+    project->bindTraceFilters(
+        {[this] { return trace_->filtersJson(); }, [this](const QJsonObject& o) { trace_->setFiltersJson(o); }});
     connect(project, &ProjectSession::settingsRestored, transmit_->model(), &TransmitModel::reloadSaved);
     buildMenus();
     restoreLayout();
@@ -127,7 +131,8 @@ void MainWindow::createDocks() {
     // Its ProcessData sends through the bus's master services: let go of them before they go.
     processData_->setMaster(workspace_->busMaster());
     connect(workspace_, &Workspace::aboutToDisconnect, processData_, [this] { processData_->setMaster(nullptr); });
-    connect(workspace_, &Workspace::sourceChanged, processData_, [this] { processData_->setMaster(workspace_->busMaster()); });
+    connect(workspace_, &Workspace::sourceChanged, processData_,
+            [this] { processData_->setMaster(workspace_->busMaster()); });
     // No central widget: every part is a dock the user can arrange.
     addDockWidget(Qt::LeftDockWidgetArea, trace_);
     addDockWidget(Qt::RightDockWidgetArea, nodes_);
@@ -178,13 +183,16 @@ void MainWindow::buildMenus() {
         const QString path = files::askOpenFile(this, files::kLogs, tr("Open CAN log"), readFilters());
         if (!path.isEmpty()) openLog(path);
     });
-    new RecentFilesMenu(file, tr("Recent &logs"), QLatin1String(RecentFilesMenu::kLogs), [this](const QString& path) { openLog(path); });
-    file->addAction(st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save trace as…"), QKeySequence::Save, this, [this] {
-        const QString path = files::askSaveFile(this, files::kLogs, tr("Save trace"), {}, readFilters(true));
-        if (!path.isEmpty()) saveLog(path);
-    });
+    new RecentFilesMenu(file, tr("Recent &logs"), QLatin1String(RecentFilesMenu::kLogs),
+                        [this](const QString& path) { openLog(path); });
+    file->addAction(
+        st->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save trace as…"), QKeySequence::Save, this, [this] {
+            const QString path = files::askSaveFile(this, files::kLogs, tr("Save trace"), {}, readFilters(true));
+            if (!path.isEmpty()) saveLog(path);
+        });
     file->addAction(tr("&Export filtered rows…"), this, [this] {
-        const QString path = files::askSaveFile(this, files::kExports, tr("Export filtered rows"), {}, readFilters(true));
+        const QString path =
+            files::askSaveFile(this, files::kExports, tr("Export filtered rows"), {}, readFilters(true));
         if (!path.isEmpty()) saveLog(path, {}, true);
     });
     file->addAction(tr("Export PDO layout as &DBC…"), this, [this] {
@@ -201,14 +209,17 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Quit"), QKeySequence(Qt::CTRL | Qt::Key_Q), this, &QWidget::close);
 
     QMenu* bus = menuBar()->addMenu(tr("&Bus"));
-    QAction* connectAction = bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"), QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
-        ConnectDialog dialog(this);
-        if (dialog.exec() == QDialog::Accepted) connectBus(dialog.url(), true);
-    });
+    QAction* connectAction = bus->addAction(st->standardIcon(QStyle::SP_DriveNetIcon), tr("&Connect…"),
+                                            QKeySequence(Qt::CTRL | Qt::Key_K), this, [this] {
+                                                ConnectDialog dialog(this);
+                                                if (dialog.exec() == QDialog::Accepted) connectBus(dialog.url(), true);
+                                            });
     connectAction->setIconText(tr("Connect"));
-    bus->addAction(tr("Connect to &virtual drives (sim://)"), this, [this] { connectBus(QStringLiteral("sim://"), true); });
+    bus->addAction(tr("Connect to &virtual drives (sim://)"), this,
+                   [this] { connectBus(QStringLiteral("sim://"), true); });
     recentMenu_ = bus->addMenu(tr("&Recent connections"));
-    QAction* disconnectAction = bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    QAction* disconnectAction =
+        bus->addAction(st->standardIcon(QStyle::SP_BrowserStop), tr("&Disconnect"), this, &MainWindow::disconnectBus);
     disconnectAction_ = disconnectAction;
     disconnectAction->setEnabled(workspace_->bus() != nullptr);
     bus->addSeparator();
@@ -250,10 +261,11 @@ void MainWindow::buildMenus() {
     updateCommissionMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget* d : {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
-                           static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(health_),
-                           static_cast<QDockWidget*>(console_), static_cast<QDockWidget*>(transmit_),
-                           static_cast<QDockWidget*>(processData_)})
+    for (QDockWidget* d :
+         {static_cast<QDockWidget*>(trace_), static_cast<QDockWidget*>(nodes_), static_cast<QDockWidget*>(od_),
+          static_cast<QDockWidget*>(plot_), static_cast<QDockWidget*>(events_), static_cast<QDockWidget*>(health_),
+          static_cast<QDockWidget*>(console_), static_cast<QDockWidget*>(transmit_),
+          static_cast<QDockWidget*>(processData_)})
         view->addAction(d->toggleViewAction());
     view->addSeparator();
     addLanguageMenu(view);
@@ -329,7 +341,8 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSaveCapture([this] { close(); }) || !projectActions_->maybeSave() || !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
+    if (!maybeSaveCapture([this] { close(); }) || !projectActions_->maybeSave() ||
+        !EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Quit, quiet_)) {
         event->ignore();
         return;
     }
@@ -354,7 +367,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
 
 bool MainWindow::connectBus(const QString& url, bool scanWhenOpen) {
     if (!maybeSaveCapture([this, url, scanWhenOpen] { connectBus(url, scanWhenOpen); })) return false;
-    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Connect, quiet_)) return false;
+    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::Connect, quiet_))
+        return false;
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         showError(tr("Cannot connect to %1: %2").arg(url, error));
@@ -375,7 +389,8 @@ void MainWindow::disconnectBus() {
 
 bool MainWindow::openLog(const QString& path) {
     if (!maybeSaveCapture([this, path] { openLog(path); })) return false;
-    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::OpenLog, quiet_)) return false;
+    if (!EnabledDrivesQuestion::confirm(this, workspace_, EnabledDrivesQuestion::Closing::OpenLog, quiet_))
+        return false;
     QString error;
     if (!workspace_->openLog(path, &error)) {
         showError(error.section(u'\n', 0, 0));
@@ -401,7 +416,8 @@ bool MainWindow::saveLog(const QString& path, const QString& format, bool filter
     if (filteredOnly) frames = trace_->model()->shownFrames();
     savingFull_ = !filteredOnly;
     savingSize_ = workspace_->store() ? workspace_->store()->size() : 0;
-    saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames), workspace_->busNames(), workspace_->decoder());
+    saveJob_ = std::make_unique<LogSaveJob>(path, format, workspace_->store(), std::move(frames),
+                                            workspace_->busNames(), workspace_->decoder());
     saveJob_->start();
     return true;
 }
@@ -443,8 +459,8 @@ void MainWindow::onSourceChanged() {
 void MainWindow::updateCommissionMenu() {
     const CanBus* bus = workspace_->bus();
     const QString why = !bus || bus->state() != CanBus::State::Open ? tr("Connect to a bus first")
-                        : bus->isListenOnly()                        ? tr("Listen-only bus: commissioning would transmit")
-                                                                     : QString();
+                        : bus->isListenOnly() ? tr("Listen-only bus: commissioning would transmit")
+                                              : QString();
     if (why == commissionWhy_) return;
     commissionWhy_ = why;
     for (QAction* a : commission_->actions()) {
@@ -515,16 +531,20 @@ void MainWindow::refresh() {
             reportLoad(*load);
             if (load->hasError()) {
                 showError(load->errorString());
-                if (!quiet_) showReadFailed(this, load->path(), load->errorString(), workspace_->store() ? workspace_->store()->size() : 0);
-            }
-            else if (load->diagnosticCount())
+                if (!quiet_)
+                    showReadFailed(this, load->path(), load->errorString(),
+                                   workspace_->store() ? workspace_->store()->size() : 0);
+            } else if (load->diagnosticCount())
                 showError(tr("%1: %L2 frames, %L3 lines not understood — first: %4")
                               .arg(workspace_->sourceName())
                               .arg(workspace_->store()->size())
                               .arg(load->diagnosticCount())
                               .arg(load->diagnostics(1).value(0)));
             else
-                showMessage(tr("%1: %L2 frames (%3)").arg(workspace_->sourceName()).arg(workspace_->store()->size()).arg(load->formatName()));
+                showMessage(tr("%1: %L2 frames (%3)")
+                                .arg(workspace_->sourceName())
+                                .arg(workspace_->store()->size())
+                                .arg(load->formatName()));
         }
     }
     if (saveJob_) {
@@ -575,9 +595,16 @@ void MainWindow::reportLoad(const LogLoadJob& load) {
     if (skipped == 0 && frames > 0) return;
     QStringList lines;
     if (load.linesRead() > 0)
-        lines << tr("%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.").arg(file, load.formatName()).arg(load.linesRead()).arg(frames).arg(skipped);
+        lines << tr("%1 read as %2: %L3 lines, %L4 frames, %L5 lines skipped.")
+                     .arg(file, load.formatName())
+                     .arg(load.linesRead())
+                     .arg(frames)
+                     .arg(skipped);
     else
-        lines << tr("%1 read as %2: %L3 frames, %L4 records skipped.").arg(file, load.formatName()).arg(frames).arg(skipped);
+        lines << tr("%1 read as %2: %L3 frames, %L4 records skipped.")
+                     .arg(file, load.formatName())
+                     .arg(frames)
+                     .arg(skipped);
     if (frames == 0) lines << tr("No frames were found in this file.");
     const auto problems = load.firstProblems(5);
     for (const auto& d : problems) lines << tr("line %1: %2").arg(d.where).arg(d.message);

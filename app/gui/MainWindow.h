@@ -136,16 +136,16 @@ private:
     TransmitDock* transmit_ = nullptr;
     ProcessDataDock* processData_ = nullptr;
     ProjectActions* projectActions_ = nullptr;  // File ▸ projects, the Project menu (app/gui/project)
-    MasterActions* masterActions_ = nullptr;  // Bus ▸ SYNC producer, Master settings…
+    MasterActions* masterActions_ = nullptr;    // Bus ▸ SYNC producer, Master settings…
     QAction* disconnectAction_ = nullptr;
     BusStatusBar* status_ = nullptr;
     JournalOfferBar* journalOffer_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QToolBar* busBar_ = nullptr;
     QMenu* commission_ = nullptr;
-    QAction* commissionNote_ = nullptr;  // the section that says why the items are disabled
+    QAction* commissionNote_ = nullptr;            // the section that says why the items are disabled
     QString commissionWhy_ = QStringLiteral("-");  // the reason in force ("" = enabled)
-    bool scanWhenOpen_ = false;  // scan once the bus just connected can transmit
+    bool scanWhenOpen_ = false;                    // scan once the bus just connected can transmit
     QTimer* timer_ = nullptr;
     std::unique_ptr<LogSaveJob> saveJob_;
     std::unique_ptr<PdoDbcJob> dbcJob_;  // File ▸ Export PDO layout as DBC

@@ -9,9 +9,9 @@
 #include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/health/HealthDock.h"
+#include "app/gui/language/Language.h"
 #include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
-#include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/plot/PlotDock.h"
@@ -32,8 +32,8 @@ namespace {
 // holds the user's work, so the language waits until it is closed.
 bool otherWindowOpen(const QWidget* main) {
     for (QWidget* w : QApplication::topLevelWidgets())
-        if (w != main && w->isVisible() && !qobject_cast<QMenu*>(w) && w->isWindow() && w->windowType() != Qt::ToolTip &&
-            w->windowType() != Qt::Popup)
+        if (w != main && w->isVisible() && !qobject_cast<QMenu*>(w) && w->isWindow() &&
+            w->windowType() != Qt::ToolTip && w->windowType() != Qt::Popup)
             return true;
     return false;
 }
@@ -78,7 +78,8 @@ void MainWindow::rebuildInLanguage() {
     const int node = od_->node() > 0 ? od_->node() : nodes_->selectedNode();
     // Menus first: they hold the docks' actions (View, Bus ▸ Scan).
     setMenuBar(new QMenuBar(this));
-    for (QDockWidget* d : std::initializer_list<QDockWidget*>{trace_, nodes_, od_, plot_, events_, health_, console_, transmit_, processData_}) {
+    for (QDockWidget* d : std::initializer_list<QDockWidget*>{trace_, nodes_, od_, plot_, events_, health_, console_,
+                                                              transmit_, processData_}) {
         removeDockWidget(d);
         delete d;
     }

@@ -20,9 +20,9 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QPointer>
-#include <QElapsedTimer>
 #include <QTableView>
 #include <QTimer>
 
@@ -67,7 +67,8 @@ bool viewHasContent(MainWindow* w, const QString& view) {
     if (view == u"plot") return w->plotDock()->hasContent();
     if (view == u"help") return help::HelpWindow::of(w) && help::HelpWindow::of(w)->isVisible();
     if (view == u"program-download") return programDownloadMidway(w);
-    if (view == u"project-compare") return w->projectActions()->compareDialog() && w->projectActions()->compareDialog()->hasResult();
+    if (view == u"project-compare")
+        return w->projectActions()->compareDialog() && w->projectActions()->compareDialog()->hasResult();
     if (view.startsWith(QLatin1String("wizard-"))) {
         // Opened by showStartView once nodes are known; ready when the wizard says so (property
         // "screenshotReady").
@@ -102,7 +103,9 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
                 const TraceModel* m = window->traceDock()->model();
                 int pick = std::max(0, rows - 8);
                 for (int r = rows - 4; r >= 0 && r > rows - 200; --r)
-                    if (m->data(m->index(r, TraceModel::Service), Qt::DisplayRole).toString().startsWith(QLatin1String("TPDO"))) {
+                    if (m->data(m->index(r, TraceModel::Service), Qt::DisplayRole)
+                            .toString()
+                            .startsWith(QLatin1String("TPDO"))) {
                         pick = r;
                         break;
                     }
@@ -112,13 +115,15 @@ void takeScreenshotWhenReady(MainWindow* window, const QString& file, const QStr
         }
         QApplication::processEvents();
         QWidget* shown = view.startsWith(QLatin1String("wizard-")) && window->openedWizard() ? window->openedWizard()
-                         : view == u"help" && help::HelpWindow::of(window)                  ? help::HelpWindow::of(window)
-                                                                                            : static_cast<QWidget*>(window);
+                         : view == u"help" && help::HelpWindow::of(window) ? help::HelpWindow::of(window)
+                                                                           : static_cast<QWidget*>(window);
         if (midway)
             if (auto* d = window->nodesDock()->findChild<ProgramDownloadDialog*>()) shown = d;
-        if (view == u"project-compare" && window->projectActions()->compareDialog()) shown = window->projectActions()->compareDialog();
+        if (view == u"project-compare" && window->projectActions()->compareDialog())
+            shown = window->projectActions()->compareDialog();
         const bool ok = shown->grab().save(file, "PNG");
-        std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n", qPrintable(file));
+        std::fprintf(ok ? stdout : stderr, ok ? "screenshot written to %s\n" : "coscope: cannot write screenshot %s\n",
+                     qPrintable(file));
         QApplication::exit(ok ? 0 : 1);
     });
     timer->start();

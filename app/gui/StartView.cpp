@@ -32,7 +32,8 @@ void showStartView(MainWindow* window, const QString& view) {
     timer->setInterval(100);
     QObject::connect(timer, &QTimer::timeout, window, [=] {
         // Live: wait until nodes were seen and some traffic identified them.
-        const bool nodesKnown = window->nodesDock()->model()->rowCount() > 0 && window->traceDock()->model()->rowCount() >= 50;
+        const bool nodesKnown =
+            window->nodesDock()->model()->rowCount() > 0 && window->traceDock()->model()->rowCount() >= 50;
         if (window->workspace()->isLive() && !nodesKnown && clock->elapsed() < kWaitForNodesMs) return;
         timer->stop();
         timer->deleteLater();

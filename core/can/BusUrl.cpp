@@ -9,13 +9,15 @@ namespace coscope {
 namespace {
 // Plugins Qt ships on some platform; listed so an URL naming one gives a clear "not installed here"
 // instead of "unknown scheme".
-const QStringList kQtPluginNames = {QStringLiteral("socketcan"), QStringLiteral("virtualcan"), QStringLiteral("peakcan"),
-                                    QStringLiteral("passthrucan"), QStringLiteral("tinycan"), QStringLiteral("systeccan"),
+const QStringList kQtPluginNames = {QStringLiteral("socketcan"), QStringLiteral("virtualcan"),
+                                    QStringLiteral("peakcan"),   QStringLiteral("passthrucan"),
+                                    QStringLiteral("tinycan"),   QStringLiteral("systeccan"),
                                     QStringLiteral("vectorcan")};
 const QStringList kOwnSchemes = {QStringLiteral("socketcand"), QStringLiteral("sim"), QStringLiteral("replay")};
-const QStringList kKnownOptions = {QStringLiteral("bitrate"), QStringLiteral("data-bitrate"), QStringLiteral("fd"),
-                                   QStringLiteral("listen-only"), QStringLiteral("speed"), QStringLiteral("loop"),
-                                   QStringLiteral("nodes"), QStringLiteral("serials"), QStringLiteral("bus"), QStringLiteral("demo")};
+const QStringList kKnownOptions = {
+    QStringLiteral("bitrate"), QStringLiteral("data-bitrate"), QStringLiteral("fd"),    QStringLiteral("listen-only"),
+    QStringLiteral("speed"),   QStringLiteral("loop"),         QStringLiteral("nodes"), QStringLiteral("serials"),
+    QStringLiteral("bus"),     QStringLiteral("demo")};
 
 bool parseBool(const QString& v, bool fallback) {
     const QString s = v.trimmed().toLower();
@@ -69,7 +71,8 @@ std::optional<BusUrl> BusUrl::parse(const QString& text, QString* error) {
     const QString t = text.trimmed();
     const qsizetype sep = t.indexOf(QStringLiteral("://"));
     if (sep <= 0)
-        return fail(QStringLiteral("invalid bus URL '%1': expected SCHEME://TARGET, e.g. socketcan://can0 or sim://").arg(text));
+        return fail(QStringLiteral("invalid bus URL '%1': expected SCHEME://TARGET, e.g. socketcan://can0 or sim://")
+                        .arg(text));
     BusUrl url;
     url.scheme = t.left(sep).toLower();
     const QStringList known = knownBusSchemes();
@@ -89,26 +92,33 @@ std::optional<BusUrl> BusUrl::parse(const QString& text, QString* error) {
         const QString key = (eq < 0 ? pair : pair.left(eq)).toLower();
         const QString value = eq < 0 ? QString() : QUrl::fromPercentEncoding(pair.mid(eq + 1).toUtf8());
         if (!kKnownOptions.contains(key))
-            return fail(QStringLiteral("unknown option '%1' in '%2'; known: %3").arg(key, text, kKnownOptions.join(QStringLiteral(", "))));
+            return fail(QStringLiteral("unknown option '%1' in '%2'; known: %3")
+                            .arg(key, text, kKnownOptions.join(QStringLiteral(", "))));
         url.options.insert(key, value.isNull() ? QStringLiteral("1") : value);
     }
     for (const QString& key : {QStringLiteral("bitrate"), QStringLiteral("data-bitrate")}) {
         if (!url.options.contains(key)) continue;
         bool ok = false;
         const int v = url.options.value(key).toInt(&ok);
-        if (!ok || v <= 0) return fail(QStringLiteral("option %1 must be a positive number of bit/s, not '%2'").arg(key, url.options.value(key)));
+        if (!ok || v <= 0)
+            return fail(QStringLiteral("option %1 must be a positive number of bit/s, not '%2'")
+                            .arg(key, url.options.value(key)));
     }
     if (url.options.contains(QStringLiteral("speed"))) {
         bool ok = false;
         const double v = url.options.value(QStringLiteral("speed")).toDouble(&ok);
-        if (!ok || v < 0) return fail(QStringLiteral("option speed must be a number >= 0 (0 = as fast as possible), not '%1'").arg(url.options.value(QStringLiteral("speed"))));
+        if (!ok || v < 0)
+            return fail(QStringLiteral("option speed must be a number >= 0 (0 = as fast as possible), not '%1'")
+                            .arg(url.options.value(QStringLiteral("speed"))));
     }
 
     if (url.scheme == u"socketcand") {
         // socketcand://HOST:PORT/CHANNEL (port optional, default 29536)
         const qsizetype slash = url.target.indexOf(u'/');
         if (slash < 0 || slash == url.target.size() - 1)
-            return fail(QStringLiteral("socketcand URL needs a channel: socketcand://HOST:PORT/CHANNEL, e.g. socketcand://127.0.0.1:29536/can0"));
+            return fail(
+                QStringLiteral("socketcand URL needs a channel: socketcand://HOST:PORT/CHANNEL, e.g. "
+                               "socketcand://127.0.0.1:29536/can0"));
         QString hostPort = url.target.left(slash);
         url.channel = url.target.mid(slash + 1);
         url.port = kSocketcandDefaultPort;
@@ -125,13 +135,15 @@ std::optional<BusUrl> BusUrl::parse(const QString& text, QString* error) {
         if (colon >= 0) {
             bool ok = false;
             const uint p = hostPort.mid(colon + 1).toUInt(&ok);
-            if (!ok || p == 0 || p > 65535) return fail(QStringLiteral("socketcand port '%1' is not a port number").arg(hostPort.mid(colon + 1)));
+            if (!ok || p == 0 || p > 65535)
+                return fail(QStringLiteral("socketcand port '%1' is not a port number").arg(hostPort.mid(colon + 1)));
             url.port = static_cast<quint16>(p);
             if (url.host.isEmpty()) url.host = hostPort.left(colon);
         } else if (url.host.isEmpty()) {
             url.host = hostPort;
         }
-        if (url.host.isEmpty()) return fail(QStringLiteral("socketcand URL needs a host: socketcand://HOST:PORT/CHANNEL"));
+        if (url.host.isEmpty())
+            return fail(QStringLiteral("socketcand URL needs a host: socketcand://HOST:PORT/CHANNEL"));
     } else if (url.scheme == u"replay") {
         if (url.target.isEmpty()) return fail(QStringLiteral("replay URL needs a file: replay://PATH?speed=1.0"));
     } else if (url.scheme == u"sim") {

@@ -16,8 +16,8 @@ namespace coscope {
 //   replay://PATH?speed=1.0&loop=1     plays a log file with its original timing
 // Options are query parameters: bitrate, data-bitrate, fd, listen-only, speed, loop, nodes.
 struct BusUrl {
-    QString scheme;    // lower case
-    QString target;    // text between "scheme://" and "?" (device, host:port/channel or path)
+    QString scheme;  // lower case
+    QString target;  // text between "scheme://" and "?" (device, host:port/channel or path)
     QMap<QString, QString> options;
 
     // socketcand:// parts
@@ -26,13 +26,13 @@ struct BusUrl {
     QString channel;
 
     // Typed accessors of the common options (defaults when absent).
-    int bitrate() const;          // 0 = leave the adapter's setting
-    int dataBitrate() const;      // CAN FD data phase, 0 = unset
+    int bitrate() const;      // 0 = leave the adapter's setting
+    int dataBitrate() const;  // CAN FD data phase, 0 = unset
     bool canFd() const;
     bool listenOnly() const;
-    double speed() const;         // replay speed factor, default 1.0
-    bool loop() const;            // replay loop
-    bool demo() const;            // sim: a virtual PLC runs the network (sim::DemoMaster)
+    double speed() const;  // replay speed factor, default 1.0
+    bool loop() const;     // replay loop
+    bool demo() const;     // sim: a virtual PLC runs the network (sim::DemoMaster)
     QString option(const QString& key, const QString& fallback = {}) const { return options.value(key, fallback); }
 
     bool isQtPlugin() const;

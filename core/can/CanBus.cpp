@@ -109,7 +109,8 @@ void CanBus::deliver(const CanFrame& frame) {
     if (frame.isError()) {
         countError();
         const CanErrorReport e = decodeCanError(frame);
-        if (e.state != CanErrorReport::BusState::Unknown) controllerState_.store(static_cast<uint8_t>(e.state), std::memory_order_relaxed);
+        if (e.state != CanErrorReport::BusState::Unknown)
+            controllerState_.store(static_cast<uint8_t>(e.state), std::memory_order_relaxed);
         if (e.state == CanErrorReport::BusState::BusOff) busOffs_.fetch_add(1, std::memory_order_relaxed);
         if (e.txErrors) txErrors_.store(*e.txErrors, std::memory_order_relaxed);
         if (e.rxErrors) rxErrors_.store(*e.rxErrors, std::memory_order_relaxed);
@@ -180,7 +181,8 @@ QString toString(CanBus::State state) {
 }
 
 int64_t nowNs() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+        .count();
 }
 
 }  // namespace coscope

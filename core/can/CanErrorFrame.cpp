@@ -102,7 +102,8 @@ CanErrorReport decodeCanError(const CanFrame& frame) {
     if (r.classes & CAN_ERR_TRX)
         r.problems << QStringLiteral("transceiver problem (status 0x%1)").arg(byte(4), 2, 16, QLatin1Char('0'));
     if (r.classes & CAN_ERR_LOSTARB)
-        r.problems << (byte(0) ? QStringLiteral("lost arbitration at bit %1").arg(byte(0)) : QStringLiteral("lost arbitration"));
+        r.problems << (byte(0) ? QStringLiteral("lost arbitration at bit %1").arg(byte(0))
+                               : QStringLiteral("lost arbitration"));
     if (r.classes & CAN_ERR_TX_TIMEOUT) r.problems << QStringLiteral("transmit timeout");
     if (r.classes & CAN_ERR_BUSERROR) r.problems << QStringLiteral("bus error");
     if (r.classes & CAN_ERR_RESTARTED) {
@@ -118,7 +119,8 @@ CanErrorReport decodeCanError(const CanFrame& frame) {
             r.state = worst >= 128 ? S::Passive : worst >= 96 ? S::Warning : S::Active;
         }
     }
-    if (r.problems.isEmpty() && !r.txErrors) r.problems << QStringLiteral("error frame (class %1h)").arg(r.classes, 0, 16);
+    if (r.problems.isEmpty() && !r.txErrors)
+        r.problems << QStringLiteral("error frame (class %1h)").arg(r.classes, 0, 16);
     return r;
 }
 

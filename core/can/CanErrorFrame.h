@@ -18,12 +18,12 @@ struct CanErrorReport {
     // from 128 errors, bus-off from 256 transmit errors; "warning" is the controllers' 96 level).
     enum class BusState : uint8_t { Unknown, Active, Warning, Passive, BusOff };
 
-    uint32_t classes = 0;                  // CAN_ERR_* class bits
-    uint8_t controller = 0;                // CAN_ERR_CRTL_* details (data[1]) when classes has CRTL
-    BusState state = BusState::Unknown;    // the state this frame reports, Unknown when it says none
-    std::optional<uint8_t> txErrors;       // transmit / receive error counters (CAN_ERR_CNT)
+    uint32_t classes = 0;                // CAN_ERR_* class bits
+    uint8_t controller = 0;              // CAN_ERR_CRTL_* details (data[1]) when classes has CRTL
+    BusState state = BusState::Unknown;  // the state this frame reports, Unknown when it says none
+    std::optional<uint8_t> txErrors;     // transmit / receive error counters (CAN_ERR_CNT)
     std::optional<uint8_t> rxErrors;
-    QStringList problems;                  // one short text per reported problem, worst first
+    QStringList problems;  // one short text per reported problem, worst first
 
     // "bus-off", "controller: RX error passive; TX error counter 130", …
     QString summary() const;

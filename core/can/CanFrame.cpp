@@ -31,8 +31,8 @@ CanFrame CanFrame::classic(uint32_t id, std::initializer_list<uint8_t> bytes, bo
 }
 
 bool operator==(const CanFrame& a, const CanFrame& b) {
-    return a.timestampNs == b.timestampNs && a.id == b.id && a.len == b.len && a.flags == b.flags &&
-           a.bus == b.bus && std::memcmp(a.data.data(), b.data.data(), a.payloadSize()) == 0;
+    return a.timestampNs == b.timestampNs && a.id == b.id && a.len == b.len && a.flags == b.flags && a.bus == b.bus &&
+           std::memcmp(a.data.data(), b.data.data(), a.payloadSize()) == 0;
 }
 
 bool isValidFdLength(int len) {
@@ -121,8 +121,7 @@ std::optional<CanFrame> parseCansend(QStringView text, QString* error) {
         if (nibble < 0) {
             nibble = v;
         } else {
-            if (n >= maxLen)
-                return fail(QStringLiteral("more than %1 data bytes").arg(maxLen));
+            if (n >= maxLen) return fail(QStringLiteral("more than %1 data bytes").arg(maxLen));
             f.data[n++] = static_cast<uint8_t>((nibble << 4) | v);
             nibble = -1;
         }

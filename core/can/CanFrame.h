@@ -27,9 +27,9 @@ struct CanFrame {
 
     int64_t timestampNs = 0;  // nanoseconds; live: since the Unix epoch, logs: as the log says
     uint32_t id = 0;
-    uint8_t len = 0;   // payload length in bytes (0..8 classic, 0..64 FD)
+    uint8_t len = 0;  // payload length in bytes (0..8 classic, 0..64 FD)
     uint8_t flags = 0;
-    uint8_t bus = 0;   // index of the bus the frame came from (multi-bus traces)
+    uint8_t bus = 0;  // index of the bus the frame came from (multi-bus traces)
     std::array<uint8_t, 64> data{};
 
     bool isExtended() const { return flags & Extended; }
@@ -50,7 +50,8 @@ inline void putLe32(CanFrame& f, int at, uint32_t v) {
     for (int i = 0; i < 4; ++i) f.data[at + i] = static_cast<uint8_t>(v >> (8 * i));
 }
 inline uint32_t le32At(const CanFrame& f, int at) {
-    return uint32_t(f.data[at]) | (uint32_t(f.data[at + 1]) << 8) | (uint32_t(f.data[at + 2]) << 16) | (uint32_t(f.data[at + 3]) << 24);
+    return uint32_t(f.data[at]) | (uint32_t(f.data[at + 1]) << 8) | (uint32_t(f.data[at + 2]) << 16) |
+           (uint32_t(f.data[at + 3]) << 24);
 }
 
 // CAN FD data length codes (ISO 11898-1): the lengths an FD frame can have.

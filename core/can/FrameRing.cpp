@@ -30,8 +30,6 @@ size_t FrameRing::pop(CanFrame* out, size_t max) {
     return n;
 }
 
-size_t FrameRing::size() const {
-    return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
-}
+size_t FrameRing::size() const { return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire); }
 
 }  // namespace coscope

@@ -26,8 +26,7 @@ std::optional<CanFrame> QtCanBus::fromQt(const QCanBusFrame& q) {
     f.timestampNs = ts.seconds() * 1'000'000'000 + ts.microSeconds() * 1000;
     const QByteArray payload = q.payload();
     switch (q.frameType()) {
-    case QCanBusFrame::DataFrame:
-        break;
+    case QCanBusFrame::DataFrame: break;
     case QCanBusFrame::RemoteRequestFrame:
         // Qt carries the requested DLC of a remote frame as the payload size.
         f.flags |= CanFrame::Remote;
@@ -41,8 +40,7 @@ std::optional<CanFrame> QtCanBus::fromQt(const QCanBusFrame& q) {
         f.len = 8;
         std::copy_n(payload.constData(), std::min<qsizetype>(payload.size(), 8), f.data.begin());
         return f;
-    default:
-        return std::nullopt;  // invalid/unknown frames carry nothing usable
+    default: return std::nullopt;  // invalid/unknown frames carry nothing usable
     }
     f.id = q.frameId();
     if (q.hasExtendedFrameFormat()) f.flags |= CanFrame::Extended;
@@ -84,7 +82,8 @@ void QtCanBus::startOnThread() {
     QString error;
     device_ = QCanBus::instance()->createDevice(url().scheme, url().target, &error);
     if (!device_) {
-        failedToOpen(QStringLiteral("cannot open %1: %2").arg(name(), explain(error.isEmpty() ? QStringLiteral("plugin refused the device") : error)));
+        failedToOpen(QStringLiteral("cannot open %1: %2")
+                         .arg(name(), explain(error.isEmpty() ? QStringLiteral("plugin refused the device") : error)));
         return;
     }
     device_->setParent(context_);
@@ -96,13 +95,16 @@ void QtCanBus::startOnThread() {
                                            QVariant::fromValue(QCanBusFrame::FrameErrors(QCanBusFrame::AnyError)));
 
     QObject::connect(device_, &QCanBusDevice::framesReceived, context_, [this] { onFramesReceived(); });
-    QObject::connect(device_, &QCanBusDevice::errorOccurred, context_, [this](QCanBusDevice::CanBusError e) { onDeviceError(e); });
-    QObject::connect(device_, &QCanBusDevice::stateChanged, context_, [this](QCanBusDevice::CanBusDeviceState s) { onDeviceState(s); });
+    QObject::connect(device_, &QCanBusDevice::errorOccurred, context_,
+                     [this](QCanBusDevice::CanBusError e) { onDeviceError(e); });
+    QObject::connect(device_, &QCanBusDevice::stateChanged, context_,
+                     [this](QCanBusDevice::CanBusDeviceState s) { onDeviceState(s); });
 
     openTimer_ = new QTimer(context_);
     openTimer_->setSingleShot(true);
     QObject::connect(openTimer_, &QTimer::timeout, context_, [this] {
-        if (!opened_) fail(QStringLiteral("cannot open %1: no connection within %2 s").arg(name()).arg(kOpenTimeoutMs / 1000));
+        if (!opened_)
+            fail(QStringLiteral("cannot open %1: no connection within %2 s").arg(name()).arg(kOpenTimeoutMs / 1000));
     });
     openTimer_->start(kOpenTimeoutMs);
     if (url().scheme == u"socketcan") {
@@ -112,7 +114,9 @@ void QtCanBus::startOnThread() {
     }
 
     if (!device_->connectDevice()) {
-        if (device_) fail(QStringLiteral("cannot open %1: %2").arg(name(), explain(device_->errorString())));  // else already reported
+        if (device_)
+            fail(QStringLiteral("cannot open %1: %2")
+                     .arg(name(), explain(device_->errorString())));  // else already reported
         return;
     }
     if (device_ && device_->state() == QCanBusDevice::ConnectedState) onDeviceState(QCanBusDevice::ConnectedState);
@@ -213,8 +217,12 @@ void QtCanBus::checkLink() {
     if (!opened_ || stopping_) return;
     switch (socketCanPresence(url().target)) {
     case LinkPresence::Up: return;
-    case LinkPresence::Gone: fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("No such device")))); return;
-    case LinkPresence::Down: fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("Network is down")))); return;
+    case LinkPresence::Gone:
+        fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("No such device"))));
+        return;
+    case LinkPresence::Down:
+        fail(QStringLiteral("%1 failed: %2").arg(name(), explain(QStringLiteral("Network is down"))));
+        return;
     }
 }
 

@@ -60,7 +60,7 @@ private:
     QCanBusDevice* device_ = nullptr;
     QTimer* openTimer_ = nullptr;
     QTimer* linkTimer_ = nullptr;  // socketcan: is the interface still there and up (SocketCanPresence.h)
-    bool restarting_ = false;  // bus thread: resetController() running, its error goes to restartError_
+    bool restarting_ = false;      // bus thread: resetController() running, its error goes to restartError_
     QString restartError_;
     bool opened_ = false;
     bool stopping_ = false;

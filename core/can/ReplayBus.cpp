@@ -11,7 +11,8 @@ namespace coscope {
 
 namespace {
 int64_t steadyNs() {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 constexpr size_t kBatch = 256;
 constexpr int kMaxReportedDiagnostics = 20;
@@ -88,7 +89,10 @@ void ReplayBus::run() {
                 const auto& diags = reader->diagnostics();
                 for (; seenDiagnostics < diags.size(); ++seenDiagnostics) {
                     if (reported++ < kMaxReportedDiagnostics)
-                        reportError(QStringLiteral("%1:%2: %3").arg(url().target).arg(diags[seenDiagnostics].where).arg(diags[seenDiagnostics].message));
+                        reportError(QStringLiteral("%1:%2: %3")
+                                        .arg(url().target)
+                                        .arg(diags[seenDiagnostics].where)
+                                        .arg(diags[seenDiagnostics].message));
                 }
             }
             if (n == 0) break;

@@ -9,18 +9,24 @@
 
 namespace coscope {
 
-QString ipProgram() { return QProcessEnvironment::systemEnvironment().value(QStringLiteral("COSCOPE_IP"), QStringLiteral("ip")); }
+QString ipProgram() {
+    return QProcessEnvironment::systemEnvironment().value(QStringLiteral("COSCOPE_IP"), QStringLiteral("ip"));
+}
 
 QList<QStringList> bringUpSteps(const SocketCanLink& link, int bitrate, int dataBitrate) {
     const QString n = link.name;
     // ip-link(8): a virtual link has no bit timing; a real one takes "type can bitrate N" only
     // while down, so an interface that is up is set down first.
-    if (link.isVirtual() || bitrate <= 0) return {{QStringLiteral("link"), QStringLiteral("set"), n, QStringLiteral("up")}};
+    if (link.isVirtual() || bitrate <= 0)
+        return {{QStringLiteral("link"), QStringLiteral("set"), n, QStringLiteral("up")}};
     QList<QStringList> steps;
     if (link.up) steps.append({QStringLiteral("link"), QStringLiteral("set"), n, QStringLiteral("down")});
-    QStringList up{QStringLiteral("link"), QStringLiteral("set"), n, QStringLiteral("up"), QStringLiteral("type"), QStringLiteral("can"),
+    QStringList up{QStringLiteral("link"),    QStringLiteral("set"),   n,
+                   QStringLiteral("up"),      QStringLiteral("type"),  QStringLiteral("can"),
                    QStringLiteral("bitrate"), QString::number(bitrate)};
-    if (dataBitrate > 0) up << QStringLiteral("dbitrate") << QString::number(dataBitrate) << QStringLiteral("fd") << QStringLiteral("on");
+    if (dataBitrate > 0)
+        up << QStringLiteral("dbitrate") << QString::number(dataBitrate) << QStringLiteral("fd")
+           << QStringLiteral("on");
     // restart-ms: the kernel restarts the controller itself 100 ms after bus-off.
     up << QStringLiteral("restart-ms") << QStringLiteral("100");
     steps.append(up);
@@ -47,7 +53,8 @@ bool bringUpLink(const SocketCanLink& link, int bitrate, int dataBitrate, QStrin
         if (!p.waitForFinished(5000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
             if (error) {
                 const QString why = QString::fromLocal8Bit(p.readAllStandardError()).trimmed();
-                *error = QStringLiteral("`ip %1` failed: %2").arg(args.join(u' '), why.isEmpty() ? p.errorString() : why);
+                *error =
+                    QStringLiteral("`ip %1` failed: %2").arg(args.join(u' '), why.isEmpty() ? p.errorString() : why);
             }
             return false;
         }
@@ -97,10 +104,8 @@ void SocketCanLinkJob::runNextStep() {
         if (listing_) {
             QList<SocketCanLink> links;
             QString error;
-            if (!ok)
-                error = QStringLiteral("`%1 %2` failed: %3").arg(program, args.join(u' '), why);
-            else
-                parseIpLinkJson(p->readAllStandardOutput(), &links, &error);
+            if (!ok) error = QStringLiteral("`%1 %2` failed: %3").arg(program, args.join(u' '), why);
+            else parseIpLinkJson(p->readAllStandardOutput(), &links, &error);
             emit listed(links, error);
             return;
         }

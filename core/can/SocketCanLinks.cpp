@@ -30,7 +30,9 @@ bool parseIpLinkJson(const QByteArray& json, QList<SocketCanLink>* links, QStrin
     const QJsonDocument doc = QJsonDocument::fromJson(json, &perr);
     if (doc.isNull() || !doc.isArray()) {
         if (error)
-            *error = doc.isNull() ? QStringLiteral("`ip -json` output is not JSON (offset %1: %2)").arg(perr.offset).arg(perr.errorString())
+            *error = doc.isNull() ? QStringLiteral("`ip -json` output is not JSON (offset %1: %2)")
+                                        .arg(perr.offset)
+                                        .arg(perr.errorString())
                                   : QStringLiteral("`ip -json` output is not a list of links");
         return false;
     }
@@ -62,14 +64,18 @@ bool parseIpLinkJson(const QByteArray& json, QList<SocketCanLink>* links, QStrin
 QList<SocketCanLink> listSocketCanLinks(QString* error) {
     const QString program = ipProgram();
     QProcess p;
-    p.start(program, {QStringLiteral("-details"), QStringLiteral("-json"), QStringLiteral("link"), QStringLiteral("show")});
+    p.start(program,
+            {QStringLiteral("-details"), QStringLiteral("-json"), QStringLiteral("link"), QStringLiteral("show")});
     if (!p.waitForStarted(2000)) {
-        if (error) *error = QStringLiteral("cannot run `%1` (Debian package iproute2) to list CAN interfaces").arg(program);
+        if (error)
+            *error = QStringLiteral("cannot run `%1` (Debian package iproute2) to list CAN interfaces").arg(program);
         return {};
     }
     if (!p.waitForFinished(3000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
         p.kill();
-        if (error) *error = QStringLiteral("`%1 -details -json link show` failed: %2").arg(program, QString::fromLocal8Bit(p.readAllStandardError()).trimmed());
+        if (error)
+            *error = QStringLiteral("`%1 -details -json link show` failed: %2")
+                         .arg(program, QString::fromLocal8Bit(p.readAllStandardError()).trimmed());
         return {};
     }
     QList<SocketCanLink> links;
@@ -79,7 +85,8 @@ QList<SocketCanLink> listSocketCanLinks(QString* error) {
 
 QString bringUpCommand(const SocketCanLink& link, int bitrate, int dataBitrate) {
     QStringList lines;
-    for (const QStringList& args : bringUpSteps(link, bitrate, dataBitrate)) lines << QStringLiteral("sudo ip ") + args.join(u' ');
+    for (const QStringList& args : bringUpSteps(link, bitrate, dataBitrate))
+        lines << QStringLiteral("sudo ip ") + args.join(u' ');
     return lines.join(QStringLiteral("; "));
 }
 
@@ -90,7 +97,8 @@ QString describeLink(const SocketCanLink& link) {
     if (link.bitrate > 0) parts << rateText(link.bitrate);
     if (link.dataBitrate > 0) parts << QStringLiteral("FD ") + rateText(link.dataBitrate);
     if (!link.controllerState.isEmpty()) parts << link.controllerState;
-    if (link.txErrors > 0 || link.rxErrors > 0) parts << QStringLiteral("TEC %1 REC %2").arg(link.txErrors).arg(link.rxErrors);
+    if (link.txErrors > 0 || link.rxErrors > 0)
+        parts << QStringLiteral("TEC %1 REC %2").arg(link.txErrors).arg(link.rxErrors);
     return parts.join(QStringLiteral(", "));
 }
 
@@ -103,26 +111,31 @@ QString explainSocketCanError(const QString& interfaceName, const QString& rawEr
     QString advice;
     if (e.contains(u"address family not supported")) {
         // socket(PF_CAN, ...) fails with EAFNOSUPPORT when the kernel has no CAN protocol family.
-        advice = QStringLiteral("this kernel has no CAN support loaded: load it with `sudo modprobe can_raw` "
-                                "and, for a virtual bus, `sudo modprobe vcan`; or use a socketcand server or sim://");
+        advice = QStringLiteral(
+            "this kernel has no CAN support loaded: load it with `sudo modprobe can_raw` "
+            "and, for a virtual bus, `sudo modprobe vcan`; or use a socketcand server or sim://");
     } else if (e.contains(u"no such device")) {
         QString why;
         const QList<SocketCanLink> links = listSocketCanLinks(&why);
         QStringList names;
         for (const SocketCanLink& l : links) names << l.name;
         advice = QStringLiteral("there is no CAN interface named '%1'").arg(interfaceName);
-        advice += names.isEmpty() ? QStringLiteral("; no CAN interfaces exist (plug in the adapter, or for a virtual one: "
-                                                   "`sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up`)")
-                                  : QStringLiteral("; the CAN interfaces here are: %1").arg(names.join(QStringLiteral(", ")));
+        advice += names.isEmpty()
+                      ? QStringLiteral(
+                            "; no CAN interfaces exist (plug in the adapter, or for a virtual one: "
+                            "`sudo modprobe vcan; sudo ip link add dev vcan0 type vcan; sudo ip link set vcan0 up`)")
+                      : QStringLiteral("; the CAN interfaces here are: %1").arg(names.join(QStringLiteral(", ")));
     } else if (e.contains(u"network is down")) {
         advice = QStringLiteral("interface %1 is down; bring it up with `%2`").arg(interfaceName, upCommand);
     } else if (e.contains(u"operation not permitted") || e.contains(u"permission denied")) {
-        advice = QStringLiteral("no permission to configure %1 (setting the bit rate or restarting needs CAP_NET_ADMIN); "
-                                "configure it once with `%2` and connect without bitrate=, or run as root")
+        advice = QStringLiteral(
+                     "no permission to configure %1 (setting the bit rate or restarting needs CAP_NET_ADMIN); "
+                     "configure it once with `%2` and connect without bitrate=, or run as root")
                      .arg(interfaceName, upCommand);
     } else if (e.contains(u"libsocketcan")) {
-        advice = QStringLiteral("install libsocketcan2 (`sudo apt install libsocketcan2`) so the bit rate can be set and the "
-                                "controller restarted after bus-off");
+        advice = QStringLiteral(
+            "install libsocketcan2 (`sudo apt install libsocketcan2`) so the bit rate can be set and the "
+            "controller restarted after bus-off");
     }
     return advice.isEmpty() ? rawError : QStringLiteral("%1 (%2)").arg(rawError, advice);
 }

@@ -7,9 +7,9 @@
 
 #include <spdlog/spdlog.h>
 
+#include <sys/socket.h>
 #include <cerrno>
 #include <cstring>
-#include <sys/socket.h>
 
 namespace coscope {
 
@@ -160,8 +160,7 @@ void SocketcandBus::handle(const Message& m) {
         }
         return;  // ok/echo and the like need nothing
     case Phase::Idle:
-    case Phase::Closing:
-        return;
+    case Phase::Closing: return;
     }
 }
 
@@ -177,13 +176,13 @@ void SocketcandBus::onSocketError() {
     case QAbstractSocket::ConnectionRefusedError: reason = QStringLiteral("connection refused"); break;
     case QAbstractSocket::HostNotFoundError: reason = QStringLiteral("host not found"); break;
     case QAbstractSocket::SocketTimeoutError: reason = QStringLiteral("timed out"); break;
-    case QAbstractSocket::NetworkError: reason = QStringLiteral("network error (%1)").arg(socket_->errorString()); break;
+    case QAbstractSocket::NetworkError:
+        reason = QStringLiteral("network error (%1)").arg(socket_->errorString());
+        break;
     default: reason = socket_->errorString(); break;
     }
-    if (phase_ == Phase::Connecting)
-        fail(QStringLiteral("cannot reach socketcand at %1: %2").arg(where(), reason));
-    else
-        fail(QStringLiteral("connection to socketcand at %1 lost: %2").arg(where(), reason));
+    if (phase_ == Phase::Connecting) fail(QStringLiteral("cannot reach socketcand at %1: %2").arg(where(), reason));
+    else fail(QStringLiteral("connection to socketcand at %1 lost: %2").arg(where(), reason));
 }
 
 void SocketcandBus::onDisconnected() {
@@ -193,7 +192,8 @@ void SocketcandBus::onDisconnected() {
     case Phase::WaitHi:
     case Phase::WaitOpenOk:
     case Phase::WaitRawOk:
-        fail(QStringLiteral("socketcand at %1 closed the connection during the handshake (channel '%2')").arg(where(), url().channel));
+        fail(QStringLiteral("socketcand at %1 closed the connection during the handshake (channel '%2')")
+                 .arg(where(), url().channel));
         return;
     case Phase::Idle:
     case Phase::Closing: return;
@@ -203,12 +203,19 @@ void SocketcandBus::onDisconnected() {
 void SocketcandBus::onHandshakeTimeout() {
     const QString s = QString::number(kHandshakeTimeoutMs / 1000.0);
     switch (phase_) {
-    case Phase::Connecting: fail(QStringLiteral("cannot reach socketcand at %1: no answer within %2 s").arg(where(), s)); return;
-    case Phase::WaitHi: fail(QStringLiteral("socketcand at %1 did not greet with '< hi >' within %2 s").arg(where(), s)); return;
-    case Phase::WaitOpenOk:
-        fail(QStringLiteral("socketcand at %1 did not answer '< open %2 >' within %3 s").arg(where(), url().channel, s));
+    case Phase::Connecting:
+        fail(QStringLiteral("cannot reach socketcand at %1: no answer within %2 s").arg(where(), s));
         return;
-    case Phase::WaitRawOk: fail(QStringLiteral("socketcand at %1 did not answer '< rawmode >' within %2 s").arg(where(), s)); return;
+    case Phase::WaitHi:
+        fail(QStringLiteral("socketcand at %1 did not greet with '< hi >' within %2 s").arg(where(), s));
+        return;
+    case Phase::WaitOpenOk:
+        fail(
+            QStringLiteral("socketcand at %1 did not answer '< open %2 >' within %3 s").arg(where(), url().channel, s));
+        return;
+    case Phase::WaitRawOk:
+        fail(QStringLiteral("socketcand at %1 did not answer '< rawmode >' within %2 s").arg(where(), s));
+        return;
     case Phase::Raw:
     case Phase::Idle:
     case Phase::Closing: return;
@@ -277,7 +284,9 @@ bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
                 if (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
                     const int e = errno;
                     lock.unlock();
-                    if (error) *error = QStringLiteral("cannot write to socketcand at %1: %2").arg(where(), QString::fromLocal8Bit(std::strerror(e)));
+                    if (error)
+                        *error = QStringLiteral("cannot write to socketcand at %1: %2")
+                                     .arg(where(), QString::fromLocal8Bit(std::strerror(e)));
                     return false;
                 }
                 if (n < line.size()) backlog_ = line.mid(n < 0 ? 0 : n);
@@ -288,7 +297,8 @@ bool SocketcandBus::sendFrame(const CanFrame& frame, QString* error) {
             deliverFrame(frame, true);
             if (!backlog_.isEmpty() && !drainPosted_) {
                 drainPosted_ = true;  // context_ lives while directFd_ is set (stopOnThread clears it first)
-                QMetaObject::invokeMethod(context_, [this] { drainBacklog(); }, Qt::QueuedConnection);
+                QMetaObject::invokeMethod(
+                    context_, [this] { drainBacklog(); }, Qt::QueuedConnection);
             }
             return true;
         }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/can/ThreadedCanBus.h"
 #include "core/can/SocketcandProtocol.h"
+#include "core/can/ThreadedCanBus.h"
 
 #include <QByteArray>
 
@@ -51,9 +51,9 @@ private:
     void handle(const socketcand::Message& message);
     void fail(const QString& message);
     QString where() const;
-    void startDirectSends();   // raw mode reached
-    void stopDirectSends();    // leaving raw mode; what is queued goes to the socket
-    void drainBacklog();       // socket thread: queued sends into QTcpSocket, in order
+    void startDirectSends();  // raw mode reached
+    void stopDirectSends();   // leaving raw mode; what is queued goes to the socket
+    void drainBacklog();      // socket thread: queued sends into QTcpSocket, in order
     void onBytesWritten();
     void deliverFrame(CanFrame frame, bool ours);  // any thread: one producer at a time
 
@@ -62,9 +62,9 @@ private:
     socketcand::MessageSplitter splitter_;
     Phase phase_ = Phase::Idle;
 
-    std::mutex sendMutex_;     // guards the three below
-    int directFd_ = -1;        // the raw-mode socket, or -1
-    QByteArray backlog_;       // sends the kernel did not take yet, waiting for the socket thread
+    std::mutex sendMutex_;         // guards the three below
+    int directFd_ = -1;            // the raw-mode socket, or -1
+    QByteArray backlog_;           // sends the kernel did not take yet, waiting for the socket thread
     bool queuedInSocket_ = false;  // QTcpSocket still holds bytes: direct writes would overtake them
     bool drainPosted_ = false;
     std::mutex deliverMutex_;  // the ring has one producer: the socket thread or a sender

@@ -130,7 +130,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         while (i < body.size() && body[i] != ' ' && body[i] != '\t' && body[i] != '\r' && body[i] != '\n') ++i;
         if (i > start) tokens.append(body.sliced(start, i - start));
     }
-    const QString shown = QString::fromLatin1(message.trimmed().first(std::min<qsizetype>(message.trimmed().size(), 80)));
+    const QString shown =
+        QString::fromLatin1(message.trimmed().first(std::min<qsizetype>(message.trimmed().size(), 80)));
     auto fail = [&](const QString& why) -> std::optional<Message> {
         if (error) *error = QStringLiteral("malformed socketcand message '%1': %2").arg(shown, why);
         return std::nullopt;
@@ -172,7 +173,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         // < frame ID SEC.USEC DATA >
         if (tokens.size() < 3) return fail(QStringLiteral("expected '< frame ID SECONDS.USECONDS DATA >'"));
         m.kind = Message::Kind::Frame;
-        if (!setId(m.frame, tokens[1])) return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
+        if (!setId(m.frame, tokens[1]))
+            return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
         const auto ts = parseTimestamp(tokens[2]);
         if (!ts) return fail(QStringLiteral("bad timestamp '%1'").arg(QString::fromLatin1(tokens[2])));
         m.frame.timestampNs = *ts;
@@ -181,7 +183,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         // < fdframe ID FLAGS SEC.USEC DATA >
         if (tokens.size() < 4) return fail(QStringLiteral("expected '< fdframe ID FLAGS SECONDS.USECONDS DATA >'"));
         m.kind = Message::Kind::Frame;
-        if (!setId(m.frame, tokens[1])) return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
+        if (!setId(m.frame, tokens[1]))
+            return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
         const auto fl = parseHex(tokens[2], 2);
         if (!fl) return fail(QStringLiteral("bad FD flags '%1'").arg(QString::fromLatin1(tokens[2])));
         const auto ts = parseTimestamp(tokens[3]);
@@ -191,12 +194,15 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         if (*fl & kFdBrs) m.frame.flags |= CanFrame::BitRateSwitch;
         if (*fl & kFdEsi) m.frame.flags |= CanFrame::ErrorState;
         if (!setData(m.frame, tokens, 4, 64, &why)) return fail(why);
-        if (!isValidFdLength(m.frame.len)) return fail(QStringLiteral("%1 bytes is not a CAN FD length").arg(m.frame.len));
+        if (!isValidFdLength(m.frame.len))
+            return fail(QStringLiteral("%1 bytes is not a CAN FD length").arg(m.frame.len));
     } else if (w == "rtr") {
         // < rtr ID SEC.USEC DLC >
-        if (tokens.size() < 3 || tokens.size() > 4) return fail(QStringLiteral("expected '< rtr ID SECONDS.USECONDS DLC >'"));
+        if (tokens.size() < 3 || tokens.size() > 4)
+            return fail(QStringLiteral("expected '< rtr ID SECONDS.USECONDS DLC >'"));
         m.kind = Message::Kind::Frame;
-        if (!setId(m.frame, tokens[1])) return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
+        if (!setId(m.frame, tokens[1]))
+            return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
         const auto ts = parseTimestamp(tokens[2]);
         if (!ts) return fail(QStringLiteral("bad timestamp '%1'").arg(QString::fromLatin1(tokens[2])));
         m.frame.timestampNs = *ts;
@@ -210,7 +216,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         // < send ID LEN B0 B1 ... >, < sendrtr ID DLC >; LEN is decimal, bytes hex.
         if (tokens.size() < 3) return fail(QStringLiteral("expected '< %1 ID LEN ... >'").arg(m.word));
         m.kind = Message::Kind::Send;
-        if (!setId(m.frame, tokens[1])) return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
+        if (!setId(m.frame, tokens[1]))
+            return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
         const auto len = parseDec(tokens[2], 8);
         if (!len) return fail(QStringLiteral("bad length '%1' (0-8)").arg(QString::fromLatin1(tokens[2])));
         if (w == "sendrtr") {
@@ -222,7 +229,9 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
                 return fail(QStringLiteral("length %1 but %2 data bytes").arg(*len).arg(tokens.size() - 3));
             for (qsizetype k = 3; k < tokens.size(); ++k) {
                 const auto b = parseHex(tokens[k], 2);
-                if (!b) return fail(QStringLiteral("data byte '%1' is not hexadecimal").arg(QString::fromLatin1(tokens[k])));
+                if (!b)
+                    return fail(
+                        QStringLiteral("data byte '%1' is not hexadecimal").arg(QString::fromLatin1(tokens[k])));
                 m.frame.data[k - 3] = static_cast<uint8_t>(*b);
             }
             m.frame.len = static_cast<uint8_t>(*len);
@@ -231,7 +240,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         // < fdsend ID FLAGS LEN B0 ... >
         if (tokens.size() < 4) return fail(QStringLiteral("expected '< fdsend ID FLAGS LEN ... >'"));
         m.kind = Message::Kind::Send;
-        if (!setId(m.frame, tokens[1])) return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
+        if (!setId(m.frame, tokens[1]))
+            return fail(QStringLiteral("bad identifier '%1'").arg(QString::fromLatin1(tokens[1])));
         const auto fl = parseHex(tokens[2], 2);
         if (!fl) return fail(QStringLiteral("bad FD flags '%1'").arg(QString::fromLatin1(tokens[2])));
         const auto len = parseDec(tokens[3], 64);
@@ -244,7 +254,8 @@ std::optional<Message> parseMessage(QByteArrayView message, QString* error) {
         if (*fl & kFdEsi) m.frame.flags |= CanFrame::ErrorState;
         for (qsizetype k = 4; k < tokens.size(); ++k) {
             const auto b = parseHex(tokens[k], 2);
-            if (!b) return fail(QStringLiteral("data byte '%1' is not hexadecimal").arg(QString::fromLatin1(tokens[k])));
+            if (!b)
+                return fail(QStringLiteral("data byte '%1' is not hexadecimal").arg(QString::fromLatin1(tokens[k])));
             m.frame.data[k - 4] = static_cast<uint8_t>(*b);
         }
         m.frame.len = static_cast<uint8_t>(*len);

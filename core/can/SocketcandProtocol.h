@@ -32,16 +32,16 @@ namespace coscope::socketcand {
 // One decoded message.
 struct Message {
     enum class Kind {
-        Hi,        // < hi >
-        Ok,        // < ok >
-        Error,     // < error TEXT >: a refusal or failure reported by the server (text in `text`)
-        Echo,      // < echo >
-        Open,      // < open CHANNEL > (channel in `text`)
-        RawMode,   // < rawmode >
-        BcmMode,   // < bcmmode >
-        Frame,     // frame/fdframe/rtr/error-frame received from the bus (in `frame`)
-        Send,      // send/fdsend/sendrtr: a frame the client wants transmitted (in `frame`)
-        Other,     // any other command, kept as text (command word in `word`)
+        Hi,       // < hi >
+        Ok,       // < ok >
+        Error,    // < error TEXT >: a refusal or failure reported by the server (text in `text`)
+        Echo,     // < echo >
+        Open,     // < open CHANNEL > (channel in `text`)
+        RawMode,  // < rawmode >
+        BcmMode,  // < bcmmode >
+        Frame,    // frame/fdframe/rtr/error-frame received from the bus (in `frame`)
+        Send,     // send/fdsend/sendrtr: a frame the client wants transmitted (in `frame`)
+        Other,    // any other command, kept as text (command word in `word`)
     };
     Kind kind = Kind::Other;
     QString word;  // the command word as sent ("frame", "send", "open", ...)

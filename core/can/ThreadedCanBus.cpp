@@ -16,7 +16,8 @@ void ThreadedCanBus::open() {
     context_ = new QObject;
     context_->moveToThread(thread_);
     thread_->start();
-    QMetaObject::invokeMethod(context_, [this] { startOnThread(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        context_, [this] { startOnThread(); }, Qt::QueuedConnection);
 }
 
 void ThreadedCanBus::close() {
@@ -24,13 +25,16 @@ void ThreadedCanBus::close() {
         if (state() != State::Closed) setState(State::Closed);
         return;
     }
-    QMetaObject::invokeMethod(context_, [this] {
-        delete retryTimer_;  // the user's Disconnect ends the retries
-        retryTimer_ = nullptr;
-        lost_ = false;
-        backoff_.reset();
-        stopOnThread();
-    }, Qt::BlockingQueuedConnection);
+    QMetaObject::invokeMethod(
+        context_,
+        [this] {
+            delete retryTimer_;  // the user's Disconnect ends the retries
+            retryTimer_ = nullptr;
+            lost_ = false;
+            backoff_.reset();
+            stopOnThread();
+        },
+        Qt::BlockingQueuedConnection);
     thread_->quit();
     thread_->wait();
     delete context_;
@@ -45,7 +49,8 @@ void ThreadedCanBus::close() {
 void ThreadedCanBus::reachedOpen() {
     if (lost_) {
         const double gapS = static_cast<double>(nowNs() - lostSinceNs()) / 1e9;
-        spdlog::info("{}: adapter back after {:.1f} s ({} attempts)", url().toString().toStdString(), gapS, backoff_.attempts());
+        spdlog::info("{}: adapter back after {:.1f} s ({} attempts)", url().toString().toStdString(), gapS,
+                     backoff_.attempts());
         lost_ = false;
     }
     backoff_.reset();

@@ -52,7 +52,7 @@ private:
 
     ReconnectBackoff backoff_;  // bus thread
     QTimer* retryTimer_ = nullptr;
-    bool lost_ = false;         // bus thread: between connectionLost() and reachedOpen()
+    bool lost_ = false;  // bus thread: between connectionLost() and reachedOpen()
 };
 
 }  // namespace coscope

@@ -3,7 +3,8 @@
 
 namespace coscope::canopen {
 
-BusMaster::BusMaster(MasterContext& context) : context_(context), sync_(context), heartbeat_(context), transmit_(context) {}
+BusMaster::BusMaster(MasterContext& context)
+    : context_(context), sync_(context), heartbeat_(context), transmit_(context) {}
 
 BusMaster::~BusMaster() { stopAll(); }
 
@@ -13,6 +14,8 @@ void BusMaster::stopAll() {
     transmit_.stopAll();
 }
 
-bool BusMaster::anyRunning() const { return sync_.isRunning() || heartbeat_.isRunning() || transmit_.runningCount() > 0; }
+bool BusMaster::anyRunning() const {
+    return sync_.isRunning() || heartbeat_.isRunning() || transmit_.runningCount() > 0;
+}
 
 }  // namespace coscope::canopen

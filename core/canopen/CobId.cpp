@@ -11,12 +11,24 @@ struct Entry {
     const char* name;
 };
 constexpr std::array<Entry, 19> kNames{{
-    {Service::Nmt, "NMT"},           {Service::Sync, "SYNC"},       {Service::Time, "TIME"},
-    {Service::Emcy, "EMCY"},         {Service::Tpdo1, "TPDO1"},     {Service::Rpdo1, "RPDO1"},
-    {Service::Tpdo2, "TPDO2"},       {Service::Rpdo2, "RPDO2"},     {Service::Tpdo3, "TPDO3"},
-    {Service::Rpdo3, "RPDO3"},       {Service::Tpdo4, "TPDO4"},     {Service::Rpdo4, "RPDO4"},
-    {Service::SdoRequest, "SDO_REQ"}, {Service::SdoResponse, "SDO_RESP"}, {Service::NmtErrorControl, "NMT_EC"},
-    {Service::LssRequest, "LSS_REQ"}, {Service::LssResponse, "LSS_RESP"}, {Service::Unknown, "UNKNOWN"},
+    {Service::Nmt, "NMT"},
+    {Service::Sync, "SYNC"},
+    {Service::Time, "TIME"},
+    {Service::Emcy, "EMCY"},
+    {Service::Tpdo1, "TPDO1"},
+    {Service::Rpdo1, "RPDO1"},
+    {Service::Tpdo2, "TPDO2"},
+    {Service::Rpdo2, "RPDO2"},
+    {Service::Tpdo3, "TPDO3"},
+    {Service::Rpdo3, "RPDO3"},
+    {Service::Tpdo4, "TPDO4"},
+    {Service::Rpdo4, "RPDO4"},
+    {Service::SdoRequest, "SDO_REQ"},
+    {Service::SdoResponse, "SDO_RESP"},
+    {Service::NmtErrorControl, "NMT_EC"},
+    {Service::LssRequest, "LSS_REQ"},
+    {Service::LssResponse, "LSS_RESP"},
+    {Service::Unknown, "UNKNOWN"},
     {Service::Unknown, "UNKNOWN"},
 }};
 

@@ -15,27 +15,42 @@ enum class Service : uint8_t {
     Sync,
     Time,
     Emcy,
-    Tpdo1, Rpdo1, Tpdo2, Rpdo2, Tpdo3, Rpdo3, Tpdo4, Rpdo4,
-    SdoRequest,   // client -> server (600h + node)
-    SdoResponse,  // server -> client (580h + node)
+    Tpdo1,
+    Rpdo1,
+    Tpdo2,
+    Rpdo2,
+    Tpdo3,
+    Rpdo3,
+    Tpdo4,
+    Rpdo4,
+    SdoRequest,       // client -> server (600h + node)
+    SdoResponse,      // server -> client (580h + node)
     NmtErrorControl,  // boot-up, heartbeat, node guarding (700h + node)
-    LssRequest,   // master -> slave, 7E5h
-    LssResponse,  // slave -> master, 7E4h
+    LssRequest,       // master -> slave, 7E5h
+    LssResponse,      // slave -> master, 7E4h
 };
 
 // "NMT", "SYNC", "TPDO1", "SDO_REQ", "NMT_EC", "LSS_RESP", "UNKNOWN", ...
 QString serviceName(Service s);
 std::optional<Service> serviceFromName(const QString& name);
 
-constexpr bool isTpdo(Service s) { return s == Service::Tpdo1 || s == Service::Tpdo2 || s == Service::Tpdo3 || s == Service::Tpdo4; }
-constexpr bool isRpdo(Service s) { return s == Service::Rpdo1 || s == Service::Rpdo2 || s == Service::Rpdo3 || s == Service::Rpdo4; }
+constexpr bool isTpdo(Service s) {
+    return s == Service::Tpdo1 || s == Service::Tpdo2 || s == Service::Tpdo3 || s == Service::Tpdo4;
+}
+constexpr bool isRpdo(Service s) {
+    return s == Service::Rpdo1 || s == Service::Rpdo2 || s == Service::Rpdo3 || s == Service::Rpdo4;
+}
 // 0..3 for TPDO1..4 / RPDO1..4, -1 otherwise.
 constexpr int pdoNumber(Service s) {
     switch (s) {
-    case Service::Tpdo1: case Service::Rpdo1: return 0;
-    case Service::Tpdo2: case Service::Rpdo2: return 1;
-    case Service::Tpdo3: case Service::Rpdo3: return 2;
-    case Service::Tpdo4: case Service::Rpdo4: return 3;
+    case Service::Tpdo1:
+    case Service::Rpdo1: return 0;
+    case Service::Tpdo2:
+    case Service::Rpdo2: return 1;
+    case Service::Tpdo3:
+    case Service::Rpdo3: return 2;
+    case Service::Tpdo4:
+    case Service::Rpdo4: return 3;
     default: return -1;
     }
 }
@@ -55,11 +70,17 @@ constexpr CobIdInfo classifyStandard(uint32_t id) {
     if (id == 0x7E4) return {Service::LssResponse, -1};
     // Function code (bits 10..7) -> service of the node-addressed objects.
     constexpr Service kByFunction[16] = {
-        Service::Unknown,          // 0000: NMT (id 0) only
-        Service::Emcy,             // 0001: SYNC at 080h, EMCY at 081h..0FFh
-        Service::Unknown,          // 0010: TIME at 100h only
-        Service::Tpdo1, Service::Rpdo1, Service::Tpdo2, Service::Rpdo2, Service::Tpdo3, Service::Rpdo3,
-        Service::Tpdo4, Service::Rpdo4,
+        Service::Unknown,  // 0000: NMT (id 0) only
+        Service::Emcy,     // 0001: SYNC at 080h, EMCY at 081h..0FFh
+        Service::Unknown,  // 0010: TIME at 100h only
+        Service::Tpdo1,
+        Service::Rpdo1,
+        Service::Tpdo2,
+        Service::Rpdo2,
+        Service::Tpdo3,
+        Service::Rpdo3,
+        Service::Tpdo4,
+        Service::Rpdo4,
         Service::SdoResponse,      // 1011: 580h + node
         Service::SdoRequest,       // 1100: 600h + node
         Service::Unknown,          // 1101

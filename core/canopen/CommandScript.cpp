@@ -58,7 +58,9 @@ QString valueHuman(uint16_t index, uint8_t sub, const QByteArray& data) {
     return dataHuman(data);
 }
 
-QString objectText(uint16_t index, uint8_t sub) { return QStringLiteral("0x%1:%2").arg(hexDigits(index, 4), hexDigits(sub, 2)); }
+QString objectText(uint16_t index, uint8_t sub) {
+    return QStringLiteral("0x%1:%2").arg(hexDigits(index, 4), hexDigits(sub, 2));
+}
 QString objectHuman(uint16_t index, uint8_t sub) { return od::objectText(index, sub); }
 
 QString nmtWord(NmtCommand c) {
@@ -127,14 +129,16 @@ public:
     uint32_t number(const QString& what, uint64_t max) {
         const QString w = next(what);
         uint64_t v = 0;
-        if (!parseNumber(w, max, &v)) throw ParseError{QStringLiteral("%1 '%2' is not a number from 0 to %3").arg(what, w).arg(max)};
+        if (!parseNumber(w, max, &v))
+            throw ParseError{QStringLiteral("%1 '%2' is not a number from 0 to %3").arg(what, w).arg(max)};
         return static_cast<uint32_t>(v);
     }
     uint8_t node(bool allowAll) {
         const QString w = next(QStringLiteral("node-ID"));
         uint64_t v = 0;
         if (!parseNumber(w, 127, &v) || (v == 0 && !allowAll))
-            throw ParseError{QStringLiteral("node-ID '%1' is not %2 to 127").arg(w, allowAll ? QStringLiteral("0 (all)") : QStringLiteral("1"))};
+            throw ParseError{QStringLiteral("node-ID '%1' is not %2 to 127")
+                                 .arg(w, allowAll ? QStringLiteral("0 (all)") : QStringLiteral("1"))};
         return static_cast<uint8_t>(v);
     }
     // INDEX:SUB, both hex ("0x6040:00", "6040:0", "6040h:00h").
@@ -155,7 +159,8 @@ public:
             while (!atEnd() && peek().toLower() != u"mask") {
                 const QString b = words_[pos_++];
                 uint64_t v = 0;
-                if (b.size() > 4 || !parseHex(b, 0xFF, &v)) throw ParseError{QStringLiteral("'%1' is not a hex byte (00..ff)").arg(b)};
+                if (b.size() > 4 || !parseHex(b, 0xFF, &v))
+                    throw ParseError{QStringLiteral("'%1' is not a hex byte (00..ff)").arg(b)};
                 out.append(static_cast<char>(v));
             }
             if (out.isEmpty()) throw ParseError{QStringLiteral("%1: 'bytes' needs at least one byte").arg(what)};
@@ -166,7 +171,8 @@ public:
             const char16_t* name;
             int size;
             bool isSigned;
-        } types[] = {{u"u8", 1, false}, {u"u16", 2, false}, {u"u32", 4, false}, {u"i8", 1, true}, {u"i16", 2, true}, {u"i32", 4, true}};
+        } types[] = {{u"u8", 1, false}, {u"u16", 2, false}, {u"u32", 4, false},
+                     {u"i8", 1, true},  {u"i16", 2, true},  {u"i32", 4, true}};
         for (const auto& t : types) {
             if (w != QStringView(t.name)) continue;
             const QString v = next(QStringLiteral("%1 value").arg(w));
@@ -180,7 +186,8 @@ public:
                 u = static_cast<uint64_t>(-static_cast<int64_t>(magnitude)) & max;
             } else {
                 const uint64_t limit = t.isSigned && !v.startsWith(u"0x", Qt::CaseInsensitive) ? (max >> 1) : max;
-                if (!parseNumber(v, limit, &u)) throw ParseError{QStringLiteral("%1 value '%2' is out of range").arg(w, v)};
+                if (!parseNumber(v, limit, &u))
+                    throw ParseError{QStringLiteral("%1 value '%2' is out of range").arg(w, v)};
             }
             return littleEndian(static_cast<uint32_t>(u), t.size);
         }
@@ -190,9 +197,13 @@ public:
             if ((digits == 2 || digits == 4 || digits == 8) && parseHex(w, 0xFFFFFFFFull, &v))
                 return littleEndian(static_cast<uint32_t>(v), static_cast<int>(digits / 2));
             if (parseHex(w, 0xFFFFFFFFull, &v))
-                throw ParseError{QStringLiteral("%1 '%2': give 2, 4 or 8 hex digits (the size on the bus), or a type: u16 %3").arg(what, w).arg(v)};
+                throw ParseError{
+                    QStringLiteral("%1 '%2': give 2, 4 or 8 hex digits (the size on the bus), or a type: u16 %3")
+                        .arg(what, w)
+                        .arg(v)};
         }
-        throw ParseError{QStringLiteral("%1 '%2' is not 0xHH/0xHHHH/0xHHHHHHHH, u8|u16|u32|i8|i16|i32 N or bytes ..").arg(what, w)};
+        throw ParseError{
+            QStringLiteral("%1 '%2' is not 0xHH/0xHHHH/0xHHHHHHHH, u8|u16|u32|i8|i16|i32 N or bytes ..").arg(what, w)};
     }
 
 private:
@@ -220,7 +231,8 @@ ScriptStep parseStep(const QString& line) {
                 in.next({});
                 s.mask = in.data(QStringLiteral("mask"));
                 if (s.mask.size() != s.data.size())
-                    throw ParseError{QStringLiteral("mask has %1 bytes, the value %2").arg(s.mask.size()).arg(s.data.size())};
+                    throw ParseError{
+                        QStringLiteral("mask has %1 bytes, the value %2").arg(s.mask.size()).arg(s.data.size())};
             }
         } else {
             throw ParseError{QStringLiteral("unknown sdo operation '%1' (write|read|expect)").arg(op)};
@@ -228,7 +240,8 @@ ScriptStep parseStep(const QString& line) {
     } else if (verb == u"nmt") {
         const QString word = in.next(QStringLiteral("NMT command (start|stop|preop|reset|reset-comm)"));
         const auto cmd = nmtCommandFromName(word);
-        if (!cmd) throw ParseError{QStringLiteral("unknown NMT command '%1' (start|stop|preop|reset|reset-comm)").arg(word)};
+        if (!cmd)
+            throw ParseError{QStringLiteral("unknown NMT command '%1' (start|stop|preop|reset|reset-comm)").arg(word)};
         s.kind = ScriptStep::Kind::Nmt;
         s.nmt = *cmd;
         s.node = in.node(true);
@@ -236,7 +249,8 @@ ScriptStep parseStep(const QString& line) {
         const QString op = in.next(QStringLiteral("lss operation")).toLower();
         if (op == u"switch-global") {
             const QString st = in.next(QStringLiteral("state (config|wait)")).toLower();
-            if (st != u"config" && st != u"wait") throw ParseError{QStringLiteral("switch-global state '%1' is not config or wait").arg(st)};
+            if (st != u"config" && st != u"wait")
+                throw ParseError{QStringLiteral("switch-global state '%1' is not config or wait").arg(st)};
             s = ScriptStep::lssSwitchGlobal(st == u"config", {});
         } else if (op == u"switch-selective") {
             LssIdentity id;
@@ -247,19 +261,26 @@ ScriptStep parseStep(const QString& line) {
             s = ScriptStep::lssSwitchSelective(id, {});
         } else if (op == u"node-id") {
             const uint32_t n = in.number(QStringLiteral("node-ID"), 255);
-            if (n == 0 || (n > 127 && n != 255)) throw ParseError{QStringLiteral("node-ID %1 is not 1 to 127 or 255 (unconfigured)").arg(n)};
+            if (n == 0 || (n > 127 && n != 255))
+                throw ParseError{QStringLiteral("node-ID %1 is not 1 to 127 or 255 (unconfigured)").arg(n)};
             s = ScriptStep::lssConfigureNodeId(static_cast<uint8_t>(n), {});
         } else if (op == u"bitrate") {
             const uint32_t b = in.number(QStringLiteral("bit rate"), 1000000);
             if (lssTableIndexForBitRate(static_cast<int>(b)) < 0)
-                throw ParseError{QStringLiteral("bit rate %1 is not in the CiA 305 table (10000, 20000, 50000, 125000, 250000, 500000, 800000, 1000000)").arg(b)};
+                throw ParseError{QStringLiteral("bit rate %1 is not in the CiA 305 table (10000, 20000, 50000, 125000, "
+                                                "250000, 500000, 800000, 1000000)")
+                                     .arg(b)};
             s = ScriptStep::lssConfigureBitRate(b, {});
         } else if (op == u"store") {
             s = ScriptStep::lssStore({});
         } else if (op == u"activate") {
-            s = ScriptStep::lssActivateBitTiming(static_cast<uint16_t>(in.number(QStringLiteral("switch delay (ms)"), 0xFFFF)), {});
+            s = ScriptStep::lssActivateBitTiming(
+                static_cast<uint16_t>(in.number(QStringLiteral("switch delay (ms)"), 0xFFFF)), {});
         } else {
-            throw ParseError{QStringLiteral("unknown lss operation '%1' (switch-global|switch-selective|node-id|bitrate|store|activate)").arg(op)};
+            throw ParseError{
+                QStringLiteral(
+                    "unknown lss operation '%1' (switch-global|switch-selective|node-id|bitrate|store|activate)")
+                    .arg(op)};
         }
     } else if (verb == u"wait") {
         s = ScriptStep::wait(in.number(QStringLiteral("time (ms)"), 3600000), {});
@@ -281,11 +302,13 @@ ScriptStep parseStep(const QString& line) {
 
 // ---- builders --------------------------------------------------------------------------------
 
-ScriptStep ScriptStep::sdoWrite(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, const QString& why) {
+ScriptStep ScriptStep::sdoWrite(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size,
+                                const QString& why) {
     return sdoWriteBytes(node, index, sub, littleEndian(value, clampSize(size)), why);
 }
 
-ScriptStep ScriptStep::sdoWriteBytes(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data, const QString& why) {
+ScriptStep ScriptStep::sdoWriteBytes(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data,
+                                     const QString& why) {
     ScriptStep s;
     s.kind = Kind::SdoWrite;
     s.node = node;
@@ -307,7 +330,8 @@ ScriptStep ScriptStep::sdoRead(uint8_t node, uint16_t index, uint8_t sub, const 
 }
 
 // mask 0 or a mask covering every bit of `size` bytes = plain comparison (no mask stored).
-ScriptStep ScriptStep::sdoExpect(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, uint32_t mask, const QString& why) {
+ScriptStep ScriptStep::sdoExpect(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, uint32_t mask,
+                                 const QString& why) {
     ScriptStep s = sdoRead(node, index, sub, why);
     s.kind = Kind::SdoExpect;
     size = clampSize(size);
@@ -435,7 +459,8 @@ bool ScriptStep::matches(const QByteArray& value) const {
 
 QString ScriptStep::toLine() const {
     switch (kind) {
-    case Kind::SdoWrite: return QStringLiteral("sdo write %1 %2 %3").arg(node).arg(objectText(index, sub), dataText(data));
+    case Kind::SdoWrite:
+        return QStringLiteral("sdo write %1 %2 %3").arg(node).arg(objectText(index, sub), dataText(data));
     case Kind::SdoRead: return QStringLiteral("sdo read %1 %2").arg(node).arg(objectText(index, sub));
     case Kind::SdoExpect: {
         QString line = QStringLiteral("sdo expect %1 %2 %3").arg(node).arg(objectText(index, sub), dataText(data));
@@ -443,10 +468,12 @@ QString ScriptStep::toLine() const {
         return line;
     }
     case Kind::Nmt: return QStringLiteral("nmt %1 %2").arg(nmtWord(nmt)).arg(node);
-    case Kind::LssSwitchGlobal: return QStringLiteral("lss switch-global %1").arg(number ? QStringLiteral("config") : QStringLiteral("wait"));
+    case Kind::LssSwitchGlobal:
+        return QStringLiteral("lss switch-global %1").arg(number ? QStringLiteral("config") : QStringLiteral("wait"));
     case Kind::LssSwitchSelective:
         return QStringLiteral("lss switch-selective 0x%1 0x%2 0x%3 0x%4")
-            .arg(hexDigits(identity.vendorId, 8), hexDigits(identity.productCode, 8), hexDigits(identity.revision, 8), hexDigits(identity.serial, 8));
+            .arg(hexDigits(identity.vendorId, 8), hexDigits(identity.productCode, 8), hexDigits(identity.revision, 8),
+                 hexDigits(identity.serial, 8));
     case Kind::LssConfigureNodeId: return QStringLiteral("lss node-id %1").arg(number);
     case Kind::LssConfigureBitRate: return QStringLiteral("lss bitrate %1").arg(number);
     case Kind::LssStore: return QStringLiteral("lss store");
@@ -460,28 +487,39 @@ QString ScriptStep::toLine() const {
 
 QString ScriptStep::describe() const {
     switch (kind) {
-    case Kind::SdoWrite: return QStringLiteral("Write %1 = %2 on node %3").arg(objectHuman(index, sub), valueHuman(index, sub, data)).arg(node);
+    case Kind::SdoWrite:
+        return QStringLiteral("Write %1 = %2 on node %3")
+            .arg(objectHuman(index, sub), valueHuman(index, sub, data))
+            .arg(node);
     case Kind::SdoRead: return QStringLiteral("Read %1 from node %2").arg(objectHuman(index, sub)).arg(node);
     case Kind::SdoExpect:
         // A masked check compares bits: value and mask in hex.
-        return mask.isEmpty() ? QStringLiteral("Check %1 = %2 on node %3").arg(objectHuman(index, sub), valueHuman(index, sub, data)).arg(node)
-                              : QStringLiteral("Check %1 = %2 (mask %3) on node %4").arg(objectHuman(index, sub), dataHuman(data), dataHuman(mask)).arg(node);
+        return mask.isEmpty() ? QStringLiteral("Check %1 = %2 on node %3")
+                                    .arg(objectHuman(index, sub), valueHuman(index, sub, data))
+                                    .arg(node)
+                              : QStringLiteral("Check %1 = %2 (mask %3) on node %4")
+                                    .arg(objectHuman(index, sub), dataHuman(data), dataHuman(mask))
+                                    .arg(node);
     case Kind::Nmt:
         return node == 0 ? QStringLiteral("NMT %1 to all nodes").arg(nmtCommandName(static_cast<uint8_t>(nmt)))
                          : QStringLiteral("NMT %1 to node %2").arg(nmtCommandName(static_cast<uint8_t>(nmt))).arg(node);
     case Kind::LssSwitchGlobal:
-        return number ? QStringLiteral("LSS: every device to configuration state") : QStringLiteral("LSS: every device back to waiting state");
+        return number ? QStringLiteral("LSS: every device to configuration state")
+                      : QStringLiteral("LSS: every device back to waiting state");
     case Kind::LssSwitchSelective:
         return QStringLiteral("LSS: select the device with vendor %1h, product %2h, revision %3h, serial %4h")
-            .arg(hexDigits(identity.vendorId, 8).toUpper(), hexDigits(identity.productCode, 8).toUpper(), hexDigits(identity.revision, 8).toUpper(),
-                 hexDigits(identity.serial, 8).toUpper());
+            .arg(hexDigits(identity.vendorId, 8).toUpper(), hexDigits(identity.productCode, 8).toUpper(),
+                 hexDigits(identity.revision, 8).toUpper(), hexDigits(identity.serial, 8).toUpper());
     case Kind::LssConfigureNodeId:
-        return number == 255 ? QStringLiteral("LSS: set node-ID to unconfigured (FFh)") : QStringLiteral("LSS: set node-ID %1").arg(number);
+        return number == 255 ? QStringLiteral("LSS: set node-ID to unconfigured (FFh)")
+                             : QStringLiteral("LSS: set node-ID %1").arg(number);
     case Kind::LssConfigureBitRate: return QStringLiteral("LSS: set bit rate %1").arg(bitRateHuman(number));
     case Kind::LssStore: return QStringLiteral("LSS: store configuration");
-    case Kind::LssActivateBitTiming: return QStringLiteral("LSS: switch to the new bit rate (switch delay %1 ms)").arg(number);
+    case Kind::LssActivateBitTiming:
+        return QStringLiteral("LSS: switch to the new bit rate (switch delay %1 ms)").arg(number);
     case Kind::Wait: return QStringLiteral("Wait %1 ms").arg(number);
-    case Kind::WaitForNode: return QStringLiteral("Wait up to %1 ms for node %2 (boot-up or heartbeat)").arg(number).arg(node);
+    case Kind::WaitForNode:
+        return QStringLiteral("Wait up to %1 ms for node %2 (boot-up or heartbeat)").arg(number).arg(node);
     case Kind::Reconnect: return QStringLiteral("Reconnect the adapter at %1").arg(bitRateHuman(number));
     }
     return {};
@@ -498,7 +536,8 @@ QString CommandScript::toText() const {
         if (!s.why.isEmpty()) {
             QString why = s.why;
             why.remove(u'\r');
-            for (const QString& line : why.split(u'\n')) out += (line.isEmpty() ? QStringLiteral("#") : QStringLiteral("# ") + line) + u'\n';
+            for (const QString& line : why.split(u'\n'))
+                out += (line.isEmpty() ? QStringLiteral("#") : QStringLiteral("# ") + line) + u'\n';
         }
         out += s.toLine() + QStringLiteral("\n\n");
     }

@@ -17,19 +17,19 @@ namespace coscope::canopen {
 // replays a saved sequence through the same services.
 struct ScriptStep {
     enum class Kind {
-        SdoWrite,             // download `data` to node:index:sub
-        SdoRead,              // upload node:index:sub (the value is reported)
-        SdoExpect,            // upload node:index:sub and compare with `data` (under `mask` when set)
-        Nmt,                  // NMT `nmt` to `node` (0 = all nodes)
-        LssSwitchGlobal,      // `number` 1 = configuration state, 0 = waiting state (CiA 305 §6.3.2)
-        LssSwitchSelective,   // `identity` (CiA 305 §6.3.3)
-        LssConfigureNodeId,   // `number` = new node-ID (§6.4.2)
-        LssConfigureBitRate,  // `number` = bit/s (§6.4.3, standard table)
-        LssStore,             // store configuration (§6.4.5)
-        LssActivateBitTiming, // `number` = switch delay in ms (§6.4.4)
-        Wait,                 // `number` ms
-        WaitForNode,          // boot-up or heartbeat from `node` within `number` ms
-        Reconnect,            // close the adapter and open it again at `number` bit/s
+        SdoWrite,              // download `data` to node:index:sub
+        SdoRead,               // upload node:index:sub (the value is reported)
+        SdoExpect,             // upload node:index:sub and compare with `data` (under `mask` when set)
+        Nmt,                   // NMT `nmt` to `node` (0 = all nodes)
+        LssSwitchGlobal,       // `number` 1 = configuration state, 0 = waiting state (CiA 305 §6.3.2)
+        LssSwitchSelective,    // `identity` (CiA 305 §6.3.3)
+        LssConfigureNodeId,    // `number` = new node-ID (§6.4.2)
+        LssConfigureBitRate,   // `number` = bit/s (§6.4.3, standard table)
+        LssStore,              // store configuration (§6.4.5)
+        LssActivateBitTiming,  // `number` = switch delay in ms (§6.4.4)
+        Wait,                  // `number` ms
+        WaitForNode,           // boot-up or heartbeat from `node` within `number` ms
+        Reconnect,             // close the adapter and open it again at `number` bit/s
     };
     Kind kind = Kind::Wait;
     uint8_t node = 0;
@@ -44,9 +44,11 @@ struct ScriptStep {
 
     // Builders (values little-endian, `size` bytes: 1, 2 or 4).
     static ScriptStep sdoWrite(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, const QString& why);
-    static ScriptStep sdoWriteBytes(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data, const QString& why);
+    static ScriptStep sdoWriteBytes(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data,
+                                    const QString& why);
     static ScriptStep sdoRead(uint8_t node, uint16_t index, uint8_t sub, const QString& why);
-    static ScriptStep sdoExpect(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, uint32_t mask, const QString& why);
+    static ScriptStep sdoExpect(uint8_t node, uint16_t index, uint8_t sub, uint32_t value, int size, uint32_t mask,
+                                const QString& why);
     static ScriptStep nmtCommand(NmtCommand command, uint8_t node, const QString& why);
     static ScriptStep wait(uint32_t ms, const QString& why);
     static ScriptStep waitForNode(uint8_t node, uint32_t timeoutMs, const QString& why);

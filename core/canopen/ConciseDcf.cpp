@@ -43,18 +43,25 @@ std::optional<std::vector<ConciseDcfEntry>> parseConciseDcf(const QByteArray& by
     qsizetype at = 4;
     std::vector<ConciseDcfEntry> entries;
     for (uint32_t i = 0; i < count; ++i) {
-        if (bytes.size() - at < 7) return bad(QStringLiteral("entry %1 of %2: header cut off at byte %3").arg(i + 1).arg(count).arg(at));
+        if (bytes.size() - at < 7)
+            return bad(QStringLiteral("entry %1 of %2: header cut off at byte %3").arg(i + 1).arg(count).arg(at));
         ConciseDcfEntry e;
         e.index = qFromLittleEndian<uint16_t>(p + at);
         e.sub = p[at + 2];
         const uint32_t size = qFromLittleEndian<uint32_t>(p + at + 3);
         at += 7;
-        if (uint64_t(bytes.size() - at) < size) return bad(QStringLiteral("entry %1 of %2: %3 data bytes announced, %4 left").arg(i + 1).arg(count).arg(size).arg(bytes.size() - at));
+        if (uint64_t(bytes.size() - at) < size)
+            return bad(QStringLiteral("entry %1 of %2: %3 data bytes announced, %4 left")
+                           .arg(i + 1)
+                           .arg(count)
+                           .arg(size)
+                           .arg(bytes.size() - at));
         e.data = bytes.mid(at, size);
         at += size;
         entries.push_back(std::move(e));
     }
-    if (at != bytes.size()) return bad(QStringLiteral("%1 bytes after the last of %2 entries").arg(bytes.size() - at).arg(count));
+    if (at != bytes.size())
+        return bad(QStringLiteral("%1 bytes after the last of %2 entries").arg(bytes.size() - at).arg(count));
     return entries;
 }
 

@@ -62,10 +62,13 @@ od::ValueResult DeviceConfiguration::decodeUpload(od::DataType type, const QByte
     return od::Value::decode(type, bytes);
 }
 
-std::vector<std::pair<uint16_t, uint8_t>> DeviceConfiguration::readableEntries(const od::ObjectDictionary& dictionary, const ConfigReadOptions& options) {
+std::vector<std::pair<uint16_t, uint8_t>> DeviceConfiguration::readableEntries(const od::ObjectDictionary& dictionary,
+                                                                               const ConfigReadOptions& options) {
     std::vector<std::pair<uint16_t, uint8_t>> out;
     for (const auto& [index, obj] : dictionary.objects()) {
-        if (obj.objectType == od::ObjectType::DefType || obj.objectType == od::ObjectType::DefStruct || obj.objectType == od::ObjectType::Null) continue;
+        if (obj.objectType == od::ObjectType::DefType || obj.objectType == od::ObjectType::DefStruct ||
+            obj.objectType == od::ObjectType::Null)
+            continue;
         for (const od::SubObject& s : obj.subs) {
             if (!od::isReadable(s.access)) continue;
             if (!options.includeDomains && od::typeClass(s.dataType) == od::TypeClass::Domain) continue;
@@ -75,12 +78,14 @@ std::vector<std::pair<uint16_t, uint8_t>> DeviceConfiguration::readableEntries(c
     return out;
 }
 
-void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& dictionary, Progress progress, ReadDone done, ConfigReadOptions options) {
+void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& dictionary, Progress progress, ReadDone done,
+                               ConfigReadOptions options) {
     read(node, dictionary, readableEntries(dictionary, options), std::move(progress), std::move(done), options);
 }
 
-void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& dictionary, std::vector<std::pair<uint16_t, uint8_t>> entries,
-                               Progress progress, ReadDone done, ConfigReadOptions options) {
+void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& dictionary,
+                               std::vector<std::pair<uint16_t, uint8_t>> entries, Progress progress, ReadDone done,
+                               ConfigReadOptions options) {
     auto run = std::make_shared<Run>();
     run->isRead = true;
     run->node = node;
@@ -96,7 +101,8 @@ void DeviceConfiguration::read(uint8_t node, const od::ObjectDictionary& diction
     step(run);
 }
 
-ApplyPlan DeviceConfiguration::plan(uint8_t node, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current, ApplyScope scope) {
+ApplyPlan DeviceConfiguration::plan(uint8_t node, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current,
+                                    ApplyScope scope) {
     ApplyPlan p;
     p.node = node;
     for (const auto& entry : dcf.objects()) {
@@ -134,14 +140,16 @@ ApplyPlan DeviceConfiguration::plan(uint8_t node, const od::ObjectDictionary& dc
             w.type = s.dataType;
             w.value = *value;
             w.data = data;
-            w.valueText = od::typeClass(s.dataType) == od::TypeClass::Unsigned ? edsText(s.dataType, *value)
-                                                                                : value->format(s.dataType, od::FormatOptions{false, {}, 1.0, true});
+            w.valueText = od::typeClass(s.dataType) == od::TypeClass::Unsigned
+                              ? edsText(s.dataType, *value)
+                              : value->format(s.dataType, od::FormatOptions{false, {}, 1.0, true});
             if (current) {
                 if (const od::SubObject* c = current->entry(index, s.sub); c && !c->parameterValue.isEmpty()) {
                     const auto now = c->interpret(c->parameterValue, node);
                     if (now) {
-                        w.currentText = od::typeClass(s.dataType) == od::TypeClass::Unsigned ? edsText(s.dataType, *now)
-                                                                                            : now->format(s.dataType, od::FormatOptions{false, {}, 1.0, true});
+                        w.currentText = od::typeClass(s.dataType) == od::TypeClass::Unsigned
+                                            ? edsText(s.dataType, *now)
+                                            : now->format(s.dataType, od::FormatOptions{false, {}, 1.0, true});
                         if (scope == ApplyScope::OnlyDifferent && now->encode(s.dataType) == data) {
                             skip(QStringLiteral("unchanged (%1)").arg(w.currentText));
                             continue;
@@ -159,9 +167,12 @@ ApplyPlan DeviceConfiguration::plan(uint8_t node, const od::ObjectDictionary& dc
 // CiA 301 7.5.2.35-38: a PDO's COB-ID may change and its mapping may be written only while the
 // PDO is invalid (COB-ID bit 31), a mapping with sub 0 = 0 first and the count last. The writes
 // of each PDO that changes are put in that order, framed by "invalid" and the final COB-ID.
-void DeviceConfiguration::orderPdoWrites(ApplyPlan& p, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current) {
+void DeviceConfiguration::orderPdoWrites(ApplyPlan& p, const od::ObjectDictionary& dcf,
+                                         const od::ObjectDictionary* current) {
     auto isPdo = [](uint16_t i) { return (i >= 0x1400 && i <= 0x17FF) || (i >= 0x1800 && i <= 0x1BFF); };
-    auto commOf = [](uint16_t i) { return static_cast<uint16_t>((i >= 0x1600 && i < 0x1800) || i >= 0x1A00 ? i - 0x200 : i); };
+    auto commOf = [](uint16_t i) {
+        return static_cast<uint16_t>((i >= 0x1600 && i < 0x1800) || i >= 0x1A00 ? i - 0x200 : i);
+    };
     std::vector<PlannedWrite> out;
     std::vector<PlannedWrite> rest;
     std::map<uint16_t, std::vector<PlannedWrite>> byPdo;
@@ -196,9 +207,11 @@ void DeviceConfiguration::orderPdoWrites(ApplyPlan& p, const od::ObjectDictionar
             for (auto& w : writes) out.push_back(std::move(w));
             continue;
         }
-        const bool mapping = std::any_of(writes.begin(), writes.end(), [map](const PlannedWrite& w) { return w.index == map; });
+        const bool mapping =
+            std::any_of(writes.begin(), writes.end(), [map](const PlannedWrite& w) { return w.index == map; });
         const od::SubObject* countEntry = dcf.entry(map, 0);
-        out.push_back(step(comm, 1, cobEntry->dataType, *finalCob | 0x80000000u, QStringLiteral("invalid while configured")));
+        out.push_back(
+            step(comm, 1, cobEntry->dataType, *finalCob | 0x80000000u, QStringLiteral("invalid while configured")));
         for (auto& w : writes)
             if (w.index == comm && w.sub != 1) out.push_back(std::move(w));
         if (mapping && countEntry) {
@@ -261,65 +274,74 @@ void DeviceConfiguration::step(std::shared_ptr<Run> run) {
         // Plain names, not a structured binding: clang 14 cannot capture those in a lambda.
         const auto index = std::get<0>(run->entries[i]);
         const auto sub = std::get<1>(run->entries[i]);
-        sdo_.upload(run->node, index, sub, [self, run, index, sub](const SdoResult& r) {
-            if (!self) return;
-            od::ObjectDictionary& dict = run->readResult.values;
-            ConfigEntryResult e;
-            e.index = index;
-            e.sub = sub;
-            e.name = dict.displayName(index, sub);
-            const od::SubObject* s = dict.entry(index, sub);
-            if (s) e.type = s->dataType;
-            e.abortCode = r.ok ? 0 : r.abortCode;
-            if (!r.ok) {
-                e.error = r.error;
-                dict.setParameterValue(index, sub, {});
-            } else if (!s) {
-                e.error = QStringLiteral("node %1 %2: not in the dictionary").arg(run->node).arg(objectRef(index, sub));
-            } else {
-                const od::ValueResult v = decodeUpload(s->dataType, r.data, &e.data);
-                if (!v.ok()) {
-                    e.error = QStringLiteral("node %1 %2: %3 (bytes %4)").arg(run->node).arg(objectRef(index, sub), v.error, QString::fromLatin1(r.data.toHex(' ')));
+        sdo_.upload(
+            run->node, index, sub,
+            [self, run, index, sub](const SdoResult& r) {
+                if (!self) return;
+                od::ObjectDictionary& dict = run->readResult.values;
+                ConfigEntryResult e;
+                e.index = index;
+                e.sub = sub;
+                e.name = dict.displayName(index, sub);
+                const od::SubObject* s = dict.entry(index, sub);
+                if (s) e.type = s->dataType;
+                e.abortCode = r.ok ? 0 : r.abortCode;
+                if (!r.ok) {
+                    e.error = r.error;
+                    dict.setParameterValue(index, sub, {});
+                } else if (!s) {
+                    e.error =
+                        QStringLiteral("node %1 %2: not in the dictionary").arg(run->node).arg(objectRef(index, sub));
                 } else {
-                    e.ok = true;
-                    e.valueText = edsText(s->dataType, v.value);
-                    dict.setParameterValue(index, sub, e.valueText);
-                    // Pre-defined error field: only subs 1..n of 1003h:00 = n hold errors; the
-                    // others answer "no data" (CiA 301 7.5.2.5) and are not asked.
-                    if (index == 0x1003 && sub == 0) {
-                        const uint64_t n = v.value.toUInt64().value_or(0);
-                        auto& list = run->entries;
-                        list.erase(std::remove_if(list.begin() + static_cast<std::ptrdiff_t>(run->next), list.end(),
-                                                  [n](const auto& p) { return p.first == 0x1003 && p.second > n; }),
-                                   list.end());
+                    const od::ValueResult v = decodeUpload(s->dataType, r.data, &e.data);
+                    if (!v.ok()) {
+                        e.error = QStringLiteral("node %1 %2: %3 (bytes %4)")
+                                      .arg(run->node)
+                                      .arg(objectRef(index, sub), v.error, QString::fromLatin1(r.data.toHex(' ')));
+                    } else {
+                        e.ok = true;
+                        e.valueText = edsText(s->dataType, v.value);
+                        dict.setParameterValue(index, sub, e.valueText);
+                        // Pre-defined error field: only subs 1..n of 1003h:00 = n hold errors; the
+                        // others answer "no data" (CiA 301 7.5.2.5) and are not asked.
+                        if (index == 0x1003 && sub == 0) {
+                            const uint64_t n = v.value.toUInt64().value_or(0);
+                            auto& list = run->entries;
+                            list.erase(std::remove_if(list.begin() + static_cast<std::ptrdiff_t>(run->next), list.end(),
+                                                      [n](const auto& p) { return p.first == 0x1003 && p.second > n; }),
+                                       list.end());
+                        }
                     }
                 }
-            }
-            if (!e.ok) ++run->readResult.failed;
-            run->readResult.entries.push_back(e);
-            if (run->progress) run->progress(e, static_cast<int>(run->next), run->total());
-            if (self) self->step(run);
-        }, options);
+                if (!e.ok) ++run->readResult.failed;
+                run->readResult.entries.push_back(e);
+                if (run->progress) run->progress(e, static_cast<int>(run->next), run->total());
+                if (self) self->step(run);
+            },
+            options);
     } else {
         const PlannedWrite& w = run->writes[i];
-        sdo_.download(run->node, w.index, w.sub, w.data, [self, run, i](const SdoResult& r) {
-            if (!self) return;
-            const PlannedWrite& w = run->writes[i];
-            ConfigEntryResult e;
-            e.index = w.index;
-            e.sub = w.sub;
-            e.name = w.name;
-            e.type = w.type;
-            e.data = w.data;
-            e.valueText = w.valueText;
-            e.ok = r.ok;
-            e.abortCode = r.ok ? 0 : r.abortCode;
-            e.error = r.error;
-            run->applied.push_back(e);
-            if (!r.ok && self->stopOnRefusal_) run->next = run->writes.size();
-            if (run->progress) run->progress(e, static_cast<int>(run->next), run->total());
-            if (self) self->step(run);
-        }, options);
+        sdo_.download(
+            run->node, w.index, w.sub, w.data,
+            [self, run, i](const SdoResult& r) {
+                if (!self) return;
+                const PlannedWrite& w = run->writes[i];
+                ConfigEntryResult e;
+                e.index = w.index;
+                e.sub = w.sub;
+                e.name = w.name;
+                e.type = w.type;
+                e.data = w.data;
+                e.valueText = w.valueText;
+                e.ok = r.ok;
+                e.abortCode = r.ok ? 0 : r.abortCode;
+                e.error = r.error;
+                run->applied.push_back(e);
+                if (!r.ok && self->stopOnRefusal_) run->next = run->writes.size();
+                if (run->progress) run->progress(e, static_cast<int>(run->next), run->total());
+                if (self) self->step(run);
+            },
+            options);
     }
 }
 

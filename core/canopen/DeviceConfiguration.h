@@ -69,8 +69,8 @@ struct SkippedEntry {
 
 // Which ParameterValue entries of a DCF are written.
 enum class ApplyScope : uint8_t {
-    AllValues,       // every writable entry with a ParameterValue
-    OnlyDifferent,   // those whose value differs from the node's current one (read first)
+    AllValues,      // every writable entry with a ParameterValue
+    OnlyDifferent,  // those whose value differs from the node's current one (read first)
 };
 
 struct ApplyPlan {
@@ -95,18 +95,21 @@ public:
 
     // The entries a full read takes: readable sub-objects (not wo), in index order, without
     // DOMAINs unless asked for.
-    static std::vector<std::pair<uint16_t, uint8_t>> readableEntries(const od::ObjectDictionary& dictionary, const ConfigReadOptions& options = {});
+    static std::vector<std::pair<uint16_t, uint8_t>> readableEntries(const od::ObjectDictionary& dictionary,
+                                                                     const ConfigReadOptions& options = {});
 
     // Reads `entries` (default: readableEntries) of `node`; `progress` after each one.
-    void read(uint8_t node, const od::ObjectDictionary& dictionary, Progress progress, ReadDone done, ConfigReadOptions options = {});
-    void read(uint8_t node, const od::ObjectDictionary& dictionary, std::vector<std::pair<uint16_t, uint8_t>> entries, Progress progress, ReadDone done,
+    void read(uint8_t node, const od::ObjectDictionary& dictionary, Progress progress, ReadDone done,
               ConfigReadOptions options = {});
+    void read(uint8_t node, const od::ObjectDictionary& dictionary, std::vector<std::pair<uint16_t, uint8_t>> entries,
+              Progress progress, ReadDone done, ConfigReadOptions options = {});
 
     // What applying `dcf` to `node` writes. `current` (a read result's dictionary) gives the node's
     // values: with OnlyDifferent, entries whose encoded value equals the current one are
     // skipped (entries without a current value are written). Never written: read-only/const
     // entries, command objects (isCommandObject) and values that do not fit their type.
-    static ApplyPlan plan(uint8_t node, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current, ApplyScope scope);
+    static ApplyPlan plan(uint8_t node, const od::ObjectDictionary& dcf, const od::ObjectDictionary* current,
+                          ApplyScope scope);
     // The entries of a plan's writes (to read them first for OnlyDifferent).
     static std::vector<std::pair<uint16_t, uint8_t>> planEntries(const ApplyPlan& plan);
 

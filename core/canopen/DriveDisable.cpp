@@ -37,9 +37,12 @@ QString DriveDisableOutcome::notSeen() const {
 QString DriveDisableOutcome::summary() const {
     QStringList out;
     for (const Drive& d : drives) {
-        const QString what = d.quickStopSent ? QStringLiteral("Quick stop and Disable voltage") : QStringLiteral("Disable voltage");
-        if (d.seen && d.answered) out << QStringLiteral("%1: %2 sent, seen on the bus and confirmed").arg(d.drive.name(), what);
-        else if (d.seen) out << QStringLiteral("%1: %2 sent and seen on the bus; %3").arg(d.drive.name(), what, d.error);
+        const QString what =
+            d.quickStopSent ? QStringLiteral("Quick stop and Disable voltage") : QStringLiteral("Disable voltage");
+        if (d.seen && d.answered)
+            out << QStringLiteral("%1: %2 sent, seen on the bus and confirmed").arg(d.drive.name(), what);
+        else if (d.seen)
+            out << QStringLiteral("%1: %2 sent and seen on the bus; %3").arg(d.drive.name(), what, d.error);
         else out << QStringLiteral("%1: %2 NOT seen on the bus: %3").arg(d.drive.name(), what, d.error);
     }
     return out.join(u'\n');
@@ -52,20 +55,25 @@ DriveDisableOutcome disableEnabledDrives(MasterContext& context, int timeoutMs) 
     for (const auto& d : drives) out.drives.push_back({d, false, false, false, {}});
     CanBus* bus = context.bus();
     if (!bus || bus->isListenOnly() || bus->state() != CanBus::State::Open) {
-        const QString why = !bus ? QStringLiteral("no bus") : bus->isListenOnly() ? QStringLiteral("the bus is listen-only") : QStringLiteral("the bus is %1").arg(toString(bus->state()));
+        const QString why = !bus                  ? QStringLiteral("no bus")
+                            : bus->isListenOnly() ? QStringLiteral("the bus is listen-only")
+                                                  : QStringLiteral("the bus is %1").arg(toString(bus->state()));
         for (auto& d : out.drives) d.error = why + QStringLiteral(": nothing could be sent");
-        spdlog::warn("cannot disable {} before the bus closes: {}", context.enabledDrives().names().toStdString(), why.toStdString());
+        spdlog::warn("cannot disable {} before the bus closes: {}", context.enabledDrives().names().toStdString(),
+                     why.toStdString());
         return out;
     }
 
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs);
     // One round: the same controlword to `which` drives, straight on the bus, and a wait for
     // their copies and answers (SdoDirect.h).
-    auto round = [&](uint16_t controlword, const std::vector<size_t>& which, std::chrono::steady_clock::time_point until) {
+    auto round = [&](uint16_t controlword, const std::vector<size_t>& which,
+                     std::chrono::steady_clock::time_point until) {
         std::vector<DirectDownload> writes;
         for (size_t i : which) {
             const auto& d = out.drives[i].drive;
-            writes.push_back(DirectDownload::of(d.node, static_cast<uint16_t>(0x6040 + d.axis * 0x800), 0, controlwordBytes(controlword)));
+            writes.push_back(DirectDownload::of(d.node, static_cast<uint16_t>(0x6040 + d.axis * 0x800), 0,
+                                                controlwordBytes(controlword)));
         }
         downloadDirect(context, writes, until, QStringLiteral("the drive"));
         for (size_t k = 0; k < which.size(); ++k) {
@@ -87,13 +95,20 @@ DriveDisableOutcome disableEnabledDrives(MasterContext& context, int timeoutMs) 
     // The Quick stop round gets half the time at most, so Disable voltage always has its turn.
     if (!moving.empty()) round(0x0002, moving, started + std::chrono::milliseconds(timeoutMs / 2));
     round(0x0000, all, deadline);
-    out.waitedMs = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
+    out.waitedMs = static_cast<int>(
+        std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count());
 
     for (const auto& d : out.drives) {
         if (d.seen) context.enabledDrives().forget(d.drive.node, d.drive.axis);
-        if (d.seen && d.answered) spdlog::info("{}: Disable voltage sent before the bus closed, seen on the bus and confirmed", d.drive.name().toStdString());
-        else if (d.seen) spdlog::warn("{}: Disable voltage seen on the bus; {}", d.drive.name().toStdString(), d.error.toStdString());
-        else spdlog::error("{}: Disable voltage NOT seen on the bus before it closed: {}", d.drive.name().toStdString(), d.error.toStdString());
+        if (d.seen && d.answered)
+            spdlog::info("{}: Disable voltage sent before the bus closed, seen on the bus and confirmed",
+                         d.drive.name().toStdString());
+        else if (d.seen)
+            spdlog::warn("{}: Disable voltage seen on the bus; {}", d.drive.name().toStdString(),
+                         d.error.toStdString());
+        else
+            spdlog::error("{}: Disable voltage NOT seen on the bus before it closed: {}", d.drive.name().toStdString(),
+                          d.error.toStdString());
     }
     return out;
 }

@@ -134,7 +134,9 @@ QString modeName(int8_t mode) {
     case 8: return QStringLiteral("Cyclic synchronous position (CSP)");
     case 9: return QStringLiteral("Cyclic synchronous velocity (CSV)");
     case 10: return QStringLiteral("Cyclic synchronous torque (CST)");
-    default: return mode < 0 ? QStringLiteral("Manufacturer-specific mode %1").arg(mode) : QStringLiteral("Reserved mode %1").arg(mode);
+    default:
+        return mode < 0 ? QStringLiteral("Manufacturer-specific mode %1").arg(mode)
+                        : QStringLiteral("Reserved mode %1").arg(mode);
     }
 }
 
@@ -169,15 +171,39 @@ QString statuswordBitMeaning(int bit, bool set) {
     // Plain words for the bits a technician has to act on (CiA 402-2 Table 30 and the usual
     // causes named in the drive manuals' commissioning chapters).
     switch (bit) {
-    case 0: return set ? QString() : QStringLiteral("the drive is not ready: it ignored Shutdown (is it still starting up, or not under CANopen control?)");
-    case 1: return set ? QString() : QStringLiteral("the drive did not switch on: main power, the enable input or safe torque off (STO) may be blocking it");
-    case 2: return set ? QString() : QStringLiteral("the motor is not energised (servo off): check the enable/STO inputs and that the drive accepts CANopen commands");
-    case 3: return set ? QStringLiteral("the drive is in fault: read the error code and the vendor alarm, remove the cause, then fault reset") : QString();
+    case 0:
+        return set ? QString()
+                   : QStringLiteral(
+                         "the drive is not ready: it ignored Shutdown (is it still starting up, or not under CANopen "
+                         "control?)");
+    case 1:
+        return set ? QString()
+                   : QStringLiteral(
+                         "the drive did not switch on: main power, the enable input or safe torque off (STO) may be "
+                         "blocking it");
+    case 2:
+        return set ? QString()
+                   : QStringLiteral(
+                         "the motor is not energised (servo off): check the enable/STO inputs and that the drive "
+                         "accepts CANopen commands");
+    case 3:
+        return set ? QStringLiteral(
+                         "the drive is in fault: read the error code and the vendor alarm, remove the cause, then "
+                         "fault reset")
+                   : QString();
     case 4: return set ? QString() : QStringLiteral("main power is not on (the power stage has no DC bus voltage)");
-    case 5: return set ? QString() : QStringLiteral("quick stop is active: the quick stop command or input is holding the drive");
-    case 6: return set ? QStringLiteral("the drive is locked out (switch on disabled): it needs Shutdown first") : QString();
-    case 7: return set ? QStringLiteral("the drive reports a warning (not a fault): look at the drive's panel") : QString();
-    case 9: return set ? QString() : QStringLiteral("the drive is not under CANopen control (remote off): check its control-mode parameter");
+    case 5:
+        return set ? QString()
+                   : QStringLiteral("quick stop is active: the quick stop command or input is holding the drive");
+    case 6:
+        return set ? QStringLiteral("the drive is locked out (switch on disabled): it needs Shutdown first")
+                   : QString();
+    case 7:
+        return set ? QStringLiteral("the drive reports a warning (not a fault): look at the drive's panel") : QString();
+    case 9:
+        return set ? QString()
+                   : QStringLiteral(
+                         "the drive is not under CANopen control (remote off): check its control-mode parameter");
     case 11: return set ? QStringLiteral("an internal limit is active (torque, speed or position limit)") : QString();
     default: return {};
     }

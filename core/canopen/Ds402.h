@@ -54,14 +54,14 @@ QString statuswordBitMeaning(int bit, bool set);
 
 // Controlword commands (CiA 402-2 Table 27: bits 0-3 and 7).
 enum class Command : uint8_t {
-    Shutdown,          // 0006h
-    SwitchOn,          // 0007h
-    SwitchOnAndEnable, // 000Fh
-    DisableVoltage,    // 0000h
-    QuickStop,         // 0002h
-    DisableOperation,  // 0007h
-    EnableOperation,   // 000Fh
-    FaultReset,        // 0080h (rising edge of bit 7)
+    Shutdown,           // 0006h
+    SwitchOn,           // 0007h
+    SwitchOnAndEnable,  // 000Fh
+    DisableVoltage,     // 0000h
+    QuickStop,          // 0002h
+    DisableOperation,   // 0007h
+    EnableOperation,    // 000Fh
+    FaultReset,         // 0080h (rising edge of bit 7)
 };
 uint16_t controlwordFor(Command c);
 // The command a controlword value encodes, as a name ("Shutdown", "Enable operation", ...).
@@ -69,8 +69,8 @@ QString controlwordCommandName(uint16_t cw);
 QString commandName(Command c);
 
 // Modes of operation 6060h/6061h (CiA 402-2 Table 35).
-QString modeName(int8_t mode);           // "Profile position (PP)", ...
-QString modeShortName(int8_t mode);      // "pp", "pv", "pt", "hm", "ip", "csp", "csv", "cst", "vl"
+QString modeName(int8_t mode);       // "Profile position (PP)", ...
+QString modeShortName(int8_t mode);  // "pp", "pv", "pt", "hm", "ip", "csp", "csv", "cst", "vl"
 std::optional<int8_t> modeFromShortName(const QString& name);
 // 6502h supported drive modes: bit n-1 for mode n (pp bit 0, vl 1, pv 2, pt 3, hm 5, ip 6, csp 7, csv 8, cst 9).
 bool modeSupported(uint32_t supportedModes6502, int8_t mode);

@@ -23,11 +23,11 @@ struct Ds402Result {
     bool ok = false;
     uint16_t statusword = 0;
     ds402::State state = ds402::State::Unknown;
-    int8_t mode = 0;         // setMode: 6061h read back
-    QString error;           // one line: what failed and, for a transition, the missing bits
+    int8_t mode = 0;                              // setMode: 6061h read back
+    QString error;                                // one line: what failed and, for a transition, the missing bits
     ds402::State target = ds402::State::Unknown;  // transition: the state that was waited for
-    QString advice;          // failed transition: what the wrong bits mean, in plain words
-    QString stopReason;      // test move: why it stopped ("button released", "time limit", ...)
+    QString advice;                               // failed transition: what the wrong bits mean, in plain words
+    QString stopReason;                           // test move: why it stopped ("button released", "time limit", ...)
 };
 using Ds402Callback = std::function<void(const Ds402Result&)>;
 
@@ -44,7 +44,7 @@ struct Ds402TestMove {
     uint32_t acceleration = 10000;  // 6083h
     uint32_t deceleration = 10000;  // 6084h
     int maxDurationMs = 3000;
-    int watchdogMs = 400;           // stop when feedWatchdog() was not called for this long
+    int watchdogMs = 400;  // stop when feedWatchdog() was not called for this long
 
     // Limits of a test move (velocity/position units of the drive; conservative for commissioning).
     static constexpr int32_t kMaxVelocity = 200000;
@@ -75,7 +75,7 @@ struct Ds402HomingRequest {
     // The drive takes a new 6098h only while not in Operation enabled (AIMOTOR): when it is
     // enabled and the method differs, home() sends Shutdown first (homing::DriveHoming).
     bool methodOnlyWhileDisabled = false;
-    int timeoutMs = 60000;                 // homing attained or error within this
+    int timeoutMs = 60000;  // homing attained or error within this
 };
 
 // A profile position move (CiA 402-2 §12): what moveTo() writes and how it sets the set-point.
@@ -129,8 +129,8 @@ public:
     // one already running). The drive must be in Operation enabled, else `done` reports it.
     // `sample` gets each monitoring read (about every 50 ms); `done` runs once, after the drive
     // was stopped (ok, stopReason) or, on a fault or a silent drive, disabled (not ok).
-    bool startTestMove(const Ds402TestMove& move, std::function<void(const Ds402MotionSample&)> sample, Ds402Callback done,
-                       QString* why = nullptr);
+    bool startTestMove(const Ds402TestMove& move, std::function<void(const Ds402MotionSample&)> sample,
+                       Ds402Callback done, QString* why = nullptr);
     // The hold-to-run control is still held.
     void feedWatchdog();
     // Stops a running test move (halt, target velocity 0) and waits until it stands still.
@@ -143,11 +143,13 @@ public:
     // (0Fh): the drive stays enabled and homed. `progress` gets each monitoring read (about every
     // 50 ms). A homing error, a fault, the drive leaving Operation enabled, silence or the
     // timeout end with Quick stop and Disable voltage (not ok).
-    void home(const Ds402HomingRequest& request, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done);
+    void home(const Ds402HomingRequest& request, std::function<void(const Ds402MotionSample&)> progress,
+              Ds402Callback done);
     // Profile position move (Ds402ProfileMove.cpp): 6060h = 1 verified, 6081h/6083h/6084h and
     // 607Ah, Operation enabled, then the set-point handshake (bit 4 rising with bits 5/6, wait
     // for set-point acknowledge bit 12, bit 4 low) and target reached (bit 10). Failures as home().
-    void moveTo(const Ds402PositionMove& move, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done);
+    void moveTo(const Ds402PositionMove& move, std::function<void(const Ds402MotionSample&)> progress,
+                Ds402Callback done);
     // Stops a running home()/moveTo() at any time (Ds402Motion.cpp): halt (6040h = 010Fh: bit 8,
     // bit 4 low, which also interrupts homing) and waits until it stands still, or Quick stop
     // (0002h). `done` of the motion then reports not ok with stopReason = `reason`.
@@ -156,7 +158,8 @@ public:
 
     // The steps enable() sends from state `from` (and the mode set first when given), for the
     // dry run: 6040h writes, each followed by the statusword 6041h it must lead to.
-    static CommandScript enableScript(uint8_t node, int axis, ds402::State from, std::optional<int8_t> mode = std::nullopt);
+    static CommandScript enableScript(uint8_t node, int axis, ds402::State from,
+                                      std::optional<int8_t> mode = std::nullopt);
     // The steps of one transition (for the dry run of a single button).
     static std::vector<ScriptStep> transitionSteps(uint8_t node, int axis, ds402::Command command);
 
@@ -191,7 +194,8 @@ private:
     using MotionSteps = std::shared_ptr<std::vector<MotionStep>>;
     // `check` decides after each monitoring read: empty = go on, "ok" = finished (then `finish`
     // runs, e.g. bit 4 low), else the error. nullptr when refused (`done` was called).
-    std::shared_ptr<Motion> beginMotion(bool homing, int timeoutMs, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done,
+    std::shared_ptr<Motion> beginMotion(bool homing, int timeoutMs,
+                                        std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done,
                                         std::function<QString(const Ds402MotionSample&)> check, MotionStep finish);
     MotionStep writeStep(uint16_t base, uint8_t sub, QByteArray data, const QString& what);
     MotionStep controlwordStep(uint16_t cw, const QString& why);

@@ -21,11 +21,13 @@ QByteArray homingLe32(uint32_t v) {
 constexpr uint16_t kHomingAttained = 1u << 12, kHomingError = 1u << 13;
 }  // namespace
 
-void Ds402Controller::home(const Ds402HomingRequest& req, std::function<void(const Ds402MotionSample&)> progress, Ds402Callback done) {
+void Ds402Controller::home(const Ds402HomingRequest& req, std::function<void(const Ds402MotionSample&)> progress,
+                           Ds402Callback done) {
     auto check = [](const Ds402MotionSample& s) -> QString {
         // CiA 402-2 §13.1 bits 13/12/10: 1xx homing error, 011 homing attained (and target
         // reached), 000 in progress, 001 interrupted.
-        if (s.statusword & kHomingError) return QStringLiteral("homing error (statusword 0x%1 bit 13)").arg(s.statusword, 4, 16, QChar(u'0'));
+        if (s.statusword & kHomingError)
+            return QStringLiteral("homing error (statusword 0x%1 bit 13)").arg(s.statusword, 4, 16, QChar(u'0'));
         if ((s.statusword & kHomingAttained) && (s.statusword & ds402::sw::TargetReached)) return QStringLiteral("ok");
         return {};
     };
@@ -47,17 +49,27 @@ void Ds402Controller::home(const Ds402HomingRequest& req, std::function<void(con
                     if (!self) return;
                     if (!r.ok) return next(r.error);
                     if (!r.data.isEmpty() && static_cast<int8_t>(r.data[0]) == method) return next({});
-                    self->transition(Command::Shutdown, [next](const Ds402Result& t) { next(t.ok ? QString() : t.error); });
+                    self->transition(Command::Shutdown,
+                                     [next](const Ds402Result& t) { next(t.ok ? QString() : t.error); });
                 });
             });
         });
     }
     steps->push_back(modeStep(6));
-    if (req.offset) steps->push_back(writeStep(0x607C, 0, homingLe32(uint32_t(*req.offset)), QStringLiteral("%1 (home offset)").arg(*req.offset)));
-    steps->push_back(writeStep(0x6098, 0, QByteArray(1, static_cast<char>(req.method)), QStringLiteral("%1 (homing method)").arg(req.method)));
-    if (req.fastSpeed) steps->push_back(writeStep(0x6099, 1, homingLe32(*req.fastSpeed), QStringLiteral("%1 (speed during search for switch)").arg(*req.fastSpeed)));
-    if (req.slowSpeed) steps->push_back(writeStep(0x6099, 2, homingLe32(*req.slowSpeed), QStringLiteral("%1 (speed during search for zero)").arg(*req.slowSpeed)));
-    if (req.acceleration) steps->push_back(writeStep(0x609A, 0, homingLe32(*req.acceleration), QStringLiteral("%1 (homing acceleration)").arg(*req.acceleration)));
+    if (req.offset)
+        steps->push_back(writeStep(0x607C, 0, homingLe32(uint32_t(*req.offset)),
+                                   QStringLiteral("%1 (home offset)").arg(*req.offset)));
+    steps->push_back(writeStep(0x6098, 0, QByteArray(1, static_cast<char>(req.method)),
+                               QStringLiteral("%1 (homing method)").arg(req.method)));
+    if (req.fastSpeed)
+        steps->push_back(writeStep(0x6099, 1, homingLe32(*req.fastSpeed),
+                                   QStringLiteral("%1 (speed during search for switch)").arg(*req.fastSpeed)));
+    if (req.slowSpeed)
+        steps->push_back(writeStep(0x6099, 2, homingLe32(*req.slowSpeed),
+                                   QStringLiteral("%1 (speed during search for zero)").arg(*req.slowSpeed)));
+    if (req.acceleration)
+        steps->push_back(writeStep(0x609A, 0, homingLe32(*req.acceleration),
+                                   QStringLiteral("%1 (homing acceleration)").arg(*req.acceleration)));
     steps->push_back(enableStep());
     // Bit 4 low first so that 1Fh is a rising edge whatever was sent before.
     steps->push_back(controlwordStep(0x000F, QStringLiteral("Enable operation, homing start (bit 4) low")));

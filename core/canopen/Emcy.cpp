@@ -88,8 +88,14 @@ QString emcyCodeText(uint16_t code) {
 }
 
 QStringList errorRegisterBits(uint8_t reg) {
-    static const char* names[8] = {"generic error", "current", "voltage", "temperature",
-                                   "communication error", "device profile specific", "reserved", "manufacturer specific"};
+    static const char* names[8] = {"generic error",
+                                   "current",
+                                   "voltage",
+                                   "temperature",
+                                   "communication error",
+                                   "device profile specific",
+                                   "reserved",
+                                   "manufacturer specific"};
     QStringList out;
     for (int i = 0; i < 8; ++i)
         if (reg & (1u << i)) out << QString::fromLatin1(names[i]);

@@ -13,7 +13,8 @@ QString EnabledDrives::Drive::name() const {
 
 void EnabledDrives::noteControlword(uint8_t node, int axis, uint16_t controlword) {
     std::lock_guard lock(mutex_);
-    auto it = std::find_if(drives_.begin(), drives_.end(), [&](const Drive& d) { return d.node == node && d.axis == axis; });
+    auto it =
+        std::find_if(drives_.begin(), drives_.end(), [&](const Drive& d) { return d.node == node && d.axis == axis; });
     if (!enablesVoltage(controlword)) {
         if (it != drives_.end()) drives_.erase(it);
         return;
@@ -30,7 +31,8 @@ void EnabledDrives::forget(uint8_t node, int axis) {
 std::vector<EnabledDrives::Drive> EnabledDrives::drives() const {
     std::lock_guard lock(mutex_);
     auto out = drives_;
-    std::sort(out.begin(), out.end(), [](const Drive& a, const Drive& b) { return a.node != b.node ? a.node < b.node : a.axis < b.axis; });
+    std::sort(out.begin(), out.end(),
+              [](const Drive& a, const Drive& b) { return a.node != b.node ? a.node < b.node : a.axis < b.axis; });
     return out;
 }
 

@@ -51,14 +51,16 @@ void FrameDispatcher::dispatch(const CanFrame* frames, size_t count) {
     bool any = false;
     for (size_t i = 0; i < count && !any; ++i) {
         const CanFrame& f = frames[i];
-        any = !f.isExtended() && !f.isTx() && !f.isError() && f.id < 2048 && wanted_[f.id].load(std::memory_order_relaxed);
+        any = !f.isExtended() && !f.isTx() && !f.isError() && f.id < 2048 &&
+              wanted_[f.id].load(std::memory_order_relaxed);
     }
     if (!any) return;  // the common case: nothing for the services in this batch
 
     std::lock_guard lock(mutex_);
     for (size_t i = 0; i < count; ++i) {
         const CanFrame& f = frames[i];
-        if (f.isExtended() || f.isTx() || f.isError() || f.id >= 2048 || !wanted_[f.id].load(std::memory_order_relaxed)) continue;
+        if (f.isExtended() || f.isTx() || f.isError() || f.id >= 2048 || !wanted_[f.id].load(std::memory_order_relaxed))
+            continue;
         for (auto& s : subs_)
             if (std::find(s.cobIds.begin(), s.cobIds.end(), f.id) != s.cobIds.end()) s.pending.push_back(f);
     }
@@ -114,7 +116,9 @@ CaptureSession::Consumer FrameDispatcher::consumer() {
         for (size_t i = 0; i < count; ++i) {
             const FrameNo n = static_cast<FrameNo>(first + i);
             const TraceRecord& r = store.record(n);
-            if ((r.flags & (CanFrame::Extended | CanFrame::Tx | CanFrame::Error)) || r.id >= 2048 || !wanted_[r.id].load(std::memory_order_relaxed)) continue;
+            if ((r.flags & (CanFrame::Extended | CanFrame::Tx | CanFrame::Error)) || r.id >= 2048 ||
+                !wanted_[r.id].load(std::memory_order_relaxed))
+                continue;
             wanted.push_back(store.frame(n));
         }
         if (!wanted.empty()) dispatch(wanted.data(), wanted.size());

@@ -57,7 +57,7 @@ private:
         std::vector<uint32_t> cobIds;
         std::shared_ptr<Handler> handler;
         std::shared_ptr<std::atomic<bool>> alive;  // false once unsubscribed (checked on the subscriber's thread)
-        std::vector<CanFrame> pending;  // ingest thread, under mutex_
+        std::vector<CanFrame> pending;             // ingest thread, under mutex_
     };
     struct WatchEntry {
         int id = 0;

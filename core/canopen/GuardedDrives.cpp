@@ -30,7 +30,9 @@ void GuardedDrives::setHeartbeat(uint8_t node, uint16_t periodMs) {
     if (periodMs > 0) heartbeatMs_ = periodMs;
 }
 
-uint16_t GuardedDrives::heartbeatPeriodMs() const { return heartbeat_.isRunning() ? heartbeat_.periodMs() : heartbeatMs_; }
+uint16_t GuardedDrives::heartbeatPeriodMs() const {
+    return heartbeat_.isRunning() ? heartbeat_.periodMs() : heartbeatMs_;
+}
 uint8_t GuardedDrives::heartbeatNode() const { return heartbeat_.isRunning() ? heartbeat_.nodeId() : heartbeatNode_; }
 
 void GuardedDrives::set(const Key& key, State state, const QString& text) {
@@ -49,7 +51,9 @@ void GuardedDrives::poll() {
         if (entries_.count(key)) continue;
         CanBus* bus = context_.bus();
         if (bus && bus->isListenOnly()) {
-            set(key, State::Failed, QStringLiteral("%1: the bus is listen-only: CoScope sends nothing, so no heartbeat and no guard").arg(driveName(key.first, key.second)));
+            set(key, State::Failed,
+                QStringLiteral("%1: the bus is listen-only: CoScope sends nothing, so no heartbeat and no guard")
+                    .arg(driveName(key.first, key.second)));
             continue;
         }
         const auto answer = answers_.find(key.first);
@@ -93,7 +97,11 @@ void GuardedDrives::arm(const Key& key) {
     const QString name = driveName(node, axis);
     if (!heartbeat_.isRunning()) {
         if (heartbeatNode_ == node) {
-            set(key, State::Failed, QStringLiteral("%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings").arg(name).arg(node));
+            set(key, State::Failed,
+                QStringLiteral(
+                    "%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings")
+                    .arg(name)
+                    .arg(node));
             return;
         }
         heartbeat_.setNodeId(heartbeatNode_);
@@ -104,9 +112,14 @@ void GuardedDrives::arm(const Key& key) {
             return;
         }
         startedHeartbeat_ = true;
-        spdlog::info("CoScope's heartbeat started for the heartbeat guard: node {}, every {} ms", heartbeatNode_, heartbeatMs_);
+        spdlog::info("CoScope's heartbeat started for the heartbeat guard: node {}, every {} ms", heartbeatNode_,
+                     heartbeatMs_);
     } else if (heartbeat_.nodeId() == node) {
-        set(key, State::Failed, QStringLiteral("%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings").arg(name).arg(node));
+        set(key, State::Failed,
+            QStringLiteral(
+                "%1: CoScope's heartbeat node-ID %2 is the drive's own; choose another in the master settings")
+                .arg(name)
+                .arg(node));
         return;
     }
     Entry& e = entries_[key];
@@ -118,7 +131,8 @@ void GuardedDrives::arm(const Key& key) {
     e.guard->arm(heartbeat_, [self, key](const HeartbeatGuardResult& r) {
         if (!self || self->closing_) return;
         if (!r.ok) {
-            spdlog::warn("heartbeat guard of {}: {}", driveName(key.first, key.second).toStdString(), r.error.toStdString());
+            spdlog::warn("heartbeat guard of {}: {}", driveName(key.first, key.second).toStdString(),
+                         r.error.toStdString());
             self->entries_[key].guard.reset();
             self->set(key, State::Failed, r.error);
             self->stopHeartbeatWhenFree();
@@ -139,7 +153,8 @@ void GuardedDrives::release(const Key& key) {
         if (!self || self->closing_) return;
         if (!r.ok) {
             // Still armed: the heartbeat goes on (the drive would stop if it stopped).
-            spdlog::warn("putting back the heartbeat guard of {}: {}", driveName(key.first, key.second).toStdString(), r.error.toStdString());
+            spdlog::warn("putting back the heartbeat guard of {}: {}", driveName(key.first, key.second).toStdString(),
+                         r.error.toStdString());
             self->set(key, State::Failed, r.error);
             return;
         }
@@ -189,7 +204,8 @@ std::vector<GuardedDrives::PutBack> GuardedDrives::takePutBack() {
     return out;
 }
 
-std::vector<PutBackOutcome> putBackDirect(MasterContext& context, std::vector<GuardedDrives::PutBack> putBack, const DriveDisableOutcome& disabled, int timeoutMs) {
+std::vector<PutBackOutcome> putBackDirect(MasterContext& context, std::vector<GuardedDrives::PutBack> putBack,
+                                          const DriveDisableOutcome& disabled, int timeoutMs) {
     std::vector<PutBackOutcome> out;
     std::vector<DirectDownload> writes;
     std::vector<size_t> owner;  // writes[i] belongs to out[owner[i]]
@@ -201,7 +217,9 @@ std::vector<PutBackOutcome> putBackDirect(MasterContext& context, std::vector<Gu
             if (d.drive.node == p.node && d.drive.axis == p.axis && !(d.seen && d.answered)) mayBeOn = true;
         if (mayBeOn) {
             o.keptArmed = true;
-            o.text = QStringLiteral("%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), so it stops by itself when the heartbeat stops")
+            o.text = QStringLiteral(
+                         "%1 may still be enabled: it keeps watching CoScope's heartbeat (1016h, 6007h not put back), "
+                         "so it stops by itself when the heartbeat stops")
                          .arg(driveName(p.node, p.axis));
         } else {
             for (auto& w : p.writes) writes.push_back(std::move(w)), owner.push_back(out.size());
@@ -211,7 +229,9 @@ std::vector<PutBackOutcome> putBackDirect(MasterContext& context, std::vector<Gu
     CanBus* bus = context.bus();
     if (!writes.empty() && (!bus || bus->isListenOnly() || bus->state() != CanBus::State::Open)) {
         for (size_t i = 0; i < writes.size(); ++i)
-            out[owner[i]].text = QStringLiteral("%1: the old 1016h/6007h could not be put back (the bus is closed); check them").arg(driveName(out[owner[i]].node, out[owner[i]].axis));
+            out[owner[i]].text =
+                QStringLiteral("%1: the old 1016h/6007h could not be put back (the bus is closed); check them")
+                    .arg(driveName(out[owner[i]].node, out[owner[i]].axis));
         return out;
     }
     downloadDirect(context, writes, std::chrono::steady_clock::now() + std::chrono::milliseconds(timeoutMs));
@@ -224,8 +244,10 @@ std::vector<PutBackOutcome> putBackDirect(MasterContext& context, std::vector<Gu
         PutBackOutcome& o = out[k];
         if (o.keptArmed) continue;
         o.putBack = !failures.count(k);
-        o.text = o.putBack ? QStringLiteral("%1: heartbeat consumer 1016h and 6007h put back before the bus closed").arg(driveName(o.node, o.axis))
-                           : QStringLiteral("%1: the old 1016h/6007h were not all put back (%2); check them").arg(driveName(o.node, o.axis), failures[k].join(QStringLiteral("; ")));
+        o.text = o.putBack ? QStringLiteral("%1: heartbeat consumer 1016h and 6007h put back before the bus closed")
+                                 .arg(driveName(o.node, o.axis))
+                           : QStringLiteral("%1: the old 1016h/6007h were not all put back (%2); check them")
+                                 .arg(driveName(o.node, o.axis), failures[k].join(QStringLiteral("; ")));
         if (o.putBack) spdlog::info("{}", o.text.toStdString());
         else spdlog::error("{}", o.text.toStdString());
     }

@@ -35,7 +35,15 @@ class SdoClient;
 class GuardedDrives : public QObject {
     Q_OBJECT
 public:
-    enum class State { Undecided, Declined, Arming, Armed, Releasing, Released, Failed };  // Released: put back, then forgotten
+    enum class State {
+        Undecided,
+        Declined,
+        Arming,
+        Armed,
+        Releasing,
+        Released,
+        Failed
+    };  // Released: put back, then forgotten
     struct Drive {
         uint8_t node = 0;
         int axis = 0;

@@ -33,7 +33,8 @@ QString subText(uint8_t sub) { return QStringLiteral("%1").arg(int(sub), 2, 16, 
 // What a drive without 6007h does when the heartbeat it consumes stops, where its manual says.
 QString makersReaction(const QString& dictionary) {
     if (dictionary == u"delta-asda-a2")
-        return QStringLiteral("alarm AL170 (servo on), a fault: it stops on its fault reaction 605Eh (extract-delta §6.3)");
+        return QStringLiteral(
+            "alarm AL170 (servo on), a fault: it stops on its fault reaction 605Eh (extract-delta §6.3)");
     if (dictionary == u"aimotor") return QStringLiteral("alarm Er.D03 \"CAN communication interrupted\", a fault");
     return QStringLiteral("as its maker defines");
 }
@@ -78,13 +79,15 @@ void HeartbeatGuard::finish(const HeartbeatGuardCallback& done, HeartbeatGuardRe
     changing_ = false;
     if (!done) return;
     // Always later, never from inside arm()/release().
-    QMetaObject::invokeMethod(this, [done, r] { done(r); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [done, r] { done(r); }, Qt::QueuedConnection);
 }
 
 void HeartbeatGuard::write(uint16_t index, uint8_t sub, const QByteArray& data, const QString& what, SdoCallback then) {
     // As Ds402Controller reports its writes: "node 3: 1016h:01 = ...", "node 3: 6007h = ...".
     const QString object = QStringLiteral("%1").arg(index, 4, 16, QChar(u'0')).toUpper() + u'h';
-    if (onSend_) onSend_(QStringLiteral("%1: %2 = %3").arg(prefix(), sub ? object + u':' + subText(sub) : object, what));
+    if (onSend_)
+        onSend_(QStringLiteral("%1: %2 = %3").arg(prefix(), sub ? object + u':' + subText(sub) : object, what));
     sdo_.download(node_, index, sub, data, std::move(then));
 }
 
@@ -93,11 +96,17 @@ void HeartbeatGuard::arm(const HeartbeatProducer& producer, HeartbeatGuardCallba
     if (busy_) fail.error = QStringLiteral("%1: the heartbeat guard is busy").arg(prefix());
     else if (armed_) fail.error = QStringLiteral("%1: the heartbeat guard is already armed").arg(prefix());
     else if (!producer.isRunning())
-        fail.error = QStringLiteral("%1: CoScope's heartbeat is not running; start it before arming the guard (nothing changed)").arg(prefix());
+        fail.error =
+            QStringLiteral("%1: CoScope's heartbeat is not running; start it before arming the guard (nothing changed)")
+                .arg(prefix());
     const uint16_t time = consumerTimeMs_ ? consumerTimeMs_ : consumerTimeFor(producer.periodMs());
     if (fail.error.isEmpty() && time <= producer.periodMs())
-        fail.error = QStringLiteral("%1: a consumer time of %2 ms does not cover the heartbeat period of %3 ms (use at least twice the period; nothing changed)")
-                         .arg(prefix()).arg(time).arg(producer.periodMs());
+        fail.error = QStringLiteral(
+                         "%1: a consumer time of %2 ms does not cover the heartbeat period of %3 ms (use at least "
+                         "twice the period; nothing changed)")
+                         .arg(prefix())
+                         .arg(time)
+                         .arg(producer.periodMs());
     if (!fail.error.isEmpty()) {
         finish(done, fail);
         return;
@@ -113,14 +122,19 @@ void HeartbeatGuard::arm(const HeartbeatProducer& producer, HeartbeatGuardCallba
         if (!self) return;
         HeartbeatGuardResult out;
         if (!r.ok || r.data.isEmpty()) {
-            out.error = missing(r) ? QStringLiteral("%1 has no heartbeat consumer (1016h): it cannot watch CoScope's heartbeat (nothing changed)").arg(self->prefix())
-                                   : r.error + QStringLiteral(" (nothing changed)");
+            out.error =
+                missing(r)
+                    ? QStringLiteral(
+                          "%1 has no heartbeat consumer (1016h): it cannot watch CoScope's heartbeat (nothing changed)")
+                          .arg(self->prefix())
+                    : r.error + QStringLiteral(" (nothing changed)");
             self->finish(a->done, out);
             return;
         }
         const uint8_t count = static_cast<uint8_t>(r.data[0]);
         if (count == 0) {
-            out.error = QStringLiteral("%1 has no heartbeat consumer entries (1016h:00 = 0; nothing changed)").arg(self->prefix());
+            out.error = QStringLiteral("%1 has no heartbeat consumer entries (1016h:00 = 0; nothing changed)")
+                            .arg(self->prefix());
             self->finish(a->done, out);
             return;
         }
@@ -153,8 +167,12 @@ void HeartbeatGuard::readEntries(std::shared_ptr<Arming> a, uint8_t sub) {
             QStringList watched;
             for (uint32_t e : a->entries) watched << QString::number(producerOf(e));
             HeartbeatGuardResult out;
-            out.error = QStringLiteral("%1: all %2 heartbeat consumer entries (1016h) are in use, watching node %3 (nothing changed)")
-                            .arg(self->prefix()).arg(a->entries.size()).arg(watched.join(QStringLiteral(", ")));
+            out.error =
+                QStringLiteral(
+                    "%1: all %2 heartbeat consumer entries (1016h) are in use, watching node %3 (nothing changed)")
+                    .arg(self->prefix())
+                    .arg(a->entries.size())
+                    .arg(watched.join(QStringLiteral(", ")));
             self->finish(a->done, out);
             return;
         }
@@ -167,7 +185,9 @@ void HeartbeatGuard::readAbortOption(std::shared_ptr<Arming> a) {
     sdo_.upload(node_, abortIndex(), 0, [self, a](const SdoResult& r) {
         if (!self) return;
         const uint32_t raw = readLe(r.data.left(2));
-        if (r.ok && !r.data.isEmpty()) a->oldOption = r.data.size() >= 2 ? static_cast<int16_t>(raw) : static_cast<int16_t>(static_cast<int8_t>(raw));
+        if (r.ok && !r.data.isEmpty())
+            a->oldOption =
+                r.data.size() >= 2 ? static_cast<int16_t>(raw) : static_cast<int16_t>(static_cast<int8_t>(raw));
         else if (!missing(r)) {
             HeartbeatGuardResult out;
             out.error = r.error + QStringLiteral(" (nothing changed)");
@@ -196,51 +216,63 @@ void HeartbeatGuard::writeAll(std::shared_ptr<Arming> a) {
     oldEntry_ = old;
     oldAbortOption_ = a->oldOption;
     auto writeConsumer = [self, a, entry, old]() {
-        self->write(0x1016, a->sub, le(entry, 4),
-                    QStringLiteral("%1 (watch node %2's heartbeat, %3 ms)").arg(hex32(entry)).arg(a->producer).arg(a->timeMs),
-                    [self, a, entry, old](const SdoResult& r) {
-                        if (!self) return;
-                        HeartbeatGuardResult out;
-                        out.consumerSub = a->sub;
-                        out.consumerEntry = entry;
-                        if (!r.ok) {
-                            out.error = r.error;
-                            if (!a->oldOption) {
-                                out.error += QStringLiteral(" (nothing changed)");
-                                self->finish(a->done, out);
-                                return;
-                            }
-                            // Put 6007h back; what that write says ends the report.
-                            const int16_t back = *a->oldOption;
-                            self->write(self->abortIndex(), 0, le(uint16_t(back), 2), QStringLiteral("%1 (%2, put back)").arg(back).arg(abortOptionName(back)),
-                                        [self, a, out](const SdoResult& b) mutable {
-                                            if (!self) return;
-                                            out.error += b.ok ? QStringLiteral("; 6007h put back") : QStringLiteral("; putting 6007h back failed: ") + b.error;
-                                            self->finish(a->done, out);
-                                        });
-                            return;
-                        }
-                        self->armed_ = true;
-                        self->sub_ = a->sub;
-                        self->oldEntry_ = old;
-                        self->newEntry_ = entry;
-                        self->oldAbortOption_ = a->oldOption;
-                        out.ok = true;
-                        if (a->oldOption) out.abortOption = self->abortOption_;
-                        const QString reaction = a->oldOption
-                            ? QStringLiteral("6007h = %1 (%2)").arg(self->abortOption_).arg(abortOptionName(self->abortOption_))
-                            : QStringLiteral("no 6007h, so the drive's own reaction: %1").arg(makersReaction(self->sdo_.context().nodeDictionary(self->node_)));
-                        out.summary = QStringLiteral("%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5")
-                                          .arg(self->prefix()).arg(a->producer).arg(subText(a->sub)).arg(a->timeMs).arg(reaction);
+        self->write(
+            0x1016, a->sub, le(entry, 4),
+            QStringLiteral("%1 (watch node %2's heartbeat, %3 ms)").arg(hex32(entry)).arg(a->producer).arg(a->timeMs),
+            [self, a, entry, old](const SdoResult& r) {
+                if (!self) return;
+                HeartbeatGuardResult out;
+                out.consumerSub = a->sub;
+                out.consumerEntry = entry;
+                if (!r.ok) {
+                    out.error = r.error;
+                    if (!a->oldOption) {
+                        out.error += QStringLiteral(" (nothing changed)");
                         self->finish(a->done, out);
-                    });
+                        return;
+                    }
+                    // Put 6007h back; what that write says ends the report.
+                    const int16_t back = *a->oldOption;
+                    self->write(self->abortIndex(), 0, le(uint16_t(back), 2),
+                                QStringLiteral("%1 (%2, put back)").arg(back).arg(abortOptionName(back)),
+                                [self, a, out](const SdoResult& b) mutable {
+                                    if (!self) return;
+                                    out.error += b.ok ? QStringLiteral("; 6007h put back")
+                                                      : QStringLiteral("; putting 6007h back failed: ") + b.error;
+                                    self->finish(a->done, out);
+                                });
+                    return;
+                }
+                self->armed_ = true;
+                self->sub_ = a->sub;
+                self->oldEntry_ = old;
+                self->newEntry_ = entry;
+                self->oldAbortOption_ = a->oldOption;
+                out.ok = true;
+                if (a->oldOption) out.abortOption = self->abortOption_;
+                const QString reaction =
+                    a->oldOption ? QStringLiteral("6007h = %1 (%2)")
+                                       .arg(self->abortOption_)
+                                       .arg(abortOptionName(self->abortOption_))
+                                 : QStringLiteral("no 6007h, so the drive's own reaction: %1")
+                                       .arg(makersReaction(self->sdo_.context().nodeDictionary(self->node_)));
+                out.summary =
+                    QStringLiteral("%1 watches CoScope's heartbeat (node %2) in 1016h:%3 with %4 ms; when it stops: %5")
+                        .arg(self->prefix())
+                        .arg(a->producer)
+                        .arg(subText(a->sub))
+                        .arg(a->timeMs)
+                        .arg(reaction);
+                self->finish(a->done, out);
+            });
     };
     if (!a->oldOption) {
         writeConsumer();
         return;
     }
     // 6007h first: the reaction is in place before the drive starts watching.
-    write(abortIndex(), 0, le(uint16_t(abortOption_), 2), QStringLiteral("%1 (%2 when CoScope's heartbeat stops)").arg(abortOption_).arg(abortOptionName(abortOption_)),
+    write(abortIndex(), 0, le(uint16_t(abortOption_), 2),
+          QStringLiteral("%1 (%2 when CoScope's heartbeat stops)").arg(abortOption_).arg(abortOptionName(abortOption_)),
           [self, a, writeConsumer](const SdoResult& r) {
               if (!self) return;
               if (!r.ok) {
@@ -273,36 +305,40 @@ void HeartbeatGuard::release(HeartbeatGuardCallback done) {
         if (!self) return;
         self->armed_ = false;
         out.ok = true;
-        out.summary = QStringLiteral("%1: heartbeat consumer 1016h:%2 = %3%4 put back").arg(self->prefix(), subText(self->sub_), hex32(self->oldEntry_))
-                          .arg(self->oldAbortOption_ ? QStringLiteral(" and 6007h = %1").arg(*self->oldAbortOption_) : QString());
+        out.summary =
+            QStringLiteral("%1: heartbeat consumer 1016h:%2 = %3%4 put back")
+                .arg(self->prefix(), subText(self->sub_), hex32(self->oldEntry_))
+                .arg(self->oldAbortOption_ ? QStringLiteral(" and 6007h = %1").arg(*self->oldAbortOption_) : QString());
         self->finish(done, out);
     };
     // The entry first: the drive stops watching before its reaction changes.
-    write(0x1016, sub_, le(oldEntry_, 4), QStringLiteral("%1 (put back)").arg(hex32(oldEntry_)), [self, done, r, finished](const SdoResult& w) {
-        if (!self) return;
-        if (!w.ok) {
-            HeartbeatGuardResult out = r;
-            out.error = w.error + QStringLiteral(" (the guard stays armed)");
-            self->finish(done, out);
-            return;
-        }
-        if (!self->oldAbortOption_) {
-            finished(r);
-            return;
-        }
-        const int16_t back = *self->oldAbortOption_;
-        self->write(self->abortIndex(), 0, le(uint16_t(back), 2), QStringLiteral("%1 (%2, put back)").arg(back).arg(abortOptionName(back)),
-                    [self, done, r, finished](const SdoResult& b) {
-                        if (!self) return;
-                        if (!b.ok) {
-                            HeartbeatGuardResult out = r;
-                            out.error = b.error + QStringLiteral(" (1016h was put back; 6007h was not)");
-                            self->finish(done, out);
-                            return;
-                        }
-                        finished(r);
-                    });
-    });
+    write(0x1016, sub_, le(oldEntry_, 4), QStringLiteral("%1 (put back)").arg(hex32(oldEntry_)),
+          [self, done, r, finished](const SdoResult& w) {
+              if (!self) return;
+              if (!w.ok) {
+                  HeartbeatGuardResult out = r;
+                  out.error = w.error + QStringLiteral(" (the guard stays armed)");
+                  self->finish(done, out);
+                  return;
+              }
+              if (!self->oldAbortOption_) {
+                  finished(r);
+                  return;
+              }
+              const int16_t back = *self->oldAbortOption_;
+              self->write(self->abortIndex(), 0, le(uint16_t(back), 2),
+                          QStringLiteral("%1 (%2, put back)").arg(back).arg(abortOptionName(back)),
+                          [self, done, r, finished](const SdoResult& b) {
+                              if (!self) return;
+                              if (!b.ok) {
+                                  HeartbeatGuardResult out = r;
+                                  out.error = b.error + QStringLiteral(" (1016h was put back; 6007h was not)");
+                                  self->finish(done, out);
+                                  return;
+                              }
+                              finished(r);
+                          });
+          });
 }
 
 }  // namespace coscope::canopen

@@ -18,10 +18,10 @@ namespace coscope::canopen {
 // Outcome of arming or releasing a HeartbeatGuard.
 struct HeartbeatGuardResult {
     bool ok = false;
-    QString error;    // one line; "nothing changed" or what was put back when arming failed
-    QString summary;  // what the node now does when CoScope's heartbeat stops (or was put back)
-    uint8_t consumerSub = 0;        // the 1016h sub-index used
-    uint32_t consumerEntry = 0;     // the value written there (node-ID << 16 | time ms)
+    QString error;                       // one line; "nothing changed" or what was put back when arming failed
+    QString summary;                     // what the node now does when CoScope's heartbeat stops (or was put back)
+    uint8_t consumerSub = 0;             // the 1016h sub-index used
+    uint32_t consumerEntry = 0;          // the value written there (node-ID << 16 | time ms)
     std::optional<int16_t> abortOption;  // 6007h written; nullopt when the node has none
 };
 using HeartbeatGuardCallback = std::function<void(const HeartbeatGuardResult&)>;

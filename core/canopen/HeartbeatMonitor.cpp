@@ -16,7 +16,8 @@ HeartbeatMonitor::HeartbeatMonitor(MasterContext& context, QObject* parent)
         ids.push_back(0x700 + n);
         ids.push_back(0x80 + n);
     }
-    subscription_ = context_.dispatcher().subscribe(this, std::move(ids), [this](const std::vector<CanFrame>& f) { onFrames(f); });
+    subscription_ =
+        context_.dispatcher().subscribe(this, std::move(ids), [this](const std::vector<CanFrame>& f) { onFrames(f); });
     connect(timer_, &QTimer::timeout, this, &HeartbeatMonitor::onCheck);
     timer_->setInterval(20);  // runs while a node is watched
 }
@@ -59,21 +60,24 @@ bool HeartbeatMonitor::setGuarding(uint8_t node, int guardTimeMs, int lifeTimeFa
     w.missed = std::make_shared<std::atomic<uint64_t>>(0);
     // Each request is answered before the next goes out (the guard time is the period; CiA 301
     // §7.2.8.3.2.1): a request of ours followed by another without an answer between was missed.
-    w.orderWatch = context_.dispatcher().addWatch({0x700u + node}, [missed = w.missed, pending = false](const CanFrame& f) mutable {
-        if (f.isTx() && f.isRemote()) {
-            if (pending) missed->fetch_add(1, std::memory_order_relaxed);
-            pending = true;
-        } else if (!f.isTx() && !f.isRemote() && f.len >= 1) {
-            pending = false;
-        }
-    });
+    w.orderWatch = context_.dispatcher().addWatch({0x700u + node},
+                                                  [missed = w.missed, pending = false](const CanFrame& f) mutable {
+                                                      if (f.isTx() && f.isRemote()) {
+                                                          if (pending) missed->fetch_add(1, std::memory_order_relaxed);
+                                                          pending = true;
+                                                      } else if (!f.isTx() && !f.isRemote() && f.len >= 1) {
+                                                          pending = false;
+                                                      }
+                                                  });
     // The request: RTR on 700h + node-ID (CiA 301 §7.2.8.3.2.1; DLC 1 as most masters send it).
     PeriodicSender::Job job;
     job.frame.id = 0x700u + node;
     job.frame.len = 1;
     job.frame.flags = CanFrame::Remote;
     job.periodNs = int64_t(guardTimeMs) * 1'000'000;
-    job.afterSend = [requests = w.requests](const CanFrame&, uint64_t sent) { requests->store(sent, std::memory_order_release); };
+    job.afterSend = [requests = w.requests](const CanFrame&, uint64_t sent) {
+        requests->store(sent, std::memory_order_release);
+    };
     QString why;
     w.job = context_.periodic().add(std::move(job), &why);
     if (!w.job) {
@@ -142,11 +146,16 @@ void HeartbeatMonitor::onErrorControl(Watch& w, uint8_t node, uint8_t byte, int6
         return;
     }
     const uint64_t sent = w.requests->load(std::memory_order_acquire);
-    if (state == static_cast<uint8_t>(NmtState::BootUp) || sent <= w.answeredUpTo) return;  // not an answer to a request of ours
+    if (state == static_cast<uint8_t>(NmtState::BootUp) || sent <= w.answeredUpTo)
+        return;  // not an answer to a request of ours
     w.answeredUpTo = sent;
     if (!w.firstAnswer && toggle != w.expectToggle) {
         w.expectToggle = !toggle;
-        if (!w.errorReported) emit guardingError(node, QStringLiteral("node %1: node guarding answer with toggle bit %2, %3 expected").arg(node).arg(int(toggle)).arg(int(!toggle)));
+        if (!w.errorReported)
+            emit guardingError(node, QStringLiteral("node %1: node guarding answer with toggle bit %2, %3 expected")
+                                         .arg(node)
+                                         .arg(int(toggle))
+                                         .arg(int(!toggle)));
         w.errorReported = true;
         if (w.shown.status != Status::Lost) setStatus(node, w, Status::Late, 1);
         return;
@@ -208,7 +217,8 @@ void HeartbeatMonitor::onCheck() {
         const int64_t since = w.shown.lastNs ? w.shown.lastNs : w.startNs;
         if (!w.shown.guarding()) {
             if (now - since > int64_t(w.shown.consumerTimeMs) * 1'000'000) setStatus(node, w, Status::Lost);
-            else if (w.shown.status == Status::Ok && w.periodNs && now - since > w.periodNs * 3 / 2) setStatus(node, w, Status::Late);
+            else if (w.shown.status == Status::Ok && w.periodNs && now - since > w.periodNs * 3 / 2)
+                setStatus(node, w, Status::Late);
             continue;
         }
         // Requests missed (a guarding error), as the ingest thread saw them in bus order.
@@ -216,7 +226,11 @@ void HeartbeatMonitor::onCheck() {
         const int missed = static_cast<int>(missedNow - w.missedCounted);
         w.missedCounted = missedNow;
         if (missed > 0) {
-            if (!w.errorReported) emit guardingError(node, QStringLiteral("node %1: no answer to a node guarding request within the guard time %2 ms").arg(node).arg(w.shown.guardTimeMs));
+            if (!w.errorReported)
+                emit guardingError(
+                    node, QStringLiteral("node %1: no answer to a node guarding request within the guard time %2 ms")
+                              .arg(node)
+                              .arg(w.shown.guardTimeMs));
             w.errorReported = true;
         }
         const int64_t life = int64_t(w.shown.guardTimeMs) * w.shown.lifeTimeFactor * 1'000'000;

@@ -74,10 +74,10 @@ private:
     struct Watch {
         ErrorControlWatch shown;  // as in the table
         int64_t startNs = 0;
-        int64_t periodNs = 0;     // measured between heartbeats
+        int64_t periodNs = 0;  // measured between heartbeats
         PeriodicSender::JobId job = 0;
         std::shared_ptr<std::atomic<uint64_t>> requests;  // RTRs sent (sender thread)
-        uint64_t answeredUpTo = 0;                         // requests answered or given up
+        uint64_t answeredUpTo = 0;                        // requests answered or given up
         // Requests left unanswered until the next one, counted on the ingest thread in the
         // bus's own order (our RTR's Tx copy, then the answer or the next RTR): how late this
         // thread reads the answers does not matter.

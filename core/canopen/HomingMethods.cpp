@@ -18,15 +18,20 @@ Method standard(int n, const QString& pulse) {
     const int base = n >= 17 && n <= 30 ? n - 16 : n;
     m.index = withIndex && base >= 1;
     const QString end = m.index ? QStringLiteral(": %1 ").arg(pulse) : QStringLiteral(": its edge, reached from ");
-    auto side = [&](int s) { return m.index ? (s > 0 ? QStringLiteral("above the edge") : QStringLiteral("below the edge")) : (s > 0 ? QStringLiteral("above") : QStringLiteral("below")); };
+    auto side = [&](int s) {
+        return m.index ? (s > 0 ? QStringLiteral("above the edge") : QStringLiteral("below the edge"))
+                       : (s > 0 ? QStringLiteral("above") : QStringLiteral("below"));
+    };
     switch (base) {
     case 1:
     case 2:
         m.reference = Reference::LimitSwitch;
         m.switchSide = m.direction = base == 1 ? -1 : 1;
         m.homeSide = static_cast<int8_t>(-m.direction);  // back off the switch
-        m.description = (base == 1 ? QStringLiteral("Negative limit switch") : QStringLiteral("Positive limit switch")) +
-                        (m.index ? QStringLiteral(", then back to the first %1").arg(pulse) : QStringLiteral(": its edge, backing off the switch"));
+        m.description =
+            (base == 1 ? QStringLiteral("Negative limit switch") : QStringLiteral("Positive limit switch")) +
+            (m.index ? QStringLiteral(", then back to the first %1").arg(pulse)
+                     : QStringLiteral(": its edge, backing off the switch"));
         return m;
     case 3:
     case 4:
@@ -35,7 +40,8 @@ Method standard(int n, const QString& pulse) {
         m.reference = Reference::HomeSwitch;
         m.switchSide = base <= 4 ? 1 : -1;
         m.homeSide = (base == 3 || base == 6) ? -1 : 1;
-        m.description = (base <= 4 ? QStringLiteral("Positive home switch") : QStringLiteral("Negative home switch")) + end + side(m.homeSide);
+        m.description = (base <= 4 ? QStringLiteral("Positive home switch") : QStringLiteral("Negative home switch")) +
+                        end + side(m.homeSide);
         return m;
     default: break;
     }
@@ -48,7 +54,8 @@ Method standard(int n, const QString& pulse) {
         m.edge = kEdge[base - 7];
         m.homeSide = kSide[base - 7];
         m.description = QStringLiteral("Home switch, %1 start (%2 limit switch reverses), %3 edge")
-                            .arg(base <= 10 ? QStringLiteral("positive") : QStringLiteral("negative"), base <= 10 ? QStringLiteral("positive") : QStringLiteral("negative"),
+                            .arg(base <= 10 ? QStringLiteral("positive") : QStringLiteral("negative"),
+                                 base <= 10 ? QStringLiteral("positive") : QStringLiteral("negative"),
                                  m.edge == 1 ? QStringLiteral("lower") : QStringLiteral("upper")) +
                         end + side(m.homeSide);
         return m;
@@ -57,7 +64,8 @@ Method standard(int n, const QString& pulse) {
         m.reference = Reference::IndexPulse;
         m.direction = n == 33 ? -1 : 1;
         m.index = true;
-        m.description = QStringLiteral("Next %1 in the %2 direction").arg(pulse, n == 33 ? QStringLiteral("negative") : QStringLiteral("positive"));
+        m.description = QStringLiteral("Next %1 in the %2 direction")
+                            .arg(pulse, n == 33 ? QStringLiteral("negative") : QStringLiteral("positive"));
         return m;
     }
     m.reference = Reference::CurrentPosition;  // 35, 37
@@ -73,7 +81,8 @@ DriveHoming makeCia402() {
     d.dictionary = QStringLiteral("generic-cia402");
     d.title = QStringLiteral("CiA 402 drive");
     for (int n = 1; n <= 37; ++n)
-        if (n != 15 && n != 16 && n != 31 && n != 32 && n != 36) d.methods.push_back(standard(n, QStringLiteral("index pulse")));
+        if (n != 15 && n != 16 && n != 31 && n != 32 && n != 36)
+            d.methods.push_back(standard(n, QStringLiteral("index pulse")));
     d.lowest = -128;
     d.highest = 127;
     d.refusal = Refusal::SdoAbort;
@@ -153,10 +162,12 @@ DriveHoming makeAimotor() {
     hard.reference = Reference::HardStop;
     hard.number = 37;
     hard.direction = 1;
-    add(hard, QStringLiteral("Mechanical end stop in the positive direction, at low speed with the homing torque limit H05-58"));
+    add(hard, QStringLiteral(
+                  "Mechanical end stop in the positive direction, at low speed with the homing torque limit H05-58"));
     hard.number = 38;
     hard.direction = -1;
-    add(hard, QStringLiteral("Mechanical end stop in the negative direction, at low speed with the homing torque limit H05-58"));
+    add(hard, QStringLiteral(
+                  "Mechanical end stop in the negative direction, at low speed with the homing torque limit H05-58"));
     d.defaultMethod = 35;
     d.lowest = 0;
     d.highest = 38;

@@ -23,15 +23,15 @@ enum class Reference : uint8_t {
 // One method as the drive's manual describes it, and how it moves (for the simulator).
 struct Method {
     int8_t number = 0;
-    QString description;        // English, the manual's meaning in short
+    QString description;  // English, the manual's meaning in short
     Reference reference = Reference::None;
-    int8_t direction = 0;       // first move +1/-1; 0 = from the switch state (HomeSwitch) or none
-    int8_t switchSide = 0;      // HomeSwitch: +1 active above its edge, -1 below; LimitSwitch: +1 positive
-    int8_t edge = 0;            // HomeCam: 1 = lower edge, 2 = upper edge
-    int8_t homeSide = 0;        // side of the edge where home lies (+1 above, -1 below); without the
-                                // index pulse, the side the last slow approach comes from
-    bool index = false;         // home is the index pulse next to the edge
-    int8_t sameAs = 0;          // the manual says it behaves as this method (Delta 20 = 19, ...)
+    int8_t direction = 0;   // first move +1/-1; 0 = from the switch state (HomeSwitch) or none
+    int8_t switchSide = 0;  // HomeSwitch: +1 active above its edge, -1 below; LimitSwitch: +1 positive
+    int8_t edge = 0;        // HomeCam: 1 = lower edge, 2 = upper edge
+    int8_t homeSide = 0;    // side of the edge where home lies (+1 above, -1 below); without the
+                            // index pulse, the side the last slow approach comes from
+    bool index = false;     // home is the index pulse next to the edge
+    int8_t sameAs = 0;      // the manual says it behaves as this method (Delta 20 = 19, ...)
 };
 
 // What a drive does with a method it does not have.
@@ -43,17 +43,17 @@ enum class Refusal : uint8_t {
 // The homing methods of one drive: the one table used by the virtual drive, the CiA 402
 // controller, the CLI and the wizard.
 struct DriveHoming {
-    QString dictionary;          // bundled dictionary name: delta-asda-a2, aimotor, generic-cia402
-    QString title;               // "Delta ASDA-A2", for messages
+    QString dictionary;  // bundled dictionary name: delta-asda-a2, aimotor, generic-cia402
+    QString title;       // "Delta ASDA-A2", for messages
     std::vector<Method> methods;
-    int8_t defaultMethod = 0;    // 6098h after power-on
-    int lowest = 0, highest = 0; // range of 6098h (dictionary limits); outside: value too low/high
+    int8_t defaultMethod = 0;     // 6098h after power-on
+    int lowest = 0, highest = 0;  // range of 6098h (dictionary limits); outside: value too low/high
     Refusal refusal = Refusal::SdoAbort;
-    uint32_t abortCode = 0;      // SdoAbort: the abort code for a method in range the drive lacks
-    QString alarm;               // AlarmAtStart: vendor alarm name, e.g. "Er.668"
+    uint32_t abortCode = 0;                // SdoAbort: the abort code for a method in range the drive lacks
+    QString alarm;                         // AlarmAtStart: vendor alarm name, e.g. "Er.668"
     bool changeOnlyWhileDisabled = false;  // 6098h is refused in Operation enabled
-    int homeFoundBit = -1;       // statusword bit set once home was found (AIMOTOR 15); -1 = none
-    QString source;              // manual section
+    int homeFoundBit = -1;                 // statusword bit set once home was found (AIMOTOR 15); -1 = none
+    QString source;                        // manual section
 
     const Method* method(int number) const;
     bool supports(int number) const { return method(number) && number != 0; }

@@ -12,13 +12,17 @@ QString lssCommandName(uint8_t cs, bool fromMaster) {
     case SwitchSelectiveRevision: return QStringLiteral("Switch state selective: revision number");
     case SwitchSelectiveSerial: return QStringLiteral("Switch state selective: serial number");
     case SwitchSelectiveResponse: return QStringLiteral("Switch state selective response");
-    case ConfigureNodeId: return fromMaster ? QStringLiteral("Configure node-ID") : QStringLiteral("Configure node-ID response");
-    case ConfigureBitTiming: return fromMaster ? QStringLiteral("Configure bit timing") : QStringLiteral("Configure bit timing response");
+    case ConfigureNodeId:
+        return fromMaster ? QStringLiteral("Configure node-ID") : QStringLiteral("Configure node-ID response");
+    case ConfigureBitTiming:
+        return fromMaster ? QStringLiteral("Configure bit timing") : QStringLiteral("Configure bit timing response");
     case ActivateBitTiming: return QStringLiteral("Activate bit timing");
-    case StoreConfiguration: return fromMaster ? QStringLiteral("Store configuration") : QStringLiteral("Store configuration response");
+    case StoreConfiguration:
+        return fromMaster ? QStringLiteral("Store configuration") : QStringLiteral("Store configuration response");
     case InquireVendor: return fromMaster ? QStringLiteral("Inquire vendor-ID") : QStringLiteral("Vendor-ID");
     case InquireProduct: return fromMaster ? QStringLiteral("Inquire product code") : QStringLiteral("Product code");
-    case InquireRevision: return fromMaster ? QStringLiteral("Inquire revision number") : QStringLiteral("Revision number");
+    case InquireRevision:
+        return fromMaster ? QStringLiteral("Inquire revision number") : QStringLiteral("Revision number");
     case InquireSerial: return fromMaster ? QStringLiteral("Inquire serial number") : QStringLiteral("Serial number");
     case InquireNodeId: return fromMaster ? QStringLiteral("Inquire node-ID") : QStringLiteral("Node-ID");
     case IdentifyVendor: return QStringLiteral("Identify remote slave: vendor-ID");

@@ -13,15 +13,15 @@ namespace lss {
 inline constexpr uint32_t kMasterToSlave = 0x7E5;
 inline constexpr uint32_t kSlaveToMaster = 0x7E4;
 
-inline constexpr uint8_t SwitchStateGlobal = 0x04;      // byte 1: 0 waiting, 1 configuration
+inline constexpr uint8_t SwitchStateGlobal = 0x04;  // byte 1: 0 waiting, 1 configuration
 inline constexpr uint8_t SwitchSelectiveVendor = 0x40;
 inline constexpr uint8_t SwitchSelectiveProduct = 0x41;
 inline constexpr uint8_t SwitchSelectiveRevision = 0x42;
 inline constexpr uint8_t SwitchSelectiveSerial = 0x43;
 inline constexpr uint8_t SwitchSelectiveResponse = 0x44;
-inline constexpr uint8_t ConfigureNodeId = 0x11;        // byte 1 node-ID; response byte 1 error code
-inline constexpr uint8_t ConfigureBitTiming = 0x13;     // byte 1 table selector, byte 2 table index
-inline constexpr uint8_t ActivateBitTiming = 0x15;      // bytes 1-2 switch delay in ms
+inline constexpr uint8_t ConfigureNodeId = 0x11;     // byte 1 node-ID; response byte 1 error code
+inline constexpr uint8_t ConfigureBitTiming = 0x13;  // byte 1 table selector, byte 2 table index
+inline constexpr uint8_t ActivateBitTiming = 0x15;   // bytes 1-2 switch delay in ms
 inline constexpr uint8_t StoreConfiguration = 0x17;
 inline constexpr uint8_t InquireVendor = 0x5A;
 inline constexpr uint8_t InquireProduct = 0x5B;

@@ -15,8 +15,8 @@ constexpr int kMaxRestarts = 3;
 
 struct FastscanState {
     uint32_t id[4] = {};
-    int sub = 0;     // LSSSub 0..3: vendor, product, revision, serial
-    int bit = 31;    // bit being determined; 0 = confirm the field (bit 0 tried as 0, then as 1)
+    int sub = 0;   // LSSSub 0..3: vendor, product, revision, serial
+    int bit = 31;  // bit being determined; 0 = confirm the field (bit 0 tried as 0, then as 1)
     bool triedOne = false;
     int windowMs = 0;  // how long a step waits for "some slave matches"
     int restarts = 0;
@@ -94,7 +94,10 @@ void LssMaster::fastscanStep(std::shared_ptr<FastscanState> st, LssCallback done
                     st->id[st->sub] |= 1u;
                     return self->fastscanStep(st, done);
                 }
-                return self->fastscanRetry(st, done, QStringLiteral("fastscan: no slave confirmed field %1 = 0x%2").arg(st->sub).arg(st->id[st->sub], 8, 16, QChar(u'0')));
+                return self->fastscanRetry(st, done,
+                                           QStringLiteral("fastscan: no slave confirmed field %1 = 0x%2")
+                                               .arg(st->sub)
+                                               .arg(st->id[st->sub], 8, 16, QChar(u'0')));
             }
             if (st->sub == 3) {
                 LssResult out;

@@ -13,16 +13,20 @@ namespace coscope::canopen {
 namespace {
 QString configureError(const QString& what, uint8_t code) {
     // CiA 305 §6.4: 0 success, 1 not supported / out of range, FFh manufacturer specific.
-    const QString why = code == 1 ? QStringLiteral("not supported or out of range") : code == 0xFF ? QStringLiteral("manufacturer-specific error") : QStringLiteral("error %1").arg(code);
+    const QString why = code == 1      ? QStringLiteral("not supported or out of range")
+                        : code == 0xFF ? QStringLiteral("manufacturer-specific error")
+                                       : QStringLiteral("error %1").arg(code);
     return QStringLiteral("LSS %1 refused by the slave: %2 (error code %3)").arg(what, why).arg(code);
 }
 }  // namespace
 
-LssMaster::LssMaster(MasterContext& context, QObject* parent) : QObject(parent), context_(context), timer_(new QTimer(this)) {
+LssMaster::LssMaster(MasterContext& context, QObject* parent)
+    : QObject(parent), context_(context), timer_(new QTimer(this)) {
     timer_->setSingleShot(true);
     timer_->setTimerType(Qt::PreciseTimer);
     connect(timer_, &QTimer::timeout, this, &LssMaster::onTimeout);
-    subscription_ = context_.dispatcher().subscribe(this, {lss::kSlaveToMaster}, [this](const std::vector<CanFrame>& f) { onFrames(f); });
+    subscription_ = context_.dispatcher().subscribe(this, {lss::kSlaveToMaster},
+                                                    [this](const std::vector<CanFrame>& f) { onFrames(f); });
 }
 
 LssMaster::~LssMaster() { context_.dispatcher().unsubscribe(subscription_); }
@@ -113,7 +117,8 @@ void LssMaster::switchStateSelective(const LssIdentity& id, LssCallback done) {
             r.then = [this, done](bool answered, const CanFrame&) {
                 LssResult out;
                 out.ok = answered;
-                if (!answered) out.error = noAnswer(QStringLiteral("no slave with that identity answered switch state selective"));
+                if (!answered)
+                    out.error = noAnswer(QStringLiteral("no slave with that identity answered switch state selective"));
                 done(out);
             };
         }
@@ -125,7 +130,8 @@ void LssMaster::configureNodeId(uint8_t nodeId, LssCallback done) {
     if (!(nodeId >= 1 && nodeId <= 127) && nodeId != 0xFF) {
         LssResult out;
         out.error = QStringLiteral("node-ID %1 is outside 1-127").arg(nodeId);
-        QMetaObject::invokeMethod(this, [done, out] { done(out); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [done, out] { done(out); }, Qt::QueuedConnection);
         return;
     }
     Request r;
@@ -133,8 +139,11 @@ void LssMaster::configureNodeId(uint8_t nodeId, LssCallback done) {
     r.expectCs = lss::ConfigureNodeId;
     r.then = [this, done](bool answered, const CanFrame& a) {
         LssResult out;
-        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS configure node-ID (is a slave in configuration state?)"));
-        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure node-ID"), a.data[1]);
+        if (!answered)
+            out.error =
+                noAnswer(QStringLiteral("no answer to LSS configure node-ID (is a slave in configuration state?)"));
+        else if (a.data[1])
+            out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure node-ID"), a.data[1]);
         else out.ok = true;
         done(out);
     };
@@ -146,7 +155,8 @@ void LssMaster::configureBitRate(int bitRate, LssCallback done) {
     if (index < 0) {
         LssResult out;
         out.error = QStringLiteral("%1 bit/s is not in the CiA 305 bit timing table").arg(bitRate);
-        QMetaObject::invokeMethod(this, [done, out] { done(out); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [done, out] { done(out); }, Qt::QueuedConnection);
         return;
     }
     Request r;
@@ -154,8 +164,11 @@ void LssMaster::configureBitRate(int bitRate, LssCallback done) {
     r.expectCs = lss::ConfigureBitTiming;
     r.then = [this, done](bool answered, const CanFrame& a) {
         LssResult out;
-        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS configure bit timing (is a slave in configuration state?)"));
-        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure bit timing"), a.data[1]);
+        if (!answered)
+            out.error =
+                noAnswer(QStringLiteral("no answer to LSS configure bit timing (is a slave in configuration state?)"));
+        else if (a.data[1])
+            out.errorCode = a.data[1], out.error = configureError(QStringLiteral("configure bit timing"), a.data[1]);
         else out.ok = true;
         done(out);
     };
@@ -168,8 +181,11 @@ void LssMaster::storeConfiguration(LssCallback done) {
     r.expectCs = lss::StoreConfiguration;
     r.then = [this, done](bool answered, const CanFrame& a) {
         LssResult out;
-        if (!answered) out.error = noAnswer(QStringLiteral("no answer to LSS store configuration (is a slave in configuration state?)"));
-        else if (a.data[1]) out.errorCode = a.data[1], out.error = configureError(QStringLiteral("store configuration"), a.data[1]);
+        if (!answered)
+            out.error =
+                noAnswer(QStringLiteral("no answer to LSS store configuration (is a slave in configuration state?)"));
+        else if (a.data[1])
+            out.errorCode = a.data[1], out.error = configureError(QStringLiteral("store configuration"), a.data[1]);
         else out.ok = true;
         done(out);
     };
@@ -183,7 +199,8 @@ void LssMaster::inquire(uint8_t cs, LssCallback done) {
     r.then = [this, done, cs](bool answered, const CanFrame& a) {
         LssResult out;
         if (!answered) {
-            out.error = noAnswer(QStringLiteral("no answer to LSS %1 (is a slave in configuration state?)").arg(lssCommandName(cs, true)));
+            out.error = noAnswer(QStringLiteral("no answer to LSS %1 (is a slave in configuration state?)")
+                                     .arg(lssCommandName(cs, true)));
         } else {
             out.ok = true;
             out.value = cs == lss::InquireNodeId ? a.data[1] : le32At(a, 1);

@@ -21,10 +21,10 @@ struct LssIdentity {
 
 struct LssResult {
     bool ok = false;
-    uint8_t errorCode = 0;   // configure/store: the slave's error code (CiA 305 §6.4)
-    uint32_t value = 0;      // inquire: the value; inquire node-ID: the node-ID
-    LssIdentity identity;    // inquireIdentity / fastscan
-    bool noSlave = false;    // fastscan: no unconfigured slave answered
+    uint8_t errorCode = 0;  // configure/store: the slave's error code (CiA 305 §6.4)
+    uint32_t value = 0;     // inquire: the value; inquire node-ID: the node-ID
+    LssIdentity identity;   // inquireIdentity / fastscan
+    bool noSlave = false;   // fastscan: no unconfigured slave answered
     QString error;
 };
 using LssCallback = std::function<void(const LssResult&)>;
@@ -48,12 +48,12 @@ public:
     bool switchStateGlobal(bool configuration, QString* error = nullptr);
     // §6.3.3: the one slave with this identity enters configuration state.
     void switchStateSelective(const LssIdentity& id, LssCallback done);
-    void configureNodeId(uint8_t nodeId, LssCallback done);        // §6.4.2 (FFh = unconfigured)
-    void configureBitRate(int bitRate, LssCallback done);          // §6.4.3, standard table (selector 0)
+    void configureNodeId(uint8_t nodeId, LssCallback done);                    // §6.4.2 (FFh = unconfigured)
+    void configureBitRate(int bitRate, LssCallback done);                      // §6.4.3, standard table (selector 0)
     bool activateBitTiming(uint16_t switchDelayMs, QString* error = nullptr);  // §6.4.4
-    void storeConfiguration(LssCallback done);                     // §6.4.5
-    void inquire(uint8_t commandSpecifier, LssCallback done);      // 5Ah..5Eh (§6.6)
-    void inquireIdentity(LssCallback done);                        // vendor, product, revision, serial
+    void storeConfiguration(LssCallback done);                                 // §6.4.5
+    void inquire(uint8_t commandSpecifier, LssCallback done);                  // 5Ah..5Eh (§6.6)
+    void inquireIdentity(LssCallback done);                                    // vendor, product, revision, serial
     void inquireNodeId(LssCallback done);
     // §6.7.4 Fastscan: finds one unconfigured slave's identity bit by bit and leaves it in
     // configuration state.

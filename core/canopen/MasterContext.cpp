@@ -12,7 +12,9 @@ MasterContext::~MasterContext() = default;
 
 PeriodicSender& MasterContext::periodic() {
     std::lock_guard lock(mutex_);
-    if (!periodic_) periodic_ = std::make_unique<PeriodicSender>([this](const CanFrame& f, QString* error) { return send(f, error); });
+    if (!periodic_)
+        periodic_ =
+            std::make_unique<PeriodicSender>([this](const CanFrame& f, QString* error) { return send(f, error); });
     return *periodic_;
 }
 
@@ -24,7 +26,10 @@ bool MasterContext::send(const CanFrame& frame, QString* error) {
     QString why;
     if (bus_->send(frame, &why)) return true;
     // CanBus::send names the bus in its own refusals (listen-only, not open).
-    if (error) *error = why.contains(bus_->url().toString()) ? why : QStringLiteral("cannot send on %1: %2").arg(bus_->url().toString(), why);
+    if (error)
+        *error = why.contains(bus_->url().toString())
+                     ? why
+                     : QStringLiteral("cannot send on %1: %2").arg(bus_->url().toString(), why);
     return false;
 }
 

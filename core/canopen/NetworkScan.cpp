@@ -56,16 +56,19 @@ void NetworkScan::probe(uint8_t node) {
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_->upload(node, 0x1000, 0, [self, node](const SdoResult& r) {
-        if (!self) return;
-        ++self->probed_;
-        // Any answer, even an abort, means a node is there.
-        if (!r.ok && !r.serverAborted) return self->nodeDone();
-        auto found = std::make_shared<ScannedNode>();
-        found->node = node;
-        if (r.ok) found->deviceType = u32(r.data);
-        self->readIdentity(found, 1);
-    }, o);
+    sdo_->upload(
+        node, 0x1000, 0,
+        [self, node](const SdoResult& r) {
+            if (!self) return;
+            ++self->probed_;
+            // Any answer, even an abort, means a node is there.
+            if (!r.ok && !r.serverAborted) return self->nodeDone();
+            auto found = std::make_shared<ScannedNode>();
+            found->node = node;
+            if (r.ok) found->deviceType = u32(r.data);
+            self->readIdentity(found, 1);
+        },
+        o);
 }
 
 void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) {
@@ -74,42 +77,50 @@ void NetworkScan::readIdentity(std::shared_ptr<ScannedNode> found, uint8_t sub) 
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_->upload(found->node, 0x1018, sub, [self, found, sub](const SdoResult& r) {
-        if (!self) return;
-        if (r.ok) {
-            const uint32_t v = u32(r.data);
-            switch (sub) {
-            case 1: found->vendorId = v; break;
-            case 2: found->productCode = v; break;
-            case 3: found->revision = v; break;
-            case 4: found->serial = v; break;
+    sdo_->upload(
+        found->node, 0x1018, sub,
+        [self, found, sub](const SdoResult& r) {
+            if (!self) return;
+            if (r.ok) {
+                const uint32_t v = u32(r.data);
+                switch (sub) {
+                case 1: found->vendorId = v; break;
+                case 2: found->productCode = v; break;
+                case 3: found->revision = v; break;
+                case 4: found->serial = v; break;
+                }
+            } else if (sub <= 1) {
+                found->error = r.error;  // 1018h:01 is mandatory; the rest are optional
             }
-        } else if (sub <= 1) {
-            found->error = r.error;  // 1018h:01 is mandatory; the rest are optional
-        }
-        self->readIdentity(found, static_cast<uint8_t>(sub + 1));
-    }, o);
+            self->readIdentity(found, static_cast<uint8_t>(sub + 1));
+        },
+        o);
 }
 
 // 1008h device name, 1009h hardware version, 100Ah software version: VISIBLE_STRING, optional.
 void NetworkScan::readStrings(std::shared_ptr<ScannedNode> found, int which) {
     static constexpr uint16_t kIndex[] = {0x1008, 0x1009, 0x100A};
-    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion, NodeInfo::kNoSoftwareVersion};
+    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion,
+                                       NodeInfo::kNoSoftwareVersion};
     if (!sdo_) return;
     if (which >= 3) return finishNode(found);
     SdoOptions o;
     o.timeoutMs = timeoutMs_;
     QPointer<NetworkScan> self(this);
-    sdo_->upload(found->node, kIndex[which], 0, [self, found, which](const SdoResult& r) {
-        if (!self) return;
-        if (r.ok) {
-            const QString text = QString::fromUtf8(r.data).section(QChar(0), 0, 0).trimmed();  // some devices pad with NULs
-            (which == 0 ? found->deviceName : which == 1 ? found->hardwareVersion : found->softwareVersion) = text;
-        } else if (r.serverAborted) {
-            found->notPresent |= kBit[which];
-        }
-        self->readStrings(found, which + 1);
-    }, o);
+    sdo_->upload(
+        found->node, kIndex[which], 0,
+        [self, found, which](const SdoResult& r) {
+            if (!self) return;
+            if (r.ok) {
+                const QString text =
+                    QString::fromUtf8(r.data).section(QChar(0), 0, 0).trimmed();  // some devices pad with NULs
+                (which == 0 ? found->deviceName : which == 1 ? found->hardwareVersion : found->softwareVersion) = text;
+            } else if (r.serverAborted) {
+                found->notPresent |= kBit[which];
+            }
+            self->readStrings(found, which + 1);
+        },
+        o);
 }
 
 void NetworkScan::finishNode(std::shared_ptr<ScannedNode> found) {
@@ -121,7 +132,8 @@ void NetworkScan::finishNode(std::shared_ptr<ScannedNode> found) {
     table.setIdentity(id, found->vendorId, found->productCode, found->revision, found->serial);
     // An optional string read or refused is written; one not answered leaves what was known.
     static constexpr uint16_t kIndex[] = {0x1008, 0x1009, 0x100A};
-    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion, NodeInfo::kNoSoftwareVersion};
+    static constexpr uint8_t kBit[] = {NodeInfo::kNoDeviceName, NodeInfo::kNoHardwareVersion,
+                                       NodeInfo::kNoSoftwareVersion};
     const std::optional<QString>* texts[] = {&found->deviceName, &found->hardwareVersion, &found->softwareVersion};
     for (int i = 0; i < 3; ++i)
         if (*texts[i] || (found->notPresent & kBit[i])) table.setOptionalText(id, kIndex[i], *texts[i]);

@@ -47,8 +47,11 @@ public:
 
     explicit NetworkScan(SdoClient& sdo, QObject* parent = nullptr);
 
-    void setRange(uint8_t first, uint8_t last) { first_ = first; last_ = last; }
-    void setTimeout(int ms) { timeoutMs_ = ms; }           // per node; default 200 ms
+    void setRange(uint8_t first, uint8_t last) {
+        first_ = first;
+        last_ = last;
+    }
+    void setTimeout(int ms) { timeoutMs_ = ms; }  // per node; default 200 ms
     void setMaxOutstanding(int n) { maxOutstanding_ = std::max(1, n); }
     void setInterval(int ms) { intervalMs_ = std::max(0, ms); }
     void setMatcher(Matcher m) { matcher_ = std::move(m); }

@@ -27,9 +27,9 @@ enum class NmtState : uint8_t {
     PreOperational = 0x7F,
 };
 
-QString nmtCommandName(uint8_t cs);           // "Start", "Reset node", ... or "Unknown (0x..)"
+QString nmtCommandName(uint8_t cs);                                 // "Start", "Reset node", ... or "Unknown (0x..)"
 std::optional<NmtCommand> nmtCommandFromName(const QString& word);  // start|stop|preop|reset|reset-comm
-QString nmtStateName(uint8_t state);          // "Boot-up", "Operational", ...
+QString nmtStateName(uint8_t state);                                // "Boot-up", "Operational", ...
 // The state a node is in after command `cs` (CiA 301 §7.3.2.2.1): 05h, 04h, 7Fh; -1 for the
 // resets (the node initialises and sends its boot-up) and unknown commands.
 int nmtStateAfter(uint8_t cs);

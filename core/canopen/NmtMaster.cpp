@@ -10,7 +10,8 @@ bool NmtMaster::send(NmtCommand command, uint8_t node, QString* error) {
         if (error) *error = QStringLiteral("node-ID %1 is outside 1-127 (0 = all nodes)").arg(node);
         return false;
     }
-    spdlog::info("NMT {} to {}", nmtCommandName(static_cast<uint8_t>(command)).toStdString(), node ? std::to_string(node) : std::string("all nodes"));
+    spdlog::info("NMT {} to {}", nmtCommandName(static_cast<uint8_t>(command)).toStdString(),
+                 node ? std::to_string(node) : std::string("all nodes"));
     return context_.send(nmtFrame(command, node), error);
 }
 

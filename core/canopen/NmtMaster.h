@@ -19,9 +19,13 @@ public:
 
     bool start(uint8_t node, QString* error = nullptr) { return send(NmtCommand::Start, node, error); }
     bool stop(uint8_t node, QString* error = nullptr) { return send(NmtCommand::Stop, node, error); }
-    bool enterPreOperational(uint8_t node, QString* error = nullptr) { return send(NmtCommand::EnterPreOperational, node, error); }
+    bool enterPreOperational(uint8_t node, QString* error = nullptr) {
+        return send(NmtCommand::EnterPreOperational, node, error);
+    }
     bool resetNode(uint8_t node, QString* error = nullptr) { return send(NmtCommand::ResetNode, node, error); }
-    bool resetCommunication(uint8_t node, QString* error = nullptr) { return send(NmtCommand::ResetCommunication, node, error); }
+    bool resetCommunication(uint8_t node, QString* error = nullptr) {
+        return send(NmtCommand::ResetCommunication, node, error);
+    }
 
 private:
     MasterContext& context_;

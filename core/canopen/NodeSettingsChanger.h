@@ -23,13 +23,13 @@ struct NodeSettingsRequest {
     enum class Method : uint8_t { Lss, Vendor };
     Change change = Change::NodeId;
     Method method = Method::Lss;
-    uint8_t node = 0;       // current node-ID; 0xFF = an LSS-unconfigured device left in LSS
-                            // configuration state by Fastscan
+    uint8_t node = 0;  // current node-ID; 0xFF = an LSS-unconfigured device left in LSS
+                       // configuration state by Fastscan
     uint8_t newNodeId = 0;
-    int bitRate = 500000;   // the bus's bit rate now
+    int bitRate = 500000;  // the bus's bit rate now
     int newBitRate = 0;
-    QString dictionary;     // the device's bundled dictionary (vendor method)
-    LssIdentity identity;   // LSS on a configured node: selects it (1018h:01..04)
+    QString dictionary;               // the device's bundled dictionary (vendor method)
+    LssIdentity identity;             // LSS on a configured node: selects it (1018h:01..04)
     uint32_t vendorBitRateValue = 0;  // vendor bit rate: the parameter's value now (digits kept)
     uint32_t waitMs = 5000;           // how long to wait for the node afterwards
 };
@@ -57,11 +57,11 @@ std::optional<NodeSettingsPlan> planNodeSettings(const NodeSettingsRequest& requ
 // what was put back.
 struct NodeSettingsOutcome {
     bool ok = false;
-    int failedStep = -1;      // index in the part that ran
-    QString step;             // the step's description
-    QString answer;           // the device's answer (abort text, LSS error) or "no answer"
-    QString advice;           // what to check / how to recover
-    QString restored;         // what was undone, empty when nothing needed or could be undone
+    int failedStep = -1;  // index in the part that ran
+    QString step;         // the step's description
+    QString answer;       // the device's answer (abort text, LSS error) or "no answer"
+    QString advice;       // what to check / how to recover
+    QString restored;     // what was undone, empty when nothing needed or could be undone
 };
 
 // Runs a plan's parts through a ScriptRunner (the one every wizard uses) on one bus. Never

@@ -29,8 +29,9 @@ std::optional<VendorNodeSettings> vendorNodeSettings(const QString& dictionary) 
         br.takesEffect = TakesEffect::PowerCycle;
         br.source = QStringLiteral("Delta ASDA-A2 manual §1.3.1, P3-01 digit Z");
         s.bitRate = br;
-        s.note = QStringLiteral("Delta: P-parameters written over CAN are saved to EEPROM at once. "
-                                "P3-00 takes effect after a power cycle (marked ●).");
+        s.note = QStringLiteral(
+            "Delta: P-parameters written over CAN are saved to EEPROM at once. "
+            "P3-00 takes effect after a power cycle (marked ●).");
         return s;
     }
     if (dictionary == u"aimotor") {
@@ -46,9 +47,10 @@ std::optional<VendorNodeSettings> vendorNodeSettings(const QString& dictionary) 
         id.source = QStringLiteral("AIMOTOR manual, CAN settings (H0C-00; object 200Ch:01 inferred)");
         s.nodeId = id;
         s.maxNodeId = 63;
-        s.note = QStringLiteral("AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN "
-                                "(200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of "
-                                "H0C-08 are not documented: use LSS for the bit rate.");
+        s.note = QStringLiteral(
+            "AIMOTOR: the manual sets H0C-00 (node-ID) with the RS485 tool; writing it over CAN "
+            "(200Ch:01) is inferred, save with 1010h and power-cycle. The bit-rate codes of "
+            "H0C-08 are not documented: use LSS for the bit rate.");
         return s;
     }
     if (dictionary == u"dexmart-dev") {
@@ -63,8 +65,9 @@ std::optional<VendorNodeSettings> vendorNodeSettings(const QString& dictionary) 
         id.takesEffect = TakesEffect::PowerCycle;
         id.source = QStringLiteral("DEXMART DEV tutorial §8.7 (parameter 09-19, DEV Rev A only)");
         s.nodeId = id;
-        s.note = QStringLiteral("DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP "
-                                "switch SW2. No bit-rate parameter: use LSS.");
+        s.note = QStringLiteral(
+            "DEXMART DEV: parameter 09-19 sets the node-ID on Rev A only; Rev B/C/D use DIP "
+            "switch SW2. No bit-rate parameter: use LSS.");
         return s;
     }
     return std::nullopt;

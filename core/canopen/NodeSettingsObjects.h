@@ -19,16 +19,16 @@ enum class TakesEffect : uint8_t {
 struct VendorSettingObject {
     uint16_t index = 0;
     uint8_t sub = 0;
-    int size = 2;           // bytes on the bus (SDO expedited)
-    QString parameter;      // the vendor's name, e.g. "P3-00"
+    int size = 2;       // bytes on the bus (SDO expedited)
+    QString parameter;  // the vendor's name, e.g. "P3-00"
     // Bit rate only: value = (code << shift) within mask; code i means bitRates[i] (bit/s).
     uint32_t mask = 0;
     int shift = 0;
     std::vector<int> bitRates;
     bool storedOnWrite = false;  // the device saves it at once (no 1010h "save" needed)
     TakesEffect takesEffect = TakesEffect::ResetNode;
-    bool inferred = false;       // the manual does not state this object plainly
-    QString source;              // manual section, for the technician
+    bool inferred = false;  // the manual does not state this object plainly
+    QString source;         // manual section, for the technician
 };
 
 // Where a device keeps its node-ID and bit rate besides LSS (CiA 305), by the bundled

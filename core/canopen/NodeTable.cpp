@@ -29,7 +29,9 @@ void setState(NodeInfo& e, int state, NmtSource source, FrameNo n, int64_t t, ui
     e.nmtSinceNs = t;
 }
 
-bool afterCommand(const NodeInfo& e) { return e.nmtSource == NmtSource::OurCommand || e.nmtSource == NmtSource::OtherCommand; }
+bool afterCommand(const NodeInfo& e) {
+    return e.nmtSource == NmtSource::OurCommand || e.nmtSource == NmtSource::OtherCommand;
+}
 
 // The node's own frame `source` (a PDO, an SDO answer, EMCY) at frame n: its state is corrected
 // when the one known contradicts it (CiA 301 §7.3.2.2: PDOs only in Operational; SDO and EMCY
@@ -97,7 +99,8 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
             } else if (e.guardRequested) {
                 setState(e, state, NmtSource::Guarding, n, r.timestampNs);
             } else {
-                if (!afterGap && e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs) e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
+                if (!afterGap && e.lastHeartbeatNs && r.timestampNs > e.lastHeartbeatNs)
+                    e.heartbeatPeriodNs = r.timestampNs - e.lastHeartbeatNs;
                 e.seenHeartbeat = true;
                 e.lastHeartbeatNs = r.timestampNs;
                 setState(e, state, NmtSource::Heartbeat, n, r.timestampNs);
@@ -143,7 +146,8 @@ void NodeTable::consume(const TraceStore& store, FrameNo first, size_t count) {
                 const NmtSource was = slot->nmtSource;
                 const bool gap = slot->stateUnknownAfterGap;
                 inferState(*slot, NmtSource::Pdo, n, r.timestampNs);
-                changed = changed || before != slot->nmtState || was != slot->nmtSource || gap != slot->stateUnknownAfterGap;
+                changed =
+                    changed || before != slot->nmtState || was != slot->nmtSource || gap != slot->stateUnknownAfterGap;
             }
             break;
         }
@@ -233,7 +237,10 @@ void NodeTable::setDeviceName(int id, const QString& name) {
 }
 
 void NodeTable::setOptionalText(int id, uint16_t index, const std::optional<QString>& text) {
-    const uint8_t bit = index == 0x1008 ? NodeInfo::kNoDeviceName : index == 0x1009 ? NodeInfo::kNoHardwareVersion : index == 0x100A ? NodeInfo::kNoSoftwareVersion : 0;
+    const uint8_t bit = index == 0x1008   ? NodeInfo::kNoDeviceName
+                        : index == 0x1009 ? NodeInfo::kNoHardwareVersion
+                        : index == 0x100A ? NodeInfo::kNoSoftwareVersion
+                                          : 0;
     if (!bit) return;
     std::lock_guard lock(mutex_);
     NodeInfo& e = entryLocked(id);

@@ -47,8 +47,8 @@ struct ErrorControlWatch {
     int guardTimeMs = 0;     // node guarding when > 0: an RTR on 700h + node every guard time
     int lifeTimeFactor = 0;  // node life time = guard time x factor
     Status status = Status::Off;
-    int64_t lastNs = 0;      // the last heartbeat or guarding answer (0 = none yet)
-    uint32_t lost = 0;       // times it was lost
+    int64_t lastNs = 0;  // the last heartbeat or guarding answer (0 = none yet)
+    uint32_t lost = 0;   // times it was lost
     bool guarding() const { return guardTimeMs > 0; }
 };
 
@@ -57,30 +57,30 @@ struct ErrorControlWatch {
 // from what was asked (scan, identity reads), with the dictionary matched or assigned to it.
 struct NodeInfo {
     int node = 0;
-    int nmtState = -1;               // last state (0 initialising, 4, 5, 7Fh), -1 unknown
+    int nmtState = -1;                         // last state (0 initialising, 4, 5, 7Fh), -1 unknown
     NmtSource nmtSource = NmtSource::Unknown;  // where nmtState comes from
-    uint8_t nmtCommand = 0;          // the command specifier behind OurCommand/OtherCommand
-    FrameNo nmtFrame = 0;            // the frame nmtState was taken from
-    int64_t nmtSinceNs = 0;          // its time
-    bool guardRequested = false;     // an RTR on 700h+n is pending: the next answer is guarding
-    int64_t lastHeartbeatNs = 0;     // 0 = none seen
-    int64_t heartbeatPeriodNs = 0;   // interval between the last two heartbeats
-    int64_t lastSeenNs = 0;          // any frame from the node
+    uint8_t nmtCommand = 0;                    // the command specifier behind OurCommand/OtherCommand
+    FrameNo nmtFrame = 0;                      // the frame nmtState was taken from
+    int64_t nmtSinceNs = 0;                    // its time
+    bool guardRequested = false;               // an RTR on 700h+n is pending: the next answer is guarding
+    int64_t lastHeartbeatNs = 0;               // 0 = none seen
+    int64_t heartbeatPeriodNs = 0;             // interval between the last two heartbeats
+    int64_t lastSeenNs = 0;                    // any frame from the node
     FrameNo lastFrame = 0;
     uint32_t bootUps = 0;
     uint32_t emcyCount = 0;
     uint16_t lastEmcyCode = 0;
     uint32_t sdoFrames = 0;
     bool seenHeartbeat = false, seenBootUp = false, seenEmcy = false, seenSdo = false, scanned = false;
-    bool heartbeatLost = false;      // consumer heartbeat time (1016h) or guarding life time ran out
+    bool heartbeatLost = false;  // consumer heartbeat time (1016h) or guarding life time ran out
     // The adapter was lost (issue 16): nmtState is the last one before the gap and may be stale
     // until a frame at or after gapFrame shows it: error control, a PDO, an SDO answer or EMCY
     // from a node last seen otherwise than Operational, or an NMT command.
     bool stateUnknownAfterGap = false;
     FrameNo gapFrame = 0;
-    int guardingErrors = 0;          // missing or wrong-toggle guarding answers
-    ErrorControlWatch watch;         // CoScope's heartbeat consumer / node guarding of the node
-    std::optional<uint32_t> deviceType;                               // 1000h
+    int guardingErrors = 0;              // missing or wrong-toggle guarding answers
+    ErrorControlWatch watch;             // CoScope's heartbeat consumer / node guarding of the node
+    std::optional<uint32_t> deviceType;  // 1000h
     std::optional<uint32_t> vendorId, productCode, revision, serial;  // 1018h:01..04
     QString deviceName;                                               // 1008h, empty = unknown
     std::optional<QString> hardwareVersion, softwareVersion;          // 1009h, 100Ah; nullopt = unknown
@@ -89,7 +89,7 @@ struct NodeInfo {
     uint8_t notPresent = 0;
     static constexpr uint8_t kNoDeviceName = 1, kNoHardwareVersion = 2, kNoSoftwareVersion = 4;
     bool identityRead = false;  // 1018h was asked for: an empty sub above is not present
-    QString dictionary;              // matched (or assigned) dictionary name
+    QString dictionary;         // matched (or assigned) dictionary name
 };
 
 // The one node table of a bus (DESIGN.md "core/"): the Nodes dock, the wizards, the master

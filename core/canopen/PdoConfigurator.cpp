@@ -25,7 +25,9 @@ bool cobIdWritable(const PdoId& pdo, const od::ObjectDictionary* dictionary) {
     const od::SubObject* s = dictionary->entry(pdo.communicationIndex(), 1);
     return !s || od::isWritable(s->access);
 }
-QString hex(uint32_t v, int digits) { return QStringLiteral("0x%1").arg(QStringLiteral("%1").arg(v, digits, 16, QChar(u'0')).toUpper()); }
+QString hex(uint32_t v, int digits) {
+    return QStringLiteral("0x%1").arg(QStringLiteral("%1").arg(v, digits, 16, QChar(u'0')).toUpper());
+}
 
 // Sequential reads of one PDO; optional sub-indices that abort are left unset.
 struct PdoReader : std::enable_shared_from_this<PdoReader> {
@@ -88,7 +90,8 @@ struct PdoReader : std::enable_shared_from_this<PdoReader> {
 };
 }  // namespace
 
-PdoConfigurator::PdoConfigurator(SdoClient& sdo, NmtMaster* nmt, QObject* parent) : QObject(parent), sdo_(sdo), nmt_(nmt) {}
+PdoConfigurator::PdoConfigurator(SdoClient& sdo, NmtMaster* nmt, QObject* parent)
+    : QObject(parent), sdo_(sdo), nmt_(nmt) {}
 
 void PdoConfigurator::read(uint8_t node, PdoId pdo, std::function<void(const PdoReadResult&)> done) {
     auto reader = std::make_shared<PdoReader>();
@@ -122,7 +125,8 @@ void PdoConfigurator::readSet(uint8_t node, std::function<void(const std::vector
     (*next)(0);
 }
 
-std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node, bool cobIdWritable) {
+std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, const PdoConfig& c, uint8_t node,
+                                                           bool cobIdWritable) {
     // CiA 301 §7.5.2.35/36: the inhibit time (and on many devices the other communication
     // parameters) may only change while the PDO is not valid (COB-ID bit 31), the mapping only
     // while it is not valid and sub0 is 0; sub0 = n then activates the n entries. The same
@@ -133,35 +137,49 @@ std::vector<PdoConfigurator::Op> PdoConfigurator::writeOps(const PdoId& pdo, con
     const uint32_t cob = c.cobId & 0x7FFFFFFFu;
     const QString name = pdo.name();
     if (cobIdWritable)
-        ops.push_back({comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
-                       QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
+        ops.push_back(
+            {comm, 1, le(cob | 0x80000000u, 4), QStringLiteral("COB-ID invalid"),
+             QStringLiteral("Switch %1 off while it is changed (COB-ID bit 31 = 1: PDO not valid)").arg(name)});
     ops.push_back({comm, 2, le(c.transmissionType, 1), QStringLiteral("transmission type"),
-                   QStringLiteral("When the message is sent: type %1 (transmission type)").arg(od::transmissionTypeText(c.transmissionType))});
+                   QStringLiteral("When the message is sent: type %1 (transmission type)")
+                       .arg(od::transmissionTypeText(c.transmissionType))});
     if (c.inhibitTime)
         ops.push_back({comm, 3, le(*c.inhibitTime, 2), QStringLiteral("inhibit time"),
-                       *c.inhibitTime ? QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)").arg(*c.inhibitTime / 10.0)
-                                      : QStringLiteral("No minimum gap between two messages (inhibit time = 0)")});
+                       *c.inhibitTime
+                           ? QStringLiteral("Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)")
+                                 .arg(*c.inhibitTime / 10.0)
+                           : QStringLiteral("No minimum gap between two messages (inhibit time = 0)")});
     if (c.eventTimer)
         ops.push_back({comm, 5, le(*c.eventTimer, 2), QStringLiteral("event timer"),
                        *c.eventTimer ? QStringLiteral("Send at least every %1 ms (event timer)").arg(*c.eventTimer)
                                      : QStringLiteral("No timer: sent only on its trigger (event timer = 0)")});
-    ops.push_back({map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0"),
-                   QStringLiteral("Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)")});
+    ops.push_back(
+        {map, 0, le(0, 1), QStringLiteral("mapping sub0 = 0"),
+         QStringLiteral("Empty the list of mapped objects so it may be rewritten (mapping sub-index 0 = 0)")});
     for (size_t i = 0; i < c.entries.size(); ++i) {
         const PdoMapEntry& e = c.entries[i];
-        ops.push_back({map, static_cast<uint8_t>(i + 1), le(e.encode(), 4), QStringLiteral("mapping entry %1").arg(i + 1),
-                       QStringLiteral("Object %1 of the message: %2, %3 bits (mapping entry %4)").arg(i + 1).arg(objectRef(e.index, e.sub)).arg(e.bits).arg(i + 1)});
+        ops.push_back({map, static_cast<uint8_t>(i + 1), le(e.encode(), 4),
+                       QStringLiteral("mapping entry %1").arg(i + 1),
+                       QStringLiteral("Object %1 of the message: %2, %3 bits (mapping entry %4)")
+                           .arg(i + 1)
+                           .arg(objectRef(e.index, e.sub))
+                           .arg(e.bits)
+                           .arg(i + 1)});
     }
-    ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1), QStringLiteral("mapping sub0 = %1").arg(c.entries.size()),
-                   QStringLiteral("Activate the %1 mapped objects (mapping sub-index 0 = number of entries)").arg(c.entries.size())});
+    ops.push_back({map, 0, le(static_cast<uint32_t>(c.entries.size()), 1),
+                   QStringLiteral("mapping sub0 = %1").arg(c.entries.size()),
+                   QStringLiteral("Activate the %1 mapped objects (mapping sub-index 0 = number of entries)")
+                       .arg(c.entries.size())});
     if (cobIdWritable && c.valid())
         ops.push_back({comm, 1, le(cob, 4), QStringLiteral("COB-ID valid"),
-                       QStringLiteral("Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)").arg(name, QString::number(cob & 0x1FFFFFFFu, 16).toUpper())});
+                       QStringLiteral("Switch %1 on again with CAN-ID %2h (COB-ID bit 31 = 0)")
+                           .arg(name, QString::number(cob & 0x1FFFFFFFu, 16).toUpper())});
     Q_UNUSED(node);
     return ops;
 }
 
-CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, QString* error) const {
+CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary,
+                                    QString* error) const {
     CommandScript script;
     script.title = QStringLiteral("Map %1 of node %2").arg(pdo.name()).arg(node);
     QString why;
@@ -175,7 +193,8 @@ CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, c
         s.kind = ScriptStep::Kind::Nmt;
         s.nmt = NmtCommand::EnterPreOperational;
         s.node = node;
-        s.why = QStringLiteral("Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)");
+        s.why =
+            QStringLiteral("Stop process data so the PDO can be changed (NMT enter pre-operational, CiA 301 §7.3.2)");
         script.steps.push_back(s);
     }
     for (const Op& op : writeOps(pdo, wanted, node, cobIdWritable(pdo, dictionary))) {
@@ -200,21 +219,29 @@ CommandScript PdoConfigurator::plan(uint8_t node, PdoId pdo, PdoConfig wanted, c
         script.steps.push_back(s);
     };
     const uint16_t comm = pdo.communicationIndex(), map = pdo.mappingIndex();
-    expect(comm, 1, wanted.valid() ? (wanted.cobId & 0x7FFFFFFFu) : (wanted.cobId | 0x80000000u), 4, QStringLiteral("Check: the COB-ID reads back as written"));
+    expect(comm, 1, wanted.valid() ? (wanted.cobId & 0x7FFFFFFFu) : (wanted.cobId | 0x80000000u), 4,
+           QStringLiteral("Check: the COB-ID reads back as written"));
     expect(comm, 2, wanted.transmissionType, 1, QStringLiteral("Check: the transmission type reads back as written"));
-    if (wanted.inhibitTime) expect(comm, 3, *wanted.inhibitTime, 2, QStringLiteral("Check: the inhibit time reads back as written"));
-    if (wanted.eventTimer) expect(comm, 5, *wanted.eventTimer, 2, QStringLiteral("Check: the event timer reads back as written"));
-    expect(map, 0, static_cast<uint32_t>(wanted.entries.size()), 1, QStringLiteral("Check: the number of mapped objects reads back as written"));
+    if (wanted.inhibitTime)
+        expect(comm, 3, *wanted.inhibitTime, 2, QStringLiteral("Check: the inhibit time reads back as written"));
+    if (wanted.eventTimer)
+        expect(comm, 5, *wanted.eventTimer, 2, QStringLiteral("Check: the event timer reads back as written"));
+    expect(map, 0, static_cast<uint32_t>(wanted.entries.size()), 1,
+           QStringLiteral("Check: the number of mapped objects reads back as written"));
     for (size_t i = 0; i < wanted.entries.size(); ++i)
-        expect(map, static_cast<uint8_t>(i + 1), wanted.entries[i].encode(), 4, QStringLiteral("Check: mapping entry %1 reads back as written").arg(i + 1));
+        expect(map, static_cast<uint8_t>(i + 1), wanted.entries[i].encode(), 4,
+               QStringLiteral("Check: mapping entry %1 reads back as written").arg(i + 1));
     return script;
 }
 
-void PdoConfigurator::runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log, OpsDone done) {
+void PdoConfigurator::runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops, size_t i, QStringList* log,
+                             OpsDone done) {
     if (i >= ops->size()) return done(true, -1, SdoResult{});
     const Op& op = (*ops)[i];
     uint32_t v = fromLe(op.data);
-    if (log) log->append(QStringLiteral("%1 = %2 (%3)").arg(objectRef(op.index, op.sub), hex(v, static_cast<int>(op.data.size()) * 2), op.what));
+    if (log)
+        log->append(QStringLiteral("%1 = %2 (%3)")
+                        .arg(objectRef(op.index, op.sub), hex(v, static_cast<int>(op.data.size()) * 2), op.what));
     QPointer<PdoConfigurator> self(this);
     sdo_.download(node, op.index, op.sub, op.data, [self, node, ops, i, log, done](const SdoResult& r) {
         if (!self) return;
@@ -223,13 +250,15 @@ void PdoConfigurator::runOps(uint8_t node, std::shared_ptr<std::vector<Op>> ops,
     });
 }
 
-void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, std::function<void(const PdoWriteResult&)> done) {
+void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary,
+                            std::function<void(const PdoWriteResult&)> done) {
     auto result = std::make_shared<PdoWriteResult>();
     QString error;
     if (!validatePdoMapping(wanted.entries, pdo, dictionary, &error)) {
         // Refused before anything is sent.
         result->error = QStringLiteral("node %1 %2: %3; nothing was sent").arg(node).arg(pdo.name(), error);
-        QMetaObject::invokeMethod(this, [result, done] { done(*result); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [result, done] { done(*result); }, Qt::QueuedConnection);
         return;
     }
     QPointer<PdoConfigurator> self(this);
@@ -259,37 +288,47 @@ void PdoConfigurator::write(uint8_t node, PdoId pdo, PdoConfig wanted, const od:
             auto back = std::make_shared<std::vector<Op>>(writeOps(pdo, result->previous, node, cobWritable));
             self->runOps(node, back, 0, nullptr, [result, done](bool ok, int, const SdoResult& err) {
                 result->restored = ok;
-                result->error += ok ? QStringLiteral("; previous mapping restored") : QStringLiteral("; restoring the previous mapping failed too: ") + err.error;
+                result->error += ok ? QStringLiteral("; previous mapping restored")
+                                    : QStringLiteral("; restoring the previous mapping failed too: ") + err.error;
                 done(*result);
             });
         };
-        self->runOps(node, ops, 0, &result->steps, [self, node, pdo, ops, result, restore, done](bool ok, int failedAt, const SdoResult& err) {
-            if (!self) return;
-            if (!ok) {
-                const Op& op = (*ops)[static_cast<size_t>(failedAt)];
-                result->failedStep = QStringLiteral("%1 (%2)").arg(op.what, objectRef(op.index, op.sub));
-                result->failedStepNumber = failedAt;
-                result->abortCode = err.serverAborted ? err.abortCode : 0;
-                return restore(QStringLiteral("%1 failed: %2").arg(result->failedStep, err.error));
-            }
-            // Verify by reading back.
-            self->read(node, pdo, [result, restore, done](const PdoReadResult& after) {
-                const PdoConfig& w = result->written;
-                QString diff;
-                if (!after.ok) diff = QStringLiteral("read-back failed: ") + after.error;
-                else if ((after.config.cobId & 0x7FFFFFFFu) != (w.cobId & 0x7FFFFFFFu) || after.config.valid() != w.valid()) diff = QStringLiteral("COB-ID reads back as %1").arg(hex(after.config.cobId, 8));
-                else if (after.config.transmissionType != w.transmissionType) diff = QStringLiteral("transmission type reads back as %1").arg(od::transmissionTypeText(after.config.transmissionType));
-                else if (after.config.entries != w.entries) diff = QStringLiteral("the mapping reads back differently (%1 entries)").arg(after.config.entries.size());
-                else if (w.inhibitTime && after.config.inhibitTime != w.inhibitTime) diff = QStringLiteral("inhibit time reads back differently");
-                else if (w.eventTimer && after.config.eventTimer != w.eventTimer) diff = QStringLiteral("event timer reads back differently");
-                if (!diff.isEmpty()) {
-                    result->failedStep = QStringLiteral("verify");
-                    return restore(QStringLiteral("verify: %1").arg(diff));
-                }
-                result->ok = true;
-                done(*result);
-            });
-        });
+        self->runOps(node, ops, 0, &result->steps,
+                     [self, node, pdo, ops, result, restore, done](bool ok, int failedAt, const SdoResult& err) {
+                         if (!self) return;
+                         if (!ok) {
+                             const Op& op = (*ops)[static_cast<size_t>(failedAt)];
+                             result->failedStep = QStringLiteral("%1 (%2)").arg(op.what, objectRef(op.index, op.sub));
+                             result->failedStepNumber = failedAt;
+                             result->abortCode = err.serverAborted ? err.abortCode : 0;
+                             return restore(QStringLiteral("%1 failed: %2").arg(result->failedStep, err.error));
+                         }
+                         // Verify by reading back.
+                         self->read(node, pdo, [result, restore, done](const PdoReadResult& after) {
+                             const PdoConfig& w = result->written;
+                             QString diff;
+                             if (!after.ok) diff = QStringLiteral("read-back failed: ") + after.error;
+                             else if ((after.config.cobId & 0x7FFFFFFFu) != (w.cobId & 0x7FFFFFFFu) ||
+                                      after.config.valid() != w.valid())
+                                 diff = QStringLiteral("COB-ID reads back as %1").arg(hex(after.config.cobId, 8));
+                             else if (after.config.transmissionType != w.transmissionType)
+                                 diff = QStringLiteral("transmission type reads back as %1")
+                                            .arg(od::transmissionTypeText(after.config.transmissionType));
+                             else if (after.config.entries != w.entries)
+                                 diff = QStringLiteral("the mapping reads back differently (%1 entries)")
+                                            .arg(after.config.entries.size());
+                             else if (w.inhibitTime && after.config.inhibitTime != w.inhibitTime)
+                                 diff = QStringLiteral("inhibit time reads back differently");
+                             else if (w.eventTimer && after.config.eventTimer != w.eventTimer)
+                                 diff = QStringLiteral("event timer reads back differently");
+                             if (!diff.isEmpty()) {
+                                 result->failedStep = QStringLiteral("verify");
+                                 return restore(QStringLiteral("verify: %1").arg(diff));
+                             }
+                             result->ok = true;
+                             done(*result);
+                         });
+                     });
     });
 }
 

@@ -23,13 +23,13 @@ struct PdoReadResult {
 
 struct PdoWriteResult {
     bool ok = false;
-    PdoConfig previous;      // what was there before
-    PdoConfig written;       // what was asked (lengths filled in)
-    QString failedStep;      // e.g. "mapping entry 2 (1A00:02)"
+    PdoConfig previous;         // what was there before
+    PdoConfig written;          // what was asked (lengths filled in)
+    QString failedStep;         // e.g. "mapping entry 2 (1A00:02)"
     int failedStepNumber = -1;  // 0-based index of the failed write in plan()'s SDO writes; -1 = none/verify
-    uint32_t abortCode = 0;  // what the device answered to the failed step (0 = no abort: timeout, verify)
-    bool restored = false;   // the previous mapping was written back after a failure
-    QStringList steps;       // each SDO write, in order, as "1800:01 = 0x800001A5 (COB-ID invalid)"
+    uint32_t abortCode = 0;     // what the device answered to the failed step (0 = no abort: timeout, verify)
+    bool restored = false;      // the previous mapping was written back after a failure
+    QStringList steps;          // each SDO write, in order, as "1800:01 = 0x800001A5 (COB-ID invalid)"
     QString error;
 };
 
@@ -49,12 +49,14 @@ public:
     // TPDO1..4 and RPDO1..4; PDOs the node does not have are left out.
     void readSet(uint8_t node, std::function<void(const std::vector<PdoReadResult>&)> done);
     // `wanted.cobId` 0 keeps the current COB-ID (made valid); unset inhibit/event timer are not written.
-    void write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, std::function<void(const PdoWriteResult&)> done);
+    void write(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary,
+               std::function<void(const PdoWriteResult&)> done);
     // The dry run of write(): the same NMT command and SDO writes in the same order (both come
     // from writeOps()), followed by the read-back checks as "expect" steps. Nothing is sent.
     // `wanted.cobId` 0 stands for the PDO's default COB-ID here (write() keeps the device's).
     // A mapping write() would refuse gives a script without steps and *error.
-    CommandScript plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary, QString* error = nullptr) const;
+    CommandScript plan(uint8_t node, PdoId pdo, PdoConfig wanted, const od::ObjectDictionary* dictionary,
+                       QString* error = nullptr) const;
 
 private:
     struct Op {

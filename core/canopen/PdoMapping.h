@@ -17,7 +17,9 @@ struct PdoId {
     int number = 1;  // 1..512
     uint16_t communicationIndex() const { return static_cast<uint16_t>((transmit ? 0x1800 : 0x1400) + number - 1); }
     uint16_t mappingIndex() const { return static_cast<uint16_t>((transmit ? 0x1A00 : 0x1600) + number - 1); }
-    QString name() const { return QStringLiteral("%1%2").arg(transmit ? QStringLiteral("TPDO") : QStringLiteral("RPDO")).arg(number); }
+    QString name() const {
+        return QStringLiteral("%1%2").arg(transmit ? QStringLiteral("TPDO") : QStringLiteral("RPDO")).arg(number);
+    }
     // Default COB-ID of PDOs 1..4 (CiA 301 §7.3.5): TPDO1 180h + node ... RPDO4 500h + node.
     uint32_t defaultCobId(uint8_t node) const;
 };
@@ -30,7 +32,9 @@ struct PdoMapEntry {
     uint8_t sub = 0;
     uint8_t bits = 0;
     uint32_t encode() const { return (uint32_t(index) << 16) | (uint32_t(sub) << 8) | bits; }
-    static PdoMapEntry decode(uint32_t v) { return {static_cast<uint16_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)}; }
+    static PdoMapEntry decode(uint32_t v) {
+        return {static_cast<uint16_t>(v >> 16), static_cast<uint8_t>(v >> 8), static_cast<uint8_t>(v)};
+    }
     bool operator==(const PdoMapEntry&) const = default;
 };
 // "6041:00,6064:00" or with lengths "6041:00/16,6064:00/32".
@@ -52,6 +56,7 @@ struct PdoConfig {
 // writable for an RPDO; lengths of 0 are filled in from the data type; the sum is <= 64 bits
 // (classic CAN payload). Without a dictionary every length must be given. False + *error
 // ("6041:00 is not PDO-mappable").
-bool validatePdoMapping(std::vector<PdoMapEntry>& entries, const PdoId& pdo, const od::ObjectDictionary* dictionary, QString* error);
+bool validatePdoMapping(std::vector<PdoMapEntry>& entries, const PdoId& pdo, const od::ObjectDictionary* dictionary,
+                        QString* error);
 
 }  // namespace coscope::canopen

@@ -22,9 +22,14 @@ namespace {
 // CLOCK_MONOTONIC in ns: libstdc++'s steady_clock is that clock, and condition_variable waits
 // on it with an absolute deadline (pthread_cond_clockwait(CLOCK_MONOTONIC), like
 // clock_nanosleep(TIMER_ABSTIME)) while staying wakeable when jobs change.
-int64_t monotonicNs() { return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+int64_t monotonicNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
-std::chrono::steady_clock::time_point monotonicPoint(int64_t ns) { return std::chrono::steady_clock::time_point(std::chrono::nanoseconds(ns)); }
+std::chrono::steady_clock::time_point monotonicPoint(int64_t ns) {
+    return std::chrono::steady_clock::time_point(std::chrono::nanoseconds(ns));
+}
 
 int64_t roundPeriod(int64_t ns) {
     const int64_t us = (ns + PeriodicSender::kResolutionNs / 2) / PeriodicSender::kResolutionNs;
@@ -39,8 +44,8 @@ struct PeriodicSender::Entry {
     bool running = true;
     bool firstDone = false;  // the first send was attempted
     bool failed = false;
-    int64_t due = 0;         // next due time, CLOCK_MONOTONIC ns
-    int64_t lastDue = 0;     // due time of the last frame sent
+    int64_t due = 0;      // next due time, CLOCK_MONOTONIC ns
+    int64_t lastDue = 0;  // due time of the last frame sent
     uint64_t sent = 0;
     uint64_t skipped = 0;
     int64_t lastSentNs = 0;
@@ -50,7 +55,9 @@ struct PeriodicSender::Entry {
 PeriodicSender::PeriodicSender(CanBus* bus)
     : PeriodicSender(SendFunction([bus](const CanFrame& f, QString* error) { return bus->send(f, error); })) {}
 
-PeriodicSender::PeriodicSender(SendFunction send) : send_(std::move(send)) { thread_ = std::thread([this] { run(); }); }
+PeriodicSender::PeriodicSender(SendFunction send) : send_(std::move(send)) {
+    thread_ = std::thread([this] { run(); });
+}
 
 PeriodicSender::~PeriodicSender() {
     {

@@ -59,13 +59,13 @@ public:
     };
 
     struct Status {
-        bool exists = false;    // false: unknown or removed id
-        bool running = false;   // false once stopped (count reached or error) or unknown
-        uint64_t sent = 0;      // frames that went out
-        uint64_t skipped = 0;   // due times skipped because the sender was late
+        bool exists = false;   // false: unknown or removed id
+        bool running = false;  // false once stopped (count reached or error) or unknown
+        uint64_t sent = 0;     // frames that went out
+        uint64_t skipped = 0;  // due times skipped because the sender was late
         int64_t periodNs = 0;
-        int64_t lastSentNs = 0; // CLOCK_MONOTONIC ns of the last send, 0 = none yet
-        QString error;          // why the job stopped; empty while running or after its count
+        int64_t lastSentNs = 0;  // CLOCK_MONOTONIC ns of the last send, 0 = none yet
+        QString error;           // why the job stopped; empty while running or after its count
     };
 
     // Sends through bus->send (the bus outlives this sender).
@@ -114,12 +114,12 @@ private:
     static Status statusOf(const Entry& e);  // mutex_ held
 
     SendFunction send_;
-    mutable std::mutex mutex_;        // guards the jobs and the flags below
-    std::condition_variable changed_; // jobs changed, a first send finished, or stopping
-    std::mutex runMutex_;             // held while a job's callbacks run (remove() waits on it)
+    mutable std::mutex mutex_;         // guards the jobs and the flags below
+    std::condition_variable changed_;  // jobs changed, a first send finished, or stopping
+    std::mutex runMutex_;              // held while a job's callbacks run (remove() waits on it)
     std::map<JobId, std::shared_ptr<Entry>> jobs_;
     JobId nextId_ = 1;
-    JobId running_ = 0;               // the job whose callbacks run now
+    JobId running_ = 0;  // the job whose callbacks run now
     bool stopping_ = false;
     std::thread thread_;
 };

@@ -15,10 +15,17 @@ namespace coscope::canopen {
 
 namespace {
 
-int64_t processDataNowNs() { return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+int64_t processDataNowNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 QString mappedObjectText(uint16_t index, uint8_t sub) {
-    return QStringLiteral("%1h:%2").arg(index, 4, 16, QChar(u'0')).arg(sub, 2, 16, QChar(u'0')).toUpper().replace(QStringLiteral("H:"), QStringLiteral("h:"));
+    return QStringLiteral("%1h:%2")
+        .arg(index, 4, 16, QChar(u'0'))
+        .arg(sub, 2, 16, QChar(u'0'))
+        .toUpper()
+        .replace(QStringLiteral("H:"), QStringLiteral("h:"));
 }
 
 // The axis-0 object of a CiA 402 object on any axis (CiA 402-2 §5.2).
@@ -84,11 +91,11 @@ std::vector<int64_t> stoppedValues(const ProcessDataPdo& pdo, const std::vector<
     for (size_t i = 0; i < pdo.objects.size() && i < out.size(); ++i) {
         switch (axisBase(pdo.objects[i].entry.index)) {
         case 0x6040: out[i] |= 0x100; break;  // controlword bit 8: halt
-        case 0x6042:                           // vl target velocity
-        case 0x6071:                           // target torque
-        case 0x60B1:                           // velocity offset
-        case 0x60B2:                           // torque offset
-        case 0x60FF: out[i] = 0; break;        // target velocity
+        case 0x6042:                          // vl target velocity
+        case 0x6071:                          // target torque
+        case 0x60B1:                          // velocity offset
+        case 0x60B2:                          // torque offset
+        case 0x60FF: out[i] = 0; break;       // target velocity
         default: break;
         }
     }
@@ -98,14 +105,14 @@ std::vector<int64_t> stoppedValues(const ProcessDataPdo& pdo, const std::vector<
 // What the sender thread shares with the owner's thread; everything under `mutex`.
 struct ProcessData::Shared {
     std::mutex mutex;
-    std::vector<ProcessDataPdo> pdos;            // set while nothing is sending
-    std::vector<std::vector<int64_t>> values;    // per pdo, per object
-    std::vector<char> enabled;                   // per pdo
-    std::vector<char> stopPending;               // per pdo with motion: values went out since the last stop frame
-    std::vector<char> removeJob;                 // per pdo: its job sent the stop frame and ends
-    std::vector<PeriodicSender::JobId> jobIds;   // per pdo, for the job removing itself
-    int64_t holdUntilNs = 0;                     // 0 = not held
-    bool withSync = false;                       // the SYNC hook sends
+    std::vector<ProcessDataPdo> pdos;           // set while nothing is sending
+    std::vector<std::vector<int64_t>> values;   // per pdo, per object
+    std::vector<char> enabled;                  // per pdo
+    std::vector<char> stopPending;              // per pdo with motion: values went out since the last stop frame
+    std::vector<char> removeJob;                // per pdo: its job sent the stop frame and ends
+    std::vector<PeriodicSender::JobId> jobIds;  // per pdo, for the job removing itself
+    int64_t holdUntilNs = 0;                    // 0 = not held
+    bool withSync = false;                      // the SYNC hook sends
     std::atomic<uint64_t> sent{0};
     QString lastError;
 
@@ -184,7 +191,8 @@ bool ProcessData::setNode(uint8_t node, const od::ObjectDictionary& dictionary, 
         shared_->lastError.clear();
     }
     jobs_.assign(pdos_.size(), 0);
-    if (pdos_.empty() && error) *error = QStringLiteral("node %1's dictionary describes no valid mapped RPDO").arg(node);
+    if (pdos_.empty() && error)
+        *error = QStringLiteral("node %1's dictionary describes no valid mapped RPDO").arg(node);
     return !pdos_.empty();
 }
 
@@ -234,7 +242,9 @@ bool ProcessData::setValue(uint16_t index, uint8_t sub, int64_t value, QString* 
     if (const ProcessDataObject* o = mapped ? object(index, sub) : nullptr) noteIfEnabling(*o, value);
     if (mapped) setByUser_.insert(uint32_t(index) << 8 | sub);
     if (!mapped) {
-        if (error) *error = QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
+        if (error)
+            *error =
+                QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
         return false;
     }
     if (running_ && mode_ == Mode::OnChange) {
@@ -249,7 +259,8 @@ std::optional<int64_t> ProcessData::value(uint16_t index, uint8_t sub) const {
     const std::lock_guard lock(shared_->mutex);
     for (size_t i = 0; i < pdos_.size(); ++i)
         for (size_t k = 0; k < pdos_[i].objects.size(); ++k)
-            if (!pdos_[i].objects[k].dummy && pdos_[i].objects[k].entry.index == index && pdos_[i].objects[k].entry.sub == sub)
+            if (!pdos_[i].objects[k].dummy && pdos_[i].objects[k].entry.index == index &&
+                pdos_[i].objects[k].entry.sub == sub)
                 return shared_->values[i][k];
     return std::nullopt;
 }
@@ -290,7 +301,10 @@ std::optional<int64_t> ProcessData::parseValue(const ProcessDataObject& o, const
         v = p->negative ? -static_cast<int64_t>(p->magnitude) : static_cast<int64_t>(p->magnitude);
     }
     if (!fits(o, v)) {
-        if (error) *error = QStringLiteral("%1 does not fit %2's %3 mapped bits").arg(text, mappedObjectText(o.entry.index, o.entry.sub)).arg(bits);
+        if (error)
+            *error = QStringLiteral("%1 does not fit %2's %3 mapped bits")
+                         .arg(text, mappedObjectText(o.entry.index, o.entry.sub))
+                         .arg(bits);
         return std::nullopt;
     }
     return v;
@@ -299,7 +313,9 @@ std::optional<int64_t> ProcessData::parseValue(const ProcessDataObject& o, const
 bool ProcessData::setValueText(uint16_t index, uint8_t sub, const QString& text, QString* error) {
     const ProcessDataObject* o = object(index, sub);
     if (!o) {
-        if (error) *error = QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
+        if (error)
+            *error =
+                QStringLiteral("%1 is not mapped in an RPDO of node %2").arg(mappedObjectText(index, sub)).arg(node_);
         return false;
     }
     const auto v = parseValue(*o, text, error);
@@ -330,12 +346,15 @@ void ProcessData::readValues(SdoClient& sdo, std::function<void(const QStringLis
             return;
         }
         const ProcessDataObject o = (*todo)[i];
-        sdo.upload(node, o.entry.index, o.entry.sub, [self, o, failures, step = weakStep.lock(), i](const SdoResult& r) {
-            if (!self) return;
-            if (!r.ok) *failures << QStringLiteral("%1: %2").arg(mappedObjectText(o.entry.index, o.entry.sub), r.error);
-            else if (!self->setByUser_.count(uint32_t(o.entry.index) << 8 | o.entry.sub)) self->setValueQuietly(o, fromBytes(o, r.data));
-            (*step)(i + 1);
-        });
+        sdo.upload(
+            node, o.entry.index, o.entry.sub, [self, o, failures, step = weakStep.lock(), i](const SdoResult& r) {
+                if (!self) return;
+                if (!r.ok)
+                    *failures << QStringLiteral("%1: %2").arg(mappedObjectText(o.entry.index, o.entry.sub), r.error);
+                else if (!self->setByUser_.count(uint32_t(o.entry.index) << 8 | o.entry.sub))
+                    self->setValueQuietly(o, fromBytes(o, r.data));
+                (*step)(i + 1);
+            });
     };
     (*step)(0);
 }
@@ -356,7 +375,8 @@ void ProcessData::setValueQuietly(const ProcessDataObject& object, int64_t value
     const std::lock_guard lock(shared_->mutex);
     for (size_t i = 0; i < pdos_.size(); ++i)
         for (size_t k = 0; k < pdos_[i].objects.size(); ++k)
-            if (!pdos_[i].objects[k].dummy && pdos_[i].objects[k].entry.index == object.entry.index && pdos_[i].objects[k].entry.sub == object.entry.sub)
+            if (!pdos_[i].objects[k].dummy && pdos_[i].objects[k].entry.index == object.entry.index &&
+                pdos_[i].objects[k].entry.sub == object.entry.sub)
                 shared_->values[i][k] = value;
 }
 
@@ -364,7 +384,8 @@ CanFrame ProcessData::frame(int number, bool held) const {
     const std::lock_guard lock(shared_->mutex);
     for (size_t i = 0; i < pdos_.size(); ++i) {
         if (pdos_[i].layout.number != number) continue;
-        return composeRpdo(pdos_[i], held || !pdos_[i].carriesMotion() ? shared_->values[i] : stoppedValues(pdos_[i], shared_->values[i]));
+        return composeRpdo(pdos_[i], held || !pdos_[i].carriesMotion() ? shared_->values[i]
+                                                                       : stoppedValues(pdos_[i], shared_->values[i]));
     }
     return {};
 }
@@ -427,7 +448,8 @@ void ProcessData::startJob(size_t i) {
             const std::lock_guard lock(s->mutex);
             s->lastError = why;
         }
-        QMetaObject::invokeMethod(this, [this, why] { emit sendFailed(why); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, why] { emit sendFailed(why); }, Qt::QueuedConnection);
     };
     QString error;
     {
@@ -439,7 +461,8 @@ void ProcessData::startJob(size_t i) {
     shared_->jobIds[i] = jobs_[i];
     if (!jobs_[i]) {
         shared_->lastError = error;
-        QMetaObject::invokeMethod(this, [this, error] { emit sendFailed(error); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, error] { emit sendFailed(error); }, Qt::QueuedConnection);
     }
 }
 
@@ -468,7 +491,9 @@ bool ProcessData::start(QString* error) {
             any = true;
         }
         if (mode_ == Mode::Once && !any) {
-            if (error) *error = QStringLiteral("the RPDOs chosen carry motion objects: they are sent only while hold to run is held");
+            if (error)
+                *error = QStringLiteral(
+                    "the RPDOs chosen carry motion objects: they are sent only while hold to run is held");
             return false;
         }
         running_ = mode_ == Mode::OnChange;

@@ -26,11 +26,11 @@ class SdoClient;
 // One mapped object of an RPDO: where it sits in the frame and how its value is read.
 struct ProcessDataObject {
     PdoMapEntry entry;
-    int bitOffset = 0;     // from bit 0 of byte 0 (CiA 301 §7.5.2.36: entries in mapping order)
-    bool isSigned = false; // from the dictionary's data type
-    bool dummy = false;    // 0001h..0007h: a gap, always 0 (CiA 301 §7.4.7.1)
-    bool motion = false;   // isMotionObject (RpdoMotion.h)
-    QString name;          // from the dictionary ("" = not described)
+    int bitOffset = 0;      // from bit 0 of byte 0 (CiA 301 §7.5.2.36: entries in mapping order)
+    bool isSigned = false;  // from the dictionary's data type
+    bool dummy = false;     // 0001h..0007h: a gap, always 0 (CiA 301 §7.4.7.1)
+    bool motion = false;    // isMotionObject (RpdoMotion.h)
+    QString name;           // from the dictionary ("" = not described)
 };
 
 // One RPDO of the node with the values to send in it.
@@ -93,7 +93,8 @@ public:
     // is its bit pattern in the mapped length: 0xFFFFFFFE is -2 for an INTEGER32).
     bool setValueText(uint16_t index, uint8_t sub, const QString& text, QString* error = nullptr);
     // The same reading without setting: the raw value for `object`, nullopt with *error.
-    static std::optional<int64_t> parseValue(const ProcessDataObject& object, const QString& text, QString* error = nullptr);
+    static std::optional<int64_t> parseValue(const ProcessDataObject& object, const QString& text,
+                                             QString* error = nullptr);
     // The mapped object index:sub (non-dummy), null when no RPDO of the node maps it.
     const ProcessDataObject* object(uint16_t index, uint8_t sub) const;
     // Reads every mapped object's value from the node over SDO (so that a first send repeats what

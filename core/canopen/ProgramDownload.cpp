@@ -23,7 +23,12 @@ constexpr qint64 kSettleMs = 300;  // quiet time after a broken transfer before 
 
 QByteArray u8(uint8_t v) { return QByteArray(1, static_cast<char>(v)); }
 
-QString hex32(uint32_t v) { return QStringLiteral("0x%1").arg(v, 8, 16, QChar(u'0')).toUpper().replace(QStringLiteral("0X"), QStringLiteral("0x")); }
+QString hex32(uint32_t v) {
+    return QStringLiteral("0x%1")
+        .arg(v, 8, 16, QChar(u'0'))
+        .toUpper()
+        .replace(QStringLiteral("0X"), QStringLiteral("0x"));
+}
 
 // Answers that mean "this node has no clear command" rather than "it failed".
 bool clearNotSupported(uint32_t code) {
@@ -34,17 +39,26 @@ bool clearNotSupported(uint32_t code) {
 
 QString flashStatusText(uint32_t status) {
     // 1F57h flash status identification: bit 0 in progress, bits 1-7 error code (CiA 302-3 §4).
-    static const char* const errors[] = {"ok", "no valid program", "data format unknown", "data format error", "flash not cleared before write",
-                                         "flash write error", "general address error", "flash secured (write access denied)"};
+    static const char* const errors[] = {"ok",
+                                         "no valid program",
+                                         "data format unknown",
+                                         "data format error",
+                                         "flash not cleared before write",
+                                         "flash write error",
+                                         "general address error",
+                                         "flash secured (write access denied)"};
     const uint32_t code = (status >> 1) & 0x7F;
-    QString text = code < 8 ? QString::fromLatin1(errors[code]) : code == 63 ? QStringLiteral("unspecified error") : QStringLiteral("error %1").arg(code);
+    QString text = code < 8     ? QString::fromLatin1(errors[code])
+                   : code == 63 ? QStringLiteral("unspecified error")
+                                : QStringLiteral("error %1").arg(code);
     if (status & 1) text += QStringLiteral(", in progress");
     return text;
 }
 
 QString ProgramState::summary() const {
     QStringList parts;
-    parts << QStringLiteral("100Ah %1").arg(version ? QStringLiteral("\"%1\"").arg(*version) : QStringLiteral("unknown"));
+    parts
+        << QStringLiteral("100Ah %1").arg(version ? QStringLiteral("\"%1\"").arg(*version) : QStringLiteral("unknown"));
     parts << QStringLiteral("1F56h %1").arg(softwareId ? hex32(*softwareId) : QStringLiteral("unknown"));
     parts << QStringLiteral("flash %1").arg(flashStatus ? flashStatusText(*flashStatus) : QStringLiteral("unknown"));
     return parts.join(QStringLiteral(", "));
@@ -69,16 +83,23 @@ QString programStepName(ProgramStep step, uint8_t program) {
 QString ProgramDownloadOutcome::summary() const {
     if (ok) {
         const double rate = seconds > 0 ? double(bytes) / seconds / 1024.0 : 0;
-        QString s = QStringLiteral("%1 bytes downloaded in %2 s (%3 KiB/s%4)").arg(bytes).arg(seconds, 0, 'f', 2).arg(rate, 0, 'f', 1)
+        QString s = QStringLiteral("%1 bytes downloaded in %2 s (%3 KiB/s%4)")
+                        .arg(bytes)
+                        .arg(seconds, 0, 'f', 2)
+                        .arg(rate, 0, 'f', 1)
                         .arg(fellBackToSegmented ? QStringLiteral(", segmented: block declined") : QString());
         if (!started) return s + QStringLiteral("; not started (1F51h not written)");
         return s + QStringLiteral("; started; software version %1 -> %2, 1F56h %3 -> %4")
                        .arg(before.version.value_or(QStringLiteral("?")), after.version.value_or(QStringLiteral("?")),
-                            before.softwareId ? hex32(*before.softwareId) : QStringLiteral("?"), after.softwareId ? hex32(*after.softwareId) : QStringLiteral("?"));
+                            before.softwareId ? hex32(*before.softwareId) : QStringLiteral("?"),
+                            after.softwareId ? hex32(*after.softwareId) : QStringLiteral("?"));
     }
-    const QString what = step <= ProgramStep::Stop ? QStringLiteral("the node's program was not touched")
-                                                   : QStringLiteral("nothing claimed: the node may hold no valid program; download again from the start");
-    return QStringLiteral("%1 at step \"%2\": %3; %4").arg(cancelled ? QStringLiteral("cancelled") : QStringLiteral("failed"), programStepName(step), error, what);
+    const QString what =
+        step <= ProgramStep::Stop
+            ? QStringLiteral("the node's program was not touched")
+            : QStringLiteral("nothing claimed: the node may hold no valid program; download again from the start");
+    return QStringLiteral("%1 at step \"%2\": %3; %4")
+        .arg(cancelled ? QStringLiteral("cancelled") : QStringLiteral("failed"), programStepName(step), error, what);
 }
 
 struct ProgramDownload::Run {
@@ -88,8 +109,8 @@ struct ProgramDownload::Run {
     Done done;
     ProgramDownloadOutcome out;
     bool cancelRequested = false;
-    quint64 transfer = 0;     // the 1F50h download in progress
-    QElapsedTimer clock;      // since the 1F50h download began
+    quint64 transfer = 0;  // the 1F50h download in progress
+    QElapsedTimer clock;   // since the 1F50h download began
     qint64 lastProgressMs = -kProgressEveryMs;
     int bootSubscription = 0;
     QTimer* bootTimer = nullptr;
@@ -97,7 +118,8 @@ struct ProgramDownload::Run {
     bool startAnswered = false;
 };
 
-ProgramDownload::ProgramDownload(MasterContext& context, SdoClient& sdo, QObject* parent) : QObject(parent), context_(context), sdo_(sdo) {}
+ProgramDownload::ProgramDownload(MasterContext& context, SdoClient& sdo, QObject* parent)
+    : QObject(parent), context_(context), sdo_(sdo) {}
 
 ProgramDownload::~ProgramDownload() {
     if (!run_) return;
@@ -128,21 +150,31 @@ void readProgramState(SdoClient& sdo, uint8_t node, uint8_t program, std::functi
     options.timeoutMs = 1000;
     // Three reads queued in order on the node; the last answer hands the state over.
     // 1F56h program software identification, UNSIGNED32 (CiA 302-3 §4).
-    sdo.upload(node, 0x1F56, program, [state](const SdoResult& r) {
-        if (r.ok && r.data.size() >= 4) state->softwareId = qFromLittleEndian<uint32_t>(r.data.constData());
-    }, options);
+    sdo.upload(
+        node, 0x1F56, program,
+        [state](const SdoResult& r) {
+            if (r.ok && r.data.size() >= 4) state->softwareId = qFromLittleEndian<uint32_t>(r.data.constData());
+        },
+        options);
     // 1F57h flash status identification, UNSIGNED32 (CiA 302-3 §4).
-    sdo.upload(node, 0x1F57, program, [state](const SdoResult& r) {
-        if (r.ok && r.data.size() >= 4) state->flashStatus = qFromLittleEndian<uint32_t>(r.data.constData());
-    }, options);
+    sdo.upload(
+        node, 0x1F57, program,
+        [state](const SdoResult& r) {
+            if (r.ok && r.data.size() >= 4) state->flashStatus = qFromLittleEndian<uint32_t>(r.data.constData());
+        },
+        options);
     // 100Ah manufacturer software version, VISIBLE_STRING (CiA 301 7.5.2.8).
-    sdo.upload(node, 0x100A, 0, [state, done](const SdoResult& r) {
-        if (r.ok) state->version = QString::fromLatin1(r.data).section(QChar(u'\0'), 0, 0).trimmed();
-        if (done) done(*state);
-    }, options);
+    sdo.upload(
+        node, 0x100A, 0,
+        [state, done](const SdoResult& r) {
+            if (r.ok) state->version = QString::fromLatin1(r.data).section(QChar(u'\0'), 0, 0).trimmed();
+            if (done) done(*state);
+        },
+        options);
 }
 
-void ProgramDownload::run(const ProgramDownloadRequest& request, StepCallback step, ProgressCallback progress, Done done) {
+void ProgramDownload::run(const ProgramDownloadRequest& request, StepCallback step, ProgressCallback progress,
+                          Done done) {
     lastRequest_ = request;
     lastStep_ = step;
     lastProgress_ = progress;
@@ -158,9 +190,11 @@ void ProgramDownload::run(const ProgramDownloadRequest& request, StepCallback st
     // From the event loop: the caller returns from run() before any callback. Right after a
     // broken transfer, answers the node still sends to the rest of it (a sub-block's ack after
     // our abort) are let go by first, so none is taken for the answer to a new request.
-    const qint64 settle = sinceBrokenTransfer_.isValid() ? std::max<qint64>(0, kSettleMs - sinceBrokenTransfer_.elapsed()) : 0;
+    const qint64 settle =
+        sinceBrokenTransfer_.isValid() ? std::max<qint64>(0, kSettleMs - sinceBrokenTransfer_.elapsed()) : 0;
     QTimer::singleShot(std::chrono::milliseconds(settle), this, [self, run] {
-        if (self && self->run_ == run) self->next(run->req.readBefore ? ProgramStep::ReadBefore : ProgramStep::DisableDrive);
+        if (self && self->run_ == run)
+            self->next(run->req.readBefore ? ProgramStep::ReadBefore : ProgramStep::DisableDrive);
     });
 }
 
@@ -174,16 +208,20 @@ void ProgramDownload::cancel() {
     if (run_->transfer) sdo_.cancel(run_->transfer);  // its callback ends the run
 }
 
-void ProgramDownload::write(ProgramStep step, uint16_t index, uint8_t sub, QByteArray data, std::function<void(const SdoResult&)> then) {
+void ProgramDownload::write(ProgramStep step, uint16_t index, uint8_t sub, QByteArray data,
+                            std::function<void(const SdoResult&)> then) {
     QPointer<ProgramDownload> self(this);
     auto run = run_;
     SdoOptions options;
     options.timeoutMs = run->req.sdoTimeoutMs;
-    sdo_.download(run->req.node, index, sub, std::move(data), [self, run, step, then](const SdoResult& r) {
-        if (!self || self->run_ != run) return;
-        if (!then) return r.ok ? void() : self->fail(step, r);
-        then(r);
-    }, options);
+    sdo_.download(
+        run->req.node, index, sub, std::move(data),
+        [self, run, step, then](const SdoResult& r) {
+            if (!self || self->run_ != run) return;
+            if (!then) return r.ok ? void() : self->fail(step, r);
+            then(r);
+        },
+        options);
 }
 
 void ProgramDownload::next(ProgramStep step) {
@@ -212,18 +250,20 @@ void ProgramDownload::next(ProgramStep step) {
         }
         return next(ProgramStep::Stop);
     }
-    case ProgramStep::Stop: return write(step, 0x1F51, program, u8(kStop), [this](const SdoResult& r) {
-        if (!r.ok) return fail(ProgramStep::Stop, r);
-        next(run_->req.clear ? ProgramStep::Clear : ProgramStep::Download);
-    });
-    case ProgramStep::Clear: return write(step, 0x1F51, program, u8(kClear), [this](const SdoResult& r) {
-        if (!r.ok && !(r.serverAborted && clearNotSupported(r.abortCode))) return fail(ProgramStep::Clear, r);
-        if (!r.ok) {
-            run_->out.clearSkipped = true;
-            run_->out.notes += QStringLiteral("the node does not take clear (%1); ").arg(r.error);
-        }
-        next(ProgramStep::Download);
-    });
+    case ProgramStep::Stop:
+        return write(step, 0x1F51, program, u8(kStop), [this](const SdoResult& r) {
+            if (!r.ok) return fail(ProgramStep::Stop, r);
+            next(run_->req.clear ? ProgramStep::Clear : ProgramStep::Download);
+        });
+    case ProgramStep::Clear:
+        return write(step, 0x1F51, program, u8(kClear), [this](const SdoResult& r) {
+            if (!r.ok && !(r.serverAborted && clearNotSupported(r.abortCode))) return fail(ProgramStep::Clear, r);
+            if (!r.ok) {
+                run_->out.clearSkipped = true;
+                run_->out.notes += QStringLiteral("the node does not take clear (%1); ").arg(r.error);
+            }
+            next(ProgramStep::Download);
+        });
     case ProgramStep::Download: {
         SdoOptions options;
         options.protocol = run.req.block ? SdoOptions::Protocol::Block : SdoOptions::Protocol::Auto;
@@ -240,40 +280,47 @@ void ProgramDownload::next(ProgramStep step) {
         run.clock.start();
         if (run.progress) run.progress(0, run.req.image.size(), 0);
         // 1F50h program data, DOMAIN (CiA 302-3 §4).
-        run.transfer = sdo_.download(node, 0x1F50, program, run.req.image, [self, r](const SdoResult& res) {
-            if (!self || self->run_ != r) return;
-            r->transfer = 0;
-            r->out.seconds = double(r->clock.nsecsElapsed()) / 1e9;
-            r->out.fellBackToSegmented = res.fellBackToSegmented;
-            if (!res.ok) {
-                self->sinceBrokenTransfer_.start();
-                r->out.cancelled = r->cancelRequested;
-                return self->fail(ProgramStep::Download, res);
-            }
-            r->out.bytes = r->req.image.size();
-            self->next(r->req.start ? ProgramStep::Start : ProgramStep::ReadAfter);
-        }, options);
+        run.transfer = sdo_.download(
+            node, 0x1F50, program, run.req.image,
+            [self, r](const SdoResult& res) {
+                if (!self || self->run_ != r) return;
+                r->transfer = 0;
+                r->out.seconds = double(r->clock.nsecsElapsed()) / 1e9;
+                r->out.fellBackToSegmented = res.fellBackToSegmented;
+                if (!res.ok) {
+                    self->sinceBrokenTransfer_.start();
+                    r->out.cancelled = r->cancelRequested;
+                    return self->fail(ProgramStep::Download, res);
+                }
+                r->out.bytes = r->req.image.size();
+                self->next(r->req.start ? ProgramStep::Start : ProgramStep::ReadAfter);
+            },
+            options);
         return;
     }
     case ProgramStep::Start: {
         // Listen for the boot-up before asking: the node may reset before it answers.
         QPointer<ProgramDownload> self(this);
         auto r = run_;
-        run.bootSubscription = context_.dispatcher().subscribe(this, {0x700u + node}, [self, r](const std::vector<CanFrame>& frames) {
-            if (!self || self->run_ != r || r->bootSeen) return;
-            for (const CanFrame& f : frames)
-                if (f.len == 1 && f.data[0] == 0x00 && !f.isRemote()) {  // boot-up (CiA 301 §7.2.8.3.3)
-                    r->bootSeen = true;
-                    if (r->startAnswered) self->next(ProgramStep::ReadAfter);
-                    return;
-                }
-        });
+        run.bootSubscription =
+            context_.dispatcher().subscribe(this, {0x700u + node}, [self, r](const std::vector<CanFrame>& frames) {
+                if (!self || self->run_ != r || r->bootSeen) return;
+                for (const CanFrame& f : frames)
+                    if (f.len == 1 && f.data[0] == 0x00 && !f.isRemote()) {  // boot-up (CiA 301 §7.2.8.3.3)
+                        r->bootSeen = true;
+                        if (r->startAnswered) self->next(ProgramStep::ReadAfter);
+                        return;
+                    }
+            });
         run.bootTimer = new QTimer(this);
         run.bootTimer->setSingleShot(true);
         connect(run.bootTimer, &QTimer::timeout, this, [self, r] {
             if (!self || self->run_ != r) return;
             SdoResult none;
-            self->fail(ProgramStep::BootUp, none, QStringLiteral("node %1 sent no boot-up within %2 ms of the start command").arg(r->req.node).arg(r->req.bootTimeoutMs));
+            self->fail(ProgramStep::BootUp, none,
+                       QStringLiteral("node %1 sent no boot-up within %2 ms of the start command")
+                           .arg(r->req.node)
+                           .arg(r->req.bootTimeoutMs));
         });
         return write(step, 0x1F51, program, u8(kStart), [this](const SdoResult& res) {
             Run& rr = *run_;
@@ -292,7 +339,9 @@ void ProgramDownload::next(ProgramStep step) {
         return readInto(&run.out.after, [this] {
             const auto& status = run_->out.after.flashStatus;
             if (status && ((*status >> 1) & 0x7F) != 0)
-                return fail(ProgramStep::ReadAfter, {}, QStringLiteral("1F57h flash status says: %1 (%2)").arg(flashStatusText(*status), hex32(*status)));
+                return fail(
+                    ProgramStep::ReadAfter, {},
+                    QStringLiteral("1F57h flash status says: %1 (%2)").arg(flashStatusText(*status), hex32(*status)));
             finish(true);
         });
     case ProgramStep::Done: return finish(true);

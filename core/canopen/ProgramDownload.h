@@ -38,14 +38,14 @@ QString flashStatusText(uint32_t status);
 // What to download and how.
 struct ProgramDownloadRequest {
     uint8_t node = 0;
-    uint8_t program = 1;          // the sub-index of 1F50h/1F51h/1F56h/1F57h (program number)
-    QByteArray image;             // 1F50h program data, sent as it is
-    bool block = true;            // block SDO (segmented when the node declines); false = segmented
-    bool start = true;            // 1F51h = 1 after the download, then wait for the boot-up
-    bool clear = true;            // 1F51h = 3 before the download, where the node takes it
-    bool readBefore = true;       // 1F56h, 1F57h, 100Ah before (the outcome's `before`)
-    int sdoTimeoutMs = 5000;      // per SDO response (flash erase can take a while)
-    int bootTimeoutMs = 10000;    // from the start command to the node's boot-up
+    uint8_t program = 1;        // the sub-index of 1F50h/1F51h/1F56h/1F57h (program number)
+    QByteArray image;           // 1F50h program data, sent as it is
+    bool block = true;          // block SDO (segmented when the node declines); false = segmented
+    bool start = true;          // 1F51h = 1 after the download, then wait for the boot-up
+    bool clear = true;          // 1F51h = 3 before the download, where the node takes it
+    bool readBefore = true;     // 1F56h, 1F57h, 100Ah before (the outcome's `before`)
+    int sdoTimeoutMs = 5000;    // per SDO response (flash erase can take a while)
+    int bootTimeoutMs = 10000;  // from the start command to the node's boot-up
 };
 
 // The steps, in order.
@@ -63,10 +63,10 @@ struct ProgramDownloadOutcome {
     ProgramState before, after;                  // after: read once the node came back
     bool started = false;                        // the start command was taken
     bool fellBackToSegmented = false;
-    bool clearSkipped = false;                   // the node does not take 1F51h = 3
-    qint64 bytes = 0;                            // program data confirmed by the node
-    double seconds = 0;                          // of the 1F50h transfer
-    QString notes;                               // what else happened, e.g. "drive on node 3 disabled"
+    bool clearSkipped = false;  // the node does not take 1F51h = 3
+    qint64 bytes = 0;           // program data confirmed by the node
+    double seconds = 0;         // of the 1F50h transfer
+    QString notes;              // what else happened, e.g. "drive on node 3 disabled"
     // One line for the CLI and the log.
     QString summary() const;
 };
@@ -106,7 +106,8 @@ private:
     void next(ProgramStep step);
     void fail(ProgramStep step, const SdoResult& r, const QString& error = {});
     void finish(bool ok);
-    void write(ProgramStep step, uint16_t index, uint8_t sub, QByteArray data, std::function<void(const SdoResult&)> then);
+    void write(ProgramStep step, uint16_t index, uint8_t sub, QByteArray data,
+               std::function<void(const SdoResult&)> then);
     void readInto(ProgramState* state, std::function<void()> then);
     void waitBootUp();
 

@@ -6,7 +6,7 @@
 namespace coscope::canopen {
 
 bool isMotionObject(uint16_t index) {
-    if (index < 0x6000 || index >= 0xA000) return false;  // axes 0..7 (CiA 402-2 §5.2)
+    if (index < 0x6000 || index >= 0xA000) return false;                               // axes 0..7 (CiA 402-2 §5.2)
     const uint16_t base = static_cast<uint16_t>(0x6000 + ((index - 0x6000) % 0x800));  // axis 0 (CiA 402-2 §5.2)
     switch (base) {
     case 0x6040:  // controlword
@@ -21,8 +21,7 @@ bool isMotionObject(uint16_t index) {
     case 0x60FE:  // digital outputs (brake)
     case 0x60FF:  // target velocity
         return true;
-    default:
-        return false;
+    default: return false;
     }
 }
 
@@ -42,12 +41,14 @@ std::optional<RpdoLayout> rpdoLayout(const od::ObjectDictionary& d, uint8_t node
         const od::SubObject* e = d.entry(id.mappingIndex(), static_cast<uint8_t>(s));
         const auto m = e ? e->resolvedValue(node) : std::nullopt;
         const auto raw = m ? m->toUInt64() : std::nullopt;
-        if (raw && *raw != 0) layout.entries.push_back(PdoMapEntry::decode(static_cast<uint32_t>(*raw)));  // 0 = unused entry
+        if (raw && *raw != 0)
+            layout.entries.push_back(PdoMapEntry::decode(static_cast<uint32_t>(*raw)));  // 0 = unused entry
     }
     return layout;
 }
 
-std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame, const std::function<const od::ObjectDictionary*(uint8_t)>& dictionaryOf,
+std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame,
+                                         const std::function<const od::ObjectDictionary*(uint8_t)>& dictionaryOf,
                                          const std::function<bool(uint8_t)>& isDrive) {
     if (frame.isError() || frame.isRemote()) return std::nullopt;
     const uint32_t id = frame.id;

@@ -22,9 +22,9 @@ bool isMotionObject(uint16_t index);
 // holds the frame's identifier).
 struct RpdoAddress {
     uint8_t node = 0;
-    int number = 0;             // RPDO 1..4
-    bool mappingKnown = false;  // from the node's dictionary; false: the default COB-ID of a node
-                                // whose mapping is not known (treat as carrying motion)
+    int number = 0;                   // RPDO 1..4
+    bool mappingKnown = false;        // from the node's dictionary; false: the default COB-ID of a node
+                                      // whose mapping is not known (treat as carrying motion)
     std::vector<PdoMapEntry> motion;  // the mapped motion objects (isMotionObject)
     bool carriesMotion() const { return !mappingKnown || !motion.empty(); }
 };
@@ -46,7 +46,8 @@ std::optional<RpdoLayout> rpdoLayout(const od::ObjectDictionary& dictionary, uin
 // holds it for that node-ID, 160xh the mapping; `dictionaryOf` returns null for a node without
 // one), then by the pre-defined connection set (200h/300h/400h/500h + node, CiA 301 §7.3.5) for
 // the nodes `isDrive` says are drives and have no dictionary. nullopt: no RPDO of a known node.
-std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame, const std::function<const od::ObjectDictionary*(uint8_t node)>& dictionaryOf,
+std::optional<RpdoAddress> rpdoAddressed(const CanFrame& frame,
+                                         const std::function<const od::ObjectDictionary*(uint8_t node)>& dictionaryOf,
                                          const std::function<bool(uint8_t node)>& isDrive);
 
 }  // namespace coscope::canopen

@@ -26,7 +26,8 @@ QString hexValue(const QByteArray& data) {
 
 }  // namespace
 
-ScriptRunner::ScriptRunner(MasterContext& context, SdoClient& sdo, QObject* parent) : ScriptRunner(context, sdo, nullptr, nullptr, parent) {}
+ScriptRunner::ScriptRunner(MasterContext& context, SdoClient& sdo, QObject* parent)
+    : ScriptRunner(context, sdo, nullptr, nullptr, parent) {}
 
 ScriptRunner::ScriptRunner(MasterContext& context, SdoClient& sdo, NmtMaster* nmt, LssMaster* lss, QObject* parent)
     : QObject(parent), context_(&context), sdo_(&sdo), nmt_(nmt), lss_(lss), timer_(new QTimer(this)) {
@@ -55,13 +56,16 @@ void ScriptRunner::listenForNodes() {
         subscription_ = 0;
     }
     if (!ids.empty())
-        subscription_ = context_->dispatcher().subscribe(this, ids, [this](const std::vector<CanFrame>& frames) { onHeartbeats(frames); });
+        subscription_ = context_->dispatcher().subscribe(
+            this, ids, [this](const std::vector<CanFrame>& frames) { onHeartbeats(frames); });
 }
 
 // The old bus's services are let go before the owner closes it; the run goes on with the new
 // bus's context and SDO client, and NMT / LSS masters of its own on them.
 void ScriptRunner::reconnect(int bitRate) {
-    if (!reconnector_) return stepDone(false, QStringLiteral("this run cannot reopen the adapter; reconnect at %1 bit/s by hand").arg(bitRate));
+    if (!reconnector_)
+        return stepDone(
+            false, QStringLiteral("this run cannot reopen the adapter; reconnect at %1 bit/s by hand").arg(bitRate));
     if (subscription_) context_->dispatcher().unsubscribe(subscription_);
     subscription_ = 0;
     ownNmt_.reset();
@@ -74,7 +78,8 @@ void ScriptRunner::reconnect(int bitRate) {
     QPointer<ScriptRunner> self(this);
     reconnector_(bitRate, [self, gen, bitRate](MasterContext* context, SdoClient* sdo, const QString& error) {
         if (!self || !self->running_ || self->generation_ != gen) return;
-        if (!context || !sdo) return self->stepDone(false, error.isEmpty() ? QStringLiteral("could not reopen the adapter") : error);
+        if (!context || !sdo)
+            return self->stepDone(false, error.isEmpty() ? QStringLiteral("could not reopen the adapter") : error);
         self->context_ = context;
         self->sdo_ = sdo;
         self->ownNmt_ = std::make_unique<NmtMaster>(*context);
@@ -99,7 +104,8 @@ bool ScriptRunner::run(const CommandScript& script, ScriptRunCallback done) {
         return false;
     }
     listenForNodes();
-    spdlog::info("script run: {} step(s){}", script_.steps.size(), script_.title.isEmpty() ? std::string() : ": " + script_.title.toStdString());
+    spdlog::info("script run: {} step(s){}", script_.steps.size(),
+                 script_.title.isEmpty() ? std::string() : ": " + script_.title.toStdString());
     // Start on the next turn of the event loop so `done` never runs inside run().
     const quint64 gen = ++generation_;
     QTimer::singleShot(0, this, [this, gen] {
@@ -116,7 +122,9 @@ void ScriptRunner::cancel() {
     const int step = step_;
     if (step < static_cast<int>(script_.steps.size())) {
         result_.failedStep = step;
-        result_.error = QStringLiteral("step %1 (%2): cancelled").arg(step + 1).arg(script_.steps[static_cast<size_t>(step)].toLine());
+        result_.error = QStringLiteral("step %1 (%2): cancelled")
+                            .arg(step + 1)
+                            .arg(script_.steps[static_cast<size_t>(step)].toLine());
         emit stepFinished(step, false, QStringLiteral("cancelled"));
     } else {
         result_.error = QStringLiteral("cancelled");
@@ -180,24 +188,27 @@ void ScriptRunner::startStep() {
     switch (s.kind) {
     case ScriptStep::Kind::SdoWrite:
         sdo_->download(s.node, s.index, s.sub, s.data, current([this](const SdoResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("written") : r.error);
-        }));
+                           stepDone(r.ok, r.ok ? QStringLiteral("written") : r.error);
+                       }));
         return;
     case ScriptStep::Kind::SdoRead:
         sdo_->upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("read %1").arg(hexValue(r.data)) : r.error);
-        }));
+                         stepDone(r.ok, r.ok ? QStringLiteral("read %1").arg(hexValue(r.data)) : r.error);
+                     }));
         return;
     case ScriptStep::Kind::SdoExpect:
-        sdo_->upload(s.node, s.index, s.sub, current([this](const SdoResult& r) {
-            if (!r.ok) return stepDone(false, r.error);
-            const ScriptStep& st = script_.steps[static_cast<size_t>(step_)];
-            if (st.matches(r.data)) return stepDone(true, QStringLiteral("read %1 as expected").arg(hexValue(r.data)));
-            stepDone(false, QStringLiteral("node %1 %2 reads %3, expected %4%5")
-                                .arg(st.node)
-                                .arg(objectRef(st.index, st.sub), hexValue(r.data), hexValue(st.data),
-                                     st.mask.isEmpty() ? QString() : QStringLiteral(" under mask %1").arg(hexValue(st.mask))));
-        }));
+        sdo_->upload(
+            s.node, s.index, s.sub, current([this](const SdoResult& r) {
+                if (!r.ok) return stepDone(false, r.error);
+                const ScriptStep& st = script_.steps[static_cast<size_t>(step_)];
+                if (st.matches(r.data))
+                    return stepDone(true, QStringLiteral("read %1 as expected").arg(hexValue(r.data)));
+                stepDone(false, QStringLiteral("node %1 %2 reads %3, expected %4%5")
+                                    .arg(st.node)
+                                    .arg(objectRef(st.index, st.sub), hexValue(r.data), hexValue(st.data),
+                                         st.mask.isEmpty() ? QString()
+                                                           : QStringLiteral(" under mask %1").arg(hexValue(st.mask))));
+            }));
         return;
     case ScriptStep::Kind::Nmt:
         if (!nmt_->send(s.nmt, s.node, &error)) return stepDone(false, error);
@@ -213,32 +224,37 @@ void ScriptRunner::startStep() {
         return;
     case ScriptStep::Kind::LssSwitchSelective:
         lss_->switchStateSelective(s.identity, current([this](const LssResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
-        }));
+                                       stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
+                                   }));
         return;
     case ScriptStep::Kind::LssConfigureNodeId:
         lss_->configureNodeId(static_cast<uint8_t>(s.number), current([this](const LssResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
-        }));
+                                  stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
+                              }));
         return;
     case ScriptStep::Kind::LssConfigureBitRate:
         lss_->configureBitRate(static_cast<int>(s.number), current([this](const LssResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
-        }));
+                                   stepDone(r.ok, r.ok ? QStringLiteral("the device confirmed") : r.error);
+                               }));
         return;
     case ScriptStep::Kind::LssStore:
-        lss_->storeConfiguration(current([this](const LssResult& r) {
-            stepDone(r.ok, r.ok ? QStringLiteral("the device stored it") : r.error);
-        }));
+        lss_->storeConfiguration(current(
+            [this](const LssResult& r) { stepDone(r.ok, r.ok ? QStringLiteral("the device stored it") : r.error); }));
         return;
     case ScriptStep::Kind::Wait:
-        connect(timer_, &QTimer::timeout, this, [this] { stepDone(true, QStringLiteral("waited %1 ms").arg(script_.steps[static_cast<size_t>(step_)].number)); });
+        connect(timer_, &QTimer::timeout, this, [this] {
+            stepDone(true, QStringLiteral("waited %1 ms").arg(script_.steps[static_cast<size_t>(step_)].number));
+        });
         timer_->start(static_cast<int>(std::min<uint32_t>(s.number, 3600000)));
         return;
     case ScriptStep::Kind::WaitForNode:
         connect(timer_, &QTimer::timeout, this, [this] {
             const ScriptStep& st = script_.steps[static_cast<size_t>(step_)];
-            stepDone(false, QStringLiteral("node %1 sent no %2 within %3 ms").arg(st.node).arg(previousStepResets(st.node) ? QStringLiteral("boot-up") : QStringLiteral("boot-up or heartbeat")).arg(st.number));
+            stepDone(false, QStringLiteral("node %1 sent no %2 within %3 ms")
+                                .arg(st.node)
+                                .arg(previousStepResets(st.node) ? QStringLiteral("boot-up")
+                                                                 : QStringLiteral("boot-up or heartbeat"))
+                                .arg(st.number));
         });
         timer_->start(static_cast<int>(std::min<uint32_t>(s.number, 3600000)));
         checkWaitForNode();
@@ -251,7 +267,8 @@ void ScriptRunner::startStep() {
 bool ScriptRunner::previousStepResets(uint8_t node) const {
     if (step_ <= 0) return false;
     const ScriptStep& p = script_.steps[static_cast<size_t>(step_ - 1)];
-    return p.kind == ScriptStep::Kind::Nmt && (p.nmt == NmtCommand::ResetNode || p.nmt == NmtCommand::ResetCommunication) &&
+    return p.kind == ScriptStep::Kind::Nmt &&
+           (p.nmt == NmtCommand::ResetNode || p.nmt == NmtCommand::ResetCommunication) &&
            (p.node == 0 || p.node == node);
 }
 

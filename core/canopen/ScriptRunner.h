@@ -26,9 +26,9 @@ class LssMaster;
 struct ScriptRunResult {
     bool ok = false;
     bool cancelled = false;
-    int failedStep = -1;             // index of the step that failed (or was running when cancelled)
-    int stepsDone = 0;               // steps that finished ok
-    std::vector<QString> details;    // per finished step: what the device answered / the value read
+    int failedStep = -1;           // index of the step that failed (or was running when cancelled)
+    int stepsDone = 0;             // steps that finished ok
+    std::vector<QString> details;  // per finished step: what the device answered / the value read
     QString error;
 };
 using ScriptRunCallback = std::function<void(const ScriptRunResult&)>;

@@ -124,9 +124,7 @@ SdoFrame parseSdo(const uint8_t* d, int len, bool fromClient, bool inSubBlock) {
                 f.crc = static_cast<uint16_t>(b[1] | (b[2] << 8));
             }
             break;
-        default:
-            f.error = QStringLiteral("unknown client command specifier %1").arg(cs);
-            break;
+        default: f.error = QStringLiteral("unknown client command specifier %1").arg(cs); break;
         }
     } else {
         switch (cs) {
@@ -179,9 +177,7 @@ SdoFrame parseSdo(const uint8_t* d, int len, bool fromClient, bool inSubBlock) {
                 f.crc = static_cast<uint16_t>(b[1] | (b[2] << 8));
             }
             break;
-        default:
-            f.error = QStringLiteral("unknown server command specifier %1").arg(cs);
-            break;
+        default: f.error = QStringLiteral("unknown server command specifier %1").arg(cs); break;
         }
     }
     return f;
@@ -218,7 +214,8 @@ QString sdoCommandName(SdoCommand c) {
 uint16_t sdoBlockCrc(const uint8_t* data, size_t len, uint16_t crc) {
     for (size_t i = 0; i < len; ++i) {
         crc ^= static_cast<uint16_t>(data[i] << 8);
-        for (int b = 0; b < 8; ++b) crc = (crc & 0x8000) ? static_cast<uint16_t>((crc << 1) ^ 0x1021) : static_cast<uint16_t>(crc << 1);
+        for (int b = 0; b < 8; ++b)
+            crc = (crc & 0x8000) ? static_cast<uint16_t>((crc << 1) ^ 0x1021) : static_cast<uint16_t>(crc << 1);
     }
     return crc;
 }
@@ -252,7 +249,9 @@ CanFrame initiateUpload(uint8_t node, uint16_t index, uint8_t sub) {
     return f;
 }
 
-CanFrame uploadSegmentRequest(uint8_t node, bool toggle) { return frame8(0x600u + node, {static_cast<uint8_t>(0x60 | (toggle ? 0x10 : 0))}); }
+CanFrame uploadSegmentRequest(uint8_t node, bool toggle) {
+    return frame8(0x600u + node, {static_cast<uint8_t>(0x60 | (toggle ? 0x10 : 0))});
+}
 
 CanFrame abortFromClient(uint8_t node, uint16_t index, uint8_t sub, uint32_t code) {
     CanFrame f = frame8(0x600u + node, {0x80});
@@ -273,7 +272,9 @@ CanFrame initiateDownloadResponse(uint8_t node, uint16_t index, uint8_t sub) {
     return f;
 }
 
-CanFrame downloadSegmentResponse(uint8_t node, bool toggle) { return frame8(0x580u + node, {static_cast<uint8_t>(0x20 | (toggle ? 0x10 : 0))}); }
+CanFrame downloadSegmentResponse(uint8_t node, bool toggle) {
+    return frame8(0x580u + node, {static_cast<uint8_t>(0x20 | (toggle ? 0x10 : 0))});
+}
 
 CanFrame initiateUploadResponse(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data) {
     CanFrame f = frame8(0x580u + node, {});

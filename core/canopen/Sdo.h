@@ -16,51 +16,51 @@ namespace coscope::canopen {
 enum class SdoCommand : uint8_t {
     Invalid,
     // client -> server
-    InitiateDownloadRequest,   // ccs 1
-    DownloadSegmentRequest,    // ccs 0
-    InitiateUploadRequest,     // ccs 2
-    UploadSegmentRequest,      // ccs 3
-    BlockUploadInitiate,       // ccs 5, cs 0
-    BlockUploadStart,          // ccs 5, cs 3
-    BlockUploadAck,            // ccs 5, cs 2
-    BlockUploadEndResponse,    // ccs 5, cs 1
-    BlockDownloadInitiate,     // ccs 6, cs 0
-    BlockDownloadEnd,          // ccs 6, cs 1
+    InitiateDownloadRequest,  // ccs 1
+    DownloadSegmentRequest,   // ccs 0
+    InitiateUploadRequest,    // ccs 2
+    UploadSegmentRequest,     // ccs 3
+    BlockUploadInitiate,      // ccs 5, cs 0
+    BlockUploadStart,         // ccs 5, cs 3
+    BlockUploadAck,           // ccs 5, cs 2
+    BlockUploadEndResponse,   // ccs 5, cs 1
+    BlockDownloadInitiate,    // ccs 6, cs 0
+    BlockDownloadEnd,         // ccs 6, cs 1
     // server -> client
-    InitiateDownloadResponse,  // scs 3
-    DownloadSegmentResponse,   // scs 1
-    InitiateUploadResponse,    // scs 2
-    UploadSegmentResponse,     // scs 0
+    InitiateDownloadResponse,       // scs 3
+    DownloadSegmentResponse,        // scs 1
+    InitiateUploadResponse,         // scs 2
+    UploadSegmentResponse,          // scs 0
     BlockDownloadInitiateResponse,  // scs 5, ss 0
     BlockDownloadAck,               // scs 5, ss 2
     BlockDownloadEndResponse,       // scs 5, ss 1
     BlockUploadInitiateResponse,    // scs 6, ss 0
     BlockUploadEnd,                 // scs 6, ss 1
     // both
-    Abort,                     // cs 4
-    BlockSegment,              // seqno 1..127 (+ bit 7 = last), 7 data bytes
+    Abort,         // cs 4
+    BlockSegment,  // seqno 1..127 (+ bit 7 = last), 7 data bytes
 };
 
 struct SdoFrame {
     SdoCommand command = SdoCommand::Invalid;
     uint16_t index = 0;
     uint8_t sub = 0;
-    bool hasMux = false;       // index/sub present in this frame
+    bool hasMux = false;  // index/sub present in this frame
     bool expedited = false;
     bool sizeIndicated = false;
-    uint32_t size = 0;         // total size when indicated
-    QByteArray data;           // expedited / segment / block segment payload (unused bytes removed)
+    uint32_t size = 0;  // total size when indicated
+    QByteArray data;    // expedited / segment / block segment payload (unused bytes removed)
     bool toggle = false;
-    bool last = false;         // c bit: no more segments / last block segment
-    uint8_t seqno = 0;         // block segment sequence number
-    uint8_t blockSize = 0;     // blksize
-    uint8_t ackSeq = 0;        // ackseq
+    bool last = false;      // c bit: no more segments / last block segment
+    uint8_t seqno = 0;      // block segment sequence number
+    uint8_t blockSize = 0;  // blksize
+    uint8_t ackSeq = 0;     // ackseq
     bool crcSupported = false;
     uint16_t crc = 0;
-    uint8_t unusedBytes = 0;   // n in end-of-block frames (bytes of the last segment without data)
+    uint8_t unusedBytes = 0;     // n in end-of-block frames (bytes of the last segment without data)
     uint8_t protocolSwitch = 0;  // pst
     uint32_t abortCode = 0;
-    QString error;             // why the frame is Invalid or odd (wrong DLC, unknown specifier)
+    QString error;  // why the frame is Invalid or odd (wrong DLC, unknown specifier)
 };
 
 // fromClient: the frame went client -> server (600h + node). inSubBlock: a block transfer's
@@ -76,7 +76,8 @@ uint16_t sdoBlockCrc(const uint8_t* data, size_t len, uint16_t crc = 0);
 
 // Frame builders (payloads of 8 bytes; the caller puts them on 600h/580h + node).
 namespace sdo {
-CanFrame initiateDownload(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data);  // expedited if ≤ 4 bytes, else segmented with size
+CanFrame initiateDownload(uint8_t node, uint16_t index, uint8_t sub,
+                          const QByteArray& data);  // expedited if ≤ 4 bytes, else segmented with size
 CanFrame downloadSegment(uint8_t node, bool toggle, const QByteArray& chunk, bool last);
 CanFrame initiateUpload(uint8_t node, uint16_t index, uint8_t sub);
 CanFrame uploadSegmentRequest(uint8_t node, bool toggle);
@@ -84,7 +85,8 @@ CanFrame abortFromClient(uint8_t node, uint16_t index, uint8_t sub, uint32_t cod
 CanFrame abortFromServer(uint8_t node, uint16_t index, uint8_t sub, uint32_t code);
 CanFrame initiateDownloadResponse(uint8_t node, uint16_t index, uint8_t sub);
 CanFrame downloadSegmentResponse(uint8_t node, bool toggle);
-CanFrame initiateUploadResponse(uint8_t node, uint16_t index, uint8_t sub, const QByteArray& data);  // expedited if ≤ 4 bytes
+CanFrame initiateUploadResponse(uint8_t node, uint16_t index, uint8_t sub,
+                                const QByteArray& data);  // expedited if ≤ 4 bytes
 CanFrame uploadSegmentResponse(uint8_t node, bool toggle, const QByteArray& chunk, bool last);
 }  // namespace sdo
 

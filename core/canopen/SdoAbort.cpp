@@ -18,7 +18,8 @@ QString sdoAbortText(uint32_t code) {
     case ReadOnly: return QStringLiteral("Attempt to write a read-only object");
     case NoObject: return QStringLiteral("Object does not exist in the object dictionary");
     case NotMappable: return QStringLiteral("Object cannot be mapped to the PDO");
-    case PdoLengthExceeded: return QStringLiteral("The number and length of the objects to be mapped would exceed the PDO length");
+    case PdoLengthExceeded:
+        return QStringLiteral("The number and length of the objects to be mapped would exceed the PDO length");
     case ParameterIncompatible: return QStringLiteral("General parameter incompatibility reason");
     case InternalIncompatible: return QStringLiteral("General internal incompatibility in the device");
     case HardwareError: return QStringLiteral("Access failed due to a hardware error");
@@ -33,9 +34,13 @@ QString sdoAbortText(uint32_t code) {
     case NoResource: return QStringLiteral("Resource not available: SDO connection");
     case GeneralError: return QStringLiteral("General error");
     case CannotStore: return QStringLiteral("Data cannot be transferred or stored to the application");
-    case LocalControl: return QStringLiteral("Data cannot be transferred or stored to the application because of local control");
-    case DeviceState: return QStringLiteral("Data cannot be transferred or stored to the application because of the present device state");
-    case NoDictionary: return QStringLiteral("Object dictionary dynamic generation fails or no object dictionary is present");
+    case LocalControl:
+        return QStringLiteral("Data cannot be transferred or stored to the application because of local control");
+    case DeviceState:
+        return QStringLiteral(
+            "Data cannot be transferred or stored to the application because of the present device state");
+    case NoDictionary:
+        return QStringLiteral("Object dictionary dynamic generation fails or no object dictionary is present");
     case NoData: return QStringLiteral("No data available");
     // Not in CiA 301's table (§7.2.4.3.17): some devices abort with 0, which names no reason.
     case 0: return QStringLiteral("No reason given");

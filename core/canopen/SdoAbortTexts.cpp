@@ -14,7 +14,10 @@ bool VendorAbortTable::load(const QByteArray& json, QString* error) {
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
     if (!doc.isObject()) {
-        if (error) *error = QStringLiteral("alarm table is not a JSON object (%1 at offset %2)").arg(pe.errorString()).arg(pe.offset);
+        if (error)
+            *error = QStringLiteral("alarm table is not a JSON object (%1 at offset %2)")
+                         .arg(pe.errorString())
+                         .arg(pe.offset);
         return false;
     }
     const QJsonObject root = doc.object();
@@ -31,7 +34,8 @@ bool VendorAbortTable::load(const QByteArray& json, QString* error) {
 }
 
 bool VendorAbortTable::loadDictionaryTable(const QString& dictionaryName, QString* error) {
-    const QString path = dictionaryName.contains(u'/') ? dictionaryName : QStringLiteral(":/alarms/%1.json").arg(dictionaryName);
+    const QString path =
+        dictionaryName.contains(u'/') ? dictionaryName : QStringLiteral(":/alarms/%1.json").arg(dictionaryName);
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         if (error) *error = QStringLiteral("no alarm table %1").arg(path);

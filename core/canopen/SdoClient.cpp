@@ -20,10 +20,16 @@ QString objectRef(uint16_t index, uint8_t sub) {
 
 // Where a transfer is (not in an anonymous namespace: SdoClient::Transfer holds one).
 enum class SdoClientPhase : uint8_t {
-    UploadInitiate, UploadSegment,
-    DownloadInitiate, DownloadSegment,
-    BlockUploadInitiate, BlockUploadSub, BlockUploadEnd,
-    BlockDownloadInitiate, BlockDownloadSub, BlockDownloadEnd,
+    UploadInitiate,
+    UploadSegment,
+    DownloadInitiate,
+    DownloadSegment,
+    BlockUploadInitiate,
+    BlockUploadSub,
+    BlockUploadEnd,
+    BlockDownloadInitiate,
+    BlockDownloadSub,
+    BlockDownloadEnd,
 };
 namespace {
 using Phase = SdoClientPhase;
@@ -37,13 +43,13 @@ struct SdoClient::Transfer {
     SdoOptions options;
     Phase phase = Phase::UploadInitiate;
     bool toggle = false;
-    qsizetype offset = 0;     // download: bytes confirmed / sent
+    qsizetype offset = 0;  // download: bytes confirmed / sent
     bool sizeKnown = false;
     uint32_t size = 0;
-    bool crc = false;         // both sides agreed on CRC
-    uint8_t blockSize = 0;    // segments per sub-block
-    uint8_t seq = 0;          // block: last good seqno received (upload) / sent (download)
-    bool lastSent = false;    // block download: this sub-block holds the last segment
+    bool crc = false;       // both sides agreed on CRC
+    uint8_t blockSize = 0;  // segments per sub-block
+    uint8_t seq = 0;        // block: last good seqno received (upload) / sent (download)
+    bool lastSent = false;  // block download: this sub-block holds the last segment
 };
 
 struct SdoClient::NodeQueue {
@@ -54,12 +60,11 @@ struct SdoClient::NodeQueue {
 };
 
 SdoClient::SdoClient(MasterContext& context, QObject* parent) : QObject(parent), context_(context) {
-    subscription_ = context_.dispatcher().subscribe(this, {}, [this](const std::vector<CanFrame>& frames) { onFrames(frames); });
+    subscription_ =
+        context_.dispatcher().subscribe(this, {}, [this](const std::vector<CanFrame>& frames) { onFrames(frames); });
 }
 
-SdoClient::~SdoClient() {
-    context_.dispatcher().unsubscribe(subscription_);
-}
+SdoClient::~SdoClient() { context_.dispatcher().unsubscribe(subscription_); }
 
 quint64 SdoClient::upload(uint8_t node, uint16_t index, uint8_t sub, SdoCallback done, SdoOptions options) {
     auto t = std::make_unique<Transfer>();
@@ -72,7 +77,8 @@ quint64 SdoClient::upload(uint8_t node, uint16_t index, uint8_t sub, SdoCallback
     return enqueue(std::move(t));
 }
 
-quint64 SdoClient::download(uint8_t node, uint16_t index, uint8_t sub, QByteArray data, SdoCallback done, SdoOptions options) {
+quint64 SdoClient::download(uint8_t node, uint16_t index, uint8_t sub, QByteArray data, SdoCallback done,
+                            SdoOptions options) {
     auto t = std::make_unique<Transfer>();
     t->result.upload = false;
     t->result.node = node;
@@ -102,12 +108,18 @@ quint64 SdoClient::enqueue(std::unique_ptr<Transfer> t) {
         SdoResult r = t->result;
         r.error = QStringLiteral("node-ID %1 is outside 1-127").arg(node);
         SdoCallback done = std::move(t->done);
-        QMetaObject::invokeMethod(this, [done, r] { if (done) done(r); }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [done, r] {
+                if (done) done(r);
+            },
+            Qt::QueuedConnection);
         return id;
     }
     slot->waiting.push_back(std::move(t));
     // Start from the event loop so the caller has the id before any callback can run.
-    QMetaObject::invokeMethod(this, [this, node] { pump(node); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, node] { pump(node); }, Qt::QueuedConnection);
     return id;
 }
 
@@ -123,7 +135,10 @@ void SdoClient::cancelAll() {
         q->waiting.clear();
         if (q->active) abortTransfer(*q, sdoabort::GeneralError, QStringLiteral("cancelled"));
         for (auto& t : waiting) {
-            t->result.error = QStringLiteral("node %1 %2 %3: cancelled").arg(t->result.node).arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"), objectRef(t->result.index, t->result.sub));
+            t->result.error = QStringLiteral("node %1 %2 %3: cancelled")
+                                  .arg(t->result.node)
+                                  .arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"),
+                                       objectRef(t->result.index, t->result.sub));
             if (t->done) t->done(t->result);
         }
     }
@@ -139,7 +154,10 @@ bool SdoClient::cancel(quint64 id) {
             if ((*it)->result.id != id) continue;
             std::unique_ptr<Transfer> t = std::move(*it);
             q->waiting.erase(it);
-            t->result.error = QStringLiteral("node %1 %2 %3: cancelled").arg(t->result.node).arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"), objectRef(t->result.index, t->result.sub));
+            t->result.error = QStringLiteral("node %1 %2 %3: cancelled")
+                                  .arg(t->result.node)
+                                  .arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"),
+                                       objectRef(t->result.index, t->result.sub));
             if (t->done) t->done(t->result);
             return true;
         }
@@ -178,7 +196,8 @@ void SdoClient::start(NodeQueue& q) {
     } else {
         if (!block) return startDownloadSegmented(q);
         t.phase = Phase::BlockDownloadInitiate;
-        sendStep(q, sdo::blockDownloadInitiate(q.node, t.result.index, t.result.sub, static_cast<uint32_t>(t.data.size())));
+        sendStep(
+            q, sdo::blockDownloadInitiate(q.node, t.result.index, t.result.sub, static_cast<uint32_t>(t.data.size())));
     }
 }
 
@@ -240,13 +259,13 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
     Transfer& t = *q.active;
     const SdoFrame f = parseSdo(frame.data.data(), frame.len, false);
     if (f.command == SdoCommand::Abort) return serverAbort(q, f.abortCode);
-    const auto muxMismatch = [&] {
-        return f.index != t.result.index || f.sub != t.result.sub;
-    };
+    const auto muxMismatch = [&] { return f.index != t.result.index || f.sub != t.result.sub; };
     switch (t.phase) {
     case Phase::UploadInitiate:
         if (f.command != SdoCommand::InitiateUploadResponse) break;
-        if (muxMismatch()) return abortTransfer(q, sdoabort::GeneralError, QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
+        if (muxMismatch())
+            return abortTransfer(q, sdoabort::GeneralError,
+                                 QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
         if (f.expedited) {
             t.data = f.data;
             return finish(q, true);
@@ -259,11 +278,20 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
         return;
     case Phase::UploadSegment:
         if (f.command != SdoCommand::UploadSegmentResponse) break;
-        if (f.toggle != t.toggle) return abortTransfer(q, sdoabort::ToggleBit, QStringLiteral("toggle bit not alternated in an upload segment"));
+        if (f.toggle != t.toggle)
+            return abortTransfer(q, sdoabort::ToggleBit,
+                                 QStringLiteral("toggle bit not alternated in an upload segment"));
         t.data.append(f.data);
-        if (t.sizeKnown && static_cast<uint32_t>(t.data.size()) > t.size) return abortTransfer(q, sdoabort::LengthTooHigh, QStringLiteral("the server sent %1 bytes, more than the %2 it announced").arg(t.data.size()).arg(t.size));
+        if (t.sizeKnown && static_cast<uint32_t>(t.data.size()) > t.size)
+            return abortTransfer(q, sdoabort::LengthTooHigh,
+                                 QStringLiteral("the server sent %1 bytes, more than the %2 it announced")
+                                     .arg(t.data.size())
+                                     .arg(t.size));
         if (f.last) {
-            if (t.sizeKnown && static_cast<uint32_t>(t.data.size()) != t.size) return abortTransfer(q, sdoabort::LengthTooLow, QStringLiteral("the server sent %1 bytes of the %2 it announced").arg(t.data.size()).arg(t.size));
+            if (t.sizeKnown && static_cast<uint32_t>(t.data.size()) != t.size)
+                return abortTransfer(
+                    q, sdoabort::LengthTooLow,
+                    QStringLiteral("the server sent %1 bytes of the %2 it announced").arg(t.data.size()).arg(t.size));
             return finish(q, true);
         }
         t.toggle = !t.toggle;
@@ -271,7 +299,9 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
         return;
     case Phase::DownloadInitiate:
         if (f.command != SdoCommand::InitiateDownloadResponse) break;
-        if (muxMismatch()) return abortTransfer(q, sdoabort::GeneralError, QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
+        if (muxMismatch())
+            return abortTransfer(q, sdoabort::GeneralError,
+                                 QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
         if (!t.data.isEmpty() && t.data.size() <= 4) return finish(q, true);  // expedited
         t.phase = Phase::DownloadSegment;
         t.toggle = false;
@@ -279,7 +309,9 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
         return;
     case Phase::DownloadSegment:
         if (f.command != SdoCommand::DownloadSegmentResponse) break;
-        if (f.toggle != t.toggle) return abortTransfer(q, sdoabort::ToggleBit, QStringLiteral("toggle bit not alternated in a download segment response"));
+        if (f.toggle != t.toggle)
+            return abortTransfer(q, sdoabort::ToggleBit,
+                                 QStringLiteral("toggle bit not alternated in a download segment response"));
         if (t.options.progress) t.options.progress(std::min(t.offset, t.data.size()), t.data.size());
         if (t.offset >= t.data.size()) return finish(q, true);
         t.toggle = !t.toggle;
@@ -287,7 +319,8 @@ void SdoClient::handleSegmented(NodeQueue& q, const CanFrame& frame) {
         return;
     default: break;
     }
-    abortTransfer(q, sdoabort::InvalidCommand, QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
+    abortTransfer(q, sdoabort::InvalidCommand,
+                  QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
 }
 
 void SdoClient::sendNextDownloadSegment(NodeQueue& q) {
@@ -307,7 +340,8 @@ void SdoClient::handleBlockUpload(NodeQueue& q, const CanFrame& frame) {
     if (f.command == SdoCommand::Abort) {
         if (t.phase == Phase::BlockUploadInitiate && f.abortCode == sdoabort::InvalidCommand) {
             // The server does not do block transfer: nothing moved yet, so go on segmented.
-            spdlog::info("SDO node {} {}: block upload declined, using segmented upload", q.node, objectRef(t.result.index, t.result.sub).toStdString());
+            spdlog::info("SDO node {} {}: block upload declined, using segmented upload", q.node,
+                         objectRef(t.result.index, t.result.sub).toStdString());
             t.result.fellBackToSegmented = true;
             return startUploadSegmented(q);
         }
@@ -320,7 +354,9 @@ void SdoClient::handleBlockUpload(NodeQueue& q, const CanFrame& frame) {
             return handleSegmented(q, frame);
         }
         if (f.command != SdoCommand::BlockUploadInitiateResponse) break;
-        if (f.index != t.result.index || f.sub != t.result.sub) return abortTransfer(q, sdoabort::GeneralError, QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
+        if (f.index != t.result.index || f.sub != t.result.sub)
+            return abortTransfer(q, sdoabort::GeneralError,
+                                 QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
         t.crc = f.crcSupported;
         t.sizeKnown = f.sizeIndicated;
         t.size = f.size;
@@ -352,15 +388,23 @@ void SdoClient::handleBlockUpload(NodeQueue& q, const CanFrame& frame) {
     }
     case Phase::BlockUploadEnd: {
         if (f.command != SdoCommand::BlockUploadEnd) break;
-        if (f.unusedBytes > t.data.size()) return abortTransfer(q, sdoabort::InvalidCommand, QStringLiteral("block end says %1 unused bytes").arg(f.unusedBytes));
+        if (f.unusedBytes > t.data.size())
+            return abortTransfer(q, sdoabort::InvalidCommand,
+                                 QStringLiteral("block end says %1 unused bytes").arg(f.unusedBytes));
         t.data.chop(f.unusedBytes);
         if (t.crc) {
-            const uint16_t crc = sdoBlockCrc(reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<size_t>(t.data.size()));
+            const uint16_t crc =
+                sdoBlockCrc(reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<size_t>(t.data.size()));
             if (crc != f.crc)
-                return abortTransfer(q, sdoabort::CrcError, QStringLiteral("CRC error: the server sent %1, the data gives %2").arg(f.crc, 4, 16, QChar(u'0')).arg(crc, 4, 16, QChar(u'0')));
+                return abortTransfer(q, sdoabort::CrcError,
+                                     QStringLiteral("CRC error: the server sent %1, the data gives %2")
+                                         .arg(f.crc, 4, 16, QChar(u'0'))
+                                         .arg(crc, 4, 16, QChar(u'0')));
         }
         if (t.sizeKnown && static_cast<uint32_t>(t.data.size()) != t.size)
-            return abortTransfer(q, t.data.size() > t.size ? sdoabort::LengthTooHigh : sdoabort::LengthTooLow, QStringLiteral("the server sent %1 bytes of the %2 it announced").arg(t.data.size()).arg(t.size));
+            return abortTransfer(
+                q, t.data.size() > t.size ? sdoabort::LengthTooHigh : sdoabort::LengthTooLow,
+                QStringLiteral("the server sent %1 bytes of the %2 it announced").arg(t.data.size()).arg(t.size));
         QString error;
         if (!context_.send(sdo::blockUploadEndResponse(q.node), &error)) return finish(q, false, error);
         ++t.result.framesSent;
@@ -368,7 +412,8 @@ void SdoClient::handleBlockUpload(NodeQueue& q, const CanFrame& frame) {
     }
     default: break;
     }
-    abortTransfer(q, sdoabort::InvalidCommand, QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
+    abortTransfer(q, sdoabort::InvalidCommand,
+                  QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
 }
 
 void SdoClient::sendDownloadSubBlock(NodeQueue& q) {
@@ -395,7 +440,8 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
     if (f.command == SdoCommand::Abort) {
         if (t.phase == Phase::BlockDownloadInitiate && f.abortCode == sdoabort::InvalidCommand) {
             // Declined before any data was sent: the write goes segmented (it is not a retry).
-            spdlog::info("SDO node {} {}: block download declined, using segmented download", q.node, objectRef(t.result.index, t.result.sub).toStdString());
+            spdlog::info("SDO node {} {}: block download declined, using segmented download", q.node,
+                         objectRef(t.result.index, t.result.sub).toStdString());
             t.result.fellBackToSegmented = true;
             return startDownloadSegmented(q);
         }
@@ -404,8 +450,12 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
     switch (t.phase) {
     case Phase::BlockDownloadInitiate:
         if (f.command != SdoCommand::BlockDownloadInitiateResponse) break;
-        if (f.index != t.result.index || f.sub != t.result.sub) return abortTransfer(q, sdoabort::GeneralError, QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
-        if (f.blockSize < 1 || f.blockSize > 127) return abortTransfer(q, sdoabort::InvalidBlockSize, QStringLiteral("invalid block size %1").arg(f.blockSize));
+        if (f.index != t.result.index || f.sub != t.result.sub)
+            return abortTransfer(q, sdoabort::GeneralError,
+                                 QStringLiteral("the server answered for %1").arg(objectRef(f.index, f.sub)));
+        if (f.blockSize < 1 || f.blockSize > 127)
+            return abortTransfer(q, sdoabort::InvalidBlockSize,
+                                 QStringLiteral("invalid block size %1").arg(f.blockSize));
         t.crc = f.crcSupported;
         t.blockSize = f.blockSize;
         t.offset = 0;
@@ -414,19 +464,25 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
         return;
     case Phase::BlockDownloadSub: {
         if (f.command != SdoCommand::BlockDownloadAck) break;
-        if (f.ackSeq > t.seq) return abortTransfer(q, sdoabort::InvalidSequence, QStringLiteral("acknowledged segment %1 of %2 sent").arg(f.ackSeq).arg(t.seq));
+        if (f.ackSeq > t.seq)
+            return abortTransfer(q, sdoabort::InvalidSequence,
+                                 QStringLiteral("acknowledged segment %1 of %2 sent").arg(f.ackSeq).arg(t.seq));
         const bool allAcked = t.lastSent && f.ackSeq == t.seq;
         t.offset = std::min<qsizetype>(t.offset + qsizetype(f.ackSeq) * kSegment, t.data.size());
         if (t.options.progress) t.options.progress(t.offset, t.data.size());
         if (allAcked) {
             const qsizetype size = t.data.size();
             const int lastLen = size == 0 ? 0 : static_cast<int>((size - 1) % kSegment) + 1;
-            const uint16_t crc = t.crc ? sdoBlockCrc(reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<size_t>(size)) : 0;
+            const uint16_t crc =
+                t.crc ? sdoBlockCrc(reinterpret_cast<const uint8_t*>(t.data.constData()), static_cast<size_t>(size))
+                      : 0;
             t.phase = Phase::BlockDownloadEnd;
             sendStep(q, sdo::blockDownloadEnd(q.node, static_cast<uint8_t>(kSegment - lastLen), crc));
             return;
         }
-        if (f.blockSize < 1 || f.blockSize > 127) return abortTransfer(q, sdoabort::InvalidBlockSize, QStringLiteral("invalid block size %1").arg(f.blockSize));
+        if (f.blockSize < 1 || f.blockSize > 127)
+            return abortTransfer(q, sdoabort::InvalidBlockSize,
+                                 QStringLiteral("invalid block size %1").arg(f.blockSize));
         t.blockSize = f.blockSize;
         sendDownloadSubBlock(q);
         return;
@@ -436,7 +492,8 @@ void SdoClient::handleBlockDownload(NodeQueue& q, const CanFrame& frame) {
         return finish(q, true);
     default: break;
     }
-    abortTransfer(q, sdoabort::InvalidCommand, QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
+    abortTransfer(q, sdoabort::InvalidCommand,
+                  QStringLiteral("unexpected %1 from the server").arg(sdoCommandName(f.command)));
 }
 
 void SdoClient::onTimeout(uint8_t node) {
@@ -449,7 +506,8 @@ void SdoClient::onTimeout(uint8_t node) {
     const Transfer* waiting = it->second->active.get();
     QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
     it = queues_.find(node);
-    if (it == queues_.end() || it->second->active.get() != waiting || it->second->timer->isActive()) return;  // answered
+    if (it == queues_.end() || it->second->active.get() != waiting || it->second->timer->isActive())
+        return;  // answered
     NodeQueue& q = *it->second;
     Transfer& t = *q.active;
     const int ms = t.options.timeoutMs > 0 ? t.options.timeoutMs : defaultTimeoutMs_;
@@ -457,25 +515,36 @@ void SdoClient::onTimeout(uint8_t node) {
     t.result.abortCode = sdoabort::Timeout;
     QString ignored;
     context_.send(sdo::abortFromClient(node, t.result.index, t.result.sub, sdoabort::Timeout), &ignored);
-    finish(q, false, QStringLiteral("node %1 did not answer %2 %3 within %4 ms (SDO protocol timed out, 0x05040000)")
-                         .arg(node).arg(t.result.upload ? QStringLiteral("read of") : QStringLiteral("write of"), objectRef(t.result.index, t.result.sub)).arg(ms));
+    finish(q, false,
+           QStringLiteral("node %1 did not answer %2 %3 within %4 ms (SDO protocol timed out, 0x05040000)")
+               .arg(node)
+               .arg(t.result.upload ? QStringLiteral("read of") : QStringLiteral("write of"),
+                    objectRef(t.result.index, t.result.sub))
+               .arg(ms));
 }
 
 void SdoClient::serverAbort(NodeQueue& q, uint32_t code) {
     Transfer& t = *q.active;
     t.result.abortCode = code;
     t.result.serverAborted = true;
-    finish(q, false, QStringLiteral("node %1 aborted %2: %3").arg(q.node).arg(objectRef(t.result.index, t.result.sub), context_.abortText(q.node, code)));
+    finish(q, false,
+           QStringLiteral("node %1 aborted %2: %3")
+               .arg(q.node)
+               .arg(objectRef(t.result.index, t.result.sub), context_.abortText(q.node, code)));
 }
 
 void SdoClient::abortTransfer(NodeQueue& q, uint32_t code, const QString& why) {
     Transfer& t = *q.active;
     t.result.abortCode = code;
     QString ignored;
-    if (context_.send(sdo::abortFromClient(q.node, t.result.index, t.result.sub, code), &ignored)) ++t.result.framesSent;
-    finish(q, false, QStringLiteral("node %1 %2 %3: %4; transfer aborted with 0x%5")
-                         .arg(q.node).arg(t.result.upload ? QStringLiteral("read") : QStringLiteral("write"), objectRef(t.result.index, t.result.sub), why)
-                         .arg(QStringLiteral("%1").arg(code, 8, 16, QChar(u'0')).toUpper()));
+    if (context_.send(sdo::abortFromClient(q.node, t.result.index, t.result.sub, code), &ignored))
+        ++t.result.framesSent;
+    finish(q, false,
+           QStringLiteral("node %1 %2 %3: %4; transfer aborted with 0x%5")
+               .arg(q.node)
+               .arg(t.result.upload ? QStringLiteral("read") : QStringLiteral("write"),
+                    objectRef(t.result.index, t.result.sub), why)
+               .arg(QStringLiteral("%1").arg(code, 8, 16, QChar(u'0')).toUpper()));
 }
 
 void SdoClient::finish(NodeQueue& q, bool ok, const QString& error) {
@@ -484,8 +553,12 @@ void SdoClient::finish(NodeQueue& q, bool ok, const QString& error) {
     t->result.ok = ok;
     if (ok && t->result.upload) t->result.data = t->data;
     if (!ok) {
-        t->result.error = error.startsWith(QStringLiteral("node ")) ? error
-                                                                    : QStringLiteral("node %1 %2 %3: %4").arg(q.node).arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"), objectRef(t->result.index, t->result.sub), error);
+        t->result.error = error.startsWith(QStringLiteral("node "))
+                              ? error
+                              : QStringLiteral("node %1 %2 %3: %4")
+                                    .arg(q.node)
+                                    .arg(t->result.upload ? QStringLiteral("read") : QStringLiteral("write"),
+                                         objectRef(t->result.index, t->result.sub), error);
         spdlog::debug("SDO {}", t->result.error.toStdString());
     }
     updateSubscription();

@@ -75,7 +75,8 @@ public:
     int defaultTimeout() const { return defaultTimeoutMs_; }
 
     quint64 upload(uint8_t node, uint16_t index, uint8_t sub, SdoCallback done, SdoOptions options = {});
-    quint64 download(uint8_t node, uint16_t index, uint8_t sub, QByteArray data, SdoCallback done, SdoOptions options = {});
+    quint64 download(uint8_t node, uint16_t index, uint8_t sub, QByteArray data, SdoCallback done,
+                     SdoOptions options = {});
 
     // Aborts every active and queued transfer (active ones with abort code 08000000h to the
     // server); each callback reports "cancelled".

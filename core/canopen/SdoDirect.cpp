@@ -27,9 +27,12 @@ struct DirectWaiter {
     void offer(const CanFrame& f) {
         std::lock_guard lock(mutex);
         for (auto& [node, p] : pending) {
-            if (f.isTx() && f.id == p.frame.id && f.len == p.frame.len && std::equal(f.data.begin(), f.data.begin() + f.len, p.frame.data.begin())) p.seen = true;
+            if (f.isTx() && f.id == p.frame.id && f.len == p.frame.len &&
+                std::equal(f.data.begin(), f.data.begin() + f.len, p.frame.data.begin()))
+                p.seen = true;
             // The server's answer names the object (CiA 301 §7.2.4.3.3): 60h confirms, 80h aborts.
-            if (!f.isTx() && f.id == 0x580u + node && f.len >= 4 && f.data[1] == p.frame.data[1] && f.data[2] == p.frame.data[2] && f.data[3] == p.frame.data[3]) {
+            if (!f.isTx() && f.id == 0x580u + node && f.len >= 4 && f.data[1] == p.frame.data[1] &&
+                f.data[2] == p.frame.data[2] && f.data[3] == p.frame.data[3]) {
                 if (f.data[0] == 0x60) p.answered = true;
                 else if (f.data[0] == 0x80 && f.len >= 8) p.answered = true, p.abortCode = le32At(f, 4);
             }
@@ -39,14 +42,18 @@ struct DirectWaiter {
 };
 }  // namespace
 
-void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloads, std::chrono::steady_clock::time_point deadline, const QString& what) {
+void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloads,
+                    std::chrono::steady_clock::time_point deadline, const QString& what) {
     if (downloads.empty()) return;
     const auto started = std::chrono::steady_clock::now();
     auto waiter = std::make_shared<DirectWaiter>();
     std::vector<uint32_t> ids;
     for (const DirectDownload& d : downloads) ids.push_back(0x600u + d.node), ids.push_back(0x580u + d.node);
     const int watch = context.dispatcher().addWatch(ids, [waiter](const CanFrame& f) { waiter->offer(f); });
-    const auto waitedMs = [&] { return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started).count(); };
+    const auto waitedMs = [&] {
+        return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - started)
+            .count();
+    };
 
     // Rounds: the k-th download of every node, side by side.
     std::vector<bool> done(downloads.size(), false);
@@ -67,7 +74,9 @@ void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloa
         {
             std::lock_guard lock(waiter->mutex);
             waiter->pending.clear();
-            for (const auto& [node, i] : round) waiter->pending[node].frame = sdo::initiateDownload(node, downloads[i].index, downloads[i].sub, downloads[i].data);
+            for (const auto& [node, i] : round)
+                waiter->pending[node].frame =
+                    sdo::initiateDownload(node, downloads[i].index, downloads[i].sub, downloads[i].data);
         }
         for (const auto& [node, i] : round) {
             QString error;
@@ -94,9 +103,12 @@ void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloa
             d.answered = p.answered && p.abortCode == 0;
             d.abortCode = p.abortCode;
             if (sendErrors.count(node)) d.error = sendErrors[node];
-            else if (!p.seen) d.error = QStringLiteral("its frame did not come back from the bus within %1 ms").arg(waitedMs());
-            else if (p.abortCode) d.error = QStringLiteral("%1 refused it: %2").arg(what, context.abortText(node, p.abortCode));
-            else if (!p.answered) d.error = QStringLiteral("%1 did not confirm it within %2 ms").arg(what).arg(waitedMs());
+            else if (!p.seen)
+                d.error = QStringLiteral("its frame did not come back from the bus within %1 ms").arg(waitedMs());
+            else if (p.abortCode)
+                d.error = QStringLiteral("%1 refused it: %2").arg(what, context.abortText(node, p.abortCode));
+            else if (!p.answered)
+                d.error = QStringLiteral("%1 did not confirm it within %2 ms").arg(what).arg(waitedMs());
             else d.error.clear();
             if (!d.error.isEmpty()) failed[node] = true;
         }

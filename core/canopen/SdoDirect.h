@@ -5,8 +5,8 @@
 #include <QString>
 
 #include <chrono>
-#include <utility>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace coscope::canopen {
@@ -42,7 +42,7 @@ struct DirectDownload {
 // server takes one request at a time: downloads to one node go one after the other, in the
 // given order (the next once the previous was answered or the time ran out); different nodes
 // run side by side. `what` names the server in messages ("the drive", "the node").
-void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloads, std::chrono::steady_clock::time_point deadline,
-                    const QString& what = QStringLiteral("the node"));
+void downloadDirect(MasterContext& context, std::vector<DirectDownload>& downloads,
+                    std::chrono::steady_clock::time_point deadline, const QString& what = QStringLiteral("the node"));
 
 }  // namespace coscope::canopen

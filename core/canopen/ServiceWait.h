@@ -27,7 +27,8 @@ inline bool waitUntil(const std::function<bool()>& done, int timeoutMs) {
 // Runs an asynchronous request `start(callback)` and waits for its one result (events keep
 // being processed). nullopt when no result came within timeoutMs.
 template <typename Result>
-std::optional<Result> waitForResult(const std::function<void(std::function<void(const Result&)>)>& start, int timeoutMs) {
+std::optional<Result> waitForResult(const std::function<void(std::function<void(const Result&)>)>& start,
+                                    int timeoutMs) {
     auto out = std::make_shared<std::optional<Result>>();  // outlives a late callback
     start([out](const Result& r) { *out = r; });
     waitUntil([out] { return out->has_value(); }, timeoutMs);

@@ -42,7 +42,8 @@ struct SyncProducer::Shared {
     PeriodicSender::AfterSend onEachSync;
 };
 
-SyncProducer::SyncProducer(MasterContext& context, QObject* parent) : QObject(parent), context_(context), shared_(std::make_shared<Shared>()) {}
+SyncProducer::SyncProducer(MasterContext& context, QObject* parent)
+    : QObject(parent), context_(context), shared_(std::make_shared<Shared>()) {}
 
 SyncProducer::~SyncProducer() { stopJob(); }
 
@@ -101,7 +102,9 @@ bool SyncProducer::start(QString* error, uint64_t count) {
         if (hook) hook(f, sent);
     };
     job.onStopped = [this](const QString& why) {
-        if (!why.isEmpty()) QMetaObject::invokeMethod(this, [this, why] { emit stoppedOnError(why); }, Qt::QueuedConnection);
+        if (!why.isEmpty())
+            QMetaObject::invokeMethod(
+                this, [this, why] { emit stoppedOnError(why); }, Qt::QueuedConnection);
     };
     job_ = context_.periodic().add(std::move(job), error);
     return job_ != 0;
@@ -124,7 +127,8 @@ uint64_t SyncProducer::sent() const { return sentBefore_ + (job_ ? context_.peri
 
 QString SyncProducer::lastError() const { return job_ ? context_.periodic().status(job_).error : lastError_; }
 
-void SyncProducer::writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done) {
+void SyncProducer::writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node,
+                                                 std::function<void(const SdoResult&)> done) {
     QByteArray v(4, 0);
     for (int i = 0; i < 4; ++i) v[i] = static_cast<char>(periodUs_ >> (8 * i));
     sdo.download(node, 0x1006, 0, v, std::move(done));

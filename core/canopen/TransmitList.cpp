@@ -227,7 +227,8 @@ bool TransmitList::fromJson(const QJsonArray& rows, QString* error) {
 
 QStringList TransmitList::toStringList() const {
     QStringList out;
-    for (const TransmitEntry& e : entries()) out << QStringLiteral("%1\t%2\t%3").arg(formatFrame(e.frame)).arg(e.periodUs).arg(oneLine(e.comment));
+    for (const TransmitEntry& e : entries())
+        out << QStringLiteral("%1\t%2\t%3").arg(formatFrame(e.frame)).arg(e.periodUs).arg(oneLine(e.comment));
     return out;
 }
 

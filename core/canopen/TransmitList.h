@@ -101,12 +101,12 @@ public:
 private:
     struct Row {
         TransmitEntry entry;
-        uint64_t sentOnce = 0;       // sendOnce() frames
-        uint64_t sentPeriodic = 0;   // frames of finished periodic runs
+        uint64_t sentOnce = 0;      // sendOnce() frames
+        uint64_t sentPeriodic = 0;  // frames of finished periodic runs
         PeriodicSender::JobId job = 0;
-        QString error;               // of the last finished run
+        QString error;  // of the last finished run
     };
-    void stopRow(Row& row);                       // mutex_ held
+    void stopRow(Row& row);                                   // mutex_ held
     bool startRow(Row& row, uint64_t count, QString* error);  // mutex_ held
     void replaceRows(std::vector<TransmitEntry> rows);
 

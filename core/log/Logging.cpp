@@ -89,7 +89,8 @@ void init(const QString& appName, spdlog::level::level_enum level) {
         if (QDir().mkpath(dir)) {
             filePath() = dir + u'/' + appName + QStringLiteral(".log");
             try {
-                auto file = std::make_shared<spdlog::sinks::rotating_file_sink_mt>(filePath().toStdString(), 5 * 1024 * 1024, 5);
+                auto file = std::make_shared<spdlog::sinks::rotating_file_sink_mt>(filePath().toStdString(),
+                                                                                   5 * 1024 * 1024, 5);
                 file->set_level(std::min(level, spdlog::level::info));
                 sinks.push_back(file);
             } catch (const spdlog::spdlog_ex& e) {

@@ -87,7 +87,8 @@ BusmasterReader::LineResult BusmasterReader::parseLine(std::string_view line, Ca
     const size_t lastColon = timeText.rfind(':');
     const bool tenths = timeText.size() - lastColon - 1 >= 4;
     if (!tenths && tm[3] > 999) return bad(QStringLiteral("bad time %1, expected h:m:s:ms").arg(quoted(timeText)));
-    const int64_t timeNs = ((int64_t(tm[0]) * 60 + tm[1]) * 60 + tm[2]) * 1000 * kNsPerMs + int64_t(tm[3]) * (tenths ? 100000 : kNsPerMs);
+    const int64_t timeNs =
+        ((int64_t(tm[0]) * 60 + tm[1]) * 60 + tm[2]) * 1000 * kNsPerMs + int64_t(tm[3]) * (tenths ? 100000 : kNsPerMs);
     const std::string_view dir = tok.next();
     if (equalsNoCase(dir, "tx")) f.flags |= CanFrame::Tx;
     else if (!equalsNoCase(dir, "rx")) return bad(QStringLiteral("direction %1 is not Tx or Rx").arg(quoted(dir)));
@@ -96,7 +97,8 @@ BusmasterReader::LineResult BusmasterReader::parseLine(std::string_view line, Ca
     f.bus = busChannel(*channel);
     const std::string_view idText = tok.next();
     uint32_t id = 0;
-    if (!parseNumber(idText, id, true) || id > 0x1FFFFFFFU) return bad(QStringLiteral("bad identifier %1").arg(quoted(idText)));
+    if (!parseNumber(idText, id, true) || id > 0x1FFFFFFFU)
+        return bad(QStringLiteral("bad identifier %1").arg(quoted(idText)));
     f.id = id;
     const std::string_view type = tok.next();
     if (equalsNoCase(type, "x") || equalsNoCase(type, "xr")) f.flags |= CanFrame::Extended;
@@ -105,7 +107,8 @@ BusmasterReader::LineResult BusmasterReader::parseLine(std::string_view line, Ca
     if (type.size() == 2) f.flags |= CanFrame::Remote;
     if (!f.isExtended() && f.id > 0x7FF) return bad(QStringLiteral("11-bit identifier above 7FF"));
     const auto dlc = parseDec(tok.next());
-    if (!dlc || *dlc > 64 || (*dlc > 8 && (f.isRemote() || !isValidFdLength(int(*dlc))))) return bad(QStringLiteral("bad DLC"));
+    if (!dlc || *dlc > 64 || (*dlc > 8 && (f.isRemote() || !isValidFdLength(int(*dlc)))))
+        return bad(QStringLiteral("bad DLC"));
     if (*dlc > 8) f.flags |= CanFrame::Fd;
     f.len = uint8_t(*dlc);
     for (int i = 0; i < f.payloadSize(); ++i) {

@@ -15,7 +15,8 @@ constexpr uint32_t kCanEffMask = 0x1FFFFFFFU;
 bool parseId(std::string_view t, CanFrame& f, QString* why) {
     const auto v = parseHex(t);
     if (!v) {
-        *why = QStringLiteral("identifier '%1' is not hexadecimal").arg(QLatin1StringView(t.data(), qsizetype(t.size())));
+        *why =
+            QStringLiteral("identifier '%1' is not hexadecimal").arg(QLatin1StringView(t.data(), qsizetype(t.size())));
         return false;
     }
     if (t.size() > 3) {
@@ -67,7 +68,8 @@ bool CandumpReader::parsePlainLogLine(std::string_view line, CanFrame& f) {
     while (p < end && p - start <= 9 && unsigned(*p - '0') < 10) fraction = fraction * 10 + (*p++ - '0');
     const auto fractionDigits = p - start;
     if (fractionDigits == 0 || fractionDigits > 9 || end - p < 2 || p[0] != ')' || p[1] != ' ') return false;
-    static constexpr int64_t kScale[10] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000, 10'000, 1'000, 100, 10, 1};
+    static constexpr int64_t kScale[10] = {1'000'000'000, 100'000'000, 10'000'000, 1'000'000, 100'000,
+                                           10'000,        1'000,       100,        10,        1};
     p += 2;
     start = p;
     while (p < end && !isSpace(*p)) ++p;
@@ -106,7 +108,9 @@ CandumpReader::LineResult CandumpReader::parseLine(std::string_view line, CanFra
         const size_t close = line.find(')');
         if (close == std::string_view::npos) return bad(QStringLiteral("timestamp without ')'"));
         const auto ts = parseDecimalNs(line.substr(1, close - 1), 1000000000);
-        if (!ts) return bad(QStringLiteral("bad timestamp '%1'").arg(QLatin1StringView(line.data() + 1, qsizetype(close - 1))));
+        if (!ts)
+            return bad(
+                QStringLiteral("bad timestamp '%1'").arg(QLatin1StringView(line.data() + 1, qsizetype(close - 1))));
         f.timestampNs = *ts;
         tokens = Tokens(line.substr(close + 1));
     }
@@ -118,7 +122,9 @@ CandumpReader::LineResult CandumpReader::parseLine(std::string_view line, CanFra
         f.bus = busIndex(iface);
         return parseLogForm(second, tokens, f);
     }
-    if (second.empty()) return bad(QStringLiteral("expected an identifier after '%1'").arg(QLatin1StringView(iface.data(), qsizetype(iface.size()))));
+    if (second.empty())
+        return bad(QStringLiteral("expected an identifier after '%1'")
+                       .arg(QLatin1StringView(iface.data(), qsizetype(iface.size()))));
     tokens = afterIface;
     f.bus = busIndex(iface);
     return parseTextForm(tokens, f);
@@ -151,7 +157,10 @@ CandumpReader::LineResult CandumpReader::parseLogForm(std::string_view p, Tokens
     }
     size_t n = 0;
     for (size_t i = 0; i < d.size();) {
-        if (d[i] == '.') { ++i; continue; }
+        if (d[i] == '.') {
+            ++i;
+            continue;
+        }
         if (d[i] == '_') break;  // len8_dlc suffix "_9": the payload ends here
         if (i + 1 >= d.size()) return bad(QStringLiteral("odd number of hex digits in data"));
         const int hi = hexDigit(d[i]), lo = hexDigit(d[i + 1]);
@@ -188,7 +197,8 @@ CandumpReader::LineResult CandumpReader::parseTextForm(Tokens& tokens, CanFrame&
         return bad(QStringLiteral("expected [LEN] after the identifier"));
     const std::string_view digits = lenTok.substr(1, lenTok.size() - 2);
     const auto len = parseDec(digits);
-    if (!len || *len > 64) return bad(QStringLiteral("bad length '%1'").arg(QLatin1StringView(lenTok.data(), qsizetype(lenTok.size()))));
+    if (!len || *len > 64)
+        return bad(QStringLiteral("bad length '%1'").arg(QLatin1StringView(lenTok.data(), qsizetype(lenTok.size()))));
     // candump prints FD lengths with two digits ("[08]", lib.c), classic ones with one.
     // Odd FD lengths such as [23] occur in real files (older kernels/tools): kept as they are.
     if (digits.size() == 2 || *len > 8) f.flags |= CanFrame::Fd;

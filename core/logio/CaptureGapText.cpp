@@ -30,8 +30,10 @@ bool numberAfter(std::string_view text, std::string_view key, int64_t* value) {
 }  // namespace
 
 QByteArray captureGapText(int64_t lostNs, int64_t backNs) {
-    return QStringLiteral("CoScope: gap in the capture before this frame: the adapter was lost for %1 s, frames in between are missing "
-                          "(lost_ns=%2 back_ns=%3)")
+    return QStringLiteral(
+               "CoScope: gap in the capture before this frame: the adapter was lost for %1 s, frames in between are "
+               "missing "
+               "(lost_ns=%2 back_ns=%3)")
         .arg(double(backNs - lostNs) / 1e9, 0, 'f', 1)
         .arg(lostNs)
         .arg(backNs)

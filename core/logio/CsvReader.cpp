@@ -57,13 +57,16 @@ CsvReader::LineResult CsvReader::parseLine(std::string_view line, CanFrame& f) {
     else if (c[Dir] == "error") f.flags |= CanFrame::Error;
     else if (c[Dir] != "rx") return bad(QStringLiteral("direction %1 is not rx, tx or error").arg(quoted(c[Dir])));
     const auto len = parseDec(c[Len]);
-    if (!len || *len > (f.isFd() ? 64u : 8u) || (f.isRemote() && *len > 8)) return bad(QStringLiteral("bad length %1").arg(quoted(c[Len])));
+    if (!len || *len > (f.isFd() ? 64u : 8u) || (f.isRemote() && *len > 8))
+        return bad(QStringLiteral("bad length %1").arg(quoted(c[Len])));
     f.len = uint8_t(*len);
     Tokens bytes(c[Data]);
     const int carried = f.payloadSize();
     for (int i = 0; i < carried; ++i) {
         const auto b = parseHexByte(bytes.next());
-        if (!b) return bad(QStringLiteral("length %1 but data byte %2 is missing or not hexadecimal").arg(carried).arg(i + 1));
+        if (!b)
+            return bad(
+                QStringLiteral("length %1 but data byte %2 is missing or not hexadecimal").arg(carried).arg(i + 1));
         f.data[size_t(i)] = *b;
     }
     if (!bytes.atEnd()) return bad(QStringLiteral("more data bytes than the length %1").arg(carried));

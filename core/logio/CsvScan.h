@@ -66,7 +66,8 @@ private:
 // A token for a diagnostic message (cut at 40 characters).
 inline QString quoted(std::string_view t) {
     const bool cut = t.size() > 40;
-    return QLatin1Char('\'') + QString::fromLatin1(t.data(), qsizetype(cut ? 40 : t.size())) + (cut ? QStringLiteral("...'") : QStringLiteral("'"));
+    return QLatin1Char('\'') + QString::fromLatin1(t.data(), qsizetype(cut ? 40 : t.size())) +
+           (cut ? QStringLiteral("...'") : QStringLiteral("'"));
 }
 
 inline bool containsNoCase(std::string_view hay, std::string_view needle) {

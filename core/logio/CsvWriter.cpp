@@ -22,7 +22,8 @@ void appendField(QByteArray& o, const QByteArray& text) {
 void appendSeconds(QByteArray& o, int64_t ns) {
     char text[48];
     const uint64_t mag = ns < 0 ? uint64_t(0) - uint64_t(ns) : uint64_t(ns);
-    std::snprintf(text, sizeof text, "%s%llu.%06llu", ns < 0 ? "-" : "", static_cast<unsigned long long>(mag / 1000000000ULL),
+    std::snprintf(text, sizeof text, "%s%llu.%06llu", ns < 0 ? "-" : "",
+                  static_cast<unsigned long long>(mag / 1000000000ULL),
                   static_cast<unsigned long long>(mag % 1000000000ULL / 1000));
     o += text;
 }

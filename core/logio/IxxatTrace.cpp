@@ -49,7 +49,8 @@ bool IxxatReader::readHeader() {
     }
     for (int i = 0; i < 40 && nextLine(line); ++i)
         if (columnLine(line)) return true;
-    fail(QStringLiteral("IXXAT export without a column line (\"Time\",\"Identifier\",...,\"Data\") in its first 40 lines"));
+    fail(QStringLiteral(
+        "IXXAT export without a column line (\"Time\",\"Identifier\",...,\"Data\") in its first 40 lines"));
     return false;
 }
 

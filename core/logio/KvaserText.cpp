@@ -48,7 +48,8 @@ KvaserReader::LineResult KvaserReader::parseLine(std::string_view line, CanFrame
     }
     if (!f.isExtended() && f.id > 0x7FF) return bad(QStringLiteral("11-bit identifier above 7FF"));
     const auto dlc = parseDec(t);
-    if (!dlc || *dlc > 64 || (*dlc > 8 && !f.isFd() && !isValidFdLength(int(*dlc)))) return bad(QStringLiteral("bad DLC %1").arg(quoted(t)));
+    if (!dlc || *dlc > 64 || (*dlc > 8 && !f.isFd() && !isValidFdLength(int(*dlc))))
+        return bad(QStringLiteral("bad DLC %1").arg(quoted(t)));
     if (*dlc > 8) {
         if (f.isRemote() || !isValidFdLength(int(*dlc))) return bad(QStringLiteral("bad DLC %1").arg(quoted(t)));
         f.flags |= CanFrame::Fd;
@@ -57,7 +58,8 @@ KvaserReader::LineResult KvaserReader::parseLine(std::string_view line, CanFrame
     for (int i = 0; i < f.payloadSize(); ++i) {
         const std::string_view b = tok.next();
         const auto v = parseHexByte(b);
-        if (!v) return bad(QStringLiteral("DLC %1 but data byte %2 is missing or not hexadecimal").arg(f.len).arg(i + 1));
+        if (!v)
+            return bad(QStringLiteral("DLC %1 but data byte %2 is missing or not hexadecimal").arg(f.len).arg(i + 1));
         f.data[size_t(i)] = *v;
     }
     const std::string_view timeText = tok.next();
@@ -66,7 +68,8 @@ KvaserReader::LineResult KvaserReader::parseLine(std::string_view line, CanFrame
     f.timestampNs = *ts;
     const std::string_view dir = tok.next();
     if (equalsNoCase(dir, "t")) f.flags |= CanFrame::Tx;
-    else if (!dir.empty() && !equalsNoCase(dir, "r")) return bad(QStringLiteral("direction %1 is not R or T").arg(quoted(dir)));
+    else if (!dir.empty() && !equalsNoCase(dir, "r"))
+        return bad(QStringLiteral("direction %1 is not R or T").arg(quoted(dir)));
     return LineResult::Frame;
 }
 

@@ -22,21 +22,49 @@ namespace coscope::logio::LogFormats {
 
 const std::vector<LogFormatInfo>& all() {
     static const std::vector<LogFormatInfo> formats = {
-        {QStringLiteral("candump"), QStringLiteral("can-utils candump (-L log files and default text)"),
-         {QStringLiteral("log"), QStringLiteral("candump"), QStringLiteral("txt")}, true, true},
+        {QStringLiteral("candump"),
+         QStringLiteral("can-utils candump (-L log files and default text)"),
+         {QStringLiteral("log"), QStringLiteral("candump"), QStringLiteral("txt")},
+         true,
+         true},
         {QStringLiteral("asc"), QStringLiteral("Vector ASCII log"), {QStringLiteral("asc")}, true, true},
         {QStringLiteral("blf"), QStringLiteral("Vector binary log"), {QStringLiteral("blf")}, true, true},
         {QStringLiteral("trc"), QStringLiteral("PEAK trace 1.0-2.1 (writes 2.1)"), {QStringLiteral("trc")}, true, true},
-        {QStringLiteral("pcap"), QStringLiteral("pcap/pcapng, SocketCAN link type (writes pcapng)"),
-         {QStringLiteral("pcapng"), QStringLiteral("pcap")}, true, true},
-        {QStringLiteral("csv"), QStringLiteral("CoScope CSV with a decoded summary column"), {QStringLiteral("csv")}, true, true},
-        {QStringLiteral("gvret"), QStringLiteral("SavvyCAN GVRET CSV (read only)"), {QStringLiteral("csv")}, true, false},
-        {QStringLiteral("busmaster"), QStringLiteral("BUSMASTER log 1.x-3.x, hex/dec, system/absolute/relative time (read only)"),
-         {QStringLiteral("log")}, true, false},
-        {QStringLiteral("ixxat"), QStringLiteral("IXXAT MiniMon / canAnalyser text export (read only)"),
-         {QStringLiteral("csv"), QStringLiteral("trc")}, true, false},
-        {QStringLiteral("kvaser"), QStringLiteral("Kvaser CanKing / Memorator text export, hex (read only)"), {QStringLiteral("txt")}, true, false},
-        {QStringLiteral("mf4"), QStringLiteral("ASAM MDF4 bus logging (CANedge, Vector, PEAK, Kvaser loggers; read only)"), {QStringLiteral("mf4")}, true, false},
+        {QStringLiteral("pcap"),
+         QStringLiteral("pcap/pcapng, SocketCAN link type (writes pcapng)"),
+         {QStringLiteral("pcapng"), QStringLiteral("pcap")},
+         true,
+         true},
+        {QStringLiteral("csv"),
+         QStringLiteral("CoScope CSV with a decoded summary column"),
+         {QStringLiteral("csv")},
+         true,
+         true},
+        {QStringLiteral("gvret"),
+         QStringLiteral("SavvyCAN GVRET CSV (read only)"),
+         {QStringLiteral("csv")},
+         true,
+         false},
+        {QStringLiteral("busmaster"),
+         QStringLiteral("BUSMASTER log 1.x-3.x, hex/dec, system/absolute/relative time (read only)"),
+         {QStringLiteral("log")},
+         true,
+         false},
+        {QStringLiteral("ixxat"),
+         QStringLiteral("IXXAT MiniMon / canAnalyser text export (read only)"),
+         {QStringLiteral("csv"), QStringLiteral("trc")},
+         true,
+         false},
+        {QStringLiteral("kvaser"),
+         QStringLiteral("Kvaser CanKing / Memorator text export, hex (read only)"),
+         {QStringLiteral("txt")},
+         true,
+         false},
+        {QStringLiteral("mf4"),
+         QStringLiteral("ASAM MDF4 bus logging (CANedge, Vector, PEAK, Kvaser loggers; read only)"),
+         {QStringLiteral("mf4")},
+         true,
+         false},
     };
     return formats;
 }
@@ -49,7 +77,8 @@ QString detectContent(const QByteArray& head) {
     if (head.size() >= 4) {
         const auto* p = reinterpret_cast<const unsigned char*>(head.constData());
         if (std::memcmp(p, "LOGG", 4) == 0) return QStringLiteral("blf");
-        if (head.size() >= 8 && (std::memcmp(p, "MDF     ", 8) == 0 || std::memcmp(p, "UnFinMF ", 8) == 0)) return QStringLiteral("mf4");
+        if (head.size() >= 8 && (std::memcmp(p, "MDF     ", 8) == 0 || std::memcmp(p, "UnFinMF ", 8) == 0))
+            return QStringLiteral("mf4");
         const uint32_t le = le32(p), be = be32(p);
         if (le == 0x0A0D0D0A || le == 0xA1B2C3D4 || le == 0xA1B23C4D || be == 0xA1B2C3D4 || be == 0xA1B23C4D)
             return QStringLiteral("pcap");
@@ -63,11 +92,13 @@ QString detectContent(const QByteArray& head) {
         if (text.substr(0, 3) == "\xEF\xBB\xBF") start = 3;  // UTF-8 BOM
         while (start < text.size() && isSpace(text[start])) ++start;
         const size_t nl = text.find('\n', start);
-        const std::string_view first = trimmed(text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start));
+        const std::string_view first =
+            trimmed(text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start));
         if (isCoScopeCsvHeader(first)) return QStringLiteral("csv");
         if (isGvretHeader(first)) return QStringLiteral("gvret");
         if (isKvaserHeader(first)) return QStringLiteral("kvaser");
-        if (first.substr(0, 3) == "***" && (contains(text.substr(0, 4096), "BUSMASTER") || contains(text.substr(0, 4096), "***<Time><Tx/Rx>")))
+        if (first.substr(0, 3) == "***" &&
+            (contains(text.substr(0, 4096), "BUSMASTER") || contains(text.substr(0, 4096), "***<Time><Tx/Rx>")))
             return QStringLiteral("busmaster");
         if (isIxxatFirstLine(first)) return QStringLiteral("ixxat");
     }
@@ -81,20 +112,22 @@ QString detectContent(const QByteArray& head) {
         pos = nl + 1;
         ++lines;
         if (line.empty()) continue;
-        if (startsWithNoCase(line, "date ") || startsWithNoCase(line, "base hex") || startsWithNoCase(line, "base dec") ||
-            startsWithNoCase(line, "begin triggerblock"))
+        if (startsWithNoCase(line, "date ") || startsWithNoCase(line, "base hex") ||
+            startsWithNoCase(line, "base dec") || startsWithNoCase(line, "begin triggerblock"))
             return QStringLiteral("asc");
         Tokens t(line);
         std::string_view first = t.next();
         if (first.size() > 1 && first.back() == ')' && first.front() != '(') {
-            if (parseDec(first.substr(0, first.size() - 1))) return QStringLiteral("trc");  // "  12)  ..." message number
+            if (parseDec(first.substr(0, first.size() - 1)))
+                return QStringLiteral("trc");  // "  12)  ..." message number
         }
         if (first.front() == '(' && first.back() == ')') first = t.next();  // candump timestamp
         const std::string_view second = t.next();
         if (second.find('#') != std::string_view::npos && parseHex(second.substr(0, second.find('#'))))
             return QStringLiteral("candump");
         const std::string_view third = t.next();
-        if (!third.empty() && third.front() == '[' && third.back() == ']' && parseHex(second)) return QStringLiteral("candump");
+        if (!third.empty() && third.front() == '[' && third.back() == ']' && parseHex(second))
+            return QStringLiteral("candump");
     }
     return {};
 }
@@ -138,7 +171,9 @@ std::unique_ptr<LogReader> openReader(const QString& path, QString* error) {
     probe.close();
     if (format.isEmpty()) {
         if (error)
-            *error = QStringLiteral("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4)")
+            *error = QStringLiteral(
+                         "%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, "
+                         "CoScope CSV, SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4)")
                          .arg(path);
         return nullptr;
     }
@@ -174,13 +209,16 @@ QString writerFormatFor(const QString& outputPath, const QString& explicitFormat
         else if (ext == u"pcapng" || ext == u"pcap") f = QStringLiteral("pcapng");
         if (f.isEmpty()) {
             if (error)
-                *error = QStringLiteral("cannot tell the output format from '%1'; use .log, .asc, .blf, .trc, .pcapng or .csv, or --to FORMAT")
+                *error = QStringLiteral(
+                             "cannot tell the output format from '%1'; use .log, .asc, .blf, .trc, .pcapng or .csv, or "
+                             "--to FORMAT")
                              .arg(outputPath);
             return {};
         }
     }
     if (!createWriter(f)) {
-        if (error) *error = QStringLiteral("unknown output format '%1'; use candump, asc, blf, trc, pcapng or csv").arg(f);
+        if (error)
+            *error = QStringLiteral("unknown output format '%1'; use candump, asc, blf, trc, pcapng or csv").arg(f);
         return {};
     }
     return f == u"log" ? QStringLiteral("candump") : f == u"pcap" ? QStringLiteral("pcapng") : f;

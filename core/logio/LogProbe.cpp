@@ -39,7 +39,8 @@ LogProbe probeLog(const QString& path) {
     buffer.open(QIODevice::ReadOnly);
     file.seek(0);
     if (!reader || !reader->open(needsWholeFile(probe.format) ? static_cast<QIODevice*>(&file) : &buffer, path)) {
-        probe.error = reader ? QStringLiteral("%1: %2").arg(path, reader->errorString()) : QStringLiteral("%1: cannot be read").arg(path);
+        probe.error = reader ? QStringLiteral("%1: %2").arg(path, reader->errorString())
+                             : QStringLiteral("%1: cannot be read").arg(path);
         return probe;
     }
     CanFrame frame;

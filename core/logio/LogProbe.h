@@ -17,7 +17,7 @@ struct LogProbe {
     static constexpr qint64 kProbeBytes = 256 * 1024;
 
     bool usable = false;
-    QString format;  // as LogFormats::detect names it; empty when unknown
+    QString format;             // as LogFormats::detect names it; empty when unknown
     bool formatByName = false;  // no format recognised its content: `format` is the file name's guess
     // Why not (unreadable file, unknown format, bad header, read error), with the file's name;
     // empty when the file opened and only its lines were bad (see problems).

@@ -74,12 +74,14 @@ void LogReader::fail(const QString& message) {
 }
 
 void LogReader::updateProgress() {
-    if (size_ > 0 && device_) progress_.store(std::min(1.0, double(device_->pos()) / double(size_)), std::memory_order_relaxed);
+    if (size_ > 0 && device_)
+        progress_.store(std::min(1.0, double(device_->pos()) / double(size_)), std::memory_order_relaxed);
 }
 
 uint8_t LogReader::busIndex(std::string_view name) {
     for (size_t i = 0; i < busKeys_.size(); ++i)
-        if (busKeys_[i].size() == qsizetype(name.size()) && std::memcmp(busKeys_[i].constData(), name.data(), name.size()) == 0)
+        if (busKeys_[i].size() == qsizetype(name.size()) &&
+            std::memcmp(busKeys_[i].constData(), name.data(), name.size()) == 0)
             return static_cast<uint8_t>(i);
     if (busKeys_.size() >= 255) return 255;
     busKeys_.emplace_back(name.data(), qsizetype(name.size()));
@@ -100,8 +102,8 @@ uint8_t LogReader::busChannel(uint32_t channel) {
 // ---- LineLogReader
 
 namespace {
-constexpr qsizetype kChunk = 1 << 20;           // read 1 MiB at a time
-constexpr qsizetype kMaxLine = 4 * kChunk;      // longer "lines" are cut (binary junk)
+constexpr qsizetype kChunk = 1 << 20;       // read 1 MiB at a time
+constexpr qsizetype kMaxLine = 4 * kChunk;  // longer "lines" are cut (binary junk)
 }  // namespace
 
 bool LineLogReader::nextLine(std::string_view& line) {

@@ -21,7 +21,8 @@ constexpr qint64 kChunk = 1 << 20;
 QString tagText(const char* t) { return QString::fromLatin1(t, 2); }
 }  // namespace
 
-BlockFile::BlockFile(QIODevice* device) : device_(device), size_(device && !device->isSequential() ? device->size() : 0) {}
+BlockFile::BlockFile(QIODevice* device)
+    : device_(device), size_(device && !device->isSequential() ? device->size() : 0) {}
 
 bool BlockFile::readRaw(uint64_t at, char* dst, qint64 n, qint64* got) {
     qint64 done = 0;
@@ -48,7 +49,8 @@ bool BlockFile::read(uint64_t at, Block& b, QString* error, const char* expected
     b.at = at;
     unsigned char h[kHeaderSize];
     if (at < uint64_t(kIdSize) || at % 8) return bad(QStringLiteral("not a valid block address"));
-    if (at + kHeaderSize > uint64_t(size_)) return bad(QStringLiteral("past the end of the file (%1 bytes)").arg(size_));
+    if (at + kHeaderSize > uint64_t(size_))
+        return bad(QStringLiteral("past the end of the file (%1 bytes)").arg(size_));
     if (!readRaw(at, reinterpret_cast<char*>(h), kHeaderSize)) return bad(QStringLiteral("cannot be read"));
     if (h[0] != '#' || h[1] != '#') return bad(QStringLiteral("no block here (no \"##\" tag)"));
     b.tag[0] = char(h[2]);
@@ -59,11 +61,13 @@ bool BlockFile::read(uint64_t at, Block& b, QString* error, const char* expected
     if (linkCount > kMaxLinks || b.length < kHeaderSize + 8 * linkCount)
         return bad(QStringLiteral("length %1 with %2 links is impossible").arg(b.length).arg(linkCount));
     const uint64_t linkBytes = 8 * linkCount;
-    if (at + kHeaderSize + linkBytes > uint64_t(size_)) return bad(QStringLiteral("its links run past the end of the file"));
+    if (at + kHeaderSize + linkBytes > uint64_t(size_))
+        return bad(QStringLiteral("its links run past the end of the file"));
     QByteArray links(qsizetype(linkBytes), '\0');
     if (!readRaw(at + kHeaderSize, links.data(), links.size())) return bad(QStringLiteral("its links cannot be read"));
     b.links.resize(linkCount);
-    for (uint64_t i = 0; i < linkCount; ++i) b.links[i] = le64(reinterpret_cast<const unsigned char*>(links.constData()) + 8 * i);
+    for (uint64_t i = 0; i < linkCount; ++i)
+        b.links[i] = le64(reinterpret_cast<const unsigned char*>(links.constData()) + 8 * i);
     const uint64_t dataLen = b.length - kHeaderSize - linkBytes;
     const qint64 want = qint64(std::min<uint64_t>(dataLen, uint64_t(maxData)));
     if (want > 0) {
@@ -112,8 +116,12 @@ bool DataStream::addBlock(uint64_t at, bool last, QString* error, QString* warni
             f.length = fileEnd - f.dataAt;  // ID block: last DT length not updated
         } else if (end > fileEnd) {
             if (warning)
-                *warning = QStringLiteral("%1 block at byte %2 claims %3 bytes, the file ends after %4: reading what is there")
-                               .arg(tagText(b.tag)).arg(at).arg(f.length).arg(fileEnd - f.dataAt);
+                *warning =
+                    QStringLiteral("%1 block at byte %2 claims %3 bytes, the file ends after %4: reading what is there")
+                        .arg(tagText(b.tag))
+                        .arg(at)
+                        .arg(f.length)
+                        .arg(fileEnd - f.dataAt);
             f.length = fileEnd - f.dataAt;
         }
         f.stored = f.length;
@@ -132,12 +140,16 @@ bool DataStream::addBlock(uint64_t at, bool last, QString* error, QString* warni
         f.dataAt = z.dataAt() + 24;
         if (f.zip > 1 || f.length > kMaxInflated || f.dataAt + f.stored > fileEnd) {
             if (error)
-                *error = f.zip > 1 ? QStringLiteral("DZ block at byte %1 uses unknown compression %2").arg(at).arg(f.zip)
-                                   : QStringLiteral("DZ block at byte %1 has an impossible length").arg(at);
+                *error = f.zip > 1
+                             ? QStringLiteral("DZ block at byte %1 uses unknown compression %2").arg(at).arg(f.zip)
+                             : QStringLiteral("DZ block at byte %1 has an impossible length").arg(at);
             return false;
         }
     } else {
-        if (error) *error = QStringLiteral("block at byte %1 is a %2 block, not data (DT, DZ, DL, HL, SD)").arg(at).arg(tagText(b.tag));
+        if (error)
+            *error = QStringLiteral("block at byte %1 is a %2 block, not data (DT, DZ, DL, HL, SD)")
+                         .arg(at)
+                         .arg(tagText(b.tag));
         return false;
     }
     total_ += f.length;
@@ -168,7 +180,9 @@ bool DataStream::addList(uint64_t at, QString* error, QString* warning) {
             continue;
         }
         if (!b.is("DL")) {
-            if (error) *error = QStringLiteral("block at byte %1 is a %2 block, not a data list").arg(next).arg(tagText(b.tag));
+            if (error)
+                *error =
+                    QStringLiteral("block at byte %1 is a %2 block, not a data list").arg(next).arg(tagText(b.tag));
             return false;
         }
         std::vector<uint64_t> data;
@@ -203,10 +217,14 @@ bool DataStream::inflateFragment(size_t index, QByteArray& out) {
     }
     QByteArray plain(qsizetype(f.length), '\0');
     uLongf outLen = uLongf(f.length);
-    const int rc = uncompress(reinterpret_cast<Bytef*>(plain.data()), &outLen, reinterpret_cast<const Bytef*>(packed.constData()),
-                              uLong(packed.size()));
+    const int rc = uncompress(reinterpret_cast<Bytef*>(plain.data()), &outLen,
+                              reinterpret_cast<const Bytef*>(packed.constData()), uLong(packed.size()));
     if (rc != Z_OK || outLen != f.length) {
-        error_ = QStringLiteral("DZ block at byte %1 does not inflate (zlib error %2, %3 of %4 bytes)").arg(f.block).arg(rc).arg(outLen).arg(f.length);
+        error_ = QStringLiteral("DZ block at byte %1 does not inflate (zlib error %2, %3 of %4 bytes)")
+                     .arg(f.block)
+                     .arg(rc)
+                     .arg(outLen)
+                     .arg(f.length);
         return false;
     }
     if (f.zip == 1 && f.zipParam > 1) {
@@ -248,7 +266,9 @@ bool DataStream::next(QByteArray& out) {
         out.resize(at + got);
         currentPos_ += uint64_t(got);
         if (got < n) {
-            error_ = QStringLiteral("data block at byte %1 cannot be read past byte %2").arg(f.block).arg(f.dataAt + currentPos_);
+            error_ = QStringLiteral("data block at byte %1 cannot be read past byte %2")
+                         .arg(f.block)
+                         .arg(f.dataAt + currentPos_);
             return got > 0;
         }
         return true;
@@ -257,10 +277,12 @@ bool DataStream::next(QByteArray& out) {
 }
 
 QString DataStream::where(uint64_t logical) const {
-    auto it = std::upper_bound(fragments_.begin(), fragments_.end(), logical, [](uint64_t o, const Fragment& f) { return o < f.logical; });
+    auto it = std::upper_bound(fragments_.begin(), fragments_.end(), logical,
+                               [](uint64_t o, const Fragment& f) { return o < f.logical; });
     if (it == fragments_.begin()) return QStringLiteral("byte %1 of the data").arg(logical);
     const Fragment& f = *(it - 1);
-    if (f.zip != 0xFF) return QStringLiteral("byte %1 of the DZ block at byte %2").arg(logical - f.logical).arg(f.block);
+    if (f.zip != 0xFF)
+        return QStringLiteral("byte %1 of the DZ block at byte %2").arg(logical - f.logical).arg(f.block);
     return QStringLiteral("byte %1 of the file").arg(f.dataAt + (logical - f.logical));
 }
 
@@ -268,7 +290,8 @@ bool DataStream::readAt(uint64_t offset, qint64 n, QByteArray& out) {
     out.clear();
     if (n < 0 || offset + uint64_t(n) > total_) return false;
     while (n > 0) {
-        auto it = std::upper_bound(fragments_.begin(), fragments_.end(), offset, [](uint64_t o, const Fragment& f) { return o < f.logical; });
+        auto it = std::upper_bound(fragments_.begin(), fragments_.end(), offset,
+                                   [](uint64_t o, const Fragment& f) { return o < f.logical; });
         if (it == fragments_.begin()) return false;
         const size_t index = size_t(it - fragments_.begin()) - 1;
         const Fragment& f = fragments_[index];

@@ -23,11 +23,11 @@ constexpr qint64 kHeaderSize = 24;
 constexpr uint16_t kUnfinLastDtLength = 0x0004;
 
 struct Block {
-    uint64_t at = 0;     // file offset
-    char tag[2] = {};    // "DG", "CG", ... (without the "##")
+    uint64_t at = 0;   // file offset
+    char tag[2] = {};  // "DG", "CG", ... (without the "##")
     uint64_t length = 0;
     std::vector<uint64_t> links;
-    QByteArray data;     // the bytes after the links (at most what the caller allowed)
+    QByteArray data;  // the bytes after the links (at most what the caller allowed)
     uint64_t dataAt() const { return at + kHeaderSize + 8 * links.size(); }
     bool is(const char* t) const { return tag[0] == t[0] && tag[1] == t[1]; }
     uint64_t link(size_t i) const { return i < links.size() ? links[i] : 0; }

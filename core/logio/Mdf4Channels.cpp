@@ -25,8 +25,7 @@ constexpr int kMaxChannels = 4096;
 double Conversion::apply(double x) const {
     const auto& v = values;
     switch (type) {
-    case 1:
-        return v.size() >= 2 ? v[0] + v[1] * x : x;
+    case 1: return v.size() >= 2 ? v[0] + v[1] * x : x;
     case 2:
         if (v.size() >= 6) {
             const double d = v[3] * x * x + v[4] * x + v[5];
@@ -42,11 +41,11 @@ double Conversion::apply(double x) const {
         size_t i = 1;
         while (i < n && v[2 * i] < x) ++i;
         const double k0 = v[2 * (i - 1)], k1 = v[2 * i];
-        if (type == 4) return k1 == k0 ? v[2 * i + 1] : v[2 * i - 1] + (v[2 * i + 1] - v[2 * i - 1]) * (x - k0) / (k1 - k0);
+        if (type == 4)
+            return k1 == k0 ? v[2 * i + 1] : v[2 * i - 1] + (v[2 * i + 1] - v[2 * i - 1]) * (x - k0) / (k1 - k0);
         return (x - k0) < (k1 - x) ? v[2 * i - 1] : v[2 * i + 1];  // nearest key
     }
-    default:
-        return x;
+    default: return x;
     }
 }
 
@@ -196,7 +195,10 @@ bool readCanLayout(BlockFile& file, uint64_t first, uint32_t recordBytes, CanLay
         const bool bytes = slot == &l.dataBytes && !c.isVlsd();
         if (!c.fits(recordBytes)) {
             if (error)
-                *error = QStringLiteral("CN block at byte %1 (%2) lies outside the %3-byte record").arg(at).arg(name).arg(recordBytes);
+                *error = QStringLiteral("CN block at byte %1 (%2) lies outside the %3-byte record")
+                             .arg(at)
+                             .arg(name)
+                             .arg(recordBytes);
             return false;
         }
         if (!bytes && c.bitCount > 64) continue;
@@ -204,7 +206,9 @@ bool readCanLayout(BlockFile& file, uint64_t first, uint32_t recordBytes, CanLay
     }
     if (!isCan) return false;
     if (!l.time.present || (l.kind != FrameKind::Error && !l.id.present)) {
-        if (error) *error = QStringLiteral("CAN channel group without %1").arg(l.time.present ? QStringLiteral("an ID channel") : QStringLiteral("a time channel"));
+        if (error)
+            *error = QStringLiteral("CAN channel group without %1")
+                         .arg(l.time.present ? QStringLiteral("an ID channel") : QStringLiteral("a time channel"));
         return false;
     }
     if (!l.time.fits(recordBytes)) {

@@ -33,7 +33,7 @@ struct Channel {
     uint8_t bitOffset = 0;
     uint32_t byteOffset = 0;  // after the record id
     uint32_t bitCount = 0;
-    uint64_t dataLink = 0;    // VLSD: the signal data (SD/DL/DZ/HL) or the VLSD channel group
+    uint64_t dataLink = 0;  // VLSD: the signal data (SD/DL/DZ/HL) or the VLSD channel group
     Conversion cc;
 
     bool isVirtual() const { return type == 3 || type == 6; }

@@ -55,8 +55,8 @@ struct Mdf4Reader::Group {
     bool vlsd = false;
     bool can = false;
     CanLayout layout;
-    uint64_t index = 0;       // records read so far (the index of virtual channels)
-    uint64_t vlsdOffset = 0;  // VLSD group: offset of the next sample
+    uint64_t index = 0;                      // records read so far (the index of virtual channels)
+    uint64_t vlsdOffset = 0;                 // VLSD group: offset of the next sample
     std::map<uint64_t, QByteArray> pending;  // VLSD group: samples by offset, not used yet
     int vlsdGroup = -1;                      // CAN group: the VLSD group of its DataBytes
     std::shared_ptr<DataStream> signal;      // CAN group: the SD data of its DataBytes
@@ -122,7 +122,9 @@ bool Mdf4Reader::readHeader() {
     }
     const uint16_t version = le16(id + 28);
     if (version < 400 || version >= 500) {
-        fail(QStringLiteral("MDF version %1.%2 is not MDF 4 (only MDF 4.x bus logging is read)").arg(version / 100).arg(version % 100, 2, 10, QLatin1Char('0')));
+        fail(QStringLiteral("MDF version %1.%2 is not MDF 4 (only MDF 4.x bus logging is read)")
+                 .arg(version / 100)
+                 .arg(version % 100, 2, 10, QLatin1Char('0')));
         return false;
     }
     const uint16_t unfin = le16(id + 60);
@@ -157,12 +159,15 @@ bool Mdf4Reader::readHeader() {
     }
     uint64_t lastData = 0;
     for (const auto& d : dgs) lastData = std::max(lastData, d.second);
-    for (size_t i = 0; i < dgs.size(); ++i) readDataGroup(dgs[i].first, int(i + 1), staleLastDt && dgs[i].second == lastData);
+    for (size_t i = 0; i < dgs.size(); ++i)
+        readDataGroup(dgs[i].first, int(i + 1), staleLastDt && dgs[i].second == lastData);
     for (auto& g : groups_) g->checkCycles = !(unfin & kUnfinCycleCounts) && finalisedTag;
     if (groups_.empty()) {
         // Why: the first problem met, else there is no CAN group at all.
-        fail(diagnostics().empty() ? QStringLiteral("no CAN bus-logging channel group (CAN_DataFrame, CAN_RemoteFrame, CAN_ErrorFrame) in the file")
-                                   : diagnostics().front().message);
+        fail(diagnostics().empty()
+                 ? QStringLiteral(
+                       "no CAN bus-logging channel group (CAN_DataFrame, CAN_RemoteFrame, CAN_ErrorFrame) in the file")
+                 : diagnostics().front().message);
         return false;
     }
     for (auto& g : groups_) advance(*g);
@@ -181,7 +186,10 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
     }
     dg->idSize = uint8_t(b.data[0]);
     if (dg->idSize != 0 && dg->idSize != 1 && dg->idSize != 2 && dg->idSize != 4 && dg->idSize != 8) {
-        warn(0, QStringLiteral("DG block at byte %1 (data group %2): record id size %3 is not 0, 1, 2, 4 or 8; skipped").arg(at).arg(number).arg(dg->idSize));
+        warn(0, QStringLiteral("DG block at byte %1 (data group %2): record id size %3 is not 0, 1, 2, 4 or 8; skipped")
+                    .arg(at)
+                    .arg(number)
+                    .arg(dg->idSize));
         return false;
     }
     bool anyCan = false;
@@ -189,7 +197,9 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
     for (uint64_t cg = b.link(1); cg && seen.insert(cg).second;) {
         Block c;
         if (!file_->read(cg, c, &err, "CG", 40) || c.data.size() < 32) {
-            warn(0, QStringLiteral("%1; data group %2 is skipped").arg(err.isEmpty() ? QStringLiteral("CG block at byte %1 is too short").arg(cg) : err).arg(number));
+            warn(0, QStringLiteral("%1; data group %2 is skipped")
+                        .arg(err.isEmpty() ? QStringLiteral("CG block at byte %1 is too short").arg(cg) : err)
+                        .arg(number));
             return false;
         }
         const auto* p = reinterpret_cast<const unsigned char*>(c.data.constData());
@@ -202,7 +212,11 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
         if (!g.vlsd) {
             QString why;
             g.can = readCanLayout(*file_, c.link(1), le32(p + 24), g.layout, &why);
-            if (!why.isEmpty()) warn(0, QStringLiteral("data group %1, CG block at byte %2: %3; its frames are skipped").arg(number).arg(cg).arg(why));
+            if (!why.isEmpty())
+                warn(0, QStringLiteral("data group %1, CG block at byte %2: %3; its frames are skipped")
+                            .arg(number)
+                            .arg(cg)
+                            .arg(why));
             anyCan = anyCan || g.can;
         }
         dg->groups.push_back(std::move(g));
@@ -211,11 +225,16 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
     if (!anyCan) return false;
     for (const auto& g : dg->groups)
         if (dg->idSize == 0 && g.size == 0) {
-            warn(0, QStringLiteral("DG block at byte %1 (data group %2): records of 0 bytes; skipped").arg(at).arg(number));
+            warn(
+                0,
+                QStringLiteral("DG block at byte %1 (data group %2): records of 0 bytes; skipped").arg(at).arg(number));
             return false;
         }
     if (dg->idSize == 0 && dg->groups.size() != 1) {
-        warn(0, QStringLiteral("DG block at byte %1 (data group %2) has %3 channel groups but no record ids; skipped").arg(at).arg(number).arg(dg->groups.size()));
+        warn(0, QStringLiteral("DG block at byte %1 (data group %2) has %3 channel groups but no record ids; skipped")
+                    .arg(at)
+                    .arg(number)
+                    .arg(dg->groups.size()));
         return false;
     }
     QString warning;
@@ -231,7 +250,12 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
         const uint64_t link = g.layout.dataBytes.dataLink;
         Block target;
         if (!link || !file_->read(link, target, &err, nullptr, 0)) {
-            warn(0, QStringLiteral("data group %1, CG block at byte %2: its DataBytes point to no data (%3); its frames are skipped").arg(number).arg(g.at).arg(err));
+            warn(0,
+                 QStringLiteral(
+                     "data group %1, CG block at byte %2: its DataBytes point to no data (%3); its frames are skipped")
+                     .arg(number)
+                     .arg(g.at)
+                     .arg(err));
             g.can = false;
             continue;
         }
@@ -239,7 +263,11 @@ bool Mdf4Reader::readDataGroup(uint64_t at, int number, bool unfinalisedData) {
             for (size_t i = 0; i < dg->groups.size(); ++i)
                 if (dg->groups[i].at == link && dg->groups[i].vlsd) g.vlsdGroup = int(i);
             if (g.vlsdGroup < 0) {
-                warn(0, QStringLiteral("data group %1, CG block at byte %2: its DataBytes name CG block %3, which is not a VLSD group of this data group; its frames are skipped").arg(number).arg(g.at).arg(link));
+                warn(0, QStringLiteral("data group %1, CG block at byte %2: its DataBytes name CG block %3, which is "
+                                       "not a VLSD group of this data group; its frames are skipped")
+                            .arg(number)
+                            .arg(g.at)
+                            .arg(link));
                 g.can = false;
             }
             continue;
@@ -271,12 +299,21 @@ bool Mdf4Reader::advance(DataGroup& dg) {
             const qsizetype left = dg.buf.size() - dg.pos;
             QString why = dg.data.error();
             if (why.isEmpty() && left > 0)
-                why = QStringLiteral("data group %1: the last record (at %2, %3 of %4 bytes) is cut short; the file ends inside it")
-                          .arg(dg.number).arg(dg.data.where(start)).arg(left).arg(need);
+                why =
+                    QStringLiteral(
+                        "data group %1: the last record (at %2, %3 of %4 bytes) is cut short; the file ends inside it")
+                        .arg(dg.number)
+                        .arg(dg.data.where(start))
+                        .arg(left)
+                        .arg(need);
             if (dg.checkCycles && why.isEmpty()) {
                 for (const auto& g : dg.groups)
                     if (!g.vlsd && g.index != g.cycles)
-                        why = QStringLiteral("data group %1: CG block at byte %2 declares %3 records, %4 were read").arg(dg.number).arg(g.at).arg(g.cycles).arg(g.index);
+                        why = QStringLiteral("data group %1: CG block at byte %2 declares %3 records, %4 were read")
+                                  .arg(dg.number)
+                                  .arg(g.at)
+                                  .arg(g.cycles)
+                                  .arg(g.index);
             }
             endGroup(dg, why);
             return false;
@@ -290,8 +327,11 @@ bool Mdf4Reader::advance(DataGroup& dg) {
                 if (c.recordId == rid) g = &c;
         ++record_;
         if (!g) {
-            endGroup(dg, QStringLiteral("data group %1: record id %2 at %3 belongs to no channel group; the rest of this data group cannot be read")
-                             .arg(dg.number).arg(rid).arg(dg.data.where(start)));
+            endGroup(dg, QStringLiteral("data group %1: record id %2 at %3 belongs to no channel group; the rest of "
+                                        "this data group cannot be read")
+                             .arg(dg.number)
+                             .arg(rid)
+                             .arg(dg.data.where(start)));
             return false;
         }
         if (g->vlsd) {
@@ -314,7 +354,9 @@ bool Mdf4Reader::advance(DataGroup& dg) {
                 held = dg.buf.mid(dg.pos + dg.idSize, qsizetype(g->size));
                 dg.pos += need;
                 past = true;
-                while (!v.pending.count(wanted) && dg.ensure(dg.idSize) && dg.recordId() == v.recordId && storeVlsd(dg, v) == 0) ++record_;
+                while (!v.pending.count(wanted) && dg.ensure(dg.idSize) && dg.recordId() == v.recordId &&
+                       storeVlsd(dg, v) == 0)
+                    ++record_;
                 rec = reinterpret_cast<const unsigned char*>(held.constData());
             }
         }
@@ -337,8 +379,11 @@ qsizetype Mdf4Reader::storeVlsd(DataGroup& dg, Group& g) {
     if (!dg.ensure(dg.idSize + 4)) return dg.idSize + 4;
     const uint32_t len = le32(reinterpret_cast<const unsigned char*>(dg.buf.constData()) + dg.pos + dg.idSize);
     if (len > kMaxVlsdLength) {
-        endGroup(dg, QStringLiteral("data group %1: VLSD record at %2 claims %3 bytes; the rest of this data group cannot be read")
-                         .arg(dg.number).arg(dg.data.where(dg.offset())).arg(len));
+        endGroup(dg, QStringLiteral(
+                         "data group %1: VLSD record at %2 claims %3 bytes; the rest of this data group cannot be read")
+                         .arg(dg.number)
+                         .arg(dg.data.where(dg.offset()))
+                         .arg(len));
         return -1;
     }
     const qsizetype need = dg.idSize + 4 + qsizetype(len);
@@ -370,7 +415,9 @@ bool Mdf4Reader::decode(DataGroup& dg, Group& g, const unsigned char* rec, CanFr
     if (l.kind == FrameKind::Remote) {
         f.flags |= CanFrame::Remote;
         // The requested length: the DLC (a remote frame's DataLength may say 0 bytes carried).
-        f.len = uint8_t(dlc >= 0 ? std::min(dlc, 8) : l.dataLength.present ? int(std::min<uint64_t>(l.dataLength.integer(rec, i), 8)) : 0);
+        f.len = uint8_t(dlc >= 0               ? std::min(dlc, 8)
+                        : l.dataLength.present ? int(std::min<uint64_t>(l.dataLength.integer(rec, i), 8))
+                                               : 0);
         return true;
     }
     bool fd = l.edl.present && l.edl.integer(rec, i) != 0;
@@ -396,12 +443,18 @@ bool Mdf4Reader::decode(DataGroup& dg, Group& g, const unsigned char* rec, CanFr
             }
         } else if (g.signal) {
             QByteArray len;
-            found = g.signal->readAt(offset, 4, len) && le32(reinterpret_cast<const unsigned char*>(len.constData())) <= kMaxVlsdLength &&
+            found = g.signal->readAt(offset, 4, len) &&
+                    le32(reinterpret_cast<const unsigned char*>(len.constData())) <= kMaxVlsdLength &&
                     g.signal->readAt(offset + 4, le32(reinterpret_cast<const unsigned char*>(len.constData())), vlsd);
         }
         if (!found) {
-            warn(int64_t(record_), QStringLiteral("data group %1: the data bytes of the frame %2 at %3 (VLSD offset %4) are missing; frame skipped")
-                                        .arg(dg.number).arg(QString::number(f.id, 16).toUpper()).arg(double(f.timestampNs - startNs_) / 1e9, 0, 'f', 6).arg(offset));
+            warn(int64_t(record_),
+                 QStringLiteral(
+                     "data group %1: the data bytes of the frame %2 at %3 (VLSD offset %4) are missing; frame skipped")
+                     .arg(dg.number)
+                     .arg(QString::number(f.id, 16).toUpper())
+                     .arg(double(f.timestampNs - startNs_) / 1e9, 0, 'f', 6)
+                     .arg(offset));
             return false;
         }
         bytes = reinterpret_cast<const unsigned char*>(vlsd.constData());
@@ -432,7 +485,10 @@ bool Mdf4Reader::decode(DataGroup& dg, Group& g, const unsigned char* rec, CanFr
 // time (equal times keep their order): one data group's channel groups are written in blocks
 // (CANedge writes its Tx and Rx groups apart, up to a second out of step).
 size_t Mdf4Reader::readFrames(CanFrame* out, size_t max) {
-    auto later = [](const Pending& a, const Pending& b) { return a.frame.timestampNs != b.frame.timestampNs ? a.frame.timestampNs > b.frame.timestampNs : a.sequence > b.sequence; };
+    auto later = [](const Pending& a, const Pending& b) {
+        return a.frame.timestampNs != b.frame.timestampNs ? a.frame.timestampNs > b.frame.timestampNs
+                                                          : a.sequence > b.sequence;
+    };
     size_t n = 0;
     while (n < max) {
         if ((n & 0x3FF) == 0x3FF && isCancelled()) break;

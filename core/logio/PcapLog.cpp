@@ -93,9 +93,13 @@ bool PcapReader::readHeader() {
     uint64_t ups = 0;
     if (magicLe == 0xA1B2C3D4) ups = 1000000;
     else if (magicLe == 0xA1B23C4D) ups = 1000000000;
-    else if (be32(h) == 0xA1B2C3D4) { ups = 1000000; swapped_ = true; }
-    else if (be32(h) == 0xA1B23C4D) { ups = 1000000000; swapped_ = true; }
-    else {
+    else if (be32(h) == 0xA1B2C3D4) {
+        ups = 1000000;
+        swapped_ = true;
+    } else if (be32(h) == 0xA1B23C4D) {
+        ups = 1000000000;
+        swapped_ = true;
+    } else {
         fail(QStringLiteral("not a pcap or pcapng file (magic %1)").arg(magicLe, 8, 16, QLatin1Char('0')));
         return false;
     }
@@ -168,7 +172,8 @@ bool PcapReader::decodePacket(const unsigned char* p, uint32_t capLen, const Int
         return false;
     }
     if (capLen < 8) {
-        warn(int64_t(packet_), QStringLiteral("SocketCAN packet of %1 bytes is shorter than its 8-byte header").arg(capLen));
+        warn(int64_t(packet_),
+             QStringLiteral("SocketCAN packet of %1 bytes is shorter than its 8-byte header").arg(capLen));
         return false;
     }
     const uint32_t canId = be32(p);
@@ -190,7 +195,8 @@ bool PcapReader::decodePacket(const unsigned char* p, uint32_t capLen, const Int
     }
     const uint32_t maxLen = f.isFd() ? 64 : 8;
     if (len > maxLen) {
-        warn(int64_t(packet_), QStringLiteral("length %1 is too long for a %2 frame").arg(len).arg(f.isFd() ? "CAN FD" : "CAN"));
+        warn(int64_t(packet_),
+             QStringLiteral("length %1 is too long for a %2 frame").arg(len).arg(f.isFd() ? "CAN FD" : "CAN"));
         return false;
     }
     f.len = len;
@@ -241,7 +247,10 @@ int PcapReader::readPcapngBlock(CanFrame& f) {
     if (le32(h) == kShb) return parseSectionHeader(h) ? 0 : -1;
     const uint32_t type = u32(h), total = u32(h + 4);
     if (total < 12 || total % 4 || total > kMaxBlock) {
-        fail(QStringLiteral("after packet %1: block of type %2 has a bad length %3; file is damaged").arg(packet_).arg(type).arg(total));
+        fail(QStringLiteral("after packet %1: block of type %2 has a bad length %3; file is damaged")
+                 .arg(packet_)
+                 .arg(type)
+                 .arg(total));
         return -1;
     }
     const unsigned char* b = take(qint64(total) - 8, &got);
@@ -276,7 +285,8 @@ int PcapReader::readPcapngBlock(CanFrame& f) {
         f.timestampNs = toNs(ticks, itf.unitsPerSecond);
         const uint32_t padded = (capLen + 3) & ~3U;
         uint32_t epbFlags = 0;
-        if (type == kEpb && bodyLen > 20 + padded) epbFlags = parsePacketOptions(b + 20 + padded, bodyLen - 20 - padded);
+        if (type == kEpb && bodyLen > 20 + padded)
+            epbFlags = parsePacketOptions(b + 20 + padded, bodyLen - 20 - padded);
         if (!decodePacket(b + 20, capLen, itf, f)) return 0;
         if ((epbFlags & kEpbDirectionMask) == kEpbOutbound) f.flags |= CanFrame::Tx;
         return 1;
@@ -315,7 +325,8 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
                 const uint32_t optLen = capLen <= total - 32 ? total - 32 - padded : 0;
                 bool outbound = false;
                 bool plain = optLen <= 4;
-                if ((optLen == 8 || optLen == 12) && u16(b + 20 + padded) == kOptEpbFlags && u16(b + 22 + padded) == 4) {
+                if ((optLen == 8 || optLen == 12) && u16(b + 20 + padded) == kOptEpbFlags &&
+                    u16(b + 22 + padded) == 4) {
                     plain = true;
                     outbound = (rd(b + 24 + padded) & kEpbDirectionMask) == kEpbOutbound;
                 }
@@ -326,8 +337,8 @@ size_t PcapReader::readFrames(CanFrame* out, size_t max) {
                     const uint64_t ticks = (uint64_t(rd(b + 4)) << 32) | rd(b + 8);
                     f.timestampNs = toNs(ticks, itf.unitsPerSecond);
                     const unsigned char* p = b + 20;
-                    if (itf.linkType == kLinkTypeSocketCan && capLen >= 8 && capLen < 72 && !(p[5] & kCanfdFdf) && p[4] <= 8 &&
-                        capLen - 8 >= p[4]) {
+                    if (itf.linkType == kLinkTypeSocketCan && capLen >= 8 && capLen < 72 && !(p[5] & kCanfdFdf) &&
+                        p[4] <= 8 && capLen - 8 >= p[4]) {
                         // A classic frame captured whole: what decodePacket() does for it.
                         const uint32_t canId = be32(p);
                         f.bus = itf.bus;
@@ -400,7 +411,9 @@ void pad4(QByteArray& o) {
 
 // One comment a gap: gaps without a frame between them (the adapter lost twice in a row) are
 // comments of the same packet, in order (pcapng allows an option more than once, section 3.5).
-void PcapngWriter::writeGap(int64_t lostNs, int64_t backNs) { comments_.push_back(captureGapText(lostNs, backNs).left(0xFFFF)); }
+void PcapngWriter::writeGap(int64_t lostNs, int64_t backNs) {
+    comments_.push_back(captureGapText(lostNs, backNs).left(0xFFFF));
+}
 
 void PcapngWriter::writeHeader(const CanFrame*) {
     QByteArray& o = out();
@@ -467,7 +480,7 @@ void PcapngWriter::writeFrame(const CanFrame& f, const QString&) {
     QByteArray& o = out();
     uint32_t options = 0;
     for (const QByteArray& c : comments_) options += 4 + ((uint32_t(c.size()) + 3) & ~3U);
-    if (f.isTx()) options += 8;  // epb_flags: outbound
+    if (f.isTx()) options += 8;                             // epb_flags: outbound
     const uint32_t total = 12 + 20 + capLen + options + 4;  // capLen is a multiple of 4
     put32(o, kEpb);
     put32(o, total);

@@ -35,8 +35,8 @@ private:
     // Up to n bytes from the input, buffered in large chunks (no per-packet device reads);
     // the pointer stays valid until the next call. *got < n only at the end of the input.
     const unsigned char* take(qint64 n, qint64* got);
-    int readPcapRecord(CanFrame& frame);    // 1 frame, 0 skipped, -1 end
-    int readPcapngBlock(CanFrame& frame);   // 1 frame, 0 skipped, -1 end
+    int readPcapRecord(CanFrame& frame);   // 1 frame, 0 skipped, -1 end
+    int readPcapngBlock(CanFrame& frame);  // 1 frame, 0 skipped, -1 end
     bool parseSectionHeader(const unsigned char* first8);
     void parseInterface(const QByteArray& body);
     bool decodePacket(const unsigned char* p, uint32_t capLen, const Interface& itf, CanFrame& frame);

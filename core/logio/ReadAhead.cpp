@@ -8,7 +8,8 @@
 namespace coscope::logio {
 
 ReadAhead::ReadAhead(LogReader& reader, size_t batchFrames, size_t depth, BatchObserver observer)
-    : reader_(reader), batchFrames_(batchFrames ? batchFrames : 1), observer_(std::move(observer)), slots_(depth < 2 ? 2 : depth) {
+    : reader_(reader), batchFrames_(batchFrames ? batchFrames : 1), observer_(std::move(observer)),
+      slots_(depth < 2 ? 2 : depth) {
     for (Slot& s : slots_) s.frames.resize(batchFrames_);
     thread_ = std::thread([this] { produce(); });
 }
@@ -63,7 +64,6 @@ std::span<const CanFrame> ReadAhead::next() {
     busNames_ = s.busNames;
     return {s.frames.data(), s.count};
 }
-
 
 void ReadAhead::keepBatch(std::vector<CanFrame>& frames) {
     // The held slot is the consumer's alone (produce() waits for it to be handed back).

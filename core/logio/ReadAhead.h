@@ -29,7 +29,8 @@ public:
 
     static constexpr size_t kBatchFrames = 4096, kDepth = 4;
 
-    explicit ReadAhead(LogReader& reader, size_t batchFrames = kBatchFrames, size_t depth = kDepth, BatchObserver observer = {});
+    explicit ReadAhead(LogReader& reader, size_t batchFrames = kBatchFrames, size_t depth = kDepth,
+                       BatchObserver observer = {});
     ~ReadAhead();  // cancels the reader if it is still running and waits for the thread
     ReadAhead(const ReadAhead&) = delete;
     ReadAhead& operator=(const ReadAhead&) = delete;

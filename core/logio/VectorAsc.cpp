@@ -39,7 +39,10 @@ QDateTime parseAscDate(std::string_view text) {
             int idx = 0;
             size_t i = 0;
             for (; i < t.size() && t[i] != '.'; ++i) {
-                if (t[i] == ':') { if (++idx > 2) break; continue; }
+                if (t[i] == ':') {
+                    if (++idx > 2) break;
+                    continue;
+                }
                 if (t[i] < '0' || t[i] > '9') return {};
                 if (parts[idx] > 9999) return {};  // no clock field has that many digits (and no int overflow)
                 parts[idx] = parts[idx] * 10 + (t[i] - '0');
@@ -171,7 +174,8 @@ AscReader::LineResult AscReader::parseLine(std::string_view line, CanFrame& f) {
     const std::string_view dir = tokens.next();
     const bool isRx = dir == "Rx", isTx = dir == "Tx";
     if (!isRx && !isTx) return LineResult::Skip;  // Statistic:, J1939TP, other events
-    if (!parseId(what, f)) return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(what.data(), qsizetype(what.size()))));
+    if (!parseId(what, f))
+        return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(what.data(), qsizetype(what.size()))));
     f.bus = busChannel(*ch);
     if (isTx) f.flags |= CanFrame::Tx;
     const std::string_view type = tokens.next();
@@ -184,7 +188,8 @@ AscReader::LineResult AscReader::parseLine(std::string_view line, CanFrame& f) {
     if (type != "d" && type != "D") return bad(QStringLiteral("expected 'd' or 'r' after the direction"));
     const std::string_view dlcTok = tokens.next();
     const auto dlc = dlcTok.size() == 1 ? std::optional<uint32_t>(hexDigit(dlcTok[0])) : std::nullopt;
-    if (!dlc || int(*dlc) < 0) return bad(QStringLiteral("bad DLC '%1'").arg(QLatin1StringView(dlcTok.data(), qsizetype(dlcTok.size()))));
+    if (!dlc || int(*dlc) < 0)
+        return bad(QStringLiteral("bad DLC '%1'").arg(QLatin1StringView(dlcTok.data(), qsizetype(dlcTok.size()))));
     // DLC 9..15 on classic CAN still carries 8 bytes (ISO 11898-1).
     f.len = uint8_t(std::min<uint32_t>(*dlc, 8));
     for (int i = 0; i < f.len; ++i) {
@@ -208,13 +213,15 @@ AscReader::LineResult AscReader::parseCanFd(Tokens& tokens, CanFrame& f) {
         f.flags |= CanFrame::Error;
         return LineResult::Frame;
     }
-    if (!parseId(idTok, f)) return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(idTok.data(), qsizetype(idTok.size()))));
+    if (!parseId(idTok, f))
+        return bad(QStringLiteral("bad identifier '%1'").arg(QLatin1StringView(idTok.data(), qsizetype(idTok.size()))));
     std::string_view brs = tokens.next();
     if (brs != "0" && brs != "1") brs = tokens.next();  // a symbolic name came first
     const std::string_view esi = tokens.next();
     const std::string_view dlcTok = tokens.next();
     const auto dataLen = parseDec(tokens.next());
-    if ((brs != "0" && brs != "1") || (esi != "0" && esi != "1") || dlcTok.size() != 1 || hexDigit(dlcTok[0]) < 0 || !dataLen || *dataLen > 64)
+    if ((brs != "0" && brs != "1") || (esi != "0" && esi != "1") || dlcTok.size() != 1 || hexDigit(dlcTok[0]) < 0 ||
+        !dataLen || *dataLen > 64)
         return bad(QStringLiteral("CANFD line: expected BRS ESI DLC LENGTH"));
     f.flags |= CanFrame::Fd;
     if (brs == "1") f.flags |= CanFrame::BitRateSwitch;
@@ -269,13 +276,18 @@ void AscWriter::writeFrame(const CanFrame& f, const QString&) {
     if (f.isExtended()) id += 'x';
     const char* dir = f.isTx() ? "Tx" : "Rx";
     if (f.isFd()) {
-        const int dlc = f.len <= 8 ? f.len : f.len <= 24 ? 9 + (f.len - 12) / 4 : f.len == 32 ? 13 : f.len == 48 ? 14 : 15;
+        const int dlc = f.len <= 8    ? f.len
+                        : f.len <= 24 ? 9 + (f.len - 12) / 4
+                        : f.len == 32 ? 13
+                        : f.len == 48 ? 14
+                                      : 15;
         uint32_t flags = 0x1000;
         if (f.flags & CanFrame::BitRateSwitch) flags |= 0x2000;
         if (f.flags & CanFrame::ErrorState) flags |= 0x4000;
         o += "CANFD " + QByteArray::number(ch).rightJustified(3) + ' ' + QByteArray(dir).leftJustified(4) + ' ' +
-             id.rightJustified(8) + "  " + QByteArray(32, ' ') + ' ' + ((f.flags & CanFrame::BitRateSwitch) ? '1' : '0') +
-             ' ' + ((f.flags & CanFrame::ErrorState) ? '1' : '0') + ' ';
+             id.rightJustified(8) + "  " + QByteArray(32, ' ') + ' ' +
+             ((f.flags & CanFrame::BitRateSwitch) ? '1' : '0') + ' ' + ((f.flags & CanFrame::ErrorState) ? '1' : '0') +
+             ' ';
         appendHex(o, uint32_t(dlc), 1);
         o += ' ' + QByteArray::number(f.len).rightJustified(2);
         for (int i = 0; i < f.len; ++i) {

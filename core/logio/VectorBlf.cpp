@@ -56,7 +56,8 @@ bool BlfReader::readHeader() {
     const unsigned char* st = h + 40;
     const QDate date(le16(st), le16(st + 2), le16(st + 6));
     const QTime time(le16(st + 8), le16(st + 10), le16(st + 12), le16(st + 14));
-    if (date.isValid() && time.isValid() && date.year() >= 1900 && date.year() <= 2200) startNs_ = QDateTime(date, time).toMSecsSinceEpoch() * 1000000;
+    if (date.isValid() && time.isValid() && date.year() >= 1900 && date.year() <= 2200)
+        startNs_ = QDateTime(date, time).toMSecsSinceEpoch() * 1000000;
     return true;
 }
 
@@ -81,7 +82,9 @@ bool BlfReader::readTopObject() {
     const uint16_t headerSize = le16(h + 4);
     const uint32_t size = le32(h + 8), type = le32(h + 12);
     if (size < 16 || size > kMaxObject || headerSize < 16 || headerSize > size) {
-        fail(QStringLiteral("object %1: size %2 is implausible; the rest of the file cannot be read").arg(object_).arg(size));
+        fail(QStringLiteral("object %1: size %2 is implausible; the rest of the file cannot be read")
+                 .arg(object_)
+                 .arg(size));
         return false;
     }
     QByteArray obj(qsizetype(size), '\0');
@@ -201,8 +204,7 @@ bool BlfReader::decodeObject(const unsigned char* o, size_t size, CanFrame& f) {
         f.flags |= CanFrame::Error;
         return true;
     }
-    default:
-        return false;  // markers, statistics, other buses
+    default: return false;  // markers, statistics, other buses
     }
 }
 
@@ -221,7 +223,8 @@ size_t BlfReader::readFrames(CanFrame* out, size_t max) {
                 continue;
             }
             if (left >= 12) {
-                warn(int64_t(object_), QStringLiteral("lost object alignment inside a container; rest of the container skipped"));
+                warn(int64_t(object_),
+                     QStringLiteral("lost object alignment inside a container; rest of the container skipped"));
                 pendingPos_ = pending_.size();
                 continue;
             }
@@ -229,7 +232,8 @@ size_t BlfReader::readFrames(CanFrame* out, size_t max) {
         if (left >= 16 && isLobj(p)) {
             const uint32_t size = le32(p + 8);
             if (size < 16 || size > kMaxObject) {
-                warn(int64_t(object_), QStringLiteral("object with size %1 inside a container; rest skipped").arg(size));
+                warn(int64_t(object_),
+                     QStringLiteral("object with size %1 inside a container; rest skipped").arg(size));
                 pendingPos_ = pending_.size();
                 continue;
             }

@@ -35,7 +35,8 @@ void putSystemTime(QByteArray& b, int64_t ns) {
     const QDateTime t = QDateTime::fromMSecsSinceEpoch(ns / 1000000);
     const QDate d = t.date();
     const QTime c = t.time();
-    for (int v : {d.year(), d.month(), d.dayOfWeek() % 7, d.day(), c.hour(), c.minute(), c.second(), c.msec()}) blfPut16(b, uint16_t(v));
+    for (int v : {d.year(), d.month(), d.dayOfWeek() % 7, d.day(), c.hour(), c.minute(), c.second(), c.msec()})
+        blfPut16(b, uint16_t(v));
 }
 // "LOBJ" base header + object header v1 (flags 2 = 1 ns timestamps).
 void putObjectHeader(QByteArray& b, uint32_t type, uint32_t bodySize, uint64_t ts) {
@@ -55,13 +56,13 @@ QByteArray BlfWriter::header() const {
     QByteArray h;
     h.append("LOGG", 4);
     blfPut32(h, kFileHeaderSize);
-    h.append(char(0));                    // application ID
-    h.append("\x01\x00\x00", 3);          // application version
-    h.append("\x02\x06\x08\x01", 4);      // binary log version
+    h.append(char(0));                // application ID
+    h.append("\x01\x00\x00", 3);      // application version
+    h.append("\x02\x06\x08\x01", 4);  // binary log version
     blfPut64(h, fileSize_);
     blfPut64(h, uncompressed_);
     blfPut32(h, objects_);
-    blfPut32(h, objects_);                   // objects read
+    blfPut32(h, objects_);  // objects read
     putSystemTime(h, startNs_);
     putSystemTime(h, lastNs_);
     h.append(QByteArray(int(kFileHeaderSize) - int(h.size()), '\0'));
@@ -69,7 +70,8 @@ QByteArray BlfWriter::header() const {
 }
 
 void BlfWriter::writeHeader(const CanFrame* first) {
-    startNs_ = first ? first->timestampNs / 1000000 * 1000000 : QDateTime::currentMSecsSinceEpoch() * 1000000;  // SYSTEMTIME has ms
+    startNs_ = first ? first->timestampNs / 1000000 * 1000000
+                     : QDateTime::currentMSecsSinceEpoch() * 1000000;  // SYSTEMTIME has ms
     lastNs_ = startNs_;
     out() += header();
     fileSize_ = kFileHeaderSize;
@@ -92,9 +94,10 @@ void BlfWriter::writeFrame(const CanFrame& f, const QString&) {
         c.append(char(flags));
         c.append(char(fdLengthToDlc(f.len)));
         blfPut32(c, id);
-        blfPut32(c, 0);  // frame length in ns: unknown
+        blfPut32(c, 0);     // frame length in ns: unknown
         c.append(char(0));  // bit count
-        c.append(char(0x1 | (f.flags & CanFrame::BitRateSwitch ? 0x2 : 0) | (f.flags & CanFrame::ErrorState ? 0x4 : 0)));
+        c.append(
+            char(0x1 | (f.flags & CanFrame::BitRateSwitch ? 0x2 : 0) | (f.flags & CanFrame::ErrorState ? 0x4 : 0)));
         c.append(char(f.payloadSize()));
         c.append(QByteArray(5, '\0'));
         c.append(reinterpret_cast<const char*>(f.data.data()), 64);
@@ -114,8 +117,9 @@ void BlfWriter::closeContainer() {
     if (container_.isEmpty()) return;
     uLongf packedLen = compressBound(uLong(container_.size()));
     QByteArray packed(qsizetype(packedLen), '\0');
-    const bool zipped = compress2(reinterpret_cast<Bytef*>(packed.data()), &packedLen, reinterpret_cast<const Bytef*>(container_.constData()),
-                                  uLong(container_.size()), 6) == Z_OK;
+    const bool zipped =
+        compress2(reinterpret_cast<Bytef*>(packed.data()), &packedLen,
+                  reinterpret_cast<const Bytef*>(container_.constData()), uLong(container_.size()), 6) == Z_OK;
     if (zipped) packed.truncate(qsizetype(packedLen));
     else packed = container_;  // stored (method 0)
     QByteArray& o = out();

@@ -75,7 +75,8 @@ QString dataTypeName(DataType t) {
     case DataType::Identity: return QStringLiteral("IDENTITY");
     default: break;
     }
-    return QStringLiteral("DATATYPE_") + QString::number(static_cast<unsigned>(t), 16).rightJustified(4, QLatin1Char('0')).toUpper();
+    return QStringLiteral("DATATYPE_") +
+           QString::number(static_cast<unsigned>(t), 16).rightJustified(4, QLatin1Char('0')).toUpper();
 }
 
 std::optional<DataType> dataTypeFromString(const QString& text) {
@@ -84,10 +85,8 @@ std::optional<DataType> dataTypeFromString(const QString& text) {
         if (s.compare(QLatin1String(i.name), Qt::CaseInsensitive) == 0) return i.type;
     bool ok = false;
     uint v = 0;
-    if (s.startsWith(QLatin1String("0x"), Qt::CaseInsensitive))
-        v = s.mid(2).toUInt(&ok, 16);
-    else
-        v = s.toUInt(&ok, 10);
+    if (s.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) v = s.mid(2).toUInt(&ok, 16);
+    else v = s.toUInt(&ok, 10);
     if (!ok || v > 0xFFFF) return std::nullopt;
     return static_cast<DataType>(v);
 }

@@ -45,7 +45,17 @@ enum class DataType : std::uint16_t {
 };
 
 // How a type is represented in od::Value.
-enum class TypeClass : std::uint8_t { Boolean, Signed, Unsigned, Real, VisibleString, OctetString, UnicodeString, Time, Domain };
+enum class TypeClass : std::uint8_t {
+    Boolean,
+    Signed,
+    Unsigned,
+    Real,
+    VisibleString,
+    OctetString,
+    UnicodeString,
+    Time,
+    Domain
+};
 
 TypeClass typeClass(DataType t);
 // Size in bits on the bus (BOOLEAN counts as 8 bits in SDO/PDO payloads: CiA 301 7.1.4.2

@@ -11,7 +11,8 @@ namespace {
 // The notations of TextStyle::Field, whatever the size: a number too long for 64 bits is out of
 // range, not something else.
 bool isFieldNumber(const QString& text) {
-    static const QRegularExpression kNumber(QStringLiteral("^\\s*[+-]?(0[xX][0-9a-fA-F]+|[0-9a-fA-F]+[hH]|[0-9]+)\\s*$"));
+    static const QRegularExpression kNumber(
+        QStringLiteral("^\\s*[+-]?(0[xX][0-9a-fA-F]+|[0-9a-fA-F]+[hH]|[0-9]+)\\s*$"));
     return kNumber.match(text).hasMatch();
 }
 }  // namespace
@@ -55,7 +56,8 @@ IntegerInput readInteger(DataType type, const QString& text, const Limits& limit
 
 QString integerText(DataType type, const Value& value, HexKind kind) {
     const bool isSignedType = isSigned(type);
-    const auto raw = isSignedType ? static_cast<std::uint64_t>(value.toInt64().value_or(0)) : value.toUInt64().value_or(0);
+    const auto raw =
+        isSignedType ? static_cast<std::uint64_t>(value.toInt64().value_or(0)) : value.toUInt64().value_or(0);
     char16_t buf[kHexTextRoom];
     if (const int n = hexValueTextTo(buf, kind, raw, bitSize(type))) return QString::fromUtf16(buf, n);
     return isSignedType ? QString::number(value.toInt64().value_or(0)) : QString::number(raw);

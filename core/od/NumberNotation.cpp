@@ -26,8 +26,10 @@ HexKind communicationKind(std::uint16_t index, std::uint8_t sub) {
     default: break;
     }
     if (between(index, 0x1200, 0x12FF)) return sub == 1 || sub == 2 ? HexKind::CobId : HexKind::None;
-    if (between(index, 0x1400, 0x15FF) || between(index, 0x1800, 0x19FF)) return sub == 1 ? HexKind::CobId : HexKind::None;
-    if (between(index, 0x1600, 0x17FF) || between(index, 0x1A00, 0x1BFF)) return sub >= 1 && sub <= 0x40 ? HexKind::Pattern : HexKind::None;
+    if (between(index, 0x1400, 0x15FF) || between(index, 0x1800, 0x19FF))
+        return sub == 1 ? HexKind::CobId : HexKind::None;
+    if (between(index, 0x1600, 0x17FF) || between(index, 0x1A00, 0x1BFF))
+        return sub >= 1 && sub <= 0x40 ? HexKind::Pattern : HexKind::None;
     return HexKind::None;
 }
 

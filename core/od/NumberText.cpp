@@ -17,7 +17,8 @@ std::optional<std::uint64_t> digits(QStringView s, int base) {
         else if (u >= 'a' && u <= 'f') d = u - 'a' + 10;
         else if (u >= 'A' && u <= 'F') d = u - 'A' + 10;
         if (d < 0 || d >= base) return std::nullopt;
-        if (v > (UINT64_MAX - static_cast<std::uint64_t>(d)) / static_cast<std::uint64_t>(base)) return std::nullopt;  // overflow
+        if (v > (UINT64_MAX - static_cast<std::uint64_t>(d)) / static_cast<std::uint64_t>(base))
+            return std::nullopt;  // overflow
         v = v * static_cast<std::uint64_t>(base) + static_cast<std::uint64_t>(d);
     }
     return v;

@@ -68,7 +68,9 @@ std::optional<Value> SubObject::interpret(const QString& text, std::uint8_t node
     return r.value;
 }
 
-std::optional<Value> SubObject::resolvedDefault(std::uint8_t nodeId, QString* error) const { return interpret(defaultValue, nodeId, error); }
+std::optional<Value> SubObject::resolvedDefault(std::uint8_t nodeId, QString* error) const {
+    return interpret(defaultValue, nodeId, error);
+}
 
 std::optional<Value> SubObject::resolvedValue(std::uint8_t nodeId, QString* error) const {
     if (!parameterValue.isEmpty()) return interpret(parameterValue, nodeId, error);
@@ -85,7 +87,8 @@ Limits SubObject::limits() const {
 // ---- Object ----
 
 const SubObject* Object::sub(std::uint8_t s) const {
-    auto it = std::lower_bound(subs.begin(), subs.end(), s, [](const SubObject& a, std::uint8_t b) { return a.sub < b; });
+    auto it =
+        std::lower_bound(subs.begin(), subs.end(), s, [](const SubObject& a, std::uint8_t b) { return a.sub < b; });
     return it != subs.end() && it->sub == s ? &*it : nullptr;
 }
 
@@ -93,7 +96,8 @@ const SubObject* Object::sub(std::uint8_t s) const {
 
 ObjectDictionary::ObjectDictionary(const ObjectDictionary& o)
     : fileInfo(o.fileInfo), device(o.device), commissioning(o.commissioning), dummyUsage(o.dummyUsage),
-      dynamicChannels(o.dynamicChannels), extraSections(o.extraSections), comments(o.comments), bundledName(o.bundledName), objects_(o.objects_) {
+      dynamicChannels(o.dynamicChannels), extraSections(o.extraSections), comments(o.comments),
+      bundledName(o.bundledName), objects_(o.objects_) {
     rebuildIndex();
 }
 
@@ -127,9 +131,12 @@ void ObjectDictionary::rebuildIndex() {
 }
 
 void ObjectDictionary::insert(Object obj) {
-    std::stable_sort(obj.subs.begin(), obj.subs.end(), [](const SubObject& a, const SubObject& b) { return a.sub < b.sub; });
+    std::stable_sort(obj.subs.begin(), obj.subs.end(),
+                     [](const SubObject& a, const SubObject& b) { return a.sub < b.sub; });
     // Duplicated sub-indices: keep the first.
-    obj.subs.erase(std::unique(obj.subs.begin(), obj.subs.end(), [](const SubObject& a, const SubObject& b) { return a.sub == b.sub; }), obj.subs.end());
+    obj.subs.erase(std::unique(obj.subs.begin(), obj.subs.end(),
+                               [](const SubObject& a, const SubObject& b) { return a.sub == b.sub; }),
+                   obj.subs.end());
     for (SubObject& s : obj.subs) s.index = obj.index;
     auto it = objects_.find(obj.index);
     if (it != objects_.end()) {
@@ -193,9 +200,15 @@ std::optional<std::uint32_t> identityField(const ObjectDictionary& od, std::uint
 }
 }  // namespace
 
-std::optional<std::uint32_t> ObjectDictionary::vendorId() const { return device.vendorNumber ? device.vendorNumber : identityField(*this, 1); }
-std::optional<std::uint32_t> ObjectDictionary::productCode() const { return device.productNumber ? device.productNumber : identityField(*this, 2); }
-std::optional<std::uint32_t> ObjectDictionary::revisionNumber() const { return device.revisionNumber ? device.revisionNumber : identityField(*this, 3); }
+std::optional<std::uint32_t> ObjectDictionary::vendorId() const {
+    return device.vendorNumber ? device.vendorNumber : identityField(*this, 1);
+}
+std::optional<std::uint32_t> ObjectDictionary::productCode() const {
+    return device.productNumber ? device.productNumber : identityField(*this, 2);
+}
+std::optional<std::uint32_t> ObjectDictionary::revisionNumber() const {
+    return device.revisionNumber ? device.revisionNumber : identityField(*this, 3);
+}
 
 std::optional<Unit> ObjectDictionary::unit(std::uint16_t index, std::uint8_t sub) const {
     const SubObject* s = entry(index, sub);

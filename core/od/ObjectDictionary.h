@@ -21,13 +21,21 @@
 namespace coscope::od {
 
 // Object codes (CiA 301 v4.2, 7.4.3 table 42).
-enum class ObjectType : std::uint8_t { Null = 0x0, Domain = 0x2, DefType = 0x5, DefStruct = 0x6, Var = 0x7, Array = 0x8, Record = 0x9 };
+enum class ObjectType : std::uint8_t {
+    Null = 0x0,
+    Domain = 0x2,
+    DefType = 0x5,
+    DefStruct = 0x6,
+    Var = 0x7,
+    Array = 0x8,
+    Record = 0x9
+};
 QString objectTypeName(ObjectType t);  // "VAR", "ARRAY", ...
 
 // Access attributes (CiA 306 v1.3 4.6.3): rwr/rww are read-write, preferably mapped to a
 // TPDO (rwr) or an RPDO (rww).
 enum class Access : std::uint8_t { ReadOnly, WriteOnly, ReadWrite, ReadWriteRead, ReadWriteWrite, Const };
-QString accessName(Access a);                           // "ro", "wo", "rw", "rwr", "rww", "const"
+QString accessName(Access a);                            // "ro", "wo", "rw", "rwr", "rww", "const"
 std::optional<Access> accessFromString(const QString&);  // case-insensitive
 inline bool isReadable(Access a) { return a != Access::WriteOnly; }
 inline bool isWritable(Access a) { return a != Access::ReadOnly && a != Access::Const; }
@@ -54,7 +62,7 @@ struct SubObject {
     QString parameterValue;  // DCF ParameterValue: the device's actual value ("" = none)
     QString lowLimit;        // as written, "" = none
     QString highLimit;
-    QString denotation;      // DCF Denotation
+    QString denotation;  // DCF Denotation
     std::uint32_t objFlags = 0;
     std::optional<Unit> unit;
     ExtraKeys extraKeys;
@@ -80,12 +88,15 @@ struct Object {
     std::vector<SubObject> subs;              // sorted by sub-index
     std::vector<std::uint16_t> objectLinks;   // [XXXXObjectLinks] (CiA 306 4.6.6)
     std::uint32_t objFlags = 0;
-    int compactSubObj = 0;                    // CompactSubObj as read (0 = subs were listed)
+    int compactSubObj = 0;  // CompactSubObj as read (0 = subs were listed)
     ExtraKeys extraKeys;
     int line = 0;
 
     const SubObject* sub(std::uint8_t s) const;
-    bool isComposite() const { return objectType == ObjectType::Array || objectType == ObjectType::Record || objectType == ObjectType::DefStruct; }
+    bool isComposite() const {
+        return objectType == ObjectType::Array || objectType == ObjectType::Record ||
+               objectType == ObjectType::DefStruct;
+    }
 };
 
 // [FileInfo] (CiA 306 4.6.1). Texts as written.

@@ -16,7 +16,7 @@ namespace coscope::od {
 inline QString permanentText(const QString& s) {
     if (s.isEmpty()) return s;
     static std::mutex mutex;
-    static std::deque<QString> kept;    // never changed once stored: raw data stays valid
+    static std::deque<QString> kept;      // never changed once stored: raw data stays valid
     static QHash<QString, qsizetype> at;  // text -> index in `kept`
     std::lock_guard lock(mutex);
     auto it = at.constFind(s);

@@ -13,9 +13,15 @@ namespace coscope::od {
 namespace {
 
 // Range of an n-bit integer type (CiA 301 7.1.4.4 and 7.1.4.5).
-std::int64_t signedMin(int bits) { return bits >= 64 ? std::numeric_limits<std::int64_t>::min() : -(std::int64_t(1) << (bits - 1)); }
-std::int64_t signedMax(int bits) { return bits >= 64 ? std::numeric_limits<std::int64_t>::max() : (std::int64_t(1) << (bits - 1)) - 1; }
-std::uint64_t unsignedMax(int bits) { return bits >= 64 ? std::numeric_limits<std::uint64_t>::max() : (std::uint64_t(1) << bits) - 1; }
+std::int64_t signedMin(int bits) {
+    return bits >= 64 ? std::numeric_limits<std::int64_t>::min() : -(std::int64_t(1) << (bits - 1));
+}
+std::int64_t signedMax(int bits) {
+    return bits >= 64 ? std::numeric_limits<std::int64_t>::max() : (std::int64_t(1) << (bits - 1)) - 1;
+}
+std::uint64_t unsignedMax(int bits) {
+    return bits >= 64 ? std::numeric_limits<std::uint64_t>::max() : (std::uint64_t(1) << bits) - 1;
+}
 
 QByteArray leBytes(std::uint64_t v, int n) {
     QByteArray out(n, '\0');
@@ -213,7 +219,11 @@ QByteArray Value::encode(DataType type, QString* error) const {
 ValueResult Value::decode(DataType type, const QByteArray& bytes) {
     const int size = byteSize(type);
     if (size > 0 && bytes.size() != size)
-        return fail(QStringLiteral("%1 needs %2 byte%3, got %4").arg(dataTypeName(type)).arg(size).arg(size == 1 ? "" : "s").arg(bytes.size()));
+        return fail(QStringLiteral("%1 needs %2 byte%3, got %4")
+                        .arg(dataTypeName(type))
+                        .arg(size)
+                        .arg(size == 1 ? "" : "s")
+                        .arg(bytes.size()));
     const int bits = bitSize(type);
     switch (typeClass(type)) {
     case TypeClass::Boolean: {
@@ -252,10 +262,12 @@ ValueResult Value::decode(DataType type, const QByteArray& bytes) {
         return {Value::text(utf8.hasError() ? QString::fromLatin1(b) : s), {}};
     }
     case TypeClass::UnicodeString: {
-        if (bytes.size() % 2) return fail(QStringLiteral("UNICODE_STRING needs an even number of bytes, got %1").arg(bytes.size()));
+        if (bytes.size() % 2)
+            return fail(QStringLiteral("UNICODE_STRING needs an even number of bytes, got %1").arg(bytes.size()));
         QString s;
         s.reserve(bytes.size() / 2);
-        for (qsizetype i = 0; i + 1 < bytes.size(); i += 2) s += QChar(qFromLittleEndian<quint16>(bytes.constData() + i));
+        for (qsizetype i = 0; i + 1 < bytes.size(); i += 2)
+            s += QChar(qFromLittleEndian<quint16>(bytes.constData() + i));
         while (!s.isEmpty() && s.back() == QChar(0)) s.chop(1);
         return {Value::text(s), {}};
     }
@@ -277,7 +289,8 @@ ValueResult Value::parse(DataType type, const QString& rawText, const Limits& li
         const QString t = text.toLower();
         if (t == u"true" || t == u"1" || t == u"yes" || t == u"on") r.value = Value::boolean(true);
         else if (t == u"false" || t == u"0" || t == u"no" || t == u"off") r.value = Value::boolean(false);
-        else if (const auto n = parseIntegerText(text, style); n && !n->negative && n->magnitude <= 1) r.value = Value::boolean(n->magnitude == 1);
+        else if (const auto n = parseIntegerText(text, style); n && !n->negative && n->magnitude <= 1)
+            r.value = Value::boolean(n->magnitude == 1);
         else return fail(QStringLiteral("'%1' is not a BOOLEAN (use true/false or 1/0)").arg(rawText));
         break;
     }
@@ -294,7 +307,8 @@ ValueResult Value::parse(DataType type, const QString& rawText, const Limits& li
         if (text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)) {
             // CiA 306 allows REAL defaults as the IEEE 754 bit pattern.
             const auto n = parseIntegerText(text, TextStyle::Eds);
-            if (!n || n->magnitude > unsignedMax(bits)) return fail(QStringLiteral("'%1' is not a %2 bit pattern").arg(rawText, typeName));
+            if (!n || n->magnitude > unsignedMax(bits))
+                return fail(QStringLiteral("'%1' is not a %2 bit pattern").arg(rawText, typeName));
             const auto decoded = decode(type, leBytes(n->magnitude, bits / 8));
             r.value = decoded.value;
         } else {
@@ -345,11 +359,13 @@ ValueResult Value::parse(DataType type, const QString& rawText, const Limits& li
             const qulonglong days = t.section(u':', 0, 0).toULongLong(&ok1);
             const qulonglong ms = t.section(u':', 1).toULongLong(&ok2);
             if (!ok1 || !ok2 || days > 0xFFFF || ms > 0x0FFFFFFF)
-                return fail(QStringLiteral("'%1' is not a %2 (days:ms, ms < 2^28, days < 65536)").arg(rawText, typeName));
+                return fail(
+                    QStringLiteral("'%1' is not a %2 (days:ms, ms < 2^28, days < 65536)").arg(rawText, typeName));
             r.value = Value::timeOfDay(static_cast<std::uint32_t>(ms), static_cast<std::uint16_t>(days));
         } else {
             const auto n = parseIntegerText(text, style);
-            if (!n || n->negative || n->magnitude > unsignedMax(48)) return fail(QStringLiteral("'%1' is not a %2").arg(rawText, typeName));
+            if (!n || n->negative || n->magnitude > unsignedMax(48))
+                return fail(QStringLiteral("'%1' is not a %2").arg(rawText, typeName));
             r.value = Value::unsignedInt(n->magnitude);
         }
         break;
@@ -382,7 +398,9 @@ std::optional<Value> integerValue(DataType type, const ParsedInteger& n) {
     return Value::signedInt(static_cast<std::int64_t>(n.magnitude));
 }
 
-Value integerMin(DataType type) { return isSigned(type) ? Value::signedInt(signedMin(bitSize(type))) : Value::unsignedInt(0); }
+Value integerMin(DataType type) {
+    return isSigned(type) ? Value::signedInt(signedMin(bitSize(type))) : Value::unsignedInt(0);
+}
 Value integerMax(DataType type) {
     return isSigned(type) ? Value::signedInt(signedMax(bitSize(type))) : Value::unsignedInt(unsignedMax(bitSize(type)));
 }
@@ -409,13 +427,15 @@ QString Value::format(DataType type, const Value& v, const FormatOptions& o) {
     case TypeClass::Signed:
     case TypeClass::Unsigned: {
         if (o.hex) {
-            std::uint64_t u = typeClass(type) == TypeClass::Signed ? static_cast<std::uint64_t>(v.toInt64().value_or(0)) : v.toUInt64().value_or(0);
+            std::uint64_t u = typeClass(type) == TypeClass::Signed ? static_cast<std::uint64_t>(v.toInt64().value_or(0))
+                                                                   : v.toUInt64().value_or(0);
             u &= unsignedMax(bits);
             s = QStringLiteral("0x") + QString::number(u, 16).toUpper().rightJustified(bits / 4, QLatin1Char('0'));
         } else if (scaled) {
             s = QString::number(v.toDouble().value_or(0) * o.factor, 'g', 12);
         } else {
-            s = typeClass(type) == TypeClass::Signed ? QString::number(v.toInt64().value_or(0)) : QString::number(v.toUInt64().value_or(0));
+            s = typeClass(type) == TypeClass::Signed ? QString::number(v.toInt64().value_or(0))
+                                                     : QString::number(v.toUInt64().value_or(0));
         }
         break;
     }
@@ -425,7 +445,8 @@ QString Value::format(DataType type, const Value& v, const FormatOptions& o) {
         // Shortest text that still reads back to the same value.
         for (int p = 1; p <= 17; ++p) {
             const QString t = QString::number(d, 'g', p);
-            if (type == DataType::Real32 && !scaled ? static_cast<float>(t.toDouble()) == static_cast<float>(d) : t.toDouble() == d) {
+            if (type == DataType::Real32 && !scaled ? static_cast<float>(t.toDouble()) == static_cast<float>(d)
+                                                    : t.toDouble() == d) {
                 s = t;
                 break;
             }

@@ -18,9 +18,9 @@ struct ValueResult;
 
 // Display options for Value::format.
 struct FormatOptions {
-    bool hex = false;    // integers as 0x with the type's width (two's complement for signed)
-    QString unit;        // appended after a space when not empty
-    double factor = 1.0; // display = raw * factor (integers/reals only; 1.0 = raw)
+    bool hex = false;     // integers as 0x with the type's width (two's complement for signed)
+    QString unit;         // appended after a space when not empty
+    double factor = 1.0;  // display = raw * factor (integers/reals only; 1.0 = raw)
     bool quoteStrings = false;
 };
 
@@ -69,7 +69,8 @@ public:
     // "\"quoted\"", hex bytes "01 02 FF"; REAL also as a 0x bit pattern. Checks the type's range
     // and `limits`, and says which one failed.
     static ValueResult parse(DataType type, const QString& text);
-    static ValueResult parse(DataType type, const QString& text, const Limits& limits, TextStyle style = TextStyle::Person);
+    static ValueResult parse(DataType type, const QString& text, const Limits& limits,
+                             TextStyle style = TextStyle::Person);
     // Display text: decimal (or hex), reals shortest round-trip, bytes as "01 02 FF", units.
     static QString format(DataType type, const Value& value, const FormatOptions& options = {});
     QString format(DataType type, const FormatOptions& options = {}) const { return format(type, *this, options); }

@@ -23,19 +23,24 @@ QString compareText(const CompareReport& report, bool onlyDifferences) {
     QString text;
     QTextStream out(&text);
     for (const NodeComparison& n : report.nodes) {
-        out << "node " << n.node << (n.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.name)) << ": " << nodeMatchName(n.match);
+        out << "node " << n.node << (n.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.name)) << ": "
+            << nodeMatchName(n.match);
         if (!n.detail.isEmpty()) out << " - " << n.detail;
-        if (n.differences || n.unreadable) out << "; " << n.differences << " object(s) differ, " << n.unreadable << " unreadable";
+        if (n.differences || n.unreadable)
+            out << "; " << n.differences << " object(s) differ, " << n.unreadable << " unreadable";
         out << "\n";
         for (const CompareRow& r : report.rows) {
             if (r.node != n.node || !shown(r, onlyDifferences)) continue;
-            out << "  " << rowStateName(r.state).leftJustified(10) << " " << objectKey(r.index, r.sub) << " " << r.name << ": project " << r.projectValue << ", drive "
-                << (r.driveValue.isEmpty() ? QStringLiteral("-") : r.driveValue) << ", default " << (r.defaultValue.isEmpty() ? QStringLiteral("-") : r.defaultValue);
+            out << "  " << rowStateName(r.state).leftJustified(10) << " " << objectKey(r.index, r.sub) << " " << r.name
+                << ": project " << r.projectValue << ", drive "
+                << (r.driveValue.isEmpty() ? QStringLiteral("-") : r.driveValue) << ", default "
+                << (r.defaultValue.isEmpty() ? QStringLiteral("-") : r.defaultValue);
             if (!r.error.isEmpty()) out << " (" << r.error << ")";
             out << "\n";
         }
     }
-    out << (report.clean() ? QStringLiteral("the machine is as in the project\n") : QStringLiteral("%1 difference(s)\n").arg(report.differences()));
+    out << (report.clean() ? QStringLiteral("the machine is as in the project\n")
+                           : QStringLiteral("%1 difference(s)\n").arg(report.differences()));
     return text;
 }
 
@@ -77,21 +82,31 @@ QByteArray compareJson(const CompareReport& report) {
 QString compareHtml(const CompareReport& report, bool onlyDifferences) {
     QString html;
     QTextStream out(&html);
-    const QString title = report.projectName.isEmpty() ? QStringLiteral("Machine and project") : report.projectName.toHtmlEscaped();
+    const QString title =
+        report.projectName.isEmpty() ? QStringLiteral("Machine and project") : report.projectName.toHtmlEscaped();
     out << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" << title << "</title>\n"
-        << "<style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 6px;text-align:left}"
+        << "<style>body{font-family:sans-serif}table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px "
+           "6px;text-align:left}"
            ".differs{background:#fde2c8}.unreadable{background:#eee}.bad{color:#a00}</style></head><body>\n"
         << "<h1>" << title << "</h1>\n<p>Bus " << report.busUrl.toHtmlEscaped() << ": "
-        << (report.clean() ? QStringLiteral("the machine is as in the project") : QStringLiteral("%1 difference(s)").arg(report.differences())) << "</p>\n"
-        << "<h2>Nodes</h2>\n<table><tr><th>Node</th><th>Name</th><th>State</th><th>Detail</th><th>Objects differing</th><th>Unreadable</th></tr>\n";
+        << (report.clean() ? QStringLiteral("the machine is as in the project")
+                           : QStringLiteral("%1 difference(s)").arg(report.differences()))
+        << "</p>\n"
+        << "<h2>Nodes</h2>\n<table><tr><th>Node</th><th>Name</th><th>State</th><th>Detail</th><th>Objects "
+           "differing</th><th>Unreadable</th></tr>\n";
     for (const NodeComparison& n : report.nodes)
-        out << "<tr" << (n.match == NodeMatch::Same ? "" : " class=\"bad\"") << "><td>" << n.node << "</td><td>" << n.name.toHtmlEscaped() << "</td><td>"
-            << nodeMatchName(n.match) << "</td><td>" << n.detail.toHtmlEscaped() << "</td><td>" << n.differences << "</td><td>" << n.unreadable << "</td></tr>\n";
-    out << "</table>\n<h2>Objects</h2>\n<table><tr><th>Node</th><th>Object</th><th>Name</th><th>Project</th><th>Drive</th><th>Default</th><th>State</th></tr>\n";
+        out << "<tr" << (n.match == NodeMatch::Same ? "" : " class=\"bad\"") << "><td>" << n.node << "</td><td>"
+            << n.name.toHtmlEscaped() << "</td><td>" << nodeMatchName(n.match) << "</td><td>"
+            << n.detail.toHtmlEscaped() << "</td><td>" << n.differences << "</td><td>" << n.unreadable
+            << "</td></tr>\n";
+    out << "</table>\n<h2>Objects</h2>\n<table><tr><th>Node</th><th>Object</th><th>Name</th><th>Project</th><th>Drive</"
+           "th><th>Default</th><th>State</th></tr>\n";
     for (const CompareRow& r : report.rows) {
         if (!shown(r, onlyDifferences)) continue;
-        out << "<tr class=\"" << rowStateName(r.state) << "\"><td>" << r.node << "</td><td>" << objectKey(r.index, r.sub) << "</td><td>" << r.name.toHtmlEscaped()
-            << "</td><td>" << r.projectValue.toHtmlEscaped() << "</td><td>" << (r.driveValue.isEmpty() ? r.error : r.driveValue).toHtmlEscaped() << "</td><td>"
+        out << "<tr class=\"" << rowStateName(r.state) << "\"><td>" << r.node << "</td><td>"
+            << objectKey(r.index, r.sub) << "</td><td>" << r.name.toHtmlEscaped() << "</td><td>"
+            << r.projectValue.toHtmlEscaped() << "</td><td>"
+            << (r.driveValue.isEmpty() ? r.error : r.driveValue).toHtmlEscaped() << "</td><td>"
             << r.defaultValue.toHtmlEscaped() << "</td><td>" << rowStateName(r.state) << "</td></tr>\n";
     }
     out << "</table>\n</body></html>\n";
@@ -104,11 +119,13 @@ QString compareCsv(const CompareReport& report, bool onlyDifferences) {
     out << "node,object,name,project,drive,default,state,note\r\n";
     for (const NodeComparison& n : report.nodes)
         if (n.match != NodeMatch::Same)
-            out << n.node << ",,," << ",,," << csvField(nodeMatchName(n.match)) << "," << csvField(n.detail) << "\r\n";
+            out << n.node << ",,,"
+                << ",,," << csvField(nodeMatchName(n.match)) << "," << csvField(n.detail) << "\r\n";
     for (const CompareRow& r : report.rows) {
         if (!shown(r, onlyDifferences)) continue;
-        out << r.node << "," << objectKey(r.index, r.sub) << "," << csvField(r.name) << "," << csvField(r.projectValue) << "," << csvField(r.driveValue) << ","
-            << csvField(r.defaultValue) << "," << rowStateName(r.state) << "," << csvField(r.error) << "\r\n";
+        out << r.node << "," << objectKey(r.index, r.sub) << "," << csvField(r.name) << "," << csvField(r.projectValue)
+            << "," << csvField(r.driveValue) << "," << csvField(r.defaultValue) << "," << rowStateName(r.state) << ","
+            << csvField(r.error) << "\r\n";
     }
     return csv;
 }

@@ -20,7 +20,7 @@ namespace coscope::project {
 struct ProjectParameter {
     uint16_t index = 0;
     uint8_t sub = 0;
-    QString name;   // for people reading the file; not used to match
+    QString name;  // for people reading the file; not used to match
     QString value;
 };
 
@@ -68,12 +68,12 @@ struct Project {
     QString busUrl;
     uint32_t bitRate = 0;  // 0 = not given
     std::vector<ProjectNode> nodes;
-    QJsonObject master;       // SYNC and heartbeat settings
-    QJsonArray transmit;      // transmit list
-    QJsonArray rawSignals;    // raw signal specs
-    QJsonObject plots;        // plot layouts
-    QJsonObject traceFilters; // trace filters
-    QJsonObject unknown;      // keys this version does not know, kept as they were
+    QJsonObject master;        // SYNC and heartbeat settings
+    QJsonArray transmit;       // transmit list
+    QJsonArray rawSignals;     // raw signal specs
+    QJsonObject plots;         // plot layouts
+    QJsonObject traceFilters;  // trace filters
+    QJsonObject unknown;       // keys this version does not know, kept as they were
 
     ProjectNode* node(uint8_t id);
     const ProjectNode* node(uint8_t id) const;

@@ -28,7 +28,8 @@ QString nodeApplyStateName(NodeApplyState s) {
 
 bool ApplyReport::ok() const {
     return std::all_of(nodes.begin(), nodes.end(), [](const NodeApplyResult& n) {
-        return n.state == NodeApplyState::Written || n.state == NodeApplyState::NothingToWrite || n.state == NodeApplyState::Skipped;
+        return n.state == NodeApplyState::Written || n.state == NodeApplyState::NothingToWrite ||
+               n.state == NodeApplyState::Skipped;
     });
 }
 
@@ -65,7 +66,8 @@ od::ObjectDictionary ProjectApply::projectDcf(const od::ObjectDictionary& dictio
     return dcf;
 }
 
-void ProjectApply::prepare(const Project& project, Progress progress, std::function<void(std::vector<NodeApplyPlan>)> done) {
+void ProjectApply::prepare(const Project& project, Progress progress,
+                           std::function<void(std::vector<NodeApplyPlan>)> done) {
     auto prep = std::make_shared<Prep>();
     prep->project = project;
     prep->progress = std::move(progress);
@@ -79,13 +81,17 @@ void ProjectApply::prepare(const Project& project, Progress progress, std::funct
     if (project.nodes.empty()) first = last = 1;
     if (prep->progress) prep->progress(QStringLiteral("scanning nodes %1-%2").arg(first).arg(last), 0, 0);
     QPointer<ProjectApply> self(this);
-    scanMachine(sdo_, prep->project, first, last, scanTimeoutMs_, matcher_, [self, prep](std::vector<MatchedNode> matches) {
-        if (!self) return;
-        for (MatchedNode& m : matches)
-            if (m.project && (self->only_.empty() || std::find(self->only_.begin(), self->only_.end(), m.node) != self->only_.end()))
-                prep->matches.push_back(std::move(m));
-        self->prepareNext(prep);
-    }, this);
+    scanMachine(
+        sdo_, prep->project, first, last, scanTimeoutMs_, matcher_,
+        [self, prep](std::vector<MatchedNode> matches) {
+            if (!self) return;
+            for (MatchedNode& m : matches)
+                if (m.project && (self->only_.empty() ||
+                                  std::find(self->only_.begin(), self->only_.end(), m.node) != self->only_.end()))
+                    prep->matches.push_back(std::move(m));
+            self->prepareNext(prep);
+        },
+        this);
 }
 
 void ProjectApply::prepareNext(std::shared_ptr<Prep> prep) {
@@ -103,7 +109,8 @@ void ProjectApply::prepareNext(std::shared_ptr<Prep> prep) {
     plan.plan.node = m.node;
     if (m.found) plan.serial = m.found->serial;
     if (m.match != NodeMatch::Same && m.match != NodeMatch::Replaced) {
-        plan.error = QStringLiteral("%1%2").arg(nodeMatchName(m.match), m.detail.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(m.detail));
+        plan.error = QStringLiteral("%1%2").arg(nodeMatchName(m.match),
+                                                m.detail.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(m.detail));
         prep->plans.push_back(std::move(plan));
         return prepareNext(prep);
     }
@@ -116,19 +123,23 @@ void ProjectApply::prepareNext(std::shared_ptr<Prep> prep) {
     }
     const od::ObjectDictionary dcf = projectDcf(*dict, *m.project);
     const canopen::ApplyPlan all = DeviceConfiguration::plan(m.node, dcf, nullptr, canopen::ApplyScope::AllValues);
-    if (prep->progress) prep->progress(QStringLiteral("reading node %1").arg(m.node), static_cast<int>(at), static_cast<int>(prep->matches.size()));
+    if (prep->progress)
+        prep->progress(QStringLiteral("reading node %1").arg(m.node), static_cast<int>(at),
+                       static_cast<int>(prep->matches.size()));
     QPointer<ProjectApply> self(this);
     prep->config->read(m.node, dcf, DeviceConfiguration::planEntries(all), {},
                        [self, prep, plan = std::move(plan), dcf](const canopen::ConfigReadResult& read) mutable {
                            if (!self) return;
                            plan.current = read.values;
-                           plan.plan = DeviceConfiguration::plan(plan.node, dcf, &read.values, canopen::ApplyScope::OnlyDifferent);
+                           plan.plan = DeviceConfiguration::plan(plan.node, dcf, &read.values,
+                                                                 canopen::ApplyScope::OnlyDifferent);
                            prep->plans.push_back(std::move(plan));
                            self->prepareNext(prep);
                        });
 }
 
-canopen::ApplyPlan ProjectApply::rollbackPlan(const NodeApplyPlan& plan, const std::vector<ConfigEntryResult>& written) {
+canopen::ApplyPlan ProjectApply::rollbackPlan(const NodeApplyPlan& plan,
+                                              const std::vector<ConfigEntryResult>& written) {
     od::ObjectDictionary old = plan.current;
     std::set<std::pair<uint16_t, uint8_t>> changed;
     for (const ConfigEntryResult& e : written)
@@ -139,7 +150,8 @@ canopen::ApplyPlan ProjectApply::rollbackPlan(const NodeApplyPlan& plan, const s
     return DeviceConfiguration::plan(plan.node, old, nullptr, canopen::ApplyScope::AllValues);
 }
 
-void ProjectApply::run(const std::vector<NodeApplyPlan>& plans, Progress progress, std::function<void(ApplyReport)> done) {
+void ProjectApply::run(const std::vector<NodeApplyPlan>& plans, Progress progress,
+                       std::function<void(ApplyReport)> done) {
     auto exec = std::make_shared<Exec>();
     exec->plans = plans;
     exec->progress = std::move(progress);
@@ -171,33 +183,41 @@ void ProjectApply::runNext(std::shared_ptr<Exec> exec) {
         result.state = NodeApplyState::NothingToWrite;
         result.message = QStringLiteral("already as in the project");
     } else {
-        if (exec->progress) exec->progress(QStringLiteral("writing node %1").arg(plan.node), static_cast<int>(at), static_cast<int>(exec->plans.size()));
+        if (exec->progress)
+            exec->progress(QStringLiteral("writing node %1").arg(plan.node), static_cast<int>(at),
+                           static_cast<int>(exec->plans.size()));
         QPointer<ProjectApply> self(this);
         exec->config->setStopOnRefusal(true);
-        exec->config->apply(plan.plan, {}, [self, exec, at, result](const std::vector<ConfigEntryResult>& writes, bool) mutable {
-            if (!self) return;
-            result.writes = writes;
-            const bool refused = !writes.empty() && !writes.back().ok;
-            if (!refused) {
-                result.state = NodeApplyState::Written;
-                result.message = QStringLiteral("%1 object(s) written").arg(writes.size());
-                exec->report.nodes.push_back(result);
-                return self->runNext(exec);
-            }
-            exec->stopped = true;
-            result.newSerial.reset();
-            const canopen::ApplyPlan back = rollbackPlan(exec->plans[at], writes);
-            exec->config->setStopOnRefusal(false);
-            exec->config->apply(back, {}, [self, exec, result](const std::vector<ConfigEntryResult>& rollback, bool) mutable {
+        exec->config->apply(
+            plan.plan, {}, [self, exec, at, result](const std::vector<ConfigEntryResult>& writes, bool) mutable {
                 if (!self) return;
-                result.rollback = rollback;
-                const bool allBack = std::all_of(rollback.begin(), rollback.end(), [](const ConfigEntryResult& e) { return e.ok; });
-                result.state = allBack ? NodeApplyState::RefusedRolledBack : NodeApplyState::RefusedRollbackFailed;
-                result.message = QStringLiteral("%1 refused: %2").arg(objectKey(result.writes.back().index, result.writes.back().sub), result.writes.back().error);
-                exec->report.nodes.push_back(result);
-                self->runNext(exec);
+                result.writes = writes;
+                const bool refused = !writes.empty() && !writes.back().ok;
+                if (!refused) {
+                    result.state = NodeApplyState::Written;
+                    result.message = QStringLiteral("%1 object(s) written").arg(writes.size());
+                    exec->report.nodes.push_back(result);
+                    return self->runNext(exec);
+                }
+                exec->stopped = true;
+                result.newSerial.reset();
+                const canopen::ApplyPlan back = rollbackPlan(exec->plans[at], writes);
+                exec->config->setStopOnRefusal(false);
+                exec->config->apply(
+                    back, {}, [self, exec, result](const std::vector<ConfigEntryResult>& rollback, bool) mutable {
+                        if (!self) return;
+                        result.rollback = rollback;
+                        const bool allBack = std::all_of(rollback.begin(), rollback.end(),
+                                                         [](const ConfigEntryResult& e) { return e.ok; });
+                        result.state =
+                            allBack ? NodeApplyState::RefusedRolledBack : NodeApplyState::RefusedRollbackFailed;
+                        result.message = QStringLiteral("%1 refused: %2")
+                                             .arg(objectKey(result.writes.back().index, result.writes.back().sub),
+                                                  result.writes.back().error);
+                        exec->report.nodes.push_back(result);
+                        self->runNext(exec);
+                    });
             });
-        });
         return;
     }
     exec->report.nodes.push_back(result);
@@ -273,13 +293,16 @@ QString applyReportText(const ApplyReport& report) {
     QString text;
     QTextStream out(&text);
     for (const NodeApplyResult& n : report.nodes) {
-        out << "node " << n.node << (n.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.name)) << ": " << nodeApplyStateName(n.state);
+        out << "node " << n.node << (n.name.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.name)) << ": "
+            << nodeApplyStateName(n.state);
         if (!n.message.isEmpty()) out << " - " << n.message;
         out << "\n";
         for (const ConfigEntryResult& e : n.writes)
-            out << "  " << (e.ok ? "ok     " : "FAILED ") << objectKey(e.index, e.sub) << " " << e.name << " = " << e.valueText << (e.ok ? QString() : QStringLiteral(": ") + e.error) << "\n";
+            out << "  " << (e.ok ? "ok     " : "FAILED ") << objectKey(e.index, e.sub) << " " << e.name << " = "
+                << e.valueText << (e.ok ? QString() : QStringLiteral(": ") + e.error) << "\n";
         for (const ConfigEntryResult& e : n.rollback)
-            out << "  " << (e.ok ? "back   " : "NOT BACK ") << objectKey(e.index, e.sub) << " " << e.name << " = " << e.valueText << (e.ok ? QString() : QStringLiteral(": ") + e.error) << "\n";
+            out << "  " << (e.ok ? "back   " : "NOT BACK ") << objectKey(e.index, e.sub) << " " << e.name << " = "
+                << e.valueText << (e.ok ? QString() : QStringLiteral(": ") + e.error) << "\n";
     }
     return text;
 }

@@ -15,14 +15,21 @@ struct NodeApplyPlan {
     uint8_t node = 0;
     QString name;
     NodeMatch match = NodeMatch::Missing;
-    canopen::ApplyPlan plan;        // only the objects whose value differs from the node's
-    od::ObjectDictionary current;   // the node's values before (ParameterValue), to put them back
-    std::optional<uint32_t> serial; // the serial number the node answered (1018h:04)
-    QString error;                  // why the node is not written (missing, other device, ...)
+    canopen::ApplyPlan plan;         // only the objects whose value differs from the node's
+    od::ObjectDictionary current;    // the node's values before (ParameterValue), to put them back
+    std::optional<uint32_t> serial;  // the serial number the node answered (1018h:04)
+    QString error;                   // why the node is not written (missing, other device, ...)
     bool writable() const { return error.isEmpty(); }
 };
 
-enum class NodeApplyState : uint8_t { Written, NothingToWrite, RefusedRolledBack, RefusedRollbackFailed, NotReached, Skipped };
+enum class NodeApplyState : uint8_t {
+    Written,
+    NothingToWrite,
+    RefusedRolledBack,
+    RefusedRollbackFailed,
+    NotReached,
+    Skipped
+};
 QString nodeApplyStateName(NodeApplyState s);
 
 struct NodeApplyResult {
@@ -65,7 +72,8 @@ public:
     void store(const std::vector<uint8_t>& nodes, std::function<void(std::vector<canopen::ConfigEntryResult>)> done);
 
     // The writes that put back `current`'s values of the entries `written` changed.
-    static canopen::ApplyPlan rollbackPlan(const NodeApplyPlan& plan, const std::vector<canopen::ConfigEntryResult>& written);
+    static canopen::ApplyPlan rollbackPlan(const NodeApplyPlan& plan,
+                                           const std::vector<canopen::ConfigEntryResult>& written);
     // The dictionary with what the project expects of `node` as ParameterValue (expectedValues).
     static od::ObjectDictionary projectDcf(const od::ObjectDictionary& dictionary, const ProjectNode& node);
 

@@ -45,16 +45,20 @@ void ProjectBackup::start(const Project& project, Progress progress, Done done) 
     run->config = std::make_unique<canopen::DeviceConfiguration>(sdo_);
     if (run->progress) run->progress(QStringLiteral("scanning nodes %1-%2").arg(first_).arg(last_), 0, 0);
     QPointer<ProjectBackup> self(this);
-    scanMachine(sdo_, run->scanned, first_, last_, scanTimeoutMs_, matcher_, [self, run](std::vector<MatchedNode> matches) {
-        if (!self) return;
-        run->matches = std::move(matches);
-        self->backupNext(run);
-    }, this);
+    scanMachine(
+        sdo_, run->scanned, first_, last_, scanTimeoutMs_, matcher_,
+        [self, run](std::vector<MatchedNode> matches) {
+            if (!self) return;
+            run->matches = std::move(matches);
+            self->backupNext(run);
+        },
+        this);
 }
 
 void ProjectBackup::backupNext(std::shared_ptr<Run> run) {
     if (run->next >= run->matches.size()) {
-        std::sort(run->project.nodes.begin(), run->project.nodes.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+        std::sort(run->project.nodes.begin(), run->project.nodes.end(),
+                  [](const auto& a, const auto& b) { return a.id < b.id; });
         if (run->progress) run->progress(QStringLiteral("done"), 1, 1);
         run->done(run->project, run->results);
         return;
@@ -86,22 +90,29 @@ void ProjectBackup::backupNext(std::shared_ptr<Run> run) {
         run->results.push_back(result);
         return backupNext(run);
     }
-    if (run->progress) run->progress(QStringLiteral("reading node %1").arg(m.node), static_cast<int>(at), static_cast<int>(run->matches.size()));
+    if (run->progress)
+        run->progress(QStringLiteral("reading node %1").arg(m.node), static_cast<int>(at),
+                      static_cast<int>(run->matches.size()));
     QPointer<ProjectBackup> self(this);
     const uint8_t id = m.node;
     run->config->read(id, *dict, {}, [self, run, id, result](const canopen::ConfigReadResult& read) mutable {
         if (!self) return;
         ProjectNode* node = run->project.node(id);
-        const auto& f = *std::find_if(run->matches.begin(), run->matches.end(), [id](const MatchedNode& m) { return m.node == id; })->found;
+        const auto& f = *std::find_if(run->matches.begin(), run->matches.end(), [id](const MatchedNode& m) {
+                             return m.node == id;
+                         })->found;
         node->identity = {f.vendorId, f.productCode, f.revision, f.serial};
         node->parameters = configuredParameters(read.values, id);
         result.read = static_cast<int>(read.entries.size()) - read.failed;
         result.failed = read.failed;
         result.parameters = static_cast<int>(node->parameters.size());
         result.ok = result.read > 0;
-        result.message = result.ok ? QStringLiteral("%1 configured object(s) of %2 read%3").arg(result.parameters).arg(result.read)
-                                             .arg(result.failed ? QStringLiteral(", %1 unreadable").arg(result.failed) : QString())
-                                   : QStringLiteral("no object could be read");
+        result.message =
+            result.ok ? QStringLiteral("%1 configured object(s) of %2 read%3")
+                            .arg(result.parameters)
+                            .arg(result.read)
+                            .arg(result.failed ? QStringLiteral(", %1 unreadable").arg(result.failed) : QString())
+                      : QStringLiteral("no object could be read");
         run->results.push_back(result);
         self->backupNext(run);
     });

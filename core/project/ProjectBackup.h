@@ -34,7 +34,10 @@ public:
     using Matcher = canopen::NetworkScan::Matcher;
 
     ProjectBackup(canopen::SdoClient& sdo, DictionaryResolver resolver, QObject* parent = nullptr);
-    void setScanRange(uint8_t first, uint8_t last) { first_ = first; last_ = last; }
+    void setScanRange(uint8_t first, uint8_t last) {
+        first_ = first;
+        last_ = last;
+    }
     void setScanTimeout(int ms) { scanTimeoutMs_ = ms; }
     void setMatcher(Matcher m) { matcher_ = std::move(m); }
 

@@ -50,19 +50,22 @@ void ProjectCompare::start(const Project& project, Progress progress, Done done)
     running_ = true;
     if (run->progress) run->progress(QStringLiteral("scanning nodes %1-%2").arg(first_).arg(last_), 0, 0);
     QPointer<ProjectCompare> self(this);
-    scanMachine(sdo_, run->project, first_, last_, scanTimeoutMs_, matcher_, [self, run](std::vector<MatchedNode> matches) {
-        if (!self) return;
-        run->matches = std::move(matches);
-        for (const MatchedNode& m : run->matches) {
-            NodeComparison c;
-            c.node = m.node;
-            c.name = m.project ? m.project->name : (m.found ? m.found->dictionary : QString());
-            c.match = m.match;
-            c.detail = m.detail;
-            run->report.nodes.push_back(c);
-        }
-        self->compareNext(run);
-    }, this);
+    scanMachine(
+        sdo_, run->project, first_, last_, scanTimeoutMs_, matcher_,
+        [self, run](std::vector<MatchedNode> matches) {
+            if (!self) return;
+            run->matches = std::move(matches);
+            for (const MatchedNode& m : run->matches) {
+                NodeComparison c;
+                c.node = m.node;
+                c.name = m.project ? m.project->name : (m.found ? m.found->dictionary : QString());
+                c.match = m.match;
+                c.detail = m.detail;
+                run->report.nodes.push_back(c);
+            }
+            self->compareNext(run);
+        },
+        this);
 }
 
 void ProjectCompare::compareNext(std::shared_ptr<Run> run) {
@@ -94,54 +97,62 @@ void ProjectCompare::compareNext(std::shared_ptr<Run> run) {
     const std::vector<ExpectedValue> expected = expectedValues(*dict, node);
     std::vector<std::pair<uint16_t, uint8_t>> entries;
     for (const ExpectedValue& e : expected) entries.emplace_back(e.index, e.sub);
-    if (run->progress) run->progress(QStringLiteral("reading node %1").arg(node.id), static_cast<int>(at), static_cast<int>(run->matches.size()));
+    if (run->progress)
+        run->progress(QStringLiteral("reading node %1").arg(node.id), static_cast<int>(at),
+                      static_cast<int>(run->matches.size()));
     QPointer<ProjectCompare> self(this);
     const od::ObjectDictionary dictionary = *dict;
-    run->config->read(node.id, dictionary, entries, {}, [self, run, at, dictionary, expected](const canopen::ConfigReadResult& read) {
-        if (!self) return;
-        const ProjectNode& node = *run->matches[at].project;
-        NodeComparison& summary = run->report.nodes[at];
-        for (const ExpectedValue& want : expected) {
-            CompareRow row{node.id, want.index, want.sub, {}, want.value, {}, {}, RowState::Same, {}};
-            const od::SubObject* entry = dictionary.entry(want.index, want.sub);
-            if (const ProjectParameter* p = node.parameter(want.index, want.sub)) row.name = p->name;
-            if (entry) {
-                row.name = dictionary.displayName(want.index, want.sub);
-                row.defaultValue = defaultText(*entry, node.id);
+    run->config->read(
+        node.id, dictionary, entries, {}, [self, run, at, dictionary, expected](const canopen::ConfigReadResult& read) {
+            if (!self) return;
+            const ProjectNode& node = *run->matches[at].project;
+            NodeComparison& summary = run->report.nodes[at];
+            for (const ExpectedValue& want : expected) {
+                CompareRow row{node.id, want.index, want.sub, {}, want.value, {}, {}, RowState::Same, {}};
+                const od::SubObject* entry = dictionary.entry(want.index, want.sub);
+                if (const ProjectParameter* p = node.parameter(want.index, want.sub)) row.name = p->name;
+                if (entry) {
+                    row.name = dictionary.displayName(want.index, want.sub);
+                    row.defaultValue = defaultText(*entry, node.id);
+                }
+                const auto it = std::find_if(
+                    read.entries.begin(), read.entries.end(),
+                    [&](const canopen::ConfigEntryResult& e) { return e.index == want.index && e.sub == want.sub; });
+                if (!entry) {
+                    row.state = RowState::Unreadable;
+                    row.error =
+                        QStringLiteral("%1 is not in the node's dictionary").arg(objectKey(want.index, want.sub));
+                } else if (it == read.entries.end() || !it->ok) {
+                    row.state = RowState::Unreadable;
+                    row.error = it == read.entries.end() ? QStringLiteral("not read") : it->error;
+                } else {
+                    row.driveValue = it->valueText;
+                    row.state =
+                        sameValue(*entry, want.value, it->valueText, node.id) ? RowState::Same : RowState::Differs;
+                }
+                if (row.state == RowState::Differs) ++summary.differences;
+                if (row.state == RowState::Unreadable) ++summary.unreadable;
+                run->report.rows.push_back(std::move(row));
             }
-            const auto it = std::find_if(read.entries.begin(), read.entries.end(), [&](const canopen::ConfigEntryResult& e) { return e.index == want.index && e.sub == want.sub; });
-            if (!entry) {
-                row.state = RowState::Unreadable;
-                row.error = QStringLiteral("%1 is not in the node's dictionary").arg(objectKey(want.index, want.sub));
-            } else if (it == read.entries.end() || !it->ok) {
-                row.state = RowState::Unreadable;
-                row.error = it == read.entries.end() ? QStringLiteral("not read") : it->error;
-            } else {
-                row.driveValue = it->valueText;
-                row.state = sameValue(*entry, want.value, it->valueText, node.id) ? RowState::Same : RowState::Differs;
-            }
-            if (row.state == RowState::Differs) ++summary.differences;
-            if (row.state == RowState::Unreadable) ++summary.unreadable;
-            run->report.rows.push_back(std::move(row));
-        }
-        self->compareSoftware(run, at);
-    });
+            self->compareSoftware(run, at);
+        });
 }
 
 void ProjectCompare::compareSoftware(std::shared_ptr<Run> run, size_t at) {
     const ProjectNode& node = *run->matches[at].project;
     if (!node.firmware || !node.firmware->expectsSomething()) return compareNext(run);
     QPointer<ProjectCompare> self(this);
-    canopen::readProgramState(sdo_, node.id, node.firmware->program, [self, run, at](const canopen::ProgramState& state) {
-        if (!self) return;
-        NodeComparison& summary = run->report.nodes[at];
-        for (CompareRow& row : softwareRows(*run->matches[at].project, state)) {
-            if (row.state == RowState::Differs) ++summary.differences;
-            if (row.state == RowState::Unreadable) ++summary.unreadable;
-            run->report.rows.push_back(std::move(row));
-        }
-        self->compareNext(run);
-    });
+    canopen::readProgramState(sdo_, node.id, node.firmware->program,
+                              [self, run, at](const canopen::ProgramState& state) {
+                                  if (!self) return;
+                                  NodeComparison& summary = run->report.nodes[at];
+                                  for (CompareRow& row : softwareRows(*run->matches[at].project, state)) {
+                                      if (row.state == RowState::Differs) ++summary.differences;
+                                      if (row.state == RowState::Unreadable) ++summary.unreadable;
+                                      run->report.rows.push_back(std::move(row));
+                                  }
+                                  self->compareNext(run);
+                              });
 }
 
 }  // namespace coscope::project

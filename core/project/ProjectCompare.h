@@ -23,7 +23,7 @@ struct CompareRow {
     QString driveValue;    // empty when unreadable
     QString defaultValue;  // the dictionary's default, empty when it has none
     RowState state = RowState::Same;
-    QString error;         // why unreadable (abort text)
+    QString error;  // why unreadable (abort text)
 };
 
 struct NodeComparison {
@@ -58,7 +58,10 @@ public:
 
     ProjectCompare(canopen::SdoClient& sdo, DictionaryResolver resolver, QObject* parent = nullptr);
 
-    void setScanRange(uint8_t first, uint8_t last) { first_ = first; last_ = last; }
+    void setScanRange(uint8_t first, uint8_t last) {
+        first_ = first;
+        last_ = last;
+    }
     void setScanTimeout(int ms) { scanTimeoutMs_ = ms; }
     // Names the dictionaries the scan writes into the node table (eds::scanMatcher()).
     void setMatcher(canopen::NetworkScan::Matcher m) { matcher_ = std::move(m); }

@@ -12,11 +12,13 @@ namespace coscope::project {
 
 namespace {
 
-const QStringList kTopKeys = {QStringLiteral("format"), QStringLiteral("generator"), QStringLiteral("name"), QStringLiteral("bus"),
-                              QStringLiteral("nodes"), QStringLiteral("master"), QStringLiteral("transmit"), QStringLiteral("rawSignals"),
-                              QStringLiteral("plots"), QStringLiteral("traceFilters")};
-const QStringList kNodeKeys = {QStringLiteral("id"), QStringLiteral("name"), QStringLiteral("dictionary"), QStringLiteral("identity"),
-                               QStringLiteral("parameters"), QStringLiteral("pdoLayouts"), QStringLiteral("firmware")};
+const QStringList kTopKeys = {QStringLiteral("format"),      QStringLiteral("generator"),  QStringLiteral("name"),
+                              QStringLiteral("bus"),         QStringLiteral("nodes"),      QStringLiteral("master"),
+                              QStringLiteral("transmit"),    QStringLiteral("rawSignals"), QStringLiteral("plots"),
+                              QStringLiteral("traceFilters")};
+const QStringList kNodeKeys = {QStringLiteral("id"),       QStringLiteral("name"),       QStringLiteral("dictionary"),
+                               QStringLiteral("identity"), QStringLiteral("parameters"), QStringLiteral("pdoLayouts"),
+                               QStringLiteral("firmware")};
 
 // A number written as JSON number or as text ("0x1DD", "477").
 std::optional<uint32_t> readU32(const QJsonValue& v) {
@@ -33,7 +35,8 @@ std::optional<uint32_t> readU32(const QJsonValue& v) {
 }
 
 int lineAt(const QByteArray& text, int offset) {
-    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + std::clamp<qsizetype>(offset, 0, text.size()), '\n'));
+    return 1 + static_cast<int>(
+                   std::count(text.begin(), text.begin() + std::clamp<qsizetype>(offset, 0, text.size()), '\n'));
 }
 
 QJsonObject unknownKeys(const QJsonObject& o, const QStringList& known) {
@@ -52,8 +55,11 @@ QJsonArray pdoLayouts(const ProjectNode& node) {
         const bool tx = p.index >= 0x1800;
         const int n = (p.index & 0x1FF) + 1;
         const bool mapping = (p.index & 0x200) != 0;
-        out.append(QStringLiteral("%1PDO%2 %3 %4 = %5").arg(tx ? QStringLiteral("T") : QStringLiteral("R")).arg(n).arg(mapping ? QStringLiteral("mapping") : QStringLiteral("communication"),
-                                                                                     objectKey(p.index, p.sub), p.value));
+        out.append(QStringLiteral("%1PDO%2 %3 %4 = %5")
+                       .arg(tx ? QStringLiteral("T") : QStringLiteral("R"))
+                       .arg(n)
+                       .arg(mapping ? QStringLiteral("mapping") : QStringLiteral("communication"),
+                            objectKey(p.index, p.sub), p.value));
     }
     return out;
 }
@@ -62,7 +68,8 @@ QJsonArray pdoLayouts(const ProjectNode& node) {
 
 ProjectReadResult ProjectFile::read(const QString& path) {
     QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) return {std::nullopt, QStringLiteral("%1: cannot open: %2").arg(path, f.errorString())};
+    if (!f.open(QIODevice::ReadOnly))
+        return {std::nullopt, QStringLiteral("%1: cannot open: %2").arg(path, f.errorString())};
     return parse(f.readAll(), path);
 }
 
@@ -71,7 +78,10 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
     QJsonParseError pe;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &pe);
     if (pe.error != QJsonParseError::NoError) {
-        r.error = QStringLiteral("%1:%2: error: not valid JSON: %3").arg(fileName).arg(lineAt(json, pe.offset)).arg(pe.errorString());
+        r.error = QStringLiteral("%1:%2: error: not valid JSON: %3")
+                      .arg(fileName)
+                      .arg(lineAt(json, pe.offset))
+                      .arg(pe.errorString());
         return r;
     }
     auto fail = [&](const QString& key, const QString& what) {
@@ -82,9 +92,13 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
     const QJsonObject top = doc.object();
     Project p;
     const auto format = readU32(top.value(QStringLiteral("format")));
-    if (!format || *format < 1) return fail(QStringLiteral("format"), QStringLiteral("missing or not a number (a CoScope project has \"format\": 1)"));
+    if (!format || *format < 1)
+        return fail(QStringLiteral("format"),
+                    QStringLiteral("missing or not a number (a CoScope project has \"format\": 1)"));
     if (*format > static_cast<uint32_t>(Project::kFormat))
-        return fail(QStringLiteral("format"), QStringLiteral("version %1 is newer than this CoScope reads (%2)").arg(*format).arg(Project::kFormat));
+        return fail(
+            QStringLiteral("format"),
+            QStringLiteral("version %1 is newer than this CoScope reads (%2)").arg(*format).arg(Project::kFormat));
     p.format = static_cast<int>(*format);
     p.name = top.value(QStringLiteral("name")).toString();
     const QJsonObject bus = top.value(QStringLiteral("bus")).toObject();
@@ -95,7 +109,8 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
         p.bitRate = *rate;
     }
     const QJsonValue nodesValue = top.value(QStringLiteral("nodes"));
-    if (!nodesValue.isUndefined() && !nodesValue.isArray()) return fail(QStringLiteral("nodes"), QStringLiteral("must be a list"));
+    if (!nodesValue.isUndefined() && !nodesValue.isArray())
+        return fail(QStringLiteral("nodes"), QStringLiteral("must be a list"));
     const QJsonArray nodes = nodesValue.toArray();
     for (qsizetype i = 0; i < nodes.size(); ++i) {
         const QString key = QStringLiteral("nodes[%1]").arg(i);
@@ -103,19 +118,24 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
         const QJsonObject o = nodes[i].toObject();
         ProjectNode n;
         const auto id = readU32(o.value(QStringLiteral("id")));
-        if (!id || *id < 1 || *id > 127) return fail(key + QStringLiteral(".id"), QStringLiteral("must be a node-ID 1-127"));
+        if (!id || *id < 1 || *id > 127)
+            return fail(key + QStringLiteral(".id"), QStringLiteral("must be a node-ID 1-127"));
         n.id = static_cast<uint8_t>(*id);
         if (p.node(n.id)) return fail(key + QStringLiteral(".id"), QStringLiteral("node %1 is listed twice").arg(n.id));
         n.name = o.value(QStringLiteral("name")).toString();
         n.dictionary = o.value(QStringLiteral("dictionary")).toString();
         const QJsonObject identity = o.value(QStringLiteral("identity")).toObject();
-        const std::pair<const char*, std::optional<uint32_t>*> fields[] = {
-            {"vendorId", &n.identity.vendorId}, {"productCode", &n.identity.productCode}, {"revision", &n.identity.revision}, {"serial", &n.identity.serial}};
+        const std::pair<const char*, std::optional<uint32_t>*> fields[] = {{"vendorId", &n.identity.vendorId},
+                                                                           {"productCode", &n.identity.productCode},
+                                                                           {"revision", &n.identity.revision},
+                                                                           {"serial", &n.identity.serial}};
         for (const auto& [name, slot] : fields) {
             const QJsonValue v = identity.value(QLatin1String(name));
             if (v.isUndefined() || v.isNull()) continue;
             *slot = readU32(v);
-            if (!*slot) return fail(QStringLiteral("%1.identity.%2").arg(key, QLatin1String(name)), QStringLiteral("must be a 32-bit number"));
+            if (!*slot)
+                return fail(QStringLiteral("%1.identity.%2").arg(key, QLatin1String(name)),
+                            QStringLiteral("must be a 32-bit number"));
         }
         const QJsonArray params = o.value(QStringLiteral("parameters")).toArray();
         for (qsizetype j = 0; j < params.size(); ++j) {
@@ -123,28 +143,38 @@ ProjectReadResult ProjectFile::parse(const QByteArray& json, const QString& file
             const QJsonObject po = params[j].toObject();
             ProjectParameter pp;
             if (!parseObjectKey(po.value(QStringLiteral("object")).toString(), &pp.index, &pp.sub))
-                return fail(pkey + QStringLiteral(".object"), QStringLiteral("must be INDEX:SUB in hex, e.g. \"6081:00\""));
+                return fail(pkey + QStringLiteral(".object"),
+                            QStringLiteral("must be INDEX:SUB in hex, e.g. \"6081:00\""));
             const QJsonValue value = po.value(QStringLiteral("value"));
-            if (!value.isString()) return fail(pkey + QStringLiteral(".value"), QStringLiteral("must be the value as DCF text, e.g. \"0x01F4\""));
+            if (!value.isString())
+                return fail(pkey + QStringLiteral(".value"),
+                            QStringLiteral("must be the value as DCF text, e.g. \"0x01F4\""));
             pp.value = value.toString();
             pp.name = po.value(QStringLiteral("name")).toString();
             n.parameters.push_back(std::move(pp));
         }
         const QJsonValue fw = o.value(QStringLiteral("firmware"));
         if (!fw.isUndefined() && !fw.isNull()) {
-            if (!fw.isObject()) return fail(key + QStringLiteral(".firmware"), QStringLiteral("must be an object, e.g. {\"file\": \"drive-2.0.img\", \"version\": \"2.0\"}"));
+            if (!fw.isObject())
+                return fail(
+                    key + QStringLiteral(".firmware"),
+                    QStringLiteral("must be an object, e.g. {\"file\": \"drive-2.0.img\", \"version\": \"2.0\"}"));
             const QJsonObject fo = fw.toObject();
             ProjectFirmware f;
             f.file = fo.value(QStringLiteral("file")).toString();
             if (fo.contains(QStringLiteral("program"))) {
                 const auto program = readU32(fo.value(QStringLiteral("program")));
-                if (!program || *program < 1 || *program > 254) return fail(key + QStringLiteral(".firmware.program"), QStringLiteral("must be a program number 1-254"));
+                if (!program || *program < 1 || *program > 254)
+                    return fail(key + QStringLiteral(".firmware.program"),
+                                QStringLiteral("must be a program number 1-254"));
                 f.program = static_cast<uint8_t>(*program);
             }
             const QJsonValue id = fo.value(QStringLiteral("softwareId"));
             if (!id.isUndefined() && !id.isNull()) {
                 f.softwareId = readU32(id);
-                if (!f.softwareId) return fail(key + QStringLiteral(".firmware.softwareId"), QStringLiteral("must be a 32-bit number"));
+                if (!f.softwareId)
+                    return fail(key + QStringLiteral(".firmware.softwareId"),
+                                QStringLiteral("must be a 32-bit number"));
             }
             f.version = fo.value(QStringLiteral("version")).toString();
             n.firmware = std::move(f);

@@ -22,7 +22,9 @@ namespace {
 QString hex(uint32_t v) { return QStringLiteral("0x%1").arg(v, 8, 16, QChar(u'0')); }
 
 // Differs only when both sides know the value.
-bool differs(const std::optional<uint32_t>& expected, const std::optional<uint32_t>& found) { return expected && found && *expected != *found; }
+bool differs(const std::optional<uint32_t>& expected, const std::optional<uint32_t>& found) {
+    return expected && found && *expected != *found;
+}
 }  // namespace
 
 std::vector<MatchedNode> matchNodes(const Project& project, const std::vector<canopen::ScannedNode>& found) {
@@ -45,13 +47,15 @@ std::vector<MatchedNode> matchNodes(const Project& project, const std::vector<ca
         if (differs(want.vendorId, f.vendorId) || differs(want.productCode, f.productCode)) {
             m.match = NodeMatch::DifferentDevice;
             m.detail = QStringLiteral("vendor %1 product %2, project vendor %3 product %4")
-                           .arg(hex(f.vendorId.value_or(0)), hex(f.productCode.value_or(0)), hex(want.vendorId.value_or(0)), hex(want.productCode.value_or(0)));
+                           .arg(hex(f.vendorId.value_or(0)), hex(f.productCode.value_or(0)),
+                                hex(want.vendorId.value_or(0)), hex(want.productCode.value_or(0)));
         } else if (differs(want.serial, f.serial)) {
             m.match = NodeMatch::Replaced;
             m.detail = QStringLiteral("serial %1, project %2").arg(hex(*f.serial), hex(*want.serial));
         } else {
             m.match = NodeMatch::Same;
-            if (differs(want.revision, f.revision)) m.detail = QStringLiteral("revision %1, project %2").arg(hex(*f.revision), hex(*want.revision));
+            if (differs(want.revision, f.revision))
+                m.detail = QStringLiteral("revision %1, project %2").arg(hex(*f.revision), hex(*want.revision));
         }
     }
     std::vector<MatchedNode> list;
@@ -60,7 +64,8 @@ std::vector<MatchedNode> matchNodes(const Project& project, const std::vector<ca
 }
 
 bool isConfigurationEntry(const od::SubObject& s) {
-    return od::isWritable(s.access) && od::isReadable(s.access) && od::typeClass(s.dataType) != od::TypeClass::Domain && !canopen::DeviceConfiguration::isCommandObject(s.index);
+    return od::isWritable(s.access) && od::isReadable(s.access) && od::typeClass(s.dataType) != od::TypeClass::Domain &&
+           !canopen::DeviceConfiguration::isCommandObject(s.index);
 }
 
 bool sameValue(const od::SubObject& entry, const QString& a, const QString& b, uint8_t node) {
@@ -95,8 +100,9 @@ QString defaultText(const od::SubObject& entry, uint8_t node) {
     return v ? canopen::DeviceConfiguration::edsText(entry.dataType, *v) : QString();
 }
 
-void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs, canopen::NetworkScan::Matcher matcher,
-                 std::function<void(std::vector<MatchedNode>)> done, QObject* owner) {
+void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs,
+                 canopen::NetworkScan::Matcher matcher, std::function<void(std::vector<MatchedNode>)> done,
+                 QObject* owner) {
     auto* scan = new canopen::NetworkScan(sdo, owner);
     if (matcher) scan->setMatcher(std::move(matcher));
     scan->setRange(first, last);

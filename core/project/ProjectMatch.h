@@ -25,9 +25,9 @@ QString nodeMatchName(NodeMatch m);  // "same", "replaced", "different device", 
 struct MatchedNode {
     uint8_t node = 0;
     NodeMatch match = NodeMatch::Missing;
-    const ProjectNode* project = nullptr;        // null: not in the project
-    std::optional<canopen::ScannedNode> found;   // null: no answer
-    QString detail;                              // "serial 0x51000099, project 0x51000003"
+    const ProjectNode* project = nullptr;       // null: not in the project
+    std::optional<canopen::ScannedNode> found;  // null: no answer
+    QString detail;                             // "serial 0x51000099, project 0x51000003"
 };
 
 // Pairs the project's nodes with a scan's, in node-ID order.
@@ -52,7 +52,7 @@ QString defaultText(const od::SubObject& entry, uint8_t node);
 struct ExpectedValue {
     uint16_t index = 0;
     uint8_t sub = 0;
-    QString value;      // DCF text
+    QString value;            // DCF text
     bool configured = false;  // from the project's parameters (else the default)
 };
 std::vector<ExpectedValue> expectedValues(const od::ObjectDictionary& dictionary, const ProjectNode& node);
@@ -60,7 +60,8 @@ std::vector<ExpectedValue> expectedValues(const od::ObjectDictionary& dictionary
 // Scans nodes `first..last` (NetworkScan, 1000h and 1018h) and hands back the matches. The scan
 // writes what it found into the bus's node table: `matcher` (eds::scanMatcher()) names the
 // dictionaries there, as any scan does.
-void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs, canopen::NetworkScan::Matcher matcher,
-                 std::function<void(std::vector<MatchedNode>)> done, QObject* owner);
+void scanMachine(canopen::SdoClient& sdo, const Project& project, uint8_t first, uint8_t last, int timeoutMs,
+                 canopen::NetworkScan::Matcher matcher, std::function<void(std::vector<MatchedNode>)> done,
+                 QObject* owner);
 
 }  // namespace coscope::project

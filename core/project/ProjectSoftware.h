@@ -29,6 +29,7 @@ struct SoftwareCheck {
 
 // Reads 1F56h/1F57h/100Ah of each project node that names a program (`only` empty) or of the
 // nodes in `only`, one after the other, and hands back how each stands.
-void checkSoftware(canopen::SdoClient& sdo, const Project& project, const std::vector<uint8_t>& only, std::function<void(std::vector<SoftwareCheck>)> done);
+void checkSoftware(canopen::SdoClient& sdo, const Project& project, const std::vector<uint8_t>& only,
+                   std::function<void(std::vector<SoftwareCheck>)> done);
 
 }  // namespace coscope::project

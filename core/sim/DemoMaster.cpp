@@ -33,17 +33,19 @@ DemoMaster::DemoMaster(const SimNetwork& network) {
         // 1017h is UNSIGNED16 in CiA 301 (7.5.2.24); some dictionaries declare it UNSIGNED32
         // (AIMOTOR): written in the size the device declares, as a configuration tool does.
         const od::SubObject* hb = d->dictionary().entry(0x1017, 0);
-        const int bytes = hb && (hb->dataType == od::DataType::Unsigned32 || hb->dataType == od::DataType::Integer32) ? 4 : 2;
+        const int bytes =
+            hb && (hb->dataType == od::DataType::Unsigned32 || hb->dataType == od::DataType::Integer32) ? 4 : 2;
         sdoWrite(d->nodeId(), 0x1017, 0, 500, bytes);
         if (d->dictionaryName() == u"aimotor" && !aimotor_) aimotor_ = d->nodeId();
     }
-    steps_.push_back({frame(0x000, QByteArray::fromHex("0100")), 20 * kMs});  // NMT Start, all nodes (CiA 301 7.2.8.3.1)
+    steps_.push_back(
+        {frame(0x000, QByteArray::fromHex("0100")), 20 * kMs});  // NMT Start, all nodes (CiA 301 7.2.8.3.1)
     if (aimotor_) {
-        sdoWrite(aimotor_, 0x2002, 0x01, 8, 2);  // H02-00 = 8: CANopen control (extract-aimotor)
-        sdoWrite(aimotor_, 0x6060, 0, 3, 1);     // modes of operation: profile velocity
-        sdoWrite(aimotor_, 0x6083, 0, 20000, 4);  // profile acceleration, pulse/s²
-        sdoWrite(aimotor_, 0x6084, 0, 20000, 4);  // profile deceleration
-        sdoWrite(aimotor_, 0x60FF, 0, 0, 4);     // target velocity 0 until enabled
+        sdoWrite(aimotor_, 0x2002, 0x01, 8, 2);      // H02-00 = 8: CANopen control (extract-aimotor)
+        sdoWrite(aimotor_, 0x6060, 0, 3, 1);         // modes of operation: profile velocity
+        sdoWrite(aimotor_, 0x6083, 0, 20000, 4);     // profile acceleration, pulse/s²
+        sdoWrite(aimotor_, 0x6084, 0, 20000, 4);     // profile deceleration
+        sdoWrite(aimotor_, 0x60FF, 0, 0, 4);         // target velocity 0 until enabled
         sdoWrite(aimotor_, 0x6040, 0, 0x06, 2, 20);  // shutdown -> READY TO SWITCH ON
         sdoWrite(aimotor_, 0x6040, 0, 0x07, 2, 20);  // switch on -> SWITCHED ON
         sdoWrite(aimotor_, 0x6040, 0, 0x0F, 2, 20);  // enable operation -> OPERATION ENABLED

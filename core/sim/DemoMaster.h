@@ -41,7 +41,7 @@ private:
     int64_t nextStepNs_ = -1;  // -1: not powered
     int64_t nextSyncNs_ = -1;  // -1: SYNC not started yet
     int64_t nextTargetNs_ = -1;
-    uint8_t aimotor_ = 0;      // 0: none on this network
+    uint8_t aimotor_ = 0;  // 0: none on this network
     size_t target_ = 0;
 };
 

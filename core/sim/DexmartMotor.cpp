@@ -31,7 +31,9 @@ void DexmartMotor::raiseAlarm(uint8_t code) {
 void DexmartMotor::onWrite(uint16_t index, uint8_t sub) {
     const uint16_t multi = motor_ == 0 ? 0x3051 : 0x3052;
     const uint16_t lite = motor_ == 0 ? 0x305B : 0x305C;
-    auto read = [&](uint16_t i, uint8_t s) { return double(dev_.value(i, s).value_or(od::Value{}).toInt64().value_or(0)); };
+    auto read = [&](uint16_t i, uint8_t s) {
+        return double(dev_.value(i, s).value_or(od::Value{}).toInt64().value_or(0));
+    };
     if (index == multi && sub == 1) {
         const int cmd = int(read(multi, 1)) & 0xFF;
         if (cmd == 0x0A) {  // continuous run, Data2 = rpm
@@ -85,7 +87,8 @@ void DexmartMotor::publish() {
             *slot = od::isSigned(e->dataType) ? od::Value::signedInt(v) : od::Value::unsignedInt(uint64_t(v) & 0xFFFF);
         }
     };
-    put(0x01, alarm_ ? 2 : (std::abs(speed_) > 0.5 ? 1 : 0));  // motor state: 0 idle, 1 running, 2 alarm (simulator's coding)
+    put(0x01,
+        alarm_ ? 2 : (std::abs(speed_) > 0.5 ? 1 : 0));  // motor state: 0 idle, 1 running, 2 alarm (simulator's coding)
     put(0x02, alarm_);
     put(0x05, std::lround(speed_));
     put(0x0A, std::lround(std::abs(speed_) / 3000.0 * 1500.0));  // shunt current, model: mA-ish

@@ -31,9 +31,9 @@ private:
 
     VirtualDevice& dev_;
     int motor_;
-    double speed_ = 0;       // rpm, actual
-    double targetSpeed_ = 0; // rpm
-    double revs_ = 0;        // position in revolutions
+    double speed_ = 0;        // rpm, actual
+    double targetSpeed_ = 0;  // rpm
+    double revs_ = 0;         // position in revolutions
     double moveTarget_ = 0;
     bool moving_ = false;
     uint8_t alarm_ = 0;

@@ -25,7 +25,9 @@ std::optional<od::ObjectDictionary> loadDictionary(const QString& name, QString*
         p = provider();
     }
     if (!p) {
-        if (error) *error = QStringLiteral("no dictionary provider installed: call eds::installSimulatorDictionaries() at start-up");
+        if (error)
+            *error = QStringLiteral(
+                "no dictionary provider installed: call eds::installSimulatorDictionaries() at start-up");
         return std::nullopt;
     }
     return p(name, error);

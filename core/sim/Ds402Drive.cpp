@@ -16,12 +16,12 @@ namespace sw = canopen::ds402::sw;
 namespace {
 // Modes of operation (CiA 402-2 §6.3.1, 6060h).
 constexpr int8_t kPP = 1, kPV = 3, kPT = 4, kHM = 6, kIP = 7, kCSP = 8, kCSV = 9, kCST = 10;
-constexpr double kDefaultVelocity = 20000.0;   // units/s when 6081h/6099h are 0
-constexpr double kDefaultWindow = 10.0;        // units when 6067h is 0
-constexpr double kLagPerSecond = 400.0;        // position loop bandwidth of the model (1/s)
-constexpr int kFaultReactionMs = 20;           // FAULT REACTION ACTIVE lasts this long
-constexpr uint16_t kSetPointAck = 1u << 12;    // PP: set-point acknowledge; HM: homing attained; CSx: follows command
-constexpr uint16_t kFollowingError = 1u << 13; // PP/CSP: following error; HM: homing error
+constexpr double kDefaultVelocity = 20000.0;    // units/s when 6081h/6099h are 0
+constexpr double kDefaultWindow = 10.0;         // units when 6067h is 0
+constexpr double kLagPerSecond = 400.0;         // position loop bandwidth of the model (1/s)
+constexpr int kFaultReactionMs = 20;            // FAULT REACTION ACTIVE lasts this long
+constexpr uint16_t kSetPointAck = 1u << 12;     // PP: set-point acknowledge; HM: homing attained; CSx: follows command
+constexpr uint16_t kFollowingError = 1u << 13;  // PP/CSP: following error; HM: homing error
 }  // namespace
 
 Ds402Drive::Ds402Drive(VirtualDevice& device, int axis) : dev_(device), axis_(axis) {}
@@ -51,7 +51,8 @@ void Ds402Drive::writeInt(uint16_t base, uint8_t sub, int64_t v) {
 bool Ds402Drive::canopenControlActive() const {
     const Personality& p = dev_.personality();
     if (!p.controlModeIndex) return true;
-    return dev_.value(p.controlModeIndex, p.controlModeSub).value_or(od::Value{}).toInt64().value_or(0) == p.controlModeValue;
+    return dev_.value(p.controlModeIndex, p.controlModeSub).value_or(od::Value{}).toInt64().value_or(0) ==
+           p.controlModeValue;
 }
 
 void Ds402Drive::reset() {
@@ -108,14 +109,17 @@ uint32_t Ds402Drive::checkWrite(uint16_t base, uint8_t sub, int64_t value) const
     if (base == 0x6060) {
         // Modes of operation: only the modes the drive lists in 6502h (CiA 402-2 §6.4.3).
         const auto modes = uint64_t(readInt(0x6502, 0, 0));
-        if (value != 0 && (value < 1 || value > 10 || !(modes & (uint64_t(1) << (value - 1))))) return canopen::sdoabort::InvalidValue;
+        if (value != 0 && (value < 1 || value > 10 || !(modes & (uint64_t(1) << (value - 1)))))
+            return canopen::sdoabort::InvalidValue;
     }
     if (base == 0x6098) {
         const auto& table = canopen::homing::drive(dev_.personality().dictionaryName);
         // AIMOTOR: "change 6098 only while disabled" (extract-aimotor §4.7).
-        if (table.changeOnlyWhileDisabled && state_ == State::OperationEnabled && value != readInt(0x6098)) return canopen::sdoabort::DeviceState;
+        if (table.changeOnlyWhileDisabled && state_ == State::OperationEnabled && value != readInt(0x6098))
+            return canopen::sdoabort::DeviceState;
         // A method the drive lacks, where its refusal is on the write (Delta, generic).
-        if (table.refusal == canopen::homing::Refusal::SdoAbort && value != 0 && !table.supports(int(value))) return table.abortCode;
+        if (table.refusal == canopen::homing::Refusal::SdoAbort && value != 0 && !table.supports(int(value)))
+            return table.abortCode;
     }
     return 0;
 }
@@ -161,37 +165,39 @@ void Ds402Drive::handleControlword(uint16_t cw) {
     if ((state_ == State::ReadyToSwitchOn || state_ == State::SwitchedOn) && (switchOn || enableOp)) {
         if (!enableFaults_.alarmOnSwitchOn.isEmpty()) {
             // Injected: the drive trips while switching on (e.g. Delta AL013, AIMOTOR Er.620).
-            if (enableFaults_.alarmOnSwitchOn == u"typical" || !dev_.injectDriveFault(enableFaults_.alarmOnSwitchOn, axis_))
+            if (enableFaults_.alarmOnSwitchOn == u"typical" ||
+                !dev_.injectDriveFault(enableFaults_.alarmOnSwitchOn, axis_))
                 dev_.injectDriveFault(DriveFault{0, 0, axis_});
             return;
         }
-        if (enableFaults_.mainPowerOff && state_ == State::ReadyToSwitchOn) return;  // no DC bus: transition 3 not possible
+        if (enableFaults_.mainPowerOff && state_ == State::ReadyToSwitchOn)
+            return;  // no DC bus: transition 3 not possible
     }
     switch (state_) {
     case State::SwitchOnDisabled:
         if (shutdown) setState(State::ReadyToSwitchOn);  // 2
         break;
     case State::ReadyToSwitchOn:
-        if (switchOn) setState(State::SwitchedOn);  // 3
-        else if (enableOp) setState(State::OperationEnabled);  // 3 + 4
+        if (switchOn) setState(State::SwitchedOn);                                // 3
+        else if (enableOp) setState(State::OperationEnabled);                     // 3 + 4
         else if (disableVoltage || quickStop) setState(State::SwitchOnDisabled);  // 7
         break;
     case State::SwitchedOn:
-        if (enableOp) setState(State::OperationEnabled);  // 4
-        else if (shutdown) setState(State::ReadyToSwitchOn);  // 6
+        if (enableOp) setState(State::OperationEnabled);                          // 4
+        else if (shutdown) setState(State::ReadyToSwitchOn);                      // 6
         else if (disableVoltage || quickStop) setState(State::SwitchOnDisabled);  // 10
         break;
     case State::OperationEnabled:
-        if (switchOn) setState(State::SwitchedOn);  // 5
-        else if (shutdown) setState(State::ReadyToSwitchOn);  // 8
+        if (switchOn) setState(State::SwitchedOn);                   // 5
+        else if (shutdown) setState(State::ReadyToSwitchOn);         // 8
         else if (disableVoltage) setState(State::SwitchOnDisabled);  // 9
-        else if (quickStop) {  // 11
+        else if (quickStop) {                                        // 11
             state_ = State::QuickStopActive;
             stopMotion();
         }
         break;
     case State::QuickStopActive:
-        if (enableOp) state_ = State::OperationEnabled;  // 16
+        if (enableOp) state_ = State::OperationEnabled;              // 16
         else if (disableVoltage) setState(State::SwitchOnDisabled);  // 12
         break;
     default: break;
@@ -302,7 +308,8 @@ void Ds402Drive::step(int64_t dtNs) {
             }
             demand_ = ppMoving_ ? position_ + velocity_ / kLagPerSecond : ppTarget_;
             targetReached_ = halt ? std::abs(velocity_) < 1.0
-                                  : !ppMoving_ && std::abs(ppTarget_ - position_) <= std::max(double(readInt(0x6067, 0, 0)), kDefaultWindow);
+                                  : !ppMoving_ && std::abs(ppTarget_ - position_) <=
+                                                      std::max(double(readInt(0x6067, 0, 0)), kDefaultWindow);
             break;
         case kPV: {
             const double target = halt ? 0.0 : double(readInt(0x60FF));
@@ -316,7 +323,8 @@ void Ds402Drive::step(int64_t dtNs) {
             // Torque drives a damped inertia: v' = k T - d v.
             const double target = halt ? 0.0 : double(readInt(0x6071));
             const double slope = std::max(double(readInt(0x6087, 0, 0)), 1000.0);
-            torque_ = torque_ < target ? std::min(target, torque_ + slope * dt) : std::max(target, torque_ - slope * dt);
+            torque_ =
+                torque_ < target ? std::min(target, torque_ + slope * dt) : std::max(target, torque_ - slope * dt);
             velocity_ += (torque_ * 100.0 - velocity_ * 2.0) * dt;
             position_ += velocity_ * dt;
             demand_ = position_;
@@ -366,14 +374,18 @@ void Ds402Drive::step(int64_t dtNs) {
         if (modeDisplay_ != kPT && modeDisplay_ != kCST && !stalled_) {
             // Torque of the model: acceleration term plus a little friction (per mille of rated).
             const double accel = dt > 0 ? (velocity_ - before) / dt : 0;
-            torque_ = std::clamp(accel / 2000.0 + (velocity_ > 1 ? 20.0 : velocity_ < -1 ? -20.0 : 0.0), -3000.0, 3000.0);
+            torque_ = std::clamp(accel / 2000.0 + (velocity_ > 1    ? 20.0
+                                                   : velocity_ < -1 ? -20.0
+                                                                    : 0.0),
+                                 -3000.0, 3000.0);
         }
     }
     // Following error (CiA 402-2 §12.4: 6065h window, 60F4h actual following error).
     const double ferr = demand_ - position_;
     const int64_t window = readInt(0x6065, 0, -1);
-    followingError_ = (modeDisplay_ == kPP || modeDisplay_ == kCSP || modeDisplay_ == kIP) && state_ == State::OperationEnabled &&
-                      window >= 0 && uint32_t(window) != 0xFFFFFFFFu && std::abs(ferr) > double(window);
+    followingError_ = (modeDisplay_ == kPP || modeDisplay_ == kCSP || modeDisplay_ == kIP) &&
+                      state_ == State::OperationEnabled && window >= 0 && uint32_t(window) != 0xFFFFFFFFu &&
+                      std::abs(ferr) > double(window);
     publish();
 }
 
@@ -384,7 +396,9 @@ void Ds402Drive::publish() {
     case State::SwitchOnDisabled: s = sw::SwitchOnDisabled; break;
     case State::ReadyToSwitchOn: s = sw::QuickStop | sw::ReadyToSwitchOn; break;
     case State::SwitchedOn: s = sw::QuickStop | sw::ReadyToSwitchOn | sw::SwitchedOn; break;
-    case State::OperationEnabled: s = sw::QuickStop | sw::ReadyToSwitchOn | sw::SwitchedOn | sw::OperationEnabled; break;
+    case State::OperationEnabled:
+        s = sw::QuickStop | sw::ReadyToSwitchOn | sw::SwitchedOn | sw::OperationEnabled;
+        break;
     case State::QuickStopActive: s = sw::ReadyToSwitchOn | sw::SwitchedOn | sw::OperationEnabled; break;
     case State::FaultReactionActive: s = sw::ReadyToSwitchOn | sw::SwitchedOn | sw::OperationEnabled | sw::Fault; break;
     case State::Fault: s = sw::Fault; break;

@@ -43,7 +43,9 @@ public:
     // The connection to the master was lost and 6007h (abort connection option code, CiA 402-2)
     // asks for 2 "disable voltage" or 3 "quick stop": the drive runs that command itself.
     void abortConnection(int16_t optionCode);
-    bool faulted() const { return state_ == canopen::ds402::State::Fault || state_ == canopen::ds402::State::FaultReactionActive; }
+    bool faulted() const {
+        return state_ == canopen::ds402::State::Fault || state_ == canopen::ds402::State::FaultReactionActive;
+    }
     bool enabled() const { return state_ == canopen::ds402::State::OperationEnabled; }
     // NMT reset / power cycle: back to SWITCH ON DISABLED (fault kept if latched).
     void reset();
@@ -101,28 +103,28 @@ private:
     uint16_t statusword_ = 0;
     uint16_t lastControlword_ = 0;
     int8_t modeDisplay_ = 0;
-    double position_ = 0;      // actual
-    double velocity_ = 0;      // actual, units/s
-    double torque_ = 0;        // per mille of rated torque
-    double demand_ = 0;        // position demand (6062h)
-    double ppTarget_ = 0;      // active profile-position target
+    double position_ = 0;  // actual
+    double velocity_ = 0;  // actual, units/s
+    double torque_ = 0;    // per mille of rated torque
+    double demand_ = 0;    // position demand (6062h)
+    double ppTarget_ = 0;  // active profile-position target
     bool ppMoving_ = false;
-    double ppNext_ = 0;        // the buffered set-point (single set-point mode)
+    double ppNext_ = 0;  // the buffered set-point (single set-point mode)
     bool ppBuffered_ = false;
-    bool ppAck_ = false;       // statusword bit 12 in PP
+    bool ppAck_ = false;  // statusword bit 12 in PP
     bool targetReached_ = true;
     bool followingError_ = false;
-    bool homingDone_ = false;    // bit 12 in HM: homing attained
+    bool homingDone_ = false;  // bit 12 in HM: homing attained
     bool homingActive_ = false;
     double travelLow_ = 0, travelHigh_ = 0;  // homingTravel()
-    bool homingError_ = false;   // bit 13 in HM
-    bool homeFound_ = false;     // AIMOTOR bit 15
-    bool stalled_ = false;       // hard-stop homing: against the end stop, torque at the limit
+    bool homingError_ = false;               // bit 13 in HM
+    bool homeFound_ = false;                 // AIMOTOR bit 15
+    bool stalled_ = false;                   // hard-stop homing: against the end stop, torque at the limit
     std::vector<HomingLeg> homingLegs_;
     size_t homingLeg_ = 0;
-    double homingElapsed_ = 0;   // s
-    double stallTime_ = 0;       // s
-    double machineOffset_ = 0;   // machine position = position_ + machineOffset_
+    double homingElapsed_ = 0;  // s
+    double stallTime_ = 0;      // s
+    double machineOffset_ = 0;  // machine position = position_ + machineOffset_
     int faultReactionMs_ = 0;
     uint16_t pendingFault_ = 0;
     EnableFaults enableFaults_;

@@ -16,8 +16,8 @@ namespace {
 // When 6099h/609Ah are 0 (the generic drive's defaults): the simulator's own choice, in
 // revolutions per second (squared).
 constexpr double kFastRevPerS = 0.5, kSlowRevPerS = 0.1, kAccelRevPerS2 = 5.0;
-constexpr double kStallSeconds = 0.2;      // hard stop: torque at the limit this long = home
-constexpr double kDefaultTorqueLimit = 100; // 0.1 % units: 10 % when H05-58 is 0
+constexpr double kStallSeconds = 0.2;        // hard stop: torque at the limit this long = home
+constexpr double kDefaultTorqueLimit = 100;  // 0.1 % units: 10 % when H05-58 is 0
 }  // namespace
 
 double Ds402Drive::homingSpeed(uint8_t sub) const {
@@ -84,7 +84,8 @@ void Ds402Drive::stepHoming(double dt) {
     homingElapsed_ += dt;
     if (p.homingTimeLimitIndex) {
         // AIMOTOR H05-35: home not found in time -> ER.601 homing timeout (extract-aimotor §4.7).
-        const auto limitMs = dev_.value(p.homingTimeLimitIndex, p.homingTimeLimitSub).value_or(od::Value{}).toInt64().value_or(0);
+        const auto limitMs =
+            dev_.value(p.homingTimeLimitIndex, p.homingTimeLimitSub).value_or(od::Value{}).toInt64().value_or(0);
         if (limitMs > 0 && homingElapsed_ * 1000.0 > double(limitMs)) {
             interruptHoming();
             homingError_ = true;
@@ -109,7 +110,12 @@ void Ds402Drive::stepHoming(double dt) {
         velocity_ = 0;
         double limit = kDefaultTorqueLimit;
         if (p.homingTorqueLimitIndex)
-            if (const auto v = dev_.value(p.homingTorqueLimitIndex, p.homingTorqueLimitSub).value_or(od::Value{}).toInt64().value_or(0); v > 0) limit = double(v);
+            if (const auto v = dev_.value(p.homingTorqueLimitIndex, p.homingTorqueLimitSub)
+                                   .value_or(od::Value{})
+                                   .toInt64()
+                                   .value_or(0);
+                v > 0)
+                limit = double(v);
         torque_ = std::copysign(limit, leg.to);
         stallTime_ += dt;
         if (stallTime_ >= kStallSeconds) ++homingLeg_;

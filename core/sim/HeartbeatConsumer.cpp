@@ -55,7 +55,8 @@ uint32_t HeartbeatConsumer::checkWrite(uint8_t sub, uint32_t value) const {
     // Several consumer times for one node-ID: abort 06040043h (CiA 301 §7.5.2.18).
     const auto count = dev_.value(0x1016, 0).value_or(od::Value{}).toUInt64().value_or(0);
     for (uint8_t s = 1; s <= count && s < 255; ++s)
-        if (s != sub && inUse(entry(s)) && producerOf(entry(s)) == producerOf(value)) return canopen::sdoabort::ParameterIncompatible;
+        if (s != sub && inUse(entry(s)) && producerOf(entry(s)) == producerOf(value))
+            return canopen::sdoabort::ParameterIncompatible;
     return 0;
 }
 
@@ -68,7 +69,9 @@ void HeartbeatConsumer::masterLost(uint8_t producer) {
         // The drive raises its alarm (EMCY 8130h with the alarm number, 603Fh, fault).
         bool servoOn = false;
         for (int a = 0; a < dev_.axisCount(); ++a) servoOn |= dev_.drive(a)->enabled();
-        dev_.injectDriveFault(vendor == Vendor::Aimotor ? QStringLiteral("Er.D03") : servoOn ? QStringLiteral("AL170") : QStringLiteral("AL180"));
+        dev_.injectDriveFault(vendor == Vendor::Aimotor ? QStringLiteral("Er.D03")
+                              : servoOn                 ? QStringLiteral("AL170")
+                                                        : QStringLiteral("AL180"));
     } else {
         // CiA 402 abort connection option 1 "fault signal": the axis faults (EMCY, 603Fh).
         bool faulted = false;
@@ -86,7 +89,8 @@ void HeartbeatConsumer::masterLost(uint8_t producer) {
     // Communication error behaviour 1029h:01 (CiA 301 §7.5.2.32).
     if (const auto behaviour = dev_.value(0x1029, 1)) {
         const auto b = behaviour->toUInt64().value_or(0);
-        if (b == 0 && dev_.nmtState() == canopen::NmtState::Operational) dev_.setNmtState(canopen::NmtState::PreOperational);
+        if (b == 0 && dev_.nmtState() == canopen::NmtState::Operational)
+            dev_.setNmtState(canopen::NmtState::PreOperational);
         else if (b == 2) dev_.setNmtState(canopen::NmtState::Stopped);
     }
     if (!vendorAlarm) reactOnAxes();
@@ -100,7 +104,8 @@ int64_t HeartbeatConsumer::abortOption(int axis) const {
 void HeartbeatConsumer::reactOnAxes() {
     // 2 disable voltage, 3 quick stop (the drive model runs the command).
     for (int a = 0; a < dev_.axisCount(); ++a)
-        if (const int64_t code = abortOption(a); code == 2 || code == 3) dev_.drive(a)->abortConnection(static_cast<int16_t>(code));
+        if (const int64_t code = abortOption(a); code == 2 || code == 3)
+            dev_.drive(a)->abortConnection(static_cast<int16_t>(code));
 }
 
 }  // namespace coscope::sim

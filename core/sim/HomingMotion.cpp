@@ -67,7 +67,8 @@ std::vector<HomingLeg> homingPath(const Method& m, double start, const HomingMac
     }
     case Reference::IndexPulse: {
         const double index = g.nextIndex(start, m.direction);
-        if (m.homeSide != 0) legs.push_back({index + m.homeSide * g.backOff, true, false});  // past it, then back onto it
+        if (m.homeSide != 0)
+            legs.push_back({index + m.homeSide * g.backOff, true, false});  // past it, then back onto it
         legs.push_back({index, true, false});
         break;
     }

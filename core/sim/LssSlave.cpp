@@ -9,14 +9,17 @@ namespace coscope::sim {
 using namespace canopen;
 
 namespace {
-uint32_t le32(const uint8_t* b) { return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24; }
+uint32_t le32(const uint8_t* b) {
+    return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
+}
 }  // namespace
 
 LssSlave::LssSlave(VirtualDevice& device) : dev_(device) {}
 
 uint32_t LssSlave::identity(int field) const {
     // LSS address = 1018h sub 1-4 (CiA 305 §4.2).
-    return static_cast<uint32_t>(dev_.value(0x1018, static_cast<uint8_t>(field + 1)).value_or(od::Value{}).toUInt64().value_or(0));
+    return static_cast<uint32_t>(
+        dev_.value(0x1018, static_cast<uint8_t>(field + 1)).value_or(od::Value{}).toUInt64().value_or(0));
 }
 
 void LssSlave::reply(uint8_t cs, uint8_t b1, uint8_t b2, uint32_t value, bool withValue) {
@@ -121,19 +124,13 @@ void LssSlave::onFrame(const CanFrame& f) {
     case lss::InquireNodeId:
         if (configuration_) reply(cs, dev_.nodeId());
         return;
-    case lss::IdentifyVendor:
-        identifyStep_ = identity(0) == v ? 1 : 0;
-        return;
-    case lss::IdentifyProduct:
-        identifyStep_ = identifyStep_ == 1 && identity(1) == v ? 2 : 0;
-        return;
+    case lss::IdentifyVendor: identifyStep_ = identity(0) == v ? 1 : 0; return;
+    case lss::IdentifyProduct: identifyStep_ = identifyStep_ == 1 && identity(1) == v ? 2 : 0; return;
     case lss::IdentifyRevisionLow:
         revLow_ = v;
         identifyStep_ = identifyStep_ == 2 && identity(2) >= v ? 3 : 0;
         return;
-    case lss::IdentifyRevisionHigh:
-        identifyStep_ = identifyStep_ == 3 && identity(2) <= v ? 4 : 0;
-        return;
+    case lss::IdentifyRevisionHigh: identifyStep_ = identifyStep_ == 3 && identity(2) <= v ? 4 : 0; return;
     case lss::IdentifySerialLow:
         serialLow_ = v;
         identifyStep_ = identifyStep_ == 4 && identity(3) >= v ? 5 : 0;

@@ -28,10 +28,10 @@ private:
 
     VirtualDevice& dev_;
     bool configuration_ = false;
-    int selectiveStep_ = 0;   // switch-state-selective: fields matched so far
-    int identifyStep_ = 0;    // identify remote slave: fields matched so far
+    int selectiveStep_ = 0;  // switch-state-selective: fields matched so far
+    int identifyStep_ = 0;   // identify remote slave: fields matched so far
     uint32_t revLow_ = 0, serialLow_ = 0;
-    int fastscanSub_ = 0;     // LSSSub the slave expects next (0..3), -1 = dropped out
+    int fastscanSub_ = 0;  // LSSSub the slave expects next (0..3), -1 = dropped out
     struct Delayed {
         int64_t dueNs;
         CanFrame frame;

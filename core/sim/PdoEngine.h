@@ -65,8 +65,8 @@ private:
         int syncCount = 0;
         int64_t lastTxNs = -1;
         int64_t nextEventNs = 0;
-        bool timerDue = false;      // the pending send comes from the event timer
-        bool pending = false;       // event-driven: a send is due once the inhibit time allows
+        bool timerDue = false;  // the pending send comes from the event timer
+        bool pending = false;   // event-driven: a send is due once the inhibit time allows
         bool rtrRequested = false;
         std::array<uint8_t, 8> lastData{};
         bool haveLast = false;

@@ -5,7 +5,8 @@ namespace coscope::sim {
 
 namespace {
 // 6502h bits: pp 0, pv 2, pt 3, hm 5, ip 6, csp 7, csv 8, cst 9 (CiA 402-2 §6.4.3).
-constexpr uint32_t PP = 1u << 0, PV = 1u << 2, PT = 1u << 3, HM = 1u << 5, IP = 1u << 6, CSP = 1u << 7, CSV = 1u << 8, CST = 1u << 9;
+constexpr uint32_t PP = 1u << 0, PV = 1u << 2, PT = 1u << 3, HM = 1u << 5, IP = 1u << 6, CSP = 1u << 7, CSV = 1u << 8,
+                   CST = 1u << 9;
 
 // A few documented alarms per vendor (resources/alarms/*.json, from the manuals' tables).
 struct NamedAlarm {
@@ -49,7 +50,8 @@ std::optional<VendorAlarm> Personality::alarm(const QString& name) const {
 }
 
 QStringList simulatableDictionaries() {
-    return {QStringLiteral("delta-asda-a2"), QStringLiteral("aimotor"), QStringLiteral("dexmart-dev"), QStringLiteral("generic-cia402")};
+    return {QStringLiteral("delta-asda-a2"), QStringLiteral("aimotor"), QStringLiteral("dexmart-dev"),
+            QStringLiteral("generic-cia402")};
 }
 
 std::optional<Personality> personalityFor(const QString& name, QString* error) {
@@ -70,7 +72,7 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
     } else if (name == u"aimotor") {
         p.vendor = Vendor::Aimotor;
         p.supportedModes = PP | PV | PT | HM | CSP | CSV | CST;  // extract-aimotor §4
-        p.controlModeIndex = 0x2002;  // H02-00 = 8 CANopen control
+        p.controlModeIndex = 0x2002;                             // H02-00 = 8 CANopen control
         p.controlModeSub = 0x01;
         p.controlModeValue = 8;
         p.typicalFault = *p.alarm(QStringLiteral("Er.201"));
@@ -93,10 +95,15 @@ std::optional<Personality> personalityFor(const QString& name, QString* error) {
         p.supportedModes = PP | PV | PT | HM | IP | CSP | CSV | CST;
         p.typicalFault = *p.alarm(QStringLiteral("overcurrent"));
     } else if (name == u"icpdas-ecat-2094p") {
-        if (error) *error = QStringLiteral("icpdas-ecat-2094p is an EtherCAT device: it is bundled for offline reference and cannot be simulated on CAN");
+        if (error)
+            *error = QStringLiteral(
+                "icpdas-ecat-2094p is an EtherCAT device: it is bundled for offline reference and cannot be simulated "
+                "on CAN");
         return std::nullopt;
     } else {
-        if (error) *error = QStringLiteral("unknown virtual drive '%1'; known: %2").arg(name, simulatableDictionaries().join(QStringLiteral(", ")));
+        if (error)
+            *error = QStringLiteral("unknown virtual drive '%1'; known: %2")
+                         .arg(name, simulatableDictionaries().join(QStringLiteral(", ")));
         return std::nullopt;
     }
     p.nodeSettings = canopen::vendorNodeSettings(name);

@@ -27,8 +27,8 @@ struct Personality {
     Vendor vendor = Vendor::GenericCia402;
     QString dictionaryName;
     bool cia402 = true;
-    int axes = 1;                  // DEXMART DEV: 2 motors
-    uint32_t supportedModes = 0;   // 6502h bit mask when the dictionary has no default
+    int axes = 1;                 // DEXMART DEV: 2 motors
+    uint32_t supportedModes = 0;  // 6502h bit mask when the dictionary has no default
     uint32_t defaultBitRate = 500000;
 
     // Where the node-ID and bit rate live besides LSS (canopen::vendorNodeSettings, the one

@@ -46,8 +46,10 @@ ProgramFlash::ProgramFlash(VirtualDevice& device) : dev_(device) {}
 void ProgramFlash::addObjects(od::ObjectDictionary& dict) {
     addArray(dict, 0x1F50, QStringLiteral("Program data"), od::DataType::Domain, od::Access::WriteOnly);
     addArray(dict, 0x1F51, QStringLiteral("Program control"), od::DataType::Unsigned8, od::Access::ReadWrite);
-    addArray(dict, 0x1F56, QStringLiteral("Program software identification"), od::DataType::Unsigned32, od::Access::ReadOnly);
-    addArray(dict, 0x1F57, QStringLiteral("Flash status identification"), od::DataType::Unsigned32, od::Access::ReadOnly);
+    addArray(dict, 0x1F56, QStringLiteral("Program software identification"), od::DataType::Unsigned32,
+             od::Access::ReadOnly);
+    addArray(dict, 0x1F57, QStringLiteral("Flash status identification"), od::DataType::Unsigned32,
+             od::Access::ReadOnly);
     if (const od::SubObject* v = dict.entry(0x100A, 0)) {
         version_ = v->defaultValue.trimmed();
     } else {

@@ -38,7 +38,8 @@ QByteArray makeProgramImage(const QByteArray& payload, const QString& version) {
 }
 
 int checkProgramImage(const QByteArray& image, ProgramImageHeader* header) {
-    if (image.size() < programimage::kHeaderSize || !image.startsWith(QByteArray(kMagic, 4))) return 2;  // data format unknown
+    if (image.size() < programimage::kHeaderSize || !image.startsWith(QByteArray(kMagic, 4)))
+        return 2;  // data format unknown
     ProgramImageHeader h;
     h.length = qFromLittleEndian<uint32_t>(image.constData() + 4);
     h.crc = qFromLittleEndian<uint32_t>(image.constData() + 8);

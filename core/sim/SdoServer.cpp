@@ -293,7 +293,8 @@ void SdoServer::onRequest(const CanFrame& f, int64_t nowNs) {
         const int acked = (subBlockStart_ / 7) + r.ackSeq;
         if (acked >= segmentsTotal) {
             const int lastLen = buffer_.isEmpty() ? 0 : static_cast<int>(buffer_.size() - (segmentsTotal - 1) * 7);
-            uint16_t crc = crc_ ? sdoBlockCrc(reinterpret_cast<const uint8_t*>(buffer_.constData()), size_t(buffer_.size())) : 0;
+            uint16_t crc =
+                crc_ ? sdoBlockCrc(reinterpret_cast<const uint8_t*>(buffer_.constData()), size_t(buffer_.size())) : 0;
             if (faults.blockCrcError) {
                 faults.blockCrcError = false;
                 crc = static_cast<uint16_t>(crc ^ 0x5A5A);
@@ -358,7 +359,8 @@ void SdoServer::startBlockUpload(uint16_t index, uint8_t sub, uint8_t blockSize,
     phase_ = Phase::BlockUploadInitiated;
     // scs 6, sc 1, s 1, ss 0; bytes 4-7 size.
     const auto n = static_cast<uint32_t>(buffer_.size());
-    respond(frame8({0xC6, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(n), uint8_t(n >> 8), uint8_t(n >> 16), uint8_t(n >> 24)}));
+    respond(frame8({0xC6, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(n), uint8_t(n >> 8), uint8_t(n >> 16),
+                    uint8_t(n >> 24)}));
 }
 
 void SdoServer::sendSubBlock() {

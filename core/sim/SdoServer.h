@@ -24,7 +24,16 @@ public:
     void reset();              // NMT reset communication: abandons any transfer
 
 private:
-    enum class Phase : uint8_t { Idle, DownloadSegments, UploadSegments, BlockDownloadSub, BlockDownloadEnd, BlockUploadInitiated, BlockUploadSub, BlockUploadEnd };
+    enum class Phase : uint8_t {
+        Idle,
+        DownloadSegments,
+        UploadSegments,
+        BlockDownloadSub,
+        BlockDownloadEnd,
+        BlockUploadInitiated,
+        BlockUploadSub,
+        BlockUploadEnd
+    };
 
     void respond(const CanFrame& frame);
     void abort(uint32_t code);
@@ -40,14 +49,14 @@ private:
     uint16_t index_ = 0;
     uint8_t sub_ = 0;
     QByteArray buffer_;
-    int offset_ = 0;            // bytes sent (upload) so far
-    uint32_t expectedSize_ = 0; // download: indicated size (0 = not indicated)
+    int offset_ = 0;             // bytes sent (upload) so far
+    uint32_t expectedSize_ = 0;  // download: indicated size (0 = not indicated)
     bool sizeIndicated_ = false;
     bool toggle_ = false;
     bool crc_ = false;
     uint8_t blockSize_ = 0;
-    uint8_t seq_ = 0;           // block download: last good sequence number
-    int subBlockStart_ = 0;     // block upload: offset of the sub-block being sent
+    uint8_t seq_ = 0;        // block download: last good sequence number
+    int subBlockStart_ = 0;  // block upload: offset of the sub-block being sent
     bool lastSegmentSeen_ = false;
     int64_t lastActivityNs_ = 0;
     struct Delayed {

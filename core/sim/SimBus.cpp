@@ -23,7 +23,8 @@ void SimBus::open() {
     if (!network_ && !name.isEmpty()) network_ = sim::SimNetwork::published(name);
     if (!network_) {
         QString error;
-        std::unique_ptr<sim::SimNetwork> net = sim::SimNetwork::fromSpec(url().option(QStringLiteral("nodes")), &error, url().option(QStringLiteral("serials")));
+        std::unique_ptr<sim::SimNetwork> net = sim::SimNetwork::fromSpec(url().option(QStringLiteral("nodes")), &error,
+                                                                         url().option(QStringLiteral("serials")));
         if (!net) {
             setState(State::Error, error);
             return;

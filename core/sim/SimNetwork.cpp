@@ -130,7 +130,8 @@ void SimNetwork::onTick() {
 
 void SimNetwork::broadcast(const CanFrame& frame, SimNode* fromNode, SimTap* fromTap) {
     CanFrame f = frame;
-    if (f.timestampNs == 0) f.timestampNs = thread_ && QThread::currentThread() == thread_ && clockNs_ ? clockNs_ : nowNs();
+    if (f.timestampNs == 0)
+        f.timestampNs = thread_ && QThread::currentThread() == thread_ && clockNs_ ? clockNs_ : nowNs();
     std::vector<SimTap*> taps;
     {
         std::lock_guard lock(mutex_);
@@ -207,7 +208,10 @@ std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString*
         bool ok = false;
         const int id = (colon < 0 ? part : part.left(colon)).trimmed().toInt(&ok);
         if (!ok || id < 1 || id > 127) {
-            if (error) *error = QStringLiteral("sim node '%1': node-ID must be 1-127 (form ID:DICTIONARY, e.g. 1:delta-asda-a2)").arg(part);
+            if (error)
+                *error =
+                    QStringLiteral("sim node '%1': node-ID must be 1-127 (form ID:DICTIONARY, e.g. 1:delta-asda-a2)")
+                        .arg(part);
             return nullptr;
         }
         if (std::find(used.begin(), used.end(), id) != used.end()) {
@@ -227,7 +231,10 @@ std::unique_ptr<SimNetwork> SimNetwork::fromSpec(const QString& specIn, QString*
         const qulonglong serial = idSerial.value(1).trimmed().toULongLong(&okSerial, 0);
         VirtualDevice* d = okId && id >= 1 && id <= 127 ? net->device(static_cast<uint8_t>(id)) : nullptr;
         if (idSerial.size() != 2 || !okSerial || serial > 0xFFFFFFFFull || !d) {
-            if (error) *error = QStringLiteral("sim serials '%1': expects NODE:SERIAL of a node on the network, e.g. 3:0x51000099").arg(part);
+            if (error)
+                *error =
+                    QStringLiteral("sim serials '%1': expects NODE:SERIAL of a node on the network, e.g. 3:0x51000099")
+                        .arg(part);
             return nullptr;
         }
         d->setSerialNumber(static_cast<uint32_t>(serial));

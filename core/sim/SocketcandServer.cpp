@@ -54,7 +54,11 @@ SocketcandServer::~SocketcandServer() {
 
 bool SocketcandServer::listen(const QHostAddress& address, quint16 port, QString* error) {
     if (!server_->listen(address, port)) {
-        if (error) *error = QStringLiteral("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(server_->errorString());
+        if (error)
+            *error = QStringLiteral("cannot listen on %1:%2: %3")
+                         .arg(address.toString())
+                         .arg(port)
+                         .arg(server_->errorString());
         return false;
     }
     timer_->start();
@@ -75,7 +79,8 @@ void SocketcandServer::onNewConnection() {
         clients_.push_back(std::move(c));
         s->write(socketcand::encodeHi());
         s->flush();
-        spdlog::info("socketcand client connected from {}:{}", s->peerAddress().toString().toStdString(), s->peerPort());
+        spdlog::info("socketcand client connected from {}:{}", s->peerAddress().toString().toStdString(),
+                     s->peerPort());
     }
 }
 
@@ -118,7 +123,9 @@ void SocketcandServer::onReadyRead(Client* c) {
             if (c->raw) network_->inject(m->frame, c);
             else c->socket->write(socketcand::encodeError(QStringLiteral("not in raw mode")));
             break;
-        default: c->socket->write(socketcand::encodeError(QStringLiteral("unsupported command %1").arg(m->word))); break;
+        default:
+            c->socket->write(socketcand::encodeError(QStringLiteral("unsupported command %1").arg(m->word)));
+            break;
         }
     }
     if (!discarded.isEmpty()) spdlog::warn("socketcand client: {}", discarded.toStdString());

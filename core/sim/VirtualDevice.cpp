@@ -53,9 +53,9 @@ bool inStoreGroup(uint8_t group, uint16_t index) {
 uint8_t errorRegisterFor(uint16_t code) {
     uint8_t reg = 0x01;  // generic error
     switch (code >> 12) {
-    case 0x2: reg |= 0x02; break;  // current
-    case 0x3: reg |= 0x04; break;  // voltage
-    case 0x4: reg |= 0x08; break;  // temperature
+    case 0x2: reg |= 0x02; break;                               // current
+    case 0x3: reg |= 0x04; break;                               // voltage
+    case 0x4: reg |= 0x08; break;                               // temperature
     case 0x8: reg |= (code >> 8) == 0x81 ? 0x10 : 0x20; break;  // communication / profile (8xxx motion)
     case 0xF: reg |= 0x80; break;
     default: break;
@@ -144,7 +144,8 @@ void VirtualDevice::loadDefaults(bool communicationOnly) {
                 *modes = od::Value::unsignedInt(personality_.supportedModes);
         }
     }
-    if (auto* serial = valueSlot(0x1018, 4); serial && serial->toUInt64().value_or(0) == 0) *serial = od::Value::unsignedInt(serial_);
+    if (auto* serial = valueSlot(0x1018, 4); serial && serial->toUInt64().value_or(0) == 0)
+        *serial = od::Value::unsignedInt(serial_);
     program_->publish();  // the program is in flash: no reset changes it
 }
 
@@ -175,7 +176,8 @@ std::optional<od::Value> VirtualDevice::value(uint16_t index, uint8_t sub) const
 bool VirtualDevice::setValue(uint16_t index, uint8_t sub, const od::Value& v, QString* error) {
     const od::SubObject* e = entry(index, sub);
     if (!e) {
-        if (error) *error = QStringLiteral("no entry %1:%2").arg(index, 4, 16, QChar(u'0')).arg(sub, 2, 16, QChar(u'0'));
+        if (error)
+            *error = QStringLiteral("no entry %1:%2").arg(index, 4, 16, QChar(u'0')).arg(sub, 2, 16, QChar(u'0'));
         return false;
     }
     const od::TypeClass tc = od::typeClass(e->dataType);
@@ -259,7 +261,8 @@ uint32_t VirtualDevice::writeFromSdo(uint16_t index, uint8_t sub, const QByteArr
         // P3-01: only digit Z changes when written over CAN (extract-delta §2.4, note 1).
         const int64_t old = value(0x2301, 0).value_or(od::Value{}).toInt64().value_or(0);
         const int64_t z = v.toInt64().value_or(0) & 0x0F00;
-        v = od::isSigned(e->dataType) ? od::Value::signedInt((old & ~0x0F00) | z) : od::Value::unsignedInt(uint64_t((old & ~0x0F00) | z));
+        v = od::isSigned(e->dataType) ? od::Value::signedInt((old & ~0x0F00) | z)
+                                      : od::Value::unsignedInt(uint64_t((old & ~0x0F00) | z));
     }
     values_[key(index, sub)] = v;
     afterWrite(index, sub);
@@ -295,7 +298,8 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
     }
     if (index == 0x1011 && sub > 0) {
         if (u != kLoadSignature) return abortcode::CannotStore;
-        std::erase_if(stored_, [sub](const auto& kv) { return inStoreGroup(sub, static_cast<uint16_t>(kv.first >> 8)); });
+        std::erase_if(stored_,
+                      [sub](const auto& kv) { return inStoreGroup(sub, static_cast<uint16_t>(kv.first >> 8)); });
         return 0;  // takes effect at the next reset
     }
     if (index == 0x1016 && sub > 0) return heartbeat_->checkWrite(sub, static_cast<uint32_t>(u));
@@ -328,17 +332,23 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
         if (u != 0) return pdo_->checkMappingEntry(tpdo, static_cast<uint32_t>(u));
     }
     if (personality_.controlModeIndex && index >= 0x6000 && index <= 0x9FFF && personality_.cia402) {
-        const int64_t mode = value(personality_.controlModeIndex, personality_.controlModeSub).value_or(od::Value{}).toInt64().value_or(0);
+        const int64_t mode = value(personality_.controlModeIndex, personality_.controlModeSub)
+                                 .value_or(od::Value{})
+                                 .toInt64()
+                                 .value_or(0);
         // CiA 402 objects act only in the vendor's CANopen control mode (AIMOTOR H02-00 = 8,
         // Delta P1-01 = 0Ch): the drive is under local control otherwise.
         if (mode != personality_.controlModeValue && (index & 0x7FF) == 0x040) return abortcode::LocalControl;
     }
-    if (personality_.nodeIdIndex == index && personality_.nodeIdSub == sub && (u < 1 || u > 127)) return abortcode::InvalidValue;
+    if (personality_.nodeIdIndex == index && personality_.nodeIdSub == sub && (u < 1 || u > 127))
+        return abortcode::InvalidValue;
     if (index >= 0x6000 && index <= 0x9FFF) {
         // The drive's own checks (modes of operation, homing method).
         const auto axis = static_cast<size_t>((index - 0x6000) / 0x800);
         if (axis < drives_.size())
-            if (const uint32_t code = drives_[axis]->checkWrite(static_cast<uint16_t>(index - axis * 0x800), sub, v.toInt64().value_or(0))) return code;
+            if (const uint32_t code = drives_[axis]->checkWrite(static_cast<uint16_t>(index - axis * 0x800), sub,
+                                                                v.toInt64().value_or(0)))
+                return code;
     }
     if (personality_.vendor == Vendor::Delta && index == 0x2301 && ((u >> 8) & 0xF) > 4) return abortcode::ValueTooHigh;
     return 0;
@@ -347,7 +357,8 @@ uint32_t VirtualDevice::checkSpecialWrite(uint16_t index, uint8_t sub, const od:
 void VirtualDevice::afterWrite(uint16_t index, uint8_t sub) {
     if (index >= 0x1400 && index <= 0x1BFF) pdo_->invalidate();
     if (index == 0x1005) pdo_->invalidate();
-    if (index == 0x1017) nextHeartbeatNs_ = nowNs_ + int64_t(value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0)) * 1'000'000;
+    if (index == 0x1017)
+        nextHeartbeatNs_ = nowNs_ + int64_t(value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0)) * 1'000'000;
     if (index == 0x1003 && sub == 0)
         for (uint8_t s = 1; s < 255; ++s) {
             auto* slot = valueSlot(0x1003, s);
@@ -501,7 +512,8 @@ void VirtualDevice::onFrame(const CanFrame& f, int64_t nowNs) {
         if (f.isRemote()) handleGuarding(nowNs);
         return;
     }
-    if (f.id > 0x700 && f.id < 0x780 && !f.isRemote()) heartbeat_->onHeartbeat(static_cast<uint8_t>(f.id - 0x700), nowNs);
+    if (f.id > 0x700 && f.id < 0x780 && !f.isRemote())
+        heartbeat_->onHeartbeat(static_cast<uint8_t>(f.id - 0x700), nowNs);
     if (nmtState_ == NmtState::Stopped) return;
     if (f.id == 0x600u + nodeId_ && !f.isRemote()) {
         ++sdoRequests_;
@@ -543,27 +555,33 @@ void VirtualDevice::tick(int64_t nowNs) {
     pdo_->tick(nowNs, nmtState_ == NmtState::Operational);
 }
 
-void VirtualDevice::sendHeartbeat() { transmit(CanFrame::classic(0x700u + nodeId_, {static_cast<uint8_t>(nmtState_)})); }
+void VirtualDevice::sendHeartbeat() {
+    transmit(CanFrame::classic(0x700u + nodeId_, {static_cast<uint8_t>(nmtState_)}));
+}
 
 void VirtualDevice::sendEmcy(uint16_t code, const uint8_t vendor[5]) {
     // EMCY is produced in PRE-OPERATIONAL and OPERATIONAL (CiA 301 §7.3.2, Table 60).
     if (nmtState_ != NmtState::Operational && nmtState_ != NmtState::PreOperational) return;
-    const uint64_t cob = value(0x1014, 0).value_or(od::Value::unsignedInt(0x80u + nodeId_)).toUInt64().value_or(0x80u + nodeId_);
+    const uint64_t cob =
+        value(0x1014, 0).value_or(od::Value::unsignedInt(0x80u + nodeId_)).toUInt64().value_or(0x80u + nodeId_);
     if (cob & 0x80000000u) return;  // EMCY not valid
     const uint8_t reg = static_cast<uint8_t>(value(0x1001, 0).value_or(od::Value{}).toUInt64().value_or(0));
-    CanFrame f = CanFrame::classic(static_cast<uint32_t>(cob & 0x7FF), {static_cast<uint8_t>(code), static_cast<uint8_t>(code >> 8), reg,
-                                                                        vendor[0], vendor[1], vendor[2], vendor[3], vendor[4]});
+    CanFrame f = CanFrame::classic(static_cast<uint32_t>(cob & 0x7FF),
+                                   {static_cast<uint8_t>(code), static_cast<uint8_t>(code >> 8), reg, vendor[0],
+                                    vendor[1], vendor[2], vendor[3], vendor[4]});
     transmit(f);
 }
 
 void VirtualDevice::recordError(uint16_t code, uint16_t vendor) {
-    if (auto* reg = valueSlot(0x1001, 0)) *reg = od::Value::unsignedInt(reg->toUInt64().value_or(0) | errorRegisterFor(code));
+    if (auto* reg = valueSlot(0x1001, 0))
+        *reg = od::Value::unsignedInt(reg->toUInt64().value_or(0) | errorRegisterFor(code));
     // Pre-defined error field 1003h: newest at sub 1, (vendor code << 16) | error code.
     if (auto* count = valueSlot(0x1003, 0)) {
         int max = 0;
         while (max < 254 && valueSlot(0x1003, static_cast<uint8_t>(max + 1))) ++max;
         if (max == 0) return;
-        for (int s = max; s > 1; --s) *valueSlot(0x1003, static_cast<uint8_t>(s)) = *valueSlot(0x1003, static_cast<uint8_t>(s - 1));
+        for (int s = max; s > 1; --s)
+            *valueSlot(0x1003, static_cast<uint8_t>(s)) = *valueSlot(0x1003, static_cast<uint8_t>(s - 1));
         *valueSlot(0x1003, 1) = od::Value::unsignedInt((uint32_t(vendor) << 16) | code);
         *count = od::Value::unsignedInt(std::min<uint64_t>(count->toUInt64().value_or(0) + 1, uint64_t(max)));
     }
@@ -583,7 +601,8 @@ void VirtualDevice::injectDriveFault(DriveFault fault) {
         vendor[1] = static_cast<uint8_t>(fault.alarmNumber >> 8);
     }
     recordError(fault.emcyCode, fault.alarmNumber);
-    if (auto* e = valueSlot(static_cast<uint16_t>(0x603F + axis * 0x800), 0)) *e = od::Value::unsignedInt(fault.emcyCode);
+    if (auto* e = valueSlot(static_cast<uint16_t>(0x603F + axis * 0x800), 0))
+        *e = od::Value::unsignedInt(fault.emcyCode);
     if (axis < axisCount()) drives_[axis]->raiseFault(fault.emcyCode);
     if (axis < static_cast<int>(motors_.size())) motors_[axis]->raiseAlarm(static_cast<uint8_t>(fault.alarmNumber));
     sendEmcy(fault.emcyCode, vendor);

@@ -4,8 +4,8 @@
 #include "core/canopen/Nmt.h"
 #include "core/od/ObjectDictionary.h"
 #include "core/od/Value.h"
-#include "core/sim/Personality.h"
 #include "core/sim/LssFaults.h"
+#include "core/sim/Personality.h"
 #include "core/sim/SdoFaults.h"
 #include "core/sim/SimNode.h"
 

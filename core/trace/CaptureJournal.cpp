@@ -6,8 +6,8 @@
 #include <QCoreApplication>
 #include <QFile>
 
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 
 #include <spdlog/spdlog.h>
@@ -52,7 +52,8 @@ bool CaptureJournal::open(const QString& path, const QStringList& busNames) {
     gaps_.clear();
     flushRequests_ = flushesDone_ = 0;
     QFile sidecar(sidecarOf(path));
-    if (!sidecar.open(QIODevice::WriteOnly | QIODevice::Truncate) || sidecar.write(QByteArray::number(QCoreApplication::applicationPid()) + '\n') < 0) {
+    if (!sidecar.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+        sidecar.write(QByteArray::number(QCoreApplication::applicationPid()) + '\n') < 0) {
         error_ = QStringLiteral("cannot write %1: %2").arg(sidecar.fileName(), sidecar.errorString());
         return false;
     }
@@ -60,7 +61,8 @@ bool CaptureJournal::open(const QString& path, const QStringList& busNames) {
     auto* w = new Writer;
     w->file.setFileName(path);
     // Unbuffered: every write reaches the kernel at once, so its failure is seen at once.
-    if (!w->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered) || !w->pcapng.open(&w->file)) {
+    if (!w->file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered) ||
+        !w->pcapng.open(&w->file)) {
         error_ = QStringLiteral("cannot write %1: %2").arg(path, w->file.errorString());
         delete w;
         QFile::remove(sidecarOf(path));
@@ -151,7 +153,8 @@ bool CaptureJournal::writeBatch(const std::vector<CanFrame>& batch) {
     }
     // The header blocks written so far, for the pager to read a chunk alone.
     const auto& blocks = out.headerBlocks();
-    for (size_t i = pager_->headerBlocks(); i < blocks.size(); ++i) pager_->addHeaderBlock(blocks[i].beforeFrame, blocks[i].bytes, blocks[i].bus);
+    for (size_t i = pager_->headerBlocks(); i < blocks.size(); ++i)
+        pager_->addHeaderBlock(blocks[i].beforeFrame, blocks[i].bytes, blocks[i].bus);
     return true;
 }
 
@@ -160,7 +163,8 @@ void CaptureJournal::run() {
     auto lastSync = Clock::now();
     std::unique_lock lock(mutex_);
     for (;;) {
-        wake_.wait_for(lock, std::chrono::milliseconds(kWriteIntervalMs), [&] { return stop_ || flushRequests_ > flushesDone_; });
+        wake_.wait_for(lock, std::chrono::milliseconds(kWriteIntervalMs),
+                       [&] { return stop_ || flushRequests_ > flushesDone_; });
         const bool stopping = stop_;
         const uint64_t ticket = flushRequests_;
         batch.clear();
@@ -181,7 +185,8 @@ void CaptureJournal::run() {
             }
             const auto now = Clock::now();
             // Synced to the disk at least once a second (a power loss keeps all but the last second).
-            if (ok && (stopping || ticket > flushesDone_ || now - lastSync >= std::chrono::milliseconds(kSyncIntervalMs - kWriteIntervalMs))) {
+            if (ok && (stopping || ticket > flushesDone_ ||
+                       now - lastSync >= std::chrono::milliseconds(kSyncIntervalMs - kWriteIntervalMs))) {
                 ok = syncToDisk(writer_->file.handle(), &why);
                 lastSync = now;
             }

@@ -41,7 +41,9 @@ QString newJournalPath(const QString& folder, const QString& source, const QDate
     tag.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9._-]+")), QStringLiteral("_"));
     tag = tag.left(40);
     while (tag.endsWith(u'_')) tag.chop(1);
-    const QString base = QStringLiteral("capture-%1%2").arg(now.toString(QStringLiteral("yyyyMMdd-HHmmss")), tag.isEmpty() ? QString() : u'-' + tag);
+    const QString base =
+        QStringLiteral("capture-%1%2")
+            .arg(now.toString(QStringLiteral("yyyyMMdd-HHmmss")), tag.isEmpty() ? QString() : u'-' + tag);
     QString path = QDir(folder).filePath(base + QStringLiteral(".pcapng"));
     for (int i = 2; QFileInfo::exists(path) || QFileInfo::exists(CaptureJournal::sidecarOf(path)); ++i)
         path = QDir(folder).filePath(QStringLiteral("%1-%2.pcapng").arg(base).arg(i));
@@ -52,7 +54,8 @@ std::vector<Journal> list(const QString& folder) {
     std::vector<Journal> out;
     const QFileInfoList files = QDir(folder).entryInfoList({QStringLiteral("*.pcapng")}, QDir::Files);
     for (const QFileInfo& fi : files)
-        out.push_back({fi.absoluteFilePath(), fi.size(), fi.lastModified(), QFileInfo::exists(CaptureJournal::sidecarOf(fi.absoluteFilePath()))});
+        out.push_back({fi.absoluteFilePath(), fi.size(), fi.lastModified(),
+                       QFileInfo::exists(CaptureJournal::sidecarOf(fi.absoluteFilePath()))});
     std::sort(out.begin(), out.end(), [](const Journal& a, const Journal& b) { return a.modified < b.modified; });
     return out;
 }
@@ -79,7 +82,9 @@ QStringList cleanup(const QString& folder, const CleanupPolicy& policy, const QS
                     const std::function<bool(const QString&)>& keepNow) {
     QStringList removed;
     std::vector<Journal> all = list(folder);
-    const auto kept = [&](const Journal& j) { return j.hasSidecar || keep.contains(j.path) || (keepNow && keepNow(j.path)); };
+    const auto kept = [&](const Journal& j) {
+        return j.hasSidecar || keep.contains(j.path) || (keepNow && keepNow(j.path));
+    };
     const QDateTime oldest = now.addDays(-policy.maxAgeDays);
     qint64 total = 0;
     std::vector<Journal> left;

@@ -32,7 +32,8 @@ struct CleanupPolicy {
 QString defaultFolder();
 // A new journal's path in `folder` (created when missing): capture-YYYYMMDD-HHMMSS-SOURCE.pcapng,
 // never an existing name. Empty when the folder cannot be made.
-QString newJournalPath(const QString& folder, const QString& source, const QDateTime& now = QDateTime::currentDateTime());
+QString newJournalPath(const QString& folder, const QString& source,
+                       const QDateTime& now = QDateTime::currentDateTime());
 // The journals in `folder`, oldest first.
 std::vector<Journal> list(const QString& folder);
 // Journals whose writer did not close them (sidecar left, its process gone), newest first;

@@ -34,12 +34,14 @@ void JournalPager::setWritten(uint64_t frames, int64_t bytes) {
     frames_.store(frames, std::memory_order_release);
 }
 
-std::string JournalPager::spillDirectory() const { return QFile::encodeName(QFileInfo(path_).absolutePath()).toStdString(); }
+std::string JournalPager::spillDirectory() const {
+    return QFile::encodeName(QFileInfo(path_).absolutePath()).toStdString();
+}
 
 // The reader numbers buses by the interface blocks in file order (their names differ), so the
 // reader's bus i is the bus of the i-th interface block.
-bool JournalPager::loadRange(QByteArray data, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface, std::vector<CanFrame>& out,
-                             std::string* why) const {
+bool JournalPager::loadRange(QByteArray data, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface,
+                             std::vector<CanFrame>& out, std::string* why) const {
     QBuffer buffer(&data);
     buffer.open(QIODevice::ReadOnly);
     logio::PcapReader reader;

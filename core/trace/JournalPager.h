@@ -41,14 +41,14 @@ public:
     std::string spillDirectory() const override;
 
 private:
-    bool loadRange(QByteArray bytes, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface, std::vector<CanFrame>& out,
-                   std::string* why) const;
+    bool loadRange(QByteArray bytes, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface,
+                   std::vector<CanFrame>& out, std::string* why) const;
 
     const QString path_;
     mutable std::mutex mutex_;
-    std::vector<int64_t> starts_{0};  // byte offset of frame c * kChunkSize; starts_[0] = 0
+    std::vector<int64_t> starts_{0};                       // byte offset of frame c * kChunkSize; starts_[0] = 0
     std::vector<std::pair<uint64_t, QByteArray>> header_;  // header blocks, by the frame they precede
-    std::vector<uint8_t> busOfInterface_;                   // the bus of each interface block, in file order
+    std::vector<uint8_t> busOfInterface_;                  // the bus of each interface block, in file order
     int64_t bytes_ = 0;
     std::atomic<uint64_t> frames_{0};
 };

@@ -12,7 +12,8 @@ namespace {
 constexpr size_t kFanout = 16;
 constexpr int kLevels = 4;
 constexpr size_t kBlock[kLevels] = {16, 256, 4096, 65536};
-static_assert(kBlock[0] == kFanout && kBlock[1] == kBlock[0] * kFanout && kBlock[2] == kBlock[1] * kFanout && kBlock[3] == kBlock[2] * kFanout);
+static_assert(kBlock[0] == kFanout && kBlock[1] == kBlock[0] * kFanout && kBlock[2] == kBlock[1] * kFanout &&
+              kBlock[3] == kBlock[2] * kFanout);
 static_assert(kBlock[kLevels - 1] == SignalBuffer::kChunkSize);
 constexpr size_t kTimeBlock = 64;  // samples per entry of a chunk's search index
 // Edge index levels (envelope()): blocks of 16 to 4096 samples, fanout 2, so that some level
@@ -46,15 +47,18 @@ struct SignalBuffer::Chunk {
     // extremes (16 bytes a block), so a pixel column's edge touches half the memory.
     std::vector<MinMax> level[kLevels];
     std::vector<Bits> bits[kLevels];
-    std::vector<int64_t> blockTime;  // time of each 64-block's first sample: searches touch few cache lines
+    std::vector<int64_t> blockTime;       // time of each 64-block's first sample: searches touch few cache lines
     std::vector<Edge> edge[kEdgeLevels];  // edge[k][j]: samples [j * kEdgeBlock[k], (j + 1) * kEdgeBlock[k])
 
     size_t size() const { return t.size(); }
     size_t lowerBound(int64_t time) const {
-        const auto b = static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
+        const auto b =
+            static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
         const size_t from = b > 0 ? (b - 1) * kTimeBlock : 0;
         const size_t to = std::min(t.size(), b * kTimeBlock);
-        return static_cast<size_t>(std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(from), t.begin() + static_cast<std::ptrdiff_t>(to), time) - t.begin());
+        return static_cast<size_t>(std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(from),
+                                                    t.begin() + static_cast<std::ptrdiff_t>(to), time) -
+                                   t.begin());
     }
     bool full() const { return t.size() >= kChunkSize; }
     void push(const SignalSample& s) {
@@ -90,7 +94,8 @@ struct SignalBuffer::Chunk {
     }
 };
 
-SignalBuffer::SignalBuffer(size_t capacity) : capacityChunks_(std::max<size_t>(1, (capacity + kChunkSize - 1) / kChunkSize)) {}
+SignalBuffer::SignalBuffer(size_t capacity)
+    : capacityChunks_(std::max<size_t>(1, (capacity + kChunkSize - 1) / kChunkSize)) {}
 SignalBuffer::~SignalBuffer() = default;
 
 void SignalBuffer::append(std::span<const SignalSample> samples) {
@@ -150,7 +155,8 @@ const SignalSample SignalBuffer::sampleLocked(size_t r) const {
 
 size_t SignalBuffer::lowerBoundLocked(int64_t timeNs) const {
     // The last chunk starting before t holds the answer (or it is the next chunk's first).
-    const auto k = static_cast<size_t>(std::lower_bound(chunkStart_.begin(), chunkStart_.end(), timeNs) - chunkStart_.begin());
+    const auto k =
+        static_cast<size_t>(std::lower_bound(chunkStart_.begin(), chunkStart_.end(), timeNs) - chunkStart_.begin());
     if (k == 0) return 0;
     return (k - 1) * kChunkSize + chunks_[k - 1]->lowerBound(timeNs);
 }
@@ -161,7 +167,7 @@ size_t SignalBuffer::lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t fr
     auto time = [this](size_t r) { return chunks_[r / kChunkSize]->t[r % kChunkSize]; };
     if (from >= n) return from;
     hint = std::clamp(hint, from, n);
-    size_t lo = from, hi = n;  // the answer lies in [lo, hi]
+    size_t lo = from, hi = n;               // the answer lies in [lo, hi]
     if (hint < n && time(hint) < timeNs) {  // later: probe hint + 1, + 2, + 4, ...
         size_t below = hint;
         for (size_t step = 1;; step *= 2) {
@@ -325,7 +331,8 @@ std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buck
     return out;
 }
 
-void SignalBuffer::decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit, std::vector<SignalPoint>& out) const {
+void SignalBuffer::decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit,
+                                  std::vector<SignalPoint>& out) const {
     const size_t n = countLocked();
     buckets = std::max(1, buckets);
     auto valueOf = [bit](double v) { return bit >= 0 && bit < 64 ? double((bitsOf(v) >> bit) & 1) : v; };
@@ -333,8 +340,8 @@ void SignalBuffer::decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1
         const SignalSample s = sampleLocked(r);
         out.push_back({s.timeNs, valueOf(s.value)});
     };
-    const size_t lo = from > 0 ? from - 1 : from;     // one before the window
-    const size_t hi = to < n ? to + 1 : to;           // one after it
+    const size_t lo = from > 0 ? from - 1 : from;  // one before the window
+    const size_t hi = to < n ? to + 1 : to;        // one after it
     if (to - from <= size_t(2) * size_t(buckets)) {
         out.reserve(out.size() + (hi - lo));
         for (size_t r = lo; r < hi; ++r) push(r);

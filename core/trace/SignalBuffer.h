@@ -104,20 +104,22 @@ private:
     // Global sample indexes: first() is base_, the newest base_ + size - 1.
     size_t countLocked() const;
     size_t lowerBoundLocked(int64_t timeNs) const;  // first index with time >= t
-    size_t lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from, size_t n) const;  // same in [from, n], galloping from `hint`
+    size_t lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from,
+                                size_t n) const;   // same in [from, n], galloping from `hint`
     SignalPoint pointLocked(size_t global) const;  // time and value only (no frame)
     const SignalSample sampleLocked(size_t global) const;
     template <bool WithBits>
-    Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty; AND/OR only WithBits
+    Summary reduceLocked(size_t from, size_t to) const;     // [from, to), non-empty; AND/OR only WithBits
     void prefetchLocked(size_t global, size_t span) const;  // hints the reads of a column edge there
     std::vector<SignalSample> samplesLocked(size_t from, size_t to) const;
-    void decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit, std::vector<SignalPoint>& out) const;
+    void decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit,
+                        std::vector<SignalPoint>& out) const;
 
     size_t capacityChunks_;
     mutable std::mutex mutex_;
     std::deque<std::unique_ptr<Chunk>> chunks_;
     std::vector<int64_t> chunkStart_;  // first time of each chunk (searched without touching them)
-    uint64_t base_ = 0;  // global index of chunks_.front()'s first sample
+    uint64_t base_ = 0;                // global index of chunks_.front()'s first sample
     std::atomic<uint64_t> appended_{0};
 };
 

@@ -16,7 +16,8 @@
 namespace coscope {
 
 int64_t TraceStore::nowMs() {
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 // Frame numbers of one key, in blocks of 4096; the block table grows by copying into a larger
@@ -53,7 +54,8 @@ public:
                 auto* bigger = new Table;
                 bigger->capacity = t ? t->capacity * 2 : 4;
                 bigger->chunks = std::make_unique<std::atomic<FrameNo*>[]>(bigger->capacity);
-                for (size_t i = 0; t && i < t->capacity; ++i) bigger->chunks[i].store(t->chunks[i].load(std::memory_order_relaxed), std::memory_order_relaxed);
+                for (size_t i = 0; t && i < t->capacity; ++i)
+                    bigger->chunks[i].store(t->chunks[i].load(std::memory_order_relaxed), std::memory_order_relaxed);
                 added += static_cast<std::ptrdiff_t>(bigger->capacity * sizeof(FrameNo*));
                 if (t) retired_.push_back(t);
                 t = bigger;
@@ -128,10 +130,8 @@ size_t TraceStore::Chunk::bytes() const {
 }
 
 TraceStore::TraceStore()
-    : chunks_(new std::atomic<Chunk*>[kMaxChunks]),
-      lastUse_(new std::atomic<uint32_t>[kMaxChunks]),
-      pins_(new std::atomic<uint32_t>[kMaxChunks]),
-      stdIndex_(new std::atomic<Index*>[2048]) {
+    : chunks_(new std::atomic<Chunk*>[kMaxChunks]), lastUse_(new std::atomic<uint32_t>[kMaxChunks]),
+      pins_(new std::atomic<uint32_t>[kMaxChunks]), stdIndex_(new std::atomic<Index*>[2048]) {
     for (uint32_t i = 0; i < kMaxChunks; ++i) {
         chunks_[i].store(nullptr, std::memory_order_relaxed);
         lastUse_[i].store(0, std::memory_order_relaxed);
@@ -237,7 +237,8 @@ FrameNo TraceStore::append(const CanFrame& f) {
 void TraceStore::append(std::span<const CanFrame> frames) {
     while (!frames.empty()) {
         const size_t n = size_.load(std::memory_order_relaxed);
-        if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks) throw std::length_error("trace store is full (2^32 frames)");
+        if (n >= static_cast<size_t>(kChunkSize) * kMaxChunks)
+            throw std::length_error("trace store is full (2^32 frames)");
         const uint32_t c = static_cast<uint32_t>(n >> kChunkBits);
         const size_t first = n & (kChunkSize - 1);
         const size_t count = std::min<size_t>(kChunkSize - first, frames.size());
@@ -271,7 +272,8 @@ void TraceStore::append(std::span<const CanFrame> frames) {
         std::ptrdiff_t added = 0;
         for (size_t i = 0; i < count; ++i)
             added += indexForWrite(keyOf(chunk->records[first + i]))->push(static_cast<FrameNo>(n + i), *this);
-        if (added) indexBytes_.fetch_add(static_cast<size_t>(added), std::memory_order_relaxed);  // wraps down when negative
+        if (added)
+            indexBytes_.fetch_add(static_cast<size_t>(added), std::memory_order_relaxed);  // wraps down when negative
         frames = frames.subspan(count);
     }
 }

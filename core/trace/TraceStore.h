@@ -137,7 +137,9 @@ public:
     // Kept in frame order; gaps before the same frame in the order they were added.
     void addGap(const Gap& gap) {
         std::lock_guard lock(gapMutex_);
-        gaps_.insert(std::upper_bound(gaps_.begin(), gaps_.end(), gap.firstFrame, [](FrameNo n, const Gap& g) { return n < g.firstFrame; }), gap);
+        gaps_.insert(std::upper_bound(gaps_.begin(), gaps_.end(), gap.firstFrame,
+                                      [](FrameNo n, const Gap& g) { return n < g.firstFrame; }),
+                     gap);
     }
     std::vector<Gap> gaps() const {
         std::lock_guard lock(gapMutex_);
@@ -147,12 +149,13 @@ public:
     // before its first frame came). A binary search: views ask for every row they paint.
     std::vector<Gap> gapsAt(FrameNo n) const {
         std::lock_guard lock(gapMutex_);
-        const auto [b, e] = std::equal_range(gaps_.begin(), gaps_.end(), Gap{n, 0, 0}, [](const Gap& x, const Gap& y) { return x.firstFrame < y.firstFrame; });
+        const auto [b, e] = std::equal_range(gaps_.begin(), gaps_.end(), Gap{n, 0, 0},
+                                             [](const Gap& x, const Gap& y) { return x.firstFrame < y.firstFrame; });
         return {b, e};
     }
 
 private:
-    static int64_t nowMs();  // steady clock, for the retired index tables' age
+    static int64_t nowMs();                       // steady clock, for the retired index tables' age
     static constexpr uint32_t kFdBlockBits = 20;  // FD payloads: 1 MiB blocks per chunk
     static constexpr uint32_t kFdBlocks = 4;      // 65536 frames x 64 bytes
     struct Chunk {
@@ -202,8 +205,8 @@ private:
     mutable std::atomic<uint32_t> clock_{1};
     std::unique_ptr<std::atomic<uint32_t>[]> lastUse_;
     std::unique_ptr<std::atomic<uint32_t>[]> pins_;
-    mutable std::mutex loadMutex_;  // one page-in at a time (disk reads outside pageMutex_)
-    mutable std::mutex pageMutex_;  // eviction, installation, retired_
+    mutable std::mutex loadMutex_;                             // one page-in at a time (disk reads outside pageMutex_)
+    mutable std::mutex pageMutex_;                             // eviction, installation, retired_
     mutable std::vector<std::pair<Chunk*, int64_t>> retired_;  // chunk, steady ms when evicted
     mutable std::atomic<uint64_t> pageIns_{0};
     mutable std::atomic<uint64_t> pageErrors_{0};
@@ -224,8 +227,8 @@ private:
     std::unique_ptr<std::atomic<Index*>[]> stdIndex_;
     std::unordered_map<uint32_t, Index*> writerOther_;  // writer's private view
     mutable std::shared_mutex otherMutex_;
-    std::unordered_map<uint32_t, Index*> other_;       // readers' view
-    std::vector<std::unique_ptr<Index>> indexes_;      // owner (writer only)
+    std::unordered_map<uint32_t, Index*> other_;   // readers' view
+    std::vector<std::unique_ptr<Index>> indexes_;  // owner (writer only)
     std::atomic<size_t> indexBytes_{0};
 
     mutable std::mutex gapMutex_;

@@ -12,7 +12,6 @@
 
 namespace coscope {
 
-
 void TraceStore::setPager(std::shared_ptr<TracePager> pager) {
     std::lock_guard lock(pageMutex_);
     pager_ = std::move(pager);
@@ -33,11 +32,13 @@ size_t TraceStore::residentChunks() const {
 }
 
 void TraceStore::pin(FrameNo first, FrameNo last) const {
-    for (uint32_t c = first >> kChunkBits; c <= (last >> kChunkBits); ++c) pins_[c].fetch_add(1, std::memory_order_relaxed);
+    for (uint32_t c = first >> kChunkBits; c <= (last >> kChunkBits); ++c)
+        pins_[c].fetch_add(1, std::memory_order_relaxed);
 }
 
 void TraceStore::unpin(FrameNo first, FrameNo last) const {
-    for (uint32_t c = first >> kChunkBits; c <= (last >> kChunkBits); ++c) pins_[c].fetch_sub(1, std::memory_order_relaxed);
+    for (uint32_t c = first >> kChunkBits; c <= (last >> kChunkBits); ++c)
+        pins_[c].fetch_sub(1, std::memory_order_relaxed);
 }
 
 bool TraceStore::isResident(FrameNo n) const {
@@ -144,7 +145,8 @@ TraceStore::Chunk* TraceStore::pageIn(uint32_t c) const {
         }
     }
     pageIns_.fetch_add(1, std::memory_order_relaxed);
-    if (std::this_thread::get_id() == watched_.load(std::memory_order_relaxed)) watchedPageIns_.fetch_add(1, std::memory_order_relaxed);
+    if (std::this_thread::get_id() == watched_.load(std::memory_order_relaxed))
+        watchedPageIns_.fetch_add(1, std::memory_order_relaxed);
     std::lock_guard lock(pageMutex_);
     lastUse_[c].store(clock_.fetch_add(2, std::memory_order_relaxed) + 1, std::memory_order_relaxed);
     residentBytes_.fetch_add(bytes, std::memory_order_relaxed);

@@ -37,7 +37,8 @@ const QString& tracePath() {
     static const QString path = [] {
         const QString p = QDir::temp().filePath(QStringLiteral("coscope-bench-canopen-1m.pcapng"));
         QString error;
-        if (!testgen::writeCanopenTracePcapng(p, kFrames, &error)) std::fprintf(stderr, "cannot write %s: %s\n", qPrintable(p), qPrintable(error));
+        if (!testgen::writeCanopenTracePcapng(p, kFrames, &error))
+            std::fprintf(stderr, "cannot write %s: %s\n", qPrintable(p), qPrintable(error));
         // On the disk before any timing: the kernel writing the new file back in the middle of
         // a timed run would take CPU from it (2 cores) and decide the ratio.
         if (const int fd = ::open(QFile::encodeName(p).constData(), O_RDONLY); fd >= 0) {
@@ -69,7 +70,8 @@ struct Rounds {
     std::vector<double> tshark, decode, stats;
 };
 const QStringList& decodeArgs() {
-    static const QStringList args{QStringLiteral("decode"), tracePath(), QStringLiteral("--format"), QStringLiteral("text")};
+    static const QStringList args{QStringLiteral("decode"), tracePath(), QStringLiteral("--format"),
+                                  QStringLiteral("text")};
     return args;
 }
 const QStringList& statsArgs() {
@@ -82,7 +84,10 @@ const Rounds& rounds() {
         const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
         const QString cli = QStringLiteral(COSCOPE_CLI_PATH);
         for (int i = 0; i < kRounds; ++i) {
-            m.tshark.push_back(tshark.isEmpty() ? -1.0 : timeProcess(tshark, {QStringLiteral("-r"), tracePath(), QStringLiteral("-d"), QStringLiteral("can.subdissector,canopen")}));
+            m.tshark.push_back(tshark.isEmpty()
+                                   ? -1.0
+                                   : timeProcess(tshark, {QStringLiteral("-r"), tracePath(), QStringLiteral("-d"),
+                                                          QStringLiteral("can.subdissector,canopen")}));
             m.decode.push_back(timeProcess(cli, decodeArgs()));
             m.stats.push_back(timeProcess(cli, statsArgs()));
         }
@@ -101,7 +106,8 @@ double best(const std::vector<double>& runs) {
     return b;
 }
 
-void report(benchmark::State& state, const char* name, const QStringList& args, const std::vector<double>& runs, double budget) {
+void report(benchmark::State& state, const char* name, const QStringList& args, const std::vector<double>& runs,
+            double budget) {
     const double peer = best(rounds().tshark);
     const double last = best(runs);
     if (last < 0) {
@@ -115,7 +121,8 @@ void report(benchmark::State& state, const char* name, const QStringList& args, 
     if (peer > 0) {
         state.counters["tshark_seconds"] = peer;
         state.counters["ratio_vs_tshark"] = peer / last;
-        std::printf("%s: coscope %.3f s, tshark %.3f s, ratio %.1fx (budget %.0fx; best of %d interleaved runs each)\n", qPrintable(args.join(u' ')), last, peer, peer / last, budget, kRounds);
+        std::printf("%s: coscope %.3f s, tshark %.3f s, ratio %.1fx (budget %.0fx; best of %d interleaved runs each)\n",
+                    qPrintable(args.join(u' ')), last, peer, peer / last, budget, kRounds);
         std::printf("BENCH %s %.3f s %.3f tshark %.1f (budget %.0fx)\n", name, last, peer, peer / last, budget);
     } else {
         std::printf("%s: coscope %.3f s (tshark not found: no ratio)\n", qPrintable(args.join(u' ')), last);

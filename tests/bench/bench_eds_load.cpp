@@ -9,19 +9,26 @@ namespace {
 
 QByteArray generateEds(int objects) {
     QByteArray out;
-    out += "[FileInfo]\r\nFileName=bench.eds\r\nEDSVersion=4.0\r\n\r\n[DeviceInfo]\r\nVendorName=Bench\r\nVendorNumber=0x1\r\nNrOfRXPDO=4\r\nNrOfTXPDO=4\r\n\r\n";
+    out +=
+        "[FileInfo]\r\nFileName=bench.eds\r\nEDSVersion=4.0\r\n\r\n[DeviceInfo]\r\nVendorName=Bench\r\nVendorNumber="
+        "0x1\r\nNrOfRXPDO=4\r\nNrOfTXPDO=4\r\n\r\n";
     out += "[ManufacturerObjects]\r\nSupportedObjects=" + QByteArray::number(objects) + "\r\n";
-    for (int i = 0; i < objects; ++i) out += QByteArray::number(i + 1) + "=0x" + QByteArray::number(0x2000 + i, 16).toUpper() + "\r\n";
+    for (int i = 0; i < objects; ++i)
+        out += QByteArray::number(i + 1) + "=0x" + QByteArray::number(0x2000 + i, 16).toUpper() + "\r\n";
     for (int i = 0; i < objects; ++i) {
         const QByteArray idx = QByteArray::number(0x2000 + i, 16).toUpper();
         if (i % 10 == 0) {
             out += "\r\n[" + idx + "]\r\nParameterName=Record " + idx + "\r\nObjectType=0x9\r\nSubNumber=3\r\n";
             for (int s = 0; s < 3; ++s)
-                out += "\r\n[" + idx + "sub" + QByteArray::number(s) + "]\r\nParameterName=Field " + QByteArray::number(s) +
-                       "\r\nObjectType=0x7\r\nDataType=0x0007\r\nAccessType=rw\r\nDefaultValue=$NODEID+0x" + QByteArray::number(s * 0x100, 16) + "\r\nPDOMapping=1\r\n";
+                out += "\r\n[" + idx + "sub" + QByteArray::number(s) + "]\r\nParameterName=Field " +
+                       QByteArray::number(s) +
+                       "\r\nObjectType=0x7\r\nDataType=0x0007\r\nAccessType=rw\r\nDefaultValue=$NODEID+0x" +
+                       QByteArray::number(s * 0x100, 16) + "\r\nPDOMapping=1\r\n";
         } else {
-            out += "\r\n[" + idx + "]\r\nParameterName=Parameter " + idx + "\r\nObjectType=0x7\r\nDataType=0x0004\r\nAccessType=rww\r\n"
-                   "DefaultValue=-" + QByteArray::number(i) + "\r\nHighLimit=100000\r\nPDOMapping=1\r\n";
+            out += "\r\n[" + idx + "]\r\nParameterName=Parameter " + idx +
+                   "\r\nObjectType=0x7\r\nDataType=0x0004\r\nAccessType=rww\r\n"
+                   "DefaultValue=-" +
+                   QByteArray::number(i) + "\r\nHighLimit=100000\r\nPDOMapping=1\r\n";
         }
     }
     return out;

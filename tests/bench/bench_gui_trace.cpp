@@ -38,8 +38,8 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <memory>
 
 #include <unistd.h>
@@ -93,7 +93,8 @@ public:
             put(0x080, {uint8_t(ms_ % 240 + 1)});
             for (uint8_t node = 1; node <= 4; ++node) {
                 const auto pos = static_cast<uint32_t>(ms_ * 37 + node);
-                put(0x180 + node, {0x37, 0x06, uint8_t(pos), uint8_t(pos >> 8), uint8_t(pos >> 16), uint8_t(pos >> 24)});
+                put(0x180 + node,
+                    {0x37, 0x06, uint8_t(pos), uint8_t(pos >> 8), uint8_t(pos >> 16), uint8_t(pos >> 24)});
                 put(0x280 + node, {uint8_t(ms_), uint8_t(ms_ >> 8), 0, 0});
                 put(0x380 + node, {0x08, 0x00});
             }
@@ -130,7 +131,8 @@ private:
 std::shared_ptr<TraceStore> sharedStore() {
     static std::shared_ptr<TraceStore> store = [] {
         auto s = std::make_shared<TraceStore>();
-        Traffic().generate(kFrames, [&](const std::vector<CanFrame>& b) { s->append(std::span<const CanFrame>(b.data(), b.size())); });
+        Traffic().generate(
+            kFrames, [&](const std::vector<CanFrame>& b) { s->append(std::span<const CanFrame>(b.data(), b.size())); });
         return s;
     }();
     return store;
@@ -156,7 +158,8 @@ std::shared_ptr<TraceDecoder> sharedDecoder(double* buildSeconds = nullptr) {
 double fetchPage(const TraceModel& m, int first) {
     const auto t = Clock::now();
     for (int r = first; r < first + kPageRows; ++r)
-        for (int c = 0; c < TraceModel::ColumnCount; ++c) benchmark::DoNotOptimize(m.data(m.index(r, c), Qt::DisplayRole));
+        for (int c = 0; c < TraceModel::ColumnCount; ++c)
+            benchmark::DoNotOptimize(m.data(m.index(r, c), Qt::DisplayRole));
     return since(t);
 }
 
@@ -232,10 +235,9 @@ FilterRun filterWhileInteractive(const QString& query, bool group) {
                 const auto h = Clock::now();
                 const FrameNo upTo = job.scannedUpTo();
                 if (group)
-                    model.setView(filter->isEmpty() ? std::nullopt : std::optional<TraceFilter>(*filter), job.takeResult(), upTo, job.takeGroups(),
-                                  job.takeGroupedRows());
-                else
-                    model.setFilter(*filter, job.takeResult(), upTo);
+                    model.setView(filter->isEmpty() ? std::nullopt : std::optional<TraceFilter>(*filter),
+                                  job.takeResult(), upTo, job.takeGroups(), job.takeGroupedRows());
+                else model.setFilter(*filter, job.takeResult(), upTo);
                 view.scrollToBottom();
                 QApplication::processEvents();
                 run.handover = since(h);
@@ -265,11 +267,14 @@ void reportFilter(benchmark::State& state, const QString& query, bool group) {
     state.counters["frames_per_second"] = double(kFrames) / total;
     state.counters["max_gui_stall_seconds"] = stall;
     state.counters["budget_ratio"] = kStallBudget / stall;
-    std::printf("%s over 10 M frames: %.2f s, longest GUI-thread stall %.1f ms (budget %.0f ms)\n", qPrintable(query.isEmpty() ? QStringLiteral("(group SDO)") : query),
-                total, stall * 1e3, kStallBudget * 1e3);
+    std::printf("%s over 10 M frames: %.2f s, longest GUI-thread stall %.1f ms (budget %.0f ms)\n",
+                qPrintable(query.isEmpty() ? QStringLiteral("(group SDO)") : query), total, stall * 1e3,
+                kStallBudget * 1e3);
 }
 
-void BM_FilterNodeService(benchmark::State& state) { reportFilter(state, QStringLiteral("node:2 svc:tpdo1,sdo"), false); }
+void BM_FilterNodeService(benchmark::State& state) {
+    reportFilter(state, QStringLiteral("node:2 svc:tpdo1,sdo"), false);
+}
 BENCHMARK(BM_FilterNodeService)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_FilterText(benchmark::State& state) { reportFilter(state, QStringLiteral("node:3 Device"), false); }
@@ -289,9 +294,11 @@ QString logFile() {
         Traffic().generate(kFrames, [&](const std::vector<CanFrame>& batch) {
             for (const CanFrame& f : batch) {
                 char line[96];
-                int n = std::snprintf(line, sizeof line, "(%lld.%06lld) can0 %03X#", static_cast<long long>(f.timestampNs / 1'000'000'000),
+                int n = std::snprintf(line, sizeof line, "(%lld.%06lld) can0 %03X#",
+                                      static_cast<long long>(f.timestampNs / 1'000'000'000),
                                       static_cast<long long>(f.timestampNs / 1000 % 1'000'000), f.id);
-                for (int i = 0; i < f.len; ++i) n += std::snprintf(line + n, sizeof line - size_t(n), "%02X", f.data[size_t(i)]);
+                for (int i = 0; i < f.len; ++i)
+                    n += std::snprintf(line + n, sizeof line - size_t(n), "%02X", f.data[size_t(i)]);
                 line[n++] = '\n';
                 buf.insert(buf.end(), line, line + n);
             }
@@ -312,7 +319,8 @@ double cpuSeconds(clockid_t clock) {
 
 void BM_Open10M(benchmark::State& state) {
     const QString path = logFile();
-    double firstRows = 0, worst = 0, loadedWorst = 0, fullWorst = 0, healthWorst = 0, perFrame = 0, processCpu = 0, guiCpu = 0;
+    double firstRows = 0, worst = 0, loadedWorst = 0, fullWorst = 0, healthWorst = 0, perFrame = 0, processCpu = 0,
+           guiCpu = 0;
     for (auto _ : state) {
         const double rssBefore = residentBytes();
         Workspace ws;
@@ -378,7 +386,8 @@ void BM_Open10M(benchmark::State& state) {
         healthWorst = std::max(healthWorst, since(t0));
         processCpu = std::max(processCpu, cpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - process0);
         guiCpu = std::max(guiCpu, cpuSeconds(CLOCK_THREAD_CPUTIME_ID) - gui0);
-        if (perFrame == 0) perFrame = (residentBytes() - rssBefore) / double(kFrames);  // first open: later ones reuse freed heap
+        if (perFrame == 0)
+            perFrame = (residentBytes() - rssBefore) / double(kFrames);  // first open: later ones reuse freed heap
     }
     state.counters["seconds"] = worst;
     state.counters["budget_ratio"] = kOpenBudget / worst;
@@ -390,17 +399,29 @@ void BM_Open10M(benchmark::State& state) {
     state.counters["health_seconds"] = healthWorst;
     state.counters["process_cpu_seconds"] = processCpu;
     state.counters["gui_thread_cpu_seconds"] = guiCpu;
-    std::printf("open 10 M-frame candump -L: first rows after %.3f s (budget %.1f s, ratio %.2fx), load job done after %.3f s, fully indexed "
-                "after %.3f s (budget %.1f s, ratio %.2fx), %.1f resident bytes per frame\n",
-                worst, kOpenBudget, kOpenBudget / worst, loadedWorst, fullWorst, kFullBudget, kFullBudget / fullWorst, perFrame);
-    std::printf("open 10 M-frame candump -L: Health report complete after %.3f s (its analysis runs behind, at the lowest priority)\n", healthWorst);
-    std::printf("open 10 M-frame candump -L: CPU time until the Health report is complete (worst open): %.3f s in all threads, %.3f s of it on the GUI thread\n", processCpu, guiCpu);
+    std::printf(
+        "open 10 M-frame candump -L: first rows after %.3f s (budget %.1f s, ratio %.2fx), load job done after %.3f s, "
+        "fully indexed "
+        "after %.3f s (budget %.1f s, ratio %.2fx), %.1f resident bytes per frame\n",
+        worst, kOpenBudget, kOpenBudget / worst, loadedWorst, fullWorst, kFullBudget, kFullBudget / fullWorst,
+        perFrame);
+    std::printf(
+        "open 10 M-frame candump -L: Health report complete after %.3f s (its analysis runs behind, at the lowest "
+        "priority)\n",
+        healthWorst);
+    std::printf(
+        "open 10 M-frame candump -L: CPU time until the Health report is complete (worst open): %.3f s in all threads, "
+        "%.3f s of it on the GUI thread\n",
+        processCpu, guiCpu);
     std::printf("BENCH gui_open_10m_first_rows %.3f s %.1f budget %.2f\n", worst, kOpenBudget, kOpenBudget / worst);
-    std::printf("BENCH gui_open_10m_load_job_done %.3f s %.1f budget %.2f\n", loadedWorst, kFullBudget, kFullBudget / loadedWorst);
-    std::printf("BENCH gui_open_10m_fully_indexed %.3f s %.1f budget %.2f\n", fullWorst, kFullBudget, kFullBudget / fullWorst);
+    std::printf("BENCH gui_open_10m_load_job_done %.3f s %.1f budget %.2f\n", loadedWorst, kFullBudget,
+                kFullBudget / loadedWorst);
+    std::printf("BENCH gui_open_10m_fully_indexed %.3f s %.1f budget %.2f\n", fullWorst, kFullBudget,
+                kFullBudget / fullWorst);
     // DESIGN.md budgets the store at 32 bytes per classic frame; this is the whole process
     // (store, decoder snapshots, node table, events, plot buffers) against that figure.
-    std::printf("BENCH gui_open_10m_resident_per_frame %.1f bytes %.0f store_budget %.2f\n", perFrame, kStoreBytesBudget, kStoreBytesBudget / perFrame);
+    std::printf("BENCH gui_open_10m_resident_per_frame %.1f bytes %.0f store_budget %.2f\n", perFrame,
+                kStoreBytesBudget, kStoreBytesBudget / perFrame);
 }
 BENCHMARK(BM_Open10M)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 

@@ -14,20 +14,20 @@
 #include <QCoreApplication>
 #include <QProcess>
 
-#include <algorithm>
 #include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
-#include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <string>
-#include <sys/socket.h>
 #include <thread>
-#include <time.h>
-#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -36,7 +36,10 @@ constexpr double kPeriodMs = 10.0;
 constexpr double kBudgetMs = 1.0;
 constexpr int kSeconds = 5;
 
-int64_t monoNs() { return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+int64_t monoNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 // A socketcand daemon in raw mode for one client (linux-can/socketcand doc/protocol.md):
 // "< hi >", "< open CHANNEL >" -> "< ok >", "< rawmode >" -> "< ok >", then "< send ... >".
@@ -47,7 +50,8 @@ public:
         sockaddr_in a{};
         a.sin_family = AF_INET;
         a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd_, 1) != 0) return false;
+        if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0 || ::listen(fd_, 1) != 0)
+            return false;
         socklen_t len = sizeof a;
         ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &len);
         port_ = ntohs(a.sin_port);
@@ -122,11 +126,13 @@ Result measure(const QStringList& verbArgs) {
     WirePeer peer;
     if (!peer.listen()) return {};
     QStringList args = verbArgs;
-    for (QString& a : args) a.replace(QStringLiteral("URL"), QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(peer.port()));
+    for (QString& a : args)
+        a.replace(QStringLiteral("URL"), QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(peer.port()));
     QProcess p;
     p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
     if (!p.waitForFinished((kSeconds + 30) * 1000) || p.exitCode() != 0) {
-        std::fprintf(stderr, "coscope-cli %s failed: %s\n", qPrintable(args.join(u' ')), p.readAllStandardError().constData());
+        std::fprintf(stderr, "coscope-cli %s failed: %s\n", qPrintable(args.join(u' ')),
+                     p.readAllStandardError().constData());
         return {};
     }
     return statistics(peer.arrivals());
@@ -172,8 +178,12 @@ int main(int argc, char** argv) {
         const char* name;
         QStringList args;
     } cases[] = {
-        {"master_sync_10ms_p99_jitter", {QStringLiteral("sync"), QStringLiteral("URL"), QStringLiteral("--period"), QStringLiteral("10ms"), QStringLiteral("--counter"), QStringLiteral("240"), QStringLiteral("--duration"), duration}},
-        {"master_send_every_10ms_p99_jitter", {QStringLiteral("send"), QStringLiteral("URL"), QStringLiteral("201#0102030405060708"), QStringLiteral("--every"), QStringLiteral("10ms"), QStringLiteral("--duration"), duration}},
+        {"master_sync_10ms_p99_jitter",
+         {QStringLiteral("sync"), QStringLiteral("URL"), QStringLiteral("--period"), QStringLiteral("10ms"),
+          QStringLiteral("--counter"), QStringLiteral("240"), QStringLiteral("--duration"), duration}},
+        {"master_send_every_10ms_p99_jitter",
+         {QStringLiteral("send"), QStringLiteral("URL"), QStringLiteral("201#0102030405060708"),
+          QStringLiteral("--every"), QStringLiteral("10ms"), QStringLiteral("--duration"), duration}},
     };
     int failed = 0;
     for (const auto& c : cases) {
@@ -184,10 +194,14 @@ int main(int argc, char** argv) {
                 ++failed;
                 continue;
             }
-            std::printf("%s (run %d): %zu frames in %d s, mean period %.4f ms, p99 jitter %.3f ms, max %.3f ms; plain loop p99 %.3f ms, max %.3f ms\n", c.name,
-                        round, r.frames, kSeconds, r.meanMs, r.p99Ms, r.maxMs, plain.p99Ms, plain.maxMs);
-            std::printf("BENCH %s_run%d %.3f ms %.3f budget %.2f\n", c.name, round, r.p99Ms, kBudgetMs, kBudgetMs / std::max(r.p99Ms, 0.001));
-            std::printf("BENCH %s_vs_plain_run%d %.3f ms %.3f plain %.2f\n", c.name, round, r.p99Ms, plain.p99Ms, plain.p99Ms / std::max(r.p99Ms, 0.001));
+            std::printf(
+                "%s (run %d): %zu frames in %d s, mean period %.4f ms, p99 jitter %.3f ms, max %.3f ms; plain loop p99 "
+                "%.3f ms, max %.3f ms\n",
+                c.name, round, r.frames, kSeconds, r.meanMs, r.p99Ms, r.maxMs, plain.p99Ms, plain.maxMs);
+            std::printf("BENCH %s_run%d %.3f ms %.3f budget %.2f\n", c.name, round, r.p99Ms, kBudgetMs,
+                        kBudgetMs / std::max(r.p99Ms, 0.001));
+            std::printf("BENCH %s_vs_plain_run%d %.3f ms %.3f plain %.2f\n", c.name, round, r.p99Ms, plain.p99Ms,
+                        plain.p99Ms / std::max(r.p99Ms, 0.001));
             std::fflush(stdout);
         }
     }

@@ -29,9 +29,9 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <string>
@@ -49,26 +49,28 @@ constexpr int kColumns = 1300;
 const std::vector<std::shared_ptr<SignalBuffer>>& buffers(int64_t seconds) {
     static std::map<int64_t, std::vector<std::shared_ptr<SignalBuffer>>> cache;
     auto& all = cache[seconds];
-    if (all.empty()) all = [seconds] {
-        std::vector<std::shared_ptr<SignalBuffer>> out;
-        for (int s = 0; s < kSignals; ++s) {
-            auto b = std::make_shared<SignalBuffer>();
-            std::vector<SignalSample> batch;
-            batch.reserve(kRateHz);
-            for (int64_t sec = 0; sec < seconds; ++sec) {
-                batch.clear();
-                for (int64_t k = 0; k < kRateHz; ++k) {
-                    const int64_t i = sec * kRateHz + k;
-                    const double t = double(i) / double(kRateHz);
-                    const double v = 1000.0 * std::sin(t * (0.3 + s * 0.17)) + 50.0 * std::sin(t * 37.0) + (i * 7919 % 101);
-                    batch.push_back({i * 1'000'000, std::round(v), static_cast<FrameNo>(i * kSignals + s)});
+    if (all.empty())
+        all = [seconds] {
+            std::vector<std::shared_ptr<SignalBuffer>> out;
+            for (int s = 0; s < kSignals; ++s) {
+                auto b = std::make_shared<SignalBuffer>();
+                std::vector<SignalSample> batch;
+                batch.reserve(kRateHz);
+                for (int64_t sec = 0; sec < seconds; ++sec) {
+                    batch.clear();
+                    for (int64_t k = 0; k < kRateHz; ++k) {
+                        const int64_t i = sec * kRateHz + k;
+                        const double t = double(i) / double(kRateHz);
+                        const double v =
+                            1000.0 * std::sin(t * (0.3 + s * 0.17)) + 50.0 * std::sin(t * 37.0) + (i * 7919 % 101);
+                        batch.push_back({i * 1'000'000, std::round(v), static_cast<FrameNo>(i * kSignals + s)});
+                    }
+                    b->append(batch);
                 }
-                b->append(batch);
+                out.push_back(std::move(b));
             }
-            out.push_back(std::move(b));
-        }
-        return out;
-    }();
+            return out;
+        }();
     return all;
 }
 
@@ -122,9 +124,11 @@ void report(benchmark::State& state, const std::string& name, double totalMs, do
     // printed once at the end: the last (longest) run of each benchmark counts.
     char line[256];
     if (peerMs > 0)
-        std::snprintf(line, sizeof line, "BENCH plot_%s %.3f cpu_ms %.3f peer_plain_scan %.1f", name.c_str(), cpu, peerMs, peerMs / cpu);
+        std::snprintf(line, sizeof line, "BENCH plot_%s %.3f cpu_ms %.3f peer_plain_scan %.1f", name.c_str(), cpu,
+                      peerMs, peerMs / cpu);
     else
-        std::snprintf(line, sizeof line, "BENCH plot_%s %.3f cpu_ms %.3f budget %.2f", name.c_str(), cpu, kBudgetMs, kBudgetMs / cpu);
+        std::snprintf(line, sizeof line, "BENCH plot_%s %.3f cpu_ms %.3f budget %.2f", name.c_str(), cpu, kBudgetMs,
+                      kBudgetMs / cpu);
     benchLines()[name] = line;
 }
 
@@ -198,14 +202,16 @@ void BM_Replot(benchmark::State& state, int64_t seconds, PlotView::Layout layout
         view->setTimeRange(0, end);
         view->refresh();
     });
-    const std::string name = "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes");
+    const std::string name =
+        "replot_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes");
     report(state, name, totalMs, cpuMs);
     replotCases()[{seconds, int(layout)}] = {cpuMs / double(state.iterations()), totalMs / double(state.iterations())};
     // The same figure against the old plain scan of that length (same run): a whole replot
     // should cost less than only reading every sample once.
     char line[256];
     const double cpu = cpuMs / double(state.iterations());
-    std::snprintf(line, sizeof line, "BENCH plot_%s_vs_scan %.3f cpu_ms %.3f peer_plain_scan %.2f", name.c_str(), cpu, peerMs[seconds], peerMs[seconds] / cpu);
+    std::snprintf(line, sizeof line, "BENCH plot_%s_vs_scan %.3f cpu_ms %.3f peer_plain_scan %.2f", name.c_str(), cpu,
+                  peerMs[seconds], peerMs[seconds] / cpu);
     benchLines()[name + "_vs_scan"] = line;
 }
 
@@ -222,7 +228,8 @@ void BM_Zoom(benchmark::State& state, int64_t seconds, PlotView::Layout layout) 
         view->setTimeRange(at - 0.4 * span, at + 0.6 * span);
         view->refresh();
     });
-    report(state, "zoom_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes"), totalMs, cpuMs);
+    report(state, "zoom_" + lengthName(seconds) + (layout == PlotView::Layout::Stacked ? "_stacked" : "_shared_axes"),
+           totalMs, cpuMs);
 }
 
 // The plot without samples on the same moving range: QCustomPlot's own share of a replot.
@@ -294,18 +301,25 @@ int main(int argc, char** argv) {
         std::fclose(f);
     }
     if (!replotCases().empty()) {
-        std::printf("\nreplot of 8 signals x 1 kHz, whole history in view, scrolling (load average %.2f %.2f %.2f)\n", load[0], load[1], load[2]);
+        std::printf("\nreplot of 8 signals x 1 kHz, whole history in view, scrolling (load average %.2f %.2f %.2f)\n",
+                    load[0], load[1], load[2]);
         // Two directions on purpose, each printed with it: against the budget the ratio is
         // measured / budget (<= 1 passes, as the counters above); against the plain scan it is how
         // many times faster the replot is than that scan (> 1: faster).
-        std::printf("ratios: cpu/budget = cpu ms / %.0f ms, PASS when <= 1; scan/cpu = plain scan ms / cpu ms, > 1 when the replot is faster\n", kBudgetMs);
-        std::printf("(the BENCH lines above give budget/measured and peer/measured for scripts/bench.sh: >= 1 passes there)\n");
-        std::printf("%-7s %-12s %10s %10s %14s %9s %11s %s\n", "length", "layout", "cpu ms", "wall ms", "plain scan ms", "scan/cpu", "cpu/budget", "3 ms (cpu)");
+        std::printf(
+            "ratios: cpu/budget = cpu ms / %.0f ms, PASS when <= 1; scan/cpu = plain scan ms / cpu ms, > 1 when the "
+            "replot is faster\n",
+            kBudgetMs);
+        std::printf(
+            "(the BENCH lines above give budget/measured and peer/measured for scripts/bench.sh: >= 1 passes there)\n");
+        std::printf("%-7s %-12s %10s %10s %14s %9s %11s %s\n", "length", "layout", "cpu ms", "wall ms", "plain scan ms",
+                    "scan/cpu", "cpu/budget", "3 ms (cpu)");
         for (const auto& [key, c] : replotCases()) {
             const double peer = peerMs.count(key.first) ? peerMs[key.first] : 0;
             std::printf("%-7s %-12s %10.3f %10.3f %14.3f %8.1fx %11.2f %s\n", lengthName(key.first).c_str(),
-                        key.second == int(PlotView::Layout::Stacked) ? "stacked" : "shared axes", c.cpuMs, c.wallMs, peer, peer > 0 ? peer / c.cpuMs : 0.0,
-                        c.cpuMs / kBudgetMs, c.cpuMs <= kBudgetMs ? "PASS" : "FAIL");
+                        key.second == int(PlotView::Layout::Stacked) ? "stacked" : "shared axes", c.cpuMs, c.wallMs,
+                        peer, peer > 0 ? peer / c.cpuMs : 0.0, c.cpuMs / kBudgetMs,
+                        c.cpuMs <= kBudgetMs ? "PASS" : "FAIL");
         }
     }
     return 0;

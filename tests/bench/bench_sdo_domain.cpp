@@ -71,7 +71,8 @@ void runUpload(benchmark::State& state, bool block) {
     o.protocol = block ? SdoOptions::Protocol::Block : SdoOptions::Protocol::Auto;
     int64_t frames = 0, bytes = 0;
     for (auto _ : state) {
-        auto r = waitForResult<SdoResult>([&](SdoCallback cb) { rig.sdo->upload(1, sim::VirtualDevice::kTestDomainIndex, 0, cb, o); }, 600000);
+        auto r = waitForResult<SdoResult>(
+            [&](SdoCallback cb) { rig.sdo->upload(1, sim::VirtualDevice::kTestDomainIndex, 0, cb, o); }, 600000);
         if (!r || !r->ok || r->data.size() != kSize) {
             state.SkipWithError(r ? qPrintable(r->error) : "no result");
             return;
@@ -84,7 +85,8 @@ void runUpload(benchmark::State& state, bool block) {
     state.counters["frames"] = static_cast<double>(frames) / iters;
     state.counters["min_frames"] = static_cast<double>(minimumFrames(block));
     state.counters["frames_vs_min"] = static_cast<double>(frames) / iters / static_cast<double>(minimumFrames(block));
-    state.counters["vs_segmented_min"] = static_cast<double>(frames) / iters / static_cast<double>(minimumFrames(false));
+    state.counters["vs_segmented_min"] =
+        static_cast<double>(frames) / iters / static_cast<double>(minimumFrames(false));
 }
 
 void BM_SdoBlockUpload64KiB(benchmark::State& state) { runUpload(state, true); }

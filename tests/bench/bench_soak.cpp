@@ -30,15 +30,15 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <malloc.h>
+#include <time.h>
+#include <unistd.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <thread>
-#include <malloc.h>
-#include <time.h>
-#include <unistd.h>
 #include <vector>
 
 using namespace coscope;
@@ -100,7 +100,9 @@ protected:
 private:
     void run() {
         const auto t0 = Clock::now();
-        const int64_t ns0 = std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+        const int64_t ns0 =
+            std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+                .count();
         uint64_t n = 0;
         while (!stop_) {
             const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -131,8 +133,8 @@ struct Result {
     double storeMaxMiB = 0, stallAt = 0;
     int stalls = 0;
     double busyMs = 0, busyAt = 0;  // the GUI thread's own CPU time in one loop turn (not waiting for a core)
-    double slope = 0;      // MiB/min over the second half after the budget was reached
-    double restSlope = 0;  // the same for the memory outside the trace store (resident - store)
+    double slope = 0;               // MiB/min over the second half after the budget was reached
+    double restSlope = 0;           // the same for the memory outside the trace store (resident - store)
     double slopeFrom = 0;
 };
 
@@ -144,14 +146,16 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
     auto bus = std::make_unique<SaturatedBus>(*url, fd, rate);
     auto store = std::make_shared<TraceStore>();
     CaptureJournal journal;
-    if (!journal.open(dir + (fd ? QStringLiteral("/soak-fd.pcapng") : QStringLiteral("/soak.pcapng")), {QStringLiteral("can0")})) {
+    if (!journal.open(dir + (fd ? QStringLiteral("/soak-fd.pcapng") : QStringLiteral("/soak.pcapng")),
+                      {QStringLiteral("can0")})) {
         std::fprintf(stderr, "cannot open the journal: %s\n", qPrintable(journal.errorString()));
         std::exit(2);
     }
     store->setPager(journal.pager());
     store->setMemoryBudget(budget);
     CaptureSession session(store);
-    session.addConsumer([&journal](const TraceStore& s, FrameNo first, size_t count) { journal.appendFromStore(s, first, count); });
+    session.addConsumer(
+        [&journal](const TraceStore& s, FrameNo first, size_t count) { journal.appendFromStore(s, first, count); });
 
     gui::TraceModel model;
     model.setStore(store);
@@ -211,7 +215,8 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
             lastSample = t;
             const double rss = rssMiB();
             r.storeMaxMiB = std::max(r.storeMaxMiB, store->memoryBytes() / 1048576.0);
-            if (r.budgetReachedAt < 0 && store->memoryBytes() + TraceStore::kChunkSize * 24 >= budget && store->residentChunks() < (store->size() + TraceStore::kChunkSize - 1) / TraceStore::kChunkSize) {
+            if (r.budgetReachedAt < 0 && store->memoryBytes() + TraceStore::kChunkSize * 24 >= budget &&
+                store->residentChunks() < (store->size() + TraceStore::kChunkSize - 1) / TraceStore::kChunkSize) {
                 r.budgetReachedAt = std::chrono::duration<double>(t - t0).count();
                 r.rssAtBudget = rss;
             }
@@ -223,9 +228,12 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
             if (t - lastLog >= std::chrono::seconds(30)) {  // what grows, for whoever reads the log
                 lastLog = t;
                 const struct mallinfo2 m = ::mallinfo2();
-                std::fprintf(stderr, "%6.0f s: rss %.1f MiB, store %.1f MiB (%zu chunks), malloc in use %.1f MiB, arena %.1f MiB, mmapped %.1f MiB, free %.1f MiB, page-ins %llu\n",
-                             std::chrono::duration<double>(t - t0).count(), rss, store->memoryBytes() / 1048576.0, store->residentChunks(),
-                             m.uordblks / 1048576.0 + m.hblkhd / 1048576.0, m.arena / 1048576.0, m.hblkhd / 1048576.0, m.fordblks / 1048576.0,
+                std::fprintf(stderr,
+                             "%6.0f s: rss %.1f MiB, store %.1f MiB (%zu chunks), malloc in use %.1f MiB, arena %.1f "
+                             "MiB, mmapped %.1f MiB, free %.1f MiB, page-ins %llu\n",
+                             std::chrono::duration<double>(t - t0).count(), rss, store->memoryBytes() / 1048576.0,
+                             store->residentChunks(), m.uordblks / 1048576.0 + m.hblkhd / 1048576.0,
+                             m.arena / 1048576.0, m.hblkhd / 1048576.0, m.fordblks / 1048576.0,
                              (unsigned long long)store->pageIns());
             }
         }
@@ -261,28 +269,43 @@ void report(const char* name, int rate, double seconds, size_t budget, const Res
     std::printf("== %s: %d frames/s for %.0f s, trace budget %.0f MiB\n", name, rate, seconds, budgetMiB);
     std::printf("frames: generated %llu, in the trace %llu, in the journal %llu\n", (unsigned long long)r.generated,
                 (unsigned long long)r.stored, (unsigned long long)r.journaled);
-    std::printf("frames dropped: %llu (budget 0) -> %s\n", (unsigned long long)r.dropped, r.dropped == 0 ? "ok" : "FAIL");
-    std::printf("trace RAM (TraceStore::memoryBytes) max %.1f MiB, ratio to budget %.2f\n", r.storeMaxMiB, r.storeMaxMiB / budgetMiB);
+    std::printf("frames dropped: %llu (budget 0) -> %s\n", (unsigned long long)r.dropped,
+                r.dropped == 0 ? "ok" : "FAIL");
+    std::printf("trace RAM (TraceStore::memoryBytes) max %.1f MiB, ratio to budget %.2f\n", r.storeMaxMiB,
+                r.storeMaxMiB / budgetMiB);
     if (r.budgetReachedAt < 0) {
-        std::printf("resident memory: budget not reached in %.0f s (start %.1f MiB, end %.1f MiB)\n", seconds, r.rssStart, r.rssEnd);
+        std::printf("resident memory: budget not reached in %.0f s (start %.1f MiB, end %.1f MiB)\n", seconds,
+                    r.rssStart, r.rssEnd);
     } else {
         const double growth = r.rssMaxAfter - r.rssAtBudget;
-        std::printf("resident memory: %.1f MiB at start, %.1f MiB when the budget was reached (%.0f s), max %.1f MiB after, %.1f MiB at the end\n",
-                    r.rssStart, r.rssAtBudget, r.budgetReachedAt, r.rssMaxAfter, r.rssEnd);
-        std::printf("resident growth after the budget: %.1f MiB, ratio to the trace budget %.2f\n", growth, growth / budgetMiB);
+        std::printf(
+            "resident memory: %.1f MiB at start, %.1f MiB when the budget was reached (%.0f s), max %.1f MiB after, "
+            "%.1f MiB at the end\n",
+            r.rssStart, r.rssAtBudget, r.budgetReachedAt, r.rssMaxAfter, r.rssEnd);
+        std::printf("resident growth after the budget: %.1f MiB, ratio to the trace budget %.2f\n", growth,
+                    growth / budgetMiB);
         // The store itself is bounded by its budget (above) and goes up and down by a chunk as it
         // fills one and evicts another (5.5 MiB with FD frames): a sawtooth that a least-squares
         // slope over a few minutes reads as growth. What must be flat is everything else.
-        std::printf("resident memory slope from %.0f s to the end: %+.3f MiB/min (the trace store's fill-and-evict sawtooth included)\n",
-                    r.slopeFrom, r.slope);
-        std::printf("resident memory outside the trace store, slope from %.0f s to the end: %+.3f MiB/min, ratio to the flat budget (%.1f MiB/min) %.2f -> %s\n",
-                    r.slopeFrom, r.restSlope, kFlatMiBPerMin, r.restSlope / kFlatMiBPerMin, r.restSlope <= kFlatMiBPerMin ? "ok" : "FAIL");
+        std::printf(
+            "resident memory slope from %.0f s to the end: %+.3f MiB/min (the trace store's fill-and-evict sawtooth "
+            "included)\n",
+            r.slopeFrom, r.slope);
+        std::printf(
+            "resident memory outside the trace store, slope from %.0f s to the end: %+.3f MiB/min, ratio to the flat "
+            "budget (%.1f MiB/min) %.2f -> %s\n",
+            r.slopeFrom, r.restSlope, kFlatMiBPerMin, r.restSlope / kFlatMiBPerMin,
+            r.restSlope <= kFlatMiBPerMin ? "ok" : "FAIL");
     }
-    std::printf("longest GUI-thread stall: %.1f ms at %.1f s, ratio to the 100 ms budget %.2f -> %s (%d stalls over 100 ms)\n", r.stallMs,
-                r.stallAt, r.stallMs / 100.0, r.stallMs < 100 ? "ok" : "FAIL", r.stalls);
-    std::printf("longest GUI-thread CPU time in one loop turn (its own work, without waiting for a core): %.1f ms at %.1f s, ratio to 100 ms %.2f\n",
-                r.busyMs, r.busyAt, r.busyMs / 100.0);
-    std::printf("chunks paged back from the journal: %llu, page errors %llu\n", (unsigned long long)r.pageIns, (unsigned long long)r.pageErrors);
+    std::printf(
+        "longest GUI-thread stall: %.1f ms at %.1f s, ratio to the 100 ms budget %.2f -> %s (%d stalls over 100 ms)\n",
+        r.stallMs, r.stallAt, r.stallMs / 100.0, r.stallMs < 100 ? "ok" : "FAIL", r.stalls);
+    std::printf(
+        "longest GUI-thread CPU time in one loop turn (its own work, without waiting for a core): %.1f ms at %.1f s, "
+        "ratio to 100 ms %.2f\n",
+        r.busyMs, r.busyAt, r.busyMs / 100.0);
+    std::printf("chunks paged back from the journal: %llu, page errors %llu\n", (unsigned long long)r.pageIns,
+                (unsigned long long)r.pageErrors);
     std::fflush(stdout);
 }
 
@@ -306,7 +329,11 @@ int main(int argc, char** argv) {
     }
     QTemporaryDir dir;
     const size_t budget = budgetMiB << 20;
-    if (mode != QLatin1String("fd")) report("classic CAN, 1 Mbit/s saturated", 8000, seconds, budget, soak(false, 8000, seconds, budget, dir.path()));
-    if (mode != QLatin1String("classic")) report("CAN FD, 1/2 Mbit/s, 64-byte frames", 3200, seconds, budget, soak(true, 3200, seconds, budget, dir.path()));
+    if (mode != QLatin1String("fd"))
+        report("classic CAN, 1 Mbit/s saturated", 8000, seconds, budget,
+               soak(false, 8000, seconds, budget, dir.path()));
+    if (mode != QLatin1String("classic"))
+        report("CAN FD, 1/2 Mbit/s, 64-byte frames", 3200, seconds, budget,
+               soak(true, 3200, seconds, budget, dir.path()));
     return 0;
 }

@@ -39,7 +39,8 @@ void BM_TraceStoreAppend10M(benchmark::State& state) {
         perFrame = static_cast<double>(store.memoryBytes()) / kFrames;
     }
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kFrames));
-    state.counters["frames_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * kFrames), benchmark::Counter::kIsRate);
+    state.counters["frames_per_s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * kFrames), benchmark::Counter::kIsRate);
     state.counters["bytes_per_frame"] = perFrame;
     state.counters["budget_bytes_per_frame"] = 32;
     state.counters["budget_frames_per_s"] = 20e6;
@@ -61,7 +62,8 @@ void BM_PeerVectorOfFrames10M(benchmark::State& state) {
         perFrame = static_cast<double>(v.capacity() * sizeof(CanFrame)) / kFrames;
     }
     state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * kFrames));
-    state.counters["frames_per_s"] = benchmark::Counter(static_cast<double>(state.iterations() * kFrames), benchmark::Counter::kIsRate);
+    state.counters["frames_per_s"] =
+        benchmark::Counter(static_cast<double>(state.iterations() * kFrames), benchmark::Counter::kIsRate);
     state.counters["bytes_per_frame"] = perFrame;
 }
 BENCHMARK(BM_PeerVectorOfFrames10M)->Unit(benchmark::kMillisecond)->Iterations(3);

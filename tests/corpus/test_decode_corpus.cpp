@@ -47,7 +47,8 @@ Result decodeLog(const QString& path) {
                 if (d.transfer.status == QLatin1String("ok")) ++r.okTransfers;
             }
             for (const TreeItem& t : tree.tree)
-                if (t.byteOffset < 0 || t.byteOffset + t.byteLength > std::max<int>(batch[i].payloadSize(), 8)) ++r.badJson;
+                if (t.byteOffset < 0 || t.byteOffset + t.byteLength > std::max<int>(batch[i].payloadSize(), 8))
+                    ++r.badJson;
         }
     }
     return r;

@@ -18,7 +18,8 @@ eds::ReadResult load(const QString& name) { return eds::readDictionaryFile(corpu
 
 bool warnsAt(const eds::ReadResult& r, int line, const QString& fragment) {
     for (const auto& d : r.diagnostics)
-        if (d.line == line && d.severity == eds::Diagnostic::Severity::Warning && d.message.contains(fragment)) return true;
+        if (d.line == line && d.severity == eds::Diagnostic::Severity::Warning && d.message.contains(fragment))
+            return true;
     return false;
 }
 
@@ -63,8 +64,9 @@ void TestEdsCorpus::brokenFilesWarnWithLines() {
     const auto dup = load("lely_test_sdo-server_dupkey.dcf");
     QVERIFY(dup.usable);
     QVERIFY(warnsAt(dup, 49, "duplicate key DefaultValue in [1018sub0] (first at line 48)"));
-    QCOMPARE(dup.dictionary.entry(0x1018, 0)->resolvedDefault(1)->toUInt64(), std::optional<std::uint64_t>(4));  // first wins
-    QCOMPARE(dup.dictionary.nodeId(), std::uint8_t(1));                                                             // [DeviceComissioning]
+    QCOMPARE(dup.dictionary.entry(0x1018, 0)->resolvedDefault(1)->toUInt64(),
+             std::optional<std::uint64_t>(4));           // first wins
+    QCOMPARE(dup.dictionary.nodeId(), std::uint8_t(1));  // [DeviceComissioning]
 
     const auto hash = load("kacanopen_CiA301_hashcomments.eds");
     QVERIFY(hash.usable);
@@ -114,7 +116,8 @@ void TestEdsCorpus::knownValues() {
     bool invalidBit = false;
     for (const auto& [i, o] : bk.dictionary.objects())
         for (const auto& s : o.subs)
-            if (s.defaultValue.contains("0x80000") && s.defaultUsesNodeId()) invalidBit |= (s.resolvedDefault(1)->toUInt64().value_or(0) & 0x80000000u) != 0;
+            if (s.defaultValue.contains("0x80000") && s.defaultUsesNodeId())
+                invalidBit |= (s.resolvedDefault(1)->toUInt64().value_or(0) & 0x80000000u) != 0;
     QVERIFY(invalidBit);
     // python-canopen: CompactSubObj with names; lely: CompactSubObj=254/127.
     const auto py = load("python-canopen_test_sample.eds");
@@ -161,7 +164,8 @@ void TestEdsCorpus::dcfRoundTripOfEveryFile() {
         for (const auto& [i, o] : a.dictionary.objects())
             for (const auto& s : o.subs) {
                 const SubObject* t = b.dictionary.entry(i, s.sub);
-                QVERIFY2(t && t->defaultValue == s.defaultValue && t->parameterValue == s.parameterValue && t->dataType == s.dataType,
+                QVERIFY2(t && t->defaultValue == s.defaultValue && t->parameterValue == s.parameterValue &&
+                             t->dataType == s.dataType,
                          qPrintable(QString("%1 %2:%3").arg(f).arg(i, 0, 16).arg(s.sub)));
             }
     }

@@ -35,27 +35,33 @@ private slots:
         QTest::addColumn<qint64>("spanUs");  // last - first timestamp, -1 = not checked
         // PROVENANCE: PCAN-View TRC 1.1, 11 283 frames. First "1) 144.5 Rx 0728 1 7F",
         // last "11283) 241052.4 Rx 010A 8 EC A8 88 0C 99 8C 00 00".
-        QTest::newRow("trc") << "pcanview_v1.1_canopen_pcan1.trc" << "trc" << 11283 << 0x728u << QByteArray("7F") << 0x10Au
-                             << QByteArray("ECA8880C998C0000") << qint64(241052400 - 144500);
+        QTest::newRow("trc") << "pcanview_v1.1_canopen_pcan1.trc"
+                             << "trc" << 11283 << 0x728u << QByteArray("7F") << 0x10Au << QByteArray("ECA8880C998C0000")
+                             << qint64(241052400 - 144500);
         // PROVENANCE: pcapng, SocketCAN, 149 frames; SDO scan starts with 601 upload of 0x1000.
-        QTest::newRow("pcapng") << "socketcan_epos_sdo_scan.pcapng" << "pcap" << 149 << 0x601u << QByteArray("4000100000000000")
-                                << 0x582u << QByteArray("6040600000000000") << qint64(1521803006197147LL - 1521802991795187LL);
+        QTest::newRow("pcapng") << "socketcan_epos_sdo_scan.pcapng"
+                                << "pcap" << 149 << 0x601u << QByteArray("4000100000000000") << 0x582u
+                                << QByteArray("6040600000000000") << qint64(1521803006197147LL - 1521802991795187LL);
         // candump -L, one frame per line (12 974 lines).
-        QTest::newRow("candump -L") << "savvycan_candump_L_automotive.log" << "candump" << 12974 << 0x21Au
-                                    << QByteArray("FE3612FE690507AD") << 0x102u << QByteArray("0C96D0FFC1FF") << qint64(8000000);
+        QTest::newRow("candump -L") << "savvycan_candump_L_automotive.log"
+                                    << "candump" << 12974 << 0x21Au << QByteArray("FE3612FE690507AD") << 0x102u
+                                    << QByteArray("0C96D0FFC1FF") << qint64(8000000);
         // candump default text, first line unindented, last line without a line end: 115 frames.
-        QTest::newRow("candump text") << "candump_default_ds402_tmcm1636_ros_canopen.txt" << "candump" << 115 << 0x000u
-                                      << QByteArray("8201") << 0x000u << QByteArray("0201") << qint64(-1);
+        QTest::newRow("candump text") << "candump_default_ds402_tmcm1636_ros_canopen.txt"
+                                      << "candump" << 115 << 0x000u << QByteArray("8201") << 0x000u
+                                      << QByteArray("0201") << qint64(-1);
         // candump default text with CAN FD lengths up to 64, one frame per line.
-        QTest::newRow("candump fd") << "candump_default_canfd_moteus.txt" << "candump" << 1251 << 0x002u
-                                    << QByteArray("400114") << 0x200u << QByteArray() << qint64(-1);
+        QTest::newRow("candump fd") << "candump_default_canfd_moteus.txt"
+                                    << "candump" << 1251 << 0x002u << QByteArray("400114") << 0x200u << QByteArray()
+                                    << qint64(-1);
         // python-can ASC zoo: 3 error frames, 3 remote, 8 x 18EBFF00, 6F9, 6F8, 4 CANFD lines
         // (one remote, one error frame); statistics, chip status and J1939TP skipped.
-        QTest::newRow("asc") << "vector_asc_python-can_logfile.asc" << "asc" << 20 << 0u << QByteArray() << 0u << QByteArray()
-                             << qint64(30806898 - 2501000);
+        QTest::newRow("asc") << "vector_asc_python-can_logfile.asc"
+                             << "asc" << 20 << 0u << QByteArray() << 0u << QByteArray() << qint64(30806898 - 2501000);
         // python-can BLF fixture: two CAN_MESSAGE objects with filler values.
-        QTest::newRow("blf") << "vector_blf_python-can_test_CanMessage.blf" << "blf" << 2 << 0x4444444u
-                             << QByteArray("5566778899AABBCC") << 0x4444444u << QByteArray("5566778899AABBCC") << qint64(0);
+        QTest::newRow("blf") << "vector_blf_python-can_test_CanMessage.blf"
+                             << "blf" << 2 << 0x4444444u << QByteArray("5566778899AABBCC") << 0x4444444u
+                             << QByteArray("5566778899AABBCC") << qint64(0);
     }
 
     void everyLog() {
@@ -76,7 +82,11 @@ private slots:
         QVERIFY2(reader, qPrintable(error));
         const auto all = reader->readAll();
         QVERIFY2(!reader->hasError(), qPrintable(reader->errorString()));
-        QVERIFY2(reader->diagnostics().empty(), reader->diagnostics().empty() ? "" : qPrintable(QStringLiteral("%1: %2").arg(reader->diagnostics()[0].where).arg(reader->diagnostics()[0].message)));
+        QVERIFY2(reader->diagnostics().empty(), reader->diagnostics().empty()
+                                                    ? ""
+                                                    : qPrintable(QStringLiteral("%1: %2")
+                                                                     .arg(reader->diagnostics()[0].where)
+                                                                     .arg(reader->diagnostics()[0].message)));
         QCOMPARE(int(all.size()), frames);
         QCOMPARE(reader->progress(), 1.0);
         QCOMPARE(all.front().id, firstId);

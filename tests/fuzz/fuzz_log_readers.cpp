@@ -41,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         size_t total = 0;
         while (size_t n = reader->read(batch, 64)) {
             for (size_t i = 0; i < n; ++i)
-                if (batch[i].len > 64 || (!batch[i].isFd() && batch[i].len > 8 && !batch[i].isError())) __builtin_trap();
+                if (batch[i].len > 64 || (!batch[i].isFd() && batch[i].len > 8 && !batch[i].isError()))
+                    __builtin_trap();
             total += n;
         }
         (void)total;

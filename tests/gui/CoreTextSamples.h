@@ -23,26 +23,27 @@ inline CanFrame errorFrame(uint32_t classes, std::initializer_list<uint8_t> byte
 // Every class, controller state, protocol violation type and location of error.h.
 inline std::vector<CanFrame> canErrorFrames() {
     std::vector<CanFrame> out;
-    out.push_back(errorFrame(0x040, {0, 0, 0, 0, 0, 0, 0, 0}));  // bus-off
+    out.push_back(errorFrame(0x040, {0, 0, 0, 0, 0, 0, 0, 0}));                     // bus-off
     for (uint8_t c : {0x01, 0x02, 0x04, 0x08, 0x10, 0x20, 0x40, 0x00, 0x30, 0x0C})  // controller
         out.push_back(errorFrame(0x004, {0, c, 0, 0, 0, 0, 0, 0}));
     for (uint8_t t : {0x01, 0x02, 0x04, 0x08, 0x10, 0x20, 0x40, 0x80, 0x84})  // protocol types
         out.push_back(errorFrame(0x008, {0, 0, t, 0, 0, 0, 0, 0}));
-    for (uint8_t loc : {0x03, 0x02, 0x06, 0x04, 0x05, 0x07, 0x0F, 0x0E, 0x0C, 0x0D, 0x09, 0x0B, 0x0A, 0x08, 0x18, 0x19, 0x1B, 0x1A, 0x12})
+    for (uint8_t loc : {0x03, 0x02, 0x06, 0x04, 0x05, 0x07, 0x0F, 0x0E, 0x0C, 0x0D, 0x09, 0x0B, 0x0A, 0x08, 0x18, 0x19,
+                        0x1B, 0x1A, 0x12})
         out.push_back(errorFrame(0x008, {0, 0, 0x02, loc, 0, 0, 0, 0}));  // form error at each location
-    out.push_back(errorFrame(0x008, {0, 0, 0x00, 0x00, 0, 0, 0, 0}));    // protocol violation, no detail
-    out.push_back(errorFrame(0x088, {0, 0, 0x04, 0x08, 0, 0, 0, 0}));    // stuff error in the CRC sequence + bus error
-    out.push_back(errorFrame(0x020, {0, 0, 0, 0, 0, 0, 0, 0}));          // no ACK
-    out.push_back(errorFrame(0x010, {0, 0, 0, 0, 0x07, 0, 0, 0}));       // transceiver
-    out.push_back(errorFrame(0x002, {5, 0, 0, 0, 0, 0, 0, 0}));          // lost arbitration at bit 5
+    out.push_back(errorFrame(0x008, {0, 0, 0x00, 0x00, 0, 0, 0, 0}));     // protocol violation, no detail
+    out.push_back(errorFrame(0x088, {0, 0, 0x04, 0x08, 0, 0, 0, 0}));     // stuff error in the CRC sequence + bus error
+    out.push_back(errorFrame(0x020, {0, 0, 0, 0, 0, 0, 0, 0}));           // no ACK
+    out.push_back(errorFrame(0x010, {0, 0, 0, 0, 0x07, 0, 0, 0}));        // transceiver
+    out.push_back(errorFrame(0x002, {5, 0, 0, 0, 0, 0, 0, 0}));           // lost arbitration at bit 5
     out.push_back(errorFrame(0x002, {0, 0, 0, 0, 0, 0, 0, 0}));
-    out.push_back(errorFrame(0x001, {0, 0, 0, 0, 0, 0, 0, 0}));          // TX timeout
-    out.push_back(errorFrame(0x080, {0, 0, 0, 0, 0, 0, 0, 0}));          // bus error
-    out.push_back(errorFrame(0x100, {0, 0, 0, 0, 0, 0, 0, 0}));          // restarted
-    out.push_back(errorFrame(0x200, {0, 0, 0, 0, 0, 0, 0x88, 0x00}));    // counters only: passive
-    out.push_back(errorFrame(0x204, {0, 0x20, 0, 0, 0, 0, 0x80, 0x10})); // TX passive with counters
-    out.push_back(errorFrame(0x064, {0, 0x20, 0, 0, 0, 0, 0, 0}));       // bus-off + controller + no ACK
-    out.push_back(errorFrame(0x400, {0, 0, 0, 0, 0, 0, 0, 0}));          // a class error.h does not name
+    out.push_back(errorFrame(0x001, {0, 0, 0, 0, 0, 0, 0, 0}));           // TX timeout
+    out.push_back(errorFrame(0x080, {0, 0, 0, 0, 0, 0, 0, 0}));           // bus error
+    out.push_back(errorFrame(0x100, {0, 0, 0, 0, 0, 0, 0, 0}));           // restarted
+    out.push_back(errorFrame(0x200, {0, 0, 0, 0, 0, 0, 0x88, 0x00}));     // counters only: passive
+    out.push_back(errorFrame(0x204, {0, 0x20, 0, 0, 0, 0, 0x80, 0x10}));  // TX passive with counters
+    out.push_back(errorFrame(0x064, {0, 0x20, 0, 0, 0, 0, 0, 0}));        // bus-off + controller + no ACK
+    out.push_back(errorFrame(0x400, {0, 0, 0, 0, 0, 0, 0, 0}));           // a class error.h does not name
     return out;
 }
 
@@ -74,7 +75,8 @@ inline std::vector<CanFrame> lssFrames() {
         m({cs, 0, 0, 0, 0, 0, 0, 0});
         s({cs, 0x05, 0x02, 0, 0, 0, 0, 0});
     }
-    for (uint8_t cs : {l::IdentifyVendor, l::IdentifyProduct, l::IdentifyRevisionLow, l::IdentifyRevisionHigh, l::IdentifySerialLow, l::IdentifySerialHigh})
+    for (uint8_t cs : {l::IdentifyVendor, l::IdentifyProduct, l::IdentifyRevisionLow, l::IdentifyRevisionHigh,
+                       l::IdentifySerialLow, l::IdentifySerialHigh})
         m({cs, 0x01, 0, 0, 0, 0, 0, 0});
     s({l::IdentifySlaveResponse, 0, 0, 0, 0, 0, 0, 0});
     m({l::IdentifyNonConfigured, 0, 0, 0, 0, 0, 0, 0});
@@ -92,7 +94,8 @@ inline std::vector<CanFrame> lssFrames() {
 inline std::vector<CanFrame> vendorEmcyFrames() {
     std::vector<CanFrame> out;
     auto e = [&](uint32_t node, uint16_t code, uint8_t reg, uint16_t alarm) {
-        out.push_back(CanFrame::classic(0x080 + node, {uint8_t(code), uint8_t(code >> 8), reg, uint8_t(alarm), uint8_t(alarm >> 8), 0, 0, 0}));
+        out.push_back(CanFrame::classic(
+            0x080 + node, {uint8_t(code), uint8_t(code >> 8), reg, uint8_t(alarm), uint8_t(alarm >> 8), 0, 0, 0}));
     };
     e(2, 0x2310, 0x03, 0x0001);  // AL001
     e(2, 0x5441, 0x81, 0x0013);  // AL013

@@ -30,7 +30,8 @@ public:
     void sdoWrite(int node, uint16_t index, uint8_t sub, uint32_t value, int bytes) {
         static constexpr const char* kCommand[] = {"", "2F", "2B", "27", "23"};  // n = 4 - bytes (CiA 301 7.2.4.3.3)
         const QString at = le(index, 2) + le(sub, 1);
-        line(QStringLiteral("%1#").arg(0x600 + node, 3, 16).toUpper() + QLatin1String(kCommand[bytes]) + at + le(value, 4));
+        line(QStringLiteral("%1#").arg(0x600 + node, 3, 16).toUpper() + QLatin1String(kCommand[bytes]) + at +
+             le(value, 4));
         line(QStringLiteral("%1#60").arg(0x580 + node, 3, 16).toUpper() + at + le(0, 4));
     }
     // 1018h:01 and :02 read and answered as a Delta ASDA-A2 (vendor-ID 000001DDh, product code
@@ -61,7 +62,8 @@ public:
     // `bytes` little-endian bytes of v in hex, as candump writes data.
     static QString le(uint32_t v, int bytes) {
         QString s;
-        for (int i = 0; i < bytes; ++i) s += QStringLiteral("%1").arg((v >> (8 * i)) & 0xFF, 2, 16, QLatin1Char('0')).toUpper();
+        for (int i = 0; i < bytes; ++i)
+            s += QStringLiteral("%1").arg((v >> (8 * i)) & 0xFF, 2, 16, QLatin1Char('0')).toUpper();
         return s;
     }
 

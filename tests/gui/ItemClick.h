@@ -20,7 +20,8 @@ inline bool clickCheckBox(QTreeWidget* tree, QTreeWidgetItem* item) {
     if (!row.isValid() || !tree->viewport()->rect().contains(row.topLeft())) return false;
     QStyleOptionViewItem option;
     option.initFrom(tree->viewport());
-    option.rect = QRect(row.left(), row.top(), tree->columnWidth(0) - (row.left() + tree->header()->offset()), row.height());
+    option.rect =
+        QRect(row.left(), row.top(), tree->columnWidth(0) - (row.left() + tree->header()->offset()), row.height());
     option.features = QStyleOptionViewItem::HasCheckIndicator | QStyleOptionViewItem::HasDisplay;
     option.text = item->text(0);
     option.checkState = item->checkState(0);

@@ -69,7 +69,8 @@ inline std::unique_ptr<ModalAnswerer> answerBox(QMessageBox::StandardButton butt
 
 // Clicks `button` in the next message box whose text holds `says`; its text goes to `*asked`.
 // Boxes that say something else are left to other answerers.
-inline std::unique_ptr<ModalAnswerer> answerBoxSaying(const QString& says, QMessageBox::StandardButton button, QString* asked = nullptr) {
+inline std::unique_ptr<ModalAnswerer> answerBoxSaying(const QString& says, QMessageBox::StandardButton button,
+                                                      QString* asked = nullptr) {
     return std::make_unique<ModalAnswerer>([=](QWidget* w) {
         auto* box = qobject_cast<QMessageBox*>(w);
         if (!box || !box->text().contains(says) || !box->button(button)) return false;
@@ -107,7 +108,8 @@ inline std::unique_ptr<ModalAnswerer> answerFileDialog(const QString& path) {
         QTest::keyClick(name, Qt::Key_A, Qt::ControlModifier);  // typing replaces what is there
         QTest::keyClicks(name, path);
         // The name completer may have popped up over the field: Escape closes only the popup.
-        if (QCompleter* c = name->completer(); c && c->popup() && c->popup()->isVisible()) QTest::keyClick(c->popup(), Qt::Key_Escape);
+        if (QCompleter* c = name->completer(); c && c->popup() && c->popup()->isVisible())
+            QTest::keyClick(c->popup(), Qt::Key_Escape);
         QAbstractButton* accept = nullptr;
         for (QAbstractButton* b : buttons->buttons())
             if (buttons->buttonRole(b) == QDialogButtonBox::AcceptRole) accept = b;

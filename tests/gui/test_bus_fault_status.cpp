@@ -32,9 +32,10 @@ private slots:
         QVERIFY(f.open(QIODevice::WriteOnly));
         // A heartbeat, then CAN_ERR_CRTL|CAN_ERR_CNT with TX passive (data[1] 0x20) and counters
         // TEC 136 REC 0 (data[6], data[7]), then CAN_ERR_BUSOFF (0x40).
-        f.write("(1700000000.000000) can0 701#05\n"
-                "(1700000000.100000) can0 20000204#0020000000008800\n"
-                "(1700000000.200000) can0 20000040#0000000000000000\n");
+        f.write(
+            "(1700000000.000000) can0 701#05\n"
+            "(1700000000.100000) can0 20000204#0020000000008800\n"
+            "(1700000000.200000) can0 20000040#0000000000000000\n");
         f.close();
         MainWindow w;
         w.setQuiet(true);
@@ -52,7 +53,8 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(events->rowCount() > before, 5000);
         const QString last = events->index(events->rowCount() - 1, 3).data().toString();
         QVERIFY2(last.contains(QStringLiteral("cannot restart")), qPrintable(last));
-        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("Restart after bus-off failed")), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("Restart after bus-off failed")),
+                 qPrintable(w.statusBar()->currentMessage()));
     }
 
     void passiveShowsCounters() {
@@ -60,15 +62,17 @@ private slots:
         const QString log = dir.filePath(QStringLiteral("passive.log"));
         QFile f(log);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("(1700000000.000000) can0 701#05\n"
-                "(1700000000.100000) can0 20000204#0020000000008800\n");
+        f.write(
+            "(1700000000.000000) can0 701#05\n"
+            "(1700000000.100000) can0 20000204#0020000000008800\n");
         f.close();
         MainWindow w;
         w.setQuiet(true);
         w.show();
         QVERIFY(w.connectBus(QStringLiteral("replay://%1?speed=0").arg(log)));
         QTRY_VERIFY_WITH_TIMEOUT(w.busStatus()->controllerText().contains(QStringLiteral("error passive")), 10000);
-        QVERIFY2(w.busStatus()->controllerText().contains(QStringLiteral("TEC 136 REC 0")), qPrintable(w.busStatus()->controllerText()));
+        QVERIFY2(w.busStatus()->controllerText().contains(QStringLiteral("TEC 136 REC 0")),
+                 qPrintable(w.busStatus()->controllerText()));
         QVERIFY(!w.statusBar()->findChild<QPushButton*>(QStringLiteral("restartController"))->isVisible());
     }
 };

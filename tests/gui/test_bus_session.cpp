@@ -36,17 +36,18 @@ using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
 
 namespace {
-using coscope::testing::waitFor;
 using coscope::testing::clickMenuItem;
 using coscope::testing::menuItem;
 using coscope::testing::openMenu;
+using coscope::testing::waitFor;
 QString plain(const QString& t) { return coscope::testing::withoutAccelerator(t); }
 
 // The Dictionary column of every node row, as the Nodes dock shows it.
 QStringList dictionaryColumn(MainWindow& w) {
     QStringList out;
     NodesModel* m = w.nodesDock()->model();
-    for (int r = 0; r < m->rowCount(); ++r) out << m->data(m->index(r, NodesModel::Dictionary), Qt::DisplayRole).toString();
+    for (int r = 0; r < m->rowCount(); ++r)
+        out << m->data(m->index(r, NodesModel::Dictionary), Qt::DisplayRole).toString();
     return out;
 }
 bool identified(MainWindow& w, int nodes) {
@@ -69,7 +70,8 @@ bool assignInOdDock(MainWindow& w, const QString& name) {
     if (!waitFor([&] { return choice->view()->isVisible(); })) return false;
     // Down the list by the arrow key to the name (typing races the list's search interval).
     QTest::keyClick(choice->view(), Qt::Key_Home);
-    for (int i = 0; i < choice->count() && choice->view()->currentIndex().data().toString() != name; ++i) QTest::keyClick(choice->view(), Qt::Key_Down);
+    for (int i = 0; i < choice->count() && choice->view()->currentIndex().data().toString() != name; ++i)
+        QTest::keyClick(choice->view(), Qt::Key_Down);
     QTest::keyClick(choice->view(), Qt::Key_Return);
     if (choice->currentText() != name) {
         QStringList items;
@@ -91,16 +93,24 @@ QString writeLog(const QString& path, bool pdos) {
     if (!f.open(QIODevice::WriteOnly)) return {};
     for (int i = 0; i < 50; ++i) {
         f.write(QStringLiteral("(1700000000.%1) can0 705#05\n").arg(i * 10000, 6, 10, QLatin1Char('0')).toLatin1());
-        if (pdos) f.write(QStringLiteral("(1700000000.%1) can0 185#0102030405060708\n").arg(i * 10000 + 5000, 6, 10, QLatin1Char('0')).toLatin1());
+        if (pdos)
+            f.write(QStringLiteral("(1700000000.%1) can0 185#0102030405060708\n")
+                        .arg(i * 10000 + 5000, 6, 10, QLatin1Char('0'))
+                        .toLatin1());
     }
     return path;
 }
 // File ▸ Open log… and its dialog; waits until the log is read.
 bool openByMenu(MainWindow& w, const QString& path) {
     auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) || !waitFor([&] { return name->answered(); })) return false;
+    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
+        !waitFor([&] { return name->answered(); }))
+        return false;
     w.activateWindow();
-    return waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.workspace()->sourceName() == QFileInfo(path).fileName(); });
+    return waitFor([&] {
+        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+               w.workspace()->sourceName() == QFileInfo(path).fileName();
+    });
 }
 }  // namespace
 
@@ -191,21 +201,28 @@ private slots:
                     continue;
                 }
                 ++items;
-                if (a->isEnabled() != expectEnabled) problem += plain(a->text()) + (a->isEnabled() ? QStringLiteral(" enabled; ") : QStringLiteral(" disabled; "));
-                if (!expectEnabled && !a->toolTip().contains(QStringLiteral("Connect to a bus first"))) problem += QStringLiteral("tooltip: ") + a->toolTip() + u';';
-                if (!expectEnabled && !a->statusTip().contains(QStringLiteral("Connect to a bus first"))) problem += QStringLiteral("status tip: ") + a->statusTip() + u';';
+                if (a->isEnabled() != expectEnabled)
+                    problem += plain(a->text()) +
+                               (a->isEnabled() ? QStringLiteral(" enabled; ") : QStringLiteral(" disabled; "));
+                if (!expectEnabled && !a->toolTip().contains(QStringLiteral("Connect to a bus first")))
+                    problem += QStringLiteral("tooltip: ") + a->toolTip() + u';';
+                if (!expectEnabled && !a->statusTip().contains(QStringLiteral("Connect to a bus first")))
+                    problem += QStringLiteral("status tip: ") + a->statusTip() + u';';
             }
             if (items < 3) problem += QStringLiteral("fewer than 3 items; ");
             // The reason is also a line of the menu (a section, not an item one could click).
-            if (!expectEnabled && section != QStringLiteral("Connect to a bus first")) problem += QStringLiteral("section: ") + section;
-            if (expectEnabled && !section.isEmpty()) problem += QStringLiteral("section shown while enabled: ") + section;
+            if (!expectEnabled && section != QStringLiteral("Connect to a bus first"))
+                problem += QStringLiteral("section: ") + section;
+            if (expectEnabled && !section.isEmpty())
+                problem += QStringLiteral("section shown while enabled: ") + section;
             // A click on a disabled item opens nothing.
             if (!expectEnabled) {
                 QAction* first = menuItem(menu, QStringLiteral("CiA 402"));
                 QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(first).center());
                 QTest::qWait(100);
                 for (QWidget* top : QApplication::topLevelWidgets())
-                    if (top != &w && top->isVisible() && !qobject_cast<QMenu*>(top)) problem += QStringLiteral("a window opened: ") + top->windowTitle() + u';';
+                    if (top != &w && top->isVisible() && !qobject_cast<QMenu*>(top))
+                        problem += QStringLiteral("a window opened: ") + top->windowTitle() + u';';
             }
             if (menu->isVisible()) QTest::keyClick(menu, Qt::Key_Escape);
             return problem;
@@ -253,8 +270,8 @@ private slots:
         QVERIFY(w.plotDock()->pickedSignals().empty());
         QVERIFY2(waitFor([&] {
                      const QString t = picker->hintText();
-                     return t.contains(QStringLiteral("No dictionary")) && t.contains(QStringLiteral("185h")) && t.contains(QStringLiteral("node 5")) &&
-                            t.contains(QStringLiteral("Assign dictionary"));
+                     return t.contains(QStringLiteral("No dictionary")) && t.contains(QStringLiteral("185h")) &&
+                            t.contains(QStringLiteral("node 5")) && t.contains(QStringLiteral("Assign dictionary"));
                  }),
                  qPrintable(picker->hintText()));
 
@@ -265,12 +282,16 @@ private slots:
         QVERIFY(waitFor([&] { return odHeader(w)->text().contains(QStringLiteral("Node 5")); }));
         QVERIFY(assignInOdDock(w, QStringLiteral("generic-cia402")));
         const dissect::SignalKey status5{0, 5, 0x6041, 0, -1};
-        QVERIFY2(waitFor([&] { return picker->info(status5) && picker->hintText().isEmpty(); }), qPrintable(picker->hintText()));
+        QVERIFY2(waitFor([&] { return picker->info(status5) && picker->hintText().isEmpty(); }),
+                 qPrintable(picker->hintText()));
         QVERIFY(picker->catalog().size() > 1);
 
         // A log without PDOs: the list says so and names the nodes seen.
         QVERIFY(openByMenu(w, writeLog(dir_.filePath(QStringLiteral("nopdo.log")), false)));
-        QVERIFY2(waitFor([&] { return picker->hintText().contains(QStringLiteral("No PDOs")) && picker->hintText().contains(QStringLiteral("5")); }),
+        QVERIFY2(waitFor([&] {
+                     return picker->hintText().contains(QStringLiteral("No PDOs")) &&
+                            picker->hintText().contains(QStringLiteral("5"));
+                 }),
                  qPrintable(picker->hintText()));
 
         // Another bus: node 2 chosen again, then a listen-only connection: nothing of it stays.
@@ -282,10 +303,13 @@ private slots:
         QVERIFY(w.connectBus(QStringLiteral("sim://?listen-only=1")));
         // No node, or one the new bus has shown since (its boot-ups select the first node seen),
         // as listen-only: never node 2 of the bus before.
-        QVERIFY2(waitFor([&] {
-            const QString t = odHeader(w)->text();
-            return t.contains(QStringLiteral("No node selected")) || (t.contains(QStringLiteral("listen-only: no SDO")) && !t.contains(QStringLiteral("Node 2<")));
-        }), qPrintable(odHeader(w)->text()));
+        QVERIFY2(
+            waitFor([&] {
+                const QString t = odHeader(w)->text();
+                return t.contains(QStringLiteral("No node selected")) ||
+                       (t.contains(QStringLiteral("listen-only: no SDO")) && !t.contains(QStringLiteral("Node 2<")));
+            }),
+            qPrintable(odHeader(w)->text()));
         QTest::qWait(200);
         QVERIFY2(!odHeader(w)->text().contains(QStringLiteral("Node 2<")), qPrintable(odHeader(w)->text()));
     }

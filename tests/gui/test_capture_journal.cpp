@@ -5,10 +5,10 @@
 // the file; old journals are removed at start by the age and size settings.
 #include "app/gui/JournalOffer.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/session/SimulationDemo.h"
-#include "app/gui/session/Workspace.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
+#include "app/gui/session/SimulationDemo.h"
+#include "app/gui/session/Workspace.h"
 #include "app/gui/trace/LogLoadJob.h"
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
@@ -73,7 +73,8 @@ QString makeUnclosedJournal(const QString& name, int frames) {
 // As makeUnclosedJournal, with node 5's heartbeat (operational) before a gap at frame `gapAt`
 // and only PDOs of another node after it; the gap is recorded as the app records one live.
 // secondGap: the adapter was lost a second time, 2 s after it came back, before any frame came.
-QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs, bool secondGap = false) {
+QString makeUnclosedJournalWithGap(const QString& name, int frames, int gapAt, int64_t* lostNs, int64_t* backNs,
+                                   bool secondGap = false) {
     QDir().mkpath(capturesFolder());
     const QString path = capturesFolder() + u'/' + name;
     CaptureJournal j;
@@ -168,7 +169,8 @@ private slots:
         const bool stopped = waitFor([&] { return !w.workspace()->isLive(); }, 20000);
         setrlimit(RLIMIT_FSIZE, &old);
         QVERIFY(stopped);
-        QVERIFY2(w.lastError().startsWith(QStringLiteral("Capture stopped: cannot write the capture journal")), qPrintable(w.lastError()));
+        QVERIFY2(w.lastError().startsWith(QStringLiteral("Capture stopped: cannot write the capture journal")),
+                 qPrintable(w.lastError()));
         const size_t kept = w.workspace()->store()->size();
         QVERIFY(kept > 20);
         logio::PcapReader r;
@@ -176,7 +178,8 @@ private slots:
         const auto read = r.readAll();
         QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
         QVERIFY(read.size() >= 10 && read.size() < kept);
-        for (size_t i = 0; i < read.size(); ++i) QCOMPARE(read[i].timestampNs, w.workspace()->store()->frame(FrameNo(i)).timestampNs);
+        for (size_t i = 0; i < read.size(); ++i)
+            QCOMPARE(read[i].timestampNs, w.workspace()->store()->frame(FrameNo(i)).timestampNs);
         QTest::qWait(300);
         QCOMPARE(w.workspace()->store()->size(), kept);  // stopped: nothing more arrives
     }
@@ -199,7 +202,8 @@ private slots:
     // nodes seen before it as unknown, and Save As to pcapng keeps it.
     void reopenedJournalShowsTheGap() {
         int64_t lost = 0, back = 0;
-        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261125-111111-gap.pcapng"), 300, 200, &lost, &back);
+        const QString path =
+            makeUnclosedJournalWithGap(QStringLiteral("capture-20261125-111111-gap.pcapng"), 300, 200, &lost, &back);
         QVERIFY(!path.isEmpty());
         MainWindow w;
         w.setQuiet(true);
@@ -214,11 +218,13 @@ private slots:
         QAbstractItemModel* nodes = w.nodesDock()->view()->model();
         QVERIFY(waitFor([&] { return nodes->rowCount() == 1; }));
         // The table refreshes on its timer: the node may show up before the gap has reached it.
-        waitFor([&] { return nodes->index(0, NodesModel::State).data().toString() == QStringLiteral("unknown (gap)"); });
+        waitFor(
+            [&] { return nodes->index(0, NodesModel::State).data().toString() == QStringLiteral("unknown (gap)"); });
         QCOMPARE(nodes->index(0, NodesModel::State).data().toString(), QStringLiteral("unknown (gap)"));
 
         const QString saved = data_.filePath(QStringLiteral("saved.pcapng"));
-        LogSaveJob save(saved, QStringLiteral("pcapng"), w.workspace()->store(), std::nullopt, w.workspace()->busNames());
+        LogSaveJob save(saved, QStringLiteral("pcapng"), w.workspace()->store(), std::nullopt,
+                        w.workspace()->busNames());
         save.start();
         save.wait();
         QVERIFY2(!save.hasError(), qPrintable(save.errorString()));
@@ -235,7 +241,8 @@ private slots:
     // frame shows both, in order, and Find finds it by the second one's text.
     void twoGapsBeforeOneFrameBothShow() {
         int64_t lost = 0, back = 0;
-        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261126-111111-gaps.pcapng"), 300, 200, &lost, &back, true);
+        const QString path = makeUnclosedJournalWithGap(QStringLiteral("capture-20261126-111111-gaps.pcapng"), 300, 200,
+                                                        &lost, &back, true);
         QVERIFY(!path.isEmpty());
         MainWindow w;
         w.setQuiet(true);
@@ -244,12 +251,15 @@ private slots:
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(2));
         const QAbstractItemModel* m = w.traceDock()->view()->model();
         QVERIFY(waitFor([&] { return m->rowCount() == 300; }));
-        auto clock = [](int64_t ns) { return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz")); };
+        auto clock = [](int64_t ns) {
+            return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz"));
+        };
         const QString firstLost = clock(lost), secondLost = clock(lost + 3'000'000'000LL);
         for (const int role : {int(Qt::DisplayRole), int(Qt::ToolTipRole)}) {
             const QString text = m->index(200, TraceModel::Summary).data(role).toString();
             QCOMPARE(text.count(QStringLiteral("Bus lost at")), 2);
-            QVERIFY2(text.indexOf(firstLost) >= 0 && text.indexOf(firstLost) < text.indexOf(secondLost), qPrintable(text));
+            QVERIFY2(text.indexOf(firstLost) >= 0 && text.indexOf(firstLost) < text.indexOf(secondLost),
+                     qPrintable(text));
         }
         QVERIFY(m->index(199, TraceModel::Summary).data().toString().indexOf(QStringLiteral("Bus lost")) < 0);
         QVERIFY(m->index(201, TraceModel::Summary).data().toString().indexOf(QStringLiteral("Bus lost")) < 0);
@@ -295,7 +305,10 @@ private slots:
         QVERIFY(spill.startsWith(capturesFolder() + QStringLiteral("/opened/")));
         QVERIFY(QFileInfo::exists(spill));
         const bool within = waitFor([&] { return store->memoryBytes() <= (size_t(6) << 20); });
-        QVERIFY2(within, qPrintable(QStringLiteral("%1 bytes in RAM, %2 chunks").arg(store->memoryBytes()).arg(store->residentChunks())));
+        QVERIFY2(
+            within,
+            qPrintable(
+                QStringLiteral("%1 bytes in RAM, %2 chunks").arg(store->memoryBytes()).arg(store->residentChunks())));
         QVERIFY2(store->residentChunks() <= 3, qPrintable(QString::number(store->residentChunks())));
         const uint64_t pageInsBefore = store->pageIns();
         for (uint32_t i : {0u, 1u, 3u, 70000u, 3 * TraceStore::kChunkSize + 10, kFrames - 1}) {
@@ -339,8 +352,7 @@ private slots:
         QFile::remove(CaptureJournal::sidecarOf(old));  // closed, 5 days old
         const QString recent = makeUnclosedJournal(QStringLiteral("capture-recent.pcapng"), 5);
         QFile::remove(CaptureJournal::sidecarOf(recent));
-        for (const QString& p : {unclosedOld, old})
-            QVERIFY(setModified(p, QDateTime::currentDateTime().addDays(-5)));
+        for (const QString& p : {unclosedOld, old}) QVERIFY(setModified(p, QDateTime::currentDateTime().addDays(-5)));
         MainWindow w;
         w.setQuiet(true);
         QVERIFY(waitFor([&] { return !QFileInfo::exists(old); }));  // on a worker thread

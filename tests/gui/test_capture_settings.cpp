@@ -16,8 +16,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
-#include <QRegularExpression>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -107,7 +107,8 @@ private slots:
         const QRegularExpression decimalUnit(QStringLiteral("\\d ?[KMGT]B\\b| [KMGT]B\\b"));
         for (const QWidget* c : d->findChildren<QWidget*>()) {
             QVERIFY2(!decimalUnit.match(c->toolTip()).hasMatch(), qPrintable(c->toolTip()));
-            if (const auto* l = qobject_cast<const QLabel*>(c)) QVERIFY2(!decimalUnit.match(l->text()).hasMatch(), qPrintable(l->text()));
+            if (const auto* l = qobject_cast<const QLabel*>(c))
+                QVERIFY2(!decimalUnit.match(l->text()).hasMatch(), qPrintable(l->text()));
         }
         QTest::mouseClick(d->buttons()->button(QDialogButtonBox::Ok), Qt::LeftButton);
         QVERIFY(waitFor([&] { return !w.findChild<CaptureSettingsDialog*>(); }));

@@ -10,12 +10,12 @@
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTableWidget>
-#include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -114,13 +114,14 @@ private slots:
     // brings it up at the chosen bit rate (ip-link(8) "type can bitrate").
     void socketcanInterfacesShowStateAndBringUpCommand() {
         if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
-        StandInIp ip("cat <<'EOF'\n"
-                R"([{"ifname":"lo","flags":["UP"],"link_type":"loopback"},)"
-                R"({"ifname":"can0","flags":["NOARP","ECHO"],"operstate":"DOWN","link_type":"can","linkinfo":{"info_kind":"can",)"
-                R"("info_data":{"state":"STOPPED","bittiming":{"bitrate":250000}}}},)"
-                R"({"ifname":"can1","flags":["NOARP","UP","LOWER_UP"],"operstate":"UP","link_type":"can","linkinfo":{"info_kind":"can",)"
-                R"("info_data":{"state":"BUS-OFF","berr_counter":{"tx":256,"rx":0},"bittiming":{"bitrate":500000}}}}])"
-                "\nEOF\n");
+        StandInIp ip(
+            "cat <<'EOF'\n"
+            R"([{"ifname":"lo","flags":["UP"],"link_type":"loopback"},)"
+            R"({"ifname":"can0","flags":["NOARP","ECHO"],"operstate":"DOWN","link_type":"can","linkinfo":{"info_kind":"can",)"
+            R"("info_data":{"state":"STOPPED","bittiming":{"bitrate":250000}}}},)"
+            R"({"ifname":"can1","flags":["NOARP","UP","LOWER_UP"],"operstate":"UP","link_type":"can","linkinfo":{"info_kind":"can",)"
+            R"("info_data":{"state":"BUS-OFF","berr_counter":{"tx":256,"rx":0},"bittiming":{"bitrate":500000}}}}])"
+            "\nEOF\n");
         QVERIFY(ip.ok());
         ConnectDialog d;
         d.show();
@@ -138,7 +139,8 @@ private slots:
         // Choose 125 kbit/s: the command follows the choice.
         auto* bitrate = d.findChild<QComboBox*>(QStringLiteral("bitrate"));
         QVERIFY(pickBitrate(bitrate, 125000));
-        QVERIFY2(state->text().contains(QStringLiteral("sudo ip link set can0 up type can bitrate 125000")), qPrintable(state->text()));
+        QVERIFY2(state->text().contains(QStringLiteral("sudo ip link set can0 up type can bitrate 125000")),
+                 qPrintable(state->text()));
         // can1 is up but bus-off: say so.
         device->setFocus();
         QTest::keyClick(device, Qt::Key_Down);
@@ -154,15 +156,20 @@ private slots:
         // Lists can0 down until "link set can0 up type can bitrate N" ran; logs every other call.
         QTemporaryDir dir;
         const QString calls = dir.filePath(QStringLiteral("calls"));
-        StandInIp ip(QStringLiteral("if [ \"$1\" = -details ]; then\n"
-                               "  if [ -f '%1.up' ]; then r=$(cat '%1.up'); flags='\"NOARP\",\"UP\",\"LOWER_UP\"'; st=ERROR-ACTIVE;\n"
-                               "  else r=250000; flags='\"NOARP\"'; st=STOPPED; fi\n"
-                               "  echo \"[{\\\"ifname\\\":\\\"can0\\\",\\\"flags\\\":[$flags],\\\"link_type\\\":\\\"can\\\",\\\"linkinfo\\\":{\\\"info_kind\\\":\\\"can\\\","
-                               "\\\"info_data\\\":{\\\"state\\\":\\\"$st\\\",\\\"bittiming\\\":{\\\"bitrate\\\":$r}}}}]\"\n  exit 0\nfi\n"
-                               "echo \"$*\" >> '%1'\n"
-                               "if [ \"$4\" = up ] && [ \"$7\" = bitrate ]; then echo \"$8\" > '%1.up'; fi\n")
-                    .arg(calls)
-                    .toUtf8());
+        StandInIp ip(
+            QStringLiteral(
+                "if [ \"$1\" = -details ]; then\n"
+                "  if [ -f '%1.up' ]; then r=$(cat '%1.up'); flags='\"NOARP\",\"UP\",\"LOWER_UP\"'; st=ERROR-ACTIVE;\n"
+                "  else r=250000; flags='\"NOARP\"'; st=STOPPED; fi\n"
+                "  echo "
+                "\"[{\\\"ifname\\\":\\\"can0\\\",\\\"flags\\\":[$flags],\\\"link_type\\\":\\\"can\\\",\\\"linkinfo\\\":"
+                "{\\\"info_kind\\\":\\\"can\\\","
+                "\\\"info_data\\\":{\\\"state\\\":\\\"$st\\\",\\\"bittiming\\\":{\\\"bitrate\\\":$r}}}}]\"\n  exit "
+                "0\nfi\n"
+                "echo \"$*\" >> '%1'\n"
+                "if [ \"$4\" = up ] && [ \"$7\" = bitrate ]; then echo \"$8\" > '%1.up'; fi\n")
+                .arg(calls)
+                .toUtf8());
         QVERIFY(ip.ok());
         ConnectDialog d;
         d.show();
@@ -179,12 +186,14 @@ private slots:
         QVERIFY(bringUp->isVisible());
         QVERIFY(bringUp->isEnabled());
         QTest::mouseClick(bringUp, Qt::LeftButton);
-        QVERIFY2(coscope::testing::waitFor([&] { return state->text().contains(QStringLiteral("can0 is up")); }, 5000), qPrintable(state->text()));
+        QVERIFY2(coscope::testing::waitFor([&] { return state->text().contains(QStringLiteral("can0 is up")); }, 5000),
+                 qPrintable(state->text()));
         QVERIFY2(state->text().contains(QStringLiteral("125")), qPrintable(state->text()));
         QVERIFY(!bringUp->isVisible());
         QFile log(calls);
         QVERIFY(log.open(QIODevice::ReadOnly));
-        QCOMPARE(QString::fromUtf8(log.readAll()).trimmed(), QStringLiteral("link set can0 up type can bitrate 125000 restart-ms 100"));
+        QCOMPARE(QString::fromUtf8(log.readAll()).trimmed(),
+                 QStringLiteral("link set can0 up type can bitrate 125000 restart-ms 100"));
     }
 
     void socketcandRoundTrip() {
@@ -275,7 +284,8 @@ private slots:
 
     void noSocketcanInterfaceSaysWhatToDo() {
         if (!QCanBus::instance()->plugins().contains(QStringLiteral("socketcan"))) QSKIP("no socketcan plugin");
-        if (!QCanBus::instance()->availableDevices(QStringLiteral("socketcan")).isEmpty()) QSKIP("this machine has CAN interfaces");
+        if (!QCanBus::instance()->availableDevices(QStringLiteral("socketcan")).isEmpty())
+            QSKIP("this machine has CAN interfaces");
         ConnectDialog d;
         d.show();
         QVERIFY(QTest::qWaitForWindowExposed(&d));
@@ -283,7 +293,9 @@ private slots:
         auto* hint = d.findChild<QLabel*>(QStringLiteral("noDevices"));
         QVERIFY(hint);
         QVERIFY(coscope::testing::waitFor([&] { return hint->isVisible(); }, 5000));
-        QVERIFY2(hint->text().contains(QStringLiteral("No CAN interfaces")) && hint->text().contains(QStringLiteral("vcan")), qPrintable(hint->text()));
+        QVERIFY2(
+            hint->text().contains(QStringLiteral("No CAN interfaces")) && hint->text().contains(QStringLiteral("vcan")),
+            qPrintable(hint->text()));
         QVERIFY(chooseBackend(d, QStringLiteral("sim")));
         QVERIFY(!hint->isVisible());
     }
@@ -292,7 +304,8 @@ private slots:
         RecentConnections::add(QStringLiteral("sim://"));
         RecentConnections::add(QStringLiteral("virtualcan://can0"));
         RecentConnections::add(QStringLiteral("sim://"));
-        QCOMPARE(RecentConnections::list(), (QStringList{QStringLiteral("sim://"), QStringLiteral("virtualcan://can0")}));
+        QCOMPARE(RecentConnections::list(),
+                 (QStringList{QStringLiteral("sim://"), QStringLiteral("virtualcan://can0")}));
         for (int i = 0; i < 15; ++i) RecentConnections::add(QStringLiteral("virtualcan://can%1").arg(i));
         QCOMPARE(RecentConnections::list().size(), 10);
         RecentConnections::clear();

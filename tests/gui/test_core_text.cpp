@@ -59,12 +59,14 @@ void addTree(const dissect::Dissection& d, Produced& p) {
 }
 
 // The nodes of the sample: the generic CiA 402 drive (1), the Delta ASDA-A2 (2), the AIMOTOR (3).
-const std::map<int, QString> kDictionaries = {{1, QStringLiteral("generic-cia402")}, {2, QStringLiteral("delta-asda-a2")}, {3, QStringLiteral("aimotor")}};
+const std::map<int, QString> kDictionaries = {
+    {1, QStringLiteral("generic-cia402")}, {2, QStringLiteral("delta-asda-a2")}, {3, QStringLiteral("aimotor")}};
 
 // The frames beyond the CiA 402 drive's (CoreTextSamples.h).
 std::vector<CanFrame> moreFrames() {
     std::vector<CanFrame> out = coretextsamples::canErrorFrames();
-    for (auto more : {coretextsamples::lssFrames(), coretextsamples::vendorEmcyFrames()}) out.insert(out.end(), more.begin(), more.end());
+    for (auto more : {coretextsamples::lssFrames(), coretextsamples::vendorEmcyFrames()})
+        out.insert(out.end(), more.begin(), more.end());
     return out;
 }
 
@@ -101,8 +103,8 @@ Produced producerOutputs() {
         addTree(d, p);
         health.add(f, d, ctx);
     };
-    feed(0x701, {0x00});        // boot-up
-    feed(0x000, {0x80, 0x01});  // NMT enter pre-operational, node 1
+    feed(0x701, {0x00});                                   // boot-up
+    feed(0x000, {0x80, 0x01});                             // NMT enter pre-operational, node 1
     for (int i = 0; i < 6; ++i) feed(0x701, {0x7F}, 100);  // heartbeat every 100 ms
     // SDO (CiA 301 §7.2.4.3): statusword, controlword and modes of operation with their meaning.
     for (uint16_t sw : {0x0000, 0x0250, 0x0231, 0x0233, 0x0637, 0x0617, 0x021F, 0x0208, 0x1637}) {
@@ -153,8 +155,10 @@ Produced producerOutputs() {
     const dissect::HealthReport r = health.report(&ctx, now + 2000 * kMs);
     for (const auto& f : r.findings) p.lines << f.text;
     // The names the wizards and the OD dock show.
-    for (int s = 0; s <= int(canopen::ds402::State::Unknown); ++s) p.lines << canopen::ds402::stateName(canopen::ds402::State(s));
-    for (int c = 0; c <= int(canopen::ds402::Command::FaultReset); ++c) p.lines << canopen::ds402::commandName(canopen::ds402::Command(c));
+    for (int s = 0; s <= int(canopen::ds402::State::Unknown); ++s)
+        p.lines << canopen::ds402::stateName(canopen::ds402::State(s));
+    for (int c = 0; c <= int(canopen::ds402::Command::FaultReset); ++c)
+        p.lines << canopen::ds402::commandName(canopen::ds402::Command(c));
     for (int m = -1; m <= 11; ++m) p.lines << canopen::ds402::modeName(int8_t(m));
     for (int b = 0; b < 16; ++b) p.lines << canopen::ds402::statuswordBitName(b);
     for (QStringList* l : {&p.lines, &p.warnings}) {
@@ -169,7 +173,8 @@ Produced producerOutputs() {
             }
     }
     // Longest first, so that "Modes of operation display" goes before "Modes of operation".
-    std::sort(p.objectNames.begin(), p.objectNames.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+    std::sort(p.objectNames.begin(), p.objectNames.end(),
+              [](const QString& a, const QString& b) { return a.size() > b.size(); });
     p.objectNames.removeAll(QString());
     return p;
 }
@@ -194,9 +199,11 @@ private slots:
         auto check = [&](const char* source) {
             const QString t = QCoreApplication::translate("CoreText", source);
             // A shape may keep its letters; every other text is written in Chinese.
-            if (t == QString::fromUtf8(source) && QString::fromUtf8(source).contains(QRegularExpression(QStringLiteral("[A-Za-z]"))))
+            if (t == QString::fromUtf8(source) &&
+                QString::fromUtf8(source).contains(QRegularExpression(QStringLiteral("[A-Za-z]"))))
                 missing << QString::fromUtf8(source);
-            else if (!t.contains(han) && QString::fromUtf8(source).contains(QRegularExpression(QStringLiteral("[a-z]{2}"))))
+            else if (!t.contains(han) &&
+                     QString::fromUtf8(source).contains(QRegularExpression(QStringLiteral("[a-z]{2}"))))
                 missing << QString::fromUtf8(source);
         };
         for (auto list : coretext::all())
@@ -237,7 +244,9 @@ private slots:
         for (const QString& english : now.lines) check(english, coreLines(english));
         for (const QString& english : now.warnings) check(english, coreText(english));
         for (const QString& l : left) qInfo("English left: %s", qPrintable(l));
-        QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 text(s) with English left (listed above)").arg(code).arg(left.size())));
+        QVERIFY2(
+            left.isEmpty(),
+            qPrintable(QStringLiteral("%1: %2 text(s) with English left (listed above)").arg(code).arg(left.size())));
     }
 
     // In English the texts pass unchanged (the CLI and an English UI read the same words).
@@ -266,7 +275,8 @@ private slots:
         log.consume(*store, 0, store->size());
         QVERIFY(language::apply(code));
         QStringList objectNames = vendorAlarmNames(code);
-        std::sort(objectNames.begin(), objectNames.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+        std::sort(objectNames.begin(), objectNames.end(),
+                  [](const QString& a, const QString& b) { return a.size() > b.size(); });
         QStringList left;
         QStringList shownAll;
         int busErrors = 0, emcy = 0;
@@ -281,11 +291,15 @@ private slots:
         QCOMPARE(busErrors, int(coretextsamples::canErrorFrames().size()));
         // A frame with two problems reads as two items, the location inside the first.
         const QString two = QCoreApplication::translate("CoreText", "%1; %2")
-                                .arg(coreText(QStringLiteral("protocol violation: stuff error in the CRC sequence")), coreText(QStringLiteral("bus error")));
-        QVERIFY2(std::any_of(shownAll.begin(), shownAll.end(), [&](const QString& s) { return s == two; }), qPrintable(two));
+                                .arg(coreText(QStringLiteral("protocol violation: stuff error in the CRC sequence")),
+                                     coreText(QStringLiteral("bus error")));
+        QVERIFY2(std::any_of(shownAll.begin(), shownAll.end(), [&](const QString& s) { return s == two; }),
+                 qPrintable(two));
         QCOMPARE(emcy, 12);
         for (const QString& l : left) qInfo("English left: %s", qPrintable(l));
-        QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1: %2 event(s) with English left (listed above)").arg(code).arg(left.size())));
+        QVERIFY2(
+            left.isEmpty(),
+            qPrintable(QStringLiteral("%1: %2 event(s) with English left (listed above)").arg(code).arg(left.size())));
     }
 };
 

@@ -36,7 +36,8 @@ private slots:
         bool ok = false;
         const double seconds = time.toDouble(&ok);
         QVERIFY2(ok && seconds >= 0 && seconds < 60, qPrintable(time));
-        QVERIFY2(m->index(0, 3).data().toString().contains(QStringLiteral("socketcand")), qPrintable(m->index(0, 3).data().toString()));
+        QVERIFY2(m->index(0, 3).data().toString().contains(QStringLiteral("socketcand")),
+                 qPrintable(m->index(0, 3).data().toString()));
     }
 };
 

@@ -43,7 +43,8 @@ namespace {
 // candump -L: two boot-ups and `frames` frames of a PDO (COB-ID 2A0h) nothing describes.
 QString writeLog(const QString& path, int frames) {
     QStringList l = {QStringLiteral("(100.000000) can0 710#00"), QStringLiteral("(100.001000) can0 720#00")};
-    for (int i = 0; i < frames; ++i) l << QStringLiteral("(%1) can0 2A0#00%2").arg(101.0 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0'));
+    for (int i = 0; i < frames; ++i)
+        l << QStringLiteral("(%1) can0 2A0#00%2").arg(101.0 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0'));
     QDir().mkpath(QFileInfo(path).absolutePath());
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly)) return {};
@@ -54,10 +55,15 @@ QString writeLog(const QString& path, int frames) {
 // File ▸ Open log… answered with `path`; waits until it is read.
 bool openByMenu(MainWindow& w, const QString& path) {
     auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) || !waitFor([&] { return name->answered(); })) return false;
+    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
+        !waitFor([&] { return name->answered(); }))
+        return false;
     w.activateWindow();
     if (!QTest::qWaitForWindowActive(&w)) return false;
-    return waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.workspace()->sourceName() == QFileInfo(path).fileName(); });
+    return waitFor([&] {
+        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+               w.workspace()->sourceName() == QFileInfo(path).fileName();
+    });
 }
 
 // Opens File ▸ `item`'s dialog, notes the folder it starts in and closes it with Escape.
@@ -70,7 +76,8 @@ QString dialogFolder(MainWindow& w, const QString& item) {
         QTest::keyClick(dialog, Qt::Key_Escape);
         return true;
     });
-    if (!clickMenuItem(w, QStringLiteral("File"), item) || !waitFor([&] { return look.answered(); })) return QStringLiteral("(no dialog)");
+    if (!clickMenuItem(w, QStringLiteral("File"), item) || !waitFor([&] { return look.answered(); }))
+        return QStringLiteral("(no dialog)");
     w.activateWindow();
     return folder;
 }
@@ -151,13 +158,15 @@ private slots:
 
         QMenu* recent = openRecent(w);
         QVERIFY(recent);
-        QCOMPARE(texts(recent), (QStringList{QStringLiteral("1 c.log (not found)"), QStringLiteral("2 b.log"), QStringLiteral("3 a.log"),
-                                             QStringLiteral("Clear recent")}));
+        QCOMPARE(texts(recent), (QStringList{QStringLiteral("1 c.log (not found)"), QStringLiteral("2 b.log"),
+                                             QStringLiteral("3 a.log"), QStringLiteral("Clear recent")}));
         QVERIFY(!recent->actions().at(0)->isEnabled());
         QCOMPARE(recent->actions().at(1)->toolTip(), QDir::toNativeSeparators(b));
         // A click on a.log opens it.
         QTest::mouseClick(recent, Qt::LeftButton, {}, recent->actionGeometry(recent->actions().at(2)).center());
-        QVERIFY(waitFor([&] { return w.workspace()->sourceName() == QStringLiteral("a.log") && w.workspace()->loadJob()->isDone(); }));
+        QVERIFY(waitFor([&] {
+            return w.workspace()->sourceName() == QStringLiteral("a.log") && w.workspace()->loadJob()->isDone();
+        }));
         QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() == 7; }));
 
         recent = openRecent(w);
@@ -198,13 +207,16 @@ private slots:
             type(modal->findChild<QLineEdit*>(QStringLiteral("rawCobId")), QStringLiteral("0x2A0"));
             type(modal->findChild<QSpinBox*>(QStringLiteral("rawStart")), QStringLiteral("8"));
             type(modal->findChild<QSpinBox*>(QStringLiteral("rawLength")), QStringLiteral("8"));
-            QTest::mouseClick(modal->findChild<QDialogButtonBox*>(QStringLiteral("buttonBox"))->button(QDialogButtonBox::Ok), Qt::LeftButton);
+            QTest::mouseClick(
+                modal->findChild<QDialogButtonBox*>(QStringLiteral("buttonBox"))->button(QDialogButtonBox::Ok),
+                Qt::LeftButton);
             typed = true;
             return true;
         });
         QTest::mouseClick(dock->findChild<QToolButton*>(QStringLiteral("addRawSignal")), Qt::LeftButton);
         QVERIFY(typed);
-        QVERIFY(waitFor([&] { return dock->view()->plotted().size() == 1 && dock->view()->drawnPoints(0).size() == 30u; }));
+        QVERIFY(
+            waitFor([&] { return dock->view()->plotted().size() == 1 && dock->view()->drawnPoints(0).size() == 30u; }));
         const auto recorder = w.workspace()->signalRecorder();
         const auto store = w.workspace()->store();
 
@@ -229,7 +241,8 @@ private slots:
         QVERIFY(waitFor([&] { return name->answered(); }));
         QVERIFY(waitFor([&] { return box.answered(); }));
         QVERIFY2(said.contains(QStringLiteral("notes.log")), qPrintable(said));
-        QVERIFY2(detail.contains(QStringLiteral("line 1:")) && detail.contains(QStringLiteral("line 2:")), qPrintable(detail));
+        QVERIFY2(detail.contains(QStringLiteral("line 1:")) && detail.contains(QStringLiteral("line 2:")),
+                 qPrintable(detail));
 
         // Nothing changed: the same trace, nodes, recorder and plotted points.
         QCOMPARE(w.workspace()->sourceName(), QStringLiteral("good.log"));
@@ -258,7 +271,9 @@ private slots:
         auto name2 = answerFileDialog(bin);
         QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")));
         QVERIFY(waitFor([&] { return box2.answered(); }));
-        QVERIFY2(said.contains(QStringLiteral("junk.bin")) && said.contains(QStringLiteral("not a format CoScope reads")), qPrintable(said));
+        QVERIFY2(
+            said.contains(QStringLiteral("junk.bin")) && said.contains(QStringLiteral("not a format CoScope reads")),
+            qPrintable(said));
         QCOMPARE(w.workspace()->store(), store);
         QCOMPARE(w.traceDock()->model()->rowCount(), 32);
     }

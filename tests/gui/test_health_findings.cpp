@@ -84,7 +84,8 @@ private slots:
         QVERIFY(testing::clickDockTab(w, dock->windowTitle()));
         QVERIFY(waitFor([&] { return dock->isVisible(); }, 3000));
         HealthModel* findings = dock->findingsModel();
-        QVERIFY2(waitFor([&] { return findings->rowCount() > 0 && findings->report().bus.frames == 70; }, 10000), qPrintable(QString::number(findings->rowCount())));
+        QVERIFY2(waitFor([&] { return findings->rowCount() > 0 && findings->report().bus.frames == 70; }, 10000),
+                 qPrintable(QString::number(findings->rowCount())));
         // The verdict on top: one error (the lost heartbeat), nothing else.
         QCOMPARE(dock->verdictLabel()->text(), QStringLiteral("Problems found: 1 error"));
         const dissect::HealthFinding& f = findings->report().findings.front();
@@ -96,8 +97,11 @@ private slots:
         const QRect cell = view->visualRect(findings->index(0, HealthModel::Text));
         QVERIFY(cell.isValid());
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, cell.center());
-        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 26; }, 5000), qPrintable(QString::number(currentTraceFrame(w))));
-        QVERIFY2(dock->detailLabel()->text().contains(QStringLiteral("Node 5's heartbeat was missing 2 time(s) after regular beats")), qPrintable(dock->detailLabel()->text()));
+        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 26; }, 5000),
+                 qPrintable(QString::number(currentTraceFrame(w))));
+        QVERIFY2(dock->detailLabel()->text().contains(
+                     QStringLiteral("Node 5's heartbeat was missing 2 time(s) after regular beats")),
+                 qPrintable(dock->detailLabel()->text()));
         QVERIFY(dock->detailLabel()->text().contains(QStringLiteral("Check:")));
         QVERIFY(!dock->previousButton()->isEnabled());
         QVERIFY(dock->nextButton()->isEnabled());
@@ -105,12 +109,14 @@ private slots:
         // F8 (Next occurrence) in the findings list: the second frame.
         view->setFocus();
         QTest::keyClick(view, Qt::Key_F8);
-        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 51; }, 5000), qPrintable(QString::number(currentTraceFrame(w))));
+        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 51; }, 5000),
+                 qPrintable(QString::number(currentTraceFrame(w))));
         QVERIFY(!dock->nextButton()->isEnabled());
         QVERIFY(dock->previousButton()->isEnabled());
         // The Previous occurrence button: back to the first.
         QTest::mouseClick(dock->previousButton(), Qt::LeftButton);
-        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 26; }, 5000), qPrintable(QString::number(currentTraceFrame(w))));
+        QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 26; }, 5000),
+                 qPrintable(QString::number(currentTraceFrame(w))));
     }
 };
 

@@ -43,7 +43,8 @@ class HealthViewTest : public QObject {
 
     sim::SimNetwork* net() { return static_cast<SimBus*>(w_->workspace()->bus())->network(); }
     void setHeartbeat(int node, uint16_t ms) {
-        net()->runOnNetworkThread([&] { net()->device(static_cast<uint8_t>(node))->setValue(0x1017, 0, od::Value::unsignedInt(ms)); });
+        net()->runOnNetworkThread(
+            [&] { net()->device(static_cast<uint8_t>(node))->setValue(0x1017, 0, od::Value::unsignedInt(ms)); });
     }
 
 private slots:
@@ -95,15 +96,20 @@ private slots:
 
         QVERIFY2(waitFor([&] {
                      const QString all = column(findings, HealthModel::Text).join(u'\n');
-                     return all.contains(QStringLiteral("node 2 heartbeat stopped")) && all.contains(QStringLiteral("from node 1"));
+                     return all.contains(QStringLiteral("node 2 heartbeat stopped")) &&
+                            all.contains(QStringLiteral("from node 1"));
                  }),
                  qPrintable(column(findings, HealthModel::Text).join(u'\n')));
         // The worst first: the stopped heartbeat is critical, on top.
-        QCOMPARE(findings->data(findings->index(0, HealthModel::Severity), HealthModel::RawRole).toInt(), int(dissect::HealthFinding::Critical));
-        QVERIFY(findings->data(findings->index(0, HealthModel::Text)).toString().contains(QStringLiteral("node 2 heartbeat stopped")));
+        QCOMPARE(findings->data(findings->index(0, HealthModel::Severity), HealthModel::RawRole).toInt(),
+                 int(dissect::HealthFinding::Critical));
+        QVERIFY(findings->data(findings->index(0, HealthModel::Text))
+                    .toString()
+                    .contains(QStringLiteral("node 2 heartbeat stopped")));
         QVERIFY(column(findings, HealthModel::Text).join(u'\n').contains(QStringLiteral("EMCY ")));
         const int row2 = rowOfNode(nodes, 2), row1 = rowOfNode(nodes, 1);
-        QCOMPARE(nodes->data(nodes->index(row2, HealthModel::ErrorControl)).toString(), QStringLiteral("heartbeat stopped"));
+        QCOMPARE(nodes->data(nodes->index(row2, HealthModel::ErrorControl)).toString(),
+                 QStringLiteral("heartbeat stopped"));
         QVERIFY(nodes->data(nodes->index(row2, HealthModel::Timeouts)).toInt() >= 1);
         QVERIFY(nodes->data(nodes->index(row1, HealthModel::Emcys)).toInt() >= 1);
         // The views show the rows, and the load plot has data.

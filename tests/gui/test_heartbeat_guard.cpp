@@ -43,7 +43,7 @@ using coscope::testing::waitFor;
 
 namespace {
 constexpr int kNode = 3;
-constexpr int16_t kOldAbortOption = 2;     // set before the test: disable voltage (the EDS default is 1)
+constexpr int16_t kOldAbortOption = 2;        // set before the test: disable voltage (the EDS default is 1)
 constexpr uint32_t kArmedEntry = 0x007F012C;  // CoScope's node 127, 3 x 100 ms (CiA 301 §7.5.2.18)
 
 void click(QWidget* w) { QTest::mouseClick(w, Qt::LeftButton, {}, w->rect().center()); }
@@ -57,7 +57,9 @@ W* findTopLevel(const QString& name = {}) {
 
 // Our own SDO download (CiA 301 §7.2.4.3.3) of `index`:`sub` to node 3 with the value `v`.
 bool isWrite(const CanFrame& f, uint16_t index, uint8_t sub, uint32_t v, int bytes) {
-    if (!f.isTx() || f.id != 0x600u + kNode || f.len != 8 || f.data[1] != (index & 0xFF) || f.data[2] != (index >> 8) || f.data[3] != sub) return false;
+    if (!f.isTx() || f.id != 0x600u + kNode || f.len != 8 || f.data[1] != (index & 0xFF) || f.data[2] != (index >> 8) ||
+        f.data[3] != sub)
+        return false;
     for (int i = 0; i < bytes; ++i)
         if (f.data[4 + i] != ((v >> (8 * i)) & 0xFF)) return false;
     return true;
@@ -84,12 +86,14 @@ class TestHeartbeatGuard : public QObject {
     }
     uint64_t driveValue(uint16_t index, uint8_t sub) const {
         uint64_t v = 0;
-        net_->runOnNetworkThread([&] { v = net_->device(kNode)->value(index, sub).value_or(od::Value{}).toUInt64().value_or(0); });
+        net_->runOnNetworkThread(
+            [&] { v = net_->device(kNode)->value(index, sub).value_or(od::Value{}).toUInt64().value_or(0); });
         return v;
     }
     int16_t abortOption() const {
         int64_t v = 0;
-        net_->runOnNetworkThread([&] { v = net_->device(kNode)->value(0x6007, 0).value_or(od::Value{}).toInt64().value_or(-99); });
+        net_->runOnNetworkThread(
+            [&] { v = net_->device(kNode)->value(0x6007, 0).value_or(od::Value{}).toInt64().value_or(-99); });
         return static_cast<int16_t>(v);
     }
     QString masterStatus() const {
@@ -106,7 +110,8 @@ class TestHeartbeatGuard : public QObject {
         QVERIFY(clickMenuItem(*w_, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
         QVERIFY(waitFor([&] { return ws()->canTransmit(); }));
         net_ = static_cast<SimBus*>(ws()->bus())->sharedNetwork();
-        net_->runOnNetworkThread([&] { net_->device(kNode)->setValue(0x6007, 0, od::Value::signedInt(kOldAbortOption)); });
+        net_->runOnNetworkThread(
+            [&] { net_->device(kNode)->setValue(0x6007, 0, od::Value::signedInt(kOldAbortOption)); });
         QCOMPARE(abortOption(), kOldAbortOption);
         QVERIFY(waitFor([&] {
             QMenu* menu = coscope::testing::openMenu(*w_, QStringLiteral("Commission"));
@@ -121,10 +126,13 @@ class TestHeartbeatGuard : public QObject {
         QVERIFY(waitFor([&] { return (wiz_ = findTopLevel<Ds402Wizard>()) != nullptr; }));
         QVERIFY(QTest::qWaitForWindowExposed(wiz_));
         auto* nodes = wiz_->findChild<QComboBox*>(QStringLiteral("nodeCombo"));
-        QVERIFY(waitFor([&] { return nodes->findText(QStringLiteral("Node %1").arg(kNode), Qt::MatchStartsWith) >= 0; }, 20000));
+        QVERIFY(waitFor([&] { return nodes->findText(QStringLiteral("Node %1").arg(kNode), Qt::MatchStartsWith) >= 0; },
+                        20000));
         nodes->setFocus();
         QTest::keyClick(nodes, Qt::Key_Home);
-        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node %1").arg(kNode)); ++i) QTest::keyClick(nodes, Qt::Key_Down);
+        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node %1").arg(kNode));
+             ++i)
+            QTest::keyClick(nodes, Qt::Key_Down);
         QVERIFY(waitFor([&] { return wiz_->node() == kNode && wiz_->shownState() == State::SwitchOnDisabled; }, 8000));
     }
 
@@ -141,11 +149,16 @@ class TestHeartbeatGuard : public QObject {
     void enableAndAnswer(bool guard, bool remember) {
         QVERIFY(step(Command::Shutdown, State::ReadyToSwitchOn));
         QMessageBox* box = nullptr;
-        QVERIFY2(waitFor([&] { return (box = findTopLevel<QMessageBox>(QStringLiteral("heartbeatGuardQuestion"))) != nullptr; }, 5000), "no heartbeat guard question");
+        QVERIFY2(
+            waitFor(
+                [&] { return (box = findTopLevel<QMessageBox>(QStringLiteral("heartbeatGuardQuestion"))) != nullptr; },
+                5000),
+            "no heartbeat guard question");
         QVERIFY2(box->text().contains(QStringLiteral("Node 3 is enabled by CoScope")), qPrintable(box->text()));
         const QString info = box->informativeText();
-        QVERIFY2(info.contains(QStringLiteral("every 100 ms")) && info.contains(QStringLiteral("1016h")) && info.contains(QStringLiteral("6007h")) &&
-                     info.contains(QStringLiteral("within 300 ms")) && info.contains(QStringLiteral("put back")),
+        QVERIFY2(info.contains(QStringLiteral("every 100 ms")) && info.contains(QStringLiteral("1016h")) &&
+                     info.contains(QStringLiteral("6007h")) && info.contains(QStringLiteral("within 300 ms")) &&
+                     info.contains(QStringLiteral("put back")),
                  qPrintable(info));
         QVERIFY(box->windowModality() == Qt::NonModal);  // the wizard stays usable meanwhile
         if (remember) click(box->findChild<QCheckBox*>(QStringLiteral("rememberAnswer")));
@@ -155,12 +168,24 @@ class TestHeartbeatGuard : public QObject {
 
     void checkArmed() {
         QVERIFY2(waitFor([&] { return driveValue(0x1016, 1) == kArmedEntry && abortOption() == 3; }, 5000),
-                 qPrintable(QStringLiteral("1016h:01 = %1, 6007h = %2").arg(driveValue(0x1016, 1), 0, 16).arg(abortOption())));
+                 qPrintable(
+                     QStringLiteral("1016h:01 = %1, 6007h = %2").arg(driveValue(0x1016, 1), 0, 16).arg(abortOption())));
         const TraceStore& store = *ws()->store();
         QVERIFY(!framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x1016, 1, kArmedEntry, 4); }).empty());
         QVERIFY(!framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x6007, 0, 3, 2); }).empty());
-        QVERIFY(waitFor([&] { return framesWhere(*ws()->store(), [](const CanFrame& f) { return f.isTx() && f.id == 0x77F; }).size() >= 2; }, 3000));
-        QVERIFY2(waitFor([&] { return masterStatus().contains(QStringLiteral("Heartbeat 100 ms")) && masterStatus().contains(QStringLiteral("guarding node 3")); }, 3000),
+        QVERIFY(waitFor(
+            [&] {
+                return framesWhere(*ws()->store(), [](const CanFrame& f) {
+                           return f.isTx() && f.id == 0x77F;
+                       }).size() >= 2;
+            },
+            3000));
+        QVERIFY2(waitFor(
+                     [&] {
+                         return masterStatus().contains(QStringLiteral("Heartbeat 100 ms")) &&
+                                masterStatus().contains(QStringLiteral("guarding node 3"));
+                     },
+                     3000),
                  qPrintable(masterStatus()));
     }
 
@@ -192,10 +217,17 @@ private slots:
         // Disable (the wizard's always-visible button): the drive leaves the record; the old values come back.
         QVERIFY(waitFor([&] { return wiz_->disableButton()->isEnabled(); }, 3000));
         click(wiz_->disableButton());
-        QVERIFY(waitFor([&] { return driveState() == State::SwitchOnDisabled && wiz_->shownState() == State::SwitchOnDisabled; }, 6000));
+        QVERIFY(waitFor(
+            [&] { return driveState() == State::SwitchOnDisabled && wiz_->shownState() == State::SwitchOnDisabled; },
+            6000));
         QVERIFY2(waitFor([&] { return driveValue(0x1016, 1) == 0 && abortOption() == kOldAbortOption; }, 5000),
-                 qPrintable(QStringLiteral("1016h:01 = %1, 6007h = %2").arg(driveValue(0x1016, 1), 0, 16).arg(abortOption())));
-        QVERIFY(waitFor([&] { return !ws()->heartbeatProducer()->isRunning() && !masterStatus().contains(QStringLiteral("guarding")); }, 3000));
+                 qPrintable(
+                     QStringLiteral("1016h:01 = %1, 6007h = %2").arg(driveValue(0x1016, 1), 0, 16).arg(abortOption())));
+        QVERIFY(waitFor(
+            [&] {
+                return !ws()->heartbeatProducer()->isRunning() && !masterStatus().contains(QStringLiteral("guarding"));
+            },
+            3000));
         // Enabled again in the same connection: not asked again, guarded again.
         QVERIFY(step(Command::Shutdown, State::ReadyToSwitchOn));
         QTest::qWait(300);
@@ -213,7 +245,9 @@ private slots:
         QCOMPARE(driveValue(0x1016, 1), uint64_t(0));
         QCOMPARE(abortOption(), kOldAbortOption);
         QVERIFY(!ws()->heartbeatProducer()->isRunning());
-        QVERIFY(framesWhere(*ws()->store(), [](const CanFrame& f) { return f.isTx() && (f.id == 0x77F || isWrite(f, 0x1016, 1, kArmedEntry, 4)); }).empty());
+        QVERIFY(framesWhere(*ws()->store(), [](const CanFrame& f) {
+                    return f.isTx() && (f.id == 0x77F || isWrite(f, 0x1016, 1, kArmedEntry, 4));
+                }).empty());
     }
 
     // Remembered "yes", then Bus ▸ Disconnect with the drive in Operation enabled: Disable voltage,
@@ -241,17 +275,20 @@ private slots:
         const TraceStore& store = *ws()->store();
         const auto disable = framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x6040, 0, 0x0000, 2); });
         const auto entryBack = framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x1016, 1, 0, 4); });
-        const auto optionBack = framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x6007, 0, uint32_t(kOldAbortOption), 2); });
+        const auto optionBack =
+            framesWhere(store, [](const CanFrame& f) { return isWrite(f, 0x6007, 0, uint32_t(kOldAbortOption), 2); });
         const auto heartbeats = framesWhere(store, [](const CanFrame& f) { return f.isTx() && f.id == 0x77F; });
         QVERIFY(!disable.empty() && !entryBack.empty() && !optionBack.empty() && !heartbeats.empty());
-        QVERIFY2(disable.back() < entryBack.back() && entryBack.back() < optionBack.back(), "Disable voltage, then 1016h, then 6007h");
+        QVERIFY2(disable.back() < entryBack.back() && entryBack.back() < optionBack.back(),
+                 "Disable voltage, then 1016h, then 6007h");
         // The heartbeat went on until the drive stopped watching it: one went out within its
         // period before 1016h was put back.
         FrameNo lastBefore = 0;
         for (FrameNo n : heartbeats)
             if (n < entryBack.back()) lastBefore = n;
         const int64_t gapNs = store.record(entryBack.back()).timestampNs - store.record(lastBefore).timestampNs;
-        QVERIFY2(lastBefore > 0 && gapNs < 250'000'000, qPrintable(QStringLiteral("%1 ms without heartbeat before 1016h was put back").arg(gapNs / 1e6)));
+        QVERIFY2(lastBefore > 0 && gapNs < 250'000'000,
+                 qPrintable(QStringLiteral("%1 ms without heartbeat before 1016h was put back").arg(gapNs / 1e6)));
         QCOMPARE(driveValue(0x1016, 1), uint64_t(0));
         QCOMPARE(abortOption(), kOldAbortOption);
         QVERIFY(waitFor([&] { return driveState() == State::SwitchOnDisabled; }, 3000));
@@ -275,7 +312,8 @@ private slots:
         }
         // What a crash or a pulled cable does: no more heartbeat from CoScope.
         ws()->heartbeatProducer()->stop();
-        QVERIFY2(waitFor([&] { return driveState() != State::OperationEnabled; }, 1500), "the drive did not react to the lost heartbeat");
+        QVERIFY2(waitFor([&] { return driveState() != State::OperationEnabled; }, 1500),
+                 "the drive did not react to the lost heartbeat");
         const State s = driveState();
         QVERIFY2(s == State::QuickStopActive || s == State::SwitchOnDisabled, qPrintable(QString::number(int(s))));
     }

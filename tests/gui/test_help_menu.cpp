@@ -83,7 +83,8 @@ private slots:
         QVERIFY(waitFor([&] { return helpOf(w)->section() == QStringLiteral("trace"); }));
         QVERIFY(waitFor([&] { return headingInView(b) == QStringLiteral("Trace"); }));
         // Every dock of the window has its section in the guide.
-        for (const char* anchor : {"trace", "nodes", "od", "plot", "events", "health", "console", "transmit", "processdata"})
+        for (const char* anchor :
+             {"trace", "nodes", "od", "plot", "events", "health", "console", "transmit", "processdata"})
             QVERIFY2(helpOf(w)->anchors().contains(QLatin1String(anchor)), anchor);
     }
 
@@ -112,7 +113,8 @@ private slots:
         QTest::keyClick(wizard->focusWidget() ? wizard->focusWidget() : wizard, Qt::Key_F1);
         QVERIFY(waitFor([&] { return helpOf(w) && helpOf(w)->isVisible(); }));
         QCOMPARE(helpOf(w)->section(), QStringLiteral("wizard-pdo-choose"));
-        QVERIFY(waitFor([&] { return headingInView(helpOf(w)->browser()).startsWith(QStringLiteral("1. Drive and message")); }));
+        QVERIFY(waitFor(
+            [&] { return headingInView(helpOf(w)->browser()).startsWith(QStringLiteral("1. Drive and message")); }));
         wizard->close();
     }
 
@@ -147,10 +149,12 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(clickMenuItem(w, QStringLiteral("Help"), QStringLiteral("Keyboard shortcuts")));
         QTreeWidget* list = nullptr;
-        QVERIFY(waitFor([&] { return (list = w.findChild<QTreeWidget*>(QStringLiteral("shortcutsList"))) && list->isVisible(); }));
+        QVERIFY(waitFor(
+            [&] { return (list = w.findChild<QTreeWidget*>(QStringLiteral("shortcutsList"))) && list->isVisible(); }));
         QStringList rows;
         for (int i = 0; i < list->topLevelItemCount(); ++i)
-            rows << list->topLevelItem(i)->text(0) + u'|' + list->topLevelItem(i)->text(1) + u'|' + list->topLevelItem(i)->text(2);
+            rows << list->topLevelItem(i)->text(0) + u'|' + list->topLevelItem(i)->text(1) + u'|' +
+                        list->topLevelItem(i)->text(2);
         const QString all = rows.join(u'\n');
         QVERIFY2(rows.contains(QStringLiteral("Ctrl+Q|Quit|File")), qPrintable(all));
         QVERIFY2(rows.contains(QStringLiteral("Ctrl+O|Open log|File")), qPrintable(all));
@@ -176,7 +180,8 @@ private slots:
         QVERIFY(clickMenuItem(w, QStringLiteral("Help"), QStringLiteral("About CoScope")));
         QVERIFY(waitFor([&] { return about.answered(); }));
         QVERIFY2(text.contains(buildinfo::version()) && text.contains(buildinfo::revision()), qPrintable(text));
-        for (const char* license : {"GPL-3.0-or-later", "LGPLv3", "QCustomPlot", "MIT"}) QVERIFY2(text.contains(QLatin1String(license)), license);
+        for (const char* license : {"GPL-3.0-or-later", "LGPLv3", "QCustomPlot", "MIT"})
+            QVERIFY2(text.contains(QLatin1String(license)), license);
     }
 };
 

@@ -114,7 +114,10 @@ private slots:
         auto name = answerFileDialog(opened);
         QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")));
         QVERIFY(waitFor([&] { return name->answered(); }));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.workspace()->store()->size() == 50; }));
+        QVERIFY(waitFor([&] {
+            return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+                   w.workspace()->store()->size() == 50;
+        }));
 
         // Then captures from the virtual drives; stops; that journal is old now too (the trace
         // still pages from it).
@@ -132,9 +135,9 @@ private slots:
         QVERIFY(waitFor([&] { return w.journalCleaner()->running() == 0; }));
         QVERIFY(w.journalCleaner()->lastThread() != std::thread::id());
         QVERIFY(w.journalCleaner()->lastThread() != std::this_thread::get_id());  // a worker
-        QVERIFY(QFileInfo::exists(offered));  // offered for reopening
-        QVERIFY(QFileInfo::exists(opened));   // the log opened
-        QVERIFY(QFileInfo::exists(live));     // the last capture, which the trace pages from
+        QVERIFY(QFileInfo::exists(offered));                                      // offered for reopening
+        QVERIFY(QFileInfo::exists(opened));                                       // the log opened
+        QVERIFY(QFileInfo::exists(live));  // the last capture, which the trace pages from
 
         // Dismissed, the offered one is an ordinary old journal: the next clean-up removes it.
         QTest::mouseClick(w.journalOffer()->dismissButton(), Qt::LeftButton);

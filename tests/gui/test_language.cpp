@@ -6,47 +6,47 @@
 // clicks, and switching back and forth leaves no text of the previous language.
 #include "app/gui/MainWindow.h"
 #include "app/gui/health/HealthDock.h"
-#include "app/gui/trace/TraceDock.h"
-#include "core/sim/SimBus.h"
-#include "core/sim/SimNetwork.h"
-#include "core/sim/VirtualDevice.h"
 #include "app/gui/language/Language.h"
 #include "app/gui/nodes/NodesDock.h"
 #include "app/gui/nodes/NodesModel.h"
 #include "app/gui/od/ObjectDictionaryDock.h"
 #include "app/gui/od/OdTreeModel.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/trace/TraceDock.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 #include "app/gui/wizards/nodeid/NodeIdWizard.h"
+#include "core/sim/SimBus.h"
+#include "core/sim/SimNetwork.h"
+#include "core/sim/VirtualDevice.h"
 #include "eds/DictionaryLibrary.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
-#include <QComboBox>
-#include <QLineEdit>
-#include <QRadioButton>
-#include <QSignalSpy>
-#include <QSpinBox>
-#include <QTabWidget>
-#include <QToolBar>
-#include <QWizard>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPointer>
+#include <QRadioButton>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
 #include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTextDocumentFragment>
+#include <QToolBar>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
+#include <QWizard>
 #include <QtTest>
 
 #include "tests/gui/WaitFor.h"
@@ -62,11 +62,12 @@ const QString kNet = QStringLiteral("sim://?nodes=1:delta-asda-a2,2:aimotor,3:de
 // Texts that are the same in every language: names, abbreviations the manuals keep in Latin
 // letters, units. Numbers and texts without two Latin letters in a row are never compared.
 const QStringList kSame = {
-    QStringLiteral("CoScope"),   QStringLiteral("English"), QStringLiteral("sim://"), QStringLiteral("Delta ASDA-A2"),
-    QStringLiteral("AIMOTOR"),   QStringLiteral("DEXMART"), QStringLiteral("COB-ID"), QStringLiteral("SDO"),
-    QStringLiteral("PDO"),       QStringLiteral("NMT"),     QStringLiteral("EMCY"),   QStringLiteral("SYNC"),
-    QStringLiteral("ms"),        QStringLiteral("rpm"),     QStringLiteral("Hz"),     QStringLiteral("Rx"),
-    QStringLiteral("Tx"),        QStringLiteral("ID"),      QStringLiteral("sim"),     QStringLiteral("aimotor"),      QStringLiteral("DLC"),    QStringLiteral("CAN"),
+    QStringLiteral("CoScope"), QStringLiteral("English"), QStringLiteral("sim://"), QStringLiteral("Delta ASDA-A2"),
+    QStringLiteral("AIMOTOR"), QStringLiteral("DEXMART"), QStringLiteral("COB-ID"), QStringLiteral("SDO"),
+    QStringLiteral("PDO"),     QStringLiteral("NMT"),     QStringLiteral("EMCY"),   QStringLiteral("SYNC"),
+    QStringLiteral("ms"),      QStringLiteral("rpm"),     QStringLiteral("Hz"),     QStringLiteral("Rx"),
+    QStringLiteral("Tx"),      QStringLiteral("ID"),      QStringLiteral("sim"),    QStringLiteral("aimotor"),
+    QStringLiteral("DLC"),     QStringLiteral("CAN"),
 };
 
 // The object names of the virtual drives' dictionaries (EDS names, the manuals' own where they
@@ -120,7 +121,8 @@ void viewTexts(const QAbstractItemView* v, QList<Text>& out) {
             for (int role : {int(Qt::DisplayRole), int(Qt::ToolTipRole)}) {
                 const QVariant d = m->data(i, role);
                 if (d.typeId() == QMetaType::QString)
-                    for (const QString& line : d.toString().split(u'\n')) out.append({plain(line), name(v) + QStringLiteral(" cell")});
+                    for (const QString& line : d.toString().split(u'\n'))
+                        out.append({plain(line), name(v) + QStringLiteral(" cell")});
             }
         }
 }
@@ -138,21 +140,27 @@ QList<Text> visibleTexts(QWidget* window) {
         if (g->isVisible()) out.append({plain(g->title()), name(g)});
     for (QTabBar* t : window->findChildren<QTabBar*>())
         if (t->isVisible())
-            for (int i = 0; i < t->count(); ++i) out.append({plain(t->tabText(i)), name(t)}), out.append({plain(t->tabToolTip(i)), name(t) + QStringLiteral(" tooltip")});
+            for (int i = 0; i < t->count(); ++i)
+                out.append({plain(t->tabText(i)), name(t)}),
+                    out.append({plain(t->tabToolTip(i)), name(t) + QStringLiteral(" tooltip")});
     for (QDockWidget* d : window->findChildren<QDockWidget*>())
         if (d->isVisible()) out.append({plain(d->windowTitle()), name(d)});
     for (QHeaderView* h : window->findChildren<QHeaderView*>())
         if (h->isVisible() && h->model())
             for (int i = 0; i < h->count(); ++i)
-                if (!h->isSectionHidden(i)) out.append({plain(h->model()->headerData(i, h->orientation()).toString()), name(h->parent())});
+                if (!h->isSectionHidden(i))
+                    out.append({plain(h->model()->headerData(i, h->orientation()).toString()), name(h->parent())});
     for (QComboBox* c : window->findChildren<QComboBox*>())
         if (c->isVisible())
-            for (int i = 0; i < c->count(); ++i) out.append({plain(c->itemText(i)), name(c) + QStringLiteral(" entry")});
+            for (int i = 0; i < c->count(); ++i)
+                out.append({plain(c->itemText(i)), name(c) + QStringLiteral(" entry")});
     for (QAbstractItemView* v : window->findChildren<QAbstractItemView*>())
-        if (v->isVisible() && !qobject_cast<QHeaderView*>(v) && !qobject_cast<QComboBox*>(v->parentWidget())) viewTexts(v, out);
+        if (v->isVisible() && !qobject_cast<QHeaderView*>(v) && !qobject_cast<QComboBox*>(v->parentWidget()))
+            viewTexts(v, out);
     for (QWidget* w : window->findChildren<QWidget*>())
         if (w->isVisible() && !w->toolTip().isEmpty())
-            for (const QString& line : plain(w->toolTip()).split(u'\n')) out.append({line.trimmed(), name(w) + QStringLiteral(" tooltip")});
+            for (const QString& line : plain(w->toolTip()).split(u'\n'))
+                out.append({line.trimmed(), name(w) + QStringLiteral(" tooltip")});
     if (auto* mw = qobject_cast<QMainWindow*>(window))
         for (const QMenu* m : mw->menuBar()->findChildren<QMenu*>(Qt::FindDirectChildrenOnly)) menuTexts(m, out);
     return out;
@@ -165,10 +173,12 @@ bool compared(const QString& t) {
     // A command script line (the "Script line" column): coscope-cli's language, the same everywhere.
     static const QRegularExpression scriptLine(QStringLiteral("^(sdo|nmt|lss|wait|wait-node|reconnect) [a-z0-9]"));
     // A number with its unit ("500 kbit/s"), or frame data in hex ("43 18 10 01 DD 01 00 00").
-    static const QRegularExpression numberOrData(QStringLiteral("^([0-9][0-9.,]* ?(bit/s|kbit/s|Mbit/s|ms|s|rpm|Hz)|[0-9A-F]{2}( [0-9A-F]{2})*)$"));
+    static const QRegularExpression numberOrData(
+        QStringLiteral("^([0-9][0-9.,]* ?(bit/s|kbit/s|Mbit/s|ms|s|rpm|Hz)|[0-9A-F]{2}( [0-9A-F]{2})*)$"));
     static const QRegularExpression identifier(QStringLiteral("^([a-z0-9]+([-_][a-z0-9]+)+|[A-Z0-9_]+|[^ ]*/[^ ]*)$"));
-    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://")) && !dictionaryNames().contains(t) &&
-           !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch() && !numberOrData.match(t).hasMatch();
+    return !t.isEmpty() && t.contains(word) && !kSame.contains(t) && !t.contains(QLatin1String("://")) &&
+           !dictionaryNames().contains(t) && !identifier.match(t).hasMatch() && !scriptLine.match(t).hasMatch() &&
+           !numberOrData.match(t).hasMatch();
 }
 
 // Texts of `now` that are in `english` (what the same window showed in English).
@@ -187,7 +197,8 @@ QStringList withChinese(const QList<Text>& now) {
     static const QRegularExpression han(QStringLiteral("\\p{Han}"));
     QStringList out;
     for (const Text& t : now)
-        if (t.text.contains(han) && !t.where.startsWith(QLatin1String("menu ")) ) out << QStringLiteral("%1: \"%2\"").arg(t.where, t.text);
+        if (t.text.contains(han) && !t.where.startsWith(QLatin1String("menu ")))
+            out << QStringLiteral("%1: \"%2\"").arg(t.where, t.text);
     out.removeDuplicates();
     return out;
 }
@@ -320,7 +331,8 @@ QStringList cellsWithEnglish(const QAbstractItemView* view, int column = -1) {
         for (int c = 0; c < m->columnCount(); ++c) {
             if (column >= 0 && c != column) continue;
             const QString t = m->data(m->index(r, c)).toString();
-            if (const QStringList w = englishWords(t); !w.isEmpty()) out << QStringLiteral("\"%1\" [%2]").arg(t, w.join(u' '));
+            if (const QStringList w = englishWords(t); !w.isEmpty())
+                out << QStringLiteral("\"%1\" [%2]").arg(t, w.join(u' '));
         }
     out.removeDuplicates();
     return out;
@@ -331,7 +343,8 @@ QStringList detailsWithEnglish(QTreeWidget* tree) {
     QStringList out;
     for (QTreeWidgetItemIterator it(tree); *it; ++it)
         for (int c = 0; c < 2; ++c)
-            if (const QStringList w = englishWords((*it)->text(c)); !w.isEmpty()) out << QStringLiteral("\"%1\" [%2]").arg((*it)->text(c), w.join(u' '));
+            if (const QStringList w = englishWords((*it)->text(c)); !w.isEmpty())
+                out << QStringLiteral("\"%1\" [%2]").arg((*it)->text(c), w.join(u' '));
     out.removeDuplicates();
     return out;
 }
@@ -379,7 +392,8 @@ bool showDock(QDockWidget* dock) {
 QStringList standardObjectNamesIn(const QString& text) {
     static const QRegularExpression names(QStringLiteral(
         "\\b(Statusword|Controlword|Device type|Error register|Modes of operation( display)?|Identity object|Vendor-ID|"
-        "Producer heartbeat time|Position actual value|Target position|Manufacturer device name|TPDO1 mapping parameter)\\b"));
+        "Producer heartbeat time|Position actual value|Target position|Manufacturer device name|TPDO1 mapping "
+        "parameter)\\b"));
     QStringList out;
     for (auto it = names.globalMatch(text); it.hasNext();) out << it.next().captured();
     return out;
@@ -442,22 +456,28 @@ private slots:
             QTest::qWait(300);
             QCOMPARE(w.workspace()->bus() != nullptr, true);  // the connection stays
             const QStringList main = stillEnglish(visibleTexts(&w), englishMain);
-            QVERIFY2(main.isEmpty(), qPrintable(code + QStringLiteral(" main window, still English:\n") + main.join(u'\n')));
+            QVERIFY2(main.isEmpty(),
+                     qPrintable(code + QStringLiteral(" main window, still English:\n") + main.join(u'\n')));
             for (const QString& id : ids) {
                 const QList<Text> now = walkWizard(w, id);
                 QVERIFY2(!now.isEmpty(), qPrintable(code + u' ' + id));
                 const QStringList left = stillEnglish(now, englishWizard[id]);
-                QVERIFY2(left.isEmpty(), qPrintable(QStringLiteral("%1 wizard %2, still English:\n%3").arg(code, id, left.join(u'\n'))));
+                QVERIFY2(
+                    left.isEmpty(),
+                    qPrintable(QStringLiteral("%1 wizard %2, still English:\n%3").arg(code, id, left.join(u'\n'))));
             }
         }
         // Back to English: no Chinese left (the Language menu names each language in its own script).
         QVERIFY(chooseLanguage(w, QStringLiteral("en")));
         QTest::qWait(300);
         const QStringList stale = withChinese(visibleTexts(&w));
-        QVERIFY2(stale.isEmpty(), qPrintable(QStringLiteral("Chinese left after switching to English:\n") + stale.join(u'\n')));
+        QVERIFY2(stale.isEmpty(),
+                 qPrintable(QStringLiteral("Chinese left after switching to English:\n") + stale.join(u'\n')));
         for (const QString& id : ids) {
             const QStringList staleWizard = withChinese(walkWizard(w, id));
-            QVERIFY2(staleWizard.isEmpty(), qPrintable(QStringLiteral("wizard %1, Chinese left after switching to English:\n%2").arg(id, staleWizard.join(u'\n'))));
+            QVERIFY2(staleWizard.isEmpty(),
+                     qPrintable(QStringLiteral("wizard %1, Chinese left after switching to English:\n%2")
+                                    .arg(id, staleWizard.join(u'\n'))));
         }
         QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("en"));
     }
@@ -487,34 +507,45 @@ private slots:
             auto expect = [&](const QString& where, const QStringList& left) {
                 // In English the same places must show English words (the check sees them).
                 if (english ? left.isEmpty() : !left.isEmpty())
-                    problems << QStringLiteral("%1 %2:\n  %3").arg(code, where, english ? QStringLiteral("no English words found") : left.join(QStringLiteral("\n  ")));
+                    problems << QStringLiteral("%1 %2:\n  %3")
+                                    .arg(code, where,
+                                         english ? QStringLiteral("no English words found")
+                                                 : left.join(QStringLiteral("\n  ")));
             };
             // 1. The CiA 402 wizard on node 4: its first reads (statusword, modes) and the EMCY.
             QWidget* wiz = openWizard(QStringLiteral("ds402"), w.workspace(), 4, &w);
             QVERIFY(wiz && QTest::qWaitForWindowExposed(wiz));
             auto* frames = wiz->findChild<QTableView*>(QStringLiteral("wizardFrames"));
             QVERIFY(frames);
-            QVERIFY2(waitFor([&] { return !rowsContaining(frames->model(), QStringLiteral("6041:00")).isEmpty(); }, 8000), qPrintable(code));
+            QVERIFY2(
+                waitFor([&] { return !rowsContaining(frames->model(), QStringLiteral("6041:00")).isEmpty(); }, 8000),
+                qPrintable(code));
             QTest::qWait(500);
             expect(QStringLiteral("CiA 402 wizard frames"), cellsWithEnglish(frames));
             closeWizard(wiz);
             // 2. The trace: a statusword read clicked, its summaries and the details pane.
             auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
             // Node 4's generic dictionary names the statusword in the UI language (ObjectNames.h).
-            const QString statusword = english ? QStringLiteral("Statusword") : code == u"zh_TW" ? QStringLiteral(u"狀態字元") : QStringLiteral(u"状态字");
+            const QString statusword = english            ? QStringLiteral("Statusword")
+                                       : code == u"zh_TW" ? QStringLiteral(u"狀態字元")
+                                                          : QStringLiteral(u"状态字");
             QVERIFY2(clickTraceRow(w, QStringLiteral("6041:00 %1 =").arg(statusword)), qPrintable(code));
             QPointer<QTreeWidget> tree;
-            QVERIFY(waitFor([&] {
-                tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
-                return tree && tree->topLevelItemCount() > 0;
-            }, 3000));
+            QVERIFY(waitFor(
+                [&] {
+                    tree = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
+                    return tree && tree->topLevelItemCount() > 0;
+                },
+                3000));
             expect(QStringLiteral("details pane"), detailsWithEnglish(tree));
             const int summaryColumn = trace->model()->columnCount() - 1;
             expect(QStringLiteral("trace summaries"), cellsWithEnglish(trace, summaryColumn));
             // 3. The Health dock's findings: the EMCY of node 4.
             QVERIFY(showHealth(w));
             QTableView* findings = w.healthDock()->findingsView();
-            QVERIFY2(waitFor([&] { return !rowsContaining(findings->model(), QStringLiteral("EMCY")).isEmpty(); }, 8000), qPrintable(code));
+            QVERIFY2(
+                waitFor([&] { return !rowsContaining(findings->model(), QStringLiteral("EMCY")).isEmpty(); }, 8000),
+                qPrintable(code));
             expect(QStringLiteral("health findings"), cellsWithEnglish(findings));
             QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
         }
@@ -535,7 +566,12 @@ private slots:
         QVERIFY(waitFor([&] { return w.workspace()->nodes().snapshot().size() >= 4; }, 15000));
         // Node 1 clicked in the Nodes dock: the OD dock shows its dictionary; "Read all" clicked.
         QVERIFY(showDock(w.odDock()));
-        QVERIFY(waitFor([&] { const auto n = w.workspace()->nodes().node(1); return n && !n->dictionary.isEmpty(); }, 10000));
+        QVERIFY(waitFor(
+            [&] {
+                const auto n = w.workspace()->nodes().node(1);
+                return n && !n->dictionary.isEmpty();
+            },
+            10000));
         QTableView* nodes = w.nodesDock()->view();
         auto clickNode = [&](int node) {
             const QModelIndex i = nodes->model()->index(w.nodesDock()->model()->rowOfNode(node), 0);
@@ -552,23 +588,31 @@ private slots:
         QVERIFY(waitFor([&] { return !w.odDock()->isBusy() && w.odDock()->model()->valuesRead() > 100; }, 30000));
 
         const QStringList chinese = {QStringLiteral(u"狀態字元"), QStringLiteral(u"状态字")};
-        for (const QString& code : {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN"), QStringLiteral("en")}) {
+        for (const QString& code :
+             {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN"), QStringLiteral("en")}) {
             if (code != language::current()) QVERIFY2(chooseLanguage(w, code), qPrintable(code));
             QTest::qWait(300);
             const bool english = code == u"en";
             QStringList problems;
             auto expect = [&](const QString& where, const QStringList& cells, bool hasChinese) {
                 if (english ? cells.isEmpty() : !cells.isEmpty())
-                    problems << QStringLiteral("%1 %2: %3").arg(code, where, english ? QStringLiteral("no EDS name shown") : cells.mid(0, 12).join(QStringLiteral("\n  ")));
-                if (!english && !hasChinese) problems << QStringLiteral("%1 %2: no %3").arg(code, where, chinese.join(u'/'));
-                if (english && hasChinese) problems << QStringLiteral("%1 %2: Chinese object names left").arg(code, where);
+                    problems << QStringLiteral("%1 %2: %3")
+                                    .arg(code, where,
+                                         english ? QStringLiteral("no EDS name shown")
+                                                 : cells.mid(0, 12).join(QStringLiteral("\n  ")));
+                if (!english && !hasChinese)
+                    problems << QStringLiteral("%1 %2: no %3").arg(code, where, chinese.join(u'/'));
+                if (english && hasChinese)
+                    problems << QStringLiteral("%1 %2: Chinese object names left").arg(code, where);
             };
             auto shows = [&](const QStringList& texts) {
-                return std::any_of(texts.begin(), texts.end(), [&](const QString& t) { return t.contains(chinese[0]) || t.contains(chinese[1]); });
+                return std::any_of(texts.begin(), texts.end(),
+                                   [&](const QString& t) { return t.contains(chinese[0]) || t.contains(chinese[1]); });
             };
             // 1. The OD dock (rebuilt in the new language, still on node 1).
             QVERIFY(showDock(w.odDock()));
-            QVERIFY2(waitFor([&] { return w.odDock()->node() == 1; }, 3000), qPrintable(QStringLiteral("%1: OD dock on node %2").arg(code).arg(w.odDock()->node())));
+            QVERIFY2(waitFor([&] { return w.odDock()->node() == 1; }, 3000),
+                     qPrintable(QStringLiteral("%1: OD dock on node %2").arg(code).arg(w.odDock()->node())));
             auto* tree = w.odDock()->findChild<QTreeView*>(QStringLiteral("odTree"));
             QVERIFY(tree && tree->isVisible());
             const QStringList odNames = rowsContaining(tree->model(), QString());
@@ -577,7 +621,8 @@ private slots:
             auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
             const int summaryColumn = trace->model()->columnCount() - 1;
             QStringList summaries;
-            for (int r = 0; r < trace->model()->rowCount(); ++r) summaries << trace->model()->data(trace->model()->index(r, summaryColumn)).toString();
+            for (int r = 0; r < trace->model()->rowCount(); ++r)
+                summaries << trace->model()->data(trace->model()->index(r, summaryColumn)).toString();
             QStringList left;
             for (const QString& s : summaries)
                 if (!standardObjectNamesIn(s).isEmpty()) left << s;
@@ -585,10 +630,12 @@ private slots:
             expect(QStringLiteral("trace summaries"), left, shows(summaries));
             QVERIFY2(clickTraceRow(w, QStringLiteral("6041:00")), qPrintable(code));
             QPointer<QTreeWidget> fields;
-            QVERIFY(waitFor([&] {
-                fields = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
-                return fields && fields->topLevelItemCount() > 0;
-            }, 3000));
+            QVERIFY(waitFor(
+                [&] {
+                    fields = w.traceDock()->findChild<QTreeWidget*>(QStringLiteral("frameFields"));
+                    return fields && fields->topLevelItemCount() > 0;
+                },
+                3000));
             QStringList details;
             for (QTreeWidgetItemIterator it(fields); *it; ++it) details << (*it)->text(0) << (*it)->text(1);
             QStringList detailsLeft;

@@ -17,8 +17,8 @@
 #include <QToolButton>
 #include <QtTest>
 
-#include "tests/gui/ModalAnswer.h"
 #include "tests/gui/MenuClick.h"
+#include "tests/gui/ModalAnswer.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -33,7 +33,9 @@ namespace {
 // Opens `path` by File ▸ Open log… and its file dialog; waits until it is read.
 bool openByMenu(MainWindow& w, const QString& path) {
     auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) || !waitFor([&] { return name->answered(); })) return false;
+    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
+        !waitFor([&] { return name->answered(); }))
+        return false;
     w.activateWindow();
     if (!QTest::qWaitForWindowActive(&w)) return false;
     return waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone(); });
@@ -100,7 +102,9 @@ private slots:
         QVERIFY(waitFor([&] { return report(w) && report(w)->isVisible(); }));
         QVERIFY(!w.workspace()->loadJob());  // refused before anything was thrown away
         const QString text = reportText(w);
-        QVERIFY2(text.contains(QStringLiteral("notes.log: not a format CoScope reads")) && text.contains(QStringLiteral("BUSMASTER")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("notes.log: not a format CoScope reads")) &&
+                     text.contains(QStringLiteral("BUSMASTER")),
+                 qPrintable(text));
         QCOMPARE(w.traceDock()->model()->rowCount(), 0);
     }
 };

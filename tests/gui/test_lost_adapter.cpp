@@ -92,28 +92,35 @@ private slots:
 
         server.reset();  // the socketcand server dies
         QTRY_VERIFY_WITH_TIMEOUT(w.busStatus()->stateText().startsWith(QStringLiteral("lost, retrying in")), 5000);
-        QVERIFY2(QTest::qWaitFor([&] { return wiz->message().contains(QStringLiteral("may still be enabled")); }, 3000), qPrintable(wiz->message()));
+        QVERIFY2(QTest::qWaitFor([&] { return wiz->message().contains(QStringLiteral("may still be enabled")); }, 3000),
+                 qPrintable(wiz->message()));
         QVERIFY2(wiz->message().contains(QStringLiteral("Operation enabled")), qPrintable(wiz->message()));
         QVERIFY2(wiz->message().contains(QStringLiteral("Check at the drive")), qPrintable(wiz->message()));
-        QVERIFY(!wiz->stepButton(Command::DisableOperation) || !wiz->stepButton(Command::DisableOperation)->isEnabled());
+        QVERIFY(!wiz->stepButton(Command::DisableOperation) ||
+                !wiz->stepButton(Command::DisableOperation)->isEnabled());
         QAbstractItemModel* nodes = w.nodesDock()->view()->model();
-        QTRY_VERIFY_WITH_TIMEOUT(nodes->rowCount() > 0 && nodes->index(0, NodesModel::State).data().toString() == QStringLiteral("unknown (gap)"), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(nodes->rowCount() > 0 && nodes->index(0, NodesModel::State).data().toString() ==
+                                                              QStringLiteral("unknown (gap)"),
+                                 3000);
         const size_t eventsBefore = w.workspace()->events().size();
         QTest::qWait(2500);  // longer than the heartbeat timeout (3 periods, at least 1.5 s)
 
         server = serve(net, port);  // back
         QTRY_VERIFY_WITH_TIMEOUT(w.busStatus()->stateText().startsWith(QStringLiteral("open")), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(w.workspace()->store()->gaps().size() == 1, 3000);
-        QVERIFY2(wiz->message().contains(QStringLiteral("may still be enabled")), qPrintable(wiz->message()));  // kept on return
+        QVERIFY2(wiz->message().contains(QStringLiteral("may still be enabled")),
+                 qPrintable(wiz->message()));  // kept on return
         // The technician reads the drive again: it is indeed still enabled.
         QPushButton* read = nullptr;
         for (QPushButton* b : wiz->findChildren<QPushButton*>())
             if (b->text() == QStringLiteral("Read state")) read = b;
         QVERIFY(read);
         QTest::mouseClick(read, Qt::LeftButton);
-        QVERIFY2(QTest::qWaitFor([&] { return wiz->shownState() == State::OperationEnabled; }, 8000), qPrintable(wiz->message()));
+        QVERIFY2(QTest::qWaitFor([&] { return wiz->shownState() == State::OperationEnabled; }, 8000),
+                 qPrintable(wiz->message()));
         // The drive's next heartbeat makes its state known again.
-        QTRY_VERIFY_WITH_TIMEOUT(nodes->index(0, NodesModel::State).data().toString() != QStringLiteral("unknown (gap)"), 8000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            nodes->index(0, NodesModel::State).data().toString() != QStringLiteral("unknown (gap)"), 8000);
         // A heartbeat cannot arrive while the adapter is gone: the loss is one event, not a
         // heartbeat timeout per node.
         for (const TraceEvent& e : w.workspace()->events().since(eventsBefore))

@@ -4,6 +4,7 @@
 // layout saved, --screenshot.
 #include "app/gui/MainWindow.h"
 #include "app/gui/MenuTitle.h"
+#include "app/gui/console/ConsoleDock.h"
 #include "app/gui/events/EventsDock.h"
 #include "app/gui/events/EventsModel.h"
 #include "app/gui/nodes/NodesDock.h"
@@ -14,7 +15,6 @@
 #include "app/gui/trace/LogSaveJob.h"
 #include "app/gui/trace/TraceDock.h"
 #include "app/gui/trace/TraceModel.h"
-#include "app/gui/console/ConsoleDock.h"
 #include "core/log/Logging.h"
 #include "core/logio/LogFormats.h"
 
@@ -28,13 +28,13 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QScrollBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
-#include <QToolBar>
-#include <QToolButton>
-#include <QSettings>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -82,12 +82,16 @@ void clickRow(QTableView* view, int row) {
 // Opens a log by File ▸ Open log… and its file dialog; waits until it is read.
 bool openByMenu(MainWindow& w, const QString& path) {
     auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) || !waitFor([&] { return name->answered(); })) return false;
+    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
+        !waitFor([&] { return name->answered(); }))
+        return false;
     // The window manager gives the focus back to the window when the dialog closes; offscreen
     // there is none, so do its part.
     w.activateWindow();
     if (!QTest::qWaitForWindowActive(&w)) return false;
-    return waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0; });
+    return waitFor([&] {
+        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0;
+    });
 }
 // Saves by File ▸ `item` and its file dialog; waits until the file is written.
 bool saveByMenu(MainWindow& w, const QString& item, const QString& path) {
@@ -100,7 +104,8 @@ bool saveByMenu(MainWindow& w, const QString& item, const QString& path) {
 QString writeJumpLog(const QString& path) {
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly)) return {};
-    for (int i = 0; i < 200; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#0102\n").arg(i * 1000, 6, 10, QLatin1Char('0')).toLatin1());
+    for (int i = 0; i < 200; ++i)
+        f.write(QStringLiteral("(1700000000.%1) can0 181#0102\n").arg(i * 1000, 6, 10, QLatin1Char('0')).toLatin1());
     f.write("(1700000001.000000) can0 081#1023050000000000\n");
     return path;
 }
@@ -124,16 +129,22 @@ private slots:
         w.setQuiet(true);
         w.show();
         QVERIFY(w.connectBus(QStringLiteral("sim://")));
-        QVERIFY2(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }), qPrintable(w.lastError()));
+        QVERIFY2(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open; }),
+                 qPrintable(w.lastError()));
         TraceModel* m = w.traceDock()->model();
         QVERIFY(waitFor([&] { return m->rowCount() >= 3; }));  // the boot-ups
         // Nodes appear from boot-ups/heartbeats of the default virtual drives (1, 2, 3).
         QVERIFY(waitFor([&] { return w.nodesDock()->model()->rowCount() >= 3; }));
         QCOMPARE(w.nodesDock()->model()->nodeAt(0), 1);
         QVERIFY(w.eventsDock()->model()->rowCount() >= 3);  // three boot-ups
-        QCOMPARE(w.eventsDock()->model()->data(w.eventsDock()->model()->index(0, EventsModel::Kind), Qt::DisplayRole).toString(), QStringLiteral("Boot-up"));
+        QCOMPARE(w.eventsDock()
+                     ->model()
+                     ->data(w.eventsDock()->model()->index(0, EventsModel::Kind), Qt::DisplayRole)
+                     .toString(),
+                 QStringLiteral("Boot-up"));
         // The status bar shows the bus state and a rate.
-        QVERIFY(waitFor([&] { return w.busStatus()->stateText().contains(QStringLiteral("open"), Qt::CaseInsensitive); }));
+        QVERIFY(
+            waitFor([&] { return w.busStatus()->stateText().contains(QStringLiteral("open"), Qt::CaseInsensitive); }));
         QVERIFY(w.busStatus()->rateText().contains(QStringLiteral("frames/s")));
         // Selecting a row fills the details pane.
         w.traceDock()->view()->selectRow(0);
@@ -150,14 +161,17 @@ private slots:
         QCOMPARE(w.nodesDock()->model()->rowCount(), 3);  // nobody else answered
 
         // NMT from the Nodes dock goes out (and shows as a Tx frame in the trace).
-        for (QAction* a : w.nodesDock()->commandActions()) QVERIFY(a->objectName() == u"scanAction" || a->text().isEmpty() || a->isEnabled() || a->text().contains(QStringLiteral("identity")));
+        for (QAction* a : w.nodesDock()->commandActions())
+            QVERIFY(a->objectName() == u"scanAction" || a->text().isEmpty() || a->isEnabled() ||
+                    a->text().contains(QStringLiteral("identity")));
         const size_t before = w.workspace()->store()->size();
         QVERIFY(w.nodesDock()->sendNmt(0x01, 2));  // start node 2
         QVERIFY(waitFor([&] {
             const auto& s = *w.workspace()->store();
             for (size_t n = before; n < s.size(); ++n) {
                 const auto& r = s.record(static_cast<FrameNo>(n));
-                if (r.id == 0 && (r.flags & CanFrame::Tx) && r.len == 2 && r.data[0] == 1 && r.data[1] == 2) return true;
+                if (r.id == 0 && (r.flags & CanFrame::Tx) && r.len == 2 && r.data[0] == 1 && r.data[1] == 2)
+                    return true;
             }
             return false;
         }));
@@ -202,7 +216,8 @@ private slots:
         auto* edit = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit"));
         // A filter that means nothing: said in the status bar, the field turns red, nothing hidden.
         typeAndEnter(edit, QStringLiteral("svc:nonsense"));
-        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("nonsense")), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("nonsense")),
+                 qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(!edit->toolTip().isEmpty());
         TraceModel* m = w.traceDock()->model();
         QVERIFY(!m->isFiltered());
@@ -228,11 +243,12 @@ private slots:
         const QString path = dir_.filePath(QStringLiteral("in.log"));
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("(1700000000.000000) can0 701#00\n"
-                "(1700000000.100000) can0 701#7F\n"
-                "this is not a candump line\n"
-                "(1700000000.200000) can0 081#1023050000000000\n"
-                "(1700000000.300000) can0 601#4000100000000000\n");
+        f.write(
+            "(1700000000.000000) can0 701#00\n"
+            "(1700000000.100000) can0 701#7F\n"
+            "this is not a candump line\n"
+            "(1700000000.200000) can0 081#1023050000000000\n"
+            "(1700000000.300000) can0 601#4000100000000000\n");
         f.close();
         MainWindow w;
         w.setQuiet(true);
@@ -284,7 +300,11 @@ private slots:
         const QString path = dir_.filePath(QStringLiteral("long.log"));
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        for (int i = 0; i < 5000; ++i) f.write(QStringLiteral("(1700000000.%1) can0 181#%2\n").arg(i * 100, 6, 10, QLatin1Char('0')).arg(i, 4, 16, QLatin1Char('0')).toLatin1());
+        for (int i = 0; i < 5000; ++i)
+            f.write(QStringLiteral("(1700000000.%1) can0 181#%2\n")
+                        .arg(i * 100, 6, 10, QLatin1Char('0'))
+                        .arg(i, 4, 16, QLatin1Char('0'))
+                        .toLatin1());
         f.close();
         MainWindow w;
         w.setQuiet(true);
@@ -315,7 +335,8 @@ private slots:
         auto* events = w.eventsDock()->findChild<QTableView*>();
         QVERIFY(events);
         QVERIFY(waitFor([&] { return events->isVisible(); }));
-        QTest::mouseClick(events->viewport(), Qt::LeftButton, {}, events->visualRect(events->model()->index(0, 1)).center());
+        QTest::mouseClick(events->viewport(), Qt::LeftButton, {},
+                          events->visualRect(events->model()->index(0, 1)).center());
         QTest::keyClick(events, Qt::Key_Return);
         QTableView* view = w.traceDock()->view();
         QVERIFY(waitFor([&] { return view->currentIndex().isValid(); }));
@@ -376,7 +397,8 @@ private slots:
         QVERIFY(!looksRed());
         QTest::keyClicks(find, QStringLiteral("no such thing"));
         QTest::keyClick(find, Qt::Key_Return);
-        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("not found")), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("not found")),
+                 qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(looksRed());
         // Typing again clears the cue; a hit keeps it clear.
         QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
@@ -414,7 +436,8 @@ private slots:
         auto clickTab = [&](const QString& title) {
             for (QTabBar* t : w.findChildren<QTabBar*>())
                 for (int i = 0; i < t->count(); ++i)
-                    if (t->tabText(i) == title) return QTest::mouseClick(t, Qt::LeftButton, {}, t->tabRect(i).center()), true;
+                    if (t->tabText(i) == title)
+                        return QTest::mouseClick(t, Qt::LeftButton, {}, t->tabRect(i).center()), true;
             return false;
         };
         QVERIFY(clickTab(w.eventsDock()->windowTitle()));
@@ -567,7 +590,8 @@ private slots:
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
         p.setProcessEnvironment(env);
-        p.start(QStringLiteral(COSCOPE_GUI_PATH), {QStringLiteral("--simulate"), QStringLiteral("--screenshot"), png, QStringLiteral("--view"), QStringLiteral("nodes")});
+        p.start(QStringLiteral(COSCOPE_GUI_PATH), {QStringLiteral("--simulate"), QStringLiteral("--screenshot"), png,
+                                                   QStringLiteral("--view"), QStringLiteral("nodes")});
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 0);
         QImage img(png);

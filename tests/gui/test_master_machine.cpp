@@ -9,11 +9,11 @@
 // with node 3 enabled asks, and the Disable voltage frame is in the capture journal.
 #include "app/gui/MainWindow.h"
 #include "app/gui/master/MasterActions.h"
-#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/master/ProcessDataDock.h"
 #include "app/gui/master/TransmitDock.h"
 #include "app/gui/master/TransmitModel.h"
 #include "app/gui/nodes/NodesDock.h"
+#include "app/gui/od/IntegerSpinBox.h"
 #include "app/gui/plot/PlotDock.h"
 #include "app/gui/plot/PlotView.h"
 #include "app/gui/session/Workspace.h"
@@ -28,7 +28,6 @@
 #include "eds/SimulatorDictionaries.h"
 
 #include <QCheckBox>
-#include <QStyleOptionButton>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -39,6 +38,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStyleOptionButton>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QToolBar>
@@ -51,8 +51,8 @@
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
-#include "tests/gui/TypeText.h"
 #include "tests/gui/TxFrames.h"
+#include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -64,10 +64,10 @@ using coscope::testing::answerBoxSaying;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
-using coscope::testing::signalItem;
-using coscope::testing::typeAndEnter;
 using coscope::testing::median;
+using coscope::testing::signalItem;
 using coscope::testing::txIntervalsMs;
+using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 
 namespace {
@@ -89,8 +89,8 @@ QLineEdit* editOf(QWidget* field) { return field->findChild<QLineEdit*>(); }
 
 // The SDO download of 6040h = 0000h (Disable voltage) to node 3 (CiA 301 §7.2.4.3.3, expedited).
 bool isDisableVoltage(const CanFrame& f) {
-    return f.id == 0x603u && f.len == 8 && f.data[0] == 0x2B && f.data[1] == 0x40 && f.data[2] == 0x60 && f.data[3] == 0x00 && f.data[4] == 0 &&
-           f.data[5] == 0;
+    return f.id == 0x603u && f.len == 8 && f.data[0] == 0x2B && f.data[1] == 0x40 && f.data[2] == 0x60 &&
+           f.data[3] == 0x00 && f.data[4] == 0 && f.data[5] == 0;
 }
 
 template <typename W>
@@ -113,20 +113,25 @@ class TestMasterMachine : public QObject {
         net_->runOnNetworkThread([&] { out = f(net_->device(node)->drive(0)); });
         return out;
     }
-    State driveState(int node) const { return onDrive(node, [](sim::Ds402Drive* d) { return d->state(); }); }
+    State driveState(int node) const {
+        return onDrive(node, [](sim::Ds402Drive* d) { return d->state(); });
+    }
 
     // Connect, identify the drives, NMT Start all from the Nodes dock.
     void connectAndStart() {
         QVERIFY(clickMenuItem(*w_, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
-        QVERIFY(waitFor([&] {
-            int known = 0;
-            for (const canopen::NodeInfo& n : ws()->nodes().snapshot()) known += !n.dictionary.isEmpty();
-            return ws()->canTransmit() && known >= 3;
-        }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                int known = 0;
+                for (const canopen::NodeInfo& n : ws()->nodes().snapshot()) known += !n.dictionary.isEmpty();
+                return ws()->canTransmit() && known >= 3;
+            },
+            kPatienceMs));
         net_ = static_cast<SimBus*>(ws()->bus())->sharedNetwork();
         QTableView* nodes = w_->nodesDock()->view();
         auto yes = answerBox(QMessageBox::Yes);
-        QVERIFY(coscope::testing::contextMenuClick(nodes, QPoint(4, nodes->viewport()->height() - 4), QStringLiteral("Start (Operational)")));
+        QVERIFY(coscope::testing::contextMenuClick(nodes, QPoint(4, nodes->viewport()->height() - 4),
+                                                   QStringLiteral("Start (Operational)")));
         QVERIFY(waitFor([&] { return yes->answered(); }, kPatienceMs));
     }
 
@@ -163,8 +168,12 @@ class TestMasterMachine : public QObject {
         auto* tree = w_->plotDock()->findChild<QTreeWidget*>(QStringLiteral("signalTree"));
         QVERIFY(tree);
         QTreeWidgetItem* item = nullptr;
-        QVERIFY(waitFor([&] { return (item = signalItem(tree, 2, QStringLiteral("Position actual value"))) && tree->visualItemRect(item).isValid(); },
-                        kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                return (item = signalItem(tree, 2, QStringLiteral("Position actual value"))) &&
+                       tree->visualItemRect(item).isValid();
+            },
+            kPatienceMs));
         tree->scrollToItem(item);
         QVERIFY(clickCheckBox(tree, item));
         QCOMPARE(w_->plotDock()->view()->plotted().size(), size_t(1));
@@ -200,8 +209,14 @@ class TestMasterMachine : public QObject {
         QVERIFY(waitFor([&] { return nodeBox->findText(QStringLiteral("Node 2")) >= 0; }, kPatienceMs));
         nodeBox->setFocus();
         QTest::keyClick(nodeBox, Qt::Key_Home);
-        for (int i = 0; i < nodeBox->count() && nodeBox->currentText() != QStringLiteral("Node 2"); ++i) QTest::keyClick(nodeBox, Qt::Key_Down);
-        QVERIFY(waitFor([&] { return nodeBox->currentText() == QStringLiteral("Node 2") && dock->editor(0x6060, 0) && dock->controlwordBit(3); }, kPatienceMs));
+        for (int i = 0; i < nodeBox->count() && nodeBox->currentText() != QStringLiteral("Node 2"); ++i)
+            QTest::keyClick(nodeBox, Qt::Key_Down);
+        QVERIFY(waitFor(
+            [&] {
+                return nodeBox->currentText() == QStringLiteral("Node 2") && dock->editor(0x6060, 0) &&
+                       dock->controlwordBit(3);
+            },
+            kPatienceMs));
         QTest::qWait(300);  // the values read from the drive
         typeAndEnter(dock->editor(0x6060, 0), QStringLiteral("3"));
         typeAndEnter(dock->editor(0x60FF, 0), QStringLiteral("20000"));
@@ -229,7 +244,10 @@ class TestMasterMachine : public QObject {
                 // indicator and text only.
                 QStyleOptionButton option;
                 option.initFrom(box);
-                if (!box->isChecked()) QTest::mouseClick(box, Qt::LeftButton, {}, box->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, box).center());
+                if (!box->isChecked())
+                    QTest::mouseClick(
+                        box, Qt::LeftButton, {},
+                        box->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, box).center());
                 QVERIFY(box->isChecked());
             }
         };
@@ -238,9 +256,13 @@ class TestMasterMachine : public QObject {
         setBits({0});  // Switch on
         QVERIFY(holdUntil([&] { return driveState(2) == State::SwitchedOn; }));
         setBits({3});  // Enable operation: turns at the target velocity while held
-        QVERIFY(holdUntil([&] { return driveState(2) == State::OperationEnabled && onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000; }));
+        QVERIFY(holdUntil([&] {
+            return driveState(2) == State::OperationEnabled &&
+                   onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000;
+        }));
         // Released: Halt, the motor stops; the drive stays enabled.
-        QVERIFY(waitFor([&] { return std::abs(onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); })) < 1; }, 3000));
+        QVERIFY(
+            waitFor([&] { return std::abs(onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); })) < 1; }, 3000));
         QCOMPARE(driveState(2), State::OperationEnabled);
         click(dock->findChild<QPushButton*>(QStringLiteral("processDataStart")));  // stop sending
     }
@@ -258,20 +280,26 @@ class TestMasterMachine : public QObject {
             if (menu) QTest::keyClick(menu, Qt::Key_Escape);
             return false;
         });
-        if (!opened || !waitFor([&] { return (wiz = findTopLevel<Ds402Wizard>()) != nullptr; }) || !QTest::qWaitForWindowExposed(wiz)) return nullptr;
+        if (!opened || !waitFor([&] { return (wiz = findTopLevel<Ds402Wizard>()) != nullptr; }) ||
+            !QTest::qWaitForWindowExposed(wiz))
+            return nullptr;
         auto* nodes = wiz->findChild<QComboBox*>(QStringLiteral("nodeCombo"));
-        if (!waitFor([&] { return nodes->findText(QStringLiteral("Node 3"), Qt::MatchStartsWith) >= 0; }, 20000)) return nullptr;
+        if (!waitFor([&] { return nodes->findText(QStringLiteral("Node 3"), Qt::MatchStartsWith) >= 0; }, 20000))
+            return nullptr;
         nodes->setFocus();
         QTest::keyClick(nodes, Qt::Key_Home);
-        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node 3")); ++i) QTest::keyClick(nodes, Qt::Key_Down);
-        if (!waitFor([&] { return wiz->node() == 3 && wiz->shownState() == State::SwitchOnDisabled; }, 8000)) return nullptr;
+        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node 3")); ++i)
+            QTest::keyClick(nodes, Qt::Key_Down);
+        if (!waitFor([&] { return wiz->node() == 3 && wiz->shownState() == State::SwitchOnDisabled; }, 8000))
+            return nullptr;
         auto stepTo = [&](Command c, State expect) {
             QPushButton* b = wiz->stepButton(c);
             if (!waitFor([&] { return b->isEnabled(); }, 6000)) return false;
             click(b);
             return waitFor([&] { return driveState(3) == expect && wiz->shownState() == expect; }, 6000);
         };
-        if (!stepTo(Command::Shutdown, State::ReadyToSwitchOn) || !stepTo(Command::SwitchOn, State::SwitchedOn)) return nullptr;
+        if (!stepTo(Command::Shutdown, State::ReadyToSwitchOn) || !stepTo(Command::SwitchOn, State::SwitchedOn))
+            return nullptr;
         auto yes = answerBox(QMessageBox::Yes);
         return stepTo(Command::EnableOperation, State::OperationEnabled) ? wiz : nullptr;
     }
@@ -361,13 +389,16 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(w_.get()));
         QTest::keyClick(w_.get(), Qt::Key_Q, Qt::ControlModifier);
         QVERIFY2(waitFor([&] { return !asked.isEmpty(); }, 5000), "no question about the enabled drives");
-        QVERIFY2(asked.contains(QStringLiteral("Nodes 2, 3 are enabled")) && asked.contains(QStringLiteral("quit")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("Nodes 2, 3 are enabled")) && asked.contains(QStringLiteral("quit")),
+                 qPrintable(asked));
         QVERIFY(waitFor([&] { return !w_->isVisible(); }, 5000));
         logio::PcapReader r;
         QVERIFY(r.open(journal));
         const auto read = r.readAll();
-        QVERIFY2(std::any_of(read.begin(), read.end(), isDisableVoltage), "the journal lacks node 3's Disable voltage frame");
-        waitFor([&] { return driveState(3) == State::SwitchOnDisabled && driveState(2) != State::OperationEnabled; }, 3000);
+        QVERIFY2(std::any_of(read.begin(), read.end(), isDisableVoltage),
+                 "the journal lacks node 3's Disable voltage frame");
+        waitFor([&] { return driveState(3) == State::SwitchOnDisabled && driveState(2) != State::OperationEnabled; },
+                3000);
         QCOMPARE(driveState(3), State::SwitchOnDisabled);
         QVERIFY(driveState(2) != State::OperationEnabled);
     }

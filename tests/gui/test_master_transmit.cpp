@@ -44,9 +44,9 @@ using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
-using coscope::testing::signalItem;
 using coscope::testing::countTx;
 using coscope::testing::median;
+using coscope::testing::signalItem;
 using coscope::testing::txIntervalsMs;
 using coscope::testing::waitFor;
 
@@ -74,18 +74,21 @@ private slots:
         QVERIFY(coscope::testing::clickMenuItem(w, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
         Workspace* ws = w.workspace();
         // The scan after connecting identifies the three drives (they get their dictionaries).
-        QVERIFY(waitFor([&] {
-            int known = 0;
-            for (const canopen::NodeInfo& n : ws->nodes().snapshot()) known += !n.dictionary.isEmpty();
-            return ws->canTransmit() && known >= 3;
-        }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                int known = 0;
+                for (const canopen::NodeInfo& n : ws->nodes().snapshot()) known += !n.dictionary.isEmpty();
+                return ws->canTransmit() && known >= 3;
+            },
+            kPatienceMs));
 
         // Without SYNC the AIMOTOR sends no TPDO (type 1): NMT Start for all nodes first.
         QTableView* nodes = w.nodesDock()->view();
         QString asked;
         {
             auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
-            QVERIFY(coscope::testing::contextMenuClick(nodes, QPoint(4, nodes->viewport()->height() - 4), QStringLiteral("Start (Operational)")));
+            QVERIFY(coscope::testing::contextMenuClick(nodes, QPoint(4, nodes->viewport()->height() - 4),
+                                                       QStringLiteral("Start (Operational)")));
             QVERIFY(waitFor([&] { return yes->answered(); }, kPatienceMs));
         }
 
@@ -125,7 +128,8 @@ private slots:
         QVERIFY(clickDockTab(w, QStringLiteral("Plot")));
         auto* tree = w.plotDock()->findChild<QTreeWidget*>(QStringLiteral("signalTree"));
         QVERIFY(tree);
-        QVERIFY(waitFor([&] { return signalItem(tree, 2, QStringLiteral("Position actual value")) != nullptr; }, kPatienceMs));
+        QVERIFY(waitFor([&] { return signalItem(tree, 2, QStringLiteral("Position actual value")) != nullptr; },
+                        kPatienceMs));
 
         // Transmit: 123#1122 every 20 ms, typed, Enter.
         QVERIFY(clickDockTab(w, QStringLiteral("Transmit")));
@@ -141,7 +145,12 @@ private slots:
         QVERIFY(waitFor([&] { return txIntervalsMs(*ws->store(), 0x123, txFrom).size() >= 40; }, kPatienceMs));
         const double everyMs = median(txIntervalsMs(*ws->store(), 0x123, txFrom));
         QVERIFY2(everyMs > 19.0 && everyMs < 21.0, qPrintable(QString::number(everyMs)));
-        QVERIFY(waitFor([&] { return tx->model()->data(tx->model()->index(0, TransmitModel::Sent)).toString().remove(u',').toInt() >= 40; }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                return tx->model()->data(tx->model()->index(0, TransmitModel::Sent)).toString().remove(u',').toInt() >=
+                       40;
+            },
+            kPatienceMs));
         // A click on its Periodic box stops it.
         clickCheckBox(tx->view(), tx->model()->index(0, TransmitModel::Run));
         QVERIFY(waitFor([&] { return !tx->model()->isRunning(0); }, kPatienceMs));
@@ -161,7 +170,8 @@ private slots:
             QTest::keyClick(tx->frameEdit(), Qt::Key_Return);
             QVERIFY(waitFor([&] { return no->answered(); }, kPatienceMs));
         }
-        QVERIFY2(asked.contains(QStringLiteral("RPDO1 of node 2")) && asked.contains(QStringLiteral("6040h")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("RPDO1 of node 2")) && asked.contains(QStringLiteral("6040h")),
+                 qPrintable(asked));
         QTest::qWait(100);
         QCOMPARE(countTx(*ws->store(), 0x202), size_t(0));
         // "Yes" sends it; asked once: Enter on its row sends it again without a question.
@@ -171,7 +181,8 @@ private slots:
             QVERIFY(waitFor([&] { return yes->answered(); }, kPatienceMs));
         }
         QVERIFY(waitFor([&] { return countTx(*ws->store(), 0x202) == 1; }, kPatienceMs));
-        QTest::mouseClick(tx->view()->viewport(), Qt::LeftButton, {}, tx->view()->visualRect(tx->model()->index(1, TransmitModel::Data)).center());
+        QTest::mouseClick(tx->view()->viewport(), Qt::LeftButton, {},
+                          tx->view()->visualRect(tx->model()->index(1, TransmitModel::Data)).center());
         QTest::keyClick(tx->view(), Qt::Key_Return);
         QVERIFY(waitFor([&] { return countTx(*ws->store(), 0x202) == 2; }, kPatienceMs));
         QVERIFY(!QApplication::activeModalWidget());
@@ -192,12 +203,15 @@ private slots:
         QCOMPARE(tx->model()->entry(0).periodUs, 20000u);
         QVERIFY(tx->banner()->text().contains(QStringLiteral("Connect to a bus first")));
         QVERIFY(w.connectBus(QStringLiteral("sim://?listen-only=1")));
-        QVERIFY(waitFor([&] { return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open; }, kPatienceMs));
+        QVERIFY(waitFor([&] { return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open; },
+                        kPatienceMs));
         QVERIFY(waitFor([&] { return tx->banner()->text().contains(QStringLiteral("Listen-only")); }, kPatienceMs));
         QVERIFY(!tx->findChild<QPushButton*>(QStringLiteral("transmitSend"))->isEnabled());
         QVERIFY(!w.masterActions()->syncAction()->isEnabled());
-        waitFor([&] { return w.masterActions()->syncAction()->toolTip().contains(QStringLiteral("Listen-only")); }, 5000);  // the window's next tick
-        QVERIFY2(w.masterActions()->syncAction()->toolTip().contains(QStringLiteral("Listen-only")), qPrintable(w.masterActions()->syncAction()->toolTip()));
+        waitFor([&] { return w.masterActions()->syncAction()->toolTip().contains(QStringLiteral("Listen-only")); },
+                5000);  // the window's next tick
+        QVERIFY2(w.masterActions()->syncAction()->toolTip().contains(QStringLiteral("Listen-only")),
+                 qPrintable(w.masterActions()->syncAction()->toolTip()));
     }
 };
 

@@ -44,7 +44,8 @@ void typeInto(QSpinBox* box, int value) {
 }
 
 // Answers the node's "Heartbeat and guarding" dialog: the radio button `choice`, the values typed.
-std::unique_ptr<ModalAnswerer> answerWatchDialog(const QString& choice, std::vector<std::pair<QString, int>> values, QString* guardingTip = nullptr) {
+std::unique_ptr<ModalAnswerer> answerWatchDialog(const QString& choice, std::vector<std::pair<QString, int>> values,
+                                                 QString* guardingTip = nullptr) {
     return std::make_unique<ModalAnswerer>([=](QWidget* w) {
         if (w->objectName() != QStringLiteral("errorControlDialog")) return false;
         if (guardingTip) *guardingTip = w->findChild<QRadioButton*>(QStringLiteral("watchGuarding"))->toolTip();
@@ -87,7 +88,8 @@ class TestNodeGuarding : public QObject {
         w_ = std::make_unique<MainWindow>();
         w_->show();
         QVERIFY(QTest::qWaitForWindowActive(w_.get()));
-        if (url == u"sim://") QVERIFY(clickMenuItem(*w_, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
+        if (url == u"sim://")
+            QVERIFY(clickMenuItem(*w_, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
         else QVERIFY(w_->connectBus(url, false));
         QVERIFY(waitFor([&] { return ws()->bus() && ws()->bus()->state() == CanBus::State::Open; }));
     }
@@ -96,7 +98,8 @@ class TestNodeGuarding : public QObject {
     bool openWatchDialog(int node) {
         QTableView* view = dock()->view();
         if (!waitFor([&] { return dock()->model()->rowOfNode(node) >= 0; }, 20000)) return false;
-        const QPoint pos = view->visualRect(dock()->model()->index(dock()->model()->rowOfNode(node), NodesModel::Node)).center();
+        const QPoint pos =
+            view->visualRect(dock()->model()->index(dock()->model()->rowOfNode(node), NodesModel::Node)).center();
         QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, pos);
         if (dock()->selectedNode() != node) return false;
         return coscope::testing::contextMenuClick(view, pos, QStringLiteral("Heartbeat and guarding…"));
@@ -120,11 +123,14 @@ private slots:
         QVERIFY(waitFor([&] { return dock()->model()->rowOfNode(3) >= 0; }, 20000));  // the scan on connect found it
         const size_t before = ws()->store()->size();
         {
-            auto answer = answerWatchDialog(QStringLiteral("watchGuarding"), {{QStringLiteral("guardTime"), 100}, {QStringLiteral("lifeTimeFactor"), 3}});
+            auto answer = answerWatchDialog(QStringLiteral("watchGuarding"), {{QStringLiteral("guardTime"), 100},
+                                                                              {QStringLiteral("lifeTimeFactor"), 3}});
             QVERIFY(openWatchDialog(3));
             QVERIFY(waitFor([&] { return answer->answered(); }, 5000));
         }
-        QVERIFY2(waitFor([&] { return watchCell(dock(), 3).startsWith(QStringLiteral("guarding 100 ms × 3: ok")); }, 3000), qPrintable(watchCell(dock(), 3)));
+        QVERIFY2(
+            waitFor([&] { return watchCell(dock(), 3).startsWith(QStringLiteral("guarding 100 ms × 3: ok")); }, 3000),
+            qPrintable(watchCell(dock(), 3)));
         QTest::qWait(1000);
         // The requests: RTR on 703h, ours, about every 100 ms; the answers: 703h with the NMT
         // state (7Fh pre-operational) and bit 7 alternating, starting with 0.
@@ -141,7 +147,8 @@ private slots:
         // rate is checked by the mean interval below.
         QVERIFY2(requests.size() >= 8, qPrintable(QString::number(requests.size())));
         const int64_t spanMs = (requests.back() - requests.front()) / 1'000'000;
-        QVERIFY2(spanMs / int64_t(requests.size() - 1) >= 80 && spanMs / int64_t(requests.size() - 1) <= 130, qPrintable(QString::number(spanMs)));
+        QVERIFY2(spanMs / int64_t(requests.size() - 1) >= 80 && spanMs / int64_t(requests.size() - 1) <= 130,
+                 qPrintable(QString::number(spanMs)));
         QVERIFY(answers.size() + 1 >= requests.size());
         QCOMPARE(answers[0] & 0x80, 0);
         for (size_t i = 0; i < answers.size(); ++i) {
@@ -158,13 +165,15 @@ private slots:
             device = net()->device(3);
             device->makeUnconfigured();
         });
-        QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": lost")); }, 2000), qPrintable(watchCell(dock(), 3)));
+        QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": lost")); }, 2000),
+                 qPrintable(watchCell(dock(), 3)));
         QVERIFY(waitFor([&] { return hasEvent(ws(), 3, QStringLiteral("Node guarding lost")); }, 2000));
         QVERIFY(ws()->nodes().node(3)->heartbeatLost);
         QVERIFY(ws()->nodes().node(3)->guardingErrors >= 1);  // the requests nobody answered
         // Back (power cycle: boot-up, the toggle starts at 0 again): ok, and an event says so.
         net()->runOnNetworkThread([&] { device->powerCycle(); });
-        QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": ok")); }, 3000), qPrintable(watchCell(dock(), 3)));
+        QVERIFY2(waitFor([&] { return watchCell(dock(), 3).contains(QStringLiteral(": ok")); }, 3000),
+                 qPrintable(watchCell(dock(), 3)));
         QVERIFY(waitFor([&] { return hasEvent(ws(), 3, QStringLiteral("Node guarding answers again")); }, 2000));
 
         // Not watched any more: the requests stop.
@@ -177,7 +186,8 @@ private slots:
         QTest::qWait(200);
         const size_t after = ws()->store()->size();
         QTest::qWait(500);
-        for (size_t n = after; n < ws()->store()->size(); ++n) QVERIFY(!(ws()->store()->frame(FrameNo(n)).id == 0x703 && ws()->store()->frame(FrameNo(n)).isRemote()));
+        for (size_t n = after; n < ws()->store()->size(); ++n)
+            QVERIFY(!(ws()->store()->frame(FrameNo(n)).id == 0x703 && ws()->store()->frame(FrameNo(n)).isRemote()));
     }
 
     void heartbeatConsumerTimeLost() {
@@ -190,17 +200,24 @@ private slots:
             QVERIFY(openWatchDialog(2));
             QVERIFY(waitFor([&] { return answer->answered(); }, 5000));
         }
-        QVERIFY2(waitFor([&] { return watchCell(dock(), 2).startsWith(QStringLiteral("heartbeat 300 ms: ok")); }, 3000), qPrintable(watchCell(dock(), 2)));
+        QVERIFY2(waitFor([&] { return watchCell(dock(), 2).startsWith(QStringLiteral("heartbeat 300 ms: ok")); }, 3000),
+                 qPrintable(watchCell(dock(), 2)));
         net()->runOnNetworkThread([&] { net()->device(2)->setValue(0x1017, 0, od::Value::unsignedInt(0)); });
-        QVERIFY2(waitFor([&] { return watchCell(dock(), 2).contains(QStringLiteral(": lost")); }, 2000), qPrintable(watchCell(dock(), 2)));
-        QVERIFY(waitFor([&] { return hasEvent(ws(), 2, QStringLiteral("Heartbeat lost: none within the consumer time of 300 ms")); }, 2000));
+        QVERIFY2(waitFor([&] { return watchCell(dock(), 2).contains(QStringLiteral(": lost")); }, 2000),
+                 qPrintable(watchCell(dock(), 2)));
+        QVERIFY(waitFor(
+            [&] {
+                return hasEvent(ws(), 2, QStringLiteral("Heartbeat lost: none within the consumer time of 300 ms"));
+            },
+            2000));
     }
 
     // Listen-only: node guarding is off in the dialog, with the reason; nothing is sent.
     void listenOnlyRefusesGuarding() {
         connect(QStringLiteral("sim://?listen-only=1"));
         if (QTest::currentTestFailed()) return;
-        ws()->nodes().update(3, [](canopen::NodeInfo&) {});  // a node the user sees (a listen-only bus cannot be scanned)
+        ws()->nodes().update(3,
+                             [](canopen::NodeInfo&) {});  // a node the user sees (a listen-only bus cannot be scanned)
         QString tip;
         {
             auto answer = answerWatchDialog(QStringLiteral("watchGuarding"), {}, &tip);

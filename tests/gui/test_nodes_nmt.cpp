@@ -51,10 +51,12 @@ private slots:
         NodesDock dock(&rig.ws);
         dock.show();
         QVERIFY(QTest::qWaitForWindowExposed(&dock));
-        QVERIFY(QTest::qWaitFor([&] {
-            dock.refresh();  // as the main window's update timer does
-            return dock.model()->rowCount() >= 4;
-        }, 5000));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                dock.refresh();  // as the main window's update timer does
+                return dock.model()->rowCount() >= 4;
+            },
+            5000));
         QSignalSpy finished(&dock, &NodesDock::nmtFinished);
         // Reset communication of all nodes and of node 1 (its row's menu) while drive 1 is in
         // Operation enabled: the question names it; "no" (Escape) sends nothing.
@@ -76,7 +78,8 @@ private slots:
             QVERIFY2(asked.contains(QStringLiteral("Drive 1 is enabled (Operation enabled")), qPrintable(asked));
             QVERIFY2(asked.contains(QStringLiteral("a reset stops it abruptly")), qPrintable(asked));
             QVERIFY2(asked.contains(QStringLiteral("AL401")), qPrintable(asked));
-            QVERIFY2(asked.contains(row < 0 ? QStringLiteral("to all nodes") : QStringLiteral("to node 1")), qPrintable(asked));
+            QVERIFY2(asked.contains(row < 0 ? QStringLiteral("to all nodes") : QStringLiteral("to node 1")),
+                     qPrintable(asked));
             QVERIFY(!asked.contains(QStringLiteral("Drive 2")));  // node 2 is not enabled
             QCOMPARE(rig.driveState(1), State::OperationEnabled);
         }
@@ -118,9 +121,14 @@ private slots:
             const int row = m->rowOfNode(node);
             return row < 0 ? QString() : m->index(row, column).data().toString();
         };
-        QVERIFY(QTest::qWaitFor([&] { return cell(2, NodesModel::StateSource) == u"boot-up" && cell(4, NodesModel::StateSource) == u"boot-up"; }, 5000));
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                return cell(2, NodesModel::StateSource) == u"boot-up" && cell(4, NodesModel::StateSource) == u"boot-up";
+            },
+            5000));
         QCOMPARE(cell(2, NodesModel::State), QStringLiteral("Pre-operational"));
-        QCOMPARE(m->headerData(NodesModel::StateSource, Qt::Horizontal, Qt::DisplayRole).toString(), QStringLiteral("State from"));
+        QCOMPARE(m->headerData(NodesModel::StateSource, Qt::Horizontal, Qt::DisplayRole).toString(),
+                 QStringLiteral("State from"));
         for (int node : {2, 4}) {
             QString asked;
             auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
@@ -132,7 +140,9 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return cell(2, NodesModel::State) == u"Operational"; }, 3000));
         QCOMPARE(cell(2, NodesModel::StateSource), QStringLiteral("after our NMT Start (not confirmed)"));
         const QModelIndex state2 = m->index(m->rowOfNode(2), NodesModel::State);
-        QVERIFY2(state2.data(Qt::ToolTipRole).toString().startsWith(QStringLiteral("CoScope sent NMT Start; the node has not confirmed it")),
+        QVERIFY2(state2.data(Qt::ToolTipRole)
+                     .toString()
+                     .startsWith(QStringLiteral("CoScope sent NMT Start; the node has not confirmed it")),
                  qPrintable(state2.data(Qt::ToolTipRole).toString()));
         QVERIFY(state2.data(Qt::FontRole).value<QFont>().italic());
         QVERIFY(QTest::qWaitFor([&] { return cell(4, NodesModel::StateSource) == u"its PDOs"; }, 3000));

@@ -83,13 +83,16 @@ private slots:
         OdTreeModel* m = dock->model();
         QCOMPARE(dock->dictionaryName(), QStringLiteral("delta-asda-a2"));
         QVERIFY(m->indexOf(0x1017, 0).isValid());
-        QCOMPARE(m->data(m->indexOf(0x1017, 0, OdTreeModel::Name), Qt::DisplayRole).toString(), QStringLiteral("Producer heartbeat time"));
+        QCOMPARE(m->data(m->indexOf(0x1017, 0, OdTreeModel::Name), Qt::DisplayRole).toString(),
+                 QStringLiteral("Producer heartbeat time"));
 
         // Read one: 1018h:01 vendor-ID of the Delta drive (dictionary 0x000001DD).
         QVERIFY(dock->readEntry(0x1018, 1));
         QVERIFY(waitFor([&] { return m->actualValue(0x1018, 1).has_value(); }));
         QCOMPARE(*m->actualValue(0x1018, 1)->toUInt64(), uint64_t(0x1DD));
-        QVERIFY(m->data(m->indexOf(0x1018, 1, OdTreeModel::Value), Qt::DisplayRole).toString().contains(QStringLiteral("000001DDh")));
+        QVERIFY(m->data(m->indexOf(0x1018, 1, OdTreeModel::Value), Qt::DisplayRole)
+                    .toString()
+                    .contains(QStringLiteral("000001DDh")));
 
         // Read all: progress to completion, values in the rows.
         QVERIFY(dock->readAll());
@@ -116,7 +119,8 @@ private slots:
         QTest::keyClick(spin, Qt::Key_A, Qt::ControlModifier);
         QTest::keyClicks(spin, QStringLiteral("750"));
         QTest::keyClick(spin, Qt::Key_Return);
-        QVERIFY(waitFor([&] { return deviceValue(w, 1, 0x1017, 0) && deviceValue(w, 1, 0x1017, 0)->toUInt64() == 750u; }));
+        QVERIFY(
+            waitFor([&] { return deviceValue(w, 1, 0x1017, 0) && deviceValue(w, 1, 0x1017, 0)->toUInt64() == 750u; }));
         QVERIFY(waitFor([&] { return m->actualValue(0x1017, 0) && *m->actualValue(0x1017, 0)->toUInt64() == 750u; }));
         QVERIFY(m->isChanged(0x1017, 0));
         QVERIFY(m->data(m->indexOf(0x1017, 0, OdTreeModel::Value), Qt::FontRole).value<QFont>().bold());
@@ -138,11 +142,15 @@ private slots:
                  QStringLiteral("Write 6060h:00 Modes of operation = 1 (Profile position (PP)) to node 1?"));
 
         // A write the drive refuses: the abort text on that row (red, tool tip) and in the message line.
-        network(w)->runOnNetworkThread([&] { network(w)->device(1)->sdoFaults().abortOn = std::make_tuple(uint16_t(0x6083), uint8_t(0), uint32_t(0x08000022)); });
+        network(w)->runOnNetworkThread([&] {
+            network(w)->device(1)->sdoFaults().abortOn =
+                std::make_tuple(uint16_t(0x6083), uint8_t(0), uint32_t(0x08000022));
+        });
         QVERIFY(dock->writeEntryText(0x6083, 0, QStringLiteral("1234")));
         QVERIFY(waitFor([&] { return m->state(0x6083, 0) == OdTreeModel::State::Error; }));
         const QString error = m->errorText(0x6083, 0);
-        QVERIFY2(error.contains(QStringLiteral("08000022")) && error.contains(QStringLiteral("6083")), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("08000022")) && error.contains(QStringLiteral("6083")),
+                 qPrintable(error));
         const QModelIndex bad = m->indexOf(0x6083, 0, OdTreeModel::Value);
         QCOMPARE(m->data(bad, Qt::ToolTipRole).toString(), error);
         QCOMPARE(m->data(bad, Qt::ForegroundRole).value<QBrush>().color(), QColor(0xB0, 0x00, 0x20));
@@ -191,8 +199,11 @@ private slots:
         QCOMPARE(dock->lastApplyResults().size(), size_t(1));
         QVERIFY(dock->lastApplyResults().front().ok);
         QCOMPARE(dock->lastApplyResults().front().index, uint16_t(0x1017));
-        QVERIFY(waitFor([&] { return deviceValue(w, 1, 0x1017, 0) && deviceValue(w, 1, 0x1017, 0)->toUInt64() == 321u; }));
-        QVERIFY(waitFor([&] { return dock->model()->actualValue(0x1017, 0) && *dock->model()->actualValue(0x1017, 0)->toUInt64() == 321u; }));
+        QVERIFY(
+            waitFor([&] { return deviceValue(w, 1, 0x1017, 0) && deviceValue(w, 1, 0x1017, 0)->toUInt64() == 321u; }));
+        QVERIFY(waitFor([&] {
+            return dock->model()->actualValue(0x1017, 0) && *dock->model()->actualValue(0x1017, 0)->toUInt64() == 321u;
+        }));
     }
 
     void listenOnlyDisablesSdo() {
@@ -203,7 +214,8 @@ private slots:
         dock->setAutoConfirm(true);
         w.refresh();
         QVERIFY(!dock->canTransmit());
-        const QModelIndex valueCell = dock->filter()->mapFromSource(dock->model()->indexOf(0x1017, 0, OdTreeModel::Value));
+        const QModelIndex valueCell =
+            dock->filter()->mapFromSource(dock->model()->indexOf(0x1017, 0, OdTreeModel::Value));
         QVERIFY(!(valueCell.flags() & Qt::ItemIsEditable));
         QVERIFY(!dock->readAll());
         QVERIFY(!dock->readEntry(0x1017, 0));
@@ -230,7 +242,8 @@ private slots:
         auto clickNode = [&](int node) {
             QTableView* view = w.nodesDock()->view();
             const int row = w.nodesDock()->model()->rowOfNode(node);
-            QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(row, 0)).center());
+            QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                              view->visualRect(view->model()->index(row, 0)).center());
             return waitFor([&] { return w.odDock()->node() == node && w.odDock()->model()->hasDictionary(); });
         };
         QWidget* readAll = nullptr;
@@ -246,7 +259,8 @@ private slots:
         const int nodeOneTotal = bar->maximum();
         QVERIFY(clickNode(2));  // the AIMOTOR: another count than the Delta's
         QVERIFY2(bar->text().isEmpty(), qPrintable(bar->text()));
-        QVERIFY2(!w.odDock()->messageText().contains(QStringLiteral("objects of node 1")), qPrintable(w.odDock()->messageText()));
+        QVERIFY2(!w.odDock()->messageText().contains(QStringLiteral("objects of node 1")),
+                 qPrintable(w.odDock()->messageText()));
         // Node 2's own read: its own count.
         QVERIFY(waitFor([&] { return readAll->isEnabled(); }));
         QTest::mouseClick(readAll, Qt::LeftButton);

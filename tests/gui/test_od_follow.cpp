@@ -62,7 +62,8 @@ struct Window {
         QTableView* nodes = w.nodesDock()->view();
         const int row = w.nodesDock()->model()->rowOfNode(node);
         if (row < 0) return false;
-        QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {}, nodes->visualRect(nodes->model()->index(row, 1)).center());
+        QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {},
+                          nodes->visualRect(nodes->model()->index(row, 1)).center());
         w.refresh();
         return dock()->model()->node() == node && dock()->model()->hasDictionary();
     }
@@ -73,7 +74,8 @@ struct Window {
         QTest::keyClick(search, Qt::Key_A, Qt::ControlModifier);
         QTest::keyClicks(search, QString::number(index, 16));
         dock()->view()->expandAll();
-        const QModelIndex cell = dock()->filter()->mapFromSource(dock()->model()->indexOf(index, sub, OdTreeModel::Name));
+        const QModelIndex cell =
+            dock()->filter()->mapFromSource(dock()->model()->indexOf(index, sub, OdTreeModel::Name));
         if (!cell.isValid()) return false;
         dock()->view()->scrollTo(cell);
         const QPoint at = dock()->view()->visualRect(cell).center();
@@ -82,18 +84,23 @@ struct Window {
         return waitFor([&] { return dock()->model()->state(index, sub) == OdTreeModel::State::Read; });
     }
     QString shown(uint16_t index, uint8_t sub) {
-        return dock()->model()->data(dock()->model()->indexOf(index, sub, OdTreeModel::Value), Qt::DisplayRole).toString();
+        return dock()
+            ->model()
+            ->data(dock()->model()->indexOf(index, sub, OdTreeModel::Value), Qt::DisplayRole)
+            .toString();
     }
     QString header() { return dock()->findChild<QLabel*>(QStringLiteral("odHeader"))->text(); }
 };
 
 // Waits for the wizard's first state read of a drive that finished initialising.
 bool waitReady(Ds402Wizard& wizard, QSignalSpy& read) {
-    return waitFor([&] {
-        for (const auto& args : read)
-            if (args.first().toBool() && wizard.shownState() == State::SwitchOnDisabled) return true;
-        return false;
-    }, 6000);
+    return waitFor(
+        [&] {
+            for (const auto& args : read)
+                if (args.first().toBool() && wizard.shownState() == State::SwitchOnDisabled) return true;
+            return false;
+        },
+        6000);
 }
 }  // namespace
 
@@ -116,7 +123,11 @@ private slots:
         win.w.refresh();
         QVERIFY(win.choose(1));
         // Units as written in SI: 1006h in µs, not "us".
-        QCOMPARE(win.dock()->model()->data(win.dock()->model()->indexOf(0x1006, 0, OdTreeModel::Unit), Qt::DisplayRole).toString(), QStringLiteral("µs"));
+        QCOMPARE(win.dock()
+                     ->model()
+                     ->data(win.dock()->model()->indexOf(0x1006, 0, OdTreeModel::Unit), Qt::DisplayRole)
+                     .toString(),
+                 QStringLiteral("µs"));
         QVERIFY(win.read(0x6040, 0));
         QVERIFY2(win.shown(0x6040, 0) != u"0006h" && !win.shown(0x6040, 0).isEmpty(), qPrintable(win.shown(0x6040, 0)));
 
@@ -177,8 +188,13 @@ private slots:
         QVERIFY(win.choose(4));
         QVERIFY(win.read(0x6061, 0));
         QVERIFY(win.read(0x6041, 0));
-        const QString tip = win.dock()->model()->data(win.dock()->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::ToolTipRole).toString();
-        QVERIFY2(tip.contains(QStringLiteral("Bits on:")) && tip.contains(QStringLiteral("operation enabled")) && tip.contains(QStringLiteral("zero speed")), qPrintable(tip));
+        const QString tip = win.dock()
+                                ->model()
+                                ->data(win.dock()->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::ToolTipRole)
+                                .toString();
+        QVERIFY2(tip.contains(QStringLiteral("Bits on:")) && tip.contains(QStringLiteral("operation enabled")) &&
+                     tip.contains(QStringLiteral("zero speed")),
+                 qPrintable(tip));
         QVERIFY2(!tip.contains(QStringLiteral("operation mode specific")), qPrintable(tip));
         click(wizard.disableButton());
         QVERIFY(waitFor([&] { return wizard.shownState() == State::SwitchOnDisabled && !wizard.isBusy(); }));
@@ -234,7 +250,8 @@ private slots:
         QCOMPARE(win.dock()->dictionaryName(), QStringLiteral("dexmart-dev"));
         QVERIFY2(win.header().contains(QStringLiteral("Node 7")), qPrintable(win.header()));
         QCOMPARE(win.dock()->model()->valuesRead(), 0);
-        QVERIFY2(win.dock()->messageText().contains(QStringLiteral("node-ID 7")), qPrintable(win.dock()->messageText()));
+        QVERIFY2(win.dock()->messageText().contains(QStringLiteral("node-ID 7")),
+                 qPrintable(win.dock()->messageText()));
         QVERIFY(win.read(0x1017, 0));  // node 7 answers
         QVERIFY(!win.w.workspace()->nodes().node(3));
     }

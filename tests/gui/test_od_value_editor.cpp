@@ -21,9 +21,9 @@
 #include <QAction>
 #include <QLabel>
 #include <QMessageBox>
+#include <QSettings>
 #include <QTableView>
 #include <QToolBar>
-#include <QSettings>
 #include <QTreeView>
 #include <QtTest>
 
@@ -68,7 +68,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         w.showView(QStringLiteral("od"));
         QVERIFY(w.connectBus(QStringLiteral("sim://")));
-        QVERIFY(waitFor([&] { return w.workspace()->bus()->state() == CanBus::State::Open && w.workspace()->nodes().node(1).has_value(); }));
+        QVERIFY(waitFor([&] {
+            return w.workspace()->bus()->state() == CanBus::State::Open && w.workspace()->nodes().node(1).has_value();
+        }));
         w.nodesDock()->assignDictionary(1, QStringLiteral("delta-asda-a2"));
         ObjectDictionaryDock* dock = w.odDock();
         dock->setNode(1);
@@ -81,7 +83,8 @@ private slots:
         auto sim = [&] { return static_cast<SimBus*>(w.workspace()->bus())->network(); };
         auto controlword = [&] {
             uint64_t v = ~0ull;
-            sim()->runOnNetworkThread([&] { v = sim()->device(1)->value(0x6040, 0).value_or(od::Value{}).toUInt64().value_or(~0ull); });
+            sim()->runOnNetworkThread(
+                [&] { v = sim()->device(1)->value(0x6040, 0).value_or(od::Value{}).toUInt64().value_or(~0ull); });
             return v;
         };
         auto editor = [&] { return view->findChild<IntegerSpinBox*>(QStringLiteral("odValueEditor")); };
@@ -94,15 +97,17 @@ private slots:
             bool byF2;
         };
         int round = 0;
-        for (const Typed& t : {Typed{"0x1F", 0x1F, false}, Typed{"0", 0, true}, Typed{"1Fh", 0x1F, true}, Typed{"0X00", 0, false},
-                               Typed{"1fh", 0x1F, true}, Typed{"0", 0, true}, Typed{"31", 0x1F, false}}) {
+        for (const Typed& t :
+             {Typed{"0x1F", 0x1F, false}, Typed{"0", 0, true}, Typed{"1Fh", 0x1F, true}, Typed{"0X00", 0, false},
+              Typed{"1fh", 0x1F, true}, Typed{"0", 0, true}, Typed{"31", 0x1F, false}}) {
             ++round;
             // A window manager gives the focus back to the main window when the question closes;
             // offscreen there is none, so do its part.
             w.activateWindow();
             QVERIFY(QTest::qWaitForWindowActive(&w));
             if (t.byF2) {
-                QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(cell.siblingAtColumn(OdTreeModel::Name)).center());
+                QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                                  view->visualRect(cell.siblingAtColumn(OdTreeModel::Name)).center());
                 QTest::keyClick(view, Qt::Key_F2);
             } else {
                 const QPoint at = view->visualRect(cell).center();
@@ -125,14 +130,18 @@ private slots:
             const QByteArray frame = downloadsFrom(w, before).front();
             QCOMPARE(frame.toHex(' '), QByteArray("2b 40 60 00").append(t.expected ? " 1f 00 00 00" : " 00 00 00 00"));
             QVERIFY2(waitFor([&] { return controlword() == t.expected; }), t.text);
-            QVERIFY(waitFor([&] { return dock->model()->actualValue(0x6040, 0) && dock->model()->actualValue(0x6040, 0)->toUInt64() == t.expected; }));
+            QVERIFY(waitFor([&] {
+                return dock->model()->actualValue(0x6040, 0) &&
+                       dock->model()->actualValue(0x6040, 0)->toUInt64() == t.expected;
+            }));
         }
         QCOMPARE(round, 7);
 
         // Opened again: the editor shows the value in the controlword's notation.
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(cell.siblingAtColumn(OdTreeModel::Name)).center());
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                          view->visualRect(cell.siblingAtColumn(OdTreeModel::Name)).center());
         QTest::keyClick(view, Qt::Key_F2);
         QVERIFY(waitFor([&] { return editor() != nullptr; }, 2000));
         QCOMPARE(editor()->text(), QStringLiteral("001Fh"));
@@ -156,8 +165,12 @@ private slots:
             QVERIFY2(asked.isEmpty(), qPrintable(asked));
             QVERIFY(downloadsFrom(w, before).empty());
             const QString why = dock->messageText();
-            if (QByteArray(bad) == "70000") QVERIFY2(why.contains(QStringLiteral("70000 is out of range: 0000h … FFFFh")), qPrintable(why));
-            else QVERIFY2(why.contains(QStringLiteral("“%1” is not a number").arg(QString::fromLatin1(bad))) && why.contains(QStringLiteral("0x1F or 1Fh")), qPrintable(why));
+            if (QByteArray(bad) == "70000")
+                QVERIFY2(why.contains(QStringLiteral("70000 is out of range: 0000h … FFFFh")), qPrintable(why));
+            else
+                QVERIFY2(why.contains(QStringLiteral("“%1” is not a number").arg(QString::fromLatin1(bad))) &&
+                             why.contains(QStringLiteral("0x1F or 1Fh")),
+                         qPrintable(why));
             QCOMPARE(controlword(), uint64_t(0x1F));
         }
     }
@@ -172,7 +185,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         w.showView(QStringLiteral("od"));
         QVERIFY(w.connectBus(QStringLiteral("sim://")));
-        QVERIFY(waitFor([&] { return w.workspace()->nodes().node(1).has_value() && w.workspace()->nodes().node(2).has_value(); }));
+        QVERIFY(waitFor(
+            [&] { return w.workspace()->nodes().node(1).has_value() && w.workspace()->nodes().node(2).has_value(); }));
         w.nodesDock()->assignDictionary(1, QStringLiteral("delta-asda-a2"));
         w.nodesDock()->assignDictionary(2, QStringLiteral("aimotor"));
         w.refresh();
@@ -180,7 +194,8 @@ private slots:
         auto choose = [&](int node) {
             QTableView* nodes = w.nodesDock()->view();
             const int row = w.nodesDock()->model()->rowOfNode(node);
-            QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {}, nodes->visualRect(nodes->model()->index(row, 1)).center());
+            QTest::mouseClick(nodes->viewport(), Qt::LeftButton, {},
+                              nodes->visualRect(nodes->model()->index(row, 1)).center());
             w.refresh();
             return dock->model()->node() == node;
         };
@@ -197,15 +212,20 @@ private slots:
         QVERIFY(header().contains(QStringLiteral("%1 read").arg(read)));
 
         QVERIFY(choose(2));
-        QVERIFY2(header().contains(QStringLiteral("Node 2")) && header().contains(QStringLiteral("aimotor")), qPrintable(header()));
+        QVERIFY2(header().contains(QStringLiteral("Node 2")) && header().contains(QStringLiteral("aimotor")),
+                 qPrintable(header()));
         QCOMPARE(dock->model()->valuesRead(), 0);
         QVERIFY2(!dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
 
         QVERIFY(choose(1));
-        QVERIFY2(header().contains(QStringLiteral("Node 1")) && header().contains(QStringLiteral("%1 read").arg(read)), qPrintable(header()));
+        QVERIFY2(header().contains(QStringLiteral("Node 1")) && header().contains(QStringLiteral("%1 read").arg(read)),
+                 qPrintable(header()));
         QCOMPARE(dock->model()->valuesRead(), read);
         QCOMPARE(dock->model()->actualValue(0x6041, 0), statusword);
-        QVERIFY(!dock->model()->data(dock->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::DisplayRole).toString().isEmpty());
+        QVERIFY(!dock->model()
+                     ->data(dock->model()->indexOf(0x6041, 0, OdTreeModel::Value), Qt::DisplayRole)
+                     .toString()
+                     .isEmpty());
         QVERIFY2(dock->messageText().contains(QStringLiteral("values read")), qPrintable(dock->messageText()));
     }
 };

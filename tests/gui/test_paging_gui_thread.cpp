@@ -42,7 +42,8 @@ public:
     std::vector<CanFrame> frames;
     uint64_t durableFrames() const override { return frames.size(); }
     bool load(uint64_t first, uint32_t count, std::vector<CanFrame>& out, std::string*) override {
-        out.assign(frames.begin() + static_cast<std::ptrdiff_t>(first), frames.begin() + static_cast<std::ptrdiff_t>(first + count));
+        out.assign(frames.begin() + static_cast<std::ptrdiff_t>(first),
+                   frames.begin() + static_cast<std::ptrdiff_t>(first + count));
         return true;
     }
 };
@@ -76,13 +77,15 @@ private slots:
         {
             QFile f(log);
             QVERIFY(f.open(QIODevice::WriteOnly));
-            QByteArray out = "(100.000000) can0 710#00\n"
-                             "(100.010000) can0 610#2F001A0000000000\n(100.011000) can0 590#60001A0000000000\n"
-                             "(100.012000) can0 610#23001A0110004160\n(100.013000) can0 590#60001A0100000000\n"
-                             "(100.014000) can0 610#23001A0220006460\n(100.015000) can0 590#60001A0200000000\n"
-                             "(100.016000) can0 610#2F001A0002000000\n(100.017000) can0 590#60001A0000000000\n";
+            QByteArray out =
+                "(100.000000) can0 710#00\n"
+                "(100.010000) can0 610#2F001A0000000000\n(100.011000) can0 590#60001A0000000000\n"
+                "(100.012000) can0 610#23001A0110004160\n(100.013000) can0 590#60001A0100000000\n"
+                "(100.014000) can0 610#23001A0220006460\n(100.015000) can0 590#60001A0200000000\n"
+                "(100.016000) can0 610#2F001A0002000000\n(100.017000) can0 590#60001A0000000000\n";
             for (int i = 9; i < kFrames; ++i)
-                out += "(101." + QByteArray::number(i).rightJustified(6, '0') + ") can0 190#3716" + QByteArray::number(i & 0xFF, 16).rightJustified(2, '0') + "000000\n";
+                out += "(101." + QByteArray::number(i).rightJustified(6, '0') + ") can0 190#3716" +
+                       QByteArray::number(i & 0xFF, 16).rightJustified(2, '0') + "000000\n";
             f.write(out);
         }
         MainWindow w;
@@ -92,11 +95,14 @@ private slots:
         QVERIFY(w.connectBus(QStringLiteral("replay://") + log + QStringLiteral("?speed=0")));
         auto store = w.workspace()->store();
         QVERIFY(waitFor([&] { return store->size() == size_t(kFrames); }, 120000));
-        QVERIFY(waitFor([&] {
-            const CaptureJournal* j = w.workspace()->journal();
-            return !j || j->framesWritten() == uint64_t(kFrames);
-        }, 60000));
-        QVERIFY2(waitFor([&] { return !store->isResident(0); }, 60000), qPrintable(QString::number(store->residentChunks())));
+        QVERIFY(waitFor(
+            [&] {
+                const CaptureJournal* j = w.workspace()->journal();
+                return !j || j->framesWritten() == uint64_t(kFrames);
+            },
+            60000));
+        QVERIFY2(waitFor([&] { return !store->isResident(0); }, 60000),
+                 qPrintable(QString::number(store->residentChunks())));
         store->watchPageInsOn(std::this_thread::get_id());
         const uint64_t pageIns = store->pageIns();
 
@@ -140,7 +146,11 @@ private slots:
         store->append(std::span<const CanFrame>(pager->frames.data() + 1000, pager->frames.size() - 1000));
         // The decoder's own snapshots are built by its worker (not part of this question), which
         // reads the chunks back in turn; the budget sends them out again.
-        QVERIFY(waitFor([&] { return decoder->checkpointCount() >= size_t(kFrames) / dissect::NetworkContext::checkpointInterval(); }, 60000));
+        QVERIFY(waitFor(
+            [&] {
+                return decoder->checkpointCount() >= size_t(kFrames) / dissect::NetworkContext::checkpointInterval();
+            },
+            60000));
         QVERIFY2(waitFor([&] { return !store->isResident(1000) && !store->isResident(kChunk + 5); }, 30000),
                  qPrintable(QString::number(store->residentChunks())));
 
@@ -151,10 +161,13 @@ private slots:
         m.setDecoder(decoder);
         m.setFilter(job.filter(), job.takeResult(), job.scannedUpTo());  // tests the new frames at once
         QCOMPARE(store->watchedPageIns(), uint64_t(0));
-        QVERIFY2(waitFor([&] {
-            m.refresh();
-            return m.rowCount() == 5;
-        }, 60000), qPrintable(QString::number(m.rowCount())));
+        QVERIFY2(waitFor(
+                     [&] {
+                         m.refresh();
+                         return m.rowCount() == 5;
+                     },
+                     60000),
+                 qPrintable(QString::number(m.rowCount())));
         for (int c = 0; c < 5; ++c) QCOMPARE(m.frameAt(c), FrameNo(c * kChunk + 5));
         QVERIFY(store->pageIns() > pageIns);  // by the store's loader
         QCOMPARE(store->watchedPageIns(), uint64_t(0));

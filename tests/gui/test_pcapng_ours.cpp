@@ -67,10 +67,12 @@ private slots:
         auto yes = coscope::testing::answerBox(QMessageBox::Yes, &asked);
         QVERIFY(clickMenuItem(w, QStringLiteral("Bus"), QStringLiteral("Scan network")));
         QVERIFY(waitFor([&] { return yes->answered(); }));
-        QVERIFY(waitFor([&] {
-            w.refresh();
-            return ours(w).size() >= 3 && w.traceDock()->model()->rowCount() > int(ours(w).size());
-        }, 10000));
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return ours(w).size() >= 3 && w.traceDock()->model()->rowCount() > int(ours(w).size());
+            },
+            10000));
         w.disconnectBus();
         w.refresh();
         const std::vector<int> before = ours(w);
@@ -82,7 +84,8 @@ private slots:
         QVERIFY(chooseFile(w, QStringLiteral("Open log"), out));
         QVERIFY(waitFor([&] {
             w.refresh();
-            return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() == rows;
+            return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+                   w.traceDock()->model()->rowCount() == rows;
         }));
         QCOMPARE(ours(w), before);
         QVERIFY(int(before.size()) < rows);  // the drives' answers stay Rx

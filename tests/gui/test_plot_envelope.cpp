@@ -18,7 +18,7 @@ using namespace coscope;
 using namespace coscope::gui;
 
 namespace {
-constexpr int64_t kRate = 1000;          // samples per second
+constexpr int64_t kRate = 1000;             // samples per second
 constexpr int64_t kSamples = 3600 * kRate;  // one hour
 constexpr int64_t kSpike = 1'234'567, kDip = 2'900'001;
 constexpr int64_t kLate = kSamples + 7 * kRate + 3;  // in the ten seconds that arrive later
@@ -30,7 +30,9 @@ double valueAt(int64_t i) {
     return std::round(100.0 * std::sin(double(i) / 200000.0) + double(i * 7919 % 41) - 20);
 }
 
-bool isTrace(QRgb p, const QColor& c) { return std::abs(qRed(p) - c.red()) + std::abs(qGreen(p) - c.green()) + std::abs(qBlue(p) - c.blue()) < 90; }
+bool isTrace(QRgb p, const QColor& c) {
+    return std::abs(qRed(p) - c.red()) + std::abs(qGreen(p) - c.green()) + std::abs(qBlue(p) - c.blue()) < 90;
+}
 }  // namespace
 
 class TestPlotEnvelope : public QObject {
@@ -106,7 +108,12 @@ class TestPlotEnvelope : public QObject {
                     seenBottom = seenBottom || std::abs(py - c.bottom) <= 2;
                 }
             const QString where = QStringLiteral("column %1 (t = %2 s): plain %3..%4, drawn %5..%6")
-                                      .arg(px).arg(x->pixelToCoord(px)).arg(c.top).arg(c.bottom).arg(top).arg(bottom);
+                                      .arg(px)
+                                      .arg(x->pixelToCoord(px))
+                                      .arg(c.top)
+                                      .arg(c.bottom)
+                                      .arg(top)
+                                      .arg(bottom);
             if (!seenTop || !seenBottom || top < 0 || top < nTop - 3 || bottom > nBottom + 3) {
                 QTest::qFail(qPrintable(where), __FILE__, __LINE__);
                 return -1;
@@ -148,7 +155,8 @@ private slots:
         view.refresh();  // as the dock's timer does: the axis rect's width after the first layout
         QCustomPlot* cp = view.customPlot();
         QVERIFY(graph(view));
-        QVERIFY2(view.drawnPoints(0).size() <= size_t(2 * cp->axisRect(0)->width() + 2), qPrintable(QString::number(view.drawnPoints(0).size())));  // the pyramid's columns, not 3.6 M points
+        QVERIFY2(view.drawnPoints(0).size() <= size_t(2 * cp->axisRect(0)->width() + 2),
+                 qPrintable(QString::number(view.drawnPoints(0).size())));  // the pyramid's columns, not 3.6 M points
 
         // The whole hour: the one-sample spike and dip are drawn in their columns.
         int n = compareWithPlainScan(view);
@@ -157,7 +165,8 @@ private slots:
         auto drawnAt = [&](double seconds, double value) {
             const QImage img = cp->toPixmap(0, 0, 1.0).toImage();
             QCPAxisRect* rect = cp->axisRect(0);
-            const int px = int(rect->axis(QCPAxis::atBottom)->coordToPixel(seconds)), py = int(rect->axis(QCPAxis::atLeft)->coordToPixel(value));
+            const int px = int(rect->axis(QCPAxis::atBottom)->coordToPixel(seconds)),
+                      py = int(rect->axis(QCPAxis::atLeft)->coordToPixel(value));
             for (int dx = -1; dx <= 1; ++dx)
                 for (int dy = -2; dy <= 2; ++dy)
                     if (isTrace(img.pixel(px + dx, py + dy), view.plotted()[0].color)) return true;
@@ -168,13 +177,16 @@ private slots:
 
         // The user zooms in on the spike with the wheel (the dock then refreshes the view).
         QCPAxisRect* rect = cp->axisRect(0);
-        const QPointF at(rect->axis(QCPAxis::atBottom)->coordToPixel(double(kSpike) / kRate), rect->rect().center().y());
+        const QPointF at(rect->axis(QCPAxis::atBottom)->coordToPixel(double(kSpike) / kRate),
+                         rect->rect().center().y());
         for (int notch = 0; notch < 3; ++notch) {
-            QWheelEvent wheel(at, cp->mapToGlobal(at), QPoint(), QPoint(0, 120 * 8), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+            QWheelEvent wheel(at, cp->mapToGlobal(at), QPoint(), QPoint(0, 120 * 8), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
             QApplication::sendEvent(cp, &wheel);
             view.refresh();
             const auto [from, to] = view.timeRange();
-            QVERIFY2(to - from < 3600.0 * std::pow(0.85, 8.0 * (notch + 1)) * 1.01, qPrintable(QStringLiteral("%1..%2").arg(from).arg(to)));
+            QVERIFY2(to - from < 3600.0 * std::pow(0.85, 8.0 * (notch + 1)) * 1.01,
+                     qPrintable(QStringLiteral("%1..%2").arg(from).arg(to)));
             QVERIFY(from < double(kSpike) / kRate && to > double(kSpike) / kRate);
             n = compareWithPlainScan(view);
             QVERIFY(n > 800);
@@ -212,11 +224,15 @@ private slots:
             int trace = 0, differ = 0;
             for (int y = r.top(); y <= r.bottom(); ++y)
                 for (int x = r.left(); x <= r.right(); ++x) {
-                    const bool a = isTrace(screen.pixel(x, y), plotColor(1)), b = isTrace(exported.pixel(x, y), plotColor(1));
+                    const bool a = isTrace(screen.pixel(x, y), plotColor(1)),
+                               b = isTrace(exported.pixel(x, y), plotColor(1));
                     trace += a;
                     differ += a != b;
                 }
-            QVERIFY2(trace > 1000 && differ == 0, qPrintable(QStringLiteral("%1..%2 s: %3 trace pixels, %4 differ").arg(from).arg(to).arg(trace).arg(differ)));
+            QVERIFY2(
+                trace > 1000 && differ == 0,
+                qPrintable(
+                    QStringLiteral("%1..%2 s: %3 trace pixels, %4 differ").arg(from).arg(to).arg(trace).arg(differ)));
         }
     }
 };

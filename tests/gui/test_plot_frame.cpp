@@ -27,7 +27,9 @@ int differing(const QImage& a, const QImage& b, const QRect& r, const QRect& ski
         for (int x = r.left(); x <= r.right(); ++x) {
             if (skip.contains(x, y)) continue;
             const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-            if (std::abs(qRed(p) - qRed(q)) > 24 || std::abs(qGreen(p) - qGreen(q)) > 24 || std::abs(qBlue(p) - qBlue(q)) > 24) ++n;
+            if (std::abs(qRed(p) - qRed(q)) > 24 || std::abs(qGreen(p) - qGreen(q)) > 24 ||
+                std::abs(qBlue(p) - qBlue(q)) > 24)
+                ++n;
         }
     return n;
 }
@@ -41,7 +43,8 @@ class TestPlotFrame : public QObject {
         for (int s = 0; s < 3; ++s) {
             auto b = std::make_shared<SignalBuffer>();
             std::vector<SignalSample> batch;
-            for (int64_t i = 0; i < 2000; ++i) batch.push_back({i * 5'000'000, 100.0 * std::sin(double(i) / (40.0 + 30 * s)) + 20 * s, FrameNo(i)});
+            for (int64_t i = 0; i < 2000; ++i)
+                batch.push_back({i * 5'000'000, 100.0 * std::sin(double(i) / (40.0 + 30 * s)) + 20 * s, FrameNo(i)});
             b->append(batch);
             PlotSignal p;
             p.key = {0, uint8_t(s + 1), 0x6064, 0, -1};
@@ -65,10 +68,14 @@ class TestPlotFrame : public QObject {
         const QRect box = legend->outerRect();
         QVERIFY(box.width() > 50 && box.height() > 30);
         const int inLegend = differing(screen, exported, box.adjusted(-1, -1, 1, 1));
-        QVERIFY2(inLegend == 0, qPrintable(QStringLiteral("%1: %2 legend pixels differ").arg(QLatin1String(when)).arg(inLegend)));
+        QVERIFY2(inLegend == 0,
+                 qPrintable(QStringLiteral("%1: %2 legend pixels differ").arg(QLatin1String(when)).arg(inLegend)));
         for (int r = 0; r < cp->axisRectCount(); ++r) {
             const int inRect = differing(screen, exported, cp->axisRect(r)->rect(), box.adjusted(-1, -1, 1, 1));
-            QVERIFY2(inRect == 0, qPrintable(QStringLiteral("%1: %2 pixels of rect %3 differ").arg(QLatin1String(when)).arg(inRect).arg(r)));
+            QVERIFY2(
+                inRect == 0,
+                qPrintable(
+                    QStringLiteral("%1: %2 pixels of rect %3 differ").arg(QLatin1String(when)).arg(inRect).arg(r)));
         }
         // The dotted grid is there: pixels of the grid's colour in the first rect.
         int dots = 0;

@@ -42,8 +42,8 @@ using dissect::SignalKey;
 namespace {
 using coscope::testing::answerFileDialog;
 using coscope::testing::clickCheckBox;
-using coscope::testing::signalItem;
 using coscope::testing::menuItem;
+using coscope::testing::signalItem;
 using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
 // However slow the machine (ASan, a loaded CI runner): waits end on what they wait for.
@@ -90,7 +90,9 @@ bool exportThroughMenu(PlotDock* dock, const QString& item, const QString& path)
     });
     poll.start(20);
     QTest::mouseClick(button, Qt::LeftButton);
-    return waitFor([&] { return clicked && name->answered() && !QApplication::activeModalWidget() && QFileInfo::exists(path); }, kPatienceMs);
+    return waitFor(
+        [&] { return clicked && name->answered() && !QApplication::activeModalWidget() && QFileInfo::exists(path); },
+        kPatienceMs);
 }
 }  // namespace
 
@@ -144,7 +146,9 @@ private slots:
         QVERIFY(waitFor([&] { return posBuf->last()->value > p0 + 300; }, kPatienceMs));  // 0.1 s at 3000 pulse/s
         QVERIFY(waitFor([&] { return dock->hasContent(); }, kPatienceMs));
         // The plot draws what the buffer holds, scaled 1:1 (pulse).
-        QVERIFY(waitFor([&] { return !dock->view()->drawnPoints(1).empty() && dock->view()->drawnPoints(1).back().second >= 2999; }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] { return !dock->view()->drawnPoints(1).empty() && dock->view()->drawnPoints(1).back().second >= 2999; },
+            kPatienceMs));
 
         // A statusword bit as a digital trace: "operation enabled" is 1. The user finds it by
         // its name in the search box and ticks its check box.
@@ -153,7 +157,8 @@ private slots:
         const QString bitName = dock->picker()->info(enabledBit)->name.section(QStringLiteral(": "), 1);
         typeAndEnter(search, bitName);
         QTreeWidgetItem* bitItem = nullptr;
-        QVERIFY(waitFor([&] { return (bitItem = signalItem(tree, 2, bitName)) && tree->visualItemRect(bitItem).isValid(); }));
+        QVERIFY(waitFor(
+            [&] { return (bitItem = signalItem(tree, 2, bitName)) && tree->visualItemRect(bitItem).isValid(); }));
         QVERIFY(clickCheckBox(tree, bitItem));
         QCOMPARE(dock->pickedSignals().size(), size_t(3));
         QCOMPARE(dock->pickedSignals()[2], enabledBit);
@@ -175,10 +180,12 @@ private slots:
         QTest::keyClicks(windowSeconds, QStringLiteral("2"));
         QTest::keyClick(windowSeconds, Qt::Key_Return);
         QCOMPARE(dock->windowSeconds(), 2.0);
-        QVERIFY(waitFor([&] {
-            const auto [from, to] = dock->view()->timeRange();
-            return from > 0 && std::abs(to - from - 2.0) < 1e-6;
-        }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                const auto [from, to] = dock->view()->timeRange();
+                return from > 0 && std::abs(to - from - 2.0) < 1e-6;
+            },
+            kPatienceMs));
 
         // Pause: the view stays while the data keeps coming (half a second of it past the frozen
         // window, in the samples' own time); resume follows again.
@@ -187,12 +194,17 @@ private slots:
         QVERIFY(dock->isPaused());
         const auto frozen = dock->view()->timeRange();
         const uint64_t before = vel->appended();
-        QVERIFY(waitFor([&] { return vel->appended() > before + 20 && vel->last()->timeNs > dock->view()->toNs(frozen.second + 0.5); }, kPatienceMs));
+        QVERIFY(waitFor(
+            [&] {
+                return vel->appended() > before + 20 && vel->last()->timeNs > dock->view()->toNs(frozen.second + 0.5);
+            },
+            kPatienceMs));
         QCOMPARE(dock->view()->timeRange(), frozen);
         QTest::mouseClick(pause, Qt::LeftButton);
         QVERIFY(!dock->isPaused());
         QVERIFY(waitFor([&] { return dock->view()->timeRange().second > frozen.second + 0.3; }, kPatienceMs));
-        QVERIFY(std::abs(dock->view()->timeRange().second - dock->view()->timeRange().first - dock->windowSeconds()) < 1e-6);
+        QVERIFY(std::abs(dock->view()->timeRange().second - dock->view()->timeRange().first - dock->windowSeconds()) <
+                1e-6);
 
         // A click in the plot places cursor A and names a TPDO frame of node 2.
         QTest::mouseClick(pause, Qt::LeftButton);
@@ -202,7 +214,9 @@ private slots:
         const QRect area = cp->axisRect(0)->rect();
         // Beside the legend (a click on it hides a trace), as a user aims at the curve.
         QPoint at = area.center();
-        for (int x = area.left() + 10; cp->legend && cp->legend->visible() && cp->legend->outerRect().contains(at) && x < area.right(); x += 10) at.setX(x);
+        for (int x = area.left() + 10;
+             cp->legend && cp->legend->visible() && cp->legend->outerRect().contains(at) && x < area.right(); x += 10)
+            at.setX(x);
         QVERIFY(!cp->legend || !cp->legend->visible() || !cp->legend->outerRect().contains(at));
         QTest::mouseClick(cp, Qt::LeftButton, Qt::NoModifier, at);
         QCOMPARE(jumps.count(), 1);
@@ -229,7 +243,8 @@ private slots:
         const QStringList lines = QString::fromUtf8(f.readAll()).split(u'\n', Qt::SkipEmptyParts);
         QVERIFY(!framesInWindow.empty());
         QCOMPARE(size_t(lines.size()), framesInWindow.size() + 1);
-        QCOMPARE(lines[0], QStringLiteral("time_s,frame,n2 Position actual value [pulse],n2 Velocity actual value [pulse/s]"));
+        QCOMPARE(lines[0],
+                 QStringLiteral("time_s,frame,n2 Position actual value [pulse],n2 Velocity actual value [pulse/s]"));
         size_t checked = 0;
         int columnsSeen[4] = {};
         for (int i = 1; i < lines.size(); ++i) {

@@ -101,8 +101,8 @@ private slots:
         dock.pick(vel7);
         dock.refresh();
         const double tFirst = dock.view()->drawnPoints(0).front().first;
-        QCOMPARE(*dock.view()->valueAt(0, tFirst), 0.1);       // 1 280 000 PUU / 12 800 000
-        QCOMPARE(*dock.view()->valueAt(1, tFirst), 150.0);     // 1500 x 0.1 rpm
+        QCOMPARE(*dock.view()->valueAt(0, tFirst), 0.1);    // 1 280 000 PUU / 12 800 000
+        QCOMPARE(*dock.view()->valueAt(1, tFirst), 150.0);  // 1500 x 0.1 rpm
         QCOMPARE(dock.view()->axisTitle(0), QStringLiteral("rev"));
         // The user's factor and unit.
         dock.picker()->setScale(vel7, {0.1 / 60.0, 0.0, QStringLiteral("rps")});  // raw 0.1 rpm -> rps
@@ -139,7 +139,8 @@ private slots:
         QFile f(csv);
         QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
         const QStringList lines = QString::fromUtf8(f.readAll()).split(u'\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines[0], QStringLiteral("time_s,frame,n7 Position actual value [rev],n7 Velocity actual value [rps]"));
+        QCOMPARE(lines[0],
+                 QStringLiteral("time_s,frame,n7 Position actual value [rev],n7 Velocity actual value [rps]"));
         QCOMPARE(lines.size(), 1 + 21);  // samples 20..40 (10 ms apart)
         const QStringList first = lines[1].split(u',');
         QCOMPARE(first[2].toDouble(), (1280000 + 6400 * 20) / 12800000.0);

@@ -10,11 +10,11 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
-#include <QPushButton>
 #include <QFile>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -23,15 +23,15 @@
 #include <QtTest>
 
 #include "DbcReader.h"
-#include "tests/gui/ModalAnswer.h"
 #include "tests/gui/MenuClick.h"
+#include "tests/gui/ModalAnswer.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerFileDialog;
-using coscope::testing::ModalAnswerer;
 using coscope::testing::clickMenuItem;
+using coscope::testing::ModalAnswerer;
 using coscope::testing::waitFor;
 
 namespace {
@@ -55,8 +55,13 @@ QString writeLog(const QString& path) {
     };
     for (int i = 0; i < kFrames; ++i) {
         const auto u = static_cast<uint16_t>(speedRaw(i));
-        l << QStringLiteral("(%1) can0 2A0#%2%3%4").arg(101.0 + 0.01 * i, 0, 'f', 6).arg(u >> 8, 2, 16, QLatin1Char('0')).arg(u & 0xFF, 2, 16, QLatin1Char('0')).arg(i, 2, 16, QLatin1Char('0'));
-        l << QStringLiteral("(%1) can0 190#3716%2").arg(101.005 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0')) + QStringLiteral("000000");
+        l << QStringLiteral("(%1) can0 2A0#%2%3%4")
+                 .arg(101.0 + 0.01 * i, 0, 'f', 6)
+                 .arg(u >> 8, 2, 16, QLatin1Char('0'))
+                 .arg(u & 0xFF, 2, 16, QLatin1Char('0'))
+                 .arg(i, 2, 16, QLatin1Char('0'));
+        l << QStringLiteral("(%1) can0 190#3716%2").arg(101.005 + 0.01 * i, 0, 'f', 6).arg(i, 2, 16, QLatin1Char('0')) +
+                 QStringLiteral("000000");
     }
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Text)) return {};
@@ -138,7 +143,9 @@ private slots:
         QCOMPARE(offered, QStringLiteral("0x2A0"));  // the PDO nothing describes is offered first
 
         // The log is recorded again with the signal; the dock picks it and plots every frame.
-        QVERIFY(waitFor([&] { return dock->view()->plotted().size() == 1 && dock->view()->drawnPoints(0).size() == size_t(kFrames); }));
+        QVERIFY(waitFor([&] {
+            return dock->view()->plotted().size() == 1 && dock->view()->drawnPoints(0).size() == size_t(kFrames);
+        }));
         QCOMPARE(dock->view()->plotted()[0].label, QStringLiteral("speed"));
         QCOMPARE(dock->view()->axisTitle(0), QStringLiteral("rpm"));
         const auto pts = dock->view()->drawnPoints(0);

@@ -59,9 +59,11 @@ private slots:
                 break;
             }
             const char* how = masked ? ", AVX-512 masked stores" : ", portable loops";
-            QTest::newRow(qPrintable(QStringLiteral("one-pixel spans (a steep thin line)") + how)) << 0 << false << masked;
+            QTest::newRow(qPrintable(QStringLiteral("one-pixel spans (a steep thin line)") + how))
+                << 0 << false << masked;
             QTest::newRow(qPrintable(QStringLiteral("thin spans (column by column)") + how)) << 6 << false << masked;
-            QTest::newRow(qPrintable(QStringLiteral("tall overlaid spans (row sweep)") + how)) << 400 << false << masked;
+            QTest::newRow(qPrintable(QStringLiteral("tall overlaid spans (row sweep)") + how))
+                << 400 << false << masked;
             QTest::newRow(qPrintable(QStringLiteral("mixed, with gaps") + how)) << 60 << true << masked;
         }
     }
@@ -82,7 +84,8 @@ private slots:
         std::vector<TraceSpec> traces;
         for (int k = 0; k < 9; ++k) {  // more than 8: past the canvas's 16 inline lanes too
             const int from = k == 3 ? 300 : 0, to = k == 5 ? 100 : width + 20;
-            traces.push_back({qPremultiply(QColor::fromHsv(k * 40, 200, 200).rgba()), makeSpans(rng, from, to, rows, k % 2 ? height : height / 3 + 1, gaps)});
+            traces.push_back({qPremultiply(QColor::fromHsv(k * 40, 200, 200).rgba()),
+                              makeSpans(rng, from, to, rows, k % 2 ? height : height / 3 + 1, gaps)});
         }
         traces.push_back({qPremultiply(QColor(0x10, 0x20, 0x30).rgba()), {}});  // an empty trace
         reference(expected, traces, dx, dy, clip);
@@ -95,7 +98,11 @@ private slots:
         for (int y = 0; y < rows; ++y)
             for (int x = 0; x < width; ++x)
                 if (actual.pixel(x, y) != expected.pixel(x, y))
-                    QFAIL(qPrintable(QStringLiteral("pixel (%1, %2): %3, painted in turn %4").arg(x).arg(y).arg(actual.pixel(x, y), 8, 16).arg(expected.pixel(x, y), 8, 16)));
+                    QFAIL(qPrintable(QStringLiteral("pixel (%1, %2): %3, painted in turn %4")
+                                         .arg(x)
+                                         .arg(y)
+                                         .arg(actual.pixel(x, y), 8, 16)
+                                         .arg(expected.pixel(x, y), 8, 16)));
     }
 };
 

@@ -48,7 +48,8 @@ QString writeLog(const QString& path) {
     log.mapTpdo(7, 2, {0x60C10120});  // 60C1h:01 "Position command (Pos_Cmd)"
     log.setTime(101.0);
     for (int i = 0; i < kFrames; ++i) {
-        log.line(QStringLiteral("187#") + DriveLog::le(statusword(i), 2) + DriveLog::le(6, 1) + DriveLog::le(uint32_t(1280 * i), 4));
+        log.line(QStringLiteral("187#") + DriveLog::le(statusword(i), 2) + DriveLog::le(6, 1) +
+                 DriveLog::le(uint32_t(1280 * i), 4));
         log.line(QStringLiteral("287#") + DriveLog::le(uint32_t(640 * i), 4), 0.01);
     }
     return log.write(path) ? path : QString();
@@ -132,7 +133,8 @@ private slots:
         QCOMPARE(position->text(3), QStringLiteral("1/1280000"));
         // A fraction typed into the cell is taken and kept as typed.
         tree->scrollToItem(position);
-        const QPoint cell(tree->header()->sectionViewportPosition(3) + tree->header()->sectionSize(3) / 2, tree->visualItemRect(position).center().y());
+        const QPoint cell(tree->header()->sectionViewportPosition(3) + tree->header()->sectionSize(3) / 2,
+                          tree->visualItemRect(position).center().y());
         // What the mouse sends for a double click: press, release, double-click, release.
         QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, cell);
         QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, cell);
@@ -146,7 +148,8 @@ private slots:
         QCOMPARE(dock->picker()->scale(SignalKey{0, 7, 0x6064, 0, -1}).factor, 1.0 / 128000);
 
         // The statusword as a value: only it on the plot, hex axis.
-        for (const SignalKey& k : dock->pickedSignals()) clickCheckBox(tree, row(tree, k.index == 0x6064 ? QStringLiteral("6064:00") : QStringLiteral("6041:00")));
+        for (const SignalKey& k : dock->pickedSignals())
+            clickCheckBox(tree, row(tree, k.index == 0x6064 ? QStringLiteral("6064:00") : QStringLiteral("6041:00")));
         QVERIFY(dock->pickedSignals().empty());
         QVERIFY(clickCheckBox(tree, row(tree, QStringLiteral("6041:00"))));
         QCOMPARE(dock->pickedSignals(), (std::vector<SignalKey>{SignalKey{0, 7, 0x6041, 0, -1}}));
@@ -156,13 +159,16 @@ private slots:
         QCPAxis* y = cp->axisRect(0)->axis(QCPAxis::atLeft);
         const QVector<QString> labels = y->tickVectorLabels();
         QVERIFY(!labels.isEmpty());
-        for (const QString& l : labels) QVERIFY2(QRegularExpression(QStringLiteral("^[0-9A-F]{4,}h$")).match(l).hasMatch(), qPrintable(l));
+        for (const QString& l : labels)
+            QVERIFY2(QRegularExpression(QStringLiteral("^[0-9A-F]{4,}h$")).match(l).hasMatch(), qPrintable(l));
 
         // A click places cursor A: the readout says the statusword in hex.
         QCPAxisRect* rect = cp->axisRect(0);
         const double tLate = dock->view()->drawnPoints(0).back().first - 0.05;
-        QTest::mouseClick(cp, Qt::LeftButton, Qt::NoModifier, QPoint(int(rect->axis(QCPAxis::atBottom)->coordToPixel(tLate)), rect->rect().center().y()));
-        QVERIFY2(dock->view()->readoutHtml().contains(QStringLiteral(">1637h<")), qPrintable(dock->view()->readoutHtml()));
+        QTest::mouseClick(cp, Qt::LeftButton, Qt::NoModifier,
+                          QPoint(int(rect->axis(QCPAxis::atBottom)->coordToPixel(tLate)), rect->rect().center().y()));
+        QVERIFY2(dock->view()->readoutHtml().contains(QStringLiteral(">1637h<")),
+                 qPrintable(dock->view()->readoutHtml()));
 
         // A name with underscores, as the dictionary writes it, in the legend.
         QVERIFY(clickCheckBox(tree, row(tree, QStringLiteral("60C1:01"))));
@@ -176,9 +182,11 @@ private slots:
         for (int i = 0; i < cp->legend->itemCount(); ++i) {
             QCPAbstractLegendItem* entry = cp->legend->item(i);
             const QRect drawn = entry->outerRect().translated(0, -1);
-            QVERIFY2(drawn.bottom() >= entry->rect().top() + QFontMetrics(entry->font()).height() - 1, qPrintable(second));
+            QVERIFY2(drawn.bottom() >= entry->rect().top() + QFontMetrics(entry->font()).height() - 1,
+                     qPrintable(second));
         }
-        if (const QString grab = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !grab.isEmpty()) cp->savePng(grab + QStringLiteral("/plot_words.png"));
+        if (const QString grab = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !grab.isEmpty())
+            cp->savePng(grab + QStringLiteral("/plot_words.png"));
 
         // The legend is inside the plot, clear of the value axis and its tick marks (the axis
         // rect and axis of now: adding a signal rebuilt them).
@@ -186,7 +194,8 @@ private slots:
         y = rect->axis(QCPAxis::atLeft);
         QVERIFY(cp->legend && cp->legend->visible());
         QVERIFY2(cp->legend->outerRect().left() >= rect->left() + y->tickLengthIn() + 2,
-                 qPrintable(QStringLiteral("legend at %1, axis at %2").arg(cp->legend->outerRect().left()).arg(rect->left())));
+                 qPrintable(
+                     QStringLiteral("legend at %1, axis at %2").arg(cp->legend->outerRect().left()).arg(rect->left())));
         QVERIFY(cp->legend->outerRect().top() >= rect->top() + 2);
     }
 };

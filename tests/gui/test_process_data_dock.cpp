@@ -3,10 +3,10 @@
 // velocity + 6071h at 302h, extract-aimotor §2): the user types a target velocity, chooses "With
 // each SYNC", starts, arms and holds "Hold to run" — the drive's velocity actual turns while held
 // and returns to 0 after release. Without a bus the dock says why it is disabled.
-#include "SimDriveRig.h"
-#include "app/gui/master/ProcessDataDock.h"
 #include "ModalAnswer.h"
+#include "SimDriveRig.h"
 #include "TypeText.h"
+#include "app/gui/master/ProcessDataDock.h"
 #include "core/canopen/BusMaster.h"
 #include "core/canopen/Ds402Controller.h"
 #include "core/canopen/ServiceWait.h"
@@ -48,9 +48,11 @@ private slots:
         QString error;
         QVERIFY(rig.ws.master()->send(CanFrame::classic(0x000, {0x01, 0x02}), &error));
         canopen::Ds402Controller ctl(*rig.ws.sdo(), 2);
-        auto mode = canopen::waitForResult<canopen::Ds402Result>([&](canopen::Ds402Callback cb) { ctl.setMode(3, cb); }, 5000);
+        auto mode =
+            canopen::waitForResult<canopen::Ds402Result>([&](canopen::Ds402Callback cb) { ctl.setMode(3, cb); }, 5000);
         QVERIFY(mode && mode->ok);
-        auto en = canopen::waitForResult<canopen::Ds402Result>([&](canopen::Ds402Callback cb) { ctl.enable(cb); }, 5000);
+        auto en =
+            canopen::waitForResult<canopen::Ds402Result>([&](canopen::Ds402Callback cb) { ctl.enable(cb); }, 5000);
         QVERIFY(en && en->ok);
         canopen::BusMaster master(*rig.ws.master());
         master.sync().setPeriodUs(10000);
@@ -86,13 +88,15 @@ private slots:
         QVERIFY(asked.contains(QStringLiteral("Hold to run")));
         QVERIFY(dock.holdButton()->isEnabled());
         QTest::mousePress(dock.holdButton(), Qt::LeftButton);
-        const bool moved = QTest::qWaitFor([&] { return rig.onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000; }, 3000);
+        const bool moved = QTest::qWaitFor(
+            [&] { return rig.onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000; }, 3000);
         QTest::qWait(600);  // held longer than the watchdog: still fed
         const double whileHeld = rig.onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); });
         QTest::mouseRelease(dock.holdButton(), Qt::LeftButton);
         QVERIFY(moved);
         QVERIFY2(whileHeld > 1000, qPrintable(QString::number(whileHeld)));
-        QVERIFY(QTest::qWaitFor([&] { return std::abs(rig.onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); })) < 1; }, 3000));
+        QVERIFY(QTest::qWaitFor(
+            [&] { return std::abs(rig.onDrive(2, [](sim::Ds402Drive* d) { return d->velocity(); })) < 1; }, 3000));
         dock.setMaster(nullptr);
         master.stopAll();
     }

@@ -39,10 +39,12 @@ bool nodeMenu(NodesDock& dock, int node, const QString& text) {
 }
 
 bool waitForNodes(NodesDock& dock, int n) {
-    return QTest::qWaitFor([&] {
-        dock.refresh();
-        return dock.model()->rowCount() >= n;
-    }, 5000);
+    return QTest::qWaitFor(
+        [&] {
+            dock.refresh();
+            return dock.model()->rowCount() >= n;
+        },
+        5000);
 }
 }  // namespace
 
@@ -74,7 +76,8 @@ private slots:
 
         QVERIFY(nodeMenu(dock, 1, QStringLiteral("Download program…")));
         ProgramDownloadDialog* dialog = nullptr;
-        QVERIFY(QTest::qWaitFor([&] { return (dialog = dock.findChild<ProgramDownloadDialog*>()) && dialog->isVisible(); }, 5000));
+        QVERIFY(QTest::qWaitFor(
+            [&] { return (dialog = dock.findChild<ProgramDownloadDialog*>()) && dialog->isVisible(); }, 5000));
         auto* version = dialog->findChild<QLabel*>(QStringLiteral("programVersion"));
         auto* status = dialog->findChild<QLabel*>(QStringLiteral("programStatus"));
         auto* progress = dialog->findChild<QProgressBar*>(QStringLiteral("programProgress"));
@@ -143,7 +146,8 @@ private slots:
         QVERIFY(waitForNodes(dock, 1));
         QVERIFY(!nodeMenu(dock, 1, QStringLiteral("Download program…")));  // there, but disabled
         QVERIFY(!dock.programDownloadAction()->isEnabled());
-        QVERIFY2(dock.programDownloadAction()->toolTip().contains(QStringLiteral("Listen-only")), qPrintable(dock.programDownloadAction()->toolTip()));
+        QVERIFY2(dock.programDownloadAction()->toolTip().contains(QStringLiteral("Listen-only")),
+                 qPrintable(dock.programDownloadAction()->toolTip()));
         QVERIFY(!dock.findChild<ProgramDownloadDialog*>());
     }
 };

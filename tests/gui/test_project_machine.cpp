@@ -51,7 +51,8 @@ sim::SimNetwork* net(MainWindow& w) { return static_cast<SimBus*>(w.workspace()-
 
 uint64_t driveValue(MainWindow& w, uint8_t node, uint16_t index, uint8_t sub) {
     uint64_t v = ~0ull;
-    net(w)->runOnNetworkThread([&] { v = net(w)->device(node)->value(index, sub).value_or(od::Value{}).toUInt64().value_or(~0ull); });
+    net(w)->runOnNetworkThread(
+        [&] { v = net(w)->device(node)->value(index, sub).value_or(od::Value{}).toUInt64().value_or(~0ull); });
     return v;
 }
 
@@ -84,7 +85,9 @@ QStringList shownRows(CompareDialog* d) {
     CompareModel* m = d->model();
     for (int r = 0; r < m->rowCount(); ++r) {
         const QString object = m->index(r, CompareModel::Object).data().toString();
-        out << QStringLiteral("%1 %2").arg(m->index(r, CompareModel::Node).data().toInt()).arg(object.isEmpty() ? m->index(r, CompareModel::State).data().toString() : object);
+        out << QStringLiteral("%1 %2")
+                   .arg(m->index(r, CompareModel::Node).data().toInt())
+                   .arg(object.isEmpty() ? m->index(r, CompareModel::State).data().toString() : object);
     }
     return out;
 }
@@ -113,13 +116,19 @@ private slots:
 
         // Commission: the virtual drives, found by the scan that follows a connection.
         QVERIFY(clickMenuItem(w, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
-        QVERIFY(waitFor([&] { return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open && w.workspace()->nodes().node(3).has_value(); }, 10000));
+        QVERIFY(waitFor(
+            [&] {
+                return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open &&
+                       w.workspace()->nodes().node(3).has_value();
+            },
+            10000));
         {
             QString said;
             auto ok = answerBox(QMessageBox::Ok, &said);
             QVERIFY(clickMenuItem(w, QStringLiteral("Project"), QStringLiteral("Back up the machine")));
             QVERIFY(waitFor([&] { return ok->answered(); }, 30000));
-            QVERIFY2(said.contains(QStringLiteral("Node 1:")) && said.contains(QStringLiteral("Node 3:")), qPrintable(said));
+            QVERIFY2(said.contains(QStringLiteral("Node 1:")) && said.contains(QStringLiteral("Node 3:")),
+                     qPrintable(said));
         }
         ProjectSession* session = w.projectActions()->session();
         QCOMPARE(session->project().nodes.size(), size_t(3));
@@ -132,7 +141,8 @@ private slots:
             QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Save project as")));
             QVERIFY(waitFor([&] { return QFile::exists(path) && !session->isModified(); }, 10000));
         }
-        QVERIFY2(w.windowTitle().startsWith(QStringLiteral("line[*]")) && !w.isWindowModified(), qPrintable(w.windowTitle()));
+        QVERIFY2(w.windowTitle().startsWith(QStringLiteral("line[*]")) && !w.isWindowModified(),
+                 qPrintable(w.windowTitle()));
         QVERIFY(project::ProjectFile::read(path).project.has_value());
         const uint64_t heartbeat = driveValue(w, 1, 0x1017, 0);
         const uint64_t velocity = driveValue(w, 1, 0x6081, 0);
@@ -146,13 +156,21 @@ private slots:
         QTableView* nodesView = w.nodesDock()->view();
         if (!nodesView->isVisible()) QVERIFY(clickDockTab(w, w.nodesDock()->windowTitle()));
         QVERIFY(waitFor([&] { return nodesView->isVisible(); }, 3000));
-        QTest::mouseClick(nodesView->viewport(), Qt::LeftButton, {}, nodesView->visualRect(w.nodesDock()->model()->index(row, 0)).center());
+        QTest::mouseClick(nodesView->viewport(), Qt::LeftButton, {},
+                          nodesView->visualRect(w.nodesDock()->model()->index(row, 0)).center());
         QVERIFY(waitFor([&] { return w.odDock()->node() == 1; }, 3000));
-        if (!w.odDock()->isVisible() || w.odDock()->visibleRegion().isEmpty()) clickDockTab(w, w.odDock()->windowTitle());
-        QVERIFY(waitFor([&] { w.refresh(); return w.odDock()->node() == 1 && w.odDock()->model()->hasDictionary(); }, 5000));
+        if (!w.odDock()->isVisible() || w.odDock()->visibleRegion().isEmpty())
+            clickDockTab(w, w.odDock()->windowTitle());
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return w.odDock()->node() == 1 && w.odDock()->model()->hasDictionary();
+            },
+            5000));
         QVERIFY(editValue(w, 0x1017, 0, QStringLiteral("700")));
         QVERIFY(editValue(w, 0x6081, 0, QStringLiteral("4321")));
-        QVERIFY(waitFor([&] { return driveValue(w, 1, 0x1017, 0) == 700 && driveValue(w, 1, 0x6081, 0) == 4321; }, 5000));
+        QVERIFY(
+            waitFor([&] { return driveValue(w, 1, 0x1017, 0) == 700 && driveValue(w, 1, 0x6081, 0) == 4321; }, 5000));
 
         // Node 3: another drive of the same type, another serial number, factory values.
         QString error;
@@ -176,7 +194,9 @@ private slots:
         QVERIFY(compare);
         QVERIFY(waitFor([&] { return compare->hasResult() && !compare->isRunning(); }, 30000));
         QVERIFY(compare->onlyDifferencesBox()->isChecked());
-        QCOMPARE(shownRows(compare), (QStringList{QStringLiteral("1 1017:00"), QStringLiteral("1 6081:00"), QStringLiteral("3 %1").arg(CompareModel::matchText(project::NodeMatch::Replaced))}));
+        QCOMPARE(shownRows(compare),
+                 (QStringList{QStringLiteral("1 1017:00"), QStringLiteral("1 6081:00"),
+                              QStringLiteral("3 %1").arg(CompareModel::matchText(project::NodeMatch::Replaced))}));
         const auto& report = compare->model()->report();
         QCOMPARE(report.rows.front().node, uint8_t(1));
 
@@ -186,7 +206,8 @@ private slots:
         auto* apply = qobject_cast<ApplyDialog*>(compare->applyDialog());
         QVERIFY(waitFor([&] { return apply->applyButton()->isEnabled(); }, 20000));
         const QString dryRun = apply->reportText();
-        QVERIFY2(dryRun.contains(QStringLiteral("write 1017:00")) && dryRun.contains(QStringLiteral("write 6081:00")), qPrintable(dryRun));
+        QVERIFY2(dryRun.contains(QStringLiteral("write 1017:00")) && dryRun.contains(QStringLiteral("write 6081:00")),
+                 qPrintable(dryRun));
         QString asked;
         {
             auto yes = answerBox(QMessageBox::Yes, &asked);
@@ -199,7 +220,9 @@ private slots:
         QCOMPARE(driveValue(w, 1, 0x6081, 0), velocity);
         // The new drive at node 3 holds the project's values: the project expects it now.
         QCOMPARE(session->project().node(3)->identity.serial, std::optional<uint32_t>(0x51000099));
-        QVERIFY(waitFor([&] { return compare->hasResult() && !compare->isRunning() && compare->model()->report().clean(); }, 30000));
+        QVERIFY(
+            waitFor([&] { return compare->hasResult() && !compare->isRunning() && compare->model()->report().clean(); },
+                    30000));
         QCOMPARE(compare->model()->rowCount(), 0);
 
         // Quitting asks about the project changed since it was saved (the new serial).

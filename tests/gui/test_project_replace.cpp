@@ -49,7 +49,8 @@ void click(QAbstractButton* b) { QTest::mouseClick(b, Qt::LeftButton, {}, b->rec
 bool clickCompareRow(CompareDialog* d, int node, const QString& state) {
     CompareModel* m = d->model();
     for (int r = 0; r < m->rowCount(); ++r)
-        if (m->index(r, CompareModel::Node).data().toInt() == node && m->index(r, CompareModel::State).data().toString() == state) {
+        if (m->index(r, CompareModel::Node).data().toInt() == node &&
+            m->index(r, CompareModel::State).data().toString() == state) {
             QTableView* t = d->table();
             t->scrollTo(m->index(r, 0));
             QTest::mouseClick(t->viewport(), Qt::LeftButton, {}, t->visualRect(m->index(r, 0)).center());
@@ -87,7 +88,12 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
 
         QVERIFY(clickMenuItem(w, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
-        QVERIFY(waitFor([&] { return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open && w.workspace()->nodes().node(3).has_value(); }, 10000));
+        QVERIFY(waitFor(
+            [&] {
+                return w.workspace()->bus() && w.workspace()->bus()->state() == CanBus::State::Open &&
+                       w.workspace()->nodes().node(3).has_value();
+            },
+            10000));
         // Node 3 as commissioned: its heartbeat time set (the drive's own value, as kept in it).
         net(w)->runOnNetworkThread([&] { net(w)->device(3)->setValue(0x1017, 0, od::Value::unsignedInt(333)); });
         {
@@ -136,7 +142,8 @@ private slots:
         click(wizard->findChild<QRadioButton*>(QStringLiteral("viaLss")));
         QSignalSpy ready(wizard, &NodeIdWizard::dryRunReady);
         click(wizard->button(QWizard::NextButton));
-        QVERIFY2(waitFor([&] { return wizard->currentId() == NodeIdWizard::RunPageId; }, 3000), qPrintable(wizard->blockingProblem() + QStringLiteral(" | ") + wizard->explanation()));
+        QVERIFY2(waitFor([&] { return wizard->currentId() == NodeIdWizard::RunPageId; }, 3000),
+                 qPrintable(wizard->blockingProblem() + QStringLiteral(" | ") + wizard->explanation()));
         QVERIFY(ready.count() > 0 || ready.wait(8000));
         QVERIFY2(ready.last().at(0).toBool(), qPrintable(wizard->planError() + wizard->blockingProblem()));
         click(wizard->runPage()->runButton());
@@ -155,10 +162,13 @@ private slots:
         }
         QVERIFY(apply->lastReport().ok());
         uint64_t heartbeat = 0;
-        net(w)->runOnNetworkThread([&] { heartbeat = net(w)->device(3)->value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0); });
+        net(w)->runOnNetworkThread(
+            [&] { heartbeat = net(w)->device(3)->value(0x1017, 0).value_or(od::Value{}).toUInt64().value_or(0); });
         QCOMPARE(heartbeat, uint64_t(333));
         QCOMPARE(session->project().node(3)->identity.serial, std::optional<uint32_t>(0x51000042));
-        QVERIFY(waitFor([&] { return compare->hasResult() && !compare->isRunning() && compare->model()->report().clean(); }, 30000));
+        QVERIFY(
+            waitFor([&] { return compare->hasResult() && !compare->isRunning() && compare->model()->report().clean(); },
+                    30000));
 
         auto discard = answerBox(QMessageBox::Discard);
         apply->close();

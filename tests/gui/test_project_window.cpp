@@ -37,10 +37,10 @@
 using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerFileDialog;
-using coscope::testing::DriveLog;
 using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
+using coscope::testing::DriveLog;
 using coscope::testing::signalItem;
 using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
@@ -51,7 +51,8 @@ QString writeLog(const QString& path) {
     DriveLog log(1700000000.0);
     log.identifyDeltaAsda(5);
     log.mapTpdo(5, 1, {0x60640020, 0x606C0020});
-    for (uint32_t i = 0; i < 200; ++i) log.line(QStringLiteral("185#") + DriveLog::le(i % 256, 4) + DriveLog::le(i * 3 % 256, 4), 0.01);
+    for (uint32_t i = 0; i < 200; ++i)
+        log.line(QStringLiteral("185#") + DriveLog::le(i % 256, 4) + DriveLog::le(i * 3 % 256, 4), 0.01);
     return log.write(path) ? path : QString();
 }
 
@@ -59,7 +60,9 @@ QString writeLog(const QString& path) {
 bool clickSignal(MainWindow& w, const QString& name) {
     auto* tree = w.plotDock()->findChild<QTreeWidget*>(QStringLiteral("signalTree"));
     QTreeWidgetItem* item = nullptr;
-    if (!tree || !waitFor([&] { return (item = signalItem(tree, 5, name)) && tree->visualItemRect(item).isValid(); }, 10000)) return false;
+    if (!tree ||
+        !waitFor([&] { return (item = signalItem(tree, 5, name)) && tree->visualItemRect(item).isValid(); }, 10000))
+        return false;
     tree->scrollToItem(item);
     return clickCheckBox(tree, item);
 }
@@ -110,7 +113,12 @@ private slots:
         // The work: only the position plotted, overlaid; the trace filtered to node 5 with SDO
         // transfers grouped; a frame in the transmit list.
         QVERIFY(clickDockTab(w, QStringLiteral("Plot")));
-        QVERIFY(waitFor([&] { w.refresh(); return picked(w).size() == 2; }, 10000));  // the position/velocity pair picked by itself
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return picked(w).size() == 2;
+            },
+            10000));  // the position/velocity pair picked by itself
         QVERIFY(clickSignal(w, QStringLiteral("Velocity actual value")));
         QCOMPARE(picked(w), QStringList{QStringLiteral("n5 6064:00")});
         QVERIFY(clickDockTab(w, QStringLiteral("Trace")));
@@ -153,7 +161,8 @@ private slots:
         QTest::mouseClick(group, Qt::LeftButton);
         QVERIFY(!w.traceDock()->groupsSdo());
         QVERIFY(clickDockTab(w, QStringLiteral("Transmit")));
-        QTest::mouseClick(tx->view()->viewport(), Qt::LeftButton, {}, tx->view()->visualRect(tx->model()->index(0, TransmitModel::Id)).center());
+        QTest::mouseClick(tx->view()->viewport(), Qt::LeftButton, {},
+                          tx->view()->visualRect(tx->model()->index(0, TransmitModel::Id)).center());
         QTest::mouseClick(tx->findChild<QPushButton*>(QStringLiteral("transmitRemove")), Qt::LeftButton);
         QCOMPARE(tx->model()->rowCount(), 0);
 
@@ -163,7 +172,12 @@ private slots:
             QVERIFY(clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open project")));
             QVERIFY(waitFor([&] { return name->answered(); }));
         }
-        QVERIFY(waitFor([&] { w.refresh(); return picked(w) == QStringList{QStringLiteral("n5 6064:00")}; }, 10000));
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return picked(w) == QStringList{QStringLiteral("n5 6064:00")};
+            },
+            10000));
         QCOMPARE(filter->text(), QStringLiteral("node:5"));
         QVERIFY(w.traceDock()->groupsSdo());
         QCOMPARE(tx->model()->rowCount(), 1);

@@ -88,7 +88,8 @@ private slots:
             firstBackend = d->backend()->currentData().toString();
             d->backend()->setFocus();
             QTest::keyClick(d->backend(), Qt::Key_Home);
-            for (int i = 0; i < d->backend()->count() && d->backend()->currentData().toString() != u"replay"; ++i) QTest::keyClick(d->backend(), Qt::Key_Down);
+            for (int i = 0; i < d->backend()->count() && d->backend()->currentData().toString() != u"replay"; ++i)
+                QTest::keyClick(d->backend(), Qt::Key_Down);
             auto* path = d->findChild<QLineEdit*>(QStringLiteral("replayPath"));
             QTest::mouseClick(path, Qt::LeftButton);
             QTest::keyClick(path, Qt::Key_A, Qt::ControlModifier);
@@ -153,7 +154,8 @@ private slots:
         // Node 4 picked in the Nodes dock: that is the user's new choice.
         QTableView* table = w.nodesDock()->view();
         const int row = w.nodesDock()->model()->rowOfNode(4);
-        QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualRect(table->model()->index(row, 1)).center());
+        QTest::mouseClick(table->viewport(), Qt::LeftButton, {},
+                          table->visualRect(table->model()->index(row, 1)).center());
         QCOMPARE(w.nodesDock()->selectedNode(), 4);
         d = openDs402(w);
         QVERIFY(d);

@@ -16,8 +16,8 @@
 #include "eds/SimulatorDictionaries.h"
 
 #include <QComboBox>
-#include <QMenu>
 #include <QDir>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
@@ -52,14 +52,15 @@ W* findTopLevel() {
 
 // The SDO download of 6040h = `cw` to node 3 (CiA 301 §7.2.4.3.3, expedited, 2 bytes).
 bool isControlwordWrite(const CanFrame& f, uint16_t cw) {
-    return f.id == 0x600u + kNode && f.len == 8 && f.data[0] == 0x2B && f.data[1] == 0x40 && f.data[2] == 0x60 && f.data[3] == 0x00 &&
-           f.data[4] == (cw & 0xFF) && f.data[5] == (cw >> 8);
+    return f.id == 0x600u + kNode && f.len == 8 && f.data[0] == 0x2B && f.data[1] == 0x40 && f.data[2] == 0x60 &&
+           f.data[3] == 0x00 && f.data[4] == (cw & 0xFF) && f.data[5] == (cw >> 8);
 }
 // Frame numbers of our own (Tx) writes of 6040h = `cw` to node 3 in the trace.
 std::vector<FrameNo> ownWrites(const TraceStore& store, uint16_t cw) {
     std::vector<FrameNo> out;
     for (size_t n = 0; n < store.size(); ++n)
-        if (const CanFrame f = store.frame(FrameNo(n)); f.isTx() && isControlwordWrite(f, cw)) out.push_back(FrameNo(n));
+        if (const CanFrame f = store.frame(FrameNo(n)); f.isTx() && isControlwordWrite(f, cw))
+            out.push_back(FrameNo(n));
     return out;
 }
 }  // namespace
@@ -100,10 +101,13 @@ class TestSafeClose : public QObject {
         QVERIFY(waitFor([&] { return (wiz = findTopLevel<Ds402Wizard>()) != nullptr; }));
         QVERIFY(QTest::qWaitForWindowExposed(wiz));
         auto* nodes = wiz->findChild<QComboBox*>(QStringLiteral("nodeCombo"));
-        QVERIFY(waitFor([&] { return nodes->findText(QStringLiteral("Node %1").arg(kNode), Qt::MatchStartsWith) >= 0; }, 20000));
+        QVERIFY(waitFor([&] { return nodes->findText(QStringLiteral("Node %1").arg(kNode), Qt::MatchStartsWith) >= 0; },
+                        20000));
         nodes->setFocus();
         QTest::keyClick(nodes, Qt::Key_Home);
-        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node %1").arg(kNode)); ++i) QTest::keyClick(nodes, Qt::Key_Down);
+        for (int i = 0; i < nodes->count() && !nodes->currentText().startsWith(QStringLiteral("Node %1").arg(kNode));
+             ++i)
+            QTest::keyClick(nodes, Qt::Key_Down);
         QVERIFY(waitFor([&] { return wiz->node() == kNode && wiz->shownState() == State::SwitchOnDisabled; }, 8000));
         auto stepTo = [&](Command c, State expect) {
             QPushButton* b = wiz->stepButton(c);
@@ -134,7 +138,8 @@ class TestSafeClose : public QObject {
         QVERIFY(r.open(journal));
         const auto read = r.readAll();
         QVERIFY2(r.errorString().isEmpty(), qPrintable(r.errorString()));
-        QVERIFY2(std::any_of(read.begin(), read.end(), [](const CanFrame& f) { return isControlwordWrite(f, 0x0000); }), "the journal lacks the Disable voltage frame");
+        QVERIFY2(std::any_of(read.begin(), read.end(), [](const CanFrame& f) { return isControlwordWrite(f, 0x0000); }),
+                 "the journal lacks the Disable voltage frame");
         QVERIFY(waitFor([&] { return driveState() == State::SwitchOnDisabled; }, 3000));
     }
 
@@ -160,7 +165,8 @@ private slots:
         auto yes = answerBox(QMessageBox::Yes, &asked);
         QTest::keyClick(w_.get(), Qt::Key_Q, Qt::ControlModifier);
         QVERIFY2(waitFor([&] { return !asked.isEmpty(); }, 5000), "no question about the enabled drive");
-        QVERIFY2(asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("quit")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("quit")),
+                 qPrintable(asked));
         QVERIFY(waitFor([&] { return !w_->isVisible(); }, 5000));
         checkDisabledBeforeClose(journal);
     }
@@ -182,7 +188,9 @@ private slots:
             auto cancel = answerBox(QMessageBox::Cancel, &asked);
             click(bar->widgetForAction(disconnect));
             QVERIFY(waitFor([&] { return !asked.isEmpty(); }, 5000));
-            QVERIFY2(asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("disconnect")), qPrintable(asked));
+            QVERIFY2(
+                asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("disconnect")),
+                qPrintable(asked));
         }
         QTest::qWait(300);
         QVERIFY(ws()->canTransmit());
@@ -210,7 +218,9 @@ private slots:
             auto cancel = answerBox(QMessageBox::Cancel, &asked);
             QVERIFY(clickMenuItem(*w_, QStringLiteral("Bus"), QStringLiteral("Connect to virtual drives")));
             QVERIFY(waitFor([&] { return !asked.isEmpty(); }, 5000));
-            QVERIFY2(asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("connect anew")), qPrintable(asked));
+            QVERIFY2(
+                asked.contains(QStringLiteral("Node 3 is enabled")) && asked.contains(QStringLiteral("connect anew")),
+                qPrintable(asked));
         }
         QTest::qWait(300);
         QCOMPARE(ws()->store(), before);

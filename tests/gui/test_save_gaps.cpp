@@ -13,8 +13,8 @@
 
 #include <QFileInfo>
 #include <QLineEdit>
-#include <QStatusBar>
 #include <QMessageBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -78,7 +78,10 @@ private slots:
 
         // Reopening an ASC with a gap comment shows the gap.
         QVERIFY(chooseFile(w, QStringLiteral("Open log"), in));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0; }));
+        QVERIFY(waitFor([&] {
+            return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+                   w.traceDock()->model()->rowCount() > 0;
+        }));
         QCOMPARE(w.workspace()->store()->size(), size_t(kFrames));
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(1));
         QCOMPARE(w.workspace()->store()->gaps()[0].firstFrame, FrameNo(kGapBefore));
@@ -87,7 +90,8 @@ private slots:
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
         typeAndEnter(find, QStringLiteral("bus lost at"));
-        QVERIFY2(waitFor([&] { return w.traceDock()->view()->currentRow() == kGapBefore; }), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(waitFor([&] { return w.traceDock()->view()->currentRow() == kGapBefore; }),
+                 qPrintable(w.statusBar()->currentMessage()));
 
         // To candump: the question; Cancel saves nothing.
         const QString log = dir_.filePath(QStringLiteral("out.log"));
@@ -96,7 +100,9 @@ private slots:
             auto box = answerBox(QMessageBox::Cancel, &asked);
             QVERIFY(chooseFile(w, QStringLiteral("Save trace as"), log));
             QVERIFY(waitFor([&] { return box->answered(); }));
-            QVERIFY2(asked.contains(QStringLiteral("1 gap")) && asked.contains(QStringLiteral("candump format cannot hold them")), qPrintable(asked));
+            QVERIFY2(asked.contains(QStringLiteral("1 gap")) &&
+                         asked.contains(QStringLiteral("candump format cannot hold them")),
+                     qPrintable(asked));
             QTest::qWait(200);
             QVERIFY(w.saveJob() == nullptr || w.saveJob()->isDone());
             QVERIFY(!QFileInfo::exists(log));
@@ -140,7 +146,10 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(chooseFile(w, QStringLiteral("Open log"), in));
-        QVERIFY(waitFor([&] { return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0; }));
+        QVERIFY(waitFor([&] {
+            return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
+                   w.traceDock()->model()->rowCount() > 0;
+        }));
         QCOMPARE(w.workspace()->store()->gaps().size(), size_t(2));
         const QString out = dir_.filePath(QStringLiteral("out2.pcapng"));
         QVERIFY(chooseFile(w, QStringLiteral("Save trace as"), out));

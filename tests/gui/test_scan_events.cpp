@@ -97,10 +97,12 @@ private slots:
 
         // Connecting scans by itself; once that is done, right-click in the node table ▸ Scan
         // network, then Yes in the confirmation.
-        QVERIFY(waitFor([&] {
-            w.refresh();
-            return w.nodesDock()->scanAction()->isEnabled();
-        }, 30000));
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return w.nodesDock()->scanAction()->isEnabled();
+            },
+            30000));
         auto* view = w.nodesDock()->findChild<QTableView*>();
         QVERIFY(view);
         QString asked;
@@ -114,16 +116,20 @@ private slots:
         QVERIFY2(asked.contains(QStringLiteral("1000h")), qPrintable(asked));
 
         // The Delta (node 1) has no 1008h: "not present"; its identity lacks the serial number.
+        QVERIFY(waitFor(
+            [&] {
+                w.refresh();
+                return cellOfNode(nodes, 1, NodesModel::DeviceName) == QStringLiteral("not present") &&
+                       cellOfNode(nodes, 1, NodesModel::Identity).contains(QStringLiteral("s/n not present"));
+            },
+            30000));
         QVERIFY(waitFor([&] {
             w.refresh();
-            return cellOfNode(nodes, 1, NodesModel::DeviceName) == QStringLiteral("not present") &&
-                   cellOfNode(nodes, 1, NodesModel::Identity).contains(QStringLiteral("s/n not present"));
-        }, 30000));
-        QVERIFY(waitFor([&] {
-            w.refresh();
-            return cellOfNode(nodes, 3, NodesModel::DeviceName) != QString() && !cellOfNode(nodes, 3, NodesModel::DeviceName).contains(u'(');
+            return cellOfNode(nodes, 3, NodesModel::DeviceName) != QString() &&
+                   !cellOfNode(nodes, 3, NodesModel::DeviceName).contains(u'(');
         }));
-        QVERIFY(cellOfNode(nodes, 3, NodesModel::DeviceName) != QStringLiteral("not present"));  // the generic drive has 1008h
+        QVERIFY(cellOfNode(nodes, 3, NodesModel::DeviceName) !=
+                QStringLiteral("not present"));  // the generic drive has 1008h
         QTest::qWait(500);
         w.refresh();
 
@@ -132,7 +138,9 @@ private slots:
         auto abortIn = [&](uint16_t index, uint8_t sub) {
             for (size_t n = 0; n < store.size(); ++n) {
                 const auto& r = store.record(static_cast<FrameNo>(n));
-                if (r.id == 0x581 && r.len == 8 && r.data[0] == 0x80 && (r.data[1] | r.data[2] << 8) == index && r.data[3] == sub) return true;
+                if (r.id == 0x581 && r.len == 8 && r.data[0] == 0x80 && (r.data[1] | r.data[2] << 8) == index &&
+                    r.data[3] == sub)
+                    return true;
             }
             return false;
         };
@@ -152,13 +160,16 @@ private slots:
         QStringList rules;
         QVERIFY(waitFor([&] {
             rules.clear();
-            for (const dissect::HealthFinding& f : w.workspace()->health().report(std::numeric_limits<int64_t>::min()).findings) {
+            for (const dissect::HealthFinding& f :
+                 w.workspace()->health().report(std::numeric_limits<int64_t>::min()).findings) {
                 rules << QStringLiteral("%1 %2 (%3)").arg(f.rule, dissect::severityName(f.severity), f.what);
                 if (f.rule.startsWith(QLatin1String("sdo."))) return false;
             }
             return rules.filter(QStringLiteral("coscope.sdo_abort info")).size() > 0;
         }));
-        for (const QString& r : rules) QVERIFY2(!r.contains(QLatin1String(" error (")) && !r.contains(QLatin1String(" critical (")), qPrintable(rules.join(u'\n')));
+        for (const QString& r : rules)
+            QVERIFY2(!r.contains(QLatin1String(" error (")) && !r.contains(QLatin1String(" critical (")),
+                     qPrintable(rules.join(u'\n')));
     }
 };
 

@@ -81,8 +81,7 @@ QMenu* openCommission(QMainWindow& w, bool byKeys) {
         w.activateWindow();
         if (!QTest::qWaitForWindowActive(&w)) return nullptr;
         QTest::keyClick(&w, Qt::Key_C, Qt::AltModifier);
-    }
-    else QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(title).center());
+    } else QTest::mouseClick(w.menuBar(), Qt::LeftButton, {}, w.menuBar()->actionGeometry(title).center());
     QMenu* menu = title->menu();
     return waitFor([&] { return menu->isVisible(); }, 3000) ? menu : nullptr;
 }
@@ -102,7 +101,8 @@ bool pickCommission(QMainWindow& w, const QString& item, bool byKeys) {
         QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(wanted).center());
         return true;
     }
-    for (int i = 0; i <= menu->actions().size() && menu->activeAction() != wanted; ++i) QTest::keyClick(menu, Qt::Key_Down);
+    for (int i = 0; i <= menu->actions().size() && menu->activeAction() != wanted; ++i)
+        QTest::keyClick(menu, Qt::Key_Down);
     if (menu->activeAction() != wanted) return false;
     QTest::keyClick(menu, Qt::Key_Return);
     return true;
@@ -216,7 +216,9 @@ class TestTechnicianWalk : public QObject {
         if (!stepTo(canopen::ds402::Command::EnableOperation, State::OperationEnabled)) return false;
         return asked.contains(QStringLiteral("energises"));
     }
-    QString statuswordShown(Ds402Wizard* wiz) const { return wiz->findChild<QLabel*>(QStringLiteral("statuswordValue"))->text(); }
+    QString statuswordShown(Ds402Wizard* wiz) const {
+        return wiz->findChild<QLabel*>(QStringLiteral("statuswordValue"))->text();
+    }
 
 private slots:
     void initTestCase() {
@@ -232,8 +234,10 @@ private slots:
         startSimulationDemo(ws());
         QVERIFY(waitFor([&] { return ws()->canTransmit(); }));
         // The scan identified the three drives (1 Delta, 2 AIMOTOR, 3 generic CiA 402).
-        QVERIFY2(waitFor([&] { return dictionaryInDock(1) == u"delta-asda-a2" && dictionaryInDock(3) == u"generic-cia402"; }, 20000),
-                 qPrintable(dictionaryInDock(1) + u'/' + dictionaryInDock(3)));
+        QVERIFY2(
+            waitFor([&] { return dictionaryInDock(1) == u"delta-asda-a2" && dictionaryInDock(3) == u"generic-cia402"; },
+                    20000),
+            qPrintable(dictionaryInDock(1) + u'/' + dictionaryInDock(3)));
     }
 
     // PDO mapping… by a click: node 1, TPDO2 chosen by keys; 606Ch and 6041h found by typing
@@ -251,7 +255,8 @@ private slots:
         QVERIFY(pickWithKeys(nodeBox, QStringLiteral("Node 1")));
         QVERIFY(pickWithKeys(pdoBox, QStringLiteral("TPDO2")));
         QAbstractButton* next = wiz->button(QWizard::NextButton);
-        QVERIFY2(waitFor([&] { return next->isEnabled() && wiz->state().node == 1 && wiz->state().pdo.number == 2; }), qPrintable(wiz->readError()));
+        QVERIFY2(waitFor([&] { return next->isEnabled() && wiz->state().node == 1 && wiz->state().pdo.number == 2; }),
+                 qPrintable(wiz->readError()));
         shot(wiz, "wizard-pdo-1-choose");
         click(next);
         QCOMPARE(wiz->currentId(), int(PdoWizard::MappingPageId));
@@ -285,10 +290,12 @@ private slots:
         QVERIFY(apply && apply->isEnabled());
         click(apply);
         auto* result = wiz->findChild<QLabel*>(QStringLiteral("pdoResult"));
-        QVERIFY2(waitFor([&] { return wiz->outcome() != PdoWizard::Outcome::None && !wiz->isApplying(); }, 30000), qPrintable(result->text()));
+        QVERIFY2(waitFor([&] { return wiz->outcome() != PdoWizard::Outcome::None && !wiz->isApplying(); }, 30000),
+                 qPrintable(result->text()));
         QVERIFY2(wiz->outcome() == PdoWizard::Outcome::Succeeded, qPrintable(result->text()));
         QVERIFY2(result->isVisible() && !result->text().isEmpty(), qPrintable(result->text()));
-        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the apply's frames");
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000),
+                 "the frames pane does not show the apply's frames");
         shot(wiz, "wizard-pdo-4-applied");
 
         // The drive itself now maps 606Ch, 6041h into TPDO2.
@@ -326,7 +333,8 @@ private slots:
         }));
         QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, table->visualItemRect(table->item(row, 0)).center());
         auto* target = wiz->findChild<QLabel*>(QStringLiteral("target"));
-        QVERIFY2(waitFor([&] { return target->text().contains(QStringLiteral("node 3")); }, 3000), qPrintable(target->text()));
+        QVERIFY2(waitFor([&] { return target->text().contains(QStringLiteral("node 3")); }, 3000),
+                 qPrintable(target->text()));
         QAbstractButton* next = wiz->button(QWizard::NextButton);
         QVERIFY(next->isEnabled());
         shot(wiz, "wizard-nodeid-1-find");
@@ -344,10 +352,12 @@ private slots:
         shot(wiz, "wizard-nodeid-3-dry-run");
         click(run);
         QLabel* status = wiz->runPage()->statusLabel();
-        QVERIFY2(waitFor([&] { return wiz->outcome() != NodeIdWizard::Outcome::None && !wiz->isRunning(); }, 30000), qPrintable(status->text()));
+        QVERIFY2(waitFor([&] { return wiz->outcome() != NodeIdWizard::Outcome::None && !wiz->isRunning(); }, 30000),
+                 qPrintable(status->text()));
         QVERIFY2(wiz->outcome() == NodeIdWizard::Outcome::Succeeded, qPrintable(status->text()));
         QVERIFY2(status->text().contains(QStringLiteral("node-ID 7")), qPrintable(status->text()));
-        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the change's frames");
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000),
+                 "the frames pane does not show the change's frames");
         shot(wiz, "wizard-nodeid-4-done");
         QAbstractButton* finish = wiz->button(QWizard::FinishButton);
         QVERIFY(finish->isVisible() && finish->isEnabled());
@@ -355,14 +365,17 @@ private slots:
         QVERIFY2(waitFor([&] { return !alive || !alive->isVisible(); }, 3000), "the node-ID wizard is still open");
 
         // The Nodes dock: node 7 with its dictionary, no node 3.
-        QVERIFY2(waitFor([&] { return dictionaryInDock(7) == u"generic-cia402"; }, 15000), qPrintable(dictionaryInDock(7)));
+        QVERIFY2(waitFor([&] { return dictionaryInDock(7) == u"generic-cia402"; }, 15000),
+                 qPrintable(dictionaryInDock(7)));
         QVERIFY(waitFor([&] { return w_->nodesDock()->model()->rowOfNode(3) < 0; }));
         QVERIFY(clickNodeInDock(w_->nodesDock(), 7));
         ObjectDictionaryDock* od = w_->odDock();
         QVERIFY(waitFor([&] { return od->node() == 7 && od->model()->hasDictionary(); }));
         auto* header = od->findChild<QLabel*>(QStringLiteral("odHeader"));
         QVERIFY(header->isVisible());
-        QVERIFY2(header->text().contains(QStringLiteral("Node 7")) && header->text().contains(QStringLiteral("generic-cia402")), qPrintable(header->text()));
+        QVERIFY2(header->text().contains(QStringLiteral("Node 7")) &&
+                     header->text().contains(QStringLiteral("generic-cia402")),
+                 qPrintable(header->text()));
         QVERIFY(od->view()->isVisible());
     }
 
@@ -382,14 +395,18 @@ private slots:
         QVERIFY2(statuswordShown(wiz).contains(QStringLiteral("Operation enabled")), qPrintable(statuswordShown(wiz)));
         // The message under the steps writes the statusword as the rest of the app does (0637h).
         const QString said = wiz->findChild<QLabel*>(QStringLiteral("message"))->text();
-        QVERIFY2(said.contains(QStringLiteral("statusword 0637h")) && !said.contains(QStringLiteral("0x")), qPrintable(said));
-        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000), "the frames pane does not show the steps' frames");
+        QVERIFY2(said.contains(QStringLiteral("statusword 0637h")) && !said.contains(QStringLiteral("0x")),
+                 qPrintable(said));
+        QVERIFY2(waitFor([&] { return paneShowsNewest(wiz); }, 3000),
+                 "the frames pane does not show the steps' frames");
         shot(wiz, "wizard-ds402-2-enabled");
         click(wiz->disableButton());
         QVERIFY(waitFor([&] { return driveState(1) == State::SwitchOnDisabled; }, 5000));
-        QVERIFY2(waitFor([&] { return statuswordShown(wiz).contains(QStringLiteral("Switch on disabled")); }, 5000), qPrintable(statuswordShown(wiz)));
+        QVERIFY2(waitFor([&] { return statuswordShown(wiz).contains(QStringLiteral("Switch on disabled")); }, 5000),
+                 qPrintable(statuswordShown(wiz)));
         click(buttonNamed(wiz, QStringLiteral("Close")));
-        QVERIFY2(waitFor([&] { return !alive || !alive->isVisible(); }, 3000), "the CiA 402 wizard is still open after Close");
+        QVERIFY2(waitFor([&] { return !alive || !alive->isVisible(); }, 3000),
+                 "the CiA 402 wizard is still open after Close");
         QTRY_VERIFY(!alive);
         QTest::qWait(500);
         QCOMPARE(driveState(1), State::SwitchOnDisabled);
@@ -408,7 +425,8 @@ private slots:
         QVERIFY(enableByClicks(wiz, 1));
         QCOMPARE(driveState(1), State::OperationEnabled);
         QTest::keyClick(wiz, Qt::Key_Escape);
-        QVERIFY2(waitFor([&] { return !alive || !alive->isVisible(); }, 3000), "the CiA 402 wizard is still open after Esc");
+        QVERIFY2(waitFor([&] { return !alive || !alive->isVisible(); }, 3000),
+                 "the CiA 402 wizard is still open after Esc");
         QVERIFY(waitFor([&] { return driveState(1) == State::SwitchOnDisabled; }, 5000));
         QTRY_VERIFY(!alive);
     }
@@ -434,7 +452,10 @@ private slots:
         auto discard = answerBox(QMessageBox::Discard, &asked);
         QVERIFY(clickBusConnect(*w_));
         QVERIFY(waitFor([&] { return connect->answered(); }));
-        QVERIFY2(waitFor([&] { return ws()->bus() && ws()->bus()->isListenOnly() && ws()->bus()->state() == CanBus::State::Open; }), qPrintable(w_->lastError()));
+        QVERIFY2(waitFor([&] {
+                     return ws()->bus() && ws()->bus()->isListenOnly() && ws()->bus()->state() == CanBus::State::Open;
+                 }),
+                 qPrintable(w_->lastError()));
         QVERIFY2(asked.contains(QStringLiteral("not saved")), qPrintable(asked));
         QTest::qWait(200);
         QMenu* menu = openCommission(*w_, false);
@@ -458,7 +479,9 @@ private slots:
     // walk expects (the steps check closing themselves).
     void cleanup() {
         for (QWidget* t : QApplication::topLevelWidgets())
-            if (t != w_.get() && t->isVisible() && (qobject_cast<NodeIdWizard*>(t) || qobject_cast<Ds402Wizard*>(t) || qobject_cast<PdoWizard*>(t))) t->close();
+            if (t != w_.get() && t->isVisible() &&
+                (qobject_cast<NodeIdWizard*>(t) || qobject_cast<Ds402Wizard*>(t) || qobject_cast<PdoWizard*>(t)))
+                t->close();
         QTest::qWait(100);
     }
 

@@ -101,7 +101,8 @@ private slots:
         // 0, A, 3, B, 8, 11, D, 14
         QCOMPARE(m->rowCount(), 8);
         QCOMPARE(m->rowKind(3), TraceModel::RowKind::Transfer);
-        QVERIFY(m->data(m->index(3, TraceModel::Summary), Qt::DisplayRole).toString().contains(QStringLiteral("6 frames")));
+        QVERIFY(
+            m->data(m->index(3, TraceModel::Summary), Qt::DisplayRole).toString().contains(QStringLiteral("6 frames")));
         TraceView* view = dock.view();
         auto* find = dock.findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
@@ -112,7 +113,8 @@ private slots:
         QVERIFY2(waitFor([&] { return current() == 3; }, dock), qPrintable(QString::number(current())));
         QVERIFY(!find->property("missed").toBool());
         // The reassembled value, split over two frames.
-        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(0, TraceModel::Summary)).center());
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                          view->visualRect(view->model()->index(0, TraceModel::Summary)).center());
         QCOMPARE(current(), 0);
         typeAndEnter(find, QStringLiteral("coscope dr1"));
         QVERIFY2(waitFor([&] { return current() == 3; }, dock), qPrintable(QString::number(current())));
@@ -149,7 +151,8 @@ private slots:
         QVERIFY(waitFor([&] { return find->property("missed").toBool(); }, dock));
         for (const int row : {9, 7, 5}) {
             QTest::keyClick(find, Qt::Key_F3, Qt::ShiftModifier);
-            QVERIFY2(waitFor([&] { return current() == row; }, dock), qPrintable(QStringLiteral("%1 for %2").arg(current()).arg(row)));
+            QVERIFY2(waitFor([&] { return current() == row; }, dock),
+                     qPrintable(QStringLiteral("%1 for %2").arg(current()).arg(row)));
         }
         QTest::keyClick(find, Qt::Key_F3, Qt::ShiftModifier);
         QVERIFY(waitFor([&] { return find->property("missed").toBool(); }, dock));

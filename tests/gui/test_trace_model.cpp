@@ -20,8 +20,8 @@ QString cell(const TraceModel& m, int row, int col) { return m.data(m.index(row,
 // SDO expedited download request (client -> node) and its confirmation.
 void sdoWrite(TraceStore& s, int64_t ms, int node, uint16_t index, uint8_t sub, uint32_t v, int size) {
     const uint8_t cs = static_cast<uint8_t>(0x23 | ((4 - size) << 2));
-    s.append(at(ms, CanFrame::classic(0x600 + node, {cs, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(v), uint8_t(v >> 8),
-                                                     uint8_t(v >> 16), uint8_t(v >> 24)})));
+    s.append(at(ms, CanFrame::classic(0x600 + node, {cs, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(v),
+                                                     uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24)})));
     s.append(at(ms + 1, CanFrame::classic(0x580 + node, {0x60, uint8_t(index), uint8_t(index >> 8), sub, 0, 0, 0, 0})));
 }
 }  // namespace
@@ -33,13 +33,14 @@ class TestTraceModel : public QObject {
 private slots:
     void init() {
         store_ = std::make_shared<TraceStore>();
-        store_->append(at(0, CanFrame::classic(0x705, {0x00})));                    // 0 boot-up node 5
-        store_->append(at(1, CanFrame::classic(0x000, {0x01, 0x05})));              // 1 NMT start node 5
-        store_->append(at(3, CanFrame::classic(0x705, {0x05})));                    // 2 heartbeat operational
+        store_->append(at(0, CanFrame::classic(0x705, {0x00})));        // 0 boot-up node 5
+        store_->append(at(1, CanFrame::classic(0x000, {0x01, 0x05})));  // 1 NMT start node 5
+        store_->append(at(3, CanFrame::classic(0x705, {0x05})));        // 2 heartbeat operational
         store_->append(at(4, CanFrame::classic(0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0})));  // 3 SDO upload 1000h
-        store_->append(at(6, CanFrame::classic(0x585, {0x80, 0x00, 0x20, 0x01, 0x00, 0x00, 0x02, 0x06})));  // 4 abort 06020000h
-        store_->append(at(10, CanFrame::classic(0x085, {0x10, 0x23, 0x05, 0, 0, 0, 0, 0})));  // 5 EMCY 2310h
-        store_->append(at(11, CanFrame::classic(0x186, {1, 2, 3, 4})));            // 6 TPDO1 node 6
+        store_->append(
+            at(6, CanFrame::classic(0x585, {0x80, 0x00, 0x20, 0x01, 0x00, 0x00, 0x02, 0x06})));  // 4 abort 06020000h
+        store_->append(at(10, CanFrame::classic(0x085, {0x10, 0x23, 0x05, 0, 0, 0, 0, 0})));     // 5 EMCY 2310h
+        store_->append(at(11, CanFrame::classic(0x186, {1, 2, 3, 4})));                          // 6 TPDO1 node 6
     }
 
     void columns() {
@@ -57,7 +58,8 @@ private slots:
         QVERIFY(cell(m, 1, TraceModel::Summary).contains(QStringLiteral("node 5")));
         QCOMPARE(cell(m, 3, TraceModel::Data), QStringLiteral("40 00 10 00 00 00 00 00"));
         QVERIFY(cell(m, 3, TraceModel::Summary).contains(QStringLiteral("1000:00")));
-        QVERIFY2(cell(m, 4, TraceModel::Summary).contains(QStringLiteral("06020000")), qPrintable(cell(m, 4, TraceModel::Summary)));
+        QVERIFY2(cell(m, 4, TraceModel::Summary).contains(QStringLiteral("06020000")),
+                 qPrintable(cell(m, 4, TraceModel::Summary)));
         QVERIFY(cell(m, 5, TraceModel::Summary).contains(QStringLiteral("2310")));
         QCOMPARE(cell(m, 6, TraceModel::Service), QStringLiteral("TPDO1"));
         QCOMPARE(cell(m, 6, TraceModel::Direction), QStringLiteral("Rx"));
@@ -184,15 +186,14 @@ private slots:
         QVERIFY(job.takeResult().size() < 2'000'000);  // stopped early
     }
 
-
     // The virtual drives' traffic through the real dissectors: node 2 an AIMOTOR drive (TPDO1 =
     // 6041h statusword, 6061h mode display, 6064h position), node 1 without a dictionary.
     void traceDecoding() {
         auto store = std::make_shared<TraceStore>();
         store->append(at(0, CanFrame::classic(0x182, {0x37, 0x02, 0x08, 0x10, 0x27, 0x00, 0x00})));  // 0 TPDO1 node 2
-        store->append(at(1, CanFrame::classic(0x602, {0x40, 0x64, 0x60, 0x00, 0, 0, 0, 0})));           // 1 SDO upload 6064h
-        store->append(at(2, CanFrame::classic(0x582, {0x43, 0x64, 0x60, 0x00, 0x10, 0x27, 0, 0})));     // 2 = 10000
-        store->append(at(3, CanFrame::classic(0x601, {0x40, 0x41, 0x60, 0x00, 0, 0, 0, 0})));           // 3 node 1 6041h
+        store->append(at(1, CanFrame::classic(0x602, {0x40, 0x64, 0x60, 0x00, 0, 0, 0, 0})));  // 1 SDO upload 6064h
+        store->append(at(2, CanFrame::classic(0x582, {0x43, 0x64, 0x60, 0x00, 0x10, 0x27, 0, 0})));  // 2 = 10000
+        store->append(at(3, CanFrame::classic(0x601, {0x40, 0x41, 0x60, 0x00, 0, 0, 0, 0})));        // 3 node 1 6041h
         // Filler past the first snapshot, then node 2 remaps TPDO1 to 6064h only (CiA 301 §7.5.2.36).
         std::vector<CanFrame> sync(5000, at(4, CanFrame::classic(0x080, {})));
         store->append(sync);
@@ -234,13 +235,14 @@ private slots:
         bool statuswordBits = false;
         for (const auto& t : d.tree) {
             tree << t.label + QLatin1Char('=') + t.value;
-            if (t.label.contains(QStringLiteral("Statusword")) && t.byteOffset == 0 && t.byteLength == 2) statuswordBits = true;
+            if (t.label.contains(QStringLiteral("Statusword")) && t.byteOffset == 0 && t.byteLength == 2)
+                statuswordBits = true;
         }
         QVERIFY2(statuswordBits, qPrintable(tree.join(QLatin1Char('\n'))));
 
         // A filter on decoded text sees the dissectors' summaries.
-        const auto rows = runFilter(*store, *TraceFilter::parse(QStringLiteral("position actual"), nullptr), *decoder, 0,
-                                    static_cast<FrameNo>(store->size()), {});
+        const auto rows = runFilter(*store, *TraceFilter::parse(QStringLiteral("position actual"), nullptr), *decoder,
+                                    0, static_cast<FrameNo>(store->size()), {});
         QVERIFY(rows && rows->size() >= 3);
 
         // Reassigning dictionaries is a new revision: the model decodes again.

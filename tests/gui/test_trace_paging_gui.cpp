@@ -19,14 +19,14 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLineEdit>
-#include <QToolBar>
-#include <QToolButton>
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QtTest>
 
@@ -66,7 +66,9 @@ QString writeLog(const QString& path, bool sdo = false) {
     for (int i = 0; i < kFrames; ++i) {
         out += "(1700000000." + QByteArray::number(i).rightJustified(6, '0') + ") can0 ";
         if (sdo && i >= kSdoAt && i < kSdoAt + 6) out += kSdo[i - kSdoAt];
-        else out += i == kEmcyAt ? QByteArray("081#1023050000000000") : "181#" + QByteArray::number(i, 16).rightJustified(8, '0').toUpper();
+        else
+            out += i == kEmcyAt ? QByteArray("081#1023050000000000")
+                                : "181#" + QByteArray::number(i, 16).rightJustified(8, '0').toUpper();
         out += '\n';
     }
     f.write(out);
@@ -95,10 +97,14 @@ private slots:
         if (!QTest::qWaitForWindowActive(&w)) return false;
         if (!w.connectBus(QStringLiteral("replay://") + log + QStringLiteral("?speed=0"))) return false;
         auto store = w.workspace()->store();
-        return waitFor([&] { return store->size() == size_t(kFrames); }, 120000) && waitFor([&] {
-                   const CaptureJournal* j = w.workspace()->journal();  // none once the replay ended
-                   return !j || j->framesWritten() == uint64_t(kFrames);
-               }, 60000) && waitFor([&] { return w.traceDock()->model()->rowCount() == kFrames; }, 30000);
+        return waitFor([&] { return store->size() == size_t(kFrames); }, 120000) &&
+               waitFor(
+                   [&] {
+                       const CaptureJournal* j = w.workspace()->journal();  // none once the replay ended
+                       return !j || j->framesWritten() == uint64_t(kFrames);
+                   },
+                   60000) &&
+               waitFor([&] { return w.traceDock()->model()->rowCount() == kFrames; }, 30000);
     }
 
     void oldestFramesReachableWithTinyBudget() {
@@ -115,23 +121,30 @@ private slots:
         // From the newest rows first: the view may still show the oldest ones when the capture
         // was quick, and the chunks of the rows shown (and of the current row) stay in memory.
         QTest::keyClick(view->viewport(), Qt::Key_End, Qt::ControlModifier);
-        QVERIFY2(waitFor([&] { return !store->isResident(0); }, 30000), qPrintable(QString::number(store->residentChunks())));
+        QVERIFY2(waitFor([&] { return !store->isResident(0); }, 30000),
+                 qPrintable(QString::number(store->residentChunks())));
         QTest::keyClick(view->viewport(), Qt::Key_Home, Qt::ControlModifier);
         QVERIFY2(waitFor([&] { return view->rowAt(0) == 0; }, 10000), qPrintable(QString::number(view->rowAt(0))));
         // The row is drawn as loading while the store's loader thread reads it back, then shown.
-        QVERIFY2(waitFor([&] { return cell(m, 0, TraceModel::CobId) == QStringLiteral("181"); }, 30000), qPrintable(cell(m, 0, TraceModel::Summary)));
+        QVERIFY2(waitFor([&] { return cell(m, 0, TraceModel::CobId) == QStringLiteral("181"); }, 30000),
+                 qPrintable(cell(m, 0, TraceModel::Summary)));
         QCOMPARE(store->frame(0).data[3], uint8_t(0));
         QCOMPARE(store->frame(kFrames - 1).data[3], uint8_t((kFrames - 1) & 0xFF));
         QVERIFY(store->pageIns() >= 1);  // frame 0 came back from the journal
         // Back within the budget (1 MiB of chunks + indexes) once the pages read are let go again
         // (evicted chunks are freed up to 1 s later, while a reader may still hold them).
-        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000), qPrintable(QString::number(store->memoryBytes())));
+        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000),
+                 qPrintable(QString::number(store->memoryBytes())));
 
         // Find goes back to the one EMCY among the oldest frames.
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
         typeAndEnter(find, QStringLiteral("EMCY"));
-        QVERIFY(waitFor([&] { return view->currentIndex().isValid() && m->frameAt(view->currentIndex().row()) == FrameNo(kEmcyAt); }, 60000));
+        QVERIFY(waitFor(
+            [&] {
+                return view->currentIndex().isValid() && m->frameAt(view->currentIndex().row()) == FrameNo(kEmcyAt);
+            },
+            60000));
 
         // A filter finds it too.
         typeAndEnter(w.traceDock()->findChild<QLineEdit*>(QStringLiteral("filterEdit")), QStringLiteral("svc:emcy"));
@@ -139,7 +152,8 @@ private slots:
         QCOMPARE(m->frameAt(0), FrameNo(kEmcyAt));
         // Back within the budget (1 MiB of chunks + indexes) once the pages read are let go again
         // (evicted chunks are freed up to 1 s later, while a reader may still hold them).
-        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000), qPrintable(QString::number(store->memoryBytes())));
+        QVERIFY2(waitFor([&] { return store->memoryBytes() < (9u << 19); }, 30000),
+                 qPrintable(QString::number(store->memoryBytes())));
 
         // Save As writes every frame, the evicted ones from the journal.
         const QString out = dir_.filePath(QStringLiteral("saved.log"));
@@ -177,24 +191,28 @@ private slots:
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
         typeAndEnter(find, QStringLiteral("EMCY"));  // in the summary only
-        QVERIFY2(waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); }, 60000),
+        QVERIFY2(waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); },
+                         60000),
                  qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(store->pageIns() > pageIns);  // read back from the journal
         QVERIFY(!find->property("missed").toBool());
         // Shown: its row is in view, with its own COB-ID once its chunk is in RAM.
         QVERIFY(waitFor([&] { return view->rowAt(view->viewport()->height() / 2) >= 0; }, 10000));
-        QVERIFY(waitFor([&] {
-            const QModelIndex i = view->currentIndex();
-            return i.isValid() && view->visualRect(i).intersects(view->viewport()->rect()) &&
-                   view->model()->data(i.siblingAtColumn(TraceModel::CobId)).toString() == QStringLiteral("081");
-        }, 30000));
+        QVERIFY(waitFor(
+            [&] {
+                const QModelIndex i = view->currentIndex();
+                return i.isValid() && view->visualRect(i).intersects(view->viewport()->rect()) &&
+                       view->model()->data(i.siblingAtColumn(TraceModel::CobId)).toString() == QStringLiteral("081");
+            },
+            30000));
 
         // Frame 70000 (data 00 01 11 70), in the second chunk, which is paged out now.
         QVERIFY(waitFor([&] { return !store->isResident(70000); }, 60000));
         QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
         typeAndEnter(find, QStringLiteral("00 01 11 70"));
-        QVERIFY2(waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(70000); }, 60000),
-                 qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(
+            waitFor([&] { return view->currentRow() >= 0 && m->frameAt(view->currentRow()) == FrameNo(70000); }, 60000),
+            qPrintable(w.statusBar()->currentMessage()));
 
         // Back with Find previous from there: the EMCY again, its chunk paged out meanwhile.
         QVERIFY(waitFor([&] { return !store->isResident(kEmcyAt); }, 60000));
@@ -207,12 +225,14 @@ private slots:
             if (a->objectName() == QStringLiteral("findPrevAction")) prev = a;
         QVERIFY(prev);
         QTest::mouseClick(bar->widgetForAction(prev), Qt::LeftButton);
-        QVERIFY2(waitFor([&] { return m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); }, 60000), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(waitFor([&] { return m->frameAt(view->currentRow()) == FrameNo(kEmcyAt); }, 60000),
+                 qPrintable(w.statusBar()->currentMessage()));
 
         // A text that is nowhere: searched to the end, then said so.
         QTest::keyClick(find, Qt::Key_A, Qt::ControlModifier);
         typeAndEnter(find, QStringLiteral("no such text"));
-        QVERIFY2(waitFor([&] { return find->property("missed").toBool(); }, 120000), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(waitFor([&] { return find->property("missed").toBool(); }, 120000),
+                 qPrintable(w.statusBar()->currentMessage()));
         QVERIFY(w.statusBar()->currentMessage().contains(QStringLiteral("not found")));
         QCOMPARE(m->frameAt(view->currentRow()), FrameNo(kEmcyAt));
         QCOMPARE(store->pageErrors(), uint64_t(0));
@@ -229,12 +249,14 @@ private slots:
         store->watchPageInsOn(std::this_thread::get_id());
         TraceView* view = w.traceDock()->view();
         TraceModel* m = w.traceDock()->model();
-        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000), qPrintable(QString::number(store->residentChunks())));
+        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000),
+                 qPrintable(QString::number(store->residentChunks())));
 
         auto* bar = w.traceDock()->findChild<QToolBar*>(QStringLiteral("traceToolbar"));
         QVERIFY(bar);
         for (QAction* a : bar->actions())
-            if (a->objectName() == QStringLiteral("groupSdoAction")) QTest::mouseClick(bar->widgetForAction(a), Qt::LeftButton);
+            if (a->objectName() == QStringLiteral("groupSdoAction"))
+                QTest::mouseClick(bar->widgetForAction(a), Qt::LeftButton);
         QVERIFY(w.traceDock()->groupsSdo());
         // One row for the six frames of the transfer.
         QVERIFY(waitFor([&] { return m->isGrouped() && m->rowCount() == kFrames - 5; }, 60000));
@@ -243,33 +265,56 @@ private slots:
         QTest::keyClick(view->viewport(), Qt::Key_Home, Qt::ControlModifier);
         QVERIFY(waitFor([&] { return view->rowAt(0) == 0; }, 10000));
         QCOMPARE(m->rowKind(kSdoAt), TraceModel::RowKind::Transfer);
-        QVERIFY2(waitFor([&] { return cell(m, kSdoAt, TraceModel::Summary).contains(QStringLiteral("device name = COSCOPESIM")); }, 30000),
-                 qPrintable(cell(m, kSdoAt, TraceModel::Summary)));
+        QVERIFY2(
+            waitFor(
+                [&] {
+                    return cell(m, kSdoAt, TraceModel::Summary).contains(QStringLiteral("device name = COSCOPESIM"));
+                },
+                30000),
+            qPrintable(cell(m, kSdoAt, TraceModel::Summary)));
         QCOMPARE(cell(m, kSdoAt, TraceModel::Length), QStringLiteral("10"));
         // Ctrl+Home selected the first frame, paged out when it was selected: the details pane
         // shows it once it is back.
         QCOMPARE(view->currentRow(), 0);
         QTreeWidget* details = w.traceDock()->details()->tree();
-        QVERIFY2(waitFor([&] { return details->topLevelItemCount() > 0 && details->topLevelItem(0)->text(0) == QStringLiteral("Frame 1"); }, 30000),
-                 qPrintable(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QStringLiteral("(empty)")));
+        QVERIFY2(
+            waitFor(
+                [&] {
+                    return details->topLevelItemCount() > 0 &&
+                           details->topLevelItem(0)->text(0) == QStringLiteral("Frame 1");
+                },
+                30000),
+            qPrintable(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QStringLiteral("(empty)")));
         // The transfer row, clicked: its reassembled value in the details.
-        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(view->traceWindow()->fromSource(kSdoAt), TraceModel::Summary)).center());
-        QVERIFY2(waitFor([&] {
-            const auto found = details->findItems(QStringLiteral("COSCOPESIM"), Qt::MatchContains | Qt::MatchRecursive, 1);
-            return !found.isEmpty();
-        }, 30000), qPrintable(QStringLiteral("row %1: %2 / %3").arg(view->currentRow()).arg(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QString(), details->topLevelItemCount() ? details->topLevelItem(0)->text(1) : QString())));
+        QTest::mouseClick(
+            view->viewport(), Qt::LeftButton, {},
+            view->visualRect(view->model()->index(view->traceWindow()->fromSource(kSdoAt), TraceModel::Summary))
+                .center());
+        QVERIFY2(waitFor(
+                     [&] {
+                         const auto found = details->findItems(QStringLiteral("COSCOPESIM"),
+                                                               Qt::MatchContains | Qt::MatchRecursive, 1);
+                         return !found.isEmpty();
+                     },
+                     30000),
+                 qPrintable(QStringLiteral("row %1: %2 / %3")
+                                .arg(view->currentRow())
+                                .arg(details->topLevelItemCount() ? details->topLevelItem(0)->text(0) : QString(),
+                                     details->topLevelItemCount() ? details->topLevelItem(0)->text(1) : QString())));
 
         // Find previous (Shift+F3) from the last row finds the transfer row by its own summary
         // ("6 frames" is in no frame's text) while its frames are paged out: a worker reads them.
         QTest::keyClick(view->viewport(), Qt::Key_End, Qt::ControlModifier);
         QVERIFY(waitFor([&] { return view->currentRow() == m->rowCount() - 1; }, 10000));
-        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000), qPrintable(QString::number(store->residentChunks())));
+        QVERIFY2(waitFor([&] { return !store->isResident(kSdoAt); }, 60000),
+                 qPrintable(QString::number(store->residentChunks())));
         auto* find = w.traceDock()->findChild<QLineEdit*>(QStringLiteral("findEdit"));
         QVERIFY(find);
         QTest::keyClick(view->viewport(), Qt::Key_F, Qt::ControlModifier);
         QTest::keyClicks(find, QStringLiteral("6 frames"));
         QTest::keyClick(find, Qt::Key_F3, Qt::ShiftModifier);
-        QVERIFY2(waitFor([&] { return view->currentRow() == kSdoAt; }, 60000), qPrintable(w.statusBar()->currentMessage()));
+        QVERIFY2(waitFor([&] { return view->currentRow() == kSdoAt; }, 60000),
+                 qPrintable(w.statusBar()->currentMessage()));
         QCOMPARE(m->rowKind(kSdoAt), TraceModel::RowKind::Transfer);
         QCOMPARE(store->watchedPageIns(), uint64_t(0));
         QCOMPARE(store->pageErrors(), uint64_t(0));

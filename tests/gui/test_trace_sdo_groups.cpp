@@ -40,30 +40,31 @@ QString cell(const TraceModel& m, int row, int col) { return m.data(m.index(row,
 // upload of 3000h aborted), other traffic in between and an unfinished upload of node 6.
 std::vector<CanFrame> transfersTrace() {
     const QByteArray block("0123456789");
-    const uint16_t crc = canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(block.constData()), static_cast<size_t>(block.size()));
+    const uint16_t crc =
+        canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(block.constData()), static_cast<size_t>(block.size()));
     return {
-        at(0, 0x705, {0x05}),                                                  // 0 heartbeat
-        at(1, 0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}),                    // 1 A: upload 1000h
-        at(2, 0x585, {0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00}),        // 2 A: expedited, 4 bytes
-        at(3, 0x186, {1, 2, 3, 4}),                                            // 3 TPDO1 node 6
-        at(4, 0x605, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0}),                    // 4 B: upload 1008h
-        at(5, 0x585, {0x41, 0x08, 0x10, 0x00, 11, 0, 0, 0}),                   // 5 B: segmented, 11 bytes
-        at(6, 0x605, {0x60, 0, 0, 0, 0, 0, 0, 0}),                             // 6 B: segment request t=0
-        at(7, 0x585, {0x00, 'C', 'o', 'S', 'c', 'o', 'p', 'e'}),               // 7 B: 7 bytes t=0
-        at(8, 0x705, {0x05}),                                                  // 8 heartbeat
-        at(9, 0x605, {0x70, 0, 0, 0, 0, 0, 0, 0}),                             // 9 B: segment request t=1
-        at(10, 0x585, {0x17, ' ', 'D', 'r', '1', 0, 0, 0}),                    // 10 B: last, 4 bytes t=1
-        at(11, 0x605, {0xC6, 0x00, 0x20, 0x01, 10, 0, 0, 0}),                  // 11 C: block download, crc, size 10
-        at(12, 0x585, {0xA4, 0x00, 0x20, 0x01, 127, 0, 0, 0}),                 // 12 C: blksize 127
-        at(13, 0x605, {0x01, '0', '1', '2', '3', '4', '5', '6'}),              // 13 C: segment 1
-        at(14, 0x605, {0x82, '7', '8', '9', 0, 0, 0, 0}),                      // 14 C: segment 2, last
-        at(15, 0x585, {0xA2, 2, 127, 0, 0, 0, 0, 0}),                          // 15 C: ack 2
-        at(16, 0x605, {0xD1, uint8_t(crc), uint8_t(crc >> 8), 0, 0, 0, 0, 0}), // 16 C: end, 4 unused bytes
-        at(17, 0x585, {0xA1, 0, 0, 0, 0, 0, 0, 0}),                            // 17 C: end response
-        at(18, 0x605, {0x40, 0x00, 0x30, 0x00, 0, 0, 0, 0}),                   // 18 D: upload 3000h
-        at(19, 0x585, {0x80, 0x00, 0x30, 0x00, 0x00, 0x00, 0x02, 0x06}),       // 19 D: abort 06020000h
-        at(20, 0x606, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}),                   // 20 node 6 upload, unanswered
-        at(21, 0x705, {0x05}),                                                 // 21 heartbeat
+        at(0, 0x705, {0x05}),                                                   // 0 heartbeat
+        at(1, 0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}),                     // 1 A: upload 1000h
+        at(2, 0x585, {0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00}),         // 2 A: expedited, 4 bytes
+        at(3, 0x186, {1, 2, 3, 4}),                                             // 3 TPDO1 node 6
+        at(4, 0x605, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0}),                     // 4 B: upload 1008h
+        at(5, 0x585, {0x41, 0x08, 0x10, 0x00, 11, 0, 0, 0}),                    // 5 B: segmented, 11 bytes
+        at(6, 0x605, {0x60, 0, 0, 0, 0, 0, 0, 0}),                              // 6 B: segment request t=0
+        at(7, 0x585, {0x00, 'C', 'o', 'S', 'c', 'o', 'p', 'e'}),                // 7 B: 7 bytes t=0
+        at(8, 0x705, {0x05}),                                                   // 8 heartbeat
+        at(9, 0x605, {0x70, 0, 0, 0, 0, 0, 0, 0}),                              // 9 B: segment request t=1
+        at(10, 0x585, {0x17, ' ', 'D', 'r', '1', 0, 0, 0}),                     // 10 B: last, 4 bytes t=1
+        at(11, 0x605, {0xC6, 0x00, 0x20, 0x01, 10, 0, 0, 0}),                   // 11 C: block download, crc, size 10
+        at(12, 0x585, {0xA4, 0x00, 0x20, 0x01, 127, 0, 0, 0}),                  // 12 C: blksize 127
+        at(13, 0x605, {0x01, '0', '1', '2', '3', '4', '5', '6'}),               // 13 C: segment 1
+        at(14, 0x605, {0x82, '7', '8', '9', 0, 0, 0, 0}),                       // 14 C: segment 2, last
+        at(15, 0x585, {0xA2, 2, 127, 0, 0, 0, 0, 0}),                           // 15 C: ack 2
+        at(16, 0x605, {0xD1, uint8_t(crc), uint8_t(crc >> 8), 0, 0, 0, 0, 0}),  // 16 C: end, 4 unused bytes
+        at(17, 0x585, {0xA1, 0, 0, 0, 0, 0, 0, 0}),                             // 17 C: end response
+        at(18, 0x605, {0x40, 0x00, 0x30, 0x00, 0, 0, 0, 0}),                    // 18 D: upload 3000h
+        at(19, 0x585, {0x80, 0x00, 0x30, 0x00, 0x00, 0x00, 0x02, 0x06}),        // 19 D: abort 06020000h
+        at(20, 0x606, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}),                    // 20 node 6 upload, unanswered
+        at(21, 0x705, {0x05}),                                                  // 21 heartbeat
     };
 }
 
@@ -160,11 +161,13 @@ private slots:
         QCOMPARE(cell(m, 1, TraceModel::Time), QStringLiteral("0.001000"));
         QVERIFY(cell(m, 1, TraceModel::Number).startsWith(QStringLiteral("▸")));
         const QString b = cell(m, 3, TraceModel::Summary);
-        QVERIFY2(b.contains(QStringLiteral("1008:00")) && b.contains(QStringLiteral("CoScope Dr1")) && b.contains(QStringLiteral("segmented")) &&
-                     b.contains(QStringLiteral("6 frames")),
+        QVERIFY2(b.contains(QStringLiteral("1008:00")) && b.contains(QStringLiteral("CoScope Dr1")) &&
+                     b.contains(QStringLiteral("segmented")) && b.contains(QStringLiteral("6 frames")),
                  qPrintable(b));
         const QString c = cell(m, 5, TraceModel::Summary);
-        QVERIFY2(c.contains(QStringLiteral("2000:01")) && c.contains(QStringLiteral("block")) && c.contains(QStringLiteral("10 bytes")), qPrintable(c));
+        QVERIFY2(c.contains(QStringLiteral("2000:01")) && c.contains(QStringLiteral("block")) &&
+                     c.contains(QStringLiteral("10 bytes")),
+                 qPrintable(c));
         const QString d = cell(m, 6, TraceModel::Summary);
         QVERIFY2(d.contains(QStringLiteral("aborted")) && d.contains(QStringLiteral("06020000")), qPrintable(d));
         QCOMPARE(cell(m, 7, TraceModel::Number), QStringLiteral("21"));  // node 6's unanswered request stays a frame
@@ -180,7 +183,7 @@ private slots:
         for (int i = 0; i < 6; ++i) QCOMPARE(m.frameAt(4 + i), members[size_t(i)]);
         QVERIFY(cell(m, 8, TraceModel::Summary).contains(QStringLiteral("↳")));
         QCOMPARE(m.frameAt(10), FrameNo(8));
-        QCOMPARE(m.rowOf(9), 8);   // a frame of an expanded transfer: its own row
+        QCOMPARE(m.rowOf(9), 8);    // a frame of an expanded transfer: its own row
         QCOMPARE(m.rowOf(12), 11);  // of a collapsed one: the transfer row (C after B's members)
         // Expand D too, then collapse B: D's frames follow D.
         QVERIFY(m.toggleExpanded(12));
@@ -305,7 +308,8 @@ private slots:
         QString error;
         QVERIFY2(ws.openLog(path, &error), qPrintable(error));
         dock.rebind();
-        QVERIFY(waitFor([&] { return ws.loadJob() && ws.loadJob()->isDone() && dock.model()->rowCount() == 22; }, &dock));
+        QVERIFY(
+            waitFor([&] { return ws.loadJob() && ws.loadJob()->isDone() && dock.model()->rowCount() == 22; }, &dock));
         QAction* group = dock.groupSdoAction();
         QVERIFY(group && group->isCheckable());
         group->setChecked(true);
@@ -321,14 +325,16 @@ private slots:
         for (int i = 0; i < top->childCount(); ++i) fields << top->child(i)->text(0) + u'=' + top->child(i)->text(1);
         const QString all = fields.join(u'|');
         QVERIFY2(all.contains(QStringLiteral("Mode=segmented")) && all.contains(QStringLiteral("Status=ok")) &&
-                     all.contains(QStringLiteral("Frames=6 (frames 5–11)")) && all.contains(QStringLiteral("Size=11 byte")),
+                     all.contains(QStringLiteral("Frames=6 (frames 5–11)")) &&
+                     all.contains(QStringLiteral("Size=11 byte")),
                  qPrintable(all));
         // The aborted one.
         dock.view()->setCurrentIndex(dock.view()->model()->index(6, TraceModel::Summary));
         top = tree->topLevelItem(0);
         fields.clear();
         for (int i = 0; i < top->childCount(); ++i) fields << top->child(i)->text(0) + u'=' + top->child(i)->text(1);
-        QVERIFY2(fields.join(u'|').contains(QStringLiteral("Status=aborted")) && fields.join(u'|').contains(QStringLiteral("Abort code=0x06020000")),
+        QVERIFY2(fields.join(u'|').contains(QStringLiteral("Status=aborted")) &&
+                     fields.join(u'|').contains(QStringLiteral("Abort code=0x06020000")),
                  qPrintable(fields.join(u'|')));
         // A click on the arrow expands; a frame under it shows the frame's own details.
         const QRect arrow = dock.view()->visualRect(dock.view()->model()->index(3, TraceModel::Number));
@@ -360,7 +366,9 @@ private slots:
         QString error;
         QVERIFY2(ws.connectBus(QStringLiteral("sim://"), &error), qPrintable(error));
         dock.rebind();
-        QVERIFY(waitFor([&] { return ws.bus() && ws.bus()->state() == CanBus::State::Open && dock.model()->rowCount() >= 3; }, &dock));
+        QVERIFY(waitFor(
+            [&] { return ws.bus() && ws.bus()->state() == CanBus::State::Open && dock.model()->rowCount() >= 3; },
+            &dock));
         dock.setGroupSdo(true);
         QVERIFY(waitFor([&] { return !dock.isFiltering() && dock.model()->isGrouped(); }, &dock));
         QSignalSpy resets(dock.model(), &QAbstractItemModel::modelAboutToBeReset);
@@ -387,14 +395,18 @@ private slots:
         // The last four transfer rows of node 3: 1000h, 1008h, 1008h, 3FFFh aborted.
         QStringList summaries;
         for (int r = 0; r < dock.model()->rowCount(); ++r)
-            if (dock.model()->rowKind(r) == TraceModel::RowKind::Transfer && cell(*dock.model(), r, TraceModel::Node) == QStringLiteral("3"))
+            if (dock.model()->rowKind(r) == TraceModel::RowKind::Transfer &&
+                cell(*dock.model(), r, TraceModel::Node) == QStringLiteral("3"))
                 summaries << cell(*dock.model(), r, TraceModel::Summary);
         QVERIFY(summaries.size() >= 4);
         summaries = summaries.mid(summaries.size() - 4);
-        QVERIFY2(summaries[0].contains(QStringLiteral("1000:00")) && summaries[0].contains(QStringLiteral("expedited")), qPrintable(summaries.join('\n')));
-        QVERIFY2(summaries[1].contains(QStringLiteral("1008:00")) && summaries[1].contains(QStringLiteral("segmented")), qPrintable(summaries.join('\n')));
+        QVERIFY2(summaries[0].contains(QStringLiteral("1000:00")) && summaries[0].contains(QStringLiteral("expedited")),
+                 qPrintable(summaries.join('\n')));
+        QVERIFY2(summaries[1].contains(QStringLiteral("1008:00")) && summaries[1].contains(QStringLiteral("segmented")),
+                 qPrintable(summaries.join('\n')));
         QVERIFY2(summaries[2].contains(QStringLiteral("1008:00")), qPrintable(summaries.join('\n')));
-        QVERIFY2(summaries[3].contains(QStringLiteral("3FFF:00")) && summaries[3].contains(QStringLiteral("aborted")), qPrintable(summaries.join('\n')));
+        QVERIFY2(summaries[3].contains(QStringLiteral("3FFF:00")) && summaries[3].contains(QStringLiteral("aborted")),
+                 qPrintable(summaries.join('\n')));
         ws.disconnectBus();
     }
 
@@ -405,15 +417,16 @@ private slots:
         auto mapTpdo1 = [&](uint8_t bus, uint32_t entry) {
             const std::vector<std::vector<uint8_t>> writes = {
                 {0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0},
-                {0x23, 0x00, 0x1A, 0x01, uint8_t(entry), uint8_t(entry >> 8), uint8_t(entry >> 16), uint8_t(entry >> 24)},
+                {0x23, 0x00, 0x1A, 0x01, uint8_t(entry), uint8_t(entry >> 8), uint8_t(entry >> 16),
+                 uint8_t(entry >> 24)},
                 {0x2F, 0x00, 0x1A, 0x00, 0x01, 0, 0, 0}};
             for (const auto& w : writes) {
                 frames.push_back(at(0, 0x605, w, bus));
                 frames.push_back(at(0, 0x585, {0x60, w[1], w[2], w[3], 0, 0, 0, 0}, bus));
             }
         };
-        mapTpdo1(0, 0x60410010);  // statusword
-        mapTpdo1(1, 0x60640020);  // position actual value
+        mapTpdo1(0, 0x60410010);                                                            // statusword
+        mapTpdo1(1, 0x60640020);                                                            // position actual value
         for (int i = 0; i < 9000; ++i) frames.push_back(at(i, 0x080, {}, uint8_t(i & 1)));  // SYNC on both buses
         frames.push_back(at(9000, 0x185, {0x37, 0x06}, 0));
         frames.push_back(at(9001, 0x185, {0x00, 0x88, 0x13, 0x00}, 1));
@@ -447,7 +460,14 @@ private slots:
             const QJsonObject o = QJsonDocument::fromJson(line).object();
             if (o.value(QStringLiteral("service")).toString() == QStringLiteral("TPDO1"))
                 pdos << o.value(QStringLiteral("bus")).toString() + u' ' +
-                            o.value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray().at(0).toObject().value(QStringLiteral("obj")).toString();
+                            o.value(QStringLiteral("fields"))
+                                .toObject()
+                                .value(QStringLiteral("pdo.signals"))
+                                .toArray()
+                                .at(0)
+                                .toObject()
+                                .value(QStringLiteral("obj"))
+                                .toString();
         }
         QCOMPARE(pdos, (QStringList{QStringLiteral("can0 6041:00"), QStringLiteral("can1 6064:00")}));
     }

@@ -42,7 +42,8 @@ QString writeLog(const QString& path) {
     QByteArray out;
     for (int i = 0; i < kFrames; ++i) {
         const qint64 us = qint64(i) * 100;
-        out += '(' + QByteArray::number(1700000000 + us / 1000000) + '.' + QByteArray::number(us % 1000000).rightJustified(6, '0') + ") can0 ";
+        out += '(' + QByteArray::number(1700000000 + us / 1000000) + '.' +
+               QByteArray::number(us % 1000000).rightJustified(6, '0') + ") can0 ";
         out += "181#" + QByteArray::number(i, 16).rightJustified(8, '0').toUpper() + '\n';
     }
     f.write(out);
@@ -72,7 +73,8 @@ QString detailsTitle(TraceDock* dock) {
 void wheelDown(QWidget* viewport, int notches) {
     const QPointF at(viewport->width() / 2.0, viewport->height() / 2.0);
     for (int i = 0; i < notches; ++i) {
-        QWheelEvent e(at, viewport->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QWheelEvent e(at, viewport->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
         QApplication::sendEvent(viewport, &e);
     }
 }
@@ -110,15 +112,19 @@ private slots:
         QVERIFY(waitFor([&] { return store->size() > size_t(4 * kMaxRows); }, 30000));
         QVERIFY2(view->model()->rowCount() <= kMaxRows, qPrintable(QString::number(view->model()->rowCount())));
         QVERIFY(view->verticalHeader()->count() <= kMaxRows);
-        QVERIFY2(waitFor([&] { return bottomNumber(view) > qulonglong(4 * kMaxRows); }, 3000), qPrintable(QString::number(bottomNumber(view))));
+        QVERIFY2(waitFor([&] { return bottomNumber(view) > qulonglong(4 * kMaxRows); }, 3000),
+                 qPrintable(QString::number(bottomNumber(view))));
         // At the end of the capture the newest frame is the last row shown.
-        QVERIFY(waitFor([&] { return store->size() == size_t(kFrames) && dock->model()->rowCount() == kFrames; }, 60000));
-        QVERIFY2(waitFor([&] { return bottomNumber(view) == qulonglong(kFrames); }, 3000), qPrintable(QString::number(bottomNumber(view))));
+        QVERIFY(
+            waitFor([&] { return store->size() == size_t(kFrames) && dock->model()->rowCount() == kFrames; }, 60000));
+        QVERIFY2(waitFor([&] { return bottomNumber(view) == qulonglong(kFrames); }, 3000),
+                 qPrintable(QString::number(bottomNumber(view))));
         QVERIFY(view->model()->rowCount() <= kMaxRows);
         QVERIFY(view->verticalHeader()->count() <= kMaxRows);
 
         // A click on a row selects it; End goes to the last frame, Home to the first.
-        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, QPoint(view->viewport()->width() / 2, view->viewport()->height() / 2));
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                          QPoint(view->viewport()->width() / 2, view->viewport()->height() / 2));
         QVERIFY(view->currentIndex().isValid());
         QTest::keyClick(view, Qt::Key_End);
         QCOMPARE(currentNumber(view), qulonglong(kFrames));
@@ -140,7 +146,8 @@ private slots:
             QCOMPARE(currentNumber(view), 1 + qulonglong(i) * page);
         }
         QVERIFY(currentNumber(view) > qulonglong(2 * kMaxRows));
-        QVERIFY(waitFor([&] { return detailsTitle(dock) == QStringLiteral("Frame %1").arg(currentNumber(view)); }, 3000));
+        QVERIFY(
+            waitFor([&] { return detailsTitle(dock) == QStringLiteral("Frame %1").arg(currentNumber(view)); }, 3000));
         QTest::keyClick(view, Qt::Key_Down);
         QCOMPARE(currentNumber(view), 2 + qulonglong(presses) * page);
         QVERIFY(view->model()->rowCount() <= kMaxRows);
@@ -171,7 +178,8 @@ private slots:
         // shown with its own number, its details in the pane.
         // (A long search goes on on a worker, which selects the frame when done: wait for it.)
         typeAndEnter(dock->findChild<QLineEdit*>(QStringLiteral("findEdit")), QStringLiteral("00 9C 3F"));
-        QVERIFY2(waitFor([&] { return currentNumber(view) == qulonglong(kFrames); }, 30000), qPrintable(QString::number(currentNumber(view))));
+        QVERIFY2(waitFor([&] { return currentNumber(view) == qulonglong(kFrames); }, 30000),
+                 qPrintable(QString::number(currentNumber(view))));
         QVERIFY(waitFor([&] { return detailsTitle(dock) == QStringLiteral("Frame %1").arg(kFrames); }, 3000));
         QVERIFY(view->model()->rowCount() <= kMaxRows);
     }

@@ -6,11 +6,11 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/StartView.h"
 #include "app/gui/session/Workspace.h"
+#include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/ds402/Ds402MotionPlot.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402Wizard.h"
-#include "app/gui/wizards/WizardMenu.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QAbstractSpinBox>
@@ -40,12 +40,18 @@ bool waitSignal(QSignalSpy& spy, int ms = 5000) { return spy.count() > 0 || spy.
 // Waits for the wizard's first successful state read of a drive that finished initialising
 // (a drive may answer Not ready to switch on just after power-on; the wizard re-reads then).
 bool waitReady(Ds402Wizard& w, QSignalSpy& read, int ms = 6000) {
-    const bool ok = QTest::qWaitFor([&] {
-        for (const auto& args : read)
-            if (args.first().toBool() && w.shownState() != State::NotReadyToSwitchOn && w.shownState() != State::Unknown) return true;
-        return false;
-    }, ms);
-    if (!ok) qWarning("no settled state read: shown %s: %s", qPrintable(canopen::ds402::stateName(w.shownState())), qPrintable(w.message()));
+    const bool ok = QTest::qWaitFor(
+        [&] {
+            for (const auto& args : read)
+                if (args.first().toBool() && w.shownState() != State::NotReadyToSwitchOn &&
+                    w.shownState() != State::Unknown)
+                    return true;
+            return false;
+        },
+        ms);
+    if (!ok)
+        qWarning("no settled state read: shown %s: %s", qPrintable(canopen::ds402::stateName(w.shownState())),
+                 qPrintable(w.message()));
     return ok;
 }
 
@@ -53,14 +59,16 @@ bool waitReady(Ds402Wizard& w, QSignalSpy& read, int ms = 6000) {
 bool step(Ds402Wizard& w, Command c, bool* ok) {
     QPushButton* b = w.stepButton(c);
     if (!b || !b->isEnabled()) {
-        qWarning("step %s: button not enabled (busy %d, shown state %s): %s", qPrintable(canopen::ds402::commandName(c)), int(w.isBusy()),
+        qWarning("step %s: button not enabled (busy %d, shown state %s): %s",
+                 qPrintable(canopen::ds402::commandName(c)), int(w.isBusy()),
                  qPrintable(canopen::ds402::stateName(w.shownState())), qPrintable(w.message()));
         return false;
     }
     QSignalSpy done(&w, &Ds402Wizard::stepFinished);
     QTest::mouseClick(b, Qt::LeftButton);
     if (!waitSignal(done, 6000)) {
-        qWarning("step %s: no outcome within 6 s: %s", qPrintable(canopen::ds402::commandName(c)), qPrintable(w.message()));
+        qWarning("step %s: no outcome within 6 s: %s", qPrintable(canopen::ds402::commandName(c)),
+                 qPrintable(w.message()));
         return false;
     }
     *ok = done.first().first().toBool();
@@ -144,7 +152,8 @@ private slots:
         QCOMPARE(w.diagram()->state(), State::OperationEnabled);
         QCOMPARE(rig.driveState(node), State::OperationEnabled);
         const auto visited = w.visitedStates();
-        for (State s : {State::SwitchOnDisabled, State::ReadyToSwitchOn, State::SwitchedOn, State::OperationEnabled}) QVERIFY(visited.contains(s));
+        for (State s : {State::SwitchOnDisabled, State::ReadyToSwitchOn, State::SwitchedOn, State::OperationEnabled})
+            QVERIFY(visited.contains(s));
 
         // Mode: profile velocity, among those 6502h lists, verified in 6061h.
         QVERIFY(w.supportedModes().has_value());
@@ -173,7 +182,8 @@ private slots:
         QSignalSpy moved(&w, &Ds402Wizard::testMoveFinished);
         QTest::mousePress(w.holdToRunButton(), Qt::LeftButton);
         QVERIFY(w.testMoveRunning());
-        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(node, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000; }, 3000));
+        QVERIFY(QTest::qWaitFor(
+            [&] { return rig.onDrive(node, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1000; }, 3000));
         QTest::qWait(300);
         QVERIFY(moved.isEmpty());  // still held: still moving
         QTest::mouseRelease(w.holdToRunButton(), Qt::LeftButton);
@@ -199,7 +209,8 @@ private slots:
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
         QVERIFY(waitReady(w, read));
         bool ok = false;
-        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation})
+            QVERIFY(step(w, c, &ok) && ok);
         canopen::Ds402TestMove m;
         m.velocity = 2000;
         m.maxDurationMs = 1000;
@@ -209,7 +220,8 @@ private slots:
         QSignalSpy moved(&w, &Ds402Wizard::testMoveFinished);
         QVERIFY2(w.pressHoldToRun(&why), qPrintable(why));
         // Held (the feed timer runs) but the time limit stops the move by itself.
-        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(4, [](sim::Ds402Drive* d) { return d->velocity(); }) > 500; }, 3000));
+        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(4, [](sim::Ds402Drive* d) { return d->velocity(); }) > 500; },
+                                3000));
         QVERIFY(waitSignal(moved, 8000));
         QVERIFY2(w.message().contains(QStringLiteral("time limit")), qPrintable(w.message()));
         QCOMPARE(rig.onDrive(4, [](sim::Ds402Drive* d) { return d->velocity(); }), 0.0);
@@ -223,7 +235,8 @@ private slots:
         QVERIFY(rig.open(kAll));
         Ds402Wizard w(&rig.ws, 3);
         QVERIFY(QTest::qWaitFor([&] { return !w.isCia402(); }, 3000));
-        QVERIFY(w.message().contains(QStringLiteral("not a CiA 402"), Qt::CaseInsensitive) || w.message().contains(QStringLiteral("no CiA 402"), Qt::CaseInsensitive));
+        QVERIFY(w.message().contains(QStringLiteral("not a CiA 402"), Qt::CaseInsensitive) ||
+                w.message().contains(QStringLiteral("no CiA 402"), Qt::CaseInsensitive));
         QString why;
         QVERIFY(!w.runStep(Command::Shutdown, &why));
         QVERIFY(!why.isEmpty());
@@ -246,7 +259,10 @@ private slots:
         QFETCH(QString, expect);
         Rig rig;
         QVERIFY(rig.open(kAll));
-        rig.onDrive(node, [&](sim::Ds402Drive* d) { d->enableFaults().alarmOnSwitchOn = alarm; return 0; });
+        rig.onDrive(node, [&](sim::Ds402Drive* d) {
+            d->enableFaults().alarmOnSwitchOn = alarm;
+            return 0;
+        });
         Ds402Wizard w(&rig.ws, node);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
@@ -256,11 +272,13 @@ private slots:
         QVERIFY(step(w, Command::SwitchOn, &ok));
         QVERIFY(!ok);
         QVERIFY2(w.message().contains(QStringLiteral("Switch on")), qPrintable(w.message()));
-        QVERIFY2(w.faultText().contains(QStringLiteral("603Fh")) && w.faultText().contains(expect), qPrintable(w.faultText()));
+        QVERIFY2(w.faultText().contains(QStringLiteral("603Fh")) && w.faultText().contains(expect),
+                 qPrintable(w.faultText()));
         QVERIFY2(w.message().contains(expect), qPrintable(w.message()));
         QVERIFY(w.statusPanel()->faultText().contains(expect));
         QCOMPARE(w.diagram()->state(), State::Fault);
-        QVERIFY(rig.ws.nodes().snapshot().empty() || !rig.ws.nodes().node(node) || rig.ws.nodes().node(node)->dictionary.isEmpty());
+        QVERIFY(rig.ws.nodes().snapshot().empty() || !rig.ws.nodes().node(node) ||
+                rig.ws.nodes().node(node)->dictionary.isEmpty());
         const State s = rig.driveState(node);
         QVERIFY(s == State::Fault || s == State::SwitchOnDisabled);
         // The statusword read back over the bus says disabled (or fault), never enabled.
@@ -268,7 +286,8 @@ private slots:
         w.refresh();
         QVERIFY(waitSignal(again));
         QVERIFY(again.first().first().toBool());
-        QVERIFY2(w.shownState() == State::Fault || w.shownState() == State::SwitchOnDisabled, qPrintable(canopen::ds402::stateName(w.shownState())));
+        QVERIFY2(w.shownState() == State::Fault || w.shownState() == State::SwitchOnDisabled,
+                 qPrintable(canopen::ds402::stateName(w.shownState())));
         QVERIFY(!(w.statusword() & canopen::ds402::sw::OperationEnabled));
         // The next step offered is the fault reset.
         QVERIFY(w.stepButton(Command::FaultReset)->isEnabled());
@@ -277,7 +296,10 @@ private slots:
     void mainPowerOffIsExplained() {
         Rig rig;
         QVERIFY(rig.open(kAll));
-        rig.onDrive(1, [](sim::Ds402Drive* d) { d->enableFaults().mainPowerOff = true; return 0; });
+        rig.onDrive(1, [](sim::Ds402Drive* d) {
+            d->enableFaults().mainPowerOff = true;
+            return 0;
+        });
         Ds402Wizard w(&rig.ws, 1);
         w.setAutoConfirm(true);
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
@@ -287,9 +309,10 @@ private slots:
         QVERIFY(step(w, Command::Shutdown, &ok) && ok);
         QVERIFY(step(w, Command::SwitchOn, &ok));
         QVERIFY(!ok);
-        QVERIFY2(w.message().contains(QStringLiteral("Voltage enabled (bit 4) is off: main power is not on")), qPrintable(w.message()));
+        QVERIFY2(w.message().contains(QStringLiteral("Voltage enabled (bit 4) is off: main power is not on")),
+                 qPrintable(w.message()));
         QVERIFY(w.message().contains(QStringLiteral("P1-01")));  // Delta: what to check
-        QCOMPARE(rig.driveState(1), State::SwitchOnDisabled);  // restored: Disable voltage
+        QCOMPARE(rig.driveState(1), State::SwitchOnDisabled);    // restored: Disable voltage
     }
 
     void closingDisablesAnEnabledDrive() {
@@ -300,7 +323,8 @@ private slots:
         QSignalSpy read(w, &Ds402Wizard::stateRead);
         QVERIFY(waitReady(*w, read));
         bool ok = false;
-        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(*w, c, &ok) && ok);
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation})
+            QVERIFY(step(*w, c, &ok) && ok);
         QCOMPARE(rig.driveState(2), State::OperationEnabled);
         w->close();
         delete w;
@@ -317,9 +341,11 @@ private slots:
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
         QVERIFY(waitReady(w, read));
         bool ok = false;
-        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation}) QVERIFY(step(w, c, &ok) && ok);
+        for (Command c : {Command::Shutdown, Command::SwitchOn, Command::EnableOperation})
+            QVERIFY(step(w, c, &ok) && ok);
         QCOMPARE(rig.driveState(4), State::OperationEnabled);
-        const std::shared_ptr<sim::SimNetwork> net = static_cast<SimBus*>(rig.ws.bus())->sharedNetwork();  // outlives the bus
+        const std::shared_ptr<sim::SimNetwork> net =
+            static_cast<SimBus*>(rig.ws.bus())->sharedNetwork();  // outlives the bus
         rig.ws.disconnectBus();
         auto state = [&] {
             State st = State::Unknown;
@@ -419,7 +445,8 @@ private slots:
         QVERIFY(statuswordLabel(w)->text().contains(QStringLiteral("Operation enabled")));
         if (escape) QTest::keyClick(w, Qt::Key_Escape);
         else QTest::mouseClick(buttonNamed(w, QStringLiteral("Close")), Qt::LeftButton);
-        QVERIFY2(QTest::qWaitFor([&] { return !window || !window->isVisible(); }, 2000), "the wizard window is still open");
+        QVERIFY2(QTest::qWaitFor([&] { return !window || !window->isVisible(); }, 2000),
+                 "the wizard window is still open");
         QVERIFY(QTest::qWaitFor([&] { return rig.driveState(1) == State::SwitchOnDisabled; }, 3000));
         QTRY_VERIFY(!window);  // deleted on close
     }
@@ -437,7 +464,8 @@ private slots:
         QVERIFY(statuswordLabel(&w)->text().contains(QStringLiteral("Operation enabled")));
         rig.ws.disconnectBus();
         QVERIFY(w.isVisible());
-        QVERIFY2(!statuswordLabel(&w)->text().contains(QStringLiteral("Operation enabled")), qPrintable(statuswordLabel(&w)->text()));
+        QVERIFY2(!statuswordLabel(&w)->text().contains(QStringLiteral("Operation enabled")),
+                 qPrintable(statuswordLabel(&w)->text()));
         QCOMPARE(w.diagram()->state(), State::Unknown);
         QVERIFY(!w.quickStopButton()->isEnabled());  // nothing to send it on: said in the message
         QVERIFY2(w.message().contains(QStringLiteral("Connection lost")), qPrintable(w.message()));
@@ -445,7 +473,8 @@ private slots:
         read.clear();
         QVERIFY(rig.open(kAll));
         QVERIFY(waitReady(w, read));
-        QVERIFY2(statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")), qPrintable(statuswordLabel(&w)->text()));
+        QVERIFY2(statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")),
+                 qPrintable(statuswordLabel(&w)->text()));
         QVERIFY(w.quickStopButton()->isEnabled() && w.disableButton()->isEnabled());
         bool ok = false;
         QVERIFY(step(w, Command::Shutdown, &ok) && ok);
@@ -453,7 +482,8 @@ private slots:
         QCOMPARE(rig.driveState(4), State::ReadyToSwitchOn);
         QTest::mouseClick(w.disableButton(), Qt::LeftButton);
         QVERIFY(QTest::qWaitFor([&] { return rig.driveState(4) == State::SwitchOnDisabled; }, 3000));
-        QVERIFY(QTest::qWaitFor([&] { return statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")); }, 3000));
+        QVERIFY(QTest::qWaitFor(
+            [&] { return statuswordLabel(&w)->text().contains(QStringLiteral("Switch on disabled")); }, 3000));
     }
 
     // Issue 12 item 9: the Mode box shows the drive's own mode (6061h) once read, also when the
@@ -466,12 +496,14 @@ private slots:
         QSignalSpy read(&w, &Ds402Wizard::stateRead);
         QVERIFY(waitReady(w, read));
         QComboBox* box = w.modeCombo();
-        const QString first = canopen::ds402::modeName(rig.onDrive(1, [](sim::Ds402Drive* d) { return d->modeDisplay(); }));
+        const QString first =
+            canopen::ds402::modeName(rig.onDrive(1, [](sim::Ds402Drive* d) { return d->modeDisplay(); }));
         QVERIFY2(shownText(box) == first, qPrintable(shownText(box) + QStringLiteral(" / ") + first));
         // Another master (or the demo) switches the drive to profile velocity, then position.
         for (int8_t mode : {int8_t(3), int8_t(1)}) {
             bool written = false;
-            rig.ws.sdo()->download(1, 0x6060, 0, QByteArray(1, char(mode)), [&](const canopen::SdoResult& r) { written = r.ok; });
+            rig.ws.sdo()->download(1, 0x6060, 0, QByteArray(1, char(mode)),
+                                   [&](const canopen::SdoResult& r) { written = r.ok; });
             QVERIFY(QTest::qWaitFor([&] { return written; }, 3000));
             read.clear();
             QTest::mouseClick(buttonNamed(&w, QStringLiteral("Read state")), Qt::LeftButton);
@@ -514,10 +546,12 @@ private slots:
         QVERIFY(w.holdToRunButton()->isEnabled());
         QTest::mousePress(w.holdToRunButton(), Qt::LeftButton);
         // 150 rpm = 1500 in 0.1 rpm: the drive turns at 1500 raw units.
-        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(1, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1450; }, 3000));
+        QVERIFY(QTest::qWaitFor([&] { return rig.onDrive(1, [](sim::Ds402Drive* d) { return d->velocity(); }) > 1450; },
+                                3000));
         QTest::qWait(300);
         QVERIFY(rig.onDrive(1, [](sim::Ds402Drive* d) { return d->velocity(); }) < 1550);
-        QVERIFY2(w.motionPlot()->velocityText().contains(QStringLiteral("150 rpm")), qPrintable(w.motionPlot()->velocityText()));
+        QVERIFY2(w.motionPlot()->velocityText().contains(QStringLiteral("150 rpm")),
+                 qPrintable(w.motionPlot()->velocityText()));
         QSignalSpy moved(&w, &Ds402Wizard::testMoveFinished);
         QTest::mouseRelease(w.holdToRunButton(), Qt::LeftButton);
         QVERIFY(waitSignal(moved));
@@ -529,7 +563,10 @@ private slots:
     void messagesDoNotMoveTheSteps() {
         Rig rig;
         QVERIFY(rig.open(kAll));
-        rig.onDrive(1, [](sim::Ds402Drive* d) { d->enableFaults().alarmOnSwitchOn = QStringLiteral("AL013"); return 0; });
+        rig.onDrive(1, [](sim::Ds402Drive* d) {
+            d->enableFaults().alarmOnSwitchOn = QStringLiteral("AL013");
+            return 0;
+        });
         Ds402Wizard w(&rig.ws, 1);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

@@ -39,8 +39,12 @@ class TestWizardDs402Arming : public QObject {
     std::unique_ptr<testing::SimDriveRig> rig_;
     std::unique_ptr<Ds402Wizard> w_;
 
-    double velocity() { return rig_->onDrive(kNode, [](sim::Ds402Drive* d) { return d->velocity(); }); }
-    int8_t driveMode() { return rig_->onDrive(kNode, [](sim::Ds402Drive* d) { return d->modeDisplay(); }); }
+    double velocity() {
+        return rig_->onDrive(kNode, [](sim::Ds402Drive* d) { return d->velocity(); });
+    }
+    int8_t driveMode() {
+        return rig_->onDrive(kNode, [](sim::Ds402Drive* d) { return d->modeDisplay(); });
+    }
 
     void openWizard() {
         rig_ = std::make_unique<testing::SimDriveRig>();
@@ -57,15 +61,23 @@ class TestWizardDs402Arming : public QObject {
         auto yes = answerBoxSaying(QStringLiteral("energises"), QMessageBox::Yes, &asked);
         for (int i = 0; i < 6 && rig_->driveState(kNode) != State::OperationEnabled; ++i) {
             QPushButton* next = nullptr;
-            QVERIFY(waitFor([&] {
-                for (Command c : {Command::FaultReset, Command::Shutdown, Command::SwitchOn, Command::EnableOperation, Command::DisableVoltage})
-                    if (QPushButton* b = w_->stepButton(c); b && b->isEnabled() && !w_->isBusy()) next = b;
-                return next != nullptr;
-            }, 6000));
+            QVERIFY(waitFor(
+                [&] {
+                    for (Command c : {Command::FaultReset, Command::Shutdown, Command::SwitchOn,
+                                      Command::EnableOperation, Command::DisableVoltage})
+                        if (QPushButton* b = w_->stepButton(c); b && b->isEnabled() && !w_->isBusy()) next = b;
+                    return next != nullptr;
+                },
+                6000));
             QTest::mouseClick(next, Qt::LeftButton);
             QVERIFY(waitFor([&] { return !w_->isBusy(); }, 6000));
         }
-        QVERIFY(waitFor([&] { return rig_->driveState(kNode) == State::OperationEnabled && w_->shownState() == State::OperationEnabled; }, 6000));
+        QVERIFY(waitFor(
+            [&] {
+                return rig_->driveState(kNode) == State::OperationEnabled &&
+                       w_->shownState() == State::OperationEnabled;
+            },
+            6000));
     }
     // Arm… with Yes to the questions; `modeAsked` gets the mode question (empty: none came).
     void armByClicks(QString* modeAsked = nullptr) {
@@ -90,7 +102,8 @@ class TestWizardDs402Arming : public QObject {
         QComboBox* box = w_->modeCombo();
         box->setFocus();
         QTest::keyClick(box, Qt::Key_Home);
-        for (int i = 0; i < box->count() && !box->currentText().startsWith(mode); ++i) QTest::keyClick(box, Qt::Key_Down);
+        for (int i = 0; i < box->count() && !box->currentText().startsWith(mode); ++i)
+            QTest::keyClick(box, Qt::Key_Down);
         QVERIFY(box->currentText().startsWith(mode));
         QTest::mouseClick(buttonNamed(w_.get(), QStringLiteral("Set and verify")), Qt::LeftButton);
         QVERIFY(waitFor([&] { return driveMode() == value && !w_->isBusy(); }, 5000));
@@ -112,7 +125,12 @@ private slots:
         QVERIFY(holdMoves());
         QVERIFY(w_->holdToRunButton()->isEnabled());  // released: still armed for the next hold
         QTest::mouseClick(w_->quickStopButton(), Qt::LeftButton);
-        QVERIFY(waitFor([&] { return rig_->driveState(kNode) != State::OperationEnabled && w_->shownState() != State::OperationEnabled; }, 5000));
+        QVERIFY(waitFor(
+            [&] {
+                return rig_->driveState(kNode) != State::OperationEnabled &&
+                       w_->shownState() != State::OperationEnabled;
+            },
+            5000));
         QVERIFY(!w_->testMoveArmed());
         enableByClicks();
         QTest::qWait(300);
@@ -134,8 +152,12 @@ private slots:
         QVERIFY(!w_->holdToRunButton()->isEnabled());
 
         armByClicks();
-        rig_->onDrive(kNode, [](sim::Ds402Drive* d) { d->raiseFault(0x2310); return 0; });
-        QVERIFY2(waitFor([&] { return !w_->holdToRunButton()->isEnabled(); }, 5000), "still armed after the drive faulted");
+        rig_->onDrive(kNode, [](sim::Ds402Drive* d) {
+            d->raiseFault(0x2310);
+            return 0;
+        });
+        QVERIFY2(waitFor([&] { return !w_->holdToRunButton()->isEnabled(); }, 5000),
+                 "still armed after the drive faulted");
         enableByClicks();  // fault reset and the steps
         QTest::qWait(300);
         QVERIFY(!w_->holdToRunButton()->isEnabled());
@@ -161,7 +183,9 @@ private slots:
             QVERIFY2(waitFor([&] { return !asked.isEmpty(); }, 3000), "no question before switching from Homing");
             QTest::qWait(300);
         }
-        QVERIFY2(asked.contains(QStringLiteral("The drive is in Homing")) && asked.contains(QStringLiteral("Profile velocity")), qPrintable(asked));
+        QVERIFY2(asked.contains(QStringLiteral("The drive is in Homing")) &&
+                     asked.contains(QStringLiteral("Profile velocity")),
+                 qPrintable(asked));
         QVERIFY(armAsked.isEmpty());
         QVERIFY(!w_->testMoveArmed());
         QVERIFY(!w_->holdToRunButton()->isEnabled());

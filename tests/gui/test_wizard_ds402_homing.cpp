@@ -55,10 +55,14 @@ class TestWizardDs402Homing : public QObject {
     std::unique_ptr<testing::SimDriveRig> rig_;
     std::unique_ptr<Ds402Wizard> w_;
 
-    double position(int node) { return rig_->onDrive(node, [](sim::Ds402Drive* d) { return d->position(); }); }
+    double position(int node) {
+        return rig_->onDrive(node, [](sim::Ds402Drive* d) { return d->position(); });
+    }
     int64_t homingMethod(int node) {
         int64_t out = -1;
-        rig_->net()->runOnNetworkThread([&] { out = rig_->net()->device(uint8_t(node))->value(0x6098, 0).value_or(od::Value{}).toInt64().value_or(-1); });
+        rig_->net()->runOnNetworkThread([&] {
+            out = rig_->net()->device(uint8_t(node))->value(0x6098, 0).value_or(od::Value{}).toInt64().value_or(-1);
+        });
         return out;
     }
 
@@ -67,7 +71,8 @@ class TestWizardDs402Homing : public QObject {
         QVERIFY(combo);
         combo->setFocus();
         QTest::keyClick(combo, Qt::Key_Home);
-        for (int i = 0; i < combo->count() && combo->currentData().toInt() != node; ++i) QTest::keyClick(combo, Qt::Key_Down);
+        for (int i = 0; i < combo->count() && combo->currentData().toInt() != node; ++i)
+            QTest::keyClick(combo, Qt::Key_Down);
         QCOMPARE(combo->currentData().toInt(), node);
         QVERIFY(waitFor([&] { return w_->node() == node && w_->shownState() != State::Unknown; }, 8000));
     }
@@ -93,7 +98,9 @@ private slots:
         Ds402HomingBox* page = w_->homingBox();
         QVERIFY(page->isVisible());
         typeAndEnter(page->methodCombo()->lineEdit(), QStringLiteral("35"));
-        QVERIFY2(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))->text().contains(QStringLiteral("Current position is home")),
+        QVERIFY2(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))
+                     ->text()
+                     .contains(QStringLiteral("Current position is home")),
                  qPrintable(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))->text()));
         typeAndEnter(editOf(page->offsetField()), QStringLiteral("250"));
         QString modeAsked, startAsked;
@@ -103,13 +110,18 @@ private slots:
         QTest::mouseClick(page->startButton(), Qt::LeftButton);
         QVERIFY2(waitFor([&] { return !finished.isEmpty(); }, 10000), qPrintable(w_->message()));
         QVERIFY2(finished.first().first().toBool(), qPrintable(page->resultText()));
-        QVERIFY2(startAsked.contains(QStringLiteral("method 35")) && startAsked.contains(QStringLiteral("enabled first")), qPrintable(startAsked));
+        QVERIFY2(
+            startAsked.contains(QStringLiteral("method 35")) && startAsked.contains(QStringLiteral("enabled first")),
+            qPrintable(startAsked));
         QVERIFY2(modeAsked.contains(QStringLiteral("Homing")), qPrintable(modeAsked));
         // The page and the statusword panel name bits 10/12 for homing mode.
-        QVERIFY2(page->resultText().contains(QStringLiteral("Homing attained")) && page->resultText().contains(QStringLiteral("= 250")), qPrintable(page->resultText()));
+        QVERIFY2(page->resultText().contains(QStringLiteral("Homing attained")) &&
+                     page->resultText().contains(QStringLiteral("= 250")),
+                 qPrintable(page->resultText()));
         QCOMPARE(page->lamps()->name(1), QStringLiteral("12  homing attained"));
         QVERIFY(page->lamps()->isOn(0) && page->lamps()->isOn(1) && !page->lamps()->isOn(2));
-        QVERIFY(waitFor([&] { return w_->statusPanel()->bitText(12) == QStringLiteral("12 homing attained: on"); }, 3000));
+        QVERIFY(
+            waitFor([&] { return w_->statusPanel()->bitText(12) == QStringLiteral("12 homing attained: on"); }, 3000));
         QVERIFY(std::abs(position(kGeneric) - kOffset) < 1.0);
         QCOMPARE(rig_->driveState(kGeneric), State::OperationEnabled);
     }
@@ -131,7 +143,8 @@ private slots:
             QTest::mouseClick(page->armButton(), Qt::LeftButton);
             QVERIFY2(waitFor([&] { return page->holdButton()->isEnabled(); }, 5000), qPrintable(w_->message()));
         }
-        QVERIFY2(armAsked.contains(QStringLiteral("1000")) && armAsked.contains(QStringLiteral("relative")), qPrintable(armAsked));
+        QVERIFY2(armAsked.contains(QStringLiteral("1000")) && armAsked.contains(QStringLiteral("relative")),
+                 qPrintable(armAsked));
         QVERIFY(modeAsked.contains(QStringLiteral("Profile position")));
 
         const double start = position(kGeneric);
@@ -153,7 +166,8 @@ private slots:
         QVERIFY2(waitFor([&] { return !finished.isEmpty(); }, 5000), qPrintable(w_->message()));
         const double halted = position(kGeneric);
         QVERIFY2(halted < second + 900, qPrintable(QString::number(halted)));
-        QVERIFY2(page->resultText().contains(QStringLiteral("Halted before the target")), qPrintable(page->resultText()));
+        QVERIFY2(page->resultText().contains(QStringLiteral("Halted before the target")),
+                 qPrintable(page->resultText()));
         QTest::qWait(200);
         QCOMPARE(position(kGeneric), halted);  // stands still
         QCOMPARE(rig_->driveState(kGeneric), State::OperationEnabled);
@@ -167,14 +181,17 @@ private slots:
         QVERIFY(page->methodCombo()->findData(37) >= 0);  // its own list: the hard-stop methods
         QCOMPARE(page->methodCombo()->findData(3), -1);
         typeAndEnter(page->methodCombo()->lineEdit(), QStringLiteral("3"));
-        QVERIFY2(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))->text().contains(QStringLiteral("Not a homing method of the AIMOTOR")),
+        QVERIFY2(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))
+                     ->text()
+                     .contains(QStringLiteral("Not a homing method of the AIMOTOR")),
                  qPrintable(page->findChild<QLabel*>(QStringLiteral("homingMethodText"))->text()));
         QString asked;
         auto cancel = testing::answerBox(QMessageBox::Cancel, &asked);
         QTest::mouseClick(page->startButton(), Qt::LeftButton);
         QTest::qWait(300);
         QVERIFY2(asked.isEmpty(), qPrintable(asked));
-        QVERIFY2(w_->message().contains(QStringLiteral("has no homing method 3")) && w_->message().contains(QStringLiteral("1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38")),
+        QVERIFY2(w_->message().contains(QStringLiteral("has no homing method 3")) &&
+                     w_->message().contains(QStringLiteral("1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38")),
                  qPrintable(w_->message()));
         QCOMPARE(homingMethod(kAimotor), int64_t(35));
         QVERIFY(rig_->driveState(kAimotor) != State::Fault);

@@ -38,7 +38,8 @@ bool connectSim(Workspace& w, const QString& url) {
 CommandScript sample() {
     CommandScript s;
     s.title = QStringLiteral("Kit sample");
-    s.steps.push_back(ScriptStep::nmtCommand(NmtCommand::EnterPreOperational, 3, QStringLiteral("Stop process data (NMT)")));
+    s.steps.push_back(
+        ScriptStep::nmtCommand(NmtCommand::EnterPreOperational, 3, QStringLiteral("Stop process data (NMT)")));
     s.steps.push_back(ScriptStep::sdoWrite(3, 0x1017, 0, 750, 2, QStringLiteral("Heartbeat every 750 ms")));
     s.steps.push_back(ScriptStep::sdoExpect(3, 0x6041, 0, 0x27, 2, 0x6F, QStringLiteral("Operation enabled?")));
     s.steps.push_back(ScriptStep::waitForNode(3, 2000, QStringLiteral("Back after reset")));
@@ -80,7 +81,8 @@ private slots:
         QVERIFY2(rows[0].startsWith(QStringLiteral("Tx 603 40 18 10 01 00 00 00 00  ")), qPrintable(all));
         QVERIFY2(rows[0].contains(QStringLiteral("1018")), qPrintable(all));
         QVERIFY2(rows[1].startsWith(QStringLiteral("Rx 583 43 18 10 01 ")), qPrintable(all));
-        QVERIFY2(rows[1].size() > QStringLiteral("Rx 583 43 18 10 01 00 00 00 00  ").size(), qPrintable(all));  // a decoded summary follows
+        QVERIFY2(rows[1].size() > QStringLiteral("Rx 583 43 18 10 01 00 00 00 00  ").size(),
+                 qPrintable(all));  // a decoded summary follows
         QVERIFY2(!all.contains(QStringLiteral(" 601 ")) && !all.contains(QStringLiteral(" 581 ")), qPrintable(all));
         QVERIFY2(!all.contains(QStringLiteral("40 00 10 00")), qPrintable(all));  // the 1000h read before the mark
 
@@ -102,8 +104,10 @@ private slots:
         CommandScript s;
         for (int i = 0; i < 19; ++i) {
             ScriptStep st = ScriptStep::sdoWrite(3, 0x1A00, static_cast<uint8_t>(1 + i % 8), 0x60410010u, 4, {});
-            st.why = QStringLiteral("Mapping entry %1: the statusword (6041h, 16 bits) goes into the message at this place, "
-                                    "after the objects mapped before it, so the controller reads it there").arg(i + 1);
+            st.why = QStringLiteral(
+                         "Mapping entry %1: the statusword (6041h, 16 bits) goes into the message at this place, "
+                         "after the objects mapped before it, so the controller reads it there")
+                         .arg(i + 1);
             s.steps.push_back(st);
         }
         ScriptPreview preview;
@@ -183,7 +187,8 @@ private slots:
         QVERIFY2(back, qPrintable(error));
         QCOMPARE(back->title, s.title);
         QCOMPARE(back->steps.size(), s.steps.size());
-        for (size_t i = 0; i < s.steps.size(); ++i) QVERIFY2(back->steps[i].sameAs(s.steps[i]), qPrintable(back->steps[i].toLine()));
+        for (size_t i = 0; i < s.steps.size(); ++i)
+            QVERIFY2(back->steps[i].sameAs(s.steps[i]), qPrintable(back->steps[i].toLine()));
         QVERIFY(!preview.saveTo(dir.filePath(QStringLiteral("no/such/dir/x.txt")), &error));
         QVERIFY(!error.isEmpty());
 
@@ -241,7 +246,8 @@ private slots:
         QVERIFY(connectSim(w, QStringLiteral("sim://?nodes=3:generic-cia402")));
         QTRY_VERIFY_WITH_TIMEOUT(runButton->isEnabled(), 3000);
         std::vector<canopen::ScriptRunResult> done;
-        connect(&panel, &ScriptRunPanel::finished, &panel, [&](const canopen::ScriptRunResult& r) { done.push_back(r); });
+        connect(&panel, &ScriptRunPanel::finished, &panel,
+                [&](const canopen::ScriptRunResult& r) { done.push_back(r); });
         QVERIFY2(panel.run(&why), qPrintable(why));
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), size_t(1), 10000);
         const auto r = done.front();
@@ -249,7 +255,8 @@ private slots:
         QCOMPARE(r.failedStep, 2);
         QCOMPARE(panel.preview()->stepState(0), QStringLiteral("done"));
         QCOMPARE(panel.preview()->stepState(1), QStringLiteral("done"));
-        QVERIFY2(panel.preview()->stepState(2).contains(QStringLiteral("reads 0x02ee, expected 0x0001")), qPrintable(panel.preview()->stepState(2)));
+        QVERIFY2(panel.preview()->stepState(2).contains(QStringLiteral("reads 0x02ee, expected 0x0001")),
+                 qPrintable(panel.preview()->stepState(2)));
         QCOMPARE(panel.preview()->stepState(3), QString());
         QVERIFY2(panel.statusText().contains(QStringLiteral("step 3")), qPrintable(panel.statusText()));
         QVERIFY(runButton->isEnabled());

@@ -54,7 +54,8 @@ void typeInto(QWidget* w, const QString& text) {
 // One notch of the mouse wheel (120 = one step) up (+) or down (-) over `w`.
 void wheel(QWidget* w, int notches) {
     const QPointF pos = QRectF(w->rect()).center();
-    QWheelEvent e(pos, w->mapToGlobal(pos), QPoint(), QPoint(0, 120 * notches), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent e(pos, w->mapToGlobal(pos), QPoint(), QPoint(0, 120 * notches), Qt::NoButton, Qt::NoModifier,
+                  Qt::NoScrollPhase, false);
     QApplication::sendEvent(w, &e);
 }
 // Clicks the row of `node` in a table whose first column holds the node-ID.
@@ -98,7 +99,8 @@ W* findTopLevel() {
     return nullptr;
 }
 void grabPage(QWidget* w, const QString& name) {
-    if (const QString dir = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !dir.isEmpty()) w->grab().save(dir + QStringLiteral("/%1.png").arg(name));
+    if (const QString dir = qEnvironmentVariable("COSCOPE_GRAB_DIR"); !dir.isEmpty())
+        w->grab().save(dir + QStringLiteral("/%1.png").arg(name));
 }
 // More than two periods of the find page's refresh (400 ms): whatever a refresh would put back is back.
 constexpr int kRefreshesMs = 1000;
@@ -122,30 +124,42 @@ struct Bench {
         return spy.wait(15000);
     }
     template <typename T>
-    T* child(const char* name) const { return wizard->findChild<T*>(QString::fromLatin1(name)); }
+    T* child(const char* name) const {
+        return wizard->findChild<T*>(QString::fromLatin1(name));
+    }
     // --- what the technician does, page by page
     // Back to the first page by its Back button.
     void backToStart() {
-        for (int i = 0; i < 3 && wizard->currentId() != NodeIdWizard::FindPageId; ++i) click(wizard->button(QWizard::BackButton));
+        for (int i = 0; i < 3 && wizard->currentId() != NodeIdWizard::FindPageId; ++i)
+            click(wizard->button(QWizard::BackButton));
     }
     // Clicks the node in the list on the first page.
     bool pickNode(int node) {
         if (!clickNodeRow(wizard->findPage()->nodeTable(), node)) return false;
-        return waitFor([&] { return child<QLabel>("target")->text().contains(QStringLiteral("node %1").arg(node)); }, 3000);
+        return waitFor([&] { return child<QLabel>("target")->text().contains(QStringLiteral("node %1").arg(node)); },
+                       3000);
     }
     // Chooses the device type in its list on the first page.
     bool pickDictionary(const QString& name) { return pickFromList(child<QComboBox>("dictionary"), name); }
     // Second page.
-    void pickChange(NodeIdWizard::Change c) { click(child<QRadioButton>(c == NodeIdWizard::Change::NodeId ? "changeNodeId" : "changeBitRate")); }
-    void pickMethod(NodeIdWizard::Method m) { click(child<QRadioButton>(m == NodeIdWizard::Method::Lss ? "viaLss" : "viaVendor")); }
-    void typeNodeId(int id) { typeInto(child<QAbstractSpinBox>("newNodeId")->findChild<QLineEdit*>(), QString::number(id)); }
+    void pickChange(NodeIdWizard::Change c) {
+        click(child<QRadioButton>(c == NodeIdWizard::Change::NodeId ? "changeNodeId" : "changeBitRate"));
+    }
+    void pickMethod(NodeIdWizard::Method m) {
+        click(child<QRadioButton>(m == NodeIdWizard::Method::Lss ? "viaLss" : "viaVendor"));
+    }
+    void typeNodeId(int id) {
+        typeInto(child<QAbstractSpinBox>("newNodeId")->findChild<QLineEdit*>(), QString::number(id));
+    }
     bool pickBitRate(int rate) { return pickFromList(child<QComboBox>("newBitRate"), canopen::bitRateText(rate)); }
     sim::SimNetwork* net() const { return static_cast<SimBus*>(ws.bus())->network(); }
     int nodeIdOfSerial(uint8_t firstId) {
         int id = -1;
         net()->runOnNetworkThread([&] {
             for (const auto& n : net()->nodes())
-                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get()); d && d->serialNumber() == 0x51000000u + firstId) id = d->nodeId();
+                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get());
+                    d && d->serialNumber() == 0x51000000u + firstId)
+                    id = d->nodeId();
         });
         return id;
     }
@@ -198,7 +212,8 @@ private slots:
     void nodeIdByLssForEveryPersonality() {
         Bench b;
         QVERIFY(b.open());
-        QVERIFY(b.child<QLabel>("target")->text().contains(QStringLiteral("node 1")));  // the first node found is preselected
+        QVERIFY(b.child<QLabel>("target")->text().contains(
+            QStringLiteral("node 1")));  // the first node found is preselected
         for (uint8_t node = 1; node <= 4; ++node) {
             b.backToStart();
             QVERIFY(b.pickNode(node));
@@ -207,7 +222,8 @@ private slots:
             b.pickMethod(NodeIdWizard::Method::Lss);
             b.typeNodeId(40 + node);
             QVERIFY2(b.toRunPage(), qPrintable(b.wizard->planError() + b.wizard->blockingProblem()));
-            QVERIFY(b.wizard->preview()->script().steps.front().toLine().startsWith(QStringLiteral("lss switch-selective")));
+            QVERIFY(b.wizard->preview()->script().steps.front().toLine().startsWith(
+                QStringLiteral("lss switch-selective")));
             QVERIFY2(b.run(), qPrintable(b.wizard->outcomeText()));
             QCOMPARE(b.nodeIdOfSerial(node), 40 + node);
             QVERIFY(b.wizard->runPage()->statusLabel()->text().contains(QStringLiteral("node-ID %1").arg(40 + node)));
@@ -222,17 +238,20 @@ private slots:
         Bench b;
         QVERIFY(b.open());
         auto* dictionary = b.child<QComboBox>("dictionary");
-        const std::pair<int, QString> cases[] = {{3, QStringLiteral("dexmart-dev")}, {2, QStringLiteral("aimotor")}, {1, QStringLiteral("delta-asda-a2")}};
+        const std::pair<int, QString> cases[] = {
+            {3, QStringLiteral("dexmart-dev")}, {2, QStringLiteral("aimotor")}, {1, QStringLiteral("delta-asda-a2")}};
         for (const auto& [node, name] : cases) {
             QVERIFY(b.pickNode(node));
-            QVERIFY2(waitFor([&] { return dictionary->currentData().toString() == name; }, 3000), qPrintable(dictionary->currentText()));
+            QVERIFY2(waitFor([&] { return dictionary->currentData().toString() == name; }, 3000),
+                     qPrintable(dictionary->currentText()));
         }
     }
 
     void nodeIdByVendorParameter() {
         Bench b;
         QVERIFY(b.open());
-        const std::pair<uint8_t, QString> cases[] = {{1, QStringLiteral("delta-asda-a2")}, {2, QStringLiteral("aimotor")}, {3, QStringLiteral("dexmart-dev")}};
+        const std::pair<uint8_t, QString> cases[] = {
+            {1, QStringLiteral("delta-asda-a2")}, {2, QStringLiteral("aimotor")}, {3, QStringLiteral("dexmart-dev")}};
         for (const auto& [node, dict] : cases) {
             b.backToStart();
             QVERIFY(b.pickNode(node));
@@ -245,7 +264,8 @@ private slots:
             // The page says which parameter and when it takes effect.
             QVERIFY(b.wizard->changePage()->explanationLabel()->text().contains(QStringLiteral("Takes effect")));
             QVERIFY2(b.toRunPage(), qPrintable(b.wizard->planError()));
-            QVERIFY(b.wizard->preview()->script().steps.front().toLine().startsWith(QStringLiteral("sdo write %1 ").arg(node)));
+            QVERIFY(b.wizard->preview()->script().steps.front().toLine().startsWith(
+                QStringLiteral("sdo write %1 ").arg(node)));
             QVERIFY2(b.run(), qPrintable(b.wizard->outcomeText()));
             QCOMPARE(b.nodeIdOfSerial(node), 50 + node);
         }
@@ -268,10 +288,12 @@ private slots:
         b.pickMethod(NodeIdWizard::Method::Lss);
         QVERIFY(b.pickBitRate(250000));
         const QString text = b.wizard->changePage()->explanationLabel()->text();
-        QVERIFY2(text.contains(QStringLiteral("Every other node")) && text.contains(QStringLiteral("nodes 1, 3, 4")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Every other node")) && text.contains(QStringLiteral("nodes 1, 3, 4")),
+                 qPrintable(text));
         grabPage(b.wizard.get(), QStringLiteral("nodeid-change"));
         QVERIFY(b.toRunPage());
-        QVERIFY(b.wizard->runPage()->statusLabel()->text().contains(QStringLiteral("reconnect at %1").arg(canopen::bitRateText(250000))));
+        QVERIFY(b.wizard->runPage()->statusLabel()->text().contains(
+            QStringLiteral("reconnect at %1").arg(canopen::bitRateText(250000))));
         QVERIFY2(b.run(), qPrintable(b.wizard->outcomeText()));
         grabPage(b.wizard.get(), QStringLiteral("nodeid-run"));
         QCOMPARE(b.ws.bus()->url().bitrate(), 250000);
@@ -282,7 +304,9 @@ private slots:
         // reconnect at 500 kbit/s first, then change it to 1 Mbit/s.
         QString error;
         b.wizard.reset();
-        QVERIFY(b.ws.connectBus(b.ws.bus()->url().toString().replace(QStringLiteral("bitrate=250000"), QStringLiteral("bitrate=500000")), &error));
+        QVERIFY(b.ws.connectBus(
+            b.ws.bus()->url().toString().replace(QStringLiteral("bitrate=250000"), QStringLiteral("bitrate=500000")),
+            &error));
         QVERIFY(waitFor([&] { return b.ws.canTransmit() && b.ws.nodes().node(1).has_value(); }));
         b.wizard = std::make_unique<NodeIdWizard>(&b.ws, 1);
         b.wizard->show();
@@ -319,7 +343,9 @@ private slots:
     void sdoAbortStopsAndExplains() {
         Bench b;
         QVERIFY(b.open());
-        b.onDevice(1, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x2300), uint8_t(0), uint32_t(0x08000022)); });
+        b.onDevice(1, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x2300), uint8_t(0), uint32_t(0x08000022));
+        });
         QVERIFY(b.pickNode(1));
         QVERIFY(b.pickDictionary(QStringLiteral("delta-asda-a2")));
         clickNext(b.wizard.get());
@@ -391,7 +417,8 @@ private slots:
         QTemporaryDir dir;
         const QString file = dir.filePath(QStringLiteral("bitrate.txt"));
         QVERIFY(b.saveScript(file));
-        QCOMPARE(b.ws.bus()->url().bitrate() > 0 ? b.ws.bus()->url().bitrate() : 500000, 500000);  // nothing was run here
+        QCOMPARE(b.ws.bus()->url().bitrate() > 0 ? b.ws.bus()->url().bitrate() : 500000,
+                 500000);  // nothing was run here
         // The node answers SDO at the new rate after the replay's reconnect.
         QFile f(file);
         QVERIFY(f.open(QIODevice::Append));
@@ -416,7 +443,8 @@ private slots:
         QVERIFY(b.open());
         NodeIdWizard* w = b.wizard.get();
         QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 1));  // Delta ASDA-A2: P3-00 is its node-ID
-        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 1")));
+        QTRY_VERIFY(
+            w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 1")));
         grabPage(w, QStringLiteral("nodeid-1-find"));
         clickNext(w);
         QCOMPARE(w->currentId(), int(NodeIdWizard::ChangePageId));
@@ -437,7 +465,8 @@ private slots:
         QTest::qWait(kRefreshesMs);
         QCOMPARE(edit->text(), QStringLiteral("44"));
         QVERIFY(vendor->isChecked() && !lss->isChecked());
-        QVERIFY2(page->explanationLabel()->text().contains(QStringLiteral("P3-00")), qPrintable(page->explanationLabel()->text()));
+        QVERIFY2(page->explanationLabel()->text().contains(QStringLiteral("P3-00")),
+                 qPrintable(page->explanationLabel()->text()));
         grabPage(w, QStringLiteral("nodeid-2-change"));
         // The dry run writes 44 (2Ch) to P3-00 (2300h).
         QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
@@ -482,7 +511,8 @@ private slots:
         QVERIFY(b.open());
         NodeIdWizard* w = b.wizard.get();
         QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 2));
-        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 2")));
+        QTRY_VERIFY(
+            w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 2")));
         clickNext(w);
         auto* page = w->changePage();
         click(page->findChild<QRadioButton*>(QStringLiteral("changeBitRate")));
@@ -496,13 +526,15 @@ private slots:
         QCOMPARE(rate->currentText(), canopen::bitRateText(125000));
         QTest::qWait(kRefreshesMs);
         QCOMPARE(rate->currentText(), canopen::bitRateText(125000));
-        QVERIFY2(page->explanationLabel()->text().contains(canopen::bitRateText(125000)), qPrintable(page->explanationLabel()->text()));
+        QVERIFY2(page->explanationLabel()->text().contains(canopen::bitRateText(125000)),
+                 qPrintable(page->explanationLabel()->text()));
         grabPage(w, QStringLiteral("nodeid-2-change-bitrate"));
         QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
         clickNext(w);
         QVERIFY(ready.count() > 0 || ready.wait(8000));
         QVERIFY2(ready.last().at(0).toBool(), qPrintable(w->runPage()->statusLabel()->text()));
-        QVERIFY2(w->runPage()->statusLabel()->text().contains(QStringLiteral("reconnect at %1").arg(canopen::bitRateText(125000))),
+        QVERIFY2(w->runPage()->statusLabel()->text().contains(
+                     QStringLiteral("reconnect at %1").arg(canopen::bitRateText(125000))),
                  qPrintable(w->runPage()->statusLabel()->text()));
     }
 
@@ -527,13 +559,16 @@ private slots:
         QVERIFY(scanned.wait(15000));
         auto dictionaryOf = [&](int node) {
             const int row = nodes->rowOfNode(node);
-            return row < 0 ? QString() : nodes->data(nodes->index(row, NodesModel::Dictionary), Qt::DisplayRole).toString();
+            return row < 0 ? QString()
+                           : nodes->data(nodes->index(row, NodesModel::Dictionary), Qt::DisplayRole).toString();
         };
         QVERIFY(waitFor([&] { return dictionaryOf(3) == u"generic-cia402"; }));
         QVERIFY(clickNodeRow(w->findPage()->nodeTable(), 3));
-        QTRY_VERIFY(w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 3")));
+        QTRY_VERIFY(
+            w->findPage()->findChild<QLabel*>(QStringLiteral("target"))->text().contains(QStringLiteral("node 3")));
         clickNext(w);
-        typeInto(w->changePage()->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>(), QStringLiteral("7"));
+        typeInto(w->changePage()->findChild<QAbstractSpinBox*>(QStringLiteral("newNodeId"))->findChild<QLineEdit*>(),
+                 QStringLiteral("7"));
         QSignalSpy ready(w, &NodeIdWizard::dryRunReady);
         clickNext(w);
         QVERIFY(ready.count() > 0 || ready.wait(8000));

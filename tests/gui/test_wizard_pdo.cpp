@@ -5,9 +5,8 @@
 // entry the drive rejects (fault injection) is reported with the step and the abort text and
 // the old mapping stays in force; the saved script parses and replays as a dry run in the CLI;
 // listen-only refuses.
-#include "app/gui/session/Workspace.h"
 #include <QAbstractButton>  // before ModalAnswer.h, which uses it
-#include "tests/gui/ModalAnswer.h"
+#include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/WizardMenu.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
@@ -23,6 +22,7 @@
 #include "core/sim/VirtualDevice.h"
 #include "eds/SimulatorDictionaries.h"
 #include "tests/CliRun.h"
+#include "tests/gui/ModalAnswer.h"
 
 #include <QLabel>
 #include <QPushButton>
@@ -87,7 +87,9 @@ struct Live {
     }
 };
 
-bool waitApplied(PdoWizard& w) { return waitFor([&] { return !w.isApplying(); }, 30000); }
+bool waitApplied(PdoWizard& w) {
+    return waitFor([&] { return !w.isApplying(); }, 30000);
+}
 }  // namespace
 
 class TestWizardPdo : public QObject {
@@ -113,10 +115,18 @@ private slots:
         QTest::addColumn<QString>("a");  // new mapping: a, b
         QTest::addColumn<QString>("b");
         QTest::addColumn<QString>("c");  // failure case: a, b, c with c rejected by the drive
-        QTest::newRow("delta-asda-a2") << "delta-asda-a2" << 1 << "6041:00" << "606C:00" << "6061:00";
-        QTest::newRow("aimotor") << "aimotor" << 2 << "6041:00" << "606C:00" << "6061:00";
-        QTest::newRow("dexmart-dev") << "dexmart-dev" << 3 << "3046:05" << "3046:16" << "3046:17";
-        QTest::newRow("generic-cia402") << "generic-cia402" << 4 << "6041:00" << "606C:00" << "6061:00";
+        QTest::newRow("delta-asda-a2") << "delta-asda-a2" << 1 << "6041:00"
+                                       << "606C:00"
+                                       << "6061:00";
+        QTest::newRow("aimotor") << "aimotor" << 2 << "6041:00"
+                                 << "606C:00"
+                                 << "6061:00";
+        QTest::newRow("dexmart-dev") << "dexmart-dev" << 3 << "3046:05"
+                                     << "3046:16"
+                                     << "3046:17";
+        QTest::newRow("generic-cia402") << "generic-cia402" << 4 << "6041:00"
+                                        << "606C:00"
+                                        << "6061:00";
     }
 
     void endToEnd() {
@@ -152,7 +162,8 @@ private slots:
         map->clearMapping();
         QString why;
         QVERIFY(!map->addObject(0x1000, 0, &why));  // device type: not mappable
-        QVERIFY2(why.contains(QStringLiteral("not PDO-mappable")) || why.contains(QStringLiteral("does not exist")), qPrintable(why));
+        QVERIFY2(why.contains(QStringLiteral("not PDO-mappable")) || why.contains(QStringLiteral("does not exist")),
+                 qPrintable(why));
         const auto [ai, as] = obj(a);
         const auto [bi, bs] = obj(b);
         const auto [ci, cs] = obj(c);
@@ -165,7 +176,8 @@ private slots:
         QCOMPARE(wanted[1].index, bi);
         const int bits = wanted[0].bits + wanted[1].bits;
         QCOMPARE(map->frameLayout()->totalBits(), bits);
-        QVERIFY2(map->frameLayout()->layoutText().startsWith(QStringLiteral("byte 0-1: ")) || map->frameLayout()->layoutText().startsWith(QStringLiteral("byte 0: ")),
+        QVERIFY2(map->frameLayout()->layoutText().startsWith(QStringLiteral("byte 0-1: ")) ||
+                     map->frameLayout()->layoutText().startsWith(QStringLiteral("byte 0: ")),
                  qPrintable(map->frameLayout()->layoutText()));
         QVERIFY(map->isComplete());
 
@@ -194,7 +206,9 @@ private slots:
         QCOMPARE(writes.front()->index, uint16_t(0x1800));
         // DEXMART DEV's COB-ID is read-only (extract-dexmart §4.6): it cannot be switched off.
         const bool cobFixed = personality == u"dexmart-dev";
-        QCOMPARE(std::count_if(writes.begin(), writes.end(), [](const canopen::ScriptStep* w) { return w->index == 0x1800 && w->sub == 1; }), cobFixed ? 0 : 2);
+        QCOMPARE(std::count_if(writes.begin(), writes.end(),
+                               [](const canopen::ScriptStep* w) { return w->index == 0x1800 && w->sub == 1; }),
+                 cobFixed ? 0 : 2);
         if (!cobFixed) QVERIFY(uint8_t(writes.front()->data[3]) & 0x80);
         int entryAt = -1;
         for (size_t i = 0; i < writes.size(); ++i)
@@ -226,8 +240,14 @@ private slots:
         bool sawRequest = false, sawAnswer = false;
         for (int r = 0; r < wiz.framesPane()->rowCount(); ++r) {
             const QString row = wiz.framesPane()->rowText(r);
-            sawRequest |= row.startsWith(QStringLiteral("Tx %1 ").arg(0x600 + node, 3, 16, QChar(u'0')).toUpper().replace(QStringLiteral("TX"), QStringLiteral("Tx")));
-            sawAnswer |= row.startsWith(QStringLiteral("Rx %1 ").arg(0x580 + node, 3, 16, QChar(u'0')).toUpper().replace(QStringLiteral("RX"), QStringLiteral("Rx")));
+            sawRequest |= row.startsWith(QStringLiteral("Tx %1 ")
+                                             .arg(0x600 + node, 3, 16, QChar(u'0'))
+                                             .toUpper()
+                                             .replace(QStringLiteral("TX"), QStringLiteral("Tx")));
+            sawAnswer |= row.startsWith(QStringLiteral("Rx %1 ")
+                                            .arg(0x580 + node, 3, 16, QChar(u'0'))
+                                            .toUpper()
+                                            .replace(QStringLiteral("RX"), QStringLiteral("Rx")));
         }
         QVERIFY2(sawRequest && sawAnswer, qPrintable(wiz.framesPane()->rowText(0)));
         const auto after = live.readBack(tpdo1);
@@ -248,7 +268,8 @@ private slots:
             QTest::qWait(30);
             const TraceStore& s = *live.ws.store();
             for (size_t i = from; i < s.size(); ++i)
-                if (s.record(static_cast<FrameNo>(i)).id == cob && !(s.record(static_cast<FrameNo>(i)).flags & CanFrame::Tx)) {
+                if (s.record(static_cast<FrameNo>(i)).id == cob &&
+                    !(s.record(static_cast<FrameNo>(i)).flags & CanFrame::Tx)) {
                     pdoFrame = static_cast<FrameNo>(i);
                     return true;
                 }
@@ -265,7 +286,9 @@ private slots:
 
         // Failure: the drive rejects the third entry; the wizard says which step and what the
         // drive answered, and the old mapping (a, b) is in force again.
-        live.onDevice([&](sim::VirtualDevice& dev) { dev.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1A00), uint8_t(3), uint32_t(0x06040041)); });
+        live.onDevice([&](sim::VirtualDevice& dev) {
+            dev.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1A00), uint8_t(3), uint32_t(0x06040041));
+        });
         wiz.back();
         wiz.back();
         QCOMPARE(wiz.currentId(), int(PdoWizard::MappingPageId));
@@ -279,7 +302,10 @@ private slots:
         QCOMPARE(wiz.outcome(), PdoWizard::Outcome::Failed);
         const QString text = wiz.outcomeText();
         QVERIFY2(text.contains(QStringLiteral("1A00:03")), qPrintable(text));
-        QVERIFY2(text.contains(QStringLiteral("What the drive answered: node %1 aborted 1A00:03: Object cannot be mapped").arg(node)), qPrintable(text));
+        QVERIFY2(
+            text.contains(
+                QStringLiteral("What the drive answered: node %1 aborted 1A00:03: Object cannot be mapped").arg(node)),
+            qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("0x06040041")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("What to check:")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("written back")), qPrintable(text));
@@ -315,9 +341,12 @@ private slots:
         const auto loaded = canopen::CommandScript::load(path, &error);
         QVERIFY2(loaded, qPrintable(error));
         QCOMPARE(loaded->steps.size(), dry.steps.size());
-        for (size_t i = 0; i < dry.steps.size(); ++i) QVERIFY2(loaded->steps[i].sameAs(dry.steps[i]), qPrintable(dry.steps[i].toLine()));
+        for (size_t i = 0; i < dry.steps.size(); ++i)
+            QVERIFY2(loaded->steps[i].sameAs(dry.steps[i]), qPrintable(dry.steps[i].toLine()));
         // The CLI prints it without sending.
-        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("--dry-run"), QStringLiteral("sim://?nodes=2:aimotor"), path}, 30000);
+        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("--dry-run"),
+                           QStringLiteral("sim://?nodes=2:aimotor"), path},
+                          30000);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("1A00"), Qt::CaseInsensitive), qPrintable(r.out));
     }

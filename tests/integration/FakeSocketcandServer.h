@@ -12,12 +12,12 @@
 
 class FakeSocketcandServer {
 public:
-    bool greet = true;               // send "< hi >" on connect
+    bool greet = true;                   // send "< hi >" on connect
     QByteArray answerToOpen = "< ok >";  // what "< open CHANNEL >" gets
-    QByteArray received;             // everything the client sent
-    QByteArray afterHandshake;       // client bytes after "< rawmode >" was answered
+    QByteArray received;                 // everything the client sent
+    QByteArray afterHandshake;           // client bytes after "< rawmode >" was answered
     bool handshakeDone = false;
-    int receiveBufferBytes = 0;      // > 0: a small kernel receive buffer (a slow server)
+    int receiveBufferBytes = 0;  // > 0: a small kernel receive buffer (a slow server)
 
     // port 0: chosen by the system; a port of a server that went away: "the server restarted".
     bool listen(quint16 port = 0) {
@@ -50,7 +50,8 @@ private:
             return;
         }
         client_ = s;
-        if (receiveBufferBytes > 0) client_->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, receiveBufferBytes);
+        if (receiveBufferBytes > 0)
+            client_->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, receiveBufferBytes);
         QObject::connect(client_, &QTcpSocket::readyRead, client_, [this] { onData(); });
         if (greet) write("< hi >");
     }

@@ -125,7 +125,8 @@ public:
             if (!seg) return fail(r, "no segment response");
             auto s = canopen::parseSdo(seg->data.data(), seg->len, false);
             if (s.command == canopen::SdoCommand::Abort) return aborted(r, s.abortCode);
-            if (s.command != canopen::SdoCommand::DownloadSegmentResponse) return fail(r, "unexpected segment response");
+            if (s.command != canopen::SdoCommand::DownloadSegmentResponse)
+                return fail(r, "unexpected segment response");
             if (s.toggle != toggle) return fail(r, "toggle bit");
             toggle = !toggle;
             if (last) break;
@@ -134,10 +135,12 @@ public:
     }
 
     // Block upload with CRC; `dropSeq` > 0 pretends that segment of the first sub-block was lost.
-    SdoResult blockUpload(uint8_t node, uint16_t index, uint8_t sub, uint8_t blksize = 127, int dropSeq = 0, uint8_t pst = 0) {
+    SdoResult blockUpload(uint8_t node, uint16_t index, uint8_t sub, uint8_t blksize = 127, int dropSeq = 0,
+                          uint8_t pst = 0) {
         SdoResult r;
         const uint32_t req = 0x600u + node;
-        auto resp = sdoRequest(node, CanFrame::classic(req, {0xA4, uint8_t(index), uint8_t(index >> 8), sub, blksize, pst, 0, 0}));
+        auto resp = sdoRequest(
+            node, CanFrame::classic(req, {0xA4, uint8_t(index), uint8_t(index >> 8), sub, blksize, pst, 0, 0}));
         if (!resp) return fail(r, "no response to block upload initiate");
         auto p = canopen::parseSdo(resp->data.data(), resp->len, false);
         if (p.command == canopen::SdoCommand::Abort) return aborted(r, p.abortCode);
@@ -179,7 +182,8 @@ public:
         if (e.command == canopen::SdoCommand::Abort) return aborted(r, e.abortCode);
         if (e.command != canopen::SdoCommand::BlockUploadEnd) return fail(r, "unexpected end frame");
         r.data.chop(e.unusedBytes);
-        const uint16_t crc = canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(r.data.constData()), size_t(r.data.size()));
+        const uint16_t crc =
+            canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(r.data.constData()), size_t(r.data.size()));
         if (crc != e.crc) {
             send(canopen::sdo::abortFromClient(node, index, sub, 0x05040004));
             return fail(r, "CRC mismatch");
@@ -193,8 +197,8 @@ public:
         SdoResult r;
         const uint32_t req = 0x600u + node;
         const auto n = static_cast<uint32_t>(data.size());
-        auto resp = sdoRequest(node, CanFrame::classic(req, {0xC6, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(n), uint8_t(n >> 8),
-                                                             uint8_t(n >> 16), uint8_t(n >> 24)}));
+        auto resp = sdoRequest(node, CanFrame::classic(req, {0xC6, uint8_t(index), uint8_t(index >> 8), sub, uint8_t(n),
+                                                             uint8_t(n >> 8), uint8_t(n >> 16), uint8_t(n >> 24)}));
         if (!resp) return fail(r, "no response to block download initiate");
         auto p = canopen::parseSdo(resp->data.data(), resp->len, false);
         if (p.command == canopen::SdoCommand::Abort) return aborted(r, p.abortCode);
@@ -229,7 +233,8 @@ public:
         uint16_t crc = canopen::sdoBlockCrc(reinterpret_cast<const uint8_t*>(data.constData()), size_t(data.size()));
         if (badCrc) crc ^= 0x1234;
         const auto unused = static_cast<uint8_t>(7 - lastLen);
-        auto end = sdoRequest(node, CanFrame::classic(req, {uint8_t(0xC1 | (unused << 2)), uint8_t(crc), uint8_t(crc >> 8), 0, 0, 0, 0, 0}));
+        auto end = sdoRequest(node, CanFrame::classic(req, {uint8_t(0xC1 | (unused << 2)), uint8_t(crc),
+                                                            uint8_t(crc >> 8), 0, 0, 0, 0, 0}));
         if (!end) return fail(r, "no block download end response");
         auto e = canopen::parseSdo(end->data.data(), end->len, false);
         if (e.command == canopen::SdoCommand::Abort) return aborted(r, e.abortCode);

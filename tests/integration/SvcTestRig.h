@@ -9,8 +9,8 @@
 #include "core/sim/SimBus.h"
 #include "core/sim/SimNetwork.h"
 #include "core/sim/SimNode.h"
-#include "core/trace/CaptureSession.h"
 #include "core/sim/VirtualDevice.h"
+#include "core/trace/CaptureSession.h"
 #include "eds/SimulatorDictionaries.h"
 
 #include <QByteArray>

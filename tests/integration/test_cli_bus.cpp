@@ -35,7 +35,8 @@ class TestCliBus : public QObject {
     Q_OBJECT
 private slots:
     void listenPrintsCandumpLines() {
-        const Run r = cli({QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--count"), QStringLiteral("3")});
+        const Run r =
+            cli({QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--count"), QStringLiteral("3")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QStringList l = lines(r.out);
         QCOMPARE(l.size(), 3);
@@ -46,7 +47,8 @@ private slots:
     void listenDurationStops() {
         QElapsedTimer t;
         t.start();
-        const Run r = cli({QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--duration"), QStringLiteral("0.5")});
+        const Run r = cli(
+            {QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--duration"), QStringLiteral("0.5")});
         QCOMPARE(r.code, 0);
         QVERIFY(t.elapsed() < 5000);
         QVERIFY(lines(r.out).size() >= 3);
@@ -66,7 +68,8 @@ private slots:
         FakeSocketcandServer server;
         QVERIFY(server.listen());
         QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("send"), server.url(), QStringLiteral("1F334455#11.22")});
+        p.start(QStringLiteral(COSCOPE_CLI_PATH),
+                {QStringLiteral("send"), server.url(), QStringLiteral("1F334455#11.22")});
         QTRY_VERIFY_WITH_TIMEOUT(p.state() == QProcess::NotRunning, 10000);
         QCOMPARE(p.exitCode(), 0);
         QCOMPARE(server.afterHandshake, QByteArray("< send 1F334455 2 11 22 >"));
@@ -75,8 +78,10 @@ private slots:
         const Run r = cli({QStringLiteral("listen"), QStringLiteral("sockcan://x")});
         QCOMPARE(r.code, 2);
         QCOMPARE(lines(r.err).size(), 1);
-        QVERIFY2(r.err.startsWith(QStringLiteral("coscope-cli listen: unknown scheme 'sockcan'; known: ")), qPrintable(r.err));
-        const Run s = cli({QStringLiteral("record"), QStringLiteral("sockcan://x"), QStringLiteral("/nonexistent/x.log")});
+        QVERIFY2(r.err.startsWith(QStringLiteral("coscope-cli listen: unknown scheme 'sockcan'; known: ")),
+                 qPrintable(r.err));
+        const Run s =
+            cli({QStringLiteral("record"), QStringLiteral("sockcan://x"), QStringLiteral("/nonexistent/x.log")});
         QCOMPARE(s.code, 2);
     }
     void unreachableBusFails() {
@@ -88,13 +93,16 @@ private slots:
         }
         const Run r = cli({QStringLiteral("listen"), QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port)});
         QCOMPARE(r.code, 1);
-        QVERIFY2(lines(r.err).last() == QStringLiteral("coscope-cli listen: cannot reach socketcand at 127.0.0.1:%1: connection refused").arg(port),
+        QVERIFY2(lines(r.err).last() ==
+                     QStringLiteral("coscope-cli listen: cannot reach socketcand at 127.0.0.1:%1: connection refused")
+                         .arg(port),
                  qPrintable(r.err));
     }
     void recordWritesParseableLog() {
         QTemporaryDir dir;
         const QString out = dir.filePath(QStringLiteral("out.log"));
-        const Run r = cli({QStringLiteral("record"), QStringLiteral("sim://"), out, QStringLiteral("--duration"), QStringLiteral("1.5")});
+        const Run r = cli({QStringLiteral("record"), QStringLiteral("sim://"), out, QStringLiteral("--duration"),
+                           QStringLiteral("1.5")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -138,10 +146,14 @@ private slots:
         p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("record"), server.url(), out});
         QTRY_VERIFY_WITH_TIMEOUT(server.handshakeDone, 5000);
         QTest::qWait(100);
-        server.write("< frame 181 1700000000.000001 0102 >< frame 12345678 1700000000.000002 >< frame 701 1700000000.000003 05 >");
+        server.write(
+            "< frame 181 1700000000.000001 0102 >< frame 12345678 1700000000.000002 >< frame 701 1700000000.000003 05 "
+            ">");
         server.closeClient();
         QString err;
-        QTRY_VERIFY_WITH_TIMEOUT((err += QString::fromUtf8(p.readAllStandardError())).contains(QStringLiteral("coscope-cli record: bus lost")), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((err += QString::fromUtf8(p.readAllStandardError()))
+                                     .contains(QStringLiteral("coscope-cli record: bus lost")),
+                                 5000);
         QVERIFY2(err.contains(QStringLiteral("retrying")), qPrintable(err));
         QCOMPARE(p.state(), QProcess::Running);
         const QString expected = QStringLiteral(

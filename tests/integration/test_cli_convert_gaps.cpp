@@ -117,7 +117,8 @@ private slots:
         const QString out = dir_.filePath(QStringLiteral("out.") + ext);
         const Run r = cli({QStringLiteral("convert"), in_, out});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.err.contains(QStringLiteral("warning: the input has 1 gap(s) in the capture (adapter lost)")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("warning: the input has 1 gap(s) in the capture (adapter lost)")),
+                 qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral(" format cannot hold; they are not in the output")), qPrintable(r.err));
         QString error;
         auto reader = LogFormats::openReader(out, &error);

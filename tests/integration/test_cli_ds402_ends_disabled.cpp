@@ -26,7 +26,9 @@ class TestCliDs402EndsDisabled : public QObject {
     Q_OBJECT
 private slots:
     void jogEndsDisabled() {
-        const Run r = cli({QStringLiteral("ds402"), QStringLiteral("jog"), kBus, QStringLiteral("3"), QStringLiteral("2000"), QStringLiteral("--for"), QStringLiteral("400"), QStringLiteral("--yes")});
+        const Run r =
+            cli({QStringLiteral("ds402"), QStringLiteral("jog"), kBus, QStringLiteral("3"), QStringLiteral("2000"),
+                 QStringLiteral("--for"), QStringLiteral("400"), QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QStringList lines = r.out.split(u'\n');
         const int target = lineWith(lines, QStringLiteral("60FFh = 2000"));
@@ -37,11 +39,13 @@ private slots:
 
     void interruptedJogEndsDisabled() {
         QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("ds402"), QStringLiteral("jog"), kBus, QStringLiteral("3"), QStringLiteral("2000"), QStringLiteral("--for"),
-                                                   QStringLiteral("20000"), QStringLiteral("--yes")});
+        p.start(QStringLiteral(COSCOPE_CLI_PATH),
+                {QStringLiteral("ds402"), QStringLiteral("jog"), kBus, QStringLiteral("3"), QStringLiteral("2000"),
+                 QStringLiteral("--for"), QStringLiteral("20000"), QStringLiteral("--yes")});
         QVERIFY(p.waitForStarted());
         QString out;
-        QTRY_VERIFY_WITH_TIMEOUT((out += QString::fromUtf8(p.readAllStandardOutput())).contains(QStringLiteral("60FFh = 2000")), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (out += QString::fromUtf8(p.readAllStandardOutput())).contains(QStringLiteral("60FFh = 2000")), 10000);
         QTest::qWait(300);  // turning
         p.terminate();      // SIGTERM
         QVERIFY(p.waitForFinished(15000));
@@ -49,7 +53,8 @@ private slots:
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 1);
-        QVERIFY2(err.contains(QStringLiteral("interrupted")) && err.contains(QStringLiteral("drive disabled")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("interrupted")) && err.contains(QStringLiteral("drive disabled")),
+                 qPrintable(err));
         const QStringList lines = out.split(u'\n');
         const int target = lineWith(lines, QStringLiteral("60FFh = 2000"));
         QVERIFY2(sentAfter(lines, target, QStringLiteral("0x010F")) > target, qPrintable(out));  // halt

@@ -50,9 +50,11 @@ private slots:
         const Run r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("3")});
         QCOMPARE(r.code, 1);
         QCOMPARE(r.err.count(u'\n'), 1);
-        QVERIFY2(r.err.contains(QStringLiteral("no terminal")) && r.err.contains(QStringLiteral("--yes")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("no terminal")) && r.err.contains(QStringLiteral("--yes")),
+                 qPrintable(r.err));
         QVERIFY(!r.out.contains(QStringLiteral("send ")));
-        const Run m = cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("3"), QStringLiteral("1000")});
+        const Run m =
+            cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("3"), QStringLiteral("1000")});
         QCOMPARE(m.code, 1);
         QVERIFY2(m.err.contains(QStringLiteral("no terminal")), qPrintable(m.err));
     }
@@ -61,55 +63,75 @@ private slots:
         QTest::addColumn<QStringList>("extra");
         QTest::newRow("generic 35") << args({"3"});
         QTest::newRow("aimotor 35") << args({"2", "--method", "35"});
-        QTest::newRow("generic 1 with speeds") << args({"3", "--method", "1", "--fast", "50000", "--slow", "10000", "--acceleration", "500000", "--offset", "100"});
-        QTest::newRow("delta 17 in 0.1 rpm") << args({"1", "--method", "17", "--fast", "2000", "--slow", "500", "--acceleration", "20"});
+        QTest::newRow("generic 1 with speeds") << args({"3", "--method", "1", "--fast", "50000", "--slow", "10000",
+                                                        "--acceleration", "500000", "--offset", "100"});
+        QTest::newRow("delta 17 in 0.1 rpm")
+            << args({"1", "--method", "17", "--fast", "2000", "--slow", "500", "--acceleration", "20"});
     }
     void homeOnEachDriveEndsDisabled() {
         QFETCH(QStringList, extra);
-        const Run r = cli(QStringList{QStringLiteral("ds402"), QStringLiteral("home"), kBus} + extra + QStringList{QStringLiteral("--yes")});
+        const Run r = cli(QStringList{QStringLiteral("ds402"), QStringLiteral("home"), kBus} + extra +
+                          QStringList{QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
         QVERIFY2(r.out.contains(QStringLiteral("6040h = 0x001F (Homing operation start")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("homing attained, position actual 6064h = ")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("target reached, homing attained")), qPrintable(r.out));  // bit names in homing mode
+        QVERIFY2(r.out.contains(QStringLiteral("target reached, homing attained")),
+                 qPrintable(r.out));                                 // bit names in homing mode
         QCOMPARE(lastControlword(r.out), QStringLiteral("0x0000"));  // disabled at the end
         QVERIFY2(r.out.trimmed().endsWith(QStringLiteral("disabled")), qPrintable(r.out));
-        if (extra.contains(QStringLiteral("--offset"))) QVERIFY2(r.out.contains(QStringLiteral("6064h = 100 ")), qPrintable(r.out));
+        if (extra.contains(QStringLiteral("--offset")))
+            QVERIFY2(r.out.contains(QStringLiteral("6064h = 100 ")), qPrintable(r.out));
     }
 
     void methodTheDriveLacksIsRefused() {
         // AIMOTOR has no method 3 (extract-aimotor §4.7): refused before anything is sent.
-        Run r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("2"), QStringLiteral("--method"), QStringLiteral("3"), QStringLiteral("--yes")});
+        Run r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("2"),
+                     QStringLiteral("--method"), QStringLiteral("3"), QStringLiteral("--yes")});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("no homing method 3; its methods are 1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral(
+                     "no homing method 3; its methods are 1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38")),
+                 qPrintable(r.err));
         QVERIFY(!r.out.contains(QStringLiteral("6040h")));
         // --methods lists the drive's own table.
-        r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("2"), QStringLiteral("--methods")});
+        r = cli(
+            {QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("2"), QStringLiteral("--methods")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral(" 37  Mechanical end stop in the positive direction")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral(" 37  Mechanical end stop in the positive direction")),
+                 qPrintable(r.out));
     }
 
     void moveAndFailureEndDisabled() {
-        Run r = cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("3"), QStringLiteral("1000"), QStringLiteral("--velocity"), QStringLiteral("5000"), QStringLiteral("--yes")});
+        Run r = cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("3"), QStringLiteral("1000"),
+                     QStringLiteral("--velocity"), QStringLiteral("5000"), QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("6040h = 0x001F (New set-point")) && r.out.contains(QStringLiteral("Set-point acknowledged: new set-point (bit 4) low")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("6040h = 0x001F (New set-point")) &&
+                     r.out.contains(QStringLiteral("Set-point acknowledged: new set-point (bit 4) low")),
+                 qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("target reached, position actual 6064h = 1000 ")), qPrintable(r.out));
         QCOMPARE(lastControlword(r.out), QStringLiteral("0x0000"));
         // Relative on the AIMOTOR (a fresh simulator: from 0).
-        r = cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("2"), QStringLiteral("-1000"), QStringLiteral("--relative"), QStringLiteral("--velocity"), QStringLiteral("5000"), QStringLiteral("--yes")});
+        r = cli({QStringLiteral("ds402"), QStringLiteral("move"), kBus, QStringLiteral("2"), QStringLiteral("-1000"),
+                 QStringLiteral("--relative"), QStringLiteral("--velocity"), QStringLiteral("5000"),
+                 QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("6040h = 0x005F")) && r.out.contains(QStringLiteral("6064h = -1000 ")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("6040h = 0x005F")) && r.out.contains(QStringLiteral("6064h = -1000 ")),
+                 qPrintable(r.out));
         // A failure (homing not done in time) still ends disabled.
-        r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("3"), QStringLiteral("--method"), QStringLiteral("1"), QStringLiteral("--fast"),
-                 QStringLiteral("1000"), QStringLiteral("--timeout"), QStringLiteral("300"), QStringLiteral("--yes")});
+        r = cli({QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("3"), QStringLiteral("--method"),
+                 QStringLiteral("1"), QStringLiteral("--fast"), QStringLiteral("1000"), QStringLiteral("--timeout"),
+                 QStringLiteral("300"), QStringLiteral("--yes")});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("did not finish homing within 300 ms")) && r.err.contains(QStringLiteral("drive disabled")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("did not finish homing within 300 ms")) &&
+                     r.err.contains(QStringLiteral("drive disabled")),
+                 qPrintable(r.err));
         QCOMPARE(lastControlword(r.out), QStringLiteral("0x0000"));
     }
 
     void interruptStopsAndDisables() {
         QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("3"), QStringLiteral("--method"), QStringLiteral("1"),
-                                                   QStringLiteral("--fast"), QStringLiteral("1000"), QStringLiteral("--yes")});
+        p.start(QStringLiteral(COSCOPE_CLI_PATH),
+                {QStringLiteral("ds402"), QStringLiteral("home"), kBus, QStringLiteral("3"), QStringLiteral("--method"),
+                 QStringLiteral("1"), QStringLiteral("--fast"), QStringLiteral("1000"), QStringLiteral("--yes")});
         QVERIFY(p.waitForStarted(5000));
         QString out;
         QElapsedTimer t;
@@ -124,8 +146,12 @@ private slots:
         out += QString::fromUtf8(p.readAllStandardOutput());
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 1);
-        QVERIFY2(out.contains(QStringLiteral("interrupted: stopping node 3")) && out.contains(QStringLiteral("Halt: interrupted")), qPrintable(out));
-        QVERIFY2(err.contains(QStringLiteral("stopped (interrupted (Ctrl+C))")) && err.contains(QStringLiteral("drive disabled")), qPrintable(err));
+        QVERIFY2(out.contains(QStringLiteral("interrupted: stopping node 3")) &&
+                     out.contains(QStringLiteral("Halt: interrupted")),
+                 qPrintable(out));
+        QVERIFY2(err.contains(QStringLiteral("stopped (interrupted (Ctrl+C))")) &&
+                     err.contains(QStringLiteral("drive disabled")),
+                 qPrintable(err));
         QCOMPARE(lastControlword(out), QStringLiteral("0x0000"));
     }
 };

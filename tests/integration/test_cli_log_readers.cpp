@@ -9,7 +9,9 @@
 #include <QtTest>
 
 namespace {
-QString fixture(const char* name) { return QStringLiteral(COSCOPE_SOURCE_DIR "/tests/data/logs/") + QLatin1String(name); }
+QString fixture(const char* name) {
+    return QStringLiteral(COSCOPE_SOURCE_DIR "/tests/data/logs/") + QLatin1String(name);
+}
 QByteArray slurp(const QString& path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
@@ -22,12 +24,14 @@ class TestCliLogReaders : public QObject {
 
 private slots:
     void convertsEveryNewFormat() {
-        for (const char* name : {"busmaster_v3_hex_system.log", "busmaster_v2_dec_absolute.log", "ixxat_minimon_v3.csv",
-                                 "ixxat_cananalyser.trc", "savvycan_gvret_v2.csv", "savvycan_gvret_v1.csv", "kvaser_canking.txt"}) {
+        for (const char* name :
+             {"busmaster_v3_hex_system.log", "busmaster_v2_dec_absolute.log", "ixxat_minimon_v3.csv",
+              "ixxat_cananalyser.trc", "savvycan_gvret_v2.csv", "savvycan_gvret_v1.csv", "kvaser_canking.txt"}) {
             const QString out = dir_.filePath(QLatin1String(name) + QStringLiteral(".out.log"));
             const Run r = cli({QStringLiteral("convert"), fixture(name), out});
             QVERIFY2(r.code == 0, qPrintable(QLatin1String(name) + u' ' + r.err));
-            QVERIFY2(r.err.contains(QStringLiteral(": warning:")), qPrintable(r.err));  // every fixture has a bad line, reported by number
+            QVERIFY2(r.err.contains(QStringLiteral(": warning:")),
+                     qPrintable(r.err));  // every fixture has a bad line, reported by number
             QVERIFY(slurp(out).count('\n') >= 2);
         }
     }
@@ -37,8 +41,10 @@ private slots:
         const QString in = dir_.filePath(QStringLiteral("in.log"));
         QFile f(in);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("(1700000000.000100) can0 181#0102\n(1700000000.010000) can1 1ABCDEF0#DEADBEEF\n(1700000000.020000) can0 701#R\n"
-                "(1700000000.030000) can0 123##1000102030405060708090A0B\n(1700000000.040000) can0 080#\n");
+        f.write(
+            "(1700000000.000100) can0 181#0102\n(1700000000.010000) can1 1ABCDEF0#DEADBEEF\n(1700000000.020000) can0 "
+            "701#R\n"
+            "(1700000000.030000) can0 123##1000102030405060708090A0B\n(1700000000.040000) can0 080#\n");
         f.close();
         const QString csv = dir_.filePath(QStringLiteral("mid.csv")), back = dir_.filePath(QStringLiteral("back.log"));
         QCOMPARE(cli({QStringLiteral("convert"), in, csv}).code, 0);

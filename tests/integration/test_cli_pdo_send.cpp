@@ -15,9 +15,10 @@ class TestCliPdoSend : public QObject {
     Q_OBJECT
 private slots:
     void composesAndEndsDisabled() {
-        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO1"), QStringLiteral("6040=0x000F"),
-                           QStringLiteral("6060=3"), QStringLiteral("607A=3E8h"), QStringLiteral("--every"), QStringLiteral("20ms"), QStringLiteral("--duration"),
-                           QStringLiteral("0.3"), QStringLiteral("--yes")});
+        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"),
+                           QStringLiteral("RPDO1"), QStringLiteral("6040=0x000F"), QStringLiteral("6060=3"),
+                           QStringLiteral("607A=3E8h"), QStringLiteral("--every"), QStringLiteral("20ms"),
+                           QStringLiteral("--duration"), QStringLiteral("0.3"), QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
         QVERIFY2(r.out.contains(QStringLiteral("frame 202#0F0003E8030000")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("Disable voltage")), qPrintable(r.out));
@@ -28,7 +29,9 @@ private slots:
 
     void motionAsksFirst() {
         QProcess p;
-        p.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO2"), QStringLiteral("60FF=100")});
+        p.start(QStringLiteral(COSCOPE_CLI_PATH),
+                {QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO2"),
+                 QStringLiteral("60FF=100")});
         QVERIFY(p.waitForStarted());
         p.write("no\n");
         p.closeWriteChannel();
@@ -40,9 +43,16 @@ private slots:
     }
 
     void usageErrors() {
-        QCOMPARE(cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("TPDO1"), QStringLiteral("6040=1")}).code, 2);
-        QCOMPARE(cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO1"), QStringLiteral("6040")}).code, 2);
-        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO1"), QStringLiteral("6041=1"), QStringLiteral("--yes")});
+        QCOMPARE(cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("TPDO1"),
+                      QStringLiteral("6040=1")})
+                     .code,
+                 2);
+        QCOMPARE(cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"), QStringLiteral("RPDO1"),
+                      QStringLiteral("6040")})
+                     .code,
+                 2);
+        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("send"), kBus, QStringLiteral("2"),
+                           QStringLiteral("RPDO1"), QStringLiteral("6041=1"), QStringLiteral("--yes")});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains(QStringLiteral("not mapped")), qPrintable(r.err));
     }

@@ -43,24 +43,34 @@ private slots:
         QVERIFY(help.out.contains(QStringLiteral("1F50h")));
         QVERIFY(help.out.contains(QStringLiteral("--segmented")));
         QCOMPARE(cli({QStringLiteral("program"), bus_, QStringLiteral("3")}).code, 2);
-        QCOMPARE(cli({QStringLiteral("program"), bus_, QStringLiteral("3"), QStringLiteral("x"), QStringLiteral("--block"), QStringLiteral("--segmented")}).code, 2);
-        QCOMPARE(cli({QStringLiteral("program"), QStringLiteral("make-image"), QStringLiteral("a"), QStringLiteral("b")}).code, 2);  // no --version
+        QCOMPARE(cli({QStringLiteral("program"), bus_, QStringLiteral("3"), QStringLiteral("x"),
+                      QStringLiteral("--block"), QStringLiteral("--segmented")})
+                     .code,
+                 2);
+        QCOMPARE(
+            cli({QStringLiteral("program"), QStringLiteral("make-image"), QStringLiteral("a"), QStringLiteral("b")})
+                .code,
+            2);  // no --version
     }
 
     void makeImageMatchesThePythonRecipe() {
         QByteArray payload;
         for (int i = 0; i < 5000; ++i) payload.append(static_cast<char>(i * 13));
-        const QString in = writeFile(QStringLiteral("app.bin"), payload), out = dir_.filePath(QStringLiteral("app.img"));
-        const auto r = cli({QStringLiteral("program"), QStringLiteral("make-image"), in, out, QStringLiteral("--version"), QStringLiteral("5.0")});
+        const QString in = writeFile(QStringLiteral("app.bin"), payload),
+                      out = dir_.filePath(QStringLiteral("app.img"));
+        const auto r = cli({QStringLiteral("program"), QStringLiteral("make-image"), in, out,
+                            QStringLiteral("--version"), QStringLiteral("5.0")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const QString py = pythonWithCan(QStringLiteral("zlib"));
         if (py.isEmpty()) QSKIP("no python3");
         const QString recipe = dir_.filePath(QStringLiteral("py.img"));
         QProcess p;
-        p.start(py, {QStringLiteral("-c"), QStringLiteral("import struct, zlib, sys\n"
-                                                           "payload = open(sys.argv[1], 'rb').read()\n"
-                                                           "head = b'CSPI' + struct.pack('<II16sI', len(payload), zlib.crc32(payload), b'5.0', 0)\n"
-                                                           "open(sys.argv[2], 'wb').write(head + payload)\n"),
+        p.start(py, {QStringLiteral("-c"),
+                     QStringLiteral(
+                         "import struct, zlib, sys\n"
+                         "payload = open(sys.argv[1], 'rb').read()\n"
+                         "head = b'CSPI' + struct.pack('<II16sI', len(payload), zlib.crc32(payload), b'5.0', 0)\n"
+                         "open(sys.argv[2], 'wb').write(head + payload)\n"),
                      in, recipe});
         QVERIFY(p.waitForFinished(20000));
         QCOMPARE(p.exitCode(), 0);
@@ -80,8 +90,12 @@ private slots:
     void downloadsAndStarts() {
         QByteArray payload(256 * 1024, Qt::Uninitialized);
         for (qsizetype i = 0; i < payload.size(); ++i) payload[i] = static_cast<char>(i ^ (i >> 8));
-        const QString in = writeFile(QStringLiteral("big.bin"), payload), img = dir_.filePath(QStringLiteral("big.img"));
-        QCOMPARE(cli({QStringLiteral("program"), QStringLiteral("make-image"), in, img, QStringLiteral("--version"), QStringLiteral("6.0.1")}).code, 0);
+        const QString in = writeFile(QStringLiteral("big.bin"), payload),
+                      img = dir_.filePath(QStringLiteral("big.img"));
+        QCOMPARE(cli({QStringLiteral("program"), QStringLiteral("make-image"), in, img, QStringLiteral("--version"),
+                      QStringLiteral("6.0.1")})
+                     .code,
+                 0);
         const auto r = cli({QStringLiteral("program"), bus_, QStringLiteral("3"), img, QStringLiteral("--yes")}, 60000);
         QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
         QVERIFY2(r.out.contains(QStringLiteral("100Ah \"6.0.1\"")), qPrintable(r.out));
@@ -92,7 +106,9 @@ private slots:
         qInfo("%s", qPrintable(r.out.trimmed().section(u'\n', -1)));
 
         const QString small = dir_.filePath(QStringLiteral("app.img"));
-        const auto s = cli({QStringLiteral("program"), bus_, QStringLiteral("3"), small, QStringLiteral("--yes"), QStringLiteral("--segmented")}, 60000);
+        const auto s = cli({QStringLiteral("program"), bus_, QStringLiteral("3"), small, QStringLiteral("--yes"),
+                            QStringLiteral("--segmented")},
+                           60000);
         QVERIFY2(s.code == 0, qPrintable(s.out + s.err));
         QVERIFY2(s.out.contains(QStringLiteral("-> 5.0")), qPrintable(s.out));
     }
@@ -105,7 +121,8 @@ private slots:
         QVERIFY2(r.err.contains(QStringLiteral("08000020")), qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral("nothing claimed")), qPrintable(r.err));
         // The drive says why in 1F57h: data format unknown (2 << 1).
-        const auto st = cli({QStringLiteral("sdo"), QStringLiteral("read"), bus_, QStringLiteral("3"), QStringLiteral("1F57:01")});
+        const auto st =
+            cli({QStringLiteral("sdo"), QStringLiteral("read"), bus_, QStringLiteral("3"), QStringLiteral("1F57:01")});
         QVERIFY2(st.code == 0, qPrintable(st.err));
         QVERIFY2(st.out.contains(QStringLiteral("04 00 00 00")), qPrintable(st.out));
     }

@@ -49,8 +49,9 @@ class TestCliRecordFormats : public QObject {
     QStringList expected_;
 
     Run record(const QString& out) {
-        return cli({QStringLiteral("record"), QStringLiteral("replay://%1?speed=0").arg(source_), out, QStringLiteral("--count"), QString::number(kFrames),
-                    QStringLiteral("--duration"), QStringLiteral("30")});
+        return cli({QStringLiteral("record"), QStringLiteral("replay://%1?speed=0").arg(source_), out,
+                    QStringLiteral("--count"), QString::number(kFrames), QStringLiteral("--duration"),
+                    QStringLiteral("30")});
     }
 
 private slots:
@@ -101,9 +102,12 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
         QStringList lines = QString::fromUtf8(f.readAll()).split(u'\n', Qt::SkipEmptyParts);
         QVERIFY(!lines.isEmpty());
-        QVERIFY2(lines.takeFirst().startsWith(QStringLiteral("number,time,bus,id,ext,rtr,fd,dir,len,data")), qPrintable(lines.join(u'\n')));
+        QVERIFY2(lines.takeFirst().startsWith(QStringLiteral("number,time,bus,id,ext,rtr,fd,dir,len,data")),
+                 qPrintable(lines.join(u'\n')));
         QCOMPARE(lines.size(), kFrames);
-        QVERIFY2(lines[2].contains(QStringLiteral(",0x12345678,1,0,0,")) && lines[2].contains(QStringLiteral(",4,DE AD BE EF")), qPrintable(lines[2]));
+        QVERIFY2(lines[2].contains(QStringLiteral(",0x12345678,1,0,0,")) &&
+                     lines[2].contains(QStringLiteral(",4,DE AD BE EF")),
+                 qPrintable(lines[2]));
         QVERIFY2(lines[4].contains(QStringLiteral(",0x601,0,1,0,")), qPrintable(lines[4]));
     }
 
@@ -114,7 +118,8 @@ private slots:
         const Run r = record(out);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QProcess ts;
-        ts.start(tshark, {QStringLiteral("-r"), out, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("can.id")});
+        ts.start(tshark, {QStringLiteral("-r"), out, QStringLiteral("-T"), QStringLiteral("fields"),
+                          QStringLiteral("-e"), QStringLiteral("can.id")});
         QVERIFY(ts.waitForFinished(60000));
         QCOMPARE(ts.exitCode(), 0);
         const QStringList ids = QString::fromUtf8(ts.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
@@ -130,9 +135,11 @@ private slots:
         const Run r = record(out);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QProcess p;
-        p.start(py, {QStringLiteral("-c"), QStringLiteral("import sys, can\n"
-                                                          "for m in can.BLFReader(sys.argv[1]):\n"
-                                                          "    print('%X%s%s#%s' % (m.arbitration_id, 'x' if m.is_extended_id else '', 'R' if m.is_remote_frame else '', bytes(m.data).hex()))"),
+        p.start(py, {QStringLiteral("-c"),
+                     QStringLiteral("import sys, can\n"
+                                    "for m in can.BLFReader(sys.argv[1]):\n"
+                                    "    print('%X%s%s#%s' % (m.arbitration_id, 'x' if m.is_extended_id else '', 'R' "
+                                    "if m.is_remote_frame else '', bytes(m.data).hex()))"),
                      out});
         QVERIFY(p.waitForFinished(60000));
         QVERIFY2(p.exitCode() == 0, qPrintable(QString::fromUtf8(p.readAllStandardError())));
@@ -140,8 +147,11 @@ private slots:
         QStringList want;
         for (QString e : expected_) {
             const QString id = e.section(u'#', 0, 0).remove(u'x').remove(u'R');
-            want << QStringLiteral("%1%2%3#%4").arg(QString::number(id.toUInt(nullptr, 16), 16).toUpper(), e.section(u'#', 0, 0).contains(u'x') ? QStringLiteral("x") : QString(),
-                                                  e.section(u'#', 0, 0).contains(u'R') ? QStringLiteral("R") : QString(), e.section(u'#', 1));
+            want << QStringLiteral("%1%2%3#%4")
+                        .arg(QString::number(id.toUInt(nullptr, 16), 16).toUpper(),
+                             e.section(u'#', 0, 0).contains(u'x') ? QStringLiteral("x") : QString(),
+                             e.section(u'#', 0, 0).contains(u'R') ? QStringLiteral("R") : QString(),
+                             e.section(u'#', 1));
         }
         QCOMPARE(got, want);
     }
@@ -151,7 +161,8 @@ private slots:
         const Run r = record(out);
         QCOMPARE(r.code, 2);
         QCOMPARE(r.err.count(u'\n'), 1);
-        QVERIFY2(r.err.contains(QStringLiteral("rec.xyz")) && r.err.contains(QStringLiteral(".pcapng")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("rec.xyz")) && r.err.contains(QStringLiteral(".pcapng")),
+                 qPrintable(r.err));
         QVERIFY(!QFile::exists(out));
     }
 };

@@ -120,7 +120,9 @@ private slots:
         QVERIFY(script.open(QIODevice::WriteOnly));
         script.write(kServer);
         script.close();
-        QVERIFY2(startPythonPeer(peer_, py, script.fileName(), {QStringLiteral("127.0.0.1"), port, QStringLiteral("43")}, &peerOut_), qPrintable(peerOut_));
+        QVERIFY2(startPythonPeer(peer_, py, script.fileName(),
+                                 {QStringLiteral("127.0.0.1"), port, QStringLiteral("43")}, &peerOut_),
+                 qPrintable(peerOut_));
         QTest::qWait(300);  // python-can's socketcand client takes frames 50 ms after "< ok >"
     }
 
@@ -153,7 +155,9 @@ private slots:
         const Run r = read(QStringLiteral("1009:00"), {QStringLiteral("--block")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("(VISIBLE_STRING) = HW rev 1.2\n")), qPrintable(r.out));
-        QTRY_VERIFY_WITH_TIMEOUT((peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput())).contains(QStringLiteral("BLOCK END 1009")), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput())).contains(QStringLiteral("BLOCK END 1009")),
+            5000);
     }
 
     // The server aborts in the middle of a sub-block: the read fails at once with its code.
@@ -161,9 +165,11 @@ private slots:
         QElapsedTimer t;
         t.start();
         // A timeout far longer than any start-up of the command (a sanitizer build, a loaded machine).
-        const Run r = read(QStringLiteral("100A:00"), {QStringLiteral("--block"), QStringLiteral("--timeout"), QStringLiteral("60000")});
+        const Run r = read(QStringLiteral("100A:00"),
+                           {QStringLiteral("--block"), QStringLiteral("--timeout"), QStringLiteral("60000")});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("aborted 100A:00")) && r.err.contains(QStringLiteral("0x08000000")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("aborted 100A:00")) && r.err.contains(QStringLiteral("0x08000000")),
+                 qPrintable(r.err));
         QVERIFY2(t.elapsed() < 40000, qPrintable(QString::number(t.elapsed())));  // not by the timeout
     }
 
@@ -174,9 +180,12 @@ private slots:
         t.start();
         const Run r = read(QStringLiteral("100A:00"), {QStringLiteral("--timeout"), QStringLiteral("500")});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("did not answer")) && r.err.contains(QStringLiteral("0x05040000")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("did not answer")) && r.err.contains(QStringLiteral("0x05040000")),
+                 qPrintable(r.err));
         QVERIFY2(t.elapsed() < 15000, qPrintable(QString::number(t.elapsed())));
-        QTRY_VERIFY_WITH_TIMEOUT((peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput())).contains(QStringLiteral("ABORT FROM CLIENT 100A:00 05040000")), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput()))
+                                     .contains(QStringLiteral("ABORT FROM CLIENT 100A:00 05040000")),
+                                 5000);
     }
 };
 

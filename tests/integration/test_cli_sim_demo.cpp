@@ -22,7 +22,9 @@ std::vector<Frame> frames(const QString& candump) {
     std::vector<Frame> out;
     for (const QString& line : candump.split(u'\n', Qt::SkipEmptyParts)) {
         const auto m = re.match(line);
-        if (m.hasMatch()) out.push_back({m.captured(1).toDouble(), m.captured(2).toUInt(nullptr, 16), QByteArray::fromHex(m.captured(3).toLatin1())});
+        if (m.hasMatch())
+            out.push_back({m.captured(1).toDouble(), m.captured(2).toUInt(nullptr, 16),
+                           QByteArray::fromHex(m.captured(3).toLatin1())});
     }
     return out;
 }
@@ -38,7 +40,8 @@ class TestCliSimDemo : public QObject {
     Q_OBJECT
 private slots:
     void demoRunsTheNetwork() {
-        const Run r = cli({QStringLiteral("listen"), QStringLiteral("sim://?demo=1"), QStringLiteral("--duration"), QStringLiteral("3")});
+        const Run r = cli({QStringLiteral("listen"), QStringLiteral("sim://?demo=1"), QStringLiteral("--duration"),
+                           QStringLiteral("3")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const std::vector<Frame> f = frames(r.out);
         std::map<uint32_t, int> count;
@@ -54,19 +57,23 @@ private slots:
             QVERIFY2(count[hb] >= 2, qPrintable(QStringLiteral("%1h: %2 heartbeats").arg(hb, 0, 16).arg(count[hb])));
             QCOMPARE(last[hb], QByteArray::fromHex("05"));
         }
-        QVERIFY2(count[0x000] == 1 && count[0x080] >= 150, qPrintable(QStringLiteral("NMT %1, SYNC %2").arg(count[0x000]).arg(count[0x080])));
+        QVERIFY2(count[0x000] == 1 && count[0x080] >= 150,
+                 qPrintable(QStringLiteral("NMT %1, SYNC %2").arg(count[0x000]).arg(count[0x080])));
         // Every SDO write confirmed (60h), none aborted (80h).
         QVERIFY(count[0x602] >= 9);
         QCOMPARE(count[0x582], count[0x602]);
         for (const Frame& x : f)
-            if (x.id == 0x581 || x.id == 0x582 || x.id == 0x583) QVERIFY2(uint8_t(x.data[0]) == 0x60, x.data.toHex().constData());
+            if (x.id == 0x581 || x.id == 0x582 || x.id == 0x583)
+                QVERIFY2(uint8_t(x.data[0]) == 0x60, x.data.toHex().constData());
         // The AIMOTOR's TPDOs follow SYNC and show it turning.
-        QVERIFY2(count[0x182] >= 100 && count[0x282] >= 100, qPrintable(QStringLiteral("%1 / %2").arg(count[0x182]).arg(count[0x282])));
+        QVERIFY2(count[0x182] >= 100 && count[0x282] >= 100,
+                 qPrintable(QStringLiteral("%1 / %2").arg(count[0x182]).arg(count[0x282])));
         QVERIFY2(fastest >= 2000, qPrintable(QString::number(fastest)));
     }
 
     void plainSimKeepsTheDefaults() {
-        const Run r = cli({QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--duration"), QStringLiteral("1")});
+        const Run r = cli(
+            {QStringLiteral("listen"), QStringLiteral("sim://"), QStringLiteral("--duration"), QStringLiteral("1")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         const std::vector<Frame> f = frames(r.out);
         QCOMPARE(f.size(), size_t(3));  // three boot-ups and nothing else

@@ -14,9 +14,11 @@ class TestCliSocketcanErrors : public QObject {
     Q_OBJECT
 private slots:
     void missingInterfaceIsExplained() {
-        if (!coscope::qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
+        if (!coscope::qtCanPlugins().contains(QStringLiteral("socketcan")))
+            QSKIP("Qt's socketcan plugin is not installed");
         qputenv("COSCOPE_IP", "/nonexistent/ip");  // so the advice does not depend on this machine's interfaces
-        const Run r = cli({QStringLiteral("listen"), QStringLiteral("socketcan://nosuchcan9"), QStringLiteral("--duration"), QStringLiteral("2")});
+        const Run r = cli({QStringLiteral("listen"), QStringLiteral("socketcan://nosuchcan9"),
+                           QStringLiteral("--duration"), QStringLiteral("2")});
         qunsetenv("COSCOPE_IP");
         QCOMPARE(r.code, 1);
         const QString last = r.err.trimmed().section(u'\n', -1);
@@ -35,22 +37,26 @@ private slots:
         QFile f(ip);
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write(QStringLiteral("#!/bin/sh\nif [ \"$1\" = -details ]; then\n"
-                               "echo '[{\"ifname\":\"can1\",\"flags\":[\"UP\"],\"link_type\":\"can\",\"linkinfo\":{\"info_kind\":\"can\",\"info_data\":{\"bittiming\":{\"bitrate\":500000}}}}]'\n"
+                               "echo "
+                               "'[{\"ifname\":\"can1\",\"flags\":[\"UP\"],\"link_type\":\"can\",\"linkinfo\":{\"info_"
+                               "kind\":\"can\",\"info_data\":{\"bittiming\":{\"bitrate\":500000}}}}]'\n"
                                "exit 0\nfi\necho \"$*\" >> '%1'\n")
                     .arg(calls)
                     .toUtf8());
         f.close();
         f.setPermissions(f.permissions() | QFileDevice::ExeOwner);
         qputenv("COSCOPE_IP", ip.toLocal8Bit());
-        const Run r = cli({QStringLiteral("buses"), QStringLiteral("--bring-up"), QStringLiteral("can1"), QStringLiteral("--bitrate"), QStringLiteral("250000"),
-                           QStringLiteral("--data-bitrate"), QStringLiteral("2000000")});
+        const Run r = cli({QStringLiteral("buses"), QStringLiteral("--bring-up"), QStringLiteral("can1"),
+                           QStringLiteral("--bitrate"), QStringLiteral("250000"), QStringLiteral("--data-bitrate"),
+                           QStringLiteral("2000000")});
         const Run missing = cli({QStringLiteral("buses"), QStringLiteral("--bring-up"), QStringLiteral("can7")});
         qunsetenv("COSCOPE_IP");
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QFile log(calls);
         QVERIFY(log.open(QIODevice::ReadOnly));
         QCOMPARE(QString::fromUtf8(log.readAll()),
-                 QStringLiteral("link set can1 down\nlink set can1 up type can bitrate 250000 dbitrate 2000000 fd on restart-ms 100\n"));
+                 QStringLiteral("link set can1 down\nlink set can1 up type can bitrate 250000 dbitrate 2000000 fd on "
+                                "restart-ms 100\n"));
         QCOMPARE(missing.code, 1);
         QVERIFY2(missing.err.contains(QStringLiteral("no CAN interface named 'can7'")), qPrintable(missing.err));
     }
@@ -62,16 +68,21 @@ private slots:
         const QString log = dir.filePath(QStringLiteral("busoff.log"));
         QFile f(log);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("(1700000000.000000) can0 701#05\n(1700000000.100000) can0 20000040#0000000000000000\n(1700000000.200000) can0 702#05\n");
+        f.write(
+            "(1700000000.000000) can0 701#05\n(1700000000.100000) can0 20000040#0000000000000000\n(1700000000.200000) "
+            "can0 702#05\n");
         f.close();
         const QString url = QStringLiteral("replay://%1?speed=0").arg(log);
         Run r = cli({QStringLiteral("listen"), url});
         QCOMPARE(r.code, 0);
         QCOMPARE(r.out.count(u'\n'), 3);  // nothing lost
-        QVERIFY2(r.err.contains(QStringLiteral("is bus-off")) && r.err.contains(QStringLiteral("--restart-on-bus-off")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("is bus-off")) && r.err.contains(QStringLiteral("--restart-on-bus-off")),
+                 qPrintable(r.err));
         r = cli({QStringLiteral("listen"), url, QStringLiteral("--restart-on-bus-off")});
         QCOMPARE(r.code, 0);
-        QVERIFY2(r.err.contains(QStringLiteral("could not be restarted")) && r.err.contains(QStringLiteral("cannot restart")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("could not be restarted")) &&
+                     r.err.contains(QStringLiteral("cannot restart")),
+                 qPrintable(r.err));
     }
 };
 

@@ -107,7 +107,9 @@ private slots:
         QVERIFY(script.open(QIODevice::WriteOnly));
         script.write(kServer);
         script.close();
-        QVERIFY2(startPythonPeer(peer_, py, script.fileName(), {QStringLiteral("127.0.0.1"), port, QStringLiteral("42")}, &peerOut_), qPrintable(peerOut_));
+        QVERIFY2(startPythonPeer(peer_, py, script.fileName(),
+                                 {QStringLiteral("127.0.0.1"), port, QStringLiteral("42")}, &peerOut_),
+                 qPrintable(peerOut_));
         QTest::qWait(300);  // python-can's socketcand client takes frames 50 ms after "< ok >"
     }
 
@@ -123,15 +125,19 @@ private slots:
     // CiA 301 7.5.2.24: 1017h producer heartbeat time is UNSIGNED16: the write is an expedited
     // download of 2 bytes (command 2Bh: e=1, s=1, n=2), and it reads back as 1000.
     void heartbeatWriteIsUnsigned16() {
-        Run r = sdo({QStringLiteral("write"), bus_, QStringLiteral("42"), QStringLiteral("1017:00"), QStringLiteral("1000")});
+        Run r = sdo(
+            {QStringLiteral("write"), bus_, QStringLiteral("42"), QStringLiteral("1017:00"), QStringLiteral("1000")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("(UNSIGNED16)")), qPrintable(r.out));
-        QTRY_VERIFY_WITH_TIMEOUT((peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput())).contains(QStringLiteral("DOWNLOAD 1017:00 2b e803")), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((peerOut_ += QString::fromUtf8(peer_.readAllStandardOutput()))
+                                     .contains(QStringLiteral("DOWNLOAD 1017:00 2b e803")),
+                                 5000);
         r = sdo({QStringLiteral("read"), bus_, QStringLiteral("42"), QStringLiteral("1017:00")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("(UNSIGNED16) = 1000")), qPrintable(r.out));
         // 70000 does not fit UNSIGNED16: refused before anything is sent.
-        r = sdo({QStringLiteral("write"), bus_, QStringLiteral("42"), QStringLiteral("1017:00"), QStringLiteral("70000")});
+        r = sdo(
+            {QStringLiteral("write"), bus_, QStringLiteral("42"), QStringLiteral("1017:00"), QStringLiteral("70000")});
         QCOMPARE(r.code, 1);
     }
 
@@ -146,7 +152,8 @@ private slots:
         QVERIFY2(r.out.contains(QStringLiteral("(INTEGER8) = -3")), qPrintable(r.out));
         r = sdo({QStringLiteral("read"), bus_, QStringLiteral("42"), QStringLiteral("1018:01")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("(UNSIGNED32)")) && r.out.contains(QStringLiteral("0x12345678")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("(UNSIGNED32)")) && r.out.contains(QStringLiteral("0x12345678")),
+                 qPrintable(r.out));
         // TPDO communication parameter (CiA 301 7.5.2.37) of a PDO beyond the fourth: sub 2
         // transmission type UNSIGNED8; the peer has no TPDO9, so it aborts (exit 1, one line).
         r = sdo({QStringLiteral("read"), bus_, QStringLiteral("42"), QStringLiteral("1808:02")});
@@ -157,10 +164,14 @@ private slots:
     void pdoShowNamesMappedObjects() {
         const Run r = cli({QStringLiteral("pdo"), QStringLiteral("show"), bus_, QStringLiteral("42")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("TPDO1  COB-ID 0x1AA")) && r.out.contains(QStringLiteral("type FEh (event, manufacturer)")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("TPDO1  COB-ID 0x1AA")) &&
+                     r.out.contains(QStringLiteral("type FEh (event, manufacturer)")),
+                 qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("6041:00/16  Statusword (UNSIGNED16)")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("6064:00/32  Position actual value (INTEGER32)")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("RPDO1  COB-ID 0x22A")) && r.out.contains(QStringLiteral("6040:00/16  Controlword (UNSIGNED16)")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("RPDO1  COB-ID 0x22A")) &&
+                     r.out.contains(QStringLiteral("6040:00/16  Controlword (UNSIGNED16)")),
+                 qPrintable(r.out));
     }
 
     // CiA 301 §7.5.2.9-11: 1008h, 1009h and 100Ah are optional. The peer has only 1008h: the
@@ -169,7 +180,9 @@ private slots:
         const Run r = cli({QStringLiteral("scan"), bus_, QStringLiteral("--nodes"), QStringLiteral("40-44")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("1 node(s) found")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("device name \"Peer drive 42\", hardware version not present, software version not present")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral(
+                     "device name \"Peer drive 42\", hardware version not present, software version not present")),
+                 qPrintable(r.out));
         QVERIFY2(!r.out.contains(u'['), qPrintable(r.out));  // no "[error]" on the node's line
     }
 

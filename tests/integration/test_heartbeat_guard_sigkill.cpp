@@ -71,7 +71,8 @@ bus.shutdown()
 )PY";
 
 int field(const QString& out, const QString& key) {
-    const auto m = QRegularExpression(QStringLiteral("^%1 (-?\\d+)$").arg(key), QRegularExpression::MultilineOption).match(out);
+    const auto m =
+        QRegularExpression(QStringLiteral("^%1 (-?\\d+)$").arg(key), QRegularExpression::MultilineOption).match(out);
     return m.hasMatch() ? m.captured(1).toInt() : INT_MIN;
 }
 
@@ -111,10 +112,13 @@ private slots:
         if (py.isEmpty()) QSKIP("python3-can is not installed (Debian package python3-can)");
 
         QProcess sim;
-        sim.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sim"), QStringLiteral("--nodes"), nodes, QStringLiteral("--listen"), QStringLiteral("socketcand://127.0.0.1:0")});
+        sim.start(QStringLiteral(COSCOPE_CLI_PATH),
+                  {QStringLiteral("sim"), QStringLiteral("--nodes"), nodes, QStringLiteral("--listen"),
+                   QStringLiteral("socketcand://127.0.0.1:0")});
         QVERIFY2(sim.waitForStarted(5000), qPrintable(sim.errorString()));
         QString banner;
-        QVERIFY2(readUntil(sim, &banner, QStringLiteral("\n"), 15000), qPrintable(banner + QString::fromUtf8(sim.readAllStandardError())));
+        QVERIFY2(readUntil(sim, &banner, QStringLiteral("\n"), 15000),
+                 qPrintable(banner + QString::fromUtf8(sim.readAllStandardError())));
         const auto m = QRegularExpression(QStringLiteral("socketcand://127\\.0\\.0\\.1:(\\d+)/")).match(banner);
         QVERIFY2(m.hasMatch(), qPrintable(banner));
         const QString port = m.captured(1);
@@ -127,16 +131,21 @@ private slots:
         QProcess observer;
         observer.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QString::number(node)});
         QString seen;
-        QVERIFY2(readUntil(observer, &seen, QStringLiteral("READY"), 20000), qPrintable(seen + QString::fromUtf8(observer.readAllStandardError())));
+        QVERIFY2(readUntil(observer, &seen, QStringLiteral("READY"), 20000),
+                 qPrintable(seen + QString::fromUtf8(observer.readAllStandardError())));
 
         QProcess jog;
-        jog.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("ds402"), QStringLiteral("jog"), QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port), QString::number(node),
-                                                     QString::number(velocity), QStringLiteral("--for"), QStringLiteral("20000"), QStringLiteral("--yes"),
-                                                     QStringLiteral("--watchdog"), QStringLiteral("--heartbeat-ms"), QStringLiteral("100")});
+        jog.start(QStringLiteral(COSCOPE_CLI_PATH),
+                  {QStringLiteral("ds402"), QStringLiteral("jog"),
+                   QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port), QString::number(node),
+                   QString::number(velocity), QStringLiteral("--for"), QStringLiteral("20000"), QStringLiteral("--yes"),
+                   QStringLiteral("--watchdog"), QStringLiteral("--heartbeat-ms"), QStringLiteral("100")});
         QString jogOut;
-        QVERIFY2(readUntil(jog, &jogOut, QStringLiteral("operation enabled"), 15000), qPrintable(jogOut + QString::fromUtf8(jog.readAllStandardError())));
+        QVERIFY2(readUntil(jog, &jogOut, QStringLiteral("operation enabled"), 15000),
+                 qPrintable(jogOut + QString::fromUtf8(jog.readAllStandardError())));
         QVERIFY2(jogOut.contains(QStringLiteral("1016h:01 = 0x007F012C")), qPrintable(jogOut));
-        QVERIFY2(jogOut.contains(QStringLiteral("watchdog: node %1 watches CoScope's heartbeat (node 127)").arg(node)), qPrintable(jogOut));
+        QVERIFY2(jogOut.contains(QStringLiteral("watchdog: node %1 watches CoScope's heartbeat (node 127)").arg(node)),
+                 qPrintable(jogOut));
         QTest::qWait(800);  // turning
         QCOMPARE(jog.state(), QProcess::Running);
         jog.kill();  // SIGKILL: nothing more comes from coscope-cli
@@ -155,10 +164,16 @@ private slots:
         QVERIFY2(lastHb > -300 && lastHb <= 50, qPrintable(out));
         // Right after the kill the drive still turns: it waits for its consumer time.
         QVERIFY2(field(out, QStringLiteral("SAMPLES")) > 10, qPrintable(out));
-        const auto first = QRegularExpression(QStringLiteral("^FIRST ([0-9A-F]{4}) (-?\\d+)$"), QRegularExpression::MultilineOption).match(out);
-        QVERIFY2(first.hasMatch() && (first.captured(1).toUInt(nullptr, 16) & 0x6F) == 0x27 && first.captured(2).toInt() > 0, qPrintable(out));
+        const auto first =
+            QRegularExpression(QStringLiteral("^FIRST ([0-9A-F]{4}) (-?\\d+)$"), QRegularExpression::MultilineOption)
+                .match(out);
+        QVERIFY2(
+            first.hasMatch() && (first.captured(1).toUInt(nullptr, 16) & 0x6F) == 0x27 && first.captured(2).toInt() > 0,
+            qPrintable(out));
         // EMCY 8130h about 300 ms after the last heartbeat (consumer time 3 x 100 ms).
-        const auto e = QRegularExpression(QStringLiteral("^EMCY 8130 ([0-9A-F]{4}) (-?\\d+)$"), QRegularExpression::MultilineOption).match(out);
+        const auto e = QRegularExpression(QStringLiteral("^EMCY 8130 ([0-9A-F]{4}) (-?\\d+)$"),
+                                          QRegularExpression::MultilineOption)
+                           .match(out);
         QVERIFY2(e.hasMatch(), qPrintable(out));
         QCOMPARE(e.captured(1).toInt(nullptr, 16), vendorAlarm);
         const int emcyAfterHb = e.captured(2).toInt() - lastHb;
@@ -168,7 +183,9 @@ private slots:
         const int stopped = field(out, QStringLiteral("STOPPED"));
         QVERIFY2(left != INT_MIN && left < 2000, qPrintable(out));
         QVERIFY2(stopped != INT_MIN && stopped < 2000, qPrintable(out));
-        const auto fin = QRegularExpression(QStringLiteral("^FINAL ([0-9A-F]{4}) (-?\\d+)$"), QRegularExpression::MultilineOption).match(out);
+        const auto fin =
+            QRegularExpression(QStringLiteral("^FINAL ([0-9A-F]{4}) (-?\\d+)$"), QRegularExpression::MultilineOption)
+                .match(out);
         QVERIFY2(fin.hasMatch(), qPrintable(out));
         QVERIFY2((fin.captured(1).toUInt(nullptr, 16) & 0x6F) != 0x27 && fin.captured(2).toInt() == 0, qPrintable(out));
     }

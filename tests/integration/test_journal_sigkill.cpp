@@ -62,7 +62,8 @@ void checkWithTshark(const QString& path, size_t frames) {
         return;
     }
     QProcess t;
-    t.start(tshark, {QStringLiteral("-n"), QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("frame.number")});
+    t.start(tshark, {QStringLiteral("-n"), QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"),
+                     QStringLiteral("-e"), QStringLiteral("frame.number")});
     QVERIFY(t.waitForFinished(60000));
     const QString err = QString::fromUtf8(t.readAllStandardError());
     QVERIFY2(t.exitCode() == 0 || err.contains(QStringLiteral("cut short")), qPrintable(err));
@@ -78,7 +79,7 @@ void sendAndKill(FakeSocketcandServer& server, QProcess& p, const QString& path,
     QTest::qWait(1300);  // more than a flush interval (1 s)
     *sentBeforeKill = 2000;
     server.write(frames(2000, 2200));  // may or may not make it
-    p.kill();  // SIGKILL
+    p.kill();                          // SIGKILL
     QVERIFY(p.waitForFinished(5000));
     QCOMPARE(p.exitStatus(), QProcess::CrashExit);
 }
@@ -126,7 +127,9 @@ private slots:
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
         QCOMPARE(p.exitCode(), 1);
         const QString err = QString::fromUtf8(p.readAllStandardError());
-        QVERIFY2(err.contains(QStringLiteral("cannot write %1").arg(out)) && err.contains(QStringLiteral("No space left on device")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("cannot write %1").arg(out)) &&
+                     err.contains(QStringLiteral("No space left on device")),
+                 qPrintable(err));
         QVERIFY2(err.contains(QStringLiteral("frames kept")), qPrintable(err));
     }
 

@@ -40,7 +40,8 @@ class TestListenOnly : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() {
-        QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
+        QLoggingCategory::setFilterRules(
+            QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
         eds::installSimulatorDictionaries();
     }
 
@@ -102,10 +103,12 @@ private slots:
     }
 
     void cliSendRefuses() {
-        const Run r = cli({QStringLiteral("send"), QStringLiteral("sim://?listen-only=1"), QStringLiteral("123#11")}, 10000);
+        const Run r =
+            cli({QStringLiteral("send"), QStringLiteral("sim://?listen-only=1"), QStringLiteral("123#11")}, 10000);
         QCOMPARE(r.code, 1);
         const QString& err = r.err;
-        QVERIFY2(err.contains(QStringLiteral("coscope-cli send: ")) && err.contains(QStringLiteral("listen-only")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("coscope-cli send: ")) && err.contains(QStringLiteral("listen-only")),
+                 qPrintable(err));
     }
 };
 

@@ -31,7 +31,8 @@ class TestLostAdapter : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() {
-        QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
+        QLoggingCategory::setFilterRules(
+            QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
     }
 
     void socketcandServerKilledAndRestarted() {
@@ -130,8 +131,14 @@ private slots:
         p.terminate();  // SIGTERM: the CLI ends the recording cleanly
         QVERIFY(p.waitForFinished(5000));
         const QString err = QString::fromUtf8(p.readAllStandardError());
-        QVERIFY2(err.contains(QStringLiteral("coscope-cli record: bus lost (socketcand server at 127.0.0.1:%1 closed the connection); retrying").arg(port)), qPrintable(err));
-        QVERIFY2(err.contains(QRegularExpression(QStringLiteral("coscope-cli record: bus back after \\d+\\.\\d s"))), qPrintable(err));
+        QVERIFY2(
+            err.contains(
+                QStringLiteral(
+                    "coscope-cli record: bus lost (socketcand server at 127.0.0.1:%1 closed the connection); retrying")
+                    .arg(port)),
+            qPrintable(err));
+        QVERIFY2(err.contains(QRegularExpression(QStringLiteral("coscope-cli record: bus back after \\d+\\.\\d s"))),
+                 qPrintable(err));
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
@@ -178,8 +185,11 @@ private slots:
         if (!qtCanPlugins().contains(QStringLiteral("socketcan"))) QSKIP("Qt's socketcan plugin is not installed");
         const QString ifname = QStringLiteral("cslost%1").arg(QCoreApplication::applicationPid() % 1000);
         auto ip = [&](const QStringList& args) { return QProcess::execute(QStringLiteral("ip"), args) == 0; };
-        auto create = [&] { return ip({QStringLiteral("link"), QStringLiteral("add"), QStringLiteral("dev"), ifname, QStringLiteral("type"), QStringLiteral("vcan")}) &&
-                                   ip({QStringLiteral("link"), QStringLiteral("set"), ifname, QStringLiteral("up")}); };
+        auto create = [&] {
+            return ip({QStringLiteral("link"), QStringLiteral("add"), QStringLiteral("dev"), ifname,
+                       QStringLiteral("type"), QStringLiteral("vcan")}) &&
+                   ip({QStringLiteral("link"), QStringLiteral("set"), ifname, QStringLiteral("up")});
+        };
         if (!create()) QSKIP("cannot create a vcan interface here (needs the vcan module and CAP_NET_ADMIN)");
         auto cleanup = qScopeGuard([&] { ip({QStringLiteral("link"), QStringLiteral("del"), ifname}); });
         auto bus = openBus(QStringLiteral("socketcan://") + ifname);
@@ -222,7 +232,8 @@ private slots:
         std::vector<CanFrame> frames;
         for (int attempt = 0; attempt < 5 && frames.empty(); ++attempt) {
             QProcess sender;
-            sender.start(cli(), {QStringLiteral("send"), QStringLiteral("virtualcan://can0"), QStringLiteral("5A5#C0FFEE")});
+            sender.start(cli(),
+                         {QStringLiteral("send"), QStringLiteral("virtualcan://can0"), QStringLiteral("5A5#C0FFEE")});
             QVERIFY(sender.waitForFinished(10000));
             QVERIFY2(sender.exitCode() == 0, qPrintable(QString::fromUtf8(sender.readAllStandardError())));
             frames = readFrames(*bus, 1, 3000);

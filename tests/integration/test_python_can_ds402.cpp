@@ -196,16 +196,21 @@ private slots:
         QVERIFY2(out.contains(QStringLiteral("NODE 2 TPDO 182 type 1 RPDO 202 type 1 sync True")), qPrintable(out));
         QVERIFY2(!out.contains(QStringLiteral("NODE 2 mapped")), qPrintable(out));
         // Generic: event-driven TPDO1 with 6041h, sent once on entering OPERATIONAL.
-        QVERIFY2(out.contains(QStringLiteral("NODE 3 TPDO 183 type 255 RPDO 203 type 255 sync False")), qPrintable(out));
+        QVERIFY2(out.contains(QStringLiteral("NODE 3 TPDO 183 type 255 RPDO 203 type 255 sync False")),
+                 qPrintable(out));
         for (int node : {1, 2, 3}) {
             QVERIFY2(out.contains(QStringLiteral("NODE %1 first statusword").arg(node)), qPrintable(out));
-            QVERIFY2(QRegularExpression(QStringLiteral("NODE %1 REACHED: SWITCH ON DISABLED -> READY TO SWITCH ON -> SWITCHED ON -> "
-                                                       "OPERATION ENABLED\\n")
-                                            .arg(node))
+            QVERIFY2(QRegularExpression(
+                         QStringLiteral("NODE %1 REACHED: SWITCH ON DISABLED -> READY TO SWITCH ON -> SWITCHED ON -> "
+                                        "OPERATION ENABLED\\n")
+                             .arg(node))
                          .match(out)
                          .hasMatch(),
                      qPrintable(out));
-            QVERIFY2(QRegularExpression(QStringLiteral("NODE %1 REACHED: OPERATION ENABLED -> SWITCH ON DISABLED\\n").arg(node)).match(out).hasMatch(),
+            QVERIFY2(QRegularExpression(
+                         QStringLiteral("NODE %1 REACHED: OPERATION ENABLED -> SWITCH ON DISABLED\\n").arg(node))
+                         .match(out)
+                         .hasMatch(),
                      qPrintable(out));
         }
     }

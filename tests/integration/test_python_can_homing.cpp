@@ -144,7 +144,8 @@ private slots:
         // the position cleared to zero.
         QVERIFY2(out.contains(QStringLiteral("HOMED 2 method 35 sw=9637 pos=0")), qPrintable(out));
         // Generic: out to the negative limit switch (-1 rev = -10000 inc) and home there.
-        const auto h = QRegularExpression(QStringLiteral("HOMED 3 method 17 lowest=(-?\\d+) pos=0 sw=(\\w+)")).match(out);
+        const auto h =
+            QRegularExpression(QStringLiteral("HOMED 3 method 17 lowest=(-?\\d+) pos=0 sw=(\\w+)")).match(out);
         QVERIFY2(h.hasMatch(), qPrintable(out));
         QVERIFY2(h.captured(1).toInt() <= -9000, qPrintable(out));
         QVERIFY2(out.contains(QStringLiteral("MOVED 3 absolute 1000 pos=1000")), qPrintable(out));

@@ -85,7 +85,10 @@ private slots:
         // 1018h from the bundled dictionaries: Delta vendor 000001DDh product 00006000h
         // (extract-delta §9); generic CiA 402 product 00000402h.
         QVERIFY2(out.contains(QStringLiteral("IDENTITY 1 vendor 0x000001DD product 0x00006000")), qPrintable(out));
-        QVERIFY2(QRegularExpression(QStringLiteral("IDENTITY 2 vendor 0x[0-9A-F]{8} product 0x[0-9A-F]{8}")).match(out).hasMatch(), qPrintable(out));
+        QVERIFY2(QRegularExpression(QStringLiteral("IDENTITY 2 vendor 0x[0-9A-F]{8} product 0x[0-9A-F]{8}"))
+                     .match(out)
+                     .hasMatch(),
+                 qPrintable(out));
         QVERIFY2(out.contains(QStringLiteral("IDENTITY 3 vendor 0x00000000 product 0x00000402")), qPrintable(out));
         // AIMOTOR (node 2) sends TPDO1/TPDO2 on every SYNC (type 1): about 75 SYNCs in 1.5 s.
         const auto tp = QRegularExpression(QStringLiteral("TPDO 0x182 (\\d+)")).match(out);

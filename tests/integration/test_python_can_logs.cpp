@@ -38,8 +38,10 @@ struct Expect {
     bool ext, rtr, fd;
     int len;
 };
-const Expect kExpect[] = {{0, 0x123, false, false, false, 8}, {1250, 0x1ABCDEF0, true, false, false, 2},
-                          {10000, 0x701, false, true, false, 4}, {500001, 0x181, false, false, true, 12},
+const Expect kExpect[] = {{0, 0x123, false, false, false, 8},
+                          {1250, 0x1ABCDEF0, true, false, false, 2},
+                          {10000, 0x701, false, true, false, 4},
+                          {500001, 0x181, false, false, true, 12},
                           {1000000, 0x080, false, false, false, 0}};
 
 QString python() {
@@ -93,7 +95,8 @@ private slots:
             QCOMPARE(f.isExtended(), want[i].ext);
             QCOMPARE(f.isRemote(), want[i].rtr);
             QCOMPARE(f.isFd(), want[i].fd);
-            if (!(ext == u"log" && want[i].rtr)) QCOMPARE(int(f.len), want[i].len);  // python-can writes "701#R" without the length
+            if (!(ext == u"log" && want[i].rtr))
+                QCOMPARE(int(f.len), want[i].len);  // python-can writes "701#R" without the length
             if (want[i].id == 0x123) QCOMPARE(f.data[7], uint8_t(0x88));
             if (want[i].id == 0x181) QCOMPARE(f.data[11], uint8_t(11));
             const int64_t relUs = (f.timestampNs - got[0].timestampNs) / 1000;

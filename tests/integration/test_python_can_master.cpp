@@ -56,9 +56,15 @@ struct Figures {
 };
 
 Figures figuresFor(const QString& out, const QString& id) {
-    const auto m = QRegularExpression(QStringLiteral("ID %1 n (\\d+) mean_ms ([0-9.]+) p99_jitter_ms ([0-9.]+) max_jitter_ms ([0-9.]+) first (\\S*)").arg(id)).match(out);
+    const auto m =
+        QRegularExpression(
+            QStringLiteral(
+                "ID %1 n (\\d+) mean_ms ([0-9.]+) p99_jitter_ms ([0-9.]+) max_jitter_ms ([0-9.]+) first (\\S*)")
+                .arg(id))
+            .match(out);
     if (!m.hasMatch()) return {};
-    return {m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(3).toDouble(), m.captured(4).toDouble(), m.captured(5)};
+    return {m.captured(1).toInt(), m.captured(2).toDouble(), m.captured(3).toDouble(), m.captured(4).toDouble(),
+            m.captured(5)};
 }
 
 }  // namespace
@@ -84,12 +90,20 @@ private slots:
         script.close();
         QProcess observer;
         QString seen;
-        QVERIFY2(startPythonPeer(observer, py, script.fileName(), {QStringLiteral("127.0.0.1"), port, QStringLiteral("6"), QStringLiteral("080,321")}, &seen), qPrintable(seen));
+        QVERIFY2(
+            startPythonPeer(observer, py, script.fileName(),
+                            {QStringLiteral("127.0.0.1"), port, QStringLiteral("6"), QStringLiteral("080,321")}, &seen),
+            qPrintable(seen));
 
         // Two masters at once, each ending by itself after 3 s.
         QProcess sync, send;
-        sync.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("sync"), url, QStringLiteral("--period"), QStringLiteral("10ms"), QStringLiteral("--counter"), QStringLiteral("240"), QStringLiteral("--duration"), QStringLiteral("3")});
-        send.start(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("send"), url, QStringLiteral("321#DEADBEEF"), QStringLiteral("--every"), QStringLiteral("10ms"), QStringLiteral("--duration"), QStringLiteral("3")});
+        sync.start(
+            QStringLiteral(COSCOPE_CLI_PATH),
+            {QStringLiteral("sync"), url, QStringLiteral("--period"), QStringLiteral("10ms"),
+             QStringLiteral("--counter"), QStringLiteral("240"), QStringLiteral("--duration"), QStringLiteral("3")});
+        send.start(QStringLiteral(COSCOPE_CLI_PATH),
+                   {QStringLiteral("send"), url, QStringLiteral("321#DEADBEEF"), QStringLiteral("--every"),
+                    QStringLiteral("10ms"), QStringLiteral("--duration"), QStringLiteral("3")});
         QVERIFY(sync.waitForFinished(20000));
         QVERIFY(send.waitForFinished(20000));
         const QString syncOut = QString::fromUtf8(sync.readAllStandardOutput());
@@ -106,13 +120,17 @@ private slots:
         qInfo("coscope-cli send: %s", qPrintable(sendOut.trimmed()));
 
         // How many went out, as each verb says: about 300 in 3 s.
-        const auto count = [](const QString& out) { return QRegularExpression(QStringLiteral("^(\\d+) ")).match(out).captured(1).toInt(); };
+        const auto count = [](const QString& out) {
+            return QRegularExpression(QStringLiteral("^(\\d+) ")).match(out).captured(1).toInt();
+        };
         QVERIFY2(count(syncOut) >= 280 && count(syncOut) <= 302, qPrintable(syncOut));
         QVERIFY2(count(sendOut) >= 280 && count(sendOut) <= 302, qPrintable(sendOut));
 
-        for (const auto& [id, what] : {std::pair{QStringLiteral("080"), "SYNC"}, std::pair{QStringLiteral("321"), "321#DEADBEEF"}}) {
+        for (const auto& [id, what] :
+             {std::pair{QStringLiteral("080"), "SYNC"}, std::pair{QStringLiteral("321"), "321#DEADBEEF"}}) {
             const Figures f = figuresFor(seen, id);
-            qInfo("python-can saw %s: %d frames, mean period %.3f ms, p99 jitter %.3f ms, max %.3f ms", what, f.n, f.meanMs, f.p99Ms, f.maxMs);
+            qInfo("python-can saw %s: %d frames, mean period %.3f ms, p99 jitter %.3f ms, max %.3f ms", what, f.n,
+                  f.meanMs, f.p99Ms, f.maxMs);
             QVERIFY2(f.n >= 250, qPrintable(seen));
             QVERIFY2(std::abs(f.meanMs - 10.0) <= 0.2, qPrintable(seen));  // within 2 %
             QVERIFY2(f.p99Ms <= 6.0, qPrintable(seen));  // bunched (Nagle) or skipped frames give 10 ms

@@ -112,7 +112,8 @@ private slots:
         script.write(kMaster);
         script.close();
         QProcess master;
-        master.start(py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QStringLiteral("5"), QStringLiteral("4000")});
+        master.start(
+            py, {script.fileName(), QStringLiteral("127.0.0.1"), port, QStringLiteral("5"), QStringLiteral("4000")});
         QVERIFY(master.waitForFinished(60000));
         const QString out = QString::fromUtf8(master.readAllStandardOutput());
         const QString err = QString::fromUtf8(master.readAllStandardError());

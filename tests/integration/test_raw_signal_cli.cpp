@@ -38,7 +38,8 @@ const QStringList kSignals = {QStringLiteral("--signal"), QStringLiteral("speed=
 
 std::vector<QJsonObject> lines(const QString& out) {
     std::vector<QJsonObject> v;
-    for (const QString& l : out.split(u'\n', Qt::SkipEmptyParts)) v.push_back(QJsonDocument::fromJson(l.toUtf8()).object());
+    for (const QString& l : out.split(u'\n', Qt::SkipEmptyParts))
+        v.push_back(QJsonDocument::fromJson(l.toUtf8()).object());
     return v;
 }
 }  // namespace
@@ -55,16 +56,21 @@ private slots:
     }
 
     void decodeJsonl() {
-        const Run r = cli(QStringList{QStringLiteral("decode"), log_, QStringLiteral("--format"), QStringLiteral("jsonl"), QStringLiteral("--no-identity")} + kSignals);
+        const Run r = cli(QStringList{QStringLiteral("decode"), log_, QStringLiteral("--format"),
+                                      QStringLiteral("jsonl"), QStringLiteral("--no-identity")} +
+                          kSignals);
         QCOMPARE(r.code, 0);
         std::map<QString, std::vector<QJsonObject>> byName;  // raw signals only
         for (const QJsonObject& o : lines(r.out))
-            for (const QJsonValue& s : o.value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray())
-                if (s.toObject().value(QStringLiteral("obj")).isNull()) byName[s.toObject().value(QStringLiteral("name")).toString()].push_back(s.toObject());
+            for (const QJsonValue& s :
+                 o.value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray())
+                if (s.toObject().value(QStringLiteral("obj")).isNull())
+                    byName[s.toObject().value(QStringLiteral("name")).toString()].push_back(s.toObject());
         QCOMPARE(byName[QStringLiteral("speed")].size(), size_t(2));
-        QCOMPARE(byName[QStringLiteral("speed")][0].value(QStringLiteral("value")).toDouble(), -100.0);  // FF38h = -200 x 0.5
+        QCOMPARE(byName[QStringLiteral("speed")][0].value(QStringLiteral("value")).toDouble(),
+                 -100.0);  // FF38h = -200 x 0.5
         QCOMPARE(byName[QStringLiteral("speed")][0].value(QStringLiteral("unit")).toString(), QStringLiteral("rpm"));
-        QCOMPARE(byName[QStringLiteral("speed")][1].value(QStringLiteral("value")).toDouble(), 50.0);    // 0064h x 0.5
+        QCOMPARE(byName[QStringLiteral("speed")][1].value(QStringLiteral("value")).toDouble(), 50.0);  // 0064h x 0.5
         QCOMPARE(byName[QStringLiteral("level")][0].value(QStringLiteral("value")).toInt(), 200);
         QVERIFY(byName[QStringLiteral("level")][0].value(QStringLiteral("unit")).isNull());
         QCOMPARE(byName[QStringLiteral("temp")][0].value(QStringLiteral("value")).toDouble(), 1.5);
@@ -83,7 +89,9 @@ private slots:
 
     void dbcExport() {
         const QString out = dir_.filePath(QStringLiteral("layout.dbc"));
-        const Run r = cli(QStringList{QStringLiteral("pdo"), QStringLiteral("dbc"), log_, out, QStringLiteral("--no-identity")} + kSignals);
+        const Run r =
+            cli(QStringList{QStringLiteral("pdo"), QStringLiteral("dbc"), log_, out, QStringLiteral("--no-identity")} +
+                kSignals);
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -106,17 +114,22 @@ private slots:
         QVERIFY(t1.sigs[1].comment.startsWith(QStringLiteral("6064:00")));
         QVERIFY(file.messages.count(0x2A0));
         const dbc::Signal* speed = file.messages.at(0x2A0).find(QStringLiteral("speed"));
-        QVERIFY(speed && !speed->intel && speed->isSigned && speed->factor == 0.5 && speed->unit == QStringLiteral("rpm"));
+        QVERIFY(speed && !speed->intel && speed->isSigned && speed->factor == 0.5 &&
+                speed->unit == QStringLiteral("rpm"));
         QVERIFY(file.messages.count(0x18FF0010u | 0x80000000u));
         QCOMPARE(file.messages.at(0x18FF0010u | 0x80000000u).sigs.at(0).valType, 1);
 
         // Every signal CoScope decodes reads the same through the DBC.
-        const Run dec = cli(QStringList{QStringLiteral("decode"), log_, QStringLiteral("--format"), QStringLiteral("jsonl"), QStringLiteral("--no-identity")} + kSignals);
+        const Run dec = cli(QStringList{QStringLiteral("decode"), log_, QStringLiteral("--format"),
+                                        QStringLiteral("jsonl"), QStringLiteral("--no-identity")} +
+                            kSignals);
         int compared = 0;
         for (const QJsonObject& o : lines(dec.out)) {
-            const QJsonArray sigs = o.value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray();
+            const QJsonArray sigs =
+                o.value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray();
             if (sigs.isEmpty()) continue;
-            const uint32_t id = o.value(QStringLiteral("id")).toInteger() | (o.value(QStringLiteral("ext")).toBool() ? 0x80000000u : 0u);
+            const uint32_t id = o.value(QStringLiteral("id")).toInteger() |
+                                (o.value(QStringLiteral("ext")).toBool() ? 0x80000000u : 0u);
             QVERIFY2(file.messages.count(id), qPrintable(QString::number(id, 16)));
             const dbc::Message& m = file.messages.at(id);
             const QByteArray data = QByteArray::fromHex(o.value(QStringLiteral("data")).toString().toLatin1());
@@ -136,9 +149,12 @@ private slots:
     // at 180h + node-ID carries the statusword first).
     void dbcFromBus() {
         const QString out = dir_.filePath(QStringLiteral("bus.dbc"));
-        const Run r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), QStringLiteral("sim://?nodes=3:generic-cia402"), out, QStringLiteral("--node"), QStringLiteral("3")});
+        const Run r =
+            cli({QStringLiteral("pdo"), QStringLiteral("dbc"), QStringLiteral("sim://?nodes=3:generic-cia402"), out,
+                 QStringLiteral("--node"), QStringLiteral("3")});
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
-        const Run show = cli({QStringLiteral("pdo"), QStringLiteral("show"), QStringLiteral("sim://?nodes=3:generic-cia402"), QStringLiteral("3")});
+        const Run show = cli({QStringLiteral("pdo"), QStringLiteral("show"),
+                              QStringLiteral("sim://?nodes=3:generic-cia402"), QStringLiteral("3")});
         QFile f(out);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const dbc::File file = dbc::parse(f.readAll());
@@ -150,7 +166,9 @@ private slots:
         for (const QString& line : show.out.split(u'\n')) {
             const QString t = line.trimmed();
             if (!line.startsWith(u' ')) valid = !line.contains(QStringLiteral("not valid"));
-            if (!valid || !line.startsWith(QStringLiteral("    ")) || t.size() < 7 || t[4] != u':' || t.startsWith(QStringLiteral("000"))) continue;
+            if (!valid || !line.startsWith(QStringLiteral("    ")) || t.size() < 7 || t[4] != u':' ||
+                t.startsWith(QStringLiteral("000")))
+                continue;
             bool found = false;
             for (const auto& [id, m] : file.messages)
                 for (const dbc::Signal& s : m.sigs) found |= s.comment.startsWith(t.left(7));
@@ -161,7 +179,8 @@ private slots:
     }
 
     void dbcErrors() {
-        Run r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), dir_.filePath(QStringLiteral("missing.log")), dir_.filePath(QStringLiteral("x.dbc"))});
+        Run r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), dir_.filePath(QStringLiteral("missing.log")),
+                     dir_.filePath(QStringLiteral("x.dbc"))});
         QCOMPARE(r.code, 1);
         r = cli({QStringLiteral("pdo"), QStringLiteral("dbc"), log_});
         QCOMPARE(r.code, 2);

@@ -91,13 +91,16 @@ private slots:
         p.start(QStringLiteral(COSCOPE_CLI_PATH), args);
         QVERIFY2(p.waitForStarted(10000), qPrintable(p.errorString()));
         if (comment.contains(QStringLiteral("until Ctrl-C"))) {
-            QVERIFY2(!p.waitForFinished(2000), qPrintable(QStringLiteral("ended early (exit %1): %2").arg(p.exitCode()).arg(QString::fromUtf8(p.readAllStandardError()))));
+            QVERIFY2(!p.waitForFinished(2000), qPrintable(QStringLiteral("ended early (exit %1): %2")
+                                                              .arg(p.exitCode())
+                                                              .arg(QString::fromUtf8(p.readAllStandardError()))));
             ::kill(static_cast<pid_t>(p.processId()), SIGINT);
         }
         if (!p.waitForFinished(60000)) {
             p.kill();
             p.waitForFinished();
-            QFAIL(qPrintable(QStringLiteral("still running after 60 s; output: %1").arg(QString::fromUtf8(p.readAllStandardOutput()).right(400))));
+            QFAIL(qPrintable(QStringLiteral("still running after 60 s; output: %1")
+                                 .arg(QString::fromUtf8(p.readAllStandardOutput()).right(400))));
         }
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitStatus(), QProcess::NormalExit);
@@ -105,7 +108,8 @@ private slots:
         // that finds differences); every other line ends with 0.
         const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("^exits (\\d+)")).match(comment);
         const int expected = m.hasMatch() ? m.captured(1).toInt() : 0;
-        QVERIFY2(p.exitCode() == expected, qPrintable(QStringLiteral("exit %1 (expected %2): %3").arg(p.exitCode()).arg(expected).arg(err)));
+        QVERIFY2(p.exitCode() == expected,
+                 qPrintable(QStringLiteral("exit %1 (expected %2): %3").arg(p.exitCode()).arg(expected).arg(err)));
     }
 };
 

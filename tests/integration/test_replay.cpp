@@ -16,8 +16,8 @@ class TestReplay : public QObject {
     QString log_;
 
     // Plays the URL until the bus leaves Open; returns the frames and the elapsed ms.
-    std::vector<CanFrame> play(const QString& url, qint64* elapsedMs, CanBus::State* endState, QString* endMessage = nullptr,
-                               size_t stopAfter = 0) {
+    std::vector<CanFrame> play(const QString& url, qint64* elapsedMs, CanBus::State* endState,
+                               QString* endMessage = nullptr, size_t stopAfter = 0) {
         QString error;
         auto bus = createBus(url, &error);
         if (!bus) qFatal("%s", qPrintable(error));
@@ -30,7 +30,9 @@ class TestReplay : public QObject {
             const size_t n = bus->read(batch, 64);
             got.insert(got.end(), batch, batch + n);
             if (stopAfter && got.size() >= stopAfter) break;
-            if (n == 0 && bus->state() != CanBus::State::Open && bus->state() != CanBus::State::Opening && bus->pending() == 0) break;
+            if (n == 0 && bus->state() != CanBus::State::Open && bus->state() != CanBus::State::Opening &&
+                bus->pending() == 0)
+                break;
             if (n == 0) bus->waitForFrames(5);
         }
         *elapsedMs = t.elapsed();
@@ -102,7 +104,8 @@ private slots:
     }
 
     void missingFileIsError() {
-        auto bus = createBus(QStringLiteral("replay://%1?speed=0").arg(dir_.filePath(QStringLiteral("none.log"))), nullptr);
+        auto bus =
+            createBus(QStringLiteral("replay://%1?speed=0").arg(dir_.filePath(QStringLiteral("none.log"))), nullptr);
         bus->open();
         QVERIFY(bus->state() == CanBus::State::Error);
         QVERIFY(bus->errorString().contains(QStringLiteral("none.log")));

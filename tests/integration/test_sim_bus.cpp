@@ -43,7 +43,8 @@ private slots:
         auto frames = collect(*bus, 300);
         // Boot-up: 700h + node-ID with one byte 00h (CiA 301 §7.2.8.3.3).
         auto bootOf = [&](uint32_t id) {
-            return std::count_if(frames.begin(), frames.end(), [id](const CanFrame& f) { return f.id == id && f.len == 1 && f.data[0] == 0; });
+            return std::count_if(frames.begin(), frames.end(),
+                                 [id](const CanFrame& f) { return f.id == id && f.len == 1 && f.data[0] == 0; });
         };
         QCOMPARE(bootOf(0x705), 1);
         QCOMPARE(bootOf(0x706), 1);
@@ -52,7 +53,8 @@ private slots:
         // extract-aimotor §3.6) flows, node 6 stays silent on 186h.
         QVERIFY2(bus->send(CanFrame::classic(0x000, {0x01, 0x05}), &err), qPrintable(err));
         frames = collect(*bus, 300, 10);
-        const auto tx = std::find_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0 && f.isTx(); });
+        const auto tx =
+            std::find_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0 && f.isTx(); });
         QVERIFY2(tx != frames.end(), "our NMT frame is echoed as Tx");
         const auto pdo5 = std::count_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0x185; });
         const auto pdo6 = std::count_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0x186; });
@@ -75,19 +77,26 @@ private slots:
         // The bundled dictionaries have 1017h = 0 (no heartbeat): set 1000 ms by SDO.
         QVERIFY(bus->send(CanFrame::classic(0x609, {0x2B, 0x17, 0x10, 0x00, 0xE8, 0x03, 0x00, 0x00})));
         const auto frames = collect(*bus, 1300);
-        QVERIFY(std::any_of(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0x589 && f.data[0] == 0x60; }));
+        QVERIFY(std::any_of(frames.begin(), frames.end(),
+                            [](const CanFrame& f) { return f.id == 0x589 && f.data[0] == 0x60; }));
         // Heartbeat with state 7Fh (pre-operational), once per second.
-        const auto hb = std::count_if(frames.begin(), frames.end(), [](const CanFrame& f) { return f.id == 0x709 && f.len == 1 && f.data[0] == 0x7F; });
+        const auto hb = std::count_if(frames.begin(), frames.end(), [](const CanFrame& f) {
+            return f.id == 0x709 && f.len == 1 && f.data[0] == 0x7F;
+        });
         QCOMPARE(hb, 1);
     }
 
     void rejectsBadNodeSpec_data() {
         QTest::addColumn<QString>("url");
         QTest::addColumn<QString>("reason");
-        QTest::newRow("node 0") << "sim://?nodes=0:aimotor" << "1-127";
-        QTest::newRow("twice") << "sim://?nodes=1:aimotor,1:aimotor" << "twice";
-        QTest::newRow("unknown drive") << "sim://?nodes=1:nosuch" << "unknown virtual drive";
-        QTest::newRow("ethercat") << "sim://?nodes=1:icpdas-ecat-2094p" << "EtherCAT";
+        QTest::newRow("node 0") << "sim://?nodes=0:aimotor"
+                                << "1-127";
+        QTest::newRow("twice") << "sim://?nodes=1:aimotor,1:aimotor"
+                               << "twice";
+        QTest::newRow("unknown drive") << "sim://?nodes=1:nosuch"
+                                       << "unknown virtual drive";
+        QTest::newRow("ethercat") << "sim://?nodes=1:icpdas-ecat-2094p"
+                                  << "EtherCAT";
     }
     void rejectsBadNodeSpec() {
         QFETCH(QString, url);
@@ -113,7 +122,8 @@ private slots:
         collect(b, 50);
         QVERIFY(a.send(*parseCansend(u"123#AABB", nullptr)));
         const auto got = collect(b, 100);
-        QVERIFY(std::any_of(got.begin(), got.end(), [](const CanFrame& f) { return f.id == 0x123 && !f.isTx() && f.len == 2; }));
+        QVERIFY(std::any_of(got.begin(), got.end(),
+                            [](const CanFrame& f) { return f.id == 0x123 && !f.isTx() && f.len == 2; }));
         b.close();
         a.close();
     }
@@ -131,7 +141,8 @@ private slots:
         // AIMOTOR TPDOs are synchronous (type 1): send SYNCs.
         QElapsedTimer t;
         t.start();
-        while (session.store()->countFor(TraceStore::keyOf(0x183, false)) < 5 && t.elapsed() < 30000) {  // a loaded machine answers late
+        while (session.store()->countFor(TraceStore::keyOf(0x183, false)) < 5 &&
+               t.elapsed() < 30000) {  // a loaded machine answers late
             bus->send(CanFrame::classic(0x080, {}));
             QTest::qWait(10);
         }

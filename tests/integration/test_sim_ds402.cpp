@@ -13,18 +13,32 @@ using namespace coscope::testing;
 class TestSimDs402 : public QObject {
     Q_OBJECT
     static uint32_t sw(SimHarness& h, uint8_t node) { return h.read(node, 0x6041, 0).value_or(0xFFFF); }
-    static bool cw(SimHarness& h, uint8_t node, uint16_t v) { return h.download(node, 0x6040, 0, SimHarness::u16(v)).ok(); }
+    static bool cw(SimHarness& h, uint8_t node, uint16_t v) {
+        return h.download(node, 0x6040, 0, SimHarness::u16(v)).ok();
+    }
 
 private slots:
     void initTestCase() { eds::installSimulatorDictionaries(); }
 
     void stateMachineWalk_data() {
         QTest::addColumn<QString>("dictionary");
-        QTest::addColumn<QString>("fault");       // alarm name injected
-        QTest::addColumn<QByteArray>("emcy");     // expected EMCY bytes 0-1 and 3-7
-        QTest::newRow("delta") << "delta-asda-a2" << "AL011" << QByteArray::fromHex("0573" "1100000000");
-        QTest::newRow("aimotor") << "aimotor" << "Er.B00" << QByteArray::fromHex("1186" "000B000000");
-        QTest::newRow("generic") << "generic-cia402" << "overcurrent" << QByteArray::fromHex("1023" "0000000000");
+        QTest::addColumn<QString>("fault");    // alarm name injected
+        QTest::addColumn<QByteArray>("emcy");  // expected EMCY bytes 0-1 and 3-7
+        QTest::newRow("delta") << "delta-asda-a2"
+                               << "AL011"
+                               << QByteArray::fromHex(
+                                      "0573"
+                                      "1100000000");
+        QTest::newRow("aimotor") << "aimotor"
+                                 << "Er.B00"
+                                 << QByteArray::fromHex(
+                                        "1186"
+                                        "000B000000");
+        QTest::newRow("generic") << "generic-cia402"
+                                 << "overcurrent"
+                                 << QByteArray::fromHex(
+                                        "1023"
+                                        "0000000000");
     }
     void stateMachineWalk() {
         QFETCH(QString, dictionary);
@@ -52,7 +66,9 @@ private slots:
         // However late the simulator's clock runs (a loaded machine skips its stalls): wait for
         // the motion itself, not for a time.
         int32_t v = 0, p = 0;
-        QTRY_VERIFY_WITH_TIMEOUT((v = int32_t(h.read(n, 0x606C, 0).value_or(0))) > 1000 && (p = int32_t(h.read(n, 0x6064, 0).value_or(0))) > 100, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT((v = int32_t(h.read(n, 0x606C, 0).value_or(0))) > 1000 &&
+                                     (p = int32_t(h.read(n, 0x6064, 0).value_or(0))) > 100,
+                                 30000);
         QVERIFY2(v <= 5000, qPrintable(QString::number(v)));
         QVERIFY2(p > 100, qPrintable(QString::number(p)));
 
@@ -71,9 +87,10 @@ private slots:
         auto e = h.waitFor([](const CanFrame& f) { return f.id == 0x87; }, 500);
         QVERIFY(e);
         QCOMPARE(int(e->len), 8);
-        const QByteArray got = QByteArray(reinterpret_cast<const char*>(e->data.data()), 2) + QByteArray(reinterpret_cast<const char*>(e->data.data() + 3), 5);
+        const QByteArray got = QByteArray(reinterpret_cast<const char*>(e->data.data()), 2) +
+                               QByteArray(reinterpret_cast<const char*>(e->data.data() + 3), 5);
         QCOMPARE(got.toHex(), emcy.toHex());
-        QVERIFY(e->data[2] & 0x01);  // error register: generic error
+        QVERIFY(e->data[2] & 0x01);                               // error register: generic error
         QTRY_COMPARE_WITH_TIMEOUT(sw(h, n) & 0x4F, 0x08u, 1000);  // fault
         QCOMPARE(h.read(n, 0x603F, 0).value_or(0), uint32_t(uint8_t(emcy[0]) | uint8_t(emcy[1]) << 8));
         QVERIFY(!cw(h, n, 0x0F) || (sw(h, n) & 0x4F) == 0x08);  // enable does nothing in fault
@@ -96,9 +113,9 @@ private slots:
         QVERIFY(h.download(3, 0x6081, 0, SimHarness::u32(20000)).ok());
         QVERIFY(h.download(3, 0x607A, 0, SimHarness::u32(4000)).ok());
         for (uint16_t v : {0x06, 0x07, 0x0F, 0x1F}) QVERIFY(cw(h, 3, v));  // bit 4: new set-point
-        QVERIFY(sw(h, 3) & 0x1000);                                         // set-point acknowledge
-        QVERIFY(!(sw(h, 3) & 0x400));                                       // moving
-        QTRY_VERIFY_WITH_TIMEOUT(sw(h, 3) & 0x400, 2000);                   // target reached
+        QVERIFY(sw(h, 3) & 0x1000);                                        // set-point acknowledge
+        QVERIFY(!(sw(h, 3) & 0x400));                                      // moving
+        QTRY_VERIFY_WITH_TIMEOUT(sw(h, 3) & 0x400, 2000);                  // target reached
         QCOMPARE(int32_t(h.read(3, 0x6064, 0).value_or(0)), 4000);
     }
 

@@ -25,14 +25,18 @@ constexpr uint16_t kAck = 1u << 12, kError = 1u << 13, kReached = 1u << 10;
 class TestSimHoming : public QObject {
     Q_OBJECT
     static uint32_t sw(SimHarness& h, uint8_t node) { return h.read(node, 0x6041, 0).value_or(0xFFFF); }
-    static bool cw(SimHarness& h, uint8_t node, uint16_t v) { return h.download(node, 0x6040, 0, SimHarness::u16(v)).ok(); }
+    static bool cw(SimHarness& h, uint8_t node, uint16_t v) {
+        return h.download(node, 0x6040, 0, SimHarness::u16(v)).ok();
+    }
     static int32_t pos(SimHarness& h, uint8_t node) { return int32_t(h.read(node, 0x6064, 0).value_or(0x7FFFFFFF)); }
     static double machine(SimHarness& h, uint8_t node) {
         double m = 0;
         h.withDevice(node, [&](sim::VirtualDevice& d) { m = d.drive(0)->machinePosition(); });
         return m;
     }
-    static bool enable(SimHarness& h, uint8_t node) { return cw(h, node, 0x06) && cw(h, node, 0x07) && cw(h, node, 0x0F) && (sw(h, node) & 0x6F) == 0x27; }
+    static bool enable(SimHarness& h, uint8_t node) {
+        return cw(h, node, 0x06) && cw(h, node, 0x07) && cw(h, node, 0x0F) && (sw(h, node) & 0x6F) == 0x27;
+    }
     // Sends `req` and compares the whole answer with `resp` (hex, 8 bytes).
     static bool frame(SimHarness& h, const char* req, const char* resp) {
         const QByteArray q = QByteArray::fromHex(req);
@@ -103,8 +107,10 @@ private slots:
         QVERIFY(cw(h, 1, 0x1F));
         auto e = h.waitFor([](const CanFrame& f) { return f.id == 0x81; }, 1000);
         QVERIFY(e);
-        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data()), 2).toHex(), QByteArray("00ff"));  // EMCY FF00h
-        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data() + 3), 2).toHex(), QByteArray("6806"));  // vendor 0668h
+        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data()), 2).toHex(),
+                 QByteArray("00ff"));  // EMCY FF00h
+        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data() + 3), 2).toHex(),
+                 QByteArray("6806"));                             // vendor 0668h
         QTRY_COMPARE_WITH_TIMEOUT(sw(h, 1) & 0x4F, 0x08u, 2000);  // fault
         QCOMPARE(h.read(1, 0x603F, 0).value_or(0), 0xFF00u);
     }
@@ -135,7 +141,8 @@ private slots:
         QVERIFY(cw(h, 1, 0x1F));
         auto e = h.waitFor([](const CanFrame& f) { return f.id == 0x81 && f.data[0] == 0x10; }, 3000);
         QVERIFY(e);
-        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data()), 5).toHex(), QByteArray("1086") + QByteArray::number(e->data[2], 16).rightJustified(2, '0') + "0106");
+        QCOMPARE(QByteArray(reinterpret_cast<const char*>(e->data.data()), 5).toHex(),
+                 QByteArray("1086") + QByteArray::number(e->data[2], 16).rightJustified(2, '0') + "0106");
         QTRY_COMPARE_WITH_TIMEOUT(sw(h, 1) & 0x4F, 0x08u, 2000);
     }
 
@@ -145,16 +152,18 @@ private slots:
         QVERIFY2(h.open(QStringLiteral("1:aimotor"), &err), qPrintable(err));
         QVERIFY(h.download(1, 0x6060, 0, SimHarness::u8(6)).ok());
         QVERIFY(h.download(1, 0x6098, 0, SimHarness::u8(37)).ok());
-        QVERIFY(h.download(1, 0x6099, 2, SimHarness::u32(3000)).ok());  // hard stop runs at the slow speed
+        QVERIFY(h.download(1, 0x6099, 2, SimHarness::u32(3000)).ok());    // hard stop runs at the slow speed
         QVERIFY(h.download(1, 0x2005, 0x3B, SimHarness::u16(300)).ok());  // H05-58 torque limit, 30 %
         QVERIFY(enable(h, 1));
         QVERIFY(cw(h, 1, 0x1F));
         bool sawLimit = false;
-        QTRY_VERIFY_WITH_TIMEOUT((sawLimit |= int16_t(h.read(1, 0x6077, 0).value_or(0)) == 300, sw(h, 1) & kAck), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((sawLimit |= int16_t(h.read(1, 0x6077, 0).value_or(0)) == 300, sw(h, 1) & kAck),
+                                 10000);
         QVERIFY2(sawLimit, "6077h never showed the homing torque limit against the end stop");
         QVERIFY(sw(h, 1) & 0x8000);
         QCOMPARE(pos(h, 1), 0);
-        QVERIFY2(std::abs(machine(h, 1) - 1200.0) < 1.0, qPrintable(QString::number(machine(h, 1))));  // end stop at +1.2 rev
+        QVERIFY2(std::abs(machine(h, 1) - 1200.0) < 1.0,
+                 qPrintable(QString::number(machine(h, 1))));  // end stop at +1.2 rev
     }
 
     void deltaAndGenericRefuseOnWrite_data() {
@@ -199,7 +208,7 @@ private slots:
         const double before = machine(h, 1);
         QVERIFY(cw(h, 1, 0x1F));
         QCOMPARE(sw(h, 1) & (kAck | kError | kReached), uint32_t(kAck | kReached));  // 011: attained at once
-        QCOMPARE(pos(h, 1), 1234);  // 6064h = home offset
+        QCOMPARE(pos(h, 1), 1234);                                                   // 6064h = home offset
         QCOMPARE(machine(h, 1), before);
         QVERIFY(!(sw(h, 1) & 0x8000));  // no "home found" bit outside AIMOTOR
     }
@@ -207,8 +216,8 @@ private slots:
     void switchMethodTravelsAndBacksOff_data() {
         QTest::addColumn<QString>("dictionary");
         QTest::addColumn<int>("method");
-        QTest::addColumn<double>("home");     // machine position of home (HomingMachine conventions)
-        QTest::addColumn<double>("farthest"); // a machine position passed on the way
+        QTest::addColumn<double>("home");      // machine position of home (HomingMachine conventions)
+        QTest::addColumn<double>("farthest");  // a machine position passed on the way
         // Generic, 10000 inc/rev: 1 = negative limit switch (-1 rev), back to the index at -0.9 rev.
         QTest::newRow("generic 1") << "generic-cia402" << 1 << -9000.0 << -9500.0;
         // 9: home cam (+0.20..+0.35 rev) upper edge, index below it (+0.10 rev), via +0.35 rev.
@@ -246,7 +255,8 @@ private slots:
         QCOMPARE(sw(h, 1) & (kAck | kError | kReached), uint32_t(kAck | kReached));
         QCOMPARE(pos(h, 1), 250);
         QVERIFY2(std::abs(machine(h, 1) - home) < 1.0, qPrintable(QString::number(machine(h, 1))));
-        QVERIFY2(farthest < 0 ? lo <= farthest : hi >= farthest, qPrintable(QStringLiteral("%1 .. %2").arg(lo).arg(hi)));
+        QVERIFY2(farthest < 0 ? lo <= farthest : hi >= farthest,
+                 qPrintable(QStringLiteral("%1 .. %2").arg(lo).arg(hi)));
         // Homing again from there finds the same place: the switches are the machine's.
         QVERIFY(cw(h, 1, 0x0F));
         QVERIFY(cw(h, 1, 0x1F));
@@ -261,11 +271,14 @@ private slots:
         for (int n : {20, 22, 24, 26, 28, 30}) {
             QCOMPARE(int(delta.method(n)->sameAs), n - 1);
             QCOMPARE(delta.method(n)->homeSide, delta.method(n - 1)->homeSide);
-            QVERIFY(cia.method(n)->homeSide != cia.method(n - 1)->homeSide || cia.method(n)->edge != cia.method(n - 1)->edge ||
+            QVERIFY(cia.method(n)->homeSide != cia.method(n - 1)->homeSide ||
+                    cia.method(n)->edge != cia.method(n - 1)->edge ||
                     cia.method(n)->switchSide != cia.method(n - 1)->switchSide);
         }
-        QCOMPARE(delta.numbers(), QStringLiteral("1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 33, 34, 35"));
-        QCOMPARE(canopen::homing::drive(QStringLiteral("aimotor")).numbers(), QStringLiteral("1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38"));
+        QCOMPARE(delta.numbers(), QStringLiteral("1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 17, 18, 19, 20, 21, "
+                                                 "22, 23, 24, 25, 26, 27, 28, 29, 30, 33, 34, 35"));
+        QCOMPARE(canopen::homing::drive(QStringLiteral("aimotor")).numbers(),
+                 QStringLiteral("1, 2, 4, 6, 17, 18, 24, 28, 33, 34, 35, 37, 38"));
     }
 
     void profilePositionSetPointHandshake() {

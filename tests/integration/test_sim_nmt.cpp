@@ -14,7 +14,8 @@ namespace lss = coscope::canopen::lss;
 
 namespace {
 CanFrame lssFrame(uint8_t cs, uint32_t v = 0, uint8_t b5 = 0, uint8_t b6 = 0, uint8_t b7 = 0) {
-    return CanFrame::classic(lss::kMasterToSlave, {cs, uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24), b5, b6, b7});
+    return CanFrame::classic(lss::kMasterToSlave,
+                             {cs, uint8_t(v), uint8_t(v >> 8), uint8_t(v >> 16), uint8_t(v >> 24), b5, b6, b7});
 }
 bool isLss(const CanFrame& f) { return f.id == lss::kSlaveToMaster; }
 }  // namespace
@@ -99,7 +100,7 @@ private slots:
         QCOMPARE(h.read(3, 0x1017, 0).value_or(0), 250u);
         QCOMPARE(h.read(3, 0x1010, 1).value_or(0), 1u);
         QVERIFY(h.download(3, 0x1011, 1, SimHarness::u32(0x64616F6C)).ok());  // "load"
-        QCOMPARE(h.read(3, 0x1017, 0).value_or(0), 250u);  // effective after reset
+        QCOMPARE(h.read(3, 0x1017, 0).value_or(0), 250u);                     // effective after reset
         h.withDevice(3, [](sim::VirtualDevice& d) { d.powerCycle(); });
         QCOMPARE(h.read(3, 0x1017, 0).value_or(1), 0u);
     }
@@ -120,7 +121,8 @@ private slots:
         h.send(lssFrame(lss::SwitchSelectiveProduct, product));
         h.send(lssFrame(lss::SwitchSelectiveRevision, revision));
         h.send(lssFrame(lss::SwitchSelectiveSerial, serial));
-        QVERIFY(h.waitFor([](const CanFrame& f) { return isLss(f) && f.data[0] == lss::SwitchSelectiveResponse; }, 300));
+        QVERIFY(
+            h.waitFor([](const CanFrame& f) { return isLss(f) && f.data[0] == lss::SwitchSelectiveResponse; }, 300));
         QVERIFY(!h.waitFor(isLss, 50));
         // Inquire: serial and node-ID.
         h.send(lssFrame(lss::InquireSerial));
@@ -173,7 +175,9 @@ private slots:
         h.send(lssFrame(lss::IdentifySerialLow, 0));
         h.send(lssFrame(lss::IdentifySerialHigh, 0xFFFFFFFF));
         const auto answers = h.collect(80);
-        QCOMPARE(std::count_if(answers.begin(), answers.end(), [](const CanFrame& f) { return isLss(f) && f.data[0] == lss::IdentifySlaveResponse; }), 2);
+        QCOMPARE(std::count_if(answers.begin(), answers.end(),
+                               [](const CanFrame& f) { return isLss(f) && f.data[0] == lss::IdentifySlaveResponse; }),
+                 2);
         h.send(lssFrame(lss::IdentifyNonConfigured));
         QCOMPARE(h.waitFor(isLss, 200)->data[0], lss::IdentifyNonConfiguredResponse);
         QVERIFY(!h.waitFor(isLss, 50));  // node 8 is configured

@@ -48,12 +48,15 @@ bool spacedAtLeast(const std::vector<int64_t>& ts, int64_t least, int64_t onTime
     int64_t shortest = INT64_MAX;
     for (size_t i = 1; i < ts.size(); ++i) {
         if (ts[i] - ts[i - 1] < least) {
-            qWarning("frames %lld ns apart (at least %lld)", static_cast<long long>(ts[i] - ts[i - 1]), static_cast<long long>(least));
+            qWarning("frames %lld ns apart (at least %lld)", static_cast<long long>(ts[i] - ts[i - 1]),
+                     static_cast<long long>(least));
             return false;
         }
         shortest = std::min(shortest, ts[i] - ts[i - 1]);
     }
-    if (shortest > onTime) qWarning("shortest gap %lld ns (on time: %lld)", static_cast<long long>(shortest), static_cast<long long>(onTime));
+    if (shortest > onTime)
+        qWarning("shortest gap %lld ns (on time: %lld)", static_cast<long long>(shortest),
+                 static_cast<long long>(onTime));
     return shortest <= onTime;
 }
 }  // namespace
@@ -65,7 +68,8 @@ class TestSimPdo : public QObject {
 
     // Re-maps TPDO1 of `node` to the statusword only with transmission type `type`, as a master
     // would: disable (bit 31), mapping, re-enable (CiA 301 §7.5.2.36 procedure).
-    static void configureTpdo1(SimHarness& h, uint8_t node, uint8_t type, uint16_t inhibit100us = 0, uint16_t eventMs = 0) {
+    static void configureTpdo1(SimHarness& h, uint8_t node, uint8_t type, uint16_t inhibit100us = 0,
+                               uint16_t eventMs = 0) {
         QVERIFY(h.download(node, 0x1800, 1, SimHarness::u32(0x80000180u + node)).ok());
         QVERIFY(h.download(node, 0x1800, 2, SimHarness::u8(type)).ok());
         QVERIFY(h.download(node, 0x1800, 3, SimHarness::u16(inhibit100us)).ok());
@@ -91,7 +95,8 @@ private slots:
             h.send(syncFrame());
             QTest::qWait(5);
         }
-        const auto fs = collectUntil(h, [](const auto& got) { return countId(got, 0x182) >= 5 && countId(got, 0x282) >= 5; });
+        const auto fs =
+            collectUntil(h, [](const auto& got) { return countId(got, 0x182) >= 5 && countId(got, 0x282) >= 5; });
         // Default TPDO1 = 6041h + 6061h + 6064h, 7 bytes; TPDO2 = 606Ch + 6077h, 6 bytes; type 1
         // (extract-aimotor §3.6 "Default mappings").
         QCOMPARE(countId(fs, 0x182), 5);

@@ -109,7 +109,8 @@ private slots:
         QTest::newRow("read-only") << 0x6041 << 0 << true << SimHarness::u16(1) << uint(ab::ReadOnly);
         QTest::newRow("length too high") << 0x6040 << 0 << true << SimHarness::u32(6) << uint(ab::LengthTooHigh);
         QTest::newRow("length too low") << 0x6081 << 0 << true << SimHarness::u16(6) << uint(ab::LengthTooLow);
-        QTest::newRow("bad store signature") << 0x1010 << 1 << true << SimHarness::u32(0x12345678) << uint(ab::CannotStore);
+        QTest::newRow("bad store signature")
+            << 0x1010 << 1 << true << SimHarness::u32(0x12345678) << uint(ab::CannotStore);
         QTest::newRow("unsupported mode") << 0x6060 << 0 << true << SimHarness::u8(0x55) << uint(ab::InvalidValue);
     }
     void aborts() {
@@ -118,7 +119,8 @@ private slots:
         QFETCH(bool, write);
         QFETCH(QByteArray, data);
         QFETCH(uint, code);
-        auto r = write ? h.download(N, uint16_t(index), uint8_t(sub), data) : h.upload(N, uint16_t(index), uint8_t(sub));
+        auto r =
+            write ? h.download(N, uint16_t(index), uint8_t(sub), data) : h.upload(N, uint16_t(index), uint8_t(sub));
         QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
         QCOMPARE(QString::number(r.abort, 16), QString::number(code, 16));
     }
@@ -132,7 +134,8 @@ private slots:
                 for (const auto& s : o.subs) {
                     if (woIndex < 0 && s.access == od::Access::WriteOnly) woIndex = i, woSub = s.sub;
                     const auto lim = s.limits();
-                    if (limIndex < 0 && lim.high && od::byteSize(s.dataType) > 0 && od::isWritable(s.access) && !od::isSigned(s.dataType)) {
+                    if (limIndex < 0 && lim.high && od::byteSize(s.dataType) > 0 && od::isWritable(s.access) &&
+                        !od::isSigned(s.dataType)) {
                         const auto hi = lim.high->toUInt64().value_or(0);
                         const int bits = od::bitSize(s.dataType);
                         if (bits < 64 && hi + 1 < (uint64_t(1) << bits)) {
@@ -144,7 +147,8 @@ private slots:
         });
         if (woIndex >= 0) QCOMPARE(h.upload(D, uint16_t(woIndex), uint8_t(woSub)).abort, ab::WriteOnly);
         QVERIFY2(limIndex >= 0, "the Delta dictionary has limits (P3-00 1..127)");
-        QCOMPARE(QString::number(h.download(D, uint16_t(limIndex), uint8_t(limSub), above).abort, 16), QString::number(ab::ValueTooHigh, 16));
+        QCOMPARE(QString::number(h.download(D, uint16_t(limIndex), uint8_t(limSub), above).abort, 16),
+                 QString::number(ab::ValueTooHigh, 16));
     }
 
     void faultDropResponses() {
@@ -182,12 +186,15 @@ private slots:
     void faultDeclineBlock() {
         h.withDevice(N, [](sim::VirtualDevice& d) { d.sdoFaults().declineBlock = true; });
         QCOMPARE(h.blockUpload(N, 0x1008, 0).abort, ab::InvalidCommand);
-        QCOMPARE(h.blockDownload(N, sim::VirtualDevice::kTestDomainIndex, 0, QByteArray(20, 'a')).abort, ab::InvalidCommand);
+        QCOMPARE(h.blockDownload(N, sim::VirtualDevice::kTestDomainIndex, 0, QByteArray(20, 'a')).abort,
+                 ab::InvalidCommand);
         h.withDevice(N, [](sim::VirtualDevice& d) { d.sdoFaults().declineBlock = false; });
     }
 
     void faultAbortOn() {
-        h.withDevice(N, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1000), uint8_t(0), ab::HardwareError); });
+        h.withDevice(N, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1000), uint8_t(0), ab::HardwareError);
+        });
         QCOMPARE(h.upload(N, 0x1000, 0).abort, ab::HardwareError);
         QVERIFY(h.upload(N, 0x1018, 1).ok());
         h.withDevice(N, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn.reset(); });

@@ -67,7 +67,8 @@ private slots:
         server.write("< frame 181 3.0 AA >< frame 182 3.1 BB >");
         server.closeClient();
         QTRY_VERIFY_WITH_TIMEOUT(bus->state() == CanBus::State::Lost, 3000);
-        QCOMPARE(bus->errorString(), QStringLiteral("socketcand server at 127.0.0.1:%1 closed the connection").arg(server.port()));
+        QCOMPARE(bus->errorString(),
+                 QStringLiteral("socketcand server at 127.0.0.1:%1 closed the connection").arg(server.port()));
         auto last = readFrames(*bus, 2, 500);
         QCOMPARE(last.size(), size_t(2));
         QCOMPARE(last[0].id, 0x181u);
@@ -94,9 +95,9 @@ private slots:
         for (int i = 0; i < kFrames; ++i) {
             const auto b0 = uint8_t(i & 0xFF), b1 = uint8_t((i >> 8) & 0xFF), b2 = uint8_t(i >> 16);
             QVERIFY2(bus->send(CanFrame::classic(0x201, {b0, b1, b2}), &err), qPrintable(err));
-            expected += QByteArray("< send 201 3 ") + QByteArray::number(b0, 16).rightJustified(2, '0').toUpper() + ' ' +
-                        QByteArray::number(b1, 16).rightJustified(2, '0').toUpper() + ' ' + QByteArray::number(b2, 16).rightJustified(2, '0').toUpper() +
-                        " >";
+            expected += QByteArray("< send 201 3 ") + QByteArray::number(b0, 16).rightJustified(2, '0').toUpper() +
+                        ' ' + QByteArray::number(b1, 16).rightJustified(2, '0').toUpper() + ' ' +
+                        QByteArray::number(b2, 16).rightJustified(2, '0').toUpper() + " >";
             if (i % 1000 == 999) {  // drain the ring as the ingest thread does
                 const size_t n = bus->read(chunk.data(), chunk.size());
                 echoes.insert(echoes.end(), chunk.begin(), chunk.begin() + qsizetype(n));
@@ -104,11 +105,13 @@ private slots:
         }
         QTRY_COMPARE_WITH_TIMEOUT(server.afterHandshake.size(), expected.size(), 10000);
         QVERIFY(server.afterHandshake == expected);
-        for (size_t n; (n = bus->read(chunk.data(), chunk.size())) > 0;) echoes.insert(echoes.end(), chunk.begin(), chunk.begin() + qsizetype(n));
+        for (size_t n; (n = bus->read(chunk.data(), chunk.size())) > 0;)
+            echoes.insert(echoes.end(), chunk.begin(), chunk.begin() + qsizetype(n));
         QCOMPARE(echoes.size(), size_t(kFrames));
         for (int i = 0; i < kFrames; ++i) {
             QVERIFY(echoes[size_t(i)].isTx());
-            QCOMPARE(int(echoes[size_t(i)].data[0] | echoes[size_t(i)].data[1] << 8 | echoes[size_t(i)].data[2] << 16), i);
+            QCOMPARE(int(echoes[size_t(i)].data[0] | echoes[size_t(i)].data[1] << 8 | echoes[size_t(i)].data[2] << 16),
+                     i);
         }
         QCOMPARE(bus->counters().tx, uint64_t(kFrames));
         bus->close();
@@ -140,7 +143,8 @@ private slots:
         QVERIFY(!bus->waitForOpen(5000));
         QVERIFY(t.elapsed() < 3500);
         QVERIFY(bus->state() == CanBus::State::Error);
-        QCOMPARE(bus->errorString(), QStringLiteral("cannot reach socketcand at 127.0.0.1:%1: connection refused").arg(port));
+        QCOMPARE(bus->errorString(),
+                 QStringLiteral("cannot reach socketcand at 127.0.0.1:%1: connection refused").arg(port));
     }
 
     void silentServerTimesOutWithinThreeSeconds() {

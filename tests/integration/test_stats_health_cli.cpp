@@ -15,7 +15,9 @@ class StatsHealthCli : public QObject {
     QTemporaryDir dir_;
     QString log_;
 
-    static QString line(double t, const char* id, const char* data) { return QStringLiteral("(%1) can0 %2#%3\n").arg(t, 0, 'f', 6).arg(QLatin1String(id), QLatin1String(data)); }
+    static QString line(double t, const char* id, const char* data) {
+        return QStringLiteral("(%1) can0 %2#%3\n").arg(t, 0, 'f', 6).arg(QLatin1String(id), QLatin1String(data));
+    }
 
 private slots:
     void initTestCase() {
@@ -42,7 +44,9 @@ private slots:
         s += line(3.0, "62A", "4000100000000000") + line(3.180, "5AA", "4300100092010200");
         s += line(8.0, "62A", "4018100100000000");
         QStringList lines = s.split(u'\n', Qt::SkipEmptyParts);
-        std::stable_sort(lines.begin(), lines.end(), [](const QString& a, const QString& b) { return a.mid(1, 12).toDouble() < b.mid(1, 12).toDouble(); });
+        std::stable_sort(lines.begin(), lines.end(), [](const QString& a, const QString& b) {
+            return a.mid(1, 12).toDouble() < b.mid(1, 12).toDouble();
+        });
         QFile f(log_);
         QVERIFY(f.open(QIODevice::WriteOnly));
         f.write(lines.join(u'\n').toUtf8() + '\n');
@@ -53,25 +57,38 @@ private slots:
         QCOMPARE(r.code, 0);
         const QString& o = r.out;
         // The verdict first (issue 37), then the findings, the worst first.
-        QVERIFY2(o.startsWith(QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning\n\nFindings:\n  [critical]")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("[critical] nmt.reset, node 15: Node 15 booted up 2 time(s) without an NMT reset command before it.")), qPrintable(o));
+        QVERIFY2(
+            o.startsWith(QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning\n\nFindings:\n  [critical]")),
+            qPrintable(o));
+        QVERIFY2(
+            o.contains(QStringLiteral(
+                "[critical] nmt.reset, node 15: Node 15 booted up 2 time(s) without an NMT reset command before it.")),
+            qPrintable(o));
         // Where: count, first and last time, the frames as the trace numbers them (No., in the
         // log's line order): 5 lines at 0 s, then per 100 ms step i 701, 702 (i < 30), 72A, 70F,
         // 080, 181; 70F 00h of step 40 is line 5 + 39 * 5 + 29 + 4 = 233, of step 70 line 383.
         QVERIFY2(o.contains(QStringLiteral("2 times, 4.000 s .. 7.000 s; frames 233, 383\n")), qPrintable(o));
         QVERIFY2(o.contains(QStringLiteral("heartbeat.stopped, node 2: Node 2's heartbeat stopped")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("emcy.fault, node 1: Node 1 reported EMCY 2310h (Continuous over-current) 1 time(s).")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral(
+                     "emcy.fault, node 1: Node 1 reported EMCY 2310h (Continuous over-current) 1 time(s).")),
+                 qPrintable(o));
         QVERIFY2(o.contains(QStringLiteral("once, at 5.000 s; frame ")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("sdo.slow, node 42: Node 42 answered SDO requests slowly: 180 ms at the 99th percentile")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("sdo.timeout, node 42: Node 42 left 1 SDO request(s) unanswered")), qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral(
+                     "sdo.slow, node 42: Node 42 answered SDO requests slowly: 180 ms at the 99th percentile")),
+                 qPrintable(o));
+        QVERIFY2(o.contains(QStringLiteral("sdo.timeout, node 42: Node 42 left 1 SDO request(s) unanswered")),
+                 qPrintable(o));
         QVERIFY2(o.contains(QStringLiteral("      Why: ")) && o.contains(QStringLiteral(" Check: ")), qPrintable(o));
         QVERIFY(o.indexOf(QStringLiteral("nmt.reset")) < o.indexOf(QStringLiteral("sdo.slow")));
         QVERIFY(o.indexOf(QStringLiteral("sdo.slow")) < o.indexOf(QStringLiteral("Nodes (only those seen)")));
         // Each node's story after the findings: node 1 faulted (EMCY) and was reset.
         QVERIFY2(o.contains(QStringLiteral("  node 1: heartbeat 100 ms, Operational; recovered\n")), qPrintable(o));
-        QVERIFY2(o.contains(QStringLiteral("  node 2: heartbeat 100 ms, Operational; not recovered (heartbeat stopped)\n")), qPrintable(o));
+        QVERIFY2(
+            o.contains(QStringLiteral("  node 2: heartbeat 100 ms, Operational; not recovered (heartbeat stopped)\n")),
+            qPrintable(o));
         QVERIFY2(o.contains(QStringLiteral("EMCY 2310h Continuous over-current")), qPrintable(o));
-        QVERIFY(o.indexOf(QStringLiteral("Nodes (only those seen)")) < o.indexOf(QStringLiteral("Heartbeat / guarding")));
+        QVERIFY(o.indexOf(QStringLiteral("Nodes (only those seen)")) <
+                o.indexOf(QStringLiteral("Heartbeat / guarding")));
         QVERIFY(o.contains(QStringLiteral("load over time")));
         QVERIFY(!o.contains(QStringLiteral("second      1")));
     }
@@ -84,7 +101,8 @@ private slots:
         QCOMPARE(e.error, QJsonParseError::NoError);
         for (const char* k : {"findings", "nodes", "pdos", "bus"}) QVERIFY2(o.contains(QLatin1String(k)), k);
         QMap<int, QJsonObject> nodes;
-        for (const auto& v : o[QStringLiteral("nodes")].toArray()) nodes[v.toObject()[QStringLiteral("node")].toInt()] = v.toObject();
+        for (const auto& v : o[QStringLiteral("nodes")].toArray())
+            nodes[v.toObject()[QStringLiteral("node")].toInt()] = v.toObject();
         const QJsonObject n1 = nodes[1], n2 = nodes[2], n15 = nodes[15], n42 = nodes[42];
         QCOMPARE(n15[QStringLiteral("nmt")].toObject()[QStringLiteral("resets")].toInt(), 2);
         QCOMPARE(n15[QStringLiteral("nmt")].toObject()[QStringLiteral("boot_ups")].toInt(), 3);
@@ -105,9 +123,11 @@ private slots:
         QCOMPARE(bus[QStringLiteral("sync")].toObject()[QStringLiteral("count")].toInt(), 100);
         QVERIFY(bus[QStringLiteral("load_over_time")].toArray().size() <= 60);
         QVERIFY(bus[QStringLiteral("load_peak_pct")].toDouble() > 0);
-        QCOMPARE(o[QStringLiteral("findings")].toArray().at(0).toObject()[QStringLiteral("severity")].toString(), QStringLiteral("critical"));
+        QCOMPARE(o[QStringLiteral("findings")].toArray().at(0).toObject()[QStringLiteral("severity")].toString(),
+                 QStringLiteral("critical"));
         // Issue 37: the verdict, and per finding its rule, count, times, frames and sentences.
-        QCOMPARE(o[QStringLiteral("verdict")].toString(), QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning"));
+        QCOMPARE(o[QStringLiteral("verdict")].toString(),
+                 QStringLiteral("Problems found: 2 critical, 2 errors, 1 warning"));
         QJsonObject reset;
         for (const auto& v : o[QStringLiteral("findings")].toArray())
             if (v.toObject()[QStringLiteral("rule")].toString() == QLatin1String("nmt.reset")) reset = v.toObject();
@@ -131,7 +151,9 @@ private slots:
         QVERIFY(h.contains(QStringLiteral("Node 15 booted up 2 time(s) without an NMT reset command before it.")));
         QVERIFY(h.contains(QStringLiteral("Why: ")) && h.contains(QStringLiteral("Check: ")));
         // Node 15's boot-ups as visible frame references, each with its own id.
-        QVERIFY2(h.contains(QRegularExpression(QStringLiteral("frames <a class='fr' id='f(\\d+)-0'>#233</a>, <a class='fr' id='f\\1-1'>#383</a>"))), qPrintable(h));
+        QVERIFY2(h.contains(QRegularExpression(QStringLiteral(
+                     "frames <a class='fr' id='f(\\d+)-0'>#233</a>, <a class='fr' id='f\\1-1'>#383</a>"))),
+                 qPrintable(h));
         QVERIFY(h.trimmed().endsWith(QStringLiteral("</html>")));
         // Self-contained: nothing to fetch.
         QVERIFY(!h.contains(QStringLiteral("src=")));
@@ -155,7 +177,9 @@ private slots:
             for (int n = 1; n <= 5; ++n) {
                 const QByteArray cob = QByteArray::number(0x180 + n, 16).toUpper();
                 put(t + 0.001 * n, cob.constData(), "3706000000000000");
-                if (step % 10 == 0) put(t + 0.0005 * n, QByteArray::number(0x700 + n, 16).toUpper().constData(), (n == 4 && step == 6000) ? "00" : "05");
+                if (step % 10 == 0)
+                    put(t + 0.0005 * n, QByteArray::number(0x700 + n, 16).toUpper().constData(),
+                        (n == 4 && step == 6000) ? "00" : "05");
             }
             if (step % 600 == 0) {  // an SDO read of node 2 every minute; two of them aborted
                 put(t + 0.02, "602", "4018100100000000");
@@ -170,11 +194,17 @@ private slots:
         QCOMPARE(r.code, 0);
         const QStringList lines = r.out.split(u'\n');
         QVERIFY2(lines.size() < 150, qPrintable(QStringLiteral("%1 lines:\n%2").arg(lines.size()).arg(r.out)));
-        QVERIFY2(lines.front().startsWith(QStringLiteral("Problems found: 1 critical, 1 error, 1 warning")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("  node 3: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("  node 4: heartbeat 1000 ms, Operational; recovered\n")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("emcy.fault, node 3: Node 3 reported EMCY 2310h (Continuous over-current) 2 time(s).")), qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("sdo.abort, node 2: Node 2 aborted 2 SDO transfer(s) with 06020000h")), qPrintable(r.out));
+        QVERIFY2(lines.front().startsWith(QStringLiteral("Problems found: 1 critical, 1 error, 1 warning")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 3: heartbeat 1000 ms, Operational; recovered\n")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("  node 4: heartbeat 1000 ms, Operational; recovered\n")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral(
+                     "emcy.fault, node 3: Node 3 reported EMCY 2310h (Continuous over-current) 2 time(s).")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("sdo.abort, node 2: Node 2 aborted 2 SDO transfer(s) with 06020000h")),
+                 qPrintable(r.out));
     }
 
     void usage() {

@@ -26,10 +26,15 @@ using namespace svctest;
 namespace {
 od::ObjectDictionary dictionary(const QString& name) { return eds::DictionaryLibrary().load(name).dictionary; }
 
-ConfigReadResult readAll(DeviceConfiguration& config, uint8_t node, const od::ObjectDictionary& dict, int* progressCalls = nullptr) {
+ConfigReadResult readAll(DeviceConfiguration& config, uint8_t node, const od::ObjectDictionary& dict,
+                         int* progressCalls = nullptr) {
     std::optional<ConfigReadResult> out;
-    config.read(node, dict, [progressCalls](const ConfigEntryResult&, int, int) { if (progressCalls) ++*progressCalls; },
-                [&out](const ConfigReadResult& r) { out = r; });
+    config.read(
+        node, dict,
+        [progressCalls](const ConfigEntryResult&, int, int) {
+            if (progressCalls) ++*progressCalls;
+        },
+        [&out](const ConfigReadResult& r) { out = r; });
     waitUntil([&] { return out.has_value(); }, 60000);
     return out.value_or(ConfigReadResult{});
 }
@@ -46,7 +51,6 @@ std::optional<od::Value> deviceValue(Rig& rig, uint8_t node, uint16_t index, uin
     rig.onDevice(node, [&](sim::VirtualDevice& d) { v = d.value(index, sub); });
     return v;
 }
-
 
 // Sets ParameterValue of [IIII] (sub 0 VAR) or [IIIIsubS] in DCF text.
 void setParameterValue(QByteArray& dcf, const QString& section, const QString& value) {
@@ -83,7 +87,8 @@ private slots:
         QCOMPARE(progress, static_cast<int>(r.entries.size()));
         // All readable entries but the empty error history (1003h:00 = 0: subs 1..n not asked).
         const auto readable = DeviceConfiguration::readableEntries(dict);
-        const auto history = std::count_if(readable.begin(), readable.end(), [](const auto& p) { return p.first == 0x1003 && p.second > 0; });
+        const auto history = std::count_if(readable.begin(), readable.end(),
+                                           [](const auto& p) { return p.first == 0x1003 && p.second > 0; });
         QVERIFY(history > 0);
         QCOMPARE(r.entries.size(), readable.size() - static_cast<size_t>(history));
         QVERIFY(r.entries.size() > 100);
@@ -209,14 +214,18 @@ private slots:
         dcf.setParameterValue(0x6084, 0, QStringLiteral("3000"));
         const ApplyPlan plan = DeviceConfiguration::plan(3, dcf, nullptr, ApplyScope::AllValues);
         QCOMPARE(plan.writes.size(), size_t(3));
-        rig.onDevice(3, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x6083), uint8_t(0), uint32_t(0x06090031)); });
+        rig.onDevice(3, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x6083), uint8_t(0), uint32_t(0x06090031));
+        });
         const auto results = apply(config, plan);
         QCOMPARE(results.size(), size_t(3));  // no retries, none left out
         QVERIFY(results[0].ok);
         QVERIFY(!results[1].ok);
         QCOMPARE(results[1].index, uint16_t(0x6083));
         QCOMPARE(results[1].abortCode, 0x06090031u);
-        QVERIFY2(results[1].error.contains(QStringLiteral("6083:00")) && results[1].error.contains(QStringLiteral("too high")), qPrintable(results[1].error));
+        QVERIFY2(results[1].error.contains(QStringLiteral("6083:00")) &&
+                     results[1].error.contains(QStringLiteral("too high")),
+                 qPrintable(results[1].error));
         QVERIFY(results[2].ok);
         QCOMPARE(deviceValue(rig, 3, 0x1017, 0)->toUInt64().value_or(0), uint64_t(100));
         QCOMPARE(deviceValue(rig, 3, 0x6084, 0)->toUInt64().value_or(0), uint64_t(3000));
@@ -230,9 +239,12 @@ private slots:
         SdoClient sdo(*rig.context);
         DeviceConfiguration config(sdo);
         std::optional<ConfigReadResult> out;
-        config.read(1, dictionary(QStringLiteral("delta-asda-a2")), [&config](const ConfigEntryResult&, int done, int) {
-            if (done == 5) config.cancel();
-        }, [&out](const ConfigReadResult& r) { out = r; });
+        config.read(
+            1, dictionary(QStringLiteral("delta-asda-a2")),
+            [&config](const ConfigEntryResult&, int done, int) {
+                if (done == 5) config.cancel();
+            },
+            [&out](const ConfigReadResult& r) { out = r; });
         QVERIFY(waitUntil([&] { return out.has_value(); }, 20000));
         QVERIFY(out->cancelled);
         QCOMPARE(out->entries.size(), size_t(5));
@@ -267,21 +279,32 @@ private slots:
         // Without --yes: refused, nothing written, the count said.
         r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("would write 1 object(s) to node 1")) && r.err.contains(QStringLiteral("--yes")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("would write 1 object(s) to node 1")) &&
+                     r.err.contains(QStringLiteral("--yes")),
+                 qPrintable(r.err));
         QCOMPARE(r.err.count(u'\n'), 1);
         // --dry-run lists the write and exits 0.
-        r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path, QStringLiteral("--dry-run")});
+        r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path,
+                 QStringLiteral("--dry-run")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("write 1017:00")) && r.out.contains(QStringLiteral("0x012C")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("write 1017:00")) && r.out.contains(QStringLiteral("0x012C")),
+                 qPrintable(r.out));
         QVERIFY(r.out.contains(QStringLiteral("now 0x0000")));
         // --yes writes it.
-        r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path, QStringLiteral("--yes")});
+        r = cli(
+            {QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path, QStringLiteral("--yes")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("ok     1017:00")) && r.out.contains(QStringLiteral("1 object(s) written")), qPrintable(r.out));
+        QVERIFY2(
+            r.out.contains(QStringLiteral("ok     1017:00")) && r.out.contains(QStringLiteral("1 object(s) written")),
+            qPrintable(r.out));
         // Usage errors.
-        QCOMPARE(cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path, QStringLiteral("--yes"), QStringLiteral("--dry-run")}).code, 2);
+        QCOMPARE(cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), path,
+                      QStringLiteral("--yes"), QStringLiteral("--dry-run")})
+                     .code,
+                 2);
         QCOMPARE(cli({QStringLiteral("dcf"), QStringLiteral("export"), bus, QStringLiteral("200"), path}).code, 2);
-        r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"), dir_.filePath(QStringLiteral("missing.dcf"))});
+        r = cli({QStringLiteral("dcf"), QStringLiteral("apply"), bus, QStringLiteral("1"),
+                 dir_.filePath(QStringLiteral("missing.dcf"))});
         QCOMPARE(r.code, 1);
         QVERIFY(r.err.contains(QStringLiteral("missing.dcf")));
     }

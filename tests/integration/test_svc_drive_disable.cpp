@@ -6,8 +6,8 @@
 // a silent or refusing drive and a listen-only bus are reported, never waited on for ever.
 #include "SvcTestRig.h"
 
-#include "core/canopen/Ds402Controller.h"
 #include "core/canopen/DriveDisable.h"
+#include "core/canopen/Ds402Controller.h"
 #include "core/canopen/SdoClient.h"
 #include "core/canopen/ServiceWait.h"
 #include "core/sim/Ds402Drive.h"
@@ -105,11 +105,14 @@ private slots:
     void refusalIsNamed() {
         Rig rig;
         ScriptedNode* n = rig.addNode(6);
-        n->setScript([](const CanFrame& in, ScriptedNode& node) { node.reply({0x80, in.data[1], in.data[2], in.data[3], 0x00, 0x00, 0x02, 0x08}); });
+        n->setScript([](const CanFrame& in, ScriptedNode& node) {
+            node.reply({0x80, in.data[1], in.data[2], in.data[3], 0x00, 0x00, 0x02, 0x08});
+        });
         QVERIFY(rig.open());
         rig.context->enabledDrives().noteControlword(6, 1, 0x000F);
         const DriveDisableOutcome out = disableEnabledDrives(*rig.context, 400);
-        QVERIFY2(out.allSeen() && !out.drives[0].answered && out.drives[0].error.contains(QStringLiteral("refused")), qPrintable(out.summary()));
+        QVERIFY2(out.allSeen() && !out.drives[0].answered && out.drives[0].error.contains(QStringLiteral("refused")),
+                 qPrintable(out.summary()));
         const auto seen = n->seen();
         QCOMPARE(seen.size(), size_t(2));  // Quick stop, then Disable voltage
         QCOMPARE(bytesOf(seen[0]), hex("2B40680002000000"));

@@ -47,7 +47,8 @@ struct StuckDrive {
                 *idx = index;
                 n.reply({0x4B, in.data[1], in.data[2], in.data[3], 0x40, 0x02, 0, 0});  // 0240h: switch on disabled
             } else if ((in.data[0] & 0xE0) == 0x20) {
-                if ((index & 0x07FF) == 0x0040 && (index & 0xF000) == 0x6000) cws->push_back(uint16_t(in.data[4] | (in.data[5] << 8)));
+                if ((index & 0x07FF) == 0x0040 && (index & 0xF000) == 0x6000)
+                    cws->push_back(uint16_t(in.data[4] | (in.data[5] << 8)));
                 n.reply({0x60, in.data[1], in.data[2], in.data[3], 0, 0, 0, 0});
             }
         };
@@ -139,7 +140,9 @@ private slots:
         ctl.setTimeout(150);
         const Ds402Result r = wait([&](auto cb) { ctl.enable(cb); });
         QVERIFY(!r.ok);
-        QVERIFY2(r.error.contains(QStringLiteral("did not reach Ready to switch on")) || r.error.contains(QStringLiteral("did not reach")), qPrintable(r.error));
+        QVERIFY2(r.error.contains(QStringLiteral("did not reach Ready to switch on")) ||
+                     r.error.contains(QStringLiteral("did not reach")),
+                 qPrintable(r.error));
         QVERIFY2(r.error.contains(QStringLiteral("missing bit 0")), qPrintable(r.error));
         QVERIFY2(r.error.contains(QStringLiteral("drive disabled")), qPrintable(r.error));
         QCOMPARE(*stuck.controlwords, (std::vector<uint16_t>{0x0006, 0x0000}));
@@ -166,7 +169,8 @@ private slots:
     }
 
     void mismatchNamesBits() {
-        QCOMPARE(Ds402Controller::describeMismatch(State::OperationEnabled, 0x0233), QStringLiteral("missing bit 2 (%1)").arg(ds402::statuswordBitName(2)));
+        QCOMPARE(Ds402Controller::describeMismatch(State::OperationEnabled, 0x0233),
+                 QStringLiteral("missing bit 2 (%1)").arg(ds402::statuswordBitName(2)));
     }
 };
 

@@ -40,7 +40,9 @@ int32_t position(Rig& rig, uint8_t node) {
     rig.onDevice(node, [&](sim::VirtualDevice& d) { p = int32_t(std::llround(d.drive(0)->position())); });
     return p;
 }
-const char* dictionaryOf(uint8_t node) { return node == 1 ? "delta-asda-a2" : node == 2 ? "aimotor" : "generic-cia402"; }
+const char* dictionaryOf(uint8_t node) {
+    return node == 1 ? "delta-asda-a2" : node == 2 ? "aimotor" : "generic-cia402";
+}
 }  // namespace
 
 class TestSvcDs402Motion : public QObject {
@@ -52,7 +54,12 @@ class TestSvcDs402Motion : public QObject {
         Ds402Controller ctl(*sdo_, node);
         Run run;
         ctl.setSendObserver([&](const QString& s) { run.sent << s; });
-        auto r = waitForResult<Ds402Result>([&](Ds402Callback cb) { ctl.home(req, [&](const Ds402MotionSample& s) { run.samples.push_back(s); }, cb); }, 60000);
+        auto r = waitForResult<Ds402Result>(
+            [&](Ds402Callback cb) {
+                ctl.home(
+                    req, [&](const Ds402MotionSample& s) { run.samples.push_back(s); }, cb);
+            },
+            60000);
         if (r) run.result = *r;
         else run.result.error = QStringLiteral("no result");
         return run;
@@ -61,7 +68,12 @@ class TestSvcDs402Motion : public QObject {
         Ds402Controller ctl(*sdo_, node);
         Run run;
         ctl.setSendObserver([&](const QString& s) { run.sent << s; });
-        auto r = waitForResult<Ds402Result>([&](Ds402Callback cb) { ctl.moveTo(move, [&](const Ds402MotionSample& s) { run.samples.push_back(s); }, cb); }, 60000);
+        auto r = waitForResult<Ds402Result>(
+            [&](Ds402Callback cb) {
+                ctl.moveTo(
+                    move, [&](const Ds402MotionSample& s) { run.samples.push_back(s); }, cb);
+            },
+            60000);
         if (r) run.result = *r;
         else run.result.error = QStringLiteral("no result");
         return run;
@@ -102,11 +114,14 @@ private slots:
         QVERIFY(run.result.statusword & (1u << 12));  // homing attained
         QVERIFY(run.result.statusword & (1u << 10));
         QCOMPARE(machine(*rig_, uint8_t(node)), before);  // no movement
-        QCOMPARE(position(*rig_, uint8_t(node)), 500);     // 6064h = home offset
+        QCOMPARE(position(*rig_, uint8_t(node)), 500);    // 6064h = home offset
         // 6060h = 6, the parameters, 06 07 0F, then 0F -> 1F and bit 4 low again at the end.
         const QString all = run.sent.join(u'\n');
-        QVERIFY2(all.contains(QStringLiteral("6060h = 6")) && all.contains(QStringLiteral("6098h = 35")) && all.contains(QStringLiteral("607Ch = 500")), qPrintable(all));
-        QVERIFY2(run.sent.size() >= 3 && run.sent[run.sent.size() - 2].contains(QStringLiteral("6040h = 0x001F")), qPrintable(all));
+        QVERIFY2(all.contains(QStringLiteral("6060h = 6")) && all.contains(QStringLiteral("6098h = 35")) &&
+                     all.contains(QStringLiteral("607Ch = 500")),
+                 qPrintable(all));
+        QVERIFY2(run.sent.size() >= 3 && run.sent[run.sent.size() - 2].contains(QStringLiteral("6040h = 0x001F")),
+                 qPrintable(all));
         QVERIFY2(run.sent.back().contains(QStringLiteral("6040h = 0x000F")), qPrintable(all));
         QCOMPARE(driveState(*rig_, uint8_t(node)), State::OperationEnabled);  // stays enabled, homed
     }
@@ -133,7 +148,8 @@ private slots:
         QVERIFY2(run.result.ok, qPrintable(run.result.error));
         QVERIFY(run.result.statusword & (1u << 12));
         QCOMPARE(position(*rig_, uint8_t(node)), -250);
-        QVERIFY2(std::abs(machine(*rig_, uint8_t(node)) - homeAt) < 1.0, qPrintable(QString::number(machine(*rig_, uint8_t(node)))));
+        QVERIFY2(std::abs(machine(*rig_, uint8_t(node)) - homeAt) < 1.0,
+                 qPrintable(QString::number(machine(*rig_, uint8_t(node)))));
         // The progress showed the motor on its way (in progress: bits 12/13 off, moving).
         bool moving = false;
         for (const auto& s : run.samples) moving |= s.velocity != 0 && !(s.statusword & (3u << 12));
@@ -161,7 +177,9 @@ private slots:
         QVERIFY2(run.result.error.contains(QStringLiteral("drive disabled")), qPrintable(run.result.error));
         QVERIFY2(run.sent.back().contains(QStringLiteral("6040h = 0x0000")), qPrintable(run.sent.join(u'\n')));
         // Disabled, or in Fault after the vendor alarm (past its fault reaction).
-        QTRY_VERIFY_WITH_TIMEOUT(driveState(*rig_, uint8_t(node)) == State::SwitchOnDisabled || driveState(*rig_, uint8_t(node)) == State::Fault, 2000);
+        QTRY_VERIFY_WITH_TIMEOUT(driveState(*rig_, uint8_t(node)) == State::SwitchOnDisabled ||
+                                     driveState(*rig_, uint8_t(node)) == State::Fault,
+                                 2000);
     }
 
     void aimotorHardStopAndMethodChangeWhileEnabled() {
@@ -172,7 +190,8 @@ private slots:
         req.slowSpeed = 3000;
         const Run run = home(2, req);
         QVERIFY2(run.result.ok, qPrintable(run.result.error));
-        QVERIFY2(run.sent.join(u'\n').contains(QStringLiteral("6040h = 0x0006 (Shutdown)")), qPrintable(run.sent.join(u'\n')));
+        QVERIFY2(run.sent.join(u'\n').contains(QStringLiteral("6040h = 0x0006 (Shutdown)")),
+                 qPrintable(run.sent.join(u'\n')));
         QVERIFY(run.result.statusword & 0x8000);  // home found
         QCOMPARE(position(*rig_, 2), 0);
         QVERIFY2(std::abs(machine(*rig_, 2) - 1200.0) < 1.0, qPrintable(QString::number(machine(*rig_, 2))));
@@ -194,7 +213,9 @@ private slots:
         QVERIFY(run.result.statusword & (1u << 10));  // target reached
         QCOMPARE(position(*rig_, uint8_t(node)), 1000);
         const QString all = run.sent.join(u'\n');
-        QVERIFY2(all.contains(QStringLiteral("6040h = 0x001F (New set-point")) && run.sent.back().contains(QStringLiteral("6040h = 0x000F")), qPrintable(all));
+        QVERIFY2(all.contains(QStringLiteral("6040h = 0x001F (New set-point")) &&
+                     run.sent.back().contains(QStringLiteral("6040h = 0x000F")),
+                 qPrintable(all));
         // Relative: from the last target.
         move.relative = true;
         run = moveTo(uint8_t(node), move);

@@ -94,7 +94,8 @@ private slots:
             b.guards.reset();
             b.sdo.reset();
             DriveDisableOutcome disabled;
-            disabled.drives.push_back({EnabledDrives::Drive{3, 0, 0x000F}, true, true, confirmed, confirmed ? QString() : QStringLiteral("no answer")});
+            disabled.drives.push_back({EnabledDrives::Drive{3, 0, 0x000F}, true, true, confirmed,
+                                       confirmed ? QString() : QStringLiteral("no answer")});
             const auto out = putBackDirect(*b.rig.context, std::move(putBack), disabled, 500);
             QCOMPARE(out.size(), size_t(1));
             QCOMPARE(out[0].putBack, confirmed);

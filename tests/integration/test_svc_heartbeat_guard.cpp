@@ -68,9 +68,12 @@ private slots:
         QCOMPARE(r.consumerEntry, 0x007F012Cu);
         QCOMPARE(r.abortOption.value_or(-1), int16_t(3));
         QCOMPARE(sent.size(), 2);
-        QVERIFY2(sent[0].startsWith(QStringLiteral("node 3: 6007h = 3 (quick stop")), qPrintable(sent[0]));  // reaction first
+        QVERIFY2(sent[0].startsWith(QStringLiteral("node 3: 6007h = 3 (quick stop")),
+                 qPrintable(sent[0]));  // reaction first
         QVERIFY2(sent[1].startsWith(QStringLiteral("node 3: 1016h:02 = 0x007F012C")), qPrintable(sent[1]));
-        QVERIFY2(r.summary.contains(QStringLiteral("300 ms")) && r.summary.contains(QStringLiteral("6007h = 3 (quick stop)")), qPrintable(r.summary));
+        QVERIFY2(r.summary.contains(QStringLiteral("300 ms")) &&
+                     r.summary.contains(QStringLiteral("6007h = 3 (quick stop)")),
+                 qPrintable(r.summary));
         QCOMPARE(value(b.rig, 3, 0x1016, 2), 0x007F012Cu);
         QCOMPARE(value(b.rig, 3, 0x6007, 0), 3u);
 
@@ -79,7 +82,8 @@ private slots:
         QVERIFY2(back.ok, qPrintable(back.error));
         QVERIFY(!guard.armed());
         QCOMPARE(sent.size(), 2);
-        QVERIFY2(sent[0].startsWith(QStringLiteral("node 3: 1016h:02 = 0x00000000")), qPrintable(sent[0]));  // stop watching first
+        QVERIFY2(sent[0].startsWith(QStringLiteral("node 3: 1016h:02 = 0x00000000")),
+                 qPrintable(sent[0]));  // stop watching first
         QCOMPARE(value(b.rig, 3, 0x1016, 2), 0u);
         QCOMPARE(value(b.rig, 3, 0x6007, 0), 1u);
         QCOMPARE(value(b.rig, 3, 0x1016, 1), 0x00050064u);  // untouched
@@ -114,14 +118,18 @@ private slots:
         dev.setSendObserver([&](const QString& line) { sent << line; });
         auto r = wait([&](auto cb) { dev.arm(*b.heartbeat, cb); });
         QVERIFY(!r.ok);
-        QVERIFY2(r.error.contains(QStringLiteral("has no heartbeat consumer (1016h)")) && r.error.contains(QStringLiteral("nothing changed")), qPrintable(r.error));
+        QVERIFY2(r.error.contains(QStringLiteral("has no heartbeat consumer (1016h)")) &&
+                     r.error.contains(QStringLiteral("nothing changed")),
+                 qPrintable(r.error));
         // Delta: its one entry watches another node.
         set(b.rig, 1, 0x1016, 1, od::Value::unsignedInt(0x00050064));
         HeartbeatGuard delta(*b.sdo, 1);
         delta.setSendObserver([&](const QString& line) { sent << line; });
         r = wait([&](auto cb) { delta.arm(*b.heartbeat, cb); });
         QVERIFY(!r.ok);
-        QVERIFY2(r.error.contains(QStringLiteral("all 1 heartbeat consumer entries (1016h) are in use, watching node 5")), qPrintable(r.error));
+        QVERIFY2(
+            r.error.contains(QStringLiteral("all 1 heartbeat consumer entries (1016h) are in use, watching node 5")),
+            qPrintable(r.error));
         // CoScope's heartbeat is not running.
         b.heartbeat->stop();
         HeartbeatGuard generic(*b.sdo, 3);
@@ -144,8 +152,10 @@ private slots:
         const auto r = wait([&](auto cb) { guard.arm(*b.heartbeat, cb); });
         QVERIFY2(r.ok, qPrintable(r.error));
         QVERIFY(!r.abortOption);
-        QCOMPARE(sent, QStringList{QStringLiteral("node 1: 1016h:01 = 0x007F012C (watch node 127's heartbeat, 300 ms)")});
-        QVERIFY2(r.summary.contains(QStringLiteral("no 6007h")) && r.summary.contains(QStringLiteral("AL170")), qPrintable(r.summary));
+        QCOMPARE(sent,
+                 QStringList{QStringLiteral("node 1: 1016h:01 = 0x007F012C (watch node 127's heartbeat, 300 ms)")});
+        QVERIFY2(r.summary.contains(QStringLiteral("no 6007h")) && r.summary.contains(QStringLiteral("AL170")),
+                 qPrintable(r.summary));
         QVERIFY(wait([&](auto cb) { guard.release(cb); }).ok);
         QCOMPARE(value(b.rig, 1, 0x1016, 1), 0u);
     }

@@ -39,7 +39,9 @@ private slots:
         QVERIFY2(r.ok, qPrintable(r.error));
         QCOMPARE(r.identity.vendorId, 0x000001DDu);
         uint32_t serial = 0;
-        rig.onDevice(1, [&](sim::VirtualDevice& d) { serial = uint32_t(d.value(0x1018, 4).value_or(od::Value{}).toUInt64().value_or(0)); });
+        rig.onDevice(1, [&](sim::VirtualDevice& d) {
+            serial = uint32_t(d.value(0x1018, 4).value_or(od::Value{}).toUInt64().value_or(0));
+        });
         QCOMPARE(r.identity.serial, serial);  // the LSS address is 1018h:01..04 (CiA 305 §4.2)
         r = wait([&](auto cb) { lss.inquireNodeId(cb); });
         QCOMPARE(r.value, 1u);
@@ -62,12 +64,14 @@ private slots:
         // Activate bit timing (unconfirmed) switches the device to the configured rate.
         QVERIFY(lss.activateBitTiming(5));
         uint32_t rate = 0;
-        QTRY_VERIFY_WITH_TIMEOUT((rig.onDevice(1, [&](sim::VirtualDevice& d) { rate = d.bitRate(); }), rate == 250000u), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT((rig.onDevice(1, [&](sim::VirtualDevice& d) { rate = d.bitRate(); }), rate == 250000u),
+                                 3000);
         QVERIFY(lss.switchStateGlobal(false));
         NmtMaster nmt(*rig.context);
         QVERIFY(nmt.resetCommunication(0));
         bool moved = false;
-        QTRY_VERIFY_WITH_TIMEOUT((rig.network->runOnNetworkThread([&] { moved = rig.network->device(12) != nullptr; }), moved), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (rig.network->runOnNetworkThread([&] { moved = rig.network->device(12) != nullptr; }), moved), 3000);
     }
 
     void selectiveSwitch() {
@@ -119,7 +123,8 @@ private slots:
         NmtMaster nmt(*rig.context);
         QVERIFY(nmt.resetCommunication(0));  // CiA 305: the new node-ID applies from here at the latest
         bool present = false;
-        QTRY_VERIFY_WITH_TIMEOUT((rig.network->runOnNetworkThread([&] { present = rig.network->device(20) != nullptr; }), present), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (rig.network->runOnNetworkThread([&] { present = rig.network->device(20) != nullptr; }), present), 3000);
     }
 
     // A slave (or a gateway) that answers later than the master's first guess: fastscan must
@@ -145,7 +150,8 @@ private slots:
         });
         LssResult r = wait([&](auto cb) { lss.fastscan(cb); });
         QVERIFY2(r.ok, qPrintable(r.error));
-        QVERIFY2(r.identity.serial == serial4 || r.identity.serial == serial5, qPrintable(QString::number(r.identity.serial, 16)));
+        QVERIFY2(r.identity.serial == serial4 || r.identity.serial == serial5,
+                 qPrintable(QString::number(r.identity.serial, 16)));
         r = wait([&](auto cb) { lss.inquireIdentity(cb); });
         QVERIFY2(r.ok, qPrintable(r.error));
         QVERIFY(r.identity.serial == serial4 || r.identity.serial == serial5);

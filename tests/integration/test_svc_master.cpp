@@ -23,7 +23,8 @@ constexpr int64_t kMs = 1'000'000;
 
 std::vector<CanFrame> framesOf(Rig& rig, uint32_t id, bool extended = false) {
     std::vector<CanFrame> out;
-    for (auto no : rig.session.store()->framesFor(TraceStore::keyOf(id, extended))) out.push_back(rig.session.store()->frame(no));
+    for (auto no : rig.session.store()->framesFor(TraceStore::keyOf(id, extended)))
+        out.push_back(rig.session.store()->frame(no));
     return out;
 }
 
@@ -126,8 +127,10 @@ private slots:
         const auto f = framesOf(rig, 0x321);
         // As the bus saw it (the virtual network stamps frames on its 1 ms tick).
         const double meanMs = double(f.back().timestampNs - f.front().timestampNs) / 19 / 1e6;
-        qInfo("mean period on the virtual bus: %.3f ms (skipped %llu)", meanMs, static_cast<unsigned long long>(sender.status(id).skipped));
-        QVERIFY2(meanMs > 9.5 && meanMs < 10.5 + 10.0 * double(sender.status(id).skipped) / 19, qPrintable(QString::number(meanMs)));
+        qInfo("mean period on the virtual bus: %.3f ms (skipped %llu)", meanMs,
+              static_cast<unsigned long long>(sender.status(id).skipped));
+        QVERIFY2(meanMs > 9.5 && meanMs < 10.5 + 10.0 * double(sender.status(id).skipped) / 19,
+                 qPrintable(QString::number(meanMs)));
 
         job.frame = CanFrame::classic(0x322, {});
         job.count = 0;

@@ -42,7 +42,10 @@ private slots:
         SdoClient sdo(*rig.context);
         NmtMaster nmt(*rig.context);
         for (uint8_t n : {1, 2, 3}) QVERIFY(setHeartbeat(sdo, n, 50));  // heartbeat every 50 ms
-        const auto state = [&](uint8_t n) { const auto info = monitor.table().node(n); return static_cast<uint8_t>(info ? info->nmtState : 0xFF); };
+        const auto state = [&](uint8_t n) {
+            const auto info = monitor.table().node(n);
+            return static_cast<uint8_t>(info ? info->nmtState : 0xFF);
+        };
         QTRY_COMPARE_WITH_TIMEOUT(state(3), uint8_t(0x7F), 2000);
         QVERIFY(nmt.start(0));
         QTRY_VERIFY_WITH_TIMEOUT(state(1) == 5 && state(2) == 5 && state(3) == 5, 2000);
@@ -126,7 +129,8 @@ private slots:
             counters.push_back(f.data[0]);
         }
         for (size_t i = 0; i < 8; ++i) QCOMPARE(counters[i], int(i % 4) + 1);
-        auto r = waitForResult<SdoResult>([&](SdoCallback cb) { sync.writeCommunicationCyclePeriod(sdo, 3, cb); }, 5000);
+        auto r =
+            waitForResult<SdoResult>([&](SdoCallback cb) { sync.writeCommunicationCyclePeriod(sdo, 3, cb); }, 5000);
         QVERIFY(r && r->ok);
         auto back = waitForResult<SdoResult>([&](SdoCallback cb) { sdo.upload(3, 0x1006, 0, cb); }, 5000);
         QVERIFY(back && back->ok);

@@ -72,7 +72,9 @@ struct Net {
         int id = -1;
         network->runOnNetworkThread([&] {
             for (const auto& n : network->nodes())
-                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get()); d && d->serialNumber() == 0x51000000u + firstId) id = d->nodeId();
+                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get());
+                    d && d->serialNumber() == 0x51000000u + firstId)
+                    id = d->nodeId();
         });
         return id;
     }
@@ -80,7 +82,9 @@ struct Net {
         uint32_t r = 0;
         network->runOnNetworkThread([&] {
             for (const auto& n : network->nodes())
-                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get()); d && d->serialNumber() == 0x51000000u + firstId) r = d->bitRate();
+                if (auto* d = dynamic_cast<sim::VirtualDevice*>(n.get());
+                    d && d->serialNumber() == 0x51000000u + firstId)
+                    r = d->bitRate();
         });
         return r;
     }
@@ -88,7 +92,10 @@ struct Net {
 
 std::optional<NodeSettingsPlan> prepare(Endpoint& e, const NodeSettingsRequest& r, QString* error) {
     using Res = std::pair<std::optional<NodeSettingsPlan>, QString>;
-    auto res = waitForResult<Res>([&](auto cb) { e.changer->prepare(r, [cb](auto p, QString err) { cb(Res{p, err}); }); }, 10000);
+    auto res = waitForResult<Res>(
+        [&](auto cb) { e.changer->prepare(r, [cb](auto p, QString err) {
+                           cb(Res{p, err});
+                       }); }, 10000);
     if (!res) {
         *error = QStringLiteral("no result");
         return std::nullopt;
@@ -204,7 +211,8 @@ private slots:
         Net net;
         Endpoint e;
         QVERIFY(e.open(QStringLiteral("sim://"), net.network));
-        const std::pair<uint8_t, QString> cases[] = {{1, QStringLiteral("delta-asda-a2")}, {2, QStringLiteral("aimotor")}, {3, QStringLiteral("dexmart-dev")}};
+        const std::pair<uint8_t, QString> cases[] = {
+            {1, QStringLiteral("delta-asda-a2")}, {2, QStringLiteral("aimotor")}, {3, QStringLiteral("dexmart-dev")}};
         for (const auto& [node, dict] : cases) {
             const auto newId = uint8_t(30 + node);
             QString error;
@@ -276,11 +284,13 @@ private slots:
         Endpoint e;
         QVERIFY(e.open(QStringLiteral("sim://"), net.network));
         net.onDevice(1, [](sim::VirtualDevice& d) {
-            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x2300), uint8_t(0), uint32_t(0x08000022));  // device state
+            d.sdoFaults().abortOn =
+                std::make_tuple(uint16_t(0x2300), uint8_t(0), uint32_t(0x08000022));  // device state
             return 0;
         });
         QString error;
-        auto plan = prepare(e, nodeIdRequest(1, 9, NodeSettingsRequest::Method::Vendor, QStringLiteral("delta-asda-a2")), &error);
+        auto plan = prepare(
+            e, nodeIdRequest(1, 9, NodeSettingsRequest::Method::Vendor, QStringLiteral("delta-asda-a2")), &error);
         QVERIFY(plan);
         const auto out = runPart(e, *plan, 0);
         QVERIFY(!out.ok);
@@ -330,16 +340,24 @@ private slots:
     }
 
     void cliVerbs() {
-        Run r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=1:delta-asda-a2"), QStringLiteral("1"), QStringLiteral("7"), QStringLiteral("--via"), QStringLiteral("vendor")}, 30000);
+        Run r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=1:delta-asda-a2"), QStringLiteral("1"),
+                     QStringLiteral("7"), QStringLiteral("--via"), QStringLiteral("vendor")},
+                    30000);
         QCOMPARE(r.code, 0);
         QVERIFY(r.out.contains(QStringLiteral("node 1 is now node 7")));
-        r = cli({QStringLiteral("bitrate"), QStringLiteral("sim://?nodes=2:aimotor"), QStringLiteral("2"), QStringLiteral("250000")}, 30000);
+        r = cli({QStringLiteral("bitrate"), QStringLiteral("sim://?nodes=2:aimotor"), QStringLiteral("2"),
+                 QStringLiteral("250000")},
+                30000);
         QCOMPARE(r.code, 0);
         QVERIFY(r.out.contains(QStringLiteral("node 2 runs at 250 kbit/s")));
-        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=4:generic-cia402"), QStringLiteral("4"), QStringLiteral("8"), QStringLiteral("--via"), QStringLiteral("vendor"), QStringLiteral("--dict"), QStringLiteral("generic-cia402")}, 30000);
+        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://?nodes=4:generic-cia402"), QStringLiteral("4"),
+                 QStringLiteral("8"), QStringLiteral("--via"), QStringLiteral("vendor"), QStringLiteral("--dict"),
+                 QStringLiteral("generic-cia402")},
+                30000);
         QCOMPARE(r.code, 1);
         QVERIFY(r.err.contains(QStringLiteral("use LSS")));
-        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://"), QStringLiteral("1"), QStringLiteral("300")}, 30000);
+        r = cli({QStringLiteral("node-id"), QStringLiteral("sim://"), QStringLiteral("1"), QStringLiteral("300")},
+                30000);
         QCOMPARE(r.code, 2);
     }
 };

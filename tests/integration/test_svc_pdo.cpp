@@ -131,14 +131,18 @@ private slots:
         const auto before = wait<PdoReadResult>([&](auto cb) { pdo.read(3, t1, cb); });
         QVERIFY(before.ok);
         const uint8_t failingSub = static_cast<uint8_t>(before.config.entries.size() + 1);
-        rig.onDevice(3, [&](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1A00), failingSub, uint32_t(0x06040041)); });
+        rig.onDevice(3, [&](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1A00), failingSub, uint32_t(0x06040041));
+        });
         PdoConfig want;
-        for (size_t i = 0; i < failingSub; ++i) want.entries.push_back(i % 2 ? PdoMapEntry{0x6061, 0, 0} : PdoMapEntry{0x6041, 0, 0});
+        for (size_t i = 0; i < failingSub; ++i)
+            want.entries.push_back(i % 2 ? PdoMapEntry{0x6061, 0, 0} : PdoMapEntry{0x6041, 0, 0});
         want.transmissionType = 254;
         const auto r = wait<PdoWriteResult>([&](auto cb) { pdo.write(3, t1, want, &dict, cb); });
         QVERIFY(!r.ok);
         QVERIFY(r.restored);
-        QVERIFY2(r.failedStep.contains(QStringLiteral("1A00:%1").arg(failingSub, 2, 10, QChar(u'0'))), qPrintable(r.failedStep));
+        QVERIFY2(r.failedStep.contains(QStringLiteral("1A00:%1").arg(failingSub, 2, 10, QChar(u'0'))),
+                 qPrintable(r.failedStep));
         QVERIFY2(r.error.contains(QStringLiteral("previous mapping restored")), qPrintable(r.error));
         rig.onDevice(3, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn.reset(); });
         const auto after = wait<PdoReadResult>([&](auto cb) { pdo.read(3, t1, cb); });

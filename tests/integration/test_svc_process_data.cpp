@@ -129,8 +129,8 @@ private slots:
         QVERIFY(r.data->setValue(0x607A, 0, -7));  // typed before the read's answers came
         QTRY_VERIFY_WITH_TIMEOUT(done, 5000);
         QVERIFY2(failed.isEmpty(), qPrintable(failed.join(u'\n')));
-        QCOMPARE(r.data->value(0x6060, 0).value_or(0), int64_t(1));    // read from the drive
-        QCOMPARE(r.data->value(0x607A, 0).value_or(0), int64_t(-7));   // the user's, not 1234
+        QCOMPARE(r.data->value(0x6060, 0).value_or(0), int64_t(1));   // read from the drive
+        QCOMPARE(r.data->value(0x607A, 0).value_or(0), int64_t(-7));  // the user's, not 1234
     }
 
     void motionOnlyWhileHeld() {
@@ -196,17 +196,20 @@ private slots:
         r.sync->stop();
         const size_t pdos = r.seen(0x302).size();
         const size_t syncs = r.seen(0x80).size();
-        QVERIFY2(syncs >= 15 && pdos + 2 >= syncs && pdos <= syncs + 1, qPrintable(QStringLiteral("%1 %2").arg(syncs).arg(pdos)));
+        QVERIFY2(syncs >= 15 && pdos + 2 >= syncs && pdos <= syncs + 1,
+                 qPrintable(QStringLiteral("%1 %2").arg(syncs).arg(pdos)));
     }
 
     void driveTurnsOnRpdo2() {
         ProcessRig r;
         QVERIFY(r.open());
         QString error;
-        QVERIFY(r.rig.context->send(CanFrame::classic(0x000, {0x01, kAimotor}), &error));  // NMT start (CiA 301 §7.2.8.3.1)
+        QVERIFY(
+            r.rig.context->send(CanFrame::classic(0x000, {0x01, kAimotor}), &error));  // NMT start (CiA 301 §7.2.8.3.1)
         SdoClient sdo(*r.rig.context);
         Ds402Controller ctl(sdo, kAimotor);
-        auto mode = waitForResult<Ds402Result>([&](Ds402Callback cb) { ctl.setMode(3, cb); }, 5000);  // profile velocity
+        auto mode =
+            waitForResult<Ds402Result>([&](Ds402Callback cb) { ctl.setMode(3, cb); }, 5000);  // profile velocity
         QVERIFY(mode && mode->ok);
         auto en = waitForResult<Ds402Result>([&](Ds402Callback cb) { ctl.enable(cb); }, 5000);
         QVERIFY2(en && en->ok, en ? qPrintable(en->error) : "no result");
@@ -227,7 +230,8 @@ private slots:
         }
         QVERIFY2(moved, qPrintable(QString::number(r.velocity())));
         r.data->releaseHold();
-        QVERIFY2(QTest::qWaitFor([&] { return std::abs(r.velocity()) < 1; }, 3000), qPrintable(QString::number(r.velocity())));
+        QVERIFY2(QTest::qWaitFor([&] { return std::abs(r.velocity()) < 1; }, 3000),
+                 qPrintable(QString::number(r.velocity())));
         QCOMPARE(r.state(), ds402::State::OperationEnabled);  // halted, not disabled
         r.data->stop();
         r.sync->stop();

@@ -31,12 +31,16 @@ QByteArray payload(int size, quint32 seed) {
     return p;
 }
 
-ProgramDownloadOutcome download(ProgramDownload& pd, const ProgramDownloadRequest& req, int* progressCalls = nullptr, qint64* lastDone = nullptr) {
+ProgramDownloadOutcome download(ProgramDownload& pd, const ProgramDownloadRequest& req, int* progressCalls = nullptr,
+                                qint64* lastDone = nullptr) {
     std::optional<ProgramDownloadOutcome> out;
-    pd.run(req, {}, [&](qint64 done, qint64, double) {
-        if (progressCalls) ++*progressCalls;
-        if (lastDone) *lastDone = done;
-    }, [&](const ProgramDownloadOutcome& o) { out = o; });
+    pd.run(
+        req, {},
+        [&](qint64 done, qint64, double) {
+            if (progressCalls) ++*progressCalls;
+            if (lastDone) *lastDone = done;
+        },
+        [&](const ProgramDownloadOutcome& o) { out = o; });
     waitUntil([&] { return out.has_value(); }, 60000);
     return out.value_or(ProgramDownloadOutcome{});
 }
@@ -77,7 +81,8 @@ private slots:
         QElapsedTimer t;
         t.start();
         const ProgramDownloadOutcome o = download(pd, req, &progress, &last);
-        qInfo("1 MiB by block SDO over sim: %lld ms (transfer %.2f s), %d progress reports", t.elapsed(), o.seconds, progress);
+        qInfo("1 MiB by block SDO over sim: %lld ms (transfer %.2f s), %d progress reports", t.elapsed(), o.seconds,
+              progress);
         QVERIFY2(o.ok, qPrintable(o.summary()));
         QVERIFY(o.started);
         QVERIFY(!o.fellBackToSegmented);
@@ -96,7 +101,8 @@ private slots:
     }
 
     void everyPersonalityTakesAProgram() {
-        for (const QString& dict : {QStringLiteral("aimotor"), QStringLiteral("dexmart-dev"), QStringLiteral("generic-cia402")}) {
+        for (const QString& dict :
+             {QStringLiteral("aimotor"), QStringLiteral("dexmart-dev"), QStringLiteral("generic-cia402")}) {
             Rig rig;
             QVERIFY(rig.useSpec(QStringLiteral("4:") + dict));
             QVERIFY(rig.open());
@@ -116,7 +122,9 @@ private slots:
         QVERIFY(rig.useSpec(QStringLiteral("1:aimotor")));
         QVERIFY(rig.open());
         const FlashSeen old = flashOf(rig, 1);
-        rig.onDevice(1, [](sim::VirtualDevice& d) { d.sdoFaults().abortDownloadAfter = std::pair{512 * 1024, sdoabort::HardwareError}; });
+        rig.onDevice(1, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortDownloadAfter = std::pair{512 * 1024, sdoabort::HardwareError};
+        });
         SdoClient sdo(*rig.context);
         ProgramDownload pd(*rig.context, sdo);
         ProgramDownloadRequest req;
@@ -200,12 +208,16 @@ private slots:
         req.image = sim::makeProgramImage(payload(1024 * 1024, 7), QStringLiteral("7.0"));
         std::optional<ProgramDownloadOutcome> out;
         bool cancelled = false;
-        pd.run(req, {}, [&](qint64 done, qint64, double) {
-            if (done > 0 && !cancelled) {
-                cancelled = true;
-                QMetaObject::invokeMethod(&pd, [&pd] { pd.cancel(); }, Qt::QueuedConnection);  // as a click would
-            }
-        }, [&](const ProgramDownloadOutcome& o) { out = o; });
+        pd.run(
+            req, {},
+            [&](qint64 done, qint64, double) {
+                if (done > 0 && !cancelled) {
+                    cancelled = true;
+                    QMetaObject::invokeMethod(
+                        &pd, [&pd] { pd.cancel(); }, Qt::QueuedConnection);  // as a click would
+                }
+            },
+            [&](const ProgramDownloadOutcome& o) { out = o; });
         QVERIFY(waitUntil([&] { return out.has_value(); }, 30000));
         QVERIFY(!out->ok);
         QVERIFY(out->cancelled);
@@ -232,14 +244,15 @@ private slots:
         req.node = 1;
         req.image = sim::makeProgramImage(payload(1000, 8), QStringLiteral("8.0"));
         std::optional<ProgramDownloadOutcome> out;
-        pd.run(req, [&](ProgramStep s) { steps.push_back(s); }, {}, [&](const ProgramDownloadOutcome& o) { out = o; });
+        pd.run(
+            req, [&](ProgramStep s) { steps.push_back(s); }, {}, [&](const ProgramDownloadOutcome& o) { out = o; });
         QVERIFY(waitUntil([&] { return out.has_value(); }, 30000));
         QVERIFY2(out->ok, qPrintable(out->summary()));
         QVERIFY(rig.context->enabledDrives().isEmpty());
         QVERIFY2(out->notes.contains(QStringLiteral("node 1 disabled")), qPrintable(out->notes));
         const std::vector<ProgramStep> expected{ProgramStep::ReadBefore, ProgramStep::DisableDrive, ProgramStep::Stop,
-                                                ProgramStep::Clear, ProgramStep::Download, ProgramStep::Start, ProgramStep::BootUp,
-                                                ProgramStep::ReadAfter, ProgramStep::Done};
+                                                ProgramStep::Clear,      ProgramStep::Download,     ProgramStep::Start,
+                                                ProgramStep::BootUp,     ProgramStep::ReadAfter,    ProgramStep::Done};
         QCOMPARE(steps, expected);
     }
 };

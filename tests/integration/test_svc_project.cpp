@@ -131,15 +131,21 @@ private slots:
     }
 
     void malformedFileNamesLineOrKey() {
-        const ProjectReadResult syntax = ProjectFile::parse("{\n  \"format\": 1,\n  \"nodes\": [\n    {\"id\": 1,}\n  ]\n}\n", QStringLiteral("m.coscope"));
+        const ProjectReadResult syntax = ProjectFile::parse(
+            "{\n  \"format\": 1,\n  \"nodes\": [\n    {\"id\": 1,}\n  ]\n}\n", QStringLiteral("m.coscope"));
         QVERIFY(!syntax.project);
         QVERIFY2(syntax.error.startsWith(QStringLiteral("m.coscope:4: error:")), qPrintable(syntax.error));
-        const ProjectReadResult badId = ProjectFile::parse(R"({"format": 1, "nodes": [{"id": 1}, {"id": 200}]})", QStringLiteral("m.coscope"));
+        const ProjectReadResult badId =
+            ProjectFile::parse(R"({"format": 1, "nodes": [{"id": 1}, {"id": 200}]})", QStringLiteral("m.coscope"));
         QCOMPARE(badId.error, QStringLiteral("m.coscope: nodes[1].id: must be a node-ID 1-127"));
-        const ProjectReadResult badObject = ProjectFile::parse(R"({"format": 1, "nodes": [{"id": 1, "parameters": [{"object": "60z1", "value": "1"}]}]})", QStringLiteral("m.coscope"));
-        QVERIFY2(badObject.error.startsWith(QStringLiteral("m.coscope: nodes[0].parameters[0].object:")), qPrintable(badObject.error));
+        const ProjectReadResult badObject = ProjectFile::parse(
+            R"({"format": 1, "nodes": [{"id": 1, "parameters": [{"object": "60z1", "value": "1"}]}]})",
+            QStringLiteral("m.coscope"));
+        QVERIFY2(badObject.error.startsWith(QStringLiteral("m.coscope: nodes[0].parameters[0].object:")),
+                 qPrintable(badObject.error));
         const ProjectReadResult newer = ProjectFile::parse(R"({"format": 9})", QStringLiteral("m.coscope"));
-        QVERIFY2(newer.error.contains(QStringLiteral("format")) && newer.error.contains(QStringLiteral("newer")), qPrintable(newer.error));
+        QVERIFY2(newer.error.contains(QStringLiteral("format")) && newer.error.contains(QStringLiteral("newer")),
+                 qPrintable(newer.error));
         const ProjectReadResult missing = ProjectFile::read(dir_.filePath(QStringLiteral("none.coscope")));
         QVERIFY(missing.error.contains(QStringLiteral("none.coscope")));
     }
@@ -158,9 +164,9 @@ private slots:
         QCOMPARE(p.node(3)->identity.serial, std::optional<uint32_t>(0x51000003));
         QVERIFY(n1->parameter(0x1017, 0));
         QCOMPARE(n1->parameter(0x1017, 0)->value, QStringLiteral("0x00FA"));
-        QVERIFY(!n1->parameter(0x6081, 0));   // at its default: not configured
-        QVERIFY(!n1->parameter(0x1018, 4));   // read-only: identity, not configuration
-        QVERIFY(!n1->parameter(0x6040, 0));   // controlword: a command
+        QVERIFY(!n1->parameter(0x6081, 0));  // at its default: not configured
+        QVERIFY(!n1->parameter(0x1018, 4));  // read-only: identity, not configuration
+        QVERIFY(!n1->parameter(0x6040, 0));  // controlword: a command
         // The same machine compared with its backup is clean.
         const CompareReport same = m.compare(p);
         QVERIFY2(same.clean(), qPrintable(compareText(same, true)));
@@ -182,11 +188,13 @@ private slots:
         Project p = m.backup();
         ProjectNode ghost = *p.node(2);
         ghost.id = 5;
-        p.nodes.push_back(ghost);                                                                 // missing on the bus
-        p.nodes.erase(std::find_if(p.nodes.begin(), p.nodes.end(), [](const auto& n) { return n.id == 2; }));  // node 2: not in project
+        p.nodes.push_back(ghost);  // missing on the bus
+        p.nodes.erase(std::find_if(p.nodes.begin(), p.nodes.end(),
+                                   [](const auto& n) { return n.id == 2; }));  // node 2: not in project
         m.set(1, 0x1017, 0, 100);
         m.set(1, 0x6081, 0, 5000);
-        p.node(1)->parameters.push_back({0x6081, 0, {}, QStringLiteral("0x00002710")});  // the default, configured on purpose
+        p.node(1)->parameters.push_back(
+            {0x6081, 0, {}, QStringLiteral("0x00002710")});  // the default, configured on purpose
         QString error;
         QVERIFY2(m.rig.network->replaceDevice(3, 0x51000099, &error), qPrintable(error));
         const CompareReport r = m.compare(p);
@@ -248,7 +256,9 @@ private slots:
         m.set(1, 0x6081, 0, 7000);
         m.set(2, 0x1017, 0, 0);
         // Node 1 refuses 6081h (written after 1017h): 1017h gets its old value back, node 2 is not written.
-        m.rig.onDevice(1, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x6081), uint8_t(0), uint32_t(0x08000020)); });
+        m.rig.onDevice(1, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x6081), uint8_t(0), uint32_t(0x08000020));
+        });
         const ApplyReport r = m.apply(p);
         QVERIFY(!r.ok());
         QCOMPARE(r.nodes[0].state, NodeApplyState::RefusedRolledBack);

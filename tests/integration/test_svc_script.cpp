@@ -21,7 +21,6 @@ using namespace coscope::canopen;
 
 namespace {
 
-
 std::optional<ScriptRunResult> runScript(ScriptRunner& runner, const CommandScript& script, int timeoutMs = 10000) {
     std::optional<ScriptRunResult> out;
     if (!runner.run(script, [&](const ScriptRunResult& r) { out = r; })) return std::nullopt;
@@ -94,7 +93,9 @@ private slots:
         QCOMPARE(r->failedStep, 1);
         QCOMPARE(r->stepsDone, 1);
         QVERIFY2(r->error.startsWith(QStringLiteral("step 2 (sdo expect 3 0x1017:00 0x1234): ")), qPrintable(r->error));
-        QVERIFY2(r->error.contains(QStringLiteral("reads 0x01f4")) && r->error.contains(QStringLiteral("expected 0x1234")), qPrintable(r->error));
+        QVERIFY2(
+            r->error.contains(QStringLiteral("reads 0x01f4")) && r->error.contains(QStringLiteral("expected 0x1234")),
+            qPrintable(r->error));
         QCOMPARE(finished.size(), 2);
         QCOMPARE(finished.last().at(1).toBool(), false);
         // It stopped: the third step was not sent.
@@ -113,8 +114,10 @@ private slots:
         QVERIFY(r);
         QVERIFY(!r->ok);
         QCOMPARE(r->failedStep, 0);
-        QVERIFY2(r->error.startsWith(QStringLiteral("step 1 (sdo write 3 0x2ff0:01 0x01): node 3 aborted 2FF0:01: ")), qPrintable(r->error));
-        QVERIFY2(r->error.contains(QStringLiteral("Object does not exist in the object dictionary (0x06020000)")), qPrintable(r->error));
+        QVERIFY2(r->error.startsWith(QStringLiteral("step 1 (sdo write 3 0x2ff0:01 0x01): node 3 aborted 2FF0:01: ")),
+                 qPrintable(r->error));
+        QVERIFY2(r->error.contains(QStringLiteral("Object does not exist in the object dictionary (0x06020000)")),
+                 qPrintable(r->error));
     }
 
     void waitNodeSeesBootUpAfterReset() {
@@ -199,7 +202,8 @@ private slots:
         CommandScript s;
         s.steps.push_back(ScriptStep::wait(5000, {}));
         s.steps.push_back(ScriptStep::sdoWrite(3, 0x1017, 0, 321, 2, {}));
-        connect(&runner, &ScriptRunner::stepStarted, &runner, [&](int) { QTimer::singleShot(50, &runner, [&] { runner.cancel(); }); });
+        connect(&runner, &ScriptRunner::stepStarted, &runner,
+                [&](int) { QTimer::singleShot(50, &runner, [&] { runner.cancel(); }); });
         QElapsedTimer t;
         t.start();
         const auto r = runScript(runner, s);
@@ -215,9 +219,11 @@ private slots:
     void cliDryRunSendsNothing() {
         QTemporaryDir dir;
         const QString path = writeFile(dir, QStringLiteral("s.txt"),
-                                       QStringLiteral("# title: dry\n\n# Heartbeat every 750 ms (producer heartbeat time)\nsdo write 3 0x1017:00 0x02ee\nnmt start 0\n"));
+                                       QStringLiteral("# title: dry\n\n# Heartbeat every 750 ms (producer heartbeat "
+                                                      "time)\nsdo write 3 0x1017:00 0x02ee\nnmt start 0\n"));
         // Listen-only: any attempt to send would fail the run; the dry run succeeds and prints.
-        Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402&listen-only=1"), path, QStringLiteral("--dry-run")});
+        Run r = cli({QStringLiteral("script"), QStringLiteral("run"),
+                     QStringLiteral("sim://?nodes=3:generic-cia402&listen-only=1"), path, QStringLiteral("--dry-run")});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("nothing is sent")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("1/2  sdo write 3 0x1017:00 0x02ee")), qPrintable(r.out));
@@ -225,9 +231,11 @@ private slots:
         QVERIFY2(r.out.contains(QStringLiteral("Write 1017h:00 = 750 on node 3")), qPrintable(r.out));
         QVERIFY(r.err.isEmpty());
         // The same run for real on the listen-only bus is refused at step 1, in one line.
-        r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402&listen-only=1"), path});
+        r = cli({QStringLiteral("script"), QStringLiteral("run"),
+                 QStringLiteral("sim://?nodes=3:generic-cia402&listen-only=1"), path});
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.startsWith(QStringLiteral("coscope-cli script run: step 1 (sdo write 3 0x1017:00 0x02ee): ")), qPrintable(r.err));
+        QVERIFY2(r.err.startsWith(QStringLiteral("coscope-cli script run: step 1 (sdo write 3 0x1017:00 0x02ee): ")),
+                 qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral("listen-only")), qPrintable(r.err));
         QCOMPARE(r.err.count(u'\n'), 1);
     }
@@ -244,7 +252,8 @@ private slots:
                                                       "nmt reset 3\n"
                                                       "wait-node 3 3000\n"
                                                       "nmt start 3\n"));
-        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402"), path});
+        const Run r = cli(
+            {QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402"), path});
         QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
         QVERIFY2(r.out.contains(QStringLiteral("8 step(s) done")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("7/8 ok   wait-node 3 3000  node 3 booted")), qPrintable(r.out));
@@ -252,10 +261,13 @@ private slots:
 
     void cliRunFailureNamesStep() {
         QTemporaryDir dir;
-        const QString path = writeFile(dir, QStringLiteral("bad.txt"), QStringLiteral("sdo write 3 0x1017:00 0x01f4\nsdo expect 3 0x1017:00 0x0001\n"));
-        const Run r = cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402"), path});
+        const QString path = writeFile(dir, QStringLiteral("bad.txt"),
+                                       QStringLiteral("sdo write 3 0x1017:00 0x01f4\nsdo expect 3 0x1017:00 0x0001\n"));
+        const Run r = cli(
+            {QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://?nodes=3:generic-cia402"), path});
         QCOMPARE(r.code, 1);
-        QCOMPARE(r.err, QStringLiteral("coscope-cli script run: step 2 (sdo expect 3 0x1017:00 0x0001): node 3 1017:00 reads 0x01f4, expected 0x0001\n"));
+        QCOMPARE(r.err, QStringLiteral("coscope-cli script run: step 2 (sdo expect 3 0x1017:00 0x0001): node 3 1017:00 "
+                                       "reads 0x01f4, expected 0x0001\n"));
     }
 
     void cliCheck() {
@@ -264,13 +276,17 @@ private slots:
         Run r = cli({QStringLiteral("script"), QStringLiteral("check"), good});
         QVERIFY2(r.code == 0, qPrintable(r.err));
         QVERIFY(r.out.contains(QStringLiteral("2 step(s), ok")));
-        const QString bad = writeFile(dir, QStringLiteral("bad.txt"), QStringLiteral("wait 5\nnmt fly 1\nsdo read 5\n"));
+        const QString bad =
+            writeFile(dir, QStringLiteral("bad.txt"), QStringLiteral("wait 5\nnmt fly 1\nsdo read 5\n"));
         r = cli({QStringLiteral("script"), QStringLiteral("check"), bad});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.startsWith(bad + QStringLiteral(":2: unknown NMT command 'fly'")), qPrintable(r.err));
         QVERIFY2(r.err.contains(bad + QStringLiteral(":3: missing object")), qPrintable(r.err));
         QCOMPARE(cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://")}).code, 2);
-        QCOMPARE(cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://"), good, QStringLiteral("--timeout"), QStringLiteral("x")}).code, 2);
+        QCOMPARE(cli({QStringLiteral("script"), QStringLiteral("run"), QStringLiteral("sim://"), good,
+                      QStringLiteral("--timeout"), QStringLiteral("x")})
+                     .code,
+                 2);
     }
 };
 

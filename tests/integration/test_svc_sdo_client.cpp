@@ -63,7 +63,8 @@ ScriptedNode::Script blockUploadServer(QByteArray data, bool corruptCrc = false)
         if (c == 0xA4) {  // initiate, CRC supported
             st->blk = in.data[4];
             const uint32_t size = static_cast<uint32_t>(data.size());
-            n.reply({0xC6, in.data[1], in.data[2], in.data[3], uint8_t(size), uint8_t(size >> 8), uint8_t(size >> 16), uint8_t(size >> 24)});
+            n.reply({0xC6, in.data[1], in.data[2], in.data[3], uint8_t(size), uint8_t(size >> 8), uint8_t(size >> 16),
+                     uint8_t(size >> 24)});
         } else if (c == 0xA3) {
             st->blockStart = 0;
             sendSub();
@@ -72,7 +73,8 @@ ScriptedNode::Script blockUploadServer(QByteArray data, bool corruptCrc = false)
             st->blk = in.data[2];
             if (st->blockStart >= data.size()) {
                 const int lastLen = ((static_cast<int>(data.size()) - 1) % 7) + 1;
-                uint16_t crc = sdoBlockCrc(reinterpret_cast<const uint8_t*>(data.constData()), static_cast<size_t>(data.size()));
+                uint16_t crc =
+                    sdoBlockCrc(reinterpret_cast<const uint8_t*>(data.constData()), static_cast<size_t>(data.size()));
                 if (corruptCrc) crc ^= 0x1234;
                 n.reply({uint8_t(0xC1 | ((7 - lastLen) << 2)), uint8_t(crc), uint8_t(crc >> 8), 0, 0, 0, 0, 0});
             } else {
@@ -173,7 +175,8 @@ private slots:
         QVERIFY(!r.ok);
         QVERIFY(r.serverAborted);
         QCOMPARE(r.abortCode, 0x06020000u);
-        QCOMPARE(r.error, QStringLiteral("node 5 aborted 2000:01: Object does not exist in the object dictionary (0x06020000)"));
+        QCOMPARE(r.error,
+                 QStringLiteral("node 5 aborted 2000:01: Object does not exist in the object dictionary (0x06020000)"));
     }
 
     void serverAbortHasVendorText() {
@@ -252,7 +255,8 @@ private slots:
         });
         std::optional<SdoResult> result;
         before.start(10);
-        client.upload(5, 0x1000, 0, [&](const SdoResult& r) { result = r; }, o);
+        client.upload(
+            5, 0x1000, 0, [&](const SdoResult& r) { result = r; }, o);
         QCoreApplication::sendPostedEvents(&client, QEvent::MetaCall);  // the request goes out, its timer starts
         for (int i = 0; i < 20000 && n->seen().empty(); ++i) std::this_thread::sleep_for(1ms);
         std::this_thread::sleep_for(300ms);  // busy: both timers expire
@@ -282,7 +286,8 @@ private slots:
         n->setScript([](const CanFrame& in, ScriptedNode& node) {
             if (in.data[0] == 0x40) node.reply({0x41, 0x08, 0x10, 0x00, 20, 0, 0, 0});
             else if (in.data[0] == 0x60) node.send(sdo::uploadSegmentResponse(5, false, QByteArray("ABCDEFG"), false));
-            else if (in.data[0] == 0x70) node.send(sdo::uploadSegmentResponse(5, false, QByteArray("HIJKLMN"), false));  // toggle stays 0
+            else if (in.data[0] == 0x70)
+                node.send(sdo::uploadSegmentResponse(5, false, QByteArray("HIJKLMN"), false));  // toggle stays 0
         });
         QVERIFY(rig.open());
         SdoClient client(*rig.context);
@@ -335,7 +340,8 @@ private slots:
         Rig rig;
         auto* n = rig.addNode(6);
         n->setScript([](const CanFrame& in, ScriptedNode& node) {
-            if (in.data[0] == 0xA4 || in.data[0] == 0xC6) node.reply({0x80, in.data[1], in.data[2], in.data[3], 0x01, 0x00, 0x04, 0x05});
+            if (in.data[0] == 0xA4 || in.data[0] == 0xC6)
+                node.reply({0x80, in.data[1], in.data[2], in.data[3], 0x01, 0x00, 0x04, 0x05});
             else if (in.data[0] == 0x40) node.reply({0x4F, in.data[1], in.data[2], in.data[3], 0x2A, 0, 0, 0});
             else if (in.data[0] == 0x2F) node.reply({0x60, in.data[1], in.data[2], in.data[3], 0, 0, 0, 0});
         });
@@ -394,7 +400,11 @@ private slots:
         const auto req = n->seen();
         QCOMPARE(bytesOf(req[0]), hex("C6FF5F0028000000"));
         QCOMPARE(req.size(), size_t(1 + 6 + 1));
-        QCOMPARE(bytesOf(req.back()), hex(QByteArray("C9").append(QByteArray::number(*crcSeen & 0xFF, 16).rightJustified(2, '0')).append(QByteArray::number(*crcSeen >> 8, 16).rightJustified(2, '0')).append("0000000000").constData()));
+        QCOMPARE(bytesOf(req.back()), hex(QByteArray("C9")
+                                              .append(QByteArray::number(*crcSeen & 0xFF, 16).rightJustified(2, '0'))
+                                              .append(QByteArray::number(*crcSeen >> 8, 16).rightJustified(2, '0'))
+                                              .append("0000000000")
+                                              .constData()));
     }
 
     void blockDownloadRepeatsUnacknowledgedSegments() {
@@ -413,7 +423,8 @@ private slots:
             if (st->inSub) {
                 const int seq = c & 0x7F;
                 // First sub-block: keep segments 1-2 only, as if 3 was lost (CiA 301 §7.2.4.3.13).
-                if (st->subBlocks > 0 || seq <= 2) st->kept.append(reinterpret_cast<const char*>(in.data.data() + 1), 7);
+                if (st->subBlocks > 0 || seq <= 2)
+                    st->kept.append(reinterpret_cast<const char*>(in.data.data() + 1), 7);
                 if ((c & 0x80) || seq == 4) {
                     const uint8_t ack = st->subBlocks == 0 ? 2 : uint8_t(seq);
                     ++st->subBlocks;
@@ -452,7 +463,9 @@ private slots:
         SdoClient client(*rig.context);
         std::vector<int> order;
         for (int i = 1; i <= 3; ++i)
-            client.upload(5, 0x2000, uint8_t(i), [&order](const SdoResult& r) { if (r.ok) order.push_back(uint8_t(r.data[0])); });
+            client.upload(5, 0x2000, uint8_t(i), [&order](const SdoResult& r) {
+                if (r.ok) order.push_back(uint8_t(r.data[0]));
+            });
         QCOMPARE(client.pendingCount(), 3);
         QVERIFY(waitUntil([&] { return order.size() == 3; }, 3000));
         QCOMPARE(order, (std::vector<int>{1, 2, 3}));

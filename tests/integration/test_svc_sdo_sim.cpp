@@ -108,16 +108,20 @@ private slots:
         QVERIFY(!r.ok);
         QVERIFY(r.serverAborted);
         QCOMPARE(r.abortCode, sdoabort::NoObject);
-        QCOMPARE(r.error, QStringLiteral("node 3 aborted 2FF0:01: Object does not exist in the object dictionary (0x06020000)"));
+        QCOMPARE(r.error,
+                 QStringLiteral("node 3 aborted 2FF0:01: Object does not exist in the object dictionary (0x06020000)"));
         r = write(client, 3, 0x1000, 0, QByteArray::fromHex("00000000"));  // read-only
         QCOMPARE(r.abortCode, sdoabort::ReadOnly);
-        QVERIFY2(r.error.contains(QStringLiteral("read-only")) || r.error.contains(QStringLiteral("read only")), qPrintable(r.error));
+        QVERIFY2(r.error.contains(QStringLiteral("read-only")) || r.error.contains(QStringLiteral("read only")),
+                 qPrintable(r.error));
         r = write(client, 3, 0x1017, 0, QByteArray::fromHex("010203"));  // wrong length
         QVERIFY(!r.ok);
         QVERIFY(r.serverAborted);
         // A vendor code via injection, with the Delta table.
         rig.context->setNodeDictionary(1, QStringLiteral("delta-asda-a2"));  // its bundled alarm table (:/alarms)
-        rig.onDevice(1, [](sim::VirtualDevice& d) { d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1010), uint8_t(1), uint32_t(0x080000A2)); });
+        rig.onDevice(1, [](sim::VirtualDevice& d) {
+            d.sdoFaults().abortOn = std::make_tuple(uint16_t(0x1010), uint8_t(1), uint32_t(0x080000A2));
+        });
         r = write(client, 1, 0x1010, 1, QByteArray("save"));
         QCOMPARE(r.error, QStringLiteral("node 1 aborted 1010:01: Object error when writing to EEPROM (0x080000A2)"));
     }
@@ -204,7 +208,11 @@ private slots:
         SdoClient client(*rig.context);
         int done = 0, good = 0;
         for (int i = 0; i < 10; ++i)
-            for (uint8_t node : {1, 2, 3}) client.upload(node, 0x1018, 1, [&](const SdoResult& r) { ++done; good += r.ok; });
+            for (uint8_t node : {1, 2, 3})
+                client.upload(node, 0x1018, 1, [&](const SdoResult& r) {
+                    ++done;
+                    good += r.ok;
+                });
         QVERIFY(waitUntil([&] { return done == 30; }, 20000));
         QCOMPARE(good, 30);
     }

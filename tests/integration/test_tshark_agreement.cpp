@@ -51,18 +51,23 @@ private slots:
             put(0x601, {0x23, 0x00, 0x18, 0x01, 0x81, 0x01, 0x00, 0x80});
             QVERIFY(w.close());
         }
-        const QStringList tsFields = {"frame.number", "canopen.nmt_ctrl.cd", "canopen.nmt_ctrl.node_id", "canopen.sync.counter",
-                                      "canopen.em.err_code", "canopen.em.err_reg", "canopen.nmt_guard.state", "canopen.lss.cs",
-                                      "canopen.sdo.main_idx", "canopen.sdo.sub_idx", "canopen.sdo.abort_code"};
-        const QStringList ours = {"", "nmt.cs", "nmt.node", "sync.counter", "emcy.code", "emcy.reg", "nmt.state", "lss.cs", "sdo.index", "sdo.sub", "sdo.abort"};
-        QStringList args = {QStringLiteral("-r"), path, QStringLiteral("-d"), QStringLiteral("can.subdissector,canopen"), QStringLiteral("-T"), QStringLiteral("fields"),
+        const QStringList tsFields = {
+            "frame.number",         "canopen.nmt_ctrl.cd", "canopen.nmt_ctrl.node_id", "canopen.sync.counter",
+            "canopen.em.err_code",  "canopen.em.err_reg",  "canopen.nmt_guard.state",  "canopen.lss.cs",
+            "canopen.sdo.main_idx", "canopen.sdo.sub_idx", "canopen.sdo.abort_code"};
+        const QStringList ours = {"",          "nmt.cs", "nmt.node",  "sync.counter", "emcy.code", "emcy.reg",
+                                  "nmt.state", "lss.cs", "sdo.index", "sdo.sub",      "sdo.abort"};
+        QStringList args = {QStringLiteral("-r"), path,
+                            QStringLiteral("-d"), QStringLiteral("can.subdissector,canopen"),
+                            QStringLiteral("-T"), QStringLiteral("fields"),
                             QStringLiteral("-E"), QStringLiteral("separator=;")};
         for (const QString& f : tsFields) args << QStringLiteral("-e") << f;
         QProcess ts;
         ts.start(tshark, args);
         QVERIFY(ts.waitForFinished(120000));
         const QList<QByteArray> tsLines = ts.readAllStandardOutput().trimmed().split('\n');
-        const Run decoded = cli({QStringLiteral("decode"), path, QStringLiteral("--format"), QStringLiteral("jsonl")}, 60000);
+        const Run decoded =
+            cli({QStringLiteral("decode"), path, QStringLiteral("--format"), QStringLiteral("jsonl")}, 60000);
         QList<QJsonObject> frames;
         for (const QByteArray& l : decoded.out.toUtf8().trimmed().split('\n')) {
             const QJsonObject o = QJsonDocument::fromJson(l).object();
@@ -84,7 +89,8 @@ private slots:
                 bool ok = false;
                 const qint64 expected = tv.toLongLong(&ok, 0);
                 QVERIFY(ok);
-                QVERIFY2(fields.contains(ours[k]), qPrintable(QStringLiteral("frame %1: tshark has %2, we not").arg(i + 1).arg(tsFields[k])));
+                QVERIFY2(fields.contains(ours[k]),
+                         qPrintable(QStringLiteral("frame %1: tshark has %2, we not").arg(i + 1).arg(tsFields[k])));
                 QCOMPARE(fields.value(ours[k]).toInteger(), expected);
                 ++compared;
             }

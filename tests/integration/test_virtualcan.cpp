@@ -2,8 +2,8 @@
 // Two QtCanBus endpoints on Qt's virtualcan plugin: the first device starts the plugin's local
 // TCP server (port 35468), the second connects to it; frames written on one arrive on the other.
 #include "core/can/CanBus.h"
-#include "integration/BusRead.h"
 #include "core/can/QtCanBus.h"
+#include "integration/BusRead.h"
 
 #include <QElapsedTimer>
 #include <QLoggingCategory>
@@ -21,7 +21,8 @@ class TestVirtualCan : public QObject {
 
 private slots:
     void initTestCase() {
-        QLoggingCategory::setFilterRules(QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
+        QLoggingCategory::setFilterRules(
+            QStringLiteral("qt.canbus.plugins.*.debug=false\nqt.canbus.plugins.*.info=false"));
         if (!qtCanPlugins().contains(QStringLiteral("virtualcan"))) QSKIP("Qt's virtualcan plugin is not installed");
         QString err;
         a_ = createBus(QStringLiteral("virtualcan://can0?fd=1"), &err);
@@ -35,8 +36,7 @@ private slots:
         QVERIFY2(b_->waitForOpen(5000), qPrintable(b_->errorString()));
         QTest::qWait(200);  // both clients registered with the plugin's server
         CanFrame drain[64];
-        while (a_->read(drain, 64) || b_->read(drain, 64)) {
-        }
+        while (a_->read(drain, 64) || b_->read(drain, 64)) {}
     }
     void cleanupTestCase() {
         if (b_) b_->close();

@@ -51,7 +51,8 @@ public:
     }
 
     // Appends a block; returns its offset.
-    uint64_t block(const char* tag, const std::vector<uint64_t>& links, const QByteArray& data, uint64_t lengthOverride = 0) {
+    uint64_t block(const char* tag, const std::vector<uint64_t>& links, const QByteArray& data,
+                   uint64_t lengthOverride = 0) {
         while (out_.size() % 8) out_.append('\0');
         const uint64_t at = uint64_t(out_.size());
         out_ += "##";
@@ -63,7 +64,9 @@ public:
         out_ += data;
         return at;
     }
-    void setLink(uint64_t blockAt, int index, uint64_t value) { std::memcpy(out_.data() + blockAt + 24 + 8 * index, &value, 8); }
+    void setLink(uint64_t blockAt, int index, uint64_t value) {
+        std::memcpy(out_.data() + blockAt + 24 + 8 * index, &value, 8);
+    }
 
     uint64_t text(const char* s) {
         QByteArray d(s);
@@ -84,8 +87,8 @@ public:
         return block("CC", {0, 0, 0, 0}, d);
     }
     // cn_type, data type, byte offset, bit offset, bit count.
-    uint64_t channel(const char* name, uint8_t type, uint8_t dataType, uint32_t byte, uint8_t bit, uint32_t bits, uint64_t cc = 0,
-                     uint64_t composition = 0, uint64_t data = 0) {
+    uint64_t channel(const char* name, uint8_t type, uint8_t dataType, uint32_t byte, uint8_t bit, uint32_t bits,
+                     uint64_t cc = 0, uint64_t composition = 0, uint64_t data = 0) {
         QByteArray d;
         u8(d, type);
         u8(d, type == 2 ? 1 : 0);
@@ -104,7 +107,8 @@ public:
     void chain(const std::vector<uint64_t>& blocks) {
         for (size_t i = 0; i + 1 < blocks.size(); ++i) setLink(blocks[i], 0, blocks[i + 1]);
     }
-    uint64_t group(uint64_t recordId, uint64_t cycles, uint16_t flags, uint32_t dataBytes, uint64_t firstChannel, const char* name = nullptr) {
+    uint64_t group(uint64_t recordId, uint64_t cycles, uint16_t flags, uint32_t dataBytes, uint64_t firstChannel,
+                   const char* name = nullptr) {
         QByteArray d;
         u64(d, recordId);
         u64(d, cycles);
@@ -144,7 +148,8 @@ public:
                 children.push_back(channel(n("EDL"), 0, 0, 13, 2, 1));
                 children.push_back(channel(n("BRS"), 0, 0, 13, 3, 1));
                 children.push_back(channel(n("ESI"), 0, 0, 13, 4, 1));
-                dataBytes_ = vlsd ? channel(n("DataBytes"), 1, 10, 16, 0, 64, 0, 0, vlsdData) : channel(n("DataBytes"), 0, 10, 16, 0, 512);
+                dataBytes_ = vlsd ? channel(n("DataBytes"), 1, 10, 16, 0, 64, 0, 0, vlsdData)
+                                  : channel(n("DataBytes"), 0, 10, 16, 0, 512);
                 children.push_back(dataBytes_);
             }
         }
@@ -162,7 +167,8 @@ public:
         return k == "CAN_ErrorFrame" ? 10 : k == "CAN_RemoteFrame" ? 16 : vlsd ? 24 : 80;
     }
     // One record (with its record id of idSize bytes). vlsdOffset >= 0: DataBytes is VLSD.
-    static QByteArray record(uint8_t idSize, uint64_t id, const Frame& f, int64_t vlsdOffset = -1, bool remote = false) {
+    static QByteArray record(uint8_t idSize, uint64_t id, const Frame& f, int64_t vlsdOffset = -1,
+                             bool remote = false) {
         QByteArray r;
         put(r, &id, idSize);
         u64(r, f.ns);
@@ -190,7 +196,9 @@ public:
         return r;
     }
 
-    uint64_t dt(const QByteArray& records, uint64_t lengthOverride = 0) { return block("DT", {}, records, lengthOverride); }
+    uint64_t dt(const QByteArray& records, uint64_t lengthOverride = 0) {
+        return block("DT", {}, records, lengthOverride);
+    }
     uint64_t sd(const QByteArray& samples) { return block("SD", {}, samples); }
     // DZ of `plain` (deflate; transposed first when columns > 0).
     uint64_t dz(const QByteArray& plain, uint32_t columns = 0, const char* original = "DT") {
@@ -202,7 +210,8 @@ public:
         }
         uLongf len = compressBound(uLong(src.size()));
         QByteArray packed(qsizetype(len), '\0');
-        compress(reinterpret_cast<Bytef*>(packed.data()), &len, reinterpret_cast<const Bytef*>(src.constData()), uLong(src.size()));
+        compress(reinterpret_cast<Bytef*>(packed.data()), &len, reinterpret_cast<const Bytef*>(src.constData()),
+                 uLong(src.size()));
         packed.resize(qsizetype(len));
         QByteArray d(original, 2);
         u8(d, columns > 1 ? 1 : 0);

@@ -19,7 +19,8 @@ private slots:
         QVERIFY(u->isQtPlugin());
         QCOMPARE(busInterfaceName(*u), QStringLiteral("can0"));
 
-        u = BusUrl::parse(QStringLiteral("VirtualCAN://can1?bitrate=250000&fd=1&data-bitrate=2000000&listen-only=1"), &err);
+        u = BusUrl::parse(QStringLiteral("VirtualCAN://can1?bitrate=250000&fd=1&data-bitrate=2000000&listen-only=1"),
+                          &err);
         QVERIFY2(u, qPrintable(err));
         QCOMPARE(u->scheme, QStringLiteral("virtualcan"));
         QCOMPARE(u->target, QStringLiteral("can1"));
@@ -93,19 +94,32 @@ private slots:
     void clearErrors_data() {
         QTest::addColumn<QString>("url");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("no scheme") << "can0" << "expected SCHEME://TARGET";
-        QTest::newRow("missing device") << "socketcan://" << "needs a device name";
-        QTest::newRow("missing channel") << "socketcand://host:29536" << "needs a channel";
-        QTest::newRow("empty channel") << "socketcand://host:29536/" << "needs a channel";
-        QTest::newRow("bad port") << "socketcand://host:99999/can0" << "port '99999' is not a port number";
-        QTest::newRow("text port") << "socketcand://host:abc/can0" << "port 'abc'";
-        QTest::newRow("no host") << "socketcand://:29536/can0" << "needs a host";
-        QTest::newRow("bad bitrate") << "socketcan://can0?bitrate=fast" << "bitrate must be a positive number";
-        QTest::newRow("zero bitrate") << "socketcan://can0?bitrate=0" << "bitrate must be a positive number";
-        QTest::newRow("bad data bitrate") << "socketcan://can0?data-bitrate=-1" << "data-bitrate must be a positive number";
-        QTest::newRow("unknown option") << "socketcan://can0?baud=500k" << "unknown option 'baud'";
-        QTest::newRow("bad speed") << "replay:///x.log?speed=fast" << "speed must be a number";
-        QTest::newRow("replay without file") << "replay://" << "needs a file";
+        QTest::newRow("no scheme") << "can0"
+                                   << "expected SCHEME://TARGET";
+        QTest::newRow("missing device") << "socketcan://"
+                                        << "needs a device name";
+        QTest::newRow("missing channel") << "socketcand://host:29536"
+                                         << "needs a channel";
+        QTest::newRow("empty channel") << "socketcand://host:29536/"
+                                       << "needs a channel";
+        QTest::newRow("bad port") << "socketcand://host:99999/can0"
+                                  << "port '99999' is not a port number";
+        QTest::newRow("text port") << "socketcand://host:abc/can0"
+                                   << "port 'abc'";
+        QTest::newRow("no host") << "socketcand://:29536/can0"
+                                 << "needs a host";
+        QTest::newRow("bad bitrate") << "socketcan://can0?bitrate=fast"
+                                     << "bitrate must be a positive number";
+        QTest::newRow("zero bitrate") << "socketcan://can0?bitrate=0"
+                                      << "bitrate must be a positive number";
+        QTest::newRow("bad data bitrate") << "socketcan://can0?data-bitrate=-1"
+                                          << "data-bitrate must be a positive number";
+        QTest::newRow("unknown option") << "socketcan://can0?baud=500k"
+                                        << "unknown option 'baud'";
+        QTest::newRow("bad speed") << "replay:///x.log?speed=fast"
+                                   << "speed must be a number";
+        QTest::newRow("replay without file") << "replay://"
+                                             << "needs a file";
     }
     void clearErrors() {
         QFETCH(QString, url);

@@ -94,9 +94,10 @@ private slots:
         const QString log = dir.filePath(QStringLiteral("faults.log"));
         QFile f(log);
         QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("(1700000000.000000) can0 701#05\n"
-                "(1700000000.100000) can0 20000204#0020000000008800\n"
-                "(1700000000.200000) can0 20000040#0000000000000000\n");
+        f.write(
+            "(1700000000.000000) can0 701#05\n"
+            "(1700000000.100000) can0 20000204#0020000000008800\n"
+            "(1700000000.200000) can0 20000040#0000000000000000\n");
         f.close();
         const Run text = cli({QStringLiteral("decode"), log});
         QCOMPARE(text.code, 0);

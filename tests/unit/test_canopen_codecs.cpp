@@ -187,7 +187,8 @@ private slots:
         QCOMPARE(emcyCodeText(0x8130), QStringLiteral("Life guard error or heartbeat error"));
         QCOMPARE(emcyCodeText(0x2311), QStringLiteral("Current, device output side"));
         QCOMPARE(emcyCodeText(0xFF03), QStringLiteral("Device specific"));
-        QCOMPARE(errorRegisterBits(0x11), QStringList({QStringLiteral("generic error"), QStringLiteral("communication error")}));
+        QCOMPARE(errorRegisterBits(0x11),
+                 QStringList({QStringLiteral("generic error"), QStringLiteral("communication error")}));
     }
 
     void lssTables() {

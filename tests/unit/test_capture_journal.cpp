@@ -51,7 +51,9 @@ ReadBack readJournal(const QString& path) {
 bool sameFrames(const std::vector<CanFrame>& a, const std::vector<CanFrame>& b, size_t n) {
     if (a.size() < n || b.size() < n) return false;
     for (size_t i = 0; i < n; ++i)
-        if (a[i].id != b[i].id || a[i].timestampNs != b[i].timestampNs || a[i].len != b[i].len || a[i].data != b[i].data) return false;
+        if (a[i].id != b[i].id || a[i].timestampNs != b[i].timestampNs || a[i].len != b[i].len ||
+            a[i].data != b[i].data)
+            return false;
     return true;
 }
 void touch(const QString& path, qint64 bytes, const QDateTime& when) {
@@ -150,11 +152,13 @@ private slots:
         const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
         if (tshark.isEmpty()) return;
         QProcess p;
-        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("frame.comment")});
+        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"),
+                         QStringLiteral("-e"), QStringLiteral("frame.comment")});
         QVERIFY(p.waitForFinished(60000));
         const QString err = QString::fromLocal8Bit(p.readAllStandardError());
         QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, qPrintable(err));
-        QVERIFY2(!err.contains(QStringLiteral("appears to be damaged")) && !err.contains(QStringLiteral("cut short")), qPrintable(err));
+        QVERIFY2(!err.contains(QStringLiteral("appears to be damaged")) && !err.contains(QStringLiteral("cut short")),
+                 qPrintable(err));
         const QList<QByteArray> lines = p.readAllStandardOutput().split('\n');
         QVERIFY(lines.size() >= 150);
         QVERIFY2(lines[100].contains("gap in the capture"), lines[100].constData());
@@ -193,7 +197,8 @@ private slots:
         const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
         if (tshark.isEmpty()) return;
         QProcess p;
-        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("frame.comment")});
+        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"),
+                         QStringLiteral("-e"), QStringLiteral("frame.comment")});
         QVERIFY(p.waitForFinished(60000));
         QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
         const QList<QByteArray> lines = p.readAllStandardOutput().split('\n');

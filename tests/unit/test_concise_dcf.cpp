@@ -126,15 +126,31 @@ ParameterValue=-2
 // What the concise DCF of kDcf for node 5 must be (CiA 302-3 1F22h layout).
 QByteArray expected() {
     return QByteArray::fromHex(
-        "08000000"                        // 8 entries
-        "171000" "02000000" "E803"        // 1017h = 1000
-        "001801" "04000000" "85010080"    // 1800h:01 = 80000185h: TPDO1 invalid while configured
-        "001802" "01000000" "FE"          // 1800h:02 = 254
-        "001A00" "01000000" "00"          // 1A00h:00 = 0 while mapping
-        "001A01" "04000000" "10004160"    // 1A00h:01 = 60410010h (statusword)
-        "001A00" "01000000" "01"          // 1A00h:00 = 1
-        "001801" "04000000" "85010000"    // 1800h:01 = 185h ($NODEID+0x180), valid
-        "002000" "04000000" "FEFFFFFF");  // 2000h = -2 (INTEGER32)
+        "08000000"  // 8 entries
+        "171000"
+        "02000000"
+        "E803"  // 1017h = 1000
+        "001801"
+        "04000000"
+        "85010080"  // 1800h:01 = 80000185h: TPDO1 invalid while configured
+        "001802"
+        "01000000"
+        "FE"  // 1800h:02 = 254
+        "001A00"
+        "01000000"
+        "00"  // 1A00h:00 = 0 while mapping
+        "001A01"
+        "04000000"
+        "10004160"  // 1A00h:01 = 60410010h (statusword)
+        "001A00"
+        "01000000"
+        "01"  // 1A00h:00 = 1
+        "001801"
+        "04000000"
+        "85010000"  // 1800h:01 = 185h ($NODEID+0x180), valid
+        "002000"
+        "04000000"
+        "FEFFFFFF");  // 2000h = -2 (INTEGER32)
 }
 }  // namespace
 
@@ -177,7 +193,8 @@ private slots:
         QVERIFY(o.open(QIODevice::ReadOnly));
         QCOMPARE(o.readAll().toHex(), expected().toHex());
         // Another node: the $NODEID COB-ID follows it.
-        const auto run7 = cli({QStringLiteral("dcf"), QStringLiteral("concise"), in, out, QStringLiteral("--node"), QStringLiteral("7")});
+        const auto run7 = cli(
+            {QStringLiteral("dcf"), QStringLiteral("concise"), in, out, QStringLiteral("--node"), QStringLiteral("7")});
         QVERIFY2(run7.code == 0, qPrintable(run7.err));
         o.close();
         QVERIFY(o.open(QIODevice::ReadOnly));

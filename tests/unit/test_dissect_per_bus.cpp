@@ -24,7 +24,8 @@ CanFrame on(uint8_t bus, uint32_t id, std::vector<uint8_t> b) {
 std::vector<CanFrame> mapTpdo1(uint8_t bus, uint32_t mapEntry) {
     const std::vector<std::vector<uint8_t>> writes = {
         {0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0},
-        {0x23, 0x00, 0x1A, 0x01, uint8_t(mapEntry), uint8_t(mapEntry >> 8), uint8_t(mapEntry >> 16), uint8_t(mapEntry >> 24)},
+        {0x23, 0x00, 0x1A, 0x01, uint8_t(mapEntry), uint8_t(mapEntry >> 8), uint8_t(mapEntry >> 16),
+         uint8_t(mapEntry >> 24)},
         {0x2F, 0x00, 0x1A, 0x00, 0x01, 0, 0, 0}};
     std::vector<CanFrame> v;
     for (const auto& w : writes) {
@@ -81,8 +82,10 @@ private slots:
         QCOMPARE(ctx.node(0, 5).nmtState, 5);
         QCOMPARE(ctx.node(1, 5).nmtState, 4);
         // Identity read on bus 1 (Delta: vendor 1DDh, product 6000h) names only bus 1's node 5.
-        for (const auto& f : {on(1, 0x605, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}), on(1, 0x585, {0x43, 0x18, 0x10, 0x01, 0xDD, 0x01, 0, 0}),
-                              on(1, 0x605, {0x40, 0x18, 0x10, 0x02, 0, 0, 0, 0}), on(1, 0x585, {0x43, 0x18, 0x10, 0x02, 0x00, 0x60, 0, 0})})
+        for (const auto& f : {on(1, 0x605, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}),
+                              on(1, 0x585, {0x43, 0x18, 0x10, 0x01, 0xDD, 0x01, 0, 0}),
+                              on(1, 0x605, {0x40, 0x18, 0x10, 0x02, 0, 0, 0, 0}),
+                              on(1, 0x585, {0x43, 0x18, 0x10, 0x02, 0x00, 0x60, 0, 0})})
             ctx.dissect(f, d);
         QCOMPARE(ctx.node(1, 5).dictionaryName, QStringLiteral("delta-asda-a2"));
         QVERIFY(ctx.node(0, 5).dictionaryName.isEmpty());

@@ -26,7 +26,8 @@ void mapTpdo1(NetworkContext& ctx, Dissection& d, const std::vector<uint32_t>& e
     std::vector<std::vector<uint8_t>> writes = {{0x2F, 0x00, 0x1A, 0x00, 0x00, 0, 0, 0}};
     for (size_t i = 0; i < entries.size(); ++i) {
         const uint32_t e = entries[i];
-        writes.push_back({0x23, 0x00, 0x1A, uint8_t(i + 1), uint8_t(e), uint8_t(e >> 8), uint8_t(e >> 16), uint8_t(e >> 24)});
+        writes.push_back(
+            {0x23, 0x00, 0x1A, uint8_t(i + 1), uint8_t(e), uint8_t(e >> 8), uint8_t(e >> 16), uint8_t(e >> 24)});
     }
     writes.push_back({0x2F, 0x00, 0x1A, 0x00, uint8_t(entries.size()), 0, 0, 0});
     for (const auto& w : writes) {
@@ -142,10 +143,12 @@ private slots:
         QString err;
         QVERIFY2(ctx.assignDictionary(1, QStringLiteral("delta-asda-a2"), &err), qPrintable(err));
         ctx.dissect(fr(0x081, {0x05, 0x73, 0x01, 0x11, 0x00, 0x00, 0x00, 0x00}), d);
-        QVERIFY2(d.find("emcy.vendor")->text.startsWith(QStringLiteral("AL011")), qPrintable(d.find("emcy.vendor")->text));
+        QVERIFY2(d.find("emcy.vendor")->text.startsWith(QStringLiteral("AL011")),
+                 qPrintable(d.find("emcy.vendor")->text));
         QVERIFY(d.summary.contains(QStringLiteral("AL011")));
         ctx.dissect(fr(0x081, {0x20, 0x81, 0x11, 0x85, 0x01, 0x00, 0x00, 0x00}), d);
-        QVERIFY2(d.find("emcy.vendor")->text.startsWith(QStringLiteral("AL185")), qPrintable(d.find("emcy.vendor")->text));
+        QVERIFY2(d.find("emcy.vendor")->text.startsWith(QStringLiteral("AL185")),
+                 qPrintable(d.find("emcy.vendor")->text));
         ctx.dissect(fr(0x081, {0x00, 0x00, 0x00}), d);  // short EMCY: warning, still decoded
         QCOMPARE(d.find("emcy.code")->i, 0);
         QCOMPARE(d.warnings.size(), 1);
@@ -159,7 +162,9 @@ private slots:
         // DEXMART DEV: byte 6 = M1 alarm code, byte 7 = M2 alarm code (extract §5).
         ctx.dissect(fr(0x082, {0x10, 0x23, 0x03, 0x00, 0x00, 0x00, 0x05, 0x07}), d);
         const QString v = d.find("emcy.vendor")->text;
-        QVERIFY2(v.contains(QStringLiteral("M1")) && v.contains(QStringLiteral("5")) && v.contains(QStringLiteral("M2")), qPrintable(v));
+        QVERIFY2(
+            v.contains(QStringLiteral("M1")) && v.contains(QStringLiteral("5")) && v.contains(QStringLiteral("M2")),
+            qPrintable(v));
     }
 
     void lss() {
@@ -272,15 +277,19 @@ private slots:
         };
         // Statusword 6041h (16 bit, hex by CiA 301 notation) + position actual value 6064h (INTEGER32).
         mapTpdo1(ctx, plain, {0x60410010, 0x60640020});
-        dissectBoth(fr(0x181, {0x37, 0x16, 0x9C, 0xFF, 0xFF, 0xFF}));  // 1637h: operation enabled (CiA 402 Table 30); -100
-        QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Statusword = 1637h (Operation enabled), Position actual value = -100 PUU"));
+        dissectBoth(
+            fr(0x181, {0x37, 0x16, 0x9C, 0xFF, 0xFF, 0xFF}));  // 1637h: operation enabled (CiA 402 Table 30); -100
+        QCOMPARE(
+            expected.last(),
+            QStringLiteral("TPDO1 node 1: Statusword = 1637h (Operation enabled), Position actual value = -100 PUU"));
         dissectBoth(fr(0x181, {0x08, 0x00, 0x40, 0x42, 0x0F, 0x00}));  // 0008h: fault; 1000000
         // Remapped: modes of operation display 6061h (INTEGER8) + statusword.
         mapTpdo1(ctx, plain, {0x60610008, 0x60410010});
         dissectBoth(fr(0x181, {0x08, 0x37, 0x02}));  // 8 = cyclic synchronous position (CiA 402 Table 35)
         dissectBoth(fr(0x181, {0xFF, 0x40, 0x02}));  // -1: manufacturer-specific; 0240h: switch on disabled
-        QCOMPARE(expected.last(), QStringLiteral("TPDO1 node 1: Modes of operation display = -1 (Manufacturer-specific mode -1), "
-                                                 "Statusword = 0240h (Switch on disabled)"));
+        QCOMPARE(expected.last(),
+                 QStringLiteral("TPDO1 node 1: Modes of operation display = -1 (Manufacturer-specific mode -1), "
+                                "Statusword = 0240h (Switch on disabled)"));
         QCOMPARE(sink.records.size(), size_t(4));
         for (size_t i = 0; i < sink.records.size(); ++i) {
             SummaryBuffer text;
@@ -288,7 +297,8 @@ private slots:
                 SummaryBuffer::Cursor w(text);
                 writePdoSummary(w, sink.records[i], sink.values.data() + sink.records[i].valuesAt);
             }
-            QCOMPARE(QString::fromUtf16(text.data(), static_cast<qsizetype>(text.size())), expected[static_cast<qsizetype>(i)]);
+            QCOMPARE(QString::fromUtf16(text.data(), static_cast<qsizetype>(text.size())),
+                     expected[static_cast<qsizetype>(i)]);
         }
         QVERIFY(expected[0] != expected[2]);
     }
@@ -302,7 +312,9 @@ private slots:
         QVERIFY(vt);
         if (vt->aborts.isEmpty()) QSKIP("the Delta table lists no vendor abort codes");
         const uint32_t code = vt->aborts.constBegin().key();
-        ctx.dissect(fr(0x581, {0x80, 0x00, 0x20, 0x00, uint8_t(code), uint8_t(code >> 8), uint8_t(code >> 16), uint8_t(code >> 24)}), d);
+        ctx.dissect(fr(0x581, {0x80, 0x00, 0x20, 0x00, uint8_t(code), uint8_t(code >> 8), uint8_t(code >> 16),
+                               uint8_t(code >> 24)}),
+                    d);
         QCOMPARE(d.find("sdo.abort_text")->text, vt->aborts.constBegin().value());
     }
 
@@ -347,11 +359,14 @@ private slots:
         const QString bus = QStringLiteral("vcan1");
         QByteArray whole, parts;
         appendText(whole, f, d, bus);
-        const std::u16string summary(reinterpret_cast<const char16_t*>(d.summary.constData()), static_cast<size_t>(d.summary.size()));
+        const std::u16string summary(reinterpret_cast<const char16_t*>(d.summary.constData()),
+                                     static_cast<size_t>(d.summary.size()));
         appendText(parts, f, summary, d.warnings.constData(), d.warnings.size(), bus);
         QCOMPARE(parts, whole);
-        QCOMPARE(parts, QByteArray("         12.345678  vcan1  080  [3]  00 01 02                   SYNC \xe4\xbd\x8d\xe7\xbd\xae \xc2\xb5s \xf0\x9f\x98\x80 counter 0"
-                                   "  ! SYNC with 3 bytes; CiA 301 allows 0 or 1  ! SYNC counter 0 is outside 1..240\n"));
+        QCOMPARE(parts,
+                 QByteArray("         12.345678  vcan1  080  [3]  00 01 02                   SYNC "
+                            "\xe4\xbd\x8d\xe7\xbd\xae \xc2\xb5s \xf0\x9f\x98\x80 counter 0"
+                            "  ! SYNC with 3 bytes; CiA 301 allows 0 or 1  ! SYNC counter 0 is outside 1..240\n"));
         QByteArray empty;
         appendText(empty, f, std::u16string_view(), nullptr, 0, bus);
         QCOMPARE(empty, QByteArray("         12.345678  vcan1  080  [3]  00 01 02                   \n"));
@@ -379,10 +394,10 @@ private slots:
             return QString();
         };
         const CanFrame sw = fr(0x581, {0x4B, 0x41, 0x60, 0x00, 0x37, 0x16, 0x00, 0x00});  // 1637h
-        QCOMPARE(bit12(sw), QStringLiteral("operation mode specific (bit 12)"));  // mode not seen yet
-        ctx.dissect(fr(0x601, {0x2F, 0x60, 0x60, 0x00, 0x06, 0, 0, 0}), d);     // 6060h = 6 (homing)
+        QCOMPARE(bit12(sw), QStringLiteral("operation mode specific (bit 12)"));          // mode not seen yet
+        ctx.dissect(fr(0x601, {0x2F, 0x60, 0x60, 0x00, 0x06, 0, 0, 0}), d);               // 6060h = 6 (homing)
         QCOMPARE(bit12(sw), QStringLiteral("homing attained"));
-        ctx.dissect(fr(0x581, {0x4F, 0x61, 0x60, 0x00, 0x01, 0, 0, 0}), d);     // 6061h = 1 (PP)
+        ctx.dissect(fr(0x581, {0x4F, 0x61, 0x60, 0x00, 0x01, 0, 0, 0}), d);  // 6061h = 1 (PP)
         QCOMPARE(bit12(sw), QStringLiteral("set-point acknowledge"));
     }
 };

@@ -35,8 +35,8 @@ struct Run {
 std::vector<CanFrame> blockDownload(const QByteArray& payload, uint16_t crc) {
     std::vector<CanFrame> v;
     const auto n = static_cast<uint8_t>(payload.size());
-    v.push_back(fr(0x601, {0xC6, 0x00, 0x20, 0x00, n, 0, 0, 0}));        // initiate: crc, size
-    v.push_back(fr(0x581, {0xA4, 0x00, 0x20, 0x00, 127, 0, 0, 0}));      // response: crc, blksize 127
+    v.push_back(fr(0x601, {0xC6, 0x00, 0x20, 0x00, n, 0, 0, 0}));    // initiate: crc, size
+    v.push_back(fr(0x581, {0xA4, 0x00, 0x20, 0x00, 127, 0, 0, 0}));  // response: crc, blksize 127
     int seq = 1;
     for (int i = 0; i < payload.size(); i += 7, ++seq) {
         const bool last = i + 7 >= payload.size();

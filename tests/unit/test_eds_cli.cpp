@@ -57,7 +57,8 @@ void TestEdsCli::dumpJson() {
     bool found = false;
     for (const QJsonValue& v : list) {
         const QJsonObject e = v.toObject();
-        for (const char* k : {"index", "sub", "name", "type", "access", "pdo", "default", "value", "low", "high"}) QVERIFY2(e.contains(k), k);
+        for (const char* k : {"index", "sub", "name", "type", "access", "pdo", "default", "value", "low", "high"})
+            QVERIFY2(e.contains(k), k);
         if (e["index"].toInt() == 0x2000 && e["sub"].toInt() == 0) {
             found = true;
             QCOMPARE(e["default"].toInt(), 0x183);  // $NODEID+0x180 with --node-id 3

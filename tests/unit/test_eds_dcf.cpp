@@ -13,25 +13,30 @@ namespace {
 
 // Compares every field the model holds; returns the first difference.
 QString difference(const ObjectDictionary& a, const ObjectDictionary& b) {
-    if (a.objectCount() != b.objectCount()) return QStringLiteral("object count %1 vs %2").arg(a.objectCount()).arg(b.objectCount());
+    if (a.objectCount() != b.objectCount())
+        return QStringLiteral("object count %1 vs %2").arg(a.objectCount()).arg(b.objectCount());
     for (const auto& [index, oa] : a.objects()) {
         const Object* ob = b.object(index);
         if (!ob) return QStringLiteral("missing %1").arg(index, 0, 16);
-        if (oa.name != ob->name || oa.objectType != ob->objectType || oa.subs.size() != ob->subs.size() || oa.objectLinks != ob->objectLinks)
+        if (oa.name != ob->name || oa.objectType != ob->objectType || oa.subs.size() != ob->subs.size() ||
+            oa.objectLinks != ob->objectLinks)
             return QStringLiteral("object %1 differs").arg(index, 0, 16);
         for (size_t i = 0; i < oa.subs.size(); ++i) {
             const SubObject &x = oa.subs[i], &y = ob->subs[i];
-            if (x.sub != y.sub || x.name != y.name || x.dataType != y.dataType || x.access != y.access || x.pdoMappable != y.pdoMappable ||
-                x.defaultValue != y.defaultValue || x.parameterValue != y.parameterValue || x.lowLimit != y.lowLimit || x.highLimit != y.highLimit ||
+            if (x.sub != y.sub || x.name != y.name || x.dataType != y.dataType || x.access != y.access ||
+                x.pdoMappable != y.pdoMappable || x.defaultValue != y.defaultValue ||
+                x.parameterValue != y.parameterValue || x.lowLimit != y.lowLimit || x.highLimit != y.highLimit ||
                 x.denotation != y.denotation || x.objFlags != y.objFlags || x.extraKeys != y.extraKeys)
                 return QStringLiteral("entry %1:%2 differs (%3 / %4)").arg(index, 0, 16).arg(x.sub).arg(x.name, y.name);
         }
     }
-    if (a.device.vendorName != b.device.vendorName || a.device.vendorNumber != b.device.vendorNumber || a.device.productNumber != b.device.productNumber ||
-        a.device.revisionNumber != b.device.revisionNumber || a.device.baudRates != b.device.baudRates || a.device.nrOfRxPdo != b.device.nrOfRxPdo ||
+    if (a.device.vendorName != b.device.vendorName || a.device.vendorNumber != b.device.vendorNumber ||
+        a.device.productNumber != b.device.productNumber || a.device.revisionNumber != b.device.revisionNumber ||
+        a.device.baudRates != b.device.baudRates || a.device.nrOfRxPdo != b.device.nrOfRxPdo ||
         a.device.lssSupported != b.device.lssSupported)
         return QStringLiteral("device info differs");
-    if (a.commissioning.nodeId != b.commissioning.nodeId || a.commissioning.baudRate != b.commissioning.baudRate) return QStringLiteral("commissioning differs");
+    if (a.commissioning.nodeId != b.commissioning.nodeId || a.commissioning.baudRate != b.commissioning.baudRate)
+        return QStringLiteral("commissioning differs");
     if (a.dummyUsage != b.dummyUsage) return QStringLiteral("dummy usage differs");
     if (a.dynamicChannels.size() != b.dynamicChannels.size()) return QStringLiteral("dynamic channels differ");
     if (a.comments != b.comments) return QStringLiteral("comments differ");

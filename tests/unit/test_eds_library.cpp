@@ -15,11 +15,19 @@ void writeEds(const QString& path, const char* vendor, const char* product, cons
               const char* deviceType = "0x00020192", const char* deviceName = nullptr) {
     QFile f(path);
     QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(QByteArray("[DeviceInfo]\nVendorName=T\nVendorNumber=") + vendor + "\nProductNumber=" + product + "\nRevisionNumber=" + revision +
-            "\nProductName=" + name + "\n[MandatoryObjects]\nSupportedObjects=1\n1=0x1000\n[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\n"
-            "DefaultValue=" + deviceType + "\n" +
-            (deviceName ? QByteArray("[1008]\nParameterName=Manufacturer device name\nDataType=0x0009\nAccessType=const\nDefaultValue=") + deviceName + "\n" : QByteArray()) +
-            "[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\nPDOMapping=1\n");
+    f.write(
+        QByteArray("[DeviceInfo]\nVendorName=T\nVendorNumber=") + vendor + "\nProductNumber=" + product +
+        "\nRevisionNumber=" + revision + "\nProductName=" + name +
+        "\n[MandatoryObjects]\nSupportedObjects=1\n1=0x1000\n[1000]\nParameterName=Device "
+        "type\nDataType=0x0007\nAccessType=ro\n"
+        "DefaultValue=" +
+        deviceType + "\n" +
+        (deviceName
+             ? QByteArray(
+                   "[1008]\nParameterName=Manufacturer device name\nDataType=0x0009\nAccessType=const\nDefaultValue=") +
+                   deviceName + "\n"
+             : QByteArray()) +
+        "[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\nPDOMapping=1\n");
 }
 
 }  // namespace

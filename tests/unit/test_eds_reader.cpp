@@ -23,7 +23,9 @@ QString dump(const eds::ReadResult& r) {
     return s;
 }
 
-eds::ReadResult readSnippet(const char* text) { return eds::EdsReader::read(QByteArray(text), QStringLiteral("snippet.eds")); }
+eds::ReadResult readSnippet(const char* text) {
+    return eds::EdsReader::read(QByteArray(text), QStringLiteral("snippet.eds"));
+}
 
 }  // namespace
 
@@ -66,17 +68,18 @@ void TestEdsReader::objectSetFromListsAndScan() {
     // by CompactPDO), 2003 is unlisted but read; CompactPDO also implies 1400/1600.
     QList<int> indices;
     for (const auto& [i, o] : od.objects()) indices << i;
-    QCOMPARE(indices, (QList<int>{0x1000, 0x1016, 0x1017, 0x1018, 0x1400, 0x1600, 0x1800, 0x1A00, 0x2000, 0x2001, 0x2002, 0x2003}));
+    QCOMPARE(indices, (QList<int>{0x1000, 0x1016, 0x1017, 0x1018, 0x1400, 0x1600, 0x1800, 0x1A00, 0x2000, 0x2001,
+                                  0x2002, 0x2003}));
     QVERIFY2(hasDiagnostic(quirks_, 81, "0x1800 is listed but has no section"), qPrintable(dump(quirks_)));
     QVERIFY(hasDiagnostic(quirks_, 137, "[2003] is not in any object list"));
 }
 
 void TestEdsReader::caseInsensitiveAndOrder() {
     const auto& od = quirks_.dictionary;
-    QCOMPARE(od.fileInfo.fileName, QString("quirks.eds"));  // [fileinfo]
-    QCOMPARE(od.device.productName, QString("Quirk Drive"));  // [DEVICEINFO]
-    QCOMPARE(od.device.baudRates, (QList<int>{250, 500}));    // Baudrate_250 and BaudRate_500
-    QCOMPARE(od.entry(0x2000, 0)->access, Access::ReadWrite); // AccessType=RW
+    QCOMPARE(od.fileInfo.fileName, QString("quirks.eds"));        // [fileinfo]
+    QCOMPARE(od.device.productName, QString("Quirk Drive"));      // [DEVICEINFO]
+    QCOMPARE(od.device.baudRates, (QList<int>{250, 500}));        // Baudrate_250 and BaudRate_500
+    QCOMPARE(od.entry(0x2000, 0)->access, Access::ReadWrite);     // AccessType=RW
     QCOMPARE(od.entry(0x2000, 0)->name, QString("Late object"));  // object before the lists
 }
 
@@ -84,7 +87,8 @@ void TestEdsReader::duplicateKeyFirstWins() {
     const SubObject* s = quirks_.dictionary.entry(0x1018, 0);
     QVERIFY(s);
     QCOMPARE(s->defaultValue, QString("1"));
-    QVERIFY2(hasDiagnostic(quirks_, 70, "duplicate key DefaultValue in [1018sub0] (first at line 69)"), qPrintable(dump(quirks_)));
+    QVERIFY2(hasDiagnostic(quirks_, 70, "duplicate key DefaultValue in [1018sub0] (first at line 69)"),
+             qPrintable(dump(quirks_)));
 }
 
 void TestEdsReader::nodeIdFormulas() {
@@ -94,14 +98,15 @@ void TestEdsReader::nodeIdFormulas() {
     QCOMPARE(s->resolvedDefault(5)->toUInt64(), std::optional<std::uint64_t>(0x185));
     QCOMPARE(s->resolvedDefault(0x7F)->toUInt64(), std::optional<std::uint64_t>(0x1FF));
     // Constant first, spaces, lower case.
-    const auto r = readSnippet("[1014]\nParameterName=COB-ID EMCY\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x80 + $nodeid\n");
+    const auto r =
+        readSnippet("[1014]\nParameterName=COB-ID EMCY\nDataType=0x0007\nAccessType=rw\nDefaultValue=0x80 + $nodeid\n");
     QCOMPARE(r.dictionary.entry(0x1014, 0)->resolvedDefault(3)->toUInt64(), std::optional<std::uint64_t>(0x83));
 }
 
 void TestEdsReader::numbersOctalHexReal() {
     const auto& od = quirks_.dictionary;
     QCOMPARE(od.entry(0x1017, 0)->resolvedDefault(1)->toUInt64(), std::optional<std::uint64_t>(8));  // "010" octal
-    QCOMPARE(od.device.productNumber, std::optional<std::uint32_t>(0456));                          // octal too
+    QCOMPARE(od.device.productNumber, std::optional<std::uint32_t>(0456));                           // octal too
     QCOMPARE(od.device.vendorNumber, std::optional<std::uint32_t>(0x123));
     QCOMPARE(od.entry(0x2001, 0)->resolvedDefault(1)->toDouble(), std::optional<double>(1.5));  // REAL bit pattern
     QCOMPARE(od.entry(0x2002, 0)->resolvedDefault(1)->toInt64(), std::optional<std::int64_t>(-5));
@@ -152,7 +157,9 @@ void TestEdsReader::dummyDynamicLinksCommissioning() {
     QVERIFY(od.device.lssSupported);
     QCOMPARE(od.device.nrOfRxPdo, 1);
     // The correct spelling wins when both exist.
-    const auto r = readSnippet("[DeviceComissioning]\nNodeID=3\n[DeviceCommissioning]\nNodeID=4\n[1000]\nParameterName=x\nDataType=7\nAccessType=ro\n");
+    const auto r = readSnippet(
+        "[DeviceComissioning]\nNodeID=3\n[DeviceCommissioning]\nNodeID=4\n[1000]\nParameterName=x\nDataType="
+        "7\nAccessType=ro\n");
     QCOMPARE(r.dictionary.nodeId(), std::uint8_t(4));
     QVERIFY(hasDiagnostic(r, 1, "both [DeviceCommissioning] and [DeviceComissioning]"));
 }
@@ -171,7 +178,9 @@ void TestEdsReader::encodingWindows1252AndCrlf() {
 }
 
 void TestEdsReader::utf8WithBom() {
-    const auto r = eds::EdsReader::read(QByteArray("\xEF\xBB\xBF[1008]\r\nParameterName=Ger\xC3\xA4tename\r\nDataType=0x0009\r\nAccessType=const\r\nDefaultValue=\xC2\xB5" "Drive\r\n"),
+    const auto r = eds::EdsReader::read(QByteArray("\xEF\xBB\xBF[1008]\r\nParameterName=Ger\xC3\xA4tename\r\nDataType="
+                                                   "0x0009\r\nAccessType=const\r\nDefaultValue=\xC2\xB5"
+                                                   "Drive\r\n"),
                                         QStringLiteral("bom.eds"));
     QVERIFY(r.usable);
     QCOMPARE(r.encoding, QString("UTF-8"));
@@ -180,13 +189,18 @@ void TestEdsReader::utf8WithBom() {
 }
 
 void TestEdsReader::noListsFallback() {
-    const auto r = readSnippet("; no object lists\n[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\n\n[1001]\nParameterName=Error register\nDataType=0x0005\nAccessType=ro\n");
+    const auto r = readSnippet(
+        "; no object lists\n[1000]\nParameterName=Device "
+        "type\nDataType=0x0007\nAccessType=ro\n\n[1001]\nParameterName=Error "
+        "register\nDataType=0x0005\nAccessType=ro\n");
     QCOMPARE(r.dictionary.objectCount(), 2);
     QVERIFY(hasDiagnostic(r, 0, "no object lists"));
 }
 
 void TestEdsReader::inlineHashComments() {
-    const auto r = readSnippet("[1001]\nParameterName=Error register #1\nObjectType=0x07 # VAR\nDataType=0x0005 # UNSIGNED8\n# Category: Mandatory\nAccessType=ro # read\nDefaultValue=No\nPDOMapping=1 # Optional\n");
+    const auto r = readSnippet(
+        "[1001]\nParameterName=Error register #1\nObjectType=0x07 # VAR\nDataType=0x0005 # UNSIGNED8\n# Category: "
+        "Mandatory\nAccessType=ro # read\nDefaultValue=No\nPDOMapping=1 # Optional\n");
     QVERIFY(r.usable);
     const SubObject* s = r.dictionary.entry(0x1001, 0);
     QCOMPARE(s->name, QString("Error register #1"));  // names keep '#'
@@ -201,7 +215,8 @@ void TestEdsReader::inlineHashComments() {
 }
 
 void TestEdsReader::duplicateSection() {
-    const auto r = readSnippet("[1000]\nParameterName=First\nDataType=0x0007\n[1000]\nParameterName=Second\nAccessType=rw\n");
+    const auto r =
+        readSnippet("[1000]\nParameterName=First\nDataType=0x0007\n[1000]\nParameterName=Second\nAccessType=rw\n");
     const SubObject* s = r.dictionary.entry(0x1000, 0);
     QCOMPARE(s->name, QString("First"));
     QCOMPARE(s->access, Access::ReadWrite);  // merged
@@ -221,9 +236,12 @@ void TestEdsReader::unknownKeysKept() {
 }
 
 void TestEdsReader::customDataType() {
-    const auto r = readSnippet("[0040]\nParameterName=My struct\nObjectType=0x6\nSubNumber=2\n[0040sub0]\nParameterName=Count\nDataType=0x0005\nAccessType=ro\nDefaultValue=1\n"
-                               "[0040sub1]\nParameterName=Field\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x0007\n"
-                               "[2100]\nParameterName=Custom typed\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0102\n");
+    const auto r = readSnippet(
+        "[0040]\nParameterName=My "
+        "struct\nObjectType=0x6\nSubNumber=2\n[0040sub0]\nParameterName=Count\nDataType=0x0005\nAccessType="
+        "ro\nDefaultValue=1\n"
+        "[0040sub1]\nParameterName=Field\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x0007\n"
+        "[2100]\nParameterName=Custom typed\nObjectType=0x7\nDataType=0x0040\nAccessType=rw\nDefaultValue=0102\n");
     QVERIFY(r.usable);
     QCOMPARE(r.dictionary.object(0x0040)->objectType, ObjectType::DefStruct);
     const SubObject* s = r.dictionary.entry(0x2100, 0);
@@ -248,7 +266,10 @@ void TestEdsReader::diagnosticFormat() {
     QVERIFY(r.usable);
     QStringList lines;
     for (const auto& d : r.diagnostics) lines << d.toString();
-    QVERIFY2(lines.contains("snippet.eds:4: warning: AccessType='bogus' in [1000] is not ro, wo, rw, rwr, rww or const; ro assumed"), qPrintable(lines.join('\n')));
+    QVERIFY2(
+        lines.contains(
+            "snippet.eds:4: warning: AccessType='bogus' in [1000] is not ro, wo, rw, rwr, rww or const; ro assumed"),
+        qPrintable(lines.join('\n')));
     QVERIFY(lines.contains("snippet.eds: warning: no [DeviceInfo] section"));
 }
 

@@ -59,7 +59,8 @@ private slots:
         QFETCH(int, index);
         QFETCH(int, sub);
         QFETCH(int, type);
-        const auto* e = coscope::eds::standardDictionary().entry(static_cast<uint16_t>(index), static_cast<uint8_t>(sub));
+        const auto* e =
+            coscope::eds::standardDictionary().entry(static_cast<uint16_t>(index), static_cast<uint8_t>(sub));
         QVERIFY(e);
         QCOMPARE(int(e->dataType), type);
     }
@@ -68,7 +69,8 @@ private slots:
         const auto& d = coscope::eds::standardDictionary();
         QCOMPARE(d.displayName(0x1008, 0), QStringLiteral("Manufacturer device name"));
         QCOMPARE(d.displayName(0x1017, 0), QStringLiteral("Producer heartbeat time"));
-        QVERIFY2(d.displayName(0x1805, 1).startsWith(QStringLiteral("TPDO6 communication parameter")), qPrintable(d.displayName(0x1805, 1)));
+        QVERIFY2(d.displayName(0x1805, 1).startsWith(QStringLiteral("TPDO6 communication parameter")),
+                 qPrintable(d.displayName(0x1805, 1)));
         QVERIFY(d.displayName(0x1805, 1).contains(QStringLiteral("COB-ID used by TPDO")));
         QVERIFY(!d.entry(0x1C00, 0));
         QVERIFY(!d.entry(0x2000, 0));  // manufacturer objects are not standard

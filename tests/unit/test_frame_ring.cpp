@@ -30,8 +30,8 @@ private slots:
         bool ordered = true;
         std::thread producer([&] {
             for (uint32_t i = 0; i < total; ++i)
-                while (!ring.push(CanFrame::classic(i & 0x7FF, {static_cast<uint8_t>(i), static_cast<uint8_t>(i >> 8), static_cast<uint8_t>(i >> 16)}))) {
-                }
+                while (!ring.push(CanFrame::classic(i & 0x7FF, {static_cast<uint8_t>(i), static_cast<uint8_t>(i >> 8),
+                                                                static_cast<uint8_t>(i >> 16)}))) {}
         });
         CanFrame buf[256];
         while (received < total) {

@@ -47,14 +47,22 @@ private slots:
     void rejectsBadSyntax_data() {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("reason");
-        QTest::newRow("no hash") << "123DEAD" << "ID#DATA";
-        QTest::newRow("id too big") << "800#00" << "above 7FF";
-        QTest::newRow("ext too big") << "3FFFFFFF#00" << "above 1FFFFFFF";
-        QTest::newRow("odd digits") << "123#ABC" << "odd number";
-        QTest::newRow("too long") << "123#001122334455667788" << "more than 8";
-        QTest::newRow("not hex") << "12G#00" << "not hexadecimal";
-        QTest::newRow("fd bad len") << "123##0001122334455667788" << "not a CAN FD length";
-        QTest::newRow("rtr bad") << "123#R9" << "0-8";
+        QTest::newRow("no hash") << "123DEAD"
+                                 << "ID#DATA";
+        QTest::newRow("id too big") << "800#00"
+                                    << "above 7FF";
+        QTest::newRow("ext too big") << "3FFFFFFF#00"
+                                     << "above 1FFFFFFF";
+        QTest::newRow("odd digits") << "123#ABC"
+                                    << "odd number";
+        QTest::newRow("too long") << "123#001122334455667788"
+                                  << "more than 8";
+        QTest::newRow("not hex") << "12G#00"
+                                 << "not hexadecimal";
+        QTest::newRow("fd bad len") << "123##0001122334455667788"
+                                    << "not a CAN FD length";
+        QTest::newRow("rtr bad") << "123#R9"
+                                 << "0-8";
     }
     void rejectsBadSyntax() {
         QFETCH(QString, text);
@@ -80,7 +88,8 @@ private slots:
         QCOMPARE(formatCansend(e), QStringLiteral("20000004#0000000000000000"));
     }
     void roundTripsThroughText() {
-        for (const char* s : {"000#0100", "7FF#", "1FFFFFFF#0102030405060708", "123##3001122334455667788990011", "080#R"}) {
+        for (const char* s :
+             {"000#0100", "7FF#", "1FFFFFFF#0102030405060708", "123##3001122334455667788990011", "080#R"}) {
             QString err;
             auto f = parseCansend(QString::fromLatin1(s), &err);
             QVERIFY2(f, qPrintable(err));

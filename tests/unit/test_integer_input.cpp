@@ -30,7 +30,8 @@ private slots:
 
     void refused() {
         // Today's bug: "0x1F" became 1 in 6040h's editor. Every other notation is refused, not cut.
-        for (const char* text : {"0x", "h", "0x1G", "1Gh", "1F", "0x1Fh", "0b101", "1.5", "1e3", "--5", "5-", "0x-1", "x1F", "1F h", "31 h", "twelve", "1,000"}) {
+        for (const char* text : {"0x", "h", "0x1G", "1Gh", "1F", "0x1Fh", "0b101", "1.5", "1e3", "--5", "5-", "0x-1",
+                                 "x1F", "1F h", "31 h", "twelve", "1,000"}) {
             const IntegerInput in = readInteger(DataType::Unsigned16, QString::fromLatin1(text));
             QVERIFY2(!in.ok(), text);
             QCOMPARE(in.problem, Problem::NotANumber);
@@ -44,15 +45,41 @@ private slots:
         QTest::addColumn<QString>("highest");
         QTest::addColumn<QString>("below");
         QTest::addColumn<QString>("above");
-        QTest::newRow("UNSIGNED8") << DataType::Unsigned8 << "0" << "255" << "-1" << "256";
-        QTest::newRow("UNSIGNED16") << DataType::Unsigned16 << "0" << "65535" << "-1" << "10000h";
-        QTest::newRow("UNSIGNED24") << DataType::Unsigned24 << "0" << "FFFFFFh" << "-1" << "16777216";
-        QTest::newRow("UNSIGNED32") << DataType::Unsigned32 << "0" << "4294967295" << "-1" << "0x100000000";
-        QTest::newRow("UNSIGNED64") << DataType::Unsigned64 << "0" << "18446744073709551615" << "-1" << "18446744073709551616";
-        QTest::newRow("INTEGER8") << DataType::Integer8 << "-128" << "127" << "-129" << "128";
-        QTest::newRow("INTEGER16") << DataType::Integer16 << "-32768" << "32767" << "-32769" << "32768";
-        QTest::newRow("INTEGER32") << DataType::Integer32 << "-2147483648" << "2147483647" << "-2147483649" << "2147483648";
-        QTest::newRow("INTEGER64") << DataType::Integer64 << "-9223372036854775808" << "9223372036854775807" << "-9223372036854775809"
+        QTest::newRow("UNSIGNED8") << DataType::Unsigned8 << "0"
+                                   << "255"
+                                   << "-1"
+                                   << "256";
+        QTest::newRow("UNSIGNED16") << DataType::Unsigned16 << "0"
+                                    << "65535"
+                                    << "-1"
+                                    << "10000h";
+        QTest::newRow("UNSIGNED24") << DataType::Unsigned24 << "0"
+                                    << "FFFFFFh"
+                                    << "-1"
+                                    << "16777216";
+        QTest::newRow("UNSIGNED32") << DataType::Unsigned32 << "0"
+                                    << "4294967295"
+                                    << "-1"
+                                    << "0x100000000";
+        QTest::newRow("UNSIGNED64") << DataType::Unsigned64 << "0"
+                                    << "18446744073709551615"
+                                    << "-1"
+                                    << "18446744073709551616";
+        QTest::newRow("INTEGER8") << DataType::Integer8 << "-128"
+                                  << "127"
+                                  << "-129"
+                                  << "128";
+        QTest::newRow("INTEGER16") << DataType::Integer16 << "-32768"
+                                   << "32767"
+                                   << "-32769"
+                                   << "32768";
+        QTest::newRow("INTEGER32") << DataType::Integer32 << "-2147483648"
+                                   << "2147483647"
+                                   << "-2147483649"
+                                   << "2147483648";
+        QTest::newRow("INTEGER64") << DataType::Integer64 << "-9223372036854775808"
+                                   << "9223372036854775807"
+                                   << "-9223372036854775809"
                                    << "9223372036854775808";
     }
     void rangePerType() {
@@ -68,7 +95,8 @@ private slots:
         QCOMPARE(readInteger(type, below).problem, Problem::OutOfRange);
         QCOMPARE(readInteger(type, above).problem, Problem::OutOfRange);
         // Beyond 64 bits: refused as out of range, never wrapped.
-        for (const char* huge : {"99999999999999999999999", "0x1FFFFFFFFFFFFFFFF", "1FFFFFFFFFFFFFFFFh", "-99999999999999999999999"})
+        for (const char* huge :
+             {"99999999999999999999999", "0x1FFFFFFFFFFFFFFFF", "1FFFFFFFFFFFFFFFFh", "-99999999999999999999999"})
             QCOMPARE(readInteger(type, QString::fromLatin1(huge)).problem, Problem::OutOfRange);
     }
 
@@ -88,11 +116,16 @@ private slots:
     void shownInTheObjectsNotation() {
         // README "Numbers": 6040h controlword in hex padded to its size, a COB-ID as its CAN-ID,
         // everything else decimal.
-        QCOMPARE(integerText(DataType::Unsigned16, Value::unsignedInt(31), hexKindFor(0x6040, 0)), QStringLiteral("001Fh"));
-        QCOMPARE(integerText(DataType::Unsigned32, Value::unsignedInt(0x182), hexKindFor(0x1800, 1)), QStringLiteral("182h"));
-        QCOMPARE(integerText(DataType::Unsigned32, Value::unsignedInt(0x80000182u), hexKindFor(0x1800, 1)), QStringLiteral("80000182h"));
-        QCOMPARE(integerText(DataType::Unsigned16, Value::unsignedInt(31), hexKindFor(0x1800, 5)), QStringLiteral("31"));
-        QCOMPARE(integerText(DataType::Integer32, Value::signedInt(-1000), hexKindFor(0x607A, 0)), QStringLiteral("-1000"));
+        QCOMPARE(integerText(DataType::Unsigned16, Value::unsignedInt(31), hexKindFor(0x6040, 0)),
+                 QStringLiteral("001Fh"));
+        QCOMPARE(integerText(DataType::Unsigned32, Value::unsignedInt(0x182), hexKindFor(0x1800, 1)),
+                 QStringLiteral("182h"));
+        QCOMPARE(integerText(DataType::Unsigned32, Value::unsignedInt(0x80000182u), hexKindFor(0x1800, 1)),
+                 QStringLiteral("80000182h"));
+        QCOMPARE(integerText(DataType::Unsigned16, Value::unsignedInt(31), hexKindFor(0x1800, 5)),
+                 QStringLiteral("31"));
+        QCOMPARE(integerText(DataType::Integer32, Value::signedInt(-1000), hexKindFor(0x607A, 0)),
+                 QStringLiteral("-1000"));
         // What is shown reads back to the same value.
         QCOMPARE(readInteger(DataType::Unsigned16, QStringLiteral("001Fh")).value, Value::unsignedInt(31));
     }

@@ -23,7 +23,8 @@ class TestLogProbe : public QObject {
 
 private slots:
     void aGoodLogIsUsable() {
-        const LogProbe p = probeLog(write(QStringLiteral("good.log"), "(1.000000) can0 181#0102\n(1.001000) can0 701#05\n"));
+        const LogProbe p =
+            probeLog(write(QStringLiteral("good.log"), "(1.000000) can0 181#0102\n(1.001000) can0 701#05\n"));
         QVERIFY(p.usable);
         QCOMPARE(p.format, QStringLiteral("candump"));
         QVERIFY(p.error.isEmpty() && p.problems.empty());
@@ -42,7 +43,9 @@ private slots:
     void anUnknownFormatIsRefusedWithTheFileName() {
         const LogProbe p = probeLog(write(QStringLiteral("junk.bin"), QByteArray(64, '\xff')));
         QVERIFY(!p.usable);
-        QVERIFY2(p.error.contains(QStringLiteral("junk.bin")) && p.error.contains(QStringLiteral("not a format CoScope reads")), qPrintable(p.error));
+        QVERIFY2(p.error.contains(QStringLiteral("junk.bin")) &&
+                     p.error.contains(QStringLiteral("not a format CoScope reads")),
+                 qPrintable(p.error));
     }
 
     void aMissingFileIsRefused() {
@@ -60,7 +63,8 @@ private slots:
     // problem (a comment is no bad line, and the cut is at a whole line), so it is usable.
     void framesAfterALongHeaderAreUsable() {
         QByteArray text;
-        while (text.size() < LogProbe::kProbeBytes + 4096) text += "# a comment line of a candump log written by hand\n";
+        while (text.size() < LogProbe::kProbeBytes + 4096)
+            text += "# a comment line of a candump log written by hand\n";
         text += "(1.000000) can0 181#0102\n";
         const LogProbe p = probeLog(write(QStringLiteral("long-header.log"), text));
         QVERIFY2(p.usable, qPrintable(p.error));

@@ -10,10 +10,10 @@
 #include "core/logio/VectorBlf.h"
 
 #include <QBuffer>
-#include <QtEndian>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QtEndian>
 #include "core/can/CanErrorFrame.h"
 
 #include <QtTest>
@@ -118,10 +118,10 @@ private slots:
 
     void candumpVariants() {
         const QByteArray text =
-            "can0  000   [2]  82 01\n"                              // unindented first line
+            "can0  000   [2]  82 01\n"  // unindented first line
             "  can0  701   [1]  00\n"
             "  can0  123   [4]  remote request\n"
-            "  can0  00008002  [03]  42 01 30\n"                    // FD, 29-bit
+            "  can0  00008002  [03]  42 01 30\n"  // FD, 29-bit
             "  can0       200  [12]  00 01 02 03 04 05 06 07 08 09 0A 0B\n"
             "  can0  080   [0] \n"
             "(1700000000.500000) vcan1 7FF#R T\n"
@@ -139,16 +139,17 @@ private slots:
         QCOMPARE(f[5].len, uint8_t(0));
         QVERIFY(f[6].isRemote() && f[6].isTx() && f[6].id == 0x7FF && f[6].bus == 1);
         QCOMPARE(f[6].timestampNs, 1700000000500000000LL);
-        QVERIFY(f[7].isFd() && (f[7].flags & CanFrame::BitRateSwitch) && (f[7].flags & CanFrame::ErrorState) && f[7].len == 2);
+        QVERIFY(f[7].isFd() && (f[7].flags & CanFrame::BitRateSwitch) && (f[7].flags & CanFrame::ErrorState) &&
+                f[7].len == 2);
         QVERIFY(f[8].isError() && f[8].id == 0x4 && f[8].data[1] == 0x04);
     }
 
     void candumpBadLinesReportedAndRestKept() {
         const QByteArray text =
             "(1.000000) can0 123#11\n"
-            "(1.100000) can0 12G#11\n"          // line 2: bad id
-            "(1.200000) can0 123#112\n"         // line 3: odd digits
-            "garbage\n"                         // line 4
+            "(1.100000) can0 12G#11\n"   // line 2: bad id
+            "(1.200000) can0 123#112\n"  // line 3: odd digits
+            "garbage\n"                  // line 4
             "(1.300000) can0 124#2233\n";
         CandumpReader r;
         const auto f = readBytes(r, text);
@@ -193,9 +194,11 @@ private slots:
             "   2.584921 4 300 Tx r 8 Length = 1704000 BitCount = 145\n"
             "   3.098426 1  18EBFF00x       Rx d 8 01 A0 0F A6 60 3B D1 40    Length = 273910\n"
             "   3.297743 1  J1939TP FEE3p        6    0  0   -   Rx   d 23 A0 0F\n"
-            "   4.000000 1  123 Rx d 8 01 02\n"                       // line 14: too few bytes
-            "  30.005071 CANFD   2 Rx        300  Generic_Name_12   1 0 8  8 01 02 03 04 05 06 07 08   102203  133   303000 e0006659\n"
-            "  30.506898 CANFD   4 Rx        4EE        0 0 d 32 01 02 03 04 05 06 07 08 09 0A 0B 0C 0D 0E 0F 10 11 12 13 14 15 16 17 18 19 1A 1B 1C 1D 1E 1F 20 0 0 0\n"
+            "   4.000000 1  123 Rx d 8 01 02\n"  // line 14: too few bytes
+            "  30.005071 CANFD   2 Rx        300  Generic_Name_12   1 0 8  8 01 02 03 04 05 06 07 08   102203  133   "
+            "303000 e0006659\n"
+            "  30.506898 CANFD   4 Rx        4EE        0 0 d 32 01 02 03 04 05 06 07 08 09 0A 0B 0C 0D 0E 0F 10 11 12 "
+            "13 14 15 16 17 18 19 1A 1B 1C 1D 1E 1F 20 0 0 0\n"
             "End TriggerBlock\n";
         AscReader r;
         const auto f = readBytes(r, text);
@@ -243,22 +246,27 @@ private slots:
 
     void trcVersions_data() {
         QTest::addColumn<QByteArray>("text");
-        QTest::newRow("1.0") << QByteArray(";##########\n;   Start time: 1.1.2020\n"
-                                           "     1)      1841  0001  8  00 01 02 03 04 05 06 07\n"
-                                           "     2)      1842  00000100  2  AA BB\n");
-        QTest::newRow("1.1") << QByteArray(";$FILEVERSION=1.1\n;$STARTTIME=44964.5725134375\n"
-                                           "     1)      1841.0  Rx         0001  8  00 01 02 03 04 05 06 07 \n"
-                                           "     2)      1842.0  Tx     00000100  2  AA BB \n");
-        QTest::newRow("1.3") << QByteArray(";$FILEVERSION=1.3\n;$STARTTIME=44964.5725134375\n"
-                                           "     1)      1841.0 1  Rx         0001 -  8    00 01 02 03 04 05 06 07\n"
-                                           "     2)      1842.0 1  Tx     00000100 -  2    AA BB\n");
-        QTest::newRow("2.0") << QByteArray(";$FILEVERSION=2.0\n;$STARTTIME=44964.5725134375\n;$COLUMNS=N,O,T,I,d,l,D\n"
-                                           "      1      1841.000 DT     0001 Rx 8  00 01 02 03 04 05 06 07\n"
-                                           "      2      1842.000 DT 00000100 Tx 2  AA BB\n");
-        QTest::newRow("2.1") << QByteArray(";$FILEVERSION=2.1\n;$STARTTIME=44964.5725134375\n;$COLUMNS=N,O,T,B,I,d,R,L,D\n"
-                                           "      1      1841.000 DT  1     0001 Rx -  8    00 01 02 03 04 05 06 07\n"
-                                           "      2      1842.000 DT  1 00000100 Tx -  2    AA BB\n"
-                                           "      3      1843.000 ST  1       Rx -  4    00 00 00 04\n");
+        QTest::newRow("1.0") << QByteArray(
+            ";##########\n;   Start time: 1.1.2020\n"
+            "     1)      1841  0001  8  00 01 02 03 04 05 06 07\n"
+            "     2)      1842  00000100  2  AA BB\n");
+        QTest::newRow("1.1") << QByteArray(
+            ";$FILEVERSION=1.1\n;$STARTTIME=44964.5725134375\n"
+            "     1)      1841.0  Rx         0001  8  00 01 02 03 04 05 06 07 \n"
+            "     2)      1842.0  Tx     00000100  2  AA BB \n");
+        QTest::newRow("1.3") << QByteArray(
+            ";$FILEVERSION=1.3\n;$STARTTIME=44964.5725134375\n"
+            "     1)      1841.0 1  Rx         0001 -  8    00 01 02 03 04 05 06 07\n"
+            "     2)      1842.0 1  Tx     00000100 -  2    AA BB\n");
+        QTest::newRow("2.0") << QByteArray(
+            ";$FILEVERSION=2.0\n;$STARTTIME=44964.5725134375\n;$COLUMNS=N,O,T,I,d,l,D\n"
+            "      1      1841.000 DT     0001 Rx 8  00 01 02 03 04 05 06 07\n"
+            "      2      1842.000 DT 00000100 Tx 2  AA BB\n");
+        QTest::newRow("2.1") << QByteArray(
+            ";$FILEVERSION=2.1\n;$STARTTIME=44964.5725134375\n;$COLUMNS=N,O,T,B,I,d,R,L,D\n"
+            "      1      1841.000 DT  1     0001 Rx -  8    00 01 02 03 04 05 06 07\n"
+            "      2      1842.000 DT  1 00000100 Tx -  2    AA BB\n"
+            "      3      1843.000 ST  1       Rx -  4    00 00 00 04\n");
     }
     void trcVersions() {
         QFETCH(QByteArray, text);
@@ -276,11 +284,12 @@ private slots:
     }
 
     void trcFdRemoteAndBadLine() {
-        const QByteArray text = ";$FILEVERSION=2.1\n;$COLUMNS=N,O,T,B,I,d,R,L,D\n"
-                                "      1         1.000 FB  2     0181 Rx -  9    00 01 02 03 04 05 06 07 08 09 0A 0B\n"
-                                "      2         2.000 RR  1     0701 Rx -  1\n"
-                                "      3         3.000 DT  1     0ZZZ Rx -  1    00\n"   // line 5
-                                "      4         4.000 DT  1     0702 Rx -  1    05\n";
+        const QByteArray text =
+            ";$FILEVERSION=2.1\n;$COLUMNS=N,O,T,B,I,d,R,L,D\n"
+            "      1         1.000 FB  2     0181 Rx -  9    00 01 02 03 04 05 06 07 08 09 0A 0B\n"
+            "      2         2.000 RR  1     0701 Rx -  1\n"
+            "      3         3.000 DT  1     0ZZZ Rx -  1    00\n"  // line 5
+            "      4         4.000 DT  1     0702 Rx -  1    05\n";
         TrcReader r;
         const auto f = readBytes(r, text);
         QCOMPARE(f.size(), size_t(3));
@@ -294,11 +303,12 @@ private slots:
     // Error warnings (PEAK CAN TRC File Format 1.0 "Error Warnings", 1.1+ type Warng) are the bus
     // state the driver saw: kept as error frames the Events show, not dropped (issue 37).
     void trcErrorWarningsBecomeErrorFrames() {
-        const QByteArray v10 = ";   Start time: 1.1.2020\n"
-                               "     1)      1841  0001  8  00 01 02 03 04 05 06 07\n"
-                               "     2)      1843  FFFFFFFF  4  00 00 00 04 ------BUSLIGHT\n"
-                               "     3)      1844  FFFFFFFF  4  00 00 00 08 ------BUSHEAVY\n"
-                               "     4)      1845  FFFFFFFF  4  00 00 00 10 ------BUSOFF\n";
+        const QByteArray v10 =
+            ";   Start time: 1.1.2020\n"
+            "     1)      1841  0001  8  00 01 02 03 04 05 06 07\n"
+            "     2)      1843  FFFFFFFF  4  00 00 00 04 ------BUSLIGHT\n"
+            "     3)      1844  FFFFFFFF  4  00 00 00 08 ------BUSHEAVY\n"
+            "     4)      1845  FFFFFFFF  4  00 00 00 10 ------BUSOFF\n";
         TrcReader r;
         const auto f = readBytes(r, v10);
         QVERIFY2(r.diagnostics().empty(), r.diagnostics().empty() ? "" : qPrintable(r.diagnostics()[0].message));
@@ -309,9 +319,10 @@ private slots:
         QCOMPARE(decodeCanError(f[3]).state, CanErrorReport::BusState::BusOff);
         QCOMPARE(f[3].timestampNs - f[0].timestampNs, 4000000LL);
 
-        const QByteArray v11 = ";$FILEVERSION=1.1\n;$STARTTIME=44964.5725134375\n"
-                               "     1)      1841.0  Rx         0001  8  00 01 02 03 04 05 06 07 \n"
-                               "     2)      1842.0  Warng  FFFFFFFF  4  00 00 00 08 BUSHEAVY \n";
+        const QByteArray v11 =
+            ";$FILEVERSION=1.1\n;$STARTTIME=44964.5725134375\n"
+            "     1)      1841.0  Rx         0001  8  00 01 02 03 04 05 06 07 \n"
+            "     2)      1842.0  Warng  FFFFFFFF  4  00 00 00 08 BUSHEAVY \n";
         TrcReader r11;
         const auto g = readBytes(r11, v11);
         QVERIFY(r11.diagnostics().empty());
@@ -351,8 +362,9 @@ private slots:
         for (const auto& f : sampleFrames()) w.write(f);
         QVERIFY(w.close());
         QProcess p;
-        p.start(tshark, {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"), QStringLiteral("can.id"),
-                                QStringLiteral("-e"), QStringLiteral("frame.packet_flags_direction")});
+        p.start(tshark,
+                {QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"),
+                 QStringLiteral("can.id"), QStringLiteral("-e"), QStringLiteral("frame.packet_flags_direction")});
         QVERIFY(p.waitForFinished(60000));
         QCOMPARE(p.exitCode(), 0);
         const QStringList ids = QString::fromLatin1(p.readAllStandardOutput()).split(u'\n', Qt::SkipEmptyParts);
@@ -360,7 +372,8 @@ private slots:
         QVERIFY2(ids[0].contains(QStringLiteral("0x123")) || ids[0].section(u'\t', 0, 0) == u"291", qPrintable(ids[0]));
         // Our frame (the last, CanFrame::Tx) is outbound (2) for Wireshark too; the others unknown.
         QVERIFY2(ids[4].endsWith(QStringLiteral("\t2")) || ids[4].endsWith(QStringLiteral("\t0x2")) ||
-                     ids[4].endsWith(QStringLiteral("\t0x00000002")), qPrintable(ids[4]));
+                     ids[4].endsWith(QStringLiteral("\t0x00000002")),
+                 qPrintable(ids[4]));
         QVERIFY2(!ids[0].endsWith(QStringLiteral("2")), qPrintable(ids[0]));
     }
 
@@ -381,7 +394,7 @@ private slots:
             put32(65535);
             put32(227);
             put32(100);
-            put32(5);     // 100 s + 5 ns
+            put32(5);  // 100 s + 5 ns
             put32(16);
             put32(16);
             const unsigned char pkt[16] = {0x80, 0x12, 0x34, 0x56, 2, 0, 0, 0, 0xCA, 0xFE, 0, 0, 0, 0, 0, 0};
@@ -402,8 +415,9 @@ private slots:
         BlfWriter w;
         const QByteArray bytes = writeAll(w, frames);
         QVERIFY(bytes.startsWith("LOGG"));
-        QCOMPARE(qFromLittleEndian<quint64>(bytes.constData() + 16), quint64(bytes.size()));  // file size patched in at close
-        QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 32), quint32(frames.size()));   // object count
+        QCOMPARE(qFromLittleEndian<quint64>(bytes.constData() + 16),
+                 quint64(bytes.size()));  // file size patched in at close
+        QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 32), quint32(frames.size()));  // object count
         BlfReader r;
         const auto back = readBytes(r, bytes);
         QVERIFY2(r.diagnostics().empty(), r.diagnostics().empty() ? "" : qPrintable(r.diagnostics()[0].message));
@@ -413,7 +427,9 @@ private slots:
 
     void blfManyContainersAndErrorFrames() {
         std::vector<CanFrame> frames;
-        for (int i = 0; i < 20000; ++i) frames.push_back(frame(1700000000000000000LL + i * 100000LL, uint32_t(0x180 + (i % 127)), {uint8_t(i), uint8_t(i >> 8)}));
+        for (int i = 0; i < 20000; ++i)
+            frames.push_back(frame(1700000000000000000LL + i * 100000LL, uint32_t(0x180 + (i % 127)),
+                                   {uint8_t(i), uint8_t(i >> 8)}));
         frames.push_back(errorFrame(frames.back().timestampNs + 1000));
         BlfWriter w;
         const QByteArray bytes = writeAll(w, frames);
@@ -431,8 +447,14 @@ private slots:
     void blfHandMade() {
         // One zlib container with a CAN_MESSAGE (v1 header, 10 us units) and a CAN_FD_MESSAGE_64.
         auto le16 = [](QByteArray& o, uint16_t v) { o.append(char(v)).append(char(v >> 8)); };
-        auto le32 = [&](QByteArray& o, uint32_t v) { le16(o, uint16_t(v)); le16(o, uint16_t(v >> 16)); };
-        auto le64 = [&](QByteArray& o, uint64_t v) { le32(o, uint32_t(v)); le32(o, uint32_t(v >> 32)); };
+        auto le32 = [&](QByteArray& o, uint32_t v) {
+            le16(o, uint16_t(v));
+            le16(o, uint16_t(v >> 16));
+        };
+        auto le64 = [&](QByteArray& o, uint64_t v) {
+            le32(o, uint32_t(v));
+            le32(o, uint32_t(v >> 32));
+        };
         auto object = [&](uint32_t type, uint32_t tsFlags, uint64_t ts, const QByteArray& body) {
             QByteArray o("LOBJ");
             le16(o, 32);
@@ -448,8 +470,8 @@ private slots:
             return o;
         };
         QByteArray msg;
-        le16(msg, 2);           // channel 2
-        msg.append(char(0x01)); // Tx
+        le16(msg, 2);            // channel 2
+        msg.append(char(0x01));  // Tx
         msg.append(char(3));
         le32(msg, 0x80000123);  // extended
         msg.append("\x01\x02\x03\x00\x00\x00\x00\x00", 8);
@@ -457,7 +479,7 @@ private slots:
         fd64.append(char(1)).append(char(9)).append(char(12)).append(char(0));
         le32(fd64, 0x181);
         le32(fd64, 0);
-        le32(fd64, 0x3000);     // EDL + BRS
+        le32(fd64, 0x3000);  // EDL + BRS
         for (int i = 0; i < 4; ++i) le32(fd64, 0);
         le16(fd64, 0);
         fd64.append(char(0)).append(char(0));
@@ -466,7 +488,9 @@ private slots:
         const QByteArray inner = object(1, 1, 150, msg) + object(101, 2, 2000000, fd64);
         QByteArray packed(int(compressBound(uLong(inner.size()))), '\0');
         uLongf packedLen = uLongf(packed.size());
-        QCOMPARE(compress(reinterpret_cast<Bytef*>(packed.data()), &packedLen, reinterpret_cast<const Bytef*>(inner.constData()), uLong(inner.size())), Z_OK);
+        QCOMPARE(compress(reinterpret_cast<Bytef*>(packed.data()), &packedLen,
+                          reinterpret_cast<const Bytef*>(inner.constData()), uLong(inner.size())),
+                 Z_OK);
         packed.resize(int(packedLen));
         QByteArray cont("LOBJ");
         le16(cont, 16);
@@ -546,7 +570,8 @@ private slots:
     // (a capture being rotated) ends with what was read and a clear diagnostic, no SIGBUS.
     void pcapngTruncatedWhileReading() {
         std::vector<CanFrame> frames;
-        for (int i = 0; i < 200000; ++i) frames.push_back(frame(1000000LL * i, 0x181 + (i % 4), {uint8_t(i), uint8_t(i >> 8), 3, 4, 5, 6, 7, 8}));
+        for (int i = 0; i < 200000; ++i)
+            frames.push_back(frame(1000000LL * i, 0x181 + (i % 4), {uint8_t(i), uint8_t(i >> 8), 3, 4, 5, 6, 7, 8}));
         PcapngWriter w;
         const QByteArray bytes = writeAll(w, frames);
         QTemporaryDir dir;
@@ -571,7 +596,9 @@ private slots:
     // ReadAhead hands out every frame in order, and can be dropped half-way without hanging.
     void readAheadKeepsOrderAndStops() {
         QByteArray text;
-        for (int i = 0; i < 50000; ++i) text += QByteArray("(1.000000) can0 ") + QByteArray::number(0x100 + i % 0x600, 16) + "#" + QByteArray::number(i % 256 + 256, 16).right(2) + "\n";
+        for (int i = 0; i < 50000; ++i)
+            text += QByteArray("(1.000000) can0 ") + QByteArray::number(0x100 + i % 0x600, 16) + "#" +
+                    QByteArray::number(i % 256 + 256, 16).right(2) + "\n";
         std::vector<CanFrame> want;
         {
             CandumpReader r;

@@ -24,7 +24,8 @@ struct GapAt {
     size_t frame;
     int64_t lostNs, backNs;
 };
-const GapAt kGaps[] = {{2, kT0 + 2500000, kT0 + 1750000000LL}, {4, kT0 + 1800000000LL, kT0 + 1900000000LL},
+const GapAt kGaps[] = {{2, kT0 + 2500000, kT0 + 1750000000LL},
+                       {4, kT0 + 1800000000LL, kT0 + 1900000000LL},
                        {4, kT0 + 1950000000LL, kT0 + 2000000000LL}};
 
 std::vector<CanFrame> frames() {
@@ -60,7 +61,8 @@ QByteArray writeWithGaps(const QString& format, std::vector<GapAt>* written) {
     return buf.data();
 }
 
-std::unique_ptr<LogReader> readBack(const QString& format, const QByteArray& bytes, QBuffer& buf, std::vector<CanFrame>* got) {
+std::unique_ptr<LogReader> readBack(const QString& format, const QByteArray& bytes, QBuffer& buf,
+                                    std::vector<CanFrame>* got) {
     buf.setData(bytes);
     buf.open(QIODevice::ReadOnly);
     auto r = LogFormats::createReader(format);
@@ -129,9 +131,10 @@ private slots:
 
     // A gap comment CoScope did not write (or a damaged one) is an ordinary comment.
     void otherCommentsAreNoGaps() {
-        const QByteArray asc = "date Tue Nov 14 10:13:20.123 PM 2023\nbase hex  timestamps absolute\nBegin Triggerblock Tue Nov 14 "
-                               "10:13:20.123 PM 2023\n// CoScope: gap in the capture (lost_ns=x back_ns=1)\n// a remark\n"
-                               "   0.001000 1  181             Rx   d 1 01\nEnd TriggerBlock\n";
+        const QByteArray asc =
+            "date Tue Nov 14 10:13:20.123 PM 2023\nbase hex  timestamps absolute\nBegin Triggerblock Tue Nov 14 "
+            "10:13:20.123 PM 2023\n// CoScope: gap in the capture (lost_ns=x back_ns=1)\n// a remark\n"
+            "   0.001000 1  181             Rx   d 1 01\nEnd TriggerBlock\n";
         QBuffer buf;
         std::vector<CanFrame> got;
         auto r = readBack(QStringLiteral("asc"), asc, buf, &got);
@@ -164,8 +167,10 @@ private slots:
     void pythonCanReadsEveryFrame_data() {
         QTest::addColumn<QString>("format");
         QTest::addColumn<QString>("readerClass");
-        QTest::newRow("asc") << "asc" << "ASCReader";
-        QTest::newRow("trc") << "trc" << "TRCReader";
+        QTest::newRow("asc") << "asc"
+                             << "ASCReader";
+        QTest::newRow("trc") << "trc"
+                             << "TRCReader";
     }
 
     void pythonCanReadsEveryFrame() {
@@ -180,9 +185,12 @@ private slots:
             f.write(writeWithGaps(format, nullptr));
         }
         QProcess p;
-        p.start(py, {QStringLiteral("-c"),
-                     QStringLiteral("import sys, can\nfor m in can.%1(sys.argv[1]): print('%x %d' % (m.arbitration_id, m.dlc))").arg(readerClass),
-                     path});
+        p.start(
+            py,
+            {QStringLiteral("-c"),
+             QStringLiteral("import sys, can\nfor m in can.%1(sys.argv[1]): print('%x %d' % (m.arbitration_id, m.dlc))")
+                 .arg(readerClass),
+             path});
         QVERIFY(p.waitForFinished(60000));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
         QStringList want;

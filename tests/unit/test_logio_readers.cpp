@@ -16,7 +16,9 @@ using namespace coscope;
 using namespace coscope::logio;
 
 namespace {
-QString fixture(const char* name) { return QStringLiteral(COSCOPE_SOURCE_DIR "/tests/data/logs/") + QLatin1String(name); }
+QString fixture(const char* name) {
+    return QStringLiteral(COSCOPE_SOURCE_DIR "/tests/data/logs/") + QLatin1String(name);
+}
 
 struct Read {
     QString format;
@@ -47,7 +49,9 @@ QList<int64_t> badLines(const Read& r) {
     return v;
 }
 
-QByteArray bytesOf(const CanFrame& f) { return QByteArray(reinterpret_cast<const char*>(f.data.data()), f.payloadSize()).toHex(' ').toUpper(); }
+QByteArray bytesOf(const CanFrame& f) {
+    return QByteArray(reinterpret_cast<const char*>(f.data.data()), f.payloadSize()).toHex(' ').toUpper();
+}
 
 int64_t localNs(int y, int mo, int d, int h, int mi, int s, int ms) {
     return QDateTime(QDate(y, mo, d), QTime(h, mi, s, ms)).toMSecsSinceEpoch() * 1000000;
@@ -70,20 +74,20 @@ private slots:
     // frame the line says, and a faulty line a diagnostic with its number.
     void candumpLogLineForms() {
         const QByteArray text =
-            "(1700000000.123456) can0 181#0102030405060708\n"        // 1: plain, 8 bytes
-            "(1700000000.1) can1 7ff#\n"                              // 2: lower case, no data, 1 fraction digit
-            "(1700000000.123456789) can0 18FF0001#AABB\n"             // 3: 29-bit, ns fraction
-            "(1700000000.1234567891) can0 123#00\n"                   // 4: digits beyond 1 ns ignored
-            "(1700000000.000001) can0 20000004#0004000000000000\n"    // 5: error frame (CAN_ERR_FLAG)
-            "(1700000000.000002) can0 0123#11\n"                      // 6: 4 digits: 29-bit id 123h
-            "(1700000000.000003) can0 123#11 T\n"                     // 7: transmitted
-            "(1700000000.000004)\tcan0\t123#22\n"                     // 8: tabs
-            "(1700000000.000005) can0 800#11\n"                       // 9: bad: 11-bit id above 7FF
-            "(1700000000.000006) can0 123#112233445566778899\n"       // 10: bad: 9 bytes
-            "(1700000000.000007) can0 123#11 X\n"                     // 11: bad: text after the frame
-            "(9223372036.999999999) can0 123#11\n"                    // 12: bad: beyond int64 ns
-            "(1700000000.000008) can0 123#11.22\n"                    // 13: '.' separator
-            "(12345678901234567890123.5) can0 123#11\n";             // 14: bad: 23-digit seconds (fuzzer)
+            "(1700000000.123456) can0 181#0102030405060708\n"       // 1: plain, 8 bytes
+            "(1700000000.1) can1 7ff#\n"                            // 2: lower case, no data, 1 fraction digit
+            "(1700000000.123456789) can0 18FF0001#AABB\n"           // 3: 29-bit, ns fraction
+            "(1700000000.1234567891) can0 123#00\n"                 // 4: digits beyond 1 ns ignored
+            "(1700000000.000001) can0 20000004#0004000000000000\n"  // 5: error frame (CAN_ERR_FLAG)
+            "(1700000000.000002) can0 0123#11\n"                    // 6: 4 digits: 29-bit id 123h
+            "(1700000000.000003) can0 123#11 T\n"                   // 7: transmitted
+            "(1700000000.000004)\tcan0\t123#22\n"                   // 8: tabs
+            "(1700000000.000005) can0 800#11\n"                     // 9: bad: 11-bit id above 7FF
+            "(1700000000.000006) can0 123#112233445566778899\n"     // 10: bad: 9 bytes
+            "(1700000000.000007) can0 123#11 X\n"                   // 11: bad: text after the frame
+            "(9223372036.999999999) can0 123#11\n"                  // 12: bad: beyond int64 ns
+            "(1700000000.000008) can0 123#11.22\n"                  // 13: '.' separator
+            "(12345678901234567890123.5) can0 123#11\n";            // 14: bad: 23-digit seconds (fuzzer)
         CandumpReader r;
         const auto f = readBytes(r, text);
         QCOMPARE(badLines(Read{{}, {}, r.diagnostics(), 0}), QList<int64_t>({9, 10, 11, 12, 14}));
@@ -157,7 +161,8 @@ private slots:
     // 0.903 s); four digits count tenths of a millisecond.
     void busmasterThreeDigitTimeIsMilliseconds() {
         const QByteArray text =
-            "***BUSMASTER Ver 3.2.2***\n***START DATE AND TIME 28:11:2026 22:20:14:000***\n***HEX***\n***SYSTEM MODE***\n"
+            "***BUSMASTER Ver 3.2.2***\n***START DATE AND TIME 28:11:2026 22:20:14:000***\n***HEX***\n***SYSTEM "
+            "MODE***\n"
             "22:20:14:992 Rx 1 0x701 s 1 05\n22:20:15:022 Rx 1 0x701 s 1 05\n22:20:15:0300 Rx 1 0x701 s 1 05\n"
             "22:20:15:1000 Rx 1 0x701 s 1 05\n";
         BusmasterReader r;
@@ -275,17 +280,19 @@ private slots:
         const auto back = readBytes(r, out.data());
         QVERIFY2(r.diagnostics().empty(), r.diagnostics().empty() ? "" : qPrintable(r.diagnostics()[0].message));
         QCOMPARE(back.size(), frames.size());
-        for (size_t i = 0; i < frames.size(); ++i) QVERIFY2(back[i] == frames[i], qPrintable(QStringLiteral("frame %1 differs").arg(i)));
+        for (size_t i = 0; i < frames.size(); ++i)
+            QVERIFY2(back[i] == frames[i], qPrintable(QStringLiteral("frame %1 differs").arg(i)));
         QCOMPARE(r.busNames(), QStringList({QStringLiteral("can0"), QStringLiteral("my,bus")}));
     }
 
     void coscopeCsvBadLines() {
-        const QByteArray text = "number,time,bus,id,ext,rtr,fd,dir,len,data,summary\n"
-                                "1,1.000000,can0,0x181,0,0,0,rx,2,01 02,\n"
-                                "2,1.1,can0,0x181,0,0,0,rx,3,01 02,\n"
-                                "3,x,can0,0x181,0,0,0,rx,0,,\n"
-                                "4,1.2,can0,0x181,0,0,0,sideways,0,,\n"
-                                "5,1.300000,can0,0x182,0,0,0,rx,1,FF,\"NMT, boot\"\n";
+        const QByteArray text =
+            "number,time,bus,id,ext,rtr,fd,dir,len,data,summary\n"
+            "1,1.000000,can0,0x181,0,0,0,rx,2,01 02,\n"
+            "2,1.1,can0,0x181,0,0,0,rx,3,01 02,\n"
+            "3,x,can0,0x181,0,0,0,rx,0,,\n"
+            "4,1.2,can0,0x181,0,0,0,sideways,0,,\n"
+            "5,1.300000,can0,0x182,0,0,0,rx,1,FF,\"NMT, boot\"\n";
         CsvReader r;
         const auto f = readBytes(r, text);
         QCOMPARE(f.size(), size_t(2));
@@ -298,15 +305,20 @@ private slots:
 
     // Content decides, not the name: PEAK vs IXXAT .trc, candump vs BUSMASTER .log, three CSVs.
     void detectionByContent() {
-        QCOMPARE(LogFormats::detectContent("***BUSMASTER Ver 3.2.2***\r\n***PROTOCOL CAN***\r\n"), QStringLiteral("busmaster"));
+        QCOMPARE(LogFormats::detectContent("***BUSMASTER Ver 3.2.2***\r\n***PROTOCOL CAN***\r\n"),
+                 QStringLiteral("busmaster"));
         QCOMPARE(LogFormats::detectContent("(1.0) can0 123#00\n"), QStringLiteral("candump"));
         QCOMPARE(LogFormats::detectContent("ASCII Trace IXXAT MiniMon V3\n"), QStringLiteral("ixxat"));
         QCOMPARE(LogFormats::detectContent(";$FILEVERSION=1.1\n"), QStringLiteral("trc"));
-        QCOMPARE(LogFormats::detectContent("\xEF\xBB\xBFTime Stamp,ID,Extended,Dir,Bus,LEN,D1\n"), QStringLiteral("gvret"));
-        QCOMPARE(LogFormats::detectContent("number,time,bus,id,ext,rtr,fd,dir,len,data,summary\n"), QStringLiteral("csv"));
-        QCOMPARE(LogFormats::detectContent("Chn Identifier Flg   DLC  D0...1...2...3...4...5...6..D7       Time     Dir\n"),
-                 QStringLiteral("kvaser"));
-        for (const char* name : {"busmaster_v3_hex_system.log", "ixxat_cananalyser.trc", "kvaser_canking.txt", "savvycan_gvret_v1.csv"}) {
+        QCOMPARE(LogFormats::detectContent("\xEF\xBB\xBFTime Stamp,ID,Extended,Dir,Bus,LEN,D1\n"),
+                 QStringLiteral("gvret"));
+        QCOMPARE(LogFormats::detectContent("number,time,bus,id,ext,rtr,fd,dir,len,data,summary\n"),
+                 QStringLiteral("csv"));
+        QCOMPARE(
+            LogFormats::detectContent("Chn Identifier Flg   DLC  D0...1...2...3...4...5...6..D7       Time     Dir\n"),
+            QStringLiteral("kvaser"));
+        for (const char* name :
+             {"busmaster_v3_hex_system.log", "ixxat_cananalyser.trc", "kvaser_canking.txt", "savvycan_gvret_v1.csv"}) {
             QFile f(fixture(name));
             QVERIFY(f.open(QIODevice::ReadOnly));
             QVERIFY2(!LogFormats::detect(&f, f.fileName()).isEmpty(), name);

@@ -62,7 +62,9 @@ Frame frame(uint64_t ns, uint32_t id, const QByteArray& bytes, uint8_t bus = 1) 
     return f;
 }
 
-QByteArray payload(const CanFrame& f) { return QByteArray(reinterpret_cast<const char*>(f.data.data()), f.payloadSize()); }
+QByteArray payload(const CanFrame& f) {
+    return QByteArray(reinterpret_cast<const char*>(f.data.data()), f.payloadSize());
+}
 
 // Three classic frames in one sorted data group, the data given by `makeData` from the
 // record bytes.
@@ -70,7 +72,9 @@ template <typename MakeData>
 QByteArray sortedFile(MakeData makeData, uint64_t cycles = 3) {
     File m;
     QByteArray records;
-    for (int i = 0; i < 3; ++i) records += File::record(0, 0, frame(1000000ULL * uint64_t(i + 1), 0x181 + uint32_t(i), QByteArray(8, char(0x10 + i))));
+    for (int i = 0; i < 3; ++i)
+        records +=
+            File::record(0, 0, frame(1000000ULL * uint64_t(i + 1), 0x181 + uint32_t(i), QByteArray(8, char(0x10 + i))));
     const uint64_t cg = m.group(1, cycles, 0, 80, m.canChannels("CAN_DataFrame"));
     const uint64_t dg = m.dataGroup(0, cg, 0);
     m.setLink(dg, 2, makeData(m, records));  // the data blocks come last, as loggers write them
@@ -148,8 +152,10 @@ private slots:
     void sortedGroupsMergeByTime() {
         File m;
         QByteArray a, b;
-        for (uint64_t t : {1, 3, 5}) a += File::record(0, 0, frame(t * 1000000, 0x100 + uint32_t(t), QByteArray(1, char(t))));
-        for (uint64_t t : {2, 4}) b += File::record(0, 0, frame(t * 1000000, 0x100 + uint32_t(t), QByteArray(1, char(t)), 2));
+        for (uint64_t t : {1, 3, 5})
+            a += File::record(0, 0, frame(t * 1000000, 0x100 + uint32_t(t), QByteArray(1, char(t))));
+        for (uint64_t t : {2, 4})
+            b += File::record(0, 0, frame(t * 1000000, 0x100 + uint32_t(t), QByteArray(1, char(t)), 2));
         const uint64_t dg1 = m.dataGroup(0, m.group(1, 3, 0, 80, m.canChannels("CAN_DataFrame")), m.dt(a));
         const uint64_t dg2 = m.dataGroup(0, m.group(1, 2, 0, 80, m.canChannels("CAN_DataFrame")), m.dt(b));
         m.chain({dg1, dg2});
@@ -161,7 +167,8 @@ private slots:
         // A finalised file whose cycle count disagrees with its records says so.
         const Result wrong = readBytes(sortedFile([](File& f, const QByteArray& r) { return f.dt(r); }, 4));
         QCOMPARE(wrong.frames.size(), size_t(3));
-        QVERIFY2(problemText(wrong).contains(QStringLiteral("declares 4 records, 3 were read")), qPrintable(problemText(wrong)));
+        QVERIFY2(problemText(wrong).contains(QStringLiteral("declares 4 records, 3 were read")),
+                 qPrintable(problemText(wrong)));
     }
 
     // Channel groups of one data group written apart (CANedge's Tx and Rx groups) come out in
@@ -226,7 +233,8 @@ private slots:
             m.setLink(m.lastDataBytes(), 5, vlsd);
             m.chain({cg, vlsd});
             QByteArray recs = QByteArray::fromHex("02") + mdf4test::vlsdSample(d1) + File::record(1, 1, f1, 0);
-            recs += File::record(1, 1, f2, 4 + 64) + QByteArray::fromHex("02") + mdf4test::vlsdSample(d2);  // CANedge's order
+            recs += File::record(1, 1, f2, 4 + 64) + QByteArray::fromHex("02") +
+                    mdf4test::vlsdSample(d2);  // CANedge's order
             const Result r = readBytes(m.finish(m.dataGroup(1, cg, m.dt(recs)), kStart));
             QVERIFY2(r.problems.empty(), qPrintable(problemText(r)));
             QCOMPARE(r.frames.size(), size_t(2));
@@ -240,7 +248,8 @@ private slots:
     void unfinalisedFileReadsWhatIsThere() {
         File m(true, 0x0025);
         QByteArray recs;
-        for (int i = 0; i < 4; ++i) recs += File::record(1, 1, frame(uint64_t(i + 1) * 1000000, 0x300 + uint32_t(i), QByteArray(8, char(i))));
+        for (int i = 0; i < 4; ++i)
+            recs += File::record(1, 1, frame(uint64_t(i + 1) * 1000000, 0x300 + uint32_t(i), QByteArray(8, char(i))));
         const uint64_t cg = m.group(1, 0, 0, 80, m.canChannels("CAN_DataFrame"));
         const uint64_t dg = m.dataGroup(1, cg, 0);
         const uint64_t dt = m.dt(recs, 24);
@@ -252,13 +261,16 @@ private slots:
         QCOMPARE(r.frames.size(), size_t(3));
         QCOMPARE(r.frames[2].id, 0x302u);
         QCOMPARE(r.problems.size(), size_t(1));
-        QVERIFY2(r.problems[0].message.contains(QStringLiteral("cut short")) && r.problems[0].message.contains(QStringLiteral("(at byte %1 of the file, 51 of 81 bytes)").arg(dt + 24 + 243)),
+        QVERIFY2(r.problems[0].message.contains(QStringLiteral("cut short")) &&
+                     r.problems[0].message.contains(
+                         QStringLiteral("(at byte %1 of the file, 51 of 81 bytes)").arg(dt + 24 + 243)),
                  qPrintable(problemText(r)));
     }
 
     // Bad files: a clear error naming where, and what was read before the damage is kept.
     void badFilesSayWhere() {
-        QCOMPARE(readBytes(QByteArray(100, 'x')).error, QStringLiteral("not an MDF file (no \"MDF\" identification at byte 0)"));
+        QCOMPARE(readBytes(QByteArray(100, 'x')).error,
+                 QStringLiteral("not an MDF file (no \"MDF\" identification at byte 0)"));
         QByteArray mdf3 = sortedFile([](File& f, const QByteArray& r) { return f.dt(r); });
         mdf3[28] = char(330 & 0xFF);
         mdf3[29] = char(330 >> 8);
@@ -272,17 +284,20 @@ private slots:
         // A finalised file cut inside its data: the whole records before the cut are read.
         const Result cut = readBytes(good.left(good.size() - 100));
         QCOMPARE(cut.frames.size(), size_t(1));
-        QVERIFY2(problemText(cut).contains(QStringLiteral("claims 240 bytes, the file ends after 140")), qPrintable(problemText(cut)));
+        QVERIFY2(problemText(cut).contains(QStringLiteral("claims 240 bytes, the file ends after 140")),
+                 qPrintable(problemText(cut)));
         QVERIFY2(problemText(cut).contains(QStringLiteral("cut short")), qPrintable(problemText(cut)));
 
         // A record id no channel group has: the frames before it are kept.
         File m;
         const uint64_t cg = m.group(1, 0, 0, 80, m.canChannels("CAN_DataFrame"));
-        QByteArray recs = File::record(1, 1, frame(1000, 0x181, QByteArray(1, 'a'))) + File::record(1, 9, frame(2000, 0x182, QByteArray(1, 'b')));
+        QByteArray recs = File::record(1, 1, frame(1000, 0x181, QByteArray(1, 'a'))) +
+                          File::record(1, 9, frame(2000, 0x182, QByteArray(1, 'b')));
         const uint64_t dt = m.dt(recs);
         const Result unknown = readBytes(m.finish(m.dataGroup(1, cg, dt), kStart));
         QCOMPARE(unknown.frames.size(), size_t(1));
-        QVERIFY2(problemText(unknown).contains(QStringLiteral("record id 9 at byte %1 of the file").arg(dt + 24 + 81)), qPrintable(problemText(unknown)));
+        QVERIFY2(problemText(unknown).contains(QStringLiteral("record id 9 at byte %1 of the file").arg(dt + 24 + 81)),
+                 qPrintable(problemText(unknown)));
 
         // A DZ block that does not inflate.
         QByteArray dz = sortedFile([](File& f, const QByteArray& r) { return f.dz(r); });
@@ -294,7 +309,8 @@ private slots:
         // No CAN group at all.
         File lin;
         const uint64_t linGroup = lin.group(1, 0, 0, 5, lin.channel("LIN_Frame.ID", 0, 0, 0, 0, 8));
-        QVERIFY(readBytes(lin.finish(lin.dataGroup(0, linGroup, lin.dt(QByteArray(5, 'x'))), kStart)).error.contains(QStringLiteral("no CAN bus-logging channel group")));
+        QVERIFY(readBytes(lin.finish(lin.dataGroup(0, linGroup, lin.dt(QByteArray(5, 'x'))), kStart))
+                    .error.contains(QStringLiteral("no CAN bus-logging channel group")));
     }
 
     // The registry finds the format by content and name; File > Open's probe and openReader

@@ -50,8 +50,11 @@ QList<MimeType> readMimeTypes(QString* error) {
         if (xml.readNext() != QXmlStreamReader::StartElement) continue;
         const auto a = xml.attributes();
         if (xml.name() == u"mime-type") types.append({a.value(QLatin1StringView("type")).toString(), {}, {}});
-        else if (xml.name() == u"glob" && !types.isEmpty()) types.last().globs << a.value(QLatin1StringView("pattern")).toString();
-        else if (xml.name() == u"match" && !types.isEmpty() && a.value(QLatin1StringView("offset")) == QLatin1StringView("0")) types.last().magics << matchBytes(a);
+        else if (xml.name() == u"glob" && !types.isEmpty())
+            types.last().globs << a.value(QLatin1StringView("pattern")).toString();
+        else if (xml.name() == u"match" && !types.isEmpty() &&
+                 a.value(QLatin1StringView("offset")) == QLatin1StringView("0"))
+            types.last().magics << matchBytes(a);
     }
     if (xml.hasError()) *error = QStringLiteral("line %1: %2").arg(xml.lineNumber()).arg(xml.errorString());
     return types;
@@ -77,10 +80,11 @@ private slots:
             if (!f.canRead) continue;
             for (const QString& ext : f.extensions) {
                 if (genericExtensions.contains(ext)) continue;
-                QVERIFY2(globs.contains(QStringLiteral("*.") + ext),
-                         qPrintable(QStringLiteral("format %1 reads *.%2, but resources/desktop/coscope.mime.xml has no "
-                                                   "<glob pattern=\"*.%2\"/>: add a <mime-type> for it")
-                                        .arg(f.name, ext)));
+                QVERIFY2(
+                    globs.contains(QStringLiteral("*.") + ext),
+                    qPrintable(QStringLiteral("format %1 reads *.%2, but resources/desktop/coscope.mime.xml has no "
+                                              "<glob pattern=\"*.%2\"/>: add a <mime-type> for it")
+                                   .arg(f.name, ext)));
                 ++checked;
             }
         }

@@ -134,10 +134,10 @@ private slots:
 
     void bootUpsResetsAndNmtCauses() {
         Feed f;
-        f.at(0, 0x70F, {0x00});           // power-on boot-up: not a reset
-        f.at(10, 0x000, {0x01, 0x00});    // NMT start, all nodes
+        f.at(0, 0x70F, {0x00});         // power-on boot-up: not a reset
+        f.at(10, 0x000, {0x01, 0x00});  // NMT start, all nodes
         f.at(20, 0x70F, {0x05});
-        f.at(1000, 0x70F, {0x00});        // boot-up with no command: the node reset itself
+        f.at(1000, 0x70F, {0x00});  // boot-up with no command: the node reset itself
         f.at(1100, 0x70F, {0x7F});
         f.at(2000, 0x000, {0x81, 0x0F});  // NMT reset node 15
         f.at(2100, 0x70F, {0x00});        // expected boot-up
@@ -151,7 +151,9 @@ private slots:
         QVERIFY(n->nmtChanges.size() >= 5);
         QCOMPARE(n->nmtChanges[0].cause, QStringLiteral("power-on"));
         QCOMPARE(n->nmtChanges[1].to, 5);
-        QVERIFY2(n->nmtChanges[1].cause.contains(QStringLiteral("Start")) && n->nmtChanges[1].cause.contains(QStringLiteral("all nodes")), qPrintable(n->nmtChanges[1].cause));
+        QVERIFY2(n->nmtChanges[1].cause.contains(QStringLiteral("Start")) &&
+                     n->nmtChanges[1].cause.contains(QStringLiteral("all nodes")),
+                 qPrintable(n->nmtChanges[1].cause));
         QVERIFY(n->nmtChanges[2].cause.contains(QStringLiteral("unexpected")));
         QVERIFY2(n->nmtChanges[4].cause.contains(QStringLiteral("node 15")), qPrintable(n->nmtChanges[4].cause));
         QVERIFY2(hasFinding(r, QStringLiteral("node 15 rebooted 2 times")), qPrintable(findings(r)));
@@ -210,7 +212,8 @@ private slots:
         QVERIFY(nodeOf(r, 1));
         for (int id = 5; id <= 9; ++id) QVERIFY2(!nodeOf(r, id), qPrintable(QString::number(id)));
         QCOMPARE(r.bus.silentAddressed, (std::vector<int>{5, 6, 7, 8, 9}));
-        QVERIFY2(hasFinding(r, QStringLiteral("5 node-IDs (5..9) got an SDO request and never answered")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("5 node-IDs (5..9) got an SDO request and never answered")),
+                 qPrintable(findings(r)));
         // Node 12, asked again and again, never sent anything: no node row (issue 37: only nodes
         // seen are listed), but its unanswered requests are an error finding with their frames.
         QVERIFY(!nodeOf(r, 12));
@@ -222,7 +225,12 @@ private slots:
         QVERIFY(missing->at.count >= 4);
         QCOMPARE(missing->at.frames.front(), uint64_t{11});  // frames 0..10: heartbeat and 5 probes of 2, then node 12
         const QJsonObject json = healthJson(r);
-        QCOMPARE(json.value(QStringLiteral("bus")).toObject().value(QStringLiteral("silent_addressed_nodes")).toArray().size(), 5);
+        QCOMPARE(json.value(QStringLiteral("bus"))
+                     .toObject()
+                     .value(QStringLiteral("silent_addressed_nodes"))
+                     .toArray()
+                     .size(),
+                 5);
     }
 
     // Issue 37: CoScope's own scan (requests marked Tx, CanFrame::Tx) is no device's fault. It
@@ -235,7 +243,9 @@ private slots:
         for (int id = 1; id <= 20; ++id, t += 120) {
             f.at(t, 0x600u + id, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}, CanFrame::Tx);
             if (id == 1) f.at(t + 1, 0x581, {0x43, 0x00, 0x10, 0x00, 0x92, 0x01, 0x02, 0x00});
-            else f.at(t + 100, 0x600u + id, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05}, CanFrame::Tx);  // our abort: timed out
+            else
+                f.at(t + 100, 0x600u + id, {0x80, 0x00, 0x10, 0x00, 0x00, 0x00, 0x04, 0x05},
+                     CanFrame::Tx);  // our abort: timed out
         }
         f.at(t, 0x601, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0}, CanFrame::Tx);
         f.at(t + 2, 0x581, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x02, 0x06});
@@ -251,15 +261,19 @@ private slots:
         QCOMPARE(r.nodes.size(), size_t(1));  // only node 1 was seen
         QStringList rules;
         for (const HealthFinding& x : r.findings) rules << x.rule;
-        QVERIFY2(rules.contains(QStringLiteral("coscope.scan")) && rules.contains(QStringLiteral("coscope.sdo_abort")), qPrintable(rules.join(u' ')));
-        QVERIFY(!rules.contains(QStringLiteral("sdo.abort")) && !rules.contains(QStringLiteral("sdo.timeout")) && !rules.contains(QStringLiteral("sdo.silent_nodes")));
+        QVERIFY2(rules.contains(QStringLiteral("coscope.scan")) && rules.contains(QStringLiteral("coscope.sdo_abort")),
+                 qPrintable(rules.join(u' ')));
+        QVERIFY(!rules.contains(QStringLiteral("sdo.abort")) && !rules.contains(QStringLiteral("sdo.timeout")) &&
+                !rules.contains(QStringLiteral("sdo.silent_nodes")));
         // The same requests from another master (not Tx) are the device's findings.
         Feed other;
         other.at(0, 0x701, {0x05});
         other.at(10, 0x601, {0x40, 0x08, 0x10, 0x00, 0, 0, 0, 0});
         other.at(12, 0x581, {0x80, 0x08, 0x10, 0x00, 0x00, 0x00, 0x02, 0x06});
         const HealthReport o = other.report();
-        QVERIFY2(!o.findings.empty() && o.findings.front().rule == QLatin1String("sdo.abort") && o.findings.front().severity == HealthFinding::Warning, qPrintable(findings(o)));
+        QVERIFY2(!o.findings.empty() && o.findings.front().rule == QLatin1String("sdo.abort") &&
+                     o.findings.front().severity == HealthFinding::Warning,
+                 qPrintable(findings(o)));
         QCOMPARE(o.findings.front().at.frames, (std::vector<uint64_t>{2}));
         QCOMPARE(o.verdict, QStringLiteral("Problems found: 1 warning"));
     }
@@ -272,7 +286,10 @@ private slots:
         QVERIFY(!r.findings.empty());
         const HealthFinding& lost = r.findings.front();
         QCOMPARE(lost.rule, QStringLiteral("heartbeat.lost"));
-        QCOMPARE(lost.what, QStringLiteral("Node 5's heartbeat was missing 1 time(s) after regular beats (longest gap 400 ms, period 100 ms)."));
+        QCOMPARE(
+            lost.what,
+            QStringLiteral(
+                "Node 5's heartbeat was missing 1 time(s) after regular beats (longest gap 400 ms, period 100 ms)."));
         QVERIFY(!lost.why.isEmpty() && !lost.check.isEmpty() && !lost.check.contains(u'%'));
         QCOMPARE(lost.at.count, uint64_t{1});
         QCOMPARE(lost.at.frames, (std::vector<uint64_t>{6}));  // the beat at 900 ms ends the gap
@@ -295,7 +312,8 @@ private slots:
         QVERIFY(!n->emcyList[0].text.isEmpty());
         QVERIFY(n->emcyList[1].reset);
         // Relative timestamps: the time is given from the start of the trace.
-        QVERIFY2(hasFinding(r, QStringLiteral("EMCY 2310h")) && hasFinding(r, QStringLiteral("from node 1 at 0.000 s")), qPrintable(findings(r)));
+        QVERIFY2(hasFinding(r, QStringLiteral("EMCY 2310h")) && hasFinding(r, QStringLiteral("from node 1 at 0.000 s")),
+                 qPrintable(findings(r)));
     }
 
     void pdoRateJitterSyncAndConsumers() {
@@ -331,7 +349,8 @@ private slots:
         Feed f;
         // TPDO1 of node 2 on events: 12 sends at irregular times over 7 minutes.
         double t = 0;
-        for (double gap : {1000.0, 90000.0, 300.0, 35000.0, 120000.0, 5000.0, 800.0, 60000.0, 2000.0, 100000.0, 40.0, 15000.0}) {
+        for (double gap :
+             {1000.0, 90000.0, 300.0, 35000.0, 120000.0, 5000.0, 800.0, 60000.0, 2000.0, 100000.0, 40.0, 15000.0}) {
             t += gap;
             f.at(t, 0x182, {1, 2});
         }
@@ -346,7 +365,8 @@ private slots:
         QVERIFY2(!hasFinding(r, QStringLiteral("of node 2 (182h) every")), qPrintable(findings(r)));
         QVERIFY2(hasFinding(r, QStringLiteral("TPDO1 of node 3 (183h) every")), qPrintable(findings(r)));
         const QList<QByteArray> lines = healthText(r, false).split('\n');
-        const auto line = std::find_if(lines.begin(), lines.end(), [](const QByteArray& l) { return l.contains("0x182"); });
+        const auto line =
+            std::find_if(lines.begin(), lines.end(), [](const QByteArray& l) { return l.contains("0x182"); });
         QVERIFY(line != lines.end());
         QVERIFY2(line->contains("event"), line->constData());
     }
@@ -389,12 +409,19 @@ private slots:
         QCOMPARE(n[QStringLiteral("node")].toInt(), 5);
         QCOMPARE(n[QStringLiteral("heartbeat")].toObject()[QStringLiteral("late")].toInt(), 1);
         QCOMPARE(n[QStringLiteral("heartbeat")].toObject()[QStringLiteral("period_ms")].toDouble(), 100.0);
-        QCOMPARE(n[QStringLiteral("emcy")].toObject()[QStringLiteral("list")].toArray().at(0).toObject()[QStringLiteral("code")].toInt(), 0x2310);
+        QCOMPARE(n[QStringLiteral("emcy")]
+                     .toObject()[QStringLiteral("list")]
+                     .toArray()
+                     .at(0)
+                     .toObject()[QStringLiteral("code")]
+                     .toInt(),
+                 0x2310);
         QVERIFY(n[QStringLiteral("sdo")].toObject().contains(QStringLiteral("response_p99_ms")));
         QVERIFY(n[QStringLiteral("nmt")].toObject().contains(QStringLiteral("resets")));
         QVERIFY(o[QStringLiteral("pdos")].isArray());
         const QJsonObject bus = o[QStringLiteral("bus")].toObject();
-        for (const char* k : {"load_avg_pct", "load_peak_pct", "load_over_time", "error_frames", "non_canopen_frames", "sync", "rpdos_no_producer"})
+        for (const char* k : {"load_avg_pct", "load_peak_pct", "load_over_time", "error_frames", "non_canopen_frames",
+                              "sync", "rpdos_no_producer"})
             QVERIFY2(bus.contains(QLatin1String(k)), k);
     }
 };

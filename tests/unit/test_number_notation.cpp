@@ -35,10 +35,10 @@ private slots:
         // CiA 301 §7.3.5 pre-defined connection set: TPDO1 of node 2 = 180h + 2.
         QCOMPARE(hexValueText(0x1800, 1, 0x182, 32), QStringLiteral("182h"));
         QCOMPARE(hexValueText(0x1400, 1, 0x202, 32), QStringLiteral("202h"));
-        QCOMPARE(hexValueText(0x1005, 0, 0x80, 32), QStringLiteral("080h"));             // SYNC
-        QCOMPARE(hexValueText(0x1200, 2, 0x582, 32), QStringLiteral("582h"));            // SDO server -> client
-        QCOMPARE(hexValueText(0x1801, 1, 0x80000282u, 32), QStringLiteral("80000282h")); // bit 31: PDO not valid
-        QCOMPARE(hexValueText(0x1800, 1, 0x20000182u, 32), QStringLiteral("20000182h")); // 29-bit CAN-ID
+        QCOMPARE(hexValueText(0x1005, 0, 0x80, 32), QStringLiteral("080h"));              // SYNC
+        QCOMPARE(hexValueText(0x1200, 2, 0x582, 32), QStringLiteral("582h"));             // SDO server -> client
+        QCOMPARE(hexValueText(0x1801, 1, 0x80000282u, 32), QStringLiteral("80000282h"));  // bit 31: PDO not valid
+        QCOMPARE(hexValueText(0x1800, 1, 0x20000182u, 32), QStringLiteral("20000182h"));  // 29-bit CAN-ID
         // CiA 301 §7.5.2.36: statusword 6041h:00, 16 bits -> 60410010h.
         QCOMPARE(hexValueText(0x1A00, 1, 0x60410010u, 32), QStringLiteral("60410010h"));
         QCOMPARE(hexValueText(0x1600, 0x40, 0x60400010u, 32), QStringLiteral("60400010h"));
@@ -93,12 +93,18 @@ private slots:
 
     // Step tables: what a step does, in the same notation.
     void scriptSteps() {
-        QCOMPARE(write(0x1A00, 1, QByteArray::fromHex("10004160")).describe(), QStringLiteral("Write 1A00h:01 = 60410010h on node 2"));
-        QCOMPARE(write(0x1800, 1, QByteArray::fromHex("82010080")).describe(), QStringLiteral("Write 1800h:01 = 80000182h on node 2"));
-        QCOMPARE(write(0x6040, 0, QByteArray::fromHex("0600")).describe(), QStringLiteral("Write 6040h:00 = 0006h on node 2"));
-        QCOMPARE(write(0x1017, 0, QByteArray::fromHex("e803")).describe(), QStringLiteral("Write 1017h:00 = 1000 on node 2"));
-        QCOMPARE(write(0x1A00, 0, QByteArray::fromHex("02")).describe(), QStringLiteral("Write 1A00h:00 = 2 on node 2"));
-        QCOMPARE(write(0x1800, 2, QByteArray::fromHex("ff")).describe(), QStringLiteral("Write 1800h:02 = FFh (event) on node 2"));
+        QCOMPARE(write(0x1A00, 1, QByteArray::fromHex("10004160")).describe(),
+                 QStringLiteral("Write 1A00h:01 = 60410010h on node 2"));
+        QCOMPARE(write(0x1800, 1, QByteArray::fromHex("82010080")).describe(),
+                 QStringLiteral("Write 1800h:01 = 80000182h on node 2"));
+        QCOMPARE(write(0x6040, 0, QByteArray::fromHex("0600")).describe(),
+                 QStringLiteral("Write 6040h:00 = 0006h on node 2"));
+        QCOMPARE(write(0x1017, 0, QByteArray::fromHex("e803")).describe(),
+                 QStringLiteral("Write 1017h:00 = 1000 on node 2"));
+        QCOMPARE(write(0x1A00, 0, QByteArray::fromHex("02")).describe(),
+                 QStringLiteral("Write 1A00h:00 = 2 on node 2"));
+        QCOMPARE(write(0x1800, 2, QByteArray::fromHex("ff")).describe(),
+                 QStringLiteral("Write 1800h:02 = FFh (event) on node 2"));
     }
 };
 

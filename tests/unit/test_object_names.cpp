@@ -38,10 +38,14 @@ private slots:
     // Statusword, controlword, device type, identity: the glossary's words in each script.
     void standardObjectsInBothScripts() {
         const od::ObjectDictionary delta = bundled(QStringLiteral("delta-asda-a2"));
-        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kTW), QStringLiteral(u"狀態字元"));
-        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kCN), QStringLiteral(u"状态字"));
-        QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kTW), QStringLiteral(u"控制字元"));
-        QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kCN), QStringLiteral(u"控制字"));
+        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kTW),
+                 QStringLiteral(u"狀態字元"));
+        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kCN),
+                 QStringLiteral(u"状态字"));
+        QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kTW),
+                 QStringLiteral(u"控制字元"));
+        QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kCN),
+                 QStringLiteral(u"控制字"));
         QCOMPARE(localDisplayName(delta, 0x1000, 0, kTW), QStringLiteral(u"裝置類型"));
         QCOMPARE(localDisplayName(delta, 0x1000, 0, kCN), QStringLiteral(u"设备类型"));
         QCOMPARE(localDisplayName(delta, 0x1018, 1, kTW), QStringLiteral(u"廠商ID標示物件: 供應商 ID"));
@@ -57,7 +61,8 @@ private slots:
 
     void englishIsTheEdsName() {
         const od::ObjectDictionary delta = bundled(QStringLiteral("delta-asda-a2"));
-        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kEN), QStringLiteral("Statusword"));
+        QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kEN),
+                 QStringLiteral("Statusword"));
         QCOMPARE(localDisplayName(delta, 0x1018, 1, kEN), delta.displayName(0x1018, 1));
         QCOMPARE(localDisplayName(delta, 0x2300, 0, kEN), QStringLiteral("P3-00 ADR Node-ID (station number)"));
     }
@@ -75,7 +80,8 @@ private slots:
             QCOMPARE(localDisplayName(r.dictionary, 0x6041, 0, lang), QStringLiteral("Statusword"));
             QCOMPARE(localDisplayName(r.dictionary, 0x1000, 0, lang), QStringLiteral("Device type"));
         }
-        QCOMPARE(localObjectName(QString(), 0x6041, -1, QStringLiteral("Statusword"), kTW), QStringLiteral("Statusword"));
+        QCOMPARE(localObjectName(QString(), 0x6041, -1, QStringLiteral("Statusword"), kTW),
+                 QStringLiteral("Statusword"));
     }
 
     // ICP DAS ECAT-2094P: four axes, index + 800h each; the EDS's axis becomes the manual's 第 n 軸.
@@ -92,17 +98,20 @@ private slots:
         for (const QString& name : eds::DictionaryLibrary().names()) {
             QFile f(QStringLiteral(":/dictionaries/%1.json").arg(name));
             if (!f.open(QIODevice::ReadOnly)) continue;
-            const QJsonObject names = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("objectNames")).toObject();
+            const QJsonObject names =
+                QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("objectNames")).toObject();
             QVERIFY2(names.size() > 100, qPrintable(name));
             const od::ObjectDictionary d = bundled(name);
             for (auto it = names.begin(); it != names.end(); ++it) {
                 const QString key = it.key();
                 const uint16_t index = static_cast<uint16_t>(key.left(4).toUInt(nullptr, 16));
                 const int sub = key.size() > 4 ? static_cast<int>(key.mid(5).toUInt(nullptr, 16)) : -1;
-                QVERIFY2(sub < 0 ? d.object(index) != nullptr : d.entry(index, static_cast<uint8_t>(sub)) != nullptr, qPrintable(name + u' ' + key));
+                QVERIFY2(sub < 0 ? d.object(index) != nullptr : d.entry(index, static_cast<uint8_t>(sub)) != nullptr,
+                         qPrintable(name + u' ' + key));
                 const QJsonObject o = it.value().toObject();
                 for (const char* field : {"zh_TW", "zh_CN", "source"})
-                    QVERIFY2(!o.value(QLatin1String(field)).toString().isEmpty(), qPrintable(name + u' ' + key + u' ' + QLatin1String(field)));
+                    QVERIFY2(!o.value(QLatin1String(field)).toString().isEmpty(),
+                             qPrintable(name + u' ' + key + u' ' + QLatin1String(field)));
                 for (const char* lang : {"zh_TW", "zh_CN"}) {
                     const QString text = o.value(QLatin1String(lang)).toString();
                     QVERIFY2(text.contains(han) || text == u"COB-ID", qPrintable(name + u' ' + key + u' ' + text));

@@ -101,7 +101,8 @@ void TestOdValue::parseIntegers() {
     QCOMPARE(Value::parse(DataType::Integer8, "0xFF").value, Value::signedInt(-1));  // bit pattern
     QCOMPARE(Value::parse(DataType::Unsigned16, "0b101").value, Value::unsignedInt(5));
     QCOMPARE(Value::parse(DataType::Unsigned16, "010").value, Value::unsignedInt(10));  // people: decimal
-    QCOMPARE(Value::parse(DataType::Unsigned16, "010", Limits{}, TextStyle::Eds).value, Value::unsignedInt(8));  // CiA 306: octal
+    QCOMPARE(Value::parse(DataType::Unsigned16, "010", Limits{}, TextStyle::Eds).value,
+             Value::unsignedInt(8));  // CiA 306: octal
     QCOMPARE(Value::parse(DataType::Unsigned16, "0099", Limits{}, TextStyle::Eds).value, Value::unsignedInt(99));
     QCOMPARE(Value::parse(DataType::Boolean, "false").value, Value::boolean(false));
     QCOMPARE(Value::parse(DataType::Integer64, " -9223372036854775808 ").value, Value::signedInt(INT64_MIN));
@@ -149,7 +150,8 @@ void TestOdValue::parseStringsAndBytes() {
     QCOMPARE(Value::parse(DataType::OctetString, "01:02:ff").value, Value::bytes(QByteArray::fromHex("0102ff")));
     // VISIBLE_STRING on the wire: trailing NULs dropped, UTF-8 when valid.
     QCOMPARE(Value::decode(DataType::VisibleString, QByteArray("abc\0\0", 5)).value, Value::text("abc"));
-    QCOMPARE(Value::decode(DataType::VisibleString, QByteArray("\xe2\x82\xac")).value, Value::text(QString(QChar(0x20AC))));
+    QCOMPARE(Value::decode(DataType::VisibleString, QByteArray("\xe2\x82\xac")).value,
+             Value::text(QString(QChar(0x20AC))));
 }
 
 void TestOdValue::formatHexAndUnits() {

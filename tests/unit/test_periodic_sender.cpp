@@ -17,14 +17,17 @@ using namespace coscope::canopen;
 
 namespace {
 
-int64_t monoNs() { return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+int64_t monoNs() {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
 
 // Records when each frame was "sent"; optionally stalls or fails on a given frame.
 struct Sink {
     std::mutex mutex;
     std::vector<std::pair<uint32_t, int64_t>> sent;  // id, CLOCK_MONOTONIC ns
-    std::atomic<int> failOn{-1};    // index of the frame that fails
-    std::atomic<int> stallOn{-1};   // index of the frame that takes stallMs
+    std::atomic<int> failOn{-1};                     // index of the frame that fails
+    std::atomic<int> stallOn{-1};                    // index of the frame that takes stallMs
     int stallMs = 0;
 
     PeriodicSender::SendFunction function() {
@@ -94,10 +97,13 @@ private slots:
         QCOMPARE(t.size(), size_t(20));
         QVERIFY(t[0] >= before);
         for (size_t k = 1; k < t.size(); ++k)
-            QVERIFY2(t[k] - before >= static_cast<int64_t>(k) * 5 * kMs, qPrintable(QStringLiteral("frame %1 early: %2 us after the start").arg(k).arg((t[k] - before) / 1000)));
+            QVERIFY2(
+                t[k] - before >= static_cast<int64_t>(k) * 5 * kMs,
+                qPrintable(QStringLiteral("frame %1 early: %2 us after the start").arg(k).arg((t[k] - before) / 1000)));
         // No drift: on an idle machine the 20th frame is due at 95 ms; late only by skips.
         const auto st = sender.status(id);
-        QVERIFY2(t.back() - t[0] < static_cast<int64_t>(19 + st.skipped + 1) * 5 * kMs, qPrintable(QString::number((t.back() - t[0]) / 1000)));
+        QVERIFY2(t.back() - t[0] < static_cast<int64_t>(19 + st.skipped + 1) * 5 * kMs,
+                 qPrintable(QString::number((t.back() - t[0]) / 1000)));
         QCOMPARE(sender.runningCount(), 0);
         QVERIFY(sender.remove(id));
         QVERIFY(!sender.status(id).exists);
@@ -115,7 +121,10 @@ private slots:
         const auto t = sink.times(0x200);
         QCOMPARE(t.size(), size_t(8));
         for (size_t k = 1; k < t.size(); ++k)
-            QVERIFY2(t[k] - t[k - 1] >= 5 * kMs, qPrintable(QStringLiteral("frames %1 and %2 only %3 us apart").arg(k - 1).arg(k).arg((t[k] - t[k - 1]) / 1000)));
+            QVERIFY2(t[k] - t[k - 1] >= 5 * kMs, qPrintable(QStringLiteral("frames %1 and %2 only %3 us apart")
+                                                                .arg(k - 1)
+                                                                .arg(k)
+                                                                .arg((t[k] - t[k - 1]) / 1000)));
         QVERIFY2(sender.status(id).skipped >= 2, qPrintable(QString::number(sender.status(id).skipped)));
     }
 

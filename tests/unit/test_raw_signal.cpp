@@ -35,11 +35,11 @@ class RawSignalTest : public QObject {
     Q_OBJECT
 private slots:
     void intel() {
-        QCOMPARE(raw(sig(0, 16, T::Unsigned), {0x34, 0x12}), 4660.0);       // 1234h
+        QCOMPARE(raw(sig(0, 16, T::Unsigned), {0x34, 0x12}), 4660.0);  // 1234h
         QCOMPARE(raw(sig(16, 8, T::Unsigned), {0, 0, 0xC8}), 200.0);
         // bits 4..15 of 30 FE = FE3h, 12-bit two's complement = -29
         QCOMPARE(raw(sig(4, 12, T::Signed), {0x30, 0xFE}), -29.0);
-        QCOMPARE(raw(sig(0, 16, T::Signed), {0x38, 0xFF}), -200.0);         // FF38h
+        QCOMPARE(raw(sig(0, 16, T::Signed), {0x38, 0xFF}), -200.0);  // FF38h
         QCOMPARE(raw(sig(3, 1, T::Unsigned), {0x08}), 1.0);
         QCOMPARE(raw(sig(0, 64, T::Signed), {0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF}), -1.0);
     }
@@ -91,7 +91,8 @@ private slots:
         s = RawSignal::parse(QStringLiteral("ext=0x18FF0001:0:32:f"), &error);
         QVERIFY2(s && s->extended, qPrintable(error));
         QCOMPARE(RawSignal::parse(s->spec()).value(), *s);
-        for (const char* bad : {"x=0x181:0:33:f", "x=0x181:0:8:q", "=0x181:0:8:u", "x=0x181:0:8", "x=zz:0:8:u", "x=0x181:0:0:u", "x=0x181:0:8:u:0"})
+        for (const char* bad : {"x=0x181:0:33:f", "x=0x181:0:8:q", "=0x181:0:8:u", "x=0x181:0:8", "x=zz:0:8:u",
+                                "x=0x181:0:0:u", "x=0x181:0:8:u:0"})
             QVERIFY2(!RawSignal::parse(QString::fromLatin1(bad), &error), bad);
         QVERIFY(error.contains(QStringLiteral("factor")));
     }
@@ -105,7 +106,12 @@ private slots:
         QCOMPARE(d.summary, QStringLiteral("TPDO1 node 1: 38 FF 01  | speed = -100 rpm"));
         QByteArray line;
         appendJson(line, f, d, QStringLiteral("can0"));
-        const QJsonArray a = QJsonDocument::fromJson(line).object().value(QStringLiteral("fields")).toObject().value(QStringLiteral("pdo.signals")).toArray();
+        const QJsonArray a = QJsonDocument::fromJson(line)
+                                 .object()
+                                 .value(QStringLiteral("fields"))
+                                 .toObject()
+                                 .value(QStringLiteral("pdo.signals"))
+                                 .toArray();
         QCOMPARE(a.size(), 1);
         const QJsonObject o = a[0].toObject();
         QVERIFY(o.contains(QStringLiteral("obj")) && o.value(QStringLiteral("obj")).isNull());

@@ -68,14 +68,16 @@ private slots:
         // Attempts at 0.5 s and 1.5 s fail and keep it Lost (not Error); the next wait is 2 s.
         QTRY_COMPARE_WITH_TIMEOUT(bus.starts.load(), 3, 3000);
         QVERIFY(bus.state() == CanBus::State::Lost);
-        QVERIFY2(bus.nextRetryInMs() > 1000 && bus.nextRetryInMs() <= 2000, qPrintable(QString::number(bus.nextRetryInMs())));
+        QVERIFY2(bus.nextRetryInMs() > 1000 && bus.nextRetryInMs() <= 2000,
+                 qPrintable(QString::number(bus.nextRetryInMs())));
 
         bus.present = true;
         QTRY_VERIFY_WITH_TIMEOUT(bus.state() == CanBus::State::Open, 3000);
         QCOMPARE(bus.starts.load(), 4);
         QCOMPARE(bus.lostSinceNs(), int64_t(0));
         QCOMPARE(bus.nextRetryInMs(), -1);
-        QTRY_VERIFY(states == (QList<CanBus::State>{CanBus::State::Opening, CanBus::State::Open, CanBus::State::Lost, CanBus::State::Open}));
+        QTRY_VERIFY(states == (QList<CanBus::State>{CanBus::State::Opening, CanBus::State::Open, CanBus::State::Lost,
+                                                    CanBus::State::Open}));
 
         // Lost again: the schedule starts over at 0.5 s.
         bus.unplug();

@@ -21,7 +21,8 @@ class TestRpdoMotion : public QObject {
         if (extended) f.flags |= CanFrame::Extended;
         f.len = 8;
         return rpdoAddressed(
-            f, [&](uint8_t node) { return node == 2 ? aimotor_.get() : nullptr; }, [&](uint8_t node) { return node == driveWithoutDictionary; });
+            f, [&](uint8_t node) { return node == 2 ? aimotor_.get() : nullptr; },
+            [&](uint8_t node) { return node == driveWithoutDictionary; });
     }
 
 private slots:
@@ -64,10 +65,10 @@ private slots:
     }
 
     void notAnRpdo() {
-        QVERIFY(!aimed(0x182));  // TPDO1 of node 2
-        QVERIFY(!aimed(0x602));  // SDO request
+        QVERIFY(!aimed(0x182));        // TPDO1 of node 2
+        QVERIFY(!aimed(0x602));        // SDO request
         QVERIFY(!aimed(0x202, true));  // a 29-bit identifier is another frame
-        QVERIFY(!aimed(0x203));  // node 3: no dictionary, not known as a drive
+        QVERIFY(!aimed(0x203));        // node 3: no dictionary, not known as a drive
     }
 
     void driveWithoutDictionaryByDefaultCobIds() {

@@ -18,11 +18,14 @@ namespace {
 uint64_t bitsOf(double v) { return static_cast<uint64_t>(static_cast<int64_t>(v)); }
 
 // What decimate() promises, computed by scanning every sample.
-std::vector<SignalPoint> plainDecimate(const std::vector<SignalSample>& all, int64_t t0, int64_t t1, int buckets, int bit) {
+std::vector<SignalPoint> plainDecimate(const std::vector<SignalSample>& all, int64_t t0, int64_t t1, int buckets,
+                                       int bit) {
     std::vector<SignalPoint> out;
     auto valueOf = [bit](double v) { return bit >= 0 ? double((bitsOf(v) >> bit) & 1) : v; };
     auto lower = [&](int64_t t) {
-        return static_cast<size_t>(std::lower_bound(all.begin(), all.end(), t, [](const SignalSample& s, int64_t x) { return s.timeNs < x; }) - all.begin());
+        return static_cast<size_t>(
+            std::lower_bound(all.begin(), all.end(), t, [](const SignalSample& s, int64_t x) { return s.timeNs < x; }) -
+            all.begin());
     };
     const size_t from = lower(t0), to = lower(t1 + 1);
     const size_t lo = from > 0 ? from - 1 : from, hi = to < all.size() ? to + 1 : to;
@@ -36,7 +39,8 @@ std::vector<SignalPoint> plainDecimate(const std::vector<SignalSample>& all, int
     for (int b = 0; b < buckets; ++b) {
         // Pixel column b: t0 + span * b / buckets <= time < t0 + span * (b + 1) / buckets.
         const int64_t left = b == 0 ? t0 : static_cast<int64_t>(double(t0) + span * double(b) / double(buckets));
-        const int64_t right = b + 1 == buckets ? t1 + 1 : static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
+        const int64_t right =
+            b + 1 == buckets ? t1 + 1 : static_cast<int64_t>(double(t0) + span * double(b + 1) / double(buckets));
         std::vector<SignalSample> col;
         for (; i < to && all[i].timeNs < right; ++i)
             if (all[i].timeNs >= left) col.push_back(all[i]);
@@ -61,11 +65,13 @@ std::vector<SignalPoint> plainDecimate(const std::vector<SignalSample>& all, int
 QByteArray describe(const std::vector<SignalPoint>& got, const std::vector<SignalPoint>& want) {
     size_t i = 0;
     while (i < got.size() && i < want.size() && got[i].timeNs == want[i].timeNs && got[i].value == want[i].value) ++i;
-    QByteArray s = "sizes " + QByteArray::number(qulonglong(got.size())) + "/" + QByteArray::number(qulonglong(want.size())) + ", first difference at " +
+    QByteArray s = "sizes " + QByteArray::number(qulonglong(got.size())) + "/" +
+                   QByteArray::number(qulonglong(want.size())) + ", first difference at " +
                    QByteArray::number(qulonglong(i));
     if (i < got.size() && i < want.size())
-        s += ": got (" + QByteArray::number(qlonglong(got[i].timeNs)) + ", " + QByteArray::number(got[i].value) + ") want (" +
-             QByteArray::number(qlonglong(want[i].timeNs)) + ", " + QByteArray::number(want[i].value) + ")";
+        s += ": got (" + QByteArray::number(qlonglong(got[i].timeNs)) + ", " + QByteArray::number(got[i].value) +
+             ") want (" + QByteArray::number(qlonglong(want[i].timeNs)) + ", " + QByteArray::number(want[i].value) +
+             ")";
     return s;
 }
 
@@ -96,18 +102,22 @@ private slots:
             for (int q = 0; q < 25; ++q, ++checks) {
                 const int64_t first = all.front().timeNs, last = all.back().timeNs, span = last - first + 1;
                 int64_t t0 = first - span / 20 + static_cast<int64_t>(rng() % uint64_t(span + span / 10));
-                int64_t len = q % 3 == 0 ? static_cast<int64_t>(rng() % 5000) : static_cast<int64_t>(rng() % uint64_t(span));
+                int64_t len =
+                    q % 3 == 0 ? static_cast<int64_t>(rng() % 5000) : static_cast<int64_t>(rng() % uint64_t(span));
                 if (q == 0) t0 = first, len = last - first;  // the whole history
                 const int64_t t1 = t0 + len;
                 const int buckets = 1 + static_cast<int>(rng() % 1500);
                 const int bit = q % 4 == 1 ? static_cast<int>(rng() % 12) : -1;
                 const auto got = buf.decimate(t0, t1, buckets, bit);
                 const auto want = plainDecimate(all, t0, t1, buckets, bit);
-                const bool same = got.size() == want.size() && std::equal(got.begin(), got.end(), want.begin(), [](const SignalPoint& a, const SignalPoint& b) {
-                                      return a.timeNs == b.timeNs && a.value == b.value;
-                                  });
-                QVERIFY2(same, "decimate [" + QByteArray::number(qlonglong(t0)) + ", " + QByteArray::number(qlonglong(t1)) + "] in " +
-                                   QByteArray::number(buckets) + " columns, bit " + QByteArray::number(bit) + ": " + describe(got, want));
+                const bool same =
+                    got.size() == want.size() &&
+                    std::equal(got.begin(), got.end(), want.begin(), [](const SignalPoint& a, const SignalPoint& b) {
+                        return a.timeNs == b.timeNs && a.value == b.value;
+                    });
+                QVERIFY2(same, "decimate [" + QByteArray::number(qlonglong(t0)) + ", " +
+                                   QByteArray::number(qlonglong(t1)) + "] in " + QByteArray::number(buckets) +
+                                   " columns, bit " + QByteArray::number(bit) + ": " + describe(got, want));
 
                 double mn = 0, mx = 0, bmn = 1, bmx = 0;
                 bool any = false;
@@ -148,7 +158,9 @@ private slots:
             const auto got = buf.decimate(t0, s.timeNs, 7, -1);
             const auto want = plainDecimate(all, t0, s.timeNs, 7, -1);
             QVERIFY2(got.size() == want.size() && std::equal(got.begin(), got.end(), want.begin(),
-                                                             [](const SignalPoint& a, const SignalPoint& b) { return a.timeNs == b.timeNs && a.value == b.value; }),
+                                                             [](const SignalPoint& a, const SignalPoint& b) {
+                                                                 return a.timeNs == b.timeNs && a.value == b.value;
+                                                             }),
                      "after sample " + QByteArray::number(i) + ": " + describe(got, want));
         }
     }
@@ -183,18 +195,24 @@ private slots:
                 void add(double v) { min = any ? std::min(min, v) : v, max = any ? std::max(max, v) : v, any = true; }
             };
             const double scale = double(columns) / double(std::max<int64_t>(1, t1 - t0));
-            auto columnOf = [&](int64_t time) { return std::clamp(static_cast<int>((double(time) - double(t0)) * scale), 0, columns - 1); };
+            auto columnOf = [&](int64_t time) {
+                return std::clamp(static_cast<int>((double(time) - double(t0)) * scale), 0, columns - 1);
+            };
             std::vector<Span> drawn(size_t(columns) + 2), plain(size_t(columns) + 2);  // index column + 1
             for (const SignalPoint& p : got)
                 if (p.timeNs >= t0 && p.timeNs <= t1) drawn[size_t(columnOf(p.timeNs)) + 1].add(p.value);
             size_t inWindow = 0;
             for (const SignalSample& s : all)
                 if (s.timeNs >= t0 && s.timeNs <= t1) plain[size_t(columnOf(s.timeNs)) + 1].add(s.value), ++inWindow;
-            const QByteArray where = "[" + QByteArray::number(qlonglong(t0)) + ", " + QByteArray::number(qlonglong(t1)) + "] in " + QByteArray::number(columns) + " columns";
+            const QByteArray where = "[" + QByteArray::number(qlonglong(t0)) + ", " +
+                                     QByteArray::number(qlonglong(t1)) + "] in " + QByteArray::number(columns) +
+                                     " columns";
             if (inWindow < size_t(64) * size_t(columns)) {
-                QVERIFY2(got.size() == exact.size() && std::equal(got.begin(), got.end(), exact.begin(), [](const SignalPoint& a, const SignalPoint& b) {
-                             return a.timeNs == b.timeNs && a.value == b.value;
-                         }), where + ": " + describe(got, exact));
+                QVERIFY2(got.size() == exact.size() && std::equal(got.begin(), got.end(), exact.begin(),
+                                                                  [](const SignalPoint& a, const SignalPoint& b) {
+                                                                      return a.timeNs == b.timeNs && a.value == b.value;
+                                                                  }),
+                         where + ": " + describe(got, exact));
                 continue;
             }
             ++snapped;
@@ -206,8 +224,12 @@ private slots:
                     if (drawn[d].any) nearDrawn.add(drawn[d].min), nearDrawn.add(drawn[d].max);
                 }
                 const QByteArray col = where + ", column " + QByteArray::number(qulonglong(c - 1));
-                if (drawn[c].any) QVERIFY2(near.any && drawn[c].min >= near.min && drawn[c].max <= near.max, col + ": drawn beyond the samples");
-                if (plain[c].any) QVERIFY2(nearDrawn.any && plain[c].min >= nearDrawn.min && plain[c].max <= nearDrawn.max, col + ": a sample lost");
+                if (drawn[c].any)
+                    QVERIFY2(near.any && drawn[c].min >= near.min && drawn[c].max <= near.max,
+                             col + ": drawn beyond the samples");
+                if (plain[c].any)
+                    QVERIFY2(nearDrawn.any && plain[c].min >= nearDrawn.min && plain[c].max <= nearDrawn.max,
+                             col + ": a sample lost");
             }
         }
         QVERIFY(snapped > 20);

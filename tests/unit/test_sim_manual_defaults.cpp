@@ -13,7 +13,7 @@ using namespace coscope::sim;
 
 namespace {
 struct PdoDefaults {
-    int count;           // PDOs of each direction
+    int count;  // PDOs of each direction
     uint8_t rpdoType, tpdoType;
     uint16_t tpdoInhibit, tpdoEvent;
     std::vector<uint8_t> rpdoMapped, tpdoMapped;  // 1600h+n / 1A00h+n sub 0
@@ -72,8 +72,10 @@ private slots:
             QCOMPARE(u(*dev, tc, 5), uint64_t(m.pdo.tpdoEvent));
             QCOMPARE(u(*dev, rc, 1), uint64_t(0x200 + 0x100 * n + 5));  // valid, default COB-ID
             QCOMPARE(u(*dev, tc, 1), uint64_t(0x180 + 0x100 * n + 5));
-            if (!m.pdo.rpdoMapped.empty()) QCOMPARE(u(*dev, static_cast<uint16_t>(0x1600 + n), 0), uint64_t(m.pdo.rpdoMapped[size_t(n)]));
-            if (!m.pdo.tpdoMapped.empty()) QCOMPARE(u(*dev, static_cast<uint16_t>(0x1A00 + n), 0), uint64_t(m.pdo.tpdoMapped[size_t(n)]));
+            if (!m.pdo.rpdoMapped.empty())
+                QCOMPARE(u(*dev, static_cast<uint16_t>(0x1600 + n), 0), uint64_t(m.pdo.rpdoMapped[size_t(n)]));
+            if (!m.pdo.tpdoMapped.empty())
+                QCOMPARE(u(*dev, static_cast<uint16_t>(0x1A00 + n), 0), uint64_t(m.pdo.tpdoMapped[size_t(n)]));
         }
     }
 };

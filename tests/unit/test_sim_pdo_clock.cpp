@@ -112,7 +112,8 @@ private slots:
         QVERIFY2(t.size() >= 99 && t.size() <= 101, qPrintable(QString::number(t.size())));
         for (size_t n = 1; n < t.size(); ++n) {
             const int64_t err = t[n] - t[0] - int64_t(n) * 10 * kMs;
-            QVERIFY2(err >= 0 && err < kMs, qPrintable(QStringLiteral("TPDO %1 at %2 ns, %3 ns late").arg(n).arg(t[n]).arg(err)));
+            QVERIFY2(err >= 0 && err < kMs,
+                     qPrintable(QStringLiteral("TPDO %1 at %2 ns, %3 ns late").arg(n).arg(t[n]).arg(err)));
         }
     }
 

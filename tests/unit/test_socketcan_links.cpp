@@ -63,23 +63,28 @@ private slots:
         QList<SocketCanLink> links;
         QVERIFY(parseIpLinkJson(kIpJson, &links, nullptr));
         QCOMPARE(bringUpCommand(links[0], 500000), QStringLiteral("sudo ip link set vcan0 up"));
-        QCOMPARE(bringUpCommand(links[1], 500000), QStringLiteral("sudo ip link set can0 up type can bitrate 500000 restart-ms 100"));
+        QCOMPARE(bringUpCommand(links[1], 500000),
+                 QStringLiteral("sudo ip link set can0 up type can bitrate 500000 restart-ms 100"));
         QCOMPARE(bringUpCommand(links[2], 1000000, 4000000),
-                 QStringLiteral("sudo ip link set can1 down; sudo ip link set can1 up type can bitrate 1000000 dbitrate 4000000 fd on restart-ms 100"));
+                 QStringLiteral("sudo ip link set can1 down; sudo ip link set can1 up type can bitrate 1000000 "
+                                "dbitrate 4000000 fd on restart-ms 100"));
     }
 
     void openErrorsSayWhatToDo() {
         // The texts are strerror(3) of EAFNOSUPPORT, ENODEV, ENETDOWN and EPERM, as Qt's socketcan plugin passes them on.
-        QVERIFY(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("Address family not supported by protocol"), 0)
-                    .contains(QStringLiteral("modprobe can_raw")));
+        QVERIFY(
+            explainSocketCanError(QStringLiteral("can0"), QStringLiteral("Address family not supported by protocol"), 0)
+                .contains(QStringLiteral("modprobe can_raw")));
         qputenv("COSCOPE_IP", "/nonexistent/ip");  // no interfaces to name
         const QString nodev = explainSocketCanError(QStringLiteral("can7"), QStringLiteral("No such device"), 0);
         QVERIFY2(nodev.contains(QStringLiteral("no CAN interface named 'can7'")), qPrintable(nodev));
         qunsetenv("COSCOPE_IP");
         QVERIFY(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("Network is down"), 125000)
                     .contains(QStringLiteral("sudo ip link set can0 up type can bitrate 125000")));
-        QVERIFY(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("Operation not permitted"), 0).contains(QStringLiteral("CAP_NET_ADMIN")));
-        QCOMPARE(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("something else"), 0), QStringLiteral("something else"));
+        QVERIFY(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("Operation not permitted"), 0)
+                    .contains(QStringLiteral("CAP_NET_ADMIN")));
+        QCOMPARE(explainSocketCanError(QStringLiteral("can0"), QStringLiteral("something else"), 0),
+                 QStringLiteral("something else"));
     }
 
     void tinycanListsWithoutProbing() {

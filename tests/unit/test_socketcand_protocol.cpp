@@ -104,7 +104,8 @@ private slots:
         QCOMPARE(encodeOpen(QStringLiteral("can0")), QByteArray("< open can0 >"));
         QCOMPARE(encodeRawMode(), QByteArray("< rawmode >"));
         QCOMPARE(encodeSend(CanFrame::classic(0x123, {})), QByteArray("< send 123 0 >"));
-        QCOMPARE(encodeSend(CanFrame::classic(0x1AAAAAAA, {0x01, 0xF1}, true)), QByteArray("< send 1AAAAAAA 2 01 F1 >"));
+        QCOMPARE(encodeSend(CanFrame::classic(0x1AAAAAAA, {0x01, 0xF1}, true)),
+                 QByteArray("< send 1AAAAAAA 2 01 F1 >"));
         QCOMPARE(encodeSend(CanFrame::classic(0x80, {0xDE, 0xAD}, true)), QByteArray("< send 00000080 2 DE AD >"));
         CanFrame rtr = CanFrame::classic(0x701, {});
         rtr.flags |= CanFrame::Remote;

@@ -50,7 +50,8 @@ public:
         ++waiting_;
         changed_.notify_all();
         changed_.wait(lock, [this] { return open_; });
-        out.assign(frames.begin() + static_cast<std::ptrdiff_t>(first), frames.begin() + static_cast<std::ptrdiff_t>(first + count));
+        out.assign(frames.begin() + static_cast<std::ptrdiff_t>(first),
+                   frames.begin() + static_cast<std::ptrdiff_t>(first + count));
         return true;
     }
     void open() {
@@ -128,7 +129,8 @@ private slots:
             if (!same(f, makeFrame(i))) QFAIL(qPrintable(QStringLiteral("frame %1 differs").arg(i)));
             const auto p = store_->payload(i);
             QCOMPARE(p.size(), size_t(makeFrame(i).payloadSize()));
-            if (i % kChunk == kChunk - 1) QVERIFY2(store_->residentChunks() <= 3, qPrintable(QString::number(store_->residentChunks())));
+            if (i % kChunk == kChunk - 1)
+                QVERIFY2(store_->residentChunks() <= 3, qPrintable(QString::number(store_->residentChunks())));
         }
         QVERIFY(store_->pageIns() >= 5);
         QCOMPARE(store_->pageErrors(), uint64_t(0));
@@ -153,7 +155,7 @@ private slots:
         fill(5, 10, 0);  // chunks 0..5, 5 partial (never evicted)
         const size_t all = store_->memoryBytes();
         const size_t chunk = evictOneChunk();
-        store_->setMemoryBudget(all - 3 * chunk);  // room for three chunks
+        store_->setMemoryBudget(all - 3 * chunk);       // room for three chunks
         QCOMPARE(store_->residentChunks(), size_t(3));  // 3, 4, 5: the newest
         const uint64_t before = store_->pageIns();
         (void)store_->record(1 * kChunk + 10);  // evicts 3
@@ -189,7 +191,8 @@ private slots:
     void indexStaysWithinBudget() {
         const size_t budget = 3u << 20;
         fill(16, 0, budget);
-        QVERIFY2(store_->memoryBytes() <= budget, qPrintable(QStringLiteral("%1 bytes in RAM, budget %2").arg(store_->memoryBytes()).arg(budget)));
+        QVERIFY2(store_->memoryBytes() <= budget,
+                 qPrintable(QStringLiteral("%1 bytes in RAM, budget %2").arg(store_->memoryBytes()).arg(budget)));
         std::map<uint32_t, std::vector<FrameNo>> expected;
         for (uint32_t i = 0; i < total_; ++i) {
             const CanFrame f = makeFrame(i);
@@ -201,7 +204,8 @@ private slots:
             QVERIFY(store_->framesFor(key) == frames);
             QCOMPARE(store_->frameFor(key, frames.size() / 2), frames[frames.size() / 2]);
         }
-        QVERIFY(same(store_->frame(store_->frameFor(TraceStore::keyOf(0x182, false), 3)), makeFrame(store_->frameFor(TraceStore::keyOf(0x182, false), 3))));
+        QVERIFY(same(store_->frame(store_->frameFor(TraceStore::keyOf(0x182, false), 3)),
+                     makeFrame(store_->frameFor(TraceStore::keyOf(0x182, false), 3))));
     }
 
     // A chunk of CAN FD frames grows by 1 MiB payload blocks after it starts (5.75 MiB with 64-byte
@@ -230,9 +234,15 @@ private slots:
                 most = std::max(most, store_->memoryBytes());
             }
         }
-        QVERIFY2(most <= budget, qPrintable(QStringLiteral("%1 bytes in RAM at most, budget %2").arg(most).arg(budget)));
+        QVERIFY2(most <= budget,
+                 qPrintable(QStringLiteral("%1 bytes in RAM at most, budget %2").arg(most).arg(budget)));
         for (const uint32_t n : {0u, kChunk + 5, 3 * kChunk - 1})
-            QVERIFY(same(store_->frame(n), [&] { CanFrame f = makeFrame(n); f.flags = CanFrame::Fd | CanFrame::BitRateSwitch; f.len = 64; return f; }()));
+            QVERIFY(same(store_->frame(n), [&] {
+                CanFrame f = makeFrame(n);
+                f.flags = CanFrame::Fd | CanFrame::BitRateSwitch;
+                f.len = 64;
+                return f;
+            }()));
     }
 
     // requestPageIn() returns while the disk is slow: the loading happens on the store's loader
@@ -270,7 +280,8 @@ private slots:
     void pageInReadsOnlyItsChunk() {
         if (bytesReadByProcess() < 0) QSKIP("no /proc/self/io");
         CaptureJournal journal;
-        QVERIFY(journal.open(dir_.filePath(QStringLiteral("range.pcapng")), {QStringLiteral("can0"), QStringLiteral("can1")}));
+        QVERIFY(journal.open(dir_.filePath(QStringLiteral("range.pcapng")),
+                             {QStringLiteral("can0"), QStringLiteral("can1")}));
         constexpr uint32_t kChunks = 4;
         std::vector<CanFrame> all;
         for (uint32_t i = 0; i < kChunks * kChunk; ++i) {
@@ -289,10 +300,14 @@ private slots:
             const qint64 before = bytesReadByProcess();
             QVERIFY2(pager->load(uint64_t(c) * kChunk, kChunk, out, &why), why.c_str());
             const qint64 read = bytesReadByProcess() - before;
-            QVERIFY2(read < chunkBytes * 3 / 2, qPrintable(QStringLiteral("chunk %1: read %2 bytes of a %3-byte journal").arg(c).arg(read).arg(fileBytes)));
+            QVERIFY2(
+                read < chunkBytes * 3 / 2,
+                qPrintable(
+                    QStringLiteral("chunk %1: read %2 bytes of a %3-byte journal").arg(c).arg(read).arg(fileBytes)));
             QCOMPARE(out.size(), size_t(kChunk));
             for (uint32_t i = 0; i < kChunk; i += 997)
-                QVERIFY2(same(out[i], all[size_t(c) * kChunk + i]), qPrintable(QStringLiteral("frame %1").arg(c * kChunk + i)));
+                QVERIFY2(same(out[i], all[size_t(c) * kChunk + i]),
+                         qPrintable(QStringLiteral("frame %1").arg(c * kChunk + i)));
             QVERIFY(same(out.back(), all[size_t(c + 1) * kChunk - 1]));
         }
         // Frames not aligned to a chunk, across two chunks.

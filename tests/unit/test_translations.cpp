@@ -54,14 +54,18 @@ QList<Problem> check(const QString& path, int* messages) {
         } else if (xml.isEndElement() && xml.name() == u"message") {
             ++*messages;
             auto add = [&](const QString& what) { problems.append({context, source, what}); };
-            if (type == u"vanished" || type == u"obsolete") add(QStringLiteral("vanished from the sources (remove it)"));
+            if (type == u"vanished" || type == u"obsolete")
+                add(QStringLiteral("vanished from the sources (remove it)"));
             else if (type == u"unfinished") add(QStringLiteral("unfinished"));
-            else if (forms.isEmpty() || std::any_of(forms.begin(), forms.end(), [](const QString& t) { return t.trimmed().isEmpty(); }))
+            else if (forms.isEmpty() ||
+                     std::any_of(forms.begin(), forms.end(), [](const QString& t) { return t.trimmed().isEmpty(); }))
                 add(QStringLiteral("empty translation"));
             else
                 for (const QString& t : forms) {
                     QStringList want = placeholders(source), got = placeholders(t);
-                    if (want != got) add(QStringLiteral("placeholders %1 in the source, %2 in \"%3\"").arg(want.join(u','), got.join(u','), t));
+                    if (want != got)
+                        add(QStringLiteral("placeholders %1 in the source, %2 in \"%3\"")
+                                .arg(want.join(u','), got.join(u','), t));
                 }
         }
     }
@@ -93,28 +97,32 @@ private slots:
         const QString project = dir.filePath(QStringLiteral("project.json"));
         QProcess gen;
         gen.setProcessChannelMode(QProcess::MergedChannels);
-        gen.start(QStringLiteral(COSCOPE_CMAKE_COMMAND), {QStringLiteral("-DIN_FILE=" COSCOPE_LUPDATE_PROJECT), QStringLiteral("-DOUT_FILE=") + project,
-                                                          QStringLiteral("-P"), QStringLiteral(COSCOPE_LUPDATE_GENERATOR)});
+        gen.start(QStringLiteral(COSCOPE_CMAKE_COMMAND),
+                  {QStringLiteral("-DIN_FILE=" COSCOPE_LUPDATE_PROJECT), QStringLiteral("-DOUT_FILE=") + project,
+                   QStringLiteral("-P"), QStringLiteral(COSCOPE_LUPDATE_GENERATOR)});
         QVERIFY(gen.waitForFinished(60000));
         QVERIFY2(gen.exitCode() == 0, gen.readAll().constData());
         QProcess lupdate;
         lupdate.setProcessChannelMode(QProcess::MergedChannels);
-        lupdate.start(QStringLiteral(COSCOPE_LUPDATE_PATH), {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
-                                                             QStringLiteral("-no-ui-lines"), QStringLiteral("-project"), project,
-                                                             QStringLiteral("-ts"), copy});
+        lupdate.start(
+            QStringLiteral(COSCOPE_LUPDATE_PATH),
+            {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+             QStringLiteral("-no-ui-lines"), QStringLiteral("-project"), project, QStringLiteral("-ts"), copy});
         QVERIFY(lupdate.waitForFinished(120000));
         QVERIFY2(lupdate.exitCode() == 0, lupdate.readAll().constData());
         int messages = 0;
         const QList<Problem> problems = check(copy, &messages);
         QVERIFY2(messages > 500, qPrintable(QStringLiteral("only %1 messages in %2").arg(messages).arg(ts)));
         QStringList lines;
-        for (const Problem& p : problems) lines << QStringLiteral("%1 \"%2\": %3").arg(p.context, p.source.left(80), p.what);
+        for (const Problem& p : problems)
+            lines << QStringLiteral("%1 \"%2\": %3").arg(p.context, p.source.left(80), p.what);
         const QString head = lines.mid(0, 40).join(u'\n');
-        QVERIFY2(problems.isEmpty(), qPrintable(QStringLiteral("%1 of %2 messages in %3 need work (run the update_translations target, "
-                                                               "then translate per glossary.md):\n%4")
-                                                    .arg(problems.size())
-                                                    .arg(messages)
-                                                    .arg(QFileInfo(ts).fileName(), head)));
+        QVERIFY2(problems.isEmpty(),
+                 qPrintable(QStringLiteral("%1 of %2 messages in %3 need work (run the update_translations target, "
+                                           "then translate per glossary.md):\n%4")
+                                .arg(problems.size())
+                                .arg(messages)
+                                .arg(QFileInfo(ts).fileName(), head)));
     }
 };
 

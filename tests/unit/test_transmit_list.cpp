@@ -26,8 +26,10 @@ private slots:
         QTest::newRow("sync no counter") << "080#" << 0x080u << 0 << 0 << QByteArray();
         QTest::newRow("rtr guarding") << "705#R" << 0x705u << int(CanFrame::Remote) << 0 << QByteArray();
         QTest::newRow("rtr dlc") << "123#R4" << 0x123u << int(CanFrame::Remote) << 4 << QByteArray();
-        QTest::newRow("extended") << "1F334455#1122" << 0x1F334455u << int(CanFrame::Extended) << 2 << QByteArray::fromHex("1122");
-        QTest::newRow("fd brs") << "123##1AABB" << 0x123u << int(CanFrame::Fd | CanFrame::BitRateSwitch) << 2 << QByteArray::fromHex("AABB");
+        QTest::newRow("extended") << "1F334455#1122" << 0x1F334455u << int(CanFrame::Extended) << 2
+                                  << QByteArray::fromHex("1122");
+        QTest::newRow("fd brs") << "123##1AABB" << 0x123u << int(CanFrame::Fd | CanFrame::BitRateSwitch) << 2
+                                << QByteArray::fromHex("AABB");
         QTest::newRow("fd no brs") << "123##0AABB" << 0x123u << int(CanFrame::Fd) << 2 << QByteArray::fromHex("AABB");
     }
     void parsesAndPrintsCansendSyntax() {
@@ -92,15 +94,17 @@ private slots:
         rtr.id = 0x705;
         rtr.flags = CanFrame::Remote;
         rtr.len = 1;
-        const std::vector<TransmitEntry> rows{{CanFrame::classic(0x601, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}), 0, QStringLiteral("identity vendor")},
-                                              {CanFrame::classic(0x000, {0x01, 0x00}), 0, {}},
-                                              {rtr, 100000, QStringLiteral("guard node 5\twith a tab")},
-                                              {fd, 500, QStringLiteral("FD 12 bytes, BRS")}};
+        const std::vector<TransmitEntry> rows{
+            {CanFrame::classic(0x601, {0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0}), 0, QStringLiteral("identity vendor")},
+            {CanFrame::classic(0x000, {0x01, 0x00}), 0, {}},
+            {rtr, 100000, QStringLiteral("guard node 5\twith a tab")},
+            {fd, 500, QStringLiteral("FD 12 bytes, BRS")}};
         for (const auto& r : rows) list.add(r);
 
         // JSON, as the project file keeps it (through text, as it is saved).
         const QJsonArray json = QJsonDocument::fromJson(QJsonDocument(list.toJson()).toJson()).array();
-        QCOMPARE(json.at(0).toObject().value(QStringLiteral("frame")).toString(), QStringLiteral("601#4018100100000000"));
+        QCOMPARE(json.at(0).toObject().value(QStringLiteral("frame")).toString(),
+                 QStringLiteral("601#4018100100000000"));
         QCOMPARE(json.at(3).toObject().value(QStringLiteral("period_us")).toInt(), 500);
         TransmitList back(context);
         QString error;
@@ -123,7 +127,8 @@ private slots:
         QVERIFY2(error.startsWith(QStringLiteral("line 2:")), qPrintable(error));
         QCOMPARE(fromLines.size(), 4);
         QJsonArray badJson = json;
-        badJson.append(QJsonObject{{QStringLiteral("frame"), QStringLiteral("123#11")}, {QStringLiteral("period_us"), -5}});
+        badJson.append(
+            QJsonObject{{QStringLiteral("frame"), QStringLiteral("123#11")}, {QStringLiteral("period_us"), -5}});
         QVERIFY(!back.fromJson(badJson, &error));
         QVERIFY2(error.contains(QStringLiteral("row 5")), qPrintable(error));
         QCOMPARE(back.size(), 4);

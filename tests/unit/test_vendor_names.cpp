@@ -55,7 +55,8 @@ private slots:
         const uint8_t emcy[8] = {0x05, 0x73, 0x01, 0x11, 0x00, 0x00, 0x00, 0x00};
         QCOMPARE(vendorTextLanguage(), QStringLiteral("en"));  // the CLI never changes it
         const QString english = t->decodeEmcy(emcy, 8, 0x7305);
-        QVERIFY2(english.startsWith(QStringLiteral("AL011 ")) && !english.contains(QStringLiteral(u"異常")), qPrintable(english));
+        QVERIFY2(english.startsWith(QStringLiteral("AL011 ")) && !english.contains(QStringLiteral(u"異常")),
+                 qPrintable(english));
         setVendorTextLanguage(QStringLiteral("zh_TW"));
         QCOMPARE(t->decodeEmcy(emcy, 8, 0x7305), QStringLiteral(u"AL011 位置檢出器異常"));
         setVendorTextLanguage(QStringLiteral("zh_CN"));
@@ -76,7 +77,8 @@ private slots:
         QCOMPARE(localParameterName(h0200, QStringLiteral("zh_CN")), QStringLiteral(u"H02-00 控制模式"));
         const QString p147 = QStringLiteral("P1-47 Delta parameter (CANopen initial value 100)");
         QCOMPARE(localParameterName(p147, QStringLiteral("zh_TW")), p147);
-        QCOMPARE(localParameterName(QStringLiteral("Controlword"), QStringLiteral("zh_TW")), QStringLiteral("Controlword"));
+        QCOMPARE(localParameterName(QStringLiteral("Controlword"), QStringLiteral("zh_TW")),
+                 QStringLiteral("Controlword"));
     }
 
     void englishWhenATableHasNoChineseName() {

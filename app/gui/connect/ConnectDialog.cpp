@@ -4,8 +4,8 @@
 #include "app/gui/connect/RecentConnections.h"
 #include "app/gui/files/LastFolders.h"
 #include "core/can/BusUrl.h"
-#include "core/sim/SimNetwork.h"
 #include "core/sim/Personality.h"
+#include "core/sim/SimNetwork.h"
 
 #include <QCanBus>
 #include <QCheckBox>
@@ -69,9 +69,10 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
         noDevices_->setObjectName(QStringLiteral("noDevices"));
         noDevices_->setWordWrap(true);
         noDevices_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        noDevices_->setText(tr("No CAN interfaces found. A virtual one for trying: <tt>sudo modprobe vcan; sudo ip link add dev vcan0 "
-                               "type vcan; sudo ip link set vcan0 up</tt>. A real adapter: <tt>sudo ip link set can0 up type can "
-                               "bitrate 500000</tt>. Then choose the backend again."));
+        noDevices_->setText(
+            tr("No CAN interfaces found. A virtual one for trying: <tt>sudo modprobe vcan; sudo ip link add dev vcan0 "
+               "type vcan; sudo ip link set vcan0 up</tt>. A real adapter: <tt>sudo ip link set can0 up type can "
+               "bitrate 500000</tt>. Then choose the backend again."));
         noDevices_->hide();
         f->addRow(noDevices_);
         linkState_ = new QLabel(w);
@@ -178,7 +179,8 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     auto* fdRow = new QHBoxLayout;
     fd_ = new QCheckBox(tr("CAN FD"), this);
     dataBitrate_ = new QComboBox(this);
-    for (int b : {1000000, 2000000, 4000000, 5000000, 8000000}) dataBitrate_->addItem(tr("data %L1 Mbit/s").arg(b / 1000000), b);
+    for (int b : {1000000, 2000000, 4000000, 5000000, 8000000})
+        dataBitrate_->addItem(tr("data %L1 Mbit/s").arg(b / 1000000), b);
     dataBitrate_->setCurrentIndex(1);
     dataBitrate_->setEnabled(false);
     fdRow->addWidget(fd_);
@@ -206,8 +208,10 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     layout->addWidget(buttons);
 
     connect(backend_, &QComboBox::currentIndexChanged, this, &ConnectDialog::onBackendChanged);
-    for (QComboBox* c : {device_, bitrate_, dataBitrate_, replaySpeed_}) connect(c, &QComboBox::currentTextChanged, this, &ConnectDialog::updatePreview);
-    for (QLineEdit* e : {host_, channel_, replayPath_}) connect(e, &QLineEdit::textChanged, this, &ConnectDialog::updatePreview);
+    for (QComboBox* c : {device_, bitrate_, dataBitrate_, replaySpeed_})
+        connect(c, &QComboBox::currentTextChanged, this, &ConnectDialog::updatePreview);
+    for (QLineEdit* e : {host_, channel_, replayPath_})
+        connect(e, &QLineEdit::textChanged, this, &ConnectDialog::updatePreview);
     connect(port_, &QSpinBox::valueChanged, this, &ConnectDialog::updatePreview);
     connect(fd_, &QCheckBox::toggled, this, [this](bool on) {
         dataBitrate_->setEnabled(on);
@@ -217,7 +221,9 @@ ConnectDialog::ConnectDialog(QWidget* parent) : QDialog(parent) {
     connect(replayLoop_, &QCheckBox::toggled, this, &ConnectDialog::updatePreview);
     onBackendChanged();
     // Opens on the last connection used (its backend and settings), as the user left it.
-    if (const QStringList recent = RecentConnections::list(); !recent.isEmpty() && BusUrl::parse(recent.first(), nullptr)) setUrl(recent.first());
+    if (const QStringList recent = RecentConnections::list();
+        !recent.isEmpty() && BusUrl::parse(recent.first(), nullptr))
+        setUrl(recent.first());
     resize(520, 480);
 }
 
@@ -234,7 +240,8 @@ void ConnectDialog::onBackendChanged() {
         QString error;
         for (const auto& info : QCanBus::instance()->availableDevices(key, &error)) device_->addItem(info.name());
         for (int i = 0; i < device_->count(); ++i)
-            if (!pluginProbesHardware(key)) device_->setItemData(i, tr("Listed by the plugin without finding an adapter"), Qt::ToolTipRole);
+            if (!pluginProbesHardware(key))
+                device_->setItemData(i, tr("Listed by the plugin without finding an adapter"), Qt::ToolTipRole);
         if (device_->count() == 0) device_->setEditText(key == u"virtualcan" ? QStringLiteral("can0") : QString());
         // State and bit rate come from `ip`, off the GUI thread (onLinksListed).
         if (key == u"socketcan") linkJob_->list();
@@ -263,7 +270,8 @@ void ConnectDialog::onBringUp() {
         if (l.name != name) continue;
         const int wanted = bitrate_->currentData().toInt();
         bringUp_->setEnabled(false);
-        linkJob_->bringUp(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), fd_->isChecked() ? dataBitrate_->currentData().toInt() : 0);
+        linkJob_->bringUp(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000),
+                          fd_->isChecked() ? dataBitrate_->currentData().toInt() : 0);
         return;
     }
 }
@@ -286,20 +294,26 @@ QString ConnectDialog::url() const {
         QStringList nodes;
         for (int i = 0; i < drives_->rowCount(); ++i)
             if (drives_->item(i, 0)->checkState() == Qt::Checked)
-                nodes << QStringLiteral("%1:%2").arg(static_cast<QSpinBox*>(drives_->cellWidget(i, 1))->value()).arg(drives_->item(i, 0)->text());
+                nodes << QStringLiteral("%1:%2")
+                             .arg(static_cast<QSpinBox*>(drives_->cellWidget(i, 1))->value())
+                             .arg(drives_->item(i, 0)->text());
         if (nodes.join(u',') != sim::SimNetwork::defaultSpec()) options << QStringLiteral("nodes=") + nodes.join(u',');
     } else if (key == u"socketcand") {
-        target = QStringLiteral("%1:%2/%3").arg(host_->text().trimmed()).arg(port_->value()).arg(channel_->text().trimmed());
+        target =
+            QStringLiteral("%1:%2/%3").arg(host_->text().trimmed()).arg(port_->value()).arg(channel_->text().trimmed());
     } else if (key == u"replay") {
         target = replayPath_->text().trimmed();
     } else {
         target = device_->currentText().trimmed();
     }
-    if (const int b = bitrate_->currentData().toInt(); b > 0 && key != u"replay") options << QStringLiteral("bitrate=%1").arg(b);
-    if (fd_->isChecked()) options << QStringLiteral("fd=1") << QStringLiteral("data-bitrate=%1").arg(dataBitrate_->currentData().toInt());
+    if (const int b = bitrate_->currentData().toInt(); b > 0 && key != u"replay")
+        options << QStringLiteral("bitrate=%1").arg(b);
+    if (fd_->isChecked())
+        options << QStringLiteral("fd=1") << QStringLiteral("data-bitrate=%1").arg(dataBitrate_->currentData().toInt());
     if (listenOnly_->isChecked()) options << QStringLiteral("listen-only=1");
     if (key == u"replay") {
-        if (const double speed = replaySpeed_->currentData().toDouble(); speed != 1.0) options << QStringLiteral("speed=%1").arg(speed);
+        if (const double speed = replaySpeed_->currentData().toDouble(); speed != 1.0)
+            options << QStringLiteral("speed=%1").arg(speed);
         if (replayLoop_->isChecked()) options << QStringLiteral("loop=1");
     }
     QString s = key + QStringLiteral("://") + target;
@@ -357,12 +371,16 @@ void ConnectDialog::updatePreview() {
 QString ConnectDialog::linkText(const SocketCanLink& l) const {
     if (!l.up) return tr("%1 is down").arg(l.name);
     if (l.isVirtual()) return tr("%1 is up (virtual CAN)").arg(l.name);
-    QString text = l.bitrate > 0 ? tr("%1 is up at %L2 kbit/s").arg(l.name).arg(l.bitrate / 1000.0) : tr("%1 is up").arg(l.name);
+    QString text =
+        l.bitrate > 0 ? tr("%1 is up at %L2 kbit/s").arg(l.name).arg(l.bitrate / 1000.0) : tr("%1 is up").arg(l.name);
     if (l.dataBitrate > 0) text += tr(", CAN FD data %L1 Mbit/s").arg(l.dataBitrate / 1e6);
     // CiA 301 / ISO 11898-1 fault confinement: error active, warning, passive, bus-off.
-    if (l.controllerState == u"ERROR-WARNING") text += tr(", controller in error warning (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
-    else if (l.controllerState == u"ERROR-PASSIVE") text += tr(", controller error passive (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
-    else if (l.controllerState == u"BUS-OFF") text += tr(", controller is bus-off: check wiring, termination and bit rate");
+    if (l.controllerState == u"ERROR-WARNING")
+        text += tr(", controller in error warning (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
+    else if (l.controllerState == u"ERROR-PASSIVE")
+        text += tr(", controller error passive (TEC %1, REC %2)").arg(l.txErrors).arg(l.rxErrors);
+    else if (l.controllerState == u"BUS-OFF")
+        text += tr(", controller is bus-off: check wiring, termination and bit rate");
     else if (l.controllerState == u"STOPPED") text += tr(", controller stopped");
     return text;
 }
@@ -373,7 +391,9 @@ void ConnectDialog::updateLinkState() {
     QString text;
     bool offerBringUp = false;
     if (pages_->currentIndex() == PluginPage && !pluginProbesHardware(key) && device_->findText(name) >= 0) {
-        text = tr("Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.").arg(key, name);
+        text =
+            tr("Unverified: the %1 plugin lists %2 without finding an adapter; connecting shows whether one is there.")
+                .arg(key, name);
     } else if (key == u"socketcan") {
         for (const SocketCanLink& l : links_) {
             if (l.name != name) continue;
@@ -382,9 +402,11 @@ void ConnectDialog::updateLinkState() {
             text = linkText(l);
             const bool rateDiffers = !l.isVirtual() && wanted > 0 && wanted != l.bitrate;
             if (!l.up || rateDiffers) {
-                text += QStringLiteral("<br>") +
-                        (l.up ? tr("To change its bit rate, run:") : tr("Bring it up with:")) +
-                        QStringLiteral(" <tt>%1</tt>").arg(bringUpCommand(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), wantedData).toHtmlEscaped());
+                text +=
+                    QStringLiteral("<br>") + (l.up ? tr("To change its bit rate, run:") : tr("Bring it up with:")) +
+                    QStringLiteral(" <tt>%1</tt>")
+                        .arg(bringUpCommand(l, wanted > 0 ? wanted : (l.bitrate > 0 ? l.bitrate : 500000), wantedData)
+                                 .toHtmlEscaped());
                 offerBringUp = true;
                 bringUp_->setText(l.up ? tr("Change bit rate now") : tr("Bring up now"));
             }
@@ -393,7 +415,9 @@ void ConnectDialog::updateLinkState() {
     // Runs the same command, without sudo, when this process may (CAP_NET_ADMIN).
     bringUp_->setVisible(offerBringUp);
     bringUp_->setEnabled(offerBringUp && mayConfigure_ && !linkJob_->busy());
-    bringUp_->setToolTip(mayConfigure_ ? QString() : tr("CoScope runs without the right to configure network interfaces: run the command above in a terminal"));
+    bringUp_->setToolTip(mayConfigure_ ? QString()
+                                       : tr("CoScope runs without the right to configure network interfaces: run the "
+                                            "command above in a terminal"));
     linkState_->setText(text);
     linkState_->setVisible(!text.isEmpty());
 }

@@ -27,7 +27,7 @@ class ConnectDialog : public QDialog {
 public:
     explicit ConnectDialog(QWidget* parent = nullptr);
 
-    QString url() const;         // the URL the choices make
+    QString url() const;              // the URL the choices make
     void setUrl(const QString& url);  // fills the choices from a URL (recent connections)
 
     // Backend keys in the combo: "sim", "socketcand", "replay", or a Qt plugin name.
@@ -70,7 +70,7 @@ private:
     QCheckBox* listenOnly_ = nullptr;
     QLineEdit* preview_ = nullptr;
     QLabel* error_ = nullptr;
-    QString typed_;         // the URL as typed/pasted, used as-is until a choice changes
+    QString typed_;  // the URL as typed/pasted, used as-is until a choice changes
     bool applyingTyped_ = false;
 };
 

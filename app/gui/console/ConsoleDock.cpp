@@ -22,9 +22,8 @@ ConsoleDock::ConsoleDock(QWidget* parent) : QDockWidget(tr("Console"), parent) {
     // scrolling back down resumes. The range also grows while the dock is a hidden tab (laid out
     // later), so following is applied whenever the range changes, not only when lines arrive.
     QScrollBar* bar = text_->verticalScrollBar();
-    connect(bar, &QScrollBar::actionTriggered, this, [this, bar] {
-        QTimer::singleShot(0, this, [this, bar] { follow_ = bar->value() >= bar->maximum(); });
-    });
+    connect(bar, &QScrollBar::actionTriggered, this,
+            [this, bar] { QTimer::singleShot(0, this, [this, bar] { follow_ = bar->value() >= bar->maximum(); }); });
     connect(bar, &QScrollBar::rangeChanged, this, [this, bar](int, int max) {
         if (follow_) bar->setValue(max);
     });

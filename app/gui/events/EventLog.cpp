@@ -34,7 +34,8 @@ QString eventKindName(TraceEvent::Kind kind) {
     return {};
 }
 
-TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node, std::function<QString()> render) {
+TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node,
+                         std::function<QString()> render) {
     TraceEvent e{kind, timeNs, frame, node, render(), {}};
     e.render = std::move(render);
     return e;
@@ -49,9 +50,11 @@ bool optionalObjectAbsent(const TraceRecord& r) {
     if (r.len < 8) return false;
     const uint16_t index = static_cast<uint16_t>(r.data[1] | (r.data[2] << 8));
     const uint8_t sub = r.data[3];
-    const uint32_t code = uint32_t(r.data[4]) | uint32_t(r.data[5]) << 8 | uint32_t(r.data[6]) << 16 | uint32_t(r.data[7]) << 24;
+    const uint32_t code =
+        uint32_t(r.data[4]) | uint32_t(r.data[5]) << 8 | uint32_t(r.data[6]) << 16 | uint32_t(r.data[7]) << 24;
     if (code != canopen::sdoabort::NoObject && code != canopen::sdoabort::NoSubIndex) return false;
-    return ((index == 0x1008 || index == 0x1009 || index == 0x100A) && sub == 0) || (index == 0x1018 && sub >= 2 && sub <= 4);
+    return ((index == 0x1008 || index == 0x1009 || index == 0x100A) && sub == 0) ||
+           (index == 0x1018 && sub >= 2 && sub <= 4);
 }
 }  // namespace
 
@@ -68,7 +71,8 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
         const FrameNo n = first + static_cast<FrameNo>(i);
         const TraceRecord& r = store.record(n);
         if (r.flags & CanFrame::Error) {
-            push(TraceEvent::Kind::BusError, r, n, -1, [f = store.frame(n)] { return coreText(decodeCanError(f).summary()); });
+            push(TraceEvent::Kind::BusError, r, n, -1,
+                 [f = store.frame(n)] { return coreText(decodeCanError(f).summary()); });
             continue;
         }
         if (r.flags & CanFrame::Extended) continue;
@@ -76,10 +80,12 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
         switch (info.service) {
         case Service::Nmt:
             if (r.len >= 2) {
-                push(TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1, [cs = r.data[0], node = r.data[1]] {
-                    const QString target = node == 0 ? QCoreApplication::translate("EventLog", "all nodes") : QCoreApplication::translate("EventLog", "node %1").arg(node);
-                    return QStringLiteral("%1 → %2").arg(coreText(canopen::nmtCommandName(cs)), target);
-                });
+                push(
+                    TraceEvent::Kind::NmtCommand, r, n, r.data[1] ? r.data[1] : -1, [cs = r.data[0], node = r.data[1]] {
+                        const QString target = node == 0 ? QCoreApplication::translate("EventLog", "all nodes")
+                                                         : QCoreApplication::translate("EventLog", "node %1").arg(node);
+                        return QStringLiteral("%1 → %2").arg(coreText(canopen::nmtCommandName(cs)), target);
+                    });
             }
             break;
         case Service::NmtErrorControl: {
@@ -87,11 +93,13 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             NodeWatch& w = watch_[static_cast<size_t>(info.node)];
             const int state = r.data[0] & 0x7F;
             if (w.timedOut) {
-                push(TraceEvent::Kind::NmtState, r, n, info.node, [] { return QCoreApplication::translate("EventLog", "Heartbeat back after timeout"); });
+                push(TraceEvent::Kind::NmtState, r, n, info.node,
+                     [] { return QCoreApplication::translate("EventLog", "Heartbeat back after timeout"); });
                 w.timedOut = false;
             }
             if (state == 0) {
-                push(TraceEvent::Kind::BootUp, r, n, info.node, [] { return QCoreApplication::translate("EventLog", "Boot-up"); });
+                push(TraceEvent::Kind::BootUp, r, n, info.node,
+                     [] { return QCoreApplication::translate("EventLog", "Boot-up"); });
                 w.state = 0x7F;  // pre-operational after boot-up (CiA 301 §7.3.2.2.1)
                 w.lastNs = 0;
                 w.periodNs = 0;
@@ -101,7 +109,8 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
                 push(TraceEvent::Kind::NmtState, r, n, info.node, [from = w.state, state] {
                     const QString now = coreText(canopen::nmtStateName(static_cast<uint8_t>(state)));
                     return from < 0 ? QCoreApplication::translate("EventLog", "State %1").arg(now)
-                                    : QStringLiteral("%1 → %2").arg(coreText(canopen::nmtStateName(static_cast<uint8_t>(from))), now);
+                                    : QStringLiteral("%1 → %2").arg(
+                                          coreText(canopen::nmtStateName(static_cast<uint8_t>(from))), now);
                 });
                 w.state = state;
             }
@@ -116,7 +125,9 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
             if (!emcy && !(r.len >= 1 && (r.data[0] >> 5) == 4)) break;  // only aborts: cs 4 (CiA 301 §7.2.4.3.17)
             // Our own "SDO protocol timed out" aborts (05040000h) are reported where the user
             // acted (and are expected during a scan); they are not bus events.
-            if (!emcy && (r.flags & CanFrame::Tx) && r.len >= 8 && r.data[4] == 0x00 && r.data[5] == 0x00 && r.data[6] == 0x04 && r.data[7] == 0x05) break;
+            if (!emcy && (r.flags & CanFrame::Tx) && r.len >= 8 && r.data[4] == 0x00 && r.data[5] == 0x00 &&
+                r.data[6] == 0x04 && r.data[7] == 0x05)
+                break;
             if (info.service == Service::SdoResponse && optionalObjectAbsent(r)) break;
             const CanFrame f = store.frame(n);
             // Decoded again on each render: the vendor alarm name follows the UI language.
@@ -136,7 +147,10 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
                 }
                 return text;
             };
-            if (emcy) push(canopen::parseEmcy(f.data.data(), f.len).code == 0 ? TraceEvent::Kind::EmcyReset : TraceEvent::Kind::Emcy, r, n, info.node, std::move(render));
+            if (emcy)
+                push(canopen::parseEmcy(f.data.data(), f.len).code == 0 ? TraceEvent::Kind::EmcyReset
+                                                                        : TraceEvent::Kind::Emcy,
+                     r, n, info.node, std::move(render));
             else push(TraceEvent::Kind::SdoAbort, r, n, info.node, std::move(render));
             break;
         }
@@ -160,9 +174,12 @@ void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
         if (nowNs - w.lastNs > limit) {
             w.timedOut = true;
             auto render = [silentMs = (nowNs - w.lastNs) / 1'000'000, periodMs = w.periodNs / 1'000'000] {
-                return QCoreApplication::translate("EventLog", "No heartbeat for %1 ms (period %2 ms)").arg(silentMs).arg(periodMs);
+                return QCoreApplication::translate("EventLog", "No heartbeat for %1 ms (period %2 ms)")
+                    .arg(silentMs)
+                    .arg(periodMs);
             };
-            events_.push_back(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id), std::move(render)));
+            events_.push_back(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs, kNoFrame, static_cast<int>(id),
+                                            std::move(render)));
         }
     }
 }

@@ -20,7 +20,18 @@ inline constexpr FrameNo kNoFrame = 0xFFFFFFFFu;
 
 // One thing worth a technician's attention, with the frame it came from (kNoFrame when none).
 struct TraceEvent {
-    enum class Kind : uint8_t { Emcy, EmcyReset, SdoAbort, NmtState, BootUp, NmtCommand, HeartbeatTimeout, BusError, Dropped, Info };
+    enum class Kind : uint8_t {
+        Emcy,
+        EmcyReset,
+        SdoAbort,
+        NmtState,
+        BootUp,
+        NmtCommand,
+        HeartbeatTimeout,
+        BusError,
+        Dropped,
+        Info
+    };
     Kind kind = Kind::Info;
     int64_t timeNs = 0;
     FrameNo frame = kNoFrame;
@@ -34,7 +45,8 @@ QString eventKindName(TraceEvent::Kind kind);
 
 // An event whose text `render` writes, now and again in each UI language the Events view is
 // built in.
-TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node, std::function<QString()> render);
+TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node,
+                         std::function<QString()> render);
 
 // The event list of a trace: EMCY (code text, error register bits, vendor alarm text from the
 // decoder), SDO aborts (not a server's "not present" for an optional identity object), NMT commands and state changes, boot-ups, heartbeat timeouts, error

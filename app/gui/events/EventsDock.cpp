@@ -10,7 +10,8 @@
 
 namespace coscope::gui {
 
-EventsDock::EventsDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Events"), parent), workspace_(workspace) {
+EventsDock::EventsDock(Workspace* workspace, QWidget* parent)
+    : QDockWidget(tr("Events"), parent), workspace_(workspace) {
     setObjectName(QStringLiteral("EventsDock"));
     model_ = new EventsModel(this);
     view_ = new QTableView(this);

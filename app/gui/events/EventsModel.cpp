@@ -43,14 +43,17 @@ void EventsModel::setOrigin(int64_t originNs) {
     if (!events_.empty()) emit dataChanged(index(0, Time), index(rowCount() - 1, Time));
 }
 
-int EventsModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(events_.size()); }
+int EventsModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(events_.size());
+}
 int EventsModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
 QVariant EventsModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= rowCount()) return {};
     const TraceEvent& e = events_[static_cast<size_t>(index.row())];
     using K = TraceEvent::Kind;
-    const bool severe = e.kind == K::Emcy || e.kind == K::SdoAbort || e.kind == K::HeartbeatTimeout || e.kind == K::BusError || e.kind == K::Dropped;
+    const bool severe = e.kind == K::Emcy || e.kind == K::SdoAbort || e.kind == K::HeartbeatTimeout ||
+                        e.kind == K::BusError || e.kind == K::Dropped;
     if (role == Qt::DecorationRole && index.column() == Kind) {
         QStyle* st = QApplication::style();
         return st->standardIcon(severe ? QStyle::SP_MessageBoxWarning : QStyle::SP_MessageBoxInformation);

@@ -32,11 +32,12 @@ QString askOpenFile(QWidget* parent, const QString& kind, const QString& caption
     return path;
 }
 
-QString askSaveFile(QWidget* parent, const QString& kind, const QString& caption, const QString& suggestedName, const QString& filter,
-                    QString* selectedFilter) {
+QString askSaveFile(QWidget* parent, const QString& kind, const QString& caption, const QString& suggestedName,
+                    const QString& filter, QString* selectedFilter) {
     const QDir folder(startFolder(kind));
-    const QString path =
-        QFileDialog::getSaveFileName(parent, caption, suggestedName.isEmpty() ? folder.path() : folder.filePath(suggestedName), filter, selectedFilter);
+    const QString path = QFileDialog::getSaveFileName(
+        parent, caption, suggestedName.isEmpty() ? folder.path() : folder.filePath(suggestedName), filter,
+        selectedFilter);
     rememberFolder(kind, path);
     return path;
 }

@@ -29,7 +29,8 @@ void RecentList::remove(const QString& entry) {
 
 void RecentList::clear() { QSettings().remove(key_); }
 
-RecentFilesMenu::RecentFilesMenu(QMenu* parent, const QString& title, const QString& settingsKey, std::function<void(const QString&)> open)
+RecentFilesMenu::RecentFilesMenu(QMenu* parent, const QString& title, const QString& settingsKey,
+                                 std::function<void(const QString&)> open)
     : QObject(parent), menu_(parent->addMenu(title)), list_(settingsKey), open_(std::move(open)) {
     menu_->setToolTipsVisible(true);
     connect(parent, &QMenu::aboutToShow, this, &RecentFilesMenu::rebuild);

@@ -37,7 +37,8 @@ public:
     static constexpr const char* kLogs = "files/recent/logs";
     static constexpr const char* kProjects = "files/recent/projects";
 
-    RecentFilesMenu(QMenu* parent, const QString& title, const QString& settingsKey, std::function<void(const QString&)> open);
+    RecentFilesMenu(QMenu* parent, const QString& title, const QString& settingsKey,
+                    std::function<void(const QString&)> open);
     QMenu* menu() const { return menu_; }
     RecentList& list() { return list_; }
 

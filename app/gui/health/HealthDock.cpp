@@ -12,11 +12,11 @@
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
-#include <QStyle>
-#include <QToolButton>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableView>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <qcustomplot.h>
@@ -29,7 +29,8 @@ namespace {
 constexpr qint64 kRefreshMs = 500;
 }
 
-HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Health"), parent), workspace_(workspace) {
+HealthDock::HealthDock(Workspace* workspace, QWidget* parent)
+    : QDockWidget(tr("Health"), parent), workspace_(workspace) {
     setObjectName(QStringLiteral("HealthDock"));
     findings_ = new HealthModel(HealthModel::Table::Findings, this);
     nodes_ = new HealthModel(HealthModel::Table::Nodes, this);
@@ -54,7 +55,8 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     findingsView_ = makeTable(findings_, QStringLiteral("healthFindingsView"));
     findingsView_->horizontalHeader()->setSectionResizeMode(HealthModel::Text, QHeaderView::Stretch);
     findingsView_->setToolTip(tr("What to look at first, the worst at the top"));
-    findingsView_->setMinimumHeight(findingsView_->verticalHeader()->defaultSectionSize() * 7);  // a header and six findings
+    findingsView_->setMinimumHeight(findingsView_->verticalHeader()->defaultSectionSize() *
+                                    7);  // a header and six findings
     // The findings with, under them, the current one explained and its occurrences to step through.
     auto* findingsBox = new QWidget(split);
     auto* findingsLayout = new QVBoxLayout(findingsBox);
@@ -67,7 +69,8 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
     detail_->setTextFormat(Qt::RichText);
     detail_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     detail_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    detail_->setText(tr("Click a finding to see what happened, why it matters and what to check, and its first frame in the trace."));
+    detail_->setText(tr(
+        "Click a finding to see what happened, why it matters and what to check, and its first frame in the trace."));
     detailRow->addWidget(detail_, 1);
     auto* steps = new QVBoxLayout;
     previous_ = new QAction(style()->standardIcon(QStyle::SP_ArrowUp), tr("Previous occurrence"), this);
@@ -111,10 +114,11 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("
         showFinding(i.row());
         goToOccurrence(0);
     });
-    connect(findingsView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this](const QModelIndex& i) {
-        occurrence_ = -1;
-        showFinding(i.row());
-    });
+    connect(findingsView_->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
+            [this](const QModelIndex& i) {
+                occurrence_ = -1;
+                showFinding(i.row());
+            });
 
     tabs_ = new QTabWidget(split);
     tabs_->setObjectName(QStringLiteral("healthTabs"));
@@ -190,19 +194,24 @@ void HealthDock::update() {
         if (!f.own) ++counts[std::clamp(f.severity, 0, 3)];
     QStringList parts;
     // English has no plural table here (no coscope_en.ts): one and many as two texts.
-    const int crit = counts[dissect::HealthFinding::Critical], err = counts[dissect::HealthFinding::Error], warn = counts[dissect::HealthFinding::Warning];
+    const int crit = counts[dissect::HealthFinding::Critical], err = counts[dissect::HealthFinding::Error],
+              warn = counts[dissect::HealthFinding::Warning];
     if (crit) parts << tr("%1 critical").arg(crit);
     if (err) parts << (err == 1 ? tr("1 error") : tr("%1 errors").arg(err));
     if (warn) parts << (warn == 1 ? tr("1 warning") : tr("%1 warnings").arg(warn));
-    verdict_->setText(r.bus.frames == 0 ? QString() : parts.isEmpty() ? tr("No problems found") : tr("Problems found: %1").arg(parts.join(tr(", "))));
+    verdict_->setText(r.bus.frames == 0 ? QString()
+                      : parts.isEmpty() ? tr("No problems found")
+                                        : tr("Problems found: %1").arg(parts.join(tr(", "))));
     verdict_->setStyleSheet(parts.isEmpty() ? QStringLiteral("color:#2e7d32") : QStringLiteral("color:#b00020"));
     // The worst finding explained at once; a click still leads to its frames.
-    if (currentFinding() < 0 && findings_->rowCount() > 0) findingsView_->setCurrentIndex(findings_->index(0, HealthModel::Text));
+    if (currentFinding() < 0 && findings_->rowCount() > 0)
+        findingsView_->setCurrentIndex(findings_->index(0, HealthModel::Text));
     showFinding(currentFinding());
     const dissect::BusHealth& b = r.bus;
     if (b.frames == 0) summary_->setText(tr("No frames yet"));
     else
-        summary_->setText(tr("%n frame(s) over %1 s; bus load average %2 %, peak %3 % at %4 bit/s; %5 error frame(s)", nullptr, int(std::min<uint64_t>(b.frames, INT32_MAX)))
+        summary_->setText(tr("%n frame(s) over %1 s; bus load average %2 %, peak %3 % at %4 bit/s; %5 error frame(s)",
+                             nullptr, int(std::min<uint64_t>(b.frames, INT32_MAX)))
                               .arg(b.durationS, 0, 'f', 1)
                               .arg(b.loadAvgPct, 0, 'f', 1)
                               .arg(b.loadPeakPct, 0, 'f', 1)
@@ -242,17 +251,23 @@ void HealthDock::showFinding(int row) {
     const dissect::Occurrences& at = f.at;
     QString where;
     if (at.count) {
-        const QString first = dissect::healthTime(at.firstNs, findings_->report().startNs), last = dissect::healthTime(at.lastNs, findings_->report().startNs);
-        where = at.count == 1 ? tr("Once, at %1.").arg(first) : tr("%1 times, from %2 to %3.").arg(at.count).arg(first, last);
+        const QString first = dissect::healthTime(at.firstNs, findings_->report().startNs),
+                      last = dissect::healthTime(at.lastNs, findings_->report().startNs);
+        where = at.count == 1 ? tr("Once, at %1.").arg(first)
+                              : tr("%1 times, from %2 to %3.").arg(at.count).arg(first, last);
     }
     if (!at.frames.empty()) {
-        where += QLatin1Char(' ') + (occurrence_ >= 0 ? tr("Frame %1 of %2 shown in the trace.").arg(occurrence_ + 1).arg(at.frames.size())
-                                                      : tr("Click the finding to show its first frame in the trace."));
+        where += QLatin1Char(' ') +
+                 (occurrence_ >= 0 ? tr("Frame %1 of %2 shown in the trace.").arg(occurrence_ + 1).arg(at.frames.size())
+                                   : tr("Click the finding to show its first frame in the trace."));
     }
     auto esc = [](const QString& t) { return t.toHtmlEscaped(); };
-    detail_->setText(QStringLiteral("<b>%1</b><br>%2 %3<br>%4 %5<br><span style='color:#555'>%6%7</span>")
-                         .arg(esc(healthRuleText(f, RulePart::What)), tr("<b>Why:</b>"), esc(healthRuleText(f, RulePart::Why)), tr("<b>Check:</b>"),
-                              esc(healthRuleText(f, RulePart::Check)), esc(where), f.own ? QStringLiteral(" ") + esc(tr("CoScope's own traffic: not counted in the verdict.")) : QString()));
+    detail_->setText(
+        QStringLiteral("<b>%1</b><br>%2 %3<br>%4 %5<br><span style='color:#555'>%6%7</span>")
+            .arg(esc(healthRuleText(f, RulePart::What)), tr("<b>Why:</b>"), esc(healthRuleText(f, RulePart::Why)),
+                 tr("<b>Check:</b>"), esc(healthRuleText(f, RulePart::Check)), esc(where),
+                 f.own ? QStringLiteral(" ") + esc(tr("CoScope's own traffic: not counted in the verdict."))
+                       : QString()));
     previous_->setEnabled(occurrence_ > 0);
     next_->setEnabled(!at.frames.empty() && occurrence_ + 1 < static_cast<int>(at.frames.size()));
 }

@@ -49,8 +49,8 @@ signals:
 private:
     QTableView* makeTable(HealthModel* model, const QString& name);
     void update();
-    void showFinding(int row);        // the detail pane
-    void goToOccurrence(int index);   // of the current finding: emits frameActivated
+    void showFinding(int row);       // the detail pane
+    void goToOccurrence(int index);  // of the current finding: emits frameActivated
     int currentFinding() const;
 
     Workspace* workspace_;

@@ -59,13 +59,16 @@ QVariant HealthModel::headerData(int section, Qt::Orientation orientation, int r
         return section < FindingColumns ? names[section] : QVariant();
     }
     case Table::Nodes: {
-        const QString names[] = {tr("Node"),      tr("State"),    tr("Error control"), tr("Beats"),    tr("Period min/avg/max ms"),
-                                 tr("Late"),      tr("Timeouts"), tr("Boot-ups"),      tr("Resets"),   tr("SDO transfers"),
-                                 tr("SDO p99 ms"), tr("SDO aborts"), tr("SDO timeouts"), tr("EMCY")};
+        const QString names[] = {
+            tr("Node"),       tr("State"),      tr("Error control"), tr("Beats"),  tr("Period min/avg/max ms"),
+            tr("Late"),       tr("Timeouts"),   tr("Boot-ups"),      tr("Resets"), tr("SDO transfers"),
+            tr("SDO p99 ms"), tr("SDO aborts"), tr("SDO timeouts"),  tr("EMCY")};
         return section < NodeColumns ? names[section] : QVariant();
     }
     case Table::Pdos: {
-        const QString names[] = {tr("COB-ID"), tr("PDO"), tr("Node"), tr("Frames"), tr("Rate Hz"), tr("Period min/avg/max ms"), tr("Jitter ms")};
+        const QString names[] = {tr("COB-ID"),   tr("PDO"),     tr("Node"),
+                                 tr("Frames"),   tr("Rate Hz"), tr("Period min/avg/max ms"),
+                                 tr("Jitter ms")};
         return section < PdoColumns ? names[section] : QVariant();
     }
     }
@@ -95,7 +98,8 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
     }
     if (role == Qt::ToolTipRole)  // the rule's three sentences (issue 37)
         return QStringLiteral("%1\n%2 %3\n%4 %5")
-            .arg(healthRuleText(f, RulePart::What), tr("Why:"), healthRuleText(f, RulePart::Why), tr("Check:"), healthRuleText(f, RulePart::Check));
+            .arg(healthRuleText(f, RulePart::What), tr("Why:"), healthRuleText(f, RulePart::Why), tr("Check:"),
+                 healthRuleText(f, RulePart::Check));
     if (role != Qt::DisplayRole) return {};
     switch (column) {
     case Severity:
@@ -117,7 +121,8 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
 QVariant HealthModel::nodeData(int row, int column, int role) const {
     const dissect::NodeHealth& n = report_.nodes[static_cast<size_t>(row)];
     if (role == RawRole) return n.node;
-    if (role == Qt::TextAlignmentRole) return column == State || column == ErrorControl ? QVariant() : QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == Qt::TextAlignmentRole)
+        return column == State || column == ErrorControl ? QVariant() : QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole) return {};
     auto ms = [](double v) { return QString::number(v, 'f', v < 10 ? 1 : 0); };
     switch (column) {
@@ -125,10 +130,13 @@ QVariant HealthModel::nodeData(int row, int column, int role) const {
     case State: return n.state < 0 ? QString() : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.state)));
     case ErrorControl:
         if (n.errorControl.isEmpty()) return tr("none");
-        if (n.silentNow) return n.errorControl == QLatin1String("guarding") ? tr("guarding stopped") : tr("heartbeat stopped");
+        if (n.silentNow)
+            return n.errorControl == QLatin1String("guarding") ? tr("guarding stopped") : tr("heartbeat stopped");
         return n.errorControl == QLatin1String("guarding") ? tr("guarding") : tr("heartbeat");
     case Beats: return QString::number(n.beats);
-    case Period: return n.beats > 1 ? QStringLiteral("%1 / %2 / %3").arg(ms(n.periodMinMs), ms(n.periodAvgMs), ms(n.periodMaxMs)) : QString();
+    case Period:
+        return n.beats > 1 ? QStringLiteral("%1 / %2 / %3").arg(ms(n.periodMinMs), ms(n.periodAvgMs), ms(n.periodMaxMs))
+                           : QString();
     case Late: return QString::number(n.late);
     case Timeouts: return QString::number(n.timeouts);
     case BootUps: return QString::number(n.bootUps);
@@ -153,7 +161,11 @@ QVariant HealthModel::pdoData(int row, int column, int role) const {
     case Frames: return QString::number(p.frames);
     case Rate: return QString::number(p.rateHz, 'f', 1);
     case PdoPeriod:
-        return p.frames > 1 ? QStringLiteral("%1 / %2 / %3").arg(p.periodMinMs, 0, 'f', 2).arg(p.periodAvgMs, 0, 'f', 2).arg(p.periodMaxMs, 0, 'f', 2) : QString();
+        return p.frames > 1 ? QStringLiteral("%1 / %2 / %3")
+                                  .arg(p.periodMinMs, 0, 'f', 2)
+                                  .arg(p.periodAvgMs, 0, 'f', 2)
+                                  .arg(p.periodMaxMs, 0, 'f', 2)
+                            : QString();
     case Jitter: return p.cyclic ? QString::number(p.jitterMs, 'f', 3) : tr("event-driven");
     }
     return {};

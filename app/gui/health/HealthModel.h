@@ -16,8 +16,21 @@ public:
     enum class Table { Findings, Nodes, Pdos };
     enum FindingColumn { Severity, Time, Node, Text, FindingColumns };
     enum NodeColumn {
-        NodeId, State, ErrorControl, Beats, Period, Late, Timeouts, BootUps, Resets,
-        SdoTransfers, SdoP99, SdoAborts, SdoTimeouts, Emcys, NodeColumns
+        NodeId,
+        State,
+        ErrorControl,
+        Beats,
+        Period,
+        Late,
+        Timeouts,
+        BootUps,
+        Resets,
+        SdoTransfers,
+        SdoP99,
+        SdoAborts,
+        SdoTimeouts,
+        Emcys,
+        NodeColumns
     };
     enum PdoColumn { CobId, Pdo, PdoNode, Frames, Rate, PdoPeriod, Jitter, PdoColumns };
     // Qt::UserRole on a finding row: its severity (HealthFinding::Severity); on a node row the node-ID.

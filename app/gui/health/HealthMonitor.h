@@ -62,10 +62,10 @@ private:
     std::atomic<uint64_t> revision_{0};
     std::atomic<uint64_t> generation_{0};  // bumped by clear(): work taken before it is dropped
 
-    mutable std::mutex mutex_;  // the rest
+    mutable std::mutex mutex_;     // the rest
     std::deque<Pending> pending_;  // consumeLater()'s ranges, oldest first
     size_t inFlight_ = 0;          // frames its thread has taken and not yet published
-    bool laterMode_ = false;      // consumeLater() since the last clear(): report() is published_
+    bool laterMode_ = false;       // consumeLater() since the last clear(): report() is published_
     std::optional<dissect::HealthReport> published_;
     std::condition_variable pendingAdded_;
     bool stopping_ = false;

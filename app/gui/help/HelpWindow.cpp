@@ -50,7 +50,9 @@ HelpWindow::HelpWindow(QWidget* owner) : QWidget(owner, Qt::Window) {
     connect(browser_, &QTextBrowser::forwardAvailable, forward, &QToolButton::setEnabled);
 }
 
-HelpWindow* HelpWindow::of(const QWidget* owner) { return owner ? owner->findChild<HelpWindow*>(QLatin1String(kHelpWindowName), Qt::FindDirectChildrenOnly) : nullptr; }
+HelpWindow* HelpWindow::of(const QWidget* owner) {
+    return owner ? owner->findChild<HelpWindow*>(QLatin1String(kHelpWindowName), Qt::FindDirectChildrenOnly) : nullptr;
+}
 
 HelpWindow* HelpWindow::open(QWidget* owner, const QString& section) {
     HelpWindow* w = of(owner);

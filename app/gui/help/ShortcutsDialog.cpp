@@ -28,7 +28,8 @@ QString shortcutWhere(const QAction* a) {
     for (QObject* o : a->associatedObjects())
         if (auto* menu = qobject_cast<QMenu*>(o); menu && !menu->title().isEmpty()) return shortcutText(menu->title());
     for (const QObject* o = a->parent(); o; o = o->parent()) {
-        if (auto* menu = qobject_cast<const QMenu*>(o); menu && !menu->title().isEmpty()) return shortcutText(menu->title());
+        if (auto* menu = qobject_cast<const QMenu*>(o); menu && !menu->title().isEmpty())
+            return shortcutText(menu->title());
         if (auto* dock = qobject_cast<const QDockWidget*>(o)) return shortcutText(dock->windowTitle());
     }
     return {};
@@ -44,9 +45,11 @@ QList<ShortcutsDialog::Entry> ShortcutsDialog::collect(const QWidget* window) {
         QStringList keys;
         for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
         const QString text = shortcutText(a->text());
-        out.push_back({keys.join(QStringLiteral(", ")), text.isEmpty() ? shortcutText(a->toolTip()) : text, shortcutWhere(a)});
+        out.push_back(
+            {keys.join(QStringLiteral(", ")), text.isEmpty() ? shortcutText(a->toolTip()) : text, shortcutWhere(a)});
     }
-    std::sort(out.begin(), out.end(), [](const Entry& x, const Entry& y) { return std::tie(x.where, x.action) < std::tie(y.where, y.action); });
+    std::sort(out.begin(), out.end(),
+              [](const Entry& x, const Entry& y) { return std::tie(x.where, x.action) < std::tie(y.where, y.action); });
     return out;
 }
 
@@ -59,7 +62,8 @@ ShortcutsDialog::ShortcutsDialog(QWidget* window) : QDialog(window) {
     list_->setObjectName(QStringLiteral("shortcutsList"));
     list_->setRootIsDecorated(false);
     list_->setHeaderLabels({tr("Keys"), tr("Action"), tr("Where")});
-    for (const Entry& e : collect(window)) list_->addTopLevelItem(new QTreeWidgetItem(QStringList{e.keys, e.action, e.where}));
+    for (const Entry& e : collect(window))
+        list_->addTopLevelItem(new QTreeWidgetItem(QStringList{e.keys, e.action, e.where}));
     list_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     layout->addWidget(list_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);

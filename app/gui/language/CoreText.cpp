@@ -75,12 +75,14 @@ struct Patterns {
                 const QString tail = s.mid(at);
                 re += QRegularExpression::escape(tail);
                 p.literal += tail.size();
-                p.re = QRegularExpression(QRegularExpression::anchoredPattern(re), QRegularExpression::DotMatchesEverythingOption);
+                p.re = QRegularExpression(QRegularExpression::anchoredPattern(re),
+                                          QRegularExpression::DotMatchesEverythingOption);
                 p.re.optimize();
                 all.push_back(std::move(p));
             }
         }
-        std::stable_sort(all.begin(), all.end(), [](const Pattern& a, const Pattern& b) { return a.literal > b.literal; });
+        std::stable_sort(all.begin(), all.end(),
+                         [](const Pattern& a, const Pattern& b) { return a.literal > b.literal; });
         for (size_t i = 0; i < all.size(); ++i) {
             const QString s = QString::fromUtf8(all[i].source);
             const qsizetype firstArg = s.indexOf(u'%');
@@ -174,7 +176,8 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
     const Patterns& ps = patterns();
     if (covered) *covered = english.size();
     // The health report writes EMCY texts in lower case ("generic error"): the listed text's translation.
-    if (const auto it = ps.folded.constFind(english.toLower()); it != ps.folded.constEnd() && english != QString::fromUtf8(*it))
+    if (const auto it = ps.folded.constFind(english.toLower());
+        it != ps.folded.constEnd() && english != QString::fromUtf8(*it))
         return QCoreApplication::translate("CoreText", *it);
     auto tryOne = [&](size_t i, QString* out) {
         const Pattern& p = ps.all[i];
@@ -183,7 +186,8 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
         const QString translated = QCoreApplication::translate("CoreText", p.source);
         if (translated == QString::fromUtf8(p.source)) return false;
         std::vector<QString> values(9);
-        for (size_t g = 0; g < p.argOrder.size(); ++g) values[static_cast<size_t>(p.argOrder[g] - 1)] = lookUp(m.captured(static_cast<int>(g + 1)), depth + 1);
+        for (size_t g = 0; g < p.argOrder.size(); ++g)
+            values[static_cast<size_t>(p.argOrder[g] - 1)] = lookUp(m.captured(static_cast<int>(g + 1)), depth + 1);
         *out = fill(translated, values);
         return true;
     };

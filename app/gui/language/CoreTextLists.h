@@ -8,12 +8,12 @@ namespace coscope::gui::coretext {
 // The English texts of the lower layers the GUI translates (context "CoreText"), one list per
 // area. Each entry is exactly what the lower layer writes; "%1".."%9" stand for the values it
 // fills in (CoreText.h).
-std::span<const char* const> names();      // CoreTextNames.cpp: states, commands, modes, aborts
-std::span<const char* const> wizards();    // CoreTextWizards.cpp: script steps, controller errors
-std::span<const char* const> trace();      // CoreTextTrace.cpp: dissector summaries, health findings
-std::span<const char* const> details();    // CoreTextDetails.cpp: the details pane's field names
-std::span<const char* const> bus();        // CoreTextBus.cpp: CAN error frames, LSS, vendor EMCY
-std::span<const char* const> homing();     // CoreTextHoming.cpp: homing methods, mode-specific statusword bits
+std::span<const char* const> names();    // CoreTextNames.cpp: states, commands, modes, aborts
+std::span<const char* const> wizards();  // CoreTextWizards.cpp: script steps, controller errors
+std::span<const char* const> trace();    // CoreTextTrace.cpp: dissector summaries, health findings
+std::span<const char* const> details();  // CoreTextDetails.cpp: the details pane's field names
+std::span<const char* const> bus();      // CoreTextBus.cpp: CAN error frames, LSS, vendor EMCY
+std::span<const char* const> homing();   // CoreTextHoming.cpp: homing methods, mode-specific statusword bits
 
 // "%1 (%2)": how a value and its meaning are joined. Tried after every listed text, at each place
 // of the separator; used only when a part is translated.

@@ -71,7 +71,8 @@ bool apply(const QString& wanted) {
     if (i.qt.load(QStringLiteral("qtbase_%1").arg(code), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(&i.qt);
     else
-        spdlog::info("Qt's own translation qtbase_{} not found; its dialog buttons stay in English", code.toStdString());
+        spdlog::info("Qt's own translation qtbase_{} not found; its dialog buttons stay in English",
+                     code.toStdString());
     QCoreApplication::installTranslator(&i.app);
     i.code = code;
     dissect::setVendorTextLanguage(code);

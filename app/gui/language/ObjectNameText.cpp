@@ -23,7 +23,8 @@ struct Ref {
 
 QString replaced(const QString& namesFrom, const std::vector<Ref>& refs, const QString& english) {
     const QString lang = dissect::vendorTextLanguage();
-    if (namesFrom.isEmpty() || english.isEmpty() || (lang != u"zh_TW" && lang != u"zh_CN") || refs.empty()) return english;
+    if (namesFrom.isEmpty() || english.isEmpty() || (lang != u"zh_TW" && lang != u"zh_CN") || refs.empty())
+        return english;
     const eds::DictionaryPtr dict = eds::DictionaryLibrary::shared().loadShared(namesFrom);
     if (!dict || dict->bundledName.isEmpty()) return english;
     std::vector<std::pair<QString, QString>> names;  // English -> local
@@ -47,7 +48,9 @@ QString localObjectNames(const dissect::Dissection& d, const QString& english) {
     std::vector<Ref> refs;
     const dissect::FlatField* index = d.find("sdo.index");
     const dissect::FlatField* sub = d.find("sdo.sub");
-    const auto number = [](const dissect::FlatField* f) { return f->kind == dissect::FlatField::Kind::UInt ? static_cast<int64_t>(f->u) : f->i; };
+    const auto number = [](const dissect::FlatField* f) {
+        return f->kind == dissect::FlatField::Kind::UInt ? static_cast<int64_t>(f->u) : f->i;
+    };
     if (index && sub) refs.push_back({static_cast<uint16_t>(number(index)), static_cast<uint8_t>(number(sub)), {}});
     if (d.hasTransfer) refs.push_back({d.transfer.index, d.transfer.sub, d.transfer.name});
     for (int i = 0; i < d.signalCount; ++i) {
@@ -57,7 +60,9 @@ QString localObjectNames(const dissect::Dissection& d, const QString& english) {
     return replaced(d.namesFrom, refs, english);
 }
 
-QString localObjectName(const dissect::SdoTransferRecord& t) { return replaced(t.namesFrom, {{t.index, t.sub, t.name}}, t.name); }
+QString localObjectName(const dissect::SdoTransferRecord& t) {
+    return replaced(t.namesFrom, {{t.index, t.sub, t.name}}, t.name);
+}
 
 QString localSignalName(const dissect::SignalInfo& s) {
     if (s.key.raw) return s.name;  // the user named it

@@ -26,7 +26,8 @@ namespace {
 constexpr uint16_t kGuardHeartbeatMs = 100;
 }  // namespace
 
-HeartbeatGuardQuestion::HeartbeatGuardQuestion(Workspace* workspace, QWidget* window) : QObject(window), workspace_(workspace), window_(window) {}
+HeartbeatGuardQuestion::HeartbeatGuardQuestion(Workspace* workspace, QWidget* window)
+    : QObject(window), workspace_(workspace), window_(window) {}
 
 HeartbeatGuardQuestion::~HeartbeatGuardQuestion() {
     if (box_) box_->deleteLater();
@@ -65,7 +66,8 @@ void HeartbeatGuardQuestion::consentNeeded(int node) {
 void HeartbeatGuardQuestion::applySettings() {
     if (!guards_) return;
     const MasterSettings m = MasterSettings::load();
-    guards_->setHeartbeat(static_cast<uint8_t>(m.heartbeatNode), m.heartbeat ? static_cast<uint16_t>(m.heartbeatMs) : kGuardHeartbeatMs);
+    guards_->setHeartbeat(static_cast<uint8_t>(m.heartbeatNode),
+                          m.heartbeat ? static_cast<uint16_t>(m.heartbeatMs) : kGuardHeartbeatMs);
 }
 
 void HeartbeatGuardQuestion::ask(int node) {
@@ -73,17 +75,20 @@ void HeartbeatGuardQuestion::ask(int node) {
     asking_ = node;
     const int periodMs = guards_->heartbeatPeriodMs();
     const int stopMs = canopen::HeartbeatGuard::consumerTimeFor(static_cast<uint16_t>(periodMs));
-    auto* box = new QMessageBox(QMessageBox::Question, tr("Stop the drive if CoScope dies?"),
-                                tr("Node %1 is enabled by CoScope. Should it stop by itself if CoScope or the cable dies?").arg(node), QMessageBox::Yes | QMessageBox::No,
-                                window_);
+    auto* box = new QMessageBox(
+        QMessageBox::Question, tr("Stop the drive if CoScope dies?"),
+        tr("Node %1 is enabled by CoScope. Should it stop by itself if CoScope or the cable dies?").arg(node),
+        QMessageBox::Yes | QMessageBox::No, window_);
     box->setObjectName(QStringLiteral("heartbeatGuardQuestion"));
-    box->setInformativeText(tr("CoScope will produce its heartbeat (node %1) every %2 ms and set node %3's heartbeat consumer 1016h and its abort "
-                               "connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms "
-                               "when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.")
-                                .arg(guards_->heartbeatNode())
-                                .arg(periodMs)
-                                .arg(node)
-                                .arg(stopMs));
+    box->setInformativeText(
+        tr("CoScope will produce its heartbeat (node %1) every %2 ms and set node %3's heartbeat consumer 1016h and "
+           "its abort "
+           "connection option 6007h (quick stop, where the drive has one), so the drive stops by itself within %4 ms "
+           "when CoScope or the cable dies. The old values are put back when the drive is disabled or the bus closes.")
+            .arg(guards_->heartbeatNode())
+            .arg(periodMs)
+            .arg(node)
+            .arg(stopMs));
     box->button(QMessageBox::Yes)->setText(tr("Guard the drive"));
     box->button(QMessageBox::No)->setText(tr("Not now"));
     auto* remember = new QCheckBox(tr("Remember my answer"), box);
@@ -108,7 +113,10 @@ void HeartbeatGuardQuestion::answered(int node, bool yes, bool remember) {
     if (remember) QSettings().setValue(kSettingsKey, yes ? QStringLiteral("always") : QStringLiteral("never"));
     if (!guards_) return;
     guards_->consent(static_cast<uint8_t>(node), yes);
-    if (!yes) emit message(tr("Node %1 does not watch CoScope's heartbeat: if CoScope or the cable dies, it keeps its last command").arg(node));
+    if (!yes)
+        emit message(
+            tr("Node %1 does not watch CoScope's heartbeat: if CoScope or the cable dies, it keeps its last command")
+                .arg(node));
 }
 
 void HeartbeatGuardQuestion::report(int node, int axis, GuardedDrives::State state, const QString& text) {
@@ -116,7 +124,8 @@ void HeartbeatGuardQuestion::report(int node, int axis, GuardedDrives::State sta
     using State = GuardedDrives::State;
     if (state != State::Armed && state != State::Released && state != State::Failed) return;
     const bool failed = state == State::Failed;
-    workspace_->events().add(renderedEvent(failed ? TraceEvent::Kind::BusError : TraceEvent::Kind::Info, nowNs(), kNoFrame, node, [text] { return coreText(text); }));
+    workspace_->events().add(renderedEvent(failed ? TraceEvent::Kind::BusError : TraceEvent::Kind::Info, nowNs(),
+                                           kNoFrame, node, [text] { return coreText(text); }));
     if (failed) emit error(tr("Heartbeat guard: %1").arg(coreText(text)));
     else emit message(coreText(text));
 }

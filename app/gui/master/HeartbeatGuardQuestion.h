@@ -54,7 +54,7 @@ private:
     QWidget* window_;
     QPointer<canopen::GuardedDrives> guards_;
     QPointer<QMessageBox> box_;
-    int asking_ = 0;          // the node the open question is about
+    int asking_ = 0;           // the node the open question is about
     std::deque<int> waiting_;  // nodes to ask about next
 };
 

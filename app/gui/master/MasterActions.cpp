@@ -24,7 +24,8 @@
 
 namespace coscope::gui {
 
-MasterActions::MasterActions(Workspace* workspace, QWidget* window) : QObject(window), workspace_(workspace), window_(window) {
+MasterActions::MasterActions(Workspace* workspace, QWidget* window)
+    : QObject(window), workspace_(workspace), window_(window) {
     sync_ = new QAction(window->style()->standardIcon(QStyle::SP_MediaPlay), tr("&SYNC producer"), this);
     sync_->setObjectName(QStringLiteral("syncAction"));
     sync_->setIconText(tr("SYNC"));
@@ -55,7 +56,9 @@ MasterActions::MasterActions(Workspace* workspace, QWidget* window) : QObject(wi
 bool MasterActions::startSync(QString* error) {
     canopen::SyncProducer* sync = workspace_->syncProducer();
     if (!sync || !workspace_->canTransmit()) {
-        if (error) *error = workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("the bus is listen-only") : tr("no bus is open");
+        if (error)
+            *error = workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("the bus is listen-only")
+                                                                            : tr("no bus is open");
         return false;
     }
     const MasterSettings m = MasterSettings::load();
@@ -68,7 +71,9 @@ bool MasterActions::startSync(QString* error) {
         return false;
     }
     spdlog::info("SYNC started: {} µs, counter {}, COB-ID {:X}h", m.syncPeriodUs, m.syncCounter, m.syncCobId);
-    emit message(tr("SYNC every %1 on %2h").arg(MasterSettings::periodText(m.syncPeriodUs), QString::number(m.syncCobId & 0x1FFFFFFF, 16).toUpper()));
+    emit message(
+        tr("SYNC every %1 on %2h")
+            .arg(MasterSettings::periodText(m.syncPeriodUs), QString::number(m.syncCobId & 0x1FFFFFFF, 16).toUpper()));
     if (m.writeCyclePeriod) writeCyclePeriod(m.syncPeriodUs);
     sync_->setChecked(true);
     return true;
@@ -95,13 +100,15 @@ void MasterActions::writeCyclePeriod(uint32_t periodUs) {
     for (const canopen::NodeInfo& n : workspace_->nodes().snapshot()) {
         ++tally->pending;
         const int node = n.node;
-        sync->writeCommunicationCyclePeriod(*sdo, static_cast<uint8_t>(node), [self, tally, node, periodUs](const canopen::SdoResult& r) {
-            if (r.ok) ++tally->ok;
-            else tally->failed << tr("node %1 (%2)").arg(node).arg(coreText(r.error));
-            if (--tally->pending > 0 || !self) return;
-            if (tally->failed.isEmpty()) emit self->message(tr("1006h = %1 µs written to %n node(s)", nullptr, tally->ok).arg(periodUs));
-            else emit self->error(tr("1006h not written to %1").arg(tally->failed.join(QStringLiteral(", "))));
-        });
+        sync->writeCommunicationCyclePeriod(
+            *sdo, static_cast<uint8_t>(node), [self, tally, node, periodUs](const canopen::SdoResult& r) {
+                if (r.ok) ++tally->ok;
+                else tally->failed << tr("node %1 (%2)").arg(node).arg(coreText(r.error));
+                if (--tally->pending > 0 || !self) return;
+                if (tally->failed.isEmpty())
+                    emit self->message(tr("1006h = %1 µs written to %n node(s)", nullptr, tally->ok).arg(periodUs));
+                else emit self->error(tr("1006h not written to %1").arg(tally->failed.join(QStringLiteral(", "))));
+            });
     }
 }
 
@@ -129,7 +136,10 @@ void MasterActions::applyHeartbeat() {
     // A drive watches it (GuardedDrives): stopping it or changing its node-ID would make the
     // drive stop. The new settings apply once no drive watches it any more.
     if (canopen::GuardedDrives* guards = workspace_->guardedDrives(); guards && guards->holdsHeartbeat()) {
-        if (!heartbeatHeld_) emit message(tr("CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once it is released"));
+        if (!heartbeatHeld_)
+            emit message(
+                tr("CoScope's heartbeat keeps running as it is while a drive watches it; the new settings apply once "
+                   "it is released"));
         heartbeatHeld_ = true;
         return;
     }
@@ -151,11 +161,13 @@ void MasterActions::refresh() {
     else if (workspace_->bus()->isListenOnly()) why = tr("Listen-only connection: CoScope sends nothing");
     else if (!can) why = tr("The bus is not open");
     sync_->setEnabled(can || sync_->isChecked());
-    sync_->setToolTip(why.isEmpty() ? tr("Start or stop the SYNC producer (Bus ▸ Master settings… sets its period)") : why);
+    sync_->setToolTip(why.isEmpty() ? tr("Start or stop the SYNC producer (Bus ▸ Master settings… sets its period)")
+                                    : why);
     canopen::SyncProducer* sync = workspace_->syncProducer();
     const bool running = sync && sync->isRunning();
     if (sync_->isChecked() != running) sync_->setChecked(running);
-    if (sync && !running && !sync->lastError().isEmpty() && sync_->property("reported").toString() != sync->lastError()) {
+    if (sync && !running && !sync->lastError().isEmpty() &&
+        sync_->property("reported").toString() != sync->lastError()) {
         sync_->setProperty("reported", sync->lastError());
         emit error(tr("SYNC stopped: %1").arg(coreText(sync->lastError())));
     }
@@ -173,7 +185,8 @@ QString MasterActions::statusText() const {
     if (canopen::GuardedDrives* guards = workspace_->guardedDrives()) {
         QStringList nodes;
         for (uint8_t n : guards->guardedNodes()) nodes << QString::number(n);
-        if (!nodes.isEmpty()) parts << tr("guarding node %1", nullptr, int(nodes.size())).arg(QLocale().createSeparatedList(nodes));
+        if (!nodes.isEmpty())
+            parts << tr("guarding node %1", nullptr, int(nodes.size())).arg(QLocale().createSeparatedList(nodes));
     }
     return parts.join(QStringLiteral(" · "));
 }

@@ -52,7 +52,7 @@ private:
     QAction* sync_ = nullptr;
     QAction* settings_ = nullptr;
     HeartbeatGuardQuestion* guardQuestion_ = nullptr;
-    bool heartbeatHeld_ = false;  // new heartbeat settings wait until no drive watches it
+    bool heartbeatHeld_ = false;          // new heartbeat settings wait until no drive watches it
     const void* heartbeatFor_ = nullptr;  // the bus whose heartbeat was set up
 };
 

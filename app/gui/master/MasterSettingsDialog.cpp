@@ -39,14 +39,16 @@ MasterSettingsDialog::MasterSettingsDialog(QWidget* parent) : QDialog(parent) {
     period_->setDecimals(3);  // µs resolution
     period_->setSuffix(tr(" ms"));
     period_->setValue(m.syncPeriodUs / 1000.0);
-    period_->setToolTip(tr("Communication cycle period (1006h): the time between two SYNC messages, to the microsecond"));
+    period_->setToolTip(
+        tr("Communication cycle period (1006h): the time between two SYNC messages, to the microsecond"));
     form->addRow(tr("Period:"), period_);
     counter_ = new QSpinBox(sync);
     counter_->setObjectName(QStringLiteral("syncCounter"));
     counter_->setRange(0, 240);
     counter_->setSpecialValueText(tr("No counter"));
     counter_->setValue(m.syncCounter);
-    counter_->setToolTip(tr("Synchronous counter overflow value (1019h): 0 = SYNC without data; 2-240 = SYNC carries a counter 1…N"));
+    counter_->setToolTip(
+        tr("Synchronous counter overflow value (1019h): 0 = SYNC without data; 2-240 = SYNC carries a counter 1…N"));
     form->addRow(tr("Counter overflow (1019h):"), counter_);
     cobId_ = new QLineEdit(QString::number(m.syncCobId, 16).toUpper().rightJustified(3, u'0') + u'h', sync);
     cobId_->setObjectName(QStringLiteral("syncCobId"));
@@ -62,8 +64,9 @@ MasterSettingsDialog::MasterSettingsDialog(QWidget* parent) : QDialog(parent) {
     heartbeat_->setObjectName(QStringLiteral("heartbeatProducer"));
     heartbeat_->setCheckable(true);
     heartbeat_->setChecked(m.heartbeat);
-    heartbeat_->setToolTip(tr("CoScope sends a heartbeat (700h + node-ID, state Operational) so that drives whose heartbeat consumer (1016h) "
-                              "watches it stop by themselves when CoScope or the cable goes away"));
+    heartbeat_->setToolTip(tr(
+        "CoScope sends a heartbeat (700h + node-ID, state Operational) so that drives whose heartbeat consumer (1016h) "
+        "watches it stop by themselves when CoScope or the cable goes away"));
     auto* hb = new QFormLayout(heartbeat_);
     heartbeatNode_ = new QSpinBox(heartbeat_);
     heartbeatNode_->setObjectName(QStringLiteral("heartbeatNode"));
@@ -106,7 +109,9 @@ QString MasterSettingsDialog::problem() const {
     if (counter_->value() == 1) return tr("The counter overflow must be 0 (no counter) or 2-240 (CiA 301, 1019h).");
     const auto cob = parseCobIdText(cobId_->text());
     if (!cob) return tr("The COB-ID “%1” is not a number (write 80h, 0x80 or 128).").arg(cobId_->text());
-    if (*cob > 0x7FF && !(*cob & 0x20000000u)) return tr("The COB-ID %1h is not an 11-bit CAN-ID (set bit 29 for a 29-bit one).").arg(QString::number(*cob, 16).toUpper());
+    if (*cob > 0x7FF && !(*cob & 0x20000000u))
+        return tr("The COB-ID %1h is not an 11-bit CAN-ID (set bit 29 for a 29-bit one).")
+            .arg(QString::number(*cob, 16).toUpper());
     return {};
 }
 

@@ -55,7 +55,8 @@ struct ProcessDataDock::Row {
     std::vector<QCheckBox*> bits;  // controlword
 };
 
-ProcessDataDock::ProcessDataDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Process data"), parent), workspace_(workspace) {
+ProcessDataDock::ProcessDataDock(Workspace* workspace, QWidget* parent)
+    : QDockWidget(tr("Process data"), parent), workspace_(workspace) {
     setObjectName(QStringLiteral("processDataDock"));
     auto* w = new QWidget(this);
     auto* v = new QVBoxLayout(w);
@@ -108,7 +109,9 @@ ProcessDataDock::ProcessDataDock(Workspace* workspace, QWidget* parent) : QDockW
     hold_ = new QPushButton(tr("Hold to run"), w);
     hold_->setObjectName(QStringLiteral("processDataHold"));
     hold_->setMinimumHeight(40);
-    hold_->setToolTip(tr("RPDOs with motion objects are sent only while this button is held down; releasing it sends halt and velocity 0."));
+    hold_->setToolTip(
+        tr("RPDOs with motion objects are sent only while this button is held down; releasing it sends halt and "
+           "velocity 0."));
     buttons->addWidget(arm_);
     buttons->addWidget(hold_, 1);
     v->addLayout(buttons);
@@ -161,7 +164,8 @@ void ProcessDataDock::setMaster(canopen::BusMaster* master) {
     if (master_) {
         data_ = std::make_unique<canopen::ProcessData>(master_->context(), master_->sync());
         connect(data_.get(), &canopen::ProcessData::sendFailed, this, &ProcessDataDock::showError);
-        connect(data_.get(), &canopen::ProcessData::holdExpired, this, [this] { status_->setText(tr("Hold to run was not fed: the drive was sent halt and velocity 0.")); });
+        connect(data_.get(), &canopen::ProcessData::holdExpired, this,
+                [this] { status_->setText(tr("Hold to run was not fed: the drive was sent halt and velocity 0.")); });
     }
     showNode();
 }
@@ -182,7 +186,9 @@ void ProcessDataDock::refreshNodes() {
         const auto info = workspace_->nodes().node(node_->itemData(i).toInt());
         const eds::DictionaryPtr d = info ? eds::DictionaryLibrary::shared().loadShared(info->dictionary) : nullptr;
         for (int n = 1; d && at < 0 && n <= 4; ++n)
-            if (const auto l = canopen::rpdoLayout(*d, static_cast<uint8_t>(info->node), n); l && l->valid() && !l->entries.empty()) at = i;
+            if (const auto l = canopen::rpdoLayout(*d, static_cast<uint8_t>(info->node), n);
+                l && l->valid() && !l->entries.empty())
+                at = i;
     }
     node_->setCurrentIndex(at >= 0 ? at : 0);
     if (node_->currentData().toInt() != current || !current) showNode();
@@ -196,18 +202,21 @@ void ProcessDataDock::showNode() {
         if (const auto info = workspace_->nodes().node(node)) dictionaryName_ = info->dictionary;
         QString error;
         dictionary_ = eds::DictionaryLibrary::shared().loadShared(dictionaryName_, nullptr, &error);
-        if (!dictionary_) showError(tr("Node %1: its dictionary %2 could not be loaded: %3").arg(node).arg(dictionaryName_, error));
+        if (!dictionary_)
+            showError(tr("Node %1: its dictionary %2 could not be loaded: %3").arg(node).arg(dictionaryName_, error));
     }
     if (data_ && dictionary_) {
         QString error;
         if (!data_->setNode(static_cast<uint8_t>(node), *dictionary_, &error)) showError(error);
         data_->setMode(canopen::ProcessData::Mode(mode_->currentData().toInt()), period_->value());
         if (workspace_->sdo() && workspace_->canTransmit())
-            data_->readValues(*workspace_->sdo(), [this, self = QPointer<ProcessDataDock>(this)](const QStringList& failed) {
-                if (!self) return;
-                showValues();
-                if (!failed.isEmpty()) showError(tr("Could not read: %1").arg(failed.join(QStringLiteral("; "))));
-            });
+            data_->readValues(*workspace_->sdo(),
+                              [this, self = QPointer<ProcessDataDock>(this)](const QStringList& failed) {
+                                  if (!self) return;
+                                  showValues();
+                                  if (!failed.isEmpty())
+                                      showError(tr("Could not read: %1").arg(failed.join(QStringLiteral("; "))));
+                              });
     }
     rebuildRows();
     updateEnabled();
@@ -219,7 +228,12 @@ void ProcessDataDock::rebuildRows() {
     groups_.clear();
     if (!data_ || data_->pdos().empty() || !dictionary_) return;
     for (const canopen::ProcessDataPdo& pdo : data_->pdos()) {
-        auto* box = new QGroupBox(tr("RPDO%1 (%2h)").arg(pdo.layout.number).arg(pdo.layout.canId(), 3, 16, QChar(u'0')).toUpper().replace(QStringLiteral("H)"), QStringLiteral("h)")), pdoArea_);
+        auto* box = new QGroupBox(tr("RPDO%1 (%2h)")
+                                      .arg(pdo.layout.number)
+                                      .arg(pdo.layout.canId(), 3, 16, QChar(u'0'))
+                                      .toUpper()
+                                      .replace(QStringLiteral("H)"), QStringLiteral("h)")),
+                                  pdoArea_);
         box->setCheckable(true);
         box->setChecked(data_->isEnabled(pdo.layout.number));
         const int number = pdo.layout.number;
@@ -232,8 +246,16 @@ void ProcessDataDock::rebuildRows() {
             if (o.dummy) continue;
             auto row = std::make_unique<Row>();
             row->object = o;
-            if (const od::SubObject* s = dictionary_->entry(o.entry.index, o.entry.sub); s && s->unit && s->unit->factor > 0) row->unit = *s->unit;
-            grid->addWidget(new QLabel(QStringLiteral("%1h %2").arg(o.entry.index, 4, 16, QChar(u'0')).toUpper().replace(QStringLiteral("H "), QStringLiteral("h ")).arg(o.name), box), r, 0);
+            if (const od::SubObject* s = dictionary_->entry(o.entry.index, o.entry.sub);
+                s && s->unit && s->unit->factor > 0)
+                row->unit = *s->unit;
+            grid->addWidget(new QLabel(QStringLiteral("%1h %2")
+                                           .arg(o.entry.index, 4, 16, QChar(u'0'))
+                                           .toUpper()
+                                           .replace(QStringLiteral("H "), QStringLiteral("h "))
+                                           .arg(o.name),
+                                       box),
+                            r, 0);
             Row* raw = row.get();
             if (isControlword(o.entry.index)) {
                 auto* bits = new QWidget(box);
@@ -252,8 +274,10 @@ void ProcessDataDock::rebuildRows() {
                 grid->addWidget(bits, r, 1);
             } else {
                 row->edit = new QLineEdit(box);
-                row->edit->setObjectName(QStringLiteral("pdValue%1_%2").arg(o.entry.index, 4, 16, QChar(u'0')).arg(o.entry.sub));
-                row->edit->setToolTip(row->unit.text.isEmpty() ? tr("Decimal, 0x1F or 1Fh") : tr("In %1").arg(row->unit.text));
+                row->edit->setObjectName(
+                    QStringLiteral("pdValue%1_%2").arg(o.entry.index, 4, 16, QChar(u'0')).arg(o.entry.sub));
+                row->edit->setToolTip(row->unit.text.isEmpty() ? tr("Decimal, 0x1F or 1Fh")
+                                                               : tr("In %1").arg(row->unit.text));
                 connect(row->edit, &QLineEdit::editingFinished, this, [this, raw] { commit(*raw); });
                 grid->addWidget(row->edit, r, 1);
                 grid->addWidget(new QLabel(row->unit.text, box), r, 2);
@@ -273,7 +297,8 @@ void ProcessDataDock::showValues() {
         const auto v = data_->value(row->object.entry.index, row->object.entry.sub);
         if (!v) continue;
         if (row->edit) {
-            if (row->unit.factor != 1.0 && !row->unit.text.isEmpty()) row->edit->setText(QString::number(double(*v) * row->unit.factor, 'f', unitDecimals(row->unit)));
+            if (row->unit.factor != 1.0 && !row->unit.text.isEmpty())
+                row->edit->setText(QString::number(double(*v) * row->unit.factor, 'f', unitDecimals(row->unit)));
             else row->edit->setText(QString::number(*v));
         }
         for (QCheckBox* c : row->bits) c->setChecked((*v >> c->property("bit").toInt()) & 1);
@@ -288,9 +313,9 @@ void ProcessDataDock::commit(Row& row) {
     const double shown = text.toDouble(&ok);
     bool set = false;
     if (ok && row.unit.factor != 1.0 && !row.unit.text.isEmpty())  // in the drive's unit: raw = shown / factor
-        set = data_->setValue(row.object.entry.index, row.object.entry.sub, std::llround(shown / row.unit.factor), &error);
-    else
-        set = data_->setValueText(row.object.entry.index, row.object.entry.sub, text, &error);
+        set = data_->setValue(row.object.entry.index, row.object.entry.sub, std::llround(shown / row.unit.factor),
+                              &error);
+    else set = data_->setValueText(row.object.entry.index, row.object.entry.sub, text, &error);
     if (!set) showError(error);
     else status_->clear();
 }
@@ -322,10 +347,14 @@ void ProcessDataDock::refreshLive() {
         const double raw = last->value;
         const od::Unit unit{s.rawUnit, s.rawFactor};
         // Statusword, error codes and other bit patterns in hex as CiA 301 writes them (README "Numbers").
-        const QString hex = raw >= 0 ? od::hexValueText(s.key.index, s.key.sub, static_cast<uint64_t>(raw), 16) : QString();
-        parts << QStringLiteral("%1: %2").arg(s.name, !hex.isEmpty() ? hex : s.rawUnit.isEmpty() ? QString::number(raw, 'g', 10) : inUnit(raw, unit));
+        const QString hex =
+            raw >= 0 ? od::hexValueText(s.key.index, s.key.sub, static_cast<uint64_t>(raw), 16) : QString();
+        parts << QStringLiteral("%1: %2").arg(s.name, !hex.isEmpty()        ? hex
+                                                      : s.rawUnit.isEmpty() ? QString::number(raw, 'g', 10)
+                                                                            : inUnit(raw, unit));
     }
-    live_->setText(parts.isEmpty() ? tr("TPDOs: no values seen yet (are they sent on SYNC?)") : tr("TPDOs: %1").arg(parts.join(QStringLiteral(" · "))));
+    live_->setText(parts.isEmpty() ? tr("TPDOs: no values seen yet (are they sent on SYNC?)")
+                                   : tr("TPDOs: %1").arg(parts.join(QStringLiteral(" · "))));
 }
 
 void ProcessDataDock::updateEnabled() {
@@ -333,7 +362,8 @@ void ProcessDataDock::updateEnabled() {
     if (!workspace_->isLive()) why = tr("No bus is connected.");
     else if (!workspace_->canTransmit()) why = tr("The bus is listen-only or not open: nothing can be sent.");
     else if (!data_) why = tr("The bus's master services are not available.");
-    else if (node_->count() == 0) why = tr("No node with a dictionary is known yet: scan the network or assign a dictionary.");
+    else if (node_->count() == 0)
+        why = tr("No node with a dictionary is known yet: scan the network or assign a dictionary.");
     else if (!data_ || data_->pdos().empty()) why = tr("This node's dictionary maps no RPDO.");
     reason_->setText(why);
     reason_->setVisible(!why.isEmpty());
@@ -382,12 +412,14 @@ void ProcessDataDock::sendOnce() {
 
 void ProcessDataDock::arm() {
     if (!data_) return;
-    const int answer = QMessageBox::question(
-        this, tr("Arm motion"),
-        tr("The RPDOs of node %1 carry motion objects (controlword, mode, targets). While \"Hold to run\" is held, they are sent with the values shown and "
-           "the motor can move. Releasing the button sends halt and velocity 0.\n\nMake sure the axis is free to move. Arm?")
-            .arg(data_->node()),
-        QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+    const int answer =
+        QMessageBox::question(this, tr("Arm motion"),
+                              tr("The RPDOs of node %1 carry motion objects (controlword, mode, targets). While \"Hold "
+                                 "to run\" is held, they are sent with the values shown and "
+                                 "the motor can move. Releasing the button sends halt and velocity 0.\n\nMake sure the "
+                                 "axis is free to move. Arm?")
+                                  .arg(data_->node()),
+                              QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
     armed_ = answer == QMessageBox::Yes;
     updateEnabled();
 }

@@ -25,7 +25,8 @@
 
 namespace coscope::gui {
 
-TransmitDock::TransmitDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Transmit"), parent), workspace_(workspace) {
+TransmitDock::TransmitDock(Workspace* workspace, QWidget* parent)
+    : QDockWidget(tr("Transmit"), parent), workspace_(workspace) {
     setObjectName(QStringLiteral("TransmitDock"));
     auto* w = new QWidget(this);
     auto* root = new QVBoxLayout(w);
@@ -42,7 +43,8 @@ TransmitDock::TransmitDock(Workspace* workspace, QWidget* parent) : QDockWidget(
     auto* input = new QHBoxLayout;
     frameEdit_ = new QLineEdit(body_);
     frameEdit_->setObjectName(QStringLiteral("transmitFrame"));
-    frameEdit_->setPlaceholderText(tr("Frame in candump syntax, e.g. 601#4018100100000000, 123#R, 123##1AABB (CAN FD)"));
+    frameEdit_->setPlaceholderText(
+        tr("Frame in candump syntax, e.g. 601#4018100100000000, 123#R, 123##1AABB (CAN FD)"));
     frameEdit_->setClearButtonEnabled(true);
     input->addWidget(frameEdit_, 1);
     input->addWidget(new QLabel(tr("every"), body_));
@@ -72,7 +74,8 @@ TransmitDock::TransmitDock(Workspace* workspace, QWidget* parent) : QDockWidget(
     view_->setObjectName(QStringLiteral("transmitView"));
     view_->setModel(model_);
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed | QAbstractItemView::AnyKeyPressed);
+    view_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                           QAbstractItemView::AnyKeyPressed);
     view_->verticalHeader()->hide();
     view_->horizontalHeader()->setStretchLastSection(true);
     view_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -133,7 +136,8 @@ void TransmitDock::refresh() {
     if ((master ? &master->transmit() : nullptr) != boundList_) rebind();
     QString why;
     if (!workspace_->bus()) why = tr("Connect to a bus first: the frames below are kept and sent once a bus is open.");
-    else if (workspace_->bus()->isListenOnly()) why = tr("Listen-only connection: CoScope sends nothing, so the transmit list is disabled.");
+    else if (workspace_->bus()->isListenOnly())
+        why = tr("Listen-only connection: CoScope sends nothing, so the transmit list is disabled.");
     else if (!workspace_->canTransmit()) why = tr("The bus is not open: nothing can be sent now.");
     banner_->setText(why);
     banner_->setVisible(!why.isEmpty());
@@ -160,7 +164,8 @@ void TransmitDock::addTyped(bool sendNow) {
     const auto frame = canopen::TransmitList::parseFrame(frameEdit_->text().trimmed(), &error);
     if (!frame) return showError(tr("Cannot read “%1”: %2").arg(frameEdit_->text().trimmed(), coreText(error)));
     const auto period = TransmitModel::parsePeriodMs(every_->text());
-    if (!period || (*period != 0 && *period < 100)) return showError(tr("“%1” is not a period in ms (0 = once only, at least 0.1 ms)").arg(every_->text()));
+    if (!period || (*period != 0 && *period < 100))
+        return showError(tr("“%1” is not a period in ms (0 = once only, at least 0.1 ms)").arg(every_->text()));
     canopen::TransmitEntry e;
     e.frame = *frame;
     e.periodUs = *period;
@@ -190,7 +195,8 @@ void TransmitDock::setRunning(int row, bool on) {
         model_->refresh();
         return;
     }
-    if (model_->entry(row).periodUs == 0) return showError(tr("Give the row a period (Every, ms) to send it periodically"));
+    if (model_->entry(row).periodUs == 0)
+        return showError(tr("Give the row a period (Every, ms) to send it periodically"));
     if (!confirmMotion(row)) return model_->refresh();
     QString error;
     if (!model_->list()->start(row, &error)) showError(tr("Cannot send periodically: %1").arg(coreText(error)));
@@ -221,16 +227,27 @@ bool TransmitDock::confirmMotion(int row) {
         [&](uint8_t node) { return drives.count(node) && drives[node]; });
     if (!aimed || !aimed->carriesMotion()) return true;
     QStringList objects;
-    for (const canopen::PdoMapEntry& m : aimed->motion) objects << QStringLiteral("%1h").arg(QString::number(m.index, 16).toUpper());
-    const QString what = aimed->mappingKnown ? tr("It is RPDO%1 of node %2, which carries %3: it can make the motor move.").arg(aimed->number).arg(aimed->node).arg(objects.join(QStringLiteral(", ")))
-                                             : tr("It is RPDO%1 of node %2, a drive whose mapping CoScope does not know: it can make the motor move.").arg(aimed->number).arg(aimed->node);
-    const auto answer = QMessageBox::question(this, tr("Send a motion command?"), tr("%1\n\nSend %2%3?").arg(what, key, e.periodUs ? tr(" every %1 ms").arg(e.periodUs / 1000.0) : QString()),
-                                              QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
+    for (const canopen::PdoMapEntry& m : aimed->motion)
+        objects << QStringLiteral("%1h").arg(QString::number(m.index, 16).toUpper());
+    const QString what =
+        aimed->mappingKnown
+            ? tr("It is RPDO%1 of node %2, which carries %3: it can make the motor move.")
+                  .arg(aimed->number)
+                  .arg(aimed->node)
+                  .arg(objects.join(QStringLiteral(", ")))
+            : tr("It is RPDO%1 of node %2, a drive whose mapping CoScope does not know: it can make the motor move.")
+                  .arg(aimed->number)
+                  .arg(aimed->node);
+    const auto answer = QMessageBox::question(
+        this, tr("Send a motion command?"),
+        tr("%1\n\nSend %2%3?").arg(what, key, e.periodUs ? tr(" every %1 ms").arg(e.periodUs / 1000.0) : QString()),
+        QMessageBox::Yes | QMessageBox::No, QMessageBox::No);
     if (answer != QMessageBox::Yes) {
         emit message(tr("Not sent: %1").arg(key));
         return false;
     }
-    spdlog::info("transmit: the user allowed {} (RPDO{} of node {}, motion)", key.toStdString(), aimed->number, aimed->node);
+    spdlog::info("transmit: the user allowed {} (RPDO{} of node {}, motion)", key.toStdString(), aimed->number,
+                 aimed->node);
     confirmed_.insert(key);
     noteControlword(e.frame, *aimed, dictionaries.count(aimed->node) ? dictionaries[aimed->node].get() : nullptr);
     return true;
@@ -239,7 +256,8 @@ bool TransmitDock::confirmMotion(int row) {
 // The controlword a frame carries to a drive goes into the bus's record of drives CoScope enabled
 // (EnabledDrives), so that whatever closes the bus disables the drive first. With the mapping
 // unknown the drive is taken as enabled (it may be).
-void TransmitDock::noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed, const od::ObjectDictionary* dictionary) {
+void TransmitDock::noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed,
+                                   const od::ObjectDictionary* dictionary) {
     canopen::MasterContext* master = workspace_->master();
     if (!master) return;
     if (!aimed.mappingKnown || !dictionary) return master->enabledDrives().noteControlword(aimed.node, 0, 0x000F);
@@ -249,8 +267,10 @@ void TransmitDock::noteControlword(const CanFrame& frame, const canopen::RpdoAdd
     for (const canopen::PdoMapEntry& m : layout->entries) {
         const bool controlword = m.index >= 0x6000 && (m.index - 0x6000) % 0x800 == 0x40 && m.sub == 0 && m.bits == 16;
         if (controlword && offset % 8 == 0 && offset / 8 + 2 <= frame.payloadSize()) {
-            const auto cw = static_cast<uint16_t>(frame.data[size_t(offset / 8)] | (frame.data[size_t(offset / 8 + 1)] << 8));
-            if (canopen::EnabledDrives::enablesVoltage(cw)) master->enabledDrives().noteControlword(aimed.node, (m.index - 0x6000) / 0x800, cw);
+            const auto cw =
+                static_cast<uint16_t>(frame.data[size_t(offset / 8)] | (frame.data[size_t(offset / 8 + 1)] << 8));
+            if (canopen::EnabledDrives::enablesVoltage(cw))
+                master->enabledDrives().noteControlword(aimed.node, (m.index - 0x6000) / 0x800, cw);
         }
         offset += m.bits;
     }

@@ -61,7 +61,8 @@ private:
     QList<int> selectedRows() const;
     // Motion (see class comment): true when the row may go out; asks once per row.
     bool confirmMotion(int row);
-    void noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed, const od::ObjectDictionary* dictionary);
+    void noteControlword(const CanFrame& frame, const canopen::RpdoAddress& aimed,
+                         const od::ObjectDictionary* dictionary);
     void showError(const QString& text);
 
     Workspace* workspace_;

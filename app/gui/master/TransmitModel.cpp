@@ -18,7 +18,8 @@ const QString kRowsKey = QStringLiteral("transmit/rows");
 
 QString hexBytes(const CanFrame& f) {
     QStringList parts;
-    for (int i = 0; i < f.payloadSize(); ++i) parts << QStringLiteral("%1").arg(f.data[size_t(i)], 2, 16, QLatin1Char('0')).toUpper();
+    for (int i = 0; i < f.payloadSize(); ++i)
+        parts << QStringLiteral("%1").arg(f.data[size_t(i)], 2, 16, QLatin1Char('0')).toUpper();
     return parts.join(u' ');
 }
 
@@ -39,10 +40,8 @@ std::optional<QByteArray> parseBytes(const QString& text) {
 }  // namespace
 
 TransmitModel::TransmitModel(QObject* parent)
-    : QAbstractTableModel(parent),
-      offlineContext_(std::make_unique<canopen::MasterContext>(nullptr)),
-      offlineList_(std::make_unique<canopen::TransmitList>(*offlineContext_)),
-      list_(offlineList_.get()) {
+    : QAbstractTableModel(parent), offlineContext_(std::make_unique<canopen::MasterContext>(nullptr)),
+      offlineList_(std::make_unique<canopen::TransmitList>(*offlineContext_)), list_(offlineList_.get()) {
     load();
     revision_ = list_->revision();
     sent_.assign(size_t(list_->size()), 0);
@@ -153,7 +152,9 @@ QVariant TransmitModel::data(const QModelIndex& index, int role) const {
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != Qt::EditRole) return {};
     switch (index.column()) {
-    case Id: return QString::number(f.id, 16).toUpper().rightJustified(f.isExtended() ? 8 : 3, u'0') + (role == Qt::DisplayRole ? QStringLiteral("h") : QString());
+    case Id:
+        return QString::number(f.id, 16).toUpper().rightJustified(f.isExtended() ? 8 : 3, u'0') +
+               (role == Qt::DisplayRole ? QStringLiteral("h") : QString());
     case Dlc: return int(f.len);
     case Data: return f.isRemote() ? (role == Qt::DisplayRole ? tr("(remote)") : QString()) : hexBytes(f);
     case Every:
@@ -243,9 +244,7 @@ bool TransmitModel::setData(const QModelIndex& index, const QVariant& value, int
     };
     if (role == Qt::CheckStateRole) {
         switch (index.column()) {
-        case Run:
-            emit runToggled(row, on);
-            return true;
+        case Run: emit runToggled(row, on); return true;
         case Extended:
             if (!on && f.id > 0x7FF) return refuse(tr("ID %1h needs 29 bits").arg(QString::number(f.id, 16).toUpper()));
             f.flags = on ? (f.flags | CanFrame::Extended) : (f.flags & ~CanFrame::Extended);
@@ -278,13 +277,15 @@ bool TransmitModel::setData(const QModelIndex& index, const QVariant& value, int
         bool ok = false;
         const int n = text.toInt(&ok);
         const int max = f.isFd() ? 64 : 8;
-        if (!ok || n < 0 || n > max || (f.isFd() && !isValidFdLength(n))) return refuse(tr("DLC must be a valid length of 0-%1 bytes").arg(max));
+        if (!ok || n < 0 || n > max || (f.isFd() && !isValidFdLength(n)))
+            return refuse(tr("DLC must be a valid length of 0-%1 bytes").arg(max));
         f.len = static_cast<uint8_t>(n);
         break;
     }
     case Data: {
         const auto bytes = parseBytes(text);
-        if (!bytes || bytes->size() > (f.isFd() ? 64 : 8)) return refuse(tr("“%1” is not up to %2 hex bytes").arg(text).arg(f.isFd() ? 64 : 8));
+        if (!bytes || bytes->size() > (f.isFd() ? 64 : 8))
+            return refuse(tr("“%1” is not up to %2 hex bytes").arg(text).arg(f.isFd() ? 64 : 8));
         f.data.fill(0);
         std::copy(bytes->begin(), bytes->end(), f.data.begin());
         f.len = static_cast<uint8_t>(f.isFd() ? roundUpFdLength(int(bytes->size())) : bytes->size());
@@ -293,7 +294,8 @@ bool TransmitModel::setData(const QModelIndex& index, const QVariant& value, int
     }
     case Every: {
         const auto us = parsePeriodMs(text);
-        if (!us || (*us != 0 && *us < 100)) return refuse(tr("“%1” is not a period in ms (0 = once only, at least 0.1 ms)").arg(text));
+        if (!us || (*us != 0 && *us < 100))
+            return refuse(tr("“%1” is not a period in ms (0 = once only, at least 0.1 ms)").arg(text));
         e.periodUs = *us;
         break;
     }

@@ -23,16 +23,22 @@ QSpinBox* msBox(const QString& name, int min, int value, QWidget* parent) {
 }
 }  // namespace
 
-ErrorControlDialog::ErrorControlDialog(const canopen::NodeInfo& node, const QString& guardingOffWhy, QWidget* parent) : QDialog(parent) {
+ErrorControlDialog::ErrorControlDialog(const canopen::NodeInfo& node, const QString& guardingOffWhy, QWidget* parent)
+    : QDialog(parent) {
     setObjectName(QStringLiteral("errorControlDialog"));
     setWindowTitle(tr("Heartbeat and guarding of node %1").arg(node.node));
     const canopen::ErrorControlWatch& w = node.watch;
     // A heartbeat seen: 3 x its period by default, as CoScope's own heartbeat guard does.
     const int periodMs = static_cast<int>(node.heartbeatPeriodNs / 1'000'000);
-    const int consumer = w.consumerTimeMs ? w.consumerTimeMs : periodMs > 0 ? std::clamp(3 * periodMs, 100, 65535) : 1000;
+    const int consumer = w.consumerTimeMs ? w.consumerTimeMs
+                         : periodMs > 0   ? std::clamp(3 * periodMs, 100, 65535)
+                                          : 1000;
 
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("How CoScope watches that node %1 is there (CiA 301 error control). A lost node is raised in the Events.").arg(node.node), this);
+    auto* intro = new QLabel(
+        tr("How CoScope watches that node %1 is there (CiA 301 error control). A lost node is raised in the Events.")
+            .arg(node.node),
+        this);
     intro->setWordWrap(true);
     layout->addWidget(intro);
 
@@ -48,7 +54,10 @@ ErrorControlDialog::ErrorControlDialog(const canopen::NodeInfo& node, const QStr
     hbForm->addRow(tr("Consumer time:"), consumerTime_);
     layout->addLayout(hbForm);
 
-    guarding_ = new QRadioButton(tr("Node guarding, for a node without heartbeat: CoScope asks (RTR on %1h) every guard time").arg(QString::number(0x700 + node.node, 16).toUpper()), this);
+    guarding_ =
+        new QRadioButton(tr("Node guarding, for a node without heartbeat: CoScope asks (RTR on %1h) every guard time")
+                             .arg(QString::number(0x700 + node.node, 16).toUpper()),
+                         this);
     guarding_->setObjectName(QStringLiteral("watchGuarding"));
     layout->addWidget(guarding_);
     auto* gForm = new QFormLayout;
@@ -70,7 +79,8 @@ ErrorControlDialog::ErrorControlDialog(const canopen::NodeInfo& node, const QStr
         why->setWordWrap(true);
         layout->addWidget(why);
     } else if (node.seenHeartbeat) {
-        auto* note = new QLabel(tr("Node %1 sends a heartbeat. CiA 301 guards only nodes without one (1017h = 0): while it sends both, its heartbeats "
+        auto* note = new QLabel(tr("Node %1 sends a heartbeat. CiA 301 guards only nodes without one (1017h = 0): "
+                                   "while it sends both, its heartbeats "
                                    "can be taken for guarding answers.")
                                     .arg(node.node),
                                 this);
@@ -84,8 +94,10 @@ ErrorControlDialog::ErrorControlDialog(const canopen::NodeInfo& node, const QStr
     layout->addWidget(buttons);
 
     (w.guarding() && guarding_->isEnabled() ? guarding_ : w.consumerTimeMs ? heartbeat_ : none_)->setChecked(true);
-    for (QRadioButton* r : {none_, heartbeat_, guarding_}) connect(r, &QRadioButton::toggled, this, &ErrorControlDialog::updateEnabled);
-    for (QSpinBox* b : {guardTime_, lifeFactor_}) connect(b, &QSpinBox::valueChanged, this, &ErrorControlDialog::updateEnabled);
+    for (QRadioButton* r : {none_, heartbeat_, guarding_})
+        connect(r, &QRadioButton::toggled, this, &ErrorControlDialog::updateEnabled);
+    for (QSpinBox* b : {guardTime_, lifeFactor_})
+        connect(b, &QSpinBox::valueChanged, this, &ErrorControlDialog::updateEnabled);
     updateEnabled();
 }
 

@@ -3,10 +3,10 @@
 
 #include "app/gui/language/CoreText.h"
 
+#include "app/gui/MenuTitle.h"
 #include "app/gui/nodes/ErrorControlDialog.h"
 #include "app/gui/nodes/NodeScanner.h"
 #include "app/gui/nodes/NodesModel.h"
-#include "app/gui/MenuTitle.h"
 #include "app/gui/program/ProgramDownloadDialog.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/HeartbeatMonitor.h"
@@ -17,13 +17,13 @@
 #include "core/canopen/SdoClient.h"
 
 #include <QAction>
-#include <QPointer>
-#include <QTimer>
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPointer>
 #include <QTableView>
+#include <QTimer>
 
 namespace coscope::gui {
 
@@ -50,13 +50,15 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         NmtCommand cs;
         const char* text;
     };
-    for (const Cmd& c : {Cmd{NmtCommand::Start, "Start (Operational)"}, Cmd{NmtCommand::Stop, "Stop"},
-                         Cmd{NmtCommand::EnterPreOperational, "Enter Pre-operational"}, Cmd{NmtCommand::ResetNode, "Reset node"},
-                         Cmd{NmtCommand::ResetCommunication, "Reset communication"}}) {
+    for (const Cmd& c :
+         {Cmd{NmtCommand::Start, "Start (Operational)"}, Cmd{NmtCommand::Stop, "Stop"},
+          Cmd{NmtCommand::EnterPreOperational, "Enter Pre-operational"}, Cmd{NmtCommand::ResetNode, "Reset node"},
+          Cmd{NmtCommand::ResetCommunication, "Reset communication"}}) {
         auto* a = new QAction(tr(c.text), this);
         a->setData(static_cast<int>(c.cs));
         a->setObjectName(QStringLiteral("nmt_%1").arg(static_cast<int>(c.cs)));
-        connect(a, &QAction::triggered, this, [this, a] { sendNmt(static_cast<uint8_t>(a->data().toInt()), std::max(0, selectedNode())); });
+        connect(a, &QAction::triggered, this,
+                [this, a] { sendNmt(static_cast<uint8_t>(a->data().toInt()), std::max(0, selectedNode())); });
         commands_ << a;
     }
     // One action for the Nodes dock's context menu, Bus ▸ Scan network and the toolbar.
@@ -75,7 +77,8 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         if (node <= 0) return;
         const eds::DictionaryLibrary library;
         bool ok = false;
-        const QString name = QInputDialog::getItem(this, tr("Assign dictionary"), tr("Dictionary for node %1:").arg(node), library.names(), 0, false, &ok);
+        const QString name = QInputDialog::getItem(
+            this, tr("Assign dictionary"), tr("Dictionary for node %1:").arg(node), library.names(), 0, false, &ok);
         if (ok) assignDictionary(node, name);
     });
 
@@ -106,7 +109,9 @@ NodesDock::NodesDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("No
         menu.addSeparator();
         menu.addAction(scan_);
         if (!workspace_->canTransmit())
-            menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: commands disabled") : tr("Not connected"));
+            menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly()
+                                ? tr("Listen-only: commands disabled")
+                                : tr("Not connected"));
         menu.exec(view_->viewport()->mapToGlobal(pos));
     });
     connect(view_->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this] {
@@ -125,7 +130,8 @@ void NodesDock::rebind() {
     delete scanner_;
     scanner_ = workspace_->sdo() ? new NodeScanner(workspace_->sdo(), this) : nullptr;
     if (scanner_)
-        connect(scanner_, &NodeScanner::finished, this, [this](int n) { emit message(tr("Scan finished: %1 node(s) answered").arg(n)); });
+        connect(scanner_, &NodeScanner::finished, this,
+                [this](int n) { emit message(tr("Scan finished: %1 node(s) answered").arg(n)); });
     updateEnabled();
 }
 
@@ -143,10 +149,11 @@ void NodesDock::updateEnabled() {
     const bool can = workspace_->canTransmit();
     for (QAction* a : commands_) a->setEnabled(can && (a != identify_ || selectedNode() > 0));
     scan_->setEnabled(can && scanner_ && !scanner_->isRunning());
-    const QString why = scanner_ && scanner_->isRunning() ? tr("A scan is running")
-                        : workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a scan would transmit")
-                        : !can ? tr("Connect to a bus first")
-                               : tr("Read the device type 1000h of every node-ID 1–127, then each answering node's identity");
+    const QString why =
+        scanner_ && scanner_->isRunning()                        ? tr("A scan is running")
+        : workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a scan would transmit")
+        : !can                                                   ? tr("Connect to a bus first")
+               : tr("Read the device type 1000h of every node-ID 1–127, then each answering node's identity");
     if (scan_->statusTip() != why) {
         scan_->setStatusTip(why);
         scan_->setToolTip(why);
@@ -154,10 +161,12 @@ void NodesDock::updateEnabled() {
     assign_->setEnabled(selectedNode() > 0);
     errorControl_->setEnabled(selectedNode() > 0 && workspace_->heartbeatMonitor());
     program_->setEnabled(can && selectedNode() > 0);
-    const QString programWhy = workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a program download would transmit")
-                               : !can                                                 ? tr("Connect to a bus first")
-                               : selectedNode() <= 0                                  ? tr("Select a node first")
-                                                                                      : tr("Load a new program (firmware) into the node: CiA 302-3 program download");
+    const QString programWhy = workspace_->bus() && workspace_->bus()->isListenOnly()
+                                   ? tr("Listen-only bus: a program download would transmit")
+                               : !can ? tr("Connect to a bus first")
+                               : selectedNode() <= 0
+                                   ? tr("Select a node first")
+                                   : tr("Load a new program (firmware) into the node: CiA 302-3 program download");
     program_->setStatusTip(programWhy);
     program_->setToolTip(programWhy);
 }
@@ -184,14 +193,15 @@ void NodesDock::editErrorControl() {
     info.node = node;
     // Node guarding sends an RTR each guard time; listen-only never transmits.
     const QString off = workspace_->canTransmit() ? QString()
-                        : workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: node guarding would transmit (an RTR each guard time); "
-                                                                                      "a heartbeat can still be watched.")
-                                                                                   : tr("The bus is not open: node guarding cannot send its requests.");
+                        : workspace_->bus() && workspace_->bus()->isListenOnly()
+                            ? tr("Listen-only bus: node guarding would transmit (an RTR each guard time); "
+                                 "a heartbeat can still be watched.")
+                            : tr("The bus is not open: node guarding cannot send its requests.");
     ErrorControlDialog dialog(info, off, this);
     if (dialog.exec() != QDialog::Accepted) return;
     const ErrorControlDialog::Choice c = dialog.choice();
-    watchNode(node, c.kind == ErrorControlDialog::Kind::Heartbeat ? c.consumerTimeMs : 0, c.kind == ErrorControlDialog::Kind::Guarding ? c.guardTimeMs : 0,
-              c.lifeTimeFactor);
+    watchNode(node, c.kind == ErrorControlDialog::Kind::Heartbeat ? c.consumerTimeMs : 0,
+              c.kind == ErrorControlDialog::Kind::Guarding ? c.guardTimeMs : 0, c.lifeTimeFactor);
 }
 
 bool NodesDock::watchNode(int node, int consumerTimeMs, int guardTimeMs, int lifeTimeFactor) {
@@ -202,10 +212,14 @@ bool NodesDock::watchNode(int node, int consumerTimeMs, int guardTimeMs, int lif
         QString error;
         if (!monitor->setGuarding(id, guardTimeMs, lifeTimeFactor, &error)) {
             emit message(tr("Node guarding of node %1 not started: %2").arg(node).arg(coreText(error)));
-            QMessageBox::warning(this, tr("Node guarding"), tr("Node guarding of node %1 not started: %2").arg(node).arg(coreText(error)));
+            QMessageBox::warning(this, tr("Node guarding"),
+                                 tr("Node guarding of node %1 not started: %2").arg(node).arg(coreText(error)));
             return false;
         }
-        emit message(tr("Node %1: node guarding every %2 ms, lost after %3 ms without an answer").arg(node).arg(guardTimeMs).arg(guardTimeMs * lifeTimeFactor));
+        emit message(tr("Node %1: node guarding every %2 ms, lost after %3 ms without an answer")
+                         .arg(node)
+                         .arg(guardTimeMs)
+                         .arg(guardTimeMs * lifeTimeFactor));
     } else if (consumerTimeMs > 0) {
         monitor->setConsumerTime(id, consumerTimeMs);
         emit message(tr("Node %1: heartbeat expected within %2 ms").arg(node).arg(consumerTimeMs));
@@ -224,13 +238,15 @@ int NodesDock::selectedNode() const {
 bool NodesDock::confirm(const QString& title, const QString& what) {
     lastConfirmation_ = what;
     if (autoConfirm_) return true;
-    return QMessageBox::question(this, title, what, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Yes;
+    return QMessageBox::question(this, title, what, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) ==
+           QMessageBox::Yes;
 }
 
 bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
     if (!workspace_->canTransmit() || !workspace_->master()) {
-        emit message(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: NMT commands are disabled")
-                                                                            : tr("Not connected to a bus"));
+        emit message(workspace_->bus() && workspace_->bus()->isListenOnly()
+                         ? tr("Listen-only: NMT commands are disabled")
+                         : tr("Not connected to a bus"));
         return false;
     }
     if (!ask) return transmitNmt(command, node);
@@ -251,7 +267,8 @@ bool NodesDock::sendNmt(uint8_t command, int node, bool ask) {
 bool NodesDock::askNmt(uint8_t command, int node, const QString& warning) {
     const auto frame = canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node));
     const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
-    const QString text = warning + tr("Send NMT “%1” to %2?\n\nFrame: %3").arg(coreText(canopen::nmtCommandName(command)), target, formatCansend(frame));
+    const QString text = warning + tr("Send NMT “%1” to %2?\n\nFrame: %3")
+                                       .arg(coreText(canopen::nmtCommandName(command)), target, formatCansend(frame));
     lastConfirmation_ = text;
     if (autoConfirm_) {
         asking_ = false;
@@ -261,7 +278,8 @@ bool NodesDock::askNmt(uint8_t command, int node, const QString& warning) {
     }
     // Window-modal and answered through finished(): no event loop of its own on the GUI thread.
     asking_ = true;
-    auto* box = new QMessageBox(QMessageBox::Question, tr("Send NMT command"), text, QMessageBox::Yes | QMessageBox::Cancel, this);
+    auto* box = new QMessageBox(QMessageBox::Question, tr("Send NMT command"), text,
+                                QMessageBox::Yes | QMessageBox::Cancel, this);
     box->setDefaultButton(QMessageBox::Cancel);
     box->setAttribute(Qt::WA_DeleteOnClose);
     connect(box, &QMessageBox::finished, this, [this, box, command, node] {
@@ -276,7 +294,9 @@ bool NodesDock::askNmt(uint8_t command, int node, const QString& warning) {
 bool NodesDock::transmitNmt(uint8_t command, int node) {
     const QString target = node == 0 ? tr("all nodes") : tr("node %1").arg(node);
     QString error;
-    if (!workspace_->master() || !workspace_->master()->send(canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node)), &error)) {
+    if (!workspace_->master() ||
+        !workspace_->master()->send(canopen::nmtFrame(static_cast<NmtCommand>(command), static_cast<uint8_t>(node)),
+                                    &error)) {
         if (error.isEmpty()) error = tr("Not connected to a bus");
         emit message(tr("NMT %1 to %2 failed: %3").arg(coreText(canopen::nmtCommandName(command)), target, error));
         QMessageBox::warning(this, tr("NMT command failed"), error);
@@ -317,10 +337,14 @@ bool NodesDock::readEnabledDrives(uint8_t command, int node, std::function<void(
     canopen::SdoOptions options;
     options.timeoutMs = 300;
     for (int id : ids)
-        sdo->upload(static_cast<uint8_t>(id), 0x6041, 0, [reads, id, finish](const canopen::SdoResult& r) {
-            if (r.ok && r.data.size() >= 2) reads->statusword[id] = static_cast<uint16_t>(uint8_t(r.data[0]) | (uint8_t(r.data[1]) << 8));
-            if (--reads->pending == 0) finish();
-        }, options);
+        sdo->upload(
+            static_cast<uint8_t>(id), 0x6041, 0,
+            [reads, id, finish](const canopen::SdoResult& r) {
+                if (r.ok && r.data.size() >= 2)
+                    reads->statusword[id] = static_cast<uint16_t>(uint8_t(r.data[0]) | (uint8_t(r.data[1]) << 8));
+                if (--reads->pending == 0) finish();
+            },
+            options);
     QTimer::singleShot(1000, this, finish);  // never wait long, whatever happens
     return true;
 }
@@ -332,12 +356,15 @@ QString NodesDock::enabledDriveWarning(uint8_t command, const std::map<int, uint
         if ((sw & 0x6F) != 0x27) continue;
         const auto info = workspace_->nodes().node(id);
         const bool delta = info && info->dictionary.contains(QStringLiteral("delta"), Qt::CaseInsensitive);
-        out += tr("Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its "
+        out += tr("Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses "
+                  "torque or trips its "
                   "communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).\n\n")
                    .arg(id)
                    .arg(sw, 4, 16, QChar(u'0'))
                    .arg(command == 0x81 || command == 0x82 ? tr("a reset") : tr("this command"))
-                   .arg(delta || !info || info->dictionary.isEmpty() ? tr("Delta drives raise AL401 (CANopen communication lost). ") : QString());
+                   .arg(delta || !info || info->dictionary.isEmpty()
+                            ? tr("Delta drives raise AL401 (CANopen communication lost). ")
+                            : QString());
     }
     return out;
 }
@@ -351,7 +378,8 @@ void NodesDock::scan(bool ask) {
         emit message(tr("A scan is already running"));
         return;
     }
-    if (ask && !confirm(tr("Scan network"), tr("Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?")))
+    if (ask && !confirm(tr("Scan network"),
+                        tr("Read object 1000h from every node-ID 1–127 (SDO upload requests on 601h–67Fh)?")))
         return;
     emit message(tr("Scanning nodes 1–127…"));
     scanner_->scan();

@@ -36,16 +36,29 @@ QString sourceExplained(const canopen::NodeInfo& n) {
     using canopen::NmtSource;
     const QString command = coreText(canopen::nmtCommandName(n.nmtCommand));
     switch (n.nmtSource) {
-    case NmtSource::BootUp: return NodesModel::tr("The node sent its boot-up message; after boot-up a node is Pre-operational.");
+    case NmtSource::BootUp:
+        return NodesModel::tr("The node sent its boot-up message; after boot-up a node is Pre-operational.");
     case NmtSource::Heartbeat: return NodesModel::tr("The node's heartbeat says so.");
     case NmtSource::Guarding: return NodesModel::tr("The node's answer to node guarding says so.");
     case NmtSource::OurCommand:
-        return NodesModel::tr("CoScope sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).").arg(command);
+        return NodesModel::tr(
+                   "CoScope sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that "
+                   "shows its state).")
+            .arg(command);
     case NmtSource::OtherCommand:
-        return NodesModel::tr("Another master sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its own that shows its state).").arg(command);
+        return NodesModel::tr(
+                   "Another master sent NMT %1; the node has not confirmed it yet (no heartbeat, and no frame of its "
+                   "own that shows its state).")
+            .arg(command);
     case NmtSource::Pdo: return NodesModel::tr("The node sends PDOs, which CiA 301 allows only in Operational.");
-    case NmtSource::Sdo: return NodesModel::tr("The node answers SDO, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).");
-    case NmtSource::Emcy: return NodesModel::tr("The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).");
+    case NmtSource::Sdo:
+        return NodesModel::tr(
+            "The node answers SDO, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show "
+            "Operational).");
+    case NmtSource::Emcy:
+        return NodesModel::tr(
+            "The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show "
+            "Operational).");
     case NmtSource::Unknown: break;
     }
     return NodesModel::tr("Nothing seen yet shows the node's state.");
@@ -66,21 +79,29 @@ QString watchText(const canopen::NodeInfo& n, int64_t now) {
     case Status::Lost: status = NodesModel::tr("lost"); break;
     case Status::Off: break;
     }
-    if (w.lastNs) status = NodesModel::tr("%1, %2 s ago").arg(status).arg(double(std::max<int64_t>(0, now - w.lastNs)) / 1e9, 0, 'f', 1);
+    if (w.lastNs)
+        status = NodesModel::tr("%1, %2 s ago")
+                     .arg(status)
+                     .arg(double(std::max<int64_t>(0, now - w.lastNs)) / 1e9, 0, 'f', 1);
     return NodesModel::tr("%1: %2").arg(what, status);
 }
 
 QString watchExplained(const canopen::NodeInfo& n) {
     const canopen::ErrorControlWatch& w = n.watch;
-    if (w.status == canopen::ErrorControlWatch::Status::Off) return NodesModel::tr("Not watched by CoScope (Heartbeat and guarding… in the context menu)");
+    if (w.status == canopen::ErrorControlWatch::Status::Off)
+        return NodesModel::tr("Not watched by CoScope (Heartbeat and guarding… in the context menu)");
     if (w.guarding())
-        return NodesModel::tr("Node guarding (CiA 301): CoScope asks every %1 ms; the node is late when a request goes unanswered or the toggle bit is "
-                              "wrong, lost after %2 ms without a right answer. Guarding errors: %3, lost %4 time(s).")
+        return NodesModel::tr(
+                   "Node guarding (CiA 301): CoScope asks every %1 ms; the node is late when a request goes unanswered "
+                   "or the toggle bit is "
+                   "wrong, lost after %2 ms without a right answer. Guarding errors: %3, lost %4 time(s).")
             .arg(w.guardTimeMs)
             .arg(w.guardTimeMs * w.lifeTimeFactor)
             .arg(n.guardingErrors)
             .arg(w.lost);
-    return NodesModel::tr("Heartbeat consumer (CiA 301): late when a heartbeat is overdue, lost when none comes within %1 ms. Lost %2 time(s).")
+    return NodesModel::tr(
+               "Heartbeat consumer (CiA 301): late when a heartbeat is overdue, lost when none comes within %1 ms. "
+               "Lost %2 time(s).")
         .arg(w.consumerTimeMs)
         .arg(w.lost);
 }
@@ -120,14 +141,17 @@ int NodesModel::rowOfNode(int node) const {
     return -1;
 }
 
-int NodesModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(nodes_.size()); }
+int NodesModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(nodes_.size());
+}
 int NodesModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
 QVariant NodesModel::data(const QModelIndex& index, int role) const {
     if (!index.isValid() || index.row() >= rowCount()) return {};
     const canopen::NodeInfo& n = nodes_[static_cast<size_t>(index.row())];
     const int64_t now = now_ ? now_() : n.lastSeenNs;
-    const bool late = n.seenHeartbeat && n.heartbeatPeriodNs > 0 && now - n.lastHeartbeatNs > std::max<int64_t>(3 * n.heartbeatPeriodNs, 1'500'000'000);
+    const bool late = n.seenHeartbeat && n.heartbeatPeriodNs > 0 &&
+                      now - n.lastHeartbeatNs > std::max<int64_t>(3 * n.heartbeatPeriodNs, 1'500'000'000);
     if (role == NodeIdRole) return n.node;
     if (role == Qt::BackgroundRole && index.column() == State) {
         if (n.stateUnknownAfterGap) return QBrush(QColor(200, 200, 215));
@@ -155,15 +179,19 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
         }
     }
     if (role == Qt::ForegroundRole && index.column() == Emcy && n.emcyCount) return QBrush(QColor(176, 0, 32));
-    if (role == Qt::TextAlignmentRole && (index.column() == Node || index.column() == HeartbeatAge || index.column() == Emcy))
+    if (role == Qt::TextAlignmentRole &&
+        (index.column() == Node || index.column() == HeartbeatAge || index.column() == Emcy))
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole) return {};
     switch (index.column()) {
     case Node: return n.node;
     case State:
         if (n.stateUnknownAfterGap) {  // issue 16: the bus was lost; the last state may be stale
-            const QString last = n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
-            return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the node's heartbeat or its own frames show it (last known: %1)").arg(last)
+            const QString last =
+                n.nmtState < 0 ? tr("Unknown") : coreText(canopen::nmtStateName(static_cast<uint8_t>(n.nmtState)));
+            return role == Qt::ToolTipRole ? tr("The bus was lost: the state is unknown until the node's heartbeat or "
+                                                "its own frames show it (last known: %1)")
+                                                 .arg(last)
                                            : tr("unknown (gap)");
         }
         if (late) return tr("No heartbeat");
@@ -180,9 +208,12 @@ QVariant NodesModel::data(const QModelIndex& index, int role) const {
         const QString name = n.notPresent & canopen::NodeInfo::kNoDeviceName ? tr("not present") : n.deviceName;
         if (role == Qt::DisplayRole) return name;
         // Tooltip: the three optional texts of CiA 301 §7.5.2.9-11 as the scan found them.
-        auto text = [&](const QString& v, uint8_t bit) { return n.notPresent & bit ? tr("not present") : v.isEmpty() ? tr("—") : v; };
+        auto text = [&](const QString& v, uint8_t bit) {
+            return n.notPresent & bit ? tr("not present") : v.isEmpty() ? tr("—") : v;
+        };
         return tr("Device name (1008h): %1\nHardware version (1009h): %2\nSoftware version (100Ah): %3")
-            .arg(text(n.deviceName, canopen::NodeInfo::kNoDeviceName), text(n.hardwareVersion.value_or(QString()), canopen::NodeInfo::kNoHardwareVersion),
+            .arg(text(n.deviceName, canopen::NodeInfo::kNoDeviceName),
+                 text(n.hardwareVersion.value_or(QString()), canopen::NodeInfo::kNoHardwareVersion),
                  text(n.softwareVersion.value_or(QString()), canopen::NodeInfo::kNoSoftwareVersion));
     }
     case Identity: {

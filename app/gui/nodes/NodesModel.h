@@ -15,7 +15,19 @@ namespace coscope::gui {
 class NodesModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Node, State, StateSource, HeartbeatAge, ErrorControl, DeviceName, Dictionary, Emcy, Identity, SeenBy, ColumnCount };
+    enum Column {
+        Node,
+        State,
+        StateSource,
+        HeartbeatAge,
+        ErrorControl,
+        DeviceName,
+        Dictionary,
+        Emcy,
+        Identity,
+        SeenBy,
+        ColumnCount
+    };
     enum Role { NodeIdRole = Qt::UserRole + 1 };
 
     explicit NodesModel(QObject* parent = nullptr);

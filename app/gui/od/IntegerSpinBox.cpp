@@ -77,7 +77,8 @@ qint64 IntegerSpinBox::intValue() const {
 }
 
 void IntegerSpinBox::setValue(const od::Value& value) {
-    od::Value v = od::isSigned(type_) ? od::Value::signedInt(value.toInt64().value_or(0)) : od::Value::unsignedInt(value.toUInt64().value_or(0));
+    od::Value v = od::isSigned(type_) ? od::Value::signedInt(value.toInt64().value_or(0))
+                                      : od::Value::unsignedInt(value.toUInt64().value_or(0));
     if (less(v, *limits_.low)) v = *limits_.low;
     if (less(*limits_.high, v)) v = *limits_.high;
     if (v == value_) return;  // the text being typed stays
@@ -87,7 +88,8 @@ void IntegerSpinBox::setValue(const od::Value& value) {
 }
 
 void IntegerSpinBox::setIntValue(qint64 value) {
-    setValue(od::isSigned(type_) ? od::Value::signedInt(value) : od::Value::unsignedInt(value < 0 ? 0 : quint64(value)));
+    setValue(od::isSigned(type_) ? od::Value::signedInt(value)
+                                 : od::Value::unsignedInt(value < 0 ? 0 : quint64(value)));
 }
 
 QString IntegerSpinBox::numberPart(const QString& text) const {
@@ -104,22 +106,30 @@ QString IntegerSpinBox::textOf(const od::Value& value) const {
     return prefix_ + od::integerText(type_, value, notation_) + suffix_;
 }
 
-od::IntegerInput IntegerSpinBox::typed() const { return od::readInteger(type_, numberPart(lineEdit()->text()), limits_); }
+od::IntegerInput IntegerSpinBox::typed() const {
+    return od::readInteger(type_, numberPart(lineEdit()->text()), limits_);
+}
 
-QString IntegerSpinBox::problemText(const QString& text, const od::IntegerInput& in, od::DataType type, od::HexKind notation) {
+QString IntegerSpinBox::problemText(const QString& text, const od::IntegerInput& in, od::DataType type,
+                                    od::HexKind notation) {
     switch (in.problem) {
     case od::IntegerInput::Problem::None: return {};
     case od::IntegerInput::Problem::Empty: return tr("Type a number: decimal (31), or hex as 0x1F or 1Fh");
     case od::IntegerInput::Problem::NotANumber:
-        return od::isSigned(type) ? tr("“%1” is not a number: type it in decimal (31, -5), or in hex as 0x1F or 1Fh").arg(text.trimmed())
-                                  : tr("“%1” is not a number: type it in decimal (31), or in hex as 0x1F or 1Fh").arg(text.trimmed());
+        return od::isSigned(type)
+                   ? tr("“%1” is not a number: type it in decimal (31, -5), or in hex as 0x1F or 1Fh")
+                         .arg(text.trimmed())
+                   : tr("“%1” is not a number: type it in decimal (31), or in hex as 0x1F or 1Fh").arg(text.trimmed());
     case od::IntegerInput::Problem::OutOfRange:
-        return tr("%1 is out of range: %2 … %3").arg(text.trimmed(), od::integerText(type, in.low, notation), od::integerText(type, in.high, notation));
+        return tr("%1 is out of range: %2 … %3")
+            .arg(text.trimmed(), od::integerText(type, in.low, notation), od::integerText(type, in.high, notation));
     }
     return {};
 }
 
-QString IntegerSpinBox::problem() const { return problemText(numberPart(lineEdit()->text()), typed(), type_, notation_); }
+QString IntegerSpinBox::problem() const {
+    return problemText(numberPart(lineEdit()->text()), typed(), type_, notation_);
+}
 
 QValidator::State IntegerSpinBox::validate(QString& input, int& pos) const {
     Q_UNUSED(pos);
@@ -168,7 +178,8 @@ void IntegerSpinBox::stepBy(int steps) {
         const quint64 lo = limits_.low->toUInt64().value_or(0), hi = limits_.high->toUInt64().value_or(0);
         const quint64 x = value_.toUInt64().value_or(0);
         quint64 r = 0;
-        const bool over = steps > 0 ? __builtin_add_overflow(x, quint64(steps), &r) : __builtin_sub_overflow(x, quint64(-qint64(steps)), &r);
+        const bool over = steps > 0 ? __builtin_add_overflow(x, quint64(steps), &r)
+                                    : __builtin_sub_overflow(x, quint64(-qint64(steps)), &r);
         if (over) r = steps > 0 ? hi : lo;
         v = od::Value::unsignedInt(std::clamp(r, lo, hi));
     }
@@ -198,7 +209,8 @@ QSize IntegerSpinBox::sizeHint() const {
     ensurePolished();
     const QFontMetrics fm(fontMetrics());
     int w = fm.horizontalAdvance(special_);
-    for (const od::Value& v : {*limits_.low, *limits_.high}) w = std::max(w, fm.horizontalAdvance(prefix_ + od::integerText(type_, v, notation_) + suffix_));
+    for (const od::Value& v : {*limits_.low, *limits_.high})
+        w = std::max(w, fm.horizontalAdvance(prefix_ + od::integerText(type_, v, notation_) + suffix_));
     w = std::min(w + 4, fm.horizontalAdvance(QLatin1Char('0')) * 24);  // 64-bit ranges stay a sensible width
     QStyleOptionSpinBox opt;
     initStyleOption(&opt);

@@ -40,7 +40,8 @@ public:
     // Why `typed` text is refused, as the user reads it; empty when it reads.
     QString problem() const;
     // The same sentence for any text of `type` within [low, high] shown in `notation`.
-    static QString problemText(const QString& text, const od::IntegerInput& input, od::DataType type, od::HexKind notation);
+    static QString problemText(const QString& text, const od::IntegerInput& input, od::DataType type,
+                               od::HexKind notation);
 
     QValidator::State validate(QString& input, int& pos) const override;
     void fixup(QString& input) const override;

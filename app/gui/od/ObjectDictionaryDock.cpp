@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/od/ObjectDictionaryDock.h"
 
+#include "app/gui/MenuTitle.h"
 #include "app/gui/files/LastFolders.h"
 #include "app/gui/od/OdFilterModel.h"
 #include "app/gui/od/OdTreeModel.h"
 #include "app/gui/od/OdValueDelegate.h"
-#include "app/gui/MenuTitle.h"
 #include "app/gui/session/Workspace.h"
 #include "core/canopen/DeviceConfiguration.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
-#include "eds/DictionaryLibrary.h"
-#include "eds/EdsReader.h"
 #include "dissectors/ObjectNames.h"
 #include "dissectors/VendorTable.h"
+#include "eds/DictionaryLibrary.h"
+#include "eds/EdsReader.h"
 
 #include <QAction>
 #include <QApplication>
@@ -86,14 +86,17 @@ void ObjectDictionaryDock::buildUi() {
         // The format by the filter: a DCF (CiA 306) or a concise DCF (CiA 302-3, 1F22h) as *.bin.
         const QString concise = tr("Concise DCF, CiA 302-3 (*.bin)");
         QString filter;
-        QString path = files::askSaveFile(this, files::kDictionaries, tr("Export node %1 as DCF").arg(node_), QStringLiteral("node%1.dcf").arg(node_),
+        QString path = files::askSaveFile(this, files::kDictionaries, tr("Export node %1 as DCF").arg(node_),
+                                          QStringLiteral("node%1.dcf").arg(node_),
                                           tr("Device configuration (*.dcf)") + QStringLiteral(";;") + concise, &filter);
         if (filter == concise && !path.isEmpty() && !path.endsWith(QStringLiteral(".bin"), Qt::CaseInsensitive))
-            path = (path.endsWith(QStringLiteral(".dcf"), Qt::CaseInsensitive) ? path.chopped(4) : path) + QStringLiteral(".bin");
+            path = (path.endsWith(QStringLiteral(".dcf"), Qt::CaseInsensitive) ? path.chopped(4) : path) +
+                   QStringLiteral(".bin");
         if (!path.isEmpty()) exportDcf(path);
     });
     apply_ = bar->addAction(tr("Apply DCF…"), this, [this] {
-        const QString path = files::askOpenFile(this, files::kDictionaries, tr("Apply a DCF to node %1").arg(node_), tr("Device configuration (*.dcf *.eds);;All files (*)"));
+        const QString path = files::askOpenFile(this, files::kDictionaries, tr("Apply a DCF to node %1").arg(node_),
+                                                tr("Device configuration (*.dcf *.eds);;All files (*)"));
         if (!path.isEmpty()) applyDcf(path);
     });
     layout->addWidget(bar);
@@ -123,11 +126,13 @@ void ObjectDictionaryDock::buildUi() {
     view_->setModel(filter_);
     auto* delegate = new OdValueDelegate(model_, view_);
     view_->setItemDelegateForColumn(OdTreeModel::Value, delegate);
-    connect(delegate, &OdValueDelegate::refused, this, [this](const QString& why) { showMessage(tr("Node %1: not written: %2").arg(node_).arg(why), true); });
+    connect(delegate, &OdValueDelegate::refused, this,
+            [this](const QString& why) { showMessage(tr("Node %1: not written: %2").arg(node_).arg(why), true); });
     view_->setAlternatingRowColors(true);
     view_->setUniformRowHeights(true);
     view_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    view_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked | QAbstractItemView::DoubleClicked);
+    view_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked |
+                           QAbstractItemView::DoubleClicked);
     view_->setContextMenuPolicy(Qt::CustomContextMenu);
     view_->header()->setStretchLastSection(false);
     view_->setColumnWidth(OdTreeModel::Object, 78);
@@ -151,7 +156,8 @@ void ObjectDictionaryDock::buildUi() {
     connect(readSelected_, &QAction::triggered, this, [this] {
         const QModelIndex i = view_->currentIndex();
         if (i.isValid() && i.data(OdTreeModel::SubRole).toInt() >= 0)
-            readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
+            readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()),
+                      static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
     });
     // F2 edits the value of the current row, whichever of its cells is current, while the focus
     // is in this dock (the trace's F2 jumps to its bookmarks only there).
@@ -174,10 +180,13 @@ void ObjectDictionaryDock::buildUi() {
         if (i.data(OdTreeModel::SubRole).toInt() < 0) return;  // an ARRAY/RECORD row expands
         if (i.siblingAtColumn(OdTreeModel::Value).flags() & Qt::ItemIsEditable) {
             if (i.column() != OdTreeModel::Value) editValue(i);  // on the value itself the view edits
-        } else readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
+        } else
+            readEntry(static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt()),
+                      static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt()));
     });
     connect(view_, &QWidget::customContextMenuRequested, this, &ObjectDictionaryDock::contextMenu);
-    connect(model_, &OdTreeModel::writeRequested, this, [this](uint16_t index, uint8_t sub, const od::Value& v) { writeEntry(index, sub, v); });
+    connect(model_, &OdTreeModel::writeRequested, this,
+            [this](uint16_t index, uint8_t sub, const od::Value& v) { writeEntry(index, sub, v); });
 }
 
 void ObjectDictionaryDock::editValue(const QModelIndex& row) {
@@ -192,7 +201,11 @@ void ObjectDictionaryDock::editValue(const QModelIndex& row) {
     const auto sub = static_cast<uint8_t>(row.data(OdTreeModel::SubRole).toInt());
     if (refuseIfOffline(tr("Write %1").arg(canopen::objectRef(index, sub)))) return;
     if (const od::SubObject* e = model_->dictionary().entry(index, sub); e && !od::isWritable(e->access))
-        showMessage(tr("%1 %2 is %3: not writable").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), od::accessName(e->access)), true);
+        showMessage(tr("%1 %2 is %3: not writable")
+                        .arg(canopen::objectRef(index, sub),
+                             dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()),
+                             od::accessName(e->access)),
+                    true);
 }
 
 void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
@@ -203,21 +216,27 @@ void ObjectDictionaryDock::contextMenu(const QPoint& pos) {
         const auto index = static_cast<uint16_t>(i.data(OdTreeModel::IndexRole).toInt());
         const auto sub = static_cast<uint8_t>(i.data(OdTreeModel::SubRole).toInt());
         const od::SubObject* e = model_->dictionary().entry(index, sub);
-        addMenuTitle(menu, QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage())));
+        addMenuTitle(menu, QStringLiteral("%1 %2").arg(canopen::objectRef(index, sub),
+                                                       dissect::localDisplayName(model_->dictionary(), index, sub,
+                                                                                 dissect::vendorTextLanguage())));
         readSelected_->setEnabled(canTransmit() && e && od::isReadable(e->access));
         writeSelected_->setEnabled(canTransmit() && e && od::isWritable(e->access));
         menu.addAction(readSelected_);
         menu.addAction(writeSelected_);
         const QString value = model_->actualText(index, sub);
-        menu.addAction(tr("Copy value"), this, [value] { QApplication::clipboard()->setText(value); })->setEnabled(!value.isEmpty());
+        menu.addAction(tr("Copy value"), this, [value] { QApplication::clipboard()->setText(value); })
+            ->setEnabled(!value.isEmpty());
         const QString error = model_->errorText(index, sub);
-        if (!error.isEmpty()) menu.addAction(tr("Copy error"), this, [error] { QApplication::clipboard()->setText(error); });
+        if (!error.isEmpty())
+            menu.addAction(tr("Copy error"), this, [error] { QApplication::clipboard()->setText(error); });
         menu.addSeparator();
     }
     menu.addAction(readAll_);
     menu.addAction(tr("Expand all"), view_, &QTreeView::expandAll);
     menu.addAction(tr("Collapse all"), view_, &QTreeView::collapseAll);
-    if (!canTransmit()) menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: SDO disabled") : tr("Not connected"));
+    if (!canTransmit())
+        menu.addSection(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only: SDO disabled")
+                                                                               : tr("Not connected"));
     menu.exec(view_->viewport()->mapToGlobal(pos));
     updateEnabled();  // the menu enabled Read/Write for its entry; F2 works on any row again
 }
@@ -253,7 +272,8 @@ void ObjectDictionaryDock::rebind() {
 void ObjectDictionaryDock::setNode(int node) {
     if (node == node_) return;
     const int previous = node_;
-    if (previous > 0 && model_->hasDictionary()) kept_[previous] = {dictName_, model_->values(), messageLine_->text(), messageIsError_, {}};
+    if (previous > 0 && model_->hasDictionary())
+        kept_[previous] = {dictName_, model_->values(), messageLine_->text(), messageIsError_, {}};
     node_ = node;
     autoPicked_ = false;
     autoReadDone_ = false;
@@ -340,7 +360,8 @@ void ObjectDictionaryDock::refresh() {
     if (node_ > 0) {
         const auto info = workspace_->nodes().node(node_);
         if (info && info->dictionary != dictName_) loadDictionary();
-        if (autoPicked_ && !autoReadDone_ && model_->hasDictionary() && canTransmit() && workspace_->bus()->url().scheme == u"sim" && !isBusy()) {
+        if (autoPicked_ && !autoReadDone_ && model_->hasDictionary() && canTransmit() &&
+            workspace_->bus()->url().scheme == u"sim" && !isBusy()) {
             autoReadDone_ = true;
             readAll();
         }
@@ -349,7 +370,9 @@ void ObjectDictionaryDock::refresh() {
     if (lastCanTransmit_ != canTransmit() || isBusy() || lastBusy_) updateEnabled();
 }
 
-bool ObjectDictionaryDock::hasContent() const { return model_->hasDictionary() && readAllFinished_ && model_->valuesRead() > 0; }
+bool ObjectDictionaryDock::hasContent() const {
+    return model_->hasDictionary() && readAllFinished_ && model_->valuesRead() > 0;
+}
 
 bool ObjectDictionaryDock::isBusy() const { return config_ && config_->isRunning(); }
 
@@ -364,18 +387,22 @@ void ObjectDictionaryDock::updateHeader() {
     const auto info = workspace_->nodes().node(node_);
     QString text = tr("<b>Node %1</b>").arg(node_);
     if (info && !info->deviceName.isEmpty()) text += QStringLiteral(" · %1").arg(info->deviceName.toHtmlEscaped());
-    text += dictName_.isEmpty() ? tr(" · <span style='color:#b00020'>no dictionary</span>") : QStringLiteral(" · %1").arg(dictName_.toHtmlEscaped());
+    text += dictName_.isEmpty() ? tr(" · <span style='color:#b00020'>no dictionary</span>")
+                                : QStringLiteral(" · %1").arg(dictName_.toHtmlEscaped());
     if (model_->hasDictionary())
         text += tr(" · %1 entries, %2 read").arg(model_->entryCount()).arg(model_->valuesRead());
     if (!canTransmit())
-        text += workspace_->bus() && workspace_->bus()->isListenOnly() ? tr(" · <i>listen-only: no SDO</i>") : tr(" · <i>offline: no SDO</i>");
+        text += workspace_->bus() && workspace_->bus()->isListenOnly() ? tr(" · <i>listen-only: no SDO</i>")
+                                                                       : tr(" · <i>offline: no SDO</i>");
     header_->setText(text);
     const bool have = model_->hasDictionary();
     noDictionary_->setVisible(!have);
     view_->setVisible(have);
     if (!have)
-        noDictionaryText_->setText(tr("No dictionary is known for node %1: it was not identified (1018h) or matched none in the library. "
-                                      "Assign one to see its objects.").arg(node_));
+        noDictionaryText_->setText(
+            tr("No dictionary is known for node %1: it was not identified (1018h) or matched none in the library. "
+               "Assign one to see its objects.")
+                .arg(node_));
 }
 
 void ObjectDictionaryDock::updateEnabled() {
@@ -411,14 +438,17 @@ QString ObjectDictionaryDock::messageText() const { return messageLine_->text();
 
 bool ObjectDictionaryDock::confirm(const QString& title, const QString& question) {
     if (autoConfirm_) return true;
-    return QMessageBox::question(this, title, question, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Yes;
+    return QMessageBox::question(this, title, question, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) ==
+           QMessageBox::Yes;
 }
 
 bool ObjectDictionaryDock::refuseIfOffline(const QString& what) {
     if (canTransmit() && node_ > 0 && model_->hasDictionary()) return false;
     if (node_ <= 0) showMessage(tr("%1: no node selected").arg(what), true);
-    else if (!model_->hasDictionary()) showMessage(tr("%1: no dictionary for node %2 (assign one)").arg(what).arg(node_), true);
-    else if (workspace_->bus() && workspace_->bus()->isListenOnly()) showMessage(tr("%1: the bus is listen-only, nothing is sent").arg(what), true);
+    else if (!model_->hasDictionary())
+        showMessage(tr("%1: no dictionary for node %2 (assign one)").arg(what).arg(node_), true);
+    else if (workspace_->bus() && workspace_->bus()->isListenOnly())
+        showMessage(tr("%1: the bus is listen-only, nothing is sent").arg(what), true);
     else showMessage(tr("%1: not connected to a bus").arg(what), true);
     return true;
 }
@@ -430,34 +460,50 @@ bool ObjectDictionaryDock::upload(uint16_t index, uint8_t sub, bool announce) {
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return false;
     if (!od::isReadable(e->access)) {
-        showMessage(tr("%1 %2 is write-only").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage())), true);
+        showMessage(tr("%1 %2 is write-only")
+                        .arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub,
+                                                                                       dissect::vendorTextLanguage())),
+                    true);
         return false;
     }
     model_->setState(index, sub, OdTreeModel::State::Reading);
     QPointer<ObjectDictionaryDock> self(this);
     const quint64 gen = generation_;
-    workspace_->sdo()->upload(static_cast<uint8_t>(node_), index, sub, [self, gen, index, sub, announce](const canopen::SdoResult& r) {
-        if (!self || self->generation_ != gen) return;
-        if (r.ok) {
-            self->model_->setUploaded(index, sub, r.data);
-            const QString err = self->model_->errorText(index, sub);
-            if (!err.isEmpty()) self->showMessage(err, true);
-            else if (announce) self->showMessage(tr("Node %1 %2 %3 = %4").arg(r.node).arg(canopen::objectRef(index, sub), dissect::localDisplayName(self->model_->dictionary(), index, sub, dissect::vendorTextLanguage()),
-                                                                        self->model_->actualText(index, sub)));
-        } else {
-            self->model_->setError(index, sub, r.error);
-            self->showMessage(r.error, true);
-        }
-        self->updateHeader();
-    });
+    workspace_->sdo()->upload(
+        static_cast<uint8_t>(node_), index, sub, [self, gen, index, sub, announce](const canopen::SdoResult& r) {
+            if (!self || self->generation_ != gen) return;
+            if (r.ok) {
+                self->model_->setUploaded(index, sub, r.data);
+                const QString err = self->model_->errorText(index, sub);
+                if (!err.isEmpty()) self->showMessage(err, true);
+                else if (announce)
+                    self->showMessage(tr("Node %1 %2 %3 = %4")
+                                          .arg(r.node)
+                                          .arg(canopen::objectRef(index, sub),
+                                               dissect::localDisplayName(self->model_->dictionary(), index, sub,
+                                                                         dissect::vendorTextLanguage()),
+                                               self->model_->actualText(index, sub)));
+            } else {
+                self->model_->setError(index, sub, r.error);
+                self->showMessage(r.error, true);
+            }
+            self->updateHeader();
+        });
     return true;
 }
 
 QString ObjectDictionaryDock::writeQuestion(uint16_t index, uint8_t sub, const od::Value& value) const {
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return {};
-    const QString ref = QStringLiteral("%1h:%2").arg(index, 4, 16, QLatin1Char('0')).arg(sub, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("H:"), QLatin1String("h:"));
-    return tr("Write %1 %2 = %3 to node %4?").arg(ref, dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), model_->valueText(*e, value)).arg(node_);
+    const QString ref = QStringLiteral("%1h:%2")
+                            .arg(index, 4, 16, QLatin1Char('0'))
+                            .arg(sub, 2, 16, QLatin1Char('0'))
+                            .toUpper()
+                            .replace(QLatin1String("H:"), QLatin1String("h:"));
+    return tr("Write %1 %2 = %3 to node %4?")
+        .arg(ref, dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()),
+             model_->valueText(*e, value))
+        .arg(node_);
 }
 
 bool ObjectDictionaryDock::writeEntryText(uint16_t index, uint8_t sub, const QString& text) {
@@ -477,7 +523,11 @@ bool ObjectDictionaryDock::writeEntry(uint16_t index, uint8_t sub, const od::Val
     const od::SubObject* e = model_->dictionary().entry(index, sub);
     if (!e) return false;
     if (!od::isWritable(e->access)) {
-        showMessage(tr("%1 %2 is %3: not writable").arg(canopen::objectRef(index, sub), dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()), od::accessName(e->access)), true);
+        showMessage(tr("%1 %2 is %3: not writable")
+                        .arg(canopen::objectRef(index, sub),
+                             dissect::localDisplayName(model_->dictionary(), index, sub, dissect::vendorTextLanguage()),
+                             od::accessName(e->access)),
+                    true);
         return false;
     }
     QString encError;
@@ -487,24 +537,27 @@ bool ObjectDictionaryDock::writeEntry(uint16_t index, uint8_t sub, const od::Val
         return false;
     }
     const QString question = writeQuestion(index, sub, value);
-    if (!confirm(tr("Write object"), question + tr("\n\nSDO download of %n byte(s): %1", nullptr, static_cast<int>(data.size())).arg(QString::fromLatin1(data.toHex(' ').toUpper()))))
+    if (!confirm(tr("Write object"),
+                 question + tr("\n\nSDO download of %n byte(s): %1", nullptr, static_cast<int>(data.size()))
+                                .arg(QString::fromLatin1(data.toHex(' ').toUpper()))))
         return false;
     model_->setState(index, sub, OdTreeModel::State::Writing);
     QPointer<ObjectDictionaryDock> self(this);
     const quint64 gen = generation_;
     const QString what = model_->valueText(*e, value);
-    workspace_->sdo()->download(static_cast<uint8_t>(node_), index, sub, data, [self, gen, index, sub, what](const canopen::SdoResult& r) {
-        if (!self || self->generation_ != gen) return;
-        if (!r.ok) {
-            self->model_->setError(index, sub, r.error);
-            self->showMessage(r.error, true);
-            return;
-        }
-        self->showMessage(tr("Node %1 %2 written: %3").arg(r.node).arg(canopen::objectRef(index, sub), what));
-        // Read back what the node holds now (it may round or refuse silently).
-        if (od::isReadable(self->model_->dictionary().entry(index, sub)->access)) self->readEntry(index, sub);
-        else self->model_->setState(index, sub, OdTreeModel::State::Unknown);
-    });
+    workspace_->sdo()->download(
+        static_cast<uint8_t>(node_), index, sub, data, [self, gen, index, sub, what](const canopen::SdoResult& r) {
+            if (!self || self->generation_ != gen) return;
+            if (!r.ok) {
+                self->model_->setError(index, sub, r.error);
+                self->showMessage(r.error, true);
+                return;
+            }
+            self->showMessage(tr("Node %1 %2 written: %3").arg(r.node).arg(canopen::objectRef(index, sub), what));
+            // Read back what the node holds now (it may round or refuse silently).
+            if (od::isReadable(self->model_->dictionary().entry(index, sub)->access)) self->readEntry(index, sub);
+            else self->model_->setState(index, sub, OdTreeModel::State::Unknown);
+        });
     return true;
 }
 
@@ -547,7 +600,12 @@ void ObjectDictionaryDock::onReadAllDone(int failed, bool cancelled) {
     readAllFinished_ = !cancelled;
     const int read = model_->valuesRead();
     if (cancelled) showMessage(tr("Read of node %1 cancelled: %2 values read").arg(node_).arg(read));
-    else if (failed) showMessage(tr("Node %1: %2 values read, %3 refused (red rows; the tool tip has the abort text)").arg(node_).arg(read).arg(failed), true);
+    else if (failed)
+        showMessage(tr("Node %1: %2 values read, %3 refused (red rows; the tool tip has the abort text)")
+                        .arg(node_)
+                        .arg(read)
+                        .arg(failed),
+                    true);
     else showMessage(tr("Node %1: %2 values read").arg(node_).arg(read));
     updateEnabled();
     if (!pendingExport_.isEmpty()) {

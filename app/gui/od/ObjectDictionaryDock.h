@@ -56,7 +56,7 @@ public:
     // The workspace's source changed: another bus or log starts with no node shown, no message
     // and no progress; after a disconnect the node stays (the same trace is reviewed).
     void rebind();
-    void refresh();  // the window's ≤ 30 Hz tick
+    void refresh();          // the window's ≤ 30 Hz tick
     void setNode(int node);  // -1 = none
     int node() const { return node_; }
     // True when there is something worth a screenshot (a node's dictionary with values).
@@ -155,11 +155,11 @@ private:
 
     std::weak_ptr<const TraceStore> store_;  // the trace the shown node belongs to
     int node_ = -1;
-    QString dictName_;      // the dictionary shown ("" = none)
+    QString dictName_;  // the dictionary shown ("" = none)
     bool autoPicked_ = false;
     bool autoReadDone_ = false;
     bool readAllFinished_ = false;
-    QString pendingExport_;  // export once read-all finishes
+    QString pendingExport_;   // export once read-all finishes
     quint64 generation_ = 0;  // bumped when node, dictionary or bus change: late answers are dropped
     bool autoConfirm_ = false;
     bool lastCanTransmit_ = false;

@@ -38,21 +38,27 @@ bool ObjectDictionaryDock::writeDcfFile(const QString& path) {
     QString error;
     if (path.endsWith(QStringLiteral(".bin"), Qt::CaseInsensitive)) {
         // Concise DCF (CiA 302-3, 1F22h) of the values read: what "Apply DCF" would write.
-        const canopen::ApplyPlan plan = canopen::DeviceConfiguration::plan(static_cast<uint8_t>(node_), out, nullptr, canopen::ApplyScope::AllValues);
+        const canopen::ApplyPlan plan = canopen::DeviceConfiguration::plan(static_cast<uint8_t>(node_), out, nullptr,
+                                                                           canopen::ApplyScope::AllValues);
         const QByteArray bytes = canopen::conciseDcf(plan);
         QFile f(path);
         if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size()) {
             showMessage(tr("Export of node %1 failed: %2").arg(node_).arg(f.errorString()), true);
             return false;
         }
-        showMessage(tr("Node %1: concise DCF with %2 entries (%3 bytes) exported to %4").arg(node_).arg(plan.writes.size()).arg(bytes.size()).arg(QFileInfo(path).fileName()));
+        showMessage(tr("Node %1: concise DCF with %2 entries (%3 bytes) exported to %4")
+                        .arg(node_)
+                        .arg(plan.writes.size())
+                        .arg(bytes.size())
+                        .arg(QFileInfo(path).fileName()));
         return true;
     }
     if (!eds::DcfWriter::writeFile(out, path, &error)) {
         showMessage(tr("Export of node %1 failed: %2").arg(node_).arg(error), true);
         return false;
     }
-    showMessage(tr("Node %1: %2 values exported to %3").arg(node_).arg(model_->valuesRead()).arg(QFileInfo(path).fileName()));
+    showMessage(
+        tr("Node %1: %2 values exported to %3").arg(node_).arg(model_->valuesRead()).arg(QFileInfo(path).fileName()));
     return true;
 }
 
@@ -82,20 +88,26 @@ bool ObjectDictionaryDock::applyDcf(const QString& path) {
     }
     eds::ReadResult r = eds::readDictionaryFile(path);
     if (!r.usable) {
-        showMessage(tr("%1 is not a usable DCF: %2").arg(QFileInfo(path).fileName(),
-                                                        r.diagnostics.empty() ? tr("no object could be read") : r.diagnostics.front().toString()), true);
+        showMessage(tr("%1 is not a usable DCF: %2")
+                        .arg(QFileInfo(path).fileName(),
+                             r.diagnostics.empty() ? tr("no object could be read") : r.diagnostics.front().toString()),
+                    true);
         return false;
     }
     auto pending = std::make_shared<PendingApply>();
     pending->path = path;
     pending->dcf = std::move(r.dictionary);
     pending->generation = generation_;
-    const canopen::ApplyPlan all = canopen::DeviceConfiguration::plan(static_cast<uint8_t>(node_), pending->dcf, nullptr, canopen::ApplyScope::AllValues);
+    const canopen::ApplyPlan all = canopen::DeviceConfiguration::plan(static_cast<uint8_t>(node_), pending->dcf,
+                                                                      nullptr, canopen::ApplyScope::AllValues);
     const auto entries = canopen::DeviceConfiguration::planEntries(all);
     // Read the node's current values of the candidates first: only what differs is written.
     progress_->setRange(0, std::max<int>(1, static_cast<int>(entries.size())));
     progress_->setValue(0);
-    showMessage(tr("Reading node %1's current values of the %2 candidates in %3…").arg(node_).arg(entries.size()).arg(QFileInfo(path).fileName()));
+    showMessage(tr("Reading node %1's current values of the %2 candidates in %3…")
+                    .arg(node_)
+                    .arg(entries.size())
+                    .arg(QFileInfo(path).fileName()));
     QPointer<ObjectDictionaryDock> self(this);
     config_->read(
         static_cast<uint8_t>(node_), pending->dcf, entries,
@@ -104,7 +116,8 @@ bool ObjectDictionaryDock::applyDcf(const QString& path) {
         },
         [self, pending](const canopen::ConfigReadResult& current) {
             if (!self || self->generation_ != pending->generation) return;
-            pending->plan = canopen::DeviceConfiguration::plan(current.node, pending->dcf, &current.values, canopen::ApplyScope::OnlyDifferent);
+            pending->plan = canopen::DeviceConfiguration::plan(current.node, pending->dcf, &current.values,
+                                                               canopen::ApplyScope::OnlyDifferent);
             self->updateEnabled();
             if (current.cancelled) {
                 self->showMessage(tr("Apply DCF cancelled"));
@@ -131,7 +144,10 @@ bool ObjectDictionaryDock::applyDcf(const QString& path) {
 void ObjectDictionaryDock::runApply(std::shared_ptr<PendingApply> pending) {
     const canopen::ApplyPlan& plan = pending->plan;
     if (plan.writes.empty()) {
-        showMessage(tr("Node %1 already has every value of %2 (%3 entries not written)").arg(plan.node).arg(QFileInfo(pending->path).fileName()).arg(plan.skipped.size()));
+        showMessage(tr("Node %1 already has every value of %2 (%3 entries not written)")
+                        .arg(plan.node)
+                        .arg(QFileInfo(pending->path).fileName())
+                        .arg(plan.skipped.size()));
         applyResults_.clear();
         return;
     }
@@ -161,9 +177,16 @@ void ObjectDictionaryDock::runApply(std::shared_ptr<PendingApply> pending) {
             }
             if (failed)
                 self->showMessage(tr("DCF applied to node %1: %2 written, %3 refused — first: %4")
-                                      .arg(pending->plan.node).arg(results.size() - failed).arg(failed).arg(firstError), true);
+                                      .arg(pending->plan.node)
+                                      .arg(results.size() - failed)
+                                      .arg(failed)
+                                      .arg(firstError),
+                                  true);
             else
-                self->showMessage(tr("DCF applied to node %1: %2 objects written%3").arg(pending->plan.node).arg(results.size()).arg(cancelled ? tr(" (cancelled)") : QString()));
+                self->showMessage(tr("DCF applied to node %1: %2 objects written%3")
+                                      .arg(pending->plan.node)
+                                      .arg(results.size())
+                                      .arg(cancelled ? tr(" (cancelled)") : QString()));
             if (self->applyDialog_) self->applyDialog_->showResults(results, cancelled);
             self->updateEnabled();
         });

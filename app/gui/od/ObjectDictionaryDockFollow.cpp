@@ -17,7 +17,8 @@ namespace coscope::gui {
 
 void ObjectDictionaryDock::watchSdo() {
     disconnect(sdoWritten_);
-    if (auto* sdo = workspace_->sdo()) sdoWritten_ = connect(sdo, &canopen::SdoClient::written, this, &ObjectDictionaryDock::onWritten);
+    if (auto* sdo = workspace_->sdo())
+        sdoWritten_ = connect(sdo, &canopen::SdoClient::written, this, &ObjectDictionaryDock::onWritten);
     movesSeen_ = workspace_->nodes().moves().size();
 }
 
@@ -25,7 +26,8 @@ void ObjectDictionaryDock::onWritten(quint8 node, quint16 index, quint8 sub, con
     if (node == node_ && model_->hasDictionary()) {
         const od::SubObject* e = model_->dictionary().entry(index, sub);
         // The confirmed download is what the node holds now (CiA 301 §7.2.4.3.3/§7.2.4.3.5).
-        if (e && canopen::DeviceConfiguration::decodeUpload(e->dataType, data).ok()) model_->setUploaded(index, sub, data);
+        if (e && canopen::DeviceConfiguration::decodeUpload(e->dataType, data).ok())
+            model_->setUploaded(index, sub, data);
         updateHeader();
         return;
     }
@@ -37,7 +39,8 @@ void ObjectDictionaryDock::applyWritten(const KeptNode& kept) {
         const auto index = static_cast<uint16_t>(key >> 8);
         const auto sub = static_cast<uint8_t>(key & 0xFF);
         const od::SubObject* e = model_->dictionary().entry(index, sub);
-        if (e && canopen::DeviceConfiguration::decodeUpload(e->dataType, data).ok()) model_->setUploaded(index, sub, data);
+        if (e && canopen::DeviceConfiguration::decodeUpload(e->dataType, data).ok())
+            model_->setUploaded(index, sub, data);
     }
 }
 
@@ -50,7 +53,10 @@ void ObjectDictionaryDock::followMoves() {
         kept_.erase(to);
         if (node_ == from) {
             setNode(to);
-            showMessage(tr("Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; read them again.").arg(from).arg(to));
+            showMessage(tr("Node %1 now answers at node-ID %2: showing node %2. Values read at node %1 were dropped; "
+                           "read them again.")
+                            .arg(from)
+                            .arg(to));
         }
         kept_.erase(from);
     }

@@ -3,8 +3,8 @@
 
 #include "app/gui/language/CoreText.h"
 
-#include "core/canopen/Ds402.h"
 #include "core/canopen/DeviceConfiguration.h"
+#include "core/canopen/Ds402.h"
 #include "core/od/NumberNotation.h"
 #include "dissectors/ObjectNames.h"
 #include "dissectors/ParameterNames.h"
@@ -29,7 +29,8 @@ QString OdTreeModel::localName(uint16_t index, int sub, const QString& edsName) 
     // A standard object of a bundled dictionary as the manuals name it, a vendor parameter with
     // its Chinese name; a user's EDS as written (dissectors/ObjectNames.h).
     const QString lang = dissect::vendorTextLanguage();
-    return dissect::localParameterName(dissect::localObjectName(dictionary_.bundledName, index, sub, edsName, lang), lang);
+    return dissect::localParameterName(dissect::localObjectName(dictionary_.bundledName, index, sub, edsName, lang),
+                                       lang);
 }
 
 OdTreeModel::OdTreeModel(QObject* parent) : QAbstractItemModel(parent) {}
@@ -42,7 +43,9 @@ void OdTreeModel::setDictionary(const od::ObjectDictionary& dictionary, uint8_t 
     states_.clear();
     valuesRead_ = 0;
     for (const auto& [index, obj] : dictionary_.objects()) {
-        if (obj.objectType == od::ObjectType::DefType || obj.objectType == od::ObjectType::DefStruct || obj.subs.empty()) continue;
+        if (obj.objectType == od::ObjectType::DefType || obj.objectType == od::ObjectType::DefStruct ||
+            obj.subs.empty())
+            continue;
         rows_.push_back({index, obj.isComposite() || obj.subs.size() > 1 || obj.subs.front().sub != 0});
     }
     endResetModel();
@@ -74,7 +77,8 @@ void OdTreeModel::setValues(const NodeValues& values) {
 
 const od::Object* OdTreeModel::objectAt(const QModelIndex& index) const {
     if (!index.isValid()) return nullptr;
-    const size_t row = index.internalId() == 0 ? static_cast<size_t>(index.row()) : static_cast<size_t>(index.internalId() - 1);
+    const size_t row =
+        index.internalId() == 0 ? static_cast<size_t>(index.row()) : static_cast<size_t>(index.internalId() - 1);
     return row < rows_.size() ? dictionary_.object(rows_[row].index) : nullptr;
 }
 
@@ -89,7 +93,8 @@ const od::SubObject* OdTreeModel::entryAt(const QModelIndex& index) const {
 }
 
 QModelIndex OdTreeModel::indexOf(uint16_t index, uint8_t sub, int column) const {
-    auto it = std::lower_bound(rows_.begin(), rows_.end(), index, [](const ObjectRow& r, uint16_t i) { return r.index < i; });
+    auto it =
+        std::lower_bound(rows_.begin(), rows_.end(), index, [](const ObjectRow& r, uint16_t i) { return r.index < i; });
     if (it == rows_.end() || it->index != index) return {};
     const int objRow = static_cast<int>(it - rows_.begin());
     if (!it->composite) return sub == 0 ? createIndex(objRow, column, quintptr(0)) : QModelIndex();
@@ -101,7 +106,8 @@ QModelIndex OdTreeModel::indexOf(uint16_t index, uint8_t sub, int column) const 
 
 QModelIndex OdTreeModel::index(int row, int column, const QModelIndex& parent) const {
     if (row < 0 || column < 0 || column >= ColumnCount) return {};
-    if (!parent.isValid()) return row < static_cast<int>(rows_.size()) ? createIndex(row, column, quintptr(0)) : QModelIndex();
+    if (!parent.isValid())
+        return row < static_cast<int>(rows_.size()) ? createIndex(row, column, quintptr(0)) : QModelIndex();
     if (parent.internalId() != 0 || !rows_[static_cast<size_t>(parent.row())].composite) return {};
     const od::Object* obj = dictionary_.object(rows_[static_cast<size_t>(parent.row())].index);
     if (!obj || row >= static_cast<int>(obj->subs.size())) return {};
@@ -130,7 +136,8 @@ QString OdTreeModel::valueText(const od::SubObject& e, const od::Value& v, bool 
         if (withUnit) o.unit = u->text;
         o.factor = u->factor;
     }
-    const uint16_t base = e.index >= 0x6000 && e.index < 0xA000 ? static_cast<uint16_t>(0x6000 + (e.index - 0x6000) % 0x800) : e.index;
+    const uint16_t base =
+        e.index >= 0x6000 && e.index < 0xA000 ? static_cast<uint16_t>(0x6000 + (e.index - 0x6000) % 0x800) : e.index;
     if ((base == 0x6060 || base == 0x6061) && e.sub == 0 && od::isInteger(e.dataType)) {
         const QString mode = coreText(canopen::ds402::modeName(static_cast<int8_t>(v.toInt64().value_or(0))));
         return mode.isEmpty() ? v.format(e.dataType, o) : QStringLiteral("%1 (%2)").arg(v.format(e.dataType, o), mode);
@@ -153,10 +160,12 @@ QString OdTreeModel::statuswordBitsText(const od::SubObject& e, const od::Value&
     const auto sw = v.toUInt64();
     if (!sw) return {};
     std::optional<int8_t> mode;
-    if (const auto m = actualValue(static_cast<uint16_t>(e.index + 0x20), 0)) mode = static_cast<int8_t>(m->toInt64().value_or(0));
+    if (const auto m = actualValue(static_cast<uint16_t>(e.index + 0x20), 0))
+        mode = static_cast<int8_t>(m->toInt64().value_or(0));
     QStringList bits;
     for (const QString& b : canopen::ds402::statuswordBits(static_cast<uint16_t>(*sw), mode)) bits << coreText(b);
-    return QCoreApplication::translate("OdTreeModel", "\nBits on: %1").arg(bits.isEmpty() ? QStringLiteral("—") : bits.join(QStringLiteral(", ")));
+    return QCoreApplication::translate("OdTreeModel", "\nBits on: %1")
+        .arg(bits.isEmpty() ? QStringLiteral("—") : bits.join(QStringLiteral(", ")));
 }
 
 QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
@@ -181,9 +190,14 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
     }
     if (role == ErrorRole) return st ? st->error : QString();
     if (role == SearchRole) {
-        QString t = hexIndex(obj->index) + u' ' + QStringLiteral("%1").arg(obj->index, 4, 16, QLatin1Char('0')) + u' ' + obj->name;
-        if (e && !objectRow) t += u' ' + QStringLiteral("%1:%2").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0')) + u' ' + e->name;
-        if (objectRow) for (const auto& s : obj->subs) t += u' ' + s.name;
+        QString t = hexIndex(obj->index) + u' ' + QStringLiteral("%1").arg(obj->index, 4, 16, QLatin1Char('0')) + u' ' +
+                    obj->name;
+        if (e && !objectRow)
+            t += u' ' +
+                 QStringLiteral("%1:%2").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0')) +
+                 u' ' + e->name;
+        if (objectRow)
+            for (const auto& s : obj->subs) t += u' ' + s.name;
         // The names shown (Chinese) are found too.
         t += u' ' + localName(obj->index, -1, obj->name);
         if (e && !objectRow) t += u' ' + localName(obj->index, e->sub, e->name);
@@ -200,7 +214,9 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
             }
         }
         switch (col) {
-        case Object: return objectRow ? hexIndex(obj->index) : QCoreApplication::translate("OdTreeModel", "sub %1").arg(hexSub(e->sub));
+        case Object:
+            return objectRow ? hexIndex(obj->index)
+                             : QCoreApplication::translate("OdTreeModel", "sub %1").arg(hexSub(e->sub));
         case Name: return objectRow ? localName(obj->index, -1, obj->name) : localName(obj->index, e->sub, e->name);
         case Type: return od::dataTypeName(e->dataType);
         case Access: return od::accessName(e->access);
@@ -217,10 +233,13 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
                 return d ? d->format(e->dataType) : QString();
             }
             if (!st) return {};
-            if (st->state == State::Reading) return st->value ? valueText(*e, *st->value, false) + QStringLiteral("  …") : QCoreApplication::translate("OdTreeModel", "reading…");
+            if (st->state == State::Reading)
+                return st->value ? valueText(*e, *st->value, false) + QStringLiteral("  …")
+                                 : QCoreApplication::translate("OdTreeModel", "reading…");
             if (st->state == State::Writing) return QCoreApplication::translate("OdTreeModel", "writing…");
             if (st->state == State::Error) {
-                const QString prefix = st->value ? valueText(*e, *st->value, false) + QStringLiteral("  ⚠ ") : QStringLiteral("⚠ ");
+                const QString prefix =
+                    st->value ? valueText(*e, *st->value, false) + QStringLiteral("  ⚠ ") : QStringLiteral("⚠ ");
                 return prefix + st->error.section(QStringLiteral(": "), 1);
             }
             return st->value ? valueText(*e, *st->value, false) : QString();
@@ -244,10 +263,15 @@ QVariant OdTreeModel::data(const QModelIndex& index, int role) const {
         // The name shown, and the EDS's own when the view shows a translated one.
         const QString eds = dictionary_.displayName(e->index, e->sub);
         const QString shown = dissect::localDisplayName(dictionary_, e->index, e->sub, dissect::vendorTextLanguage());
-        QString tip = QStringLiteral("%1:%2 %3\n%4, %5%6").arg(obj->index, 4, 16, QLatin1Char('0')).arg(e->sub, 2, 16, QLatin1Char('0'))
-                          .arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::dataTypeName(e->dataType), od::accessName(e->access),
-                               e->pdoMappable ? QCoreApplication::translate("OdTreeModel", ", PDO-mappable") : QString());
-        if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty()) tip += QCoreApplication::translate("OdTreeModel", "\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
+        QString tip =
+            QStringLiteral("%1:%2 %3\n%4, %5%6")
+                .arg(obj->index, 4, 16, QLatin1Char('0'))
+                .arg(e->sub, 2, 16, QLatin1Char('0'))
+                .arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::dataTypeName(e->dataType),
+                     od::accessName(e->access),
+                     e->pdoMappable ? QCoreApplication::translate("OdTreeModel", ", PDO-mappable") : QString());
+        if (!e->lowLimit.isEmpty() || !e->highLimit.isEmpty())
+            tip += QCoreApplication::translate("OdTreeModel", "\nLimits: %1 … %2").arg(e->lowLimit, e->highLimit);
         if (st && st->changed) tip += QCoreApplication::translate("OdTreeModel", "\nDiffers from the default");
         if (st && st->value) tip += statuswordBitsText(*e, *st->value);
         return tip;
@@ -274,7 +298,10 @@ bool OdTreeModel::setData(const QModelIndex& index, const QVariant& value, int r
     // The editors hand over text, parsed here as the entry's type within its limits.
     const od::ValueResult r = od::Value::parse(e->dataType, value.toString(), e->limits());
     if (!r.ok()) {
-        setError(e->index, e->sub, QCoreApplication::translate("OdTreeModel", "node %1 %2: %3").arg(node_).arg(canopen::objectRef(e->index, e->sub), r.error));
+        setError(e->index, e->sub,
+                 QCoreApplication::translate("OdTreeModel", "node %1 %2: %3")
+                     .arg(node_)
+                     .arg(canopen::objectRef(e->index, e->sub), r.error));
         return false;
     }
     emit writeRequested(e->index, e->sub, r.value);
@@ -326,7 +353,9 @@ void OdTreeModel::setUploaded(uint16_t index, uint8_t sub, const QByteArray& dat
     const od::ValueResult v = canopen::DeviceConfiguration::decodeUpload(e->dataType, data);
     if (!v.ok()) {
         s.state = State::Error;
-        s.error = QCoreApplication::translate("OdTreeModel", "node %1 %2: %3 (bytes %4)").arg(node_).arg(canopen::objectRef(index, sub), v.error, QString::fromLatin1(data.toHex(' ')));
+        s.error = QCoreApplication::translate("OdTreeModel", "node %1 %2: %3 (bytes %4)")
+                      .arg(node_)
+                      .arg(canopen::objectRef(index, sub), v.error, QString::fromLatin1(data.toHex(' ')));
     } else {
         if (!s.value) ++valuesRead_;
         s.state = State::Read;

@@ -22,14 +22,16 @@ namespace {
 const od::SubObject* entryOf(const OdTreeModel* model, const QModelIndex& index) {
     const int sub = index.data(OdTreeModel::SubRole).toInt();
     if (sub < 0) return nullptr;
-    return model->dictionary().entry(static_cast<uint16_t>(index.data(OdTreeModel::IndexRole).toInt()), static_cast<uint8_t>(sub));
+    return model->dictionary().entry(static_cast<uint16_t>(index.data(OdTreeModel::IndexRole).toInt()),
+                                     static_cast<uint8_t>(sub));
 }
 
 }  // namespace
 
 OdValueDelegate::OdValueDelegate(OdTreeModel* model, QObject* parent) : QStyledItemDelegate(parent), model_(model) {}
 
-QWidget* OdValueDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem& option, const QModelIndex& index) const {
+QWidget* OdValueDelegate::createEditor(QWidget* parent, const QStyleOptionViewItem& option,
+                                       const QModelIndex& index) const {
     const od::SubObject* e = entryOf(model_, index);
     if (!e) return nullptr;
     QWidget* editor = nullptr;
@@ -48,7 +50,10 @@ QWidget* OdValueDelegate::createEditor(QWidget* parent, const QStyleOptionViewIt
         spin->setAccelerated(true);
         // Enter or leaving the field with text that does not read: the reason on the value's row.
         connect(spin, &IntegerSpinBox::refused, this, [this, index = e->index, sub = e->sub](const QString& why) {
-            model_->setError(index, sub, QCoreApplication::translate("OdTreeModel", "node %1 %2: %3").arg(model_->node()).arg(canopen::objectRef(index, sub), why));
+            model_->setError(index, sub,
+                             QCoreApplication::translate("OdTreeModel", "node %1 %2: %3")
+                                 .arg(model_->node())
+                                 .arg(canopen::objectRef(index, sub), why));
             emit refused(why);
         });
         editor = spin;
@@ -56,7 +61,8 @@ QWidget* OdValueDelegate::createEditor(QWidget* parent, const QStyleOptionViewIt
     }
     case od::TypeClass::Real: {
         auto* spin = new QDoubleSpinBox(parent);
-        const double max = e->dataType == od::DataType::Real32 ? double(std::numeric_limits<float>::max()) : std::numeric_limits<double>::max();
+        const double max = e->dataType == od::DataType::Real32 ? double(std::numeric_limits<float>::max())
+                                                               : std::numeric_limits<double>::max();
         double lo = -max, hi = max;
         const od::Limits l = e->limits();
         if (l.low) lo = l.low->toDouble().value_or(lo);

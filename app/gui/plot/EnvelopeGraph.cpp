@@ -41,7 +41,8 @@ void EnvelopeGraph::rasterise(const QVector<QPointF>& polyline, QVector<QRect>* 
         *out++ = QRect(column, top, 1, bottom - top + 1);
     };
     for (const QPointF& p : polyline) {
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.x()) > 1e9 || std::abs(p.y()) > 1e9) {  // a gap (NaN value): the line breaks
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.x()) > 1e9 ||
+            std::abs(p.y()) > 1e9) {  // a gap (NaN value): the line breaks
             if (open) flush();
             open = false;
             continue;
@@ -84,7 +85,9 @@ void EnvelopeGraph::mergeColumns(const QVector<QRect>& spans, QVector<QRect>* bl
     };
     std::vector<Band> open, next;
     int last = 0;
-    auto close = [&](int top, int bottom, int since) { blocks->append(QRect(since, top, last - since + 1, bottom - top + 1)); };
+    auto close = [&](int top, int bottom, int since) {
+        blocks->append(QRect(since, top, last - since + 1, bottom - top + 1));
+    };
     auto closeAll = [&] {
         for (const Band& b : open) close(b.top, b.bottom, b.since);
         open.clear();
@@ -121,14 +124,17 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
     if (!device || device->devType() != QInternal::Image) return false;
     auto* image = static_cast<QImage*>(device);
     const QImage::Format f = image->format();
-    if (f != QImage::Format_ARGB32_Premultiplied && f != QImage::Format_ARGB32 && f != QImage::Format_RGB32) return false;
-    if (color.alpha() != 255 || painter->opacity() != 1.0 || painter->compositionMode() != QPainter::CompositionMode_SourceOver) return false;
+    if (f != QImage::Format_ARGB32_Premultiplied && f != QImage::Format_ARGB32 && f != QImage::Format_RGB32)
+        return false;
+    if (color.alpha() != 255 || painter->opacity() != 1.0 ||
+        painter->compositionMode() != QPainter::CompositionMode_SourceOver)
+        return false;
     if (painter->pen().brush().style() != Qt::SolidPattern) return false;
     painter->save();
     painter->setAntialiasing(false);  // QCPPainter drops its half-pixel shift
     const QTransform t = painter->combinedTransform();
-    const bool plain = painter->deviceTransform().isIdentity() && t.type() <= QTransform::TxTranslate && t.dx() == std::round(t.dx()) &&
-                       t.dy() == std::round(t.dy());
+    const bool plain = painter->deviceTransform().isIdentity() && t.type() <= QTransform::TxTranslate &&
+                       t.dx() == std::round(t.dx()) && t.dy() == std::round(t.dy());
     QRect clip = image->rect();
     bool ok = plain;
     if (ok && painter->hasClipping()) {
@@ -144,7 +150,9 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
     const qsizetype stride = image->bytesPerLine();
     // On the plot's own surface the spans go to its canvas: all traces are written in one pass
     // once the last graph is drawn.
-    if (auto* surface = qobject_cast<PlotSurface*>(parentPlot()); surface && w == 1 && surface->canvas().add(image, px, spans_, dx, dy, clip)) return true;
+    if (auto* surface = qobject_cast<PlotSurface*>(parentPlot());
+        surface && w == 1 && surface->canvas().add(image, px, spans_, dx, dy, clip))
+        return true;
     // Row by row over the merged rectangles: consecutive pixels of a row share cache lines,
     // a column's would each touch its own.
     mergeColumns(spans_, &blocks_);
@@ -153,7 +161,8 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
         if (w > 1) r.adjust(-(w - 1) / 2, -(w - 1) / 2, w / 2, w / 2);
         r &= clip;
         if (r.isEmpty()) continue;
-        for (int y = r.top(); y <= r.bottom(); ++y) fillRow(reinterpret_cast<uint32_t*>(bits + y * stride) + r.left(), r.width(), px);
+        for (int y = r.top(); y <= r.bottom(); ++y)
+            fillRow(reinterpret_cast<uint32_t*>(bits + y * stride) + r.left(), r.width(), px);
     }
     return true;
 }
@@ -161,9 +170,11 @@ bool EnvelopeGraph::fillDirect(QCPPainter* painter, const QColor& color, int w) 
 void EnvelopeGraph::draw(QCPPainter* painter) {
     QCPAxis* key = keyAxis();
     QCPAxis* value = valueAxis();
-    const bool plain = key && value && mLineStyle == lsLine && mScatterStyle.isNone() && mBrush.style() == Qt::NoBrush && selection().isEmpty() &&
-                       !painter->modes().testFlag(QCPPainter::pmVectorized) && key->orientation() == Qt::Horizontal && key->scaleType() == QCPAxis::stLinear &&
-                       value->scaleType() == QCPAxis::stLinear && !key->rangeReversed() && !value->rangeReversed();
+    const bool plain = key && value && mLineStyle == lsLine && mScatterStyle.isNone() &&
+                       mBrush.style() == Qt::NoBrush && selection().isEmpty() &&
+                       !painter->modes().testFlag(QCPPainter::pmVectorized) && key->orientation() == Qt::Horizontal &&
+                       key->scaleType() == QCPAxis::stLinear && value->scaleType() == QCPAxis::stLinear &&
+                       !key->rangeReversed() && !value->rangeReversed();
     if (!plain) {
         QCPGraph::draw(painter);
         return;
@@ -177,7 +188,9 @@ void EnvelopeGraph::draw(QCPPainter* painter) {
     const double kSize = kr.size(), kWidth = key->axisRect()->width(), kLeft = key->axisRect()->left();
     const double vSize = vr.size(), vHeight = value->axisRect()->height(), vBottom = value->axisRect()->bottom();
     QPointF* out = lines_.data();
-    for (auto it = begin; it != end; ++it, ++out) *out = QPointF((it->key - kr.lower) / kSize * kWidth + kLeft, vBottom - (it->value - vr.lower) / vSize * vHeight);
+    for (auto it = begin; it != end; ++it, ++out)
+        *out =
+            QPointF((it->key - kr.lower) / kSize * kWidth + kLeft, vBottom - (it->value - vr.lower) / vSize * vHeight);
     painter->setPen(mPen);
     painter->setBrush(Qt::NoBrush);
     drawLinePlot(painter, lines_);

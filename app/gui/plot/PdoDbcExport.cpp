@@ -19,12 +19,14 @@ struct PdoDbcExport {
 }  // namespace
 
 PdoDbcJob::PdoDbcJob(Workspace& workspace, QString path)
-    : Job(PdoDbcExport::tr("Exporting the PDO layout")), path_(std::move(path)), store_(workspace.store()), raw_(workspace.rawSignals()) {
+    : Job(PdoDbcExport::tr("Exporting the PDO layout")), path_(std::move(path)), store_(workspace.store()),
+      raw_(workspace.rawSignals()) {
     frames_ = store_ ? store_->size() : 0;
     for (const canopen::NodeInfo& n : workspace.nodes().snapshot()) {
         if (n.dictionary.isEmpty()) continue;
         QString error;
-        if (!ctx_.assignDictionary(n.node, n.dictionary, &error)) spdlog::warn("DBC export: node {}: {}", n.node, error.toStdString());
+        if (!ctx_.assignDictionary(n.node, n.dictionary, &error))
+            spdlog::warn("DBC export: node {}: {}", n.node, error.toStdString());
     }
 }
 
@@ -48,11 +50,15 @@ void PdoDbcJob::run() {
         fail(PdoDbcExport::tr("%1: cannot write the DBC file (%2)").arg(path_, f.errorString()));
         return;
     }
-    summary_ = PdoDbcExport::tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals").arg(path_).arg(pdos).arg(raw_.size());
+    summary_ = PdoDbcExport::tr("PDO layout exported to %1: %2 PDO messages, %3 raw signals")
+                   .arg(path_)
+                   .arg(pdos)
+                   .arg(raw_.size());
 }
 
 QString askPdoDbcPath(QWidget* parent) {
-    QString path = files::askSaveFile(parent, files::kDbc, PdoDbcExport::tr("Export PDO layout as DBC"), QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
+    QString path = files::askSaveFile(parent, files::kDbc, PdoDbcExport::tr("Export PDO layout as DBC"),
+                                      QStringLiteral("pdo-layout.dbc"), PdoDbcExport::tr("DBC file (*.dbc)"));
     if (!path.isEmpty() && !path.endsWith(QStringLiteral(".dbc"), Qt::CaseInsensitive)) path += QStringLiteral(".dbc");
     return path;
 }

@@ -18,7 +18,8 @@ QString csvField(const QString& s) {
 }
 }  // namespace
 
-bool writePlotCsv(const QString& path, const std::vector<PlotSignal>& plotted, int64_t t0, int64_t t1, int64_t originNs, QString* error) {
+bool writePlotCsv(const QString& path, const std::vector<PlotSignal>& plotted, int64_t t0, int64_t t1, int64_t originNs,
+                  QString* error) {
     // frame -> (time, one value per signal)
     struct Row {
         int64_t timeNs = 0;

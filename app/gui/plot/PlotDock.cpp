@@ -113,7 +113,9 @@ void PlotDock::buildToolbar(QWidget* host) {
     QAction* clearCursors = bar->addAction(tr("Clear cursors"));
     bar->addSeparator();
     QAction* raw = bar->addAction(tr("Add raw signal…"), this, &PlotDock::addRawSignal);
-    raw->setToolTip(tr("Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a dictionary"));
+    raw->setToolTip(
+        tr("Plot bits of any frame (start bit, length, type, byte order, factor, offset, unit): for devices without a "
+           "dictionary"));
     bar->widgetForAction(raw)->setObjectName(QStringLiteral("addRawSignal"));
     auto* exportButton = new QToolButton(bar);
     exportButton->setObjectName(QStringLiteral("plotExport"));
@@ -131,7 +133,8 @@ void PlotDock::buildToolbar(QWidget* host) {
         if (!whole_) setPaused(false);
     });
     connect(pause_, &QAction::toggled, this, &PlotDock::setPaused);
-    connect(layout_, &QComboBox::currentIndexChanged, this, [this](int i) { setLayoutMode(i ? PlotView::Layout::Overlay : PlotView::Layout::Stacked); });
+    connect(layout_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { setLayoutMode(i ? PlotView::Layout::Overlay : PlotView::Layout::Stacked); });
     connect(fit, &QAction::triggered, this, [this] {
         view_->rescaleY();
         view_->refresh(true);
@@ -198,11 +201,14 @@ void PlotDock::updatePlotted() {
         PlotSignal s;
         s.key = key;
         s.name = localSignalName(*info);  // the manual's name for a bundled dictionary's object
-        s.label = key.raw ? s.name : QStringLiteral("n%1 %2").arg(key.node).arg(info->digital ? s.name.section(QStringLiteral(": "), 1) : s.name);
+        s.label = key.raw ? s.name
+                          : QStringLiteral("n%1 %2").arg(key.node).arg(
+                                info->digital ? s.name.section(QStringLiteral(": "), 1) : s.name);
         if (key.bus) s.label = QStringLiteral("bus%1 ").arg(key.bus) + s.label;
         s.scale = picker_->scale(key);
         s.digital = info->digital;
-        s.hex = !s.digital && !key.raw && od::hexKindFor(key.index, key.sub) == od::HexKind::Pattern && s.scale.factor == 1.0 && s.scale.offset == 0.0;
+        s.hex = !s.digital && !key.raw && od::hexKindFor(key.index, key.sub) == od::HexKind::Pattern &&
+                s.scale.factor == 1.0 && s.scale.offset == 0.0;
         s.color = plotColor(colour++);
         s.buffer = recorder_ ? recorder_->buffer(key) : nullptr;
         plotted.push_back(std::move(s));
@@ -219,8 +225,8 @@ void PlotDock::autoPick() {
     for (const SignalInfo& p : cat) {
         if (p.key.index != 0x6064 || p.key.sub != 0 || p.digital || !p.pdo.startsWith(QLatin1String("TPDO"))) continue;
         const auto v = std::find_if(cat.begin(), cat.end(), [&](const SignalInfo& s) {
-            return s.key.bus == p.key.bus && s.key.node == p.key.node && s.key.index == 0x606C && s.key.sub == 0 && !s.digital &&
-                   s.pdo.startsWith(QLatin1String("TPDO"));
+            return s.key.bus == p.key.bus && s.key.node == p.key.node && s.key.index == 0x606C && s.key.sub == 0 &&
+                   !s.digital && s.pdo.startsWith(QLatin1String("TPDO"));
         });
         if (v == cat.end()) continue;
         const SignalKey a = p.key, b = v->key;
@@ -236,7 +242,8 @@ QJsonObject PlotDock::layoutJson() const {
     for (const SignalKey& k : picker_->picked()) keys.append(k.text());
     for (const SignalKey& k : wanted_) keys.append(k.text());
     return {{QStringLiteral("signals"), keys},
-            {QStringLiteral("layout"), view_->layoutMode() == PlotView::Layout::Overlay ? QStringLiteral("overlay") : QStringLiteral("stacked")},
+            {QStringLiteral("layout"),
+             view_->layoutMode() == PlotView::Layout::Overlay ? QStringLiteral("overlay") : QStringLiteral("stacked")},
             {QStringLiteral("windowSeconds"), window_->value()}};
 }
 
@@ -290,7 +297,8 @@ void PlotDock::refresh() {
     if (!paused_) {
         const double end = std::max(0.0, double(recorder_->latestNs() - *origin) / 1e9);
         if (whole_) view_->setTimeRange(0.0, std::max(end, 1.0));
-        else if (end < window_->value()) view_->setTimeRange(0.0, window_->value());  // the first window fills from the left
+        else if (end < window_->value())
+            view_->setTimeRange(0.0, window_->value());  // the first window fills from the left
         else view_->setTimeRange(end - window_->value(), end);
     }
     if (!view_->isVisible() && !paused_) return;  // hidden: nothing to draw
@@ -323,14 +331,18 @@ QString PlotDock::emptyReason() const {
         if (workspace_->loadJob()) return tr("The log holds no frames.");
         return tr("Nothing to plot: connect to a bus (Bus menu) or open a log (File ▸ Open log…).");
     }
-    auto nodeName = [](int bus, int node) { return bus ? tr("bus %1 node %2").arg(bus).arg(node) : tr("node %1").arg(node); };
+    auto nodeName = [](int bus, int node) {
+        return bus ? tr("bus %1 node %2").arg(bus).arg(node) : tr("node %1").arg(node);
+    };
     const auto pdos = recorder_->pdosSeen();
     if (pdos.empty()) {
         QStringList nodes;
         for (const canopen::NodeInfo& n : workspace_->nodes().snapshot()) nodes << QString::number(n.node);
-        QString text = tr("No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.").arg(frames);
+        QString text =
+            tr("No PDOs in this trace (%L1 frames): the plot shows the objects that PDOs carry.").arg(frames);
         if (!nodes.isEmpty()) text += u' ' + tr("Nodes seen: %1.").arg(nodes.join(QStringLiteral(", ")));
-        if (workspace_->isLive()) text += u' ' + tr("Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).");
+        if (workspace_->isLive())
+            text += u' ' + tr("Nodes send their PDOs once started (Nodes dock: right-click ▸ Start).");
         return text;
     }
     // The PDOs seen, by node; a node without a dictionary cannot have its PDOs decoded.
@@ -339,7 +351,8 @@ QString PlotDock::emptyReason() const {
     QStringList withoutDictionary, unknownMapping;
     for (const auto& [key, list] : byNode) {
         const auto info = key.first == 0 ? workspace_->nodes().node(key.second) : std::nullopt;
-        const QString line = QStringLiteral("%1 (%2)").arg(nodeName(key.first, key.second), list.join(QStringLiteral(", ")));
+        const QString line =
+            QStringLiteral("%1 (%2)").arg(nodeName(key.first, key.second), list.join(QStringLiteral(", ")));
         if (info && !info->dictionary.isEmpty()) unknownMapping << line;
         else withoutDictionary << line;
     }
@@ -351,7 +364,8 @@ QString PlotDock::emptyReason() const {
                         workspace_->isLive() ? tr(" or identify the nodes with Bus ▸ Scan network") : QString());
     if (!unknownMapping.isEmpty()) {
         if (!text.isEmpty()) text += u' ';
-        text += tr("PDOs whose mapping is not known (changed before the trace began): %1.").arg(unknownMapping.join(QStringLiteral("; ")));
+        text += tr("PDOs whose mapping is not known (changed before the trace began): %1.")
+                    .arg(unknownMapping.join(QStringLiteral("; ")));
     }
     return text;
 }
@@ -377,7 +391,8 @@ void PlotDock::addRawSignal() {
     autoPicked_ = true;  // the user chose what to plot
     catalogRevision_ = 0;
     refresh();
-    emit message(tr("Raw signal %1 added: it is listed under COB-ID %2h once its frames are read").arg(dialog.signal().name, QString::number(dialog.signal().cobId, 16).toUpper()));
+    emit message(tr("Raw signal %1 added: it is listed under COB-ID %2h once its frames are read")
+                     .arg(dialog.signal().name, QString::number(dialog.signal().cobId, 16).toUpper()));
 }
 
 void PlotDock::updateReadout() { readout_->setText(view_->readoutHtml()); }
@@ -400,12 +415,17 @@ bool PlotDock::exportCsv(const QString& path, QString* error) {
 }
 
 void PlotDock::exportDialog(const QString& kind) {
-    const QString filter = kind == u"png" ? tr("PNG image (*.png)") : kind == u"pdf" ? tr("PDF document (*.pdf)") : tr("CSV (*.csv)");
-    QString path = files::askSaveFile(this, kind == u"csv" ? files::kExports : files::kPlotImages, tr("Export plot"), QStringLiteral("plot.%1").arg(kind), filter);
+    const QString filter = kind == u"png"   ? tr("PNG image (*.png)")
+                           : kind == u"pdf" ? tr("PDF document (*.pdf)")
+                                            : tr("CSV (*.csv)");
+    QString path = files::askSaveFile(this, kind == u"csv" ? files::kExports : files::kPlotImages, tr("Export plot"),
+                                      QStringLiteral("plot.%1").arg(kind), filter);
     if (path.isEmpty()) return;
     if (!path.endsWith(u'.' + kind, Qt::CaseInsensitive)) path += u'.' + kind;
     QString error;
-    const bool ok = kind == u"png" ? exportPng(path, &error) : kind == u"pdf" ? exportPdf(path, &error) : exportCsv(path, &error);
+    const bool ok = kind == u"png"   ? exportPng(path, &error)
+                    : kind == u"pdf" ? exportPdf(path, &error)
+                                     : exportCsv(path, &error);
     emit message(ok ? tr("Plot exported to %1").arg(path) : error);
 }
 

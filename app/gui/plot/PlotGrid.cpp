@@ -15,7 +15,9 @@ void PlotGrid::adopt(QCPAxis* axis) {
     axes_.emplace_back(axis);
 }
 
-void PlotGrid::applyDefaultAntialiasingHint(QCPPainter* painter) const { painter->setAntialiasing(false); }  // QCPGrid's default
+void PlotGrid::applyDefaultAntialiasingHint(QCPPainter* painter) const {
+    painter->setAntialiasing(false);
+}  // QCPGrid's default
 
 void PlotGrid::draw(QCPPainter* painter) {
     const PlotPixels pixels = PlotPixels::of(painter);
@@ -36,7 +38,8 @@ void PlotGrid::drawAxis(QCPPainter* painter, QCPAxis* axis, const PlotPixels& pi
     };
     auto draw = [&](const QLineF& l, const QPen& pen) {
         if (const int step = pixels.image ? PlotPixels::step(pen) : 0) {
-            pixels.line(l.toLine(), qPremultiply(pen.color().rgba()), step);  // as QCPPainter rounds it without antialiasing
+            pixels.line(l.toLine(), qPremultiply(pen.color().rgba()),
+                        step);  // as QCPPainter rounds it without antialiasing
             return;
         }
         painter->setPen(pen);

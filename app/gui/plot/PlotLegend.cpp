@@ -31,8 +31,10 @@ void PlotLegend::draw(QCPPainter* painter) {
     painter->save();
     painter->setAntialiasing(false);  // QCPPainter drops its half-pixel shift
     const QTransform t = painter->transform();
-    const bool plain = !painter->modes().testFlag(QCPPainter::pmVectorized) && !painter->modes().testFlag(QCPPainter::pmNoCaching) && painter->device() &&
-                       t.type() <= QTransform::TxTranslate && t.dx() == std::round(t.dx()) && t.dy() == std::round(t.dy());
+    const bool plain = !painter->modes().testFlag(QCPPainter::pmVectorized) &&
+                       !painter->modes().testFlag(QCPPainter::pmNoCaching) && painter->device() &&
+                       t.type() <= QTransform::TxTranslate && t.dx() == std::round(t.dx()) &&
+                       t.dy() == std::round(t.dy());
     Look look;
     if (plain) look = currentLook(painter->device()->devicePixelRatioF());
     pictured_ = plain && !look.foreign;

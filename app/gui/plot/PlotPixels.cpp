@@ -11,8 +11,8 @@ namespace coscope::gui {
 PlotPixels PlotPixels::of(QCPPainter* painter) {
     PlotPixels out;
     QPaintDevice* device = painter->device();
-    if (!device || device->devType() != QInternal::Image || painter->modes().testFlag(QCPPainter::pmVectorized) || painter->opacity() != 1.0 ||
-        painter->compositionMode() != QPainter::CompositionMode_SourceOver)
+    if (!device || device->devType() != QInternal::Image || painter->modes().testFlag(QCPPainter::pmVectorized) ||
+        painter->opacity() != 1.0 || painter->compositionMode() != QPainter::CompositionMode_SourceOver)
         return out;
     auto* img = static_cast<QImage*>(device);
     const QImage::Format f = img->format();

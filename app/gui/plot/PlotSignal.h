@@ -14,8 +14,8 @@ namespace coscope::gui {
 // One signal on the plot: what it is, how to scale it and where its samples are.
 struct PlotSignal {
     dissect::SignalKey key;
-    QString name;    // "Position actual value"
-    QString label;   // legend text: "n2 Position actual value"
+    QString name;   // "Position actual value"
+    QString label;  // legend text: "n2 Position actual value"
     dissect::SignalScale scale;
     bool digital = false;
     // A bit pattern (statusword, controlword, digital inputs: od::HexKind::Pattern) plotted
@@ -25,7 +25,9 @@ struct PlotSignal {
     std::shared_ptr<const SignalBuffer> buffer;
 
     // "Position actual value [pulse]" (axis titles, CSV headers).
-    QString titleWithUnit() const { return scale.unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, scale.unit); }
+    QString titleWithUnit() const {
+        return scale.unit.isEmpty() ? label : QStringLiteral("%1 [%2]").arg(label, scale.unit);
+    }
     double valueOf(double raw) const { return digital ? raw : scale.apply(raw); }
     // A value as the readout writes it: hex for a bit pattern, else decimal.
     QString valueText(double v) const;

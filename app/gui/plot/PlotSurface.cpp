@@ -35,7 +35,9 @@ uchar* allocatePixels(size_t bytes) {
 // plot's background is one opaque colour; then it is drawn as a copy.
 class PlotSurface::ImageBuffer : public QCPAbstractPaintBuffer {
 public:
-    ImageBuffer(const QSize& size, double devicePixelRatio) : QCPAbstractPaintBuffer(size, devicePixelRatio) { ImageBuffer::reallocateBuffer(); }
+    ImageBuffer(const QSize& size, double devicePixelRatio) : QCPAbstractPaintBuffer(size, devicePixelRatio) {
+        ImageBuffer::reallocateBuffer();
+    }
 
     QColor base;  // invalid: transparent like QCustomPlot's own buffers
     QImage* image() { return &image_; }
@@ -61,9 +63,10 @@ protected:
         const qsizetype stride = qsizetype(std::max(1, size.width())) * 4;
         uchar* pixels = allocatePixels(size_t(stride) * size_t(std::max(1, size.height())));
         if (pixels)
-            image_ = QImage(pixels, size.width(), size.height(), stride, QImage::Format_ARGB32_Premultiplied, [](void* p) { std::free(p); }, pixels);
-        else
-            image_ = QImage(size, QImage::Format_ARGB32_Premultiplied);
+            image_ = QImage(
+                pixels, size.width(), size.height(), stride, QImage::Format_ARGB32_Premultiplied,
+                [](void* p) { std::free(p); }, pixels);
+        else image_ = QImage(size, QImage::Format_ARGB32_Premultiplied);
         image_.setDevicePixelRatio(mDevicePixelRatio);
         image_.fill(base.isValid() ? base : QColor(Qt::transparent));
     }
@@ -92,7 +95,8 @@ PlotSurface::PlotSurface(QWidget* parent) : QCustomPlot(parent), flush_(new Trac
 }
 
 void PlotSurface::installImageBuffer() {
-    const bool opaque = mBackgroundPixmap.isNull() && mBackgroundBrush.style() == Qt::SolidPattern && mBackgroundBrush.color().alpha() == 255;
+    const bool opaque = mBackgroundPixmap.isNull() && mBackgroundBrush.style() == Qt::SolidPattern &&
+                        mBackgroundBrush.color().alpha() == 255;
     if (mPaintBuffers.isEmpty() || mPaintBuffers.first().data() != image_) {
         image_ = new ImageBuffer(viewport().size(), bufferDevicePixelRatio());
         if (mPaintBuffers.isEmpty()) mPaintBuffers.append(QSharedPointer<QCPAbstractPaintBuffer>(image_));

@@ -9,7 +9,9 @@ namespace {
 // The axis's sub tick positions: QCPAxis keeps them protected (no getter); a pointer to the
 // member, named through a derived class, reads them.
 struct PlotTicksAxisAccess : QCPAxis {
-    static const QVector<double>& subTicks(const QCPAxis* axis) { return axis->*(&PlotTicksAxisAccess::mSubTickVector); }
+    static const QVector<double>& subTicks(const QCPAxis* axis) {
+        return axis->*(&PlotTicksAxisAccess::mSubTickVector);
+    }
 };
 }  // namespace
 
@@ -30,7 +32,9 @@ void PlotTicks::adopt(QCPAxis* axis) {
     axis->setSubTickPen(Qt::NoPen);
 }
 
-void PlotTicks::applyDefaultAntialiasingHint(QCPPainter* painter) const { painter->setAntialiasing(false); }  // QCPAxis's default
+void PlotTicks::applyDefaultAntialiasingHint(QCPPainter* painter) const {
+    painter->setAntialiasing(false);
+}  // QCPAxis's default
 
 void PlotTicks::draw(QCPPainter* painter) {
     const PlotPixels pixels = PlotPixels::of(painter);
@@ -44,7 +48,7 @@ void PlotTicks::drawAxis(QCPPainter* painter, const Adopted& a, const PlotPixels
     const int offset = axis->offset();
     const QCPAxis::AxisType type = axis->axisType();
     // QCPAxisPainterPrivate::draw: the origin, the right axis's one-pixel correction, inward.
-    const QPoint origin = type == QCPAxis::atLeft ? rect.bottomLeft() + QPoint(-offset, 0)
+    const QPoint origin = type == QCPAxis::atLeft    ? rect.bottomLeft() + QPoint(-offset, 0)
                           : type == QCPAxis::atRight ? rect.bottomRight() + QPoint(offset, 0)
                                                      : rect.bottomLeft() + QPoint(0, offset);
     const double xCor = type == QCPAxis::atRight ? 1 : 0;
@@ -79,15 +83,19 @@ void PlotTicks::drawAxis(QCPPainter* painter, const Adopted& a, const PlotPixels
         const QPointF o = QPointF(origin) + QPointF(xCor, 0);
         QLineF base = horizontal ? QLineF(o, o + QPointF(rect.width(), 0)) : QLineF(o, o + QPointF(0, -rect.height()));
         if (axis->rangeReversed()) base = QLineF(base.p2(), base.p1());
-        const QPen pen = axis->subTicks() && !subTicks.isEmpty() ? a.subTick : !ticks.isEmpty() ? a.tick : axis->basePen();
+        const QPen pen = axis->subTicks() && !subTicks.isEmpty() ? a.subTick
+                         : !ticks.isEmpty()                      ? a.tick
+                                                                 : axis->basePen();
         painter->setPen(pen);
         painter->setAntialiasing(true);
         painter->setBrush(QBrush(axis->basePen().color()));
         const QCPVector2D v(base.dx(), base.dy());
         if (lower.style() != QCPLineEnding::esNone)
-            lower.draw(painter, QCPVector2D(base.p1()) - v.normalized() * lower.realLength() * (lower.inverted() ? -1 : 1), -v);
+            lower.draw(painter,
+                       QCPVector2D(base.p1()) - v.normalized() * lower.realLength() * (lower.inverted() ? -1 : 1), -v);
         if (upper.style() != QCPLineEnding::esNone)
-            upper.draw(painter, QCPVector2D(base.p2()) + v.normalized() * upper.realLength() * (upper.inverted() ? -1 : 1), v);
+            upper.draw(painter,
+                       QCPVector2D(base.p2()) + v.normalized() * upper.realLength() * (upper.inverted() ? -1 : 1), v);
     }
     painter->restore();
 }

@@ -3,9 +3,9 @@
 
 #include "app/gui/plot/EnvelopeGraph.h"
 #include "app/gui/plot/PlotGrid.h"
-#include "app/gui/plot/PlotTicks.h"
 #include "app/gui/plot/PlotLegend.h"
 #include "app/gui/plot/PlotSurface.h"
+#include "app/gui/plot/PlotTicks.h"
 #include "core/od/NumberNotation.h"
 
 #include <QVBoxLayout>
@@ -18,9 +18,10 @@
 namespace coscope::gui {
 
 QColor plotColor(int i) {
-    static const QColor colors[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c), QColor(0xff, 0x7f, 0x0e),
-                                    QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b), QColor(0x17, 0xbe, 0xcf), QColor(0xe3, 0x77, 0xc2),
-                                    QColor(0x7f, 0x7f, 0x7f), QColor(0xbc, 0xbd, 0x22)};
+    static const QColor colors[] = {QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28), QColor(0x2c, 0xa0, 0x2c),
+                                    QColor(0xff, 0x7f, 0x0e), QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
+                                    QColor(0x17, 0xbe, 0xcf), QColor(0xe3, 0x77, 0xc2), QColor(0x7f, 0x7f, 0x7f),
+                                    QColor(0xbc, 0xbd, 0x22)};
     return colors[static_cast<size_t>(std::abs(i)) % std::size(colors)];
 }
 
@@ -52,7 +53,8 @@ QString PlotSignal::valueText(double v) const {
     return number(v);
 }
 
-PlotView::PlotView(QWidget* parent) : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)), ticks_(new PlotTicks(plot_)) {
+PlotView::PlotView(QWidget* parent)
+    : QWidget(parent), plot_(new PlotSurface(this)), grid_(new PlotGrid(plot_)), ticks_(new PlotTicks(plot_)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(plot_);
@@ -119,7 +121,8 @@ void PlotView::rebuild() {
         const PlotSignal& s = signals_[i];
         QCPGraph* g = new EnvelopeGraph(rect->axis(QCPAxis::atBottom), y);  // registers with plot_
         g->setPen(QPen(s.color, 1.0));  // wider pens go through the stroker: several times slower
-        g->setName(s.scale.unit.isEmpty() || s.digital ? s.label : QStringLiteral("%1 [%2]").arg(s.label, s.scale.unit));
+        g->setName(s.scale.unit.isEmpty() || s.digital ? s.label
+                                                       : QStringLiteral("%1 [%2]").arg(s.label, s.scale.unit));
         g->setLineStyle(s.digital ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
         g->setAdaptiveSampling(false);  // the buffer decimates already
         tracks_[i] = Track{rect, y, g};
@@ -151,7 +154,9 @@ void PlotView::rebuild() {
             y->setSubTickPen(QPen(c));
             y->setLabelColor(c);
             y->setTickLabelColor(c);
-            y->setLabel(signals_[i].digital ? signals_[i].name : (signals_[i].scale.unit.isEmpty() ? signals_[i].name : signals_[i].scale.unit));
+            y->setLabel(signals_[i].digital
+                            ? signals_[i].name
+                            : (signals_[i].scale.unit.isEmpty() ? signals_[i].name : signals_[i].scale.unit));
             styleGraph(i, rect, y);
         }
         if (signals_.empty()) rect->axis(QCPAxis::atLeft)->setLabel(tr("Pick signals on the left"));
@@ -160,7 +165,8 @@ void PlotView::rebuild() {
             QCPAxisRect* rect = newRect(static_cast<int>(i));
             QCPAxis* y = rect->axis(QCPAxis::atLeft);
             const PlotSignal& s = signals_[i];
-            y->setLabel(s.digital ? QStringLiteral("bit %1").arg(s.key.bit) : (s.scale.unit.isEmpty() ? QStringLiteral("raw") : s.scale.unit));
+            y->setLabel(s.digital ? QStringLiteral("bit %1").arg(s.key.bit)
+                                  : (s.scale.unit.isEmpty() ? QStringLiteral("raw") : s.scale.unit));
             y->setLabelColor(s.color);
             plot_->plotLayout()->setRowStretchFactor(static_cast<int>(i), s.digital ? 0.3 : 1.0);
             styleGraph(i, rect, y);
@@ -361,7 +367,8 @@ std::optional<double> PlotView::valueAt(size_t i, double seconds) const {
 std::vector<std::pair<double, double>> PlotView::drawnPoints(size_t i) const {
     std::vector<std::pair<double, double>> out;
     if (i >= tracks_.size()) return out;
-    for (auto it = tracks_[i].graph->data()->constBegin(); it != tracks_[i].graph->data()->constEnd(); ++it) out.emplace_back(it->key, it->value);
+    for (auto it = tracks_[i].graph->data()->constBegin(); it != tracks_[i].graph->data()->constEnd(); ++it)
+        out.emplace_back(it->key, it->value);
     return out;
 }
 
@@ -418,21 +425,28 @@ void PlotView::onRelease(QMouseEvent* e) {
 }
 
 QString PlotView::readoutHtml() const {
-    if (!cursors_[0] && !cursors_[1]) return tr("Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.");
+    if (!cursors_[0] && !cursors_[1])
+        return tr("Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.");
     QString html = QStringLiteral("<table cellspacing=0 cellpadding=2><tr><th align=left></th>");
     for (int c = 0; c < 2; ++c)
-        html += cursors_[c] ? QStringLiteral("<th align=right>%1 = %2 s</th>").arg(c ? u'B' : u'A').arg(number(*cursors_[c])) : QStringLiteral("<th></th>");
-    html += cursors_[0] && cursors_[1] ? QStringLiteral("<th align=right>&Delta;t = %1 s</th></tr>").arg(number(*cursors_[1] - *cursors_[0])) : QStringLiteral("<th></th></tr>");
+        html += cursors_[c]
+                    ? QStringLiteral("<th align=right>%1 = %2 s</th>").arg(c ? u'B' : u'A').arg(number(*cursors_[c]))
+                    : QStringLiteral("<th></th>");
+    html += cursors_[0] && cursors_[1]
+                ? QStringLiteral("<th align=right>&Delta;t = %1 s</th></tr>").arg(number(*cursors_[1] - *cursors_[0]))
+                : QStringLiteral("<th></th></tr>");
     for (size_t i = 0; i < signals_.size(); ++i) {
         const PlotSignal& s = signals_[i];
-        html += QStringLiteral("<tr><td><font color=%1>&#9632;</font> %2</td>").arg(s.color.name(), s.titleWithUnit().toHtmlEscaped());
+        html += QStringLiteral("<tr><td><font color=%1>&#9632;</font> %2</td>")
+                    .arg(s.color.name(), s.titleWithUnit().toHtmlEscaped());
         std::optional<double> v[2];
         for (int c = 0; c < 2; ++c) {
             if (cursors_[c]) v[c] = valueAt(i, *cursors_[c]);
             html += QStringLiteral("<td align=right>%1</td>").arg(v[c] ? s.valueText(*v[c]) : QString());
         }
         // A difference of two bit patterns means nothing: none for hex.
-        html += QStringLiteral("<td align=right>%1</td></tr>").arg(v[0] && v[1] && !s.hex ? QStringLiteral("&Delta; %1").arg(number(*v[1] - *v[0])) : QString());
+        html += QStringLiteral("<td align=right>%1</td></tr>")
+                    .arg(v[0] && v[1] && !s.hex ? QStringLiteral("&Delta; %1").arg(number(*v[1] - *v[0])) : QString());
     }
     return html + QStringLiteral("</table>");
 }

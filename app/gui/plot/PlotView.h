@@ -75,8 +75,8 @@ public:
     QString readoutHtml() const;
 
 signals:
-    void userNavigated();                     // the user dragged or zoomed the time axis
-    void frameClicked(uint32_t frame);        // a click near a sample
+    void userNavigated();               // the user dragged or zoomed the time axis
+    void frameClicked(uint32_t frame);  // a click near a sample
     void cursorsChanged();
     void legendToggled();
 
@@ -98,7 +98,7 @@ private:
     QCPAxis* timeAxis() const;
 
     QCustomPlot* plot_;
-    PlotGrid* grid_;    // layerables of plot_ (owned by it)
+    PlotGrid* grid_;  // layerables of plot_ (owned by it)
     PlotTicks* ticks_;
     std::vector<PlotSignal> signals_;
     std::vector<Track> tracks_;

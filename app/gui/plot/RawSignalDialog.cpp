@@ -16,17 +16,10 @@ namespace coscope::gui {
 using dissect::RawSignal;
 
 RawSignalDialog::RawSignalDialog(uint32_t cobId, QWidget* parent)
-    : QDialog(parent),
-      name_(new QLineEdit(this)),
-      cobId_(new QLineEdit(this)),
-      start_(new QSpinBox(this)),
-      length_(new QSpinBox(this)),
-      type_(new QComboBox(this)),
-      order_(new QComboBox(this)),
-      factor_(new QLineEdit(QStringLiteral("1"), this)),
-      offset_(new QLineEdit(QStringLiteral("0"), this)),
-      unit_(new QLineEdit(this)),
-      problem_(new QLabel(this)) {
+    : QDialog(parent), name_(new QLineEdit(this)), cobId_(new QLineEdit(this)), start_(new QSpinBox(this)),
+      length_(new QSpinBox(this)), type_(new QComboBox(this)), order_(new QComboBox(this)),
+      factor_(new QLineEdit(QStringLiteral("1"), this)), offset_(new QLineEdit(QStringLiteral("0"), this)),
+      unit_(new QLineEdit(this)), problem_(new QLabel(this)) {
     setWindowTitle(tr("Add raw signal"));
     name_->setObjectName(QStringLiteral("rawName"));
     cobId_->setObjectName(QStringLiteral("rawCobId"));
@@ -42,7 +35,8 @@ RawSignalDialog::RawSignalDialog(uint32_t cobId, QWidget* parent)
     cobId_->setPlaceholderText(tr("0x181"));
     cobId_->setToolTip(tr("The frame's identifier: decimal or 0x hex; over 7FFh a 29-bit identifier"));
     start_->setRange(0, 511);
-    start_->setToolTip(tr("Intel: the least significant bit; Motorola: the most significant bit (DBC numbering, bit 7 of byte 0 = 7)"));
+    start_->setToolTip(tr(
+        "Intel: the least significant bit; Motorola: the most significant bit (DBC numbering, bit 7 of byte 0 = 7)"));
     length_->setRange(1, 64);
     length_->setValue(16);
     length_->setSuffix(tr(" bits"));
@@ -88,7 +82,8 @@ bool RawSignalDialog::read(RawSignal& s) {
     if (hexSuffix) cob.chop(1);
     bool ok = false;
     s.cobId = cob.toUInt(&ok, hexSuffix ? 16 : 0);
-    if (!ok || s.cobId > 0x1FFFFFFF) return fail(tr("The COB-ID must be a number up to 1FFFFFFFh (0x181, 385 or 181h)."));
+    if (!ok || s.cobId > 0x1FFFFFFF)
+        return fail(tr("The COB-ID must be a number up to 1FFFFFFFh (0x181, 385 or 181h)."));
     s.extended = s.cobId > 0x7FF;
     s.startBit = start_->value();
     s.length = length_->value();
@@ -100,7 +95,8 @@ bool RawSignalDialog::read(RawSignal& s) {
     s.offset = offset_->text().trimmed().isEmpty() ? 0.0 : offset_->text().trimmed().toDouble(&ok);
     if (!ok || !std::isfinite(s.offset)) return fail(tr("The offset must be a number."));
     s.unit = unit_->text().trimmed();
-    if (s.type == RawSignal::Type::Float && s.length != 32 && s.length != 64) return fail(tr("A float is 32 or 64 bits long."));
+    if (s.type == RawSignal::Type::Float && s.length != 32 && s.length != 64)
+        return fail(tr("A float is 32 or 64 bits long."));
     if (s.bytesNeeded() > 64) return fail(tr("The signal ends past byte 64 of the frame."));
     if (!s.problem().isEmpty()) return fail(tr("This signal cannot be read: %1.").arg(s.problem()));
     return true;

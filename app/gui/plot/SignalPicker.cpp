@@ -45,10 +45,12 @@ SignalPicker::SignalPicker(QWidget* parent)
     tree_->setHeaderLabels({tr("Signal"), tr("Object"), tr("Unit"), tr("Factor")});
     tree_->setRootIsDecorated(true);
     tree_->setUniformRowHeights(true);
-    tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
+    tree_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                           QAbstractItemView::SelectedClicked);
     tree_->header()->setSectionResizeMode(ColName, QHeaderView::Stretch);
     tree_->header()->setStretchLastSection(false);
-    for (int c = ColObject; c < ColumnCount; ++c) tree_->header()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    for (int c = ColObject; c < ColumnCount; ++c)
+        tree_->header()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
     connect(search_, &QLineEdit::textChanged, this, &SignalPicker::applyFilter);
     connect(tree_, &QTreeWidget::itemChanged, this, &SignalPicker::onItemChanged);
 }
@@ -120,7 +122,8 @@ void SignalPicker::rebuildTree() {
     updating_ = true;
     // Remember which nodes were collapsed.
     std::map<QString, bool> expanded;
-    for (int i = 0; i < tree_->topLevelItemCount(); ++i) expanded[tree_->topLevelItem(i)->text(ColName)] = tree_->topLevelItem(i)->isExpanded();
+    for (int i = 0; i < tree_->topLevelItemCount(); ++i)
+        expanded[tree_->topLevelItem(i)->text(ColName)] = tree_->topLevelItem(i)->isExpanded();
     std::map<qulonglong, bool> wordExpanded;
     for (int i = 0; i < tree_->topLevelItemCount(); ++i)
         for (int k = 0; k < tree_->topLevelItem(i)->childCount(); ++k) {
@@ -135,7 +138,8 @@ void SignalPicker::rebuildTree() {
         QString title;
         if (s.key.raw) {
             const QString cob = QString::number(s.cobId, 16).toUpper();
-            title = s.key.bus ? tr("Bus %1, COB-ID %2h (raw signals)").arg(s.key.bus).arg(cob) : tr("COB-ID %1h (raw signals)").arg(cob);
+            title = s.key.bus ? tr("Bus %1, COB-ID %2h (raw signals)").arg(s.key.bus).arg(cob)
+                              : tr("COB-ID %1h (raw signals)").arg(cob);
         } else {
             title = s.key.bus ? tr("Bus %1, node %2").arg(s.key.bus).arg(s.key.node) : tr("Node %1").arg(s.key.node);
             if (!s.dictionary.isEmpty()) title += QStringLiteral(" (%1)").arg(s.dictionary);
@@ -157,19 +161,26 @@ void SignalPicker::rebuildTree() {
         item->setText(ColName, s.digital ? name.section(QStringLiteral(": "), 1) : name);
         item->setText(ColObject, s.digital ? QStringLiteral("bit %1").arg(s.key.bit) : s.object);
         item->setToolTip(ColObject, s.pdo);
-        item->setToolTip(ColName, QStringLiteral("%1 — %2 (%3)").arg(s.key.text(), name == s.name ? s.name : QStringLiteral("%1 / %2").arg(name, s.name), s.pdo));
+        item->setToolTip(
+            ColName,
+            QStringLiteral("%1 — %2 (%3)")
+                .arg(s.key.text(), name == s.name ? s.name : QStringLiteral("%1 / %2").arg(name, s.name), s.pdo));
         item->setData(ColName, kKeyRole, keyData(s.key));
         Qt::ItemFlags flags = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable;
         if (!s.digital) {
             const SignalScale sc = scale(s.key);
             item->setText(ColUnit, sc.unit);
             item->setText(ColFactor, dissect::factorText(sc));
-            item->setToolTip(ColFactor, s.key.raw ? tr("value = raw × factor + %1 (defined: × %2 %3)").arg(sc.offset).arg(s.rawFactor).arg(s.rawUnit)
-                                                  : tr("value = raw × factor (dictionary: %1 %2)").arg(s.rawFactor).arg(s.rawUnit));
+            item->setToolTip(
+                ColFactor,
+                s.key.raw
+                    ? tr("value = raw × factor + %1 (defined: × %2 %3)").arg(sc.offset).arg(s.rawFactor).arg(s.rawUnit)
+                    : tr("value = raw × factor (dictionary: %1 %2)").arg(s.rawFactor).arg(s.rawUnit));
             flags |= Qt::ItemIsEditable;
         }
         item->setFlags(flags);
-        item->setCheckState(ColName, std::find(picked_.begin(), picked_.end(), s.key) != picked_.end() ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(
+            ColName, std::find(picked_.begin(), picked_.end(), s.key) != picked_.end() ? Qt::Checked : Qt::Unchecked);
         if (!s.digital) {
             wordItem = dissect::hasDigitalBits(s.key.index, s.key.sub) ? item : nullptr;
             if (wordItem) {
@@ -197,7 +208,8 @@ void SignalPicker::applyFilter() {
                 bit->setHidden(!m);
                 wordAny |= m;
             }
-            const bool m = nodeMatches || wordAny || w->text(ColName).contains(f, Qt::CaseInsensitive) || w->text(ColObject).contains(f, Qt::CaseInsensitive);
+            const bool m = nodeMatches || wordAny || w->text(ColName).contains(f, Qt::CaseInsensitive) ||
+                           w->text(ColObject).contains(f, Qt::CaseInsensitive);
             w->setHidden(!m);
             if (wordAny && !f.isEmpty()) w->setExpanded(true);
             any |= m;
@@ -210,7 +222,8 @@ void SignalPicker::applyFilter() {
 void SignalPicker::onItemChanged(QTreeWidgetItem* item, int column) {
     if (updating_ || !item->data(ColName, kKeyRole).isValid()) return;
     const qulonglong packed = item->data(ColName, kKeyRole).toULongLong();
-    const auto it = std::find_if(catalog_.begin(), catalog_.end(), [&](const SignalInfo& s) { return s.key.packed() == packed; });
+    const auto it =
+        std::find_if(catalog_.begin(), catalog_.end(), [&](const SignalInfo& s) { return s.key.packed() == packed; });
     if (it == catalog_.end()) return;
     const SignalKey key = it->key;
     if (column == ColName) {

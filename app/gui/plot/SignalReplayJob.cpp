@@ -7,12 +7,10 @@
 
 namespace coscope::gui {
 
-SignalReplayJob::SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries, std::vector<dissect::RawSignal> raw)
-    : Job(QObject::tr("Decoding the PDOs with the assigned dictionaries")),
-      store_(std::move(store)),
-      names_(std::move(dictionaries)),
-      raw_(std::move(raw)),
-      recorder_(std::make_shared<dissect::SignalRecorder>()) {}
+SignalReplayJob::SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries,
+                                 std::vector<dissect::RawSignal> raw)
+    : Job(QObject::tr("Decoding the PDOs with the assigned dictionaries")), store_(std::move(store)),
+      names_(std::move(dictionaries)), raw_(std::move(raw)), recorder_(std::make_shared<dissect::SignalRecorder>()) {}
 
 SignalReplayJob::~SignalReplayJob() { stopAndJoin(); }
 

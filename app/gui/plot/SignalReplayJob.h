@@ -17,7 +17,8 @@ namespace coscope::gui {
 // the whole trace on a worker thread; the workspace then hands it to the Plot dock.
 class SignalReplayJob : public Job {
 public:
-    SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries, std::vector<dissect::RawSignal> raw = {});
+    SignalReplayJob(std::shared_ptr<const TraceStore> store, std::map<int, QString> dictionaries,
+                    std::vector<dissect::RawSignal> raw = {});
     ~SignalReplayJob() override;
 
     const std::map<int, QString>& dictionaries() const { return names_; }

@@ -60,7 +60,8 @@ namespace {
 // A trace covering less than a pixel in four rows of its band (a steep, thin line) is written
 // by column: a masked store of a row costs less than a column's store of a pixel (measured: a
 // band of 700 rows with 35-pixel spans, 10 min shared axes, is 20 % faster masked), but not 4x less.
-__attribute__((target("avx512f"))) void writeLanesMasked(uchar* bits, qsizetype stride, int x0, const SpanCanvas::Lanes* l, size_t n) {
+__attribute__((target("avx512f"))) void writeLanesMasked(uchar* bits, qsizetype stride, int x0,
+                                                         const SpanCanvas::Lanes* l, size_t n) {
     for (size_t k = 0; k < n; ++k) {
         if (4 * l[k].pixels < l[k].to - l[k].from + 1) {
             writeColumns(bits, stride, x0, l[k]);
@@ -79,7 +80,8 @@ __attribute__((target("avx512f"))) void writeLanesMasked(uchar* bits, qsizetype 
 
 // The row sweep below, 16 lanes a step: the last trace first, each lane taken by the first
 // trace covering it, one masked store of the taken lanes a row.
-__attribute__((target("avx512f"))) void sweepRowsMasked(uchar* bits, qsizetype stride, int x0, const SpanCanvas::Lanes* l, size_t n,
+__attribute__((target("avx512f"))) void sweepRowsMasked(uchar* bits, qsizetype stride, int x0,
+                                                        const SpanCanvas::Lanes* l, size_t n,
                                                         const std::pair<int, int>* band, size_t bands) {
     for (size_t b = 0; b < bands; ++b) {
         for (int y = band[b].first; y <= band[b].second; ++y) {
@@ -89,7 +91,8 @@ __attribute__((target("avx512f"))) void sweepRowsMasked(uchar* bits, qsizetype s
             for (size_t k = n; k-- > 0;) {
                 if (y < l[k].from || y > l[k].to) continue;
                 const __m512i top = _mm512_loadu_si512(l[k].top), bottom = _mm512_loadu_si512(l[k].bottom);
-                const __mmask16 m = _mm512_mask_cmple_epi32_mask(_mm512_cmple_epi32_mask(top, vy), vy, bottom) & __mmask16(~taken);
+                const __mmask16 m =
+                    _mm512_mask_cmple_epi32_mask(_mm512_cmple_epi32_mask(top, vy), vy, bottom) & __mmask16(~taken);
                 p = _mm512_mask_mov_epi32(p, m, _mm512_set1_epi32(l[k].color[0]));
                 taken |= m;
                 if (taken == 0xffff) break;

@@ -25,11 +25,17 @@ namespace coscope::gui {
 using canopen::ProgramStep;
 
 namespace {
-QString hex32(uint32_t v) { return QStringLiteral("0x%1").arg(v, 8, 16, QChar(u'0')).toUpper().replace(QStringLiteral("0X"), QStringLiteral("0x")); }
+QString hex32(uint32_t v) {
+    return QStringLiteral("0x%1")
+        .arg(v, 8, 16, QChar(u'0'))
+        .toUpper()
+        .replace(QStringLiteral("0X"), QStringLiteral("0x"));
+}
 constexpr int kMaxImage = 16 * 1024 * 1024;
 }  // namespace
 
-ProgramDownloadDialog::ProgramDownloadDialog(Workspace* workspace, int node, QWidget* parent) : QDialog(parent), workspace_(workspace), node_(node) {
+ProgramDownloadDialog::ProgramDownloadDialog(Workspace* workspace, int node, QWidget* parent)
+    : QDialog(parent), workspace_(workspace), node_(node) {
     setObjectName(QStringLiteral("ProgramDownloadDialog"));
     setWindowTitle(tr("Download program to node %1").arg(node));
     auto* layout = new QVBoxLayout(this);
@@ -46,7 +52,8 @@ ProgramDownloadDialog::ProgramDownloadDialog(Workspace* workspace, int node, QWi
     program_ = new QSpinBox(this);
     program_->setObjectName(QStringLiteral("programNumber"));
     program_->setRange(1, 254);
-    program_->setToolTip(tr("The program number: sub-index of 1F50h program data and 1F51h program control (CiA 302-3)"));
+    program_->setToolTip(
+        tr("The program number: sub-index of 1F50h program data and 1F51h program control (CiA 302-3)"));
     form->addRow(tr("Program number:"), program_);
     block_ = new QCheckBox(tr("Block transfer (segmented when the node declines it)"), this);
     block_->setChecked(true);
@@ -95,7 +102,8 @@ ProgramDownloadDialog::ProgramDownloadDialog(Workspace* workspace, int node, QWi
     setMinimumWidth(560);
 
     connect(browse_, &QPushButton::clicked, this, [this] {
-        const QString path = files::askOpenFile(this, files::kPrograms, tr("Program image for node %1").arg(node_), tr("Program images (*.img *.bin *.hex);;All files (*)"));
+        const QString path = files::askOpenFile(this, files::kPrograms, tr("Program image for node %1").arg(node_),
+                                                tr("Program images (*.img *.bin *.hex);;All files (*)"));
         if (!path.isEmpty()) file_->setText(path);
     });
     connect(file_, &QLineEdit::textChanged, this, &ProgramDownloadDialog::updateEnabled);
@@ -112,10 +120,12 @@ ProgramDownloadDialog::ProgramDownloadDialog(Workspace* workspace, int node, QWi
         updateEnabled();
     });
 
-    if (workspace_->master() && workspace_->sdo()) service_ = new canopen::ProgramDownload(*workspace_->master(), *workspace_->sdo(), this);
+    if (workspace_->master() && workspace_->sdo())
+        service_ = new canopen::ProgramDownload(*workspace_->master(), *workspace_->sdo(), this);
     if (!workspace_->canTransmit())
-        status_->setText(workspace_->bus() && workspace_->bus()->isListenOnly() ? tr("Listen-only bus: a program download would transmit")
-                                                                               : tr("Connect to a bus first"));
+        status_->setText(workspace_->bus() && workspace_->bus()->isListenOnly()
+                             ? tr("Listen-only bus: a program download would transmit")
+                             : tr("Connect to a bus first"));
     for (QLabel* l : {version_, softwareId_, flash_}) l->setText(tr("not read"));
     updateEnabled();
     readNodeState();
@@ -152,9 +162,12 @@ void ProgramDownloadDialog::updateEnabled() {
     readAgain_->setEnabled(can && !busy);
     for (QWidget* w : std::initializer_list<QWidget*>{file_, browse_, program_, block_, start_}) w->setEnabled(!busy);
     const QString drives = enabledDrivesOnNode();
-    QString warn = tr("Node %1 stops its application for the download (1F51h = 0): a motor it drives is not controlled until the new program "
-                      "has started.").arg(node_);
-    if (!drives.isEmpty()) warn += QLatin1Char(' ') + tr("CoScope enabled %1: it is disabled first (6040h = 0).").arg(drives);
+    QString warn = tr("Node %1 stops its application for the download (1F51h = 0): a motor it drives is not controlled "
+                      "until the new program "
+                      "has started.")
+                       .arg(node_);
+    if (!drives.isEmpty())
+        warn += QLatin1Char(' ') + tr("CoScope enabled %1: it is disabled first (6040h = 0).").arg(drives);
     warning_->setText(warn);
 }
 
@@ -162,16 +175,19 @@ void ProgramDownloadDialog::readNodeState() {
     if (!service_ || !workspace_->canTransmit() || isDownloading()) return;
     for (QLabel* l : {version_, softwareId_, flash_}) l->setText(tr("reading…"));
     QPointer<ProgramDownloadDialog> self(this);
-    service_->readState(static_cast<uint8_t>(node_), static_cast<uint8_t>(program_->value()), [self](const canopen::ProgramState& s) {
-        if (self) self->showState(s);
-    });
+    service_->readState(static_cast<uint8_t>(node_), static_cast<uint8_t>(program_->value()),
+                        [self](const canopen::ProgramState& s) {
+                            if (self) self->showState(s);
+                        });
 }
 
 void ProgramDownloadDialog::showState(const canopen::ProgramState& s) {
     const QString none = tr("no answer");
     version_->setText(s.version ? *s.version : none);
     softwareId_->setText(s.softwareId ? hex32(*s.softwareId) : none);
-    flash_->setText(s.flashStatus ? QStringLiteral("%1 (%2)").arg(canopen::flashStatusText(*s.flashStatus), hex32(*s.flashStatus)) : none);
+    flash_->setText(s.flashStatus
+                        ? QStringLiteral("%1 (%2)").arg(canopen::flashStatusText(*s.flashStatus), hex32(*s.flashStatus))
+                        : none);
 }
 
 QString ProgramDownloadDialog::stepText(ProgramStep step) const {
@@ -210,10 +226,17 @@ bool ProgramDownloadDialog::startDownload(bool confirm) {
         return false;
     }
     if (confirm) {
-        QString text = tr("Download %1 (%2 bytes) into program %3 of node %4?").arg(QFileInfo(path).fileName()).arg(req.image.size()).arg(req.program).arg(node_);
-        QString info = tr("The node stops its application (1F51h = 0) and its program is replaced. If the download fails, the node may have no "
-                          "valid program until a download succeeds.");
-        if (const QString drives = enabledDrivesOnNode(); !drives.isEmpty()) info += QLatin1Char(' ') + tr("CoScope disables %1 first (6040h = 0).").arg(drives);
+        QString text = tr("Download %1 (%2 bytes) into program %3 of node %4?")
+                           .arg(QFileInfo(path).fileName())
+                           .arg(req.image.size())
+                           .arg(req.program)
+                           .arg(node_);
+        QString info =
+            tr("The node stops its application (1F51h = 0) and its program is replaced. If the download fails, the "
+               "node may have no "
+               "valid program until a download succeeds.");
+        if (const QString drives = enabledDrivesOnNode(); !drives.isEmpty())
+            info += QLatin1Char(' ') + tr("CoScope disables %1 first (6040h = 0).").arg(drives);
         if (req.start) info += QLatin1Char(' ') + tr("Then the node starts the new program and resets (boot-up).");
         QMessageBox box(QMessageBox::Warning, windowTitle(), text, QMessageBox::Yes | QMessageBox::No, this);
         box.setInformativeText(info);
@@ -225,15 +248,22 @@ bool ProgramDownloadDialog::startDownload(bool confirm) {
     progress_->setValue(0);
     progress_->setFormat(QString());
     QPointer<ProgramDownloadDialog> self(this);
-    service_->run(req, [self](ProgramStep step) {
-        if (self) self->status_->setText(self->stepText(step) + (step == ProgramStep::Done ? QString() : QStringLiteral("…")));
-    }, [self](qint64 done, qint64 total, double rate) {
-        if (!self) return;
-        self->progress_->setValue(total > 0 ? int(done * 1000 / total) : 0);
-        self->progress_->setFormat(tr("%L1 of %L2 bytes, %L3 KiB/s").arg(done).arg(total).arg(rate / 1024.0, 0, 'f', 1));
-    }, [self](const canopen::ProgramDownloadOutcome& o) {
-        if (self) self->showOutcome(o);
-    });
+    service_->run(
+        req,
+        [self](ProgramStep step) {
+            if (self)
+                self->status_->setText(self->stepText(step) +
+                                       (step == ProgramStep::Done ? QString() : QStringLiteral("…")));
+        },
+        [self](qint64 done, qint64 total, double rate) {
+            if (!self) return;
+            self->progress_->setValue(total > 0 ? int(done * 1000 / total) : 0);
+            self->progress_->setFormat(
+                tr("%L1 of %L2 bytes, %L3 KiB/s").arg(done).arg(total).arg(rate / 1024.0, 0, 'f', 1));
+        },
+        [self](const canopen::ProgramDownloadOutcome& o) {
+            if (self) self->showOutcome(o);
+        });
     updateEnabled();
     return true;
 }
@@ -242,18 +272,24 @@ void ProgramDownloadDialog::showOutcome(const canopen::ProgramDownloadOutcome& o
     outcome_ = o;
     if (o.ok) {
         const QString unknown = tr("unknown");
-        QString text = o.started ? tr("Done: node %1 runs the new program. Software version %2 → %3, software identification %4 → %5.")
-                                       .arg(node_)
-                                       .arg(o.before.version.value_or(unknown), o.after.version.value_or(unknown),
-                                            o.before.softwareId ? hex32(*o.before.softwareId) : unknown, o.after.softwareId ? hex32(*o.after.softwareId) : unknown)
-                                 : tr("Downloaded; the program was not started (node %1 stays stopped).").arg(node_);
+        QString text =
+            o.started
+                ? tr("Done: node %1 runs the new program. Software version %2 → %3, software identification %4 → %5.")
+                      .arg(node_)
+                      .arg(o.before.version.value_or(unknown), o.after.version.value_or(unknown),
+                           o.before.softwareId ? hex32(*o.before.softwareId) : unknown,
+                           o.after.softwareId ? hex32(*o.after.softwareId) : unknown)
+                : tr("Downloaded; the program was not started (node %1 stays stopped).").arg(node_);
         text += QLatin1Char(' ') + tr("%L1 bytes in %L2 s.").arg(o.bytes).arg(o.seconds, 0, 'f', 2);
         status_->setText(text);
         if (o.started) showState(o.after);
     } else {
-        const QString claim = o.step <= ProgramStep::Stop ? tr("The node's program was not touched.")
-                                                          : tr("Nothing is claimed: the node may hold no valid program. Download again to start over from the beginning.");
-        status_->setText((o.cancelled ? tr("Cancelled at “%1”: %2").arg(stepText(o.step), o.error) : tr("Failed at “%1”: %2").arg(stepText(o.step), o.error)) +
+        const QString claim = o.step <= ProgramStep::Stop
+                                  ? tr("The node's program was not touched.")
+                                  : tr("Nothing is claimed: the node may hold no valid program. Download again to "
+                                       "start over from the beginning.");
+        status_->setText((o.cancelled ? tr("Cancelled at “%1”: %2").arg(stepText(o.step), o.error)
+                                      : tr("Failed at “%1”: %2").arg(stepText(o.step), o.error)) +
                          QLatin1Char('\n') + claim);
     }
     updateEnabled();

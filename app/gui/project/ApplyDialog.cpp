@@ -21,7 +21,8 @@
 
 namespace coscope::gui {
 
-ApplyDialog::ApplyDialog(const ProjectSession& session, Workspace* workspace, std::vector<uint8_t> nodes, QWidget* parent)
+ApplyDialog::ApplyDialog(const ProjectSession& session, Workspace* workspace, std::vector<uint8_t> nodes,
+                         QWidget* parent)
     : QDialog(parent), workspace_(workspace) {
     setObjectName(QStringLiteral("applyProjectDialog"));
     setWindowTitle(tr("Apply the project"));
@@ -54,7 +55,8 @@ ApplyDialog::ApplyDialog(const ProjectSession& session, Workspace* workspace, st
         setStatus(tr("Connect to the machine's bus first (not listen-only)."));
         return;
     }
-    apply_ = new project::ProjectApply(*workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session.path()).absolutePath()), this);
+    apply_ = new project::ProjectApply(*workspace_->sdo(),
+                                       eds::projectDictionaryResolver(QFileInfo(session.path()).absolutePath()), this);
     apply_->setNodes(std::move(nodes));
     apply_->setMatcher(eds::scanMatcher());
     setStatus(tr("Reading the drives' values (dry run)…"));
@@ -89,7 +91,8 @@ void ApplyDialog::prepared(std::vector<project::NodeApplyPlan> plans) {
         });
         return;
     }
-    setStatus(tr("%n object(s) to write to %1 node(s). Check the writes below, then Apply.", nullptr, writes).arg(nodes));
+    setStatus(
+        tr("%n object(s) to write to %1 node(s). Check the writes below, then Apply.", nullptr, writes).arg(nodes));
     applyButton_->setEnabled(true);
 }
 
@@ -98,7 +101,9 @@ void ApplyDialog::runApply() {
     for (const auto& p : plans_)
         if (p.writable()) writes += static_cast<int>(p.plan.writes.size());
     QMessageBox box(QMessageBox::Question, tr("Apply the project"),
-                    tr("Write %n object(s) to the drives as listed? The first refused write stops; that node's old values are put back.", nullptr, writes),
+                    tr("Write %n object(s) to the drives as listed? The first refused write stops; that node's old "
+                       "values are put back.",
+                       nullptr, writes),
                     QMessageBox::Yes | QMessageBox::No, this);
     box.setDefaultButton(QMessageBox::No);
     if (box.exec() != QMessageBox::Yes) return;
@@ -112,21 +117,28 @@ void ApplyDialog::runApply() {
 
 void ApplyDialog::finish(project::ApplyReport report) {
     for (const auto& n : report.nodes)
-        if (n.newSerial) text_->appendPlainText(tr("Node %1 is a new drive (serial number 0x%2): the project now expects it.").arg(n.node).arg(*n.newSerial, 8, 16, QChar(u'0')));
-    text_->appendPlainText(QStringLiteral("\n") + tr("Result") + QStringLiteral("\n") + ApplyText::report(report, plans_));
+        if (n.newSerial)
+            text_->appendPlainText(tr("Node %1 is a new drive (serial number 0x%2): the project now expects it.")
+                                       .arg(n.node)
+                                       .arg(*n.newSerial, 8, 16, QChar(u'0')));
+    text_->appendPlainText(QStringLiteral("\n") + tr("Result") + QStringLiteral("\n") +
+                           ApplyText::report(report, plans_));
     finished_ = true;
     report_ = report;
     for (const auto& n : report.nodes)
-        if (n.state == project::NodeApplyState::Written || n.state == project::NodeApplyState::NothingToWrite) written_.push_back(n.node);
-    setStatus(report.ok() ? tr("The project was applied. The drives lose these values at power off unless they are stored.")
-                          : tr("The project was not applied in full: see the result below."));
+        if (n.state == project::NodeApplyState::Written || n.state == project::NodeApplyState::NothingToWrite)
+            written_.push_back(n.node);
+    setStatus(report.ok()
+                  ? tr("The project was applied. The drives lose these values at power off unless they are stored.")
+                  : tr("The project was not applied in full: see the result below."));
     storeButton_->setEnabled(report.ok() && !written_.empty());
     emit applied(report.ok());
 }
 
 void ApplyDialog::runStore() {
     QMessageBox box(QMessageBox::Question, tr("Store in the drives"),
-                    tr("Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = \"save\")?", nullptr, static_cast<int>(written_.size())),
+                    tr("Save all parameters in the non-volatile memory of %n drive(s) (1010h:01 = \"save\")?", nullptr,
+                       static_cast<int>(written_.size())),
                     QMessageBox::Yes | QMessageBox::No, this);
     box.setDefaultButton(QMessageBox::No);
     if (box.exec() != QMessageBox::Yes) return;
@@ -136,15 +148,19 @@ void ApplyDialog::runStore() {
         if (!self) return;
         bool ok = true;
         for (const auto& e : results) {
-            self->text_->appendPlainText((e.ok ? tr("stored: %1") : tr("NOT stored: %1")).arg(e.name + (e.ok ? QString() : QStringLiteral(": ") + e.error)));
+            self->text_->appendPlainText((e.ok ? tr("stored: %1") : tr("NOT stored: %1"))
+                                             .arg(e.name + (e.ok ? QString() : QStringLiteral(": ") + e.error)));
             ok &= e.ok;
         }
-        self->setStatus(ok ? tr("The parameters are stored in the drives.") : tr("A drive did not store its parameters: see below."));
+        self->setStatus(ok ? tr("The parameters are stored in the drives.")
+                           : tr("A drive did not store its parameters: see below."));
     });
 }
 
 void ApplyDialog::saveReport() {
-    const QString path = files::askSaveFile(this, files::kExports, tr("Save report"), QStringLiteral("apply-report.txt"), tr("Text files (*.txt);;All files (*)"));
+    const QString path =
+        files::askSaveFile(this, files::kExports, tr("Save report"), QStringLiteral("apply-report.txt"),
+                           tr("Text files (*.txt);;All files (*)"));
     if (path.isEmpty()) return;
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(reportText().toUtf8()) < 0) {

@@ -22,7 +22,8 @@ class ApplyDialog : public QDialog {
     Q_OBJECT
 public:
     // `nodes`: only these (a replaced drive), empty = all of the project's.
-    ApplyDialog(const ProjectSession& session, Workspace* workspace, std::vector<uint8_t> nodes, QWidget* parent = nullptr);
+    ApplyDialog(const ProjectSession& session, Workspace* workspace, std::vector<uint8_t> nodes,
+                QWidget* parent = nullptr);
 
     QPushButton* applyButton() const { return applyButton_; }
     QPushButton* storeButton() const { return storeButton_; }

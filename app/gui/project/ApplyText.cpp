@@ -8,7 +8,9 @@ namespace coscope::gui {
 using project::NodeApplyState;
 using project::objectKey;
 
-QString ApplyText::nodeText(uint8_t node, const QString& name) { return name.isEmpty() ? tr("Node %1").arg(node) : tr("Node %1 (%2)").arg(node).arg(name); }
+QString ApplyText::nodeText(uint8_t node, const QString& name) {
+    return name.isEmpty() ? tr("Node %1").arg(node) : tr("Node %1 (%2)").arg(node).arg(name);
+}
 
 QString ApplyText::notWrittenReason(const project::NodeApplyPlan& p) {
     switch (p.match) {
@@ -39,7 +41,8 @@ QString ApplyText::plan(const std::vector<project::NodeApplyPlan>& plans) {
             out << tr("%1: not written: %2").arg(nodeText(p.node, p.name), notWrittenReason(p)) << "\n";
             continue;
         }
-        out << tr("%1: %n SDO write(s)", nullptr, static_cast<int>(p.plan.writes.size())).arg(nodeText(p.node, p.name)) << "\n";
+        out << tr("%1: %n SDO write(s)", nullptr, static_cast<int>(p.plan.writes.size())).arg(nodeText(p.node, p.name))
+            << "\n";
         for (const canopen::PlannedWrite& w : p.plan.writes) {
             const QString line = tr("write %1 %2 = %3").arg(objectKey(w.index, w.sub), w.name, w.valueText);
             out << "  " << (w.currentText.isEmpty() ? line : tr("%1  (now %2)").arg(line, w.currentText)) << "\n";
@@ -66,7 +69,8 @@ QString ApplyText::report(const project::ApplyReport& report, const std::vector<
         }
         for (const canopen::ConfigEntryResult& e : n.rollback) {
             const QString what = QStringLiteral("%1 %2 = %3").arg(objectKey(e.index, e.sub), e.name, e.valueText);
-            out << "  " << (e.ok ? tr("put back: %1").arg(what) : tr("NOT put back: %1: %2").arg(what, e.error)) << "\n";
+            out << "  " << (e.ok ? tr("put back: %1").arg(what) : tr("NOT put back: %1: %2").arg(what, e.error))
+                << "\n";
         }
     }
     return text;

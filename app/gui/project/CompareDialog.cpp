@@ -3,9 +3,9 @@
 
 #include "app/gui/files/LastFolders.h"
 
+#include "app/gui/program/ProgramDownloadDialog.h"
 #include "app/gui/project/ApplyDialog.h"
 #include "app/gui/project/CompareModel.h"
-#include "app/gui/program/ProgramDownloadDialog.h"
 #include "app/gui/project/ProjectProgram.h"
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
@@ -56,12 +56,15 @@ CompareDialog::CompareDialog(ProjectSession& session, Workspace* workspace, QWid
     replaceButton_->setObjectName(QStringLiteral("replaceDriveButton"));
     programButton_ = new QPushButton(tr("Download the project's &program…"), this);
     programButton_->setObjectName(QStringLiteral("projectProgramButton"));
-    programButton_->setToolTip(tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
+    programButton_->setToolTip(
+        tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
     applyButton_ = new QPushButton(tr("&Apply the project…"), this);
     auto* close = new QPushButton(tr("Close"), this);
     row->addWidget(only_);
     row->addStretch(1);
-    for (QPushButton* b : {compareButton_, htmlButton_, csvButton_, replaceButton_, programButton_, applyButton_, close}) row->addWidget(b);
+    for (QPushButton* b :
+         {compareButton_, htmlButton_, csvButton_, replaceButton_, programButton_, applyButton_, close})
+        row->addWidget(b);
     layout->addLayout(row);
     connect(only_, &QCheckBox::toggled, model_, &CompareModel::setOnlyDifferences);
     connect(compareButton_, &QPushButton::clicked, this, &CompareDialog::compare);
@@ -86,8 +89,10 @@ void CompareDialog::updateButtons() {
     applyButton_->setEnabled(idle && hasResult_ && workspace_ && workspace_->canTransmit());
     const auto rows = table_->selectionModel()->selectedRows();
     const auto match = rows.isEmpty() ? std::nullopt : model_->nodeMatchAt(rows.first().row());
-    replaceButton_->setEnabled(idle && match && (*match == project::NodeMatch::Replaced || *match == project::NodeMatch::Missing));
-    programButton_->setEnabled(idle && hasResult_ && !ProjectProgram::imageFile(session_, selectedNode()).isEmpty() && workspace_ && workspace_->canTransmit());
+    replaceButton_->setEnabled(idle && match &&
+                               (*match == project::NodeMatch::Replaced || *match == project::NodeMatch::Missing));
+    programButton_->setEnabled(idle && hasResult_ && !ProjectProgram::imageFile(session_, selectedNode()).isEmpty() &&
+                               workspace_ && workspace_->canTransmit());
 }
 
 uint8_t CompareDialog::selectedNode() const {
@@ -104,7 +109,8 @@ void CompareDialog::compare() {
     running_ = true;
     updateButtons();
     status_->setText(tr("Scanning the bus and reading the drives…"));
-    auto* run = new project::ProjectCompare(*workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_.path()).absolutePath()), this);
+    auto* run = new project::ProjectCompare(
+        *workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_.path()).absolutePath()), this);
     run->setMatcher(eds::scanMatcher());
     QPointer<CompareDialog> self(this);
     run->start(session_.project(), {}, [self, run](const project::CompareReport& report) {
@@ -121,18 +127,21 @@ void CompareDialog::showReport(const project::CompareReport& report) {
     int objects = 0, nodes = 0;
     for (const auto& r : report.rows) objects += r.state == project::RowState::Differs ? 1 : 0;
     for (const auto& n : report.nodes) nodes += n.match == project::NodeMatch::Same ? 0 : 1;
-    status_->setText(report.clean() ? tr("The machine is as in the project.")
-                                    : tr("%n object(s) differ; %1 node(s) not as in the project.", nullptr, objects).arg(nodes));
+    status_->setText(report.clean()
+                         ? tr("The machine is as in the project.")
+                         : tr("%n object(s) differ; %1 node(s) not as in the project.", nullptr, objects).arg(nodes));
     table_->resizeColumnsToContents();
     updateButtons();
 }
 
 void CompareDialog::exportAs(bool html) {
-    const QString path = files::askSaveFile(this, files::kExports, html ? tr("Export comparison as HTML") : tr("Export comparison as CSV"),
+    const QString path = files::askSaveFile(this, files::kExports,
+                                            html ? tr("Export comparison as HTML") : tr("Export comparison as CSV"),
                                             html ? QStringLiteral("comparison.html") : QStringLiteral("comparison.csv"),
                                             html ? tr("HTML files (*.html)") : tr("CSV files (*.csv)"));
     if (path.isEmpty()) return;
-    const QString text = html ? project::compareHtml(model_->report(), model_->onlyDifferences()) : project::compareCsv(model_->report(), model_->onlyDifferences());
+    const QString text = html ? project::compareHtml(model_->report(), model_->onlyDifferences())
+                              : project::compareCsv(model_->report(), model_->onlyDifferences());
     QFile f(path);
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(text.toUtf8()) < 0) {
         QMessageBox::warning(this, tr("Export"), tr("Cannot write %1: %2").arg(path, f.errorString()));
@@ -166,7 +175,9 @@ void CompareDialog::replaceDrive() {
     if (!match) return;
     if (*match == project::NodeMatch::Replaced) {
         QMessageBox box(QMessageBox::Question, tr("Replace drive"),
-                        tr("Node %1 is another drive of the same type. Write the project's configuration of node %1 to it? The writes are shown first.").arg(node),
+                        tr("Node %1 is another drive of the same type. Write the project's configuration of node %1 to "
+                           "it? The writes are shown first.")
+                            .arg(node),
                         QMessageBox::Yes | QMessageBox::No, this);
         if (box.exec() == QMessageBox::Yes) openApply({node});
         return;
@@ -181,7 +192,8 @@ std::optional<uint8_t> CompareDialog::sameTypeNotInProject(uint8_t node) const {
         if (n.match != project::NodeMatch::NotInProject) continue;
         const auto info = workspace_->nodes().node(n.node);
         // Same vendor and product in 1018h:01/02 (CiA 301 7.5.2.24): a drive of the same type.
-        if (info && info->vendorId == want->identity.vendorId && info->productCode == want->identity.productCode) return n.node;
+        if (info && info->vendorId == want->identity.vendorId && info->productCode == want->identity.productCode)
+            return n.node;
     }
     return std::nullopt;
 }
@@ -193,16 +205,24 @@ std::optional<uint8_t> CompareDialog::sameTypeNotInProject(uint8_t node) const {
 // (ApplyDialog: dry run, confirmation) and the machine compared again.
 void CompareDialog::replaceMissing(uint8_t node) {
     const auto found = sameTypeNotInProject(node);
-    const QString text = found ? tr("Node %1 does not answer, and node %2 is a drive of the same type that the project does not have (a new drive at its "
-                                    "factory node-ID?). Give it node-ID %1 with the node-ID wizard, then write the project's configuration of node %1 "
-                                    "to it and compare again?").arg(node).arg(*found)
-                               : tr("Node %1 does not answer. If a new drive of the same type is on the bus at another node-ID or without one, find it "
-                                    "in the node-ID wizard (scan, or find a device without node-ID by LSS) and give it node-ID %1; then the project's "
-                                    "configuration of node %1 is written to it and the machine compared again.").arg(node);
+    const QString text = found ? tr("Node %1 does not answer, and node %2 is a drive of the same type that the project "
+                                    "does not have (a new drive at its "
+                                    "factory node-ID?). Give it node-ID %1 with the node-ID wizard, then write the "
+                                    "project's configuration of node %1 "
+                                    "to it and compare again?")
+                                     .arg(node)
+                                     .arg(*found)
+                               : tr("Node %1 does not answer. If a new drive of the same type is on the bus at another "
+                                    "node-ID or without one, find it "
+                                    "in the node-ID wizard (scan, or find a device without node-ID by LSS) and give it "
+                                    "node-ID %1; then the project's "
+                                    "configuration of node %1 is written to it and the machine compared again.")
+                                     .arg(node);
     QMessageBox box(QMessageBox::Question, tr("Replace drive"), text, QMessageBox::Ok | QMessageBox::Cancel, this);
     box.button(QMessageBox::Ok)->setText(tr("Open the node-ID wizard"));
     if (box.exec() != QMessageBox::Ok) return;
-    auto* wizard = qobject_cast<NodeIdWizard*>(openWizard(QStringLiteral("nodeid"), workspace_, found ? *found : -1, parentWidget()));
+    auto* wizard = qobject_cast<NodeIdWizard*>(
+        openWizard(QStringLiteral("nodeid"), workspace_, found ? *found : -1, parentWidget()));
     if (!wizard) return;
     wizard->setChange(NodeIdWizard::Change::NodeId);
     wizard->setVacated(node);  // the comparison found no device answering there
@@ -211,13 +231,18 @@ void CompareDialog::replaceMissing(uint8_t node) {
     QPointer<CompareDialog> self(this);
     connect(wizard, &NodeIdWizard::finished, this, [self, wizard, node](bool ok) {
         if (!self || !ok || wizard->request().newNodeId != node) return;
-        self->status_->setText(tr("The new drive answers at node %1: the project's configuration of node %1 is written to it next.").arg(node));
+        self->status_->setText(
+            tr("The new drive answers at node %1: the project's configuration of node %1 is written to it next.")
+                .arg(node));
         // Once the wizard's own handling of its result is over.
-        QMetaObject::invokeMethod(self, [self, node] {
-            if (!self) return;
-            self->raise();
-            self->openApply({node});
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            self,
+            [self, node] {
+                if (!self) return;
+                self->raise();
+                self->openApply({node});
+            },
+            Qt::QueuedConnection);
     });
 }
 

@@ -63,15 +63,19 @@ void CompareModel::rebuild() {
 uint8_t CompareModel::nodeAt(int row) const {
     if (row < 0 || row >= static_cast<int>(rows_.size())) return 0;
     const Row& r = rows_[static_cast<size_t>(row)];
-    return r.node >= 0 ? report_.nodes[static_cast<size_t>(r.node)].node : report_.rows[static_cast<size_t>(r.object)].node;
+    return r.node >= 0 ? report_.nodes[static_cast<size_t>(r.node)].node
+                       : report_.rows[static_cast<size_t>(r.object)].node;
 }
 
 std::optional<NodeMatch> CompareModel::nodeMatchAt(int row) const {
-    if (row < 0 || row >= static_cast<int>(rows_.size()) || rows_[static_cast<size_t>(row)].node < 0) return std::nullopt;
+    if (row < 0 || row >= static_cast<int>(rows_.size()) || rows_[static_cast<size_t>(row)].node < 0)
+        return std::nullopt;
     return report_.nodes[static_cast<size_t>(rows_[static_cast<size_t>(row)].node)].match;
 }
 
-int CompareModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : static_cast<int>(rows_.size()); }
+int CompareModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : static_cast<int>(rows_.size());
+}
 int CompareModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
 
 QVariant CompareModel::data(const QModelIndex& index, int role) const {
@@ -102,7 +106,8 @@ QVariant CompareModel::data(const QModelIndex& index, int role) const {
     case Object: return project::objectKey(o.index, o.sub);
     case Name:
         // The node's program (CiA 302-3 §4 1F56h, CiA 301 100Ah) against the project's.
-        if (project::isSoftwareRow(o)) return o.index == 0x100A ? tr("Software version") : tr("Software identification");
+        if (project::isSoftwareRow(o))
+            return o.index == 0x100A ? tr("Software version") : tr("Software identification");
         return o.name;
     case ProjectValue: return o.projectValue;
     case DriveValue: return o.state == RowState::Unreadable ? o.error : o.driveValue;

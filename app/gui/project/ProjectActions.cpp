@@ -3,9 +3,9 @@
 
 #include "app/gui/files/LastFolders.h"
 
+#include "app/gui/nodes/NodesDock.h"
 #include "app/gui/project/ApplyDialog.h"
 #include "app/gui/project/CompareDialog.h"
-#include "app/gui/nodes/NodesDock.h"
 #include "app/gui/project/ProjectProgram.h"
 #include "app/gui/project/ProjectSession.h"
 #include "app/gui/session/Workspace.h"
@@ -28,7 +28,8 @@ QString projectFilter() { return ProjectActions::tr("CoScope projects (*.coscope
 }  // namespace
 
 ProjectActions::ProjectActions(Workspace* workspace, QMainWindow* window, Connector connector)
-    : QObject(window), workspace_(workspace), window_(window), connect_(std::move(connector)), session_(new ProjectSession(workspace, this)) {
+    : QObject(window), workspace_(workspace), window_(window), connect_(std::move(connector)),
+      session_(new ProjectSession(workspace, this)) {
     connect(session_, &ProjectSession::changed, this, &ProjectActions::updateTitle);
 }
 
@@ -57,7 +58,8 @@ void ProjectActions::addTo(QMenu* file, QMenuBar* bar) {
     // Before the View menu: File, Bus, Commission, Project, View.
     QAction* before = nullptr;
     for (QAction* a : bar->actions())
-        if (a->menu() && a->menu()->title() == QCoreApplication::translate("coscope::gui::MainWindow", "&View")) before = a;
+        if (a->menu() && a->menu()->title() == QCoreApplication::translate("coscope::gui::MainWindow", "&View"))
+            before = a;
     bar->insertMenu(before, menu);
     menu->addAction(tr("&Compare with the machine…"), this, [this] { showCompare(); });
     menu->addAction(tr("&Back up the machine"), this, &ProjectActions::backUpMachine);
@@ -74,10 +76,12 @@ void ProjectActions::addProgramToNodes() {
     if (!nodes) return;
     auto* action = new QAction(tr("Download the project's program…"), this);
     action->setObjectName(QStringLiteral("projectProgramAction"));
-    action->setToolTip(tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
+    action->setToolTip(
+        tr("Load the program (firmware) the project names for the selected node: CiA 302-3 program download"));
     QPointer<NodesDock> dock(nodes);
     auto update = [this, action, dock] {
-        action->setEnabled(dock && !ProjectProgram::imageFile(*session_, dock->selectedNode()).isEmpty() && workspace_ && workspace_->canTransmit());
+        action->setEnabled(dock && !ProjectProgram::imageFile(*session_, dock->selectedNode()).isEmpty() &&
+                           workspace_ && workspace_->canTransmit());
     };
     connect(nodes, &NodesDock::nodeSelected, action, update);
     connect(session_, &ProjectSession::changed, action, update);
@@ -94,9 +98,13 @@ void ProjectActions::rebuildRecent() {
     if (!recent_) return;
     recent_->clear();
     const QStringList list = ProjectSession::recent();
-    for (const QString& path : list) recent_->addAction(QFileInfo(path).fileName(), this, [this, path] {
-        if (maybeSave()) openProject(path);
-    })->setToolTip(path);
+    for (const QString& path : list)
+        recent_
+            ->addAction(QFileInfo(path).fileName(), this,
+                        [this, path] {
+                            if (maybeSave()) openProject(path);
+                        })
+            ->setToolTip(path);
     recent_->setEnabled(!list.isEmpty());
 }
 
@@ -117,8 +125,10 @@ void ProjectActions::updateTitle() {
 
 bool ProjectActions::maybeSave() {
     if (!session_->isOpen() || !session_->isModified()) return true;
-    QMessageBox box(QMessageBox::Question, tr("Unsaved project"), tr("The project \"%1\" has changes that are not saved. Save the project first?").arg(session_->displayName()),
-                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, window_);
+    QMessageBox box(
+        QMessageBox::Question, tr("Unsaved project"),
+        tr("The project \"%1\" has changes that are not saved. Save the project first?").arg(session_->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, window_);
     box.setDefaultButton(QMessageBox::Save);
     switch (box.exec()) {
     case QMessageBox::Save: return saveProject();
@@ -144,7 +154,8 @@ bool ProjectActions::openProject(const QString& path) {
     const QString url = session_->project().busUrl;
     const bool connected = workspace_ && workspace_->bus() && workspace_->bus()->url().toString() == url;
     if (!url.isEmpty() && !connected && connect_) {
-        QMessageBox box(QMessageBox::Question, tr("Open project"), tr("Connect to the project's bus %1?").arg(url), QMessageBox::Yes | QMessageBox::No, window_);
+        QMessageBox box(QMessageBox::Question, tr("Open project"), tr("Connect to the project's bus %1?").arg(url),
+                        QMessageBox::Yes | QMessageBox::No, window_);
         box.setDefaultButton(QMessageBox::Yes);
         if (box.exec() == QMessageBox::Yes) connect_(url);
     }
@@ -163,10 +174,12 @@ bool ProjectActions::saveProject() {
 }
 
 bool ProjectActions::saveProjectAs() {
-    const QString name = session_->path().isEmpty() ? QStringLiteral("machine.coscope") : QFileInfo(session_->path()).fileName();
+    const QString name =
+        session_->path().isEmpty() ? QStringLiteral("machine.coscope") : QFileInfo(session_->path()).fileName();
     QString path = files::askSaveFile(window_, files::kProjects, tr("Save project"), name, projectFilter());
     if (path.isEmpty()) return false;
-    if (!path.endsWith(QLatin1String(".coscope")) && !path.endsWith(QLatin1String(".coscope.json"))) path += QStringLiteral(".coscope");
+    if (!path.endsWith(QLatin1String(".coscope")) && !path.endsWith(QLatin1String(".coscope.json")))
+        path += QStringLiteral(".coscope");
     QString error;
     if (!session_->save(path, &error)) {
         showProblem(tr("Save project"), error);
@@ -180,33 +193,43 @@ bool ProjectActions::saveProjectAs() {
 void ProjectActions::backUpMachine() {
     if (backingUp_) return;
     if (!workspace_ || !workspace_->sdo() || !workspace_->canTransmit()) {
-        showProblem(tr("Back up the machine"), tr("Connect to the machine's bus first (not listen-only): the backup reads the drives."));
+        showProblem(tr("Back up the machine"),
+                    tr("Connect to the machine's bus first (not listen-only): the backup reads the drives."));
         return;
     }
     if (!session_->isOpen()) session_->newProject();
     backingUp_ = true;
     emit message(tr("Backing up the machine: reading every drive…"));
-    auto* backup = new project::ProjectBackup(*workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_->path()).absolutePath()), this);
+    auto* backup = new project::ProjectBackup(
+        *workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_->path()).absolutePath()), this);
     backup->setMatcher(eds::scanMatcher());
     project::Project start = session_->project();
     if (start.busUrl.isEmpty()) start.busUrl = workspace_->bus()->url().toString();
     QPointer<ProjectActions> self(this);
-    backup->start(start, [self](const QString& what, int, int) { if (self) emit self->message(tr("Backing up the machine: %1").arg(what)); },
-                  [self, backup](const project::Project& result, const std::vector<project::BackupNodeResult>& nodes) {
-                      backup->deleteLater();
-                      if (!self) return;
-                      self->backingUp_ = false;
-                      self->session_->setProject(result);
-                      QStringList lines;
-                      for (const auto& n : nodes)
-                          lines << (n.ok ? tr("Node %1: %2") : tr("Node %1: NOT backed up: %2")).arg(n.node).arg(n.message);
-                      emit self->message(tr("Backup done: %n node(s)", nullptr, static_cast<int>(nodes.size())));
-                      // Shown once the SDO client's callback has returned (no nested loop inside it).
-                      const QString text = tr("The drives' configuration is in the project; save the project to keep it.") + QStringLiteral("\n\n") + lines.join(u'\n');
-                      QMetaObject::invokeMethod(self, [self, text] {
-                          if (self) QMessageBox::information(self->window_, tr("Back up the machine"), text);
-                      }, Qt::QueuedConnection);
-                  });
+    backup->start(
+        start,
+        [self](const QString& what, int, int) {
+            if (self) emit self->message(tr("Backing up the machine: %1").arg(what));
+        },
+        [self, backup](const project::Project& result, const std::vector<project::BackupNodeResult>& nodes) {
+            backup->deleteLater();
+            if (!self) return;
+            self->backingUp_ = false;
+            self->session_->setProject(result);
+            QStringList lines;
+            for (const auto& n : nodes)
+                lines << (n.ok ? tr("Node %1: %2") : tr("Node %1: NOT backed up: %2")).arg(n.node).arg(n.message);
+            emit self->message(tr("Backup done: %n node(s)", nullptr, static_cast<int>(nodes.size())));
+            // Shown once the SDO client's callback has returned (no nested loop inside it).
+            const QString text = tr("The drives' configuration is in the project; save the project to keep it.") +
+                                 QStringLiteral("\n\n") + lines.join(u'\n');
+            QMetaObject::invokeMethod(
+                self,
+                [self, text] {
+                    if (self) QMessageBox::information(self->window_, tr("Back up the machine"), text);
+                },
+                Qt::QueuedConnection);
+        });
 }
 
 CompareDialog* ProjectActions::showCompare(bool run) {

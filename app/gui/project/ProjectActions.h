@@ -37,7 +37,7 @@ public:
 
     void newProject();
     bool openProject(const QString& path);
-    bool saveProject();    // Save as… when it has no file yet
+    bool saveProject();  // Save as… when it has no file yet
     bool saveProjectAs();
     void backUpMachine();
     CompareDialog* showCompare(bool run = true);

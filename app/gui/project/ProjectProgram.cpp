@@ -21,7 +21,8 @@ bool ProjectProgram::preset(ProgramDownloadDialog* dialog, const ProjectSession&
     const QString file = imageFile(session, node);
     if (file.isEmpty() || !dialog) return false;
     if (!QFileInfo::exists(file)) {
-        QMessageBox::warning(parent, tr("Download the project's program"), tr("The project's program of node %1 is not there: %2").arg(node).arg(file));
+        QMessageBox::warning(parent, tr("Download the project's program"),
+                             tr("The project's program of node %1 is not there: %2").arg(node).arg(file));
         return false;
     }
     dialog->setProgramNumber(session.project().node(static_cast<uint8_t>(node))->firmware->program);

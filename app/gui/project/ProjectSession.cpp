@@ -51,7 +51,8 @@ bool ProjectSession::open(const QString& path, QString* error) {
 
 bool ProjectSession::save(const QString& path, QString* error) {
     captureSettings();
-    if (project_.busUrl.isEmpty() && workspace_ && workspace_->bus()) project_.busUrl = workspace_->bus()->url().toString();
+    if (project_.busUrl.isEmpty() && workspace_ && workspace_->bus())
+        project_.busUrl = workspace_->bus()->url().toString();
     if (!project::ProjectFile::write(project_, path, error)) return false;
     path_ = QFileInfo(path).absoluteFilePath();
     open_ = true;
@@ -89,8 +90,10 @@ void ProjectSession::captureSettings() {
 // filters given to their docks at once.
 void ProjectSession::restoreSettings() {
     QSettings s;
-    for (auto it = project_.master.begin(); it != project_.master.end(); ++it) s.setValue(QStringLiteral("master/") + it.key(), it.value().toVariant());
-    s.setValue(kTransmitKey, QJsonDocument(project_.transmit).toJson(QJsonDocument::Compact));  // a project without rows has none
+    for (auto it = project_.master.begin(); it != project_.master.end(); ++it)
+        s.setValue(QStringLiteral("master/") + it.key(), it.value().toVariant());
+    s.setValue(kTransmitKey,
+               QJsonDocument(project_.transmit).toJson(QJsonDocument::Compact));  // a project without rows has none
     emit settingsRestored();
     if (plots_.restore) plots_.restore(project_.plots);
     if (traceFilters_.restore) traceFilters_.restore(project_.traceFilters);
@@ -99,13 +102,17 @@ void ProjectSession::restoreSettings() {
         const auto signal = dissect::RawSignal::parse(v.toString());
         if (!signal) continue;
         const auto& have = workspace_->rawSignals();
-        if (std::none_of(have.begin(), have.end(), [&](const dissect::RawSignal& h) { return h.spec() == signal->spec(); })) workspace_->addRawSignal(*signal);
+        if (std::none_of(have.begin(), have.end(),
+                         [&](const dissect::RawSignal& h) { return h.spec() == signal->spec(); }))
+            workspace_->addRawSignal(*signal);
     }
 }
 
 // The app's one model of recent lists (RecentFiles.h).
 QStringList ProjectSession::recent() { return RecentList(QString::fromLatin1(RecentFilesMenu::kProjects)).list(); }
 
-void ProjectSession::addRecent(const QString& path) { RecentList(QString::fromLatin1(RecentFilesMenu::kProjects)).add(path); }
+void ProjectSession::addRecent(const QString& path) {
+    RecentList(QString::fromLatin1(RecentFilesMenu::kProjects)).add(path);
+}
 
 }  // namespace coscope::gui

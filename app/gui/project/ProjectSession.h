@@ -57,8 +57,8 @@ signals:
     void settingsRestored();
 
 private:
-    void captureSettings();   // the window's settings into project_
-    void restoreSettings();   // project_'s settings into the window's
+    void captureSettings();  // the window's settings into project_
+    void restoreSettings();  // project_'s settings into the window's
     Workspace* workspace_;
     project::Project project_;
     QString path_;

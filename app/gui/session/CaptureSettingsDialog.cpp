@@ -43,10 +43,12 @@ CaptureSettingsDialog::CaptureSettingsDialog(QWidget* parent) : QDialog(parent) 
     budget_->setRange(0, physicalMegabytes());
     budget_->setSuffix(tr(" MiB"));
     budget_->setSingleStep(256);
-    budget_->setSpecialValueText(tr("Automatic (%1)").arg(QLocale().formattedDataSize(qint64(defaultTraceMemoryBudget()))));
+    budget_->setSpecialValueText(
+        tr("Automatic (%1)").arg(QLocale().formattedDataSize(qint64(defaultTraceMemoryBudget()))));
     budget_->setValue(int(std::clamp<qlonglong>(s.value(kMemoryBudgetKey, 0).toLongLong(), 0, budget_->maximum())));
-    budget_->setToolTip(tr("The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. "
-                           "0 = automatic: a quarter of the memory, at most 4 GiB."));
+    budget_->setToolTip(tr(
+        "The trace keeps at most this much in memory; older frames are read back from the capture journal when needed. "
+        "0 = automatic: a quarter of the memory, at most 4 GiB."));
 
     keepDays_ = new QSpinBox(this);
     keepDays_->setObjectName(QStringLiteral("keepDays"));
@@ -65,10 +67,11 @@ CaptureSettingsDialog::CaptureSettingsDialog(QWidget* parent) : QDialog(parent) 
     form->addRow(tr("Trace memory budget:"), budget_);
     form->addRow(tr("Keep capture journals for:"), keepDays_);
     form->addRow(tr("Keep capture journals up to:"), keepMegabytes_);
-    auto* folder = new QLabel(tr("Capture journals are kept in %1. Older ones are removed at start and when these settings change; "
-                                 "a journal being written or not yet offered for reopening is never removed.")
-                                  .arg(journals::defaultFolder()),
-                              this);
+    auto* folder = new QLabel(
+        tr("Capture journals are kept in %1. Older ones are removed at start and when these settings change; "
+           "a journal being written or not yet offered for reopening is never removed.")
+            .arg(journals::defaultFolder()),
+        this);
     folder->setWordWrap(true);
     folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
     buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);

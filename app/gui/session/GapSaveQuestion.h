@@ -19,7 +19,8 @@ namespace coscope::gui {
 class GapSaveQuestion {
     Q_DECLARE_TR_FUNCTIONS(GapSaveQuestion)
 public:
-    static bool confirm(QWidget* parent, const TraceStore* store, const QString& path, const QString& format, bool quiet);
+    static bool confirm(QWidget* parent, const TraceStore* store, const QString& path, const QString& format,
+                        bool quiet);
 };
 
 }  // namespace coscope::gui

@@ -3,8 +3,8 @@
 
 #include <QSettings>
 
-#include <algorithm>
 #include <unistd.h>
+#include <algorithm>
 
 namespace coscope::gui {
 

@@ -35,7 +35,8 @@ QByteArray le(int64_t v, int bytes) {
 }
 
 // One SDO write after the other (one outstanding request, as drives like); `done` after the last.
-void writeInOrder(Workspace* ws, uint8_t node, std::shared_ptr<std::vector<Write>> writes, size_t i, std::function<void()> done) {
+void writeInOrder(Workspace* ws, uint8_t node, std::shared_ptr<std::vector<Write>> writes, size_t i,
+                  std::function<void()> done) {
     if (i >= writes->size()) {
         done();
         return;
@@ -56,14 +57,14 @@ void writeInOrder(Workspace* ws, uint8_t node, std::shared_ptr<std::vector<Write
 // mappings, transmission type 1) show motion. Virtual network only.
 void startMotion(Workspace* ws, uint8_t node) {
     auto writes = std::make_shared<std::vector<Write>>(std::vector<Write>{
-        {0x2002, 0x01, le(8, 2)},       // H02-00 = 8: CANopen control (extract-aimotor notes)
-        {0x6060, 0x00, le(3, 1)},       // modes of operation: profile velocity (CiA 402-2 Table 35)
-        {0x6083, 0x00, le(20000, 4)},   // profile acceleration, pulse/s²
-        {0x6084, 0x00, le(20000, 4)},   // profile deceleration
-        {0x60FF, 0x00, le(0, 4)},       // target velocity 0 until enabled
-        {0x6040, 0x00, le(0x06, 2)},    // shutdown -> READY TO SWITCH ON
-        {0x6040, 0x00, le(0x07, 2)},    // switch on -> SWITCHED ON
-        {0x6040, 0x00, le(0x0F, 2)},    // enable operation -> OPERATION ENABLED
+        {0x2002, 0x01, le(8, 2)},      // H02-00 = 8: CANopen control (extract-aimotor notes)
+        {0x6060, 0x00, le(3, 1)},      // modes of operation: profile velocity (CiA 402-2 Table 35)
+        {0x6083, 0x00, le(20000, 4)},  // profile acceleration, pulse/s²
+        {0x6084, 0x00, le(20000, 4)},  // profile deceleration
+        {0x60FF, 0x00, le(0, 4)},      // target velocity 0 until enabled
+        {0x6040, 0x00, le(0x06, 2)},   // shutdown -> READY TO SWITCH ON
+        {0x6040, 0x00, le(0x07, 2)},   // switch on -> SWITCHED ON
+        {0x6040, 0x00, le(0x0F, 2)},   // enable operation -> OPERATION ENABLED
     });
     writeInOrder(ws, node, writes, 0, [ws, node] {
         if (!ws->master()) return;
@@ -136,7 +137,8 @@ void startSimulationDemo(Workspace* ws) {
                 });
             }
             QString error;
-            if (!ws->master()->send(canopen::nmtFrame(canopen::NmtCommand::Start, 0), &error)) spdlog::warn("simulation: {}", error.toStdString());
+            if (!ws->master()->send(canopen::nmtFrame(canopen::NmtCommand::Start, 0), &error))
+                spdlog::warn("simulation: {}", error.toStdString());
             spdlog::info("simulation: nodes identified, heartbeats on, network started");
             // The AIMOTOR moves once the node table knows it (identity reads may still run).
             auto tries = std::make_shared<int>(0);
@@ -151,7 +153,9 @@ void startSimulationDemo(Workspace* ws) {
                     }
                 // A minute: identity reads of a loaded machine or a sanitizer build come late.
                 if (++*tries >= 240 || !ws->canTransmit()) {
-                    if (*tries >= 240) spdlog::warn("simulation: the AIMOTOR was not identified within 60 s; the demo does not move it");
+                    if (*tries >= 240)
+                        spdlog::warn(
+                            "simulation: the AIMOTOR was not identified within 60 s; the demo does not move it");
                     wait->deleteLater();
                 }
             });

@@ -2,16 +2,16 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/language/CoreText.h"
 
+#include "app/gui/session/MemoryBudget.h"
+#include "core/can/BusInterfaceName.h"
 #include "core/canopen/BusMaster.h"
-#include "core/logio/LogProbe.h"
 #include "core/canopen/DriveDisable.h"
 #include "core/canopen/GuardedDrives.h"
 #include "core/canopen/HeartbeatMonitor.h"
 #include "core/canopen/MasterContext.h"
 #include "core/canopen/SdoClient.h"
-#include "core/can/BusInterfaceName.h"
+#include "core/logio/LogProbe.h"
 #include "core/trace/JournalFolder.h"
-#include "app/gui/session/MemoryBudget.h"
 
 #include <QFileInfo>
 #include <QSettings>
@@ -28,12 +28,8 @@ constexpr int kDisableWaitMs = 500;  // for the Disable frames' copies before a 
 }  // namespace
 
 Workspace::Workspace(QObject* parent)
-    : QObject(parent),
-      traceDecoder_(std::make_shared<TraceDecoder>()),
-      decoder_(traceDecoder_),
-      store_(std::make_shared<TraceStore>()),
-      signals_(std::make_shared<dissect::SignalRecorder>()),
-      events_(decoder_) {
+    : QObject(parent), traceDecoder_(std::make_shared<TraceDecoder>()), decoder_(traceDecoder_),
+      store_(std::make_shared<TraceStore>()), signals_(std::make_shared<dissect::SignalRecorder>()), events_(decoder_) {
     traceDecoder_->setStore(store_);
     for (const QString& spec : QSettings().value(kRawKey).toStringList())
         if (const auto r = dissect::RawSignal::parse(spec)) raw_.push_back(*r);
@@ -80,15 +76,16 @@ void Workspace::reset() {
 // A log being opened hands its frames to the Health monitor's low-priority thread (issue 19:
 // the trace's index, filters and plots first); a live capture analyses them as they come.
 std::vector<CaptureSession::Consumer> Workspace::analysisConsumers(bool healthLater) {
-    std::vector<CaptureSession::Consumer> out{[this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
-                                              [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
-                                              [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
+    std::vector<CaptureSession::Consumer> out{
+        [this](const TraceStore& s, FrameNo first, size_t count) { nodes_.consume(s, first, count); },
+        [this](const TraceStore& s, FrameNo first, size_t count) { events_.consume(s, first, count); },
+        [rec = signals_](const TraceStore& s, FrameNo first, size_t count) { rec->consume(s, first, count); }};
     if (healthLater)
-        out.push_back([this, store = std::shared_ptr<const TraceStore>(store_)](const TraceStore&, FrameNo first, size_t count) {
-            health_.consumeLater(store, first, count);
-        });
-    else
-        out.push_back([this](const TraceStore& s, FrameNo first, size_t count) { health_.consume(s, first, count); });
+        out.push_back(
+            [this, store = std::shared_ptr<const TraceStore>(store_)](const TraceStore&, FrameNo first, size_t count) {
+                health_.consumeLater(store, first, count);
+            });
+    else out.push_back([this](const TraceStore& s, FrameNo first, size_t count) { health_.consume(s, first, count); });
     return out;
 }
 
@@ -103,7 +100,9 @@ bool Workspace::connectBus(const QString& url, QString* error) {
     bus_ = std::move(bus);
     sourceName_ = bus_->url().toString();
     connect(bus_.get(), &CanBus::stateChanged, this, [this](CanBus::State s) {
-        if (s == CanBus::State::Error && bus_) events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, [why = bus_->errorString()] { return coreText(why); }));
+        if (s == CanBus::State::Error && bus_)
+            events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1,
+                                      [why = bus_->errorString()] { return coreText(why); }));
         if (bus_) noteLostAdapter(s);
         emit busStateChanged(s);
     });
@@ -114,7 +113,9 @@ bool Workspace::connectBus(const QString& url, QString* error) {
         // Bounded memory: frames beyond the budget are paged back from the journal.
         store_->setPager(journal_->pager());
         store_->setMemoryBudget(traceMemoryBudget());
-        session_->addConsumer([j = journal_.get()](const TraceStore& s, FrameNo first, size_t count) { j->appendFromStore(s, first, count); });
+        session_->addConsumer([j = journal_.get()](const TraceStore& s, FrameNo first, size_t count) {
+            j->appendFromStore(s, first, count);
+        });
     }
     master_ = std::make_unique<canopen::MasterContext>(bus_.get(), &nodes_);
     for (auto& c : analysisConsumers(false)) session_->addConsumer(std::move(c));
@@ -138,7 +139,8 @@ void Workspace::noteLostAdapter(CanBus::State s) {
         const FrameNo from = static_cast<FrameNo>(store_->size());
         nodes_.markGap(from);
         events_.add(renderedEvent(TraceEvent::Kind::BusError, lostSinceNs_, kNoFrame, -1, [why = bus_->errorString()] {
-            return tr("Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.").arg(coreText(why));
+            return tr("Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.")
+                .arg(coreText(why));
         }));
         spdlog::warn("bus {} lost: {}", sourceName_.toStdString(), bus_->errorString().toStdString());
     } else if (s == CanBus::State::Open && lostSinceNs_ != 0) {
@@ -187,31 +189,36 @@ void Workspace::watchErrorControl() {
     monitor_->setTableFedByTrace(true);
     canopen::HeartbeatMonitor* m = monitor_.get();
     connect(m, &canopen::HeartbeatMonitor::nodeChanged, this, [this, m](int node) {
-        events_.setWatched(node, m->watch(static_cast<uint8_t>(node)).status != canopen::ErrorControlWatch::Status::Off);
+        events_.setWatched(node,
+                           m->watch(static_cast<uint8_t>(node)).status != canopen::ErrorControlWatch::Status::Off);
     });
     connect(m, &canopen::HeartbeatMonitor::nodeLost, this, [this, m](int node) {
         const canopen::ErrorControlWatch w = m->watch(static_cast<uint8_t>(node));
         events_.add(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs(), kNoFrame, node, [w] {
-            return w.guarding() ? tr("Node guarding lost: no answer within the node life time of %1 ms (guard time %2 ms × %3)")
-                                      .arg(w.guardTimeMs * w.lifeTimeFactor)
-                                      .arg(w.guardTimeMs)
-                                      .arg(w.lifeTimeFactor)
-                                : tr("Heartbeat lost: none within the consumer time of %1 ms").arg(w.consumerTimeMs);
+            return w.guarding()
+                       ? tr("Node guarding lost: no answer within the node life time of %1 ms (guard time %2 ms × %3)")
+                             .arg(w.guardTimeMs * w.lifeTimeFactor)
+                             .arg(w.guardTimeMs)
+                             .arg(w.lifeTimeFactor)
+                       : tr("Heartbeat lost: none within the consumer time of %1 ms").arg(w.consumerTimeMs);
         }));
     });
     connect(m, &canopen::HeartbeatMonitor::nodeBack, this, [this, m](int node) {
         const bool guarding = m->watch(static_cast<uint8_t>(node)).guarding();
-        events_.add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, node,
-                                  [guarding] { return guarding ? tr("Node guarding answers again") : tr("Heartbeat back"); }));
+        events_.add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, node, [guarding] {
+            return guarding ? tr("Node guarding answers again") : tr("Heartbeat back");
+        }));
     });
     connect(m, &canopen::HeartbeatMonitor::guardingError, this, [this](int node, const QString& what) {
-        events_.add(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs(), kNoFrame, node, [what] { return coreText(what); }));
+        events_.add(renderedEvent(TraceEvent::Kind::HeartbeatTimeout, nowNs(), kNoFrame, node,
+                                  [what] { return coreText(what); }));
     });
 }
 
 void Workspace::closeMaster() {
     monitor_.reset();  // its guarding requests stop
-    std::vector<canopen::GuardedDrives::PutBack> putBack = guards_ ? guards_->takePutBack() : std::vector<canopen::GuardedDrives::PutBack>{};
+    std::vector<canopen::GuardedDrives::PutBack> putBack =
+        guards_ ? guards_->takePutBack() : std::vector<canopen::GuardedDrives::PutBack>{};
     guards_.reset();
     // Nothing periodic may counter the Disable (a transmit row with a controlword, process data
     // with each SYNC); CoScope's heartbeat goes on while drives watch it.
@@ -222,10 +229,12 @@ void Workspace::closeMaster() {
     sdo_.reset();
     const canopen::DriveDisableOutcome disabled = disableEnabledDrives();
     if (master_ && !putBack.empty()) {
-        for (const canopen::PutBackOutcome& o : canopen::putBackDirect(*master_, std::move(putBack), disabled, kDisableWaitMs)) {
+        for (const canopen::PutBackOutcome& o :
+             canopen::putBackDirect(*master_, std::move(putBack), disabled, kDisableWaitMs)) {
             const int node = o.node;
             const bool ok = o.putBack;
-            events_.add(renderedEvent(ok ? TraceEvent::Kind::Info : TraceEvent::Kind::BusError, nowNs(), kNoFrame, node, [text = o.text] { return coreText(text); }));
+            events_.add(renderedEvent(ok ? TraceEvent::Kind::Info : TraceEvent::Kind::BusError, nowNs(), kNoFrame, node,
+                                      [text = o.text] { return coreText(text); }));
             if (!ok) emit errorOccurred(coreText(o.text));
         }
     }
@@ -242,12 +251,14 @@ canopen::DriveDisableOutcome Workspace::disableEnabledDrives() {
         auto name = [node, axis] { return axis ? tr("node %1 axis %2").arg(node).arg(axis) : tr("node %1").arg(node); };
         if (d.seen) {
             events_.add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, node, [name] {
-                return tr("Disable voltage (6040h = 0000h) sent to %1 before the bus closed, and seen on the bus").arg(name());
+                return tr("Disable voltage (6040h = 0000h) sent to %1 before the bus closed, and seen on the bus")
+                    .arg(name());
             }));
             continue;
         }
         auto text = [name, why = d.error] {
-            return tr("%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it closed (%2). Check the drive.")
+            return tr("%1 may still be enabled: its Disable voltage (6040h = 0000h) was not seen on the bus before it "
+                      "closed (%2). Check the drive.")
                 .arg(name(), coreText(why));
         };
         events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, node, text));
@@ -266,7 +277,8 @@ void Workspace::openJournal() {
     journalPath_ = journals::newJournalPath(journalFolder(), sourceName_);
     auto journal = std::make_unique<CaptureJournal>();
     if (journalPath_.isEmpty() || !journal->open(journalPath_, {busInterfaceName(bus_->url())})) {
-        const QString why = journalPath_.isEmpty() ? tr("cannot create the folder %1").arg(journalFolder()) : journal->errorString();
+        const QString why =
+            journalPath_.isEmpty() ? tr("cannot create the folder %1").arg(journalFolder()) : journal->errorString();
         spdlog::warn("no capture journal: {}", why.toStdString());
         journalPath_.clear();
         emit errorOccurred(tr("The capture is not journaled to disk (%1); it is kept in memory only").arg(why));
@@ -287,10 +299,14 @@ QString probeErrorText(const QString& path, const logio::LogProbe& probe) {
     if (!probe.error.isEmpty()) return probe.error;
     // Recognised by no format, only guessed by the file's name: say so rather than blame the
     // guessed format's syntax (issue 37).
-    QStringList lines{probe.formatByName ? Workspace::tr("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, CoScope CSV, "
-                                                         "SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4); read as %2 by its name, no CAN frame was found")
-                                               .arg(QFileInfo(path).fileName(), probe.format)
-                                         : Workspace::tr("%1: no CAN frame found (read as %2)").arg(QFileInfo(path).fileName(), probe.format)};
+    QStringList lines{
+        probe.formatByName
+            ? Workspace::tr("%1: not a format CoScope reads (tried candump, Vector ASC and BLF, PEAK TRC, pcap/pcapng, "
+                            "CoScope CSV, "
+                            "SavvyCAN GVRET, BUSMASTER, IXXAT, Kvaser and ASAM MDF4); read as %2 by its name, no CAN "
+                            "frame was found")
+                  .arg(QFileInfo(path).fileName(), probe.format)
+            : Workspace::tr("%1: no CAN frame found (read as %2)").arg(QFileInfo(path).fileName(), probe.format)};
     for (const auto& d : probe.problems) lines << Workspace::tr("line %1: %2").arg(d.where).arg(d.message);
     return lines.join(u'\n');
 }
@@ -314,9 +330,10 @@ bool Workspace::openLog(const QString& path, QString* error) {
     // become unknown from there, as they did live, and the Events say so.
     auto onGap = [this](const TraceStore::Gap& g) {
         nodes_.markGap(g.firstFrame);
-        events_.add(renderedEvent(TraceEvent::Kind::Info, g.backNs, g.firstFrame, -1, [s = double(g.backNs - g.lostNs) / 1e9] {
-            return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
-        }));
+        events_.add(
+            renderedEvent(TraceEvent::Kind::Info, g.backNs, g.firstFrame, -1, [s = double(g.backNs - g.lostNs) / 1e9] {
+                return tr("Bus back after %1 s: frames between are missing from the trace").arg(s, 0, 'f', 1);
+            }));
     };
     loadJob_ = std::make_unique<LogLoadJob>(path, store_, analysisConsumers(true), onGap);
     // Bounded memory: a large log pages from a spill journal beside the capture journals.
@@ -332,7 +349,9 @@ void Workspace::clear() {
 }
 
 canopen::SyncProducer* Workspace::syncProducer() const { return busMaster_ ? &busMaster_->sync() : nullptr; }
-canopen::HeartbeatProducer* Workspace::heartbeatProducer() const { return busMaster_ ? &busMaster_->heartbeat() : nullptr; }
+canopen::HeartbeatProducer* Workspace::heartbeatProducer() const {
+    return busMaster_ ? &busMaster_->heartbeat() : nullptr;
+}
 
 bool Workspace::canTransmit() const { return bus_ && bus_->state() == CanBus::State::Open && !bus_->isListenOnly(); }
 
@@ -398,12 +417,14 @@ void Workspace::poll() {
     if (!bus_) return;
     if (journal_ && journal_->hasError()) {
         // The disk is full or gone: stop here rather than capture what could not be kept.
-        const QString message = tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
-                                    .arg(journal_->path(), journal_->errorString())
-                                    .arg(store_->size());
+        const QString message =
+            tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
+                .arg(journal_->path(), journal_->errorString())
+                .arg(store_->size());
         events_.add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1,
                                   [path = journal_->path(), why = journal_->errorString(), frames = store_->size()] {
-                                      return tr("Capture stopped: cannot write the capture journal %1 (%2). The trace keeps the %L3 frames received.")
+                                      return tr("Capture stopped: cannot write the capture journal %1 (%2). The trace "
+                                                "keeps the %L3 frames received.")
                                           .arg(path, coreText(why))
                                           .arg(frames);
                                   }));
@@ -415,9 +436,11 @@ void Workspace::poll() {
     if (lostSinceNs_ == 0) events_.checkHeartbeats(nowNs());
     const auto c = bus_->counters();
     if (c.dropped > reportedDropped_) {
-        events_.add(renderedEvent(TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1, [now = c.dropped - reportedDropped_, total = c.dropped] {
-            return tr("%n frame(s) dropped (receive queue full), %1 in total", nullptr, static_cast<int>(now)).arg(total);
-        }));
+        events_.add(renderedEvent(
+            TraceEvent::Kind::Dropped, nowNs(), kNoFrame, -1, [now = c.dropped - reportedDropped_, total = c.dropped] {
+                return tr("%n frame(s) dropped (receive queue full), %1 in total", nullptr, static_cast<int>(now))
+                    .arg(total);
+            }));
         reportedDropped_ = c.dropped;
     }
     reportedErrors_ = c.errors;

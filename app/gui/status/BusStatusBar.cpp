@@ -51,7 +51,8 @@ BusStatusBar::BusStatusBar(QStatusBar* bar, Workspace* workspace) : QObject(bar)
     master_->hide();
     restart_ = new QPushButton(tr("Restart controller"), bar);
     restart_->setObjectName(QStringLiteral("restartController"));
-    restart_->setToolTip(tr("The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)"));
+    restart_->setToolTip(
+        tr("The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)"));
     restart_->hide();
     bar->addPermanentWidget(restart_);
     connect(restart_, &QPushButton::clicked, this, &BusStatusBar::restartController);
@@ -98,14 +99,16 @@ void BusStatusBar::refresh(Job* job) {
         double bits = 0;
         uint64_t counted = 0;
         for (uint64_t n = lastFrames_; n < frames;) {
-            const uint64_t chunkEnd = std::min<uint64_t>(frames, ((n >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits);
+            const uint64_t chunkEnd =
+                std::min<uint64_t>(frames, ((n >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits);
             if (!store->isResident(static_cast<FrameNo>(n))) {
                 n = chunkEnd;
                 continue;
             }
             for (; n < chunkEnd; ++n, ++counted) {
                 const TraceRecord& r = store->record(static_cast<FrameNo>(n));
-                bits += frameBits((r.flags & CanFrame::Remote) ? 0 : std::min<int>(r.len, 8), r.flags & CanFrame::Extended);
+                bits +=
+                    frameBits((r.flags & CanFrame::Remote) ? 0 : std::min<int>(r.len, 8), r.flags & CanFrame::Extended);
             }
         }
         if (counted > 0) bits *= double(frames - lastFrames_) / double(counted);
@@ -131,11 +134,17 @@ void BusStatusBar::refresh(Job* job) {
     }
     if (bus->isListenOnly()) state += tr(" · listen-only");
     state_->setText(state);
-    state_->setStyleSheet(bus->state() == CanBus::State::Lost ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
-    state_->setToolTip(bus->state() == CanBus::State::Lost ? tr("Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back (Disconnect stops trying).").arg(bus->errorString()) : QString());
+    state_->setStyleSheet(bus->state() == CanBus::State::Lost ? QStringLiteral("color: #b00020; font-weight: bold")
+                                                              : QString());
+    state_->setToolTip(bus->state() == CanBus::State::Lost
+                           ? tr("Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back "
+                                "(Disconnect stops trying).")
+                                 .arg(bus->errorString())
+                           : QString());
     rate_->setText(tr("%L1 frames/s").arg(rate_fps_, 0, 'f', 0));
     load_->setText(tr("load %1 %").arg(load_pct_, 0, 'f', 1));
-    load_->setToolTip(tr("Estimated from frame lengths with worst-case bit stuffing at %1 bit/s").arg(bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000));
+    load_->setToolTip(tr("Estimated from frame lengths with worst-case bit stuffing at %1 bit/s")
+                          .arg(bus->url().bitrate() > 0 ? bus->url().bitrate() : 500000));
     dropped_->setText(tr("dropped %L1").arg(c.dropped));
     dropped_->setStyleSheet(c.dropped ? QStringLiteral("color: #b00020; font-weight: bold") : QString());
     errors_->setText(tr("errors %L1").arg(c.errors));
@@ -154,8 +163,9 @@ void BusStatusBar::refresh(Job* job) {
     if (!ctl.isEmpty() && c.txErrors >= 0) ctl += tr(" · TEC %1 REC %2").arg(c.txErrors).arg(c.rxErrors);
     controller_->setText(ctl);
     controller_->setVisible(!ctl.isEmpty());
-    controller_->setStyleSheet(c.controllerState >= S::Passive ? QStringLiteral("color: #b00020; font-weight: bold")
-                               : c.controllerState == S::Warning ? QStringLiteral("color: #a05a00") : QString());
+    controller_->setStyleSheet(c.controllerState >= S::Passive   ? QStringLiteral("color: #b00020; font-weight: bold")
+                               : c.controllerState == S::Warning ? QStringLiteral("color: #a05a00")
+                                                                 : QString());
     controller_->setToolTip(tr("CAN controller state from the last error frame (transmit / receive error counters)"));
     restart_->setVisible(c.controllerState == S::BusOff);
 }
@@ -165,12 +175,16 @@ void BusStatusBar::restartController() {
     if (!bus) return;
     QString why;
     if (bus->restartController(&why)) {
-        workspace_->events().add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, -1, [] { return tr("Controller restarted after bus-off"); }));
+        workspace_->events().add(renderedEvent(TraceEvent::Kind::Info, nowNs(), kNoFrame, -1,
+                                               [] { return tr("Controller restarted after bus-off"); }));
         return;
     }
     // Said where the user looks, and kept in the Events.
-    workspace_->events().add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, [why] { return tr("Restart after bus-off failed: %1").arg(coreText(why)); }));
-    if (auto* bar = qobject_cast<QStatusBar*>(parent())) bar->showMessage(tr("Restart after bus-off failed: %1").arg(why), 10000);
+    workspace_->events().add(renderedEvent(TraceEvent::Kind::BusError, nowNs(), kNoFrame, -1, [why] {
+        return tr("Restart after bus-off failed: %1").arg(coreText(why));
+    }));
+    if (auto* bar = qobject_cast<QStatusBar*>(parent()))
+        bar->showMessage(tr("Restart after bus-off failed: %1").arg(why), 10000);
     restart_->setToolTip(tr("Last restart failed: %1").arg(why));
 }
 

@@ -39,12 +39,15 @@ void decodeNmt(const CanFrame& f, Dissection& d) {
     const uint8_t cs = f.data[0], node = f.data[1];
     d.addUInt("nmt.cs", cs);
     d.addUInt("nmt.node", node);
-    const QString target = node == 0 ? QCoreApplication::translate("FrameDecoder", "all nodes") : QCoreApplication::translate("FrameDecoder", "node %1").arg(node);
+    const QString target = node == 0 ? QCoreApplication::translate("FrameDecoder", "all nodes")
+                                     : QCoreApplication::translate("FrameDecoder", "node %1").arg(node);
     d.summary = QStringLiteral("NMT %1 → %2").arg(coreText(canopen::nmtCommandName(cs)), target);
     if (d.wantTree()) {
         d.item(0, QCoreApplication::translate("FrameDecoder", "NMT node control"), {}, 0, 2);
-        d.item(1, QCoreApplication::translate("FrameDecoder", "Command specifier"), QStringLiteral("%1 (%2)").arg(hex(cs, 2), coreText(canopen::nmtCommandName(cs))), 0, 1);
-        d.item(1, QCoreApplication::translate("FrameDecoder", "Node-ID"), node == 0 ? QCoreApplication::translate("FrameDecoder", "0 (all)") : QString::number(node), 1, 1);
+        d.item(1, QCoreApplication::translate("FrameDecoder", "Command specifier"),
+               QStringLiteral("%1 (%2)").arg(hex(cs, 2), coreText(canopen::nmtCommandName(cs))), 0, 1);
+        d.item(1, QCoreApplication::translate("FrameDecoder", "Node-ID"),
+               node == 0 ? QCoreApplication::translate("FrameDecoder", "0 (all)") : QString::number(node), 1, 1);
     }
 }
 
@@ -64,11 +67,17 @@ void decodeErrorControl(const CanFrame& f, Dissection& d) {
     const uint8_t state = f.data[0] & 0x7F;
     d.addUInt("nmt.state", state);
     d.summary = state == 0 ? QCoreApplication::translate("FrameDecoder", "Boot-up node %1").arg(d.node)
-                           : QCoreApplication::translate("FrameDecoder", "Heartbeat node %1: %2").arg(d.node).arg(coreText(canopen::nmtStateName(state)));
+                           : QCoreApplication::translate("FrameDecoder", "Heartbeat node %1: %2")
+                                 .arg(d.node)
+                                 .arg(coreText(canopen::nmtStateName(state)));
     if (d.wantTree()) {
-        d.item(0, state == 0 ? QCoreApplication::translate("FrameDecoder", "Boot-up") : QCoreApplication::translate("FrameDecoder", "Heartbeat / guarding"), {}, 0, 1);
+        d.item(0,
+               state == 0 ? QCoreApplication::translate("FrameDecoder", "Boot-up")
+                          : QCoreApplication::translate("FrameDecoder", "Heartbeat / guarding"),
+               {}, 0, 1);
         d.item(1, QCoreApplication::translate("FrameDecoder", "Toggle"), QString::number(f.data[0] >> 7), 0, 1, 7, 1);
-        d.item(1, QCoreApplication::translate("FrameDecoder", "NMT state"), QStringLiteral("%1 (%2)").arg(state).arg(coreText(canopen::nmtStateName(state))), 0, 1, 0, 7);
+        d.item(1, QCoreApplication::translate("FrameDecoder", "NMT state"),
+               QStringLiteral("%1 (%2)").arg(state).arg(coreText(canopen::nmtStateName(state))), 0, 1, 0, 7);
     }
 }
 
@@ -82,16 +91,21 @@ void decodeEmcy(const CanFrame& f, Dissection& d) {
     const QString vendor = dissect::hexBytes(m.vendor, 5, true);
     d.addText("emcy.vendor_bytes", vendor);
     d.summary = m.code == 0 ? QCoreApplication::translate("FrameDecoder", "EMCY node %1: error reset").arg(d.node)
-                            : QCoreApplication::translate("FrameDecoder", "EMCY node %1: %2 %3, reg %4").arg(d.node).arg(hex(m.code, 4), text, hex(m.errorRegister, 2));
+                            : QCoreApplication::translate("FrameDecoder", "EMCY node %1: %2 %3, reg %4")
+                                  .arg(d.node)
+                                  .arg(hex(m.code, 4), text, hex(m.errorRegister, 2));
     if (f.len < 8) d.warn(QCoreApplication::translate("FrameDecoder", "EMCY frame shorter than 8 bytes"));
     if (d.wantTree()) {
         d.item(0, QCoreApplication::translate("FrameDecoder", "Emergency"), {}, 0, f.len);
-        d.item(1, QCoreApplication::translate("FrameDecoder", "Error code"), QStringLiteral("%1 %2").arg(hex(m.code, 4), text), 0, 2);
+        d.item(1, QCoreApplication::translate("FrameDecoder", "Error code"),
+               QStringLiteral("%1 %2").arg(hex(m.code, 4), text), 0, 2);
         d.item(1, QCoreApplication::translate("FrameDecoder", "Error register (1001h)"), hex(m.errorRegister, 2), 2, 1);
         const QStringList bits = canopen::errorRegisterBits(m.errorRegister);
         int named = 0;  // errorRegisterBits() lists the names of the set bits, lowest first
         for (int b = 0; b < 8; ++b)
-            if (m.errorRegister & (1u << b)) d.item(2, QCoreApplication::translate("FrameDecoder", "Bit %1").arg(b), bits.value(named++), 2, 1, b, 1);
+            if (m.errorRegister & (1u << b))
+                d.item(2, QCoreApplication::translate("FrameDecoder", "Bit %1").arg(b), bits.value(named++), 2, 1, b,
+                       1);
         d.item(1, QCoreApplication::translate("FrameDecoder", "Manufacturer-specific"), vendor, 3, 5);
     }
 }
@@ -124,18 +138,27 @@ void decodeSdo(const CanFrame& f, Dissection& d, bool fromClient) {
     if (!s.error.isEmpty()) d.warn(s.error);
     d.summary = text;
     if (d.wantTree()) {
-        d.item(0, fromClient ? QCoreApplication::translate("FrameDecoder", "SDO request (client → server)") : QCoreApplication::translate("FrameDecoder", "SDO response (server → client)"), {}, 0, f.len);
-        if (f.len >= 1) d.item(1, QCoreApplication::translate("FrameDecoder", "Command"), QStringLiteral("%1 (%2)").arg(hex(f.data[0], 2), cs), 0, 1);
+        d.item(0,
+               fromClient ? QCoreApplication::translate("FrameDecoder", "SDO request (client → server)")
+                          : QCoreApplication::translate("FrameDecoder", "SDO response (server → client)"),
+               {}, 0, f.len);
+        if (f.len >= 1)
+            d.item(1, QCoreApplication::translate("FrameDecoder", "Command"),
+                   QStringLiteral("%1 (%2)").arg(hex(f.data[0], 2), cs), 0, 1);
         if (s.hasMux) {
             d.item(1, QCoreApplication::translate("FrameDecoder", "Index"), hex(s.index, 4), 1, 2);
             d.item(1, QCoreApplication::translate("FrameDecoder", "Sub-index"), hex(s.sub, 2), 3, 1);
         }
         if (s.command == canopen::SdoCommand::Abort)
-            d.item(1, QCoreApplication::translate("FrameDecoder", "Abort code"), QStringLiteral("%1 %2").arg(hex(s.abortCode, 8), coreText(canopen::sdoAbortText(s.abortCode))), 4, 4);
+            d.item(1, QCoreApplication::translate("FrameDecoder", "Abort code"),
+                   QStringLiteral("%1 %2").arg(hex(s.abortCode, 8), coreText(canopen::sdoAbortText(s.abortCode))), 4,
+                   4);
         else if (s.expedited && !s.data.isEmpty())
-            d.item(1, QCoreApplication::translate("FrameDecoder", "Data"), QString::number(littleEndian(s.data)), 4, static_cast<int>(s.data.size()));
+            d.item(1, QCoreApplication::translate("FrameDecoder", "Data"), QString::number(littleEndian(s.data)), 4,
+                   static_cast<int>(s.data.size()));
         else if (!s.hasMux && f.len > 1)
-            d.item(1, QCoreApplication::translate("FrameDecoder", "Segment data"), dissect::hexBytes(f.data.data() + 1, f.len - 1, true), 1, f.len - 1);
+            d.item(1, QCoreApplication::translate("FrameDecoder", "Segment data"),
+                   dissect::hexBytes(f.data.data() + 1, f.len - 1, true), 1, f.len - 1);
     }
 }
 
@@ -154,8 +177,10 @@ public:
         case Service::Nmt: decodeNmt(f, d); break;
         case Service::Sync:
             if (f.len >= 1) d.addUInt("sync.counter", f.data[0]);
-            d.summary = f.len >= 1 ? QCoreApplication::translate("FrameDecoder", "SYNC counter %1").arg(f.data[0]) : QStringLiteral("SYNC");
-            if (d.wantTree()) d.item(0, QStringLiteral("SYNC"), f.len ? QString::number(f.data[0]) : QString(), 0, f.len);
+            d.summary = f.len >= 1 ? QCoreApplication::translate("FrameDecoder", "SYNC counter %1").arg(f.data[0])
+                                   : QStringLiteral("SYNC");
+            if (d.wantTree())
+                d.item(0, QStringLiteral("SYNC"), f.len ? QString::number(f.data[0]) : QString(), 0, f.len);
             break;
         case Service::Time: d.summary = QCoreApplication::translate("FrameDecoder", "TIME stamp"); break;
         case Service::Emcy: decodeEmcy(f, d); break;
@@ -165,19 +190,27 @@ public:
         case Service::LssRequest:
         case Service::LssResponse: {
             const bool master = info.service == Service::LssRequest;
-            d.summary = QStringLiteral("LSS %1 %2").arg(master ? QStringLiteral("→") : QStringLiteral("←"),
-                                                        f.len ? canopen::lssCommandName(f.data[0], master) : QCoreApplication::translate("FrameDecoder", "(empty)"));
+            d.summary = QStringLiteral("LSS %1 %2")
+                            .arg(master ? QStringLiteral("→") : QStringLiteral("←"),
+                                 f.len ? canopen::lssCommandName(f.data[0], master)
+                                       : QCoreApplication::translate("FrameDecoder", "(empty)"));
             if (f.len) d.addUInt("lss.cs", f.data[0]);
-            if (d.wantTree() && f.len) d.item(0, QCoreApplication::translate("FrameDecoder", "LSS command"), QString::number(f.data[0]), 0, 1);
+            if (d.wantTree() && f.len)
+                d.item(0, QCoreApplication::translate("FrameDecoder", "LSS command"), QString::number(f.data[0]), 0, 1);
             break;
         }
         case Service::Unknown:
-            d.summary = f.isExtended() ? QCoreApplication::translate("FrameDecoder", "(29-bit identifier, not CANopen)") : QString();
+            d.summary = f.isExtended() ? QCoreApplication::translate("FrameDecoder", "(29-bit identifier, not CANopen)")
+                                       : QString();
             break;
         default: {  // PDOs: raw unless a mapping is known (network context)
             d.pdoNumber = canopen::pdoNumber(info.service) + 1;
-            d.summary = QCoreApplication::translate("FrameDecoder", "%1 node %2, %3 bytes").arg(canopen::serviceName(info.service)).arg(info.node).arg(f.len);
-            if (d.wantTree() && f.len) d.item(0, canopen::serviceName(info.service), dissect::hexBytes(f.data.data(), f.len, true), 0, f.len);
+            d.summary = QCoreApplication::translate("FrameDecoder", "%1 node %2, %3 bytes")
+                            .arg(canopen::serviceName(info.service))
+                            .arg(info.node)
+                            .arg(f.len);
+            if (d.wantTree() && f.len)
+                d.item(0, canopen::serviceName(info.service), dissect::hexBytes(f.data.data(), f.len, true), 0, f.len);
             break;
         }
         }

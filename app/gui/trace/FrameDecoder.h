@@ -21,7 +21,9 @@ public:
     virtual void decode(const CanFrame& frame, dissect::Dissection& out) const = 0;
     // Frame n of `store`, in the context of the frames before it (PDO mappings, SDO transfers).
     // The default decodes the frame on its own.
-    virtual void decodeAt(const TraceStore& store, FrameNo n, dissect::Dissection& out) const { decode(store.frame(n), out); }
+    virtual void decodeAt(const TraceStore& store, FrameNo n, dissect::Dissection& out) const {
+        decode(store.frame(n), out);
+    }
     // Changes whenever results given before may be stale (dictionaries reassigned, store replaced).
     virtual uint64_t revision() const { return 0; }
 };

@@ -8,12 +8,12 @@
 
 #include <QFontDatabase>
 
-#include <algorithm>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QSplitter>
 #include <QTextEdit>
 #include <QTreeWidget>
+#include <algorithm>
 
 namespace coscope::gui {
 
@@ -44,7 +44,8 @@ FrameDetailsView::FrameDetailsView(QWidget* parent) : QWidget(parent) {
     split->setStretchFactor(1, 1);
     layout->addWidget(split);
     connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
-        highlight_ = item ? std::pair{item->data(0, kOffsetRole).toInt(), item->data(0, kLengthRole).toInt()} : std::pair{0, 0};
+        highlight_ =
+            item ? std::pair{item->data(0, kOffsetRole).toInt(), item->data(0, kLengthRole).toInt()} : std::pair{0, 0};
         renderHex();
     });
 }
@@ -82,7 +83,8 @@ void FrameDetailsView::showTransfer(const dissect::SdoTransferRecord& t, const s
     transferData_ = t.data;
     highlight_ = {0, 0};
     tree_->clear();
-    const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper();
+    const QString object =
+        QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper();
     const QString name = localObjectName(t);
     auto* top = new QTreeWidgetItem(tree_, {tr("SDO transfer"), QStringLiteral("%1 %2").arg(object, name)});
     auto add = [top](const QString& label, const QString& value) { return new QTreeWidgetItem(top, {label, value}); };
@@ -92,19 +94,25 @@ void FrameDetailsView::showTransfer(const dissect::SdoTransferRecord& t, const s
     add(tr("Mode"), t.block ? tr("block") : t.segmented ? tr("segmented") : tr("expedited"));
     add(tr("Size"), tr("%n byte(s)", nullptr, static_cast<int>(t.size)));
     if (!t.data.isEmpty()) {
-        add(tr("Data"), QString::fromLatin1(t.data.left(64).toHex(' ').toUpper()) + (t.data.size() > 64 ? QStringLiteral(" …") : QString()))
+        add(tr("Data"), QString::fromLatin1(t.data.left(64).toHex(' ').toUpper()) +
+                            (t.data.size() > 64 ? QStringLiteral(" …") : QString()))
             ->setData(0, kLengthRole, static_cast<int>(t.data.size()));
     }
     if (!t.valueText.isEmpty()) add(tr("Value"), coreText(t.valueText));
     auto* status = add(tr("Status"), coreText(t.status));
     if (t.status != QLatin1String("ok")) status->setForeground(1, QColor(176, 0, 32));
     if (t.status == QLatin1String("aborted")) {
-        add(tr("Abort code"), QStringLiteral("0x%1").arg(t.abortCode, 8, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x")));
+        add(tr("Abort code"), QStringLiteral("0x%1")
+                                  .arg(t.abortCode, 8, 16, QLatin1Char('0'))
+                                  .toUpper()
+                                  .replace(QLatin1String("0X"), QLatin1String("0x")));
         add(tr("Abort reason"), coreText(t.abortText));
     }
     if (!frames.empty())
-        add(tr("Frames"), frames.size() == 1 ? tr("1 (frame %1)").arg(frames.front() + 1)
-                                             : tr("%1 (frames %2–%3)").arg(frames.size()).arg(frames.front() + 1).arg(frames.back() + 1));
+        add(tr("Frames"),
+            frames.size() == 1
+                ? tr("1 (frame %1)").arg(frames.front() + 1)
+                : tr("%1 (frames %2–%3)").arg(frames.size()).arg(frames.front() + 1).arg(frames.back() + 1));
     add(tr("Duration"), QStringLiteral("%1 ms").arg(static_cast<double>(t.endNs - t.startNs) / 1e6, 0, 'f', 3));
     top->setExpanded(true);
     renderHex();
@@ -122,8 +130,10 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
     const QString id = f.isExtended() ? QStringLiteral("%1").arg(f.id, 8, 16, QLatin1Char('0')).toUpper()
                                       : QStringLiteral("%1").arg(f.id, 3, 16, QLatin1Char('0')).toUpper();
     new QTreeWidgetItem(top, {tr("Identifier"), tr("%1h (%2-bit)").arg(id).arg(f.isExtended() ? 29 : 11)});
-    new QTreeWidgetItem(top, {tr("Service"), canopen::serviceName(d.service) + (d.node >= 0 ? tr(", node %1").arg(d.node) : QString())});
-    new QTreeWidgetItem(top, {tr("Length"), QString::number(f.len) + (f.isRemote() ? tr(" (remote request)") : QString())});
+    new QTreeWidgetItem(top, {tr("Service"), canopen::serviceName(d.service) +
+                                                 (d.node >= 0 ? tr(", node %1").arg(d.node) : QString())});
+    new QTreeWidgetItem(top,
+                        {tr("Length"), QString::number(f.len) + (f.isRemote() ? tr(" (remote request)") : QString())});
     QStringList flags;
     if (f.isTx()) flags << tr("transmitted");
     if (f.isFd()) flags << QStringLiteral("CAN FD");
@@ -145,8 +155,12 @@ void FrameDetailsView::showDecoded(const CanFrame& f, uint64_t number, const dis
         item->setText(0, coreText(localObjectNames(d, t.label)));
         item->setText(1, coreLines(localObjectNames(d, t.value)));
         if (t.byteLength > 0) {
-            QString where = t.byteLength == 1 ? tr("byte %1").arg(t.byteOffset) : tr("bytes %1–%2").arg(t.byteOffset).arg(t.byteOffset + t.byteLength - 1);
-            if (t.bitOffset >= 0) where += t.bitLength == 1 ? tr(", bit %1").arg(t.bitOffset) : tr(", bits %1–%2").arg(t.bitOffset).arg(t.bitOffset + t.bitLength - 1);
+            QString where = t.byteLength == 1
+                                ? tr("byte %1").arg(t.byteOffset)
+                                : tr("bytes %1–%2").arg(t.byteOffset).arg(t.byteOffset + t.byteLength - 1);
+            if (t.bitOffset >= 0)
+                where += t.bitLength == 1 ? tr(", bit %1").arg(t.bitOffset)
+                                          : tr(", bits %1–%2").arg(t.bitOffset).arg(t.bitOffset + t.bitLength - 1);
             item->setText(2, where);
         }
         item->setData(0, kOffsetRole, t.byteOffset);

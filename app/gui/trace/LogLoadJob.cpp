@@ -20,12 +20,10 @@
 
 namespace coscope::gui {
 
-LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers, GapHandler onGap)
+LogLoadJob::LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers,
+                       GapHandler onGap)
     : Job(QCoreApplication::translate("LogLoadJob", "Opening %1").arg(QFileInfo(path).fileName())),
-      path_(std::move(path)),
-      store_(std::move(store)),
-      consumers_(std::move(consumers)),
-      onGap_(std::move(onGap)) {}
+      path_(std::move(path)), store_(std::move(store)), consumers_(std::move(consumers)), onGap_(std::move(onGap)) {}
 
 LogLoadJob::~LogLoadJob() {
     stopAndJoin();
@@ -51,7 +49,8 @@ void LogLoadJob::startSpill() {
     const QString path = journals::newJournalPath(spillFolder_, QFileInfo(path_).fileName());
     auto spill = std::make_unique<CaptureJournal>();
     if (path.isEmpty() || !spill->open(path, {})) {
-        spdlog::warn("opening {} without a spill file, all in memory: {}", path_.toStdString(), spill->errorString().toStdString());
+        spdlog::warn("opening {} without a spill file, all in memory: {}", path_.toStdString(),
+                     spill->errorString().toStdString());
         spillFolder_.clear();
         return;
     }
@@ -132,7 +131,10 @@ void LogLoadJob::noteReaderLocked(const logio::LogReader& reader, size_t& seenDi
     diagnosticCount_ = reader.diagnosticCount();
     const auto& d = reader.diagnostics();
     for (; seenDiagnostics < d.size() && diagnostics_.size() < 100; ++seenDiagnostics) {
-        diagnostics_.append(QStringLiteral("%1:%2: %3").arg(QFileInfo(path_).fileName()).arg(d[seenDiagnostics].where).arg(d[seenDiagnostics].message));
+        diagnostics_.append(QStringLiteral("%1:%2: %3")
+                                .arg(QFileInfo(path_).fileName())
+                                .arg(d[seenDiagnostics].where)
+                                .arg(d[seenDiagnostics].message));
         problems_.push_back(d[seenDiagnostics]);
     }
     linesRead_ = reader.linesRead();
@@ -154,11 +156,11 @@ void LogLoadJob::run() {
     }
     std::mutex queueMutex;
     std::condition_variable queueChanged;
-    std::deque<ReadBatch> ready;     // parsed, waiting for the store
-    std::vector<ReadBatch> spare;    // emptied, for the parser to fill again
-    bool parsed = false;             // the parser reached the end (or was cancelled)
-    std::deque<Handoff> stored;      // in the store, waiting for the consumers
-    bool storing = true;             // this thread may still add to `stored`
+    std::deque<ReadBatch> ready;            // parsed, waiting for the store
+    std::vector<ReadBatch> spare;           // emptied, for the parser to fill again
+    bool parsed = false;                    // the parser reached the end (or was cancelled)
+    std::deque<Handoff> stored;             // in the store, waiting for the consumers
+    bool storing = true;                    // this thread may still add to `stored`
     double parserCpu = 0, analysisCpu = 0;  // seconds, for the log line at the end
     std::thread parser([&] {
         size_t seenDiagnostics = 0;
@@ -177,7 +179,8 @@ void LogLoadJob::run() {
             b.frames.resize(kBatchFrames);
             b.gaps.clear();
             b.count = reader->read(b.frames.data(), b.frames.size());
-            for (const auto& gaps = reader->gaps(); seenGaps < gaps.size(); ++seenGaps) b.gaps.push_back(gaps[seenGaps]);
+            for (const auto& gaps = reader->gaps(); seenGaps < gaps.size(); ++seenGaps)
+                b.gaps.push_back(gaps[seenGaps]);
             setProgress(reader->progress());
             {
                 std::lock_guard lock(mutex_);
@@ -267,8 +270,9 @@ void LogLoadJob::run() {
     }
     if (reader->hasError()) fail(reader->errorString());
     std::lock_guard lock(mutex_);
-    spdlog::info("opened {}: {} frames ({}), {} problems; CPU {:.2f} s parsing, {:.2f} s storing, {:.2f} s analysing", path_.toStdString(),
-                 store_->size(), format_.toStdString(), diagnosticCount_, parserCpu, loadThreadCpuSeconds(), analysisCpu);
+    spdlog::info("opened {}: {} frames ({}), {} problems; CPU {:.2f} s parsing, {:.2f} s storing, {:.2f} s analysing",
+                 path_.toStdString(), store_->size(), format_.toStdString(), diagnosticCount_, parserCpu,
+                 loadThreadCpuSeconds(), analysisCpu);
 }
 
 }  // namespace coscope::gui

@@ -27,7 +27,8 @@ namespace coscope::gui {
 class LogLoadJob : public Job {
 public:
     using GapHandler = std::function<void(const TraceStore::Gap&)>;
-    LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers, GapHandler onGap = {});
+    LogLoadJob(QString path, std::shared_ptr<TraceStore> store, std::vector<CaptureSession::Consumer> consumers,
+               GapHandler onGap = {});
     ~LogLoadJob() override;
 
     const QString& path() const { return path_; }

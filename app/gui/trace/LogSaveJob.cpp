@@ -18,12 +18,8 @@ LogSaveJob::LogSaveJob(QString path, QString format, std::shared_ptr<const Trace
                        std::optional<std::vector<FrameNo>> frames, QStringList busNames,
                        std::shared_ptr<const FrameDecoder> decoder)
     : Job(QCoreApplication::translate("LogSaveJob", "Saving %1").arg(QFileInfo(path).fileName())),
-      path_(std::move(path)),
-      format_(std::move(format)),
-      store_(std::move(store)),
-      frames_(std::move(frames)),
-      busNames_(std::move(busNames)),
-      decoder_(std::move(decoder)) {}
+      path_(std::move(path)), format_(std::move(format)), store_(std::move(store)), frames_(std::move(frames)),
+      busNames_(std::move(busNames)), decoder_(std::move(decoder)) {}
 
 LogSaveJob::~LogSaveJob() { stopAndJoin(); }
 
@@ -60,7 +56,8 @@ void LogSaveJob::run() {
     // keep them; MainWindow asks before saving to a format that cannot).
     std::vector<TraceStore::Gap> gaps = store_->gaps();
     // Stable: two gaps before the same frame keep their order (the earlier loss first).
-    std::stable_sort(gaps.begin(), gaps.end(), [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
+    std::stable_sort(gaps.begin(), gaps.end(),
+                     [](const TraceStore::Gap& a, const TraceStore::Gap& b) { return a.firstFrame < b.firstFrame; });
     size_t nextGap = 0;
     for (size_t i = 0; i < total; ++i) {
         if ((i & 0xFFFF) == 0) {

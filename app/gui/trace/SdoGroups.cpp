@@ -20,8 +20,8 @@ namespace {
 
 // Commands that start a transfer (CiA 301 §7.2.4.3: the client's initiate requests).
 bool startsTransfer(SdoCommand c) {
-    return c == SdoCommand::InitiateDownloadRequest || c == SdoCommand::InitiateUploadRequest || c == SdoCommand::BlockDownloadInitiate ||
-           c == SdoCommand::BlockUploadInitiate;
+    return c == SdoCommand::InitiateDownloadRequest || c == SdoCommand::InitiateUploadRequest ||
+           c == SdoCommand::BlockDownloadInitiate || c == SdoCommand::BlockUploadInitiate;
 }
 
 bool lessFrame(const std::pair<FrameNo, uint32_t>& a, FrameNo n) { return a.first < n; }
@@ -65,7 +65,8 @@ bool SdoGroupIndex::scan(const TraceStore& store, FrameNo to, const std::functio
         const bool fromClient = base == 0x600;
         Channel& c = channels_[uint32_t(r.bus) << 7 | uint32_t(node)];
         const auto payload = store.payload(n);
-        const canopen::SdoFrame f = dissect::parseSdoFor(c.sdo, payload.data(), static_cast<int>(payload.size()), fromClient);
+        const canopen::SdoFrame f =
+            dissect::parseSdoFor(c.sdo, payload.data(), static_cast<int>(payload.size()), fromClient);
         if (f.command == SdoCommand::Invalid) {
             scanned_ = n + 1;
             continue;
@@ -76,7 +77,8 @@ bool SdoGroupIndex::scan(const TraceStore& store, FrameNo to, const std::functio
         scratch_.reset(dissect::Dissection::Level::Stats);
         dissect::sdoTrack(c.sdo, f, fromClient, node, r.timestampNs, scratch_);
         if (scratch_.hasTransfer) addGroup(c);
-        else if (idleBefore && c.sdo.phase == dissect::SdoChannel::Phase::Idle) c.frames.clear();  // not part of a transfer
+        else if (idleBefore && c.sdo.phase == dissect::SdoChannel::Phase::Idle)
+            c.frames.clear();  // not part of a transfer
         scanned_ = n + 1;
     }
     scanned_ = std::max(scanned_, to);
@@ -88,11 +90,13 @@ int64_t SdoGroupIndex::groupOf(FrameNo n) const {
     return it != byFrame_.end() && it->first == n ? static_cast<int64_t>(it->second) : -1;
 }
 
-dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const SdoGroupIndex& index, size_t g, const FrameDecoder& decoder) {
+dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, const SdoGroupIndex& index, size_t g,
+                                                 const FrameDecoder& decoder) {
     return record(store, index.frames(g), decoder);
 }
 
-dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, std::span<const FrameNo> frames, const FrameDecoder& decoder) {
+dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, std::span<const FrameNo> frames,
+                                                 const FrameDecoder& decoder) {
     if (frames.empty()) return {};
     // Reassembled from the group's own frames: always available.
     dissect::SdoChannel ch;
@@ -102,32 +106,38 @@ dissect::SdoTransferRecord SdoGroupIndex::record(const TraceStore& store, std::s
         const TraceRecord& r = store.record(n);
         const bool fromClient = (r.id & 0x780) == 0x600;
         const auto payload = store.payload(n);
-        const canopen::SdoFrame f = dissect::parseSdoFor(ch, payload.data(), static_cast<int>(payload.size()), fromClient);
+        const canopen::SdoFrame f =
+            dissect::parseSdoFor(ch, payload.data(), static_cast<int>(payload.size()), fromClient);
         d.reset(dissect::Dissection::Level::Stats);
         dissect::sdoTrack(ch, f, fromClient, static_cast<int>(r.id & 0x7F), r.timestampNs, d);
     }
     dissect::SdoTransferRecord own = d.transfer;
-    if (own.status == QLatin1String("aborted") && own.abortText.isEmpty()) own.abortText = coreText(canopen::sdoAbortText(own.abortCode));
+    if (own.status == QLatin1String("aborted") && own.abortText.isEmpty())
+        own.abortText = coreText(canopen::sdoAbortText(own.abortCode));
     // The decoder's, in the context of the trace: object name and typed value.
     dissect::Dissection full;
     full.reset(dissect::Dissection::Level::Flat);
     decoder.decodeAt(store, frames.back(), full);
-    if (full.hasTransfer && full.transfer.index == own.index && full.transfer.sub == own.sub && full.transfer.status == own.status)
+    if (full.hasTransfer && full.transfer.index == own.index && full.transfer.sub == own.sub &&
+        full.transfer.status == own.status)
         return full.transfer;
     return own;
 }
 
 QString SdoGroupIndex::summary(const dissect::SdoTransferRecord& t, size_t frames) {
-    const QString object = QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper() +
-                           (t.name.isEmpty() ? QString() : u' ' + localObjectName(t));
+    const QString object =
+        QStringLiteral("%1:%2").arg(t.index, 4, 16, QLatin1Char('0')).arg(t.sub, 2, 16, QLatin1Char('0')).toUpper() +
+        (t.name.isEmpty() ? QString() : u' ' + localObjectName(t));
     //: Trace, one row per SDO transfer: %1 = node, %2 = object ("6041:00 Statusword")
-    QString s = (t.upload ? QCoreApplication::translate("SdoGroupIndex", "SDO read node %1 %2") : QCoreApplication::translate("SdoGroupIndex", "SDO write node %1 %2"))
+    QString s = (t.upload ? QCoreApplication::translate("SdoGroupIndex", "SDO read node %1 %2")
+                          : QCoreApplication::translate("SdoGroupIndex", "SDO write node %1 %2"))
                     .arg(t.node)
                     .arg(object);
-    const QString mode = t.block ? QCoreApplication::translate("SdoGroupIndex", "block")
+    const QString mode = t.block       ? QCoreApplication::translate("SdoGroupIndex", "block")
                          : t.segmented ? QCoreApplication::translate("SdoGroupIndex", "segmented")
                                        : QCoreApplication::translate("SdoGroupIndex", "expedited");
-    const QString frameText = frames == 1 ? QCoreApplication::translate("SdoGroupIndex", "1 frame") : QCoreApplication::translate("SdoGroupIndex", "%1 frames").arg(frames);
+    const QString frameText = frames == 1 ? QCoreApplication::translate("SdoGroupIndex", "1 frame")
+                                          : QCoreApplication::translate("SdoGroupIndex", "%1 frames").arg(frames);
     if (t.status == QLatin1String("aborted")) {
         //: %1 = abort code in hex, %2 = its meaning, %3 = expedited/segmented/block, %4 = "3 frames"
         s += QCoreApplication::translate("SdoGroupIndex", ": aborted 0x%1 %2 (%3, %4)")
@@ -136,7 +146,9 @@ QString SdoGroupIndex::summary(const dissect::SdoTransferRecord& t, size_t frame
         return s;
     }
     if (!t.valueText.isEmpty()) s += QStringLiteral(" = ") + coreText(t.valueText);
-    else if (!t.data.isEmpty()) s += QStringLiteral(" = ") + QString::fromLatin1(t.data.left(16).toHex(' ').toUpper()) + (t.data.size() > 16 ? QStringLiteral(" …") : QString());
+    else if (!t.data.isEmpty())
+        s += QStringLiteral(" = ") + QString::fromLatin1(t.data.left(16).toHex(' ').toUpper()) +
+             (t.data.size() > 16 ? QStringLiteral(" …") : QString());
     //: %1 = expedited/segmented/block, %2 = size, %3 = "3 frames"
     s += QCoreApplication::translate("SdoGroupIndex", " (%1, %2 bytes, %3)").arg(mode).arg(t.size).arg(frameText);
     if (t.status != QLatin1String("ok")) s += QStringLiteral(" ⚠ ") + coreText(t.status);
@@ -147,7 +159,8 @@ SdoGroupIndex::RowText SdoGroupIndex::rowText(const dissect::SdoTransferRecord& 
     RowText text;
     text.summary = summary(t, frames);
     text.size = t.size;
-    text.data = QString::fromLatin1(t.data.left(8).toHex(' ').toUpper()) + (t.data.size() > 8 ? QStringLiteral(" …") : QString());
+    text.data = QString::fromLatin1(t.data.left(8).toHex(' ').toUpper()) +
+                (t.data.size() > 8 ? QStringLiteral(" …") : QString());
     return text;
 }
 

@@ -43,9 +43,7 @@ public:
 
     size_t size() const { return groups_.size(); }
     const SdoGroup& group(size_t g) const { return groups_[g]; }
-    std::span<const FrameNo> frames(size_t g) const {
-        return {members_.data() + groups_[g].begin, groups_[g].count};
-    }
+    std::span<const FrameNo> frames(size_t g) const { return {members_.data() + groups_[g].begin, groups_[g].count}; }
     // The group frame n belongs to, or -1.
     int64_t groupOf(FrameNo n) const;
     // Members sorted by frame number: (frame, group). For merging with an ascending frame list.
@@ -53,9 +51,11 @@ public:
 
     // The transfer record of group g: from the decoder (names, typed value: it decodes the last
     // frame in its context) when it reports the same transfer, else reassembled from the frames.
-    static dissect::SdoTransferRecord record(const TraceStore& store, const SdoGroupIndex& index, size_t g, const FrameDecoder& decoder);
+    static dissect::SdoTransferRecord record(const TraceStore& store, const SdoGroupIndex& index, size_t g,
+                                             const FrameDecoder& decoder);
     // Same, of a transfer's frames (in trace order; the last one completed or aborted it).
-    static dissect::SdoTransferRecord record(const TraceStore& store, std::span<const FrameNo> frames, const FrameDecoder& decoder);
+    static dissect::SdoTransferRecord record(const TraceStore& store, std::span<const FrameNo> frames,
+                                             const FrameDecoder& decoder);
     // "SDO read node 5 1008:00 Device name = "X" (segmented, 18 bytes, 7 frames)".
     static QString summary(const dissect::SdoTransferRecord& t, size_t frames);
     // The texts of a transfer's row in the trace: Summary, Data (its first 8 bytes), Len.

@@ -178,7 +178,8 @@ void TraceDecoder::decodeAt(const TraceStore& store, FrameNo n, Dissection& out)
         }
     }
     thread_local Dissection skip;
-    for (; cursor.at < n; ++cursor.at) cursor.context->dissect(store.frame(static_cast<FrameNo>(cursor.at)), skip, Dissection::Level::Stats);
+    for (; cursor.at < n; ++cursor.at)
+        cursor.context->dissect(store.frame(static_cast<FrameNo>(cursor.at)), skip, Dissection::Level::Stats);
     cursor.context->dissect(store.frame(n), out, out.level());
     cursor.at = n + 1;
 }

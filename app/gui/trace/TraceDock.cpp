@@ -9,7 +9,6 @@
 #include "app/gui/trace/TraceView.h"
 #include "app/gui/trace/TraceWindow.h"
 
-#include <utility>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -25,6 +24,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <utility>
 
 namespace coscope::gui {
 
@@ -141,7 +141,8 @@ void TraceDock::buildToolbar(QWidget* host) {
     timeMode_->setObjectName(QStringLiteral("timeMode"));
     timeMode_->addItems({tr("Absolute time"), tr("Relative time"), tr("Delta time")});
     timeMode_->setCurrentIndex(1);
-    connect(timeMode_, &QComboBox::currentIndexChanged, this, [this](int i) { model_->setTimeMode(static_cast<TraceModel::TimeMode>(i)); });
+    connect(timeMode_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { model_->setTimeMode(static_cast<TraceModel::TimeMode>(i)); });
     tb->addWidget(timeMode_);
     latest_ = tb->addAction(st->standardIcon(QStyle::SP_FileDialogListView), tr("Latest per ID"));
     latest_->setObjectName(QStringLiteral("latestAction"));
@@ -188,13 +189,18 @@ void TraceDock::buildToolbar(QWidget* host) {
         if (auto* b = qobject_cast<QToolButton*>(tb->widgetForAction(a))) b->setToolButtonStyle(Qt::ToolButtonIconOnly);
         return a;
     };
-    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this, [this] { find(findEdit_->text(), false); }), QStringLiteral("findPrevAction"))
+    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowUp), tr("Previous"), this,
+                           [this] { find(findEdit_->text(), false); }),
+             QStringLiteral("findPrevAction"))
         ->setToolTip(tr("Find previous"));
-    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowDown), tr("Next"), this, [this] { find(findEdit_->text(), true); }), QStringLiteral("findNextAction"))
+    iconOnly(tb->addAction(st->standardIcon(QStyle::SP_ArrowDown), tr("Next"), this,
+                           [this] { find(findEdit_->text(), true); }),
+             QStringLiteral("findNextAction"))
         ->setToolTip(tr("Find next"));
     tb->addSeparator();
-    auto* mark = iconOnly(tb->addAction(st->standardIcon(QStyle::SP_DialogApplyButton), tr("Bookmark"), this, &TraceDock::toggleBookmark),
-                          QStringLiteral("bookmarkAction"));
+    auto* mark = iconOnly(
+        tb->addAction(st->standardIcon(QStyle::SP_DialogApplyButton), tr("Bookmark"), this, &TraceDock::toggleBookmark),
+        QStringLiteral("bookmarkAction"));
     mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
     mark->setToolTip(tr("Toggle a bookmark on the selected frame (Ctrl+B); F2 / Shift+F2 jump"));
     // F2 / Shift+F2 only while the focus is in the trace: elsewhere F2 edits (the Object Dictionary).
@@ -265,8 +271,10 @@ void TraceDock::refresh() {
         if (!filterJob_->isCancelled()) {
             const FrameNo upTo = filterJob_->scannedUpTo();
             if (filterJob_->groupsSdo()) {
-                auto filter = filterJob_->filter().isEmpty() ? std::nullopt : std::optional<TraceFilter>(filterJob_->filter());
-                model_->setView(std::move(filter), filterJob_->takeResult(), upTo, filterJob_->takeGroups(), filterJob_->takeGroupedRows());
+                auto filter =
+                    filterJob_->filter().isEmpty() ? std::nullopt : std::optional<TraceFilter>(filterJob_->filter());
+                model_->setView(std::move(filter), filterJob_->takeResult(), upTo, filterJob_->takeGroups(),
+                                filterJob_->takeGroupedRows());
             } else {
                 model_->setFilter(filterJob_->filter(), filterJob_->takeResult(), upTo);
             }
@@ -278,7 +286,7 @@ void TraceDock::refresh() {
     if (!filterJob_) model_->refresh();
     const auto [top, bottom] = view_->visibleRows();
     model_->pinRows(top, bottom, view_->currentRow());  // what is shown stays in RAM
-    if (detailsLoading_) onCurrentChanged();  // asks again; shows it once it is back
+    if (detailsLoading_) onCurrentChanged();            // asks again; shows it once it is back
     if (shownDetailsFor_ != -1 && workspace_->decoder()->revision() != detailsRevision_) {  // dictionaries changed
         shownDetailsFor_ = -1;
         onCurrentChanged();
@@ -290,8 +298,9 @@ void TraceDock::refresh() {
         countLabel_->setText(tr("%L1 rows, %L2 frames").arg(model_->rowCount()).arg(total));
         countLabel_->setToolTip(tr("%L1 SDO transfers grouped").arg(model_->groups()->size()));
     } else {
-        countLabel_->setText(model_->isFiltered() || model_->latestPerCobId() ? tr("%L1 of %L2 frames").arg(model_->rowCount()).arg(total)
-                                                                              : tr("%L1 frames").arg(total));
+        countLabel_->setText(model_->isFiltered() || model_->latestPerCobId()
+                                 ? tr("%L1 of %L2 frames").arg(model_->rowCount()).arg(total)
+                                 : tr("%L1 frames").arg(total));
         countLabel_->setToolTip({});
     }
 }
@@ -326,7 +335,8 @@ bool TraceDock::applyFilter(const QString& query, QString* error) {
 void TraceDock::clearFilter() { applyFilter(QString()); }
 
 QJsonObject TraceDock::filtersJson() const {
-    return {{QStringLiteral("filter"), filterEdit_->text().trimmed()}, {QStringLiteral("groupSdo"), groupSdo_->isChecked()}};
+    return {{QStringLiteral("filter"), filterEdit_->text().trimmed()},
+            {QStringLiteral("groupSdo"), groupSdo_->isChecked()}};
 }
 
 void TraceDock::setFiltersJson(const QJsonObject& filters) {
@@ -336,7 +346,8 @@ void TraceDock::setFiltersJson(const QJsonObject& filters) {
         groupSdo_->setChecked(filters.value(QStringLiteral("groupSdo")).toBool());
     }
     QString error;
-    if (!applyFilter(filters.value(QStringLiteral("filter")).toString(), &error)) emit message(tr("The project's trace filter is not valid: %1").arg(error));
+    if (!applyFilter(filters.value(QStringLiteral("filter")).toString(), &error))
+        emit message(tr("The project's trace filter is not valid: %1").arg(error));
 }
 
 void TraceDock::setGroupSdo(bool on) { groupSdo_->setChecked(on); }
@@ -383,7 +394,8 @@ bool TraceDock::find(const QString& text, bool forward) {
     setFollow(false);
     const FindRows rows = model_->findRows();
     const int current = view_->currentRow();
-    const int64_t from = current >= 0 ? model_->findPosition(current) + (forward ? 1 : -1) : (forward ? 0 : static_cast<int64_t>(rows.count) - 1);
+    const int64_t from = current >= 0 ? model_->findPosition(current) + (forward ? 1 : -1)
+                                      : (forward ? 0 : static_cast<int64_t>(rows.count) - 1);
     return findFrom(text, forward, rows, from);
 }
 
@@ -419,9 +431,11 @@ bool TraceDock::findFrom(const QString& text, bool forward, const FindRows& rows
             return false;
         }
         const uint64_t serial = ++findSerial_;
-        findJob_ = std::make_unique<FindJob>(model_->store(), model_->decoder(), text, rows, step.next, forward, [this, serial] {
-            QMetaObject::invokeMethod(this, [this, serial] { onFindDone(serial); }, Qt::QueuedConnection);
-        });
+        findJob_ = std::make_unique<FindJob>(
+            model_->store(), model_->decoder(), text, rows, step.next, forward, [this, serial] {
+                QMetaObject::invokeMethod(
+                    this, [this, serial] { onFindDone(serial); }, Qt::QueuedConnection);
+            });
         findJob_->start();
         return false;
     }

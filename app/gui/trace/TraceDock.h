@@ -78,7 +78,7 @@ signals:
 private:
     void buildToolbar(QWidget* bar);
     void onCurrentChanged();
-    void toggleRow(int row);  // a row of the trace model
+    void toggleRow(int row);          // a row of the trace model
     void setFindMissed(bool missed);  // the find field turns red while its text is not found
     bool findFrom(const QString& text, bool forward, const FindRows& rows, int64_t from);
     void onFindDone(uint64_t serial);
@@ -101,7 +101,7 @@ private:
     std::unique_ptr<FindJob> findJob_;
     uint64_t findSerial_ = 0;  // of findJob_, so a finished job's late report is told apart
     int64_t shownDetailsFor_ = -1;
-    bool detailsLoading_ = false;  // the current row's frames are being paged in (refresh() retries)
+    bool detailsLoading_ = false;   // the current row's frames are being paged in (refresh() retries)
     uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
 };
 

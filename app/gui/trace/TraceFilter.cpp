@@ -61,38 +61,55 @@ std::optional<TraceFilter> TraceFilter::parse(const QString& query, QString* err
                 bool ok = false;
                 const int id = v.toInt(&ok);
                 if (!ok || id < 0 || id > 127) {
-                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: '%1' is not a node-ID (0-127)").arg(v);
+                    if (error)
+                        *error =
+                            QCoreApplication::translate("TraceFilter", "filter: '%1' is not a node-ID (0-127)").arg(v);
                     return std::nullopt;
                 }
                 f.nodes.push_back(id);
             }
             if (values.isEmpty()) {
-                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'node:' needs node-IDs, e.g. node:5,6");
+                if (error)
+                    *error =
+                        QCoreApplication::translate("TraceFilter", "filter: 'node:' needs node-IDs, e.g. node:5,6");
                 return std::nullopt;
             }
         } else if (key == u"svc" || key == u"service") {
             for (const QString& v : values)
                 if (!addServices(v, f.services)) {
-                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)").arg(v);
+                    if (error)
+                        *error = QCoreApplication::translate(
+                                     "TraceFilter",
+                                     "filter: unknown service '%1' (NMT SYNC TIME EMCY TPDO1..4 RPDO1..4 SDO_REQ "
+                                     "SDO_RESP NMT_EC LSS_REQ LSS_RESP, or sdo, pdo)")
+                                     .arg(v);
                     return std::nullopt;
                 }
             if (values.isEmpty()) {
-                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'svc:' needs service names, e.g. svc:sdo,emcy");
+                if (error)
+                    *error = QCoreApplication::translate("TraceFilter",
+                                                         "filter: 'svc:' needs service names, e.g. svc:sdo,emcy");
                 return std::nullopt;
             }
         } else if (key == u"id" || key == u"cobid") {
             for (const QString& v : values) {
                 const qsizetype dash = v.indexOf(u'-');
                 uint32_t lo = 0, hi = 0;
-                const bool ok = dash < 0 ? parseId(v, &lo) && (hi = lo, true) : parseId(v.left(dash), &lo) && parseId(v.mid(dash + 1), &hi);
+                const bool ok = dash < 0 ? parseId(v, &lo) && (hi = lo, true)
+                                         : parseId(v.left(dash), &lo) && parseId(v.mid(dash + 1), &hi);
                 if (!ok || hi < lo) {
-                    if (error) *error = QCoreApplication::translate("TraceFilter", "filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)").arg(v);
+                    if (error)
+                        *error = QCoreApplication::translate(
+                                     "TraceFilter", "filter: '%1' is not a COB-ID or range in hex (e.g. 580-5FF)")
+                                     .arg(v);
                     return std::nullopt;
                 }
                 f.idRanges.emplace_back(lo, hi);
             }
             if (values.isEmpty()) {
-                if (error) *error = QCoreApplication::translate("TraceFilter", "filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF");
+                if (error)
+                    *error = QCoreApplication::translate("TraceFilter",
+                                                         "filter: 'id:' needs COB-IDs in hex, e.g. id:580-5FF");
                 return std::nullopt;
             }
         } else {
@@ -103,7 +120,8 @@ std::optional<TraceFilter> TraceFilter::parse(const QString& query, QString* err
     return f;
 }
 
-bool TraceFilter::matches(const TraceStore& store, FrameNo n, const FrameDecoder& decoder, dissect::Dissection& scratch) const {
+bool TraceFilter::matches(const TraceStore& store, FrameNo n, const FrameDecoder& decoder,
+                          dissect::Dissection& scratch) const {
     const TraceRecord& r = store.record(n);
     if (!idRanges.empty()) {
         bool in = false;
@@ -113,7 +131,8 @@ bool TraceFilter::matches(const TraceStore& store, FrameNo n, const FrameDecoder
     if (!nodes.empty() || !services.empty()) {
         const auto info = canopen::classifyCobId(r.id, r.flags & CanFrame::Extended);
         if (!nodes.empty() && std::find(nodes.begin(), nodes.end(), info.node) == nodes.end()) return false;
-        if (!services.empty() && std::find(services.begin(), services.end(), info.service) == services.end()) return false;
+        if (!services.empty() && std::find(services.begin(), services.end(), info.service) == services.end())
+            return false;
     }
     if (!text.isEmpty()) {
         scratch.reset(dissect::Dissection::Level::Flat);
@@ -123,8 +142,9 @@ bool TraceFilter::matches(const TraceStore& store, FrameNo n, const FrameDecoder
     return true;
 }
 
-std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const TraceFilter& filter, const FrameDecoder& decoder,
-                                              FrameNo from, FrameNo to, const std::function<bool(double)>& progress) {
+std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const TraceFilter& filter,
+                                              const FrameDecoder& decoder, FrameNo from, FrameNo to,
+                                              const std::function<bool(double)>& progress) {
     std::vector<FrameNo> out;
     dissect::Dissection scratch;
     const FrameNo step = filter.needsDecoding() ? 4096 : 65536;
@@ -135,12 +155,11 @@ std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const Tra
     return out;
 }
 
-FilterJob::FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder, bool groupSdo)
-    : Job(filter.isEmpty() ? QCoreApplication::translate("TraceFilter", "Grouping SDO transfers") : QCoreApplication::translate("TraceFilter", "Filtering")),
-      store_(std::move(store)),
-      filter_(std::move(filter)),
-      decoder_(std::move(decoder)),
-      groupSdo_(groupSdo) {}
+FilterJob::FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter,
+                     std::shared_ptr<const FrameDecoder> decoder, bool groupSdo)
+    : Job(filter.isEmpty() ? QCoreApplication::translate("TraceFilter", "Grouping SDO transfers")
+                           : QCoreApplication::translate("TraceFilter", "Filtering")),
+      store_(std::move(store)), filter_(std::move(filter)), decoder_(std::move(decoder)), groupSdo_(groupSdo) {}
 
 FilterJob::~FilterJob() { stopAndJoin(); }
 

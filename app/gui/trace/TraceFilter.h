@@ -37,14 +37,16 @@ struct TraceFilter {
 };
 
 // Frame numbers in [from, to) that match, or nullopt when cancelled.
-std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const TraceFilter& filter, const FrameDecoder& decoder,
-                                              FrameNo from, FrameNo to, const std::function<bool(double)>& progress = {});
+std::optional<std::vector<FrameNo>> runFilter(const TraceStore& store, const TraceFilter& filter,
+                                              const FrameDecoder& decoder, FrameNo from, FrameNo to,
+                                              const std::function<bool(double)>& progress = {});
 
 // A filter over a whole trace on a worker thread; result() once isDone() and not cancelled.
 // With `groupSdo`, it also finds the SDO transfers and builds the grouped rows (TraceModel::setView).
 class FilterJob : public Job {
 public:
-    FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder, bool groupSdo = false);
+    FilterJob(std::shared_ptr<const TraceStore> store, TraceFilter filter, std::shared_ptr<const FrameDecoder> decoder,
+              bool groupSdo = false);
     ~FilterJob() override;
 
     const TraceFilter& filter() const { return filter_; }

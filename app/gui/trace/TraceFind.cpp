@@ -22,7 +22,8 @@ QString cobIdText(const TraceRecord& r) {
 QString dataText(const TraceStore& store, FrameNo n) {
     if (store.record(n).flags & CanFrame::Remote) return QStringLiteral("RTR");
     const auto p = store.payload(n);
-    return QString::fromLatin1(QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size())).toHex(' ').toUpper());
+    return QString::fromLatin1(
+        QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size())).toHex(' ').toUpper());
 }
 
 QString summaryText(const dissect::Dissection& d) {
@@ -61,7 +62,8 @@ bool FrameMatcher::matchesRow(const TraceStore& store, const FindRows& rows, siz
     const auto frames = rows.transferFrames(static_cast<size_t>(t));
     // The row shows the COB-ID of the frame it stands at (its first frame the view shows).
     if (cobIdText(store.record(rows.frameAt(row))).contains(text_, Qt::CaseInsensitive)) return true;
-    const SdoGroupIndex::RowText text = SdoGroupIndex::rowText(SdoGroupIndex::record(store, frames, *decoder_), frames.size());
+    const SdoGroupIndex::RowText text =
+        SdoGroupIndex::rowText(SdoGroupIndex::record(store, frames, *decoder_), frames.size());
     return text.summary.contains(text_, Qt::CaseInsensitive) || text.data.contains(text_, Qt::CaseInsensitive);
 }
 
@@ -121,15 +123,10 @@ bool findReadsResident(const TraceStore& store, const FindRows& rows, size_t row
     return std::all_of(frames.begin(), frames.end(), [&](FrameNo n) { return store.isResident(n); });
 }
 
-FindJob::FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text, FindRows rows,
-                 int64_t from, bool forward, std::function<void()> done)
-    : Job(QCoreApplication::translate("TraceFind", "Finding '%1'").arg(text)),
-      store_(std::move(store)),
-      decoder_(std::move(decoder)),
-      text_(std::move(text)),
-      rows_(std::move(rows)),
-      from_(from),
-      forward_(forward),
+FindJob::FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text,
+                 FindRows rows, int64_t from, bool forward, std::function<void()> done)
+    : Job(QCoreApplication::translate("TraceFind", "Finding '%1'").arg(text)), store_(std::move(store)),
+      decoder_(std::move(decoder)), text_(std::move(text)), rows_(std::move(rows)), from_(from), forward_(forward),
       done_(std::move(done)) {}
 
 FindJob::~FindJob() { stopAndJoin(); }

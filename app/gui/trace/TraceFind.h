@@ -27,8 +27,8 @@ QString summaryText(const dissect::Dissection& d);
 // and the frames of those transfers, copied so a worker can read them while the index grows.
 struct FindTransfers {
     std::vector<uint64_t> rows;
-    std::vector<uint32_t> group;     // per transfer here: its group in the model's SdoGroupIndex
-    std::vector<uint32_t> begin;     // per transfer here: its frames are members[begin[t], begin[t + 1])
+    std::vector<uint32_t> group;  // per transfer here: its group in the model's SdoGroupIndex
+    std::vector<uint32_t> begin;  // per transfer here: its frames are members[begin[t], begin[t + 1])
     std::vector<FrameNo> members;
 };
 
@@ -55,7 +55,8 @@ struct FindRows {
 // frame paged out to the journal is loaded back (issue 16): never matched against "loading…".
 class FrameMatcher {
 public:
-    FrameMatcher(QString text, std::shared_ptr<const FrameDecoder> decoder) : text_(std::move(text)), decoder_(std::move(decoder)) {}
+    FrameMatcher(QString text, std::shared_ptr<const FrameDecoder> decoder)
+        : text_(std::move(text)), decoder_(std::move(decoder)) {}
     bool matches(const TraceStore& store, FrameNo n);
     // Does row `row` contain it, as the trace shows the row: a frame's texts, or a transfer
     // header's own texts (its COB-ID, reassembled data and summary; SdoGroupIndex::rowText).
@@ -94,8 +95,8 @@ bool findReadsResident(const TraceStore& store, const FindRows& rows, size_t row
 // loads the chunks back from the journal as it goes; `done` is called on the worker when it ends.
 class FindJob : public Job {
 public:
-    FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text, FindRows rows, int64_t from,
-            bool forward, std::function<void()> done);
+    FindJob(std::shared_ptr<const TraceStore> store, std::shared_ptr<const FrameDecoder> decoder, QString text,
+            FindRows rows, int64_t from, bool forward, std::function<void()> done);
     ~FindJob() override;
 
     const QString& text() const { return text_; }

@@ -16,7 +16,7 @@
 namespace coscope::gui {
 
 namespace {
-constexpr size_t kSummaryCacheLimit = 50000;  // a few pages of rows, decoded at most once each
+constexpr size_t kSummaryCacheLimit = 50000;                     // a few pages of rows, decoded at most once each
 constexpr int64_t kEpoch1990Ns = 631152000LL * 1'000'000'000LL;  // live/most logs: Unix time
 }  // namespace
 
@@ -128,7 +128,8 @@ void TraceModel::ensureExpandedAt() const {
     if (!expandedDirty_) return;
     expandedAt_.clear();
     for (const auto& [g, members] : expanded_) expandedAt_.push_back({topIndexOfGroup(g), g, members.size()});
-    std::sort(expandedAt_.begin(), expandedAt_.end(), [](const ExpandedAt& a, const ExpandedAt& b) { return a.top < b.top; });
+    std::sort(expandedAt_.begin(), expandedAt_.end(),
+              [](const ExpandedAt& a, const ExpandedAt& b) { return a.top < b.top; });
     expandedDirty_ = false;
 }
 
@@ -205,7 +206,8 @@ const TraceModel::GroupText& TraceModel::groupText(uint32_t group) const {
     const auto it = groupTexts_.find(group);
     if (it != groupTexts_.end()) return it->second;
     if (groupTexts_.size() >= kSummaryCacheLimit) groupTexts_.clear();
-    return groupTexts_.emplace(group, SdoGroupIndex::rowText(transferRecord(group), groups_->group(group).count)).first->second;
+    return groupTexts_.emplace(group, SdoGroupIndex::rowText(transferRecord(group), groups_->group(group).count))
+        .first->second;
 }
 
 // Live: frames [oldScanned, size) arrived (`newSource` = those the filter lets through).
@@ -328,7 +330,8 @@ void TraceModel::refreshLatest() {
         beginResetModel();
         latestKeys_ = keys;
         latestRows_.assign(keys.size(), 0);
-        for (size_t i = 0; i < keys.size(); ++i) latestRows_[i] = store_->frameFor(keys[i], store_->countFor(keys[i]) - 1);
+        for (size_t i = 0; i < keys.size(); ++i)
+            latestRows_[i] = store_->frameFor(keys[i], store_->countFor(keys[i]) - 1);
         rows_ = static_cast<int>(latestRows_.size());
         endResetModel();
         return;
@@ -345,10 +348,13 @@ void TraceModel::refreshLatest() {
     if (firstChanged >= 0) emit dataChanged(index(firstChanged, 0), index(lastChanged, ColumnCount - 1));
 }
 
-
 QString TraceModel::gapText(const TraceStore::Gap& g) {
-    auto clock = [](int64_t ns) { return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz")); };
-    return tr("Bus lost at %1, back at %2 (%3 s without frames)").arg(clock(g.lostNs), clock(g.backNs)).arg(double(g.backNs - g.lostNs) / 1e9, 0, 'f', 1);
+    auto clock = [](int64_t ns) {
+        return QDateTime::fromMSecsSinceEpoch(ns / 1'000'000).toString(QStringLiteral("HH:mm:ss.zzz"));
+    };
+    return tr("Bus lost at %1, back at %2 (%3 s without frames)")
+        .arg(clock(g.lostNs), clock(g.backNs))
+        .arg(double(g.backNs - g.lostNs) / 1e9, 0, 'f', 1);
 }
 
 QString TraceModel::gapsText(const std::vector<TraceStore::Gap>& gaps) {
@@ -360,7 +366,9 @@ QString TraceModel::gapsText(const std::vector<TraceStore::Gap>& gaps) {
 FrameNo TraceModel::frameAt(int row) const {
     if (isGrouped()) {
         const RowRef r = resolve(row);
-        if (r.member >= 0) return expanded_.at(static_cast<uint32_t>(GroupedRows::groupOf(grouped_.top[r.top])))[static_cast<size_t>(r.member)];
+        if (r.member >= 0)
+            return expanded_.at(
+                static_cast<uint32_t>(GroupedRows::groupOf(grouped_.top[r.top])))[static_cast<size_t>(r.member)];
         return GroupedRows::keyOf(grouped_.top[r.top]);
     }
     switch (source()) {
@@ -388,7 +396,8 @@ std::vector<FrameNo> TraceModel::shownFrames() const {
 int TraceModel::rowAtOrAfter(FrameNo n) const {
     if (isGrouped()) {
         const auto end = grouped_.top.begin() + static_cast<std::ptrdiff_t>(grouped_.top.size());
-        const auto it = std::lower_bound(grouped_.top.begin(), end, n, [](uint64_t row, FrameNo k) { return GroupedRows::keyOf(row) < k; });
+        const auto it = std::lower_bound(grouped_.top.begin(), end, n,
+                                         [](uint64_t row, FrameNo k) { return GroupedRows::keyOf(row) < k; });
         return it == end ? -1 : visibleRow(static_cast<size_t>(it - grouped_.top.begin()));
     }
     switch (source()) {
@@ -409,7 +418,8 @@ int TraceModel::rowAtOrAfter(FrameNo n) const {
 int TraceModel::rowOf(FrameNo n) const {
     if (isGrouped()) {  // a frame of a transfer: its row under the expanded header, else the header
         const int64_t g = groups_->groupOf(n);
-        if (g >= 0 && static_cast<size_t>(g) < grouped_.headerKey.size() && grouped_.headerKey[static_cast<size_t>(g)] != SdoGroupIndex::kNone) {
+        if (g >= 0 && static_cast<size_t>(g) < grouped_.headerKey.size() &&
+            grouped_.headerKey[static_cast<size_t>(g)] != SdoGroupIndex::kNone) {
             const int header = visibleRow(topIndexOfGroup(static_cast<uint32_t>(g)));
             const auto it = expanded_.find(static_cast<uint32_t>(g));
             if (it == expanded_.end()) return header;
@@ -444,7 +454,8 @@ QString TraceModel::timeText(FrameNo n, int row) const {
     case TimeMode::Absolute:
         if (t > kEpoch1990Ns) {
             const auto dt = QDateTime::fromMSecsSinceEpoch(t / 1'000'000);
-            return dt.toString(QStringLiteral("HH:mm:ss.zzz")) + QStringLiteral("%1").arg((t / 1000) % 1000, 3, 10, QLatin1Char('0'));
+            return dt.toString(QStringLiteral("HH:mm:ss.zzz")) +
+                   QStringLiteral("%1").arg((t / 1000) % 1000, 3, 10, QLatin1Char('0'));
         }
         return QString::number(static_cast<double>(t) / 1e9, 'f', 6);
     case TimeMode::Relative: return QString::number(static_cast<double>(t - t0_) / 1e9, 'f', 6);
@@ -482,10 +493,13 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
             if (role == Qt::DisplayRole && col == Summary) return tr("loading…");
             return {};
         }
-        if (role == Qt::ToolTipRole) return col == Number ? tr("Click to expand or collapse the transfer's frames") : groupText(g).summary;
+        if (role == Qt::ToolTipRole)
+            return col == Number ? tr("Click to expand or collapse the transfer's frames") : groupText(g).summary;
         if (role == Qt::DisplayRole) {
             switch (col) {
-            case Number: return (isExpanded(g) ? QStringLiteral("▾ ") : QStringLiteral("▸ ")) + QString::number(qulonglong(n) + 1);
+            case Number:
+                return (isExpanded(g) ? QStringLiteral("▾ ") : QStringLiteral("▸ ")) +
+                       QString::number(qulonglong(n) + 1);
             case Service: return QStringLiteral("SDO");
             case Length: return groupText(g).size;
             case Data: return groupText(g).data;
@@ -495,7 +509,9 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
             }
         }
     }
-    if (kind != RowKind::Transfer && (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Qt::BackgroundRole || role == Qt::ForegroundRole) &&
+    if (kind != RowKind::Transfer &&
+        (role == Qt::DisplayRole || role == Qt::ToolTipRole || role == Qt::BackgroundRole ||
+         role == Qt::ForegroundRole) &&
         pagedOut(n, index.row(), col)) {
         if (role != Qt::DisplayRole) return {};
         if (col == Number) return static_cast<qulonglong>(n) + 1;
@@ -503,7 +519,8 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
         if (col == Summary) return tr("loading…");
         return {};
     }
-    if (kind == RowKind::TransferFrame && role == Qt::DisplayRole && col == Summary) return QStringLiteral("      ↳ ") + summaryOf(n);
+    if (kind == RowKind::TransferFrame && role == Qt::DisplayRole && col == Summary)
+        return QStringLiteral("      ↳ ") + summaryOf(n);
     switch (role) {
     case RowKindRole: return static_cast<int>(RowKind::Frame);
     case GroupRole: return -1;
@@ -530,7 +547,8 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
         return {};
     case Qt::DisplayRole:
         if (col == Summary)
-            if (const auto gaps = gapsBefore(n); !gaps.empty()) return gapsText(gaps) + QStringLiteral(" · ") + summaryOf(n);
+            if (const auto gaps = gapsBefore(n); !gaps.empty())
+                return gapsText(gaps) + QStringLiteral(" · ") + summaryOf(n);
         break;
     default: return {};
     }
@@ -548,7 +566,9 @@ QVariant TraceModel::data(const QModelIndex& index, int role) const {
         if (r.flags & CanFrame::Error) return QStringLiteral("ERROR");
         return canopen::serviceName(canopen::classifyCobId(r.id, r.flags & CanFrame::Extended).service);
     }
-    case Direction: return (r.flags & CanFrame::Tx) ? QStringLiteral("Tx") : QStringLiteral("Rx");  // as in the CAN tools and manuals
+    case Direction:
+        return (r.flags & CanFrame::Tx) ? QStringLiteral("Tx")
+                                        : QStringLiteral("Rx");  // as in the CAN tools and manuals
     case Length: return r.len;
     case Data: return dataText(*store_, n);
     case Summary: return summaryOf(n);
@@ -567,8 +587,9 @@ QVariant TraceModel::headerData(int section, Qt::Orientation orientation, int ro
         }
     }
     //: Trace columns: frame number, time, bus, COB-ID, node, CANopen service, direction (Rx/Tx), data length, data bytes, decoded summary
-    static const char* const names[] = {QT_TR_NOOP("No."),     QT_TR_NOOP("Time"), QT_TR_NOOP("Bus"), QT_TR_NOOP("COB-ID"), QT_TR_NOOP("Node"),
-                                        QT_TR_NOOP("Service"), QT_TR_NOOP("Dir"),  QT_TR_NOOP("Len"), QT_TR_NOOP("Data"),   QT_TR_NOOP("Summary")};
+    static const char* const names[] = {
+        QT_TR_NOOP("No."),     QT_TR_NOOP("Time"), QT_TR_NOOP("Bus"), QT_TR_NOOP("COB-ID"), QT_TR_NOOP("Node"),
+        QT_TR_NOOP("Service"), QT_TR_NOOP("Dir"),  QT_TR_NOOP("Len"), QT_TR_NOOP("Data"),   QT_TR_NOOP("Summary")};
     return section >= 0 && section < ColumnCount ? tr(names[section]) : QVariant();
 }
 

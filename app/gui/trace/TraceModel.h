@@ -13,8 +13,8 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <span>
 #include <set>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -58,8 +58,8 @@ public:
     bool isFiltered() const { return filter_.has_value(); }
     // Frames of `filter` (none: all frames) with SDO transfers grouped: `rows` as above, `groups`
     // scanned up to `scannedUpTo`, `grouped` built from both (see FilterJob, which computes them).
-    void setView(std::optional<TraceFilter> filter, std::vector<FrameNo> rows, FrameNo scannedUpTo, std::shared_ptr<SdoGroupIndex> groups,
-                 GroupedRows grouped);
+    void setView(std::optional<TraceFilter> filter, std::vector<FrameNo> rows, FrameNo scannedUpTo,
+                 std::shared_ptr<SdoGroupIndex> groups, GroupedRows grouped);
     // Same, computed on the calling thread (small traces, tests).
     void setGrouped(bool on);
     bool isGrouped() const { return groups_ != nullptr && !latest_; }
@@ -138,7 +138,7 @@ private:
     std::shared_ptr<const FrameDecoder> decoder_;
     QStringList busNames_;
     TimeMode timeMode_ = TimeMode::Relative;
-    int rows_ = 0;         // rows announced to views
+    int rows_ = 0;  // rows announced to views
     int64_t t0_ = 0;
     bool haveT0_ = false;
 
@@ -171,7 +171,7 @@ private:
     // store to load them on its loader thread and draws them as loading; refresh() repaints
     // once the store has paged something in. The GUI thread never waits for the disk.
     bool pagedOut(FrameNo n, int row, int col) const;
-    bool groupPagedOut(uint32_t group) const;  // a transfer's frames and its last one's checkpoint
+    bool groupPagedOut(uint32_t group) const;                    // a transfer's frames and its last one's checkpoint
     bool requestPageIns(std::span<const FrameNo> frames) const;  // true: some are paged out
     // New frames [from, to) tested by refresh(): pins their chunks from `from` on while they are
     // in RAM and returns where the first one that is not starts (asked of the loader), or `to`.

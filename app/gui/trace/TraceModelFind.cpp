@@ -37,8 +37,12 @@ FindRows TraceModel::findRows() const {
     }
     switch (source()) {
     case Source::All: break;
-    case Source::Filtered: rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_.begin(), filtered_.begin() + rows_); break;
-    case Source::Latest: rows.frames = std::make_shared<const std::vector<FrameNo>>(latestRows_.begin(), latestRows_.begin() + rows_); break;
+    case Source::Filtered:
+        rows.frames = std::make_shared<const std::vector<FrameNo>>(filtered_.begin(), filtered_.begin() + rows_);
+        break;
+    case Source::Latest:
+        rows.frames = std::make_shared<const std::vector<FrameNo>>(latestRows_.begin(), latestRows_.begin() + rows_);
+        break;
     }
     return rows;
 }

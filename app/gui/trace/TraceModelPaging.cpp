@@ -22,7 +22,8 @@ void TraceModel::pinRows(int first, int last, int current) {
         chunks.push_back(frameAt(row) >> TraceStore::kChunkBits);
         if (rowKind(row) != RowKind::Transfer || !groups_) return;
         const SdoGroup& g = groups_->group(static_cast<size_t>(groupAt(row)));
-        for (FrameNo n = g.first; n <= g.last; n += TraceStore::kChunkSize) chunks.push_back(n >> TraceStore::kChunkBits);
+        for (FrameNo n = g.first; n <= g.last; n += TraceStore::kChunkSize)
+            chunks.push_back(n >> TraceStore::kChunkBits);
         chunks.push_back(g.last >> TraceStore::kChunkBits);
     };
     for (int row = std::max(first, 0); row <= last && row < rows_; ++row) add(row);
@@ -30,7 +31,9 @@ void TraceModel::pinRows(int first, int last, int current) {
     std::sort(chunks.begin(), chunks.end());
     chunks.erase(std::unique(chunks.begin(), chunks.end()), chunks.end());
     if (pinnedStore_ == store_ && chunks == pinned_) return;
-    const auto chunkRange = [](uint32_t c) { return std::pair{FrameNo(c) << TraceStore::kChunkBits, FrameNo(c) << TraceStore::kChunkBits}; };
+    const auto chunkRange = [](uint32_t c) {
+        return std::pair{FrameNo(c) << TraceStore::kChunkBits, FrameNo(c) << TraceStore::kChunkBits};
+    };
     if (store_)
         for (uint32_t c : chunks) store_->pin(chunkRange(c).first, chunkRange(c).second);
     if (pinnedStore_)
@@ -52,7 +55,8 @@ bool TraceModel::groupPagedOut(uint32_t g) const {
     // A transfer row reads all its frames (reassembly) and decodes its last one (groupText()).
     if (!groups_ || g >= groups_->size()) return false;
     const SdoGroup& grp = groups_->group(g);
-    const FrameNo checkpoint = static_cast<FrameNo>(grp.last - grp.last % dissect::NetworkContext::checkpointInterval());
+    const FrameNo checkpoint =
+        static_cast<FrameNo>(grp.last - grp.last % dissect::NetworkContext::checkpointInterval());
     const auto frames = groups_->frames(g);
     bool out = requestPageIns(std::span<const FrameNo>(&checkpoint, 1));
     uint64_t chunk = ~uint64_t(0);
@@ -90,7 +94,8 @@ FrameNo TraceModel::pinResident(FrameNo from, FrameNo to) const {
             requestPageIns(std::span<const FrameNo>(&end, 1));
             break;
         }
-        end = std::min<FrameNo>(static_cast<FrameNo>(((uint64_t(end) >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits), to);
+        end = std::min<FrameNo>(
+            static_cast<FrameNo>(((uint64_t(end) >> TraceStore::kChunkBits) + 1) << TraceStore::kChunkBits), to);
     }
     return end;
 }

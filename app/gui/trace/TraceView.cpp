@@ -12,7 +12,8 @@
 namespace coscope::gui {
 
 TraceView::TraceView(TraceModel* model, QWidget* parent)
-    : QTableView(parent), source_(model), window_(new TraceWindow(model, this)), bar_(new QScrollBar(Qt::Vertical, this)) {
+    : QTableView(parent), source_(model), window_(new TraceWindow(model, this)),
+      bar_(new QScrollBar(Qt::Vertical, this)) {
     setModel(window_);
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // bar_ stands for it, over the whole trace
     bar_->setObjectName(QStringLiteral("traceScrollBar"));
@@ -20,7 +21,8 @@ TraceView::TraceView(TraceModel* model, QWidget* parent)
     connect(inner, &QScrollBar::valueChanged, this, &TraceView::onInnerScrolled);
     connect(bar_, &QScrollBar::valueChanged, this, &TraceView::onBarMoved);
     connect(inner, &QScrollBar::actionTriggered, this, [this, inner](int action) {
-        if (action != QAbstractSlider::SliderNoAction) emit userScrolled(window_->atEnd() && inner->sliderPosition() >= inner->maximum());
+        if (action != QAbstractSlider::SliderNoAction)
+            emit userScrolled(window_->atEnd() && inner->sliderPosition() >= inner->maximum());
     });
     connect(bar_, &QScrollBar::actionTriggered, this, [this](int action) {
         if (action != QAbstractSlider::SliderNoAction) emit userScrolled(bar_->sliderPosition() >= bar_->maximum());
@@ -31,7 +33,9 @@ TraceView::TraceView(TraceModel* model, QWidget* parent)
     connect(model, &QAbstractItemModel::modelReset, this, &TraceView::syncBar);
 }
 
-int TraceView::logicalRow(const QModelIndex& index) const { return index.isValid() ? window_->toSource(index.row()) : -1; }
+int TraceView::logicalRow(const QModelIndex& index) const {
+    return index.isValid() ? window_->toSource(index.row()) : -1;
+}
 
 int TraceView::currentRow() const { return current_.isValid() ? current_.row() : -1; }
 
@@ -50,7 +54,8 @@ void TraceView::setCurrentRow(int row, bool center) {
 void TraceView::scrollToEnd() {
     const int rows = window_->total();
     if (rows == 0) return;
-    if (!window_->atEnd() || window_->rowCount() >= window_->maxRows()) moveWindow(rows - window_->capacity(), rows - 1);
+    if (!window_->atEnd() || window_->rowCount() >= window_->maxRows())
+        moveWindow(rows - window_->capacity(), rows - 1);
     scrollToBottom();
     syncBar();
 }
@@ -77,7 +82,9 @@ void TraceView::moveWindow(int first, int top) {
     executeDelayedItemsLayout();
     updateGeometries();
     const int row = current_.isValid() ? window_->fromSource(current_.row()) : -1;
-    if (row >= 0) selectionModel()->setCurrentIndex(window_->index(row, col), QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    if (row >= 0)
+        selectionModel()->setCurrentIndex(window_->index(row, col),
+                                          QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
     verticalScrollBar()->setValue(top - window_->base());
     syncing_ = false;
     syncBar();

@@ -14,7 +14,8 @@ int TraceWindow::configuredRows() {
     return std::max(rows, 200);  // a few pages at least
 }
 
-TraceWindow::TraceWindow(TraceModel* source, QObject* parent) : QAbstractTableModel(parent), source_(source), capacity_(configuredRows()) {
+TraceWindow::TraceWindow(TraceModel* source, QObject* parent)
+    : QAbstractTableModel(parent), source_(source), capacity_(configuredRows()) {
     count_ = std::min(source_->rowCount(), maxRows());
     connect(source_, &QAbstractItemModel::modelAboutToBeReset, this, [this] { beginResetModel(); });
     connect(source_, &QAbstractItemModel::modelReset, this, [this] {
@@ -22,9 +23,11 @@ TraceWindow::TraceWindow(TraceModel* source, QObject* parent) : QAbstractTableMo
         count_ = std::min(total(), capacity_);
         endResetModel();
     });
-    connect(source_, &QAbstractItemModel::rowsAboutToBeInserted, this, [this](const QModelIndex&, int f, int l) { onAboutToInsert(f, l); });
+    connect(source_, &QAbstractItemModel::rowsAboutToBeInserted, this,
+            [this](const QModelIndex&, int f, int l) { onAboutToInsert(f, l); });
     connect(source_, &QAbstractItemModel::rowsInserted, this, [this] { onInserted(); });
-    connect(source_, &QAbstractItemModel::rowsAboutToBeRemoved, this, [this](const QModelIndex&, int f, int l) { onAboutToRemove(f, l); });
+    connect(source_, &QAbstractItemModel::rowsAboutToBeRemoved, this,
+            [this](const QModelIndex&, int f, int l) { onAboutToRemove(f, l); });
     connect(source_, &QAbstractItemModel::rowsRemoved, this, [this] { onRemoved(); });
     connect(source_, &QAbstractItemModel::dataChanged, this, &TraceWindow::onDataChanged);
     connect(source_, &QAbstractItemModel::headerDataChanged, this, [this](Qt::Orientation o, int first, int last) {

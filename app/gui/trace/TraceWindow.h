@@ -33,7 +33,9 @@ public:
     bool atEnd() const { return base_ + count_ >= total(); }
     // The trace model row of window row `row`, and back (-1 outside the window).
     int toSource(int row) const { return base_ + row; }
-    int fromSource(int sourceRow) const { return sourceRow >= base_ && sourceRow < base_ + count_ ? sourceRow - base_ : -1; }
+    int fromSource(int sourceRow) const {
+        return sourceRow >= base_ && sourceRow < base_ + count_ ? sourceRow - base_ : -1;
+    }
 
     // Shows trace model rows [first, first + capacity()) (clamped to the trace): a model reset.
     void moveTo(int first);

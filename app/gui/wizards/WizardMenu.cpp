@@ -19,12 +19,26 @@ namespace coscope::gui {
 const std::vector<WizardEntry>& wizardEntries() {
     // One line per wizard.
     static const std::vector<WizardEntry> entries = {
-        {QStringLiteral("nodeid"), QT_TRANSLATE_NOOP("WizardMenu", "Baud rate and node-ID…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); },
-         [](QWidget* w) { auto* x = qobject_cast<NodeIdWizard*>(w); return x ? x->node() : -1; }},
-        {QStringLiteral("ds402"), QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"), [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); },
-         [](QWidget* w) { auto* x = qobject_cast<Ds402Wizard*>(w); return x ? x->node() : -1; }, {QStringLiteral("homing"), QStringLiteral("position")}},
-        {QStringLiteral("pdo"), QT_TRANSLATE_NOOP("WizardMenu", "PDO mapping…"), [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); },
-         [](QWidget* w) { auto* x = qobject_cast<PdoWizard*>(w); return x ? x->state().node : -1; }},
+        {QStringLiteral("nodeid"), QT_TRANSLATE_NOOP("WizardMenu", "Baud rate and node-ID…"),
+         [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new NodeIdWizard(ws, node, parent); },
+         [](QWidget* w) {
+             auto* x = qobject_cast<NodeIdWizard*>(w);
+             return x ? x->node() : -1;
+         }},
+        {QStringLiteral("ds402"),
+         QT_TRANSLATE_NOOP("WizardMenu", "CiA 402 enable step-through…"),
+         [](Workspace* w, int node, QWidget* parent) -> QWidget* { return new Ds402Wizard(w, node, parent); },
+         [](QWidget* w) {
+             auto* x = qobject_cast<Ds402Wizard*>(w);
+             return x ? x->node() : -1;
+         },
+         {QStringLiteral("homing"), QStringLiteral("position")}},
+        {QStringLiteral("pdo"), QT_TRANSLATE_NOOP("WizardMenu", "PDO mapping…"),
+         [](Workspace* ws, int node, QWidget* parent) -> QWidget* { return new PdoWizard(ws, node, parent); },
+         [](QWidget* w) {
+             auto* x = qobject_cast<PdoWizard*>(w);
+             return x ? x->state().node : -1;
+         }},
     };
     return entries;
 }
@@ -38,7 +52,8 @@ QString openedWithKey(const QString& id) { return QStringLiteral("wizards/%1/ope
 // Remembers the node a wizard window is on when it is hidden (closed, whichever way).
 class RememberNode : public QObject {
 public:
-    RememberNode(QString id, std::function<int(QWidget*)> nodeOf, QWidget* wizard) : QObject(wizard), id_(std::move(id)), nodeOf_(std::move(nodeOf)), wizard_(wizard) {}
+    RememberNode(QString id, std::function<int(QWidget*)> nodeOf, QWidget* wizard)
+        : QObject(wizard), id_(std::move(id)), nodeOf_(std::move(nodeOf)), wizard_(wizard) {}
     bool eventFilter(QObject* watched, QEvent* event) override {
         // Hidden while being destroyed, the window is no longer a wizard (nodeOf gives -1): the
         // Hide of close() came first and was kept.

@@ -19,8 +19,8 @@ class Workspace;
 // The commissioning wizards, listed once: the Commission menu and `--view wizard-ID`
 // (screenshots) both come from this table.
 struct WizardEntry {
-    QString id;     // "pdo", "nodeid", "ds402": `--view wizard-pdo`
-    const char* title;  // menu text, English source (QT_TRANSLATE_NOOP "WizardMenu"); see titleText()
+    QString id;                 // "pdo", "nodeid", "ds402": `--view wizard-pdo`
+    const char* title;          // menu text, English source (QT_TRANSLATE_NOOP "WizardMenu"); see titleText()
     QString titleText() const;  // the title in the UI language
     // Creates the wizard window (top-level, not shown); `node` preselects a node (-1 = none).
     std::function<QWidget*(Workspace* workspace, int node, QWidget* parent)> create;

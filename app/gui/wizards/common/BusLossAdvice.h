@@ -20,7 +20,8 @@ public:
     // "NMT: Operational" or "NMT state unknown" for node `node` as the table last saw it.
     static QString lastNmtState(const canopen::NodeTable& nodes, int node);
     // The CiA 402 wizard: the drive's last state (ds402::stateName) and whether it may be powered.
-    static QString driveMessage(const QString& reason, int node, const QString& nmt, const QString& lastDriveState, bool mayBeEnabled);
+    static QString driveMessage(const QString& reason, int node, const QString& nmt, const QString& lastDriveState,
+                                bool mayBeEnabled);
     // A script run (PDO mapping, node-ID / bit rate, DCF) stopped at step `step` (0-based) of `steps`.
     static QString scriptMessage(const QString& reason, int step, int steps);
     // The PDO wizard's apply (CiA 301 §7.2.2.3: a PDO is disabled by COB-ID bit 31 while mapped).

@@ -24,7 +24,8 @@ ScriptPreview::ScriptPreview(QWidget* parent) : QWidget(parent) {
     title_->setTextFormat(Qt::PlainText);
     table_ = new QTableWidget(0, ColumnCount, this);
     table_->setObjectName(QStringLiteral("scriptSteps"));
-    table_->setHorizontalHeaderLabels({QStringLiteral("#"), tr("What it does"), tr("Script line"), tr("Why"), tr("Result")});
+    table_->setHorizontalHeaderLabels(
+        {QStringLiteral("#"), tr("What it does"), tr("Script line"), tr("Why"), tr("Result")});
     table_->verticalHeader()->hide();
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -58,8 +59,9 @@ ScriptPreview::ScriptPreview(QWidget* parent) : QWidget(parent) {
 
 void ScriptPreview::setScript(const canopen::CommandScript& script) {
     script_ = script;
-    title_->setText(script.title.isEmpty() ? tr("%n step(s) will be sent", nullptr, static_cast<int>(script.steps.size()))
-                                           : tr("%1 — %n step(s)", nullptr, static_cast<int>(script.steps.size())).arg(script.title));
+    title_->setText(script.title.isEmpty()
+                        ? tr("%n step(s) will be sent", nullptr, static_cast<int>(script.steps.size()))
+                        : tr("%1 — %n step(s)", nullptr, static_cast<int>(script.steps.size())).arg(script.title));
     const QFont fixed = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     table_->setRowCount(static_cast<int>(script.steps.size()));
     states_ = QStringList();
@@ -97,7 +99,8 @@ void ScriptPreview::markStep(int step, bool ok, const QString& detail) {
     const QString text = ok ? (detail.isEmpty() ? tr("done") : shown) : (detail.isEmpty() ? tr("failed") : shown);
     result->setText(text);
     for (int c = 0; c < ColumnCount; ++c)
-        if (auto* item = table_->item(step, c)) item->setToolTip(c == Why ? coreLines(script_.steps[static_cast<size_t>(step)].why) + u'\n' + text : text);
+        if (auto* item = table_->item(step, c))
+            item->setToolTip(c == Why ? coreLines(script_.steps[static_cast<size_t>(step)].why) + u'\n' + text : text);
     states_[step] = ok ? QStringLiteral("done") : QStringLiteral("failed: ") + detail;
     table_->scrollToItem(result);
 }
@@ -118,7 +121,9 @@ void ScriptPreview::clearMarks() {
     }
 }
 
-QString ScriptPreview::stepState(int step) const { return step >= 0 && step < states_.size() ? states_[step] : QString(); }
+QString ScriptPreview::stepState(int step) const {
+    return step >= 0 && step < states_.size() ? states_[step] : QString();
+}
 
 bool ScriptPreview::saveTo(const QString& path, QString* error) const { return script_.save(path, error); }
 
@@ -127,8 +132,9 @@ int ScriptPreview::rowCount() const { return table_->rowCount(); }
 void ScriptPreview::saveInteractively() {
     QString suggested = script_.title.isEmpty() ? QStringLiteral("commissioning") : script_.title;
     suggested.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]+")), QStringLiteral("-"));
-    const QString path = files::askSaveFile(this, files::kScripts, tr("Save as script"), suggested + QStringLiteral(".txt"),
-                                                   tr("Command scripts (*.txt);;All files (*)"));
+    const QString path =
+        files::askSaveFile(this, files::kScripts, tr("Save as script"), suggested + QStringLiteral(".txt"),
+                           tr("Command scripts (*.txt);;All files (*)"));
     if (path.isEmpty()) return;
     QString error;
     if (!saveTo(path, &error)) {

@@ -13,11 +13,11 @@
 
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace coscope::gui {
 
@@ -43,7 +43,8 @@ ScriptRunPanel::ScriptRunPanel(Workspace* workspace, QWidget* parent) : QWidget(
     connect(run_, &QPushButton::clicked, this, &ScriptRunPanel::onRunClicked);
     connect(stop_, &QPushButton::clicked, this, &ScriptRunPanel::stop);
     connect(guard_, &WizardGuard::canSendChanged, this, &ScriptRunPanel::updateButtons);
-    if (workspace) connect(workspace, &Workspace::sourceChanged, this, [this] {
+    if (workspace)
+        connect(workspace, &Workspace::sourceChanged, this, [this] {
             if (isRunning()) {
                 stop();
                 setStatus(tr("Stopped: the connection changed."));
@@ -51,11 +52,12 @@ ScriptRunPanel::ScriptRunPanel(Workspace* workspace, QWidget* parent) : QWidget(
             runner_.reset();  // it refers to the old bus's services
         });
     // A lost adapter stops a run at once and says what the device may be left in (issue 16).
-    if (workspace) connect(workspace, &Workspace::busStateChanged, this, [this, workspace](CanBus::State s) {
+    if (workspace)
+        connect(workspace, &Workspace::busStateChanged, this, [this, workspace](CanBus::State s) {
             if (s != CanBus::State::Lost || !isRunning()) return;
             const int step = std::max(0, runner_->currentStep());
-            stopReason_ = BusLossAdvice::scriptMessage(workspace->bus() ? workspace->bus()->errorString() : QString(), step,
-                                                       static_cast<int>(preview_->script().steps.size()));
+            stopReason_ = BusLossAdvice::scriptMessage(workspace->bus() ? workspace->bus()->errorString() : QString(),
+                                                       step, static_cast<int>(preview_->script().steps.size()));
             spdlog::warn("script run stopped: bus lost at step {}", step + 1);
             stop();
             setStatus(stopReason_);
@@ -90,7 +92,8 @@ void ScriptRunPanel::updateButtons() {
 
 void ScriptRunPanel::onRunClicked() {
     if (!confirmation_.isEmpty() &&
-        QMessageBox::question(this, tr("Send these commands?"), confirmation_, QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
+        QMessageBox::question(this, tr("Send these commands?"), confirmation_, QMessageBox::Yes | QMessageBox::No,
+                              QMessageBox::No) != QMessageBox::Yes)
         return;
     QString why;
     if (!run(&why)) setStatus(why);
@@ -117,7 +120,9 @@ bool ScriptRunPanel::run(QString* why) {
     stopReason_.clear();
     const bool ok = runner_->run(preview_->script(), [this](const canopen::ScriptRunResult& r) {
         if (r.ok) setStatus(tr("Done: %n step(s) completed.", nullptr, r.stepsDone));
-        else if (r.cancelled) setStatus(stopReason_.isEmpty() ? tr("Stopped at step %1; nothing further was sent.").arg(r.failedStep + 1) : stopReason_);
+        else if (r.cancelled)
+            setStatus(stopReason_.isEmpty() ? tr("Stopped at step %1; nothing further was sent.").arg(r.failedStep + 1)
+                                            : stopReason_);
         else setStatus(tr("Failed at %1").arg(coreText(r.error)));
         updateButtons();
         emit finished(r);

@@ -17,8 +17,8 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
-#include <deque>
 #include <QCoreApplication>
+#include <deque>
 
 namespace coscope::gui {
 
@@ -45,7 +45,9 @@ class FramesModel : public QAbstractTableModel {
 public:
     enum Column { Time, Direction, CobId, Data, Summary, ColumnCount };
 
-    int rowCount(const QModelIndex& parent = {}) const override { return parent.isValid() ? 0 : static_cast<int>(rows_.size()); }
+    int rowCount(const QModelIndex& parent = {}) const override {
+        return parent.isValid() ? 0 : static_cast<int>(rows_.size());
+    }
     int columnCount(const QModelIndex& parent = {}) const override { return parent.isValid() ? 0 : ColumnCount; }
 
     QVariant data(const QModelIndex& index, int role) const override {
@@ -65,13 +67,15 @@ public:
             if (index.column() == Summary) return r.summary;
             return {};
         case Qt::FontRole:
-            if (index.column() == CobId || index.column() == Data) return QFontDatabase::systemFont(QFontDatabase::FixedFont);
+            if (index.column() == CobId || index.column() == Data)
+                return QFontDatabase::systemFont(QFontDatabase::FixedFont);
             return {};
         case Qt::ForegroundRole:
             if (index.column() == Direction && r.tx) return QBrush(QColor(30, 90, 200));
             return {};
         case Qt::TextAlignmentRole:
-            if (index.column() == Time || index.column() == CobId) return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+            if (index.column() == Time || index.column() == CobId)
+                return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
             return {};
         default: return {};
         }
@@ -168,13 +172,17 @@ struct WizardFramesPane::Private {
             row.data = QStringLiteral("RTR");
         } else {
             const auto p = store->payload(n);
-            row.data = QString::fromLatin1(QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size())).toHex(' ').toUpper());
+            row.data = QString::fromLatin1(
+                QByteArray(reinterpret_cast<const char*>(p.data()), static_cast<qsizetype>(p.size()))
+                    .toHex(' ')
+                    .toUpper());
         }
         const auto decoder = workspace ? workspace->decoder() : nullptr;
         if (decoder) {
             scratch.reset(dissect::Dissection::Level::Flat);
             decoder->decodeAt(*store, n, scratch);
-            row.summary = coreLines(localObjectNames(scratch, scratch.summary));  // the dissectors' English in the UI language
+            row.summary =
+                coreLines(localObjectNames(scratch, scratch.summary));  // the dissectors' English in the UI language
             if (!scratch.warnings.isEmpty()) {
                 QStringList warnings = scratch.warnings;
                 for (QString& w : warnings) w = coreText(localObjectNames(scratch, w));
@@ -185,7 +193,8 @@ struct WizardFramesPane::Private {
     }
 };
 
-WizardFramesPane::WizardFramesPane(Workspace* workspace, QWidget* parent) : QWidget(parent), d_(std::make_unique<Private>()) {
+WizardFramesPane::WizardFramesPane(Workspace* workspace, QWidget* parent)
+    : QWidget(parent), d_(std::make_unique<Private>()) {
     d_->workspace = workspace;
     d_->view = new QTableView(this);
     d_->view->setModel(&d_->model);
@@ -235,9 +244,7 @@ WizardFramesPane::WizardFramesPane(Workspace* workspace, QWidget* parent) : QWid
 
 WizardFramesPane::~WizardFramesPane() = default;
 
-void WizardFramesPane::setNode(int node) {
-    d_->node = (node >= 1 && node <= 127) ? node : -1;
-}
+void WizardFramesPane::setNode(int node) { d_->node = (node >= 1 && node <= 127) ? node : -1; }
 
 void WizardFramesPane::markStart() {
     if (d_->workspace) d_->store = d_->workspace->store();
@@ -252,7 +259,8 @@ void WizardFramesPane::poll() {
     const size_t end = std::min(size, d_->next + kScanPerTick);
     std::vector<framespane::Row> rows;
     for (size_t n = d_->next; n < end; ++n)
-        if (d_->wanted(d_->store->record(static_cast<FrameNo>(n)))) rows.push_back(d_->makeRow(static_cast<FrameNo>(n)));
+        if (d_->wanted(d_->store->record(static_cast<FrameNo>(n))))
+            rows.push_back(d_->makeRow(static_cast<FrameNo>(n)));
     d_->next = end;
     if (rows.empty()) return;
     const bool follow = d_->follow;
@@ -265,7 +273,8 @@ int WizardFramesPane::rowCount() const { return d_->model.rowCount(); }
 QString WizardFramesPane::rowText(int row) const {
     if (row < 0 || row >= d_->model.rowCount()) return {};
     const framespane::Row& r = d_->model.row(row);
-    return QStringLiteral("%1 %2 %3  %4").arg(r.tx ? QStringLiteral("Tx") : QStringLiteral("Rx"), r.cobId, r.data, r.summary);
+    return QStringLiteral("%1 %2 %3  %4")
+        .arg(r.tx ? QStringLiteral("Tx") : QStringLiteral("Rx"), r.cobId, r.data, r.summary);
 }
 
 }  // namespace coscope::gui

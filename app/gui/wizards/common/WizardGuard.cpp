@@ -13,7 +13,8 @@ WizardGuard::WizardGuard(Workspace* workspace, QWidget* parent) : QWidget(parent
     text_ = new QLabel(this);
     text_->setWordWrap(true);
     text_->setTextFormat(Qt::PlainText);
-    text_->setStyleSheet(QStringLiteral("QLabel { background: #fff3cd; color: #5c4400; border: 1px solid #e0c060; padding: 6px; }"));
+    text_->setStyleSheet(
+        QStringLiteral("QLabel { background: #fff3cd; color: #5c4400; border: 1px solid #e0c060; padding: 6px; }"));
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(text_);
@@ -29,13 +30,19 @@ bool WizardGuard::canSend() const { return workspace_ && workspace_->canTransmit
 QString WizardGuard::reason() const {
     if (canSend()) return {};
     if (!workspace_ || !workspace_->bus())
-        return tr("No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.");
+        return tr(
+            "No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps "
+            "and save them as a script.");
     if (workspace_->bus()->isListenOnly())
-        return tr("The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; "
-                  "you can still prepare the steps and save them as a script.");
-    if (workspace_->bus()->state() == CanBus::State::Opening) return tr("The bus is still opening; sending is possible once it is open.");
+        return tr(
+            "The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send "
+            "these commands; "
+            "you can still prepare the steps and save them as a script.");
+    if (workspace_->bus()->state() == CanBus::State::Opening)
+        return tr("The bus is still opening; sending is possible once it is open.");
     if (workspace_->bus()->state() == CanBus::State::Lost)
-        return tr("The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.").arg(workspace_->bus()->errorString());
+        return tr("The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.")
+            .arg(workspace_->bus()->errorString());
     return tr("The bus is not open (%1), so nothing can be sent.").arg(toString(workspace_->bus()->state()));
 }
 

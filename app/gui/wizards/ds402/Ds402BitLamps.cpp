@@ -53,7 +53,10 @@ bool Ds402BitLamps::isOn(int lamp) const { return lamps_.at(static_cast<size_t>(
 QString Ds402BitLamps::name(int lamp) const { return lamps_.at(static_cast<size_t>(lamp)).name->text(); }
 
 void Ds402BitLamps::paint(Lamp& l) {
-    const QString color = l.state < 0 ? QStringLiteral("#bbbbbb") : l.state == 0 ? QStringLiteral("#d0d0d0") : l.alarm ? QStringLiteral("#d02020") : QStringLiteral("#20a040");
+    const QString color = l.state < 0    ? QStringLiteral("#bbbbbb")
+                          : l.state == 0 ? QStringLiteral("#d0d0d0")
+                          : l.alarm      ? QStringLiteral("#d02020")
+                                         : QStringLiteral("#20a040");
     l.dot->setStyleSheet(QStringLiteral("color: %1;").arg(color));
     QFont f = l.name->font();
     f.setBold(l.state == 1);

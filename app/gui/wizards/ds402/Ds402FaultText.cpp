@@ -12,7 +12,8 @@ namespace coscope::gui {
 
 QString Ds402Fault::text() const {
     //: CiA 402 wizard, a drive fault: %1 = the error code in hex
-    QString out = QCoreApplication::translate("Ds402Fault", "Error code (603Fh) %1h").arg(QStringLiteral("%1").arg(errorCode, 4, 16, QChar(u'0')).toUpper());
+    QString out = QCoreApplication::translate("Ds402Fault", "Error code (603Fh) %1h")
+                      .arg(QStringLiteral("%1").arg(errorCode, 4, 16, QChar(u'0')).toUpper());
     if (!ciaText.isEmpty()) out += QStringLiteral(": ") + coreText(ciaText);  // the CiA 301/402 name in the UI language
     //: CiA 402 wizard, after the error code: %1 = the vendor's alarm code and name ("AL013 Emergency stop")
     if (!vendorAlarm.isEmpty()) out += QCoreApplication::translate("Ds402Fault", " — vendor alarm %1").arg(vendorAlarm);
@@ -34,7 +35,9 @@ Ds402Fault describeDs402Fault(const QString& dictionary, uint16_t errorCode, uin
             return f;
         }
         //: %1 = the vendor alarm number in hex, %2 = the alarm table's name (e.g. delta-asda-a2)
-        f.vendorAlarm = QCoreApplication::translate("Ds402Fault", "alarm number 0x%1 (not in the %2 table)").arg(history1003 >> 16, 4, 16, QChar(u'0')).arg(table->name);
+        f.vendorAlarm = QCoreApplication::translate("Ds402Fault", "alarm number 0x%1 (not in the %2 table)")
+                            .arg(history1003 >> 16, 4, 16, QChar(u'0'))
+                            .arg(table->name);
         return f;
     }
     // Without the history: the alarm whose error code is this one, when only one has it.

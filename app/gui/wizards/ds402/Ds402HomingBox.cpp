@@ -59,8 +59,8 @@ Ds402HomingBox::Ds402HomingBox(QWidget* parent) : QWidget(parent) {
     about_->setObjectName(QStringLiteral("homingMethodText"));
     about_->setWordWrap(true);
     form->addRow(about_);
-    const QString labels[] = {tr("Speed, search for switch (6099h:01):"), tr("Speed, search for zero (6099h:02):"), tr("Acceleration (609Ah):"),
-                              tr("Home offset (607Ch):")};
+    const QString labels[] = {tr("Speed, search for switch (6099h:01):"), tr("Speed, search for zero (6099h:02):"),
+                              tr("Acceleration (609Ah):"), tr("Home offset (607Ch):")};
     const char* names[] = {"homingFast", "homingSlow", "homingAcceleration", "homeOffset"};
     for (size_t i = 0; i < fields_.size(); ++i) {
         fields_[i] = new IntegerSpinBox(this);
@@ -71,7 +71,9 @@ Ds402HomingBox::Ds402HomingBox(QWidget* parent) : QWidget(parent) {
     }
     start_ = new QPushButton(tr("Start homing…"), this);
     start_->setObjectName(QStringLiteral("startHoming"));
-    start_->setToolTip(tr("Asks first. Then sets homing mode (6060h = 6), writes the values above, enables the drive and starts homing (6040h = 001Fh)."));
+    start_->setToolTip(
+        tr("Asks first. Then sets homing mode (6060h = 6), writes the values above, enables the drive and starts "
+           "homing (6040h = 001Fh)."));
     connect(start_, &QPushButton::clicked, this, &Ds402HomingBox::startClicked);
     stop_ = new QPushButton(tr("Stop"), this);
     stop_->setObjectName(QStringLiteral("stopHoming"));
@@ -89,7 +91,8 @@ Ds402HomingBox::Ds402HomingBox(QWidget* parent) : QWidget(parent) {
     lamps_ = new Ds402BitLamps(this);
     lamps_->setObjectName(QStringLiteral("homingBits"));
     for (int bit : {kHomingTargetBit, kHomingAttainedBit, kHomingErrorBit})
-        lamps_->add(QStringLiteral("%1  %2").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit, int8_t(6)))), bit == kHomingErrorBit);
+        lamps_->add(QStringLiteral("%1  %2").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit, int8_t(6)))),
+                    bit == kHomingErrorBit);
     homeFoundLamp_ = lamps_->add(QStringLiteral("15  %1").arg(tr("home found")));
     lamps_->setVisibleLamp(homeFoundLamp_, false);
     right->addWidget(lamps_);
@@ -109,7 +112,8 @@ Ds402HomingBox::Ds402HomingBox(QWidget* parent) : QWidget(parent) {
     setButtons(false, false);
 }
 
-void Ds402HomingBox::setDrive(const canopen::homing::DriveHoming& table, bool known, const Ds402Units& units, const QString& dictionary) {
+void Ds402HomingBox::setDrive(const canopen::homing::DriveHoming& table, bool known, const Ds402Units& units,
+                              const QString& dictionary) {
     const std::optional<int> before = method();
     table_ = table;
     known_ = known;
@@ -118,16 +122,20 @@ void Ds402HomingBox::setDrive(const canopen::homing::DriveHoming& table, bool kn
     typed_.fill(false);
     methodTyped_ = false;
     method_->clear();
-    for (const canopen::homing::Method& m : table.methods) method_->addItem(QStringLiteral("%1 — %2").arg(m.number).arg(coreText(m.description)), int(m.number));
-    const int pick = method_->findData(before && table.supports(*before) ? *before : int(table.defaultMethod ? table.defaultMethod : 35));
+    for (const canopen::homing::Method& m : table.methods)
+        method_->addItem(QStringLiteral("%1 — %2").arg(m.number).arg(coreText(m.description)), int(m.number));
+    const int pick = method_->findData(
+        before && table.supports(*before) ? *before : int(table.defaultMethod ? table.defaultMethod : 35));
     method_->setCurrentIndex(std::max(0, pick));
     method_->lineEdit()->setCursorPosition(0);  // the number first, not the end of a long text
     // Types and limits as the drive's dictionary gives them; units as its sidecar says.
-    const eds::DictionaryPtr od = dictionary.isEmpty() ? nullptr : eds::DictionaryLibrary::shared().loadShared(dictionary);
+    const eds::DictionaryPtr od =
+        dictionary.isEmpty() ? nullptr : eds::DictionaryLibrary::shared().loadShared(dictionary);
     const od::Unit* unitOf[] = {&units.homingSpeed, &units.homingSpeed, &units.homingAcceleration, &units.homeOffset};
     for (size_t i = 0; i < fields_.size(); ++i) {
         const od::SubObject* e = od ? od->entry(kHomingFields[i].index, kHomingFields[i].sub) : nullptr;
-        fields_[i]->setType(e && od::isInteger(e->dataType) ? e->dataType : kHomingFields[i].type, e ? e->limits() : od::Limits{});
+        fields_[i]->setType(e && od::isInteger(e->dataType) ? e->dataType : kHomingFields[i].type,
+                            e ? e->limits() : od::Limits{});
         fields_[i]->setSuffix(rawUnitSuffix(*unitOf[i]));
     }
     lamps_->setVisibleLamp(homeFoundLamp_, table.homeFoundBit == 15);
@@ -180,9 +188,12 @@ void Ds402HomingBox::describeMethod() {
     QString text;
     if (!n) text = tr("Type a method number (-128 to 127) or choose one.");
     else if (const canopen::homing::Method* m = table_.method(*n)) text = coreText(m->description);
-    else if (known_) text = tr("Not a homing method of the %1 (it has %2): it would be refused.").arg(table_.title, table_.numbers());
+    else if (known_)
+        text =
+            tr("Not a homing method of the %1 (it has %2): it would be refused.").arg(table_.title, table_.numbers());
     else text = tr("Not a CiA 402-2 homing method; the drive's own manual may define it.");
-    if (!known_) text += QStringLiteral(" ") + tr("(The drive's dictionary is not known: CiA 402-2's methods are listed.)");
+    if (!known_)
+        text += QStringLiteral(" ") + tr("(The drive's dictionary is not known: CiA 402-2's methods are listed.)");
     about_->setText(text);
 }
 
@@ -207,13 +218,14 @@ void Ds402HomingBox::showSample(const canopen::Ds402MotionSample& s) {
     lamps_->set(homeFoundLamp_, s.statusword & 0x8000);
     plot_->addSample(double(s.ms), double(s.position), double(s.velocity));
     progress_->setText(tr("%1 s: statusword %2, position %3, velocity %4")
-                           .arg(QLocale().toString(double(s.ms) / 1000.0, 'f', 1), od::hexText(s.statusword, 4), inUnit(s.position, units_.position),
-                                inUnit(s.velocity, units_.velocity)));
+                           .arg(QLocale().toString(double(s.ms) / 1000.0, 'f', 1), od::hexText(s.statusword, 4),
+                                inUnit(s.position, units_.position), inUnit(s.velocity, units_.velocity)));
 }
 
 void Ds402HomingBox::showResult(const QString& text, bool ok) {
     result_->setText(text);
-    result_->setStyleSheet(ok ? QStringLiteral("color: #1b7a30; font-weight: bold;") : QStringLiteral("color: #a00000; font-weight: bold;"));
+    result_->setStyleSheet(ok ? QStringLiteral("color: #1b7a30; font-weight: bold;")
+                              : QStringLiteral("color: #a00000; font-weight: bold;"));
 }
 
 QString Ds402HomingBox::resultText() const { return result_->text(); }

@@ -33,7 +33,8 @@ public:
 
     // The drive's methods (`known`: from its own manual, else CiA 402-2's), its units, and its
     // dictionary for the fields' types and limits.
-    void setDrive(const canopen::homing::DriveHoming& table, bool known, const Ds402Units& units, const QString& dictionary);
+    void setDrive(const canopen::homing::DriveHoming& table, bool known, const Ds402Units& units,
+                  const QString& dictionary);
     // Values read from the drive; a field whose object could not be read is not written.
     void showDriveValue(uint16_t index, uint8_t sub, int64_t value);
     // The method typed or chosen (nullopt: the text is no number).

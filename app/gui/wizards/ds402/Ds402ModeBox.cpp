@@ -20,7 +20,8 @@ Ds402ModeBox::Ds402ModeBox(QWidget* parent) : QGroupBox(tr("Mode of operation (6
     combo_->setPlaceholderText(tr("not read"));  // no item selected: the drive's mode is not among those offered
     connect(combo_, &QComboBox::currentIndexChanged, this, &Ds402ModeBox::updateSetButton);
     set_ = new QPushButton(tr("Set and verify"), this);
-    connect(set_, &QPushButton::clicked, this, [this] { emit setRequested(static_cast<int8_t>(combo_->currentData().toInt())); });
+    connect(set_, &QPushButton::clicked, this,
+            [this] { emit setRequested(static_cast<int8_t>(combo_->currentData().toInt())); });
     auto* row = new QHBoxLayout;
     row->addWidget(combo_, 1);
     row->addWidget(set_);
@@ -59,7 +60,9 @@ bool Ds402ModeBox::showDriveMode(int8_t mode) {
     return true;
 }
 
-void Ds402ModeBox::showVerified(int8_t mode) { shown_->setText(tr("Shown by the drive (6061h): %1 ✓").arg(coreText(canopen::ds402::modeName(mode)))); }
+void Ds402ModeBox::showVerified(int8_t mode) {
+    shown_->setText(tr("Shown by the drive (6061h): %1 ✓").arg(coreText(canopen::ds402::modeName(mode))));
+}
 
 std::optional<int8_t> Ds402ModeBox::chosen() const {
     if (combo_->currentIndex() < 0) return std::nullopt;

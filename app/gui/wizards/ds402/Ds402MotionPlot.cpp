@@ -64,7 +64,8 @@ void Ds402MotionPlot::paintEvent(QPaintEvent*) {
     p.drawText(QPointF(6, 2 * line + 2), velocityText());
     if (t_.size() < 2) {
         p.setPen(palette().placeholderText().color());
-        p.drawText(area, Qt::AlignCenter, placeholder_.isEmpty() ? tr("The test move's motion shows here") : placeholder_);
+        p.drawText(area, Qt::AlignCenter,
+                   placeholder_.isEmpty() ? tr("The test move's motion shows here") : placeholder_);
         return;
     }
     const double t0 = t_.front(), t1 = std::max(t_.back(), t0 + 1);
@@ -73,7 +74,8 @@ void Ds402MotionPlot::paintEvent(QPaintEvent*) {
         const double a = *lo, b = std::max(*hi, *lo + 1);
         QPainterPath path;
         for (size_t i = 0; i < y.size(); ++i) {
-            const QPointF pt(area.left() + (t_[i] - t0) / (t1 - t0) * area.width(), area.bottom() - (y[i] - a) / (b - a) * area.height());
+            const QPointF pt(area.left() + (t_[i] - t0) / (t1 - t0) * area.width(),
+                             area.bottom() - (y[i] - a) / (b - a) * area.height());
             if (i == 0) path.moveTo(pt);
             else path.lineTo(pt);
         }

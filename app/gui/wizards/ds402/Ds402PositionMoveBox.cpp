@@ -21,7 +21,7 @@
 namespace coscope::gui {
 
 namespace {
-constexpr uint16_t kPpNewSetPoint = 1u << 4;                                           // 6040h bit 4
+constexpr uint16_t kPpNewSetPoint = 1u << 4;                                                   // 6040h bit 4
 constexpr uint16_t kPpAcknowledge = 1u << 12, kPpReached = 1u << 10, kPpFollowing = 1u << 13;  // 6041h in PP
 constexpr uint16_t kProfileIndex[] = {0x6081, 0x6083, 0x6084};
 enum PositionLamp { LampNewSetPoint, LampAcknowledge, LampReached, LampFollowing };
@@ -42,7 +42,8 @@ Ds402PositionMoveBox::Ds402PositionMoveBox(QWidget* parent) : QWidget(parent) {
     targetRow->addWidget(target_, 1);
     targetRow->addWidget(relative_);
     form->addRow(tr("Target (607Ah):"), targetRow);
-    const QString labels[] = {tr("Profile velocity (6081h):"), tr("Acceleration (6083h):"), tr("Deceleration (6084h):")};
+    const QString labels[] = {tr("Profile velocity (6081h):"), tr("Acceleration (6083h):"),
+                              tr("Deceleration (6084h):")};
     const char* names[] = {"positionVelocity", "positionAcceleration", "positionDeceleration"};
     const qint64 defaults[] = {2000, 10000, 10000};  // the test move's own ramps
     for (size_t i = 0; i < fields_.size(); ++i) {
@@ -63,7 +64,8 @@ Ds402PositionMoveBox::Ds402PositionMoveBox(QWidget* parent) : QWidget(parent) {
     hold_ = new QPushButton(tr("Hold to move"), this);
     hold_->setObjectName(QStringLiteral("holdToMove"));
     hold_->setMinimumHeight(40);
-    hold_->setToolTip(tr("The motor moves only while this button is held down; releasing it halts the motor (6040h bit 8)."));
+    hold_->setToolTip(
+        tr("The motor moves only while this button is held down; releasing it halts the motor (6040h bit 8)."));
     connect(hold_, &QPushButton::pressed, this, &Ds402PositionMoveBox::holdPressed);
     connect(hold_, &QPushButton::released, this, &Ds402PositionMoveBox::holdReleased);
     auto* buttons = new QHBoxLayout;
@@ -106,7 +108,8 @@ Ds402PositionMoveBox::Ds402PositionMoveBox(QWidget* parent) : QWidget(parent) {
 void Ds402PositionMoveBox::setDrive(const Ds402Units& units, const QString& dictionary) {
     units_ = units;
     typed_.fill(false);
-    const eds::DictionaryPtr od = dictionary.isEmpty() ? nullptr : eds::DictionaryLibrary::shared().loadShared(dictionary);
+    const eds::DictionaryPtr od =
+        dictionary.isEmpty() ? nullptr : eds::DictionaryLibrary::shared().loadShared(dictionary);
     auto limitsOf = [&](uint16_t index) {
         const od::SubObject* e = od ? od->entry(index, 0) : nullptr;
         return e ? e->limits() : od::Limits{};
@@ -150,8 +153,15 @@ canopen::Ds402PositionMove Ds402PositionMoveBox::move() const {
 
 QString Ds402PositionMoveBox::describe(const canopen::Ds402PositionMove& m) const {
     const QString speed = inUnit(double(m.velocity.value_or(0)), units_.profileVelocity);
-    if (m.relative) return tr("move by %1 (relative, 607Ah = %2) at up to %3 (6081h)").arg(inUnit(m.target, units_.distance)).arg(m.target).arg(speed);
-    return tr("move to position %1 (absolute, 607Ah = %2) at up to %3 (6081h)").arg(inUnit(m.target, units_.distance)).arg(m.target).arg(speed);
+    if (m.relative)
+        return tr("move by %1 (relative, 607Ah = %2) at up to %3 (6081h)")
+            .arg(inUnit(m.target, units_.distance))
+            .arg(m.target)
+            .arg(speed);
+    return tr("move to position %1 (absolute, 607Ah = %2) at up to %3 (6081h)")
+        .arg(inUnit(m.target, units_.distance))
+        .arg(m.target)
+        .arg(speed);
 }
 
 void Ds402PositionMoveBox::setButtons(bool armEnabled, bool holdEnabled) {
@@ -194,13 +204,16 @@ void Ds402PositionMoveBox::showSample(const canopen::Ds402MotionSample& s) {
     const double span = double(to_) - double(from_);
     const double done = span == 0 ? 1.0 : (double(s.position) - double(from_)) / span;
     way_->setValue(static_cast<int>(std::lround(std::clamp(done, 0.0, 1.0) * 1000)));
-    way_->setFormat(tr("%1 of %2 → %3").arg(inUnit(s.position, units_.position), inUnit(from_, units_.position), inUnit(to_, units_.position)));
+    way_->setFormat(
+        tr("%1 of %2 → %3")
+            .arg(inUnit(s.position, units_.position), inUnit(from_, units_.position), inUnit(to_, units_.position)));
     showHandshake();
 }
 
 void Ds402PositionMoveBox::showHandshake() {
     auto mark = [this](int phase) { return phase_ >= phase ? QStringLiteral("✔") : QStringLiteral("○"); };
-    handshake_->setText(tr("Set-point handshake: %1 new set-point (bit 4 = 1) → %2 acknowledged (bit 12), bit 4 = 0 → %3 target reached (bit 10)")
+    handshake_->setText(tr("Set-point handshake: %1 new set-point (bit 4 = 1) → %2 acknowledged (bit 12), bit 4 = 0 → "
+                           "%3 target reached (bit 10)")
                             .arg(mark(1), mark(2), mark(3)));
 }
 
@@ -208,7 +221,8 @@ void Ds402PositionMoveBox::showResult(const QString& text, bool ok) {
     if (ok && phase_ >= 2) phase_ = 3;
     showHandshake();
     result_->setText(text);
-    result_->setStyleSheet(ok ? QStringLiteral("color: #1b7a30; font-weight: bold;") : QStringLiteral("color: #a00000; font-weight: bold;"));
+    result_->setStyleSheet(ok ? QStringLiteral("color: #1b7a30; font-weight: bold;")
+                              : QStringLiteral("color: #a00000; font-weight: bold;"));
 }
 
 QString Ds402PositionMoveBox::resultText() const { return result_->text(); }

@@ -41,7 +41,8 @@ void arrow(QPainter& p, QPointF a, QPointF b, const QString& label, bool lit, QP
     const double ang = std::atan2(b.y() - a.y(), b.x() - a.x());
     const double len = lit ? 10 : 8;
     QPolygonF head;
-    head << b << b - QPointF(len * std::cos(ang - 0.4), len * std::sin(ang - 0.4)) << b - QPointF(len * std::cos(ang + 0.4), len * std::sin(ang + 0.4));
+    head << b << b - QPointF(len * std::cos(ang - 0.4), len * std::sin(ang - 0.4))
+         << b - QPointF(len * std::cos(ang + 0.4), len * std::sin(ang + 0.4));
     p.setBrush(pen.color());
     p.drawPolygon(head);
     QFont f = p.font();
@@ -111,20 +112,32 @@ void Ds402StateDiagram::paintEvent(QPaintEvent*) {
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
     auto lit = [this](int n) { return next_ && *next_ == n; };
-    auto top = [this](State s) { const QRectF r = boxOf(s); return QPointF(r.center().x(), r.top()); };
-    auto bottom = [this](State s) { const QRectF r = boxOf(s); return QPointF(r.center().x(), r.bottom()); };
+    auto top = [this](State s) {
+        const QRectF r = boxOf(s);
+        return QPointF(r.center().x(), r.top());
+    };
+    auto bottom = [this](State s) {
+        const QRectF r = boxOf(s);
+        return QPointF(r.center().x(), r.bottom());
+    };
     const double dx = width() * 0.05;
     // Down the left column: 1, 2, 3, 4 (left of centre); back up: 7, 6, 5 (right of centre).
-    const State chain[] = {State::NotReadyToSwitchOn, State::SwitchOnDisabled, State::ReadyToSwitchOn, State::SwitchedOn, State::OperationEnabled};
+    const State chain[] = {State::NotReadyToSwitchOn, State::SwitchOnDisabled, State::ReadyToSwitchOn,
+                           State::SwitchedOn, State::OperationEnabled};
     const int down[] = {1, 2, 3, 4}, up[] = {0, 7, 6, 5};
     for (int i = 0; i < 4; ++i) {
-        arrow(p, bottom(chain[i]) - QPointF(dx, 0), top(chain[i + 1]) - QPointF(dx, 0), QString::number(down[i]), lit(down[i]), {-18, 0});
-        if (up[i]) arrow(p, top(chain[i + 1]) + QPointF(dx, 0), bottom(chain[i]) + QPointF(dx, 0), QString::number(up[i]), lit(up[i]));
+        arrow(p, bottom(chain[i]) - QPointF(dx, 0), top(chain[i + 1]) - QPointF(dx, 0), QString::number(down[i]),
+              lit(down[i]), {-18, 0});
+        if (up[i])
+            arrow(p, top(chain[i + 1]) + QPointF(dx, 0), bottom(chain[i]) + QPointF(dx, 0), QString::number(up[i]),
+                  lit(up[i]));
     }
     // 11 / 16 between Operation enabled and Quick stop active.
     const QRectF oe = boxOf(State::OperationEnabled), qs = boxOf(State::QuickStopActive);
-    arrow(p, QPointF(oe.right(), oe.center().y() - 5), QPointF(qs.left(), qs.center().y() - 5), QStringLiteral("11"), lit(11), {-6, -8});
-    arrow(p, QPointF(qs.left(), qs.center().y() + 7), QPointF(oe.right(), oe.center().y() + 7), QStringLiteral("16"), lit(16), {-6, 14});
+    arrow(p, QPointF(oe.right(), oe.center().y() - 5), QPointF(qs.left(), qs.center().y() - 5), QStringLiteral("11"),
+          lit(11), {-6, -8});
+    arrow(p, QPointF(qs.left(), qs.center().y() + 7), QPointF(oe.right(), oe.center().y() + 7), QStringLiteral("16"),
+          lit(16), {-6, 14});
     // 12: Quick stop active back to Switch on disabled (up the right side of the picture).
     const QRectF sod = boxOf(State::SwitchOnDisabled), fr = boxOf(State::FaultReactionActive), fa = boxOf(State::Fault);
     {
@@ -138,18 +151,23 @@ void Ds402StateDiagram::paintEvent(QPaintEvent*) {
         arrow(p, QPointF(xr, ymid), QPointF(sod.right(), sod.bottom() - 2), QStringLiteral("12"), on, {10, 12});
     }
     // Fault: 13 (from any state), 14, 15.
-    arrow(p, QPointF(fr.center().x(), 2), QPointF(fr.center().x(), fr.top()), QCoreApplication::translate("Ds402StateDiagram", "13 any fault"), false);
+    arrow(p, QPointF(fr.center().x(), 2), QPointF(fr.center().x(), fr.top()),
+          QCoreApplication::translate("Ds402StateDiagram", "13 any fault"), false);
     arrow(p, QPointF(fr.center().x(), fr.bottom()), QPointF(fa.center().x(), fa.top()), QStringLiteral("14"), lit(14));
-    arrow(p, QPointF(fa.left(), fa.center().y()), QPointF(sod.right(), sod.center().y()), QStringLiteral("15"), lit(15), {-8, -8});
+    arrow(p, QPointF(fa.left(), fa.center().y()), QPointF(sod.right(), sod.center().y()), QStringLiteral("15"), lit(15),
+          {-8, -8});
 
     // The boxes on top.
-    for (State s : {State::NotReadyToSwitchOn, State::SwitchOnDisabled, State::ReadyToSwitchOn, State::SwitchedOn, State::OperationEnabled,
-                    State::QuickStopActive, State::FaultReactionActive, State::Fault}) {
+    for (State s : {State::NotReadyToSwitchOn, State::SwitchOnDisabled, State::ReadyToSwitchOn, State::SwitchedOn,
+                    State::OperationEnabled, State::QuickStopActive, State::FaultReactionActive, State::Fault}) {
         const QRectF r = boxOf(s);
         const bool current = s == state_;
         const bool fault = s == State::Fault || s == State::FaultReactionActive;
         QColor fill = palette().window().color();
-        if (current) fill = fault ? QColor(220, 50, 40) : s == State::OperationEnabled ? QColor(40, 170, 70) : QColor(250, 200, 40);
+        if (current)
+            fill = fault                          ? QColor(220, 50, 40)
+                   : s == State::OperationEnabled ? QColor(40, 170, 70)
+                                                  : QColor(250, 200, 40);
         p.setPen(QPen(current ? QColor(20, 20, 20) : QColor(120, 120, 120), current ? 2.5 : 1));
         p.setBrush(fill);
         p.drawRoundedRect(r, 6, 6);
@@ -161,7 +179,8 @@ void Ds402StateDiagram::paintEvent(QPaintEvent*) {
     }
     if (state_ == State::Unknown) {
         p.setPen(palette().placeholderText().color());
-        p.drawText(QRectF(width() * 0.5, height() * 0.45, width() * 0.5, height() * 0.2), Qt::AlignCenter | Qt::TextWordWrap, tr("State not read yet"));
+        p.drawText(QRectF(width() * 0.5, height() * 0.45, width() * 0.5, height() * 0.2),
+                   Qt::AlignCenter | Qt::TextWordWrap, tr("State not read yet"));
     }
 }
 

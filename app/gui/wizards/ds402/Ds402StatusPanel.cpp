@@ -29,9 +29,11 @@ Ds402StatusPanel::Ds402StatusPanel(QWidget* parent) : QWidget(parent) {
         lamps_[bit] = new QLabel(QStringLiteral("●"), this);
         names_[bit] = new QLabel(this);
         name(bit);
-        const QString meaningOn = coreText(canopen::ds402::statuswordBitMeaning(bit, true)), meaningOff = coreText(canopen::ds402::statuswordBitMeaning(bit, false));
-        names_[bit]->setToolTip(QStringLiteral("%1%2").arg(meaningOn.isEmpty() ? QString() : tr("On: ") + meaningOn + QStringLiteral("\n"),
-                                                           meaningOff.isEmpty() ? QString() : tr("Off: ") + meaningOff));
+        const QString meaningOn = coreText(canopen::ds402::statuswordBitMeaning(bit, true)),
+                      meaningOff = coreText(canopen::ds402::statuswordBitMeaning(bit, false));
+        names_[bit]->setToolTip(
+            QStringLiteral("%1%2").arg(meaningOn.isEmpty() ? QString() : tr("On: ") + meaningOn + QStringLiteral("\n"),
+                                       meaningOff.isEmpty() ? QString() : tr("Off: ") + meaningOff));
         const int col = bit < 8 ? 0 : 2;
         grid->addWidget(lamps_[bit], bit % 8, col);
         grid->addWidget(names_[bit], bit % 8, col + 1);
@@ -56,7 +58,10 @@ void Ds402StatusPanel::update(int bit) {
     const bool on = known_ && (sw_ & (1u << bit));
     // Bits that are bad news when set (fault, warning) show red; others green.
     const bool alarm = bit == 3 || bit == 7;
-    const QString color = !known_ ? QStringLiteral("#bbbbbb") : !on ? QStringLiteral("#d0d0d0") : alarm ? QStringLiteral("#d02020") : QStringLiteral("#20a040");
+    const QString color = !known_ ? QStringLiteral("#bbbbbb")
+                          : !on   ? QStringLiteral("#d0d0d0")
+                          : alarm ? QStringLiteral("#d02020")
+                                  : QStringLiteral("#20a040");
     lamps_[bit]->setStyleSheet(QStringLiteral("color: %1;").arg(color));
     QFont f = names_[bit]->font();
     f.setBold(on);
@@ -66,7 +71,9 @@ void Ds402StatusPanel::update(int bit) {
 void Ds402StatusPanel::setStatusword(uint16_t sw) {
     sw_ = sw;
     known_ = true;
-    word_->setText(tr("Statusword (6041h) = %1 — %2").arg(od::hexText(sw, 4), coreText(canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw)))));
+    word_->setText(
+        tr("Statusword (6041h) = %1 — %2")
+            .arg(od::hexText(sw, 4), coreText(canopen::ds402::stateName(canopen::ds402::stateFromStatusword(sw)))));
     for (int b = 0; b < 16; ++b) update(b);
 }
 
@@ -90,7 +97,8 @@ void Ds402StatusPanel::setMode(std::optional<int8_t> mode) {
 }
 
 void Ds402StatusPanel::name(int bit) {
-    names_[bit]->setText(QStringLiteral("%1  %2").arg(bit, 2).arg(coreText(canopen::ds402::statuswordBitName(bit, mode_))));
+    names_[bit]->setText(
+        QStringLiteral("%1  %2").arg(bit, 2).arg(coreText(canopen::ds402::statuswordBitName(bit, mode_))));
 }
 
 void Ds402StatusPanel::setFaultText(const QString& text) {
@@ -100,7 +108,11 @@ void Ds402StatusPanel::setFaultText(const QString& text) {
 
 QString Ds402StatusPanel::bitText(int bit) const {
     if (bit < 0 || bit > 15) return {};
-    return QStringLiteral("%1 %2: %3").arg(bit).arg(coreText(canopen::ds402::statuswordBitName(bit, mode_)), !known_ ? QStringLiteral("?") : (sw_ & (1u << bit)) ? QStringLiteral("on") : QStringLiteral("off"));
+    return QStringLiteral("%1 %2: %3")
+        .arg(bit)
+        .arg(coreText(canopen::ds402::statuswordBitName(bit, mode_)), !known_               ? QStringLiteral("?")
+                                                                      : (sw_ & (1u << bit)) ? QStringLiteral("on")
+                                                                                            : QStringLiteral("off"));
 }
 
 QString Ds402StatusPanel::faultText() const { return fault_->text(); }

@@ -16,17 +16,22 @@ using canopen::ds402::State;
 QString ds402StepExplanation(Command c) {
     switch (c) {
     case Command::FaultReset:
-        return QObject::tr("Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then "
-                           "0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.");
+        return QObject::tr(
+            "Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, "
+            "then "
+            "0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.");
     case Command::Shutdown:
-        return QObject::tr("Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. "
-                           "Expect Ready to switch on: bits 0 and 5 on, bit 6 off.");
+        return QObject::tr(
+            "Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. "
+            "Expect Ready to switch on: bits 0 and 5 on, bit 6 off.");
     case Command::SwitchOn:
-        return QObject::tr("Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. "
-                           "Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.");
+        return QObject::tr(
+            "Switch on (transition 3): switches the power stage on, the motor is not yet energised; needs main power. "
+            "Sends 6040h = 0007h. Expect Switched on: bits 0, 1, 4 (voltage enabled) and 5 on.");
     case Command::EnableOperation:
-        return QObject::tr("Enable operation (transition 4): energises the motor, which then holds its position and follows commands. "
-                           "Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.");
+        return QObject::tr(
+            "Enable operation (transition 4): energises the motor, which then holds its position and follows commands. "
+            "Sends 6040h = 000Fh. Expect Operation enabled: bits 0, 1, 2 and 5 on.");
     default: return coreText(canopen::ds402::commandName(c));
     }
 }
@@ -72,10 +77,15 @@ void Ds402StepBar::enableNext(std::optional<Command> next, bool canRun) {
 void Ds402StepBar::explain(State s, bool cia402) {
     const auto next = canopen::ds402::nextEnableCommand(s);
     if (!cia402) next_->clear();
-    else if (s == State::OperationEnabled) next_->setText(tr("The drive is enabled (Operation enabled). Choose a mode and try a test move, or press Disable."));
-    else if (s == State::QuickStopActive) next_->setText(tr("Quick stop is active: press Disable to leave it (Disable voltage, transition 12)."));
+    else if (s == State::OperationEnabled)
+        next_->setText(
+            tr("The drive is enabled (Operation enabled). Choose a mode and try a test move, or press Disable."));
+    else if (s == State::QuickStopActive)
+        next_->setText(tr("Quick stop is active: press Disable to leave it (Disable voltage, transition 12)."));
     else if (next) next_->setText(tr("Next: %1").arg(ds402StepExplanation(*next)));
-    else next_->setText(tr("The drive is in %1; wait for it to settle, then read the state again.").arg(coreText(canopen::ds402::stateName(s))));
+    else
+        next_->setText(tr("The drive is in %1; wait for it to settle, then read the state again.")
+                           .arg(coreText(canopen::ds402::stateName(s))));
 }
 
 void Ds402StepBar::setNote(const QString& text) { next_->setText(text); }

@@ -90,14 +90,18 @@ Ds402TestMove Ds402TestMoveBox::move() const {
 
 QString Ds402TestMoveBox::describe(const Ds402TestMove& m) const {
     if (m.kind == Ds402TestMove::Kind::Jog)
-        return tr("turn at %1 (profile velocity, 60FFh = %2)").arg(inUnit(m.velocity, velocityShownIn_)).arg(m.velocity);
+        return tr("turn at %1 (profile velocity, 60FFh = %2)")
+            .arg(inUnit(m.velocity, velocityShownIn_))
+            .arg(m.velocity);
     return tr("move %1 at up to %2 (profile position, relative: 607Ah = %3, 6081h = %4)")
         .arg(inUnit(m.distance, distanceShownIn_), inUnit(m.velocity, velocityShownIn_))
         .arg(m.distance)
         .arg(m.velocity);
 }
 
-void Ds402TestMoveBox::setKind(Ds402TestMove::Kind kind) { kind_->setCurrentIndex(kind == Ds402TestMove::Kind::Jog ? 0 : 1); }
+void Ds402TestMoveBox::setKind(Ds402TestMove::Kind kind) {
+    kind_->setCurrentIndex(kind == Ds402TestMove::Kind::Jog ? 0 : 1);
+}
 
 void Ds402TestMoveBox::setUnits(const Ds402Units& units) {
     units_ = units;
@@ -106,7 +110,8 @@ void Ds402TestMoveBox::setUnits(const Ds402Units& units) {
 
 void Ds402TestMoveBox::applyUnits() {
     // The same speed and distance, shown in the unit of the object the move kind writes.
-    const double velocity = velocity_->value() / velocityShownIn_.factor, distance = distance_->value() / distanceShownIn_.factor;
+    const double velocity = velocity_->value() / velocityShownIn_.factor,
+                 distance = distance_->value() / distanceShownIn_.factor;
     velocityShownIn_ = kind_->currentIndex() == 0 ? units_.jogVelocity : units_.profileVelocity;
     distanceShownIn_ = units_.distance;
     showInUnit(velocity_, velocityShownIn_, Ds402TestMove::kMaxVelocity, velocity);

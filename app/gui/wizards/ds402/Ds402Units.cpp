@@ -12,14 +12,19 @@
 namespace coscope::gui {
 
 Ds402Units Ds402Units::forDictionary(const QString& dictionaryName) {
-    auto fallback = [](const char* text) { return od::Unit{QCoreApplication::translate("coscope::gui::Ds402Units", text), 1.0}; };
-    Ds402Units u{fallback("units/s"), fallback("units/s"), fallback("units"), fallback("units"), fallback("units/s"),
-                 fallback("units/s²"), fallback("units/s"), fallback("units/s²"), fallback("units")};
+    auto fallback = [](const char* text) {
+        return od::Unit{QCoreApplication::translate("coscope::gui::Ds402Units", text), 1.0};
+    };
+    Ds402Units u{fallback("units/s"), fallback("units/s"),  fallback("units"),
+                 fallback("units"),   fallback("units/s"),  fallback("units/s²"),
+                 fallback("units/s"), fallback("units/s²"), fallback("units")};
     if (dictionaryName.isEmpty()) return u;
     const dissect::DictionaryPtr od = eds::DictionaryLibrary::shared().loadShared(dictionaryName);
     if (!od) return u;
     auto take = [&](uint16_t index, od::Unit& into, uint8_t sub = 0) {
-        if (const od::SubObject* e = od->entry(index, sub); e && e->unit && !e->unit->text.isEmpty() && e->unit->factor > 0) into = *e->unit;
+        if (const od::SubObject* e = od->entry(index, sub);
+            e && e->unit && !e->unit->text.isEmpty() && e->unit->factor > 0)
+            into = *e->unit;
     };
     take(0x60FF, u.jogVelocity);
     take(0x6081, u.profileVelocity);

@@ -12,11 +12,11 @@ namespace coscope::gui {
 // 606Ch are in 0.1 rpm, so the wizard asks for rpm and shows rpm, as the trace and the OD dock
 // do. Without a dictionary or a unit for an object: the raw number in "units".
 struct Ds402Units {
-    od::Unit jogVelocity;      // 60FFh target velocity (profile velocity mode)
-    od::Unit profileVelocity;  // 6081h profile velocity (profile position mode)
-    od::Unit distance;         // 607Ah target position
-    od::Unit position;         // 6064h position actual value
-    od::Unit velocity;         // 606Ch velocity actual value
+    od::Unit jogVelocity;          // 60FFh target velocity (profile velocity mode)
+    od::Unit profileVelocity;      // 6081h profile velocity (profile position mode)
+    od::Unit distance;             // 607Ah target position
+    od::Unit position;             // 6064h position actual value
+    od::Unit velocity;             // 606Ch velocity actual value
     od::Unit profileAcceleration;  // 6083h (6084h the same; Delta: ms from 0 to 3000 rpm)
     od::Unit homingSpeed;          // 6099h:01 and :02 (Delta: 0.1 rpm)
     od::Unit homingAcceleration;   // 609Ah

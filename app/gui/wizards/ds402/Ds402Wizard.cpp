@@ -9,8 +9,8 @@
 #include "app/gui/wizards/common/ScriptPreview.h"
 #include "app/gui/wizards/ds402/Ds402FramesTabs.h"
 #include "app/gui/wizards/ds402/Ds402HomingBox.h"
-#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402ModeBox.h"
+#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402StepBar.h"
@@ -67,8 +67,10 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
         }
         // The connection went away: tell the drive to disable if we still can, then forget it.
         safeDisable(tr("connection lost"));
-        dropController(tr("Connection lost (bus %1). The drive was told to disable if the bus still accepted it; otherwise its own "
-                          "communication-loss reaction (6007h) applies. Check the drive.").arg(s == CanBus::State::Error ? tr("error") : tr("closed")));
+        dropController(tr("Connection lost (bus %1). The drive was told to disable if the bus still accepted it; "
+                          "otherwise its own "
+                          "communication-loss reaction (6007h) applies. Check the drive.")
+                           .arg(s == CanBus::State::Error ? tr("error") : tr("closed")));
     });
     connect(workspace_, &Workspace::sourceChanged, this, [this] {
         if (ctlSdo_ != workspace_->sdo()) dropController(tr("The connection changed. Choose the drive again."));
@@ -77,7 +79,8 @@ Ds402Wizard::Ds402Wizard(Workspace* workspace, int node, QWidget* parent) : QDia
     // Disable voltage to every drive CoScope enabled and sees it go out before the bus closes
     // (canopen::disableEnabledDrives); the window asked first. Nothing more to send from here.
     if (const QString why = sendRefusal(); !why.isEmpty() && workspace_->bus() && workspace_->bus()->isListenOnly()) {
-        banner_->setText(tr("Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h)."));
+        banner_->setText(
+            tr("Listen-only connection: this wizard is disabled because it would have to send (SDO to 6040h/6041h)."));
         banner_->show();
     }
     if (node > 0) selectNode(node);
@@ -203,8 +206,9 @@ void Ds402Wizard::buildUi() {
     auto* bar = new QHBoxLayout;
     quickStop_ = new QPushButton(tr("Quick stop"), this);
     quickStop_->setObjectName(QStringLiteral("quickStop"));
-    quickStop_->setStyleSheet(QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; padding: 6px 18px; }"
-                                             "QPushButton:disabled { background: #d9a0a0; }"));
+    quickStop_->setStyleSheet(
+        QStringLiteral("QPushButton { background: #c62828; color: white; font-weight: bold; padding: 6px 18px; }"
+                       "QPushButton:disabled { background: #d9a0a0; }"));
     quickStop_->setToolTip(tr("Brakes on the drive's quick stop ramp (6040h = 0002h)."));
     connect(quickStop_, &QPushButton::clicked, this, &Ds402Wizard::quickStop);
     disable_ = new QPushButton(tr("Disable"), this);
@@ -290,10 +294,12 @@ void Ds402Wizard::updateButtons() {
     steps_->enableNext(next, canSend && !busy_ && !moving);
     mode_->setChoosable(canSend && !busy_ && !moving);
     const bool enabled = canSend && !busy_ && state_ == State::OperationEnabled;
-    move_->setButtons(enabled && !moving, canSend && (testing || (enabled && !moving && armed_ && armedKind_ == Armed::TestMove)));
+    move_->setButtons(enabled && !moving,
+                      canSend && (testing || (enabled && !moving && armed_ && armedKind_ == Armed::TestMove)));
     homing_->setButtons(canSend && !busy_ && !moving, canSend && motion_ == Motion::Homing);
     position_->setButtons(enabled && !moving,
-                          canSend && (motion_ == Motion::Position || (enabled && !moving && armed_ && armedKind_ == Armed::PositionMove)));
+                          canSend && (motion_ == Motion::Position ||
+                                      (enabled && !moving && armed_ && armedKind_ == Armed::PositionMove)));
     // Always there while connected (DESIGN.md "quick stop / disable always visible").
     const bool connected = workspace_->canTransmit() && workspace_->sdo() && node_ > 0 && cia402_ && !closing_;
     quickStop_->setEnabled(connected);

@@ -147,9 +147,10 @@ private:
     void findFirstDrive(int attempt);
     void makeController();
     void startReading();  // after the drive (and its dictionary) is known
-    void settleFaultReaction(const canopen::Ds402Result& r, int tries, std::function<void(const canopen::Ds402Result&)> done);
+    void settleFaultReaction(const canopen::Ds402Result& r, int tries,
+                             std::function<void(const canopen::Ds402Result&)> done);
     void dropController(const QString& why);
-    void finishClosing();  // Close, Esc, ✕: disable, stop sending (once)
+    void finishClosing();             // Close, Esc, ✕: disable, stop sending (once)
     void showDriveMode(int8_t mode);  // 6061h as read
     void readObject(uint16_t index, uint8_t sub, std::function<void(const canopen::SdoResult&)> done);
     void afterState(const canopen::Ds402Result& r, std::function<void()> then);
@@ -198,20 +199,20 @@ private:
     enum class Armed : uint8_t { TestMove, PositionMove };
     Armed armedKind_ = Armed::TestMove;  // what is armed
     enum class Motion : uint8_t { None, Homing, Position };
-    Motion motion_ = Motion::None;       // the home()/moveTo() running
-    int motionSettingsFor_ = -1;         // selection_ whose homing/position values were read
+    Motion motion_ = Motion::None;                           // the home()/moveTo() running
+    int motionSettingsFor_ = -1;                             // selection_ whose homing/position values were read
     std::optional<int32_t> position_6064_;                   // position actual, as last read
     std::optional<std::pair<int32_t, int32_t>> softLimits_;  // 607Dh:01/02 when the drive has them
-    int32_t moveTarget_ = 0;             // where the running position move goes
-    canopen::Ds402PositionMove armedMove_;  // the position move the user agreed to
+    int32_t moveTarget_ = 0;                                 // where the running position move goes
+    canopen::Ds402PositionMove armedMove_;                   // the position move the user agreed to
     int8_t armedMode_ = 0;      // the mode of operation (6061h) the armed test move runs in
     int8_t armedFromMode_ = 0;  // ... and the one the drive showed when it was armed (until it switched)
     bool holding_ = false;
     bool sentCommands_ = false;  // the wizard wrote 6040h since the node was chosen
     bool closing_ = false;
     bool stoppedByLoss_ = false;  // the bus was lost while a drive was shown: no automatic re-read on return
-    int selection_ = 0;    // counts selectNode() calls: answers for an earlier choice are dropped
-    int settleTries_ = 0;  // re-reads while the drive is Not ready to switch on
+    int selection_ = 0;           // counts selectNode() calls: answers for an earlier choice are dropped
+    int settleTries_ = 0;         // re-reads while the drive is Not ready to switch on
     canopen::ds402::State state_ = canopen::ds402::State::Unknown;
     uint16_t statusword_ = 0;
     std::optional<uint32_t> supported_;

@@ -38,7 +38,8 @@ QString hex4(uint32_t v) { return QStringLiteral("%1").arg(v, 4, 16, QChar(u'0')
 
 bool Ds402Wizard::confirm(const QString& title, const QString& text) {
     if (autoConfirm_) return true;
-    return QMessageBox::question(this, title, text, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) == QMessageBox::Yes;
+    return QMessageBox::question(this, title, text, QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel) ==
+           QMessageBox::Yes;
 }
 
 QString Ds402Wizard::checkAdvice() const {
@@ -58,8 +59,11 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         return false;
     }
     if (command == Command::EnableOperation &&
-        !confirm(tr("Enable operation"), tr("Enable operation energises the motor of node %1: it will hold its position and follow commands.\n\n"
-                                            "Make sure the machine is safe to move and people are clear.\n\nSend 6040h = 000Fh now?").arg(node_))) {
+        !confirm(
+            tr("Enable operation"),
+            tr("Enable operation energises the motor of node %1: it will hold its position and follow commands.\n\n"
+               "Make sure the machine is safe to move and people are clear.\n\nSend 6040h = 000Fh now?")
+                .arg(node_))) {
         if (why) *why = tr("Enable operation was not confirmed; nothing was sent.");
         return false;
     }
@@ -75,7 +79,8 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         if (r.ok) {
             self->busy_ = false;
             self->showState(r.state, r.statusword);
-            self->setMessage(tr("%1 done: the drive is now in %2 (statusword %3h).").arg(name, coreText(canopen::ds402::stateName(r.state)), hex4(r.statusword)));
+            self->setMessage(tr("%1 done: the drive is now in %2 (statusword %3h).")
+                                 .arg(name, coreText(canopen::ds402::stateName(r.state)), hex4(r.statusword)));
             self->poll_->start();  // the next idle read one full interval from now
             emit self->stepFinished(true);
             return;
@@ -83,7 +88,8 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
         // Failed: say which step and what the drive answered, then leave it disabled.
         if (r.statusword || r.state != State::Unknown) self->showState(r.state, r.statusword);
         QString text = tr("Step “%1” failed: %2.").arg(name, coreText(r.error));
-        if (!r.advice.isEmpty()) text += QStringLiteral("\n") + coreJoined(r.advice, QStringLiteral(". ")) + QStringLiteral(".");
+        if (!r.advice.isEmpty())
+            text += QStringLiteral("\n") + coreJoined(r.advice, QStringLiteral(". ")) + QStringLiteral(".");
         self->setMessage(text, true);
         if (!self->ctl_) return;
         self->ctl_->disableVoltage([self, text, command](const Ds402Result& d0) {
@@ -91,7 +97,8 @@ bool Ds402Wizard::runStep(Command command, QString* why) {
             self->settleFaultReaction(d0, 0, [self, text, command](const Ds402Result& d) {
                 if (!self) return;
                 self->busy_ = false;
-                QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.").arg(coreText(canopen::ds402::stateName(d.state)))
+                QString t = text + (d.ok ? tr("\nThe drive was sent Disable voltage (6040h = 0000h) and is now in %1.")
+                                               .arg(coreText(canopen::ds402::stateName(d.state)))
                                          : tr("\nDISABLING FAILED: %1").arg(coreText(d.error)));
                 if (d.ok) self->showState(d.state, d.statusword);
                 self->reading_ = true;
@@ -135,13 +142,18 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         return false;
     }
     if (supported_ && !canopen::ds402::modeSupported(*supported_, mode)) {
-        if (why) *why = tr("The drive does not list %1 as supported (6502h = %2h).").arg(coreText(canopen::ds402::modeName(mode))).arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
+        if (why)
+            *why = tr("The drive does not list %1 as supported (6502h = %2h).")
+                       .arg(coreText(canopen::ds402::modeName(mode)))
+                       .arg(QStringLiteral("%1").arg(*supported_, 8, 16, QChar(u'0')).toUpper());
         return false;
     }
     disarm(tr("the mode of operation is being changed"));
     busy_ = true;
     updateButtons();
-    setMessage(tr("Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…").arg(mode).arg(coreText(canopen::ds402::modeName(mode))));
+    setMessage(tr("Setting the mode of operation: 6060h = %1 (%2), then checking 6061h…")
+                   .arg(mode)
+                   .arg(coreText(canopen::ds402::modeName(mode))));
     QPointer<Ds402Wizard> self(this);
     ctl_->setMode(mode, [self, mode](const Ds402Result& r) {
         if (!self) return;
@@ -149,9 +161,11 @@ bool Ds402Wizard::chooseMode(int8_t mode, QString* why) {
         if (r.ok) {
             self->showDriveMode(r.mode);
             self->mode_->showVerified(r.mode);
-            self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.").arg(coreText(canopen::ds402::modeName(r.mode))));
+            self->setMessage(tr("Mode set and verified: the drive shows %1 in 6061h.")
+                                 .arg(coreText(canopen::ds402::modeName(r.mode))));
         } else {
-            self->setMessage(tr("Could not set %1: %2").arg(coreText(canopen::ds402::modeName(mode)), coreText(r.error)), true);
+            self->setMessage(
+                tr("Could not set %1: %2").arg(coreText(canopen::ds402::modeName(mode)), coreText(r.error)), true);
         }
         self->updateButtons();
         emit self->modeFinished(r.ok);
@@ -195,9 +209,12 @@ bool Ds402Wizard::armTestMove(QString* why) {
                    tr("Test move not armed: the mode of operation stays %1."), why))
         return false;
     const QString what = move_->describe(m);
-    if (!confirm(tr("Test move"), tr("While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.\n"
-                                     "Releasing the button stops it. Make sure the axis is free to move.\n\nArm the test move?")
-                                      .arg(node_).arg(what).arg(m.maxDurationMs))) {
+    if (!confirm(tr("Test move"),
+                 tr("While you hold “Hold to run”, the motor of node %1 will %2, for at most %3 ms.\n"
+                    "Releasing the button stops it. Make sure the axis is free to move.\n\nArm the test move?")
+                     .arg(node_)
+                     .arg(what)
+                     .arg(m.maxDurationMs))) {
         if (why) *why = tr("Test move not armed.");
         return false;
     }
@@ -211,9 +228,12 @@ void Ds402Wizard::arm(const Ds402TestMove& m, int8_t driveMode) {
     armedKind_ = Armed::TestMove;
     armedMode_ = m.kind == Ds402TestMove::Kind::Jog ? 3 : 1;
     armedFromMode_ = driveMode;
-    setMessage(armedMode_ == driveMode ? tr("Test move armed: hold the “Hold to run” button to move, release it to stop.")
-                                       : tr("Test move armed: holding the “Hold to run” button first switches the mode of operation to %1, then moves; "
-                                            "release it to stop.").arg(coreText(canopen::ds402::modeName(armedMode_))));
+    setMessage(armedMode_ == driveMode
+                   ? tr("Test move armed: hold the “Hold to run” button to move, release it to stop.")
+                   : tr("Test move armed: holding the “Hold to run” button first switches the mode of operation to %1, "
+                        "then moves; "
+                        "release it to stop.")
+                         .arg(coreText(canopen::ds402::modeName(armedMode_))));
     updateButtons();
 }
 
@@ -221,8 +241,9 @@ void Ds402Wizard::disarm(const QString& why) {
     if (!armed_) return;
     armed_ = false;
     spdlog::info("ds402 wizard: test move of node {} no longer armed ({})", node_, why.toStdString());
-    setMessage(armedKind_ == Armed::TestMove ? tr("The test move is no longer armed (%1): arm it again to move.").arg(why)
-                                             : tr("The position move is no longer armed (%1): arm it again to move.").arg(why));
+    setMessage(armedKind_ == Armed::TestMove
+                   ? tr("The test move is no longer armed (%1): arm it again to move.").arg(why)
+                   : tr("The position move is no longer armed (%1): arm it again to move.").arg(why));
     updateButtons();
 }
 
@@ -255,7 +276,9 @@ bool Ds402Wizard::pressHoldToRun(QString* why) {
             if (!self) return;
             self->feed_->stop();
             self->holding_ = false;
-            if (r.ok) self->setMessage(tr("Test move stopped: %1. The drive stays enabled; press Disable when done.").arg(r.stopReason));
+            if (r.ok)
+                self->setMessage(
+                    tr("Test move stopped: %1. The drive stays enabled; press Disable when done.").arg(r.stopReason));
             else {
                 self->disarm(tr("the test move failed"));
                 self->setMessage(tr("Test move failed: %1").arg(coreText(r.error)), true);
@@ -291,7 +314,8 @@ void Ds402Wizard::quickStop() {
     disarm(tr("Quick stop"));
     sentCommands_ = true;
     setMessage(tr("Quick stop: sending 6040h = 0002h…"));
-    if (ctl_->motionActive()) return ctl_->stopMotion(true, tr("Quick stop"));  // homing or a position move: its end is shown
+    if (ctl_->motionActive())
+        return ctl_->stopMotion(true, tr("Quick stop"));  // homing or a position move: its end is shown
     QPointer<Ds402Wizard> self(this);
     ctl_->quickStop([self](const Ds402Result& r) {
         if (self) self->showStopped(r, tr("Quick stop done: the drive is in %1."), tr("Quick stop"));
@@ -328,10 +352,12 @@ void Ds402Wizard::showStopped(const Ds402Result& r, const QString& doneText, con
 canopen::CommandScript Ds402Wizard::dryRun() {
     std::optional<int8_t> mode = mode_->chosen();
     if (mode == mode_->driveMode()) mode.reset();
-    canopen::CommandScript script = canopen::Ds402Controller::enableScript(static_cast<uint8_t>(std::max(node_, 1)), 0, state_, mode);
+    canopen::CommandScript script =
+        canopen::Ds402Controller::enableScript(static_cast<uint8_t>(std::max(node_, 1)), 0, state_, mode);
     tabs_->showDryRun(script);
-    setMessage(tr("Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them for coscope-cli script run.", nullptr,
-                  int(script.steps.size()))
+    setMessage(tr("Dry run: %n step(s) the enable would send from %1 — nothing was sent. “Save as script…” keeps them "
+                  "for coscope-cli script run.",
+                  nullptr, int(script.steps.size()))
                    .arg(coreText(canopen::ds402::stateName(state_))));
     return script;
 }
@@ -339,8 +365,8 @@ canopen::CommandScript Ds402Wizard::dryRun() {
 bool Ds402Wizard::safeDisable(const QString& why) {
     if (!ctlSdo_ || ctlSdo_ != workspace_->sdo() || !workspace_->canTransmit() || node_ <= 0 || !cia402_) return false;
     const bool moving = ctl_ && (ctl_->testMoveActive() || ctl_->motionActive());
-    const bool powered = state_ == State::OperationEnabled || state_ == State::SwitchedOn || state_ == State::QuickStopActive ||
-                         (sentCommands_ && state_ == State::ReadyToSwitchOn);
+    const bool powered = state_ == State::OperationEnabled || state_ == State::SwitchedOn ||
+                         state_ == State::QuickStopActive || (sentCommands_ && state_ == State::ReadyToSwitchOn);
     if (!moving && !powered) return false;
     spdlog::info("ds402 wizard: disabling node {} ({})", node_, why.toStdString());
     const auto n = static_cast<uint8_t>(node_);

@@ -12,8 +12,8 @@
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/ds402/Ds402FaultText.h"
 #include "app/gui/wizards/ds402/Ds402FramesTabs.h"
-#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402ModeBox.h"
+#include "app/gui/wizards/ds402/Ds402PositionMoveBox.h"
 #include "app/gui/wizards/ds402/Ds402StateDiagram.h"
 #include "app/gui/wizards/ds402/Ds402StatusPanel.h"
 #include "app/gui/wizards/ds402/Ds402StepBar.h"
@@ -76,14 +76,15 @@ void Ds402Wizard::findFirstDrive(int attempt) {
             });
             return;
         }
-        self->workspace_->sdo()->upload(static_cast<uint8_t>(ids[i]), 0x1000, 0, [self, ids, ask, i](const SdoResult& r) {
-            if (!self || self->node_ > 0 || !*ask) return;
-            if (r.ok && (le32(r.data) & 0xFFFF) == kCia402) {
-                *ask = nullptr;
-                return self->selectNode(ids[i]);
-            }
-            (*ask)(i + 1);
-        });
+        self->workspace_->sdo()->upload(static_cast<uint8_t>(ids[i]), 0x1000, 0,
+                                        [self, ids, ask, i](const SdoResult& r) {
+                                            if (!self || self->node_ > 0 || !*ask) return;
+                                            if (r.ok && (le32(r.data) & 0xFFFF) == kCia402) {
+                                                *ask = nullptr;
+                                                return self->selectNode(ids[i]);
+                                            }
+                                            (*ask)(i + 1);
+                                        });
     };
     (*ask)(0);
 }
@@ -113,7 +114,9 @@ void Ds402Wizard::selectNode(int node) {
     // The node list of the combo: every node seen, this one selected.
     nodeCombo_->clear();
     for (const canopen::NodeInfo& n : workspace_->nodes().snapshot())
-        nodeCombo_->addItem(n.dictionary.isEmpty() ? tr("Node %1").arg(n.node) : tr("Node %1 — %2").arg(n.node).arg(n.dictionary), n.node);
+        nodeCombo_->addItem(
+            n.dictionary.isEmpty() ? tr("Node %1").arg(n.node) : tr("Node %1 — %2").arg(n.node).arg(n.dictionary),
+            n.node);
     if (nodeCombo_->findData(node) < 0) nodeCombo_->addItem(tr("Node %1").arg(node), node);
     nodeCombo_->setCurrentIndex(nodeCombo_->findData(node));
     tabs_->frames()->setNode(node);
@@ -153,7 +156,8 @@ void Ds402Wizard::startReading() {
     move_->setUnits(Ds402Units::forDictionary(dictionary_));
     setUpMotionPages();
     const auto notes = ds402VendorNotes(dictionary_);
-    vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped()) : QString());
+    vendor_->setText(notes ? QStringLiteral("<b>%1:</b> %2").arg(notes->vendor, notes->before.toHtmlEscaped())
+                           : QString());
     if (notes && notes->notCia402) {
         cia402_ = false;
         setMessage(tr("Node %1 is a %2: %3").arg(node_).arg(notes->vendor, notes->before), true);
@@ -192,12 +196,18 @@ void Ds402Wizard::stopOnBusLoss() {
     const bool moving = ctl_ && (ctl_->testMoveActive() || ctl_->motionActive());
     const bool mayBeEnabled = moving || state_ == State::OperationEnabled || state_ == State::SwitchedOn ||
                               state_ == State::QuickStopActive || state_ == State::FaultReactionActive || sentCommands_;
-    const QString last = state_ == State::Unknown ? tr("CiA 402 state unknown")
-                                                  : tr("%1 (statusword %2h)").arg(coreText(canopen::ds402::stateName(state_)), QString::number(statusword_, 16).rightJustified(4, u'0').toUpper());
-    const QString text = BusLossAdvice::driveMessage(workspace_->bus() ? workspace_->bus()->errorString() : QString(), node_,
-                                                     BusLossAdvice::lastNmtState(workspace_->nodes(), node_), last, mayBeEnabled);
+    const QString last = state_ == State::Unknown
+                             ? tr("CiA 402 state unknown")
+                             : tr("%1 (statusword %2h)")
+                                   .arg(coreText(canopen::ds402::stateName(state_)),
+                                        QString::number(statusword_, 16).rightJustified(4, u'0').toUpper());
+    const QString text =
+        BusLossAdvice::driveMessage(workspace_->bus() ? workspace_->bus()->errorString() : QString(), node_,
+                                    BusLossAdvice::lastNmtState(workspace_->nodes(), node_), last, mayBeEnabled);
     stoppedByLoss_ = true;
-    spdlog::warn("ds402 wizard: bus lost with node {} last in {} (statusword {:04X}h){}", node_, canopen::ds402::stateName(state_).toStdString(), statusword_, mayBeEnabled ? ", may still be enabled" : "");
+    spdlog::warn("ds402 wizard: bus lost with node {} last in {} (statusword {:04X}h){}", node_,
+                 canopen::ds402::stateName(state_).toStdString(), statusword_,
+                 mayBeEnabled ? ", may still be enabled" : "");
     dropController(text);
 }
 
@@ -274,13 +284,20 @@ void Ds402Wizard::refresh() {
 
 void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
     if (!r.ok) {
-        if (r.error.contains(QStringLiteral("06020000")) || r.error.contains(QStringLiteral("does not exist"), Qt::CaseInsensitive)) {
+        if (r.error.contains(QStringLiteral("06020000")) ||
+            r.error.contains(QStringLiteral("does not exist"), Qt::CaseInsensitive)) {
             cia402_ = false;
             poll_->stop();
-            setMessage(tr("Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).").arg(node_).arg(coreText(r.error)), true);
+            setMessage(tr("Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).")
+                           .arg(node_)
+                           .arg(coreText(r.error)),
+                       true);
             setProperty("screenshotReady", true);
         } else {
-            setMessage(tr("Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.").arg(coreText(r.error)), true);
+            setMessage(
+                tr("Cannot read the drive's state: %1. Check that the drive is powered and connected, and its node-ID.")
+                    .arg(coreText(r.error)),
+                true);
         }
         return then();
     }
@@ -303,7 +320,8 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
                 const uint16_t code = e.ok ? static_cast<uint16_t>(le32(e.data)) : 0;
                 self->readObject(0x1003, 1, [self, then, code, e](const SdoResult& h) {
                     const Ds402Fault f = describeDs402Fault(self->dictionary_, code, h.ok ? le32(h.data) : 0);
-                    self->faultText_ = e.ok ? f.text() : tr("Error code 603Fh could not be read: %1").arg(coreText(e.error));
+                    self->faultText_ =
+                        e.ok ? f.text() : tr("Error code 603Fh could not be read: %1").arg(coreText(e.error));
                     self->status_->setFaultText(self->faultText_);
                     self->setProperty("screenshotReady", true);
                     then();
@@ -317,22 +335,26 @@ void Ds402Wizard::afterState(const Ds402Result& r, std::function<void()> then) {
             // Vendor pre-condition: the control-mode parameter (Delta P1-01, AIMOTOR H02-00).
             const auto notes = ds402VendorNotes(self->dictionary_);
             if (!notes || !notes->controlIndex) return afterModes();
-            self->readObject(notes->controlIndex, notes->controlSub, [self, afterModes, n = *notes](const SdoResult& c) {
-                if (c.ok && static_cast<int64_t>(le32(c.data)) != n.controlValue)
-                    self->controlWarning_ = tr("%1 is %2, not %3: the drive is not in CANopen control and will ignore the controlword. Set %1 = %3 first.")
-                                                .arg(n.controlName)
-                                                .arg(le32(c.data))
-                                                .arg(n.controlValue);
-                if (!self->controlWarning_.isEmpty()) self->setMessage(self->controlWarning_, true);
-                afterModes();
-            });
+            self->readObject(notes->controlIndex, notes->controlSub,
+                             [self, afterModes, n = *notes](const SdoResult& c) {
+                                 if (c.ok && static_cast<int64_t>(le32(c.data)) != n.controlValue)
+                                     self->controlWarning_ = tr("%1 is %2, not %3: the drive is not in CANopen control "
+                                                                "and will ignore the controlword. Set %1 = %3 first.")
+                                                                 .arg(n.controlName)
+                                                                 .arg(le32(c.data))
+                                                                 .arg(n.controlValue);
+                                 if (!self->controlWarning_.isEmpty()) self->setMessage(self->controlWarning_, true);
+                                 afterModes();
+                             });
         });
     });
 }
 
 void Ds402Wizard::showState(State s, uint16_t swd) {
     // Out of Operation enabled (stopped, disabled, faulted): whatever comes back, the arming is over.
-    if (s != State::OperationEnabled) disarm(s == State::Fault || s == State::FaultReactionActive ? tr("the drive faulted") : tr("the drive left Operation enabled"));
+    if (s != State::OperationEnabled)
+        disarm(s == State::Fault || s == State::FaultReactionActive ? tr("the drive faulted")
+                                                                    : tr("the drive left Operation enabled"));
     statusword_ = swd;
     if (s != state_ || visited_.isEmpty()) visited_ << s;
     state_ = s;

@@ -52,9 +52,12 @@ QLabel* wrapped(QWidget* parent, const QString& text = {}) {
 NodeIdFindPage::NodeIdFindPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard_(wizard) {
     setTitle(tr("Find the device"));
     setSubTitle(tr("Pick the drive whose node-ID or baud rate (bit rate) you want to change."));
-    auto* intro = wrapped(this, tr("These are the devices CoScope has seen on the bus. <b>Scan</b> asks every node-ID 1-127 for its device type "
-                                   "and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: "
-                                   "<b>Find device without node-ID</b> finds it with LSS Fastscan (CiA 305)."));
+    auto* intro = wrapped(
+        this,
+        tr("These are the devices CoScope has seen on the bus. <b>Scan</b> asks every node-ID 1-127 for its device "
+           "type "
+           "and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: "
+           "<b>Find device without node-ID</b> finds it with LSS Fastscan (CiA 305)."));
     refusal_ = wrapped(this);
     refusal_->setObjectName(QStringLiteral("refusal"));
     refusal_->setStyleSheet(QStringLiteral("color:#a40000;font-weight:bold"));
@@ -91,7 +94,8 @@ NodeIdFindPage::NodeIdFindPage(NodeIdWizard* wizard) : QWizardPage(wizard), wiza
         wizard_->findUnconfigured();
     });
     connect(wizard_, &NodeIdWizard::scanFinished, this, [this] {
-        status_->setText(tr("Scan finished: %n device(s) known.", nullptr, static_cast<int>(wizard_->knownNodes().size())));
+        status_->setText(
+            tr("Scan finished: %n device(s) known.", nullptr, static_cast<int>(wizard_->knownNodes().size())));
         shownRevision_ = ~uint64_t(0);
         refresh();
     });
@@ -157,7 +161,8 @@ void NodeIdFindPage::refresh() {
             auto* id = new QTableWidgetItem(QString::number(n.node));
             id->setData(Qt::UserRole, n.node);
             table_->setItem(i, 0, id);
-            table_->setItem(i, 1, new QTableWidgetItem(n.dictionary.isEmpty() ? tr("(not identified — scan)") : n.dictionary));
+            table_->setItem(
+                i, 1, new QTableWidgetItem(n.dictionary.isEmpty() ? tr("(not identified — scan)") : n.dictionary));
             table_->setItem(i, 2, new QTableWidgetItem(stateText(n.nmtState)));
         }
     }
@@ -166,8 +171,10 @@ void NodeIdFindPage::refresh() {
         return;
     }
     // The device type became known (identified by a scan) after the node was chosen.
-    if (wizard_->node() != 0 && wizard_->node() != 0xFF && wizard_->dictionary().isEmpty() && !dictionaryChosen_ && !wizard_->isRunning())
-        if (const auto info = wizard_->workspace()->nodes().node(wizard_->node()); info && !info->dictionary.isEmpty()) {
+    if (wizard_->node() != 0 && wizard_->node() != 0xFF && wizard_->dictionary().isEmpty() && !dictionaryChosen_ &&
+        !wizard_->isRunning())
+        if (const auto info = wizard_->workspace()->nodes().node(wizard_->node());
+            info && !info->dictionary.isEmpty()) {
             wizard_->selectNode(wizard_->node());
             return;
         }
@@ -180,7 +187,11 @@ void NodeIdFindPage::refresh() {
     dictionary_->setCurrentIndex(idx < 0 ? 0 : idx);
     dictionary_->setEnabled(wizard_->node() != 0 && wizard_->node() != 0xFF);
     if (wizard_->node() == 0xFF) target_->setText(tr("Target: the device without node-ID found by LSS Fastscan."));
-    else if (wizard_->node() != 0) target_->setText(tr("Target: node %1%2.").arg(wizard_->node()).arg(wizard_->dictionary().isEmpty() ? QString() : QStringLiteral(" (%1)").arg(wizard_->dictionary())));
+    else if (wizard_->node() != 0)
+        target_->setText(
+            tr("Target: node %1%2.")
+                .arg(wizard_->node())
+                .arg(wizard_->dictionary().isEmpty() ? QString() : QStringLiteral(" (%1)").arg(wizard_->dictionary())));
     else target_->setText(tr("No device chosen yet."));
     emit completeChanged();
 }
@@ -202,7 +213,8 @@ NodeIdChangePage::NodeIdChangePage(NodeIdWizard* wizard) : QWizardPage(wizard), 
     newId_->setRange(1, 127);
     newRate_ = new QComboBox(this);
     newRate_->setObjectName(QStringLiteral("newBitRate"));
-    for (int rate : {1000000, 800000, 750000, 500000, 250000, 125000, 100000, 50000, 20000, 10000}) newRate_->addItem(canopen::bitRateText(rate), rate);
+    for (int rate : {1000000, 800000, 750000, 500000, 250000, 125000, 100000, 50000, 20000, 10000})
+        newRate_->addItem(canopen::bitRateText(rate), rate);
     viaLss_ = new QRadioButton(tr("LSS (layer setting services, CiA 305) — works for any LSS-capable device"), this);
     viaLss_->setObjectName(QStringLiteral("viaLss"));
     viaVendor_ = new QRadioButton(this);
@@ -279,19 +291,26 @@ void NodeIdChangePage::refresh() {
     updating_ = true;
     const auto& r = wizard_->request();
     const bool unconfigured = wizard_->node() == 0xFF;
-    if (nodeId_->isChecked() != (r.change == NodeIdWizard::Change::NodeId)) nodeId_->setChecked(r.change == NodeIdWizard::Change::NodeId);
-    if (bitRate_->isChecked() != (r.change == NodeIdWizard::Change::BitRate)) bitRate_->setChecked(r.change == NodeIdWizard::Change::BitRate);
+    if (nodeId_->isChecked() != (r.change == NodeIdWizard::Change::NodeId))
+        nodeId_->setChecked(r.change == NodeIdWizard::Change::NodeId);
+    if (bitRate_->isChecked() != (r.change == NodeIdWizard::Change::BitRate))
+        bitRate_->setChecked(r.change == NodeIdWizard::Change::BitRate);
     bitRate_->setEnabled(!unconfigured);
     newId_->setEnabled(r.change == NodeIdWizard::Change::NodeId);
     if (r.newNodeId >= 1 && newId_->intValue() != r.newNodeId) newId_->setIntValue(r.newNodeId);
     newRate_->setEnabled(r.change == NodeIdWizard::Change::BitRate);
-    if (const int i = newRate_->findData(r.newBitRate); i >= 0 && i != newRate_->currentIndex()) newRate_->setCurrentIndex(i);
+    if (const int i = newRate_->findData(r.newBitRate); i >= 0 && i != newRate_->currentIndex())
+        newRate_->setCurrentIndex(i);
     const bool vendor = wizard_->vendorMethodAvailable();
     viaVendor_->setEnabled(vendor);
-    viaVendor_->setText(vendor ? tr("The drive's own parameter %1 over SDO — as its manual describes").arg(wizard_->vendorParameterName())
-                               : tr("The drive's own parameter — none documented for this device"));
-    if (viaLss_->isChecked() != (r.method == NodeIdWizard::Method::Lss)) viaLss_->setChecked(r.method == NodeIdWizard::Method::Lss);
-    if (viaVendor_->isChecked() != (r.method == NodeIdWizard::Method::Vendor)) viaVendor_->setChecked(r.method == NodeIdWizard::Method::Vendor);
+    viaVendor_->setText(
+        vendor
+            ? tr("The drive's own parameter %1 over SDO — as its manual describes").arg(wizard_->vendorParameterName())
+            : tr("The drive's own parameter — none documented for this device"));
+    if (viaLss_->isChecked() != (r.method == NodeIdWizard::Method::Lss))
+        viaLss_->setChecked(r.method == NodeIdWizard::Method::Lss);
+    if (viaVendor_->isChecked() != (r.method == NodeIdWizard::Method::Vendor))
+        viaVendor_->setChecked(r.method == NodeIdWizard::Method::Vendor);
     explanation_->setText(wizard_->explanation());
     const QString problem = wizard_->blockingProblem();
     problem_->setText(problem);
@@ -300,11 +319,15 @@ void NodeIdChangePage::refresh() {
     emit completeChanged();
 }
 
-bool NodeIdChangePage::isComplete() const { return wizard_->blockingProblem().isEmpty() && wizard_->sendRefusal().isEmpty(); }
+bool NodeIdChangePage::isComplete() const {
+    return wizard_->blockingProblem().isEmpty() && wizard_->sendRefusal().isEmpty();
+}
 
 // --- page 3 -------------------------------------------------------------------------------
 
-QString NodeIdRunPage::dryRunSubTitle() { return tr("Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why."); }
+QString NodeIdRunPage::dryRunSubTitle() {
+    return tr("Dry run: nothing has been sent yet. This is exactly what CoScope will send, and why.");
+}
 
 NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard_(wizard) {
     setTitle(tr("Check and change"));
@@ -320,7 +343,9 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
     connect(run_, &QPushButton::clicked, this, [this] {
         QString why;
         if (!wizard_->start(&why)) status_->setText(why);
-        else setSubTitle(tr("Sending: CoScope runs the sequence below; each step turns green when the device has answered."));
+        else
+            setSubTitle(
+                tr("Sending: CoScope runs the sequence below; each step turns green when the device has answered."));
         run_->setEnabled(false);
         emit completeChanged();
     });
@@ -328,7 +353,10 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
         run_->setEnabled(ok && wizard_->sendRefusal().isEmpty());
         if (ok) {
             intro_->setText(tr("Takes effect: %1").arg(wizard_->plan()->takesEffect));
-            status_->setText(wizard_->plan()->reconnect ? tr("CoScope will reconnect at %1 after the first part.").arg(canopen::bitRateText(wizard_->plan()->reconnectBitRate)) : QString());
+            status_->setText(wizard_->plan()->reconnect
+                                 ? tr("CoScope will reconnect at %1 after the first part.")
+                                       .arg(canopen::bitRateText(wizard_->plan()->reconnectBitRate))
+                                 : QString());
         } else {
             intro_->clear();
             status_->setText(tr("Cannot prepare the change: %1").arg(wizard_->planError()));
@@ -336,7 +364,8 @@ NodeIdRunPage::NodeIdRunPage(NodeIdWizard* wizard) : QWizardPage(wizard), wizard
     });
     connect(wizard_, &NodeIdWizard::progress, this, [this](const QString& text) { status_->setText(text); });
     connect(wizard_, &NodeIdWizard::finished, this, [this](bool ok) {
-        status_->setStyleSheet(ok ? QStringLiteral("color:#1d6b1d;font-weight:bold") : QStringLiteral("color:#a40000;font-weight:bold"));
+        status_->setStyleSheet(ok ? QStringLiteral("color:#1d6b1d;font-weight:bold")
+                                  : QStringLiteral("color:#a40000;font-weight:bold"));
         status_->setText(wizard_->outcomeText());
         setSubTitle(ok ? tr("Sent: the sequence below ran to the end. The device has its new setting.")
                        : tr("Stopped: the green steps below were sent, the red one failed, the rest was not sent."));

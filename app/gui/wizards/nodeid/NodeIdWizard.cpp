@@ -48,7 +48,8 @@ NodeIdWizard::NodeIdWizard(Workspace* workspace, int node, QWidget* parent) : QW
         const int node = request_.node;
         changer_.reset();
         changerFor_ = nullptr;
-        finish(false, BusLossAdvice::settingsMessage(reason, node, BusLossAdvice::lastNmtState(workspace_->nodes(), node)));
+        finish(false,
+               BusLossAdvice::settingsMessage(reason, node, BusLossAdvice::lastNmtState(workspace_->nodes(), node)));
     });
     frames_->markStart();
     movePaneTo(FindPageId);
@@ -77,8 +78,9 @@ QString NodeIdWizard::sendRefusal() const {
     if (!bus || !workspace_->sdo() || !workspace_->master())
         return tr("Not connected to a bus: this wizard talks to the devices, so connect first (File ▸ Connect).");
     if (bus->isListenOnly())
-        return tr("The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. "
-                  "Reconnect without listen-only to use it.");
+        return tr(
+            "The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. "
+            "Reconnect without listen-only to use it.");
     if (!workspace_->canTransmit()) return tr("The bus is not open (yet): wait for it to connect.");
     return {};
 }
@@ -98,7 +100,8 @@ void NodeIdWizard::dropServices() {
     fastscanLss_.reset();
     changerFor_ = nullptr;
     if (running_ && !reconnecting_)
-        finish(false, tr("The connection was closed while the change was running. Connect again and scan to see where the device is."));
+        finish(false, tr("The connection was closed while the change was running. Connect again and scan to see where "
+                         "the device is."));
 }
 
 std::vector<int> NodeIdWizard::knownNodes() const {
@@ -162,7 +165,11 @@ void NodeIdWizard::findUnconfigured() {
     fastscanLss_->fastscan([self](const canopen::LssResult& r) {
         if (!self) return;
         if (!r.ok) {
-            emit self->fastscanFinished(false, r.noSlave ? tr("No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.") : coreText(r.error));
+            emit self->fastscanFinished(
+                false,
+                r.noSlave
+                    ? tr("No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.")
+                    : coreText(r.error));
             return;
         }
         self->request_.node = 0xFF;
@@ -174,7 +181,8 @@ void NodeIdWizard::findUnconfigured() {
         self->plan_.reset();
         self->frames_->setNode(-1);
         emit self->targetChanged();
-        emit self->fastscanFinished(true, tr("Found a device without node-ID: vendor %1h, product %2h, serial %3h. It waits in LSS configuration state for its node-ID.")
+        emit self->fastscanFinished(true, tr("Found a device without node-ID: vendor %1h, product %2h, serial %3h. It "
+                                             "waits in LSS configuration state for its node-ID.")
                                               .arg(r.identity.vendorId, 8, 16, QChar(u'0'))
                                               .arg(r.identity.productCode, 8, 16, QChar(u'0'))
                                               .arg(r.identity.serial, 8, 16, QChar(u'0')));
@@ -183,7 +191,8 @@ void NodeIdWizard::findUnconfigured() {
 
 void NodeIdWizard::setChange(Change c) {
     request_.change = c;
-    if (c == Change::BitRate && request_.node != 0xFF && request_.newBitRate == 0) request_.newBitRate = busBitRate() == 250000 ? 500000 : 250000;
+    if (c == Change::BitRate && request_.node != 0xFF && request_.newBitRate == 0)
+        request_.newBitRate = busBitRate() == 250000 ? 500000 : 250000;
     plan_.reset();
     emit targetChanged();
 }
@@ -222,7 +231,12 @@ QString NodeIdWizard::vendorParameterName() const {
     if (!v) return {};
     const auto& o = request_.change == Change::NodeId ? v->nodeId : v->bitRate;
     if (!o) return {};
-    return QStringLiteral("%1 (%2h%3)").arg(o->parameter).arg(o->index, 4, 16, QChar(u'0')).arg(o->sub ? QStringLiteral(":%1").arg(o->sub, 2, 16, QChar(u'0')) : QString()).toUpper().replace(QStringLiteral("H"), QStringLiteral("h"));
+    return QStringLiteral("%1 (%2h%3)")
+        .arg(o->parameter)
+        .arg(o->index, 4, 16, QChar(u'0'))
+        .arg(o->sub ? QStringLiteral(":%1").arg(o->sub, 2, 16, QChar(u'0')) : QString())
+        .toUpper()
+        .replace(QStringLiteral("H"), QStringLiteral("h"));
 }
 
 QString NodeIdWizard::blockingProblem() const {
@@ -231,8 +245,11 @@ QString NodeIdWizard::blockingProblem() const {
         if (request_.newNodeId < 1) return tr("Choose the new node-ID.");
         if (request_.newNodeId == request_.node) return tr("The device already has node-ID %1.").arg(request_.node);
         const auto nodes = knownNodes();
-        if (request_.newNodeId != vacated_ && std::find(nodes.begin(), nodes.end(), int(request_.newNodeId)) != nodes.end())
-            return tr("Node-ID %1 is already used by another device on this bus: two devices with one node-ID break communication.").arg(request_.newNodeId);
+        if (request_.newNodeId != vacated_ &&
+            std::find(nodes.begin(), nodes.end(), int(request_.newNodeId)) != nodes.end())
+            return tr("Node-ID %1 is already used by another device on this bus: two devices with one node-ID break "
+                      "communication.")
+                .arg(request_.newNodeId);
     } else if (request_.newBitRate <= 0 || request_.newBitRate == busBitRate()) {
         return tr("Choose a bit rate other than the one the bus runs at now (%1).").arg(bitRateText(busBitRate()));
     }
@@ -251,28 +268,36 @@ QString NodeIdWizard::explanation() const {
     QStringList parts;
     const QString who = request_.node == 0xFF ? tr("the device without node-ID") : tr("node %1").arg(request_.node);
     if (request_.method == Method::Lss)
-        parts << tr("<b>How:</b> LSS (layer setting services, CiA 305) picks %1 by its identity (1018h) and gives it the new setting; "
-                    "the device stores it itself.").arg(who);
+        parts << tr("<b>How:</b> LSS (layer setting services, CiA 305) picks %1 by its identity (1018h) and gives it "
+                    "the new setting; "
+                    "the device stores it itself.")
+                     .arg(who);
     else
-        parts << tr("<b>How:</b> CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).").arg(vendorParameterName());
+        parts << tr("<b>How:</b> CoScope writes the drive's own parameter %1 over SDO (the way its manual describes).")
+                     .arg(vendorParameterName());
     if (p) {
         QString when = coreText(p->takesEffect);
         while (when.endsWith(u'.')) when.chop(1);  // the sentence gets its own full stop
         parts << tr("<b>Takes effect:</b> %1.").arg(when.toHtmlEscaped());
     }
-    if (const auto v = canopen::vendorNodeSettings(request_.dictionary)) parts << tr("<b>About this drive:</b> %1").arg(coreText(v->note).toHtmlEscaped());
+    if (const auto v = canopen::vendorNodeSettings(request_.dictionary))
+        parts << tr("<b>About this drive:</b> %1").arg(coreText(v->note).toHtmlEscaped());
     if (request_.change == Change::BitRate) {
         QStringList others;
         for (int n : knownNodes())
             if (n != request_.node) others << QString::number(n);
-        parts << tr("<b style='color:#a40000'>Every other node on this bus</b> (%1) stays at %2. After the change, %3 only talks at %4: "
-                    "the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.")
-                     .arg(others.isEmpty() ? tr("none seen") : tr("nodes %1").arg(others.join(QStringLiteral(", "))), bitRateText(busBitRate()), who,
+        parts << tr("<b style='color:#a40000'>Every other node on this bus</b> (%1) stays at %2. After the change, %3 "
+                    "only talks at %4: "
+                    "the others cannot reach it until they are changed too. Change them all, one after another, then "
+                    "the bus runs at %4.")
+                     .arg(others.isEmpty() ? tr("none seen") : tr("nodes %1").arg(others.join(QStringLiteral(", "))),
+                          bitRateText(busBitRate()), who,
                           bitRateText(request_.newBitRate > 0 ? request_.newBitRate : busBitRate()));
         parts << tr("CoScope reconnects at the new bit rate by itself and waits for %1 there.").arg(who);
     }
     if (p) parts << tr("<b>If it does not come back:</b> %1").arg(coreText(p->recovery).toHtmlEscaped());
-    else if (!error.isEmpty()) parts << tr("<b style='color:#a40000'>Cannot do this:</b> %1").arg(coreText(error).toHtmlEscaped());
+    else if (!error.isEmpty())
+        parts << tr("<b style='color:#a40000'>Cannot do this:</b> %1").arg(coreText(error).toHtmlEscaped());
     return parts.join(QStringLiteral("<br>"));
 }
 
@@ -283,7 +308,8 @@ void NodeIdWizard::prepareDryRun() {
     canopen::NodeSettingsRequest r = request_;
     r.bitRate = busBitRate();
     r.waitMs = request_.method == Method::Vendor ? 15000 : 5000;  // a power cycle by hand takes a while
-    const bool needsReads = (r.method == Method::Lss && r.node != 0xFF && !identityKnown_) || (r.method == Method::Vendor && r.change == Change::BitRate);
+    const bool needsReads = (r.method == Method::Lss && r.node != 0xFF && !identityKnown_) ||
+                            (r.method == Method::Vendor && r.change == Change::BitRate);
     auto take = [this, gen](std::optional<canopen::NodeSettingsPlan> p, const QString& error) {
         if (gen != dryRunGeneration_) return;
         plan_ = std::move(p);
@@ -330,25 +356,31 @@ void NodeIdWizard::runPart(int part) {
     const int offset = part == 0 ? 0 : static_cast<int>(plan_->beforeReconnect.steps.size()) + 1;
     QPointer<NodeIdWizard> self(this);
     c->run(
-        *plan_, part, [self, offset](int step) { if (self) self->preview()->markRunning(offset + step); },
+        *plan_, part,
+        [self, offset](int step) {
+            if (self) self->preview()->markRunning(offset + step);
+        },
         [self, offset](int step, bool ok, const QString& detail) {
             if (self) self->preview()->markStep(offset + step, ok, detail);
         },
         [self, part](const canopen::NodeSettingsOutcome& out) {
             if (!self) return;
             if (!out.ok) {
-                QString text = tr("Stopped at %1.\nThe device answered: %2\nWhat to check: %3").arg(coreText(out.step), coreText(out.answer), coreText(out.advice));
+                QString text = tr("Stopped at %1.\nThe device answered: %2\nWhat to check: %3")
+                                   .arg(coreText(out.step), coreText(out.answer), coreText(out.advice));
                 if (!out.restored.isEmpty()) text += QStringLiteral("\n") + coreText(out.restored);
                 return self->finish(false, text);
             }
             if (part == 0 && self->plan_->reconnect) return self->reconnect();
             const auto& r = self->plan_->request;
             if (r.change == Change::NodeId)
-                self->finish(true, tr("Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).")
-                                       .arg(r.node == 0xFF ? tr("without node-ID") : tr("node %1").arg(r.node))
-                                       .arg(r.newNodeId));
+                self->finish(true,
+                             tr("Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).")
+                                 .arg(r.node == 0xFF ? tr("without node-ID") : tr("node %1").arg(r.node))
+                                 .arg(r.newNodeId));
             else
-                self->finish(true, tr("Done: node %1 now runs at %2 and CoScope is connected at %2. Nodes still at %3 cannot be reached at this rate: "
+                self->finish(true, tr("Done: node %1 now runs at %2 and CoScope is connected at %2. Nodes still at %3 "
+                                      "cannot be reached at this rate: "
                                       "change them too, or reconnect at %3.")
                                        .arg(r.node)
                                        .arg(bitRateText(r.newBitRate), bitRateText(r.bitRate)));
@@ -369,7 +401,9 @@ void NodeIdWizard::reconnect() {
     QString error;
     if (!workspace_->connectBus(url, &error)) {
         reconnecting_ = false;
-        return finish(false, tr("Could not reconnect at %1: %2\n%3").arg(bitRateText(plan_->reconnectBitRate), error, plan_->recovery));
+        return finish(
+            false,
+            tr("Could not reconnect at %1: %2\n%3").arg(bitRateText(plan_->reconnectBitRate), error, plan_->recovery));
     }
     auto* timer = new QTimer(this);
     auto waited = std::make_shared<int>(0);
@@ -379,12 +413,14 @@ void NodeIdWizard::reconnect() {
         if (workspace_->canTransmit()) {
             timer->deleteLater();
             reconnecting_ = false;
-            preview()->markStep(static_cast<int>(plan_->beforeReconnect.steps.size()), true, tr("connected at %1").arg(bitRateText(plan_->reconnectBitRate)));
+            preview()->markStep(static_cast<int>(plan_->beforeReconnect.steps.size()), true,
+                                tr("connected at %1").arg(bitRateText(plan_->reconnectBitRate)));
             runPart(1);
         } else if (*waited > 10000) {
             timer->deleteLater();
             reconnecting_ = false;
-            finish(false, tr("The bus did not open at %1.\n%2").arg(bitRateText(plan_->reconnectBitRate), plan_->recovery));
+            finish(false,
+                   tr("The bus did not open at %1.\n%2").arg(bitRateText(plan_->reconnectBitRate), plan_->recovery));
         }
     });
     timer->start();
@@ -417,7 +453,8 @@ void NodeIdWizard::finish(bool ok, const QString& text) {
     outcome_ = ok ? Outcome::Succeeded : Outcome::Failed;
     outcomeText_ = text;
     if (ok && plan_) {
-        followChange(plan_->request.change == Change::NodeId ? plan_->request.node : plan_->finalNodeId, plan_->finalNodeId);
+        followChange(plan_->request.change == Change::NodeId ? plan_->request.node : plan_->finalNodeId,
+                     plan_->finalNodeId);
         if (plan_->request.change == Change::NodeId) {
             request_.node = plan_->finalNodeId;
             plan_->request.node = plan_->finalNodeId;

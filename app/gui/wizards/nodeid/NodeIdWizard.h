@@ -47,11 +47,11 @@ public:
     QString sendRefusal() const;
 
     // --- the device
-    void selectNode(int node);  // a configured node (identity and dictionary from the node table)
+    void selectNode(int node);                  // a configured node (identity and dictionary from the node table)
     int node() const { return request_.node; }  // 0 none, 255 = the unconfigured device from Fastscan
-    void scan();                // SDO scan of nodes 1..127 (identifies them)
+    void scan();                                // SDO scan of nodes 1..127 (identifies them)
     bool isScanning() const;
-    void findUnconfigured();    // LSS Fastscan: the device stays in LSS configuration state
+    void findUnconfigured();  // LSS Fastscan: the device stays in LSS configuration state
     QString dictionary() const { return request_.dictionary; }
     void setDictionary(const QString& name);
     std::vector<int> knownNodes() const;  // nodes in the node table, ascending

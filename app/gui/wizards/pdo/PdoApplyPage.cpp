@@ -15,8 +15,9 @@ namespace coscope::gui {
 
 PdoApplyPage::PdoApplyPage(PdoWizard* wizard) : wizard_(wizard) {
     setTitle(tr("Check and apply"));
-    setSubTitle(tr("This is exactly what will be sent, step by step (dry run: nothing has been sent yet). "
-                   "If the drive refuses a step, the wizard stops, tells you why and writes the old settings back."));
+    setSubTitle(
+        tr("This is exactly what will be sent, step by step (dry run: nothing has been sent yet). "
+           "If the drive refuses a step, the wizard stops, tells you why and writes the old settings back."));
     preview_ = new ScriptPreview(this);
     preview_->setObjectName(QStringLiteral("pdoPreview"));
     store_ = new QCheckBox(tr("Keep after power-off: store the drive's parameters (1010h:01 = \"save\")"), this);
@@ -66,8 +67,9 @@ PdoApplyPage::PdoApplyPage(PdoWizard* wizard) : wizard_(wizard) {
 
 void PdoApplyPage::initializePage() {
     store_->setEnabled(wizard_->canStore());
-    store_->setToolTip(wizard_->canStore() ? tr("Without this the new mapping is lost when the drive is switched off or reset")
-                                           : tr("This drive's dictionary has no 1010h (store parameters)"));
+    store_->setToolTip(wizard_->canStore()
+                           ? tr("Without this the new mapping is lost when the drive is switched off or reset")
+                           : tr("This drive's dictionary has no 1010h (store parameters)"));
     if (!wizard_->canStore()) wizard_->setStoreAfterApply(false);
     syncOptions();
     showOutcome();
@@ -96,8 +98,14 @@ void PdoApplyPage::showOutcome() {
     QString html;
     switch (wizard_->outcome()) {
     case PdoWizard::Outcome::None: break;
-    case PdoWizard::Outcome::Succeeded: html = QStringLiteral("<span style='color:#1b5e20'><b>%1</b></span>").arg(wizard_->outcomeText().toHtmlEscaped()); break;
-    case PdoWizard::Outcome::Failed: html = QStringLiteral("<span style='color:#b00020'>%1</span>").arg(wizard_->outcomeText().toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"))); break;
+    case PdoWizard::Outcome::Succeeded:
+        html =
+            QStringLiteral("<span style='color:#1b5e20'><b>%1</b></span>").arg(wizard_->outcomeText().toHtmlEscaped());
+        break;
+    case PdoWizard::Outcome::Failed:
+        html = QStringLiteral("<span style='color:#b00020'>%1</span>")
+                   .arg(wizard_->outcomeText().toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>")));
+        break;
     }
     result_->setText(html);
 }

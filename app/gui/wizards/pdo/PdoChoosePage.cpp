@@ -19,8 +19,10 @@ namespace coscope::gui {
 
 PdoChoosePage::PdoChoosePage(PdoWizard* wizard) : wizard_(wizard) {
     setTitle(tr("Which drive and which message"));
-    setSubTitle(tr("A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. "
-                   "The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, e.g. commands)."));
+    setSubTitle(
+        tr("A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. "
+           "The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, "
+           "e.g. commands)."));
     nodeBox_ = new QComboBox(this);
     nodeBox_->setObjectName(QStringLiteral("pdoNode"));
     pdoBox_ = new QComboBox(this);
@@ -28,7 +30,8 @@ PdoChoosePage::PdoChoosePage(PdoWizard* wizard) : wizard_(wizard) {
     for (int t = 1; t >= 0; --t)
         for (int n = 1; n <= 4; ++n) {
             const canopen::PdoId id{t == 1, n};
-            pdoBox_->addItem(t ? tr("%1 — the drive sends (transmit PDO %2)").arg(id.name()).arg(n) : tr("%1 — the drive receives (receive PDO %2)").arg(id.name()).arg(n),
+            pdoBox_->addItem(t ? tr("%1 — the drive sends (transmit PDO %2)").arg(id.name()).arg(n)
+                               : tr("%1 — the drive receives (receive PDO %2)").arg(id.name()).arg(n),
                              (t ? 0 : 4) + n - 1);
         }
     status_ = new QLabel(this);
@@ -82,9 +85,12 @@ void PdoChoosePage::refreshNodes() {
     QStringList labels;
     QList<int> ids;
     for (const canopen::NodeInfo& n : nodes) {
-        labels << (n.dictionary.isEmpty() ? tr("Node %1 (no dictionary)").arg(n.node)
-                                          : tr("Node %1 — %2%3").arg(n.node).arg(n.deviceName.isEmpty() ? n.dictionary : n.deviceName,
-                                                                                 n.deviceName.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.dictionary)));
+        labels << (n.dictionary.isEmpty()
+                       ? tr("Node %1 (no dictionary)").arg(n.node)
+                       : tr("Node %1 — %2%3")
+                             .arg(n.node)
+                             .arg(n.deviceName.isEmpty() ? n.dictionary : n.deviceName,
+                                  n.deviceName.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(n.dictionary)));
         ids << n.node;
     }
     if (selected > 0 && !ids.contains(selected)) {  // asked for a node the table does not list (yet)
@@ -102,7 +108,8 @@ void PdoChoosePage::refreshNodes() {
     }
     // The node's dictionary became known (scan finished): take it.
     for (const canopen::NodeInfo& n : nodes)
-        if (n.node == selected && !n.dictionary.isEmpty() && n.dictionary != wizard_->state().dictionaryName && !wizard_->isApplying() && !wizard_->isReading()) {
+        if (n.node == selected && !n.dictionary.isEmpty() && n.dictionary != wizard_->state().dictionaryName &&
+            !wizard_->isApplying() && !wizard_->isReading()) {
             wizard_->selectTarget(n.node, wizard_->state().pdo);
             return;
         }
@@ -122,7 +129,9 @@ void PdoChoosePage::onSelectionChanged() {
     const int p = pdoBox_->currentData().toInt();
     if (node <= 0) return;
     const canopen::PdoId pdo{p < 4, p % 4 + 1};
-    if (node == wizard_->state().node && pdo.transmit == wizard_->state().pdo.transmit && pdo.number == wizard_->state().pdo.number) return;
+    if (node == wizard_->state().node && pdo.transmit == wizard_->state().pdo.transmit &&
+        pdo.number == wizard_->state().pdo.number)
+        return;
     wizard_->stopAutoPick();
     wizard_->selectTarget(node, pdo);
 }
@@ -143,16 +152,23 @@ void PdoChoosePage::showTarget() {
         status_->setText(tr("Waiting for a drive to appear on the bus…"));
     } else if (wizard_->isReading()) {
         status_->setText(tr("Reading %1 of node %2 from the drive (SDO upload of %3h and %4h)…")
-                             .arg(s.pdo.name()).arg(s.node).arg(s.pdo.communicationIndex(), 4, 16).arg(s.pdo.mappingIndex(), 4, 16));
+                             .arg(s.pdo.name())
+                             .arg(s.node)
+                             .arg(s.pdo.communicationIndex(), 4, 16)
+                             .arg(s.pdo.mappingIndex(), 4, 16));
     } else if (!s.haveCurrent) {
-        status_->setText(tr("Could not read %1 of node %2: %3").arg(s.pdo.name()).arg(s.node).arg(wizard_->readError()));
+        status_->setText(
+            tr("Could not read %1 of node %2: %3").arg(s.pdo.name()).arg(s.node).arg(wizard_->readError()));
     } else {
         const auto& c = s.current;
         const QString what = tr("CAN-ID %1h%2. %3. %4 of 64 bits used.")
-                                 .arg(QString::number(c.cobId & 0x1FFFFFFF, 16).toUpper(), c.valid() ? QString() : tr(" (switched off: COB-ID bit 31 set)"),
+                                 .arg(QString::number(c.cobId & 0x1FFFFFFF, 16).toUpper(),
+                                      c.valid() ? QString() : tr(" (switched off: COB-ID bit 31 set)"),
                                       transmissionTypeText(c.transmissionType, s.pdo.transmit))
                                  .arg(c.totalBits());
-        status_->setText(s.fromDictionary ? tr("Dry run (the bus is listen-only, nothing is sent): starting from the dictionary's defaults, not read from the drive: %1").arg(what)
+        status_->setText(s.fromDictionary ? tr("Dry run (the bus is listen-only, nothing is sent): starting from the "
+                                               "dictionary's defaults, not read from the drive: %1")
+                                                .arg(what)
                                           : tr("Now in the drive: %1").arg(what));
         int bit = 0;
         for (const auto& e : c.entries) {
@@ -162,7 +178,8 @@ void PdoChoosePage::showTarget() {
             item->setText(1, s.objectName(e.index, e.sub));
             item->setText(2, QString::number(e.bits));
             item->setData(1, Qt::DecorationRole, PdoFrameLayout::colorFor(static_cast<int>(fields.size())));
-            fields.push_back({s.objectName(e.index, e.sub).replace(QStringLiteral("h:00 "), QStringLiteral("h ")), e.bits});
+            fields.push_back(
+                {s.objectName(e.index, e.sub).replace(QStringLiteral("h:00 "), QStringLiteral("h ")), e.bits});
             bit += e.bits;
         }
         if (c.entries.empty()) {
@@ -175,7 +192,10 @@ void PdoChoosePage::showTarget() {
     const QStringList notes = pdoVendorNotes(s.dictionaryName, s.pdo);
     QStringList escaped;
     for (const QString& n : notes) escaped << n.toHtmlEscaped();
-    notes_->setText(notes.isEmpty() ? QString() : QStringLiteral("<b>%1</b><ul><li>%2</li></ul>").arg(tr("Good to know about this drive:"), escaped.join(QStringLiteral("</li><li>"))));
+    notes_->setText(notes.isEmpty()
+                        ? QString()
+                        : QStringLiteral("<b>%1</b><ul><li>%2</li></ul>")
+                              .arg(tr("Good to know about this drive:"), escaped.join(QStringLiteral("</li><li>"))));
     notes_->setVisible(!notes.isEmpty());
 }
 

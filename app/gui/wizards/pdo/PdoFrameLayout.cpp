@@ -28,7 +28,8 @@ QString PdoFrameLayout::layoutText() const {
     for (const Field& f : fields_) {
         const int first = bit / 8, last = (bit + std::max(f.bits, 1) - 1) / 8;
         //: PDO layout tooltip: the bytes of the frame a mapped object fills, then its name (%3)
-        parts << (first == last ? tr("byte %1: %3").arg(first) : tr("byte %1-%2: %3").arg(first).arg(last)).arg(f.label);
+        parts
+            << (first == last ? tr("byte %1: %3").arg(first) : tr("byte %1-%2: %3").arg(first).arg(last)).arg(f.label);
         bit += f.bits;
     }
     parts << tr("%1 of 64 bits").arg(bit);
@@ -36,8 +37,9 @@ QString PdoFrameLayout::layoutText() const {
 }
 
 QColor PdoFrameLayout::colorFor(int field) {
-    static const QColor colors[] = {QColor(0x4E, 0x9A, 0xE6), QColor(0x66, 0xBB, 0x6A), QColor(0xFF, 0xA7, 0x26), QColor(0xAB, 0x47, 0xBC),
-                                    QColor(0x26, 0xC6, 0xDA), QColor(0xEC, 0x40, 0x7A), QColor(0x9C, 0xCC, 0x65), QColor(0x8D, 0x6E, 0x63)};
+    static const QColor colors[] = {QColor(0x4E, 0x9A, 0xE6), QColor(0x66, 0xBB, 0x6A), QColor(0xFF, 0xA7, 0x26),
+                                    QColor(0xAB, 0x47, 0xBC), QColor(0x26, 0xC6, 0xDA), QColor(0xEC, 0x40, 0x7A),
+                                    QColor(0x9C, 0xCC, 0x65), QColor(0x8D, 0x6E, 0x63)};
     return colors[field % 8];
 }
 
@@ -62,7 +64,8 @@ void PdoFrameLayout::paintEvent(QPaintEvent*) {
     }
     // Grid: bytes strong, nibbles not drawn.
     p.setPen(palette().color(QPalette::Mid));
-    for (int b = 0; b <= 8; ++b) p.drawLine(QPointF(left + b * 8 * perBit, top), QPointF(left + b * 8 * perBit, top + barH));
+    for (int b = 0; b <= 8; ++b)
+        p.drawLine(QPointF(left + b * 8 * perBit, top), QPointF(left + b * 8 * perBit, top + barH));
     p.drawLine(QPointF(left, top), QPointF(left + width, top));
     p.drawLine(QPointF(left, top + barH), QPointF(left + width, top + barH));
     // Objects over their bits.
@@ -74,7 +77,8 @@ void PdoFrameLayout::paintEvent(QPaintEvent*) {
             const QRectF r(left + from * perBit, top, (to - from) * perBit, barH);
             p.fillRect(r.adjusted(1, 1, -1, -1), colorFor(static_cast<int>(i)));
             p.setPen(Qt::black);
-            p.drawText(r.adjusted(3, 0, -3, 0), Qt::AlignCenter | Qt::TextWordWrap, fm.elidedText(f.label, Qt::ElideRight, static_cast<int>(r.width() * 2 - 8)));
+            p.drawText(r.adjusted(3, 0, -3, 0), Qt::AlignCenter | Qt::TextWordWrap,
+                       fm.elidedText(f.label, Qt::ElideRight, static_cast<int>(r.width() * 2 - 8)));
         }
         bit += f.bits;
     }

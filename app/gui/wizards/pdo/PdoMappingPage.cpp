@@ -24,8 +24,10 @@ constexpr int kEntryRole = Qt::UserRole + 1;  // PdoMapEntry::encode()
 
 PdoMappingPage::PdoMappingPage(PdoWizard* wizard) : wizard_(wizard) {
     setTitle(tr("What the message carries"));
-    setSubTitle(tr("Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). "
-                   "Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes (64 bits)."));
+    setSubTitle(
+        tr("Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). "
+           "Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes "
+           "(64 bits)."));
     search_ = new QLineEdit(this);
     search_->setObjectName(QStringLiteral("pdoSearch"));
     search_->setPlaceholderText(tr("Search by name or index, e.g. velocity or 606C"));
@@ -137,12 +139,19 @@ void PdoMappingPage::fillAvailable() {
             if (s.pdo.transmit ? !od::isReadable(sub.access) : !od::isWritable(sub.access)) continue;
             const int bits = od::bitSize(sub.dataType);
             if (bits <= 0 || bits > 64) continue;
-            auto* item = new QListWidgetItem(tr("%1  (%2, %3 bits)").arg(s.objectName(index, sub.sub), od::dataTypeName(sub.dataType)).arg(bits), available_);
+            auto* item = new QListWidgetItem(
+                tr("%1  (%2, %3 bits)").arg(s.objectName(index, sub.sub), od::dataTypeName(sub.dataType)).arg(bits),
+                available_);
             item->setData(kEntryRole, canopen::PdoMapEntry{index, sub.sub, static_cast<uint8_t>(bits)}.encode());
             // The EDS's own name in the tooltip when the list shows the manual's (ObjectNames.h).
             const QString eds = s.dictionary->displayName(index, sub.sub);
-            const QString shown = dissect::localDisplayName(*s.dictionary, index, sub.sub, dissect::vendorTextLanguage());
-            item->setToolTip(tr("%1h:%2 — %3, access %4").arg(index, 4, 16, QChar(u'0')).arg(sub.sub, 2, 16, QChar(u'0')).arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::accessName(sub.access)));
+            const QString shown =
+                dissect::localDisplayName(*s.dictionary, index, sub.sub, dissect::vendorTextLanguage());
+            item->setToolTip(
+                tr("%1h:%2 — %3, access %4")
+                    .arg(index, 4, 16, QChar(u'0'))
+                    .arg(sub.sub, 2, 16, QChar(u'0'))
+                    .arg(shown == eds ? eds : QStringLiteral("%1 (%2)").arg(shown, eds), od::accessName(sub.access)));
         }
     }
     setFilter(search_->text());
@@ -153,7 +162,8 @@ void PdoMappingPage::setFilter(const QString& text) {
     const QString t = text.trimmed();
     for (int i = 0; i < available_->count(); ++i) {
         QListWidgetItem* item = available_->item(i);
-        item->setHidden(!t.isEmpty() && !item->text().contains(t, Qt::CaseInsensitive) && !item->toolTip().contains(t, Qt::CaseInsensitive));
+        item->setHidden(!t.isEmpty() && !item->text().contains(t, Qt::CaseInsensitive) &&
+                        !item->toolTip().contains(t, Qt::CaseInsensitive));
     }
 }
 
@@ -241,7 +251,12 @@ void PdoMappingPage::updateSummary() {
     if (bits > 64) text = tr("Too long: %1 bits. Remove objects until the total is 64 bits or less.").arg(bits);
     else if (s.wanted.entries.empty()) text = tr("Nothing mapped: the message would carry no data.");
     else if (s.wanted.entries == s.current.entries) text = tr("Same as in the drive now.");
-    else text = tr("Changed: %1 objects, %2 bits (was %3 objects, %4 bits).").arg(s.wanted.entries.size()).arg(bits).arg(s.current.entries.size()).arg(s.current.totalBits());
+    else
+        text = tr("Changed: %1 objects, %2 bits (was %3 objects, %4 bits).")
+                   .arg(s.wanted.entries.size())
+                   .arg(bits)
+                   .arg(s.current.entries.size())
+                   .arg(s.current.totalBits());
     if (s.wanted.entries.size() > 8) text += tr(" Many drives allow at most 8 objects per PDO.");
     summary_->setText(text);
     emit completeChanged();

@@ -42,8 +42,8 @@ public:
 
 private:
     void fillAvailable();
-    void showMapped();      // state -> list and layout
-    void syncFromList();    // list (after a drag) -> state
+    void showMapped();    // state -> list and layout
+    void syncFromList();  // list (after a drag) -> state
     void updateSummary();
 
     PdoWizard* wizard_;

@@ -49,11 +49,13 @@ PdoTimingPage::PdoTimingPage(PdoWizard* wizard) : wizard_(wizard) {
     event_->setSpecialValueText(tr("off"));
     cob_ = new IntegerSpinBox(this);
     cob_->setObjectName(QStringLiteral("pdoCobId"));
-    cob_->setType(od::DataType::Unsigned32, od::Limits{od::Value::unsignedInt(1), od::Value::unsignedInt(0x7FF)}, od::HexKind::CobId);
+    cob_->setType(od::DataType::Unsigned32, od::Limits{od::Value::unsignedInt(1), od::Value::unsignedInt(0x7FF)},
+                  od::HexKind::CobId);
     cob_->setMaximumWidth(120);
     valid_ = new QCheckBox(tr("Message switched on (COB-ID bit 31 = 0: PDO valid)"), this);
     auto* defaultCob = defaultCob_ = new QPushButton(tr("Default"), this);
-    defaultCob->setToolTip(tr("The pre-defined connection set (CiA 301 §7.3.5): TPDO1 180h + node … RPDO4 500h + node"));
+    defaultCob->setToolTip(
+        tr("The pre-defined connection set (CiA 301 §7.3.5): TPDO1 180h + node … RPDO4 500h + node"));
     explain_ = new QLabel(this);
     explain_->setWordWrap(true);
     explain_->setObjectName(QStringLiteral("pdoTimingExplain"));
@@ -116,12 +118,17 @@ void PdoTimingPage::initializePage() {
     const bool cobFixed = cobEntry && !od::isWritable(cobEntry->access);
     for (QWidget* w : std::initializer_list<QWidget*>{cob_, valid_, defaultCob_}) {
         w->setEnabled(!cobFixed);
-        w->setToolTip(cobFixed ? tr("This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off") : QString());
+        w->setToolTip(cobFixed ? tr("This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the "
+                                    "message cannot be switched off")
+                               : QString());
     }
     inhibit_->setEnabled(hasInhibit);
     event_->setEnabled(hasEvent);
-    inhibit_->setToolTip(hasInhibit ? tr("The drive waits at least this long between two messages (100 µs units on the bus)") : tr("Not available on this drive or for an RPDO"));
-    event_->setToolTip(hasEvent ? tr("Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout when no message came for this long")
+    inhibit_->setToolTip(hasInhibit
+                             ? tr("The drive waits at least this long between two messages (100 µs units on the bus)")
+                             : tr("Not available on this drive or for an RPDO"));
+    event_->setToolTip(hasEvent ? tr("Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout "
+                                     "when no message came for this long")
                                 : tr("Not available on this drive"));
     loading_ = false;
     toState();
@@ -172,7 +179,8 @@ void PdoTimingPage::toState() {
     if (inhibit_->isEnabled()) w.inhibitTime = static_cast<uint16_t>(qRound(inhibit_->value() * 10));
     if (event_->isEnabled()) w.eventTimer = static_cast<uint16_t>(event_->intValue());
     const auto id = static_cast<uint32_t>(cob_->intValue());
-    if (cob_->hasAcceptableInput()) w.cobId = (s.current.cobId & 0x40000000u) | id | (valid_->isChecked() ? 0 : 0x80000000u);
+    if (cob_->hasAcceptableInput())
+        w.cobId = (s.current.cobId & 0x40000000u) | id | (valid_->isChecked() ? 0 : 0x80000000u);
     explain();
     emit completeChanged();
 }
@@ -182,15 +190,23 @@ void PdoTimingPage::explain() {
     const auto& w = s.wanted;
     QStringList lines;
     lines << transmissionTypeText(w.transmissionType, s.pdo.transmit) + QLatin1Char('.');
-    if (w.transmissionType <= 240 && s.pdo.transmit) lines << tr("Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.");
-    if (w.transmissionType <= 240 && !s.pdo.transmit) lines << tr("The master must send SYNC after the message, every cycle.");
-    if (w.transmissionType >= 254 && s.pdo.transmit && !w.eventTimer.value_or(0)) lines << tr("Event timer off: sent only when a mapped value changes.");
-    if (w.transmissionType >= 254 && s.pdo.transmit && w.eventTimer.value_or(0)) lines << tr("Sent when a value changes, and at least every %1 ms.").arg(*w.eventTimer);
-    if (s.pdo.transmit && w.inhibitTime.value_or(0)) lines << tr("Never more often than every %1 ms (inhibit time).").arg(*w.inhibitTime / 10.0);
+    if (w.transmissionType <= 240 && s.pdo.transmit)
+        lines << tr("Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.");
+    if (w.transmissionType <= 240 && !s.pdo.transmit)
+        lines << tr("The master must send SYNC after the message, every cycle.");
+    if (w.transmissionType >= 254 && s.pdo.transmit && !w.eventTimer.value_or(0))
+        lines << tr("Event timer off: sent only when a mapped value changes.");
+    if (w.transmissionType >= 254 && s.pdo.transmit && w.eventTimer.value_or(0))
+        lines << tr("Sent when a value changes, and at least every %1 ms.").arg(*w.eventTimer);
+    if (s.pdo.transmit && w.inhibitTime.value_or(0))
+        lines << tr("Never more often than every %1 ms (inhibit time).").arg(*w.inhibitTime / 10.0);
     const uint32_t def = s.node > 0 ? s.pdo.defaultCobId(static_cast<uint8_t>(s.node)) : 0;
-    if ((w.cobId & 0x7FF) != def) lines << tr("CAN-ID %1h is not the default %2h: make sure no other message uses it.").arg(QString::number(w.cobId & 0x7FF, 16).toUpper(), QString::number(def, 16).toUpper());
+    if ((w.cobId & 0x7FF) != def)
+        lines << tr("CAN-ID %1h is not the default %2h: make sure no other message uses it.")
+                     .arg(QString::number(w.cobId & 0x7FF, 16).toUpper(), QString::number(def, 16).toUpper());
     if (!w.valid()) lines << tr("The message will be switched off: the drive will neither send nor accept it.");
-    if (s.dictionaryName == u"aimotor" && w.transmissionType <= 240) lines << tr("AIMOTOR: synchronous PDOs need SYNC from the master.");
+    if (s.dictionaryName == u"aimotor" && w.transmissionType <= 240)
+        lines << tr("AIMOTOR: synchronous PDOs need SYNC from the master.");
     explain_->setText(lines.join(QLatin1Char('\n')));
 }
 

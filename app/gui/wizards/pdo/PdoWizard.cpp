@@ -71,7 +71,8 @@ PdoWizard::PdoWizard(Workspace* workspace, int node, QWidget* parent) : QWizard(
         if (s != CanBus::State::Lost || !applying_) return;  // issue 16: stop, say what may be left
         const QString reason = workspace_->bus() ? workspace_->bus()->errorString() : QString();
         dropServices();
-        finishApply(false, BusLossAdvice::pdoMessage(reason, state_.node, state_.pdo.name(), BusLossAdvice::lastNmtState(workspace_->nodes(), state_.node)));
+        finishApply(false, BusLossAdvice::pdoMessage(reason, state_.node, state_.pdo.name(),
+                                                     BusLossAdvice::lastNmtState(workspace_->nodes(), state_.node)));
     });
     frames_->markStart();
     movePaneTo(ChoosePageId);
@@ -102,8 +103,10 @@ QString PdoWizard::sendRefusal() const {
     if (!bus || !workspace_->sdo() || !workspace_->master())
         return tr("Not connected to a bus: this wizard talks to the drive, so connect first (File ▸ Connect).");
     if (bus->isListenOnly())
-        return tr("The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change the drive. "
-                  "Reconnect without listen-only to use it.");
+        return tr(
+            "The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change "
+            "the drive. "
+            "Reconnect without listen-only to use it.");
     if (!workspace_->canTransmit()) return tr("The bus is not open (yet): wait for it to connect.");
     return {};
 }
@@ -164,7 +167,8 @@ void PdoWizard::dropServices() {
         emit currentRead(false);
     }
     if (applying_)
-        finishApply(false, tr("The connection was closed while the PDO was being changed. Connect again and read the PDO to see what is in force."));
+        finishApply(false, tr("The connection was closed while the PDO was being changed. Connect again and read the "
+                              "PDO to see what is in force."));
 }
 
 void PdoWizard::loadDictionary(int node) {
@@ -214,7 +218,8 @@ void PdoWizard::selectTarget(int node, canopen::PdoId pdo) {
             // Opened without a node: pass over a node whose PDO is empty if another may show more.
             self->autoTried_.push_back(self->state_.node);
             for (const canopen::NodeInfo& n : self->workspace_->nodes().snapshot())
-                if (!n.dictionary.isEmpty() && std::find(self->autoTried_.begin(), self->autoTried_.end(), n.node) == self->autoTried_.end()) {
+                if (!n.dictionary.isEmpty() &&
+                    std::find(self->autoTried_.begin(), self->autoTried_.end(), n.node) == self->autoTried_.end()) {
                     self->selectTarget(n.node, self->state_.pdo);
                     return;
                 }
@@ -300,9 +305,10 @@ bool PdoWizard::apply(QString* why) {
     lastWrite_ = {};
     spdlog::info("PDO wizard: applying {} of node {}", state_.pdo.name().toStdString(), state_.node);
     QPointer<PdoWizard> self(this);
-    cfg->write(static_cast<uint8_t>(state_.node), state_.pdo, state_.wanted, state_.dictionary.get(), [self](const canopen::PdoWriteResult& r) {
-        if (self && self->applying_) self->afterWrite(r);
-    });
+    cfg->write(static_cast<uint8_t>(state_.node), state_.pdo, state_.wanted, state_.dictionary.get(),
+               [self](const canopen::PdoWriteResult& r) {
+                   if (self && self->applying_) self->afterWrite(r);
+               });
     return true;
 }
 
@@ -313,7 +319,8 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
     int writes = 0, planRows = 0;
     for (const auto& s : applied_.steps) {
         if (s.kind == canopen::ScriptStep::Kind::SdoWrite && s.index != 0x1010) ++writes;
-        if (!(s.index == 0x1010 || (s.kind == canopen::ScriptStep::Kind::Nmt && s.nmt == canopen::NmtCommand::Start))) ++planRows;
+        if (!(s.index == 0x1010 || (s.kind == canopen::ScriptStep::Kind::Nmt && s.nmt == canopen::NmtCommand::Start)))
+            ++planRows;
     }
     ScriptPreview* pv = preview();
     if (!r.ok) {
@@ -322,26 +329,39 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
         else if (r.failedStep == u"verify") failedRow = 1 + writes;
         for (int i = 0; i < failedRow; ++i) pv->markStep(i, true);
         pv->markStep(failedRow, false, coreText(r.error));
-        const QString stepWhy = failedRow < static_cast<int>(applied_.steps.size()) ? coreLines(applied_.steps[static_cast<size_t>(failedRow)].why) : QString();
+        const QString stepWhy = failedRow < static_cast<int>(applied_.steps.size())
+                                    ? coreLines(applied_.steps[static_cast<size_t>(failedRow)].why)
+                                    : QString();
         QStringList lines;
-        lines << tr("Stopped at step %1 of %2: %3%4.").arg(failedRow + 1).arg(applied_.steps.size()).arg(stepWhy, r.failedStep.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(r.failedStep));
+        lines << tr("Stopped at step %1 of %2: %3%4.")
+                     .arg(failedRow + 1)
+                     .arg(applied_.steps.size())
+                     .arg(stepWhy, r.failedStep.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(r.failedStep));
         // r.error: "<step> failed: <answer>; previous mapping restored" -> the answer alone.
         QString answer = r.error;
-        if (!r.failedStep.isEmpty() && answer.startsWith(r.failedStep + QStringLiteral(" failed: "))) answer = answer.mid(r.failedStep.size() + 9);
-        for (const QString& tail : {QStringLiteral("; previous mapping restored"), QStringLiteral("; restoring the previous mapping failed too: ")}) {
+        if (!r.failedStep.isEmpty() && answer.startsWith(r.failedStep + QStringLiteral(" failed: ")))
+            answer = answer.mid(r.failedStep.size() + 9);
+        for (const QString& tail : {QStringLiteral("; previous mapping restored"),
+                                    QStringLiteral("; restoring the previous mapping failed too: ")}) {
             const qsizetype at = answer.indexOf(tail);
             if (at >= 0) answer.truncate(at);
         }
         lines << tr("What the drive answered: %1").arg(coreText(answer));
-        const bool timedOut = r.error.contains(QStringLiteral("timed out"), Qt::CaseInsensitive) || r.error.contains(QStringLiteral("no answer"), Qt::CaseInsensitive);
+        const bool timedOut = r.error.contains(QStringLiteral("timed out"), Qt::CaseInsensitive) ||
+                              r.error.contains(QStringLiteral("no answer"), Qt::CaseInsensitive);
         lines << tr("What to check: %1").arg(pdoFailureAdvice(r.abortCode, timedOut, state_.dictionaryName));
         if (r.restored) {
-            lines << tr("The previous settings were written back: %1 works as before (%2 objects, %3 bits). The drive was left pre-operational.")
-                         .arg(state_.pdo.name()).arg(r.previous.entries.size()).arg(r.previous.totalBits());
+            lines << tr("The previous settings were written back: %1 works as before (%2 objects, %3 bits). The drive "
+                        "was left pre-operational.")
+                         .arg(state_.pdo.name())
+                         .arg(r.previous.entries.size())
+                         .arg(r.previous.totalBits());
             state_.current = r.previous;
         } else if (!r.steps.isEmpty()) {
-            lines << tr("Writing the previous settings back failed as well (%1): read the PDO again and check it before starting the drive.")
-                         .arg(coreText(r.error.section(QStringLiteral("; restoring the previous mapping failed too: "), 1)));
+            lines << tr("Writing the previous settings back failed as well (%1): read the PDO again and check it "
+                        "before starting the drive.")
+                         .arg(coreText(
+                             r.error.section(QStringLiteral("; restoring the previous mapping failed too: "), 1)));
         } else {
             lines << tr("Nothing was changed on the drive.");
         }
@@ -356,8 +376,12 @@ void PdoWizard::afterWrite(const canopen::PdoWriteResult& r) {
 
 void PdoWizard::runStoreAndStart(int row) {
     const uint8_t node = static_cast<uint8_t>(state_.node);
-    QString done = tr("Done: %1 of node %2 now carries %3 objects (%4 bits), checked by reading back. The trace and the plot decode it with the new layout from now on.")
-                       .arg(state_.pdo.name()).arg(node).arg(state_.current.entries.size()).arg(state_.current.totalBits());
+    QString done = tr("Done: %1 of node %2 now carries %3 objects (%4 bits), checked by reading back. The trace and "
+                      "the plot decode it with the new layout from now on.")
+                       .arg(state_.pdo.name())
+                       .arg(node)
+                       .arg(state_.current.entries.size())
+                       .arg(state_.current.totalBits());
     auto start = [this, node, row](int at, QString text) {
         if (!start_) {
             text += tr(" The drive is pre-operational: start it (NMT start) to make PDOs flow.");
@@ -374,14 +398,18 @@ void PdoWizard::runStoreAndStart(int row) {
     };
     if (!(store_ && canStore())) return start(row, done);
     QPointer<PdoWizard> self(this);
-    workspace_->sdo()->download(node, 0x1010, 1, le32(kSaveSignature), [self, row, done, start](const canopen::SdoResult& r) {
-        if (!self || !self->applying_) return;
-        self->preview()->markStep(row, r.ok, r.ok ? QString() : coreText(r.error));
-        if (!r.ok)
-            return self->finishApply(false, done + tr("\nBut storing failed (%1): the new mapping works now and is lost at power-off. %2")
-                                                    .arg(coreText(r.error), pdoFailureAdvice(r.serverAborted ? r.abortCode : 0, r.timedOut, self->state_.dictionaryName)));
-        start(row + 1, done + tr(" Stored in the drive (kept after power-off)."));
-    });
+    workspace_->sdo()->download(
+        node, 0x1010, 1, le32(kSaveSignature), [self, row, done, start](const canopen::SdoResult& r) {
+            if (!self || !self->applying_) return;
+            self->preview()->markStep(row, r.ok, r.ok ? QString() : coreText(r.error));
+            if (!r.ok)
+                return self->finishApply(
+                    false,
+                    done + tr("\nBut storing failed (%1): the new mapping works now and is lost at power-off. %2")
+                               .arg(coreText(r.error), pdoFailureAdvice(r.serverAborted ? r.abortCode : 0, r.timedOut,
+                                                                        self->state_.dictionaryName)));
+            start(row + 1, done + tr(" Stored in the drive (kept after power-off)."));
+        });
 }
 
 void PdoWizard::finishApply(bool ok, const QString& text) {

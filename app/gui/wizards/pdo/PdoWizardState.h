@@ -17,10 +17,10 @@ struct PdoWizardState {
     canopen::PdoId pdo{true, 1};
     QString dictionaryName;  // as matched or assigned in the node table ("" = none)
     std::shared_ptr<const od::ObjectDictionary> dictionary;
-    bool haveCurrent = false;    // `current` was read from the device (or taken from the dictionary)
-    bool fromDictionary = false; // listen-only dry run: `current` = the dictionary's defaults
-    canopen::PdoConfig current;  // as read
-    canopen::PdoConfig wanted;   // as edited (starts as a copy of `current`)
+    bool haveCurrent = false;     // `current` was read from the device (or taken from the dictionary)
+    bool fromDictionary = false;  // listen-only dry run: `current` = the dictionary's defaults
+    canopen::PdoConfig current;   // as read
+    canopen::PdoConfig wanted;    // as edited (starts as a copy of `current`)
 
     // "6041h:00 Statusword" (the dictionary's name when known).
     QString objectName(uint16_t index, uint8_t sub) const;
