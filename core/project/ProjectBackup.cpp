@@ -2,6 +2,7 @@
 #include "core/project/ProjectBackup.h"
 
 #include "core/canopen/DeviceConfiguration.h"
+#include "core/canopen/ProgramDownload.h"
 
 #include <QPointer>
 
@@ -113,6 +114,28 @@ void ProjectBackup::backupNext(std::shared_ptr<Run> run) {
                             .arg(result.read)
                             .arg(result.failed ? QStringLiteral(", %1 unreadable").arg(result.failed) : QString())
                       : QStringLiteral("no object could be read");
+        self->backupSoftware(run, id, result);
+    });
+}
+
+// The program the node runs: 1F56h program software identification (CiA 302-3 §4) and 100Ah
+// manufacturer software version (CiA 301 7.5.2.8), kept in nodes[].firmware beside the image file
+// and program number the project names; a node that answers neither keeps what the project had.
+void ProjectBackup::backupSoftware(std::shared_ptr<Run> run, uint8_t id, BackupNodeResult result) {
+    ProjectNode* node = run->project.node(id);
+    const uint8_t program = node && node->firmware ? node->firmware->program : 1;
+    QPointer<ProjectBackup> self(this);
+    canopen::readProgramState(sdo_, id, program, [self, run, id, result](const canopen::ProgramState& s) mutable {
+        if (!self) return;
+        ProjectNode* node = run->project.node(id);
+        if (node && (s.softwareId || s.version)) {
+            ProjectFirmware f = node->firmware.value_or(ProjectFirmware{});
+            f.softwareId = s.softwareId;
+            f.version = s.version.value_or(QString());
+            node->firmware = f;
+            result.message += s.version ? QStringLiteral("; software version %1").arg(*s.version)
+                                        : QStringLiteral("; software identification %1").arg(hex32Text(*s.softwareId));
+        }
         run->results.push_back(result);
         self->backupNext(run);
     });

@@ -23,7 +23,8 @@ struct BackupNodeResult {
 // "Back up the machine": scans the bus, and for every node found (in the project, or new: then
 // added with the dictionary matched to its identity) reads all readable objects
 // (DeviceConfiguration) and keeps as its parameters the configuration objects whose value differs
-// from the dictionary's default (isConfigurationEntry); the identity 1018h is taken as found.
+// from the dictionary's default (isConfigurationEntry); the identity 1018h is taken as found, and
+// the program it runs (1F56h, 100Ah) as nodes[].firmware.
 // Project nodes that do not answer are kept as they were.
 class ProjectBackup : public QObject {
     Q_OBJECT
@@ -50,6 +51,7 @@ public:
 private:
     struct Run;
     void backupNext(std::shared_ptr<Run> run);
+    void backupSoftware(std::shared_ptr<Run> run, uint8_t id, BackupNodeResult result);
 
     canopen::SdoClient& sdo_;
     DictionaryResolver resolver_;

@@ -31,6 +31,20 @@ ProjectActions::ProjectActions(Workspace* workspace, QMainWindow* window, Connec
     : QObject(window), workspace_(workspace), window_(window), connect_(std::move(connector)),
       session_(new ProjectSession(workspace, this)) {
     connect(session_, &ProjectSession::changed, this, &ProjectActions::updateTitle);
+    // A backup whose bus closes half-way (Disconnect, another bus, a lost adapter) cannot finish:
+    // its SDO client is gone. Say so, and keep the project as it was.
+    if (workspace_)
+        connect(workspace_, &Workspace::aboutToDisconnect, this, [this] {
+            if (!backingUp_) return;
+            backingUp_ = false;
+            if (backup_) backup_->deleteLater();
+            backup_ = nullptr;
+            const QString text = tr("The bus closed before the backup was finished: the project is as it was.");
+            emit message(text);
+            QMetaObject::invokeMethod(
+                this, [this, text] { QMessageBox::warning(window_, tr("Back up the machine"), text); },
+                Qt::QueuedConnection);
+        });
 }
 
 void ProjectActions::addTo(QMenu* file, QMenuBar* bar) {
@@ -203,6 +217,7 @@ void ProjectActions::backUpMachine() {
     auto* backup = new project::ProjectBackup(
         *workspace_->sdo(), eds::projectDictionaryResolver(QFileInfo(session_->path()).absolutePath()), this);
     backup->setMatcher(eds::scanMatcher());
+    backup_ = backup;
     project::Project start = session_->project();
     if (start.busUrl.isEmpty()) start.busUrl = workspace_->bus()->url().toString();
     QPointer<ProjectActions> self(this);
@@ -215,6 +230,7 @@ void ProjectActions::backUpMachine() {
             backup->deleteLater();
             if (!self) return;
             self->backingUp_ = false;
+            self->backup_ = nullptr;
             self->session_->setProject(result);
             QStringList lines;
             for (const auto& n : nodes)

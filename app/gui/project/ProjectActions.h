@@ -56,6 +56,8 @@ private:
     QPointer<QMenu> recent_;
     QPointer<CompareDialog> compare_;
     bool backingUp_ = false;
+    // The backup running (nullptr when none): ended, and said so, when its bus closes.
+    QPointer<QObject> backup_;
 };
 
 }  // namespace coscope::gui
