@@ -12,11 +12,21 @@ namespace coscope::dissect {
 
 namespace {
 QString esc(const QString& s) { return s.toHtmlEscaped(); }
-QString num(double v, int decimals = 1) { return QString::number(v, 'f', decimals); }
+QString svgNumber(double v, int decimals = 1) { return QString::number(v, 'f', decimals); }
 QString st(int s) { return s < 0 ? QStringLiteral("-") : canopen::nmtStateName(static_cast<uint8_t>(s)); }
 QString hexId(uint32_t v, int w) {
     return QStringLiteral("%1h").arg(v, w, 16, QLatin1Char('0')).toUpper().replace(u'H', u'h');
 }
+
+}  // namespace
+
+double loadScaleTopPct(double peakPct) {
+    for (double top : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 75.0})
+        if (peakPct * 1.05 <= top) return top;
+    return 100.0;
+}
+
+namespace {
 
 // The load over time: one bar per second (or per bucket when long), peak line per bucket.
 QString loadSvg(const BusHealth& b) {
@@ -32,42 +42,45 @@ QString loadSvg(const BusHealth& b) {
              .arg(top)
              .arg(plotW)
              .arg(plotH);
-    for (int pct : {25, 50, 75, 100}) {
-        const double y = top + plotH * (1.0 - pct / 100.0);
+    // Scaled to the data (issue 37 item 7): a 3 % load fills a 5 % chart, not the bottom line of 100 %.
+    const double full = loadScaleTopPct(b.loadPeakPct);
+    for (int q = 1; q <= 4; ++q) {
+        const double pct = full * q / 4.0;
+        const double y = top + plotH * (1.0 - pct / full);
         s += QStringLiteral(
                  "<line x1='%1' x2='%2' y1='%3' y2='%3' stroke='#e0e0e0'/><text x='%4' y='%5' font-size='10' "
                  "text-anchor='end' fill='#666'>%6 %</text>")
                  .arg(left)
                  .arg(left + plotW)
-                 .arg(num(y))
+                 .arg(svgNumber(y))
                  .arg(left - 4)
-                 .arg(num(y + 3))
-                 .arg(pct);
+                 .arg(svgNumber(y + 3))
+                 .arg(QString::number(pct, 'g', 3));
     }
     const auto& buckets = b.loadOverTime;
     if (!buckets.empty()) {
         const double bw = static_cast<double>(plotW) / static_cast<double>(buckets.size());
         QString peak;
         for (size_t i = 0; i < buckets.size(); ++i) {
-            const double avg = std::min(100.0, buckets[i].avgPct), pk = std::min(100.0, buckets[i].peakPct);
+            const double avg = std::min(full, buckets[i].avgPct), pk = std::min(full, buckets[i].peakPct);
             const double x = left + bw * static_cast<double>(i);
-            const double y = top + plotH * (1.0 - avg / 100.0);
+            const double y = top + plotH * (1.0 - avg / full);
             s +=
                 QStringLiteral(
                     "<rect x='%1' y='%2' width='%3' height='%4' fill='%5'><title>%6 s: %7 % (peak %8 %)</title></rect>")
-                    .arg(num(x + 0.5))
-                    .arg(num(y))
-                    .arg(num(std::max(1.0, bw - 1.0)))
-                    .arg(num(top + plotH - y))
+                    .arg(svgNumber(x + 0.5))
+                    .arg(svgNumber(y))
+                    .arg(svgNumber(std::max(1.0, bw - 1.0)))
+                    .arg(svgNumber(top + plotH - y))
                     .arg(avg > 70   ? QStringLiteral("#d9534f")
                          : avg > 50 ? QStringLiteral("#f0ad4e")
                                     : QStringLiteral("#4a90d9"))
-                    .arg(num(buckets[i].startS, 0), num(avg), num(pk));
+                    .arg(svgNumber(buckets[i].startS, 0), svgNumber(avg), svgNumber(pk));
             peak += QStringLiteral("%1%2,%3 %4,%3")
                         .arg(i ? QStringLiteral(" ") : QString())
-                        .arg(num(x))
-                        .arg(num(top + plotH * (1.0 - pk / 100.0)))
-                        .arg(num(x + bw));
+                        .arg(svgNumber(x))
+                        .arg(svgNumber(top + plotH * (1.0 - pk / full)))
+                        .arg(svgNumber(x + bw));
         }
         s += QStringLiteral("<polyline points='%1' fill='none' stroke='#333' stroke-width='1' stroke-dasharray='3,2'/>")
                  .arg(peak);
@@ -78,7 +91,7 @@ QString loadSvg(const BusHealth& b) {
                  .arg(left)
                  .arg(h - 8)
                  .arg(left + plotW)
-                 .arg(num(endS, 0));
+                 .arg(svgNumber(endS, 0));
     }
     s += QStringLiteral("</svg>");
     return s;
@@ -115,7 +128,7 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     h += QStringLiteral("<h1>%1</h1>\n<p class='muted'>%2 frames over %3 s at %4 bit/s</p>\n")
              .arg(esc(title))
              .arg(b.frames)
-             .arg(num(b.durationS))
+             .arg(svgNumber(b.durationS))
              .arg(b.bitRate);
     h += QStringLiteral("<p class='verdict'><b>%1</b></p>\n").arg(esc(r.verdict));
     // Each finding: what, why, what to check, and where, every frame number visible (the
@@ -176,14 +189,14 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     }
     h += QStringLiteral(
              "<h2>Bus load</h2>\n<p>average %1 %, peak %2 % at %3 s; error frames %4; frames not CANopen %5</p>\n")
-             .arg(num(b.loadAvgPct), num(b.loadPeakPct), num(b.peakAtS, 0))
+             .arg(svgNumber(b.loadAvgPct), svgNumber(b.loadPeakPct), svgNumber(b.peakAtS, 0))
              .arg(b.errorFrames)
              .arg(b.nonCanopen);
     h += loadSvg(b);
     if (b.syncs)
         h += QStringLiteral("<p>SYNC: %1 frames, period %2 ms (%3), %4 cycles missing</p>\n")
                  .arg(b.syncs)
-                 .arg(num(b.syncPeriodMs, 3), esc(b.syncPeriodSource))
+                 .arg(svgNumber(b.syncPeriodMs, 3), esc(b.syncPeriodSource))
                  .arg(b.syncMissing);
 
     h += QStringLiteral("<h2>Heartbeat and NMT</h2>\n<table>\n");
@@ -192,11 +205,12 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     for (const NodeHealth& n : r.nodes)
         h += row({QString::number(n.node), esc(st(n.state)),
                   n.errorControl.isEmpty() ? QStringLiteral("-") : n.errorControl, QString::number(n.beats),
-                  n.beats > 1
-                      ? QStringLiteral("%1 / %2 / %3").arg(num(n.periodMinMs), num(n.periodAvgMs), num(n.periodMaxMs))
+                  n.beats > 1 ? QStringLiteral("%1 / %2 / %3")
+                                    .arg(svgNumber(n.periodMinMs), svgNumber(n.periodAvgMs), svgNumber(n.periodMaxMs))
+                              : QStringLiteral("-"),
+                  n.expectedPeriodMs > 0
+                      ? QStringLiteral("%1 (%2)").arg(svgNumber(n.expectedPeriodMs, 0), n.periodSource)
                       : QStringLiteral("-"),
-                  n.expectedPeriodMs > 0 ? QStringLiteral("%1 (%2)").arg(num(n.expectedPeriodMs, 0), n.periodSource)
-                                         : QStringLiteral("-"),
                   QString::number(n.late), QString::number(n.timeouts), QString::number(n.bootUps),
                   QString::number(n.resets), QString::number(n.nmtCommands)});
     h += QStringLiteral("</table>\n<h2>SDO</h2>\n<table>\n");
@@ -208,10 +222,10 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
             aborts << QStringLiteral("%1 ×%2 %3").arg(hexId(a.code, 8)).arg(a.count).arg(esc(a.text));
         h += row({QString::number(n.node), QString::number(n.sdoTransfers), QString::number(n.sdoOk),
                   QString::number(n.sdoAborted), QString::number(n.sdoTimeouts),
-                  n.sdoResponses
-                      ? QStringLiteral("%1 / %2 / %3 / %4")
-                            .arg(num(n.sdoRtMinMs, 2), num(n.sdoRtAvgMs, 2), num(n.sdoRtP99Ms, 2), num(n.sdoRtMaxMs, 2))
-                      : QStringLiteral("-"),
+                  n.sdoResponses ? QStringLiteral("%1 / %2 / %3 / %4")
+                                       .arg(svgNumber(n.sdoRtMinMs, 2), svgNumber(n.sdoRtAvgMs, 2),
+                                            svgNumber(n.sdoRtP99Ms, 2), svgNumber(n.sdoRtMaxMs, 2))
+                                 : QStringLiteral("-"),
                   aborts.isEmpty() ? QStringLiteral("-") : aborts.join(QStringLiteral("<br>"))});
     }
     h += QStringLiteral("</table>\n<h2>EMCY</h2>\n<table>\n");
@@ -226,11 +240,12 @@ QByteArray healthHtml(const HealthReport& r, const QString& title) {
     h += head({"COB-ID", "PDO", "node", "frames", "rate Hz", "period min / avg / max ms", "jitter ms"});
     for (const PdoHealth& p : r.pdos)
         h += row({hexId(p.cobId, 3), p.service + (p.consumerSeen ? QString() : QStringLiteral(" (no consumer)")),
-                  QString::number(p.node), QString::number(p.frames), num(p.rateHz),
-                  p.frames > 1 ? QStringLiteral("%1 / %2 / %3")
-                                     .arg(num(p.periodMinMs, 2), num(p.periodAvgMs, 2), num(p.periodMaxMs, 2))
-                               : QStringLiteral("-"),
-                  p.cyclic ? num(p.jitterMs, 3) : QStringLiteral("event")});
+                  QString::number(p.node), QString::number(p.frames), svgNumber(p.rateHz),
+                  p.frames > 1
+                      ? QStringLiteral("%1 / %2 / %3")
+                            .arg(svgNumber(p.periodMinMs, 2), svgNumber(p.periodAvgMs, 2), svgNumber(p.periodMaxMs, 2))
+                      : QStringLiteral("-"),
+                  p.cyclic ? svgNumber(p.jitterMs, 3) : QStringLiteral("event")});
     h += QStringLiteral(
         "</table>\n<p class='muted'>Generated by CoScope. Load is estimated from frame lengths (nominal bit "
         "stuffing).</p>\n</body></html>\n");

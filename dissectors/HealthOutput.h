@@ -21,6 +21,9 @@ QByteArray healthHtml(const HealthReport& r, const QString& title);
 QString healthFrames(const Occurrences& at, int shown);
 // "3 times, 12.000 s .. 80.100 s; frames 1234, 1250, 1300": when and where a finding happened.
 QString healthWhere(const HealthFinding& f, int64_t startNs);
+// The top of a bus-load chart's scale for a peak load: the smallest of 1, 2, 5, 10, 20, 25, 50,
+// 75 and 100 % above it (with a 5 % margin); 100 % for a bus at or over capacity.
+double loadScaleTopPct(double peakPct);
 // Unicode block sparkline of the load buckets ("▁▂▅█"), scaled to 100 %.
 QString loadSparkline(const HealthReport& r);
 

@@ -11,7 +11,7 @@ namespace coscope::dissect {
 
 // The standard objects (CiA 301 1000h-1FFFh, CiA 402 6000h-6FFFh, and the axes of a multi-axis
 // drive, index + 800h per axis) of a BUNDLED dictionary, named as the Chinese manuals name them
-// (resources/dictionaries/NAME.json, "objectNames": {"6041": {"zh_TW": "狀態字元", "zh_CN":
+// (resources/dictionaries/NAME.json, "objectNames": {"6041": {"zh_TW": "狀態字", "zh_CN":
 // "状态字", "source": …}, "1018:01": …}; sources in glossary.md "Standard objects").
 //
 // What is shown: the Chinese name alone, as localParameterName() shows a vendor parameter (the

@@ -155,6 +155,8 @@ void MainWindow::createDocks() {
     connect(od_, &ObjectDictionaryDock::message, this, &MainWindow::showMessage);
     connect(plot_, &PlotDock::message, this, &MainWindow::showMessage);
     connect(transmit_, &TransmitDock::message, this, &MainWindow::showMessage);
+    connect(events_, &EventsDock::message, this, &MainWindow::showMessage);
+    connect(health_, &HealthDock::message, this, &MainWindow::showMessage);
     connect(nodes_, &NodesDock::nodeSelected, od_, &ObjectDictionaryDock::setNode);
     connect(plot_, &PlotDock::frameActivated, this, [this](uint32_t n) {
         trace_->raise();

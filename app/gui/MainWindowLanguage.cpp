@@ -43,7 +43,10 @@ void MainWindow::addLanguageMenu(QMenu* view) {
     QMenu* menu = view->addMenu(tr("&Language"));
     menu->setObjectName(QStringLiteral("languageMenu"));
     auto* group = new QActionGroup(menu);
-    const QString chosen = language::saved();
+    // The entry of the language in use is checked: the saved choice, unless `--lang` or a failed
+    // load put another language in use (issue 37 item 9).
+    const QString saved = language::saved();
+    const QString chosen = language::resolve(saved) == language::current() ? saved : language::current();
     auto add = [&](const QString& code, const QString& text) {
         QAction* a = menu->addAction(text);
         a->setObjectName(QStringLiteral("language-") + (code.isEmpty() ? QStringLiteral("system") : code));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/project/CompareReportFormat.h"
 
+#include "core/logio/CsvField.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -8,15 +10,11 @@
 
 namespace coscope::project {
 
+using logio::csvField;
+
 namespace {
 bool shown(const CompareRow& r, bool onlyDifferences) { return !onlyDifferences || r.state != RowState::Same; }
 
-QString csvField(const QString& s) {
-    if (!s.contains(u',') && !s.contains(u'"') && !s.contains(u'\n')) return s;
-    QString q = s;
-    q.replace(u'"', QStringLiteral("\"\""));
-    return u'"' + q + u'"';
-}
 }  // namespace
 
 QString compareText(const CompareReport& report, bool onlyDifferences) {

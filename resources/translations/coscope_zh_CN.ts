@@ -3315,6 +3315,18 @@
         <source>No heartbeat for %1 ms (period %2 ms)</source>
         <translation>%1 ms 内没有心跳（周期 %2 ms）</translation>
     </message>
+    <message>
+        <source>error</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>信息</translation>
+    </message>
 </context>
 <context>
     <name>FrameDecoder</name>
@@ -4158,6 +4170,19 @@ Bits on: %1</source>
     <message>
         <source>Finding &apos;%1&apos;</source>
         <translation>正在查找“%1”</translation>
+    </message>
+</context>
+<context>
+    <name>WizardButtons</name>
+    <message>
+        <source>&lt; &amp;Back</source>
+        <extracomment>A wizard&apos;s button to the previous step</extracomment>
+        <translation>&lt; 上一步(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Next &gt;</source>
+        <extracomment>A wizard&apos;s button to the next step</extracomment>
+        <translation>下一步(&amp;N) &gt;</translation>
     </message>
 </context>
 <context>
@@ -5951,8 +5976,80 @@ Arm the position move?</source>
         <translation>事件</translation>
     </message>
     <message>
-        <source>Double-click an event to show its frame in the trace</source>
-        <translation>双击事件可在跟踪中显示其帧</translation>
+        <source>Double-click an event to show its frame in the trace; click a column&apos;s title to sort</source>
+        <translation>双击事件可在跟踪中显示其帧；点击列标题可排序</translation>
+    </message>
+    <message>
+        <source>Only the events of one node</source>
+        <translation>只显示单一节点的事件</translation>
+    </message>
+    <message>
+        <source>All nodes</source>
+        <translation>所有节点</translation>
+    </message>
+    <message>
+        <source>Only the events of one kind</source>
+        <translation>只显示单一类型的事件</translation>
+    </message>
+    <message>
+        <source>All kinds</source>
+        <translation>所有类型</translation>
+    </message>
+    <message>
+        <source>Only the events at least this severe</source>
+        <translation>只显示至少达到此严重程度的事件</translation>
+    </message>
+    <message>
+        <source>All severities</source>
+        <translation>所有严重程度</translation>
+    </message>
+    <message>
+        <source>Warnings and errors</source>
+        <translation>警告和错误</translation>
+    </message>
+    <message>
+        <source>Errors only</source>
+        <translation>仅错误</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>导出 CSV…</translation>
+    </message>
+    <message>
+        <source>Write the events shown (with the filters and the order above) to a CSV file</source>
+        <translation>将当前显示的事件（按上方的筛选和排序）写入 CSV 文件</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>节点 %1</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 events</source>
+        <translation>%L2 个事件中的 %L1 个</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln event(s)</source>
+        <translation>
+            <numerusform>%Ln 个事件</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export events</source>
+        <translation>导出事件</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The events could not be written: %1</source>
+        <translation>无法写入事件：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln event(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %Ln 个事件写入 %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5976,6 +6073,14 @@ Arm the position move?</source>
     <message>
         <source>Frame</source>
         <translation>帧</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>严重程度</translation>
     </message>
 </context>
 <context>
@@ -6271,6 +6376,34 @@ Arm the position move?</source>
     <message>
         <source>CoScope&apos;s own traffic: not counted in the verdict.</source>
         <translation>CoScope 自己的通信：不计入结论。</translation>
+    </message>
+    <message>
+        <source>Export report…</source>
+        <translation>导出报告…</translation>
+    </message>
+    <message>
+        <source>Save the report for a ticket: an HTML page or a PDF, each finding with the frame numbers it rests on</source>
+        <translation>将报告保存为可附在工单中的文件：HTML 网页或 PDF，每个发现项都附上其依据的帧编号</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html)</source>
+        <translation>HTML 网页 (*.html)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export the health report</source>
+        <translation>导出健康报告</translation>
+    </message>
+    <message>
+        <source>The report could not be written: %1</source>
+        <translation>无法写入报告：%1</translation>
+    </message>
+    <message>
+        <source>Health report written to %1</source>
+        <translation>健康报告已写入 %1</translation>
     </message>
 </context>
 <context>
@@ -8610,6 +8743,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.</source>
         <translation>单击图表可放置光标 A（并跳至该帧），Shift+单击放置光标 B。</translation>
     </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::ProcessDataDock</name>
@@ -9105,6 +9242,10 @@ Make sure the axis is free to move. Arm?</source>
         <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
         <translation>为选中的节点载入项目指定的程序（固件）：CiA 302-3 程序下载</translation>
     </message>
+    <message>
+        <source>The bus closed before the backup was finished: the project is as it was.</source>
+        <translation>备份完成前总线已关闭：项目保持原样。</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::ProjectSession</name>
@@ -9523,6 +9664,10 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>The project&apos;s trace filter is not valid: %1</source>
         <translation>项目的跟踪过滤条件无效：%1</translation>
+    </message>
+    <message>
+        <source>How times are shown, here and in the Events, Health and Plot docks: the wall clock (from the log&apos;s header or the capture), seconds since the first frame, or since the row before (this table only)</source>
+        <translation>时间的显示方式（此处以及事件、健康状态和图表面板）：实际时钟时间（取自日志文件的文件头或捕获时）、自第一帧起的秒数，或与上一行的时间差（仅此表格）</translation>
     </message>
 </context>
 <context>

@@ -5,7 +5,7 @@
     <name>AboutBox</name>
     <message>
         <source>CANopen bus analyzer and servo-drive commissioning tool.</source>
-        <translation>CANopen 總線分析與伺服驅動器調機工具。</translation>
+        <translation>CANopen 匯流排分析與伺服驅動器調機工具。</translation>
     </message>
     <message>
         <source>Version %1, source revision %2, built with Qt %3 (running on Qt %4).</source>
@@ -535,7 +535,7 @@
     </message>
     <message>
         <source>Boot-up, node %1</source>
-        <translation>上線報文，節點 %1</translation>
+        <translation>上線訊息，節點 %1</translation>
     </message>
     <message>
         <source>Node guarding, node %1: %2, toggle %3</source>
@@ -735,7 +735,7 @@
     </message>
     <message>
         <source>%1 of node %2 is not valid (COB-ID 0x%3) but was seen on the bus</source>
-        <translation>節點 %2 的 %1 無效（COB-ID 0x%3），卻出現在總線上</translation>
+        <translation>節點 %2 的 %1 無效（COB-ID 0x%3），卻出現在匯流排上</translation>
     </message>
     <message>
         <source>%1 has %2 bytes but its mapping needs %3</source>
@@ -839,11 +839,11 @@
     </message>
     <message>
         <source>node %1 (bus %2)</source>
-        <translation>節點 %1（總線 %2）</translation>
+        <translation>節點 %1（匯流排 %2）</translation>
     </message>
     <message>
         <source>node %1 rebooted %2 (boot-up without an NMT reset)</source>
-        <translation>節點 %1 重新啟動了 %2（沒有 NMT 重置卻送出上線報文）</translation>
+        <translation>節點 %1 重新啟動了 %2（沒有 NMT 重置卻送出上線訊息）</translation>
     </message>
     <message>
         <source>node %1 heartbeat stopped: nothing for %2 (period %3)</source>
@@ -915,7 +915,7 @@
     </message>
     <message>
         <source>bus load peaks at %1 % (average %2 %) at %3 bit/s</source>
-        <translation>總線負載峰值 %1 %（平均 %2 %），鮑率 %3 bit/s</translation>
+        <translation>匯流排負載峰值 %1 %（平均 %2 %），鮑率 %3 bit/s</translation>
     </message>
     <message>
         <source>RPDO (%1) sent to node %2, which never answers</source>
@@ -1011,7 +1011,7 @@
     </message>
     <message>
         <source>Wait up to %1 ms for node %2 (boot-up or heartbeat)</source>
-        <translation>最多等待 %1 ms，直到節點 %2 回報（上線報文或心跳）</translation>
+        <translation>最多等待 %1 ms，直到節點 %2 回報（上線訊息或心跳）</translation>
     </message>
     <message>
         <source>Reconnect the adapter at %1</source>
@@ -1023,15 +1023,15 @@
     </message>
     <message>
         <source>When the message is sent: type %1 (transmission type)</source>
-        <translation>報文何時送出：類型 %1（傳輸類型）</translation>
+        <translation>訊息何時送出：類型 %1（傳輸類型）</translation>
     </message>
     <message>
         <source>Minimum gap between two messages: %1 ms (inhibit time, 100 µs units)</source>
-        <translation>兩筆報文之間的最短間隔：%1 ms（禁止時間，單位 100 µs）</translation>
+        <translation>兩筆訊息之間的最短間隔：%1 ms（禁止時間，單位 100 µs）</translation>
     </message>
     <message>
         <source>No minimum gap between two messages (inhibit time = 0)</source>
-        <translation>兩筆報文之間不設最短間隔（禁止時間 = 0）</translation>
+        <translation>兩筆訊息之間不設最短間隔（禁止時間 = 0）</translation>
     </message>
     <message>
         <source>Send at least every %1 ms (event timer)</source>
@@ -1047,7 +1047,7 @@
     </message>
     <message>
         <source>Object %1 of the message: %2, %3 bits (mapping entry %4)</source>
-        <translation>報文的第 %1 個物件：%2，%3 位元（映射項目 %4）</translation>
+        <translation>訊息的第 %1 個物件：%2，%3 位元（映射項目 %4）</translation>
     </message>
     <message>
         <source>Activate the %1 mapped objects (mapping sub-index 0 = number of entries)</source>
@@ -1231,7 +1231,7 @@
     </message>
     <message>
         <source>Wait until it reports at node-ID %1 (boot-up / heartbeat)</source>
-        <translation>等待它以節點 ID %1 回報（上線報文／心跳）</translation>
+        <translation>等待它以節點 ID %1 回報（上線訊息／心跳）</translation>
     </message>
     <message>
         <source>at once when the setting mode ends (the device starts with its new node-ID)</source>
@@ -1291,7 +1291,7 @@
     </message>
     <message>
         <source>the bus already runs at %1</source>
-        <translation>總線已經以 %1 運作</translation>
+        <translation>匯流排已經以 %1 運作</translation>
     </message>
     <message>
         <source>give the device a node-ID first; then change its bit rate</source>
@@ -1323,7 +1323,7 @@
     </message>
     <message>
         <source>Switch to the new bit rate now; it goes silent on this bus (LSS activate bit timing)</source>
-        <translation>立即切換到新鮑率；它在這條總線上將不再出聲（LSS 啟用位元時序）</translation>
+        <translation>立即切換到新鮑率；它在這條匯流排上將不再出聲（LSS 啟用位元時序）</translation>
     </message>
     <message>
         <source>at once with LSS activate bit timing (and at every power-on after the store)</source>
@@ -1347,7 +1347,7 @@
     </message>
     <message>
         <source>Restart the device so it runs at %1; it goes silent on this bus (NMT reset node)</source>
-        <translation>重置裝置，使其以 %1 運作；它在這條總線上將不再出聲（NMT 重置節點）</translation>
+        <translation>重置裝置，使其以 %1 運作；它在這條匯流排上將不再出聲（NMT 重置節點）</translation>
     </message>
     <message>
         <source>Let the reset leave the adapter and the device restart before reconnecting</source>
@@ -1367,11 +1367,11 @@
     </message>
     <message>
         <source>Wait until node %1 reports at %2 (boot-up / heartbeat)</source>
-        <translation>等待節點 %1 以 %2 回報（上線報文／心跳）</translation>
+        <translation>等待節點 %1 以 %2 回報（上線訊息／心跳）</translation>
     </message>
     <message>
         <source>Reconnect at %1 (the old rate) and scan: if node %2 is there, the change did not take effect — switch it off and on and try again at %3. If it answers at neither rate, try the other standard rates, or use LSS with this device alone on the bus.</source>
-        <translation>以 %1（舊鮑率）重新連線並掃描：若節點 %2 仍在，表示變更未生效——將它斷電再上電，再以 %3 嘗試。若兩種鮑率都沒有回應，請試試其他標準鮑率，或讓總線上只剩這台裝置再使用 LSS。</translation>
+        <translation>以 %1（舊鮑率）重新連線並掃描：若節點 %2 仍在，表示變更未生效——將它斷電再上電，再以 %3 嘗試。若兩種鮑率都沒有回應，請試試其他標準鮑率，或讓匯流排上只剩這台裝置再使用 LSS。</translation>
     </message>
     <message>
         <source>cannot read the bit-rate parameter: %1</source>
@@ -1459,11 +1459,11 @@
     </message>
     <message>
         <source>%1 went to %2 instead of %3: statusword 0x%4</source>
-        <translation>%1 進入了%2，而不是%3：狀態字元 0x%4</translation>
+        <translation>%1 進入了%2，而不是%3：狀態字 0x%4</translation>
     </message>
     <message>
         <source>%1 did not reach %2 within %3 ms: statusword 0x%4 (%5): %6</source>
-        <translation>%1 未在 %3 ms 內到達%2：狀態字元 0x%4（%5）：%6</translation>
+        <translation>%1 未在 %3 ms 內到達%2：狀態字 0x%4（%5）：%6</translation>
     </message>
     <message>
         <source>missing bit %1 (%2)</source>
@@ -1511,7 +1511,7 @@
     </message>
     <message>
         <source>Controlword bit 7 low first: fault reset acts on its rising edge</source>
-        <translation>先將控制字元位元 7 設為低：故障重置在上升緣動作</translation>
+        <translation>先將控制字位元 7 設為低：故障重置在上升緣動作</translation>
     </message>
     <message>
         <source>Clear the fault (Fault reset, CiA 402 transition 15)</source>
@@ -1543,7 +1543,7 @@
     </message>
     <message>
         <source>Statusword must show %1</source>
-        <translation>狀態字元必須顯示%1</translation>
+        <translation>狀態字必須顯示%1</translation>
     </message>
     <message>
         <source>CiA 402 enable of node %1</source>
@@ -1639,7 +1639,7 @@
     </message>
     <message>
         <source>the drive faulted during the test move (statusword 0x%1)</source>
-        <translation>測試運動中驅動器發生故障（狀態字元 0x%1）</translation>
+        <translation>測試運動中驅動器發生故障（狀態字 0x%1）</translation>
     </message>
     <message>
         <source>the drive left Operation enabled during the test move (now %1)</source>
@@ -1887,11 +1887,11 @@
     </message>
     <message>
         <source>node %1 sent no boot-up within %2 ms</source>
-        <translation>節點 %1 未在 %2 ms 內送出上線報文</translation>
+        <translation>節點 %1 未在 %2 ms 內送出上線訊息</translation>
     </message>
     <message>
         <source>node %1 sent no boot-up or heartbeat within %2 ms</source>
-        <translation>節點 %1 未在 %2 ms 內送出上線報文或心跳</translation>
+        <translation>節點 %1 未在 %2 ms 內送出上線訊息或心跳</translation>
     </message>
     <message>
         <source>unknown step</source>
@@ -2023,7 +2023,7 @@
     </message>
     <message>
         <source>Recovered from bus off</source>
-        <translation>已從總線關閉恢復</translation>
+        <translation>已從匯流排關閉恢復</translation>
     </message>
     <message>
         <source>CAN-ID collision</source>
@@ -2375,7 +2375,7 @@
     </message>
     <message>
         <source>Bus state</source>
-        <translation>總線狀態</translation>
+        <translation>匯流排狀態</translation>
     </message>
     <message>
         <source>Problem</source>
@@ -2403,11 +2403,11 @@
     </message>
     <message>
         <source>bus-off</source>
-        <translation>總線關閉</translation>
+        <translation>匯流排關閉</translation>
     </message>
     <message>
         <source>bus-off (the controller stopped sending after too many errors)</source>
-        <translation>總線關閉（錯誤過多，控制器已停止傳送）</translation>
+        <translation>匯流排關閉（錯誤過多，控制器已停止傳送）</translation>
     </message>
     <message>
         <source>controller: %1</source>
@@ -2447,7 +2447,7 @@
     </message>
     <message>
         <source>no acknowledge (no other node on the bus, or a different bit rate)</source>
-        <translation>沒有 ACK 應答（總線上沒有其他節點，或鮑率不同）</translation>
+        <translation>沒有 ACK 應答（匯流排上沒有其他節點，或鮑率不同）</translation>
     </message>
     <message>
         <source>protocol violation</source>
@@ -2487,7 +2487,7 @@
     </message>
     <message>
         <source>bus overload</source>
-        <translation>總線過載</translation>
+        <translation>匯流排過載</translation>
     </message>
     <message>
         <source>active error flag</source>
@@ -2571,7 +2571,7 @@
     </message>
     <message>
         <source>bus error</source>
-        <translation>總線錯誤</translation>
+        <translation>匯流排錯誤</translation>
     </message>
     <message>
         <source>controller restarted</source>
@@ -3183,11 +3183,11 @@
     <name>Ds402VendorNotes</name>
     <message>
         <source>P1-01 must be 0x0C (standard CANopen mode) or the drive ignores the controlword. Do not send NMT Reset Node while the servo is on: the drive raises AL401.</source>
-        <translation>P1-01 必須為 0x0C（標準 CANopen 模式），否則驅動器會忽略控制字元。伺服啟動（Servo On）時請勿送出 NMT Reset Node：驅動器會發出 AL401。</translation>
+        <translation>P1-01 必須為 0x0C（標準 CANopen 模式），否則驅動器會忽略控制字。伺服啟動（Servo On）時請勿送出 NMT Reset Node：驅動器會發出 AL401。</translation>
     </message>
     <message>
         <source>H02-00 must be 8 (CANopen control) or the drive ignores the controlword.</source>
-        <translation>H02-00 必須為 8（CANopen 控制），否則驅動器會忽略控制字元。</translation>
+        <translation>H02-00 必須為 8（CANopen 控制），否則驅動器會忽略控制字。</translation>
     </message>
     <message>
         <source>The DEXMART DEV has no CiA 402 state machine: its two motors are run through the Multi-Drive objects (3051h/3052h). Use the Object dictionary dock for it.</source>
@@ -3285,7 +3285,7 @@
     </message>
     <message>
         <source>Bus error</source>
-        <translation>總線錯誤</translation>
+        <translation>匯流排錯誤</translation>
     </message>
     <message>
         <source>Dropped frames</source>
@@ -3314,6 +3314,18 @@
     <message>
         <source>No heartbeat for %1 ms (period %2 ms)</source>
         <translation>%1 ms 內沒有心跳（週期 %2 ms）</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>錯誤</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>警告</translation>
+    </message>
+    <message>
+        <source>info</source>
+        <translation>資訊</translation>
     </message>
 </context>
 <context>
@@ -3404,7 +3416,7 @@
     </message>
     <message>
         <source>Emergency</source>
-        <translation>緊急報文</translation>
+        <translation>緊急訊息</translation>
     </message>
     <message>
         <source>Error code</source>
@@ -3876,7 +3888,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>PDO layout exported to %1: %2 PDO messages, %3 raw signals</source>
-        <translation>PDO 配置已匯出至 %1：%2 個 PDO 報文，%3 個原始訊號</translation>
+        <translation>PDO 配置已匯出至 %1：%2 個 PDO 訊息，%3 個原始訊號</translation>
     </message>
     <message>
         <source>Export PDO layout as DBC</source>
@@ -3923,7 +3935,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>DEXMART DEV: the COB-ID is read-only, so a PDO cannot be switched off while it is remapped: the mapping changes while the message is in use.</source>
-        <translation>DEXMART DEV：COB-ID 為唯讀，重新映射時無法關閉 PDO：映射會在報文使用中變更。</translation>
+        <translation>DEXMART DEV：COB-ID 為唯讀，重新映射時無法關閉 PDO：映射會在訊息使用中變更。</translation>
     </message>
     <message>
         <source>At most 8 objects per PDO. The power-on mapping comes from parameter 09-26; a change made here is lost at power-off unless stored.</source>
@@ -4041,7 +4053,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Fault reset (transition 15): clears the fault once its cause is removed. Sends controlword 6040h = 0000h, then 0080h (bit 7 rising). Expect Switch on disabled: fault bit 3 off, bit 6 on.</source>
-        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字元 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入禁止啟動（Switch on disabled）：故障位元 3 為 0，位元 6 為 1。</translation>
+        <translation>故障重置（轉換 15）：在故障原因排除後清除故障。送出控制字 6040h = 0000h，接著 0080h（位元 7 上升緣）。預期進入禁止啟動（Switch on disabled）：故障位元 3 為 0，位元 6 為 1。</translation>
     </message>
     <message>
         <source>Shutdown (transition 2): gets the drive ready, the motor stays without power. Sends 6040h = 0006h. Expect Ready to switch on: bits 0 and 5 on, bit 6 off.</source>
@@ -4161,6 +4173,19 @@ Bits on: %1</source>
     </message>
 </context>
 <context>
+    <name>WizardButtons</name>
+    <message>
+        <source>&lt; &amp;Back</source>
+        <extracomment>A wizard&apos;s button to the previous step</extracomment>
+        <translation>&lt; 上一步(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Next &gt;</source>
+        <extracomment>A wizard&apos;s button to the next step</extracomment>
+        <translation>下一步(&amp;N) &gt;</translation>
+    </message>
+</context>
+<context>
     <name>WizardFramesPane</name>
     <message>
         <source>Time (s)</source>
@@ -4214,7 +4239,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Connect to the machine&apos;s bus first (not listen-only).</source>
-        <translation>請先連線到機台的總線（非僅監聽）。</translation>
+        <translation>請先連線到機台的匯流排（非僅監聽）。</translation>
     </message>
     <message>
         <source>Reading the drives&apos; values (dry run)…</source>
@@ -4315,7 +4340,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Bus lost (%1). The wizard stopped: nothing more can be sent to node %2.</source>
-        <translation>總線中斷（%1）。精靈已停止：無法再向節點 %2 傳送任何訊息。</translation>
+        <translation>匯流排中斷（%1）。精靈已停止：無法再向節點 %2 傳送任何訊息。</translation>
     </message>
     <message>
         <source>Last known state: %1, %2.</source>
@@ -4331,19 +4356,19 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Check at the drive (display, enable LED, brake) before going near the machine. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
-        <translation>靠近機台前，請先在驅動器上確認（顯示器、致能指示燈、煞車）。CoScope 會自動重新連線；總線恢復後請按「讀取狀態」。</translation>
+        <translation>靠近機台前，請先在驅動器上確認（顯示器、致能指示燈、煞車）。CoScope 會自動重新連線；匯流排恢復後請按「讀取狀態」。</translation>
     </message>
     <message>
         <source>Stopped: bus lost (%1) during step %2 of %3. The steps before it were sent; this one may or may not have reached the device, nothing after it was sent. The device may be half-configured (a PDO left disabled, a new node-ID or bit rate stored but not applied). When the bus is back, read the objects of this script back before running it again.</source>
-        <translation>已停止：第 %2 步（共 %3 步）執行時總線中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。總線恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
+        <translation>已停止：第 %2 步（共 %3 步）執行時匯流排中斷（%1）。之前的步驟都已送出；這一步不一定已送達裝置，之後的步驟都沒有送出。裝置可能只設定了一半（某個 PDO 仍被停用，或新的節點 ID、鮑率已儲存但尚未生效）。匯流排恢復後，請先讀回此腳本涉及的物件，再重新執行。</translation>
     </message>
     <message>
         <source>Stopped: bus lost (%1) while applying %2 of node %3 (last known %4). The PDO may be left disabled (COB-ID bit 31 set) with its mapping half written, and the node pre-operational. When the bus is back, read %2 back (Choose page) and apply again; the drive&apos;s own communication-loss reaction decides what it does meanwhile.</source>
-        <translation>已停止：套用節點 %3 的 %2 時總線中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。總線恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
+        <translation>已停止：套用節點 %3 的 %2 時匯流排中斷（%1）（最後已知：%4）。該 PDO 可能仍被停用（COB-ID 第 31 位元為 1），映射只寫入一半，節點停在預操作狀態。匯流排恢復後，請讀回 %2（選擇頁）並重新套用；在此期間驅動器如何動作，取決於它自身的通訊中斷反應。</translation>
     </message>
     <message>
         <source>Stopped: bus lost (%1) during the change of node %2 (last known %3). The device may have taken the new node-ID or bit rate, stored it without applying it, or kept the old one. When the bus is back, scan (and if nothing answers, connect at the other bit rate) to see where the device is before changing anything else.</source>
-        <translation>已停止：變更節點 %2 時總線中斷（%1）（最後已知：%3）。裝置可能已採用新的節點 ID 或鮑率、已儲存但尚未生效，或仍保留舊值。總線恢復後，請先掃描（若無回應，改用另一個鮑率連線），確認裝置目前的設定，再做其他變更。</translation>
+        <translation>已停止：變更節點 %2 時匯流排中斷（%1）（最後已知：%3）。裝置可能已採用新的節點 ID 或鮑率、已儲存但尚未生效，或仍保留舊值。匯流排恢復後，請先掃描（若無回應，改用另一個鮑率連線），確認裝置目前的設定，再做其他變更。</translation>
     </message>
 </context>
 <context>
@@ -4358,7 +4383,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>The controller went bus-off and sends nothing; restart it (check wiring, termination and bit rate first)</source>
-        <translation>控制器已進入總線關閉（bus-off），不再傳送任何封包；請重新啟動它（請先檢查配線、終端電阻與位元速率）</translation>
+        <translation>控制器已進入匯流排關閉（bus-off），不再傳送任何封包；請重新啟動它（請先檢查配線、終端電阻與位元速率）</translation>
     </message>
     <message>
         <source>No source</source>
@@ -4414,7 +4439,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>bus-off</source>
-        <translation>總線關閉</translation>
+        <translation>匯流排關閉</translation>
     </message>
     <message>
         <source> · TEC %1 REC %2</source>
@@ -4426,11 +4451,11 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Controller restarted after bus-off</source>
-        <translation>控制器已在總線關閉後重新啟動</translation>
+        <translation>控制器已在匯流排關閉後重新啟動</translation>
     </message>
     <message>
         <source>Restart after bus-off failed: %1</source>
-        <translation>總線關閉後重新啟動失敗：%1</translation>
+        <translation>匯流排關閉後重新啟動失敗：%1</translation>
     </message>
     <message>
         <source>Last restart failed: %1</source>
@@ -4462,7 +4487,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Adapter lost: %1. The trace keeps everything; CoScope reopens the bus when it is back (Disconnect stops trying).</source>
-        <translation>轉接器中斷：%1。追蹤保留所有已收到的封包；轉接器恢復後 CoScope 會重新開啟總線（按「中斷連線」即停止重試）。</translation>
+        <translation>轉接器中斷：%1。追蹤保留所有已收到的封包；轉接器恢復後 CoScope 會重新開啟匯流排（按「中斷連線」即停止重試）。</translation>
     </message>
 </context>
 <context>
@@ -4540,11 +4565,11 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Connect to the machine&apos;s bus first (not listen-only): the comparison reads the drives.</source>
-        <translation>請先連線到機台的總線（非僅監聽）：比較會讀取驅動器。</translation>
+        <translation>請先連線到機台的匯流排（非僅監聽）：比較會讀取驅動器。</translation>
     </message>
     <message>
         <source>Scanning the bus and reading the drives…</source>
-        <translation>正在掃描總線並讀取驅動器…</translation>
+        <translation>正在掃描匯流排並讀取驅動器…</translation>
     </message>
     <message>
         <source>The machine is as in the project.</source>
@@ -4692,7 +4717,7 @@ Bits on: %1</source>
     <name>coscope::gui::ConnectDialog</name>
     <message>
         <source>Connect to a CAN bus</source>
-        <translation>連線到 CAN 總線</translation>
+        <translation>連線到 CAN 匯流排</translation>
     </message>
     <message>
         <source>(recent connections)</source>
@@ -4748,7 +4773,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Virtual drives on the in-process bus:</source>
-        <translation>程序內總線上的虛擬驅動器：</translation>
+        <translation>程序內匯流排上的虛擬驅動器：</translation>
     </message>
     <message>
         <source>Drive (dictionary)</source>
@@ -4820,7 +4845,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Type or paste a bus URL, e.g. socketcan://can0?bitrate=500000</source>
-        <translation>輸入或貼上總線 URL，例如 socketcan://can0?bitrate=500000</translation>
+        <translation>輸入或貼上匯流排 URL，例如 socketcan://can0?bitrate=500000</translation>
     </message>
     <message>
         <source>URL:</source>
@@ -4868,7 +4893,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>, controller is bus-off: check wiring, termination and bit rate</source>
-        <translation>，控制器已總線關閉：請檢查配線、終端電阻與鮑率</translation>
+        <translation>，控制器已匯流排關閉：請檢查配線、終端電阻與鮑率</translation>
     </message>
     <message>
         <source>, controller stopped</source>
@@ -5052,7 +5077,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>%1 s: statusword %2, position %3, velocity %4</source>
-        <translation>%1 秒：狀態字元 %2，位置 %3，速度 %4</translation>
+        <translation>%1 秒：狀態字 %2，位置 %3，速度 %4</translation>
     </message>
 </context>
 <context>
@@ -5195,7 +5220,7 @@ Bits on: %1</source>
     <name>coscope::gui::Ds402StatusPanel</name>
     <message>
         <source>Statusword (6041h): not read</source>
-        <translation>狀態字元（6041h）：未讀取</translation>
+        <translation>狀態字（6041h）：未讀取</translation>
     </message>
     <message>
         <source>On: </source>
@@ -5207,7 +5232,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Statusword (6041h) = %1 — %2</source>
-        <translation>狀態字元（6041h）= %1 — %2</translation>
+        <translation>狀態字（6041h）= %1 — %2</translation>
     </message>
 </context>
 <context>
@@ -5316,7 +5341,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Connection lost (bus %1). The drive was told to disable if the bus still accepted it; otherwise its own communication-loss reaction (6007h) applies. Check the drive.</source>
-        <translation>連線中斷（總線 %1）。若總線仍可傳送，已通知驅動器停用；否則由驅動器自身的通訊中斷處理（6007h）決定。請檢查驅動器。</translation>
+        <translation>連線中斷（匯流排 %1）。若匯流排仍可傳送，已通知驅動器停用；否則由驅動器自身的通訊中斷處理（6007h）決定。請檢查驅動器。</translation>
     </message>
     <message>
         <source>error</source>
@@ -5352,7 +5377,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Statusword bits</source>
-        <translation>狀態字元位元</translation>
+        <translation>狀態字位元</translation>
     </message>
     <message>
         <source>Saved %1; replay it with: coscope-cli script run BUS %1</source>
@@ -5388,7 +5413,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>Not connected to a bus.</source>
-        <translation>未連線到總線。</translation>
+        <translation>未連線到匯流排。</translation>
     </message>
     <message>
         <source>Listen-only connection: the wizard does not send.</source>
@@ -5396,7 +5421,7 @@ Bits on: %1</source>
     </message>
     <message>
         <source>The bus is not open.</source>
-        <translation>總線未開啟。</translation>
+        <translation>匯流排未開啟。</translation>
     </message>
     <message>
         <source>No drive chosen.</source>
@@ -5448,7 +5473,7 @@ Send 6040h = 000Fh now?</source>
     </message>
     <message>
         <source>%1 done: the drive is now in %2 (statusword %3h).</source>
-        <translation>%1 完成：驅動器目前處於 %2（狀態字元 %3h）。</translation>
+        <translation>%1 完成：驅動器目前處於 %2（狀態字 %3h）。</translation>
     </message>
     <message>
         <source>Step “%1” failed: %2.</source>
@@ -5612,7 +5637,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Node %1 has no statusword 6041h: it is not a CiA 402 drive (%2).</source>
-        <translation>節點 %1 沒有狀態字元 6041h：它不是 CiA 402 驅動器（%2）。</translation>
+        <translation>節點 %1 沒有狀態字 6041h：它不是 CiA 402 驅動器（%2）。</translation>
     </message>
     <message>
         <source>Cannot read the drive&apos;s state: %1. Check that the drive is powered and connected, and its node-ID.</source>
@@ -5624,7 +5649,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>%1 is %2, not %3: the drive is not in CANopen control and will ignore the controlword. Set %1 = %3 first.</source>
-        <translation>%1 為 %2，而非 %3：驅動器不在 CANopen 控制模式，會忽略控制字元。請先將 %1 設為 %3。</translation>
+        <translation>%1 為 %2，而非 %3：驅動器不在 CANopen 控制模式，會忽略控制字。請先將 %1 設為 %3。</translation>
     </message>
     <message>
         <source>Mode of operation (6061h): %1</source>
@@ -5632,7 +5657,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>Bus lost. CoScope reconnects by itself; press “Read state” when the bus is back.</source>
-        <translation>總線中斷。CoScope 會自動重新連線；總線恢復後請按「讀取狀態」。</translation>
+        <translation>匯流排中斷。CoScope 會自動重新連線；匯流排恢復後請按「讀取狀態」。</translation>
     </message>
     <message>
         <source>CiA 402 state unknown</source>
@@ -5640,7 +5665,7 @@ Arm the test move?</source>
     </message>
     <message>
         <source>%1 (statusword %2h)</source>
-        <translation>%1（狀態字元 %2h）</translation>
+        <translation>%1（狀態字 %2h）</translation>
     </message>
     <message>
         <source>a state machine step</source>
@@ -5784,7 +5809,7 @@ Start homing?</source>
     </message>
     <message>
         <source>Homing attained (statusword %1): position actual 6064h = %2. The drive stays enabled.</source>
-        <translation>原點復歸完成（狀態字元 %1）：實際位置 6064h = %2。驅動器保持致能。</translation>
+        <translation>原點復歸完成（狀態字 %1）：實際位置 6064h = %2。驅動器保持致能。</translation>
     </message>
     <message>
         <source>Homing stopped (%1) before home was set.</source>
@@ -5878,7 +5903,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Target reached (statusword %1): position actual 6064h = %2.</source>
-        <translation>已到達目標（狀態字元 %1）：實際位置 6064h = %2。</translation>
+        <translation>已到達目標（狀態字 %1）：實際位置 6064h = %2。</translation>
     </message>
     <message>
         <source>the position move failed</source>
@@ -5951,8 +5976,80 @@ Arm the position move?</source>
         <translation>事件</translation>
     </message>
     <message>
-        <source>Double-click an event to show its frame in the trace</source>
-        <translation>按兩下事件可在追蹤中顯示其封包</translation>
+        <source>Double-click an event to show its frame in the trace; click a column&apos;s title to sort</source>
+        <translation>按兩下事件可在追蹤中顯示其封包；按欄位標題可排序</translation>
+    </message>
+    <message>
+        <source>Only the events of one node</source>
+        <translation>只顯示單一節點的事件</translation>
+    </message>
+    <message>
+        <source>All nodes</source>
+        <translation>所有節點</translation>
+    </message>
+    <message>
+        <source>Only the events of one kind</source>
+        <translation>只顯示單一類型的事件</translation>
+    </message>
+    <message>
+        <source>All kinds</source>
+        <translation>所有類型</translation>
+    </message>
+    <message>
+        <source>Only the events at least this severe</source>
+        <translation>只顯示至少達到此嚴重程度的事件</translation>
+    </message>
+    <message>
+        <source>All severities</source>
+        <translation>所有嚴重程度</translation>
+    </message>
+    <message>
+        <source>Warnings and errors</source>
+        <translation>警告與錯誤</translation>
+    </message>
+    <message>
+        <source>Errors only</source>
+        <translation>僅錯誤</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>匯出 CSV…</translation>
+    </message>
+    <message>
+        <source>Write the events shown (with the filters and the order above) to a CSV file</source>
+        <translation>將目前顯示的事件（依上方的篩選與排序）寫入 CSV 檔案</translation>
+    </message>
+    <message>
+        <source>Node %1</source>
+        <translation>節點 %1</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 events</source>
+        <translation>%L2 個事件中的 %L1 個</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln event(s)</source>
+        <translation>
+            <numerusform>%Ln 個事件</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export events</source>
+        <translation>匯出事件</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The events could not be written: %1</source>
+        <translation>無法寫入事件：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln event(s) written to %1</source>
+        <translation>
+            <numerusform>已將 %Ln 個事件寫入 %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5976,6 +6073,14 @@ Arm the position move?</source>
     <message>
         <source>Frame</source>
         <translation>封包</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>時間</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>嚴重程度</translation>
     </message>
 </context>
 <context>
@@ -6180,16 +6285,16 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Bus load (%)</source>
-        <translation>總線負載（%）</translation>
+        <translation>匯流排負載（%）</translation>
     </message>
     <message>
         <source>Bus load</source>
-        <translation>總線負載</translation>
+        <translation>匯流排負載</translation>
     </message>
     <message numerus="yes">
         <source>%n frame(s) over %1 s; bus load average %2 %, peak %3 % at %4 bit/s; %5 error frame(s)</source>
         <translation>
-            <numerusform>%1 秒內共 %n 個封包；總線負載平均 %2 %，峰值 %3 %，鮑率 %4 bit/s；%5 個錯誤封包</numerusform>
+            <numerusform>%1 秒內共 %n 個封包；匯流排負載平均 %2 %，峰值 %3 %，鮑率 %4 bit/s；%5 個錯誤封包</numerusform>
         </translation>
     </message>
     <message>
@@ -6272,6 +6377,34 @@ Arm the position move?</source>
         <source>CoScope&apos;s own traffic: not counted in the verdict.</source>
         <translation>CoScope 自己的通訊：不計入結論。</translation>
     </message>
+    <message>
+        <source>Export report…</source>
+        <translation>匯出報告…</translation>
+    </message>
+    <message>
+        <source>Save the report for a ticket: an HTML page or a PDF, each finding with the frame numbers it rests on</source>
+        <translation>將報告存成可附在工單中的檔案：HTML 網頁或 PDF，每個發現項目都附上其依據的封包編號</translation>
+    </message>
+    <message>
+        <source>HTML page (*.html)</source>
+        <translation>HTML 網頁 (*.html)</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export the health report</source>
+        <translation>匯出健康報告</translation>
+    </message>
+    <message>
+        <source>The report could not be written: %1</source>
+        <translation>無法寫入報告：%1</translation>
+    </message>
+    <message>
+        <source>Health report written to %1</source>
+        <translation>健康報告已寫入 %1</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::HealthModel</name>
@@ -6317,7 +6450,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Boot-ups</source>
-        <translation>上線報文</translation>
+        <translation>上線訊息</translation>
     </message>
     <message>
         <source>Resets</source>
@@ -6381,7 +6514,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>bus</source>
-        <translation>總線</translation>
+        <translation>匯流排</translation>
     </message>
     <message>
         <source>none</source>
@@ -6537,7 +6670,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>&amp;Bus</source>
-        <translation>總線(&amp;B)</translation>
+        <translation>匯流排(&amp;B)</translation>
     </message>
     <message>
         <source>&amp;Connect…</source>
@@ -6561,7 +6694,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Bus</source>
-        <translation>總線</translation>
+        <translation>匯流排</translation>
     </message>
     <message>
         <source>&amp;Commission</source>
@@ -6593,15 +6726,15 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Connect to a bus first</source>
-        <translation>請先連線到總線</translation>
+        <translation>請先連線到匯流排</translation>
     </message>
     <message>
         <source>Listen-only bus: commissioning would transmit</source>
-        <translation>僅監聽總線：調機需要傳送</translation>
+        <translation>僅監聽匯流排：調機需要傳送</translation>
     </message>
     <message>
         <source>Listen-only bus</source>
-        <translation>僅監聽總線</translation>
+        <translation>僅監聽匯流排</translation>
     </message>
     <message>
         <source>A save is still running; wait for it or cancel it first</source>
@@ -6711,11 +6844,11 @@ Arm the position move?</source>
     </message>
     <message>
         <source>the bus is listen-only</source>
-        <translation>總線為僅監聽</translation>
+        <translation>匯流排為僅監聽</translation>
     </message>
     <message>
         <source>no bus is open</source>
-        <translation>沒有已開啟的總線</translation>
+        <translation>沒有已開啟的匯流排</translation>
     </message>
     <message>
         <source>SYNC every %1 on %2h</source>
@@ -6741,7 +6874,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Connect to a bus first</source>
-        <translation>請先連線到總線</translation>
+        <translation>請先連線到匯流排</translation>
     </message>
     <message>
         <source>Listen-only connection: CoScope sends nothing</source>
@@ -6749,11 +6882,11 @@ Arm the position move?</source>
     </message>
     <message>
         <source>The bus is not open</source>
-        <translation>總線未開啟</translation>
+        <translation>匯流排未開啟</translation>
     </message>
     <message>
         <source>Start or stop the SYNC producer (Bus ▸ Master settings… sets its period)</source>
-        <translation>啟動或停止 SYNC 生產者（週期在「總線 ▸ 主站設定…」中設定）</translation>
+        <translation>啟動或停止 SYNC 生產者（週期在「匯流排 ▸ 主站設定…」中設定）</translation>
     </message>
     <message>
         <source>SYNC stopped: %1</source>
@@ -6805,7 +6938,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Communication cycle period (1006h): the time between two SYNC messages, to the microsecond</source>
-        <translation>通訊循環週期（1006h）：兩個 SYNC 報文之間的時間，精確到微秒</translation>
+        <translation>通訊循環週期（1006h）：兩個 SYNC 訊息之間的時間，精確到微秒</translation>
     </message>
     <message>
         <source>Period:</source>
@@ -6825,7 +6958,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>COB-ID of the SYNC message (1005h), 80h by default; hex as 80h or 0x80</source>
-        <translation>SYNC 報文的 COB-ID（1005h），預設 80h；十六進位寫成 80h 或 0x80</translation>
+        <translation>SYNC 訊息的 COB-ID（1005h），預設 80h；十六進位寫成 80h 或 0x80</translation>
     </message>
     <message>
         <source>COB-ID (1005h):</source>
@@ -6868,7 +7001,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>The node-ID (the device&apos;s address on the bus, 1-127) or the baud rate (CAN bit rate).</source>
-        <translation>節點 ID（裝置在總線上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
+        <translation>節點 ID（裝置在匯流排上的位址，1-127）或鮑率（CAN 位元速率）。</translation>
     </message>
     <message>
         <source>Node-ID</source>
@@ -6919,7 +7052,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>These are the devices CoScope has seen on the bus. &lt;b&gt;Scan&lt;/b&gt; asks every node-ID 1-127 for its device type and identity (SDO reads, changes nothing). A new device without node-ID (LSS-unconfigured) stays silent: &lt;b&gt;Find device without node-ID&lt;/b&gt; finds it with LSS Fastscan (CiA 305).</source>
-        <translation>以下是 CoScope 在總線上看到的裝置。&lt;b&gt;掃描&lt;/b&gt;會向節點 ID 1-127 逐一查詢裝置類型與識別資訊（SDO 讀取，不變更任何內容）。沒有節點 ID 的新裝置（尚未 LSS 設定）不會發出任何訊息：&lt;b&gt;尋找沒有節點 ID 的裝置&lt;/b&gt;會以 LSS Fastscan（CiA 305）找出它。</translation>
+        <translation>以下是 CoScope 在匯流排上看到的裝置。&lt;b&gt;掃描&lt;/b&gt;會向節點 ID 1-127 逐一查詢裝置類型與識別資訊（SDO 讀取，不變更任何內容）。沒有節點 ID 的新裝置（尚未 LSS 設定）不會發出任何訊息：&lt;b&gt;尋找沒有節點 ID 的裝置&lt;/b&gt;會以 LSS Fastscan（CiA 305）找出它。</translation>
     </message>
     <message>
         <source>Node-ID</source>
@@ -6935,7 +7068,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Scan the bus</source>
-        <translation>掃描總線</translation>
+        <translation>掃描匯流排</translation>
     </message>
     <message>
         <source>Find device without node-ID (LSS Fastscan)</source>
@@ -7031,15 +7164,15 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Not connected to a bus: this wizard talks to the devices, so connect first (File ▸ Connect).</source>
-        <translation>未連線到總線：此精靈需要與裝置通訊，請先連線（檔案 ▸ 連線）。</translation>
+        <translation>未連線到匯流排：此精靈需要與裝置通訊，請先連線（檔案 ▸ 連線）。</translation>
     </message>
     <message>
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard cannot change anything. Reconnect without listen-only to use it.</source>
-        <translation>總線以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法變更任何設定。請取消僅監聽後重新連線再使用。</translation>
+        <translation>匯流排以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法變更任何設定。請取消僅監聽後重新連線再使用。</translation>
     </message>
     <message>
         <source>The bus is not open (yet): wait for it to connect.</source>
-        <translation>總線（尚）未開啟：請等待連線完成。</translation>
+        <translation>匯流排（尚）未開啟：請等待連線完成。</translation>
     </message>
     <message>
         <source>The connection was closed while the change was running. Connect again and scan to see where the device is.</source>
@@ -7047,7 +7180,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>No device without node-ID answered (LSS Fastscan). Every device on the bus has a node-ID.</source>
-        <translation>沒有無節點 ID 的裝置回應（LSS Fastscan）。總線上每台裝置都有節點 ID。</translation>
+        <translation>沒有無節點 ID 的裝置回應（LSS Fastscan）。匯流排上每台裝置都有節點 ID。</translation>
     </message>
     <message>
         <source>Found a device without node-ID: vendor %1h, product %2h, serial %3h. It waits in LSS configuration state for its node-ID.</source>
@@ -7067,11 +7200,11 @@ Arm the position move?</source>
     </message>
     <message>
         <source>Node-ID %1 is already used by another device on this bus: two devices with one node-ID break communication.</source>
-        <translation>節點 ID %1 已被此總線上的另一台裝置使用：兩台裝置使用同一個節點 ID 會導致通訊中斷。</translation>
+        <translation>節點 ID %1 已被此匯流排上的另一台裝置使用：兩台裝置使用同一個節點 ID 會導致通訊中斷。</translation>
     </message>
     <message>
         <source>Choose a bit rate other than the one the bus runs at now (%1).</source>
-        <translation>請選擇與總線目前鮑率（%1）不同的位元速率。</translation>
+        <translation>請選擇與匯流排目前鮑率（%1）不同的位元速率。</translation>
     </message>
     <message>
         <source>the device without node-ID</source>
@@ -7099,7 +7232,7 @@ Arm the position move?</source>
     </message>
     <message>
         <source>&lt;b style=&apos;color:#a40000&apos;&gt;Every other node on this bus&lt;/b&gt; (%1) stays at %2. After the change, %3 only talks at %4: the others cannot reach it until they are changed too. Change them all, one after another, then the bus runs at %4.</source>
-        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此總線上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後總線就會以 %4 運作。</translation>
+        <translation>&lt;b style=&apos;color:#a40000&apos;&gt;此匯流排上的其他所有節點&lt;/b&gt;（%1）仍維持 %2。變更後，%3 只會以 %4 通訊：其他節點在變更之前都無法與它通訊。請逐一變更所有節點，之後匯流排就會以 %4 運作。</translation>
     </message>
     <message>
         <source>none seen</source>
@@ -7147,7 +7280,7 @@ What to check: %3</source>
     </message>
     <message>
         <source>Done: the device that was %1 now answers at node-ID %2 (it reported on the bus).</source>
-        <translation>完成：原本為 %1 的裝置現在以節點 ID %2 回應（已在總線上回報）。</translation>
+        <translation>完成：原本為 %1 的裝置現在以節點 ID %2 回應（已在匯流排上回報）。</translation>
     </message>
     <message>
         <source>without node-ID</source>
@@ -7178,7 +7311,7 @@ What to check: %3</source>
     <message>
         <source>The bus did not open at %1.
 %2</source>
-        <translation>總線無法以 %1 開啟。
+        <translation>匯流排無法以 %1 開啟。
 %2</translation>
     </message>
     <message>
@@ -7242,11 +7375,11 @@ What to check: %3</source>
     </message>
     <message>
         <source>Listen-only bus: a scan would transmit</source>
-        <translation>僅監聽總線：掃描需要傳送</translation>
+        <translation>僅監聽匯流排：掃描需要傳送</translation>
     </message>
     <message>
         <source>Connect to a bus first</source>
-        <translation>請先連線到總線</translation>
+        <translation>請先連線到匯流排</translation>
     </message>
     <message>
         <source>Read the device type 1000h of every node-ID 1–127, then each answering node&apos;s identity</source>
@@ -7258,7 +7391,7 @@ What to check: %3</source>
     </message>
     <message>
         <source>Not connected to a bus</source>
-        <translation>未連線到總線</translation>
+        <translation>未連線到匯流排</translation>
     </message>
     <message>
         <source>An NMT command is waiting for your answer</source>
@@ -7300,7 +7433,7 @@ Frame: %3</source>
         <source>Drive %1 is enabled (Operation enabled, statusword 0x%2): %3 stops it abruptly; the motor loses torque or trips its communication-loss reaction (6007h). %4Disable it first (CiA 402 wizard: Disable).
 
 </source>
-        <translation>驅動器 %1 已致能（Operation enabled，狀態字元 0x%2）：%3會讓它突然停止；馬達會失去扭矩或觸發通訊中斷處理（6007h）。%4請先停用（CiA 402 精靈：停用）。
+        <translation>驅動器 %1 已致能（Operation enabled，狀態字 0x%2）：%3會讓它突然停止；馬達會失去扭矩或觸發通訊中斷處理（6007h）。%4請先停用（CiA 402 精靈：停用）。
 
 </translation>
     </message>
@@ -7318,7 +7451,7 @@ Frame: %3</source>
     </message>
     <message>
         <source>Scan needs a connected bus that is not listen-only</source>
-        <translation>掃描需要已連線且非僅監聽的總線</translation>
+        <translation>掃描需要已連線且非僅監聽的匯流排</translation>
     </message>
     <message>
         <source>A scan is already running</source>
@@ -7374,7 +7507,7 @@ Frame: %3</source>
     </message>
     <message>
         <source>Listen-only bus: a program download would transmit</source>
-        <translation>僅監聽總線：程式下載需要發送報文</translation>
+        <translation>僅監聽匯流排：程式下載需要發送訊息</translation>
     </message>
     <message>
         <source>Select a node first</source>
@@ -7445,7 +7578,7 @@ Software version (100Ah): %3</source>
     </message>
     <message>
         <source>boot-up</source>
-        <translation>上線報文</translation>
+        <translation>上線訊息</translation>
     </message>
     <message>
         <source>heartbeat</source>
@@ -7513,11 +7646,11 @@ Software version (100Ah): %3</source>
     </message>
     <message>
         <source>its EMCY</source>
-        <translation>其緊急報文 (EMCY)</translation>
+        <translation>其緊急訊息 (EMCY)</translation>
     </message>
     <message>
         <source>The node sent its boot-up message; after boot-up a node is Pre-operational.</source>
-        <translation>節點送出了上線報文；上線後節點處於預操作狀態。</translation>
+        <translation>節點送出了上線訊息；上線後節點處於預操作狀態。</translation>
     </message>
     <message>
         <source>The node&apos;s heartbeat says so.</source>
@@ -7545,7 +7678,7 @@ Software version (100Ah): %3</source>
     </message>
     <message>
         <source>The node sends EMCY, which CiA 301 allows only in Pre-operational and Operational (its PDOs would show Operational).</source>
-        <translation>節點送出緊急報文 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
+        <translation>節點送出緊急訊息 (EMCY)，而 CiA 301 只允許在預操作狀態與操作狀態下送出（其 PDO 才能顯示是否為操作狀態）。</translation>
     </message>
     <message>
         <source>Nothing seen yet shows the node&apos;s state.</source>
@@ -7752,11 +7885,11 @@ Software version (100Ah): %3</source>
     </message>
     <message>
         <source>%1: the bus is listen-only, nothing is sent</source>
-        <translation>%1：總線為僅監聽，不會傳送任何內容</translation>
+        <translation>%1：匯流排為僅監聽，不會傳送任何內容</translation>
     </message>
     <message>
         <source>%1: not connected to a bus</source>
-        <translation>%1：未連線到總線</translation>
+        <translation>%1：未連線到匯流排</translation>
     </message>
     <message>
         <source>Read %1</source>
@@ -7874,7 +8007,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Apply DCF: the bus can no longer transmit</source>
-        <translation>套用 DCF：總線已無法傳送</translation>
+        <translation>套用 DCF：匯流排已無法傳送</translation>
     </message>
     <message>
         <source>Writing %1 objects to node %2…</source>
@@ -7983,11 +8116,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     <name>coscope::gui::PdoChoosePage</name>
     <message>
         <source>Which drive and which message</source>
-        <translation>哪台驅動器、哪個報文</translation>
+        <translation>哪台驅動器、哪個訊息</translation>
     </message>
     <message>
         <source>A PDO (process data object) is one CAN message that carries up to 8 bytes of live values. The drive sends its TPDOs (transmit PDOs, e.g. status and position) and receives its RPDOs (receive PDOs, e.g. commands).</source>
-        <translation>PDO（過程資料物件）是一個 CAN 報文，最多攜帶 8 位元組的即時數值。驅動器會傳送它的 TPDO（傳送 PDO，例如狀態與位置），並接收它的 RPDO（接收 PDO，例如命令）。</translation>
+        <translation>PDO（過程資料物件）是一個 CAN 訊息，最多攜帶 8 位元組的即時數值。驅動器會傳送它的 TPDO（傳送 PDO，例如狀態與位置），並接收它的 RPDO（接收 PDO，例如命令）。</translation>
     </message>
     <message>
         <source>%1 — the drive sends (transmit PDO %2)</source>
@@ -8015,7 +8148,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Message (PDO):</source>
-        <translation>報文（PDO）：</translation>
+        <translation>訊息（PDO）：</translation>
     </message>
     <message>
         <source>Node %1 (no dictionary)</source>
@@ -8031,7 +8164,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Waiting for a drive to appear on the bus…</source>
-        <translation>正在等待驅動器出現在總線上…</translation>
+        <translation>正在等待驅動器出現在匯流排上…</translation>
     </message>
     <message>
         <source>Reading %1 of node %2 from the drive (SDO upload of %3h and %4h)…</source>
@@ -8051,7 +8184,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Dry run (the bus is listen-only, nothing is sent): starting from the dictionary&apos;s defaults, not read from the drive: %1</source>
-        <translation>模擬執行（總線為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
+        <translation>模擬執行（匯流排為僅監聽，不會傳送任何內容）：以字典預設值為起點，而非從驅動器讀取：%1</translation>
     </message>
     <message>
         <source>Now in the drive: %1</source>
@@ -8059,7 +8192,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>(nothing mapped: the message is empty)</source>
-        <translation>（沒有映射：報文為空）</translation>
+        <translation>（沒有映射：訊息為空）</translation>
     </message>
     <message>
         <source>Good to know about this drive:</source>
@@ -8098,11 +8231,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     <name>coscope::gui::PdoMappingPage</name>
     <message>
         <source>What the message carries</source>
-        <translation>報文攜帶的內容</translation>
+        <translation>訊息攜帶的內容</translation>
     </message>
     <message>
         <source>Pick the values to put in the message, in the order they appear in the frame (the PDO mapping). Double-click or drag an object to the right; drag or use Up/Down to reorder. A frame holds at most 8 bytes (64 bits).</source>
-        <translation>依封包中出現的順序挑選要放進報文的值（即 PDO 映射）。按兩下物件或將其拖曳到右側；以拖曳或「上移／下移」調整順序。一個封包最多 8 位元組（64 位元）。</translation>
+        <translation>依封包中出現的順序挑選要放進訊息的值（即 PDO 映射）。按兩下物件或將其拖曳到右側；以拖曳或「上移／下移」調整順序。一個封包最多 8 位元組（64 位元）。</translation>
     </message>
     <message>
         <source>Search by name or index, e.g. velocity or 606C</source>
@@ -8138,11 +8271,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Objects this drive allows in the message:</source>
-        <translation>此驅動器允許放入報文的物件：</translation>
+        <translation>此驅動器允許放入訊息的物件：</translation>
     </message>
     <message>
         <source>In the message, in frame order:</source>
-        <translation>報文內容（依封包順序）：</translation>
+        <translation>訊息內容（依封包順序）：</translation>
     </message>
     <message>
         <source>The frame, byte by byte:</source>
@@ -8174,7 +8307,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Nothing mapped: the message would carry no data.</source>
-        <translation>沒有映射：報文將不攜帶任何資料。</translation>
+        <translation>沒有映射：訊息將不攜帶任何資料。</translation>
     </message>
     <message>
         <source>Same as in the drive now.</source>
@@ -8193,11 +8326,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     <name>coscope::gui::PdoTimingPage</name>
     <message>
         <source>When the message is sent</source>
-        <translation>報文何時送出</translation>
+        <translation>訊息何時送出</translation>
     </message>
     <message>
         <source>Choose what makes the drive send the message (TPDO) or act on it (RPDO), and the CAN-ID it uses.</source>
-        <translation>選擇讓驅動器傳送報文（TPDO）或處理報文（RPDO）的觸發條件，以及所使用的 CAN-ID。</translation>
+        <translation>選擇讓驅動器傳送訊息（TPDO）或處理訊息（RPDO）的觸發條件，以及所使用的 CAN-ID。</translation>
     </message>
     <message>
         <source>On SYNC, every n-th SYNC (synchronous cyclic, type 1–240)</source>
@@ -8237,7 +8370,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Message switched on (COB-ID bit 31 = 0: PDO valid)</source>
-        <translation>報文已開啟（COB-ID 位元 31 = 0：PDO 有效）</translation>
+        <translation>訊息已開啟（COB-ID 位元 31 = 0：PDO 有效）</translation>
     </message>
     <message>
         <source>Default</source>
@@ -8261,11 +8394,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>This drive fixes the CAN-ID (COB-ID read-only): it cannot be changed, and the message cannot be switched off</source>
-        <translation>此驅動器的 CAN-ID 固定（COB-ID 唯讀）：無法變更，報文也無法關閉</translation>
+        <translation>此驅動器的 CAN-ID 固定（COB-ID 唯讀）：無法變更，訊息也無法關閉</translation>
     </message>
     <message>
         <source>The drive waits at least this long between two messages (100 µs units on the bus)</source>
-        <translation>驅動器在兩個報文之間至少等待這麼久（總線上以 100 µs 為單位）</translation>
+        <translation>驅動器在兩個訊息之間至少等待這麼久（匯流排上以 100 µs 為單位）</translation>
     </message>
     <message>
         <source>Not available on this drive or for an RPDO</source>
@@ -8273,7 +8406,7 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Event-driven TPDO: sent at least this often; RPDO: the drive reports a timeout when no message came for this long</source>
-        <translation>事件觸發 TPDO：至少以此頻率送出；RPDO：超過此時間未收到報文時，驅動器會回報逾時</translation>
+        <translation>事件觸發 TPDO：至少以此頻率送出；RPDO：超過此時間未收到訊息時，驅動器會回報逾時</translation>
     </message>
     <message>
         <source>Not available on this drive</source>
@@ -8281,11 +8414,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Someone must send SYNC (a SYNC producer, object 1005h/1006h) or this message never goes out.</source>
-        <translation>必須有設備送出 SYNC（SYNC 產生者，物件 1005h/1006h），否則此報文永遠不會送出。</translation>
+        <translation>必須有設備送出 SYNC（SYNC 產生者，物件 1005h/1006h），否則此訊息永遠不會送出。</translation>
     </message>
     <message>
         <source>The master must send SYNC after the message, every cycle.</source>
-        <translation>主站必須在每個週期於報文之後送出 SYNC。</translation>
+        <translation>主站必須在每個週期於訊息之後送出 SYNC。</translation>
     </message>
     <message>
         <source>Event timer off: sent only when a mapped value changes.</source>
@@ -8301,11 +8434,11 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>CAN-ID %1h is not the default %2h: make sure no other message uses it.</source>
-        <translation>CAN-ID %1h 不是預設的 %2h：請確認沒有其他報文使用它。</translation>
+        <translation>CAN-ID %1h 不是預設的 %2h：請確認沒有其他訊息使用它。</translation>
     </message>
     <message>
         <source>The message will be switched off: the drive will neither send nor accept it.</source>
-        <translation>報文將被關閉：驅動器既不傳送也不接收它。</translation>
+        <translation>訊息將被關閉：驅動器既不傳送也不接收它。</translation>
     </message>
     <message>
         <source>AIMOTOR: synchronous PDOs need SYNC from the master.</source>
@@ -8324,15 +8457,15 @@ SDO 下載 %n 位元組：%1</numerusform>
     </message>
     <message>
         <source>Not connected to a bus: this wizard talks to the drive, so connect first (File ▸ Connect).</source>
-        <translation>未連線到總線：此精靈需要與驅動器通訊，請先連線（檔案 ▸ 連線）。</translation>
+        <translation>未連線到匯流排：此精靈需要與驅動器通訊，請先連線（檔案 ▸ 連線）。</translation>
     </message>
     <message>
         <source>The bus is open listen-only: CoScope never transmits on it, so this wizard can neither read nor change the drive. Reconnect without listen-only to use it.</source>
-        <translation>總線以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法讀取或變更驅動器。請取消僅監聽後重新連線再使用。</translation>
+        <translation>匯流排以僅監聽方式開啟：CoScope 不會在上面傳送，因此此精靈無法讀取或變更驅動器。請取消僅監聽後重新連線再使用。</translation>
     </message>
     <message>
         <source>The bus is not open (yet): wait for it to connect.</source>
-        <translation>總線（尚）未開啟：請等待連線完成。</translation>
+        <translation>匯流排（尚）未開啟：請等待連線完成。</translation>
     </message>
     <message>
         <source>the connection changed while reading</source>
@@ -8517,7 +8650,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>No frames from the bus yet.</source>
-        <translation>尚未從總線收到封包。</translation>
+        <translation>尚未從匯流排收到封包。</translation>
     </message>
     <message>
         <source>Reading the log…</source>
@@ -8529,11 +8662,11 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>Nothing to plot: connect to a bus (Bus menu) or open a log (File ▸ Open log…).</source>
-        <translation>沒有可繪製的內容：請連線到總線（總線選單）或開啟記錄檔（檔案 ▸ 開啟記錄檔…）。</translation>
+        <translation>沒有可繪製的內容：請連線到匯流排（匯流排選單）或開啟記錄檔（檔案 ▸ 開啟記錄檔…）。</translation>
     </message>
     <message>
         <source>bus %1 node %2</source>
-        <translation>總線 %1 節點 %2</translation>
+        <translation>匯流排 %1 節點 %2</translation>
     </message>
     <message>
         <source>node %1</source>
@@ -8557,7 +8690,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source> or identify the nodes with Bus ▸ Scan network</source>
-        <translation> 或以「總線 ▸ 掃描網路」識別節點</translation>
+        <translation> 或以「匯流排 ▸ 掃描網路」識別節點</translation>
     </message>
     <message>
         <source>PDOs whose mapping is not known (changed before the trace began): %1.</source>
@@ -8609,6 +8742,10 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     <message>
         <source>Click the plot to place cursor A (jumps to the frame), Shift+click for cursor B.</source>
         <translation>按一下圖表可放置游標 A（並跳至該封包），Shift+按一下放置游標 B。</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>時間</translation>
     </message>
 </context>
 <context>
@@ -8739,15 +8876,15 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>No bus is connected.</source>
-        <translation>未連線任何總線。</translation>
+        <translation>未連線任何匯流排。</translation>
     </message>
     <message>
         <source>The bus is listen-only or not open: nothing can be sent.</source>
-        <translation>總線為僅監聽或未開啟：無法傳送。</translation>
+        <translation>匯流排為僅監聽或未開啟：無法傳送。</translation>
     </message>
     <message>
         <source>The bus&apos;s master services are not available.</source>
-        <translation>此總線的主站服務無法使用。</translation>
+        <translation>此匯流排的主站服務無法使用。</translation>
     </message>
     <message>
         <source>No node with a dictionary is known yet: scan the network or assign a dictionary.</source>
@@ -8763,7 +8900,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
     </message>
     <message>
         <source>Sent with each SYNC: start the SYNC producer (Bus menu) for frames to go out.</source>
-        <translation>隨每個 SYNC 傳送：請啟動 SYNC 產生器（總線選單）才會送出封包。</translation>
+        <translation>隨每個 SYNC 傳送：請啟動 SYNC 產生器（匯流排選單）才會送出封包。</translation>
     </message>
     <message>
         <source>Sent.</source>
@@ -8777,7 +8914,7 @@ But storing failed (%1): the new mapping works now and is lost at power-off. %2<
         <source>The RPDOs of node %1 carry motion objects (controlword, mode, targets). While &quot;Hold to run&quot; is held, they are sent with the values shown and the motor can move. Releasing the button sends halt and velocity 0.
 
 Make sure the axis is free to move. Arm?</source>
-        <translation>節點 %1 的 RPDO 含運動物件（控制字元、模式、目標值）。按住「按住運轉」時會以顯示的數值傳送，馬達可能轉動。放開按鈕時傳送暫停（Halt）與速度 0。
+        <translation>節點 %1 的 RPDO 含運動物件（控制字、模式、目標值）。按住「按住運轉」時會以顯示的數值傳送，馬達可能轉動。放開按鈕時傳送暫停（Halt）與速度 0。
 
 請確認軸可以自由移動。要準備運轉嗎？</translation>
     </message>
@@ -8854,11 +8991,11 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>The bus was closed: nothing is claimed about the node&apos;s program.</source>
-        <translation>總線已關閉：不對節點的程式做任何保證。</translation>
+        <translation>匯流排已關閉：不對節點的程式做任何保證。</translation>
     </message>
     <message>
         <source>Listen-only bus: a program download would transmit</source>
-        <translation>僅監聽總線：程式下載需要發送報文</translation>
+        <translation>僅監聽匯流排：程式下載需要發送訊息</translation>
     </message>
     <message>
         <source>Connect to a bus first</source>
@@ -8914,7 +9051,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Waiting for the node&apos;s boot-up</source>
-        <translation>等待節點的上線報文</translation>
+        <translation>等待節點的上線訊息</translation>
     </message>
     <message>
         <source>Reading the new program state</source>
@@ -8950,7 +9087,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Then the node starts the new program and resets (boot-up).</source>
-        <translation>接著節點會啟動新程式並重置（上線報文）。</translation>
+        <translation>接著節點會啟動新程式並重置（上線訊息）。</translation>
     </message>
     <message>
         <source>%L1 of %L2 bytes, %L3 KiB/s</source>
@@ -9053,7 +9190,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Connect to the project&apos;s bus %1?</source>
-        <translation>要連線到專案的總線 %1 嗎？</translation>
+        <translation>要連線到專案的匯流排 %1 嗎？</translation>
     </message>
     <message>
         <source>Save project</source>
@@ -9069,7 +9206,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Connect to the machine&apos;s bus first (not listen-only): the backup reads the drives.</source>
-        <translation>請先連線到機台的總線（非僅監聽）：備份會讀取驅動器。</translation>
+        <translation>請先連線到機台的匯流排（非僅監聽）：備份會讀取驅動器。</translation>
     </message>
     <message>
         <source>Backing up the machine: reading every drive…</source>
@@ -9104,6 +9241,10 @@ Make sure the axis is free to move. Arm?</source>
     <message>
         <source>Load the program (firmware) the project names for the selected node: CiA 302-3 program download</source>
         <translation>為選取的節點載入專案指定的程式（韌體）：CiA 302-3 程式下載</translation>
+    </message>
+    <message>
+        <source>The bus closed before the backup was finished: the project is as it was.</source>
+        <translation>備份完成前匯流排已關閉：專案維持原樣。</translation>
     </message>
 </context>
 <context>
@@ -9330,7 +9471,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>The bus cannot send now.</source>
-        <translation>總線目前無法傳送。</translation>
+        <translation>匯流排目前無法傳送。</translation>
     </message>
     <message>
         <source>Step %1 of %2…</source>
@@ -9379,7 +9520,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Bus %1, COB-ID %2h (raw signals)</source>
-        <translation>總線 %1，COB-ID %2h（原始訊號）</translation>
+        <translation>匯流排 %1，COB-ID %2h（原始訊號）</translation>
     </message>
     <message>
         <source>COB-ID %1h (raw signals)</source>
@@ -9387,7 +9528,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Bus %1, node %2</source>
-        <translation>總線 %1，節點 %2</translation>
+        <translation>匯流排 %1，節點 %2</translation>
     </message>
     <message>
         <source>Node %1</source>
@@ -9524,6 +9665,10 @@ Make sure the axis is free to move. Arm?</source>
         <source>The project&apos;s trace filter is not valid: %1</source>
         <translation>專案的追蹤篩選條件無效：%1</translation>
     </message>
+    <message>
+        <source>How times are shown, here and in the Events, Health and Plot docks: the wall clock (from the log&apos;s header or the capture), seconds since the first frame, or since the row before (this table only)</source>
+        <translation>時間的顯示方式（此處以及事件、健康狀態與圖表面板）：實際時鐘時間（取自記錄檔的標頭或擷取時）、自第一個封包起的秒數，或與上一列的時間差（僅此表格）</translation>
+    </message>
 </context>
 <context>
     <name>coscope::gui::TraceModel</name>
@@ -9556,7 +9701,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Bus</source>
-        <translation>總線</translation>
+        <translation>匯流排</translation>
     </message>
     <message>
         <source>COB-ID</source>
@@ -9588,7 +9733,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Bus lost at %1, back at %2 (%3 s without frames)</source>
-        <translation>總線於 %1 中斷，%2 恢復（%3 秒沒有封包）</translation>
+        <translation>匯流排於 %1 中斷，%2 恢復（%3 秒沒有封包）</translation>
     </message>
 </context>
 <context>
@@ -9663,7 +9808,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>Connect to a bus first: the frames below are kept and sent once a bus is open.</source>
-        <translation>請先連線到總線：下列封包會保留，總線開啟後即可發送。</translation>
+        <translation>請先連線到匯流排：下列封包會保留，匯流排開啟後即可發送。</translation>
     </message>
     <message>
         <source>Listen-only connection: CoScope sends nothing, so the transmit list is disabled.</source>
@@ -9671,7 +9816,7 @@ Make sure the axis is free to move. Arm?</source>
     </message>
     <message>
         <source>The bus is not open: nothing can be sent now.</source>
-        <translation>總線未開啟：目前無法發送。</translation>
+        <translation>匯流排未開啟：目前無法發送。</translation>
     </message>
     <message numerus="yes">
         <source>%n periodic frame(s) running</source>
@@ -9827,30 +9972,30 @@ Send %2%3?</source>
     <name>coscope::gui::WizardFramesPane</name>
     <message>
         <source>Frames on the bus for this wizard</source>
-        <translation>此精靈在總線上的封包</translation>
+        <translation>此精靈在匯流排上的封包</translation>
     </message>
 </context>
 <context>
     <name>coscope::gui::WizardGuard</name>
     <message>
         <source>No bus is connected, so nothing can be sent. Connect to the bus first; you can still prepare the steps and save them as a script.</source>
-        <translation>未連線到任何總線，因此無法傳送。請先連線到總線；您仍可先準備步驟並另存為腳本。</translation>
+        <translation>未連線到任何匯流排，因此無法傳送。請先連線到匯流排；您仍可先準備步驟並另存為腳本。</translation>
     </message>
     <message>
         <source>The bus is open in listen-only mode: CoScope never transmits on it. Reconnect without listen-only to send these commands; you can still prepare the steps and save them as a script.</source>
-        <translation>總線以僅監聽模式開啟：CoScope 不會在上面傳送。請取消僅監聽後重新連線才能送出這些指令；您仍可先準備步驟並另存為腳本。</translation>
+        <translation>匯流排以僅監聽模式開啟：CoScope 不會在上面傳送。請取消僅監聽後重新連線才能送出這些指令；您仍可先準備步驟並另存為腳本。</translation>
     </message>
     <message>
         <source>The bus is still opening; sending is possible once it is open.</source>
-        <translation>總線仍在開啟中；開啟後即可傳送。</translation>
+        <translation>匯流排仍在開啟中；開啟後即可傳送。</translation>
     </message>
     <message>
         <source>The bus is not open (%1), so nothing can be sent.</source>
-        <translation>總線未開啟（%1），因此無法傳送。</translation>
+        <translation>匯流排未開啟（%1），因此無法傳送。</translation>
     </message>
     <message>
         <source>The bus was lost (%1); CoScope is reconnecting. Sending is possible again once it is back.</source>
-        <translation>總線已中斷（%1）；CoScope 正在重新連線。恢復後即可再傳送。</translation>
+        <translation>匯流排已中斷（%1）；CoScope 正在重新連線。恢復後即可再傳送。</translation>
     </message>
 </context>
 <context>
@@ -9869,11 +10014,11 @@ Send %2%3?</source>
     </message>
     <message>
         <source>Bus lost: %1. Retrying with back-off; node states are unknown until their next heartbeat.</source>
-        <translation>總線中斷：%1。正以逐步拉長的間隔重試；各節點的狀態在下一次心跳之前未知。</translation>
+        <translation>匯流排中斷：%1。正以逐步拉長的間隔重試；各節點的狀態在下一次心跳之前未知。</translation>
     </message>
     <message>
         <source>Bus back after %1 s: frames between are missing from the trace</source>
-        <translation>總線在 %1 秒後恢復：中斷期間的封包不在追蹤中</translation>
+        <translation>匯流排在 %1 秒後恢復：中斷期間的封包不在追蹤中</translation>
     </message>
     <message numerus="yes">
         <source>%n frame(s) dropped (receive queue full), %1 in total</source>

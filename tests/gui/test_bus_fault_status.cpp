@@ -4,6 +4,7 @@
 // a backend that cannot restart says so in the status bar and the Events.
 #include "app/gui/MainWindow.h"
 #include "app/gui/events/EventsDock.h"
+#include "app/gui/events/EventsModel.h"
 #include "app/gui/session/Workspace.h"
 #include "app/gui/status/BusStatusBar.h"
 
@@ -51,7 +52,7 @@ private slots:
         QTest::mouseClick(restart, Qt::LeftButton);
         // A replay has no controller to restart: the user reads why, in the status bar and the Events.
         QTRY_VERIFY_WITH_TIMEOUT(events->rowCount() > before, 5000);
-        const QString last = events->index(events->rowCount() - 1, 3).data().toString();
+        const QString last = events->index(events->rowCount() - 1, EventsModel::Text).data().toString();
         QVERIFY2(last.contains(QStringLiteral("cannot restart")), qPrintable(last));
         QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("Restart after bus-off failed")),
                  qPrintable(w.statusBar()->currentMessage()));

@@ -26,6 +26,7 @@
 #include <QtTest>
 
 #include "tests/gui/MenuClick.h"
+#include "tests/gui/OpenLog.h"
 #include "tests/gui/WaitFor.h"
 
 #include "tests/gui/ModalAnswer.h"
@@ -34,6 +35,7 @@ using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
+using coscope::testing::openLogByMenu;
 
 namespace {
 using coscope::testing::clickMenuItem;
@@ -99,18 +101,6 @@ QString writeLog(const QString& path, bool pdos) {
                         .toLatin1());
     }
     return path;
-}
-// File ▸ Open log… and its dialog; waits until the log is read.
-bool openByMenu(MainWindow& w, const QString& path) {
-    auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
-        !waitFor([&] { return name->answered(); }))
-        return false;
-    w.activateWindow();
-    return waitFor([&] {
-        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
-               w.workspace()->sourceName() == QFileInfo(path).fileName();
-    });
 }
 }  // namespace
 
@@ -258,7 +248,7 @@ private slots:
         QVERIFY2(w.odDock()->messageText().contains(QStringLiteral("aimotor")), qPrintable(w.odDock()->messageText()));
 
         // A log of another network (node 5, its PDO without a mapping): no node shown, no message.
-        QVERIFY(openByMenu(w, writeLog(dir_.filePath(QStringLiteral("node5.log")), true)));
+        QVERIFY(openLogByMenu(w, writeLog(dir_.filePath(QStringLiteral("node5.log")), true)));
         QVERIFY(waitFor([&] { return w.nodesDock()->model()->rowCount() == 1; }));
         QTest::qWait(100);
         QVERIFY2(!odHeader(w)->text().contains(QStringLiteral("Node 2")), qPrintable(odHeader(w)->text()));
@@ -287,7 +277,7 @@ private slots:
         QVERIFY(picker->catalog().size() > 1);
 
         // A log without PDOs: the list says so and names the nodes seen.
-        QVERIFY(openByMenu(w, writeLog(dir_.filePath(QStringLiteral("nopdo.log")), false)));
+        QVERIFY(openLogByMenu(w, writeLog(dir_.filePath(QStringLiteral("nopdo.log")), false)));
         QVERIFY2(waitFor([&] {
                      return picker->hintText().contains(QStringLiteral("No PDOs")) &&
                             picker->hintText().contains(QStringLiteral("5"));

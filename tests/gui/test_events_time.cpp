@@ -3,6 +3,7 @@
 // time in the Events dock, not seconds since 1970.
 #include "app/gui/MainWindow.h"
 #include "app/gui/events/EventsDock.h"
+#include "app/gui/events/EventsModel.h"
 
 #include <QTableView>
 #include <QTcpServer>
@@ -32,12 +33,12 @@ private slots:
         w.connectBus(QStringLiteral("socketcand://127.0.0.1:%1/can0").arg(port));
         QAbstractItemModel* m = w.eventsDock()->view()->model();
         QTRY_VERIFY_WITH_TIMEOUT(m->rowCount() > 0, 10000);
-        const QString time = m->index(0, 0).data().toString();
+        const QString time = m->index(0, EventsModel::Time).data().toString();
         bool ok = false;
         const double seconds = time.toDouble(&ok);
         QVERIFY2(ok && seconds >= 0 && seconds < 60, qPrintable(time));
-        QVERIFY2(m->index(0, 3).data().toString().contains(QStringLiteral("socketcand")),
-                 qPrintable(m->index(0, 3).data().toString()));
+        QVERIFY2(m->index(0, EventsModel::Text).data().toString().contains(QStringLiteral("socketcand")),
+                 qPrintable(m->index(0, EventsModel::Text).data().toString()));
     }
 };
 

@@ -27,6 +27,7 @@
 
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/OpenLog.h"
 #include "tests/gui/WaitFor.h"
 
 using namespace coscope;
@@ -35,6 +36,7 @@ using coscope::testing::answerFileDialog;
 using coscope::testing::clickMenuItem;
 using coscope::testing::menuItem;
 using coscope::testing::ModalAnswerer;
+using coscope::testing::openLogByMenu;
 using coscope::testing::openMenu;
 using coscope::testing::waitFor;
 using coscope::testing::withoutAccelerator;
@@ -50,20 +52,6 @@ QString writeLog(const QString& path, int frames) {
     if (!f.open(QIODevice::WriteOnly)) return {};
     f.write(l.join(u'\n').toUtf8() + "\n");
     return path;
-}
-
-// File ▸ Open log… answered with `path`; waits until it is read.
-bool openByMenu(MainWindow& w, const QString& path) {
-    auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
-        !waitFor([&] { return name->answered(); }))
-        return false;
-    w.activateWindow();
-    if (!QTest::qWaitForWindowActive(&w)) return false;
-    return waitFor([&] {
-        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() &&
-               w.workspace()->sourceName() == QFileInfo(path).fileName();
-    });
 }
 
 // Opens File ▸ `item`'s dialog, notes the folder it starts in and closes it with Escape.
@@ -133,7 +121,7 @@ private slots:
         QCOMPARE(dialogFolder(w, QStringLiteral("Open log")), QDir(first).absolutePath());
 
         const QString log = writeLog(dir_.filePath(QStringLiteral("field/machine7/a.log")), 10);
-        QVERIFY(openByMenu(w, log));
+        QVERIFY(openLogByMenu(w, log));
         QCOMPARE(dialogFolder(w, QStringLiteral("Open log")), QFileInfo(log).absolutePath());
         QCOMPARE(dialogFolder(w, QStringLiteral("Save trace as")), QFileInfo(log).absolutePath());  // the same kind
         QCOMPARE(dialogFolder(w, QStringLiteral("Export filtered rows")), QDir(first).absolutePath());
@@ -151,9 +139,9 @@ private slots:
         const QString a = writeLog(dir_.filePath(QStringLiteral("recent/a.log")), 5);
         const QString b = writeLog(dir_.filePath(QStringLiteral("recent/b.log")), 6);
         const QString c = writeLog(dir_.filePath(QStringLiteral("recent/c.log")), 7);
-        QVERIFY(openByMenu(w, a));
-        QVERIFY(openByMenu(w, b));
-        QVERIFY(openByMenu(w, c));
+        QVERIFY(openLogByMenu(w, a));
+        QVERIFY(openLogByMenu(w, b));
+        QVERIFY(openLogByMenu(w, c));
         QVERIFY(QFile::remove(c));
 
         QMenu* recent = openRecent(w);
@@ -189,7 +177,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         const QString good = writeLog(dir_.filePath(QStringLiteral("keep/good.log")), 30);
-        QVERIFY(openByMenu(w, good));
+        QVERIFY(openLogByMenu(w, good));
         QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() == 32; }));
 
         // A raw signal on 2A0h byte 1, added through the Plot dock's dialog.

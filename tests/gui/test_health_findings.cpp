@@ -14,10 +14,14 @@
 #include "app/gui/trace/TraceView.h"
 #include "dissectors/HealthRules.h"
 #include "tests/gui/ItemClick.h"
+#include "tests/gui/ModalAnswer.h"
 #include "tests/gui/WaitFor.h"
 
+#include <QFile>
 #include <QLabel>
+#include <QPushButton>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QToolButton>
@@ -117,6 +121,50 @@ private slots:
         QTest::mouseClick(dock->previousButton(), Qt::LeftButton);
         QVERIFY2(waitFor([&] { return currentTraceFrame(w) == 26; }, 5000),
                  qPrintable(QString::number(currentTraceFrame(w))));
+    }
+
+    // Issue 37 item 8: Export report… writes the report for a ticket, as an HTML page (each
+    // finding with its frame numbers, as the CLI's) and as a PDF; the chart scales to the load.
+    void exportReportAsHtmlAndPdf() {
+        const QString log = writeLog();
+        MainWindow w;
+        w.setQuiet(true);
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openLog(log));
+        HealthDock* dock = w.healthDock();
+        QVERIFY(testing::clickDockTab(w, dock->windowTitle()));
+        QVERIFY(waitFor([&] { return dock->findingsModel()->report().bus.frames == 70; }, 10000));
+        auto* button = dock->findChild<QPushButton*>(QStringLiteral("healthExport"));
+        QVERIFY(button && button->isVisible());
+        const QString html = dir_.filePath(QStringLiteral("gaps-health.html"));
+        {
+            auto name = testing::answerFileDialog(html);
+            QTest::mouseClick(button, Qt::LeftButton);
+            QVERIFY(waitFor([&] { return name->answered() && QFile::exists(html); }, 5000));
+        }
+        QFile page(html);
+        QVERIFY(page.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(page.readAll());
+        QVERIFY2(text.contains(QStringLiteral("CoScope network health: gaps.log")), qPrintable(text.left(400)));
+        QVERIFY(text.contains(QStringLiteral("Problems found: 1 error")));
+        QVERIFY2(text.contains(QStringLiteral(">#27</a>")) && text.contains(QStringLiteral(">#52</a>")),
+                 "frame numbers");
+        QVERIFY(!text.contains(QStringLiteral(">100 %</text>")));  // 2 beats every 100 ms: a small load
+        const QString pdf = dir_.filePath(QStringLiteral("gaps-health.pdf"));
+        {
+            auto name = testing::answerFileDialog(pdf);
+            QTest::mouseClick(button, Qt::LeftButton);
+            QVERIFY(waitFor([&] { return name->answered() && QFile::exists(pdf); }, 5000));
+        }
+        QFile doc(pdf);
+        QVERIFY(doc.open(QIODevice::ReadOnly));
+        const QByteArray bytes = doc.readAll();
+        QVERIFY(bytes.startsWith("%PDF-"));
+        QVERIFY2(bytes.size() > 5000, qPrintable(QString::number(bytes.size())));
+        QVERIFY2(w.statusBar()->currentMessage().contains(QStringLiteral("gaps-health.pdf")),
+                 qPrintable(w.statusBar()->currentMessage()));
     }
 };
 

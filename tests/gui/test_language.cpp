@@ -203,6 +203,19 @@ QStringList withChinese(const QList<Text>& now) {
     return out;
 }
 
+// zh_TW as written in Taiwan (issue 37 item 9): 匯流排, 訊息, 控制字/狀態字 (字元 is "character"), and
+// 下一步 on a wizard's button (Qt's own translation says 下一個, "next item").
+QStringList mainlandWords(const QList<Text>& now) {
+    static const QStringList words{QStringLiteral(u"總線"), QStringLiteral(u"報文"), QStringLiteral(u"控制字元"),
+                                   QStringLiteral(u"狀態字元"), QStringLiteral(u"下一個(N)")};
+    QStringList out;
+    for (const Text& t : now)
+        for (const QString& word : words)
+            if (t.text.contains(word)) out << QStringLiteral("%1: \"%2\"").arg(t.where, t.text);
+    out.removeDuplicates();
+    return out;
+}
+
 QMenu* languageMenu(MainWindow& w) { return w.menuBar()->findChild<QMenu*>(QStringLiteral("languageMenu")); }
 
 // View ▸ Language ▸ `code` by mouse: the menu bar title, the submenu entry, the language.
@@ -316,7 +329,10 @@ QStringList englishWords(QString text) {
         n.removeAll(QString());
         return n;
     }();
+    // The SI second after a number ("0.006 s", the relative time of a finding) is a unit.
+    static const QRegularExpression seconds(QStringLiteral("(?<=[0-9]) s(?![0-9A-Za-z_])"));
     text.replace(aside, QStringLiteral("\\1"));
+    text.remove(seconds);
     for (const QString& n : names) text.remove(n);
     QStringList out;
     for (auto it = word.globalMatch(text); it.hasNext();) out << it.next().captured();
@@ -458,9 +474,18 @@ private slots:
             const QStringList main = stillEnglish(visibleTexts(&w), englishMain);
             QVERIFY2(main.isEmpty(),
                      qPrintable(code + QStringLiteral(" main window, still English:\n") + main.join(u'\n')));
+            if (code == u"zh_TW") {
+                const QStringList words = mainlandWords(visibleTexts(&w));
+                QVERIFY2(words.isEmpty(), qPrintable(QStringLiteral("mainland words:\n") + words.join(u'\n')));
+            }
             for (const QString& id : ids) {
                 const QList<Text> now = walkWizard(w, id);
                 QVERIFY2(!now.isEmpty(), qPrintable(code + u' ' + id));
+                if (code == u"zh_TW") {
+                    const QStringList words = mainlandWords(now);
+                    QVERIFY2(words.isEmpty(),
+                             qPrintable(id + QStringLiteral(" wizard, mainland words:\n") + words.join(u'\n')));
+                }
                 const QStringList left = stillEnglish(now, englishWizard[id]);
                 QVERIFY2(
                     left.isEmpty(),
@@ -480,6 +505,41 @@ private slots:
                                     .arg(id, staleWizard.join(u'\n'))));
         }
         QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("en"));
+    }
+
+    // View ▸ Language checks the language in use, also when `--lang` chose it and the saved
+    // choice is another (issue 37 item 9); the wizard's Next button says 下一步.
+    void languageMenuShowsTheLanguageInUse() {
+        QSettings().remove(QStringLiteral("ui/language"));  // saved: follow the system (English here)
+        language::apply(QStringLiteral("zh_TW"));           // what `coscope --lang zh_TW` does
+        MainWindow w;
+        w.setQuiet(true);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QMenu* lang = languageMenu(w);
+        QVERIFY(lang);
+        auto* view = qobject_cast<QMenu*>(lang->parent());
+        QMenuBar* bar = w.menuBar();
+        QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(view->menuAction()).center());
+        QVERIFY(waitFor([&] { return view->isVisible(); }, 3000));
+        QTest::mouseClick(view, Qt::LeftButton, {}, view->actionGeometry(lang->menuAction()).center());
+        QVERIFY(waitFor([&] { return lang->isVisible(); }, 3000));
+        QStringList checked;
+        for (QAction* a : lang->actions())
+            if (a->isChecked()) checked << a->objectName();
+        QCOMPARE(checked, QStringList{QStringLiteral("language-zh_TW")});
+        QTest::keyClick(lang, Qt::Key_Escape);
+        QTest::keyClick(view, Qt::Key_Escape);
+        QVERIFY(w.connectBus(kNet));
+        QVERIFY(waitFor([&] { return w.workspace()->nodes().snapshot().size() >= 1; }, 15000));
+        QWidget* wiz = openAndSettle(w, QStringLiteral("pdo"));
+        QVERIFY(wiz);
+        auto* wizard = qobject_cast<QWizard*>(wiz);
+        QVERIFY(wizard);
+        QVERIFY2(plain(wizard->buttonText(QWizard::NextButton)).startsWith(QStringLiteral(u"下一步")),
+                 qPrintable(wizard->buttonText(QWizard::NextButton)));
+        closeWizard(wiz);
+        language::apply(QStringLiteral("en"));
     }
 
     // The lower layers' texts where the GUI shows them (issue #17): the CiA 402 state and mode
@@ -527,7 +587,7 @@ private slots:
             auto* trace = w.traceDock()->findChild<QTableView*>(QStringLiteral("traceView"));
             // Node 4's generic dictionary names the statusword in the UI language (ObjectNames.h).
             const QString statusword = english            ? QStringLiteral("Statusword")
-                                       : code == u"zh_TW" ? QStringLiteral(u"狀態字元")
+                                       : code == u"zh_TW" ? QStringLiteral(u"狀態字")
                                                           : QStringLiteral(u"状态字");
             QVERIFY2(clickTraceRow(w, QStringLiteral("6041:00 %1 =").arg(statusword)), qPrintable(code));
             QPointer<QTreeWidget> tree;
@@ -587,7 +647,7 @@ private slots:
         QTest::mouseClick(readAll, Qt::LeftButton);
         QVERIFY(waitFor([&] { return !w.odDock()->isBusy() && w.odDock()->model()->valuesRead() > 100; }, 30000));
 
-        const QStringList chinese = {QStringLiteral(u"狀態字元"), QStringLiteral(u"状态字")};
+        const QStringList chinese = {QStringLiteral(u"狀態字"), QStringLiteral(u"状态字")};
         for (const QString& code :
              {QStringLiteral("en"), QStringLiteral("zh_TW"), QStringLiteral("zh_CN"), QStringLiteral("en")}) {
             if (code != language::current()) QVERIFY2(chooseLanguage(w, code), qPrintable(code));

@@ -40,6 +40,7 @@
 
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
+#include "tests/gui/OpenLog.h"
 #include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
@@ -52,6 +53,7 @@ using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerBox;
 using coscope::testing::answerFileDialog;
+using coscope::testing::openLogByMenu;
 
 namespace {
 // Waits (running the event loop, so the window's timer ticks) until `pred` holds.
@@ -78,20 +80,6 @@ bool openLoaded(MainWindow& w, const QString& path) {
 void clickRow(QTableView* view, int row) {
     view->scrollTo(view->model()->index(row, 0));
     QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(row, 1)).center());
-}
-// Opens a log by File ▸ Open log… and its file dialog; waits until it is read.
-bool openByMenu(MainWindow& w, const QString& path) {
-    auto name = answerFileDialog(path);
-    if (!clickMenuItem(w, QStringLiteral("File"), QStringLiteral("Open log")) ||
-        !waitFor([&] { return name->answered(); }))
-        return false;
-    // The window manager gives the focus back to the window when the dialog closes; offscreen
-    // there is none, so do its part.
-    w.activateWindow();
-    if (!QTest::qWaitForWindowActive(&w)) return false;
-    return waitFor([&] {
-        return w.workspace()->loadJob() && w.workspace()->loadJob()->isDone() && w.traceDock()->model()->rowCount() > 0;
-    });
 }
 // Saves by File ▸ `item` and its file dialog; waits until the file is written.
 bool saveByMenu(MainWindow& w, const QString& item, const QString& path) {
@@ -254,7 +242,7 @@ private slots:
         w.setQuiet(true);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openByMenu(w, path));
+        QVERIFY(openLogByMenu(w, path));
         QVERIFY(waitFor([&] { return w.statusBar()->currentMessage().contains(QStringLiteral(":3")); }));
         QCOMPARE(w.traceDock()->model()->rowCount(), 4);
         QVERIFY(waitFor([&] { return w.nodesDock()->model()->rowCount() == 1; }));
@@ -310,7 +298,7 @@ private slots:
         w.setQuiet(true);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openByMenu(w, path));
+        QVERIFY(openLogByMenu(w, path));
         QVERIFY(waitFor([&] { return w.traceDock()->model()->rowCount() == 5000; }));
         QTableView* view = w.traceDock()->view();
         QAction* follow = barAction(w, QStringLiteral("Follow"));
@@ -328,7 +316,7 @@ private slots:
         w.setQuiet(true);
         w.show();
         QVERIFY(QTest::qWaitForWindowActive(&w));
-        QVERIFY(openByMenu(w, writeJumpLog(dir_.filePath(QStringLiteral("jump.log")))));
+        QVERIFY(openLogByMenu(w, writeJumpLog(dir_.filePath(QStringLiteral("jump.log")))));
         QVERIFY(waitFor([&] { return w.eventsDock()->model()->rowCount() == 1; }));
         // Enter on the event (chosen by a click) selects its frame in the trace.
         QVERIFY(coscope::testing::clickDockTab(w, QStringLiteral("Events")));

@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 #include "tests/gui/DriveLog.h"
 #include "tests/gui/WaitFor.h"
 
@@ -151,6 +153,47 @@ private slots:
         dock.refresh();
         QVERIFY(dock.pickedSignals().empty());
         QVERIFY(!dock.hasContent());
+    }
+
+    // Issue 37 item 7: node 5 sends every 10 ms for 2 s, nothing for 30 s, then again: the line
+    // breaks in the gap (no ramp that never happened) and nowhere else, whole trace or zoomed in.
+    void noLineAcrossAGap() {
+        DriveLog log(1700000000.0);
+        log.mapTpdo(5, 1, {0x60640020, 0x606C0020});
+        log.setTime(1700000001.0);
+        for (int i = 0; i < 400; ++i) {
+            if (i == 200) log.setTime(1700000033.0);
+            log.line(QStringLiteral("185#") + le32(i < 200 ? 0 : 100000) + le32(0), 0.009);
+        }
+        const QString path = dir_.filePath(QStringLiteral("gap.log"));
+        QVERIFY(log.write(path));
+        Workspace ws;
+        PlotDock dock(&ws);
+        dock.resize(1200, 700);
+        dock.show();
+        connect(&ws, &Workspace::sourceChanged, &dock, &PlotDock::rebind);
+        QString error;
+        QVERIFY2(ws.openLog(path, &error), qPrintable(error));
+        QVERIFY(waitFor([&] { return ws.loadJob()->isDone(); }));
+        ws.poll();
+        dock.refresh();
+        auto breaks = [&] {
+            std::vector<double> at;
+            for (const auto& [t, v] : dock.view()->drawnPoints(0))
+                if (!std::isfinite(v)) at.push_back(t);
+            return at;
+        };
+        const auto pts = dock.view()->drawnPoints(0);
+        QVERIFY(!pts.empty());
+        const double last = pts.front().first + 2.0;  // the last sample before the gap, about
+        std::vector<double> at = breaks();
+        QCOMPARE(at.size(), size_t(1));
+        QVERIFY2(at[0] > last && at[0] < last + 30.0, qPrintable(QString::number(at[0])));
+        // Zoomed in on the samples before the gap: one line, no break.
+        dock.view()->setTimeRange(pts.front().first, pts.front().first + 1.5);
+        dock.setPaused(true);
+        dock.refresh();
+        QVERIFY(breaks().empty());
     }
 };
 

@@ -399,6 +399,26 @@ private slots:
         QCOMPARE(loadSparkline(r).size(), 50);
     }
 
+    // Issue 37 item 7: the load chart scales to its data. 100 1-byte frames a second at 500 kbit/s
+    // is about 1.2 % load: the HTML chart's top line is 2 %, not 100 %.
+    void loadChartScalesToItsData() {
+        QCOMPARE(loadScaleTopPct(0.0), 1.0);
+        QCOMPARE(loadScaleTopPct(1.2), 2.0);
+        QCOMPARE(loadScaleTopPct(3.0), 5.0);
+        QCOMPARE(loadScaleTopPct(47.0), 50.0);
+        QCOMPARE(loadScaleTopPct(48.0), 75.0);  // the 5 % margin: 50.4 > 50
+        QCOMPARE(loadScaleTopPct(80.0), 100.0);
+        QCOMPARE(loadScaleTopPct(130.0), 100.0);
+        Feed f;
+        for (int i = 0; i < 300; ++i) f.at(i * 10.0, 0x181, {1});
+        const HealthReport r = f.report();
+        QVERIFY2(r.bus.loadPeakPct > 1.0 && r.bus.loadPeakPct < 1.9, qPrintable(QString::number(r.bus.loadPeakPct)));
+        const QString html = QString::fromUtf8(healthHtml(r, QStringLiteral("t")));
+        QVERIFY2(html.contains(QStringLiteral(">2 %</text>")) && html.contains(QStringLiteral(">0.5 %</text>")),
+                 qPrintable(html));
+        QVERIFY(!html.contains(QStringLiteral(">100 %</text>")));
+    }
+
     void jsonCarriesEveryPart() {
         Feed f;
         for (double t : {0.0, 100.0, 200.0, 450.0}) f.at(t, 0x705, {0x05});

@@ -39,11 +39,11 @@ private slots:
     void standardObjectsInBothScripts() {
         const od::ObjectDictionary delta = bundled(QStringLiteral("delta-asda-a2"));
         QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kTW),
-                 QStringLiteral(u"狀態字元"));
+                 QStringLiteral(u"狀態字"));
         QCOMPARE(localObjectName(delta.bundledName, 0x6041, -1, QStringLiteral("Statusword"), kCN),
                  QStringLiteral(u"状态字"));
         QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kTW),
-                 QStringLiteral(u"控制字元"));
+                 QStringLiteral(u"控制字"));
         QCOMPARE(localObjectName(delta.bundledName, 0x6040, -1, QStringLiteral("Controlword"), kCN),
                  QStringLiteral(u"控制字"));
         QCOMPARE(localDisplayName(delta, 0x1000, 0, kTW), QStringLiteral(u"裝置類型"));
@@ -87,7 +87,7 @@ private slots:
     // ICP DAS ECAT-2094P: four axes, index + 800h each; the EDS's axis becomes the manual's 第 n 軸.
     void axesOfAMultiAxisDrive() {
         const od::ObjectDictionary icp = bundled(QStringLiteral("icpdas-ecat-2094p"));
-        QCOMPARE(localDisplayName(icp, 0x6841, 0, kTW), QStringLiteral(u"狀態字元（第 2 軸）"));
+        QCOMPARE(localDisplayName(icp, 0x6841, 0, kTW), QStringLiteral(u"狀態字（第 2 軸）"));
         QCOMPARE(localDisplayName(icp, 0x7040, 0, kCN), QStringLiteral(u"控制字（第 3 轴）"));
         QCOMPARE(localDisplayName(icp, 0x6041, 0, kEN), QStringLiteral("Statusword (axis 1)"));
     }

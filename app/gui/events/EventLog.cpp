@@ -34,6 +34,27 @@ QString eventKindName(TraceEvent::Kind kind) {
     return {};
 }
 
+EventSeverity eventSeverity(TraceEvent::Kind kind) {
+    using K = TraceEvent::Kind;
+    switch (kind) {
+    case K::Emcy:
+    case K::HeartbeatTimeout:
+    case K::BusError:
+    case K::Dropped: return EventSeverity::Error;
+    case K::SdoAbort: return EventSeverity::Warning;
+    default: return EventSeverity::Info;
+    }
+}
+
+QString eventSeverityName(EventSeverity severity) {
+    switch (severity) {
+    case EventSeverity::Error: return QCoreApplication::translate("EventLog", "error");
+    case EventSeverity::Warning: return QCoreApplication::translate("EventLog", "warning");
+    case EventSeverity::Info: return QCoreApplication::translate("EventLog", "info");
+    }
+    return {};
+}
+
 TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node,
                          std::function<QString()> render) {
     TraceEvent e{kind, timeNs, frame, node, render(), {}};

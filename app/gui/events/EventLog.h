@@ -43,6 +43,12 @@ struct TraceEvent {
 };
 QString eventKindName(TraceEvent::Kind kind);
 
+// How much an event asks of the technician: an error (EMCY, a heartbeat lost, a bus error,
+// frames dropped), a warning (an SDO abort), or information (NMT, boot-ups, EMCY reset).
+enum class EventSeverity : uint8_t { Info, Warning, Error };
+EventSeverity eventSeverity(TraceEvent::Kind kind);
+QString eventSeverityName(EventSeverity severity);  // in the UI language
+
 // An event whose text `render` writes, now and again in each UI language the Events view is
 // built in.
 TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, int node,

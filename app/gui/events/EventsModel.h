@@ -2,9 +2,11 @@
 #pragma once
 
 #include "app/gui/events/EventLog.h"
+#include "core/trace/TimeBase.h"
 
 #include <QAbstractTableModel>
 
+#include <set>
 #include <vector>
 
 namespace coscope::gui {
@@ -13,7 +15,9 @@ namespace coscope::gui {
 class EventsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Time, Node, Kind, Text, Frame, ColumnCount };
+    enum Column { Time, Node, Kind, Severity, Text, Frame, ColumnCount };
+    // What a column sorts by (time in ns, node, kind, severity, frame as numbers).
+    enum Role { SortRole = Qt::UserRole + 1 };
 
     explicit EventsModel(QObject* parent = nullptr);
 
@@ -23,8 +27,14 @@ public:
     // trace has a frame (0), times count from the first event: an event before the first frame
     // (a bus that would not open) reads 0.000000, not seconds since 1970.
     void setOrigin(int64_t originNs);
+    // Relative seconds or the wall clock (Workspace::timeMode()).
+    void setTimeMode(TimeBase::Mode mode);
 
     const TraceEvent& eventAt(int row) const { return events_[static_cast<size_t>(row)]; }
+    // The nodes the events name, ascending (for the Events dock's node filter).
+    const std::set<int>& nodes() const { return nodes_; }
+    // The Time column's text of an event: seconds since the trace's first frame, or its wall clock.
+    QString timeText(const TraceEvent& e) const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -36,6 +46,8 @@ private:
     uint64_t generation_ = 0;
     std::vector<TraceEvent> events_;
     int64_t origin_ = 0;
+    TimeBase::Mode timeMode_ = TimeBase::Mode::Relative;
+    std::set<int> nodes_;
 };
 
 }  // namespace coscope::gui

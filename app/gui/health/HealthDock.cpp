@@ -1,17 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/health/HealthDock.h"
 
+#include "app/gui/files/LastFolders.h"
+#include "app/gui/health/HealthExport.h"
 #include "app/gui/health/HealthModel.h"
-#include "app/gui/session/Workspace.h"
-
 #include "app/gui/health/HealthRuleText.h"
+#include "app/gui/session/Workspace.h"
+#include "dissectors/HealthOutput.h"
 #include "dissectors/NetworkHealth.h"
 
 #include <QAction>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSplitter>
 #include <QStyle>
 #include <QTabWidget>
@@ -45,7 +50,15 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent)
     bold.setBold(true);
     bold.setPointSizeF(bold.pointSizeF() * 1.15);
     verdict_->setFont(bold);
-    layout->addWidget(verdict_);
+    auto* top = new QHBoxLayout;
+    top->addWidget(verdict_, 1);
+    export_ = new QPushButton(tr("Export report…"), body);
+    export_->setObjectName(QStringLiteral("healthExport"));
+    export_->setToolTip(
+        tr("Save the report for a ticket: an HTML page or a PDF, each finding with the frame numbers it rests on"));
+    connect(export_, &QPushButton::clicked, this, &HealthDock::exportReport);
+    top->addWidget(export_);
+    layout->addLayout(top);
     summary_ = new QLabel(body);
     summary_->setObjectName(QStringLiteral("healthSummary"));
     summary_->setText(tr("No frames yet"));
@@ -148,6 +161,11 @@ HealthDock::HealthDock(Workspace* workspace, QWidget* parent)
     layout->addWidget(split, 1);
     setWidget(body);
     since_.start();
+    // One time base (issue 37 item 3): the findings' times as the trace shows them.
+    connect(workspace_, &Workspace::timeModeChanged, this, [this] {
+        findings_->setTimeMode(workspace_->timeMode());
+        showFinding(currentFinding());
+    });
     rebind();
 }
 
@@ -231,8 +249,36 @@ void HealthDock::update() {
     plot_->graph(0)->setData(x, avg, true);
     plot_->graph(1)->setData(x, peak, true);
     plot_->xAxis->setRange(0, x.isEmpty() ? 1.0 : std::max(1.0, x.back()));
-    plot_->yAxis->setRange(0, std::max(100.0, b.loadPeakPct));
+    // Scaled to the data (issue 37 item 7): a bus at 3 % shows its shape, not a line on the floor.
+    plot_->yAxis->setRange(0, std::max(dissect::loadScaleTopPct(b.loadPeakPct), b.loadPeakPct));
     if (plot_->isVisible()) plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void HealthDock::exportReport() {
+    const HealthMonitor& m = workspace_->health();
+    const dissect::HealthReport r = m.report(workspace_->isLive() ? nowNs() : std::numeric_limits<int64_t>::min());
+    const QString source = workspace_->sourceName().isEmpty() ? QStringLiteral("capture") : workspace_->sourceName();
+    const QString html = tr("HTML page (*.html)"), pdf = tr("PDF (*.pdf)");
+    QString chosen;
+    QString path = files::askSaveFile(this, files::kExports, tr("Export the health report"),
+                                      QFileInfo(source).completeBaseName() + QStringLiteral("-health.html"),
+                                      html + QStringLiteral(";;") + pdf, &chosen);
+    if (path.isEmpty()) return;
+    const bool asPdf = path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive) ||
+                       (chosen == pdf && !path.endsWith(QLatin1String(".html"), Qt::CaseInsensitive));
+    if (asPdf && !path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) path += QStringLiteral(".pdf");
+    // The report's own words are English, as `coscope-cli stats --format html` writes them (for
+    // whoever reads the ticket); the title names the log.
+    const QString title = QStringLiteral("CoScope network health: %1").arg(source);
+    QString error;
+    const bool ok = asPdf ? writeHealthPdf(path, r, title, plot_->toPixmap(960, 240).toImage(), &error)
+                          : writeHealthHtml(path, r, title, &error);
+    if (!ok) {
+        QMessageBox::warning(this, tr("Export the health report"),
+                             tr("The report could not be written: %1").arg(error));
+        return;
+    }
+    emit message(tr("Health report written to %1").arg(path));
 }
 
 int HealthDock::currentFinding() const {
@@ -251,8 +297,8 @@ void HealthDock::showFinding(int row) {
     const dissect::Occurrences& at = f.at;
     QString where;
     if (at.count) {
-        const QString first = dissect::healthTime(at.firstNs, findings_->report().startNs),
-                      last = dissect::healthTime(at.lastNs, findings_->report().startNs);
+        const TimeBase base = findings_->timeBase();
+        const QString first = base.shortText(at.firstNs), last = base.shortText(at.lastNs);
         where = at.count == 1 ? tr("Once, at %1.").arg(first)
                               : tr("%1 times, from %2 to %3.").arg(at.count).arg(first, last);
     }

@@ -9,6 +9,7 @@
 class QCustomPlot;
 class QAction;
 class QLabel;
+class QPushButton;
 class QToolButton;
 class QTableView;
 class QTabWidget;
@@ -42,9 +43,12 @@ public:
     QLabel* detailLabel() const { return detail_; }
     QToolButton* nextButton() const { return nextButton_; }
     QToolButton* previousButton() const { return previousButton_; }
+    // Export report…: the report as an HTML page or a PDF, to a file the user chooses.
+    void exportReport();
 
 signals:
     void frameActivated(coscope::FrameNo frame);  // show this frame in the trace
+    void message(const QString& text);            // for the status bar
 
 private:
     QTableView* makeTable(HealthModel* model, const QString& name);
@@ -62,6 +66,7 @@ private:
     QTabWidget* tabs_ = nullptr;
     QLabel* summary_ = nullptr;
     QLabel* verdict_ = nullptr;
+    QPushButton* export_ = nullptr;
     QLabel* detail_ = nullptr;
     QAction* next_ = nullptr;
     QAction* previous_ = nullptr;

@@ -109,13 +109,19 @@ QVariant HealthModel::findingData(int row, int column, int role) const {
         case dissect::HealthFinding::Warning: return tr("Warning");
         default: return tr("Info");
         }
-    case Time: return f.hasTime ? dissect::healthTime(f.timeNs, report_.startNs) : QString();
+    case Time: return f.hasTime ? timeBase().shortText(f.timeNs) : QString();
     case Node: return f.node >= 0 ? QString::number(f.node) : tr("bus");
     // The headline built by dissectors/ in English, like the CLI report, shown in the UI language;
     // CoScope's own traffic by its rule's sentence (issue 37).
     case Text: return f.own ? healthRuleText(f, RulePart::What) : coreLines(f.text);
     }
     return {};
+}
+
+void HealthModel::setTimeMode(TimeBase::Mode mode) {
+    if (mode == timeMode_) return;
+    timeMode_ = mode;
+    if (table_ == Table::Findings && rowCount() > 0) emit dataChanged(index(0, Time), index(rowCount() - 1, Time));
 }
 
 QVariant HealthModel::nodeData(int row, int column, int role) const {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/trace/TimeBase.h"
 #include "dissectors/HealthReport.h"
 
 #include <QAbstractTableModel>
@@ -39,6 +40,9 @@ public:
     explicit HealthModel(Table table, QObject* parent = nullptr);
 
     void setReport(const dissect::HealthReport& report);
+    // Relative seconds or the wall clock (Workspace::timeMode()) in the Time column.
+    void setTimeMode(TimeBase::Mode mode);
+    TimeBase timeBase() const { return {report_.startNs, timeMode_}; }
     const dissect::HealthReport& report() const { return report_; }
 
     int rowCount(const QModelIndex& parent = {}) const override;
@@ -54,6 +58,7 @@ private:
 
     Table table_;
     dissect::HealthReport report_;
+    TimeBase::Mode timeMode_ = TimeBase::Mode::Relative;
 };
 
 }  // namespace coscope::gui

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/plot/PlotCsv.h"
 
+#include "core/logio/CsvField.h"
+
 #include <QFile>
 #include <QSaveFile>
 #include <QTextStream>
@@ -9,14 +11,7 @@
 
 namespace coscope::gui {
 
-namespace {
-QString csvField(const QString& s) {
-    if (!s.contains(u',') && !s.contains(u'"') && !s.contains(u'\n')) return s;
-    QString q = s;
-    q.replace(QStringLiteral("\""), QStringLiteral("\"\""));
-    return u'"' + q + u'"';
-}
-}  // namespace
+using logio::csvField;
 
 bool writePlotCsv(const QString& path, const std::vector<PlotSignal>& plotted, int64_t t0, int64_t t1, int64_t originNs,
                   QString* error) {

@@ -67,6 +67,8 @@ PlotDock::PlotDock(Workspace* workspace, QWidget* parent) : QDockWidget(tr("Plot
     connect(view_, &PlotView::userNavigated, this, [this] { setPaused(true); });
     connect(view_, &PlotView::frameClicked, this, &PlotDock::frameActivated);
     connect(view_, &PlotView::cursorsChanged, this, &PlotDock::updateReadout);
+    // One time base (issue 37 item 3): the time axis as the trace shows times.
+    connect(workspace_, &Workspace::timeModeChanged, this, [this] { view_->setTimeMode(workspace_->timeMode()); });
     rebind();
 }
 

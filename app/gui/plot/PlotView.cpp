@@ -2,10 +2,12 @@
 #include "app/gui/plot/PlotView.h"
 
 #include "app/gui/plot/EnvelopeGraph.h"
+#include "app/gui/plot/PlotGaps.h"
 #include "app/gui/plot/PlotGrid.h"
 #include "app/gui/plot/PlotLegend.h"
 #include "app/gui/plot/PlotSurface.h"
 #include "app/gui/plot/PlotTicks.h"
+#include "app/gui/plot/WallClockTicker.h"
 #include "core/od/NumberNotation.h"
 
 #include <QVBoxLayout>
@@ -177,7 +179,7 @@ void PlotView::rebuild() {
             }
         }
     }
-    if (QCPAxis* t = timeAxis()) t->setLabel(tr("Time [s]"));
+    applyTimeAxis();
     // Hidden axes (the top ones, an unused right one) need no ticks: QCustomPlot would still make
     // their ticks and labels on every replot.
     // The visible ones' tick marks are written into the plot's image (PlotTicks).
@@ -222,6 +224,33 @@ void PlotView::rebuild() {
     for (QCPAxisRect* rect : rects_) rect->axis(QCPAxis::atBottom)->setRange(from_, to_);
     settingRange_ = false;
     drawnWidth_ = -1;
+}
+
+void PlotView::setOrigin(int64_t originNs) {
+    if (originNs == originNs_) return;
+    originNs_ = originNs;
+    applyTimeAxis();
+}
+
+void PlotView::setTimeMode(TimeBase::Mode mode) {
+    if (mode == timeMode_) return;
+    timeMode_ = mode;
+    applyTimeAxis();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QString PlotView::timeAxisTitle() const {
+    QCPAxis* t = timeAxis();
+    return t ? t->label() : QString();
+}
+
+void PlotView::applyTimeAxis() {
+    QCPAxis* t = timeAxis();
+    if (!t) return;
+    const bool clock = TimeBase{originNs_, timeMode_}.shown() == TimeBase::Mode::WallClock;
+    if (clock) t->setTicker(QSharedPointer<WallClockTicker>::create(originNs_));
+    else if (t->ticker().dynamicCast<WallClockTicker>()) t->setTicker(QSharedPointer<QCPAxisTicker>::create());
+    t->setLabel(clock ? tr("Time") : tr("Time [s]"));
 }
 
 void PlotView::applyXRange(const QCPRange& r) {
@@ -311,10 +340,14 @@ bool PlotView::refresh(bool force) {
             // a bit's trace from the pyramid's AND/OR masks.
             if (s.digital) points_ = s.buffer->decimate(t0, t1, width, s.key.bit);
             else s.buffer->envelope(t0, t1, width, points_);
-            data.resize(static_cast<qsizetype>(points_.size()));
+            // No line across a gap of the samples (PlotGaps.h): a NaN point between them breaks it.
+            const std::vector<size_t> gaps = plotGaps(points_, (t1 - t0) / width);
+            data.resize(static_cast<qsizetype>(points_.size() + gaps.size()));
             QCPGraphData* d = data.data();
             Track& t = tracks_[i];
-            for (const SignalPoint& p : points_) {
+            auto gap = gaps.begin();
+            for (size_t k = 0; k < points_.size(); ++k) {
+                const SignalPoint& p = points_[k];
                 *d = QCPGraphData(toSeconds(p.timeNs), s.valueOf(p.value));
                 if (d->key >= from_ && d->key <= to_ && std::isfinite(d->value)) {  // what rescaleY() would find
                     t.visibleMin = t.anyVisible ? std::min(t.visibleMin, d->value) : d->value;
@@ -322,6 +355,10 @@ bool PlotView::refresh(bool force) {
                     t.anyVisible = true;
                 }
                 ++d;
+                if (gap != gaps.end() && *gap == k) {
+                    *d++ = QCPGraphData(toSeconds((p.timeNs + points_[k + 1].timeNs) / 2), qQNaN());
+                    ++gap;
+                }
             }
         }
         // Dense min/max columns gain nothing from antialiasing and cost most of the paint time.

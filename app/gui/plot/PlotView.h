@@ -2,6 +2,7 @@
 #pragma once
 
 #include "app/gui/plot/PlotSignal.h"
+#include "core/trace/TimeBase.h"
 
 #include <QWidget>
 
@@ -38,7 +39,10 @@ public:
     const std::vector<PlotSignal>& plotted() const { return signals_; }
     void setLayoutMode(Layout layout);
     Layout layoutMode() const { return layout_; }
-    void setOrigin(int64_t originNs) { originNs_ = originNs; }
+    void setOrigin(int64_t originNs);
+    // The time axis in seconds from the origin, or labelled with the wall clock (one time base).
+    void setTimeMode(TimeBase::Mode mode);
+    QString timeAxisTitle() const;
     int64_t origin() const { return originNs_; }
 
     // The visible time range, seconds from the origin.
@@ -96,6 +100,7 @@ private:
     void onRelease(QMouseEvent* e);
     void placeCursorItems();
     QCPAxis* timeAxis() const;
+    void applyTimeAxis();  // its ticker and title for the time mode
 
     QCustomPlot* plot_;
     PlotGrid* grid_;  // layerables of plot_ (owned by it)
@@ -107,6 +112,7 @@ private:
     std::vector<QCPItemStraightLine*> cursorItems_;
     Layout layout_ = Layout::Stacked;
     int64_t originNs_ = 0;
+    TimeBase::Mode timeMode_ = TimeBase::Mode::Relative;
     double from_ = 0, to_ = 10;
     bool autoY_ = true;
     bool legendOn_ = true;

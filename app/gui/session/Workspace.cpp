@@ -269,6 +269,12 @@ canopen::DriveDisableOutcome Workspace::disableEnabledDrives() {
 
 QString Workspace::journalFolder() const { return journals::defaultFolder(); }
 
+void Workspace::setTimeMode(TimeBase::Mode mode) {
+    if (mode == timeMode_) return;
+    timeMode_ = mode;
+    emit timeModeChanged();
+}
+
 void Workspace::applyMemoryBudget() {
     if (store_->memoryBudget() != 0) store_->setMemoryBudget(traceMemoryBudget());
 }

@@ -14,6 +14,7 @@
 #include "core/canopen/NodeTable.h"
 #include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
+#include "core/trace/TimeBase.h"
 #include "dissectors/SignalRecorder.h"
 
 #include <QObject>
@@ -98,6 +99,10 @@ public:
     void applyMemoryBudget();
 
     QString sourceName() const { return sourceName_; }
+    // How every view shows a time (TimeBase): seconds since the first frame, or the wall clock.
+    // The Trace dock's time mode chooses it; the Events, Health and Plot docks follow.
+    TimeBase::Mode timeMode() const { return timeMode_; }
+    void setTimeMode(TimeBase::Mode mode);
     QStringList busNames() const;
 
     // The user's raw signals (RawSignal.h), kept with the workspace (settings "plot/rawSignals",
@@ -113,6 +118,7 @@ public:
     void poll();
 
 signals:
+    void timeModeChanged();
     // Emitted while the bus and the SDO client still work, just before they are closed
     // (disconnect, another connection, opening a log, the workspace going away). Then the
     // drives CoScope left enabled are sent Disable voltage, seen going out before the bus closes.
@@ -158,6 +164,7 @@ private:
     std::unique_ptr<canopen::HeartbeatMonitor> monitor_;
     std::unique_ptr<LogLoadJob> loadJob_;
     QString sourceName_;
+    TimeBase::Mode timeMode_ = TimeBase::Mode::Relative;
     QString journalPath_;
     uint64_t reportedDropped_ = 0;
     uint64_t reportedErrors_ = 0;

@@ -141,8 +141,19 @@ void TraceDock::buildToolbar(QWidget* host) {
     timeMode_->setObjectName(QStringLiteral("timeMode"));
     timeMode_->addItems({tr("Absolute time"), tr("Relative time"), tr("Delta time")});
     timeMode_->setCurrentIndex(1);
-    connect(timeMode_, &QComboBox::currentIndexChanged, this,
-            [this](int i) { model_->setTimeMode(static_cast<TraceModel::TimeMode>(i)); });
+    timeMode_->setToolTip(
+        tr("How times are shown, here and in the Events, Health and Plot docks: the wall clock (from the log's "
+           "header or the capture), seconds since the first frame, or since the row before (this table only)"));
+    // One time base (issue 37 item 3): the other docks follow, Delta being relative for them.
+    connect(timeMode_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        const auto mode = static_cast<TraceModel::TimeMode>(i);
+        model_->setTimeMode(mode);
+        // The wall clock to the microsecond ("14:40:00.004000") needs more room than seconds.
+        const int digit = view_->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+        view_->setColumnWidth(TraceModel::Time, digit * (mode == TraceModel::TimeMode::Absolute ? 17 : 13));
+        workspace_->setTimeMode(mode == TraceModel::TimeMode::Absolute ? TimeBase::Mode::WallClock
+                                                                       : TimeBase::Mode::Relative);
+    });
     tb->addWidget(timeMode_);
     latest_ = tb->addAction(st->standardIcon(QStyle::SP_FileDialogListView), tr("Latest per ID"));
     latest_->setObjectName(QStringLiteral("latestAction"));
@@ -256,6 +267,7 @@ void TraceDock::rebind() {
     shownDetailsFor_ = -1;
     detailsLoading_ = false;
     if (!filterEdit_->text().trimmed().isEmpty()) applyFilter(filterEdit_->text());
+    pendingFrame_.reset();  // a selection of the source before is nothing to keep
     // A log opened for review starts at its first frame, as in Wireshark or Logxaminer (and the
     // window does not chase a file still loading); a live capture follows the newest frames.
     if (workspace_->loadJob()) {
@@ -282,6 +294,10 @@ void TraceDock::refresh() {
             onCurrentChanged();
         }
         filterJob_.reset();
+        if (const auto n = std::exchange(pendingFrame_, std::nullopt)) {
+            model_->refresh();
+            if (!selectFrame(*n, pendingExact_) && pendingExact_ && model_->isFiltered()) showFrame(*n);
+        }
     }
     if (!filterJob_) model_->refresh();
     const auto [top, bottom] = view_->visibleRows();
@@ -319,16 +335,52 @@ bool TraceDock::applyFilter(const QString& query, QString* error) {
     }
     filterEdit_->setStyleSheet({});
     filterEdit_->setToolTip({});
-    if (filterEdit_->text() != query) filterEdit_->setText(query);
+    // The frame selected now stays selected, and in view, in the new rows (unless a frame
+    // asked for by showFrame() is waiting for them).
+    if (!pendingFrame_ || !pendingExact_) {
+        pendingFrame_ = follows() ? std::nullopt : currentFrame();  // following: the newest rows
+        pendingExact_ = false;
+    }
+    if (filterEdit_->text() != query) {
+        const QSignalBlocker block(filterEdit_);  // not a second applyFilter() from textChanged
+        filterEdit_->setText(query);
+    }
     findJob_.reset();  // it searched the rows of the view before
     filterJob_.reset();
     const bool group = groupSdo_->isChecked();
     if ((filter->isEmpty() && !group) || !workspace_->store()) {
         model_->clearFilter();
+        if (const auto n = std::exchange(pendingFrame_, std::nullopt)) selectFrame(*n, pendingExact_);
         return true;
     }
     filterJob_ = std::make_unique<FilterJob>(workspace_->store(), *filter, workspace_->decoder(), group);
     filterJob_->start();
+    return true;
+}
+
+std::optional<FrameNo> TraceDock::currentFrame() const {
+    const int row = view_->currentRow();
+    if (row < 0 || !model_->store()) return std::nullopt;
+    if (model_->rowKind(row) == TraceModel::RowKind::Transfer) {
+        const auto frames = model_->groups()->frames(static_cast<size_t>(model_->groupAt(row)));
+        if (!frames.empty()) return frames.front();
+        return std::nullopt;
+    }
+    return model_->frameAt(row);
+}
+
+bool TraceDock::selectFrame(FrameNo n, bool exact) {
+    int row = model_->rowOf(n);
+    // A frame of a collapsed transfer: the transfer opened, its row selected.
+    if (row >= 0 && exact && model_->rowKind(row) == TraceModel::RowKind::Transfer && model_->frameAt(row) != n) {
+        model_->toggleExpanded(row);
+        if (const int member = model_->rowOf(n); member >= 0) row = member;
+    }
+    if (row < 0 && !exact) row = model_->rowAtOrAfter(n);
+    if (row < 0 && !exact && model_->rowCount() > 0) row = model_->rowCount() - 1;
+    if (row < 0) return false;
+    setFollow(false);
+    view_->setCurrentRow(row, true);
     return true;
 }
 
@@ -365,17 +417,20 @@ Job* TraceDock::activeJob() const {
 }
 
 void TraceDock::showFrame(FrameNo n) {
-    model_->refresh();
-    int row = model_->rowOf(n);
-    if (row < 0 && (model_->isFiltered() || model_->latestPerCobId())) {
-        latest_->setChecked(false);
-        clearFilter();
-        model_->refresh();
-        row = model_->rowOf(n);
+    if (filterJob_) {  // the rows are being computed: selected when they are there
+        pendingFrame_ = n;
+        pendingExact_ = true;
+        return;
     }
-    if (row < 0) return;
-    setFollow(false);
-    view_->setCurrentRow(row, true);
+    model_->refresh();
+    if (selectFrame(n, true)) return;
+    if (model_->isFiltered() || model_->latestPerCobId()) {
+        latest_->setChecked(false);
+        pendingFrame_ = n;
+        pendingExact_ = true;
+        clearFilter();  // selects it now, or when the grouped rows are computed
+        if (!filterJob_) pendingFrame_.reset();
+    }
 }
 
 void TraceDock::setFindMissed(bool missed) {

@@ -7,7 +7,9 @@
 #include "core/trace/TraceStore.h"
 
 #include <QDockWidget>
+
 #include <QJsonObject>
+#include <optional>
 
 #include <memory>
 
@@ -56,7 +58,10 @@ public:
     QAction* groupSdoAction() const { return groupSdo_; }
     Job* activeJob() const;
 
-    void showFrame(FrameNo n);  // selects it (clears the filter if it hides the frame)
+    // Selects frame n: its row, or under a grouped SDO transfer its row in the expanded transfer.
+    // When the filter hides it, the filter is cleared (Group SDO stays as it is); a view still
+    // being computed selects it once it is there.
+    void showFrame(FrameNo n);
     // Finds text (summary, COB-ID, data) from the current row on and selects its row. Rows whose
     // frames are in RAM are tested at once; the search goes on on a worker (isFinding(), its
     // progress in activeJob()) when it reaches frames paged out to the journal or takes long,
@@ -83,6 +88,11 @@ private:
     bool findFrom(const QString& text, bool forward, const FindRows& rows, int64_t from);
     void onFindDone(uint64_t serial);
     void findMissed(const QString& text);
+    // The frame of the selected row (a transfer header: its first frame), if any.
+    std::optional<FrameNo> currentFrame() const;
+    // Selects frame n once the rows are there: exactly (showFrame, `exact`), or the row showing
+    // it or the nearest one after it (a new filter or Group SDO keeping the selection in view).
+    bool selectFrame(FrameNo n, bool exact);
 
     Workspace* workspace_;
     TraceModel* model_ = nullptr;
@@ -101,7 +111,11 @@ private:
     std::unique_ptr<FindJob> findJob_;
     uint64_t findSerial_ = 0;  // of findJob_, so a finished job's late report is told apart
     int64_t shownDetailsFor_ = -1;
-    bool detailsLoading_ = false;   // the current row's frames are being paged in (refresh() retries)
+    bool detailsLoading_ = false;  // the current row's frames are being paged in (refresh() retries)
+    // What to select when the filter job running is done: the frame asked by showFrame()
+    // (`pendingExact_`), or the frame selected before the filter or Group SDO changed.
+    std::optional<FrameNo> pendingFrame_;
+    bool pendingExact_ = false;
     uint64_t detailsRevision_ = 0;  // decoder revision of the details shown
 };
 

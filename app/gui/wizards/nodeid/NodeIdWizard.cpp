@@ -6,6 +6,7 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/BusLossAdvice.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
+#include "app/gui/wizards/common/WizardButtons.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/nodeid/NodeIdPages.h"
 #include "core/canopen/LssMaster.h"
@@ -22,6 +23,7 @@ using canopen::bitRateText;
 NodeIdWizard::NodeIdWizard(Workspace* workspace, int node, QWidget* parent) : QWizard(parent), workspace_(workspace) {
     setWindowTitle(tr("Baud rate and node-ID — CoScope"));
     setWizardStyle(QWizard::ClassicStyle);
+    nameWizardButtons(this);
     setOption(QWizard::NoBackButtonOnStartPage, true);
     setOption(QWizard::NoCancelButtonOnLastPage, true);
     setProperty("screenshotReady", false);

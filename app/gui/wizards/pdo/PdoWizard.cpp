@@ -5,6 +5,7 @@
 #include "app/gui/session/Workspace.h"
 #include "app/gui/wizards/common/BusLossAdvice.h"
 #include "app/gui/wizards/common/ScriptPreview.h"
+#include "app/gui/wizards/common/WizardButtons.h"
 #include "app/gui/wizards/common/WizardFramesPane.h"
 #include "app/gui/wizards/pdo/PdoApplyPage.h"
 #include "app/gui/wizards/pdo/PdoChoosePage.h"
@@ -50,6 +51,7 @@ QByteArray le32(uint32_t v) {
 PdoWizard::PdoWizard(Workspace* workspace, int node, QWidget* parent) : QWizard(parent), workspace_(workspace) {
     setWindowTitle(tr("PDO mapping — CoScope"));
     setWizardStyle(QWizard::ClassicStyle);
+    nameWizardButtons(this);
     setOption(QWizard::NoCancelButtonOnLastPage, true);
     setOption(QWizard::NoBackButtonOnStartPage, true);
     setProperty("screenshotReady", false);
