@@ -71,7 +71,13 @@ EventsDock::EventsDock(Workspace* workspace, QWidget* parent)
         const TraceEvent& e = model_->eventAt(shown_->mapToSource(idx).row());
         if (e.frame != kNoFrame) emit frameActivated(e.frame);
     });
-    connect(workspace_, &Workspace::timeModeChanged, this, [this] { model_->setTimeMode(workspace_->timeMode()); });
+    connect(workspace_, &Workspace::timeModeChanged, this, [this] {
+        model_->setTimeMode(workspace_->timeMode());
+        // The wall clock to the microsecond ("14:40:05.004995") needs more room than seconds.
+        const int digit = view_->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+        view_->setColumnWidth(EventsModel::Time,
+                              digit * (workspace_->timeMode() == TimeBase::Mode::WallClock ? 17 : 12));
+    });
     rebind();
 }
 
