@@ -36,7 +36,7 @@ void ds402LearnMode(NodeState& n, uint16_t index, uint8_t sub, uint64_t raw) {
 
 QString ds402Meaning(uint16_t index, uint8_t sub, uint64_t raw, Dissection& out, int depth, int byteOffset,
                      int byteLength, std::optional<int8_t> mode) {
-    const QString text = ds402MeaningText(index, sub, raw);
+    QString text = ds402MeaningText(index, sub, raw);
     if (text.isEmpty()) return {};
     const uint16_t v16 = static_cast<uint16_t>(raw);
     switch (0x6000 + ((index - 0x6000) & 0x7FF)) {

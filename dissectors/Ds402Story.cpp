@@ -10,7 +10,7 @@ namespace coscope::dissect {
 
 namespace ds402 = canopen::ds402;
 
-void NetworkHealth::addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw) {
+void NetworkHealth::addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw) const {
     const int state = static_cast<int>(ds402::stateFromStatusword(sw));
     if (state == t.ds402State) return;
     const auto s = static_cast<ds402::State>(state);

@@ -207,12 +207,12 @@ private:
             buses_.resize(static_cast<size_t>(bus) + 1);
         return buses_[static_cast<size_t>(bus)];
     }
-    void addErrorControl(const CanFrame& f, int node, BusTrack& b);                  // HeartbeatHealth.cpp
+    void addErrorControl(const CanFrame& f, int id, BusTrack& b);                    // HeartbeatHealth.cpp
     void addNmtCommand(const CanFrame& f, BusTrack& b);                              // HeartbeatHealth.cpp
     void addSdo(const CanFrame& f, const Dissection& d, const NetworkContext& ctx);  // SdoHealth.cpp
-    void addEmcy(const CanFrame& f, int node, const NetworkContext& ctx);
+    void addEmcy(const CanFrame& f, int id, const NetworkContext& ctx);
     void addPdo(const CanFrame& f, const Dissection& d, BusTrack& b, const NetworkContext& ctx);  // PdoHealth.cpp
-    void addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw);                             // Ds402Story.cpp
+    void addStatusword(NodeTrack& t, const CanFrame& f, uint16_t sw) const;                       // Ds402Story.cpp
     void fillStory(NodeHealth& h, const NodeTrack& t) const;                                      // Ds402Story.cpp
     void addSync(const CanFrame& f, BusTrack& b);                                                 // PdoHealth.cpp
     void fillHeartbeat(NodeHealth& h, const NodeTrack& t, const NetworkContext* ctx, int bus, int64_t nowNs) const;

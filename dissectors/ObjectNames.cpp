@@ -40,7 +40,7 @@ QString localObjectName(const QString& bundledName, std::uint16_t index, int sub
 QString localDisplayName(const od::ObjectDictionary& dict, std::uint16_t index, std::uint8_t sub, const QString& lang) {
     const od::Object* o = dict.object(index);
     if (!o) return {};
-    const QString name = localParameterName(localObjectName(dict.bundledName, index, -1, o->name, lang), lang);
+    QString name = localParameterName(localObjectName(dict.bundledName, index, -1, o->name, lang), lang);
     if (!o->isComposite()) return name;
     const od::SubObject* s = o->sub(sub);
     return s ? name + QStringLiteral(": ") +

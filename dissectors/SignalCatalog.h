@@ -23,6 +23,7 @@ struct SignalKey {
     int8_t bit = -1;
     uint16_t raw = 0;
 
+    // NOLINTNEXTLINE(modernize-use-nullptr): clang-tidy 14 takes this "= default" for a 0.
     auto operator<=>(const SignalKey&) const = default;
     SignalKey word() const { return {bus, node, index, sub, -1, raw}; }
     uint64_t packed() const {

@@ -101,7 +101,7 @@ QByteArray TraceStats::report(bool perSecond) const {
             // EMCY, TPDO1-4, SDO response, error control.
             uint64_t sent = 0;
             for (int base : {0x080, 0x180, 0x280, 0x380, 0x480, 0x580, 0x700})
-                sent += perStdId_[static_cast<size_t>(base + n)];
+                sent += perStdId_[static_cast<size_t>(base) + static_cast<size_t>(n)];
             if (!count || !sent) continue;
             const NodeState& s = ctx_.node(static_cast<int>(bus), n);
             anyNode = true;
@@ -133,7 +133,7 @@ QByteArray TraceStats::report(bool perSecond) const {
     for (size_t i = 0; i < shown; ++i) put("  second %6zu  %5.1f %%\n", i, 100.0 * bitsPerSecond[i] / bitRate_);
     if (perSecond && shown < bitsPerSecond.size()) put("  ... %zu more seconds\n", bitsPerSecond.size() - shown);
     put("\nSDO transfers: %llu (ok %llu, aborted %llu, failed %llu)\n",
-        (unsigned long long)(sdoOk_ + sdoAborted_ + sdoFailed_), (unsigned long long)sdoOk_,
+        (unsigned long long)sdoOk_ + sdoAborted_ + sdoFailed_, (unsigned long long)sdoOk_,
         (unsigned long long)sdoAborted_, (unsigned long long)sdoFailed_);
     for (const auto& [code, n] : abortCodes_)
         put("  abort 0x%08X x%llu  %s\n", code, (unsigned long long)n, qPrintable(canopen::sdoAbortText(code)));

@@ -37,7 +37,7 @@ std::unique_ptr<VendorTable> readTable(const QString& name) {
     t->name = name;
     const QJsonObject layout = root.value(QStringLiteral("emcyLayout")).toObject();
     t->verified = layout.value(QStringLiteral("verified")).toBool(true);
-    for (const QJsonValue& fv : layout.value(QStringLiteral("alarmFields")).toArray()) {
+    for (const QJsonValue fv : layout.value(QStringLiteral("alarmFields")).toArray()) {
         const QJsonObject fo = fv.toObject();
         const QJsonArray bytes = fo.value(QStringLiteral("bytes")).toArray();
         if (bytes.isEmpty()) continue;
@@ -49,7 +49,7 @@ std::unique_ptr<VendorTable> readTable(const QString& name) {
         if (af.firstByte < 3 || af.firstByte + (af.u16 ? 2 : 1) > 8) continue;
         t->fields.push_back(af);
     }
-    for (const QJsonValue& av : root.value(QStringLiteral("alarms")).toArray()) {
+    for (const QJsonValue av : root.value(QStringLiteral("alarms")).toArray()) {
         const QJsonObject ao = av.toObject();
         VendorTable::Alarm a;
         a.code = ao.value(QStringLiteral("code")).toString();
@@ -61,12 +61,12 @@ std::unique_ptr<VendorTable> readTable(const QString& name) {
         a.emcyCode = ok ? static_cast<int>(ec) : -1;
         const uint32_t n = number(ao.value(QStringLiteral("number")), &ok);
         if (ok) t->alarms.insert(n, a);
-        for (const QJsonValue& also : ao.value(QStringLiteral("alsoNumbers")).toArray()) {
+        for (const QJsonValue also : ao.value(QStringLiteral("alsoNumbers")).toArray()) {
             const uint32_t m = number(also, &ok);
             if (ok && !t->alarms.contains(m)) t->alarms.insert(m, a);
         }
     }
-    for (const QJsonValue& sv : root.value(QStringLiteral("sdoAborts")).toArray()) {
+    for (const QJsonValue sv : root.value(QStringLiteral("sdoAborts")).toArray()) {
         const QJsonObject so = sv.toObject();
         bool ok = false;
         const uint32_t code = number(so.value(QStringLiteral("code")), &ok);

@@ -109,7 +109,7 @@ void DictionaryLibrary::readSidecarIdentity(Entry& e) {
     if (!f.exists() || !f.open(QIODevice::ReadOnly)) return;
     const QJsonObject id = QJsonDocument::fromJson(f.readAll()).object().value(QStringLiteral("identity")).toObject();
     e.placeholder = id.value(QStringLiteral("placeholder")).toBool();
-    for (const QJsonValue& v : id.value(QStringLiteral("variants")).toArray())
+    for (const QJsonValue v : id.value(QStringLiteral("variants")).toArray())
         if (auto p = hexNumber(v.toObject().value(QStringLiteral("productCode")))) e.variantProducts.push_back(*p);
     if (auto t = hexNumber(id.value(QStringLiteral("deviceType")))) e.deviceType = t;
     for (const char* key : {"softwareVersion", "deviceName"}) {

@@ -26,8 +26,8 @@ fi
 if [ "${1:-}" = "test" ]; then
   # python3-can and tshark are the peers of the interop tests and benchmarks; xvfb for screenshots.
   packages+=(libbenchmark-dev python3-can tshark xvfb xauth clang libclang-rt-14-dev)
-  # scripts/format.sh and scripts/lint.sh.
-  packages+=(clang-format-14 clang-tidy-14)
+  # scripts/format.sh and scripts/lint.sh (clang-tools-14: clang-apply-replacements for --fix).
+  packages+=(clang-format-14 clang-tidy-14 clang-tools-14)
   # The install tests' validators: .desktop, AppStream, MIME, man pages, bash completion.
   packages+=(desktop-file-utils appstream shared-mime-info man-db bash-completion)
 fi

@@ -479,7 +479,7 @@ void MainWindow::updateCommissionMenu() {
 
 size_t MainWindow::unsavedFrames() const {
     const auto& store = workspace_->store();
-    if (!store || store.get() != captureStore_ || store->size() == 0) return 0;
+    if (!store || store.get() != captureStore_ || store->empty()) return 0;
     if (savedStore_ == store.get() && savedSize_ >= store->size()) return 0;
     return store->size();
 }

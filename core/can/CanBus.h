@@ -122,7 +122,7 @@ private:
 
 // Creates the backend for a URL (not yet opened). Returns nullptr with a one-line reason.
 std::unique_ptr<CanBus> createBus(const BusUrl& url, QString* error);
-std::unique_ptr<CanBus> createBus(const QString& url, QString* error);
+std::unique_ptr<CanBus> createBus(const QString& text, QString* error);
 
 QString toString(CanBus::State state);
 

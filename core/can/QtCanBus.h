@@ -36,7 +36,7 @@ public:
 
     // Conversions (pure, public for tests). An error frame's `id` holds the SocketCAN error
     // class bits, which QCanBusFrame::FrameError mirrors bit for bit (linux/can/error.h).
-    static std::optional<CanFrame> fromQt(const QCanBusFrame& frame);
+    static std::optional<CanFrame> fromQt(const QCanBusFrame& q);
     static QCanBusFrame toQt(const CanFrame& frame);
 
     bool restartController(QString* error) override;  // QCanBusDevice::resetController()

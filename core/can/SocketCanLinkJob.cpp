@@ -104,8 +104,11 @@ void SocketCanLinkJob::runNextStep() {
         if (listing_) {
             QList<SocketCanLink> links;
             QString error;
-            if (!ok) error = QStringLiteral("`%1 %2` failed: %3").arg(program, args.join(u' '), why);
-            else parseIpLinkJson(p->readAllStandardOutput(), &links, &error);
+            if (!ok) {
+                error = QStringLiteral("`%1 %2` failed: %3").arg(program, args.join(u' '), why);
+            } else {
+                parseIpLinkJson(p->readAllStandardOutput(), &links, &error);
+            }
             emit listed(links, error);
             return;
         }

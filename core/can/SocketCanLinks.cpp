@@ -37,7 +37,7 @@ bool parseIpLinkJson(const QByteArray& json, QList<SocketCanLink>* links, QStrin
         return false;
     }
     links->clear();
-    for (const QJsonValue& v : doc.array()) {
+    for (const QJsonValue v : doc.array()) {
         const QJsonObject o = v.toObject();
         if (o.value(u"link_type").toString() != u"can") continue;  // ARPHRD_CAN: can, vcan, vxcan, slcan
         SocketCanLink l;

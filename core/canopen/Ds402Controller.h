@@ -129,7 +129,7 @@ public:
     // one already running). The drive must be in Operation enabled, else `done` reports it.
     // `sample` gets each monitoring read (about every 50 ms); `done` runs once, after the drive
     // was stopped (ok, stopReason) or, on a fault or a silent drive, disabled (not ok).
-    bool startTestMove(const Ds402TestMove& move, std::function<void(const Ds402MotionSample&)> sample,
+    bool startTestMove(const Ds402TestMove& spec, std::function<void(const Ds402MotionSample&)> sample,
                        Ds402Callback done, QString* why = nullptr);
     // The hold-to-run control is still held.
     void feedWatchdog();

@@ -128,7 +128,7 @@ bool Ds402Controller::startTestMove(const Ds402TestMove& spec, std::function<voi
         // Locals: resetting *runWrites below destroys this closure while it runs.
         const auto self = selfC;
         const auto m = mC;
-        const auto alive = aliveC;
+        const auto alive = aliveC;  // NOLINT(performance-unnecessary-copy-initialization): see above
         const auto writes = writesC;
         const auto runWrites = runWritesC;
         if (!alive()) return;

@@ -35,7 +35,10 @@ void FrameDispatcher::unsubscribe(int id) {
 void FrameDispatcher::setCobIds(int id, std::vector<uint32_t> cobIds) {
     std::lock_guard lock(mutex_);
     for (auto& s : subs_)
-        if (s.id == id) s.cobIds = std::move(cobIds);
+        if (s.id == id) {
+            s.cobIds = std::move(cobIds);  // ids are unique: one subscription
+            break;
+        }
     rebuildWantedLocked();
 }
 

@@ -45,7 +45,7 @@ QString lssCommandName(uint8_t cs, bool fromMaster);
 
 // CiA 305 standard bit timing table (table selector 0): index -> bit/s; 0 for "automatic"
 // and -1 for an index outside the table. Index 5 is 100 kbit/s in CiA 305 v2 (reserved later).
-int lssBitRate(uint8_t tableIndex);
+int lssBitRate(uint8_t i);
 int lssTableIndexForBitRate(int bitRate);  // -1 when the rate is not in the table
 
 }  // namespace coscope::canopen

@@ -52,7 +52,7 @@ public:
     void configureBitRate(int bitRate, LssCallback done);                      // §6.4.3, standard table (selector 0)
     bool activateBitTiming(uint16_t switchDelayMs, QString* error = nullptr);  // §6.4.4
     void storeConfiguration(LssCallback done);                                 // §6.4.5
-    void inquire(uint8_t commandSpecifier, LssCallback done);                  // 5Ah..5Eh (§6.6)
+    void inquire(uint8_t cs, LssCallback done);                                // 5Ah..5Eh (§6.6)
     void inquireIdentity(LssCallback done);                                    // vendor, product, revision, serial
     void inquireNodeId(LssCallback done);
     // §6.7.4 Fastscan: finds one unconfigured slave's identity bit by bit and leaves it in

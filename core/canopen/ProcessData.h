@@ -137,8 +137,8 @@ signals:
 private:
     struct Shared;
     void stopJobs(bool motionOnly);
-    void startJob(size_t pdoIndex);
-    bool sendNow(size_t pdoIndex, QString* error);
+    void startJob(size_t i);
+    bool sendNow(size_t i, QString* error);
     // Notes a controlword value that enables voltage in the bus's EnabledDrives.
     void noteIfEnabling(const ProcessDataObject& object, int64_t value);
     void setValueQuietly(const ProcessDataObject& object, int64_t value);

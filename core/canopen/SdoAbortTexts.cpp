@@ -23,7 +23,7 @@ bool VendorAbortTable::load(const QByteArray& json, QString* error) {
     const QJsonObject root = doc.object();
     vendor_ = root.value(QStringLiteral("vendor")).toString();
     texts_.clear();
-    for (const QJsonValue& v : root.value(QStringLiteral("sdoAborts")).toArray()) {
+    for (const QJsonValue v : root.value(QStringLiteral("sdoAborts")).toArray()) {
         const QJsonObject o = v.toObject();
         bool ok = false;
         const uint32_t code = o.value(QStringLiteral("code")).toString().toUInt(&ok, 0);

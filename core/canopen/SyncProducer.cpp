@@ -128,7 +128,7 @@ uint64_t SyncProducer::sent() const { return sentBefore_ + (job_ ? context_.peri
 QString SyncProducer::lastError() const { return job_ ? context_.periodic().status(job_).error : lastError_; }
 
 void SyncProducer::writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node,
-                                                 std::function<void(const SdoResult&)> done) {
+                                                 std::function<void(const SdoResult&)> done) const {
     QByteArray v(4, 0);
     for (int i = 0; i < 4; ++i) v[i] = static_cast<char>(periodUs_ >> (8 * i));
     sdo.download(node, 0x1006, 0, v, std::move(done));

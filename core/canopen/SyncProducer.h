@@ -64,7 +64,7 @@ public:
     CanFrame frame(uint8_t counter) const;
 
     // Writes the period to a node's 1006h (communication cycle period, µs) when asked.
-    void writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done);
+    void writeCommunicationCyclePeriod(SdoClient& sdo, uint8_t node, std::function<void(const SdoResult&)> done) const;
 
 signals:
     // Emitted on this object's thread when a run stopped because a send failed.

@@ -58,7 +58,7 @@ Conversion Conversion::read(BlockFile& file, uint64_t at) {
     if (!at || !file.read(at, b, nullptr, "CC") || b.data.size() < 24) return c;
     const auto* p = reinterpret_cast<const unsigned char*>(b.data.constData());
     const uint16_t count = le16(p + 6);
-    if (qsizetype(24 + 8 * size_t(count)) > b.data.size()) return c;
+    if (24 + 8 * qsizetype(count) > b.data.size()) return c;
     c.type = p[0];
     for (uint16_t i = 0; i < count; ++i) c.values.push_back(f64(p + 24 + 8 * i));
     return c;

@@ -16,7 +16,7 @@ namespace coscope::logio::mdf4 {
 struct Conversion {
     uint8_t type = 0;
     std::vector<double> values;
-    double apply(double raw) const;
+    double apply(double x) const;
     // Reads the CC block at `at` (0: identity).
     static Conversion read(BlockFile& file, uint64_t at);
 };

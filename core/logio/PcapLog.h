@@ -43,7 +43,7 @@ private:
     uint32_t parsePacketOptions(const unsigned char* p, uint32_t len);  // returns epb_flags
     uint32_t u32(const unsigned char* p) const;
     uint16_t u16(const unsigned char* p) const;
-    int64_t toNs(uint64_t ticks, uint64_t unitsPerSecond) const;
+    int64_t toNs(uint64_t ticks, uint64_t ups) const;
 
     bool ng_ = false;
     bool swapped_ = false;  // file byte order is big-endian

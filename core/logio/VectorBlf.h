@@ -26,7 +26,7 @@ private:
     bool readExact(char* dst, qint64 n);
     bool readTopObject();  // fills pending_ with the objects of the next container
     // Parses the object at `p` (size bytes); returns true when it produced a frame.
-    bool decodeObject(const unsigned char* p, size_t size, CanFrame& frame);
+    bool decodeObject(const unsigned char* o, size_t size, CanFrame& frame);
 
     int64_t startNs_ = 0;
     uint64_t object_ = 0;

@@ -96,12 +96,13 @@ void ProjectCompare::compareNext(std::shared_ptr<Run> run) {
     }
     const std::vector<ExpectedValue> expected = expectedValues(*dict, node);
     std::vector<std::pair<uint16_t, uint8_t>> entries;
+    entries.reserve(expected.size());
     for (const ExpectedValue& e : expected) entries.emplace_back(e.index, e.sub);
     if (run->progress)
         run->progress(QStringLiteral("reading node %1").arg(node.id), static_cast<int>(at),
                       static_cast<int>(run->matches.size()));
     QPointer<ProjectCompare> self(this);
-    const od::ObjectDictionary dictionary = *dict;
+    const od::ObjectDictionary& dictionary = *dict;
     run->config->read(
         node.id, dictionary, entries, {}, [self, run, at, dictionary, expected](const canopen::ConfigReadResult& read) {
             if (!self) return;

@@ -59,6 +59,7 @@ std::vector<MatchedNode> matchNodes(const Project& project, const std::vector<ca
         }
     }
     std::vector<MatchedNode> list;
+    list.reserve(out.size());
     for (auto& [id, m] : out) list.push_back(std::move(m));
     return list;
 }

@@ -39,7 +39,7 @@ using DictionaryResolver = std::function<std::optional<od::ObjectDictionary>(con
 
 // Configuration objects of a dictionary: readable and writable, not DOMAIN, not a command object
 // (DeviceConfiguration::isCommandObject).
-bool isConfigurationEntry(const od::SubObject& entry);
+bool isConfigurationEntry(const od::SubObject& s);
 
 // The value text read back in the project's notation, and whether two value texts are the same
 // value of `entry`'s type (compared encoded, $NODEID resolved with `node`).

@@ -22,7 +22,7 @@ struct HomingMachine {
     double hardStop = 0;
     double backOff = 0;  // how far past an edge a slow approach starts
 
-    static HomingMachine forRevolution(double countsPerRevolution);
+    static HomingMachine forRevolution(double rev);
     // The first index pulse strictly beyond `from` in direction `dir` (+1/-1).
     double nextIndex(double from, int dir) const;
 };
@@ -37,6 +37,6 @@ struct HomingLeg {
 
 // The path a method takes from machine position `start`: out to its switch (reversing at a limit
 // switch where the method does), back off, and onto home. Empty for "current position".
-std::vector<HomingLeg> homingPath(const canopen::homing::Method& method, double start, const HomingMachine& machine);
+std::vector<HomingLeg> homingPath(const canopen::homing::Method& method, double start, const HomingMachine& g);
 
 }  // namespace coscope::sim

@@ -23,7 +23,7 @@ public:
     void tick(int64_t nowNs);
 
 private:
-    uint32_t identity(int sub) const;  // 0 vendor, 1 product, 2 revision, 3 serial
+    uint32_t identity(int field) const;  // 0 vendor, 1 product, 2 revision, 3 serial
     void reply(uint8_t cs, uint8_t b1 = 0, uint8_t b2 = 0, uint32_t value = 0, bool withValue = false);
 
     VirtualDevice& dev_;

@@ -370,7 +370,7 @@ void SdoServer::sendSubBlock() {
         const int n = std::min<int>(7, static_cast<int>(buffer_.size()) - pos);
         const bool last = pos + n >= buffer_.size();
         CanFrame f = frame8({static_cast<uint8_t>((last ? 0x80 : 0) | seq)});
-        for (int i = 0; i < n; ++i) f.data[static_cast<size_t>(1 + i)] = static_cast<uint8_t>(buffer_[pos + i]);
+        for (int i = 0; i < n; ++i) f.data[1 + static_cast<size_t>(i)] = static_cast<uint8_t>(buffer_[pos + i]);
         respond(f);
         pos += n;
         if (last) break;

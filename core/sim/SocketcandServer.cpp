@@ -148,7 +148,7 @@ void SocketcandServer::flush() {
         }
         if (batch.empty()) continue;
         QByteArray out;
-        out.reserve(static_cast<qsizetype>(batch.size() * 40));
+        out.reserve(static_cast<qsizetype>(batch.size()) * 40);
         for (const CanFrame& f : batch) {
             out += ' ';  // see the class comment: a space before each frame
             out += socketcand::encodeFrame(f);

@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cerrno>
 
-#include <signal.h>
 #include <spdlog/spdlog.h>
+#include <csignal>
 
 namespace coscope::journals {
 

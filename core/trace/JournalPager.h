@@ -41,7 +41,7 @@ public:
     std::string spillDirectory() const override;
 
 private:
-    bool loadRange(QByteArray bytes, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface,
+    bool loadRange(QByteArray data, uint64_t skip, uint32_t count, const std::vector<uint8_t>& busOfInterface,
                    std::vector<CanFrame>& out, std::string* why) const;
 
     const QString path_;

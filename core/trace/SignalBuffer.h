@@ -105,12 +105,12 @@ private:
     size_t countLocked() const;
     size_t lowerBoundLocked(int64_t timeNs) const;  // first index with time >= t
     size_t lowerBoundNearLocked(int64_t timeNs, size_t hint, size_t from,
-                                size_t n) const;   // same in [from, n], galloping from `hint`
-    SignalPoint pointLocked(size_t global) const;  // time and value only (no frame)
-    const SignalSample sampleLocked(size_t global) const;
+                                size_t n) const;  // same in [from, n], galloping from `hint`
+    SignalPoint pointLocked(size_t r) const;      // time and value only (no frame)
+    const SignalSample sampleLocked(size_t r) const;
     template <bool WithBits>
-    Summary reduceLocked(size_t from, size_t to) const;     // [from, to), non-empty; AND/OR only WithBits
-    void prefetchLocked(size_t global, size_t span) const;  // hints the reads of a column edge there
+    Summary reduceLocked(size_t from, size_t to) const;  // [from, to), non-empty; AND/OR only WithBits
+    void prefetchLocked(size_t r, size_t span) const;    // hints the reads of a column edge there
     std::vector<SignalSample> samplesLocked(size_t from, size_t to) const;
     void decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit,
                         std::vector<SignalPoint>& out) const;

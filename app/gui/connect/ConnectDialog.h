@@ -27,8 +27,8 @@ class ConnectDialog : public QDialog {
 public:
     explicit ConnectDialog(QWidget* parent = nullptr);
 
-    QString url() const;              // the URL the choices make
-    void setUrl(const QString& url);  // fills the choices from a URL (recent connections)
+    QString url() const;               // the URL the choices make
+    void setUrl(const QString& text);  // fills the choices from a URL (recent connections)
 
     // Backend keys in the combo: "sim", "socketcand", "replay", or a Qt plugin name.
     QComboBox* backend() const { return backend_; }

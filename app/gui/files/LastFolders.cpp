@@ -14,9 +14,9 @@ QString lastFolderKey(const QString& kind) { return QStringLiteral("files/lastFo
 }  // namespace
 
 QString startFolder(const QString& kind) {
-    const QString last = QSettings().value(lastFolderKey(kind)).toString();
+    QString last = QSettings().value(lastFolderKey(kind)).toString();
     if (!last.isEmpty() && QFileInfo(last).isDir()) return last;
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     if (!documents.isEmpty() && QFileInfo(documents).isDir()) return documents;
     return QDir::homePath();
 }
@@ -27,7 +27,7 @@ void rememberFolder(const QString& kind, const QString& chosenPath) {
 }
 
 QString askOpenFile(QWidget* parent, const QString& kind, const QString& caption, const QString& filter) {
-    const QString path = QFileDialog::getOpenFileName(parent, caption, startFolder(kind), filter);
+    QString path = QFileDialog::getOpenFileName(parent, caption, startFolder(kind), filter);
     rememberFolder(kind, path);
     return path;
 }
@@ -35,7 +35,7 @@ QString askOpenFile(QWidget* parent, const QString& kind, const QString& caption
 QString askSaveFile(QWidget* parent, const QString& kind, const QString& caption, const QString& suggestedName,
                     const QString& filter, QString* selectedFilter) {
     const QDir folder(startFolder(kind));
-    const QString path = QFileDialog::getSaveFileName(
+    QString path = QFileDialog::getSaveFileName(
         parent, caption, suggestedName.isEmpty() ? folder.path() : folder.filePath(suggestedName), filter,
         selectedFilter);
     rememberFolder(kind, path);

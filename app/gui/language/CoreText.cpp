@@ -169,7 +169,7 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
     if (covered) *covered = english.size();
     if (english.isEmpty()) return english;
     const QByteArray key = english.toUtf8();
-    const QString direct = QCoreApplication::translate("CoreText", key.constData());
+    QString direct = QCoreApplication::translate("CoreText", key.constData());
     if (direct != english) return direct;
     if (covered) *covered = 0;
     if (depth > 3) return english;
@@ -195,7 +195,7 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
     // the list as its last value.
     const auto joins = coretext::joins();
     qsizetype listCovered = 0;
-    if (const QString list = byList(english, depth, joins[0], false, &listCovered); !list.isEmpty()) return list;
+    if (QString list = byList(english, depth, joins[0], false, &listCovered); !list.isEmpty()) return list;
     QString out;
     for (size_t i : ps.suffixes)
         if (tryOne(i, &out)) return out;
@@ -208,10 +208,10 @@ QString lookUp(const QString& english, int depth, qsizetype* covered) {
     // A ", " list (the signals of a PDO, "Statusword = 0637h (Operation enabled), Position …"):
     // at once when each item is translated in full; else the list or the shape that translates
     // more ("0x2311 Current, device output side" is a code and one name, not a list).
-    const QString list = byList(english, depth, joins[1], true, &listCovered);
+    QString list = byList(english, depth, joins[1], true, &listCovered);
     if (!list.isEmpty() && listCovered == english.size() - english.count(QLatin1String(", ")) * 2) return list;
     qsizetype shapeCovered = 0;
-    const QString shaped = byShape(english, depth, &shapeCovered);
+    QString shaped = byShape(english, depth, &shapeCovered);
     if (!list.isEmpty() && listCovered > shapeCovered) {
         if (covered) *covered = listCovered;
         return list;
@@ -252,7 +252,7 @@ QString coreLines(const QString& english) {
 
 QString coreJoined(const QString& english, const QString& separator) {
     if (language::current() == u"en") return english;
-    const QString whole = lookUp(english, 0);
+    QString whole = lookUp(english, 0);
     if (whole != english) return whole;
     QStringList parts = english.split(separator);
     for (QString& part : parts) part = lookUp(part, 0);

@@ -30,7 +30,7 @@ QString resolve(const QString& code);
 // Loads the app's and Qt's own translations for `code` (resolved) and installs them, replacing
 // the ones loaded before; "en" removes them. Qt then sends every widget QEvent::LanguageChange.
 // Returns false when the embedded translation could not be loaded (English stays).
-bool apply(const QString& code);
+bool apply(const QString& wanted);
 
 // The language apply() installed last ("en" before the first call).
 QString current();

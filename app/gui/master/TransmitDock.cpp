@@ -268,7 +268,7 @@ void TransmitDock::noteControlword(const CanFrame& frame, const canopen::RpdoAdd
         const bool controlword = m.index >= 0x6000 && (m.index - 0x6000) % 0x800 == 0x40 && m.sub == 0 && m.bits == 16;
         if (controlword && offset % 8 == 0 && offset / 8 + 2 <= frame.payloadSize()) {
             const auto cw =
-                static_cast<uint16_t>(frame.data[size_t(offset / 8)] | (frame.data[size_t(offset / 8 + 1)] << 8));
+                static_cast<uint16_t>(frame.data[size_t(offset) / 8] | (frame.data[size_t(offset) / 8 + 1] << 8));
             if (canopen::EnabledDrives::enablesVoltage(cw))
                 master->enabledDrives().noteControlword(aimed.node, (m.index - 0x6000) / 0x800, cw);
         }

@@ -56,7 +56,7 @@ public:
     // waiting on the GUI thread: the question shows when the answers (or their timeouts) are in.
     // False when refused at once (not connected, listen-only, another question open); true when
     // sent, or asked (nmtFinished() tells whether it went out).
-    bool sendNmt(uint8_t command, int node, bool confirm = true);
+    bool sendNmt(uint8_t command, int node, bool ask = true);
     // Scans node-IDs 1–127 and identifies who answers (NodeScanner); asks first unless `ask`
     // is false (the scan the window starts on connect). The one path behind every Scan button.
     void scan(bool ask = true);

@@ -100,7 +100,7 @@ QModelIndex OdTreeModel::indexOf(uint16_t index, uint8_t sub, int column) const 
     if (!it->composite) return sub == 0 ? createIndex(objRow, column, quintptr(0)) : QModelIndex();
     const od::Object* obj = dictionary_.object(index);
     for (size_t i = 0; i < obj->subs.size(); ++i)
-        if (obj->subs[i].sub == sub) return createIndex(static_cast<int>(i), column, quintptr(objRow + 1));
+        if (obj->subs[i].sub == sub) return createIndex(static_cast<int>(i), column, quintptr(objRow) + 1);
     return {};
 }
 
@@ -111,7 +111,7 @@ QModelIndex OdTreeModel::index(int row, int column, const QModelIndex& parent) c
     if (parent.internalId() != 0 || !rows_[static_cast<size_t>(parent.row())].composite) return {};
     const od::Object* obj = dictionary_.object(rows_[static_cast<size_t>(parent.row())].index);
     if (!obj || row >= static_cast<int>(obj->subs.size())) return {};
-    return createIndex(row, column, quintptr(parent.row() + 1));
+    return createIndex(row, column, quintptr(parent.row()) + 1);
 }
 
 QModelIndex OdTreeModel::parent(const QModelIndex& child) const {

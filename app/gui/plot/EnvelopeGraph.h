@@ -47,7 +47,7 @@ protected:
 private:
     // Writes the spans straight into the painter's QImage (the plot's own paint buffer) when
     // that is pixel for pixel what filling them would do; false: paint them instead.
-    bool fillDirect(QCPPainter* painter, const QColor& color, int penWidth) const;
+    bool fillDirect(QCPPainter* painter, const QColor& color, int w) const;
 
     mutable QVector<QRect> spans_;
     QVector<QPointF> lines_;  // the plain case's pixel points, reused

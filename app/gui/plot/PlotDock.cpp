@@ -252,7 +252,7 @@ QJsonObject PlotDock::layoutJson() const {
 void PlotDock::setLayoutJson(const QJsonObject& layout) {
     if (layout.isEmpty()) return;
     wanted_.clear();
-    for (const QJsonValue& v : layout.value(QStringLiteral("signals")).toArray()) {
+    for (const QJsonValue v : layout.value(QStringLiteral("signals")).toArray()) {
         if (const auto key = SignalKey::parse(v.toString())) wanted_.push_back(*key);
         else spdlog::warn("project plot layout: '{}' is not a signal", v.toString().toStdString());
     }

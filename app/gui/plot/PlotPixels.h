@@ -25,7 +25,7 @@ struct PlotPixels {
     static int step(const QPen& pen);
     // The pixels of `line` (painter coordinates, horizontal or vertical, both ends included) from
     // its first point on, every `step`th one.
-    void line(const QLine& line, uint32_t premultiplied, int step) const;
+    void line(const QLine& line, uint32_t px, int step) const;
 };
 
 }  // namespace coscope::gui

@@ -342,7 +342,7 @@ bool PlotView::refresh(bool force) {
             else s.buffer->envelope(t0, t1, width, points_);
             // No line across a gap of the samples (PlotGaps.h): a NaN point between them breaks it.
             const std::vector<size_t> gaps = plotGaps(points_, (t1 - t0) / width);
-            data.resize(static_cast<qsizetype>(points_.size() + gaps.size()));
+            data.resize(static_cast<qsizetype>(points_.size()) + static_cast<qsizetype>(gaps.size()));
             QCPGraphData* d = data.data();
             Track& t = tracks_[i];
             auto gap = gaps.begin();

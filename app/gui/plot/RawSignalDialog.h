@@ -25,7 +25,7 @@ public:
 
 private:
     // The definition typed, or an empty optional with the reason shown.
-    bool read(dissect::RawSignal& out);
+    bool read(dissect::RawSignal& s);
 
     QLineEdit* name_;
     QLineEdit* cobId_;

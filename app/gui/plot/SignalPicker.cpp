@@ -230,8 +230,11 @@ void SignalPicker::onItemChanged(QTreeWidgetItem* item, int column) {
         const bool on = item->checkState(ColName) == Qt::Checked;
         const auto p = std::find(picked_.begin(), picked_.end(), key);
         if (on == (p != picked_.end())) return;
-        if (on) picked_.push_back(key);
-        else picked_.erase(p);
+        if (on) {
+            picked_.push_back(key);
+        } else {
+            picked_.erase(p);
+        }
         emit pickedChanged();
     } else if (column == ColUnit || column == ColFactor) {
         SignalScale sc = scale(key);

@@ -98,7 +98,7 @@ void ProjectSession::restoreSettings() {
     if (plots_.restore) plots_.restore(project_.plots);
     if (traceFilters_.restore) traceFilters_.restore(project_.traceFilters);
     if (!workspace_) return;
-    for (const QJsonValue& v : project_.rawSignals) {
+    for (const QJsonValue v : project_.rawSignals) {
         const auto signal = dissect::RawSignal::parse(v.toString());
         if (!signal) continue;
         const auto& have = workspace_->rawSignals();

@@ -10,6 +10,6 @@ class Workspace;
 // (SDO reads of 1000h, 1008h, 1018h), sets each node's producer heartbeat time 1017h to
 // 500 ms and starts all nodes (NMT Start, CiA 301 §7.2.8.3.1). It refuses to touch anything
 // but a sim:// bus that may transmit.
-void startSimulationDemo(Workspace* workspace);
+void startSimulationDemo(Workspace* ws);
 
 }  // namespace coscope::gui

@@ -245,7 +245,7 @@ void Workspace::closeMaster() {
 // (no SDO client, no event loop) is needed, so it also runs from the destructor.
 canopen::DriveDisableOutcome Workspace::disableEnabledDrives() {
     if (!master_ || master_->enabledDrives().isEmpty()) return {};
-    const canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*master_, kDisableWaitMs);
+    canopen::DriveDisableOutcome outcome = canopen::disableEnabledDrives(*master_, kDisableWaitMs);
     for (const auto& d : outcome.drives) {
         const int node = d.drive.node, axis = d.drive.axis;
         auto name = [node, axis] { return axis ? tr("node %1 axis %2").arg(node).arg(axis) : tr("node %1").arg(node); };

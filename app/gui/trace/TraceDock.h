@@ -81,7 +81,7 @@ signals:
     void message(const QString& text);  // for the status bar (user actions only)
 
 private:
-    void buildToolbar(QWidget* bar);
+    void buildToolbar(QWidget* host);
     void onCurrentChanged();
     void toggleRow(int row);          // a row of the trace model
     void setFindMissed(bool missed);  // the find field turns red while its text is not found

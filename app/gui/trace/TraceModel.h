@@ -171,8 +171,8 @@ private:
     // store to load them on its loader thread and draws them as loading; refresh() repaints
     // once the store has paged something in. The GUI thread never waits for the disk.
     bool pagedOut(FrameNo n, int row, int col) const;
-    bool groupPagedOut(uint32_t group) const;                    // a transfer's frames and its last one's checkpoint
-    bool requestPageIns(std::span<const FrameNo> frames) const;  // true: some are paged out
+    bool groupPagedOut(uint32_t group) const;                  // a transfer's frames and its last one's checkpoint
+    bool requestPageIns(std::span<const FrameNo> need) const;  // true: some are paged out
     // New frames [from, to) tested by refresh(): pins their chunks from `from` on while they are
     // in RAM and returns where the first one that is not starts (asked of the loader), or `to`.
     FrameNo pinResident(FrameNo from, FrameNo to) const;

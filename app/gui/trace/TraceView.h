@@ -55,7 +55,7 @@ private:
     // Makes sure logical rows [top, top + page) are in the window, away from its edges.
     void ensureWindowAround(int row);
     void onInnerScrolled(int value);
-    void onBarMoved(int value);
+    void onBarMoved(int top);
     void syncBar();
 
     TraceModel* source_;

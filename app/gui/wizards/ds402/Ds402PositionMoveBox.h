@@ -41,7 +41,7 @@ public:
     void setButtons(bool armEnabled, bool holdEnabled);
     // A move from `from` to `to` begins: the way shown, the handshake cleared.
     void started(int32_t from, int32_t to);
-    void showControlword(uint16_t controlword);  // as the controller sends it
+    void showControlword(uint16_t cw);  // as the controller sends it
     void showSample(const canopen::Ds402MotionSample& sample);
     void showResult(const QString& text, bool ok);
     QString resultText() const;

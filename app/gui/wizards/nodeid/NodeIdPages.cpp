@@ -186,13 +186,16 @@ void NodeIdFindPage::refresh() {
     const int idx = dictionary_->findData(wizard_->dictionary());
     dictionary_->setCurrentIndex(idx < 0 ? 0 : idx);
     dictionary_->setEnabled(wizard_->node() != 0 && wizard_->node() != 0xFF);
-    if (wizard_->node() == 0xFF) target_->setText(tr("Target: the device without node-ID found by LSS Fastscan."));
-    else if (wizard_->node() != 0)
+    if (wizard_->node() == 0xFF) {
+        target_->setText(tr("Target: the device without node-ID found by LSS Fastscan."));
+    } else if (wizard_->node() != 0) {
         target_->setText(
             tr("Target: node %1%2.")
                 .arg(wizard_->node())
                 .arg(wizard_->dictionary().isEmpty() ? QString() : QStringLiteral(" (%1)").arg(wizard_->dictionary())));
-    else target_->setText(tr("No device chosen yet."));
+    } else {
+        target_->setText(tr("No device chosen yet."));
+    }
     emit completeChanged();
 }
 

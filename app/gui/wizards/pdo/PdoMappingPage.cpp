@@ -201,7 +201,7 @@ void PdoMappingPage::moveUp(int row) {
 void PdoMappingPage::moveDown(int row) {
     auto& e = wizard_->state().wanted.entries;
     if (row < 0 || row + 1 >= static_cast<int>(e.size())) return;
-    std::swap(e[static_cast<size_t>(row)], e[static_cast<size_t>(row + 1)]);
+    std::swap(e[static_cast<size_t>(row)], e[static_cast<size_t>(row) + 1]);
     showMapped();
     mapped_->setCurrentRow(row + 1);
 }

@@ -7,11 +7,11 @@
 namespace coscope::gui {
 
 QString PdoWizardState::objectName(uint16_t index, uint8_t sub) const {
-    const QString ref = QStringLiteral("%1h:%2")
-                            .arg(index, 4, 16, QChar(u'0'))
-                            .arg(sub, 2, 16, QChar(u'0'))
-                            .toUpper()
-                            .replace(QStringLiteral("H:"), QStringLiteral("h:"));
+    QString ref = QStringLiteral("%1h:%2")
+                      .arg(index, 4, 16, QChar(u'0'))
+                      .arg(sub, 2, 16, QChar(u'0'))
+                      .toUpper()
+                      .replace(QStringLiteral("H:"), QStringLiteral("h:"));
     if (index >= 1 && index <= 7) return ref + QStringLiteral(" (gap: dummy)");
     if (dictionary && dictionary->entry(index, sub))
         return ref + QLatin1Char(' ') +
