@@ -57,6 +57,18 @@ struct SignalBuffer::Chunk {
     std::vector<Edge> edge[kEdgeLevels];  // edge[k][j]: samples [j * kEdgeBlock[k], (j + 1) * kEdgeBlock[k])
 
     size_t size() const { return t.size(); }
+    void reserve(size_t samples) {
+        t.reserve(samples);
+        v.reserve(samples);
+        f.reserve(samples);
+        if (samples < kChunkSize) return;
+        blockTime.reserve(kChunkSize / kTimeBlock);
+        for (int k = 0; k < kLevels; ++k) {
+            level[k].reserve(kChunkSize / kBlock[k]);
+            bits[k].reserve(kChunkSize / kBlock[k]);
+        }
+        for (int k = 0; k < kEdgeLevels; ++k) edge[k].reserve(kChunkSize / kEdgeBlock[k]);
+    }
     size_t lowerBound(int64_t time) const {
         const auto b =
             static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
@@ -117,9 +129,11 @@ void SignalBuffer::append(std::span<const SignalSample> samples) {
                 chunkStart_.erase(chunkStart_.begin());
             }
             auto c = std::make_unique<Chunk>();
-            c->t.reserve(256);
-            c->v.reserve(256);
-            c->f.reserve(256);
+            // A signal that filled a chunk fills the next: its memory is taken at once, in the
+            // same sizes as the chunk evicted (issue 38: chunks grown by doubling and freed in
+            // turn left the heap fragmented, its top creeping up by ~0.7 MiB a minute).
+            const size_t reserve = chunks_.empty() ? 256 : kChunkSize;
+            c->reserve(reserve);
             chunks_.push_back(std::move(c));
             chunkStart_.push_back(s.timeNs);
         }
