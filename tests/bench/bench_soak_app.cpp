@@ -138,9 +138,14 @@ void report(int rate, size_t budgetMiB, const Result& r) {
     std::printf("trace RAM (TraceStore::memoryBytes) max %.1f MiB, ratio to budget %.2f\n", r.storeMaxMiB,
                 r.storeMaxMiB / double(budgetMiB));
     const char* name = rate >= 50000 ? "soak_app_100k" : "soak_app_8k";
-    if (r.budgetReachedAt < 0) {
-        std::printf("resident memory: budget not reached in %.0f s (start %.1f MiB, end %.1f MiB): no verdict\n",
-                    r.seconds, r.rssStart, r.rssEnd);
+    // Under two minutes after the budget (a machine too busy to play the log at its rate): the
+    // other bounded structures may still be filling, a slope says nothing.
+    constexpr double kMinAfterBudget = 120;
+    if (r.budgetReachedAt < 0 || r.seconds - r.budgetReachedAt < kMinAfterBudget) {
+        std::printf(
+            "resident memory: budget %s in %.0f s (start %.1f MiB, end %.1f MiB): under %.0f s after it, no "
+            "verdict\n",
+            r.budgetReachedAt < 0 ? "not reached" : "reached late", r.seconds, r.rssStart, r.rssEnd, kMinAfterBudget);
         std::fflush(stdout);
         return;
     }
