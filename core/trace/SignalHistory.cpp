@@ -167,7 +167,7 @@ void SignalHistory::points(int64_t t0, int64_t t1, int columns, int bit, bool wi
             out.push_back({c.tLast, rising ? hi : lo});
             return;
         }
-        out.push_back({c.tFirst, c.first});
+        // Two points a column, as SignalBuffer::envelope(): the extremes in the order they came.
         if (c.tMin <= c.tMax) {
             out.push_back({c.tMin, c.min});
             out.push_back({c.tMax, c.max});
@@ -175,7 +175,6 @@ void SignalHistory::points(int64_t t0, int64_t t1, int columns, int bit, bool wi
             out.push_back({c.tMax, c.max});
             out.push_back({c.tMin, c.min});
         }
-        out.push_back({c.tLast, c.last});
     };
     Bucket acc;
     int column = -1;

@@ -42,8 +42,8 @@ public:
     void samples(int64_t t0, int64_t t1, std::vector<SignalSample>& out) const;
     // Extremes over [t0, t1] of the buckets that overlap it (bit >= 0: of that bit).
     SignalRange range(int64_t t0, int64_t t1, int bit) const;
-    // A polyline of [t0, t1] for `columns` pixel columns: per column the extremes in the order
-    // they occurred (the bucket's own points when a column holds at most one bucket). With
+    // A polyline of [t0, t1] for `columns` pixel columns: per column at most two points, its
+    // extremes in the order they occurred (one for a single sample). With
     // `withBefore` the last point before t0 is included, so lines reach the window's edge.
     void points(int64_t t0, int64_t t1, int columns, int bit, bool withBefore, std::vector<SignalPoint>& out) const;
 
