@@ -47,10 +47,12 @@ void NetworkHealth::addErrorControl(const CanFrame& f, int id, BusTrack&) {
     const int state = f.data[0] & 0x7F;  // bit 7 is the guarding toggle
     // The time from a boot-up to the first heartbeat is no heartbeat period: a producer starts
     // when its 1017h is set, often seconds later (issue 37: such a start is not "lost").
-    if (t.beats && !t.lastWasBootUp && f.timestampNs >= t.lastBeatNs && t.beatGapsNs.size() < kMaxSamples) {
-        t.beatGapsNs.push_back(f.timestampNs - t.lastBeatNs);
-        t.beatGapFrames.push_back(frameNo_);
-        t.beatGapEndNs.push_back(f.timestampNs);
+    if (t.beats && !t.lastWasBootUp && f.timestampNs >= t.lastBeatNs) {
+        const int64_t gap = f.timestampNs - t.lastBeatNs;
+        const uint64_t number = t.beatGaps.count;
+        const bool longGap = number < kFirstGaps || double(gap) > kLongGap * double(t.beatGaps.minNs);
+        t.beatGaps.add(gap);
+        if (longGap && t.longGaps.size() < kMaxSamples) t.longGaps.push_back({gap, f.timestampNs, frameNo_, number});
     }
     ++t.beats;
     t.lastBeatNs = f.timestampNs;
@@ -115,13 +117,10 @@ void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const Netwo
     h.resetAt = t.resetAt;
     h.lastBeatNs = t.lastBeatNs;
     h.lastBeatFrame = t.lastBeatFrame;
-    if (!t.beatGapsNs.empty()) {
-        const auto [mn, mx] = std::minmax_element(t.beatGapsNs.begin(), t.beatGapsNs.end());
-        double sum = 0;
-        for (int64_t g : t.beatGapsNs) sum += static_cast<double>(g);
-        h.periodMinMs = static_cast<double>(*mn) / 1e6;
-        h.periodMaxMs = static_cast<double>(*mx) / 1e6;
-        h.periodAvgMs = sum / static_cast<double>(t.beatGapsNs.size()) / 1e6;
+    if (t.beatGaps.count) {
+        h.periodMinMs = static_cast<double>(t.beatGaps.minNs) / 1e6;
+        h.periodMaxMs = static_cast<double>(t.beatGaps.maxNs) / 1e6;
+        h.periodAvgMs = t.beatGaps.averageMs();
         h.longestGapMs = h.periodMaxMs;
     }
     // The producer heartbeat time 1017h (CiA 301 §7.5.2.25): written/read in the trace, else the
@@ -139,30 +138,30 @@ void NetworkHealth::fillHeartbeat(NodeHealth& h, const NodeTrack& t, const Netwo
     if (periodMs > 0) {
         h.expectedPeriodMs = periodMs;
         h.periodSource = QStringLiteral("1017h");
-    } else if (!t.beatGapsNs.empty()) {
-        std::vector<int64_t> gaps = t.beatGapsNs;
-        auto mid = gaps.begin() + static_cast<std::ptrdiff_t>(gaps.size() / 2);
-        std::nth_element(gaps.begin(), mid, gaps.end());
-        h.expectedPeriodMs = static_cast<double>(*mid) / 1e6;
+    } else if (t.beatGaps.count) {
+        h.expectedPeriodMs = t.beatGaps.medianMs();
         h.periodSource = QStringLiteral("observed");
     }
     if (h.expectedPeriodMs <= 0) return;
     const double lateNs = 1.5e6 * h.expectedPeriodMs, lostNs = 3e6 * h.expectedPeriodMs;
     // "Lost" is a stop after regular beats: a long gap before the first regular interval is a
     // heartbeat that started late (or was set up later), not a lost one.
+    // A gap not kept one by one was at most kLongGap x the shortest: regular.
     bool regular = false;
-    const std::vector<int64_t>& ends = t.beatGapEndNs;
-    for (size_t i = 0; i < t.beatGapsNs.size(); ++i) {
-        const double gd = static_cast<double>(t.beatGapsNs[i]);
+    uint64_t next = 0;  // the number of the gap after the last long one looked at
+    for (const auto& g : t.longGaps) {
+        if (g.number > next) regular = true;
+        next = g.number + 1;
+        const double gd = static_cast<double>(g.ns);
         if (gd > lostNs) {
             if (regular) {
                 ++h.timeouts;
-                h.lostAt.add(ends[i], t.beatGapFrames[i]);
+                h.lostAt.add(g.endNs, g.frame);
             }
         } else if (gd > lateNs) {
             if (regular) {
                 ++h.late;
-                h.lateAt.add(ends[i], t.beatGapFrames[i]);
+                h.lateAt.add(g.endNs, g.frame);
             }
         } else {
             regular = true;

@@ -42,6 +42,17 @@ double IntervalStats::medianMs() const {
     return 0;
 }
 
+double IntervalStats::quantileMs(double q) const {
+    if (count == 0) return 0;
+    const auto rank = std::clamp<uint64_t>(static_cast<uint64_t>(std::ceil(q * static_cast<double>(count))), 1, count);
+    uint64_t seen = 0;
+    for (const Bucket& b : buckets) {
+        seen += b.count;
+        if (seen >= rank) return static_cast<double>(b.sumNs) / static_cast<double>(b.count) / 1e6;
+    }
+    return static_cast<double>(maxNs) / 1e6;
+}
+
 double IntervalStats::shareNear(double periodMs, double tolerance) const {
     if (count == 0 || periodMs <= 0) return 0;
     uint64_t near = 0;
@@ -68,6 +79,14 @@ uint64_t IntervalStats::countOver(double periodMs, double factor, uint64_t* miss
 }
 
 // ---- NetworkHealth
+size_t NetworkHealth::samplesHeld() const {
+    size_t n = 0;
+    for (const BusTrack& b : buses_)
+        for (const auto& t : b.nodes)
+            if (t) n += t->beatGaps.buckets.size() + t->longGaps.size() + t->sdoRt.buckets.size();
+    return n;
+}
+
 NetworkHealth::NodeTrack& NetworkHealth::node(int bus, int id) {
     auto& slot = busTrack(bus).nodes[static_cast<size_t>(id & 0x7F)];
     if (!slot) slot = std::make_unique<NodeTrack>();

@@ -56,6 +56,9 @@ struct IntervalStats {
     }
     double jitterMs() const;  // standard deviation; 0 when empty
     double medianMs() const;  // 0 when empty
+    // The q-quantile (0..1, nearest rank), as the mean of its bucket (within 1/32 octave); 0 when
+    // empty.
+    double quantileMs(double q) const;
     // The share (0..1) of intervals within `tolerance` (0.25 = ±25 %) of `periodMs`.
     double shareNear(double periodMs, double tolerance) const;
     // Gaps over `factor` x `periodMs`: how many, and how many whole periods they leave out.
@@ -98,11 +101,16 @@ public:
 
     uint64_t frames() const { return frames_; }
     int64_t lastNs() const { return lastNs_; }
+    // Entries held for the nodes' heartbeat gaps and SDO response times (histogram buckets and
+    // gaps kept one by one): bounded however long the trace (issue 38).
+    size_t samplesHeld() const;
 
     // SDO timeout: a request with no answer within this time (CiA 301 leaves it to the client;
     // 1 s is the usual default).
     static constexpr int64_t kSdoTimeoutNs = 1'000'000'000;
     static constexpr size_t kMaxSamples = 1'000'000;  // per node, for heartbeats and SDO times
+    static constexpr uint64_t kFirstGaps = 16;
+    static constexpr double kLongGap = 1.25;
 
 private:
     // Intervals that differ from the one before by over 25 %: the candidates for the frames of a
@@ -134,9 +142,16 @@ private:
         int64_t lastBeatNs = 0;
         bool lastWasBootUp = false;  // the frame at lastBeatNs was a boot-up, not a beat
         uint64_t lastBeatFrame = 0;
-        std::vector<int64_t> beatGapsNs;      // between beats; none from a boot-up to the first beat
-        std::vector<uint64_t> beatGapFrames;  // the frame that ended each gap, and its time
-        std::vector<int64_t> beatGapEndNs;
+        // Between beats; none from a boot-up to the first beat. Bounded (issue 38): all of them
+        // in a histogram (count, min, max, mean, median); one by one only the first kFirstGaps and
+        // those over kLongGap x the shortest so far, the only ones that can be late or lost
+        // (over 1.5 x the period), each with the frame that ended it, its time and its number.
+        IntervalStats beatGaps;
+        struct LongGap {
+            int64_t ns, endNs;
+            uint64_t frame, number;
+        };
+        std::vector<LongGap> longGaps;
         Occurrences resetAt;
         int state = -1;
         uint64_t bootUps = 0, resets = 0, nmtCommands = 0;
@@ -159,7 +174,7 @@ private:
         uint64_t sdoRtMaxFrame = 0;
         uint64_t sdoRequests = 0, sdoResponses = 0, sdoTimeouts = 0;
         uint64_t sdoOk = 0, sdoAborted = 0, sdoFailed = 0;
-        std::vector<float> sdoRtMs;
+        IntervalStats sdoRt;                    // response times, ns (a histogram: bounded, issue 38)
         std::map<uint64_t, AbortCount> aborts;  // by code, own ones (bit 32) apart
         // EMCY
         uint64_t emcys = 0, emcyResets = 0;

@@ -35,7 +35,7 @@ void NetworkHealth::addSdo(const CanFrame& f, const Dissection& d, const Network
         if (t.sdoPending) {
             ++t.sdoResponses;
             const float rt = static_cast<float>(static_cast<double>(now - t.sdoRequestNs) / 1e6);
-            if (t.sdoRtMs.size() < kMaxSamples) t.sdoRtMs.push_back(rt);
+            t.sdoRt.add(now - t.sdoRequestNs);
             if (rt > t.sdoRtMaxMs) {
                 t.sdoRtMaxMs = rt;
                 t.sdoRtMaxNs = now;
@@ -105,17 +105,12 @@ void NetworkHealth::fillSdo(NodeHealth& h, const NodeTrack& t, int64_t nowNs) co
     for (const auto& [code, a] : t.aborts) h.sdoAborts.push_back(a);
     std::sort(h.sdoAborts.begin(), h.sdoAborts.end(),
               [](const AbortCount& a, const AbortCount& b) { return a.count > b.count; });
-    if (t.sdoRtMs.empty()) return;
-    std::vector<float> rt = t.sdoRtMs;
-    std::sort(rt.begin(), rt.end());
-    double sum = 0;
-    for (float v : rt) sum += v;
-    h.sdoRtMinMs = rt.front();
-    h.sdoRtMaxMs = rt.back();
-    h.sdoRtAvgMs = sum / static_cast<double>(rt.size());
-    // Nearest-rank 99th percentile.
-    const size_t rank = static_cast<size_t>(std::ceil(0.99 * static_cast<double>(rt.size())));
-    h.sdoRtP99Ms = rt[std::clamp<size_t>(rank, 1, rt.size()) - 1];
+    if (!t.sdoRt.count) return;
+    h.sdoRtMinMs = static_cast<double>(t.sdoRt.minNs) / 1e6;
+    h.sdoRtMaxMs = static_cast<double>(t.sdoRt.maxNs) / 1e6;
+    h.sdoRtAvgMs = t.sdoRt.averageMs();
+    // Nearest-rank 99th percentile, within its 1/32-octave bucket (never beyond the extremes).
+    h.sdoRtP99Ms = std::clamp(t.sdoRt.quantileMs(0.99), h.sdoRtMinMs, h.sdoRtMaxMs);
 }
 
 }  // namespace coscope::dissect

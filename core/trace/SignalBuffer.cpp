@@ -24,6 +24,12 @@ constexpr size_t kEdgeBlock[kEdgeLevels] = {16, 32, 64, 128, 256, 512, 1024, 204
 constexpr size_t kEdgeBlocksPerColumn = 4;  // a level's block is at most a quarter column
 static_assert(SignalBuffer::kChunkSize % kEdgeBlock[kEdgeLevels - 1] == 0);
 
+// The pixel columns of [t0, t1] that fall before `historyEnd` (at least one).
+int historyColumns(int64_t t0, int64_t t1, int64_t historyEnd, int columns) {
+    const double share = (double(historyEnd) - double(t0) + 1) / std::max(1.0, double(t1) - double(t0) + 1);
+    return std::clamp(int(std::lround(share * columns)), 1, std::max(1, columns));
+}
+
 uint64_t bitsOf(double v) {
     if (!std::isfinite(v)) return 0;
     if (v >= 0 && v >= 9.2e18) return static_cast<uint64_t>(v);
@@ -51,6 +57,18 @@ struct SignalBuffer::Chunk {
     std::vector<Edge> edge[kEdgeLevels];  // edge[k][j]: samples [j * kEdgeBlock[k], (j + 1) * kEdgeBlock[k])
 
     size_t size() const { return t.size(); }
+    void reserve(size_t samples) {
+        t.reserve(samples);
+        v.reserve(samples);
+        f.reserve(samples);
+        if (samples < kChunkSize) return;
+        blockTime.reserve(kChunkSize / kTimeBlock);
+        for (int k = 0; k < kLevels; ++k) {
+            level[k].reserve(kChunkSize / kBlock[k]);
+            bits[k].reserve(kChunkSize / kBlock[k]);
+        }
+        for (int k = 0; k < kEdgeLevels; ++k) edge[k].reserve(kChunkSize / kEdgeBlock[k]);
+    }
     size_t lowerBound(int64_t time) const {
         const auto b =
             static_cast<size_t>(std::lower_bound(blockTime.begin(), blockTime.end(), time) - blockTime.begin());
@@ -104,14 +122,18 @@ void SignalBuffer::append(std::span<const SignalSample> samples) {
     for (const SignalSample& s : samples) {
         if (chunks_.empty() || chunks_.back()->full()) {
             if (chunks_.size() >= capacityChunks_ + 1) {  // keep `capacity` whole chunks behind the one filling
+                const Chunk& old = *chunks_.front();
+                for (size_t i = 0; i < old.size(); ++i) history_.add(old.t[i], old.v[i], old.f[i]);
                 base_ += chunks_.front()->size();
                 chunks_.pop_front();
                 chunkStart_.erase(chunkStart_.begin());
             }
             auto c = std::make_unique<Chunk>();
-            c->t.reserve(256);
-            c->v.reserve(256);
-            c->f.reserve(256);
+            // A signal that filled a chunk fills the next: its memory is taken at once, in the
+            // same sizes as the chunk evicted (issue 38: chunks grown by doubling and freed in
+            // turn left the heap fragmented, its top creeping up by ~0.7 MiB a minute).
+            const size_t reserve = chunks_.empty() ? 256 : kChunkSize;
+            c->reserve(reserve);
             chunks_.push_back(std::move(c));
             chunkStart_.push_back(s.timeNs);
         }
@@ -124,6 +146,7 @@ void SignalBuffer::clear() {
     std::lock_guard lock(mutex_);
     chunks_.clear();
     chunkStart_.clear();
+    history_.clear();
     base_ = appended_.load();
 }
 
@@ -140,6 +163,24 @@ size_t SignalBuffer::size() const {
 uint64_t SignalBuffer::dropped() const {
     std::lock_guard lock(mutex_);
     return base_;
+}
+
+size_t SignalBuffer::historyBuckets() const {
+    std::lock_guard lock(mutex_);
+    return history_.buckets();
+}
+
+size_t SignalBuffer::historySamplesPerBucket() const {
+    std::lock_guard lock(mutex_);
+    return history_.samplesPerBucket();
+}
+
+bool SignalBuffer::historyPartLocked(int64_t t0, int64_t t1, int64_t* historyEnd) const {
+    if (history_.empty() || t1 < t0) return false;
+    const int64_t detailFrom = countLocked() ? chunks_.front()->t[0] : INT64_MAX;
+    if (t0 >= detailFrom) return false;
+    *historyEnd = std::min(t1, detailFrom - 1);
+    return true;
 }
 
 SignalPoint SignalBuffer::pointLocked(size_t r) const {
@@ -275,6 +316,7 @@ std::vector<SignalSample> SignalBuffer::samplesLocked(size_t from, size_t to) co
 
 std::optional<SignalSample> SignalBuffer::first() const {
     std::lock_guard lock(mutex_);
+    if (!history_.empty()) return history_.first();
     if (!countLocked()) return std::nullopt;
     return sampleLocked(0);
 }
@@ -289,6 +331,7 @@ std::optional<SignalSample> SignalBuffer::last() const {
 std::optional<SignalSample> SignalBuffer::at(int64_t timeNs) const {
     std::lock_guard lock(mutex_);
     const size_t n = countLocked();
+    if (int64_t end = 0; historyPartLocked(timeNs, timeNs, &end)) return history_.at(timeNs);
     if (!n) return std::nullopt;
     const size_t i = lowerBoundLocked(timeNs + 1);  // first sample after t
     return sampleLocked(i == 0 ? 0 : i - 1);
@@ -297,6 +340,12 @@ std::optional<SignalSample> SignalBuffer::at(int64_t timeNs) const {
 std::optional<SignalSample> SignalBuffer::nearest(int64_t timeNs) const {
     std::lock_guard lock(mutex_);
     const size_t n = countLocked();
+    if (int64_t end = 0; historyPartLocked(timeNs, timeNs, &end)) {
+        const auto h = history_.nearest(timeNs);
+        if (!n) return h;
+        const SignalSample d = sampleLocked(0);
+        return h && timeNs - h->timeNs <= d.timeNs - timeNs ? *h : d;
+    }
     if (!n) return std::nullopt;
     const size_t i = lowerBoundLocked(timeNs);
     if (i == 0) return sampleLocked(0);
@@ -308,11 +357,28 @@ std::optional<SignalSample> SignalBuffer::nearest(int64_t timeNs) const {
 std::vector<SignalSample> SignalBuffer::samples(int64_t t0, int64_t t1) const {
     std::lock_guard lock(mutex_);
     if (t1 < t0) return {};
-    return samplesLocked(lowerBoundLocked(t0), lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1));
+    std::vector<SignalSample> out;
+    if (int64_t end = 0; historyPartLocked(t0, t1, &end)) history_.samples(t0, end, out);
+    if (!countLocked()) return out;
+    std::vector<SignalSample> detail =
+        samplesLocked(lowerBoundLocked(t0), lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1));
+    if (out.empty()) return detail;
+    out.insert(out.end(), detail.begin(), detail.end());
+    return out;
 }
 
 SignalRange SignalBuffer::range(int64_t t0, int64_t t1, int bit) const {
     std::lock_guard lock(mutex_);
+    SignalRange old;
+    if (int64_t end = 0; historyPartLocked(t0, t1, &end)) old = history_.range(t0, end, bit);
+    const SignalRange recent = rangeLocked(t0, t1, bit);
+    if (!old.valid) return recent;
+    if (!recent.valid) return old;
+    return {std::min(old.min, recent.min), std::max(old.max, recent.max), true};
+}
+
+SignalRange SignalBuffer::rangeLocked(int64_t t0, int64_t t1, int bit) const {
+    if (!countLocked()) return {};
     const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
     if (from >= to) return {};
     if (bit >= 0 && bit < 64) {
@@ -326,7 +392,15 @@ SignalRange SignalBuffer::range(int64_t t0, int64_t t1, int bit) const {
 std::vector<SignalPoint> SignalBuffer::decimate(int64_t t0, int64_t t1, int buckets, int bit) const {
     std::vector<SignalPoint> out;
     std::lock_guard lock(mutex_);
-    if (!countLocked() || t1 < t0) return out;
+    if (t1 < t0) return out;
+    if (int64_t end = 0; historyPartLocked(t0, t1, &end)) {
+        const int share = historyColumns(t0, t1, end, buckets);
+        history_.points(t0, end, share, bit, true, out);
+        if (end >= t1 || !countLocked()) return out;
+        t0 = end + 1;
+        buckets = std::max(1, buckets - share);
+    }
+    if (!countLocked()) return out;
     decimateLocked(lowerBoundLocked(t0), lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1), t0, t1, buckets, bit, out);
     return out;
 }
@@ -389,8 +463,16 @@ void SignalBuffer::envelope(int64_t t0, int64_t t1, int columns, std::vector<Sig
     out.clear();
     std::lock_guard lock(mutex_);
     const size_t n = countLocked();
-    if (!n || t1 < t0) return;
+    if (t1 < t0) return;
     columns = std::max(1, columns);
+    if (int64_t end = 0; historyPartLocked(t0, t1, &end)) {
+        const int share = historyColumns(t0, t1, end, columns);
+        history_.points(t0, end, share, -1, true, out);
+        if (end >= t1 || !n) return;
+        t0 = end + 1;
+        columns = std::max(1, columns - share);
+    }
+    if (!n) return;
     const size_t from = lowerBoundLocked(t0), to = lowerBoundLocked(t1 == INT64_MAX ? t1 : t1 + 1);
     // The right level, chosen once: the largest whose blocks are at most a quarter column.
     const size_t perColumn = (to - from) / size_t(columns);

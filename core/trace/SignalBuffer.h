@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/trace/SignalHistory.h"
+#include "core/trace/SignalSample.h"
 #include "core/trace/TraceStore.h"
 
 #include <atomic>
@@ -14,31 +16,14 @@
 
 namespace coscope {
 
-// One value of a signal: when, what (the raw value as decoded, before any engineering scale)
-// and which trace frame carried it.
-struct SignalSample {
-    int64_t timeNs = 0;
-    double value = 0;
-    FrameNo frame = 0;
-};
-
-// One vertex of a decimated trace (raw value, or 0/1 for a bit).
-struct SignalPoint {
-    int64_t timeNs = 0;
-    double value = 0;
-};
-
-// Smallest and largest value of a stretch of samples.
-struct SignalRange {
-    double min = 0;
-    double max = 0;
-    bool valid = false;
-};
-
 // The sample history of one signal (DESIGN.md "Data flow": plot buffers fed by the ingest
 // worker). One writer (the ingest thread) appends; any thread reads; a mutex guards both and
 // is held for a batch (writer) or one query (reader), never across a frame loop of the other
-// side. Bounded: when `capacity` samples are exceeded the oldest chunk (65536 samples) goes.
+// side. Bounded (issue 38): when `capacity` samples are exceeded the oldest chunk (65536 samples)
+// leaves the buffer for its decimated history (SignalHistory, a fixed number of buckets with
+// their extremes), so the whole signal stays in view: every query covers the history too, at
+// its resolution (first(), at(), nearest(), samples() name its buckets' first and last samples;
+// range(), decimate() and envelope() use their extremes). size() counts the detailed samples.
 //
 // Min/max pyramid (the plot's redraw cost follows pixels, not samples): each chunk keeps
 // summaries (min, max, AND and OR of the integer value) of blocks of 16, 256, 4096 and 65536
@@ -48,7 +33,9 @@ struct SignalRange {
 class SignalBuffer {
 public:
     static constexpr size_t kChunkSize = 65536;
-    static constexpr size_t kDefaultCapacity = size_t(1) << 22;  // ~4 M samples (70 min at 1 kHz)
+    // 2 chunks of detail behind the one filling (~6 MiB at most, 2 to 3 min at 1 kHz); older
+    // samples are in the history.
+    static constexpr size_t kDefaultCapacity = size_t(2) * kChunkSize;
 
     explicit SignalBuffer(size_t capacity = kDefaultCapacity);
     ~SignalBuffer();
@@ -64,7 +51,10 @@ public:
     size_t size() const;
     // Samples appended since construction (dropped ones included): changes when data arrives.
     uint64_t appended() const { return appended_.load(std::memory_order_acquire); }
-    uint64_t dropped() const;
+    uint64_t dropped() const;  // samples no longer held one by one (in the history)
+    // Buckets of the decimated history, and samples in each of them.
+    size_t historyBuckets() const;
+    size_t historySamplesPerBucket() const;
     std::optional<SignalSample> first() const;
     std::optional<SignalSample> last() const;
     // The last sample at or before t (the value a cursor at t reads), else the first after it.
@@ -115,8 +105,13 @@ private:
     void decimateLocked(size_t from, size_t to, int64_t t0, int64_t t1, int buckets, int bit,
                         std::vector<SignalPoint>& out) const;
 
+    // [t0, t1] split where the detailed samples begin: the part before it is the history's.
+    bool historyPartLocked(int64_t t0, int64_t t1, int64_t* historyEnd) const;
+    SignalRange rangeLocked(int64_t t0, int64_t t1, int bit) const;  // the detailed samples only
+
     size_t capacityChunks_;
     mutable std::mutex mutex_;
+    SignalHistory history_;  // the samples of the chunks that left
     std::deque<std::unique_ptr<Chunk>> chunks_;
     std::vector<int64_t> chunkStart_;  // first time of each chunk (searched without touching them)
     uint64_t base_ = 0;                // global index of chunks_.front()'s first sample

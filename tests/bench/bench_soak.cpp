@@ -23,6 +23,7 @@
 #include "core/trace/CaptureJournal.h"
 #include "core/trace/CaptureSession.h"
 #include "core/trace/TraceStore.h"
+#include "tests/bench/SoakMeter.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -30,48 +31,20 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
-#include <malloc.h>
 #include <time.h>
 #include <unistd.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <thread>
 #include <vector>
 
 using namespace coscope;
+using namespace coscope::bench;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double rssMiB() {
-    std::ifstream statm("/proc/self/statm");
-    long size = 0, resident = 0;
-    statm >> size >> resident;
-    return double(resident) * double(::sysconf(_SC_PAGE_SIZE)) / (1024.0 * 1024.0);
-}
-
-// "Flat": the least-squares slope of the resident memory over the second half of the time after
-// the budget was reached, in MiB a minute, against kFlatMiBPerMin. 0.1 MiB/min is 6 MiB an hour,
-// under 0.25 byte per frame at 8,000 frames/s: nothing kept per frame, while one 1.5 MiB chunk
-// freed late or a malloc arena settling does not count as growth.
-constexpr double kFlatMiBPerMin = 0.1;
-
-double slopeMiBPerMin(const std::vector<std::pair<double, double>>& samples) {
-    if (samples.size() < 3) return 0;
-    const double n = double(samples.size());
-    double st = 0, sr = 0, stt = 0, str = 0;
-    for (const auto& [t, r] : samples) {
-        st += t;
-        sr += r;
-        stt += t * t;
-        str += t * r;
-    }
-    const double d = n * stt - st * st;
-    return d > 0 ? (n * str - st * sr) / d * 60.0 : 0;
-}
 
 // A bus whose reader thread delivers `rate` frames a second, paced by the clock like a saturated
 // bus (due frames are delivered every millisecond).
@@ -227,13 +200,12 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
             }
             if (t - lastLog >= std::chrono::seconds(30)) {  // what grows, for whoever reads the log
                 lastLog = t;
-                const struct mallinfo2 m = ::mallinfo2();
+                const MallocFigures m = mallocFigures();
                 std::fprintf(stderr,
                              "%6.0f s: rss %.1f MiB, store %.1f MiB (%zu chunks), malloc in use %.1f MiB, arena %.1f "
                              "MiB, mmapped %.1f MiB, free %.1f MiB, page-ins %llu\n",
                              std::chrono::duration<double>(t - t0).count(), rss, store->memoryBytes() / 1048576.0,
-                             store->residentChunks(), m.uordblks / 1048576.0 + m.hblkhd / 1048576.0,
-                             m.arena / 1048576.0, m.hblkhd / 1048576.0, m.fordblks / 1048576.0,
+                             store->residentChunks(), m.inUseMiB, m.arenaMiB, m.mmappedMiB, m.freeMiB,
                              (unsigned long long)store->pageIns());
             }
         }
@@ -251,14 +223,8 @@ Result soak(bool fd, int rate, double seconds, size_t budget, const QString& dir
     r.stallMs = maxGapMs;
     if (!rssAfter.empty()) {
         r.slopeFrom = (rssAfter.front().first + rssAfter.back().first) / 2;
-        auto secondHalf = [&r](const std::vector<std::pair<double, double>>& all) {
-            std::vector<std::pair<double, double>> half;
-            for (const auto& s : all)
-                if (s.first >= r.slopeFrom) half.push_back(s);
-            return half;
-        };
-        r.slope = slopeMiBPerMin(secondHalf(rssAfter));
-        r.restSlope = slopeMiBPerMin(secondHalf(restAfter));
+        r.slope = slopeMiBPerMin(samplesFrom(rssAfter, r.slopeFrom));
+        r.restSlope = slopeMiBPerMin(samplesFrom(restAfter, r.slopeFrom));
     }
     journal.close();
     return r;

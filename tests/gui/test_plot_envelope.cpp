@@ -139,7 +139,8 @@ class TestPlotEnvelope : public QObject {
 
 private slots:
     void initTestCase() {
-        buffer_ = std::make_shared<SignalBuffer>();
+        // An hour at 1 kHz sample by sample (no decimated history: the drawing is compared exactly).
+        buffer_ = std::make_shared<SignalBuffer>(size_t(64) * SignalBuffer::kChunkSize);
         values_.reserve(size_t(kSamples) + 20 * kRate);
         append(0, kSamples);
     }

@@ -84,7 +84,7 @@ private slots:
     // plain scan for random windows (inside, across and beyond the data) and widths.
     void pyramidEqualsPlainScan() {
         std::mt19937_64 rng(20261125);
-        SignalBuffer buf;
+        SignalBuffer buf(8 * SignalBuffer::kChunkSize);  // no history: the pyramid itself
         std::vector<SignalSample> all;
         int64_t t = 1'000'000;
         int checks = 0;
@@ -148,7 +148,7 @@ private slots:
     // One sample at a time: every partly filled block of every level is read while it grows.
     void growingBlocksAreExact() {
         std::mt19937_64 rng(7);
-        SignalBuffer buf;
+        SignalBuffer buf(8 * SignalBuffer::kChunkSize);  // no history: the pyramid itself
         std::vector<SignalSample> all;
         for (int i = 0; i < 5000; ++i) {
             const SignalSample s{int64_t(i) * 10, double(int64_t(rng() % 200) - 100), FrameNo(i)};
@@ -169,7 +169,7 @@ private slots:
     // neighbour (spikes are never lost). Zoomed in (under 64 samples a column) it is decimate().
     void envelopeKeepsEverySample() {
         std::mt19937_64 rng(20261126);
-        SignalBuffer buf;
+        SignalBuffer buf(8 * SignalBuffer::kChunkSize);  // no history: the pyramid itself
         std::vector<SignalSample> all;
         int64_t t = 0;
         while (all.size() < 5 * SignalBuffer::kChunkSize + 777) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/gui/events/EventLog.h"
+#include "app/gui/events/EventSpill.h"
 
 #include "app/gui/language/CoreText.h"
 #include "app/gui/language/ObjectNameText.h"
@@ -79,7 +80,18 @@ bool optionalObjectAbsent(const TraceRecord& r) {
 }
 }  // namespace
 
-EventLog::EventLog(std::shared_ptr<const FrameDecoder> decoder) : decoder_(std::move(decoder)) {}
+EventLog::EventLog(std::shared_ptr<const FrameDecoder> decoder)
+    : decoder_(std::move(decoder)), spill_(std::make_unique<EventSpill>()) {}
+
+EventLog::~EventLog() = default;
+
+void EventLog::spillLocked() {
+    if (events_.size() <= kInRam + kInRam / 4) return;  // in steps of a quarter, not one by one
+    while (events_.size() > kInRam) {
+        if (!spill_->append(events_.front())) return;  // no file: they stay in RAM
+        events_.pop_front();
+    }
+}
 
 void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
     if (count == 0) return;
@@ -180,11 +192,13 @@ void EventLog::consume(const TraceStore& store, FrameNo first, size_t count) {
     }
     // Offline, the log's own clock tells when a heartbeat went missing.
     checkHeartbeatsLocked(store.record(first + static_cast<FrameNo>(count - 1)).timestampNs);
+    spillLocked();
 }
 
 void EventLog::checkHeartbeats(int64_t nowNs) {
     std::lock_guard lock(mutex_);
     checkHeartbeatsLocked(nowNs);
+    spillLocked();
 }
 
 void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
@@ -208,6 +222,7 @@ void EventLog::checkHeartbeatsLocked(int64_t nowNs) {
 void EventLog::add(TraceEvent event) {
     std::lock_guard lock(mutex_);
     events_.push_back(std::move(event));
+    spillLocked();
 }
 
 void EventLog::restartHeartbeatWaits(int64_t backNs) {
@@ -231,19 +246,42 @@ void EventLog::forgetNode(int node) {
 void EventLog::clear() {
     std::lock_guard lock(mutex_);
     events_.clear();
+    spill_->clear();
     watch_ = {};
     generation_.fetch_add(1, std::memory_order_release);
 }
 
 size_t EventLog::size() const {
     std::lock_guard lock(mutex_);
+    return spill_->size() + events_.size();
+}
+
+size_t EventLog::eventsInRam() const {
+    std::lock_guard lock(mutex_);
     return events_.size();
+}
+
+std::vector<TraceEvent> EventLog::eventsLocked(size_t from, size_t to) const {
+    const size_t spilled = spill_->size();
+    to = std::min(to, spilled + events_.size());
+    if (from >= to) return {};
+    std::vector<TraceEvent> out;
+    if (from < spilled) out = spill_->read(from, std::min(to, spilled));
+    const size_t a = std::max(from, spilled) - spilled, b = std::max(to, spilled) - spilled;
+    if (a < b)
+        out.insert(out.end(), events_.begin() + static_cast<std::ptrdiff_t>(a),
+                   events_.begin() + static_cast<std::ptrdiff_t>(b));
+    return out;
 }
 
 std::vector<TraceEvent> EventLog::since(size_t from) const {
     std::lock_guard lock(mutex_);
-    if (from >= events_.size()) return {};
-    return {events_.begin() + static_cast<std::ptrdiff_t>(from), events_.end()};
+    return eventsLocked(from, SIZE_MAX);
+}
+
+std::vector<TraceEvent> EventLog::events(size_t from, size_t to) const {
+    std::lock_guard lock(mutex_);
+    return eventsLocked(from, to);
 }
 
 }  // namespace coscope::gui

@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -58,9 +59,17 @@ TraceEvent renderedEvent(TraceEvent::Kind kind, int64_t timeNs, FrameNo frame, i
 // decoder), SDO aborts (not a server's "not present" for an optional identity object), NMT commands and state changes, boot-ups, heartbeat timeouts, error
 // frames, plus what the app adds (bus errors, dropped-frame counts). Fed like the node table;
 // views read the events appended since their last look. Thread-safe.
+//
+// Bounded memory (issue 38): the newest kInRam events are in RAM; older ones go to a spill file
+// (EventSpill) and are read back from there by since() and events(): every event stays, counts
+// and all, however long the capture. A spilled event keeps the text of when it was logged.
+class EventSpill;
 class EventLog {
 public:
+    static constexpr size_t kInRam = 4096;
+
     explicit EventLog(std::shared_ptr<const FrameDecoder> decoder = defaultFrameDecoder());
+    ~EventLog();
 
     void consume(const TraceStore& store, FrameNo first, size_t count);
     // A heartbeat is overdue when nothing came for 3 periods (at least 1.5 s) — live traces only.
@@ -80,13 +89,19 @@ public:
     size_t size() const;
     // Events [from, size()); the caller keeps `from`.
     std::vector<TraceEvent> since(size_t from) const;
+    // Events [from, to) (to clamped to size()).
+    std::vector<TraceEvent> events(size_t from, size_t to) const;
+    size_t eventsInRam() const;
 
 private:
     void checkHeartbeatsLocked(int64_t nowNs);
+    void spillLocked();  // the oldest beyond kInRam to the spill file
+    std::vector<TraceEvent> eventsLocked(size_t from, size_t to) const;
 
     std::shared_ptr<const FrameDecoder> decoder_;
     mutable std::mutex mutex_;
-    std::vector<TraceEvent> events_;
+    std::deque<TraceEvent> events_;  // events [spill_->size(), size())
+    std::unique_ptr<EventSpill> spill_;
     struct NodeWatch {
         int state = -1;
         int64_t lastNs = 0;

@@ -6,12 +6,16 @@
 
 #include <QAbstractTableModel>
 
+#include <deque>
+#include <map>
 #include <set>
 #include <vector>
 
 namespace coscope::gui {
 
-// Rows of the event log; refresh() appends the events logged since the last call.
+// Rows of the event log; refresh() appends the events logged since the last call. Bounded
+// (issue 38): the newest EventLog::kInRam rows are held here, older ones are read back from the
+// log (its spill file) in blocks of kBlock rows as the view shows them, a few blocks kept.
 class EventsModel : public QAbstractTableModel {
     Q_OBJECT
 public:
@@ -30,7 +34,10 @@ public:
     // Relative seconds or the wall clock (Workspace::timeMode()).
     void setTimeMode(TimeBase::Mode mode);
 
-    const TraceEvent& eventAt(int row) const { return events_[static_cast<size_t>(row)]; }
+    TraceEvent eventAt(int row) const;
+    static constexpr size_t kBlock = 256;
+    static constexpr size_t kBlocksKept = 8;
+    size_t rowsInRam() const;  // the newest rows and the blocks of older ones kept
     // The nodes the events name, ascending (for the Events dock's node filter).
     const std::set<int>& nodes() const { return nodes_; }
     // The Time column's text of an event: seconds since the trace's first frame, or its wall clock.
@@ -44,7 +51,12 @@ public:
 private:
     EventLog* log_ = nullptr;
     uint64_t generation_ = 0;
-    std::vector<TraceEvent> events_;
+    const TraceEvent& rowAt(size_t row) const;
+    size_t rows_ = 0;
+    std::deque<TraceEvent> tail_;  // rows [rows_ - tail_.size(), rows_)
+    int64_t firstTime_ = 0;        // of row 0
+    mutable std::map<size_t, std::pair<std::vector<TraceEvent>, uint64_t>> blocks_;  // block -> rows, last use
+    mutable uint64_t useClock_ = 0;
     int64_t origin_ = 0;
     TimeBase::Mode timeMode_ = TimeBase::Mode::Relative;
     std::set<int> nodes_;

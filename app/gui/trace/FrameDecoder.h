@@ -24,6 +24,12 @@ public:
     virtual void decodeAt(const TraceStore& store, FrameNo n, dissect::Dissection& out) const {
         decode(store.frame(n), out);
     }
+    // Whether decodeAt(store, n) answers at once, without going far back in the trace (a
+    // bounded decoder keeps only some of its context snapshots); if not, the snapshot is asked
+    // for in the background: a view draws the row as loading and asks again once readyCount()
+    // changed.
+    virtual bool readyAt(const TraceStore&, FrameNo) const { return true; }
+    virtual uint64_t readyCount() const { return 0; }
     // Changes whenever results given before may be stale (dictionaries reassigned, store replaced).
     virtual uint64_t revision() const { return 0; }
 };

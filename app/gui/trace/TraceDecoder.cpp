@@ -3,6 +3,7 @@
 
 #include "dissectors/DictionaryCatalog.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <unordered_map>
@@ -34,7 +35,7 @@ std::unordered_map<uint64_t, Cursor>& threadCursors() {
 }  // namespace
 
 TraceDecoder::TraceDecoder(bool background) : id_(nextDecoderId.fetch_add(1)) {
-    checkpoints_.push_back(std::make_shared<const NetworkContext>(base_));
+    checkpoints_.emplace(0, std::make_shared<const NetworkContext>(base_));
     if (background) worker_ = std::thread([this] { workerLoop(); });
 }
 
@@ -50,7 +51,11 @@ TraceDecoder::~TraceDecoder() {
 
 void TraceDecoder::resetCheckpointsLocked() {
     checkpoints_.clear();
-    checkpoints_.push_back(std::make_shared<const NetworkContext>(base_));
+    checkpoints_.emplace(0, std::make_shared<const NetworkContext>(base_));
+    cache_.clear();
+    wanted_.clear();
+    built_ = 1;
+    stride_ = 1;
     revision_.fetch_add(1, std::memory_order_acq_rel);
     wake_.notify_all();
 }
@@ -96,16 +101,98 @@ QString TraceDecoder::lastError() const {
 
 size_t TraceDecoder::checkpointCount() const {
     std::lock_guard lock(mutex_);
-    return checkpoints_.size();
+    return built_;
+}
+
+size_t TraceDecoder::keptCheckpoints() const {
+    std::lock_guard lock(mutex_);
+    return checkpoints_.size() + cache_.size();
+}
+
+size_t TraceDecoder::checkpointStride() const {
+    std::lock_guard lock(mutex_);
+    return stride_;
+}
+
+void TraceDecoder::thinLocked() const {
+    if (built_ <= kRecent + 1) return;
+    const size_t recentFrom = built_ - kRecent;
+    // The one that just left the newest kRecent stays only on the grid.
+    const size_t left = recentFrom - 1;
+    if (left % stride_ != 0) checkpoints_.erase(left);
+    size_t sparse = 0;
+    for (auto it = checkpoints_.begin(); it != checkpoints_.end() && it->first < recentFrom; ++it) ++sparse;
+    if (sparse <= kSparse) return;
+    stride_ *= 2;
+    for (auto it = checkpoints_.begin(); it != checkpoints_.end() && it->first < recentFrom;)
+        it = it->first % stride_ != 0 ? checkpoints_.erase(it) : std::next(it);
+}
+
+std::shared_ptr<const NetworkContext> TraceDecoder::findLocked(size_t k) const {
+    if (const auto it = checkpoints_.find(k); it != checkpoints_.end()) return it->second;
+    if (const auto it = cache_.find(k); it != cache_.end()) {
+        it->second.used = ++useClock_;
+        return it->second.context;
+    }
+    return nullptr;
+}
+
+std::shared_ptr<const NetworkContext> TraceDecoder::rebuildLocked(std::unique_lock<std::mutex>& lock, size_t k) const {
+    // The nearest snapshot at or before k, kept or cached (0 is always kept).
+    auto from = std::prev(checkpoints_.upper_bound(k));
+    size_t j = from->first;
+    std::shared_ptr<const NetworkContext> start = from->second;
+    if (auto c = cache_.upper_bound(k); c != cache_.begin() && std::prev(c)->first > j) {
+        --c;
+        j = c->first;
+        start = c->second.context;
+    }
+    if (j == k) return start;
+    const auto store = store_;
+    const uint64_t rev = revision();
+    lock.unlock();
+    // The snapshots of the last chunk's worth of positions up to k are kept as they are passed:
+    // the rows next to the one asked for are asked next.
+    constexpr size_t kPerChunk = TraceStore::kChunkSize / kInterval;
+    NetworkContext context(*start);
+    Dissection scratch;
+    std::vector<std::pair<size_t, std::shared_ptr<const NetworkContext>>> made;
+    for (size_t p = j; p < k; ++p) {
+        for (uint64_t n = p * kInterval; n < (p + 1) * kInterval; ++n)
+            context.dissect(store->frame(static_cast<FrameNo>(n)), scratch, Dissection::Level::Stats);
+        if (p + 1 + kPerChunk > k) made.emplace_back(p + 1, std::make_shared<const NetworkContext>(context));
+    }
+    lock.lock();
+    const std::shared_ptr<const NetworkContext> out = made.back().second;
+    if (revision() != rev) return out;
+    for (auto& [p, c] : made)
+        if (!checkpoints_.count(p)) cache_[p] = Cached{std::move(c), ++useClock_};
+    while (cache_.size() > kCached) {
+        auto oldest = cache_.begin();
+        for (auto it = cache_.begin(); it != cache_.end(); ++it)
+            if (it->second.used < oldest->second.used) oldest = it;
+        cache_.erase(oldest);
+    }
+    rebuilt_.fetch_add(1, std::memory_order_acq_rel);
+    return out;
+}
+
+bool TraceDecoder::readyAt(const TraceStore& store, FrameNo n) const {
+    const size_t k = n / kInterval;
+    std::lock_guard lock(mutex_);
+    if (&store != store_.get() || k >= built_ || findLocked(k)) return true;
+    if (std::find(wanted_.begin(), wanted_.end(), k) == wanted_.end()) wanted_.push_back(k);
+    wake_.notify_all();
+    return false;
 }
 
 // Builds the next snapshot from the last one, without holding the lock while dissecting.
 bool TraceDecoder::extendOnceLocked(std::unique_lock<std::mutex>& lock) const {
     while (extending_) wake_.wait(lock);
     if (stop_ || !store_) return false;
-    const size_t have = checkpoints_.size();
+    const size_t have = built_;
     if (store_->size() < have * kInterval) return false;
-    const auto from = checkpoints_.back();
+    const auto from = checkpoints_.at(have - 1);
     const auto store = store_;
     const uint64_t rev = revision();
     extending_ = true;
@@ -116,7 +203,11 @@ bool TraceDecoder::extendOnceLocked(std::unique_lock<std::mutex>& lock) const {
         next->dissect(store->frame(static_cast<FrameNo>(n)), scratch, Dissection::Level::Stats);
     lock.lock();
     extending_ = false;
-    if (revision() == rev && checkpoints_.size() == have) checkpoints_.push_back(std::move(next));
+    if (revision() == rev && built_ == have) {
+        checkpoints_.emplace(have, std::move(next));
+        ++built_;
+        thinLocked();
+    }
     wake_.notify_all();
     return true;
 }
@@ -129,6 +220,12 @@ void TraceDecoder::workerLoop() {
     std::unique_lock lock(mutex_);
     size_t seen = 0;
     while (!stop_) {
+        if (!wanted_.empty()) {  // readyAt()'s older rows first: someone looks at them
+            const size_t k = wanted_.back();
+            wanted_.pop_back();
+            if (k < built_ && !findLocked(k) && store_) rebuildLocked(lock, k);
+            continue;
+        }
         if (extendOnceLocked(lock) || stop_) continue;
         const size_t size = store_ ? store_->size() : 0;
         const bool growing = size != seen;
@@ -141,7 +238,7 @@ void TraceDecoder::decode(const CanFrame& frame, Dissection& out) const {
     std::shared_ptr<const NetworkContext> base;
     {
         std::lock_guard lock(mutex_);
-        base = checkpoints_.front();
+        base = checkpoints_.begin()->second;
     }
     NetworkContext context(*base);
     context.dissect(frame, out, out.level());
@@ -158,7 +255,7 @@ void TraceDecoder::decodeAt(const TraceStore& store, FrameNo n, Dissection& out)
                 decode(store.frame(n), out);
                 return;
             }
-            if (checkpoints_.size() > k) break;
+            if (built_ > k) break;
             if (!extendOnceLocked(lock)) {  // stopping
                 lock.unlock();
                 decode(store.frame(n), out);
@@ -169,7 +266,8 @@ void TraceDecoder::decodeAt(const TraceStore& store, FrameNo n, Dissection& out)
         const bool usable = cursor.context && cursor.revision == rev && cursor.store == &store && cursor.at <= n &&
                             cursor.at >= k * kInterval;
         if (!usable) {
-            const auto snapshot = checkpoints_[k];
+            auto snapshot = findLocked(k);
+            if (!snapshot) snapshot = rebuildLocked(lock, k);
             lock.unlock();
             cursor.context.emplace(*snapshot);
             cursor.revision = rev;

@@ -26,6 +26,15 @@ namespace coscope::gui {
 // Each thread keeps a cursor (a context positioned after the frame it decoded last), so the
 // rows of a view or a filter scan, asked in order, cost one dissection each.
 // decode() (no trace context) uses the assigned dictionaries only. Thread-safe.
+//
+// Bounded memory (issue 38: a snapshot is tens of kilobytes, ~14 bytes a frame, for ever): the
+// snapshots kept are the newest kRecent ones (where a live view and its filters look), older ones
+// on a grid of `stride` intervals, at most kSparse of them (when there are more, the stride
+// doubles and every other one goes), and the kCached ones rebuilt last for older frames. A
+// snapshot not kept is rebuilt from the nearest kept one before it, dissecting the frames
+// between (paged back from the journal when they are not in RAM): decodeAt() does it on the
+// calling thread; readyAt() asks the worker for it, so the GUI thread draws the row as loading
+// rather than wait.
 class TraceDecoder final : public FrameDecoder {
 public:
     explicit TraceDecoder(bool background = true);
@@ -46,12 +55,30 @@ public:
     void decodeAt(const TraceStore& store, FrameNo n, dissect::Dissection& out) const override;
     uint64_t revision() const override { return revision_.load(std::memory_order_acquire); }
 
-    // Snapshots built so far (snapshot k = context before frame k * interval).
+    // Every snapshot of the frames before n is at hand (kept or cached), so decodeAt() costs at
+    // most one interval of dissection; otherwise false, and the worker rebuilds it: ask again
+    // once readyCount() moved. Any thread.
+    bool readyAt(const TraceStore& store, FrameNo n) const override;
+    uint64_t readyCount() const override { return rebuilt_.load(std::memory_order_acquire); }
+
+    // A snapshot of two drives' network is ~90 KiB (128 nodes' state): at most ~25 MiB in all.
+    static constexpr size_t kRecent = 128;  // the newest 512 Ki frames
+    static constexpr size_t kSparse = 128;  // older ones, on the grid
+    static constexpr size_t kCached = 32;   // rebuilt for older frames, least recently used go first
+
+    // Snapshot positions built so far (snapshot k = context before frame k * interval).
     size_t checkpointCount() const;
+    // Snapshots held in memory now (at most kRecent + kSparse + 1 + kCached).
+    size_t keptCheckpoints() const;
+    size_t checkpointStride() const;
 
 private:
     void resetCheckpointsLocked();
     bool extendOnceLocked(std::unique_lock<std::mutex>& lock) const;  // false when nothing to do
+    void thinLocked() const;  // drops what left the newest kRecent and is off the grid
+    std::shared_ptr<const dissect::NetworkContext> findLocked(size_t k) const;
+    // Snapshot k (< built_) rebuilt from the nearest one before it; unlocks while dissecting.
+    std::shared_ptr<const dissect::NetworkContext> rebuildLocked(std::unique_lock<std::mutex>& lock, size_t k) const;
     void workerLoop();
 
     const uint64_t id_;  // keys the per-thread cursors
@@ -59,7 +86,18 @@ private:
     mutable std::condition_variable wake_;
     dissect::NetworkContext base_;  // dictionaries, no frames seen
     std::shared_ptr<const TraceStore> store_;
-    mutable std::vector<std::shared_ptr<const dissect::NetworkContext>> checkpoints_;
+    // k -> snapshot: the newest kRecent and the grid (0 always, then multiples of stride_).
+    mutable std::map<size_t, std::shared_ptr<const dissect::NetworkContext>> checkpoints_;
+    mutable size_t built_ = 1;  // positions [0, built_) done; built_ - 1 is always kept
+    mutable size_t stride_ = 1;
+    struct Cached {
+        std::shared_ptr<const dissect::NetworkContext> context;
+        uint64_t used = 0;
+    };
+    mutable std::map<size_t, Cached> cache_;  // rebuilt ones, at most kCached
+    mutable uint64_t useClock_ = 0;
+    mutable std::vector<size_t> wanted_;  // readyAt()'s requests for the worker
+    mutable std::atomic<uint64_t> rebuilt_{0};
     mutable bool extending_ = false;  // someone is building the next snapshot outside the lock
     std::map<int, QString> names_;
     std::map<QString, std::pair<dissect::DictionaryPtr, QString>> loaded_;  // name or file -> dictionary, its name

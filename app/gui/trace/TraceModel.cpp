@@ -260,7 +260,8 @@ void TraceModel::setLatestPerCobId(bool on) {
 
 void TraceModel::refresh() {
     if (!store_) return;
-    if (loading_ && store_->pageIns() != pageInsSeen_) {  // rows drawn as loading may be back
+    if (loading_ && (store_->pageIns() != pageInsSeen_ ||
+                     decoder_->readyCount() != decoderReadySeen_)) {  // rows drawn as loading may be back
         loading_ = false;
         if (rows_ > 0) emit dataChanged(index(0, 0), index(rows_ - 1, ColumnCount - 1));
     }

@@ -173,6 +173,7 @@ private:
     bool pagedOut(FrameNo n, int row, int col) const;
     bool groupPagedOut(uint32_t group) const;                  // a transfer's frames and its last one's checkpoint
     bool requestPageIns(std::span<const FrameNo> need) const;  // true: some are paged out
+    bool decoderReady(FrameNo n) const;  // false: its decoder snapshot is being rebuilt (loading_ set)
     // New frames [from, to) tested by refresh(): pins their chunks from `from` on while they are
     // in RAM and returns where the first one that is not starts (asked of the loader), or `to`.
     FrameNo pinResident(FrameNo from, FrameNo to) const;
@@ -181,6 +182,7 @@ private:
     std::vector<uint32_t> pinned_;  // chunks pinned in pinnedStore_
     mutable bool loading_ = false;
     mutable uint64_t pageInsSeen_ = 0;
+    mutable uint64_t decoderReadySeen_ = 0;  // the decoder's readyCount() when loading_ was set
 };
 
 }  // namespace coscope::gui

@@ -48,7 +48,9 @@ bool TraceModel::pagedOut(FrameNo n, int row, int col) const {
     FrameNo need[3] = {n, n, n};
     if (col == Summary) need[1] = static_cast<FrameNo>(n - n % dissect::NetworkContext::checkpointInterval());
     if (col == Time && timeMode_ == TimeMode::Delta && row > 0) need[2] = frameAt(row - 1);
-    return requestPageIns(need);
+    if (requestPageIns(need)) return true;
+    // An old frame whose decoder snapshot is not kept (TraceDecoder): rebuilt on its worker.
+    return col == Summary && !decoderReady(n);
 }
 
 bool TraceModel::groupPagedOut(uint32_t g) const {
@@ -65,7 +67,17 @@ bool TraceModel::groupPagedOut(uint32_t g) const {
         chunk = f >> TraceStore::kChunkBits;
         out = requestPageIns(std::span<const FrameNo>(&f, 1)) || out;
     }
-    return out;
+    return out || !decoderReady(grp.last);
+}
+
+bool TraceModel::decoderReady(FrameNo n) const {
+    if (!loading_) {  // counted before asking, so a snapshot rebuilt meanwhile is not missed
+        pageInsSeen_ = store_->pageIns();
+        decoderReadySeen_ = decoder_->readyCount();
+    }
+    if (decoder_->readyAt(*store_, n)) return true;
+    loading_ = true;
+    return false;
 }
 
 bool TraceModel::requestPageIns(std::span<const FrameNo> need) const {
@@ -75,6 +87,7 @@ bool TraceModel::requestPageIns(std::span<const FrameNo> need) const {
         if (!loading_) {  // counted before asking, so a page-in done meanwhile is not missed
             loading_ = true;
             pageInsSeen_ = store_->pageIns();
+            decoderReadySeen_ = decoder_->readyCount();
         }
         store_->requestPageIn(f);
         out = true;
