@@ -81,6 +81,21 @@ private slots:
         QVERIFY(written > 300000);  // the fast path did the work
     }
 
+    // Around every power of ten, where the first digit's exponent and the rounding's carry change.
+    void decadeEdgesAsQt() {
+        int written = 0;
+        for (int k = -6; k <= 17; ++k) {
+            const double p10 = std::pow(10.0, k);
+            for (const double m : {1.0, 1 - 1e-9, 1 + 1e-9, 1 - 4e-10, 0.99999999995, 0.9999999999995, 1 - 1e-13}) {
+                double v = p10 * m;
+                for (int step = 0; step < 4; ++step, v = std::nextafter(v, 0.0)) QVERIFY(sameAsQt(v, &written));
+                v = p10 * m;
+                for (int step = 0; step < 4; ++step, v = std::nextafter(v, 1e300)) QVERIFY(sameAsQt(v, &written));
+            }
+        }
+        QVERIFY(written > 1000);
+    }
+
     void anyValueAsQt() {
         std::mt19937_64 rng(38);
         int written = 0;
