@@ -128,13 +128,22 @@ bool isInteger(const PdoMapEntry& e) {
     return e.factor == 1.0 && e.bits <= 64 && (e.cls == od::TypeClass::Signed || e.cls == od::TypeClass::Unsigned);
 }
 
-// Every signal of the mapping an integer with its label made: the frame decodes to
-// PdoTextValues (decodeValues), its text written from them.
+// An integer with a scale factor (the dictionary's unit: velocity in 0.1 rpm, torque in 0.1 %),
+// written in decimal, without a CiA 402 meaning: its value is the integer times the factor, as
+// decodeBits() makes it (a Real, written as valueText() writes it).
+bool isScaledInteger(const PdoMapEntry& e) {
+    return e.factor != 1.0 && e.bits <= 64 && (e.cls == od::TypeClass::Signed || e.cls == od::TypeClass::Unsigned) &&
+           !e.hex && !hasDs402Meaning(e);
+}
+
+// Every signal of the mapping an integer, maybe scaled, with its label made: the frame decodes
+// to PdoTextValues (decodeValues), its text written from them.
 bool onlyIntegers(const PdoConfig& cfg) {
     for (int i = 0; i < cfg.count; ++i) {
         const PdoMapEntry& e = cfg.entries[static_cast<size_t>(i)];
         if (!e.dummy && e.bits != 0 &&
-            (!isInteger(e) || e.label.isEmpty() || e.label.size() > 0xFFFF || e.unitText.size() > 0xFFFF))
+            (!(isInteger(e) || isScaledInteger(e)) || e.label.isEmpty() || e.label.size() > 0xFFFF ||
+             e.unitText.size() > 0xFFFF))
             return false;
     }
     return true;
@@ -151,7 +160,14 @@ void decodeValues(DissectCall& c, const PdoConfig& cfg, std::vector<PdoTextValue
         v.unit = reinterpret_cast<const char16_t*>(e.unitText.constData());
         v.unitLength = static_cast<uint16_t>(e.unitText.size());
         decodeInteger(e, c.data, at, sig, v);
-        if (hasDs402Meaning(e)) {
+        if (e.factor != 1.0) {  // isScaledInteger
+            const double scaled =
+                (sig.value.kind == FlatField::Kind::Int ? double(sig.value.i) : double(sig.value.u)) * e.factor;
+            sig.value.kind = FlatField::Kind::Real;
+            sig.value.d = scaled;
+            v.form = PdoTextValue::Form::Real;
+            v.raw = std::bit_cast<uint64_t>(scaled);
+        } else if (hasDs402Meaning(e)) {
             const uint64_t raw =
                 sig.value.kind == FlatField::Kind::Int ? static_cast<uint64_t>(sig.value.i) : sig.value.u;
             if (out.wantFields) {

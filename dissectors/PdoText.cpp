@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/PdoText.h"
 
+#include "dissectors/DoubleText.h"
+
 #include <algorithm>
+#include <bit>
 #include <iterator>
 
 namespace coscope::dissect {
@@ -45,6 +48,19 @@ void writePdoValue(SummaryBuffer::Cursor& w, const PdoTextValue& v) {
         break;
     case PdoTextValue::Form::Signed: w.putDecimal(static_cast<int64_t>(v.raw)); break;
     case PdoTextValue::Form::Unsigned: w.putDecimal(v.raw, false); break;
+    case PdoTextValue::Form::Real: {
+        const double d = std::bit_cast<double>(v.raw);
+        char text[kDoubleTextRoom];
+        const int n = writeDoubleG(text, d, 9);  // as valueText() writes a Real
+        if (n < 0) {
+            w.put(QString::number(d, 'g', 9));
+        } else {
+            w.need(static_cast<size_t>(n));
+            std::copy_n(text, n, w.at());
+            w.advance(static_cast<size_t>(n));
+        }
+        break;
+    }
     }
     if (v.unitLength) w.put(v.unit, v.unitLength);
     if (v.meaningLength) {

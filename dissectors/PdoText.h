@@ -15,7 +15,7 @@ namespace coscope::dissect {
 // through Dissection::pdoTextSink, later on another thread (the CLI's text writer): the texts
 // it points to are permanent (od::permanentText), so a record outlives any change of mapping.
 struct PdoTextValue {
-    enum class Form : uint8_t { Hex, Signed, Unsigned };
+    enum class Form : uint8_t { Hex, Signed, Unsigned, Real };  // Real: a scaled integer, `raw` its bits
     const char16_t* label = nullptr;    // ", " name " = " (PdoMapEntry::label; the first value drops the comma)
     const char16_t* unit = nullptr;     // " " unit (PdoMapEntry::unitText), or none
     const char16_t* meaning = nullptr;  // CiA 402 meaning ("Operation enabled"), or none

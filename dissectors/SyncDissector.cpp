@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // SYNC (CiA 301 §7.2.5.3): COB-ID 080h, no data, or 1 byte counter 1..240 when 1019h > 1.
 #include "dissectors/Services.h"
+#include "dissectors/SummaryBuffer.h"
 
 namespace coscope::dissect {
 
@@ -14,11 +15,23 @@ void dissectSync(DissectCall& c) {
     if (!out.wantText()) return;
     if (hasCounter) {
         out.addInt("sync.counter", c.data[0]);
-        out.summary = QStringLiteral("SYNC counter %1").arg(c.data[0]);
         if (out.wantTree()) out.item(0, QStringLiteral("Counter"), QString::number(c.data[0]), 0, 1);
-    } else {
-        out.summary = QStringLiteral("SYNC");
     }
+    // One SYNC per cycle: the summary goes straight into the consumer's buffer
+    // (Dissection::summarySink), or a reused one copied into out.summary, without a QString::arg.
+    thread_local SummaryBuffer scratch;
+    SummaryBuffer& sb = out.summarySink ? *out.summarySink : scratch;
+    if (!out.summarySink) sb.clear();
+    {
+        SummaryBuffer::Cursor w(sb);
+        if (hasCounter) {
+            w.put(u"SYNC counter ");
+            w.putDecimal(static_cast<int64_t>(c.data[0]));
+        } else {
+            w.put(u"SYNC");
+        }
+    }
+    if (!out.summarySink) sb.storeIn(out.summary);
 }
 
 }  // namespace coscope::dissect

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dissectors/ValueText.h"
 
+#include "dissectors/DoubleText.h"
+
 #include <cstring>
 
 namespace coscope::dissect {
@@ -87,7 +89,7 @@ QString valueText(const FlatField& v) {
         return v.i < 0 ? decimalText(0 - static_cast<uint64_t>(v.i), true)
                        : decimalText(static_cast<uint64_t>(v.i), false);
     case FlatField::Kind::UInt: return decimalText(v.u, false);
-    case FlatField::Kind::Real: return QString::number(v.d, 'g', 9);
+    case FlatField::Kind::Real: return doubleTextG(v.d, 9);  // QString::number(v.d, 'g', 9)
     case FlatField::Kind::Bool: return v.i ? QStringLiteral("true") : QStringLiteral("false");
     case FlatField::Kind::Text: return v.text;
     }

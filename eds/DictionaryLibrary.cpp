@@ -28,14 +28,6 @@ std::optional<std::uint32_t> hexNumber(const QJsonValue& v) {
     return ok ? std::optional<std::uint32_t>(n) : std::nullopt;
 }
 
-std::optional<std::uint32_t> defaultNumber(const od::ObjectDictionary& d, std::uint16_t index) {
-    const od::SubObject* s = d.entry(index, 0);
-    if (!s || s->defaultValue.isEmpty()) return std::nullopt;
-    bool ok = false;
-    const std::uint32_t v = s->defaultValue.trimmed().toUInt(&ok, 0);
-    return ok ? std::optional<std::uint32_t>(v) : std::nullopt;
-}
-
 QString sidecarPath(const QString& dictionaryPath) {
     const QFileInfo fi(dictionaryPath);
     return fi.path() + u'/' + fi.completeBaseName() + QStringLiteral(".json");
@@ -82,23 +74,31 @@ void DictionaryLibrary::scan(const QString& folder, bool bundled) {
     }
 }
 
+void DictionaryLibrary::applyIdentity(Entry& e, const DocumentedIdentity& id) {
+    e.vendorId = id.vendorId;
+    e.productCode = id.productCode;
+    e.revision = id.revision;
+    e.deviceType = id.deviceType;
+    e.deviceName = id.deviceName;
+    readSidecarIdentity(e);
+}
+
 bool DictionaryLibrary::readIdentity(Entry& e) {
     const ReadResult r = readDictionaryFile(e.path);
     if (!r.usable) return false;
-    e.vendorId = r.dictionary.vendorId();
-    e.productCode = r.dictionary.productCode();
-    e.revision = r.dictionary.revisionNumber();
-    e.deviceType = defaultNumber(r.dictionary, 0x1000);
-    if (const od::SubObject* s = r.dictionary.entry(0x1008, 0)) e.deviceName = s->defaultValue.trimmed();
-    readSidecarIdentity(e);
+    applyIdentity(e, documentedIdentity(r.dictionary));
     return true;
 }
 
 void DictionaryLibrary::readBundledIdentities() const {
     std::call_once(*bundledIdentitiesRead_, [this] {
-        for (Entry& e : entries_)
-            if (e.bundled && !readIdentity(e))
-                spdlog::warn("dictionary library: {} is not usable", e.path.toStdString());
+        for (Entry& e : entries_) {
+            if (!e.bundled) continue;
+            // The bundled files are usable (test_eds_library bundledNamesLoad): only the sections
+            // that hold their identity are read.
+            if (const auto id = readDocumentedIdentity(e.path)) applyIdentity(e, *id);
+            else if (!readIdentity(e)) spdlog::warn("dictionary library: {} is not usable", e.path.toStdString());
+        }
     });
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "eds/DocumentedIdentity.h"
 #include "eds/EdsReader.h"
 
 #include <QString>
@@ -99,7 +100,8 @@ public:
 
 private:
     void scan(const QString& folder, bool bundled);
-    static bool readIdentity(Entry& e);  // false: not a usable dictionary
+    static bool readIdentity(Entry& e);                                 // false: not a usable dictionary
+    static void applyIdentity(Entry& e, const DocumentedIdentity& id);  // and the sidecar's
     static void readSidecarIdentity(Entry& e);
     void readBundledIdentities() const;  // once (thread safe)
     QString userFolder_;

@@ -1,15 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Offline decode and stats of a generated 1 M-frame CANopen trace (tests/data/gen: 2 drives,
-// SYNC at 1 kHz, PDOs, heartbeats, SDO), written as pcapng with core/logio, against tshark on
-// the same file (DESIGN.md budgets: decode --format text ≥ 20x, stats ≥ 50x faster than
-// `tshark -r same.pcap -d can.subdissector,canopen`). Wall-clock times of whole processes,
-// measured side by side in this run on the same file, all with stdout to /dev/null. The runs
-// are interleaved, round by round (tshark, decode, stats), and each program's figure is the best
-// of its kRounds runs: a burst of load on a shared machine (seconds long on our CI VM) then
-// meets every program alike instead of all runs of one of them, and does not decide the ratio.
+// Offline decode and stats of two 1 M-frame CANopen traces against tshark on the same files
+// (DESIGN.md budgets: decode --format text ≥ 20x and stats ≥ 50x faster than
+// `tshark -r same.pcap -d can.subdissector,canopen`, decode --format jsonl ≥ 20x `tshark -T ek`):
+//  - "1m": tests/data/gen (2 drives, SYNC at 1 kHz, RPDO1/TPDO1, heartbeats, SDO), written as
+//    pcapng with core/logio;
+//  - "machine_1m": tests/bench/machine_trace.py, a trace shaped like a running machine's (a
+//    Delta ASDA-A2 and an AIMOTOR identified by SDO so the bundled dictionaries name their
+//    objects, PDOs mapped by SDO, SYNC with a counter, RPDO1/TPDO1/TPDO2 with scaled signals,
+//    heartbeats, expedited SDO with aborts, EMCY, LSS), a candump log that `coscope-cli convert`
+//    turns into pcapng (issue 38).
+// Wall-clock times of whole processes, measured side by side in this run on the same file, all
+// with stdout to /dev/null. The runs are interleaved, round by round (for each trace: tshark,
+// tshark -T ek, decode, decode --format jsonl, stats), and each program's figure is the best of
+// its kRounds runs: a burst of load on a shared machine (seconds long on our CI VM) then meets
+// every program alike instead of all runs of one of them, and does not decide the ratio.
 // The ratios are printed as counters and on stdout, with a `BENCH name figure unit peer kind
-// ratio` line each for scripts/bench.sh's summary.
-// The peer is skipped when tshark is missing.
+// ratio` line each for scripts/bench.sh's summary. tshark -T ek takes ~30 s a run: the whole
+// benchmark takes ~6 minutes.
+// The peers are skipped when tshark is missing; the machine trace when python3 is.
 #include "tests/data/gen/CanopenTraceGenerator.h"
 
 #include <QCoreApplication>
@@ -20,7 +28,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <fcntl.h>
@@ -33,21 +43,13 @@ namespace {
 constexpr uint64_t kFrames = 1'000'000;
 constexpr int kRounds = 5;  // each program runs once per round; its best run counts
 
-const QString& tracePath() {
-    static const QString path = [] {
-        const QString p = QDir::temp().filePath(QStringLiteral("coscope-bench-canopen-1m.pcapng"));
-        QString error;
-        if (!testgen::writeCanopenTracePcapng(p, kFrames, &error))
-            std::fprintf(stderr, "cannot write %s: %s\n", qPrintable(p), qPrintable(error));
-        // On the disk before any timing: the kernel writing the new file back in the middle of
-        // a timed run would take CPU from it (2 cores) and decide the ratio.
-        if (const int fd = ::open(QFile::encodeName(p).constData(), O_RDONLY); fd >= 0) {
-            ::fsync(fd);
-            ::close(fd);
-        }
-        return p;
-    }();
-    return path;
+// On the disk before any timing: the kernel writing a new file back in the middle of a timed
+// run would take CPU from it (2 cores) and decide the ratio.
+void syncFile(const QString& path) {
+    if (const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY); fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
 }
 
 // Runs a program with stdout to /dev/null; returns seconds, or -1 when it cannot run.
@@ -64,32 +66,88 @@ double timeProcess(const QString& program, const QStringList& args) {
     return static_cast<double>(t.nsecsElapsed()) / 1e9;
 }
 
+QString tempPath(const char* name) { return QDir::temp().filePath(QString::fromLatin1(name)); }
+
+QString generatedTrace() {
+    const QString p = tempPath("coscope-bench-canopen-1m.pcapng");
+    QString error;
+    if (!testgen::writeCanopenTracePcapng(p, kFrames, &error)) {
+        std::fprintf(stderr, "cannot write %s: %s\n", qPrintable(p), qPrintable(error));
+        return {};
+    }
+    syncFile(p);
+    return p;
+}
+
+// machine_trace.py writes a candump log; coscope-cli convert makes the pcapng both programs read.
+QString machineTrace() {
+    const QString log = tempPath("coscope-bench-machine-1m.log");
+    const QString p = tempPath("coscope-bench-machine-1m.pcapng");
+    const QString python = QStandardPaths::findExecutable(QStringLiteral("python3"));
+    const QString script = QStringLiteral(COSCOPE_SOURCE_DIR "/tests/bench/machine_trace.py");
+    const bool ok = !python.isEmpty() && timeProcess(python, {script, log, QString::number(kFrames)}) >= 0 &&
+                    timeProcess(QStringLiteral(COSCOPE_CLI_PATH), {QStringLiteral("convert"), log, p}) >= 0;
+    QFile::remove(log);
+    if (!ok) {
+        std::fprintf(stderr, "cannot write %s (python3 %s, coscope-cli convert)\n", qPrintable(p), qPrintable(script));
+        return {};
+    }
+    syncFile(p);
+    return p;
+}
+
+enum Trace { kGenerated, kMachine, kTraces };
+const char* const kTraceNames[kTraces] = {"1m", "machine_1m"};
+
+bool& tracesMade() {
+    static bool made = false;
+    return made;
+}
+const QString& tracePath(int trace) {
+    static const std::array<QString, kTraces> paths = [] {
+        tracesMade() = true;
+        return std::array<QString, kTraces>{generatedTrace(), machineTrace()};
+    }();
+    return paths[static_cast<size_t>(trace)];
+}
+
+QStringList tsharkArgs(int trace, bool ek) {
+    QStringList a{QStringLiteral("-r"), tracePath(trace), QStringLiteral("-d"),
+                  QStringLiteral("can.subdissector,canopen")};
+    if (ek) a << QStringLiteral("-T") << QStringLiteral("ek");
+    return a;
+}
+enum Program { kText, kJsonl, kStats, kPrograms };
+QStringList cliArgs(int trace, int program) {
+    switch (program) {
+    case kText: return {QStringLiteral("decode"), tracePath(trace), QStringLiteral("--format"), QStringLiteral("text")};
+    case kJsonl:
+        return {QStringLiteral("decode"), tracePath(trace), QStringLiteral("--format"), QStringLiteral("jsonl")};
+    default: return {QStringLiteral("stats"), tracePath(trace)};
+    }
+}
+
 // The times of every round, measured once for all benchmarks below; -1 where a program is
-// missing (tshark) or failed.
-struct Rounds {
-    std::vector<double> tshark, decode, stats;
+// missing (tshark), failed, or its trace could not be written.
+struct Times {
+    std::vector<double> tshark, tsharkEk;
+    std::array<std::vector<double>, kPrograms> cli;
 };
-const QStringList& decodeArgs() {
-    static const QStringList args{QStringLiteral("decode"), tracePath(), QStringLiteral("--format"),
-                                  QStringLiteral("text")};
-    return args;
-}
-const QStringList& statsArgs() {
-    static const QStringList args{QStringLiteral("stats"), tracePath()};
-    return args;
-}
-const Rounds& rounds() {
-    static const Rounds r = [] {
-        Rounds m;
+const std::array<Times, kTraces>& rounds() {
+    static const std::array<Times, kTraces> r = [] {
+        std::array<Times, kTraces> m;
         const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
         const QString cli = QStringLiteral(COSCOPE_CLI_PATH);
         for (int i = 0; i < kRounds; ++i) {
-            m.tshark.push_back(tshark.isEmpty()
-                                   ? -1.0
-                                   : timeProcess(tshark, {QStringLiteral("-r"), tracePath(), QStringLiteral("-d"),
-                                                          QStringLiteral("can.subdissector,canopen")}));
-            m.decode.push_back(timeProcess(cli, decodeArgs()));
-            m.stats.push_back(timeProcess(cli, statsArgs()));
+            for (int t = 0; t < kTraces; ++t) {
+                Times& times = m[static_cast<size_t>(t)];
+                const bool have = !tracePath(t).isEmpty();
+                const bool peer = have && !tshark.isEmpty();
+                times.tshark.push_back(peer ? timeProcess(tshark, tsharkArgs(t, false)) : -1.0);
+                times.tsharkEk.push_back(peer ? timeProcess(tshark, tsharkArgs(t, true)) : -1.0);
+                for (int p = 0; p < kPrograms; ++p)
+                    times.cli[static_cast<size_t>(p)].push_back(have ? timeProcess(cli, cliArgs(t, p)) : -1.0);
+            }
         }
         return m;
     }();
@@ -106,37 +164,40 @@ double best(const std::vector<double>& runs) {
     return b;
 }
 
-void report(benchmark::State& state, const char* name, const QStringList& args, const std::vector<double>& runs,
-            double budget) {
-    const double peer = best(rounds().tshark);
+void report(benchmark::State& state, int trace, int program) {
+    static const char* const kNames[kPrograms] = {"decode_text", "decode_jsonl", "stats"};
+    static const double kBudgets[kPrograms] = {20, 20, 50};
+    const Times& times = rounds()[static_cast<size_t>(trace)];
+    const std::vector<double>& runs = times.cli[static_cast<size_t>(program)];
+    const bool ek = program == kJsonl;
+    const double peer = best(ek ? times.tsharkEk : times.tshark);
     const double last = best(runs);
+    const double budget = kBudgets[program];
     if (last < 0) {
-        state.SkipWithError("coscope-cli failed");
+        state.SkipWithError("coscope-cli failed or its trace could not be written");
         return;
     }
     size_t i = 0;
     for (auto _ : state) state.SetIterationTime(runs[i++ % runs.size()]);
     state.counters["seconds"] = last;
     state.counters["budget_ratio"] = budget;
+    const QString what = cliArgs(trace, program).join(u' ');
     if (peer > 0) {
+        const char* kind = ek ? "tshark-ek" : "tshark";
         state.counters["tshark_seconds"] = peer;
         state.counters["ratio_vs_tshark"] = peer / last;
-        std::printf("%s: coscope %.3f s, tshark %.3f s, ratio %.1fx (budget %.0fx; best of %d interleaved runs each)\n",
-                    qPrintable(args.join(u' ')), last, peer, peer / last, budget, kRounds);
-        std::printf("BENCH %s %.3f s %.3f tshark %.1f (budget %.0fx)\n", name, last, peer, peer / last, budget);
+        std::printf("%s: coscope %.3f s, %s %.3f s, ratio %.1fx (budget %.0fx; best of %d interleaved runs each)\n",
+                    qPrintable(what), last, kind, peer, peer / last, budget, kRounds);
+        std::printf("BENCH %s_%s %.3f s %.3f %s %.1f (budget %.0fx)\n", kNames[program], kTraceNames[trace], last, peer,
+                    kind, peer / last, budget);
     } else {
-        std::printf("%s: coscope %.3f s (tshark not found: no ratio)\n", qPrintable(args.join(u' ')), last);
+        std::printf("%s: coscope %.3f s (tshark not found: no ratio)\n", qPrintable(what), last);
     }
 }
 
-void BM_DecodeText1M(benchmark::State& state) { report(state, "decode_text_1m", decodeArgs(), rounds().decode, 20); }
-BENCHMARK(BM_DecodeText1M)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(kRounds);
-
-void BM_Stats1M(benchmark::State& state) { report(state, "stats_1m", statsArgs(), rounds().stats, 50); }
-BENCHMARK(BM_Stats1M)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(kRounds);
-
-void BM_PeerTshark1M(benchmark::State& state) {
-    const std::vector<double>& runs = rounds().tshark;
+void peer(benchmark::State& state, int trace, bool ek) {
+    const Times& times = rounds()[static_cast<size_t>(trace)];
+    const std::vector<double>& runs = ek ? times.tsharkEk : times.tshark;
     if (best(runs) < 0) {
         state.SkipWithError("tshark not found");
         return;
@@ -144,15 +205,36 @@ void BM_PeerTshark1M(benchmark::State& state) {
     size_t i = 0;
     for (auto _ : state) state.SetIterationTime(runs[i++ % runs.size()]);
 }
-BENCHMARK(BM_PeerTshark1M)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(kRounds);
+
+// BM_DecodeText/1m ... BM_PeerTsharkEk/machine_1m.
+void registerBenchmarks() {
+    static const char* const kBenchmarks[kPrograms] = {"BM_DecodeText/", "BM_DecodeJsonl/", "BM_Stats/"};
+    for (int t = 0; t < kTraces; ++t) {
+        for (int p = 0; p < kPrograms; ++p)
+            benchmark::RegisterBenchmark((kBenchmarks[p] + std::string(kTraceNames[t])).c_str(),
+                                         [t, p](benchmark::State& s) { report(s, t, p); })
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(kRounds);
+        for (const bool ek : {false, true})
+            benchmark::RegisterBenchmark(
+                ((ek ? "BM_PeerTsharkEk/" : "BM_PeerTshark/") + std::string(kTraceNames[t])).c_str(),
+                [t, ek](benchmark::State& s) { peer(s, t, ek); })
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(kRounds);
+    }
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
+    registerBenchmarks();
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
-    QFile::remove(tracePath());
+    if (tracesMade())
+        for (int t = 0; t < kTraces; ++t) QFile::remove(tracePath(t));
     return 0;
 }

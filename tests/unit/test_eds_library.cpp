@@ -41,6 +41,7 @@ private slots:
     void bundledNamesLoad();
     void noIdentityMatchesByDeviceTypeAndName();
     void noIdentityTieMatchesNothing();
+    void identityFromItsSections();
 };
 
 void TestEdsLibrary::userFolderAndIdentity() {
@@ -160,6 +161,46 @@ void TestEdsLibrary::bundledNamesLoad() {
         QVERIFY2(r.usable, qPrintable(e.name));
         QVERIFY2(r.errorCount() == 0, qPrintable(e.name));
     }
+}
+
+// The library reads a bundled dictionary's identity from the sections that hold it
+// (readDocumentedIdentity): the same identity as the whole file gives, for every bundled
+// dictionary and for an identity in 1018h with $NODEID defaults and a [DeviceCommissioning].
+void TestEdsLibrary::identityFromItsSections() {
+    QTemporaryDir dir;
+    const eds::DictionaryLibrary lib(dir.path());
+    for (const auto& e : lib.entries()) {
+        const auto fromSections = eds::readDocumentedIdentity(e.path);
+        QVERIFY2(fromSections.has_value(), qPrintable(e.name));
+        const eds::DocumentedIdentity whole = eds::documentedIdentity(eds::readDictionaryFile(e.path).dictionary);
+        QVERIFY2(*fromSections == whole, qPrintable(e.name));
+        QVERIFY2(e.vendorId == whole.vendorId, qPrintable(e.name));
+        QVERIFY2(e.productCode == whole.productCode, qPrintable(e.name));
+        QVERIFY2(e.revision == whole.revision, qPrintable(e.name));
+        QCOMPARE(e.deviceName, whole.deviceName);
+    }
+    const QString path = dir.filePath("nodeid.eds");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(
+        "[DeviceInfo]\nVendorName=T\n[DeviceCommissioning]\nNodeID=5\n"
+        "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1018\n3=0x6064\n"
+        "[1000]\nParameterName=Device type\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x00020192\n"
+        "[6064]\nParameterName=Position actual value\nDataType=0x0004\nAccessType=ro\n"
+        "  [1018]  ; identity\nParameterName=Identity\nObjectType=0x9\nSubNumber=4\n"
+        "[1018sub0]\nParameterName=n\nDataType=0x0005\nAccessType=ro\nDefaultValue=3\n"
+        "[1018sub1]\nParameterName=Vendor\nDataType=0x0007\nAccessType=ro\nDefaultValue=$NODEID+0x100\n"
+        "[1018sub2]\nParameterName=Product\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x42\n"
+        "[1018sub3]\nParameterName=Revision\nDataType=0x0007\nAccessType=ro\nDefaultValue=0x00010002\n"
+        "[1008]\nParameterName=Manufacturer device name\nDataType=0x0009\nAccessType=const\n"
+        "DefaultValue= Drive X \n");
+    f.close();
+    const eds::DocumentedIdentity whole = eds::documentedIdentity(eds::readDictionaryFile(path).dictionary);
+    QVERIFY(whole.vendorId == std::optional<std::uint32_t>(0x105));
+    QCOMPARE(whole.deviceName, QString("Drive X"));
+    const auto fromSections = eds::readDocumentedIdentity(path);
+    QVERIFY(fromSections.has_value());
+    QVERIFY(*fromSections == whole);
 }
 
 QTEST_GUILESS_MAIN(TestEdsLibrary)
