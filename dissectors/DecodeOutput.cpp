@@ -196,7 +196,7 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
     *o++ = ' ';
     *o++ = ' ';
     if (f.isRemote()) {
-        std::memcpy(o, "remote request", 14);
+        std::memcpy(o, "remote request", 14);  // NOLINT(bugprone-not-null-terminated-result): a line buffer
         o += 14;
     } else {
         const int n = f.payloadSize();
@@ -215,7 +215,7 @@ char* writeTextLine(char* o, const CanFrame& f, std::u16string_view summary, con
     o += pad;
     o = putUtf8(o, summary.data(), static_cast<qsizetype>(summary.size()));
     for (qsizetype i = 0; i < warningCount; ++i) {
-        std::memcpy(o, "  ! ", 4);
+        std::memcpy(o, "  ! ", 4);  // NOLINT(bugprone-not-null-terminated-result): a line buffer
         o += 4;
         o = putUtf8(o, warnings[i]);
     }

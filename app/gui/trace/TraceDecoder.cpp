@@ -163,7 +163,7 @@ std::shared_ptr<const NetworkContext> TraceDecoder::rebuildLocked(std::unique_lo
         if (p + 1 + kPerChunk > k) made.emplace_back(p + 1, std::make_shared<const NetworkContext>(context));
     }
     lock.lock();
-    const std::shared_ptr<const NetworkContext> out = made.back().second;
+    std::shared_ptr<const NetworkContext> out = made.back().second;
     if (revision() != rev) return out;
     for (auto& [p, c] : made)
         if (!checkpoints_.count(p)) cache_[p] = Cached{std::move(c), ++useClock_};
