@@ -33,6 +33,7 @@
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/ModalAnswer.h"
 #include "tests/gui/OpenLog.h"
+#include "tests/gui/TraceBar.h"
 #include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
@@ -40,6 +41,7 @@ using namespace coscope;
 using namespace coscope::gui;
 using coscope::testing::answerFileDialog;
 using coscope::testing::clickDockTab;
+using coscope::testing::groupSdoButton;
 using coscope::testing::openLogByMenu;
 using coscope::testing::pickInCombo;
 using coscope::testing::typeAndEnter;
@@ -107,11 +109,6 @@ FrameNo selectedFrame(MainWindow& w) {
     return row < 0 ? FrameNo(~0u) : w.traceDock()->model()->frameAt(row);
 }
 
-QWidget* groupSdoButton(MainWindow& w) {
-    for (auto* bar : w.traceDock()->findChildren<QToolBar*>())
-        if (QWidget* b = bar->widgetForAction(w.traceDock()->groupSdoAction())) return b;
-    return nullptr;
-}
 }  // namespace
 
 class TestEventsFilter : public QObject {

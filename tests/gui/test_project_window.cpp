@@ -31,6 +31,7 @@
 #include "tests/gui/ItemClick.h"
 #include "tests/gui/MenuClick.h"
 #include "tests/gui/ModalAnswer.h"
+#include "tests/gui/TraceBar.h"
 #include "tests/gui/TypeText.h"
 #include "tests/gui/WaitFor.h"
 
@@ -41,6 +42,7 @@ using coscope::testing::clickCheckBox;
 using coscope::testing::clickDockTab;
 using coscope::testing::clickMenuItem;
 using coscope::testing::DriveLog;
+using coscope::testing::groupSdoButton;
 using coscope::testing::signalItem;
 using coscope::testing::typeAndEnter;
 using coscope::testing::waitFor;
@@ -74,11 +76,6 @@ QStringList picked(MainWindow& w) {
     return out;
 }
 
-QWidget* groupSdoButton(MainWindow& w) {
-    for (auto* bar : w.traceDock()->findChildren<QToolBar*>())
-        if (QWidget* b = bar->widgetForAction(w.traceDock()->groupSdoAction())) return b;
-    return nullptr;
-}
 }  // namespace
 
 class TestProjectWindow : public QObject {
